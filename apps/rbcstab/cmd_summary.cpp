@@ -1,0 +1,69 @@
+// rbcstab summary: the main job, a readable account of one scene.
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "rbcstab/model/coefficients.hpp"
+#include "scene_options.hpp"
+
+namespace rbcstab::cli {
+
+namespace {
+int run(const SceneOptions& so) {
+  const SceneFile sf = so.resolve();
+  const Scene& s = sf.scene;
+  const Parameters& p = s.parameters;
+  const SimulationResult r = simulate(s, sf.options);
+  std::ostream& out = std::cout;
+  out << std::setprecision(6);
+  out << "rbcstab " << RBCSTAB_VERSION << " -- scene '" << s.name << "'\n\n";
+  out << "Parameters   lambda = " << p.lambda << ", Delta = " << p.Delta << ", Delta0 = " << p.Delta0 << ", B = " << p.B
+      << ", C = " << p.C << "\n";
+  out << "             beta = " << s.beta << ", delta = " << s.delta << ", L = " << s.L << ", T = " << s.T << "\n";
+  out << "Derived      Lambda = " << p.Lambda() << ", S = " << p.S() << ", alpha = B/C = " << p.alpha() << "\n";
+  out << "Model level  " << to_string(r.level.level) << " -- " << r.level.reason << "\n";
+  for (const auto& w : r.warnings) out << "Warning      " << w << "\n";
+  out << "\nExcess area by mode (Delta_l):\n";
+  out << "    l      Delta_l(0)      Delta_l(T)   tail mean       change   sigma_l^c\n";
+  for (int l = 2; l <= r.L; ++l) {
+    const std::size_t k = std::size_t(l - 2);
+    const double d0 = r.Delta_initial[k], d1 = r.Delta_final[k];
+    out << std::setw(5) << l << std::setw(16) << d0 << std::setw(16) << d1 << std::setw(12) << r.Delta_tail_mean[k]
+        << std::setw(13) << (d1 - d0);
+    if (l >= 3) out << std::setw(12) << sigma_critical(l, p.alpha());
+    out << "\n";
+  }
+  out << "\nl_Delta = " << r.l_Delta;
+  if (r.l_Delta == 2)
+    out << ": the ellipsoid is stable, the higher modes gave their area back to l = 2\n";
+  else
+    out << ": mode l = " << r.l_Delta << " took the most excess area from the ellipsoid ("
+        << (r.oscillating ? "from the tail mean over the last " : "at T; tail window ") << sf.options.tail_window
+        << " time units)\n";
+  out << "sigma(T) = " << r.sigma_final << " (tail mean " << r.sigma_tail_mean << "), sigma(0) = " << r.sigma_initial
+      << "\n";
+  out << "r(T) = " << r.r_final << ", Psi(T) = " << r.Psi_final << "\n";
+  out << "Excess-area drift max_t |Delta(t) - Delta(0)| = " << r.excess_area_drift << "\n";
+  out << "Cost: " << r.counters.steps << " steps (" << r.counters.failed_steps << " rejected), "
+      << r.counters.rhs_evaluations << " RHS and " << r.counters.jacobian_evaluations << " Jacobian evaluations, "
+      << r.seconds << " s with " << to_string(sf.options.integrator.stepper) << " at rtol " << sf.options.integrator.rtol
+      << "\n";
+  if (r.status != IntegrationStatus::success) {
+    out << "Status: " << to_string(r.status) << " at t = " << r.t_reached << ": " << r.reason << "\n";
+    return kRunFailed;
+  }
+  out << "Status: success\n";
+  return kOk;
+}
+}  // namespace
+
+Runner add_summary(CLI::App& app) {
+  auto o = std::make_shared<SceneOptions>();
+  o->add_to(app);
+  return [o] { return run(*o); };
+}
+
+}  // namespace rbcstab::cli

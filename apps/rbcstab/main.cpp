@@ -1,0 +1,49 @@
+// rbcstab: the command-line tool. Only this program prints and chooses exit codes (docs/cli.md).
+#include <CLI/CLI.hpp>
+#include <iostream>
+#include <map>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "rbcstab/core/error.hpp"
+
+int main(int argc, char** argv) {
+  using namespace rbcstab::cli;
+  CLI::App app{"rbcstab " RBCSTAB_VERSION
+               ": shape dynamics and shape instabilities of a quasi-spherical red blood cell in shear flow\n"
+               "(the perturbative model of Moriel, Stone and Mendez). Without a subcommand: the summary of the "
+               "default scene."};
+  app.set_version_flag("--version", "rbcstab " RBCSTAB_VERSION);
+  app.require_subcommand(0, 1);
+  std::map<CLI::App*, Runner> runners;
+  auto add = [&](const char* name, const char* help, Runner (*make)(CLI::App&)) {
+    CLI::App* sub = app.add_subcommand(name, help);
+    runners[sub] = make(*sub);
+  };
+  add("simulate", "Integrate a scene and report the excess-area redistribution", add_simulate);
+  add("summary", "The main job: a readable summary of a scene (default: the paper's Fig. 3 case)", add_summary);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int rc = app.exit(e);
+    return rc == 0 ? kOk : kInvalidInput;
+  }
+  try {
+    for (auto& [sub, run] : runners)
+      if (sub->parsed()) return run();
+    CLI::App* summary = app.get_subcommand("summary");
+    summary->parse(std::vector<std::string>{});
+    return runners[summary]();
+  } catch (const rbcstab::InvalidArgument& e) {
+    std::cerr << "rbcstab: error: " << e.what() << "\n";
+    return kInvalidInput;
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e) == 0 ? kOk : kInvalidInput;
+  } catch (const std::runtime_error& e) {
+    std::cerr << "rbcstab: error: " << e.what() << "\n";
+    return kOutputError;
+  } catch (const std::exception& e) {
+    std::cerr << "rbcstab: internal error: " << e.what() << "\n";
+    return kInternalError;
+  }
+}

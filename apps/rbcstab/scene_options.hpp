@@ -1,0 +1,25 @@
+#pragma once
+// Scene flags shared by every subcommand that runs a scene: --scene FILE plus per-symbol overrides.
+#include <CLI/CLI.hpp>
+#include <string>
+
+#include "rbcstab/io/scene_file.hpp"
+
+namespace rbcstab::cli {
+
+struct SceneOptions {
+  std::string scene_path;
+  Scene flags;  // values given on the command line (only the ones with count() > 0 apply)
+  std::string model = "auto", stepper = "rk8pd";
+  double rtol = 1e-8, atol = 1e-12;
+  CLI::Option *o_lambda{}, *o_Delta{}, *o_Delta0{}, *o_B{}, *o_C{}, *o_beta{}, *o_delta{}, *o_L{}, *o_T{}, *o_dt{},
+      *o_model{}, *o_stepper{}, *o_rtol{}, *o_atol{};
+  std::vector<std::string> delta_l, rest_delta_l;  // "l=value"
+  CLI::Option *o_delta_l{}, *o_rest_delta_l{};
+
+  void add_to(CLI::App& app);
+  // The default scene (paper Fig. 3, out of plane), then the scene file, then the flags.
+  SceneFile resolve() const;
+};
+
+}  // namespace rbcstab::cli

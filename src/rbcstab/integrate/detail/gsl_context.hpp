@@ -1,0 +1,19 @@
+#pragma once
+// Private: what the GSL callbacks see through gsl_odeiv2_system::params.
+#include <gsl/gsl_odeiv2.h>
+
+#include "rbcstab/integrate/integrator.hpp"
+#include "rbcstab/model/structured_jacobian.hpp"
+
+namespace rbcstab::detail {
+
+struct GslContext {
+  const System* system = nullptr;
+  IntegrationCounters* counters = nullptr;
+  StructuredJacobian jacobian;  // scratch for the dense-Jacobian callback
+};
+
+// The linearly implicit Rosenbrock stepper, as a GSL step type.
+const gsl_odeiv2_step_type* rosenbrock_step_type();
+
+}  // namespace rbcstab::detail

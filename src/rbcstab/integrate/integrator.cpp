@@ -1,0 +1,204 @@
+#include "rbcstab/integrate/integrator.hpp"
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <memory>
+
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/integrate/detail/gsl_context.hpp"
+
+namespace rbcstab {
+
+namespace {
+struct StepperInfo {
+  Stepper stepper;
+  const char* name;
+  bool implicit;
+};
+constexpr StepperInfo kSteppers[] = {
+    {Stepper::rk8pd, "rk8pd", false},       {Stepper::rkck, "rkck", false},   {Stepper::rkf45, "rkf45", false},
+    {Stepper::msadams, "msadams", false},   {Stepper::rosenbrock, "rosenbrock", true},
+    {Stepper::msbdf, "msbdf", true},        {Stepper::bsimp, "bsimp", true},  {Stepper::rk4imp, "rk4imp", true},
+};
+
+const gsl_odeiv2_step_type* gsl_type(Stepper s) {
+  switch (s) {
+    case Stepper::rk8pd: return gsl_odeiv2_step_rk8pd;
+    case Stepper::rkck: return gsl_odeiv2_step_rkck;
+    case Stepper::rkf45: return gsl_odeiv2_step_rkf45;
+    case Stepper::msadams: return gsl_odeiv2_step_msadams;
+    case Stepper::rosenbrock: return detail::rosenbrock_step_type();
+    case Stepper::msbdf: return gsl_odeiv2_step_msbdf;
+    case Stepper::bsimp: return gsl_odeiv2_step_bsimp;
+    case Stepper::rk4imp: return gsl_odeiv2_step_rk4imp;
+  }
+  return gsl_odeiv2_step_rk8pd;
+}
+
+int gsl_rhs(double t, const double y[], double dydt[], void* params) {
+  auto* ctx = static_cast<detail::GslContext*>(params);
+  ++ctx->counters->rhs_evaluations;
+  const std::size_t n = ctx->system->dimension();
+  ctx->system->rhs(t, {y, n}, {dydt, n});
+  for (std::size_t i = 0; i < n; ++i)
+    if (!std::isfinite(dydt[i])) return GSL_EBADFUNC;
+  return GSL_SUCCESS;
+}
+
+int gsl_jac(double t, const double y[], double* dfdy, double dfdt[], void* params) {
+  auto* ctx = static_cast<detail::GslContext*>(params);
+  ++ctx->counters->jacobian_evaluations;
+  const std::size_t n = ctx->system->dimension();
+  ctx->system->jacobian(t, {y, n}, ctx->jacobian, {dfdt, n});
+  ctx->jacobian.to_dense({dfdy, n * n});
+  return GSL_SUCCESS;
+}
+
+struct DriverDeleter {
+  void operator()(gsl_odeiv2_driver* d) const { gsl_odeiv2_driver_free(d); }
+};
+
+// GSL's default error handler aborts; every GSL error here is a returned status instead.
+struct GslErrorHandlerOff {
+  gsl_error_handler_t* previous = gsl_set_error_handler_off();
+  ~GslErrorHandlerOff() { gsl_set_error_handler(previous); }
+};
+}  // namespace
+
+std::string to_string(Stepper s) {
+  for (const auto& info : kSteppers)
+    if (info.stepper == s) return info.name;
+  return "rk8pd";
+}
+
+Stepper stepper_from_string(const std::string& name) {
+  for (const auto& info : kSteppers)
+    if (name == info.name) return info.stepper;
+  std::string all;
+  for (const auto& n : stepper_names()) all += (all.empty() ? "" : ", ") + n;
+  throw InvalidArgument("stepper", "stepper = '" + name + "' is not one of: " + all);
+}
+
+const std::vector<std::string>& stepper_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const auto& info : kSteppers) v.emplace_back(info.name);
+    return v;
+  }();
+  return names;
+}
+
+bool is_implicit(Stepper s) {
+  for (const auto& info : kSteppers)
+    if (info.stepper == s) return info.implicit;
+  return false;
+}
+
+std::string to_string(IntegrationStatus s) {
+  switch (s) {
+    case IntegrationStatus::success: return "success";
+    case IntegrationStatus::step_size_underflow: return "step_size_underflow";
+    case IntegrationStatus::non_finite_state: return "non_finite_state";
+    case IntegrationStatus::step_limit: return "step_limit";
+    case IntegrationStatus::time_limit: return "time_limit";
+    case IntegrationStatus::solver_error: return "solver_error";
+  }
+  return "solver_error";
+}
+
+void IntegratorOptions::validate() const {
+  require(std::isfinite(rtol) && rtol >= 1e-15 && rtol <= 1e-1, "rtol", rtol, "in [1e-15, 0.1]");
+  require(std::isfinite(atol) && atol >= 0 && atol <= 1, "atol", atol, "in [0, 1]");
+  require(std::isfinite(h_init) && h_init > 0, "h_init", h_init, "finite and > 0");
+  require(std::isfinite(h_min) && h_min > 0 && h_min <= h_init, "h_min", h_min,
+          "in (0, h_init] with h_init = " + format_value(h_init));
+  require(max_steps > 0, "max_steps", double(max_steps), "> 0");
+  require(std::isfinite(max_seconds) && max_seconds >= 0, "max_seconds", max_seconds, "finite and >= 0 (0: no limit)");
+}
+
+IntegrationResult integrate(const System& system, std::span<const double> y0, double t0,
+                            std::span<const double> grid, const IntegratorOptions& options,
+                            const StateObserver& on_sample, const StateObserver& on_step) {
+  options.validate();
+  const std::size_t n = system.dimension();
+  require(y0.size() == n, "y0", double(y0.size()), "of the system's dimension " + std::to_string(n));
+  require_finite("t0", t0);
+  for (std::size_t i = 0; i < grid.size(); ++i)
+    require(std::isfinite(grid[i]) && grid[i] >= t0 && (i == 0 || grid[i] > grid[i - 1]), "grid", grid[i],
+            "finite, increasing and >= t0");
+
+  const auto start = std::chrono::steady_clock::now();
+  const GslErrorHandlerOff handler_guard;
+  IntegrationResult result;
+  detail::GslContext ctx{&system, &result.counters, {}};
+  gsl_odeiv2_system sys{gsl_rhs, gsl_jac, n, &ctx};
+  std::unique_ptr<gsl_odeiv2_driver, DriverDeleter> driver(gsl_odeiv2_driver_alloc_standard_new(
+      &sys, gsl_type(options.stepper), options.h_init, options.atol, options.rtol, 1.0, 0.0));
+  if (!driver) {
+    result.status = IntegrationStatus::solver_error;
+    result.reason = "GSL could not allocate the " + to_string(options.stepper) + " driver";
+    return result;
+  }
+
+  std::vector<double> y(y0.begin(), y0.end());
+  double t = t0, h = options.h_init;
+  auto fail = [&](IntegrationStatus status, std::string reason) {
+    result.status = status;
+    result.reason = std::move(reason);
+  };
+  if (!std::all_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); }))
+    fail(IntegrationStatus::non_finite_state, "the initial state is not finite");
+
+  for (std::size_t k = 0; k < grid.size() && result.status == IntegrationStatus::success; ++k) {
+    const double target = grid[k];
+    while (t < target) {
+      const int rc = gsl_odeiv2_evolve_apply(driver->e, driver->c, driver->s, &sys, &t, target, &h, y.data());
+      if (rc == GSL_EBADFUNC) {
+        fail(IntegrationStatus::non_finite_state, "the right-hand side became non-finite at t = " + format_value(t));
+        break;
+      }
+      if (rc != GSL_SUCCESS) {
+        const bool tiny = std::abs(h) < options.h_min;
+        fail(tiny ? IntegrationStatus::step_size_underflow : IntegrationStatus::solver_error,
+             std::string("GSL ") + to_string(options.stepper) + " failed at t = " + format_value(t) + " (h = " +
+                 format_value(h) + "): " + gsl_strerror(rc));
+        break;
+      }
+      ++result.counters.steps;
+      if (!std::all_of(y.begin(), y.end(), [](double v) { return std::isfinite(v); })) {
+        fail(IntegrationStatus::non_finite_state, "the state became non-finite at t = " + format_value(t));
+        break;
+      }
+      if (on_step) on_step(t, y);
+      if (t < target && std::abs(h) < options.h_min) {
+        fail(IntegrationStatus::step_size_underflow, "the step size fell to " + format_value(h) + " < h_min = " +
+                                                         format_value(options.h_min) + " at t = " + format_value(t));
+        break;
+      }
+      if (result.counters.steps >= options.max_steps && t < target) {
+        fail(IntegrationStatus::step_limit,
+             "reached max_steps = " + std::to_string(options.max_steps) + " at t = " + format_value(t));
+        break;
+      }
+      if (options.max_seconds > 0 && (result.counters.steps & 63) == 0 &&
+          std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > options.max_seconds) {
+        fail(IntegrationStatus::time_limit,
+             "exceeded max_seconds = " + format_value(options.max_seconds) + " at t = " + format_value(t));
+        break;
+      }
+    }
+    if (result.status != IntegrationStatus::success) break;
+    if (on_sample) on_sample(t, y);
+  }
+  result.counters.failed_steps = driver->e->failed_steps;
+  result.t_reached = t;
+  result.y = std::move(y);
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return result;
+}
+
+}  // namespace rbcstab

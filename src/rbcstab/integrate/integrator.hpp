@@ -1,0 +1,66 @@
+#pragma once
+// Time integration of a model level with GSL odeiv2 (adaptive steppers, user output grid, counters).
+#include <cstddef>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rbcstab/model/system.hpp"
+
+namespace rbcstab {
+
+enum class Stepper {
+  rk8pd,       // explicit Prince-Dormand 8(9): the default for non-stiff levels (modal, reduced)
+  rkck,        // explicit Cash-Karp 4(5)
+  rkf45,       // explicit Runge-Kutta-Fehlberg 4(5)
+  msadams,     // explicit/implicit Adams multistep (functional iteration)
+  rosenbrock,  // linearly implicit Rosenbrock 4(3) (Shampine's RODAS-type GRK4T) using J = M + v w^T: O(n) solves
+  msbdf,       // GSL's BDF with dense analytic Jacobian
+  bsimp,       // GSL's implicit Bulirsch-Stoer with dense analytic Jacobian
+  rk4imp,      // GSL's implicit Gauss 4th order with dense analytic Jacobian
+};
+std::string to_string(Stepper s);
+Stepper stepper_from_string(const std::string& name);  // throws InvalidArgument("stepper", ...)
+const std::vector<std::string>& stepper_names();
+bool is_implicit(Stepper s);
+
+struct IntegratorOptions {
+  Stepper stepper = Stepper::rk8pd;  // rk8pd: cheapest per digit for the modal level (docs/benchmarks.md)
+  double rtol = 1e-8;                // relative tolerance of the local error control
+  double atol = 1e-12;               // absolute tolerance (for the modal level: on ln Delta_l too)
+  double h_init = 1e-3;              // first trial step; adapted at once
+  double h_min = 1e-13;              // a step below this ends the run as step_size_underflow
+  std::size_t max_steps = 20'000'000;  // bounds the work: a run never hangs
+  double max_seconds = 0;            // wall-clock budget; 0 = none
+  void validate() const;             // throws InvalidArgument naming the field
+};
+
+enum class IntegrationStatus { success, step_size_underflow, non_finite_state, step_limit, time_limit, solver_error };
+std::string to_string(IntegrationStatus s);
+
+struct IntegrationCounters {
+  std::size_t steps = 0;             // accepted steps
+  std::size_t failed_steps = 0;      // rejected trial steps
+  std::size_t rhs_evaluations = 0;
+  std::size_t jacobian_evaluations = 0;
+};
+
+struct IntegrationResult {
+  IntegrationStatus status = IntegrationStatus::success;
+  std::string reason;                // empty on success
+  double t_reached = 0;
+  std::vector<double> y;             // state at t_reached
+  IntegrationCounters counters;
+  double seconds = 0;
+};
+
+using StateObserver = std::function<void(double t, std::span<const double> y)>;
+
+// Integrates y' = F(t, y) from (t0, y0) through the increasing times in grid (each > t0 or equal
+// to it), calling on_sample at each grid time and on_step after each accepted step.
+IntegrationResult integrate(const System& system, std::span<const double> y0, double t0,
+                            std::span<const double> grid, const IntegratorOptions& options,
+                            const StateObserver& on_sample, const StateObserver& on_step = {});
+
+}  // namespace rbcstab

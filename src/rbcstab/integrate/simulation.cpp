@@ -1,0 +1,170 @@
+#include "rbcstab/integrate/simulation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <numeric>
+
+#include "rbcstab/core/error.hpp"
+
+namespace rbcstab {
+
+void SimulationOptions::validate() const {
+  integrator.validate();
+  require(std::isfinite(tail_window) && tail_window > 0, "tail_window", tail_window, "finite and > 0");
+}
+
+std::vector<double> sampling_grid(double T, double dt) {
+  std::vector<double> g;
+  const auto n = static_cast<std::size_t>(std::floor(T / dt * (1 + 1e-12)));
+  g.reserve(n + 2);
+  for (std::size_t k = 0; k <= n; ++k) g.push_back(std::min(T, double(k) * dt));
+  if (T - g.back() > 1e-12 * T) g.push_back(T);
+  g.back() = T;
+  return g;
+}
+
+namespace {
+constexpr int kTailIntervals = 400;  // Simpson's rule on the tail window: error ~ (w/400)^4 |Delta''''|
+
+int argmax_growth(const std::vector<double>& X, const std::vector<double>& X0) {
+  int best = 0;
+  for (std::size_t j = 1; j < X.size(); ++j)
+    if (X[j] - X0[j] > X[best] - X0[best]) best = int(j);
+  return best + 2;
+}
+}  // namespace
+
+SimulationResult simulate(const Scene& scene, const SimulationOptions& options) {
+  scene.validate();
+  options.validate();
+  const InitialState init = initial_state(scene);
+  SimulationResult res;
+  res.scene_name = scene.name;
+  res.level = choose_level(scene, init);
+  res.warnings = scene.parameters.warnings();
+  if (!res.level.exact) res.warnings.push_back("model level " + to_string(res.level.level) + " " + res.level.reason);
+  const auto system = make_system(scene.parameters, init, res.level.level);
+  res.L = scene.L;
+  res.T = scene.T;
+
+  // Output grid plus a fine grid over the tail window for the time averages.
+  const std::vector<double> user_grid = sampling_grid(scene.T, scene.dt);
+  const double tail_start = std::max(0.0, scene.T - options.tail_window);
+  std::vector<double> grid = user_grid;
+  for (int k = 0; k <= kTailIntervals; ++k) grid.push_back(tail_start + (scene.T - tail_start) * k / kTailIntervals);
+  std::sort(grid.begin(), grid.end());
+  grid.erase(std::unique(grid.begin(), grid.end(), [&](double a, double b) { return b - a <= 1e-12 * scene.T; }),
+             grid.end());
+
+  const std::vector<double> y0 = system->initial_state();
+  const Observation o0 = system->observe(0, y0);
+  res.Delta_initial = o0.Delta_l;
+  res.Delta_total_initial = std::accumulate(o0.Delta_l.begin(), o0.Delta_l.end(), 0.0);
+  res.sigma_initial = o0.sigma;
+
+  // Psi = -arg f_{2,2} in (-pi, pi] at t = 0 (pi for the in-plane start, as the paper), then unwrapped.
+  auto wrapped_Psi = [](std::complex<double> f22) {
+    double psi = -std::arg(f22);
+    if (psi <= -std::numbers::pi) psi += 2 * std::numbers::pi;
+    return psi;
+  };
+  double Psi = wrapped_Psi(o0.f22);
+  auto unwrap = [&](std::complex<double> f22) {
+    const double raw = -std::arg(f22);
+    Psi = raw + 2 * std::numbers::pi * std::round((Psi - raw) / (2 * std::numbers::pi));
+    return Psi;
+  };
+  auto r_of = [](const Observation& o) {
+    return o.Delta2 > 0 ? std::min(1.0, std::abs(o.f22) * std::sqrt(4 / o.Delta2)) : 0.0;
+  };
+
+  std::size_t user_index = 0;
+  std::vector<double> tail_t;
+  std::vector<std::vector<double>> tail_D;
+  std::vector<double> tail_sigma;
+  Observation last = o0;
+  auto on_step = [&](double t, std::span<const double> y) {
+    const Observation o = system->observe(t, y);
+    const double total = std::accumulate(o.Delta_l.begin(), o.Delta_l.end(), 0.0);
+    res.excess_area_drift = std::max(res.excess_area_drift, std::abs(total - res.Delta_total_initial));
+    unwrap(o.f22);
+  };
+  auto on_sample = [&](double t, std::span<const double> y) {
+    const Observation o = system->observe(t, y);
+    last = o;
+    const double psi = t == 0 ? Psi : unwrap(o.f22);
+    if (user_index < user_grid.size() && std::abs(user_grid[user_index] - t) <= 1e-12 * scene.T) {
+      ++user_index;
+      if (options.record_trajectory) {
+        res.trajectory.t.push_back(t);
+        res.trajectory.Delta_l.push_back(o.Delta_l);
+        res.trajectory.sigma.push_back(o.sigma);
+        res.trajectory.r.push_back(r_of(o));
+        res.trajectory.Psi.push_back(psi);
+      }
+    }
+    if (t >= tail_start - 1e-12 * scene.T) {
+      tail_t.push_back(t);
+      tail_D.push_back(o.Delta_l);
+      tail_sigma.push_back(o.sigma);
+    }
+  };
+
+  const IntegrationResult ir = integrate(*system, y0, 0.0, grid, options.integrator, on_sample, on_step);
+  res.status = ir.status;
+  res.reason = ir.reason;
+  res.counters = ir.counters;
+  res.seconds = ir.seconds;
+  res.t_reached = ir.t_reached;
+  res.y_final = ir.y;
+  res.Delta_final = last.Delta_l;
+  res.sigma_final = last.sigma;
+  res.r_final = r_of(last);
+  res.Psi_final = Psi;
+
+  // Time averages over the tail window by the trapezoid-corrected Simpson rule on its fine grid
+  // (falls back to the trapezoid rule when the run stopped early).
+  const std::size_t nt = tail_t.size();
+  res.Delta_tail_mean = res.Delta_final;
+  res.sigma_tail_mean = res.sigma_final;
+  if (nt >= 2) {
+    std::vector<double> weights(nt, 0.0);
+    const bool simpson = ir.status == IntegrationStatus::success && nt == std::size_t(kTailIntervals) + 1;
+    const double span = tail_t.back() - tail_t.front();
+    for (std::size_t k = 0; k < nt; ++k) {
+      if (simpson) {
+        const double h = span / kTailIntervals;
+        weights[k] = h / 3 * ((k == 0 || k == nt - 1) ? 1 : (k % 2 ? 4 : 2));
+      } else {
+        if (k > 0) weights[k] += 0.5 * (tail_t[k] - tail_t[k - 1]);
+        if (k + 1 < nt) weights[k] += 0.5 * (tail_t[k + 1] - tail_t[k]);
+      }
+    }
+    if (span > 0) {
+      std::fill(res.Delta_tail_mean.begin(), res.Delta_tail_mean.end(), 0.0);
+      res.sigma_tail_mean = 0;
+      for (std::size_t k = 0; k < nt; ++k) {
+        for (std::size_t j = 0; j < res.Delta_tail_mean.size(); ++j)
+          res.Delta_tail_mean[j] += weights[k] * tail_D[k][j] / span;
+        res.sigma_tail_mean += weights[k] * tail_sigma[k] / span;
+      }
+    }
+    // Oscillating: Delta_2 rises and falls within the tail by more than rounding.
+    bool up = false, down = false;
+    double lo = tail_D[0][0], hi = lo;
+    for (std::size_t k = 1; k < nt; ++k) {
+      const double d = tail_D[k][0] - tail_D[k - 1][0];
+      up = up || d > 0;
+      down = down || d < 0;
+      lo = std::min(lo, tail_D[k][0]);
+      hi = std::max(hi, tail_D[k][0]);
+    }
+    res.oscillating = up && down && (hi - lo) > 1e-9 * scene.parameters.Delta;
+  }
+  res.l_Delta_final = argmax_growth(res.Delta_final, res.Delta_initial);
+  res.l_Delta = res.oscillating ? argmax_growth(res.Delta_tail_mean, res.Delta_initial) : res.l_Delta_final;
+  return res;
+}
+
+}  // namespace rbcstab

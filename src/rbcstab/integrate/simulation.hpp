@@ -1,0 +1,54 @@
+#pragma once
+// A scene run end to end: initial state, smallest exact level, integration, and the paper's
+// observables (Delta_l, sigma, r, Psi, l_Delta) on the output grid.
+#include <string>
+#include <vector>
+
+#include "rbcstab/integrate/integrator.hpp"
+#include "rbcstab/model/scene.hpp"
+
+namespace rbcstab {
+
+struct SimulationOptions {
+  IntegratorOptions integrator;  // stepper, tolerances, limits
+  double tail_window = 10;       // Delta_l averaged over [T - tail_window, T] (Appendix E)
+  bool record_trajectory = true; // keep the samples on the output grid
+  void validate() const;
+};
+
+struct Trajectory {
+  std::vector<double> t;
+  std::vector<std::vector<double>> Delta_l;  // [sample][l - 2]
+  std::vector<double> sigma, r, Psi;         // Psi unwrapped along the accepted steps
+};
+
+struct SimulationResult {
+  std::string scene_name;
+  LevelChoice level;
+  IntegrationStatus status = IntegrationStatus::success;
+  std::string reason;
+  int L = 2;
+  double T = 0, t_reached = 0;
+  std::vector<double> Delta_initial, Delta_final, Delta_tail_mean;  // index l - 2
+  double Delta_total_initial = 0;  // sum_l Delta_l(0) = Delta + sum of the perturbations
+  bool oscillating = false;        // Delta_2 is not monotonic over the tail window
+  int l_Delta = 2;                 // argmax_l [X_l - Delta_l(0)], X = tail mean if oscillating, else Delta_l(T)
+  int l_Delta_final = 2;           // the same with X = Delta_l(T)
+  double sigma_initial = 0, sigma_final = 0, sigma_tail_mean = 0;
+  double r_final = 0, Psi_final = 0;
+  double excess_area_drift = 0;    // max over accepted steps of |sum_l Delta_l(t) - sum_l Delta_l(0)|
+  Trajectory trajectory;
+  IntegrationCounters counters;
+  double seconds = 0;
+  std::vector<double> y_final;
+  std::vector<std::string> warnings;
+};
+
+// Runs the scene (validated first; throws InvalidArgument on bad input). Numerical failure is a
+// status in the result, with everything computed up to t_reached.
+SimulationResult simulate(const Scene& scene, const SimulationOptions& options = {});
+
+// Regular-grid helper: 0, dt, 2 dt, ..., T (T always included).
+std::vector<double> sampling_grid(double T, double dt);
+
+}  // namespace rbcstab

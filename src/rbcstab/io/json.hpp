@@ -1,0 +1,19 @@
+#pragma once
+// JSON views of results (nlohmann::json). Non-finite numbers become null with a note beside them.
+#include <nlohmann/json.hpp>
+
+#include "rbcstab/integrate/simulation.hpp"
+#include "rbcstab/model/parameters.hpp"
+#include "rbcstab/model/scene.hpp"
+
+namespace rbcstab {
+
+nlohmann::json to_json(const Parameters& p);  // inputs plus derived alpha, Lambda, S
+nlohmann::json to_json(const Scene& s);
+nlohmann::json to_json(const SimulationResult& r);
+// {"2": v[0], "3": v[1], ...}
+nlohmann::json by_mode(const std::vector<double>& values_from_l2);
+// A double, or null when not finite.
+nlohmann::json number_or_null(double v);
+
+}  // namespace rbcstab

@@ -1,0 +1,96 @@
+#include "rbcstab/model/coefficients.hpp"
+
+#include <cmath>
+#include <numbers>
+
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/model/parameters.hpp"
+
+namespace rbcstab {
+
+namespace {
+void require_mode(int l) { require(l >= 2, "l", l, "an integer >= 2"); }
+}  // namespace
+
+double d_lambda_l(double lambda, int l) {
+  const double x = l;
+  const double q = 2 * x * x * x + 3 * x * x;
+  return (q + 4) + lambda * (q - 5);
+}
+
+double Gamma1(double lambda, int l) {
+  require_mode(l);
+  const double x = l;
+  return -(x + 2) * (x + 1) * (x + 1) * x * x * (x - 1) / d_lambda_l(lambda, l);
+}
+
+double Gamma2(double lambda, int l) {
+  require_mode(l);
+  const double x = l;
+  return -(x + 2) * (x + 1) * x * (x - 1) / d_lambda_l(lambda, l);
+}
+
+double Gamma3(double lambda, int l) {
+  require_mode(l);
+  const double x = l;
+  return -4 * (x + 2) * (x - 1) / d_lambda_l(lambda, l);
+}
+
+double a_l(int l) {
+  const double x = l;
+  return (x + 2) * (x - 1) / 2;
+}
+
+double Pi_l(int l) {
+  const double x = l;
+  return x * (x + 1);
+}
+
+std::complex<double> shear_drive(double lambda, int l, int m) {
+  if (l != 2 || (m != 2 && m != -2)) return {0.0, 0.0};
+  const double magnitude = 4 * std::sqrt(30 * std::numbers::pi) / d_lambda_l(lambda, 2);
+  return {0.0, m > 0 ? -magnitude : magnitude};
+}
+
+double Upsilon(const Parameters& p, int l, double sigma) {
+  const double Pi = Pi_l(l);
+  return Gamma2(p.lambda, l) / p.B * (Pi + sigma + 4 * p.alpha() / Pi);
+}
+
+double sigma_critical(int l, double alpha) {
+  const double Pi = Pi_l(l);
+  return -(Pi + 4 * alpha / Pi);
+}
+
+std::vector<double> wigner_column(int l, double beta) {
+  require(l >= 0, "l", l, "an integer >= 0");
+  require_finite("beta", beta);
+  const double x = std::cos(beta);
+  const double s = std::sin(beta);
+  std::vector<double> col(2 * l + 1, 0.0);
+  // Normalised P~_l^m = sqrt((l-m)!/(l+m)!) P_l^m for m >= 0, built up in l at fixed m.
+  double pmm = 1.0;  // P~_m^m = prod_{k=1..m} sqrt((2k-1)/(2k)) s^m
+  for (int m = 0; m <= l; ++m) {
+    if (m > 0) pmm *= std::sqrt((2.0 * m - 1) / (2.0 * m)) * s;
+    double p_prev = pmm;  // P~_{m}^m
+    double value = pmm;
+    if (l > m) {
+      double p_curr = std::sqrt(2.0 * m + 1) * x * pmm;  // P~_{m+1}^m
+      for (int k = m + 2; k <= l; ++k) {
+        const double kk = k;
+        const double next =
+            ((2 * kk - 1) * x * p_curr - std::sqrt((kk - 1) * (kk - 1) - double(m) * m) * p_prev) /
+            std::sqrt(kk * kk - double(m) * m);
+        p_prev = p_curr;
+        p_curr = next;
+      }
+      value = p_curr;
+    }
+    col[l + m] = value;
+    // D_{-m,0} = (-1)^m D_{m,0} (reality of the rotated axisymmetric shape).
+    col[l - m] = (m % 2 == 0) ? value : -value;
+  }
+  return col;
+}
+
+}  // namespace rbcstab

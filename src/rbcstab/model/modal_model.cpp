@@ -1,0 +1,148 @@
+#include <cmath>
+
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/model/levels.hpp"
+
+namespace rbcstab {
+
+// State layout: y[0] = f20 (real by reality), y[1..2] = f21, y[3..4] = f22, y[5+j] = ln Delta_l
+// for l = active_[j]. Exactness: with g_{l>=3} = 0, S_{l,m} = 0 for l >= 3 and every f_{l,m}
+// obeys f' = (i m/2 + Upsilon_l) f, so Delta_l' = 2 Upsilon_l Delta_l (design/model.md section 2).
+ModalModel::ModalModel(const Parameters& p, const InitialState& init) : p_(p), L_(init.f.L), f0_(init.f) {
+  p_.validate();
+  for (int l = 3; l <= init.g.L; ++l)
+    if (init.g.excess_area(l) != 0)
+      throw InvalidArgument("model",
+                            "model = modal cannot hold a stress-free shape with l >= 3 content: use full or auto");
+  const double alpha = p.alpha();
+  G1a3_.push_back(Gamma1(p.lambda, 2) + alpha * Gamma3(p.lambda, 2));
+  G2_.push_back(Gamma2(p.lambda, 2));
+  y0_ = {init.f.at(2, 0).real(), init.f.at(2, 1).real(), init.f.at(2, 1).imag(), init.f.at(2, 2).real(),
+         init.f.at(2, 2).imag()};
+  for (int l = 3; l <= L_; ++l) {
+    const double Dl = init.f.excess_area(l);
+    if (Dl > 0) {  // a mode with no area stays at zero: it is not carried
+      active_.push_back(l);
+      G1a3_.push_back(Gamma1(p.lambda, l) + alpha * Gamma3(p.lambda, l));
+      G2_.push_back(Gamma2(p.lambda, l));
+      y0_.push_back(std::log(Dl));
+    }
+  }
+  C22_ = shear_drive(p.lambda, 2, 2);
+  for (int m = 0; m <= 2; ++m) g20_[m] = init.g.at(2, m);
+}
+
+void ModalModel::drive(double t, std::complex<double> S[3]) const {
+  const double G3C = Gamma3(p_.lambda, 2) * p_.inv_C();
+  for (int m = 0; m <= 2; ++m) {
+    const std::complex<double> g = g20_[m] == 0.0 ? 0.0 : g20_[m] * std::polar(1.0, 0.5 * m * t);
+    S[m] = -G3C * g;
+  }
+  S[2] += C22_;
+}
+
+ModalModel::Sums ModalModel::sums(double, std::span<const double> y, const std::complex<double> S[3]) const {
+  const double a2 = 2;
+  const double Delta2 = a2 * (y[0] * y[0] + 2 * (y[1] * y[1] + y[2] * y[2] + y[3] * y[3] + y[4] * y[4]));
+  // Re sum_m S_{2,m} conj(f_{2,m}): the -m terms equal the +m ones by reality.
+  const double drive = S[0].real() * y[0] + 2 * (S[1].real() * y[1] + S[1].imag() * y[2]) +
+                       2 * (S[2].real() * y[3] + S[2].imag() * y[4]);
+  Sums s{G1a3_[0] * Delta2 + p_.B * a2 * drive, G2_[0] * Delta2, Delta2};
+  for (std::size_t j = 0; j < active_.size(); ++j) {
+    const double Dl = std::exp(y[5 + j]);
+    s.N += G1a3_[j + 1] * Dl;
+    s.D += G2_[j + 1] * Dl;
+  }
+  return s;
+}
+
+double ModalModel::sigma(double t, std::span<const double> y) const {
+  std::complex<double> S[3];
+  drive(t, S);
+  const Sums s = sums(t, y, S);
+  return -s.N / s.D;
+}
+
+void ModalModel::rhs(double t, std::span<const double> y, std::span<double> dydt) const {
+  std::complex<double> S[3];
+  drive(t, S);
+  const Sums s = sums(t, y, S);
+  const double sigma = -s.N / s.D;
+  const double ups2 = Upsilon(p_, 2, sigma);
+  dydt[0] = ups2 * y[0] + S[0].real();
+  dydt[1] = ups2 * y[1] - 0.5 * y[2] + S[1].real();
+  dydt[2] = 0.5 * y[1] + ups2 * y[2] + S[1].imag();
+  dydt[3] = ups2 * y[3] - y[4] + S[2].real();
+  dydt[4] = y[3] + ups2 * y[4] + S[2].imag();
+  for (std::size_t j = 0; j < active_.size(); ++j) dydt[5 + j] = 2 * Upsilon(p_, active_[j], sigma);
+}
+
+void ModalModel::jacobian(double t, std::span<const double> y, StructuredJacobian& J, std::span<double> dfdt) const {
+  std::complex<double> S[3];
+  drive(t, S);
+  const Sums s = sums(t, y, S);
+  const double sigma = -s.N / s.D;
+  const double ups2 = Upsilon(p_, 2, sigma);
+  const double a2 = 2, B = p_.B;
+  J.resize(dimension());
+  J.diag[0] = ups2;
+  for (int i : {1, 3}) {
+    J.block_start[i] = 2;
+    J.block_start[i + 1] = 0;
+    J.diag[i] = J.diag[i + 1] = ups2;
+    J.upper[i] = i == 1 ? -0.5 : -1.0;
+    J.lower[i] = -J.upper[i];
+  }
+  // v = dF/d sigma; w = grad sigma = -(grad N + sigma grad D)/D.
+  const double dups2 = G2_[0] / B;
+  const double dDelta2[5] = {2 * a2 * y[0], 4 * a2 * y[1], 4 * a2 * y[2], 4 * a2 * y[3], 4 * a2 * y[4]};
+  const double dDrive[5] = {S[0].real(), 2 * S[1].real(), 2 * S[1].imag(), 2 * S[2].real(), 2 * S[2].imag()};
+  for (int i = 0; i < 5; ++i) {
+    J.v[i] = dups2 * y[i];
+    J.w[i] = -((G1a3_[0] + sigma * G2_[0]) * dDelta2[i] + B * a2 * dDrive[i]) / s.D;
+  }
+  for (std::size_t j = 0; j < active_.size(); ++j) {
+    const double Dl = std::exp(y[5 + j]);
+    J.v[5 + j] = 2 * G2_[j + 1] / B;
+    J.w[5 + j] = -(G1a3_[j + 1] + sigma * G2_[j + 1]) * Dl / s.D;
+  }
+  // Explicit time dependence through g_{2,m}(t): dS/dt = -Gamma3/C (i m/2) g(t).
+  std::complex<double> dS[3];
+  const double G3C = Gamma3(p_.lambda, 2) * p_.inv_C();
+  for (int m = 0; m <= 2; ++m) dS[m] = -G3C * std::complex<double>(0, 0.5 * m) * g20_[m] * std::polar(1.0, 0.5 * m * t);
+  const double dnum = dS[0].real() * y[0] + 2 * (dS[1].real() * y[1] + dS[1].imag() * y[2]) +
+                      2 * (dS[2].real() * y[3] + dS[2].imag() * y[4]);
+  const double dsigma_dt = -B * a2 * dnum / s.D;
+  const double dSflat[5] = {dS[0].real(), dS[1].real(), dS[1].imag(), dS[2].real(), dS[2].imag()};
+  for (std::size_t i = 0; i < dimension(); ++i) dfdt[i] = (i < 5 ? dSflat[i] : 0.0) + J.v[i] * dsigma_dt;
+}
+
+Observation ModalModel::observe(double t, std::span<const double> y) const {
+  Observation o;
+  o.Delta_l.assign(L_ - 1, 0.0);
+  o.Delta_l[0] = 2 * (y[0] * y[0] + 2 * (y[1] * y[1] + y[2] * y[2] + y[3] * y[3] + y[4] * y[4]));
+  for (std::size_t j = 0; j < active_.size(); ++j) o.Delta_l[active_[j] - 2] = std::exp(y[5 + j]);
+  o.sigma = sigma(t, y);
+  o.f22 = {y[3], y[4]};
+  o.Delta2 = o.Delta_l[0];
+  return o;
+}
+
+ModeAmplitudes ModalModel::amplitudes(double t, std::span<const double> y) const {
+  ModeAmplitudes f(L_);
+  const std::complex<double> f2[3] = {{y[0], 0.0}, {y[1], y[2]}, {y[3], y[4]}};
+  for (int m = 0; m <= 2; ++m) {
+    f.at(2, m) = f2[m];
+    f.at(2, -m) = (m % 2 == 0 ? 1.0 : -1.0) * std::conj(f2[m]);
+  }
+  // f_{l,m}(t) = f_{l,m}(0) e^{i m t/2} sqrt(Delta_l(t)/Delta_l(0))
+  for (std::size_t j = 0; j < active_.size(); ++j) {
+    const int l = active_[j];
+    const double scale = std::exp(0.5 * (y[5 + j] - y0_[5 + j]));
+    for (int m = -l; m <= l; ++m) f.at(l, m) = f0_.at(l, m) * std::polar(scale, 0.5 * m * t);
+  }
+  return f;
+}
+
+}  // namespace rbcstab

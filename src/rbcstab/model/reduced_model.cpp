@@ -1,0 +1,97 @@
+#include <cmath>
+
+#include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/model/levels.hpp"
+
+namespace rbcstab {
+
+// State y = (Re z, Im z, w) with z = r e^{-i Psi} = f22 sqrt(2 a2/Delta), w = -f20 sqrt(a2/Delta).
+// The multiplier mu keeps Q = |z|^2 + w^2 exactly constant:  mu Q = Im(z)/Lambda - kappa (Re(conj(z) z0) + w w0),
+// which on Q = 1 is Upsilon_2 of Eq. red_eqs; r' and Psi' of Eq. red_eqs follow from z' by the chain rule.
+ReducedModel::ReducedModel(const Parameters& p, const InitialState& init) : p_(p), L_(init.f.L) {
+  p_.validate();
+  const double a2 = 2;
+  const double Delta2 = init.f.excess_area(2);
+  const double fs = std::sqrt(2 * a2 / Delta2);
+  const std::complex<double> z = init.f.at(2, 2) * fs;
+  double w = -init.f.at(2, 0).real() * std::sqrt(a2 / Delta2);
+  // Drop the m = +-1 content (zero for beta in {0, pi/2}) and renormalise onto the sphere.
+  const double q = std::sqrt(std::norm(z) + w * w);
+  y0_ = {z.real() / q, z.imag() / q, w / q};
+  inv_Lambda_ = 1 / p.Lambda();
+  kappa_ = p.inv_Lambda_S();
+  const double Delta0 = init.g.excess_area(2);
+  if (Delta0 > 0 && kappa_ > 0) {
+    z00_ = init.g.at(2, 2) * std::sqrt(2 * a2 / Delta0);
+    w0_ = -init.g.at(2, 0).real() * std::sqrt(a2 / Delta0);
+    const double q0 = std::sqrt(std::norm(z00_) + w0_ * w0_);
+    z00_ /= q0;
+    w0_ /= q0;
+  } else {
+    z00_ = 0;
+    w0_ = 0;
+  }
+}
+
+std::complex<double> ReducedModel::z0(double t) const { return z00_ * std::polar(1.0, t); }
+
+double ReducedModel::mu(double t, std::span<const double> y) const {
+  const std::complex<double> zz0 = z0(t);
+  const double Q = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
+  return (inv_Lambda_ * y[1] - kappa_ * (y[0] * zz0.real() + y[1] * zz0.imag() + y[2] * w0_)) / Q;
+}
+
+double ReducedModel::sigma_from_mu(double mu_value) const {
+  // Upsilon_2 = (Gamma2/B)(6 + sigma + 2 alpha/3)
+  return mu_value * p_.B / Gamma2(p_.lambda, 2) - 6 - 4 * p_.alpha() / 6;
+}
+
+void ReducedModel::rhs(double t, std::span<const double> y, std::span<double> dydt) const {
+  const std::complex<double> zz0 = z0(t);
+  const double m = mu(t, y);
+  dydt[0] = m * y[0] - y[1] + kappa_ * zz0.real();
+  dydt[1] = y[0] + m * y[1] - inv_Lambda_ + kappa_ * zz0.imag();
+  dydt[2] = m * y[2] + kappa_ * w0_;
+}
+
+void ReducedModel::jacobian(double t, std::span<const double> y, StructuredJacobian& J, std::span<double> dfdt) const {
+  const std::complex<double> zz0 = z0(t);
+  const double m = mu(t, y);
+  const double Q = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
+  J.resize(3);
+  J.block_start = {2, 0, 1};
+  J.diag = {m, m, m};
+  J.upper[0] = -1;
+  J.lower[0] = 1;
+  J.v = {y[0], y[1], y[2]};
+  const double gradP[3] = {-kappa_ * zz0.real(), inv_Lambda_ - kappa_ * zz0.imag(), -kappa_ * w0_};
+  for (int i = 0; i < 3; ++i) J.w[i] = (gradP[i] - m * 2 * y[i]) / Q;
+  // z0' = i z0
+  const double dz0r = -zz0.imag(), dz0i = zz0.real();
+  const double dmu_dt = -kappa_ * (y[0] * dz0r + y[1] * dz0i) / Q;
+  dfdt[0] = kappa_ * dz0r + y[0] * dmu_dt;
+  dfdt[1] = kappa_ * dz0i + y[1] * dmu_dt;
+  dfdt[2] = y[2] * dmu_dt;
+}
+
+Observation ReducedModel::observe(double t, std::span<const double> y) const {
+  Observation o;
+  o.Delta_l.assign(L_ - 1, 0.0);
+  const double Q = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
+  o.Delta_l[0] = p_.Delta * Q;
+  o.Delta2 = o.Delta_l[0];
+  o.sigma = sigma_from_mu(mu(t, y));
+  o.f22 = std::sqrt(p_.Delta / 4) * std::complex<double>(y[0], y[1]);
+  return o;
+}
+
+ModeAmplitudes ReducedModel::amplitudes(double, std::span<const double> y) const {
+  ModeAmplitudes f(L_);
+  const std::complex<double> f22 = std::sqrt(p_.Delta / 4) * std::complex<double>(y[0], y[1]);
+  f.at(2, 2) = f22;
+  f.at(2, -2) = std::conj(f22);
+  f.at(2, 0) = -std::sqrt(p_.Delta / 2) * y[2];
+  return f;
+}
+
+}  // namespace rbcstab

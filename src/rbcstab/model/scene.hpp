@@ -1,0 +1,53 @@
+#pragma once
+// A scene: material, flow, stress-free shape, orientation, perturbations, truncation and horizon.
+// It builds the initial amplitudes as the paper does (Sec. IV, Appendix A) and picks the smallest
+// model level that is exact for it.
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rbcstab/model/amplitudes.hpp"
+#include "rbcstab/model/parameters.hpp"
+#include "rbcstab/model/system.hpp"
+
+namespace rbcstab {
+
+struct Scene {
+  std::string name = "fig3_op";    // label carried into outputs
+  Parameters parameters;           // defaults: the paper's Fig. 3 case
+  double beta = 0.001;             // rotation of the axisymmetric shapes about y (0: out of plane, pi/2: in plane)
+  double delta = 1e-3;             // perturbation Delta_l(0) put in f_{l,0} for every l = 3..L
+  std::map<int, double> delta_l;   // per-mode overrides of delta
+  std::map<int, double> rest_delta_l;  // stress-free l >= 3 content Delta0_l (only the full model holds it)
+  int L = 10;                      // truncation: modes l = 2..L
+  double T = 500;                  // horizon
+  double dt = 1;                   // output sampling interval
+  ModelLevel model = ModelLevel::automatic;  // forced level, or automatic
+
+  void validate() const;  // throws InvalidArgument naming the key
+  double perturbation(int l) const;  // delta_l with overrides applied
+  double rest_perturbation(int l) const;
+};
+
+struct InitialState {
+  ModeAmplitudes f;  // current shape f_{l,m}(0)
+  ModeAmplitudes g;  // stress-free shape g_{l,m}(0)
+};
+
+// f_{2,m} = -sqrt(Delta/a_2) D^(2)_{m,0}(beta), f_{l,m} = +sqrt(delta_l/a_l) D^(l)_{m,0}(beta),
+// g likewise with Delta0 and the rest perturbations. Delta_2(0) = Delta, as in the paper.
+InitialState initial_state(const Scene& scene);
+
+struct LevelChoice {
+  ModelLevel level;
+  bool exact;           // the chosen level represents the scene without approximation
+  std::string reason;   // why this level (and what is dropped if not exact)
+};
+// The smallest exact level unless scene.model forces one; forcing a level that cannot hold the
+// scene's stress-free shape throws InvalidArgument("model", ...).
+LevelChoice choose_level(const Scene& scene, const InitialState& init);
+
+std::unique_ptr<System> make_system(const Parameters& p, const InitialState& init, ModelLevel level);
+
+}  // namespace rbcstab

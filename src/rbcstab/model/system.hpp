@@ -1,0 +1,45 @@
+#pragma once
+// A model level as an ODE operator y' = F(t, y) on a real state, with the structure every level
+// shares: F = M(mu) y + s(t) where a single scalar multiplier mu (the tension sigma, or the l = 2
+// growth rate in the reduced form) enforces constant excess area. Hence the Jacobian is
+// J = M + v w^T with M block diagonal (1x1 and 2x2 rotation blocks) and v w^T of rank one.
+#include <complex>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rbcstab/model/amplitudes.hpp"
+#include "rbcstab/model/structured_jacobian.hpp"
+
+namespace rbcstab {
+
+enum class ModelLevel { automatic, full, modal, reduced };
+std::string to_string(ModelLevel level);
+ModelLevel model_level_from_string(const std::string& name);  // throws InvalidArgument
+
+// What every level reports at a state: the excess area per mode and the tension.
+struct Observation {
+  std::vector<double> Delta_l;  // index l - 2, l = 2..L
+  double sigma = 0;             // homogeneous membrane tension sigma(t)
+  std::complex<double> f22;     // f_{2,2}: r and Psi are read from it
+  double Delta2 = 0;            // excess area held by l = 2 (normalises r)
+};
+
+class System {
+ public:
+  virtual ~System() = default;
+  virtual ModelLevel level() const = 0;
+  virtual std::size_t dimension() const = 0;
+  virtual int L() const = 0;
+  virtual void rhs(double t, std::span<const double> y, std::span<double> dydt) const = 0;
+  // Fills J = M + v w^T and dF/dt at (t, y).
+  virtual void jacobian(double t, std::span<const double> y, StructuredJacobian& J,
+                        std::span<double> dfdt) const = 0;
+  virtual Observation observe(double t, std::span<const double> y) const = 0;
+  // The state the system was built from, and the amplitudes f_{l,m}(t) rebuilt from any state.
+  virtual std::vector<double> initial_state() const = 0;
+  virtual ModeAmplitudes amplitudes(double t, std::span<const double> y) const = 0;
+};
+
+}  // namespace rbcstab
