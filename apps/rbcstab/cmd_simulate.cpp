@@ -59,12 +59,16 @@ int run(const SimulateOptions& o) {
 }
 }  // namespace
 
-Runner add_simulate(CLI::App& app) {
+static Runner add_simulate(CLI::App& app) {
   auto o = std::make_shared<SimulateOptions>();
   o->scene.add_to(app);
   app.add_flag("--json", o->json, "print one JSON object on stdout");
   app.add_option("--trajectory", o->trajectory, "write t, Delta_2..Delta_L, sigma, r, Psi on the sampling grid to this CSV");
   return [o] { return run(*o); };
 }
+
+namespace {
+const RegisterCommand kRegister{"simulate", "Integrate a scene and report the excess-area redistribution", add_simulate, 20};
+}  // namespace
 
 }  // namespace rbcstab::cli

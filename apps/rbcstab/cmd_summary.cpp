@@ -60,10 +60,14 @@ int run(const SceneOptions& so) {
 }
 }  // namespace
 
-Runner add_summary(CLI::App& app) {
+static Runner add_summary(CLI::App& app) {
   auto o = std::make_shared<SceneOptions>();
   o->add_to(app);
   return [o] { return run(*o); };
 }
+
+namespace {
+const RegisterCommand kRegister{"summary", "The main job: a readable summary of a scene (default: the paper's Fig. 3 case)", add_summary, 10};
+}  // namespace
 
 }  // namespace rbcstab::cli

@@ -1,13 +1,28 @@
 #pragma once
-// Each subcommand registers its options on a CLI11 subcommand and returns the function that runs it.
+// Each subcommand lives in its own cmd_*.cpp and registers itself at start-up: it adds its options
+// to a CLI11 subcommand and returns the function that runs it.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
+#include <vector>
 
 namespace rbcstab::cli {
 
 using Runner = std::function<int()>;
+using CommandFactory = Runner (*)(CLI::App&);
 
-Runner add_simulate(CLI::App& app);
-Runner add_summary(CLI::App& app);
+struct Command {
+  std::string name, help;
+  CommandFactory make;
+  int order;  // position in --help
+};
+
+std::vector<Command>& command_registry();
+
+struct RegisterCommand {
+  RegisterCommand(const char* name, const char* help, CommandFactory make, int order) {
+    command_registry().push_back({name, help, make, order});
+  }
+};
 
 }  // namespace rbcstab::cli

@@ -1,11 +1,19 @@
 // rbcstab: the command-line tool. Only this program prints and chooses exit codes (docs/cli.md).
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <iostream>
 #include <map>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
+
+namespace rbcstab::cli {
+std::vector<Command>& command_registry() {
+  static std::vector<Command> registry;
+  return registry;
+}
+}  // namespace rbcstab::cli
 
 int main(int argc, char** argv) {
   using namespace rbcstab::cli;
@@ -16,12 +24,12 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "rbcstab " RBCSTAB_VERSION);
   app.require_subcommand(0, 1);
   std::map<CLI::App*, Runner> runners;
-  auto add = [&](const char* name, const char* help, Runner (*make)(CLI::App&)) {
-    CLI::App* sub = app.add_subcommand(name, help);
-    runners[sub] = make(*sub);
-  };
-  add("simulate", "Integrate a scene and report the excess-area redistribution", add_simulate);
-  add("summary", "The main job: a readable summary of a scene (default: the paper's Fig. 3 case)", add_summary);
+  auto commands = command_registry();
+  std::sort(commands.begin(), commands.end(), [](const Command& a, const Command& b) { return a.order < b.order; });
+  for (const Command& c : commands) {
+    CLI::App* sub = app.add_subcommand(c.name, c.help);
+    runners[sub] = c.make(*sub);
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
