@@ -61,7 +61,9 @@ class ModalModel final : public System {
   int L_;
   std::vector<int> active_;
   std::vector<double> G1a3_, G2_;  // Gamma1 + alpha Gamma3, Gamma2 for l = 2 (index 0) and active l
+  std::vector<double> ups_slope_, ups_shift_;  // Upsilon_l = slope (shift + sigma), same indexing
   std::complex<double> C22_, g20_[3];
+  double G3C2_ = 0;  // Gamma3^2 / C
   ModeAmplitudes f0_;
   std::vector<double> y0_;
 };

@@ -16,28 +16,33 @@ ModalModel::ModalModel(const Parameters& p, const InitialState& init) : p_(p), L
       throw InvalidArgument("model",
                             "model = modal cannot hold a stress-free shape with l >= 3 content: use full or auto");
   const double alpha = p.alpha();
-  G1a3_.push_back(Gamma1(p.lambda, 2) + alpha * Gamma3(p.lambda, 2));
-  G2_.push_back(Gamma2(p.lambda, 2));
+  auto add_mode = [&](int l) {
+    G1a3_.push_back(Gamma1(p.lambda, l) + alpha * Gamma3(p.lambda, l));
+    G2_.push_back(Gamma2(p.lambda, l));
+    // Upsilon_l(sigma) = (Gamma2/B)(Pi + sigma + 4 alpha/Pi), precomputed for the hot loop.
+    ups_slope_.push_back(Gamma2(p.lambda, l) / p.B);
+    ups_shift_.push_back(Pi_l(l) + 4 * alpha / Pi_l(l));
+  };
+  add_mode(2);
   y0_ = {init.f.at(2, 0).real(), init.f.at(2, 1).real(), init.f.at(2, 1).imag(), init.f.at(2, 2).real(),
          init.f.at(2, 2).imag()};
   for (int l = 3; l <= L_; ++l) {
     const double Dl = init.f.excess_area(l);
     if (Dl > 0) {  // a mode with no area stays at zero: it is not carried
       active_.push_back(l);
-      G1a3_.push_back(Gamma1(p.lambda, l) + alpha * Gamma3(p.lambda, l));
-      G2_.push_back(Gamma2(p.lambda, l));
+      add_mode(l);
       y0_.push_back(std::log(Dl));
     }
   }
   C22_ = shear_drive(p.lambda, 2, 2);
+  G3C2_ = Gamma3(p.lambda, 2) * p.inv_C();
   for (int m = 0; m <= 2; ++m) g20_[m] = init.g.at(2, m);
 }
 
 void ModalModel::drive(double t, std::complex<double> S[3]) const {
-  const double G3C = Gamma3(p_.lambda, 2) * p_.inv_C();
   for (int m = 0; m <= 2; ++m) {
     const std::complex<double> g = g20_[m] == 0.0 ? 0.0 : g20_[m] * std::polar(1.0, 0.5 * m * t);
-    S[m] = -G3C * g;
+    S[m] = -G3C2_ * g;
   }
   S[2] += C22_;
 }
@@ -69,13 +74,13 @@ void ModalModel::rhs(double t, std::span<const double> y, std::span<double> dydt
   drive(t, S);
   const Sums s = sums(t, y, S);
   const double sigma = -s.N / s.D;
-  const double ups2 = Upsilon(p_, 2, sigma);
+  const double ups2 = ups_slope_[0] * (ups_shift_[0] + sigma);
   dydt[0] = ups2 * y[0] + S[0].real();
   dydt[1] = ups2 * y[1] - 0.5 * y[2] + S[1].real();
   dydt[2] = 0.5 * y[1] + ups2 * y[2] + S[1].imag();
   dydt[3] = ups2 * y[3] - y[4] + S[2].real();
   dydt[4] = y[3] + ups2 * y[4] + S[2].imag();
-  for (std::size_t j = 0; j < active_.size(); ++j) dydt[5 + j] = 2 * Upsilon(p_, active_[j], sigma);
+  for (std::size_t j = 0; j < active_.size(); ++j) dydt[5 + j] = 2 * ups_slope_[j + 1] * (ups_shift_[j + 1] + sigma);
 }
 
 void ModalModel::jacobian(double t, std::span<const double> y, StructuredJacobian& J, std::span<double> dfdt) const {
@@ -83,7 +88,7 @@ void ModalModel::jacobian(double t, std::span<const double> y, StructuredJacobia
   drive(t, S);
   const Sums s = sums(t, y, S);
   const double sigma = -s.N / s.D;
-  const double ups2 = Upsilon(p_, 2, sigma);
+  const double ups2 = ups_slope_[0] * (ups_shift_[0] + sigma);
   const double a2 = 2, B = p_.B;
   J.resize(dimension());
   J.diag[0] = ups2;
@@ -109,8 +114,7 @@ void ModalModel::jacobian(double t, std::span<const double> y, StructuredJacobia
   }
   // Explicit time dependence through g_{2,m}(t): dS/dt = -Gamma3/C (i m/2) g(t).
   std::complex<double> dS[3];
-  const double G3C = Gamma3(p_.lambda, 2) * p_.inv_C();
-  for (int m = 0; m <= 2; ++m) dS[m] = -G3C * std::complex<double>(0, 0.5 * m) * g20_[m] * std::polar(1.0, 0.5 * m * t);
+  for (int m = 0; m <= 2; ++m) dS[m] = -G3C2_ * std::complex<double>(0, 0.5 * m) * g20_[m] * std::polar(1.0, 0.5 * m * t);
   const double dnum = dS[0].real() * y[0] + 2 * (dS[1].real() * y[1] + dS[1].imag() * y[2]) +
                       2 * (dS[2].real() * y[3] + dS[2].imag() * y[4]);
   const double dsigma_dt = -B * a2 * dnum / s.D;
