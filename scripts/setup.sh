@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# One-step set-up for a fresh Debian 12 machine: installs the missing Debian packages (needs root,
+# or sudo), builds rbcstab in Release with warnings as errors, then
+#   run  : runs the main job (the report of the default scene; see README)
+#   test : runs the default test suite (ctest, every label except 'slow')
+#   build: only installs and builds
+# Environment: RBCSTAB_BUILD_DIR (default build/release), RBCSTAB_JOBS (default: number of cores).
+set -euo pipefail
+mode="${1:-run}"
+shift || true
+case "$mode" in run|test|build) ;; *) echo "usage: $0 {run|test|build} [extra args for the main job]" >&2; exit 2;; esac
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+build="${RBCSTAB_BUILD_DIR:-$root/build/release}"
+jobs="${RBCSTAB_JOBS:-$(nproc)}"
+
+packages=(build-essential cmake ninja-build pkg-config
+  libeigen3-dev libgsl-dev coinor-libipopt-dev libarpack2-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
+  libopenmpi-dev openmpi-bin python3-matplotlib)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  echo "rbcstab setup: installing ${missing[*]}" >&2
+  sudo_cmd=()
+  if [ "$(id -u)" -ne 0 ]; then
+    command -v sudo >/dev/null || { echo "rbcstab setup: run as root (or install sudo) to install: ${missing[*]}" >&2; exit 1; }
+    sudo_cmd=(sudo)
+  fi
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRBCSTAB_WERROR=ON >/dev/null
+cmake --build "$build" -j "$jobs"
+
+case "$mode" in
+  run)
+    # The main job: the report of the default scene (paper Fig. 3, out of plane) into out/default.
+    "$build/bin/rbcstab" summary "$@"
+    ;;
+  test)
+    # OpenMPI refuses to run as root unless told; CI runs as root.
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+    ctest --test-dir "$build" -LE slow --output-on-failure -j "$jobs" --timeout 900
+    ;;
+  build) ;;
+esac
