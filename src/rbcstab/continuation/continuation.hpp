@@ -1,0 +1,121 @@
+#pragma once
+// Pseudo-arclength continuation of F(x, p) = 0 (Keller): tangent predictor, Newton corrector on the
+// bordered system [F; t.(X - X0) - ds], adaptive step, both directions, parameter bounds, stop
+// conditions, bifurcation test functions and user events located by a safeguarded secant
+// (Illinois) on the arclength. Results are plain data (docs/continuation.md).
+#include <Eigen/Dense>
+#include <complex>
+#include <cstddef>
+#include <functional>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "rbcstab/continuation/problem.hpp"
+
+namespace rbcstab {
+
+// AUTO-07p labels. LP/BP/HB on equilibrium branches; LPC/PD/NS on orbit branches (multipliers);
+// UZ a zero of a user function; EP the end points of a branch.
+enum class SpecialPointType { LP, BP, HB, LPC, PD, NS, UZ, EP };
+std::string to_string(SpecialPointType type);
+
+enum class LocationStatus { located, guess };  // guess: bracketed but the secant did not converge
+std::string to_string(LocationStatus status);
+
+enum class ContinuationStatus {
+  completed,        // a stop condition was met (bound, max points, user stop)
+  step_too_small,   // the corrector failed down to min_step
+  outside_domain,   // the problem rejected a parameter value (message says which)
+  start_failed      // Newton did not converge at the starting point
+};
+std::string to_string(ContinuationStatus status);
+
+enum class Direction { forward, backward, both };  // forward: p increasing at the start
+
+// A zero of g(x, p) along the branch is reported as a UZ point named `name`.
+struct UserEvent {
+  std::string name;
+  std::function<double(const Eigen::VectorXd& x, double p)> g;
+};
+
+struct ContinuationOptions {
+  double initial_step = 1e-2;   // first arclength step |ds|: small enough for Newton from the tangent
+  double min_step = 1e-10;      // give up below this: the branch is lost (or the problem ends here)
+  double max_step = 0.5;        // caps the step so test functions are sampled densely enough
+  double step_growth = 1.5;     // after an easy corrector (<= easy_iterations), grow ds by this
+  double step_shrink = 0.5;     // after a failed or hard corrector, shrink ds by this
+  int easy_iterations = 3;      // Newton iterations counted as easy
+  int max_newton = 12;          // Newton iterations per corrector before declaring failure
+  double newton_tol = 1e-12;    // on max|dX| and max|F| (absolute; states here are O(1))
+  double p_min = -std::numeric_limits<double>::infinity();  // stop at this parameter bound, exactly
+  double p_max = std::numeric_limits<double>::infinity();
+  std::size_t max_points = 1000;  // per direction, start point included
+  Direction direction = Direction::forward;
+  bool detect_bifurcations = true;  // evaluate LP/BP/HB (LPC/PD/NS) test functions
+  bool compute_stability = true;    // spectrum at every point (needed for detection)
+  double location_tol = 1e-11;      // stop locating when the bracket spans < this in (x, p) (max norm)
+  int max_location_iterations = 60;  // secant/bisection steps per special point
+  double stability_tol = 1e-9;      // Re(lambda) or |mu| - 1 below this counts as neutral
+  std::vector<UserEvent> events;    // user zero crossings -> UZ
+  // Optional user stop: return true to end the branch after this point.
+  std::function<bool(const Eigen::VectorXd& x, double p)> stop;
+
+  void validate() const;  // throws InvalidArgument naming the field
+};
+
+struct BranchPoint {
+  Eigen::VectorXd x;
+  double p = 0;
+  std::vector<double> parameters;  // problem.parameter_values(x, p)
+  Eigen::VectorXcd spectrum;       // eigenvalues or Floquet multipliers
+  int n_unstable = 0;
+  bool stable = true;
+  double arclength = 0;            // signed arclength from the start point
+  int newton_iterations = 0;
+};
+
+struct SpecialPoint {
+  SpecialPointType type = SpecialPointType::UZ;
+  std::string name;                // the event name for UZ; the label otherwise
+  Eigen::VectorXd x;
+  double p = 0;
+  std::vector<double> parameters;
+  double p_lo = 0, p_hi = 0;       // parameter bracket at the end of location
+  double precision = 0;            // max-norm distance in (x, p) of the final bracket
+  LocationStatus status = LocationStatus::guess;
+  int unstable_before = 0, unstable_after = 0;  // change in the unstable count across the point
+  double test_value = 0;           // the test function at the reported point
+  std::size_t after_index = 0;     // lies between branch points after_index and after_index + 1
+  std::complex<double> eigenvalue; // HB: the crossing pair (+ i omega); NS/PD: the critical multiplier
+};
+
+struct ContinuationCounters {
+  std::size_t steps = 0, rejected_steps = 0, newton_iterations = 0, residual_evaluations = 0,
+              jacobian_evaluations = 0, spectra = 0, location_iterations = 0;
+};
+
+struct Branch {
+  std::vector<std::string> parameter_names;
+  std::vector<BranchPoint> points;       // ordered along the branch (backward part reversed first)
+  std::vector<SpecialPoint> special_points;
+  ContinuationStatus status = ContinuationStatus::completed;
+  std::string message;
+  ContinuationCounters counters;
+};
+
+// Newton on F(x, p) = 0 at fixed p from x0. Returns whether it converged; x holds the last iterate.
+struct NewtonResult {
+  Eigen::VectorXd x;
+  bool converged = false;
+  int iterations = 0;
+  double residual_norm = 0;
+};
+NewtonResult solve_fixed_parameter(const ContinuationProblem& problem, const Eigen::VectorXd& x0, double p,
+                                   double tol = 1e-12, int max_iterations = 30);
+
+// Continues the branch through (x0, p0). x0 must solve F(x0, p0) = 0 to within Newton's reach.
+Branch continue_branch(const ContinuationProblem& problem, const Eigen::VectorXd& x0, double p0,
+                       const ContinuationOptions& options);
+
+}  // namespace rbcstab
