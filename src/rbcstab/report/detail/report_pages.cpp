@@ -1,0 +1,205 @@
+#include "rbcstab/report/detail/report_pages.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+namespace rbcstab::detail {
+
+namespace {
+std::string num(const nlohmann::json& v, int digits = 6) {
+  if (v.is_null()) return "n/a";
+  if (v.is_boolean()) return v.get<bool>() ? "yes" : "no";
+  if (v.is_string()) return v.get<std::string>();
+  if (v.is_number_integer()) return std::to_string(v.get<long long>());
+  std::ostringstream ss;
+  ss.precision(digits);
+  ss << v.get<double>();
+  return ss.str();
+}
+
+// One table: header and rows of plain text cells.
+struct Table {
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+};
+
+struct Page {
+  std::string title, regime;
+  std::vector<std::pair<std::string, Table>> tables;
+  std::vector<std::string> warnings;
+};
+
+std::string regime_text(const nlohmann::json& m) {
+  const auto& s = m.at("summary");
+  std::ostringstream ss;
+  const int lD = s.at("l_Delta").get<int>();
+  ss << "Model level " << num(s.at("model")) << " (" << num(s.at("model_reason")) << "), run status "
+     << num(s.at("status")) << " at t = " << num(s.at("t_reached")) << ". ";
+  if (lD == 2)
+    ss << "No mode l >= 3 gained excess area: l_Delta = 2, the ellipsoidal dynamics are stable to the perturbations. ";
+  else
+    ss << "Shape instability: mode l_Delta = " << lD << " gained the most excess area ("
+       << (s.at("oscillating").get<bool>() ? "tail mean over the last window, oscillating run" : "at t = T")
+       << "). ";
+  const auto& th = m.at("thresholds");
+  ss << "alpha = B/C = " << num(th.at("alpha")) << ": the most dangerous continuous mode is l_* = " << num(th.at("l_star"))
+     << " with sigma_* = -4 sqrt(alpha) = " << num(th.at("sigma_star")) << "; sigma(T) = " << num(s.at("sigma_final"))
+     << " (tail mean " << num(s.at("sigma_tail_mean")) << "). ";
+  if (m.contains("reduced_summary")) {
+    const auto& r = m.at("reduced_summary");
+    ss << "Reduced system: r(T) = " << num(r.at("r_final")) << ", Psi(T) = " << num(r.at("Psi_final")) << ".";
+  }
+  return ss.str();
+}
+
+Page make_page(const nlohmann::json& m) {
+  Page p;
+  const auto& sc = m.at("scene");
+  const auto& par = m.at("parameters");
+  const auto& s = m.at("summary");
+  p.title = "rbcstab report: scene " + num(sc.at("name"));
+  p.regime = regime_text(m);
+  Table params{{"symbol", "value", "meaning"}, {}};
+  auto row = [&](const char* k, const nlohmann::json& v, const char* meaning) {
+    params.rows.push_back({k, num(v, 10), meaning});
+  };
+  row("lambda", par.at("lambda"), "viscosity ratio");
+  row("Delta", par.at("Delta"), "excess area of the current shape");
+  row("Delta0", par.at("Delta0"), "excess area of the stress-free shape");
+  row("B", par.at("B"), "bending number");
+  row("C", par.at("C"), "capillary number");
+  row("alpha", par.at("alpha"), "B / C");
+  row("Lambda", par.at("Lambda"), "reduced-system coupling (Eq. Lambda_S)");
+  row("S", par.at("S"), "reduced-system elasticity (Eq. Lambda_S)");
+  row("beta", sc.at("beta"), "initial orientation (0: out of plane, pi/2: in plane)");
+  row("delta", sc.at("delta"), "initial perturbation Delta_l(0), l >= 3");
+  row("L", sc.at("L"), "truncation");
+  row("T", sc.at("T"), "horizon");
+  p.tables.push_back({"Parameters", params});
+
+  Table modes{{"l", "Delta_l(0)", "Delta_l(T)", "tail mean", "sigma_l^c"}, {}};
+  const auto& sigc = m.at("thresholds").at("sigma_c");
+  for (const auto& [l, v] : s.at("excess_area_initial").items())
+    modes.rows.push_back({l, num(v), num(s.at("excess_area_final").at(l)), num(s.at("excess_area_tail_mean").at(l)),
+                          sigc.contains(l) ? num(sigc.at(l)) : "n/a"});
+  p.tables.push_back({"Excess area per mode (mode l grows while sigma < sigma_l^c)", modes});
+
+  Table run{{"quantity", "value"}, {}};
+  for (const char* k : {"status", "l_Delta", "l_Delta_final", "oscillating", "sigma_initial", "sigma_final",
+                        "sigma_tail_mean", "r_final", "Psi_final", "excess_area_drift", "steps", "rhs_evaluations",
+                        "seconds"})
+    run.rows.push_back({k, num(s.at(k))});
+  run.rows.push_back({"shape rho_min / rho_max at T", num(m.at("shape").at("rho_min")) + " / " +
+                                                        num(m.at("shape").at("rho_max"))});
+  p.tables.push_back({"Run", run});
+  for (const auto& w : m.at("warnings")) p.warnings.push_back(w.get<std::string>());
+  return p;
+}
+
+std::string html_escape(const std::string& s) {
+  std::string o;
+  for (char c : s) {
+    switch (c) {
+      case '<': o += "&lt;"; break;
+      case '>': o += "&gt;"; break;
+      case '&': o += "&amp;"; break;
+      case '"': o += "&quot;"; break;
+      default: o += c;
+    }
+  }
+  return o;
+}
+
+const nlohmann::json* figure_of(const nlohmann::json& m, const std::string& png) {
+  for (const auto& f : m.at("figures"))
+    if (f.at("png") == png) return &f;
+  return nullptr;
+}
+
+const char* kShapeFiles = "shape_T.vtk (VTK legacy), shape_T.vtp (VTK XML PolyData), shape_T.ply, shape_T.csv (grid)";
+}  // namespace
+
+std::string report_markdown(const nlohmann::json& m, const nlohmann::json& drawn) {
+  const Page p = make_page(m);
+  std::ostringstream md;
+  md << "# " << p.title << "\n\n" << p.regime << "\n\n";
+  for (const auto& w : p.warnings) md << "> warning: " << w << "\n\n";
+  for (const auto& [title, t] : p.tables) {
+    md << "## " << title << "\n\n|";
+    for (const auto& h : t.header) md << ' ' << h << " |";
+    md << "\n|";
+    for (std::size_t k = 0; k < t.header.size(); ++k) md << " --- |";
+    md << "\n";
+    for (const auto& r : t.rows) {
+      md << "|";
+      for (const auto& c : r) md << ' ' << c << " |";
+      md << "\n";
+    }
+    md << "\n";
+  }
+  md << "## Figures\n\n";
+  for (const auto& d : drawn) {
+    const std::string file = d.at("file");
+    const nlohmann::json* f = figure_of(m, file);
+    if (!f) continue;
+    md << "### " << f->at("kind").get<std::string>() << "\n\n![" << file << "](" << file << ")\n\n"
+       << f->at("caption").get<std::string>() << ". Data: ";
+    bool first = true;
+    for (const auto& x : f->at("data")) {
+      md << (first ? "" : ", ") << "[" << x.get<std::string>() << "](" << x.get<std::string>() << ")";
+      first = false;
+    }
+    if (f->contains("gif")) md << ". Animation: [" << f->at("gif").get<std::string>() << "](" << f->at("gif").get<std::string>() << ")";
+    md << ".\n\n";
+  }
+  md << "## Shape files\n\n" << kShapeFiles << ": open the .vtk or .vtp in ParaView, colour by `rho`.\n\n";
+  md << "## Reproduce\n\n```\nrbcstab report --scene scene.toml --output " << "DIR\n```\n\n"
+     << "The numbers above are in report.json (manifest), trajectory.csv (t, Delta_2..Delta_L, sigma, r, Psi) and "
+     << "thresholds.json.\n";
+  return md.str();
+}
+
+std::string report_html(const nlohmann::json& m, const nlohmann::json& drawn) {
+  const Page p = make_page(m);
+  std::ostringstream h;
+  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html_escape(p.title)
+    << "</title>\n<style>body{font-family:sans-serif;max-width:70em;margin:auto;padding:1em}"
+       "table{border-collapse:collapse;margin:0.5em 0}td,th{border:1px solid #999;padding:2px 8px;text-align:right}"
+       "figure{margin:1.5em 0}img{max-width:100%;border:1px solid #ddd}.warn{color:#a00}</style></head><body>\n";
+  h << "<h1>" << html_escape(p.title) << "</h1>\n<p>" << html_escape(p.regime) << "</p>\n";
+  for (const auto& w : p.warnings) h << "<p class=\"warn\">warning: " << html_escape(w) << "</p>\n";
+  for (const auto& [title, t] : p.tables) {
+    h << "<h2>" << html_escape(title) << "</h2>\n<table><tr>";
+    for (const auto& c : t.header) h << "<th>" << html_escape(c) << "</th>";
+    h << "</tr>\n";
+    for (const auto& r : t.rows) {
+      h << "<tr>";
+      for (const auto& c : r) h << "<td>" << html_escape(c) << "</td>";
+      h << "</tr>\n";
+    }
+    h << "</table>\n";
+  }
+  h << "<h2>Figures</h2>\n";
+  for (const auto& d : drawn) {
+    const std::string file = d.at("file");
+    const nlohmann::json* f = figure_of(m, file);
+    if (!f) continue;
+    h << "<figure><img src=\"" << html_escape(file) << "\" alt=\"" << html_escape(f->at("kind").get<std::string>())
+      << "\"><figcaption>" << html_escape(f->at("caption").get<std::string>()) << ". Data:";
+    for (const auto& x : f->at("data"))
+      h << " <a href=\"" << html_escape(x.get<std::string>()) << "\">" << html_escape(x.get<std::string>()) << "</a>";
+    if (f->contains("gif"))
+      h << ". Animation: <a href=\"" << html_escape(f->at("gif").get<std::string>()) << "\">"
+        << html_escape(f->at("gif").get<std::string>()) << "</a>";
+    h << ".</figcaption></figure>\n";
+  }
+  h << "<h2>Shape files</h2>\n<p>" << html_escape(kShapeFiles)
+    << ": open the .vtk or .vtp in ParaView, colour by <code>rho</code>.</p>\n"
+    << "<h2>Reproduce</h2>\n<pre>rbcstab report --scene scene.toml --output DIR</pre>\n"
+    << "<p>Numbers: <a href=\"report.json\">report.json</a>, <a href=\"trajectory.csv\">trajectory.csv</a>, "
+       "<a href=\"thresholds.json\">thresholds.json</a>.</p>\n</body></html>\n";
+  return h.str();
+}
+
+}  // namespace rbcstab::detail

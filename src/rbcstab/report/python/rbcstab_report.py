@@ -1,0 +1,498 @@
+#!/usr/bin/python3
+"""Figures of an rbcstab report, drawn with matplotlib only (Agg backend, Debian python3-matplotlib).
+
+    rbcstab_report.py report DIR      draw every figure listed in DIR/report.json, write DIR/figures.json
+    rbcstab_report.py selftest DIR    draw the hook figures (phase diagram, Delta2 theory, bifurcation)
+                                      from small synthetic data into DIR
+
+Every plotting function takes the paths of its data files (CSV/JSON beside the figure) and the output
+PNG path and pixel size, so other tools can call them directly.  Styles are readable in greyscale:
+line styles and markers vary along with colour, colour maps have monotonic lightness (viridis).
+"""
+import csv
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib import colors as mcolors  # noqa: E402
+
+DPI = 100
+LINESTYLES = ["-", "--", "-.", ":", (0, (5, 1, 1, 1, 1, 1)), (0, (8, 2)), (0, (1, 1)), (0, (3, 1, 1, 1))]
+MARKERS = ["o", "s", "^", "v", "D", "P", "X", "*"]
+
+plt.rcParams.update({
+    "font.size": 11,
+    "axes.labelsize": 13,
+    "legend.fontsize": 9,
+    "axes.grid": True,
+    "grid.alpha": 0.3,
+    "savefig.dpi": DPI,
+})
+
+
+# ---------------------------------------------------------------------------------------------- data
+def read_csv(path):
+    """Columns of a CSV file as {name: [float]} (non-numbers become nan)."""
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    header, body = rows[0], rows[1:]
+    cols = {h: [] for h in header}
+    for r in body:
+        for h, v in zip(header, r):
+            try:
+                cols[h].append(float(v))
+            except ValueError:
+                cols[h].append(float("nan"))
+    return cols
+
+
+def read_json(path):
+    with open(path) as f:
+        return json.load(f)
+
+
+def new_figure(size_px, ncols=1, **kw):
+    w, h = size_px
+    fig, axes = plt.subplots(1, ncols, figsize=(w / DPI, h / DPI), dpi=DPI, layout="constrained", **kw)
+    return fig, axes
+
+
+def save(fig, out, size_px):
+    fig.savefig(out, dpi=DPI)
+    plt.close(fig)
+    return {"file": os.path.basename(out), "size_px": list(size_px)}
+
+
+def positive(values):
+    return [v if v > 0 else float("nan") for v in values]
+
+
+def greys(n, lo=0.0, hi=0.75):
+    """n colours of decreasing darkness-contrast from a lightness-monotonic map (viridis, dark end first)."""
+    cmap = plt.get_cmap("viridis")
+    return [cmap(lo + (hi - lo) * k / max(1, n - 1)) for k in range(n)]
+
+
+# ------------------------------------------------------------------------------ Fig. 2: r(t), Psi(t)
+def plot_reduced_dynamics(reduced_csv, full_csv, out, size_px=(1200, 450), title=None):
+    """(a) r(t) and (b) Psi(t): the reduced system (solid) and the l = 2 block of the full run (dashed)."""
+    fig, (ax_r, ax_p) = new_figure(size_px, ncols=2)
+    series = []
+    if reduced_csv:
+        series.append((read_csv(reduced_csv), "reduced system ($l=2$ only)", dict(color="black", lw=1.8, ls="-")))
+    if full_csv:
+        series.append((read_csv(full_csv), "full run, $l=2$ block", dict(color="tab:orange", lw=1.4, ls="--")))
+    for data, label, style in series:
+        ax_r.plot(data["t"], data["r"], label=label, **style)
+        ax_p.plot(data["t"], data["Psi"], label=label, **style)
+    ax_r.set_xlabel("$t$")
+    ax_r.set_ylabel("$r$")
+    ax_p.set_xlabel("$t$")
+    ax_p.set_ylabel(r"$\Psi$ (rad)")
+    ax_r.set_title("(a) amplitude $r(t)$", loc="left", fontsize=11)
+    ax_p.set_title(r"(b) angle $\Psi(t)$", loc="left", fontsize=11)
+    ax_r.legend(loc="best")
+    if title:
+        fig.suptitle(title, fontsize=11)
+    return save(fig, out, size_px)
+
+
+# ------------------------------------------------------------------------------- Fig. 3b/c: Delta_l(t)
+def mode_columns(data):
+    return sorted((int(k.split("_")[1]), k) for k in data if k.startswith("Delta_"))
+
+
+def plot_excess_areas(trajectory_csv, out, size_px=(900, 600), title=None):
+    """Delta_l(t), l = 2..L, on a log axis (the perturbations start at delta ~ 1e-3 or smaller)."""
+    data = read_csv(trajectory_csv)
+    modes = mode_columns(data)
+    fig, ax = new_figure(size_px)
+    cols = greys(len(modes))
+    for k, (l, key) in enumerate(modes):
+        ax.plot(data["t"], positive(data[key]), color=cols[k], ls=LINESTYLES[k % len(LINESTYLES)],
+                lw=2.0 if l == 2 else 1.5, label=rf"$\Delta_{{{l}}}$")
+    ax.set_yscale("log")
+    ax.set_xlabel("$t$")
+    ax.set_ylabel(r"$\Delta_l(t)$")
+    ax.legend(ncol=2 if len(modes) > 5 else 1, loc="best")
+    if title:
+        ax.set_title(title, fontsize=11)
+    return save(fig, out, size_px)
+
+
+# ---------------------------------------------------------------------------- Fig. 3d/e: sigma(t)
+def plot_tension(trajectory_csv, thresholds_json, out, reduced_csv=None, size_px=(900, 600), title=None,
+                 modes=None):
+    """sigma(t) (black), the reduced system's sigma_R(t) (thick grey) and sigma_l^c (dashed, labelled).
+
+    modes: the l whose sigma_l^c to draw; default: those inside the plotted tension range, at least l = 3, 4."""
+    data = read_csv(trajectory_csv)
+    th = read_json(thresholds_json)
+    fig, ax = new_figure(size_px)
+    if reduced_csv:
+        red = read_csv(reduced_csv)
+        ax.plot(red["t"], red["sigma"], color="0.6", lw=5, alpha=0.8, label=r"$\sigma_R(t)$ (reduced)", zorder=1)
+    ax.plot(data["t"], data["sigma"], color="black", lw=1.3, label=r"$\sigma(t)$", zorder=3)
+    finite = [s for s in data["sigma"] if math.isfinite(s)]
+    lo, hi = (min(finite), max(finite)) if finite else (-1.0, 1.0)
+    span = max(hi - lo, 1e-9)
+    sig_c = {int(k): v for k, v in th.get("sigma_c", {}).items() if v is not None}
+    if modes is None:
+        modes = [l for l, v in sig_c.items() if l >= 3 and lo - 0.5 * span <= v <= hi + 0.5 * span]
+        modes = sorted(set(modes) | {l for l in (3, 4) if l in sig_c})
+    tmax = max(data["t"]) if data["t"] else 1.0
+    shown = []
+    for k, l in enumerate(sorted(modes)):
+        if l not in sig_c:
+            continue
+        ax.axhline(sig_c[l], color="tab:blue", ls=LINESTYLES[(k + 1) % len(LINESTYLES)], lw=1.1, zorder=2)
+        ax.annotate(rf"$\sigma_{{{l}}}^c$", xy=(1.0, sig_c[l]), xycoords=("axes fraction", "data"),
+                    xytext=(3, 0), textcoords="offset points", va="center", fontsize=11, color="tab:blue")
+        shown.append(sig_c[l])
+    if th.get("sigma_star") is not None:
+        ax.axhline(th["sigma_star"], color="tab:red", ls=":", lw=1.3,
+                   label=r"$\sigma_* = -4\sqrt{\alpha}$", zorder=2)
+        shown.append(th["sigma_star"])
+    ymin = min([lo] + shown)
+    ymax = max([hi] + shown)
+    pad = 0.06 * max(ymax - ymin, 1e-9)
+    ax.set_ylim(ymin - pad, ymax + pad)
+    ax.set_xlim(0, tmax)
+    ax.set_xlabel("$t$")
+    ax.set_ylabel(r"$\sigma$")
+    ax.plot([], [], color="tab:blue", ls="--", label=r"$\sigma_l^c$ (mode $l$ grows below)")
+    ax.legend(loc="best")
+    if title:
+        ax.set_title(title, fontsize=11)
+    return save(fig, out, size_px)
+
+
+# --------------------------------------------------------------------------------- shapes (Fig. 6)
+def grid_from_csv(path):
+    d = read_csv(path)
+    ni = int(max(d["i"])) + 1
+    nj = int(max(d["j"])) + 1
+
+    def shaped(key):
+        v = d[key]
+        return [[v[i * nj + j] for j in range(nj)] for i in range(ni)]
+
+    return shaped("x"), shaped("y"), shaped("z"), shaped("rho")
+
+
+def grid_from_rho(theta, phi, rho_flat):
+    nj = len(phi)
+    X, Y, Z, R = [], [], [], []
+    for i, th in enumerate(theta):
+        st, ct = math.sin(th), math.cos(th)
+        rx, ry, rz, rr = [], [], [], []
+        for j, ph in enumerate(phi):
+            r = rho_flat[i * nj + j]
+            rx.append(r * st * math.cos(ph))
+            ry.append(r * st * math.sin(ph))
+            rz.append(r * ct)
+            rr.append(r)
+        X.append(rx), Y.append(ry), Z.append(rz), R.append(rr)
+    return X, Y, Z, R
+
+
+def draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim, axes_labels=True):
+    import numpy as np  # python3-numpy is a dependency of python3-matplotlib
+
+    X, Y, Z, R = map(np.asarray, (X, Y, Z, R))
+    ax.plot_surface(X, Y, Z, facecolors=cmap(norm(R)), rstride=1, cstride=1, linewidth=0, antialiased=False,
+                    shade=True)
+    m = float(np.nanmax(np.abs([X, Y, Z])))
+    for set_lim in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
+        set_lim(-m, m)
+    ax.set_box_aspect((1, 1, 1))
+    ax.view_init(elev=elev, azim=azim)
+    if axes_labels:
+        ax.set_xlabel("$x$ (flow)")
+        ax.set_ylabel("$y$ (gradient)")
+        ax.set_zlabel("$z$ (vorticity)")
+        ticks = [-1, 0, 1] if m > 1 else [-0.5, 0, 0.5]
+        ax.set_xticks(ticks), ax.set_yticks(ticks), ax.set_zticks(ticks)
+    else:
+        ax.set_axis_off()
+
+
+def plot_shape(shape_csv, out, size_px=(750, 750), title=None, elev=25.0, azim=-60.0):
+    """The 3-D shape rho(theta, phi) coloured by the distance from the origin (Fig. 6 insets)."""
+    X, Y, Z, R = grid_from_csv(shape_csv)
+    flat = [v for row in R for v in row]
+    norm = mcolors.Normalize(vmin=min(flat), vmax=max(flat))
+    cmap = plt.get_cmap("viridis")
+    w, h = size_px
+    fig = plt.figure(figsize=(w / DPI, h / DPI), dpi=DPI)
+    ax = fig.add_axes([0.0, 0.04, 0.84, 0.9], projection="3d")
+    draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim)
+    cax = fig.add_axes([0.86, 0.2, 0.03, 0.6])
+    sm = plt.cm.ScalarMappable(norm=norm, cmap=cmap)
+    fig.colorbar(sm, cax=cax, label=r"$\rho$ (distance from the origin)")
+    if title:
+        fig.suptitle(title, fontsize=11)
+    return save(fig, out, size_px)
+
+
+def plot_animation(animation_json, out_png, out_gif=None, size_px=(1500, 375), gif_size_px=(400, 400),
+                   strip_frames=6, elev=90.0, azim=-90.0):
+    """A strip of frames (PNG) and, when Pillow is available, an animated GIF of the shape along the run,
+    seen from above the shear plane by default (x: flow to the right, y: gradient upwards)."""
+    a = read_json(animation_json)
+    t, theta, phi, rho = a["t"], a["theta"], a["phi"], a["rho"]
+    allv = [v for fr in rho for v in fr]
+    norm = mcolors.Normalize(vmin=min(allv), vmax=max(allv))
+    cmap = plt.get_cmap("viridis")
+    drawn = []
+    n = len(t)
+    picks = sorted({round(k * (n - 1) / max(1, strip_frames - 1)) for k in range(strip_frames)})
+    w, h = size_px
+    fig = plt.figure(figsize=(w / DPI, h / DPI), dpi=DPI)
+    for k, idx in enumerate(picks):
+        ax = fig.add_axes([k / len(picks), 0.0, 1.0 / len(picks), 0.88], projection="3d")
+        X, Y, Z, R = grid_from_rho(theta, phi, rho[idx])
+        draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim, axes_labels=False)
+        ax.set_title(f"$t = {t[idx]:.4g}$", fontsize=11, y=0.98)
+    fig.text(0.5, 0.005, r"viewed from $+z$: flow $x$ to the right, gradient $y$ up; colour: $\rho$",
+             ha="center", fontsize=9)
+    drawn.append(save(fig, out_png, size_px))
+    if out_gif:
+        try:
+            from matplotlib.animation import FuncAnimation, PillowWriter
+            import PIL  # noqa: F401  (python3-pil)
+        except ImportError:
+            return drawn
+        gw, gh = gif_size_px
+        fig = plt.figure(figsize=(gw / DPI, gh / DPI), dpi=DPI)
+        ax = fig.add_axes([0, 0, 1, 0.92], projection="3d")
+
+        def frame(idx):
+            ax.clear()
+            X, Y, Z, R = grid_from_rho(theta, phi, rho[idx])
+            draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim, axes_labels=False)
+            ax.set_title(f"$t = {t[idx]:.4g}$", fontsize=11)
+            return []
+
+        anim = FuncAnimation(fig, frame, frames=n, blit=False)
+        anim.save(out_gif, writer=PillowWriter(fps=12), dpi=DPI)
+        plt.close(fig)
+        drawn.append({"file": os.path.basename(out_gif), "size_px": list(gif_size_px)})
+    return drawn
+
+
+# ----------------------------------------------------- hooks: phase diagrams, Fig. 6e, bifurcations
+def _pick(cols, names, fallback_index=None):
+    for n in names:
+        if n in cols:
+            return n
+    keys = list(cols)
+    return keys[fallback_index] if fallback_index is not None and fallback_index < len(keys) else None
+
+
+SYMBOLS = {"ln_B": r"$\ln\mathcal{B}$", "ln_C": r"$\ln\mathcal{C}$", "lambda": r"$\lambda$", "Delta": r"$\Delta$",
+           "Delta0": r"$\Delta_0$", "alpha": r"$\alpha$", "beta": r"$\beta$", "ln_alpha": r"$\ln\alpha$",
+           "B": r"$\mathcal{B}$", "C": r"$\mathcal{C}$", "r": "$r$", "Psi": r"$\Psi$", "Delta2": r"$\Delta_2$",
+           "sigma": r"$\sigma$"}
+
+
+def symbol(name):
+    return SYMBOLS.get(name, name)
+
+
+def plot_phase_diagram(csv_path, out, overlay_json=None, size_px=(900, 750), x=None, y=None, title=None):
+    """Points (x, y) coloured by l_Delta (l_Delta = 2, stable, left white), with curves overlaid.
+
+    CSV: two axis columns (named e.g. ln_B, ln_C; default the first two columns) and l_Delta.
+    Overlay JSON: {"curves": [{"label", "x": [...], "y": [...], "style": "solid|dashed|dotted", "color"}]}."""
+    d = read_csv(csv_path)
+    x = x or _pick(d, ["ln_B", "x"], 0)
+    y = y or _pick(d, ["ln_C", "y"], 1)
+    ld = [int(v) if math.isfinite(v) else 0 for v in d["l_Delta"]]
+    xs, ys = d[x], d[y]
+    levels = sorted({v for v in ld if v >= 3})
+    fig, ax = new_figure(size_px)
+    # Marker size from the grid spacing (so a regular grid tiles the plane).
+    ux, uy = sorted(set(xs)), sorted(set(ys))
+    cols = greys(len(levels), 0.0, 0.9) if levels else []
+    for k, lv in enumerate(levels):
+        px = [a for a, b in zip(xs, ld) if b == lv]
+        py = [a for a, b in zip(ys, ld) if b == lv]
+        ax.scatter(px, py, s=max(4.0, 9000.0 / max(len(ux), len(uy)) ** 2 * 4), marker="s",
+                   color=cols[k], edgecolors="none", label=rf"$l_\Delta = {lv}$", zorder=1)
+    if overlay_json:
+        for c in read_json(overlay_json).get("curves", []):
+            ls = {"solid": "-", "dashed": "--", "dotted": ":", "dashdot": "-."}.get(c.get("style", "solid"), "-")
+            ax.plot(c["x"], c["y"], ls=ls, color=c.get("color", "black"), lw=1.6, label=c.get("label"), zorder=3)
+    ax.set_xlim(min(xs), max(xs))
+    ax.set_ylim(min(ys), max(ys))
+    ax.set_xlabel(symbol(x))
+    ax.set_ylabel(symbol(y))
+    ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=9)
+    ax.set_title(title or r"$l_\Delta$ (white: stable, $l_\Delta = 2$)", fontsize=11)
+    return save(fig, out, size_px)
+
+
+def plot_delta2_comparison(csv_path, out, size_px=(750, 750), title=None):
+    """Fig. 6e: theoretical Delta~_2 against the simulated mean Delta-bar_2, a diagonal guide, and (when the
+    CSV has an alpha column) an inset of the ratio theory/simulation against ln alpha.
+    CSV columns: Delta2_theory, Delta2_simulation[, alpha][, lambda]."""
+    d = read_csv(csv_path)
+    th, sim = d["Delta2_theory"], d["Delta2_simulation"]
+    groups = {}
+    for k in range(len(th)):
+        key = d["lambda"][k] if "lambda" in d else None
+        groups.setdefault(key, []).append(k)
+    fig, ax = new_figure(size_px)
+    for n, (key, idx) in enumerate(sorted(groups.items(), key=lambda kv: (kv[0] is None, kv[0]))):
+        lab = rf"$\lambda = {key:g}$" if key is not None else "simulations"
+        ax.scatter([sim[i] for i in idx], [th[i] for i in idx], marker=MARKERS[n % len(MARKERS)],
+                   facecolors="none" if n % 2 else greys(max(2, len(groups)))[n], edgecolors="black",
+                   s=36, label=lab, zorder=2)
+    vals = [v for v in th + sim if math.isfinite(v)]
+    lo, hi = min(vals), max(vals)
+    ax.plot([lo, hi], [lo, hi], color="0.4", ls="--", lw=1, label="diagonal", zorder=1)
+    ax.set_xlabel(r"simulation $\bar{\Delta}_2$")
+    ax.set_ylabel(r"theory $\tilde{\Delta}_2$")
+    ax.legend(loc="upper left")
+    if "alpha" in d:
+        ins = ax.inset_axes([0.58, 0.1, 0.38, 0.32])
+        ins.plot([math.log(a) for a in d["alpha"]], [a / b for a, b in zip(th, sim)], "ko", ms=3)
+        ins.set_xlabel(r"$\ln\alpha$", fontsize=9)
+        ins.set_ylabel(r"$\tilde{\Delta}_2/\bar{\Delta}_2$", fontsize=9)
+        ins.tick_params(labelsize=8)
+    if title:
+        ax.set_title(title, fontsize=11)
+    return save(fig, out, size_px)
+
+
+def plot_bifurcation(json_path, out, size_px=(900, 675), title=None):
+    """Branches against a parameter: stable parts solid, unstable dashed, special points labelled.
+
+    JSON: {"parameter": "ln_C", "measure": "r", "branches": [{"label", "x": [...], "y": [...],
+    "stable": [bool per point]}], "points": [{"x", "y", "label"}]}."""
+    b = read_json(json_path)
+    fig, ax = new_figure(size_px)
+    cols = greys(max(2, len(b.get("branches", []))), 0.0, 0.7)
+    for n, br in enumerate(b.get("branches", [])):
+        x, y = br["x"], br["y"]
+        st = br.get("stable", [True] * len(x))
+        labelled = set()
+        k = 0
+        while k < len(x) - 1:
+            j = k
+            while j < len(x) - 1 and st[j + 1] == st[k]:
+                j += 1
+            seg_end = min(j + 1, len(x) - 1)  # join to the next point so the curve stays connected
+            kind = "stable" if st[k] else "unstable"
+            lab = f"{br.get('label', 'branch')} ({kind})" if kind not in labelled else None
+            labelled.add(kind)
+            ax.plot(x[k:seg_end + 1], y[k:seg_end + 1], color=cols[n], ls="-" if st[k] else "--",
+                    lw=2.0 if st[k] else 1.4, label=lab)
+            k = seg_end if seg_end > k else k + 1
+    for p in b.get("points", []):
+        ax.plot(p["x"], p["y"], "o", color="black", ms=6, mfc="white", zorder=4)
+        ax.annotate(p.get("label", ""), (p["x"], p["y"]), xytext=(5, 5), textcoords="offset points", fontsize=10)
+    ax.set_xlabel(symbol(b.get("parameter", "parameter")))
+    ax.set_ylabel(symbol(b.get("measure", "measure")))
+    ax.legend(loc="best")
+    if title:
+        ax.set_title(title, fontsize=11)
+    return save(fig, out, size_px)
+
+
+# ---------------------------------------------------------------------------------------- drivers
+def draw_report(folder):
+    m = read_json(os.path.join(folder, "report.json"))
+    p = m["parameters"]
+    scene = m["scene"]
+    tag = (rf"{scene['name']}: $\lambda={p['lambda']:g}$, $\Delta={p['Delta']:g}$, $\Delta_0={p['Delta0']:g}$, "
+           rf"$\mathcal{{B}}={p['B']:g}$, $\mathcal{{C}}={p['C'] if p['C'] is not None else math.inf:g}$, "
+           rf"$\beta={scene['beta']:.4g}$")
+    path = lambda name: os.path.join(folder, name)  # noqa: E731
+    drawn = []
+    for f in m["figures"]:
+        kind, size, data = f["kind"], tuple(f["size_px"]), f["data"]
+        out = path(f["png"])
+        if kind == "reduced_dynamics":
+            red = path("reduced_trajectory.csv") if "reduced_trajectory.csv" in data else None
+            drawn.append(plot_reduced_dynamics(red, path("trajectory.csv"), out, size, title=tag))
+        elif kind == "excess_areas":
+            drawn.append(plot_excess_areas(path(data[0]), out, size, title=tag))
+        elif kind == "tension":
+            red = path("reduced_trajectory.csv") if "reduced_trajectory.csv" in data else None
+            drawn.append(plot_tension(path(data[0]), path(data[1]), out, red, size, title=tag))
+        elif kind == "shape":
+            in_plane = m["shape"].get("in_plane", False)
+            # Out of plane: from the side, tilted; in plane: from above the shear plane, tilted (Fig. 6 insets).
+            elev, azim = (55.0, -75.0) if in_plane else (20.0, -60.0)
+            drawn.append(plot_shape(path(data[0]), out, size, title=f"{scene['name']}: shape at $t = {f['t']:.4g}$",
+                                    elev=elev, azim=azim))
+        elif kind == "animation":
+            drawn.extend(plot_animation(path(data[0]), out, path(f["gif"]) if f.get("gif") else None, size,
+                                        tuple(f.get("gif_size_px", (400, 400)))))
+        elif kind == "phase_diagram":
+            drawn.append(plot_phase_diagram(path(data[0]), out, path(data[1]) if len(data) > 1 else None, size))
+        elif kind == "delta2_comparison":
+            drawn.append(plot_delta2_comparison(path(data[0]), out, size))
+        elif kind == "bifurcation":
+            drawn.append(plot_bifurcation(path(data[0]), out, size))
+        else:
+            raise ValueError(f"unknown figure kind {kind!r}")
+    with open(path("figures.json"), "w") as f:
+        json.dump(drawn, f, indent=2)
+
+
+def selftest(folder):
+    """Hook figures from small synthetic data (the data files are written beside them)."""
+    os.makedirs(folder, exist_ok=True)
+    p = lambda name: os.path.join(folder, name)  # noqa: E731
+    with open(p("phase_diagram.csv"), "w") as f:
+        f.write("ln_B,ln_C,l_Delta\n")
+        for i in range(12):
+            for j in range(10):
+                lb, lc = -1 + 7 * i / 11, -5.5 + 7.5 * j / 9
+                la = lb - lc  # ln alpha
+                lv = 2 if la < 3 else (3 if la < 5 else (4 if la < 7 else 5))
+                f.write(f"{lb},{lc},{lv}\n")
+    with open(p("phase_diagram_overlay.json"), "w") as f:
+        json.dump({"curves": [
+            {"label": r"$l_* = 2.5$", "x": [-1, 6], "y": [-4, 3], "style": "solid"},
+            {"label": r"$l = 3 \to 4$", "x": [-1, 6], "y": [-6, 1], "style": "dashed"},
+            {"label": r"$\mathcal{C}_*$", "x": [-1, 6], "y": [1, 1], "style": "solid", "color": "tab:red"}]}, f)
+    with open(p("delta2_comparison.csv"), "w") as f:
+        f.write("Delta2_theory,Delta2_simulation,alpha,lambda\n")
+        for k in range(8):
+            a = math.exp(3 + 0.5 * k)
+            s = 0.3 + 0.05 * k
+            f.write(f"{s * (1 + 0.3 / math.log(a))},{s},{a},{1 if k % 2 else 5}\n")
+    with open(p("bifurcation.json"), "w") as f:
+        xs = [0.1 * k for k in range(21)]
+        json.dump({"parameter": "ln_C", "measure": "r",
+                   "branches": [{"label": "ellipsoid", "x": xs, "y": [0.5 + 0.1 * x for x in xs],
+                                 "stable": [x < 1.0 for x in xs]},
+                                {"label": "mode 3", "x": xs[10:], "y": [0.6 + 0.3 * math.sqrt(x - 1.0) for x in xs[10:]],
+                                 "stable": [True] * 11}],
+                   "points": [{"x": 1.0, "y": 0.6, "label": "BP"}]}, f)
+    out = [plot_phase_diagram(p("phase_diagram.csv"), p("fig_phase_diagram.png"), p("phase_diagram_overlay.json")),
+           plot_delta2_comparison(p("delta2_comparison.csv"), p("fig_delta2_theory.png")),
+           plot_bifurcation(p("bifurcation.json"), p("fig_bifurcation.png"))]
+    with open(p("figures.json"), "w") as f:
+        json.dump(out, f, indent=2)
+
+
+def main(argv):
+    if len(argv) != 3 or argv[1] not in ("report", "selftest"):
+        sys.stderr.write(__doc__)
+        return 2
+    (draw_report if argv[1] == "report" else selftest)(argv[2])
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

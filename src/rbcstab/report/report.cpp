@@ -1,0 +1,397 @@
+#include "rbcstab/report/report.hpp"
+
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <fcntl.h>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <random>
+#include <sstream>
+
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/io/files.hpp"
+#include "rbcstab/io/json.hpp"
+#include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/report/detail/report_pages.hpp"
+
+#ifndef RBCSTAB_REPORT_SOURCE_PYTHON_DIR
+#define RBCSTAB_REPORT_SOURCE_PYTHON_DIR ""
+#endif
+
+extern char** environ;
+
+namespace rbcstab {
+
+namespace fs = std::filesystem;
+
+namespace {
+constexpr const char* kScript = "rbcstab_report.py";
+
+bool has_script(const fs::path& dir) {
+  std::error_code ec;
+  return !dir.empty() && fs::is_regular_file(dir / kScript, ec);
+}
+
+// Runs argv (no shell), stdout and stderr appended to log_path; returns the exit status or -1.
+int run_process(const std::vector<std::string>& args, const std::string& log_path) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  const char* log = log_path.empty() ? "/dev/null" : log_path.c_str();
+  posix_spawn_file_actions_addopen(&actions, 1, log, O_WRONLY | O_CREAT | O_APPEND, 0644);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  std::vector<char*> argv;
+  for (const auto& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  argv.push_back(nullptr);
+  pid_t pid = 0;
+  const int rc = posix_spawn(&pid, args[0].c_str(), &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  if (rc != 0) return -1;
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0)
+    if (errno != EINTR) return -1;
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string tail_of(const std::string& path, std::size_t n) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string s = ss.str();
+  return s.size() > n ? "..." + s.substr(s.size() - n) : s;
+}
+
+std::string csv_number(double v) {
+  if (!std::isfinite(v)) return "nan";
+  std::ostringstream ss;
+  ss << std::setprecision(17) << v;
+  return ss.str();
+}
+
+std::string trajectory_csv(const SimulationResult& r) {
+  std::ostringstream ss;
+  ss << "t";
+  for (int l = 2; l <= r.L; ++l) ss << ",Delta_" << l;
+  ss << ",sigma,r,Psi\n";
+  const Trajectory& tr = r.trajectory;
+  for (std::size_t k = 0; k < tr.t.size(); ++k) {
+    ss << csv_number(tr.t[k]);
+    for (double d : tr.Delta_l[k]) ss << ',' << csv_number(d);
+    ss << ',' << csv_number(tr.sigma[k]) << ',' << csv_number(tr.r[k]) << ',' << csv_number(tr.Psi[k]) << '\n';
+  }
+  return ss.str();
+}
+
+std::string grid_csv(const ShapeGrid& g) {
+  std::ostringstream ss;
+  ss << "i,j,theta,phi,rho,x,y,z\n";
+  for (int i = 0; i <= g.n_theta; ++i)
+    for (int j = 0; j <= g.n_phi; ++j) {
+      const double th = g.theta[std::size_t(i)], ph = g.phi[std::size_t(j)], r = g.at(i, j);
+      ss << i << ',' << j << ',' << csv_number(th) << ',' << csv_number(ph) << ',' << csv_number(r) << ','
+         << csv_number(r * std::sin(th) * std::cos(ph)) << ',' << csv_number(r * std::sin(th) * std::sin(ph)) << ','
+         << csv_number(r * std::cos(th)) << '\n';
+    }
+  return ss.str();
+}
+
+// The reduced companion: same material and orientation, only the l = 2 block (Sec. III).
+Scene reduced_scene(const Scene& s) {
+  Scene r = s;
+  r.name = s.name + "_reduced";
+  r.model = ModelLevel::reduced;
+  r.L = 2;
+  r.delta_l.clear();
+  r.rest_delta_l.clear();
+  return r;
+}
+
+struct Frames {
+  std::vector<double> t;
+  std::vector<ShapeGrid> grids;
+  IntegrationStatus status = IntegrationStatus::success;
+};
+
+// Shapes along the run: the same level and initial state simulate() uses, sampled at the frames.
+Frames shape_frames(const SceneFile& sf, const ReportOptions& o) {
+  const Scene& s = sf.scene;
+  const InitialState init = initial_state(s);
+  const LevelChoice level = choose_level(s, init);
+  const auto system = make_system(s.parameters, init, level.level);
+  const double t0 = o.frame_window > 0 ? std::max(0.0, s.T - o.frame_window) : 0.0;
+  std::vector<double> y0 = system->initial_state();
+  Frames f;
+  if (t0 > 0) {  // advance to the window's start without sampling
+    const std::vector<double> g{t0};
+    const IntegrationResult ir = integrate(*system, y0, 0.0, g, sf.options.integrator, {});
+    f.status = ir.status;
+    if (ir.status != IntegrationStatus::success) return f;
+    y0 = ir.y;
+  }
+  std::vector<double> grid;
+  for (int k = 0; k < o.frames; ++k) grid.push_back(t0 + (s.T - t0) * k / (o.frames - 1));
+  grid.back() = s.T;
+  const IntegrationResult ir = integrate(*system, y0, t0, grid, sf.options.integrator, [&](double t, std::span<const double> y) {
+    f.t.push_back(t);
+    f.grids.push_back(shape_on_grid(system->amplitudes(t, y), o.frame_shape));
+  });
+  f.status = ir.status;
+  return f;
+}
+
+std::string animation_json(const Frames& f) {
+  nlohmann::json j;
+  j["t"] = f.t;
+  if (!f.grids.empty()) {
+    j["theta"] = f.grids[0].theta;
+    j["phi"] = f.grids[0].phi;
+  }
+  nlohmann::json rho = nlohmann::json::array();
+  for (const auto& g : f.grids) {
+    std::vector<double> v(g.rho.size());
+    // 7 significant digits: far below a pixel, keeps the file small.
+    for (std::size_t k = 0; k < v.size(); ++k) v[k] = std::stod(std::to_string(float(g.rho[k])));
+    rho.push_back(v);
+  }
+  j["rho"] = rho;
+  j["layout"] = "rho[frame][i * len(phi) + j]";
+  return j.dump();
+}
+
+std::string unique_suffix() {
+  std::random_device rd;
+  std::ostringstream ss;
+  ss << std::hex << rd() << rd();
+  return ss.str();
+}
+
+// ".<name><tag><random>" (built by append: GCC 12 warns falsely on chained literal + string).
+std::string hidden_sibling_name(const fs::path& target, const char* tag) {
+  std::string name(".");
+  name.append(target.filename().string()).append(tag).append(unique_suffix());
+  return name;
+}
+
+nlohmann::json figure(const std::string& kind, const std::string& png, int w, int h, std::vector<std::string> data,
+                      const std::string& caption) {
+  return {{"kind", kind}, {"png", png}, {"size_px", {w, h}}, {"data", data}, {"caption", caption}};
+}
+
+// Copies a hook's data file into the report (and an overlay JSON beside a phase diagram).
+std::string import_hook(const std::string& src, const fs::path& dir, const std::string& name) {
+  const std::string text = read_file(src);  // InvalidArgument("file") if unreadable
+  write_file_atomic((dir / name).string(), text);
+  return name;
+}
+}  // namespace
+
+void ReportOptions::validate() const {
+  if (output.empty()) throw InvalidArgument("output", "output: a folder path is required");
+  shape.validate();
+  frame_shape.validate();
+  require(frames >= 2 && frames <= 2000, "frames", frames, "an integer in [2, 2000]");
+  require(std::isfinite(frame_window) && frame_window >= 0, "frame_window", frame_window, "finite and >= 0 (0: whole run)");
+  if (python.empty()) throw InvalidArgument("python", "python: an interpreter path is required");
+}
+
+std::string find_script_dir(const std::string& executable_path) {
+  if (const char* env = std::getenv("RBCSTAB_DATA_DIR"); env && *env) {
+    for (const fs::path& p : {fs::path(env) / "python", fs::path(env)})
+      if (has_script(p)) return p.string();
+  }
+  if (!executable_path.empty()) {
+    const fs::path exe_dir = fs::path(executable_path).parent_path();
+    if (has_script(exe_dir / ".." / "share" / "rbcstab" / "python"))
+      return fs::weakly_canonical(exe_dir / ".." / "share" / "rbcstab" / "python").string();
+  }
+  if (has_script(RBCSTAB_REPORT_SOURCE_PYTHON_DIR)) return RBCSTAB_REPORT_SOURCE_PYTHON_DIR;
+  return "";
+}
+
+void check_python(const std::string& python) {
+  std::error_code ec;
+  if (!fs::exists(python, ec))
+    throw ReportError("python: " + python + " not found; the report draws its figures with python3 and matplotlib "
+                      "(Debian: apt-get install python3-matplotlib) or pass --python PATH");
+  const int rc = run_process({python, "-c", "import matplotlib; matplotlib.use('Agg'); import matplotlib.pyplot"}, "");
+  if (rc != 0)
+    throw ReportError("python: " + python + " cannot import matplotlib (exit " + std::to_string(rc) +
+                      "); install python3-matplotlib (Debian) or pass --python PATH to an interpreter that has it");
+}
+
+ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  options.validate();
+  sf.scene.validate();
+  sf.options.validate();
+  ReportOptions o = options;
+  if (o.script_dir.empty()) o.script_dir = find_script_dir("");
+  if (!has_script(o.script_dir))
+    throw ReportError("script_dir: " + std::string(kScript) + " not found (looked in '" + o.script_dir +
+                      "', $RBCSTAB_DATA_DIR, <prefix>/share/rbcstab/python); set RBCSTAB_DATA_DIR");
+  check_python(o.python);
+
+  const fs::path out = fs::absolute(o.output).lexically_normal();
+  const fs::path target = out.has_filename() ? out : out.parent_path();
+  std::error_code ec;
+  if (fs::exists(target, ec) && !o.overwrite)
+    throw InvalidArgument("output", "output: " + target.string() + " exists; pass --overwrite to replace it");
+  if (!fs::is_directory(target.parent_path(), ec))
+    throw ReportError("output: parent folder " + target.parent_path().string() + " does not exist");
+  for (const std::string* hook : {&o.phase_diagram, &o.delta2_comparison, &o.bifurcation})
+    if (!hook->empty() && !fs::is_regular_file(*hook, ec))
+      throw InvalidArgument("file", "data file '" + *hook + "' not found");
+
+  ReportResult res;
+  res.run = simulate(sf.scene, sf.options);
+  res.warnings = res.run.warnings;
+  if (o.reduced_companion) {
+    SceneFile rsf = sf;
+    rsf.scene = reduced_scene(sf.scene);
+    res.reduced = simulate(rsf.scene, rsf.options);
+    res.has_reduced = true;
+  }
+  const Frames frames = shape_frames(sf, o);
+  {
+    const InitialState init = initial_state(sf.scene);
+    const auto system = make_system(sf.scene.parameters, init, res.run.level.level);
+    res.shape = shape_on_grid(system->amplitudes(res.run.t_reached, res.run.y_final), o.shape);
+  }
+  if (res.shape.rho_min <= 0)
+    res.warnings.push_back("the shape is not star-shaped (min rho = " + format_value(res.shape.rho_min) +
+                           "): Delta is beyond the quasi-spherical expansion; the mesh folds over itself");
+
+  // Everything is written into a hidden sibling folder, renamed into place at the end.
+  const fs::path tmp = target.parent_path() / hidden_sibling_name(target, ".tmp-");
+  fs::create_directory(tmp, ec);
+  if (ec) throw ReportError("output: cannot create " + tmp.string() + ": " + ec.message());
+  try {
+    auto put = [&](const std::string& name, const std::string& text) {
+      write_file_atomic((tmp / name).string(), text);
+      res.files.push_back(name);
+    };
+    const Parameters& p = sf.scene.parameters;
+    const double alpha = p.alpha();
+    nlohmann::json thresholds;
+    thresholds["alpha"] = number_or_null(alpha);
+    thresholds["sigma_star"] = number_or_null(-4 * std::sqrt(alpha));  // Pi = 2 sqrt(alpha) (Eq. inst)
+    thresholds["l_star"] = number_or_null((-1 + std::sqrt(1 + 8 * std::sqrt(alpha))) / 2);
+    nlohmann::json sc;
+    for (int l = 2; l <= sf.scene.L; ++l) sc[std::to_string(l)] = number_or_null(sigma_critical(l, alpha));
+    thresholds["sigma_c"] = sc;
+    thresholds["note"] = "mode l grows iff sigma < sigma_c[l] = -(Pi + 4 alpha/Pi), Pi = l(l+1)";
+
+    put("scene.toml", to_toml(sf));
+    put("trajectory.csv", trajectory_csv(res.run));
+    if (res.has_reduced) put("reduced_trajectory.csv", trajectory_csv(res.reduced));
+    put("thresholds.json", thresholds.dump(2) + "\n");
+    put("shape_T.csv", grid_csv(res.shape));
+    const SurfaceMesh mesh = surface_mesh(res.shape);
+    const std::string title = "rbcstab shape of scene " + sf.scene.name + " at t = " + format_value(res.run.t_reached);
+    put("shape_T.vtk", to_vtk_legacy(mesh, title));
+    put("shape_T.vtp", to_vtk_xml(mesh));
+    put("shape_T.ply", to_ply(mesh, title));
+    put("animation.json", animation_json(frames));
+
+    const bool in_plane = std::abs(std::cos(sf.scene.beta)) < 0.5;
+    nlohmann::json figs = nlohmann::json::array();
+    figs.push_back(figure("reduced_dynamics", "fig_reduced_r_Psi.png", 1200, 450,
+                          res.has_reduced ? std::vector<std::string>{"reduced_trajectory.csv", "trajectory.csv"}
+                                          : std::vector<std::string>{"trajectory.csv"},
+                          "Fig. 2-type: ellipsoidal amplitude r(t) and angle Psi(t), reduced system (l = 2 only) "
+                          "and the l = 2 block of the full run"));
+    figs.push_back(figure("excess_areas", "fig_excess_areas.png", 900, 600, {"trajectory.csv"},
+                          "Fig. 3b/c-type: excess area per mode Delta_l(t), l = 2..L (log scale)"));
+    figs.push_back(figure("tension", "fig_tension.png", 900, 600,
+                          res.has_reduced ? std::vector<std::string>{"trajectory.csv", "thresholds.json", "reduced_trajectory.csv"}
+                                          : std::vector<std::string>{"trajectory.csv", "thresholds.json"},
+                          "Fig. 3d/e-type: membrane tension sigma(t), the reduced system's sigma_R(t), and the "
+                          "critical tensions sigma_l^c of the modes that can grow"));
+    nlohmann::json shape_fig = figure("shape", "fig_shape_T.png", 750, 750, {"shape_T.csv"},
+                                      std::string("Fig. 6-inset-type: the shape at t = ") + format_value(res.run.t_reached) +
+                                          ", coloured by the distance from the origin rho (" +
+                                          (in_plane ? "in-plane start" : "out-of-plane start") + ")");
+    shape_fig["t"] = res.run.t_reached;
+    figs.push_back(shape_fig);
+    nlohmann::json anim = figure("animation", "fig_animation_strip.png", 1500, 375, {"animation.json"},
+                                 "Shape along the run (frames of animation.gif), seen from above the shear plane "
+                                 "(flow along x, gradient along y)");
+    anim["gif"] = "animation.gif";
+    anim["gif_size_px"] = {400, 400};
+    figs.push_back(anim);
+    if (!o.phase_diagram.empty()) {
+      std::vector<std::string> data{import_hook(o.phase_diagram, tmp, "phase_diagram.csv")};
+      const fs::path overlay = fs::path(o.phase_diagram).replace_extension(".json");
+      if (fs::is_regular_file(overlay, ec)) data.push_back(import_hook(overlay.string(), tmp, "phase_diagram_overlay.json"));
+      res.files.insert(res.files.end(), data.begin(), data.end());
+      figs.push_back(figure("phase_diagram", "fig_phase_diagram.png", 900, 750, data,
+                            "Phase diagram coloured by l_Delta with the traced boundaries and analytic lines"));
+    }
+    if (!o.delta2_comparison.empty()) {
+      const std::string d = import_hook(o.delta2_comparison, tmp, "delta2_comparison.csv");
+      res.files.push_back(d);
+      figs.push_back(figure("delta2_comparison", "fig_delta2_theory.png", 750, 750, {d},
+                            "Fig. 6e-type: post-instability Delta~_2 from theory against the simulated mean"));
+    }
+    if (!o.bifurcation.empty()) {
+      const std::string d = import_hook(o.bifurcation, tmp, "bifurcation.json");
+      res.files.push_back(d);
+      figs.push_back(figure("bifurcation", "fig_bifurcation.png", 900, 675, {d},
+                            "Bifurcation diagram: stable branches solid, unstable dashed, special points labelled"));
+    }
+
+    nlohmann::json manifest;
+    manifest["scene"] = to_json(sf.scene);
+    manifest["parameters"] = to_json(p);
+    manifest["summary"] = to_json(res.run);
+    manifest["summary"].erase("trajectory");
+    if (res.has_reduced) {
+      manifest["reduced_summary"] = to_json(res.reduced);
+      manifest["reduced_summary"].erase("trajectory");
+    }
+    manifest["thresholds"] = thresholds;
+    manifest["shape"] = {{"t", res.run.t_reached}, {"rho_min", res.shape.rho_min}, {"rho_max", res.shape.rho_max},
+                         {"n_theta", res.shape.n_theta}, {"n_phi", res.shape.n_phi}, {"in_plane", in_plane}};
+    manifest["frames"] = {{"count", frames.t.size()}, {"status", to_string(frames.status)}};
+    manifest["warnings"] = res.warnings;
+    manifest["figures"] = figs;
+    put("report.json", manifest.dump(2) + "\n");
+
+    const std::string log = (tmp / "plot.log").string();
+    const int rc = run_process({o.python, (fs::path(o.script_dir) / kScript).string(), "report", tmp.string()}, log);
+    if (rc != 0)
+      throw ReportError("the plotting script failed (exit " + std::to_string(rc) + "): " + tail_of(log, 1500));
+    res.files.push_back("plot.log");
+    const nlohmann::json drawn = nlohmann::json::parse(read_file((tmp / "figures.json").string()));
+    for (const auto& f : drawn) res.files.push_back(f.at("file").get<std::string>());
+    res.files.push_back("figures.json");
+
+    put("README.md", detail::report_markdown(manifest, drawn));
+    put("index.html", detail::report_html(manifest, drawn));
+
+    if (fs::exists(target, ec)) {  // --overwrite: swap, then remove the old folder
+      const fs::path old = target.parent_path() / hidden_sibling_name(target, ".old-");
+      fs::rename(target, old);
+      fs::rename(tmp, target);
+      fs::remove_all(old, ec);
+    } else {
+      fs::rename(tmp, target);
+    }
+  } catch (const fs::filesystem_error& e) {
+    fs::remove_all(tmp, ec);
+    throw ReportError(std::string("output: ") + e.what());
+  } catch (...) {
+    fs::remove_all(tmp, ec);
+    throw;
+  }
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return res;
+}
+
+}  // namespace rbcstab

@@ -1,0 +1,60 @@
+#pragma once
+// A self-contained report folder for one scene: the run (and its reduced companion), the data
+// behind every figure (CSV/JSON), the shape at T (VTK, VTP, PLY), figures drawn by matplotlib
+// (python/rbcstab_report.py), index.html and README.md. The folder appears whole or not at all.
+#include <string>
+#include <vector>
+
+#include "rbcstab/integrate/simulation.hpp"
+#include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/report/shape.hpp"
+
+namespace rbcstab {
+
+// Python or matplotlib missing, the plotting script failing, or the folder not writable.
+// Derives from std::runtime_error, which the CLI maps to exit code 3 (output error).
+class ReportError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct ReportOptions {
+  std::string output;                  // folder to create (its parent must exist)
+  bool overwrite = false;              // replace an existing folder; otherwise refuse (never merge)
+  std::string python = "/usr/bin/python3";  // Debian's python3 with python3-matplotlib
+  std::string script_dir;              // folder of rbcstab_report.py; empty: find_script_dir("")
+  ShapeGridOptions shape{64, 128};     // the rendered / exported shape at T
+  ShapeGridOptions frame_shape{24, 48};  // coarser grid per animation frame (keeps animation.json small)
+  int frames = 60;                     // animation frames (GIF), uniform in [T - frame_window, T]
+  double frame_window = 0;             // 0: the whole run [0, T]
+  bool reduced_companion = true;       // also run the reduced level (Fig. 2 r, Psi; Fig. 3 sigma_R)
+  // Hooks for data other modules produce; drawn when given (formats in docs/report.md).
+  std::string phase_diagram;           // CSV with columns x, y, l_Delta (+ optional overlay JSON beside it)
+  std::string delta2_comparison;       // CSV with columns Delta2_theory, Delta2_simulation[, alpha]
+  std::string bifurcation;             // JSON {"branches": [...], "points": [...]}
+  void validate() const;               // throws InvalidArgument naming the field
+};
+
+struct ReportResult {
+  SimulationResult run;                // the scene as given
+  bool has_reduced = false;
+  SimulationResult reduced;            // model = reduced, perturbations dropped
+  std::vector<std::string> files;      // relative to the output folder
+  std::vector<std::string> warnings;
+  ShapeGrid shape;                     // rho at the end of the run
+  double seconds = 0;
+};
+
+// Where rbcstab_report.py lives: $RBCSTAB_DATA_DIR[/python], then <exe>/../share/rbcstab/python
+// (installed), then the source tree this library was built from. Empty if none holds the script.
+std::string find_script_dir(const std::string& executable_path);
+
+// Throws ReportError with a remedy unless `python` runs and imports matplotlib (Agg backend).
+void check_python(const std::string& python);
+
+// Runs the scene and writes the report. Bad input throws InvalidArgument; missing python,
+// failed plotting or unwritable output throw ReportError, leaving no partial folder. A failed
+// integration still yields a report (figures up to t_reached) with its status stated.
+ReportResult build_report(const SceneFile& scene, const ReportOptions& options);
+
+}  // namespace rbcstab
