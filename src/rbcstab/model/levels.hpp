@@ -64,6 +64,8 @@ class ModalModel final : public System {
   std::vector<double> ups_slope_, ups_shift_;  // Upsilon_l = slope (shift + sigma), same indexing
   std::complex<double> C22_, g20_[3];
   double G3C2_ = 0;  // Gamma3^2 / C
+  double u_cut_ = 0;  // ln Delta_l below which a mode's area is negligible in the tension sums
+  double area_of(double u) const { return u < u_cut_ ? 0.0 : std::exp(u); }
   ModeAmplitudes f0_;
   std::vector<double> y0_;
 };

@@ -34,17 +34,20 @@ ModalModel::ModalModel(const Parameters& p, const InitialState& init) : p_(p), L
       y0_.push_back(std::log(Dl));
     }
   }
+  // Delta_l below e^-92 (1e-40) of the total excess area cannot change the sums N and D in double
+  // precision; skipping their exp() also avoids libm's slow underflow path for decayed modes.
+  u_cut_ = std::log(init.f.total_excess_area()) - 92.0;
   C22_ = shear_drive(p.lambda, 2, 2);
   G3C2_ = Gamma3(p.lambda, 2) * p.inv_C();
   for (int m = 0; m <= 2; ++m) g20_[m] = init.g.at(2, m);
 }
 
 void ModalModel::drive(double t, std::complex<double> S[3]) const {
-  for (int m = 0; m <= 2; ++m) {
-    const std::complex<double> g = g20_[m] == 0.0 ? 0.0 : g20_[m] * std::polar(1.0, 0.5 * m * t);
-    S[m] = -G3C2_ * g;
-  }
-  S[2] += C22_;
+  // g_{2,m}(t) = g_{2,m}(0) e^{i m t/2}: one sincos serves m = 1 and 2.
+  const std::complex<double> e1 = std::polar(1.0, 0.5 * t), e2 = e1 * e1;
+  S[0] = -G3C2_ * g20_[0];
+  S[1] = -G3C2_ * g20_[1] * e1;
+  S[2] = -G3C2_ * g20_[2] * e2 + C22_;
 }
 
 ModalModel::Sums ModalModel::sums(double, std::span<const double> y, const std::complex<double> S[3]) const {
@@ -55,7 +58,7 @@ ModalModel::Sums ModalModel::sums(double, std::span<const double> y, const std::
                        2 * (S[2].real() * y[3] + S[2].imag() * y[4]);
   Sums s{G1a3_[0] * Delta2 + p_.B * a2 * drive, G2_[0] * Delta2, Delta2};
   for (std::size_t j = 0; j < active_.size(); ++j) {
-    const double Dl = std::exp(y[5 + j]);
+    const double Dl = area_of(y[5 + j]);
     s.N += G1a3_[j + 1] * Dl;
     s.D += G2_[j + 1] * Dl;
   }
@@ -108,7 +111,7 @@ void ModalModel::jacobian(double t, std::span<const double> y, StructuredJacobia
     J.w[i] = -((G1a3_[0] + sigma * G2_[0]) * dDelta2[i] + B * a2 * dDrive[i]) / s.D;
   }
   for (std::size_t j = 0; j < active_.size(); ++j) {
-    const double Dl = std::exp(y[5 + j]);
+    const double Dl = area_of(y[5 + j]);
     J.v[5 + j] = 2 * G2_[j + 1] / B;
     J.w[5 + j] = -(G1a3_[j + 1] + sigma * G2_[j + 1]) * Dl / s.D;
   }
@@ -126,7 +129,7 @@ Observation ModalModel::observe(double t, std::span<const double> y) const {
   Observation o;
   o.Delta_l.assign(L_ - 1, 0.0);
   o.Delta_l[0] = 2 * (y[0] * y[0] + 2 * (y[1] * y[1] + y[2] * y[2] + y[3] * y[3] + y[4] * y[4]));
-  for (std::size_t j = 0; j < active_.size(); ++j) o.Delta_l[active_[j] - 2] = std::exp(y[5 + j]);
+  for (std::size_t j = 0; j < active_.size(); ++j) o.Delta_l[active_[j] - 2] = std::exp(y[5 + j]);  // exact, even if denormal
   o.sigma = sigma(t, y);
   o.f22 = {y[3], y[4]};
   o.Delta2 = o.Delta_l[0];
