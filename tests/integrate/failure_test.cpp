@@ -1,0 +1,143 @@
+// Failure statuses (never an exception for numerical trouble, never NaN) and option validation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "integrate/run_helpers.hpp"
+#include "model/test_scenes.hpp"
+#include "rbcstab/core/error.hpp"
+
+namespace rbcstab {
+namespace {
+
+using testing::all_finite;
+using testing::fig3_scene;
+
+TEST(Failure, TinyStepLimitEndsWithStatusAndFiniteResult) {
+  for (ModelLevel level : {ModelLevel::full, ModelLevel::modal}) {
+    Scene s = fig3_scene(0.001);
+    s.T = 100;
+    s.model = level;
+    SimulationOptions o;
+    o.integrator.max_steps = 5;
+    const SimulationResult r = simulate(s, o);
+    EXPECT_EQ(r.status, IntegrationStatus::step_limit);
+    EXPECT_NE(r.reason.find("max_steps"), std::string::npos) << r.reason;
+    EXPECT_LT(r.t_reached, s.T);
+    EXPECT_GT(r.t_reached, 0);
+    EXPECT_EQ(r.counters.steps, 5u);
+    EXPECT_TRUE(all_finite(r));
+    EXPECT_EQ(r.Delta_final.size(), std::size_t(s.L - 1));
+  }
+}
+
+TEST(Failure, WallClockLimitEndsWithTimeLimit) {
+  Scene s = fig3_scene(1.5707963267948966);
+  s.T = 1e7;  // would take minutes at the full level
+  s.dt = 1e5;
+  s.L = 30;
+  s.model = ModelLevel::full;
+  SimulationOptions o;
+  o.integrator.max_seconds = 0.2;
+  o.integrator.rtol = 1e-12;
+  const SimulationResult r = simulate(s, o);
+  EXPECT_EQ(r.status, IntegrationStatus::time_limit) << r.reason;
+  EXPECT_NE(r.reason.find("max_seconds"), std::string::npos) << r.reason;
+  // The budget is checked every 64 steps; each step of this system takes well under 1 ms.
+  EXPECT_LT(r.seconds, 2.0);
+  EXPECT_TRUE(all_finite(r));
+}
+
+void expect_field(const IntegratorOptions& o, const std::string& field) {
+  try {
+    o.validate();
+    ADD_FAILURE() << field << " accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), field);
+    EXPECT_NE(std::string(e.what()).find(field), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("must be"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Failure, BadOptionsThrowNamingTheField) {
+  EXPECT_NO_THROW(IntegratorOptions{}.validate());
+  EXPECT_NO_THROW(SimulationOptions{}.validate());
+  IntegratorOptions o;
+  o.rtol = 0;
+  expect_field(o, "rtol");
+  o = {};
+  o.rtol = NAN;
+  expect_field(o, "rtol");
+  o = {};
+  o.atol = -1;
+  expect_field(o, "atol");
+  o = {};
+  o.h_init = 0;
+  expect_field(o, "h_init");
+  o = {};
+  o.h_min = 1;
+  expect_field(o, "h_min");
+  o = {};
+  o.max_steps = 0;
+  expect_field(o, "max_steps");
+  o = {};
+  o.max_seconds = -1;
+  expect_field(o, "max_seconds");
+  SimulationOptions so;
+  so.tail_window = 0;
+  EXPECT_THROW(so.validate(), InvalidArgument);
+  // simulate() validates before running.
+  so = {};
+  so.integrator.rtol = 2;
+  EXPECT_THROW(simulate(fig3_scene(0.001), so), InvalidArgument);
+  EXPECT_THROW(stepper_from_string("euler"), InvalidArgument);
+  EXPECT_THROW(model_level_from_string("foo"), InvalidArgument);
+}
+
+TEST(Failure, IntegrateRejectsBadGrid) {
+  const Scene s = fig3_scene(0.001);
+  const auto sys = make_system(s.parameters, initial_state(s), ModelLevel::modal);
+  const std::vector<double> bad{2.0, 1.0};
+  EXPECT_THROW(integrate(*sys, sys->initial_state(), 0.0, bad, {}, {}), InvalidArgument);
+  const std::vector<double> y_wrong(3, 0.0), grid{1.0};
+  EXPECT_THROW(integrate(*sys, y_wrong, 0.0, grid, {}, {}), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace rbcstab
+
+namespace rbcstab {
+namespace {
+
+TEST(SamplingGrid, IncludesBothEndsAndNoDuplicates) {
+  // Exact expectations: multiples k dt below T, then T itself once.
+  const auto g = sampling_grid(1.0, 0.3);
+  ASSERT_EQ(g.size(), 5u);
+  EXPECT_EQ(g.front(), 0.0);
+  EXPECT_DOUBLE_EQ(g[3], 0.9);
+  EXPECT_EQ(g.back(), 1.0);
+  const auto h = sampling_grid(1.0, 0.1);  // 10 * 0.1 rounds above 1: still 11 points ending at T
+  ASSERT_EQ(h.size(), 11u);
+  EXPECT_EQ(h.back(), 1.0);
+  for (std::size_t k = 1; k < h.size(); ++k) EXPECT_GT(h[k], h[k - 1]);
+  const auto one = sampling_grid(5.0, 5.0);
+  ASSERT_EQ(one.size(), 2u);
+}
+
+TEST(Simulation, TrajectoryIsOnTheUserGrid) {
+  Scene s = testing::fig3_scene(0.001);
+  s.T = 7.5;
+  s.dt = 2;
+  const SimulationResult r = simulate(s);
+  ASSERT_EQ(r.status, IntegrationStatus::success);
+  const std::vector<double> expected{0, 2, 4, 6, 7.5};
+  EXPECT_EQ(r.trajectory.t, expected);
+  EXPECT_EQ(r.trajectory.Delta_l.size(), expected.size());
+  EXPECT_EQ(r.trajectory.Delta_l[0].size(), std::size_t(s.L - 1));
+  // The first sample is the initial state.
+  EXPECT_EQ(r.trajectory.Delta_l[0], r.Delta_initial);
+}
+
+}  // namespace
+}  // namespace rbcstab
