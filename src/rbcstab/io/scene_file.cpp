@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 #include <toml++/toml.h>
@@ -51,6 +52,33 @@ void reject_unknown(const toml::table& table, const std::string& prefix, const s
       for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
       throw InvalidArgument(prefix + key, "unknown scene key '" + prefix + key + "' (allowed here: " + list + ")");
     }
+  }
+}
+
+// Library validation names the bare symbol ("B", "rtol", "delta_l.3"); a scene file names its key
+// ("parameters.B"), so out-of-range messages point at the line to fix.
+std::string scene_key(const std::string& parameter) {
+  static const std::map<std::string, std::string> table_of = {
+      {"lambda", "parameters"}, {"Delta", "parameters"}, {"Delta0", "parameters"}, {"B", "parameters"},
+      {"C", "parameters"},      {"beta", "initial"},     {"delta", "initial"},     {"delta_l", "initial"},
+      {"rest_delta_l", "initial"}, {"L", "run"},         {"T", "run"},             {"dt", "run"},
+      {"model", "run"},         {"tail_window", "run"},  {"stepper", "integrator"}, {"rtol", "integrator"},
+      {"atol", "integrator"},   {"h_init", "integrator"}, {"h_min", "integrator"}, {"max_steps", "integrator"},
+      {"max_seconds", "integrator"}};
+  const auto it = table_of.find(parameter.substr(0, parameter.find('.')));
+  return it == table_of.end() ? parameter : it->second + "." + parameter;
+}
+
+template <class F>
+void with_scene_keys(F&& check) {
+  try {
+    check();
+  } catch (const InvalidArgument& e) {
+    const std::string key = scene_key(e.parameter());
+    if (key == e.parameter()) throw;
+    std::string message = e.what();
+    message = message.rfind(e.parameter(), 0) == 0 ? key + message.substr(e.parameter().size()) : key + ": " + message;
+    throw InvalidArgument(key, message);
   }
 }
 
@@ -122,14 +150,14 @@ SceneFile parse_scene(const std::string& toml_text, const std::string& source_na
     read_number(*t, "run.", "tail_window", f.options.tail_window);
     std::string model = to_string(s.model);
     read_string(*t, "run.", "model", model);
-    s.model = model_level_from_string(model);
+    with_scene_keys([&] { s.model = model_level_from_string(model); });
   }
   if (const toml::table* t = subtable(root, "integrator")) {
     reject_unknown(*t, "integrator.", {"stepper", "rtol", "atol", "h_init", "h_min", "max_steps", "max_seconds"});
     IntegratorOptions& o = f.options.integrator;
     std::string stepper = to_string(o.stepper);
     read_string(*t, "integrator.", "stepper", stepper);
-    o.stepper = stepper_from_string(stepper);
+    with_scene_keys([&] { o.stepper = stepper_from_string(stepper); });
     read_number(*t, "integrator.", "rtol", o.rtol);
     read_number(*t, "integrator.", "atol", o.atol);
     read_number(*t, "integrator.", "h_init", o.h_init);
@@ -140,8 +168,10 @@ SceneFile parse_scene(const std::string& toml_text, const std::string& source_na
     require(max_steps > 0, "integrator.max_steps", double(max_steps), "> 0");
     o.max_steps = std::size_t(max_steps);
   }
-  s.validate();
-  f.options.validate();
+  with_scene_keys([&] {
+    s.validate();
+    f.options.validate();
+  });
   return f;
 }
 

@@ -1,0 +1,46 @@
+// JSON views: documented keys present, non-finite numbers become null.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "rbcstab/io/json.hpp"
+
+namespace rbcstab {
+namespace {
+
+TEST(Json, NonFiniteBecomesNull) {
+  EXPECT_TRUE(number_or_null(NAN).is_null());
+  EXPECT_TRUE(number_or_null(INFINITY).is_null());
+  EXPECT_EQ(number_or_null(1.5).get<double>(), 1.5);
+  Parameters p;
+  p.C = INFINITY;
+  const auto j = to_json(p);
+  EXPECT_TRUE(j["C"].is_null());
+  EXPECT_TRUE(j["S"].is_null());
+  EXPECT_TRUE(j.contains("C_note"));
+  EXPECT_EQ(j["alpha"].get<double>(), 0.0);
+}
+
+TEST(Json, ByModeIsKeyedFromTwo) {
+  const auto j = by_mode({1.0, 2.0, 3.0});
+  EXPECT_EQ(j.size(), 3u);
+  EXPECT_EQ(j["2"].get<double>(), 1.0);
+  EXPECT_EQ(j["4"].get<double>(), 3.0);
+}
+
+TEST(Json, SimulationResultHasTheDocumentedKeys) {
+  Scene s;
+  s.T = 5;
+  const SimulationResult r = simulate(s);
+  const auto j = to_json(r);
+  for (const char* key : {"model", "status", "excess_area_initial", "excess_area_final", "excess_area_tail_mean",
+                          "l_Delta", "sigma_final", "excess_area_drift", "steps", "rhs_evaluations", "seconds"})
+    EXPECT_TRUE(j.contains(key)) << key;
+  EXPECT_EQ(j["excess_area_final"].size(), std::size_t(s.L - 1));
+  EXPECT_TRUE(j["excess_area_final"].contains("10"));
+  EXPECT_EQ(j["model"], "modal");
+  EXPECT_EQ(j["status"], "success");
+}
+
+}  // namespace
+}  // namespace rbcstab
