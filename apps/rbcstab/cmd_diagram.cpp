@@ -1,0 +1,157 @@
+// rbcstab diagram: a phase diagram by direct simulation over two parameter axes (paper Fig. 4,
+// Fig. 5, Appendix E) with threads, shards, MPI ranks and a resumable journal; writes
+// PREFIX.csv and PREFIX.json atomically, progress with rate and ETA on stderr.
+#include <atomic>
+#include <csignal>
+#include <cstdio>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/io/files.hpp"
+#include "rbcstab/sweep/diagram.hpp"
+#include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/sweep/diagram_output.hpp"
+#include "rbcstab/sweep/mpi.hpp"
+#include "scene_options.hpp"
+
+namespace rbcstab::cli {
+
+namespace {
+std::atomic<bool> g_stop{false};
+extern "C" void on_signal(int) { g_stop.store(true); }
+
+struct DiagramCliOptions {
+  SceneOptions scene;
+  std::vector<std::string> axes;
+  std::vector<double> x_range, y_range;
+  std::vector<int> counts;
+  std::string classifier, out = "diagram", journal, shard = "0/1", schedule = "dynamic";
+  int threads = 0;
+  bool no_seconds = false, quiet = false, no_journal = false;
+  double sync_interval = 1.0;
+};
+
+std::string duration(double s) {
+  std::ostringstream ss;
+  if (s >= 3600) ss << int(s / 3600) << "h" << std::setw(2) << std::setfill('0') << int(s / 60) % 60 << "m";
+  else if (s >= 60) ss << int(s / 60) << "m" << std::setw(2) << std::setfill('0') << int(s) % 60 << "s";
+  else ss << std::fixed << std::setprecision(1) << s << "s";
+  return ss.str();
+}
+
+int run(const DiagramCliOptions& o) {
+  const SceneFile sf = o.scene.resolve();
+  DiagramSpec spec;
+  if (!o.scene.scene_path.empty()) spec = parse_diagram_table(read_file(o.scene.scene_path), o.scene.scene_path);
+  if (!o.axes.empty()) {
+    if (o.axes.size() != 2) throw InvalidArgument("--axes", "--axes takes two names, e.g. lnB,lnC");
+    spec.x.axis = axis_from_string(o.axes[0]);
+    spec.y.axis = axis_from_string(o.axes[1]);
+  }
+  if (!o.x_range.empty()) {
+    if (o.x_range.size() != 2) throw InvalidArgument("--x-range", "--x-range takes two numbers: min,max");
+    spec.x.min = o.x_range[0], spec.x.max = o.x_range[1];
+  }
+  if (!o.y_range.empty()) {
+    if (o.y_range.size() != 2) throw InvalidArgument("--y-range", "--y-range takes two numbers: min,max");
+    spec.y.min = o.y_range[0], spec.y.max = o.y_range[1];
+  }
+  if (!o.counts.empty()) {
+    if (o.counts.size() != 2) throw InvalidArgument("--counts", "--counts takes two integers: nx,ny");
+    spec.x.count = o.counts[0], spec.y.count = o.counts[1];
+  }
+  if (!o.classifier.empty()) spec.classifier = classifier_from_string(o.classifier);
+  spec.validate();
+
+  MpiSession mpi;  // a no-op unless started by mpirun (and built with MPI)
+  DiagramOptions ro;
+  ro.threads = o.threads;
+  ro.dynamic_schedule = o.schedule == "dynamic";
+  ro.shard = shard_from_string(o.shard);
+  if (mpi.size() > 1) {
+    if (ro.shard.n > 1) throw InvalidArgument("--shard", "--shard cannot be combined with mpirun (ranks already split the grid)");
+    ro.shard = Shard{mpi.rank(), mpi.size()};
+  }
+  ro.sync_interval = o.sync_interval;
+  ro.stop = &g_stop;
+  const std::string suffix = ro.shard.n > 1 ? ".shard" + std::to_string(ro.shard.k) + "of" + std::to_string(ro.shard.n) : "";
+  const std::string prefix = mpi.size() > 1 ? o.out : o.out + suffix;
+  if (!o.no_journal) ro.journal = (o.journal.empty() ? o.out : o.journal) + suffix + ".journal";
+  const bool show = !o.quiet && mpi.rank() == 0;
+  if (show)
+    ro.on_progress = [&](const Progress& p) {
+      std::cerr << "rbcstab: diagram " << p.done << "/" << p.total;
+      if (p.resumed) std::cerr << " (" << p.resumed << " resumed)";
+      std::cerr << ", " << std::fixed << std::setprecision(1) << p.rate << " points/s, elapsed " << duration(p.elapsed)
+                << ", ETA " << (p.rate > 0 ? duration(p.eta) : std::string("?")) << "\n";
+      std::cerr.unsetf(std::ios::floatfield);
+    };
+  std::signal(SIGINT, on_signal);
+  std::signal(SIGTERM, on_signal);
+
+  DiagramRun r = run_diagram(sf.scene, sf.options, spec, ro);
+  if (mpi.size() > 1) r = mpi.gather(r, spec);
+  if (mpi.rank() != 0) return r.complete ? kOk : kRunFailed;
+  if (!r.complete) {
+    std::cerr << "rbcstab: interrupted after " << r.points.size() << " points (" << r.computed
+              << " computed in this run); finished points are in the journal: rerun the same command to resume\n";
+    return kRunFailed;
+  }
+  const DiagramOutputOptions oo{!o.no_seconds};
+  const Shard out_shard = mpi.size() > 1 ? Shard{} : ro.shard;
+  try {
+    write_file_atomic(prefix + ".csv", diagram_csv(spec, r.points, oo));
+    write_file_atomic(prefix + ".json",
+                      diagram_json(diagram_header(sf.scene, sf.options, spec), spec, r.points, out_shard, oo).dump(1) + "\n");
+  } catch (const std::runtime_error& e) {
+    std::cerr << "rbcstab: error: " << e.what() << "\n";
+    return kOutputError;
+  }
+  std::size_t failed = 0, unstable = 0;
+  for (const auto& p : r.points) {
+    failed += p.verdict == Verdict::failed;
+    unstable += p.verdict == Verdict::unstable;
+  }
+  if (show)
+    std::cerr << "rbcstab: diagram done: " << r.points.size() << " points (" << r.computed << " computed, " << r.resumed
+              << " resumed) in " << duration(r.seconds) << "; " << unstable << " unstable, " << failed
+              << " failed; wrote " << prefix << ".csv and " << prefix << ".json\n";
+  return failed ? kRunFailed : kOk;
+}
+}  // namespace
+
+static Runner add_diagram(CLI::App& app) {
+  auto o = std::make_shared<DiagramCliOptions>();
+  o->scene.add_to(app);
+  app.add_option("--axes", o->axes, "two axes x,y from lnB lnC lambda Delta Delta0 alpha beta (default: the scene's [diagram] or lnB,lnC)")
+      ->delimiter(',');
+  app.add_option("--x-range", o->x_range, "min,max of the x axis (inclusive)")->delimiter(',')->allow_extra_args(false);
+  app.add_option("--y-range", o->y_range, "min,max of the y axis (inclusive)")->delimiter(',')->allow_extra_args(false);
+  app.add_option("--counts", o->counts, "grid values nx,ny")->delimiter(',');
+  app.add_option("--classifier", o->classifier, "l_Delta rule: auto (tail mean if oscillating), final (Fig. 4), tail (App. E)")
+      ->check(CLI::IsMember({"auto", "final", "tail"}));
+  app.add_option("--threads", o->threads, "worker threads (0: all cores)")->capture_default_str();
+  app.add_option("--schedule", o->schedule, "point scheduling over threads")
+      ->check(CLI::IsMember({"dynamic", "static"}))
+      ->capture_default_str();
+  app.add_option("--shard", o->shard, "compute only the points with index % n == k (job arrays; then rbcstab merge)")
+      ->capture_default_str();
+  app.add_option("--out", o->out, "output prefix: PREFIX.csv, PREFIX.json (shards: PREFIX.shardKofN.*)")->capture_default_str();
+  app.add_option("--journal", o->journal, "checkpoint journal prefix (default: the output prefix; file PREFIX.journal)");
+  app.add_flag("--no-journal", o->no_journal, "no checkpoint journal (no resume)");
+  app.add_option("--sync-interval", o->sync_interval, "fdatasync the journal at most this often [s]")->capture_default_str();
+  app.add_flag("--no-seconds", o->no_seconds, "omit per-point wall-clock seconds: outputs identical byte for byte across runs");
+  app.add_flag("--quiet", o->quiet, "no progress on stderr");
+  return [o] { return run(*o); };
+}
+
+namespace {
+const RegisterCommand kRegister{"diagram", "Phase diagram by direct simulation over two parameter axes", add_diagram, 40};
+}  // namespace
+
+}  // namespace rbcstab::cli

@@ -1,0 +1,339 @@
+#include "rbcstab/sweep/diagram.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <cstdint>
+#include <exception>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <sstream>
+#include <thread>
+#include <tuple>
+
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/sweep/detail/journal.hpp"
+#include "rbcstab/sweep/point_io.hpp"
+
+namespace rbcstab {
+
+namespace {
+struct AxisName {
+  Axis axis;
+  const char* name;
+};
+constexpr AxisName kAxes[] = {{Axis::lnB, "lnB"},       {Axis::lnC, "lnC"},       {Axis::lambda, "lambda"},
+                              {Axis::Delta, "Delta"},   {Axis::Delta0, "Delta0"}, {Axis::alpha, "alpha"},
+                              {Axis::beta, "beta"}};
+}  // namespace
+
+std::string to_string(Axis a) {
+  for (const auto& n : kAxes)
+    if (n.axis == a) return n.name;
+  return "?";
+}
+
+const std::vector<std::string>& axis_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const auto& n : kAxes) v.emplace_back(n.name);
+    return v;
+  }();
+  return names;
+}
+
+Axis axis_from_string(const std::string& name) {
+  for (const auto& n : kAxes)
+    if (name == n.name) return n.axis;
+  throw InvalidArgument("axis", "axis '" + name + "' is unknown (allowed: lnB, lnC, lambda, Delta, Delta0, alpha, beta)");
+}
+
+std::string to_string(Classifier c) {
+  switch (c) {
+    case Classifier::automatic: return "auto";
+    case Classifier::final: return "final";
+    case Classifier::tail_mean: return "tail";
+  }
+  return "?";
+}
+
+Classifier classifier_from_string(const std::string& name) {
+  if (name == "auto") return Classifier::automatic;
+  if (name == "final") return Classifier::final;
+  if (name == "tail") return Classifier::tail_mean;
+  throw InvalidArgument("classifier", "classifier '" + name + "' is unknown (allowed: auto, final, tail)");
+}
+
+std::string to_string(Verdict v) {
+  switch (v) {
+    case Verdict::stable: return "stable";
+    case Verdict::unstable: return "unstable";
+    case Verdict::failed: return "failed";
+  }
+  return "?";
+}
+
+double AxisRange::value(int i) const {
+  if (count <= 1) return min;
+  if (i == count - 1) return max;
+  return min + (max - min) * double(i) / double(count - 1);
+}
+
+void DiagramSpec::validate() const {
+  for (const AxisRange* a : {&x, &y}) {
+    const std::string n = a == &x ? "x" : "y";
+    require(std::isfinite(a->min), "diagram." + n + "_range", a->min, "finite");
+    require(std::isfinite(a->max), "diagram." + n + "_range", a->max, "finite");
+    require(a->count >= 1 && a->count <= 1'000'000, "diagram.counts", a->count, "an integer in [1, 1000000]");
+  }
+  if (x.axis == y.axis)
+    throw InvalidArgument("diagram.axes", "diagram.axes must name two different axes (both are '" + to_string(x.axis) + "')");
+}
+
+void Shard::validate() const {
+  require(n >= 1, "shard", n, "k/n with n >= 1");
+  require(k >= 0 && k < n, "shard", k, "k/n with 0 <= k < n");
+}
+
+Shard shard_from_string(const std::string& text) {
+  const auto slash = text.find('/');
+  Shard s;
+  try {
+    if (slash == std::string::npos) throw std::invalid_argument(text);
+    std::size_t p1 = 0, p2 = 0;
+    s.k = std::stoi(text.substr(0, slash), &p1);
+    s.n = std::stoi(text.substr(slash + 1), &p2);
+    if (p1 != slash || p2 != text.size() - slash - 1) throw std::invalid_argument(text);
+  } catch (const std::exception&) {
+    throw InvalidArgument("shard", "shard = '" + text + "' must have the form k/n, e.g. 0/4");
+  }
+  s.validate();
+  return s;
+}
+
+void DiagramOptions::validate() const {
+  require(threads >= 0 && threads <= 4096, "threads", threads, "an integer in [0, 4096] (0: all cores)");
+  shard.validate();
+  require(std::isfinite(sync_interval) && sync_interval >= 0, "sync_interval", sync_interval, "finite and >= 0");
+  require(std::isfinite(progress_interval) && progress_interval > 0, "progress_interval", progress_interval,
+          "finite and > 0");
+}
+
+Scene point_scene(const Scene& base, const DiagramSpec& spec, std::size_t index) {
+  require(index < spec.size(), "index", double(index), "below the number of grid points");
+  Scene s = base;
+  const int i = int(index % std::size_t(spec.x.count));
+  const int j = int(index / std::size_t(spec.x.count));
+  const std::pair<const AxisRange*, double> values[2] = {{&spec.x, spec.x.value(i)}, {&spec.y, spec.y.value(j)}};
+  double alpha = -1;
+  for (const auto& [a, v] : values) {
+    switch (a->axis) {
+      case Axis::lnB: s.parameters.B = std::exp(v); break;
+      case Axis::lnC: s.parameters.C = std::exp(v); break;
+      case Axis::lambda: s.parameters.lambda = v; break;
+      case Axis::Delta: s.parameters.Delta = v; break;
+      case Axis::Delta0: s.parameters.Delta0 = v; break;
+      case Axis::beta: s.beta = v; break;
+      case Axis::alpha: alpha = v; break;
+    }
+  }
+  if (alpha != -1) {
+    require(std::isfinite(alpha) && alpha > 0, "alpha", alpha, "finite and > 0 on an alpha axis");
+    const bool keep_B = spec.x.axis == Axis::lnB || spec.y.axis == Axis::lnB;
+    if (keep_B)
+      s.parameters.C = s.parameters.B / alpha;
+    else
+      s.parameters.B = alpha * s.parameters.C;
+  }
+  std::ostringstream name;
+  name << base.name << "[" << index << "]";
+  s.name = name.str();
+  return s;
+}
+
+namespace {
+// argmax_l [X_l - Delta_l(0)] and its value (index l - 2 in the vectors).
+std::pair<int, double> argmax_growth(const std::vector<double>& X, const std::vector<double>& X0) {
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < X.size(); ++k)
+    if (X[k] - X0[k] > X[best] - X0[best]) best = k;
+  return {int(best) + 2, X.empty() ? 0.0 : X[best] - X0[best]};
+}
+}  // namespace
+
+PointResult run_point(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec,
+                      std::size_t index) {
+  const Scene scene = point_scene(base, spec, index);
+  SimulationOptions o = options;
+  o.record_trajectory = false;
+  const SimulationResult r = simulate(scene, o);
+  PointResult p;
+  p.index = index;
+  p.i = int(index % std::size_t(spec.x.count));
+  p.j = int(index / std::size_t(spec.x.count));
+  p.x = spec.x.value(p.i);
+  p.y = spec.y.value(p.j);
+  const bool tail = spec.classifier == Classifier::tail_mean ||
+                    (spec.classifier == Classifier::automatic && r.oscillating);
+  std::tie(p.l_Delta, p.growth) = argmax_growth(tail ? r.Delta_tail_mean : r.Delta_final, r.Delta_initial);
+  p.oscillating = r.oscillating;
+  p.sigma_final = r.sigma_final;
+  p.status = r.status;
+  p.reason = r.reason;
+  p.t_reached = r.t_reached;
+  p.steps = r.counters.steps;
+  p.failed_steps = r.counters.failed_steps;
+  p.rhs_evaluations = r.counters.rhs_evaluations;
+  p.seconds = r.seconds;
+  p.verdict = r.status != IntegrationStatus::success ? Verdict::failed
+              : p.l_Delta >= 3                         ? Verdict::unstable
+                                                       : Verdict::stable;
+  return p;
+}
+
+std::string config_hash(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec) {
+  std::ostringstream text;
+  SceneFile f{base, options};
+  f.scene.name = "";  // the label does not change any number
+  f.options.integrator.max_seconds = 0;  // a wall-clock budget is not part of the configuration
+  text << to_toml(f) << "x " << to_string(spec.x.axis) << ' ' << exact(spec.x.min) << ' ' << exact(spec.x.max) << ' '
+       << spec.x.count << "\ny " << to_string(spec.y.axis) << ' ' << exact(spec.y.min) << ' ' << exact(spec.y.max)
+       << ' ' << spec.y.count << "\nclassifier " << to_string(spec.classifier) << "\n";
+  std::uint64_t h = 1469598103934665603ull;  // FNV-1a 64
+  for (unsigned char c : text.str()) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  char buf[17];
+  static const char* hex = "0123456789abcdef";
+  for (int k = 15; k >= 0; --k, h >>= 4) buf[k] = hex[h & 15];
+  buf[16] = 0;
+  return buf;
+}
+
+DiagramRun run_diagram(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec,
+                       const DiagramOptions& run_options) {
+  spec.validate();
+  run_options.validate();
+  base.validate();
+  options.validate();
+  const auto t_start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count(); };
+
+  // Every point's scene is checked before any work, so bad input fails fast and whole.
+  std::vector<std::size_t> mine;
+  for (std::size_t idx = 0; idx < spec.size(); ++idx)
+    if (run_options.shard.contains(idx)) {
+      try {
+        point_scene(base, spec, idx).validate();
+      } catch (const InvalidArgument& e) {
+        throw InvalidArgument(e.parameter(), std::string(e.what()) + " (at diagram point " + std::to_string(idx) + ")");
+      }
+      mine.push_back(idx);
+    }
+
+  DiagramRun run;
+  run.config_hash = config_hash(base, options, spec);
+  std::unique_ptr<detail::Journal> journal;
+  if (!run_options.journal.empty())
+    journal = std::make_unique<detail::Journal>(run_options.journal, run.config_hash, spec, run_options.sync_interval);
+
+  std::map<std::size_t, PointResult> results;
+  std::vector<std::size_t> pending;
+  for (std::size_t idx : mine) {
+    if (journal) {
+      auto it = journal->finished().find(idx);
+      if (it != journal->finished().end()) {
+        results.emplace(idx, it->second);
+        continue;
+      }
+    }
+    pending.push_back(idx);
+  }
+  run.resumed = results.size();
+
+  std::mutex mutex;
+  std::condition_variable cv;
+  std::size_t computed = 0, running = 0;
+  std::atomic<std::size_t> next{0};
+  std::exception_ptr error;
+  int nthreads = run_options.threads == 0 ? int(std::max(1u, std::thread::hardware_concurrency())) : run_options.threads;
+  nthreads = int(std::min<std::size_t>(std::size_t(nthreads), std::max<std::size_t>(1, pending.size())));
+  auto stopped = [&] { return run_options.stop && run_options.stop->load(); };
+
+  auto worker = [&](int w) {
+    std::size_t k_static = std::size_t(w);
+    for (;;) {
+      std::size_t k;
+      if (run_options.dynamic_schedule) {
+        k = next.fetch_add(1);
+      } else {
+        k = k_static;
+        k_static += std::size_t(nthreads);
+      }
+      if (k >= pending.size() || stopped()) break;
+      {
+        std::lock_guard lock(mutex);
+        if (error) break;
+      }
+      try {
+        PointResult p = run_point(base, options, spec, pending[k]);
+        std::lock_guard lock(mutex);
+        if (journal) journal->append(p);
+        results.emplace(p.index, std::move(p));
+        ++computed;
+      } catch (...) {
+        std::lock_guard lock(mutex);
+        if (!error) error = std::current_exception();
+      }
+      cv.notify_all();
+    }
+    std::lock_guard lock(mutex);
+    --running;
+    cv.notify_all();
+  };
+
+  std::vector<std::thread> pool;
+  running = std::size_t(nthreads);
+  for (int w = 0; w < nthreads; ++w) pool.emplace_back(worker, w);
+  {
+    std::unique_lock lock(mutex);
+    auto report = [&] {
+      if (!run_options.on_progress) return;
+      Progress pr;
+      pr.done = results.size();
+      pr.total = mine.size();
+      pr.resumed = run.resumed;
+      pr.elapsed = elapsed();
+      pr.rate = pr.elapsed > 0 ? double(computed) / pr.elapsed : 0;
+      pr.eta = pr.rate > 0 ? double(pr.total - pr.done) / pr.rate : 0;
+      lock.unlock();
+      run_options.on_progress(pr);
+      lock.lock();
+    };
+    double last_report = 0;
+    while (running > 0) {
+      cv.wait_for(lock, std::chrono::duration<double>(run_options.progress_interval));
+      if (running > 0 && elapsed() - last_report >= run_options.progress_interval) {
+        last_report = elapsed();
+        report();
+      }
+    }
+    report();
+  }
+  for (auto& t : pool) t.join();
+  if (journal) journal->sync();
+  if (error) std::rethrow_exception(error);
+
+  run.computed = computed;
+  run.points.reserve(results.size());
+  for (auto& [idx, p] : results) run.points.push_back(std::move(p));
+  run.complete = run.points.size() == mine.size();
+  run.seconds = elapsed();
+  return run;
+}
+
+}  // namespace rbcstab

@@ -1,0 +1,122 @@
+#pragma once
+// Phase diagrams by direct simulation (paper Fig. 4, Fig. 5, Appendix E): a regular grid over two
+// of ln B, ln C, lambda, Delta, Delta0, alpha, beta; every point is one modal-level `simulate`
+// classified by l_Delta. Points are independent and deterministic, so the result does not depend
+// on the thread count, the scheduling, the shard split, MPI ranks or on resuming from a journal.
+#include <atomic>
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "rbcstab/integrate/simulation.hpp"
+#include "rbcstab/model/scene.hpp"
+
+namespace rbcstab {
+
+enum class Axis { lnB, lnC, lambda, Delta, Delta0, alpha, beta };
+std::string to_string(Axis a);
+Axis axis_from_string(const std::string& name);  // throws InvalidArgument("axis", ...)
+const std::vector<std::string>& axis_names();
+
+struct AxisRange {
+  Axis axis = Axis::lnB;
+  double min = -1, max = 6;  // inclusive ends (Fig. 4: ln B in [-1, 6])
+  int count = 64;            // grid values; 1 gives the single value min
+  double value(int i) const;  // min + (max - min) i / (count - 1), exactly max at the end
+};
+
+// How l_Delta = argmax_l [X_l - Delta_l(0)] picks X_l.
+enum class Classifier {
+  automatic,  // simulate's rule: tail mean when Delta_2 oscillates over the tail window, else Delta_l(T)
+  final,      // X = Delta_l(T): the paper's out-of-plane rule (Fig. 4)
+  tail_mean,  // X = mean over [T - tail_window, T]: the paper's in-plane rule (Appendix E)
+};
+std::string to_string(Classifier c);
+Classifier classifier_from_string(const std::string& name);  // throws InvalidArgument("classifier", ...)
+
+struct DiagramSpec {
+  AxisRange x{Axis::lnB, -1, 6, 64};    // fastest-varying axis: index = j * x.count + i
+  AxisRange y{Axis::lnC, -5.5, 2, 64};  // Fig. 4: ln C in [-5.5, 2]
+  Classifier classifier = Classifier::automatic;  // see Classifier
+  void validate() const;                 // distinct axes, finite ranges, counts in [1, 10^6]
+  std::size_t size() const { return std::size_t(x.count) * std::size_t(y.count); }
+};
+
+// The scene of grid point `index`: base with the two axis values applied. ln B, ln C, lambda,
+// Delta, Delta0 and beta set their parameter; alpha = B/C is applied last and keeps ln B fixed
+// when the other axis is ln B (C = B/alpha), otherwise keeps C (B = alpha C).
+Scene point_scene(const Scene& base, const DiagramSpec& spec, std::size_t index);
+
+enum class Verdict { stable, unstable, failed };  // failed: the integrator did not reach T
+std::string to_string(Verdict v);
+
+struct PointResult {
+  std::size_t index = 0;
+  int i = 0, j = 0;               // grid position (x, y)
+  double x = 0, y = 0;            // axis values
+  Verdict verdict = Verdict::stable;
+  int l_Delta = 2;                // per the spec's classifier (2: stable)
+  double growth = 0;              // X_{l_Delta} - Delta_{l_Delta}(0)
+  bool oscillating = false;       // Delta_2 not monotonic over the tail window
+  double sigma_final = 0;         // sigma(T)
+  IntegrationStatus status = IntegrationStatus::success;
+  std::string reason;             // integrator message when not success
+  double t_reached = 0;
+  std::size_t steps = 0, failed_steps = 0, rhs_evaluations = 0;  // cost (deterministic)
+  double seconds = 0;             // cost (wall clock; the only non-deterministic field)
+};
+
+// One grid point (throws InvalidArgument if the point's scene is invalid).
+PointResult run_point(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec,
+                      std::size_t index);
+
+struct Shard {
+  int k = 0, n = 1;  // this job computes the points with index % n == k (interleaved: balances cost)
+  bool contains(std::size_t index) const { return index % std::size_t(n) == std::size_t(k); }
+  void validate() const;
+};
+Shard shard_from_string(const std::string& text);  // "k/n", 0 <= k < n
+
+struct Progress {
+  std::size_t done = 0;      // finished points of this job, resumed ones included
+  std::size_t total = 0;     // points of this job
+  std::size_t resumed = 0;   // taken from the journal
+  double elapsed = 0;        // seconds since the start of this run
+  double rate = 0;           // computed points per second in this run
+  double eta = 0;            // seconds left at that rate (0 when unknown)
+};
+
+struct DiagramOptions {
+  int threads = 1;                 // worker threads; 0 = std::thread::hardware_concurrency()
+  bool dynamic_schedule = true;    // dynamic: next free point; static: worker w takes every threads-th point
+  Shard shard;                     // the slice of the grid this job owns
+  std::string journal;             // append-only checkpoint file; empty = none (no resume)
+  double sync_interval = 1.0;      // fdatasync the journal at most this often [s]; every line is write()n at once,
+                                   // so a killed process loses nothing, only a power cut could lose <= this much
+  double progress_interval = 1.0;  // seconds between on_progress calls
+  std::function<void(const Progress&)> on_progress;  // called on the calling thread
+  const std::atomic<bool>* stop = nullptr;  // set (e.g. by SIGINT) to stop picking new points
+  void validate() const;
+};
+
+struct DiagramRun {
+  std::vector<PointResult> points;  // this job's points in index order (all of them unless interrupted)
+  std::size_t computed = 0;         // simulated in this run
+  std::size_t resumed = 0;          // read back from the journal
+  bool complete = false;            // every point of the job is in `points`
+  std::string config_hash;          // hash of everything that determines the points
+  double seconds = 0;
+};
+
+// 16 hex digits (FNV-1a 64) of the canonical text of base, options and spec; shards of the same
+// diagram share it (the shard is not part of it).
+std::string config_hash(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec);
+
+// Runs (or resumes) this job's points with a thread pool. A journal written for another
+// configuration is refused (InvalidArgument("journal", ...)).
+DiagramRun run_diagram(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec,
+                       const DiagramOptions& run_options);
+
+}  // namespace rbcstab

@@ -1,0 +1,43 @@
+#pragma once
+// Diagram outputs: CSV (one row per point, index order) and JSON (configuration, per-point
+// records, verdict counts and cost), plus merging of shard outputs. Both are pure functions of the
+// configuration and the points, so a serial run, a threaded run, MPI ranks and merged shards give
+// the same bytes (per-point wall-clock seconds aside, which include_seconds = false drops).
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "rbcstab/sweep/diagram.hpp"
+
+namespace rbcstab {
+
+struct DiagramOutputOptions {
+  bool include_seconds = true;  // per-point wall-clock cost; false makes the output reproducible byte for byte
+};
+
+// Everything that defines the diagram: scene, integrator options, axes, classifier, config hash.
+nlohmann::json diagram_header(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec);
+
+std::string diagram_csv(const DiagramSpec& spec, const std::vector<PointResult>& points,
+                        const DiagramOutputOptions& o = {});
+// header + "points" + "summary"; shard (if n > 1) and "complete" say which part of the grid it holds.
+nlohmann::json diagram_json(const nlohmann::json& header, const DiagramSpec& spec,
+                            const std::vector<PointResult>& points, const Shard& shard,
+                            const DiagramOutputOptions& o = {});
+
+// The spec and points back from a diagram_json document (throws InvalidArgument("merge", ...)).
+DiagramSpec spec_from_json(const nlohmann::json& doc);
+std::vector<PointResult> points_from_json(const nlohmann::json& doc, const DiagramSpec& spec);
+
+struct MergeResult {
+  nlohmann::json header;
+  DiagramSpec spec;
+  std::vector<PointResult> points;  // index order
+  std::vector<std::size_t> missing; // grid indices no input held
+  bool seconds_present = true;      // every input carried per-point seconds
+};
+// Merges shard outputs of one diagram: they must share the config hash; a point held twice must
+// agree (deterministic runs) or it throws InvalidArgument("merge", ...).
+MergeResult merge_diagrams(const std::vector<nlohmann::json>& docs);
+
+}  // namespace rbcstab

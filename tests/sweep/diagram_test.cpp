@@ -1,0 +1,214 @@
+// Phase-diagram sweeps: axes, point scenes, determinism over threads/schedules/shards, journal
+// resume, merge, and the [diagram] scene table.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/sweep/diagram.hpp"
+#include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/sweep/diagram_output.hpp"
+
+namespace rbcstab {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A small, quick diagram: 4 x 3 points over ln B, ln C around the Fig. 3 case, short horizon.
+Scene small_scene() {
+  Scene s;
+  s.L = 5;
+  s.T = 40;
+  s.dt = 40;
+  return s;
+}
+DiagramSpec small_spec() {
+  DiagramSpec d;
+  d.x = {Axis::lnB, -1, 5, 4};
+  d.y = {Axis::lnC, -5, 1, 3};
+  d.classifier = Classifier::final;
+  return d;
+}
+std::string temp_path(const std::string& name) {
+  const fs::path dir = fs::temp_directory_path() / ("rbcstab_sweep_test_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  return (dir / name).string();
+}
+std::string csv_of(const DiagramRun& r, const DiagramSpec& spec) { return diagram_csv(spec, r.points, {false}); }
+
+TEST(DiagramSpec, DefaultsAreValidAndAxisEndsExact) {
+  DiagramSpec d;
+  EXPECT_NO_THROW(d.validate());
+  EXPECT_EQ(d.x.value(0), -1.0);
+  EXPECT_EQ(d.x.value(63), 6.0);
+  EXPECT_EQ(d.y.value(63), 2.0);
+  EXPECT_NO_THROW(DiagramOptions{}.validate());
+  AxisRange one{Axis::beta, 0.3, 9, 1};
+  EXPECT_EQ(one.value(0), 0.3);
+}
+
+TEST(DiagramSpec, RejectsSameAxisTwiceAndUnknownNames) {
+  DiagramSpec d;
+  d.y.axis = Axis::lnB;
+  EXPECT_THROW(d.validate(), InvalidArgument);
+  EXPECT_THROW(axis_from_string("lnD"), InvalidArgument);
+  EXPECT_THROW(classifier_from_string("mean"), InvalidArgument);
+  EXPECT_THROW(shard_from_string("2/2"), InvalidArgument);
+  EXPECT_THROW(shard_from_string("1-2"), InvalidArgument);
+  const Shard s = shard_from_string("1/3");
+  EXPECT_EQ(s.k, 1);
+  EXPECT_EQ(s.n, 3);
+  EXPECT_TRUE(s.contains(4));
+  EXPECT_FALSE(s.contains(5));
+}
+
+TEST(PointScene, AppliesAxesAndAlphaKeepsTheOtherAxis) {
+  DiagramSpec d = small_spec();
+  const Scene base = small_scene();
+  const Scene s = point_scene(base, d, 7);  // i = 3, j = 1
+  EXPECT_DOUBLE_EQ(s.parameters.B, std::exp(5.0));
+  EXPECT_DOUBLE_EQ(s.parameters.C, std::exp(-2.0));
+  EXPECT_EQ(s.parameters.lambda, base.parameters.lambda);
+  // alpha with ln B: C = B / alpha, so B/C is alpha.
+  d.y = {Axis::alpha, 10, 100, 2};
+  const Scene a = point_scene(base, d, 5);  // i = 1, j = 1
+  EXPECT_DOUBLE_EQ(a.parameters.B, std::exp(1.0));
+  EXPECT_NEAR(a.parameters.alpha(), 100, 1e-12);
+  // alpha with lambda: C kept, B = alpha C (Fig. 5).
+  d.x = {Axis::lambda, 1, 5, 2};
+  const Scene b = point_scene(base, d, 3);
+  EXPECT_EQ(b.parameters.lambda, 5);
+  EXPECT_EQ(b.parameters.C, base.parameters.C);
+  EXPECT_NEAR(b.parameters.alpha(), 100, 1e-12);
+  EXPECT_THROW(point_scene(base, d, 4), InvalidArgument);
+}
+
+// Physics check against the paper's criteria (Sec. IV): l_* >= 2.5 needs alpha >= (35/8)^2 ~ 19.1,
+// so a point with alpha = 1 cannot destabilise (stable); the Fig. 3 case (B = 2, C = 0.04,
+// lambda = 5, OP) sends its excess area to l = 3 (Fig. 3b). These do not depend on the sweep code.
+TEST(RunPoint, StableBelowAlphaStarAndFig3CaseUnstableToL3) {
+  Scene base;  // Fig. 3 OP defaults, L = 10, T = 500
+  base.T = 200;
+  base.dt = 200;
+  DiagramSpec d;
+  d.x = {Axis::lnB, std::log(2.0), std::log(2.0), 1};
+  d.y = {Axis::alpha, 1, 50, 2};
+  d.classifier = Classifier::final;
+  const PointResult stable = run_point(base, {}, d, 0);
+  EXPECT_EQ(stable.status, IntegrationStatus::success);
+  EXPECT_EQ(stable.verdict, Verdict::stable);
+  EXPECT_EQ(stable.l_Delta, 2);
+  const PointResult fig3 = run_point(base, {}, d, 1);
+  EXPECT_NEAR(point_scene(base, d, 1).parameters.C, 0.04, 1e-15);
+  EXPECT_EQ(fig3.verdict, Verdict::unstable);
+  EXPECT_EQ(fig3.l_Delta, 3);
+  EXPECT_GT(fig3.growth, 0.1);  // an O(1) transfer, not a perturbation-sized one
+  EXPECT_GT(fig3.rhs_evaluations, 0u);
+}
+
+TEST(RunDiagram, BitIdenticalForAnyThreadCountAndSchedule) {
+  const Scene base = small_scene();
+  const DiagramSpec spec = small_spec();
+  DiagramOptions o;
+  o.threads = 1;
+  const DiagramRun serial = run_diagram(base, {}, spec, o);
+  ASSERT_TRUE(serial.complete);
+  ASSERT_EQ(serial.points.size(), spec.size());
+  for (std::size_t k = 0; k < serial.points.size(); ++k) EXPECT_EQ(serial.points[k].index, k);
+  const std::string reference = csv_of(serial, spec);
+  for (int threads : {2, 3, 5})
+    for (bool dynamic : {true, false}) {
+      o.threads = threads;
+      o.dynamic_schedule = dynamic;
+      EXPECT_EQ(csv_of(run_diagram(base, {}, spec, o), spec), reference) << threads << " threads, dynamic " << dynamic;
+    }
+}
+
+TEST(RunDiagram, JournalResumesWithoutRecomputingAndShardsMerge) {
+  const Scene base = small_scene();
+  const DiagramSpec spec = small_spec();
+  const std::string journal = temp_path("resume.journal");
+  fs::remove(journal);
+  DiagramOptions o;
+  o.threads = 2;
+  o.journal = journal;
+  o.shard = {0, 2};
+  const DiagramRun half = run_diagram(base, {}, spec, o);
+  EXPECT_EQ(half.computed, 6u);
+  EXPECT_TRUE(half.complete);
+  // A torn last line (a kill inside write) is dropped, not misread.
+  { std::ofstream(journal, std::ios::app) << "P " << half.config_hash << " 1 unstable 3 0.5"; }
+  o.shard = {};
+  const DiagramRun full = run_diagram(base, {}, spec, o);
+  EXPECT_EQ(full.resumed, 6u);
+  EXPECT_EQ(full.computed, 6u);
+  const DiagramRun again = run_diagram(base, {}, spec, o);
+  EXPECT_EQ(again.resumed, 12u);
+  EXPECT_EQ(again.computed, 0u);
+  DiagramOptions fresh;
+  const std::string reference = csv_of(run_diagram(base, {}, spec, fresh), spec);
+  EXPECT_EQ(csv_of(full, spec), reference);
+  EXPECT_EQ(csv_of(again, spec), reference);
+  // Journal lines: the header plus exactly one line per point (nothing computed twice).
+  std::ifstream in(journal);
+  std::size_t lines = 0;
+  for (std::string line; std::getline(in, line);) ++lines;
+  EXPECT_EQ(lines, 1 + spec.size());
+
+  // Another configuration must not reuse this journal.
+  Scene other = base;
+  other.T = 41;
+  EXPECT_THROW(run_diagram(other, {}, spec, o), InvalidArgument);
+
+  // Shards merge to the serial result, byte for byte.
+  const nlohmann::json header = diagram_header(base, {}, spec);
+  std::vector<nlohmann::json> docs;
+  for (int k = 0; k < 3; ++k) {
+    DiagramOptions so;
+    so.shard = {k, 3};
+    const DiagramRun r = run_diagram(base, {}, spec, so);
+    docs.push_back(nlohmann::json::parse(diagram_json(header, spec, r.points, so.shard, {false}).dump()));
+  }
+  const MergeResult m = merge_diagrams(docs);
+  EXPECT_TRUE(m.missing.empty());
+  EXPECT_EQ(diagram_csv(m.spec, m.points, {false}), reference);
+  EXPECT_EQ(diagram_json(m.header, m.spec, m.points, {}, {false}).dump(),
+            diagram_json(header, spec, full.points, {}, {false}).dump());
+  docs.pop_back();
+  EXPECT_EQ(merge_diagrams(docs).missing.size(), 4u);
+}
+
+TEST(DiagramFile, ParsesTableAndSceneParserIgnoresIt) {
+  const std::string text = R"(
+name = "panel"
+[parameters]
+lambda = 1.0
+[diagram]
+axes = ["lnC", "lambda"]
+x_range = [-5.0, 2.0]
+y_range = [0.5, 6]
+counts = [8, 5]
+classifier = "tail"
+)";
+  const DiagramSpec d = parse_diagram_table(text);
+  EXPECT_EQ(d.x.axis, Axis::lnC);
+  EXPECT_EQ(d.y.axis, Axis::lambda);
+  EXPECT_EQ(d.x.min, -5.0);
+  EXPECT_EQ(d.y.max, 6.0);
+  EXPECT_EQ(d.x.count, 8);
+  EXPECT_EQ(d.y.count, 5);
+  EXPECT_EQ(d.classifier, Classifier::tail_mean);
+  EXPECT_EQ(parse_scene(text).scene.parameters.lambda, 1.0);
+  EXPECT_THROW(parse_diagram_table("[diagram]\nsteps = 3\n"), InvalidArgument);
+  EXPECT_THROW(parse_diagram_table("[diagram]\naxes = [\"lnB\"]\n"), InvalidArgument);
+  EXPECT_THROW(parse_diagram_table("[diagram]\ncounts = [0, 3]\n"), InvalidArgument);
+  EXPECT_EQ(parse_diagram_table("name = 'x'\n").size(), DiagramSpec{}.size());
+}
+
+}  // namespace
+}  // namespace rbcstab
