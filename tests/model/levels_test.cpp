@@ -218,5 +218,67 @@ TEST(LevelFlows, ReducedFlowIsTheFullFlow) {
   }
 }
 
+
+TEST(FullTension, KeepsExcessAreaConstantAndMatchesEqStWithRealPart) {
+  // At generic states of a scene without symmetry (all m, stress-free l >= 3 content):
+  // (1) the tension makes dDelta/dt = sum_l a_l sum_m 2 Re(conj(f) f') vanish (its definition);
+  // (2) it equals the paper's Eq. st evaluated with complex amplitudes, with the real part taken;
+  // (3) the bracket of Eq. st has a non-zero imaginary part, so the printed form (without Re) is not real.
+  const Scene s = generic_scene(6, true);
+  const InitialState init = initial_state(s);
+  FullModel full(s.parameters, init);
+  const Parameters& p = s.parameters;
+  double max_imag = 0;
+  for (unsigned seed : {1u, 2u, 3u, 4u}) {
+    const std::vector<double> y = perturbed(full.initial_state(), 0.5, seed);
+    const double t = 0.77 * seed;
+    std::vector<double> dy(y.size());
+    full.rhs(t, y, dy);
+    const ModeAmplitudes f = full.amplitudes(t, y);
+    double dDelta = 0, scale = 0;
+    std::complex<double> bracket = 0;
+    double denom = 0;
+    for (int l = 2; l <= s.L; ++l)
+      for (int m = -l; m <= l; ++m) {
+        const std::size_t k = ModeAmplitudes::index(l, m);
+        const std::complex<double> fk(y[2 * k], y[2 * k + 1]), dfk(dy[2 * k], dy[2 * k + 1]);
+        dDelta += a_l(l) * 2 * std::real(std::conj(fk) * dfk);
+        scale += a_l(l) * 2 * std::abs(fk) * std::abs(dfk);
+        // g_{l,m}(t) = g_{l,m}(0) e^{i m t/2} (Eq. eom_g); S = C_{l,m} - Gamma3/C g (Eq. eom_sup).
+        const std::complex<double> g = init.g.at(l, m) * std::polar(1.0, 0.5 * m * t);
+        const std::complex<double> S = shear_drive(p.lambda, l, m) - Gamma3(p.lambda, l) / p.C * g;
+        bracket += a_l(l) * (Gamma1(p.lambda, l) / p.B * f.at(l, m) + Gamma3(p.lambda, l) / p.C * f.at(l, m) + S) *
+                   std::conj(f.at(l, m));
+        denom += Gamma2(p.lambda, l) * a_l(l) * std::norm(f.at(l, m));
+      }
+    // Cancellation of O(scale) terms: 1e-13 relative.
+    EXPECT_NEAR(dDelta, 0, 1e-13 * scale) << "seed " << seed;
+    const double sigma_paper = -p.B / denom * bracket.real();
+    const double sigma = full.sigma(t, y);
+    EXPECT_NEAR(sigma, sigma_paper, 1e-12 * std::abs(sigma)) << "seed " << seed;
+    max_imag = std::max(max_imag, std::abs(p.B / denom * bracket.imag()) / std::abs(sigma));
+  }
+  EXPECT_GT(max_imag, 1e-3) << "Eq. st without Re would be complex at these states";
+}
+
+TEST(ModalTension, KeepsExcessAreaConstant) {
+  const Scene s = generic_scene(8, false);
+  ModalModel modal(s.parameters, initial_state(s));
+  for (unsigned seed : {1u, 2u, 3u}) {
+    const std::vector<double> y = perturbed(modal.initial_state(), 0.3, seed);
+    std::vector<double> dy(y.size());
+    modal.rhs(1.1 * seed, y, dy);
+    // Delta_2 = a_2 (f20^2 + 2 |f21|^2 + 2 |f22|^2); Delta_l = exp(u_l).
+    const double a2 = 2;
+    double dDelta = 2 * a2 * (y[0] * dy[0] + 2 * (y[1] * dy[1] + y[2] * dy[2] + y[3] * dy[3] + y[4] * dy[4]));
+    double scale = std::abs(dDelta);
+    for (std::size_t j = 5; j < y.size(); ++j) {
+      dDelta += std::exp(y[j]) * dy[j];
+      scale += std::abs(std::exp(y[j]) * dy[j]);
+    }
+    EXPECT_NEAR(dDelta, 0, 1e-13 * scale) << "seed " << seed;
+  }
+}
+
 }  // namespace
 }  // namespace rbcstab
