@@ -24,7 +24,7 @@ struct ReportOptions {
   std::string python = "/usr/bin/python3";  // Debian's python3 with python3-matplotlib
   std::string script_dir;              // folder of rbcstab_report.py; empty: find_script_dir("")
   ShapeGridOptions shape{64, 128};     // the rendered / exported shape at T
-  ShapeGridOptions frame_shape{24, 48};  // coarser grid per animation frame (keeps animation.json small)
+  ShapeGridOptions frame_shape{32, 64};  // coarser grid per animation frame (keeps animation.json ~1 MB)
   int frames = 60;                     // animation frames (GIF), uniform in [T - frame_window, T]
   double frame_window = 0;             // 0: the whole run [0, T]
   bool reduced_companion = true;       // also run the reduced level (Fig. 2 r, Psi; Fig. 3 sigma_R)

@@ -117,6 +117,11 @@ def plot_excess_areas(trajectory_csv, out, size_px=(900, 600), title=None):
         ax.plot(data["t"], positive(data[key]), color=cols[k], ls=LINESTYLES[k % len(LINESTYLES)],
                 lw=2.0 if l == 2 else 1.5, label=rf"$\Delta_{{{l}}}$")
     ax.set_yscale("log")
+    # Decayed modes fall by hundreds of decades: keep the axis to 1e-4 below the smallest start.
+    start = [data[key][0] for _, key in modes if data[key] and data[key][0] > 0]
+    top = max([v for _, key in modes for v in data[key] if math.isfinite(v)] + [1e-300])
+    if start:
+        ax.set_ylim(max(min(start) * 1e-4, top * 1e-12), top * 3)
     ax.set_xlabel("$t$")
     ax.set_ylabel(r"$\Delta_l(t)$")
     ax.legend(ncol=2 if len(modes) > 5 else 1, loc="best")
@@ -201,24 +206,43 @@ def grid_from_rho(theta, phi, rho_flat):
     return X, Y, Z, R
 
 
-def draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim, axes_labels=True):
+def shaded_colors(X, Y, Z, R, norm, cmap):
+    """Colour by rho, lit by a soft Lambert term (so the colour stays readable against the colour bar)."""
     import numpy as np  # python3-numpy is a dependency of python3-matplotlib
 
+    P = np.stack([X, Y, Z], axis=-1)
+    dth = np.gradient(P, axis=0)
+    dph = np.gradient(P, axis=1)
+    n = np.cross(dth, dph)
+    norm_n = np.linalg.norm(n, axis=-1, keepdims=True)
+    n = np.where(norm_n > 0, n / np.where(norm_n > 0, norm_n, 1), P / np.maximum(np.linalg.norm(P, axis=-1, keepdims=True), 1e-300))
+    light = np.array([-0.4, -0.5, 0.77])
+    light = light / np.linalg.norm(light)
+    lam = np.clip((n * light).sum(axis=-1), 0, 1)
+    c = cmap(norm(R))
+    c[..., :3] *= (0.72 + 0.28 * lam)[..., None]
+    return c
+
+
+def draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim, axes_labels=True):
+    import numpy as np
+
     X, Y, Z, R = map(np.asarray, (X, Y, Z, R))
-    ax.plot_surface(X, Y, Z, facecolors=cmap(norm(R)), rstride=1, cstride=1, linewidth=0, antialiased=False,
-                    shade=True)
+    ax.plot_surface(X, Y, Z, facecolors=shaded_colors(X, Y, Z, R, norm, cmap), rstride=1, cstride=1, linewidth=0,
+                    antialiased=False, shade=False)
     m = float(np.nanmax(np.abs([X, Y, Z])))
     for set_lim in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
         set_lim(-m, m)
-    ax.set_box_aspect((1, 1, 1))
     ax.view_init(elev=elev, azim=azim)
     if axes_labels:
+        ax.set_box_aspect((1, 1, 1))
         ax.set_xlabel("$x$ (flow)")
         ax.set_ylabel("$y$ (gradient)")
         ax.set_zlabel("$z$ (vorticity)")
         ticks = [-1, 0, 1] if m > 1 else [-0.5, 0, 0.5]
         ax.set_xticks(ticks), ax.set_yticks(ticks), ax.set_zticks(ticks)
     else:
+        ax.set_box_aspect((1, 1, 1), zoom=1.45)
         ax.set_axis_off()
 
 
@@ -233,6 +257,7 @@ def plot_shape(shape_csv, out, size_px=(750, 750), title=None, elev=25.0, azim=-
     ax = fig.add_axes([0.0, 0.04, 0.84, 0.9], projection="3d")
     draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim)
     cax = fig.add_axes([0.86, 0.2, 0.03, 0.6])
+    cax.grid(False)
     sm = plt.cm.ScalarMappable(norm=norm, cmap=cmap)
     fig.colorbar(sm, cax=cax, label=r"$\rho$ (distance from the origin)")
     if title:
@@ -255,10 +280,10 @@ def plot_animation(animation_json, out_png, out_gif=None, size_px=(1500, 375), g
     w, h = size_px
     fig = plt.figure(figsize=(w / DPI, h / DPI), dpi=DPI)
     for k, idx in enumerate(picks):
-        ax = fig.add_axes([k / len(picks), 0.0, 1.0 / len(picks), 0.88], projection="3d")
+        ax = fig.add_axes([k / len(picks), 0.06, 1.0 / len(picks), 0.84], projection="3d")
         X, Y, Z, R = grid_from_rho(theta, phi, rho[idx])
         draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim, axes_labels=False)
-        ax.set_title(f"$t = {t[idx]:.4g}$", fontsize=11, y=0.98)
+        ax.set_title(f"$t = {t[idx]:.4g}$", fontsize=12, y=1.0)
     fig.text(0.5, 0.005, r"viewed from $+z$: flow $x$ to the right, gradient $y$ up; colour: $\rho$",
              ha="center", fontsize=9)
     drawn.append(save(fig, out_png, size_px))

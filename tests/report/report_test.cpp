@@ -1,0 +1,322 @@
+// End to end: a report for a small scene builds, its PNGs have the declared pixel sizes, its VTK
+// reads back, and the data behind each figure equals an independent run of the same scene.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <unistd.h>
+
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/io/files.hpp"
+#include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/report/report.hpp"
+
+namespace rbcstab {
+namespace {
+namespace fs = std::filesystem;
+
+// Width and height from a PNG's IHDR chunk (bytes 16..23, big endian), after checking the signature.
+std::pair<int, int> png_size(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char b[24] = {};
+  in.read(reinterpret_cast<char*>(b), 24);
+  if (!in) return {-1, -1};
+  const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+  for (int k = 0; k < 8; ++k)
+    if (b[k] != sig[k]) return {-2, -2};
+  auto be32 = [&](int o) { return int(b[o]) << 24 | int(b[o + 1]) << 16 | int(b[o + 2]) << 8 | int(b[o + 3]); };
+  return {be32(16), be32(20)};
+}
+
+std::vector<std::vector<double>> read_csv_rows(const fs::path& path, std::vector<std::string>* header = nullptr) {
+  std::istringstream in(read_file(path.string()));
+  std::string line;
+  std::getline(in, line);
+  if (header) {
+    std::stringstream hs(line);
+    std::string h;
+    while (std::getline(hs, h, ',')) header->push_back(h);
+  }
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::stringstream ls(line);
+    std::string cell;
+    std::vector<double> row;
+    while (std::getline(ls, cell, ',')) row.push_back(std::stod(cell));
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+SceneFile small_scene(double beta) {
+  SceneFile sf;
+  sf.scene.name = "small";
+  sf.scene.L = 4;
+  sf.scene.T = 6;
+  sf.scene.dt = 0.5;
+  sf.scene.beta = beta;
+  sf.scene.delta = 1e-3;
+  sf.options.tail_window = 2;
+  return sf;
+}
+
+ReportOptions small_options(const fs::path& out) {
+  ReportOptions o;
+  o.output = out.string();
+  o.shape = {12, 24};
+  o.frame_shape = {8, 16};
+  o.frames = 4;
+  return o;
+}
+
+fs::path fresh_dir(const std::string& name) {
+  // Per process: ctest runs each test in its own process, possibly in parallel.
+  const fs::path d = fs::path(::testing::TempDir()) / ("rbcstab_report_test_" + name + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+// Removes a test folder when the test ends.
+struct Cleanup {
+  fs::path path;
+  ~Cleanup() {
+    std::error_code ec;
+    fs::remove_all(path, ec);
+  }
+};
+
+bool has_leftovers(const fs::path& parent) {
+  for (const auto& e : fs::directory_iterator(parent))
+    if (e.path().filename().string().rfind(".", 0) == 0) return true;
+  return false;
+}
+
+// One report build shared by the checks below (ctest runs every TEST in its own process, so the
+// checks are one TEST to build the report once).
+struct Built {
+  fs::path parent_;
+  SceneFile scene_;
+  ReportResult result_;
+};
+
+void check_figures(const Built& b) {
+  const auto& parent_ = b.parent_;
+  const fs::path out = parent_ / "out";
+  const auto manifest = nlohmann::json::parse(read_file((out / "report.json").string()));
+  const auto drawn = nlohmann::json::parse(read_file((out / "figures.json").string()));
+  ASSERT_GE(manifest.at("figures").size(), 5u);
+  std::size_t checked = 0;
+  for (const auto& f : manifest.at("figures")) {
+    const fs::path png = out / f.at("png").get<std::string>();
+    ASSERT_TRUE(fs::exists(png)) << png;
+    EXPECT_GT(fs::file_size(png), 1000u) << png;  // a blank PNG of this size is still > 1 kB; see colour check
+    const auto [w, h] = png_size(png);
+    EXPECT_EQ(w, f.at("size_px")[0].get<int>()) << png;
+    EXPECT_EQ(h, f.at("size_px")[1].get<int>()) << png;
+    ++checked;
+  }
+  EXPECT_EQ(checked, 5u);
+  // The GIF exists (python3-pil is a dependency of python3-matplotlib in Debian) and is a GIF.
+  const std::string gif = read_file((out / "animation.gif").string());
+  EXPECT_EQ(gif.substr(0, 6), "GIF89a");
+  // Every drawn file is linked from index.html and README.md.
+  const std::string html = read_file((out / "index.html").string());
+  const std::string md = read_file((out / "README.md").string());
+  for (const auto& d : drawn) {
+    const std::string file = d.at("file");
+    if (file.ends_with(".png")) {
+      EXPECT_NE(html.find("src=\"" + file + "\""), std::string::npos) << file;
+      EXPECT_NE(md.find("](" + file + ")"), std::string::npos) << file;
+    }
+  }
+  EXPECT_FALSE(has_leftovers(parent_));
+}
+
+// The trajectory behind Figs. 2/3 equals an independent simulate() of the same scene (deterministic,
+// written with 17 digits: exact), and the reduced companion equals a reduced-level run.
+void check_trajectories(const Built& b) {
+  const auto& parent_ = b.parent_;
+  const auto& scene_ = b.scene_;
+  const SimulationResult again = simulate(scene_.scene, scene_.options);
+  std::vector<std::string> header;
+  const auto rows = read_csv_rows(parent_ / "out" / "trajectory.csv", &header);
+  ASSERT_EQ(rows.size(), again.trajectory.t.size());
+  ASSERT_EQ(header.size(), std::size_t(1 + 3 + 3));  // t, Delta_2..4, sigma, r, Psi
+  for (std::size_t k = 0; k < rows.size(); ++k) {
+    ASSERT_EQ(rows[k].size(), header.size());
+    EXPECT_EQ(rows[k][0], again.trajectory.t[k]);
+    for (std::size_t j = 0; j < 3; ++j) EXPECT_EQ(rows[k][1 + j], again.trajectory.Delta_l[k][j]);
+    EXPECT_EQ(rows[k][4], again.trajectory.sigma[k]);
+    EXPECT_EQ(rows[k][5], again.trajectory.r[k]);
+    EXPECT_EQ(rows[k][6], again.trajectory.Psi[k]);
+  }
+  Scene reduced = scene_.scene;
+  reduced.model = ModelLevel::reduced;
+  reduced.L = 2;
+  const SimulationResult red = simulate(reduced, scene_.options);
+  const auto rrows = read_csv_rows(parent_ / "out" / "reduced_trajectory.csv");
+  ASSERT_EQ(rrows.size(), red.trajectory.t.size());
+  for (std::size_t k = 0; k < rrows.size(); ++k) {
+    ASSERT_EQ(rrows[k].size(), 5u);  // t, Delta_2, sigma, r, Psi
+    EXPECT_EQ(rrows[k][2], red.trajectory.sigma[k]);
+    EXPECT_EQ(rrows[k][3], red.trajectory.r[k]);
+    EXPECT_EQ(rrows[k][4], red.trajectory.Psi[k]);
+  }
+  // Thresholds behind the sigma_l^c lines.
+  const auto th = nlohmann::json::parse(read_file((parent_ / "out" / "thresholds.json").string()));
+  const double alpha = scene_.scene.parameters.alpha();
+  for (int l = 2; l <= 4; ++l)
+    EXPECT_EQ(th.at("sigma_c").at(std::to_string(l)).get<double>(), sigma_critical(l, alpha));
+  EXPECT_NEAR(th.at("sigma_star").get<double>(), -4 * std::sqrt(alpha), 1e-14 * std::sqrt(alpha));
+}
+
+// The shape files: VTK read back has the mesh's counts, and every point sits at the radius
+// rebuilt from an independent run's final state (same amplitudes, evaluated pointwise).
+void check_shape_files(const Built& b) {
+  const auto& parent_ = b.parent_;
+  const auto& scene_ = b.scene_;
+  const SimulationResult again = simulate(scene_.scene, scene_.options);
+  const InitialState init = initial_state(scene_.scene);
+  const auto system = make_system(scene_.scene.parameters, init, again.level.level);
+  const ModeAmplitudes f = system->amplitudes(again.t_reached, again.y_final);
+
+  std::istringstream in(read_file((parent_ / "out" / "shape_T.vtk").string()));
+  std::string line, word, type;
+  for (int k = 0; k < 4; ++k) std::getline(in, line);
+  EXPECT_EQ(line, "DATASET POLYDATA");
+  std::size_t n = 0, m = 0, size = 0;
+  in >> word >> n >> type;
+  ASSERT_EQ(word, "POINTS");
+  EXPECT_EQ(n, 2u + 11u * 24u);  // poles + (n_theta - 1) rings of n_phi points
+  std::vector<std::array<double, 3>> pts(n);
+  for (auto& p : pts) in >> p[0] >> p[1] >> p[2];
+  in >> word >> m >> size;
+  ASSERT_EQ(word, "POLYGONS");
+  EXPECT_EQ(m, 2u * 24u * 11u);
+  EXPECT_EQ(size, 4 * m);
+  for (const auto& p : pts) {
+    const double rho = std::hypot(p[0], p[1], p[2]);
+    const double theta = std::acos(std::clamp(p[2] / rho, -1.0, 1.0)), phi = std::atan2(p[1], p[0]);
+    // Same amplitudes to the last bit; the angles recovered from Cartesian points cost ~1e-15.
+    EXPECT_NEAR(rho, shape_radius(f, theta, phi), 1e-12);
+  }
+  // The grid CSV behind the shape figure holds the same radii.
+  const auto rows = read_csv_rows(parent_ / "out" / "shape_T.csv");
+  ASSERT_EQ(rows.size(), 13u * 25u);
+  for (const auto& r : rows) EXPECT_NEAR(r[4], shape_radius(f, r[2], r[3]), 1e-14);
+  // The animation's last frame is the shape at T from a separate integration on the frame grid:
+  // the two runs differ by the integrator's tolerance (rtol 1e-8) and the float storage (1e-7).
+  const auto anim = nlohmann::json::parse(read_file((parent_ / "out" / "animation.json").string()));
+  const auto& last = anim.at("rho").back();
+  const auto& th = anim.at("theta");
+  const auto& ph = anim.at("phi");
+  ASSERT_EQ(last.size(), th.size() * ph.size());
+  EXPECT_EQ(anim.at("t").back().get<double>(), scene_.scene.T);
+  for (std::size_t i = 0; i < th.size(); ++i)
+    for (std::size_t j = 0; j < ph.size(); ++j)
+      EXPECT_NEAR(last[i * ph.size() + j].get<double>(), shape_radius(f, th[i].get<double>(), ph[j].get<double>()), 1e-6);
+}
+
+TEST(ReportEndToEnd, SmallInPlaneSceneBuildsAndItsDataReproduceTheFigures) {
+  Built b;
+  b.parent_ = fresh_dir("e2e");
+  const Cleanup cleanup{b.parent_};
+  b.scene_ = small_scene(1.5707963267948966);
+  b.result_ = build_report(b.scene_, small_options(b.parent_ / "out"));
+  EXPECT_EQ(b.result_.run.status, IntegrationStatus::success);
+  check_figures(b);
+  check_trajectories(b);
+  check_shape_files(b);
+}
+
+TEST(ReportFailures, MissingPythonFailsCleanly) {
+  const fs::path parent = fresh_dir("nopython");
+  const Cleanup cleanup{parent};
+  ReportOptions o = small_options(parent / "out");
+  o.python = (parent / "no-such-python3").string();
+  EXPECT_THROW(build_report(small_scene(0.001), o), ReportError);
+  o.python = "/bin/false";  // runs, but cannot import matplotlib
+  EXPECT_THROW(build_report(small_scene(0.001), o), ReportError);
+  EXPECT_FALSE(fs::exists(parent / "out"));
+  EXPECT_FALSE(has_leftovers(parent));
+}
+
+TEST(ReportFailures, FailingPlotScriptLeavesNothing) {
+  const fs::path parent = fresh_dir("badscript");
+  const Cleanup cleanup{parent};
+  const fs::path scripts = parent / "scripts";
+  fs::create_directories(scripts);
+  // Writes a file into the report folder, then fails: the half-written folder must vanish.
+  write_file_atomic((scripts / "rbcstab_report.py").string(),
+                    "import sys, os\nopen(os.path.join(sys.argv[2], 'half.png'), 'w').write('x')\nsys.exit(7)\n");
+  ReportOptions o = small_options(parent / "out");
+  o.script_dir = scripts.string();
+  try {
+    build_report(small_scene(0.001), o);
+    ADD_FAILURE() << "expected ReportError";
+  } catch (const ReportError& e) {
+    EXPECT_NE(std::string(e.what()).find("exit 7"), std::string::npos) << e.what();
+  }
+  EXPECT_FALSE(fs::exists(parent / "out"));
+  EXPECT_FALSE(has_leftovers(parent));
+}
+
+TEST(ReportFailures, ExistingOutputNeedsOverwriteAndBadOptionsAreNamed) {
+  const fs::path parent = fresh_dir("exists");
+  const Cleanup cleanup{parent};
+  fs::create_directories(parent / "out");
+  ReportOptions o = small_options(parent / "out");
+  try {
+    build_report(small_scene(0.001), o);
+    ADD_FAILURE() << "expected InvalidArgument";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "output");
+  }
+  o.frames = 1;
+  try {
+    build_report(small_scene(0.001), o);
+    ADD_FAILURE() << "expected InvalidArgument";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "frames");
+  }
+}
+
+// The hook figures (phase diagram, Fig. 6e, bifurcation) drawn from the script's synthetic data.
+TEST(ReportHooks, SelftestDrawsHookFiguresOfTheDeclaredSize) {
+  const fs::path dir = fresh_dir("hooks");
+  const Cleanup cleanup{dir};
+  const std::string script = find_script_dir("") + "/rbcstab_report.py";
+  const std::string cmd = "/usr/bin/python3 '" + script + "' selftest '" + dir.string() + "' > '" +
+                          (dir / "log.txt").string() + "' 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << read_file((dir / "log.txt").string());
+  const std::map<std::string, std::pair<int, int>> expected{
+      {"fig_phase_diagram.png", {900, 750}}, {"fig_delta2_theory.png", {750, 750}}, {"fig_bifurcation.png", {900, 675}}};
+  for (const auto& [file, size] : expected) EXPECT_EQ(png_size(dir / file), size) << file;
+}
+
+#ifdef RBCSTAB_CLI
+// The CLI's exit codes: 3 when python/matplotlib is missing (nothing written), 2 for an existing folder.
+TEST(ReportCli, ExitCodes) {
+  const fs::path parent = fresh_dir("cli");
+  const Cleanup cleanup{parent};
+  const std::string base = std::string(RBCSTAB_CLI) + " report --T 2 --L 3 --frames 2 --shape-resolution 6 ";
+  const std::string quiet = " > /dev/null 2>&1";
+  int rc = std::system((base + "--python /nonexistent/python3 --output '" + (parent / "a").string() + "'" + quiet).c_str());
+  EXPECT_EQ(WEXITSTATUS(rc), 3);
+  EXPECT_FALSE(fs::exists(parent / "a"));
+  fs::create_directories(parent / "b");
+  rc = std::system((base + "--output '" + (parent / "b").string() + "'" + quiet).c_str());
+  EXPECT_EQ(WEXITSTATUS(rc), 2);
+  rc = std::system((base + "--frames 1 --output '" + (parent / "c").string() + "'" + quiet).c_str());
+  EXPECT_EQ(WEXITSTATUS(rc), 2);
+  EXPECT_FALSE(has_leftovers(parent));
+}
+#endif
+
+}  // namespace
+}  // namespace rbcstab
