@@ -1,0 +1,64 @@
+// rbcstab merge: joins the shard outputs of one diagram (rbcstab diagram --shard k/n) into the
+// CSV and JSON a single run would have written.
+#include <iostream>
+#include <memory>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/io/files.hpp"
+#include "rbcstab/sweep/diagram_output.hpp"
+
+namespace rbcstab::cli {
+
+namespace {
+struct MergeOptions {
+  std::vector<std::string> inputs;
+  std::string out = "diagram";
+  bool allow_incomplete = false;
+};
+
+int run(const MergeOptions& o) {
+  std::vector<nlohmann::json> docs;
+  for (const auto& path : o.inputs) {
+    try {
+      docs.push_back(nlohmann::json::parse(read_file(path)));
+    } catch (const nlohmann::json::exception& e) {
+      throw InvalidArgument("merge", "'" + path + "' is not JSON: " + e.what());
+    }
+  }
+  const MergeResult m = merge_diagrams(docs);
+  if (!m.missing.empty()) {
+    std::cerr << "rbcstab: merge: " << m.missing.size() << " of " << m.spec.size()
+              << " points are missing (first: index " << m.missing.front() << ")\n";
+    if (!o.allow_incomplete) return kRunFailed;
+  }
+  const DiagramOutputOptions oo{m.seconds_present};
+  try {
+    write_file_atomic(o.out + ".csv", diagram_csv(m.spec, m.points, oo));
+    write_file_atomic(o.out + ".json", diagram_json(m.header, m.spec, m.points, {}, oo).dump(1) + "\n");
+  } catch (const std::runtime_error& e) {
+    std::cerr << "rbcstab: error: " << e.what() << "\n";
+    return kOutputError;
+  }
+  std::cerr << "rbcstab: merged " << docs.size() << " files, " << m.points.size() << " points into " << o.out
+            << ".csv and " << o.out << ".json\n";
+  return m.missing.empty() ? kOk : kRunFailed;
+}
+}  // namespace
+
+static Runner add_merge(CLI::App& app) {
+  auto o = std::make_shared<MergeOptions>();
+  app.add_option("inputs", o->inputs, "diagram JSON files of the shards (PREFIX.shardKofN.json)")
+      ->required()
+      ->check(CLI::ExistingFile);
+  app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")->capture_default_str();
+  app.add_flag("--allow-incomplete", o->allow_incomplete, "write the merge even if points are missing (exit 1)");
+  return [o] { return run(*o); };
+}
+
+namespace {
+const RegisterCommand kRegister{"merge", "Merge the shard outputs of one diagram", add_merge, 41};
+}  // namespace
+
+}  // namespace rbcstab::cli
