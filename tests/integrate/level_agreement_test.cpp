@@ -113,5 +113,34 @@ TEST(ModalAmplitudes, ReconstructedAmplitudesMatchFullModel) {
   }
 }
 
+
+TEST(SigmaFollowsReduced, WhilePerturbationsAreSmall) {
+  // Sec. IV / Fig. 3(d): sigma(t) first follows sigma_R(t) of the reduced system. With beta = 0 the
+  // reduced system is the modal one without the l >= 3 modes, so the difference is caused by their
+  // area eps(t) = sum_{l>=3} Delta_l(t) / Delta only: sigma = -N/D with N, D perturbed by relative
+  // O(eps (Pi_l + 4 alpha/Pi_l)/|sigma|) <= O(10 eps) here; we allow 100 eps |sigma| + 1e3 rtol |sigma|.
+  Scene s = fig3_scene(0.0);
+  s.delta = 1e-10;
+  s.T = 6;
+  s.dt = 0.25;
+  const SimulationResult modal = run(s, ModelLevel::modal, kRtol);
+  Scene r2 = s;
+  r2.L = 2;
+  const SimulationResult red = run(r2, ModelLevel::reduced, kRtol);
+  ASSERT_EQ(modal.status, IntegrationStatus::success);
+  ASSERT_EQ(red.status, IntegrationStatus::success);
+  ASSERT_EQ(modal.trajectory.t.size(), red.trajectory.t.size());
+  double worst = 0;
+  for (std::size_t k = 0; k < modal.trajectory.t.size(); ++k) {
+    double eps = 0;
+    for (std::size_t j = 1; j < modal.trajectory.Delta_l[k].size(); ++j) eps += modal.trajectory.Delta_l[k][j];
+    eps /= s.parameters.Delta;
+    const double sm = modal.trajectory.sigma[k], sr = red.trajectory.sigma[k];
+    worst = std::max(worst, std::abs(sm - sr) / (eps * std::abs(sr)));
+    EXPECT_NEAR(sm, sr, (100 * eps + kGrowth * kRtol) * std::abs(sr)) << "t = " << modal.trajectory.t[k];
+  }
+  std::cout << "max |sigma - sigma_R| / (eps |sigma_R|) = " << worst << "\n";
+}
+
 }  // namespace
 }  // namespace rbcstab

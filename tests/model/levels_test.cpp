@@ -280,5 +280,21 @@ TEST(ModalTension, KeepsExcessAreaConstant) {
   }
 }
 
+
+TEST(InitialTension, OutOfPlaneStartMatchesSectionIV) {
+  // Sec. IV: at r = r0 = 0 (beta = 0), sigma_R^init = -6 + (2/3) alpha (sqrt(Delta0/Delta) - 1), exact there.
+  for (double Delta : {0.01, 0.3, 1.0}) {
+    Scene s = fig2_scene(Delta, 0.0);
+    const Parameters& p = s.parameters;
+    const double expected = -6 + 2.0 / 3 * p.alpha() * (std::sqrt(p.Delta0 / p.Delta) - 1);
+    for (ModelLevel level : {ModelLevel::full, ModelLevel::modal, ModelLevel::reduced}) {
+      const auto sys = make_system(p, initial_state(s), level);
+      // A few roundings of O(alpha) terms: 1e-13 relative.
+      EXPECT_NEAR(sys->observe(0, sys->initial_state()).sigma, expected, 1e-13 * std::abs(expected))
+          << to_string(level) << ", Delta = " << Delta;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace rbcstab
