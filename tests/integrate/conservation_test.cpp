@@ -31,6 +31,8 @@ Scene scene_for(ModelLevel level) {
   return s;
 }
 
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
 class Conservation : public ::testing::TestWithParam<Case> {};
 
 TEST_P(Conservation, DriftIsSmallAgainstRtol) {

@@ -30,6 +30,8 @@ Scene modified(Scene s, void (*f)(Scene&)) {
   return s;
 }
 
+void PrintTo(const Extreme& e, std::ostream* os) { *os << e.name; }
+
 class Extremes : public ::testing::TestWithParam<Extreme> {};
 
 TEST_P(Extremes, RunsToTheEndWithFiniteOutput) {

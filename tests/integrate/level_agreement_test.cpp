@@ -55,6 +55,7 @@ INSTANTIATE_TEST_SUITE_P(OutOfPlaneAndInPlane, FullVsModal, ::testing::Values(0.
 struct Fig2Case {
   double Delta, beta;
 };
+void PrintTo(const Fig2Case& c, std::ostream* os) { *os << "{Delta " << c.Delta << ", beta " << c.beta << "}"; }
 class ModalVsReduced : public ::testing::TestWithParam<Fig2Case> {};
 
 TEST_P(ModalVsReduced, Fig2TrajectoriesAgree) {

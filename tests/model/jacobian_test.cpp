@@ -30,6 +30,8 @@ std::unique_ptr<System> make(const Case& c) {
   return make_system(s.parameters, initial_state(s), c.level);
 }
 
+void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+
 class JacobianTest : public ::testing::TestWithParam<Case> {};
 
 Eigen::MatrixXd dense(const StructuredJacobian& J) {

@@ -1,12 +1,22 @@
 #pragma once
 // Scenes and generic states shared by the model and integration tests.
 #include <cmath>
+#include <ostream>
 #include <numbers>
 #include <random>
 #include <vector>
 
 #include "rbcstab/model/levels.hpp"
 #include "rbcstab/model/scene.hpp"
+
+namespace rbcstab {
+// Readable names of parameterised cases in gtest output.
+inline void PrintTo(const Scene& s, std::ostream* os) {
+  *os << "{lambda " << s.parameters.lambda << ", Delta " << s.parameters.Delta << ", Delta0 " << s.parameters.Delta0
+      << ", B " << s.parameters.B << ", C " << s.parameters.C << ", beta " << s.beta << ", delta " << s.delta << ", L "
+      << s.L << ", T " << s.T << "}";
+}
+}  // namespace rbcstab
 
 namespace rbcstab::testing {
 
