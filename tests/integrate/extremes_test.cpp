@@ -117,5 +117,31 @@ TEST(Extremes, ReducedWithInfiniteSTendsToTankTreading) {
   }
 }
 
+
+TEST(ReducedEquilibrium, OutOfPlaneLongTimeStateMatchesClosedForm) {
+  // design/model.md section 4: for r0 = 0 the reduced system is autonomous and its equilibrium has
+  // u = r^2 the root in (0, 1) of Lambda^2 u^2 - (1 + Lambda^2 + S^-2) u + 1 = 0, cos Psi = Lambda r.
+  // Direct integration from beta = 0 must end there (convergence is exponential: by T = 300 the
+  // distance is far below the 1e-7 we allow; the integration error at rtol 1e-11 is smaller still).
+  struct P {
+    double Delta, C;
+  };
+  // (Lambda, S) ~ (0.19, 2), (1.9, 2), (0.7, 20), (1.9, 5): cases design/model.md lists as checked.
+  for (const P q : {P{0.01, 0.04}, P{1.0, 0.04}, P{0.1368, 0.412}, P{1.0, 0.1}}) {
+    Scene s = fig2_scene(q.Delta, 0.0);
+    s.parameters.C = q.C;
+    s.T = 300;
+    const double L = s.parameters.Lambda(), S = s.parameters.S();
+    const double b = 1 + L * L + 1 / (S * S);
+    const double u = 2 / (b + std::sqrt(b * b - 4 * L * L));  // the smaller root, written without cancellation
+    ASSERT_GT(u, 0);
+    ASSERT_LT(u, 1);
+    const SimulationResult r = run(s, ModelLevel::reduced, 1e-11);
+    ASSERT_EQ(r.status, IntegrationStatus::success) << r.reason;
+    EXPECT_NEAR(r.r_final, std::sqrt(u), 1e-7) << "Lambda = " << L << ", S = " << S;
+    EXPECT_NEAR(std::cos(r.Psi_final), L * std::sqrt(u), 1e-7) << "Lambda = " << L << ", S = " << S;
+  }
+}
+
 }  // namespace
 }  // namespace rbcstab
