@@ -344,6 +344,10 @@ class Engine {
     if (a.t[n_] * sign < 0) a.t = -a.t;
     double arclength = 0;
     br.points.push_back(to_branch_point(a, 0));
+    if ((sign > 0 && X0[n_] >= o_.p_max) || (sign < 0 && X0[n_] <= o_.p_min)) {
+      br.message = "started on the parameter bound";
+      return br;
+    }
     double ds = o_.initial_step;
     std::string last_domain_error;
     while (br.points.size() < o_.max_points) {

@@ -5,6 +5,8 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "rbcstab/core/error.hpp"
+
 namespace rbcstab {
 
 namespace {
@@ -30,10 +32,18 @@ void ContinuationProblem::jacobian(const Eigen::VectorXd& x, double p, Eigen::Ma
 void ContinuationProblem::parameter_derivative(const Eigen::VectorXd& x, double p, Eigen::VectorXd& Fp) const {
   const Eigen::Index n = dimension();
   const double h = fd_step(p);
-  Eigen::VectorXd Fm(n);
+  Eigen::VectorXd Fm(n), F0(n), F2(n);
   Fp.resize(n);
   residual(x, p + h, Fp);
-  residual(x, p - h, Fm);
+  try {
+    residual(x, p - h, Fm);
+  } catch (const InvalidArgument&) {
+    // p sits on the edge of the problem's domain (e.g. lambda = 0): second-order one-sided difference.
+    residual(x, p, F0);
+    residual(x, p + 2 * h, F2);
+    Fp = (4 * Fp - 3 * F0 - F2) / (2 * h);
+    return;
+  }
   Fp = (Fp - Fm) / (2 * h);
 }
 

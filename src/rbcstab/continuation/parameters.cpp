@@ -1,0 +1,64 @@
+#include "rbcstab/continuation/parameters.hpp"
+
+#include <cmath>
+
+#include "rbcstab/core/error.hpp"
+
+namespace rbcstab {
+
+const std::vector<std::string>& continuation_parameter_names() {
+  static const std::vector<std::string> names{"lambda", "Delta", "Delta0", "B", "C", "Lambda", "S"};
+  return names;
+}
+
+std::string to_string(ContinuationParameter q) {
+  return continuation_parameter_names()[static_cast<std::size_t>(q)];
+}
+
+ContinuationParameter continuation_parameter_from_string(const std::string& name) {
+  const auto& names = continuation_parameter_names();
+  for (std::size_t k = 0; k < names.size(); ++k)
+    if (names[k] == name) return static_cast<ContinuationParameter>(k);
+  throw InvalidArgument("parameter", "parameter = '" + name +
+                                         "' is not a continuation parameter: must be one of lambda, Delta, "
+                                         "Delta0, B, C, Lambda, S");
+}
+
+double get_parameter(const Parameters& p, ContinuationParameter q) {
+  switch (q) {
+    case ContinuationParameter::lambda: return p.lambda;
+    case ContinuationParameter::Delta: return p.Delta;
+    case ContinuationParameter::Delta0: return p.Delta0;
+    case ContinuationParameter::B: return p.B;
+    case ContinuationParameter::C: return p.C;
+    case ContinuationParameter::Lambda: return p.Lambda();
+    case ContinuationParameter::S: return p.S();
+  }
+  return 0;
+}
+
+Parameters with_parameter(Parameters p, ContinuationParameter q, double value) {
+  require_finite(to_string(q), value);
+  switch (q) {
+    case ContinuationParameter::lambda: p.lambda = value; break;
+    case ContinuationParameter::Delta: p.Delta = value; break;
+    case ContinuationParameter::Delta0: p.Delta0 = value; break;
+    case ContinuationParameter::B: p.B = value; break;
+    case ContinuationParameter::C: p.C = value; break;
+    case ContinuationParameter::Lambda:
+      require(value > 0, "Lambda", value, "a number > 0");
+      p.Delta *= (value / p.Lambda()) * (value / p.Lambda());
+      break;
+    case ContinuationParameter::S: {
+      const double S = p.S();
+      require(std::isfinite(S), "S", value, "continuable only from a finite S (Delta0 > 0 and C finite)");
+      require(value > 0, "S", value, "a number > 0");
+      p.C *= value / S;
+      break;
+    }
+  }
+  p.validate();
+  return p;
+}
+
+}  // namespace rbcstab

@@ -1,0 +1,23 @@
+#pragma once
+// The physical parameters a branch can be continued in, by the paper's symbols: the five material
+// and shape numbers, and the composite Lambda, S of the reduced system (Eq. Lambda_S).
+#include <string>
+#include <vector>
+
+#include "rbcstab/model/parameters.hpp"
+
+namespace rbcstab {
+
+enum class ContinuationParameter { lambda, Delta, Delta0, B, C, Lambda, S };
+std::string to_string(ContinuationParameter q);
+// "lambda", "Delta", "Delta0", "B", "C", "Lambda", "S"; throws InvalidArgument("parameter", ...).
+ContinuationParameter continuation_parameter_from_string(const std::string& name);
+const std::vector<std::string>& continuation_parameter_names();
+
+double get_parameter(const Parameters& p, ContinuationParameter q);
+// p with q set to value, validated (throws InvalidArgument naming q outside its domain).
+// Lambda is moved through Delta (Lambda ~ sqrt(Delta) at fixed lambda, S unchanged) and S through C
+// (S ~ C at fixed Delta0, Lambda unchanged), so each composite moves alone.
+Parameters with_parameter(Parameters p, ContinuationParameter q, double value);
+
+}  // namespace rbcstab
