@@ -3,15 +3,67 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <sstream>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "rbcstab/analysis/post_instability.hpp"
+#include "rbcstab/analysis/predictors.hpp"
+#include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
 
 namespace {
+std::string show(const Quantity& q) {
+  std::ostringstream s;
+  s << std::setprecision(6);
+  if (q.valid())
+    s << q.value;
+  else
+    s << "n/a (" << q.reason << ")";
+  return s.str();
+}
+
+std::string modes(const std::vector<int>& m) {
+  if (m.empty()) return "none";
+  std::string s;
+  for (std::size_t i = 0; i < m.size(); ++i) s += (i ? ", " : "") + std::to_string(m[i]);
+  return s;
+}
+
+// The analysis of issue 3: regime, thresholds, the three predictors and Delta~2 predicted vs simulated.
+void print_analysis(std::ostream& out, const Scene& s, const SimulationResult& r, double tail_window) {
+  const Parameters& p = s.parameters;
+  const double alpha = p.alpha();
+  const ScenePrediction pr = predict(s, &r);
+  out << "\nAnalysis (docs/theory.md)\n";
+  out << "Regime       " << to_string(pr.regime.regime) << " -- " << pr.regime.reason << " (reduced dynamics)\n";
+  out << "Thresholds   sigma_* = " << sigma_star(alpha) << ", l_* = " << l_star(alpha)
+      << (l_star_criterion(alpha) ? " (>= 2.5: an integer mode l >= 3 can be excited)" : " (< 2.5: no l >= 3 band)")
+      << ", alpha_*^init = " << show(alpha_init(p)) << "\n";
+  if (s.L >= 3) out << "             surviving integer mode (largest sigma_l^c) l_s = " << surviving_mode(alpha, s.L) << "\n";
+  out << "Predictors   (a) asymptotic     <sigma_R> = " << show(pr.sigma_R_asymptotic) << " ("
+      << pr.asymptotic_source << "): unstable " << modes(pr.asymptotic.unstable) << ", l_Delta = " << pr.asymptotic.l_Delta
+      << "\n";
+  out << "             (b) finite horizon <sigma_R>_T = " << pr.horizon.mean_sigma_R << " over [0, " << pr.horizon.T
+      << "]: unstable " << modes(pr.finite_horizon.unstable) << ", l_Delta = " << pr.finite_horizon.l_Delta
+      << " (linear growth exp(2 G_l))\n";
+  out << "             (c) simulation     unstable " << modes(pr.simulation.unstable) << ", l_Delta = " << pr.simulation.l_Delta
+      << "\n";
+  if (s.L >= 3) {
+    const PostInstability post = post_instability(p, s.L, 0.0);
+    out << "Delta~2      predicted: continuous l_* " << show(post.continuous.Delta2_tilde) << ", integer l_s = "
+        << post.surviving_mode << " " << show(post.integer_mode.Delta2_tilde) << "\n";
+    if (r.l_Delta >= 3 && r.status == IntegrationStatus::success)
+      out << "             simulated Delta-bar_2 = " << r.Delta_tail_mean[0] << " (tail mean over the last " << tail_window
+          << ")\n";
+    else
+      out << "             simulated: no post-instability state (l_Delta = " << r.l_Delta << ")\n";
+  }
+}
+
 int run(const SceneOptions& so) {
   const SceneFile sf = so.resolve();
   const Scene& s = sf.scene;
@@ -47,6 +99,7 @@ int run(const SceneOptions& so) {
       << "\n";
   out << "r(T) = " << r.r_final << ", Psi(T) = " << r.Psi_final << "\n";
   out << "Excess-area drift max_t |Delta(t) - Delta(0)| = " << r.excess_area_drift << "\n";
+  print_analysis(out, s, r, sf.options.tail_window);
   out << "Cost: " << r.counters.steps << " steps (" << r.counters.failed_steps << " rejected), "
       << r.counters.rhs_evaluations << " RHS and " << r.counters.jacobian_evaluations << " Jacobian evaluations, "
       << r.seconds << " s with " << to_string(sf.options.integrator.stepper) << " at rtol " << sf.options.integrator.rtol
