@@ -69,7 +69,8 @@ static Runner add_report(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--frames", r.frames, "animation frames, integer in [2, 2000]")->capture_default_str();
   app.add_option("--frame-window", r.frame_window,
-                 "animate the last W time units [T - W, T], >= 0; 0 = the whole run [0, T]")
+                 "animate the last W time units [T - W, T], >= 0; 0 = auto: one period of r(t) at the end if the run "
+                 "oscillates (swinging, tumbling), else the whole run")
       ->capture_default_str();
   app.add_option("--shape-resolution", o->n_theta,
                  "polar grid points n_theta of the exported and rendered shape (n_phi = 2 n_theta), in [2, 4096]")

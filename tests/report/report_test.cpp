@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <numbers>
 #include <sstream>
 #include <unistd.h>
 
@@ -232,6 +233,22 @@ TEST(ReportEndToEnd, SmallInPlaneSceneBuildsAndItsDataReproduceTheFigures) {
   check_figures(b);
   check_trajectories(b);
   check_shape_files(b);
+}
+
+// The animation window: period of a sampled oscillation, none for a steady or monotonic signal.
+TEST(OscillationPeriod, FindsThePeriodOfASampledSignal) {
+  std::vector<double> t, swing, steady, ramp;
+  for (int k = 0; k <= 2000; ++k) {
+    t.push_back(0.05 * k);
+    swing.push_back(0.9 + 0.05 * std::sin(2 * std::numbers::pi * t.back() / 6.3) + 0.001 * std::sin(7.0 * t.back()));
+    steady.push_back(0.5 + 0.3 * std::exp(-t.back()));
+    ramp.push_back(-t.back());
+  }
+  // Maxima located to one sample (0.05), averaged over ~8 periods: error < 0.05 / 7.
+  EXPECT_NEAR(detail::oscillation_period(t, swing), 6.3, 0.01);
+  EXPECT_EQ(detail::oscillation_period(t, steady), 0);
+  EXPECT_EQ(detail::oscillation_period(t, ramp), 0);
+  EXPECT_EQ(detail::oscillation_period({0, 1}, {0, 1}), 0);
 }
 
 TEST(ReportFailures, MissingPythonFailsCleanly) {

@@ -112,6 +112,28 @@ Scene reduced_scene(const Scene& s) {
   return r;
 }
 
+}  // namespace
+
+namespace detail {
+double oscillation_period(const std::vector<double>& t, const std::vector<double>& x) {
+  const std::size_t n = t.size();
+  if (n < 5 || x.size() != n) return 0;
+  double lo = x[n / 2], hi = lo;
+  for (std::size_t k = n / 2; k < n; ++k) {
+    lo = std::min(lo, x[k]);
+    hi = std::max(hi, x[k]);
+  }
+  if (!(hi - lo > 1e-6 * std::max(1.0, std::abs(hi)))) return 0;  // flat: steady state
+  // Interior maxima in the second half that reach the upper third of the swing (no ripples).
+  std::vector<double> peaks;
+  for (std::size_t k = std::max<std::size_t>(1, n / 2); k + 1 < n; ++k)
+    if (x[k] > x[k - 1] && x[k] >= x[k + 1] && x[k] > lo + (hi - lo) * 2 / 3) peaks.push_back(t[k]);
+  if (peaks.size() < 3) return 0;
+  return (peaks.back() - peaks.front()) / double(peaks.size() - 1);
+}
+}  // namespace detail
+
+namespace {
 struct Frames {
   std::vector<double> t;
   std::vector<ShapeGrid> grids;
@@ -119,12 +141,12 @@ struct Frames {
 };
 
 // Shapes along the run: the same level and initial state simulate() uses, sampled at the frames.
-Frames shape_frames(const SceneFile& sf, const ReportOptions& o) {
+Frames shape_frames(const SceneFile& sf, const ReportOptions& o, double window) {
   const Scene& s = sf.scene;
   const InitialState init = initial_state(s);
   const LevelChoice level = choose_level(s, init);
   const auto system = make_system(s.parameters, init, level.level);
-  const double t0 = o.frame_window > 0 ? std::max(0.0, s.T - o.frame_window) : 0.0;
+  const double t0 = std::max(0.0, s.T - window);
   std::vector<double> y0 = system->initial_state();
   Frames f;
   if (t0 > 0) {  // advance to the window's start without sampling
@@ -196,7 +218,7 @@ void ReportOptions::validate() const {
   shape.validate();
   frame_shape.validate();
   require(frames >= 2 && frames <= 2000, "frames", frames, "an integer in [2, 2000]");
-  require(std::isfinite(frame_window) && frame_window >= 0, "frame_window", frame_window, "finite and >= 0 (0: whole run)");
+  require(std::isfinite(frame_window) && frame_window >= 0, "frame_window", frame_window, "finite and >= 0 (0: auto)");
   if (python.empty()) throw InvalidArgument("python", "python: an interpreter path is required");
 }
 
@@ -251,13 +273,21 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
   ReportResult res;
   res.run = simulate(sf.scene, sf.options);
   res.warnings = res.run.warnings;
-  if (o.reduced_companion) {
+  // The companion adds nothing when the scene itself runs at the reduced level.
+  if (o.reduced_companion && res.run.level.level != ModelLevel::reduced) {
     SceneFile rsf = sf;
     rsf.scene = reduced_scene(sf.scene);
     res.reduced = simulate(rsf.scene, rsf.options);
     res.has_reduced = true;
   }
-  const Frames frames = shape_frames(sf, o);
+  // Animate one period of r(t) at the end when the run oscillates (swinging, tumbling: the GIF then
+  // loops seamlessly and the strip shows one cycle), else the whole run.
+  double window = o.frame_window;
+  if (window == 0) {
+    const double period = detail::oscillation_period(res.run.trajectory.t, res.run.trajectory.r);
+    window = period > 0 ? std::min(sf.scene.T, period) : sf.scene.T;
+  }
+  const Frames frames = shape_frames(sf, o, window);
   {
     const InitialState init = initial_state(sf.scene);
     const auto system = make_system(sf.scene.parameters, init, res.run.level.level);
@@ -304,8 +334,10 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     figs.push_back(figure("reduced_dynamics", "fig_reduced_r_Psi.png", 1200, 450,
                           res.has_reduced ? std::vector<std::string>{"reduced_trajectory.csv", "trajectory.csv"}
                                           : std::vector<std::string>{"trajectory.csv"},
-                          "Fig. 2-type: ellipsoidal amplitude r(t) and angle Psi(t), reduced system (l = 2 only) "
-                          "and the l = 2 block of the full run"));
+                          res.has_reduced ? "Fig. 2-type: ellipsoidal amplitude r(t) and angle Psi(t), reduced system "
+                                            "(l = 2 only, perturbations dropped) and the l = 2 block of this run"
+                                          : "Fig. 2-type: ellipsoidal amplitude r(t) and angle Psi(t) of this run "
+                                            "(reduced level)"));
     figs.push_back(figure("excess_areas", "fig_excess_areas.png", 900, 600, {"trajectory.csv"},
                           "Fig. 3b/c-type: excess area per mode Delta_l(t), l = 2..L (log scale)"));
     figs.push_back(figure("tension", "fig_tension.png", 900, 600,
@@ -320,8 +352,10 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     shape_fig["t"] = res.run.t_reached;
     figs.push_back(shape_fig);
     nlohmann::json anim = figure("animation", "fig_animation_strip.png", 1500, 375, {"animation.json"},
-                                 "Shape along the run (frames of animation.gif), seen from above the shear plane "
-                                 "(flow along x, gradient along y)");
+                                 "Shape over t in [" + format_value(sf.scene.T - window) + ", " +
+                                     format_value(sf.scene.T) + "] (frames of animation.gif" +
+                                     (window < sf.scene.T ? ": one period of r(t), so the GIF loops" : "") +
+                                     "), seen from above the shear plane (flow along x, gradient along y)");
     anim["gif"] = "animation.gif";
     anim["gif_size_px"] = {400, 400};
     figs.push_back(anim);
@@ -358,7 +392,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     manifest["thresholds"] = thresholds;
     manifest["shape"] = {{"t", res.run.t_reached}, {"rho_min", res.shape.rho_min}, {"rho_max", res.shape.rho_max},
                          {"n_theta", res.shape.n_theta}, {"n_phi", res.shape.n_phi}, {"in_plane", in_plane}};
-    manifest["frames"] = {{"count", frames.t.size()}, {"status", to_string(frames.status)}};
+    manifest["frames"] = {{"count", frames.t.size()}, {"status", to_string(frames.status)}, {"window", window}};
     manifest["warnings"] = res.warnings;
     manifest["figures"] = figs;
     put("report.json", manifest.dump(2) + "\n");

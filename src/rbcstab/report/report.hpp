@@ -26,7 +26,7 @@ struct ReportOptions {
   ShapeGridOptions shape{64, 128};     // the rendered / exported shape at T
   ShapeGridOptions frame_shape{32, 64};  // coarser grid per animation frame (keeps animation.json ~1 MB)
   int frames = 60;                     // animation frames (GIF), uniform in [T - frame_window, T]
-  double frame_window = 0;             // 0: the whole run [0, T]
+  double frame_window = 0;             // 0: auto (one period of r(t) at the end if the run oscillates, else [0, T])
   bool reduced_companion = true;       // also run the reduced level (Fig. 2 r, Psi; Fig. 3 sigma_R)
   // Hooks for data other modules produce; drawn when given (formats in docs/report.md).
   std::string phase_diagram;           // CSV with columns x, y, l_Delta (+ optional overlay JSON beside it)
@@ -44,6 +44,12 @@ struct ReportResult {
   ShapeGrid shape;                     // rho at the end of the run
   double seconds = 0;
 };
+
+namespace detail {
+// Mean spacing of the maxima of x(t) over the second half of the samples (maxima reaching the
+// upper third of the swing); 0 when x is flat there or has fewer than 3 such maxima.
+double oscillation_period(const std::vector<double>& t, const std::vector<double>& x);
+}  // namespace detail
 
 // Where rbcstab_report.py lives: $RBCSTAB_DATA_DIR[/python], then <exe>/../share/rbcstab/python
 // (installed), then the source tree this library was built from. Empty if none holds the script.

@@ -79,14 +79,16 @@ def greys(n, lo=0.0, hi=0.75):
 
 
 # ------------------------------------------------------------------------------ Fig. 2: r(t), Psi(t)
-def plot_reduced_dynamics(reduced_csv, full_csv, out, size_px=(1200, 450), title=None):
-    """(a) r(t) and (b) Psi(t): the reduced system (solid) and the l = 2 block of the full run (dashed)."""
+def plot_reduced_dynamics(reduced_csv, full_csv, out, size_px=(1200, 450), title=None, full_label=None):
+    """(a) r(t) and (b) Psi(t): the reduced system (solid) and the l = 2 block of the full run (dashed).
+    With only full_csv (a run at the reduced level) it is drawn solid, labelled full_label."""
     fig, (ax_r, ax_p) = new_figure(size_px, ncols=2)
     series = []
     if reduced_csv:
         series.append((read_csv(reduced_csv), "reduced system ($l=2$ only)", dict(color="black", lw=1.8, ls="-")))
     if full_csv:
-        series.append((read_csv(full_csv), "full run, $l=2$ block", dict(color="tab:orange", lw=1.4, ls="--")))
+        style = dict(color="tab:orange", lw=1.4, ls="--") if reduced_csv else dict(color="black", lw=1.8, ls="-")
+        series.append((read_csv(full_csv), full_label or "full run, $l=2$ block", style))
     for data, label, style in series:
         ax_r.plot(data["t"], data["r"], label=label, **style)
         ax_p.plot(data["t"], data["Psi"], label=label, **style)
@@ -178,19 +180,19 @@ def plot_tension(trajectory_csv, thresholds_json, out, reduced_csv=None, size_px
 
 
 # --------------------------------------------------------------------------------- shapes (Fig. 6)
-def grid_from_csv(path):
-    d = read_csv(path)
-    ni = int(max(d["i"])) + 1
-    nj = int(max(d["j"])) + 1
+def exaggeration(rho_values):
+    """Factor k for drawing 1 + k (rho - 1): 1 unless the deformation is below 0.1, then it is
+    scaled up to about 0.25 (k rounded to one significant digit) so a nearly round cell shows its shape."""
+    amp = max(abs(v - 1) for v in rho_values)
+    if amp >= 0.1 or amp <= 0:
+        return 1.0
+    k = 0.25 / amp
+    e = 10 ** math.floor(math.log10(k))
+    return float(round(k / e) * e)
 
-    def shaped(key):
-        v = d[key]
-        return [[v[i * nj + j] for j in range(nj)] for i in range(ni)]
 
-    return shaped("x"), shaped("y"), shaped("z"), shaped("rho")
-
-
-def grid_from_rho(theta, phi, rho_flat):
+def grid_from_rho(theta, phi, rho_flat, k=1.0):
+    """Cartesian grid of the surface 1 + k (rho - 1) (k: exaggeration; colours keep the true rho)."""
     nj = len(phi)
     X, Y, Z, R = [], [], [], []
     for i, th in enumerate(theta):
@@ -198,9 +200,10 @@ def grid_from_rho(theta, phi, rho_flat):
         rx, ry, rz, rr = [], [], [], []
         for j, ph in enumerate(phi):
             r = rho_flat[i * nj + j]
-            rx.append(r * st * math.cos(ph))
-            ry.append(r * st * math.sin(ph))
-            rz.append(r * ct)
+            d = 1 + k * (r - 1)
+            rx.append(d * st * math.cos(ph))
+            ry.append(d * st * math.sin(ph))
+            rz.append(d * ct)
             rr.append(r)
         X.append(rx), Y.append(ry), Z.append(rz), R.append(rr)
     return X, Y, Z, R
@@ -224,13 +227,14 @@ def shaded_colors(X, Y, Z, R, norm, cmap):
     return c
 
 
-def draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim, axes_labels=True):
+def draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim, axes_labels=True, lim=None):
+    """lim: half-width of the cube shown (the same for every frame of an animation)."""
     import numpy as np
 
     X, Y, Z, R = map(np.asarray, (X, Y, Z, R))
     ax.plot_surface(X, Y, Z, facecolors=shaded_colors(X, Y, Z, R, norm, cmap), rstride=1, cstride=1, linewidth=0,
                     antialiased=False, shade=False)
-    m = float(np.nanmax(np.abs([X, Y, Z])))
+    m = float(lim) if lim else float(np.nanmax(np.abs([X, Y, Z])))
     for set_lim in (ax.set_xlim, ax.set_ylim, ax.set_zlim):
         set_lim(-m, m)
     ax.view_init(elev=elev, azim=azim)
@@ -248,8 +252,13 @@ def draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim, axes_labels=True):
 
 def plot_shape(shape_csv, out, size_px=(750, 750), title=None, elev=25.0, azim=-60.0):
     """The 3-D shape rho(theta, phi) coloured by the distance from the origin (Fig. 6 insets)."""
-    X, Y, Z, R = grid_from_csv(shape_csv)
-    flat = [v for row in R for v in row]
+    d = read_csv(shape_csv)
+    ni, nj = int(max(d["i"])) + 1, int(max(d["j"])) + 1
+    theta = [d["theta"][i * nj] for i in range(ni)]
+    phi = d["phi"][:nj]
+    k = exaggeration(d["rho"])
+    X, Y, Z, R = grid_from_rho(theta, phi, d["rho"], k)
+    flat = d["rho"]
     norm = mcolors.Normalize(vmin=min(flat), vmax=max(flat))
     cmap = plt.get_cmap("viridis")
     w, h = size_px
@@ -260,6 +269,8 @@ def plot_shape(shape_csv, out, size_px=(750, 750), title=None, elev=25.0, azim=-
     cax.grid(False)
     sm = plt.cm.ScalarMappable(norm=norm, cmap=cmap)
     fig.colorbar(sm, cax=cax, label=r"$\rho$ (distance from the origin)")
+    if k != 1:
+        fig.text(0.02, 0.02, rf"drawn as $1 + {k:g}\,(\rho - 1)$: deformation exaggerated $\times{k:g}$", fontsize=10)
     if title:
         fig.suptitle(title, fontsize=11)
     return save(fig, out, size_px)
@@ -273,6 +284,8 @@ def plot_animation(animation_json, out_png, out_gif=None, size_px=(1500, 375), g
     t, theta, phi, rho = a["t"], a["theta"], a["phi"], a["rho"]
     allv = [v for fr in rho for v in fr]
     norm = mcolors.Normalize(vmin=min(allv), vmax=max(allv))
+    gain = exaggeration(allv)
+    lim = 1 + gain * (max(allv) - 1)  # every frame at the same scale
     cmap = plt.get_cmap("viridis")
     drawn = []
     n = len(t)
@@ -281,11 +294,12 @@ def plot_animation(animation_json, out_png, out_gif=None, size_px=(1500, 375), g
     fig = plt.figure(figsize=(w / DPI, h / DPI), dpi=DPI)
     for k, idx in enumerate(picks):
         ax = fig.add_axes([k / len(picks), 0.06, 1.0 / len(picks), 0.84], projection="3d")
-        X, Y, Z, R = grid_from_rho(theta, phi, rho[idx])
-        draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim, axes_labels=False)
+        X, Y, Z, R = grid_from_rho(theta, phi, rho[idx], gain)
+        draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim, axes_labels=False, lim=lim)
         ax.set_title(f"$t = {t[idx]:.4g}$", fontsize=12, y=1.0)
-    fig.text(0.5, 0.005, r"viewed from $+z$: flow $x$ to the right, gradient $y$ up; colour: $\rho$",
-             ha="center", fontsize=9)
+    note = rf"; deformation exaggerated $\times{gain:g}$" if gain != 1 else ""
+    fig.text(0.5, 0.01, rf"viewed from $+z$: flow $x$ to the right, gradient $y$ up; colour: $\rho$ from "
+             rf"{norm.vmin:.3f} (dark) to {norm.vmax:.3f} (light){note}", ha="center", fontsize=10)
     drawn.append(save(fig, out_png, size_px))
     if out_gif:
         try:
@@ -299,9 +313,9 @@ def plot_animation(animation_json, out_png, out_gif=None, size_px=(1500, 375), g
 
         def frame(idx):
             ax.clear()
-            X, Y, Z, R = grid_from_rho(theta, phi, rho[idx])
-            draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim, axes_labels=False)
-            ax.set_title(f"$t = {t[idx]:.4g}$", fontsize=11)
+            X, Y, Z, R = grid_from_rho(theta, phi, rho[idx], gain)
+            draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim, axes_labels=False, lim=lim)
+            ax.set_title(f"$t = {t[idx]:.4g}$" + (f"  (shape $\\times{gain:g}$)" if gain != 1 else ""), fontsize=11)
             return []
 
         anim = FuncAnimation(fig, frame, frames=n, blit=False)
@@ -446,7 +460,9 @@ def draw_report(folder):
         out = path(f["png"])
         if kind == "reduced_dynamics":
             red = path("reduced_trajectory.csv") if "reduced_trajectory.csv" in data else None
-            drawn.append(plot_reduced_dynamics(red, path("trajectory.csv"), out, size, title=tag))
+            level = m["summary"]["model"]
+            label = ("reduced system ($l=2$ only)" if level == "reduced" else f"{level} run, $l=2$ block")
+            drawn.append(plot_reduced_dynamics(red, path("trajectory.csv"), out, size, title=tag, full_label=label))
         elif kind == "excess_areas":
             drawn.append(plot_excess_areas(path(data[0]), out, size, title=tag))
         elif kind == "tension":
