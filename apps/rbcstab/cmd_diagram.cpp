@@ -34,6 +34,7 @@ struct DiagramCliOptions {
   int threads = 0;
   bool no_seconds = false, quiet = false, no_journal = false;
   double sync_interval = 1.0;
+  double alpha_fixed = -1;
 };
 
 std::string duration(double s) {
@@ -66,6 +67,7 @@ int run(const DiagramCliOptions& o) {
     spec.x.count = o.counts[0], spec.y.count = o.counts[1];
   }
   if (!o.classifier.empty()) spec.classifier = classifier_from_string(o.classifier);
+  if (o.alpha_fixed >= 0) spec.alpha = o.alpha_fixed;
   spec.validate();
 
   MpiSession mpi;  // a no-op unless started by mpirun (and built with MPI)
@@ -135,6 +137,7 @@ static Runner add_diagram(CLI::App& app) {
   app.add_option("--counts", o->counts, "grid values nx,ny")->delimiter(',');
   app.add_option("--classifier", o->classifier, "l_Delta rule: auto (tail mean if oscillating), final (Fig. 4), tail (App. E)")
       ->check(CLI::IsMember({"auto", "final", "tail"}));
+  app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C at this value over the plane (0: off; Fig. 5)");
   app.add_option("--threads", o->threads, "worker threads (0: all cores)")->capture_default_str();
   app.add_option("--schedule", o->schedule, "point scheduling over threads")
       ->check(CLI::IsMember({"dynamic", "static"}))

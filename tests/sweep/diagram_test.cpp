@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/io/files.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/sweep/diagram.hpp"
@@ -86,6 +87,16 @@ TEST(PointScene, AppliesAxesAndAlphaKeepsTheOtherAxis) {
   EXPECT_EQ(b.parameters.C, base.parameters.C);
   EXPECT_NEAR(b.parameters.alpha(), 100, 1e-12);
   EXPECT_THROW(point_scene(base, d, 4), InvalidArgument);
+  // Fig. 5: ln C - lambda plane at fixed alpha.
+  DiagramSpec f;
+  f.x = {Axis::lnC, -5, 1, 3};
+  f.y = {Axis::lambda, 1, 5, 2};
+  f.alpha = 40;
+  const Scene c = point_scene(base, f, 4);
+  EXPECT_DOUBLE_EQ(c.parameters.C, std::exp(-2.0));
+  EXPECT_NEAR(c.parameters.alpha(), 40, 1e-12);
+  f.y.axis = Axis::alpha;
+  EXPECT_THROW(f.validate(), InvalidArgument);
 }
 
 // Physics check against the paper's criteria (Sec. IV): l_* >= 2.5 needs alpha >= (35/8)^2 ~ 19.1,
@@ -210,5 +221,31 @@ classifier = "tail"
   EXPECT_EQ(parse_diagram_table("name = 'x'\n").size(), DiagramSpec{}.size());
 }
 
+}  // namespace
+}  // namespace rbcstab
+
+namespace rbcstab {
+namespace {
+// Every diagram scene of the paper's figures parses, as a scene and as a diagram.
+TEST(DiagramScenes, PaperPanelsParse) {
+  int n = 0;
+  for (const auto& e : std::filesystem::directory_iterator(RBCSTAB_SCENES_DIR)) {
+    const std::string name = e.path().filename().string();
+    if (name.rfind("fig4", 0) != 0 && name.rfind("fig5", 0) != 0 && name.rfind("appE", 0) != 0) continue;
+    const std::string text = read_file(e.path().string());
+    ASSERT_TRUE(has_diagram_table(text)) << name;
+    const SceneFile sf = parse_scene(text, name);
+    const DiagramSpec d = parse_diagram_table(text, name);
+    EXPECT_NO_THROW(point_scene(sf.scene, d, d.size() - 1).validate()) << name;
+    if (name.rfind("appE", 0) == 0) {
+      EXPECT_EQ(d.classifier, Classifier::tail_mean) << name;
+    }
+    if (name.rfind("fig5", 0) == 0) {
+      EXPECT_GT(d.alpha, 0) << name;
+    }
+    ++n;
+  }
+  EXPECT_EQ(n, 12);
+}
 }  // namespace
 }  // namespace rbcstab

@@ -89,6 +89,9 @@ void DiagramSpec::validate() const {
     require(std::isfinite(a->max), "diagram." + n + "_range", a->max, "finite");
     require(a->count >= 1 && a->count <= 1'000'000, "diagram.counts", a->count, "an integer in [1, 1000000]");
   }
+  require(std::isfinite(alpha) && alpha >= 0, "diagram.alpha", alpha, "finite and >= 0 (0: alpha not held fixed)");
+  if (alpha > 0 && (x.axis == Axis::alpha || y.axis == Axis::alpha))
+    throw InvalidArgument("diagram.alpha", "diagram.alpha cannot be held fixed while alpha is an axis");
   if (x.axis == y.axis)
     throw InvalidArgument("diagram.axes", "diagram.axes must name two different axes (both are '" + to_string(x.axis) + "')");
 }
@@ -128,7 +131,7 @@ Scene point_scene(const Scene& base, const DiagramSpec& spec, std::size_t index)
   const int i = int(index % std::size_t(spec.x.count));
   const int j = int(index / std::size_t(spec.x.count));
   const std::pair<const AxisRange*, double> values[2] = {{&spec.x, spec.x.value(i)}, {&spec.y, spec.y.value(j)}};
-  double alpha = -1;
+  double alpha = spec.alpha > 0 ? spec.alpha : -1;
   for (const auto& [a, v] : values) {
     switch (a->axis) {
       case Axis::lnB: s.parameters.B = std::exp(v); break;
@@ -201,7 +204,7 @@ std::string config_hash(const Scene& base, const SimulationOptions& options, con
   f.options.integrator.max_seconds = 0;  // a wall-clock budget is not part of the configuration
   text << to_toml(f) << "x " << to_string(spec.x.axis) << ' ' << exact(spec.x.min) << ' ' << exact(spec.x.max) << ' '
        << spec.x.count << "\ny " << to_string(spec.y.axis) << ' ' << exact(spec.y.min) << ' ' << exact(spec.y.max)
-       << ' ' << spec.y.count << "\nclassifier " << to_string(spec.classifier) << "\n";
+       << ' ' << spec.y.count << "\nclassifier " << to_string(spec.classifier) << "\nalpha " << exact(spec.alpha) << "\n";
   std::uint64_t h = 1469598103934665603ull;  // FNV-1a 64
   for (unsigned char c : text.str()) {
     h ^= c;

@@ -40,13 +40,14 @@ struct DiagramSpec {
   AxisRange x{Axis::lnB, -1, 6, 64};    // fastest-varying axis: index = j * x.count + i
   AxisRange y{Axis::lnC, -5.5, 2, 64};  // Fig. 4: ln C in [-5.5, 2]
   Classifier classifier = Classifier::automatic;  // see Classifier
-  void validate() const;                 // distinct axes, finite ranges, counts in [1, 10^6]
+  double alpha = 0;  // > 0: hold alpha = B/C fixed over the plane (Fig. 5: ln C - lambda at alpha = 40, 100, 500)
+  void validate() const;                 // distinct axes, finite ranges, counts in [1, 10^6], alpha >= 0
   std::size_t size() const { return std::size_t(x.count) * std::size_t(y.count); }
 };
 
 // The scene of grid point `index`: base with the two axis values applied. ln B, ln C, lambda,
-// Delta, Delta0 and beta set their parameter; alpha = B/C is applied last and keeps ln B fixed
-// when the other axis is ln B (C = B/alpha), otherwise keeps C (B = alpha C).
+// Delta, Delta0 and beta set their parameter; alpha = B/C (an axis value, or spec.alpha > 0) is
+// applied last and keeps ln B fixed when an axis is ln B (C = B/alpha), otherwise keeps C (B = alpha C).
 Scene point_scene(const Scene& base, const DiagramSpec& spec, std::size_t index);
 
 enum class Verdict { stable, unstable, failed };  // failed: the integrator did not reach T

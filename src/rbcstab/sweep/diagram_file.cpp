@@ -39,12 +39,12 @@ DiagramSpec parse_diagram_table(const std::string& toml_text, const std::string&
   if (!node) return s;
   const toml::table* t = node->as_table();
   if (!t) throw InvalidArgument("diagram", "scene key 'diagram' must be a table ([diagram])");
-  const std::set<std::string> allowed{"axes", "x_range", "y_range", "counts", "classifier"};
+  const std::set<std::string> allowed{"axes", "x_range", "y_range", "counts", "classifier", "alpha"};
   for (const auto& [k, v] : *t)
     if (!allowed.count(std::string(k.str())))
       throw InvalidArgument("diagram." + std::string(k.str()),
                             "unknown scene key 'diagram." + std::string(k.str()) +
-                                "' (allowed here: axes, classifier, counts, x_range, y_range)");
+                                "' (allowed here: alpha, axes, classifier, counts, x_range, y_range)");
   if (t->get("axes")) {
     const toml::array& a = pair_of(*t, "axes");
     auto name = [&](std::size_t k) {
@@ -76,6 +76,11 @@ DiagramSpec parse_diagram_table(const std::string& toml_text, const std::string&
     auto v = c->value_exact<std::string>();
     if (!v) throw InvalidArgument("diagram.classifier", "diagram.classifier must be a string: auto, final or tail");
     s.classifier = classifier_from_string(*v);
+  }
+  if (const toml::node* a = t->get("alpha")) {
+    auto v = a->value<double>();
+    if (!v) throw InvalidArgument("diagram.alpha", "diagram.alpha must be a number");
+    s.alpha = *v;
   }
   s.validate();
   return s;

@@ -6,6 +6,7 @@
 //   y_range = [-5.5, 2.0]
 //   counts = [64, 64]
 //   classifier = "final"         # auto | final | tail
+//   alpha = 100                  # optional: hold alpha = B/C fixed (Fig. 5)
 #include <string>
 
 #include "rbcstab/sweep/diagram.hpp"

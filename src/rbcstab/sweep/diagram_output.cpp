@@ -38,7 +38,7 @@ nlohmann::json diagram_header(const Scene& base, const SimulationOptions& option
                      {"atol", options.integrator.atol},
                      {"tail_window", options.tail_window}};
   h["diagram"] = {{"x", axis_json(spec.x)}, {"y", axis_json(spec.y)}, {"classifier", to_string(spec.classifier)},
-                  {"points", spec.size()}};
+                  {"alpha", spec.alpha}, {"points", spec.size()}};
   return h;
 }
 
@@ -115,6 +115,7 @@ DiagramSpec spec_from_json(const nlohmann::json& doc) {
     s.x = axis_from_json(d.at("x"));
     s.y = axis_from_json(d.at("y"));
     s.classifier = classifier_from_string(d.at("classifier").get<std::string>());
+    s.alpha = d.value("alpha", 0.0);
     s.validate();
     return s;
   } catch (const nlohmann::json::exception& e) {
