@@ -1,0 +1,166 @@
+// rbcstab bench: measured speed against accuracy.
+//   work-precision: every level x stepper x rtol against a ~1e-13 reference by another level (CSV, JSON, PNG)
+//   truncation:     convergence of Delta_l(T), sigma(T) and l_Delta with the truncation L
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "rbcstab/integrate/work_precision.hpp"
+#include "rbcstab/io/files.hpp"
+#include "rbcstab/io/json.hpp"
+#include "rbcstab/report/report.hpp"
+#include "scene_options.hpp"
+
+namespace rbcstab::cli {
+
+namespace {
+struct BenchOptions {
+  std::string kind = "work-precision";
+  SceneOptions scene;
+  std::string output = "out/bench";
+  std::vector<std::string> levels{"modal", "full"}, steppers{"rk8pd", "rkck", "rosenbrock", "msbdf"};
+  std::vector<double> rtols{1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
+  std::vector<int> Ls{4, 6, 8, 10, 12, 16, 20, 24, 30, 40};
+  double max_seconds = 30;
+  bool json = false;
+  bool plot = true;
+};
+
+std::string work_precision_csv(const WorkPrecisionTable& t) {
+  std::ostringstream ss;
+  ss << std::setprecision(10);
+  ss << "level,stepper,rtol,status,rhs_evaluations,jacobian_evaluations,steps,seconds,error_Delta,error_sigma,l_Delta,"
+        "verdict_changed\n";
+  for (const auto& r : t.rows)
+    ss << to_string(r.level) << ',' << to_string(r.stepper) << ',' << r.rtol << ',' << to_string(r.status) << ','
+       << r.rhs_evaluations << ',' << r.jacobian_evaluations << ',' << r.steps << ',' << r.seconds << ','
+       << r.error_Delta << ',' << r.error_sigma << ',' << r.l_Delta << ',' << (r.verdict_changed ? 1 : 0) << '\n';
+  return ss.str();
+}
+
+int run_work_precision(const BenchOptions& o, const SceneFile& sf) {
+  WorkPrecisionOptions wp;
+  wp.levels.clear();
+  for (const auto& l : o.levels) wp.levels.push_back(model_level_from_string(l));
+  wp.steppers.clear();
+  for (const auto& s : o.steppers) wp.steppers.push_back(stepper_from_string(s));
+  wp.rtols = o.rtols;
+  wp.max_seconds = o.max_seconds;
+  const WorkPrecisionTable t = work_precision(sf.scene, wp);
+  std::filesystem::create_directories(o.output);
+  const std::string base = o.output + "/" + sf.scene.name + "_work_precision";
+  write_file_atomic(base + ".csv", work_precision_csv(t));
+  nlohmann::json j{{"scene", to_json(sf.scene)},
+                   {"reference", {{"level", "full"}, {"stepper", "rk8pd"}, {"rtol", wp.reference_rtol},
+                                  {"Delta_final", by_mode(t.reference_Delta)}, {"sigma_final", t.reference_sigma},
+                                  {"l_Delta", t.reference_l_Delta},
+                                  {"spread_vs_modal", t.reference_spread}}},
+                   {"rows", nlohmann::json::array()}};
+  for (const auto& r : t.rows)
+    j["rows"].push_back({{"level", to_string(r.level)}, {"stepper", to_string(r.stepper)}, {"rtol", r.rtol},
+                         {"status", to_string(r.status)}, {"rhs_evaluations", r.rhs_evaluations},
+                         {"jacobian_evaluations", r.jacobian_evaluations}, {"steps", r.steps}, {"seconds", r.seconds},
+                         {"error_Delta", r.error_Delta}, {"error_sigma", r.error_sigma}, {"l_Delta", r.l_Delta},
+                         {"verdict_changed", r.verdict_changed}});
+  write_file_atomic(base + ".json", j.dump(2) + "\n");
+  if (o.plot) {
+    check_python("/usr/bin/python3");
+    const std::string dir = find_script_dir("");
+    if (dir.empty()) throw std::runtime_error("cannot find the plotting scripts (set RBCSTAB_DATA_DIR)");
+    const std::string cmd = "/usr/bin/python3 '" + dir + "/work_precision.py' '" + base + ".csv' '" + base +
+                            ".png' 'work-precision: " + sf.scene.name + "'";
+    if (std::system(cmd.c_str()) != 0) throw std::runtime_error("the work-precision figure failed: " + cmd);
+  }
+  if (o.json) {
+    std::cout << j.dump(2) << "\n";
+  } else {
+    std::cout << "scene " << sf.scene.name << ": reference full/rk8pd rtol " << wp.reference_rtol
+              << ", l_Delta = " << t.reference_l_Delta << ", spread vs modal " << t.reference_spread << "\n";
+    std::cout << std::setw(8) << "level" << std::setw(12) << "stepper" << std::setw(8) << "rtol" << std::setw(12)
+              << "RHS evals" << std::setw(10) << "Jac" << std::setw(11) << "seconds" << std::setw(12) << "err Delta"
+              << std::setw(12) << "err sigma" << "  l_Delta\n";
+    for (const auto& r : t.rows)
+      std::cout << std::setw(8) << to_string(r.level) << std::setw(12) << to_string(r.stepper) << std::setw(8)
+                << std::setprecision(0) << std::scientific << r.rtol << std::defaultfloat << std::setprecision(4)
+                << std::setw(12) << r.rhs_evaluations << std::setw(10) << r.jacobian_evaluations << std::setw(11)
+                << r.seconds << std::setw(12) << r.error_Delta << std::setw(12) << r.error_sigma << "  " << r.l_Delta
+                << (r.verdict_changed ? " (changed)" : "")
+                << (r.status != IntegrationStatus::success ? "  " + to_string(r.status) : "") << "\n";
+    std::cout << "wrote " << base << ".csv, .json" << (o.plot ? ", .png" : "") << "\n";
+  }
+  return kOk;
+}
+
+int run_truncation(const BenchOptions& o, const SceneFile& sf) {
+  // Reference: the largest L. The modal level is exact at every L, so differences are truncation alone.
+  std::vector<SimulationResult> runs;
+  for (int L : o.Ls) {
+    Scene s = sf.scene;
+    s.L = L;
+    s.dt = s.T;
+    SimulationOptions so = sf.options;
+    so.integrator.rtol = std::min(so.integrator.rtol, 1e-10);
+    so.integrator.atol = std::min(so.integrator.atol, 1e-14);
+    so.record_trajectory = false;
+    runs.push_back(simulate(s, so));
+  }
+  const SimulationResult& ref = runs.back();
+  nlohmann::json rows = nlohmann::json::array();
+  std::ostringstream csv;
+  csv << std::setprecision(10) << "L,status,l_Delta,sigma_final,error_Delta,error_sigma,rhs_evaluations,seconds\n";
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const SimulationResult& r = runs[i];
+    double e = 0;
+    for (std::size_t k = 0; k < r.Delta_final.size(); ++k) e = std::max(e, std::abs(r.Delta_final[k] - ref.Delta_final[k]));
+    for (std::size_t k = r.Delta_final.size(); k < ref.Delta_final.size(); ++k) e = std::max(e, ref.Delta_final[k]);
+    e /= sf.scene.parameters.Delta;
+    const double es = std::abs(r.sigma_final - ref.sigma_final) / std::max(1.0, std::abs(ref.sigma_final));
+    csv << o.Ls[i] << ',' << to_string(r.status) << ',' << r.l_Delta << ',' << r.sigma_final << ',' << e << ',' << es
+        << ',' << r.counters.rhs_evaluations << ',' << r.seconds << '\n';
+    rows.push_back({{"L", o.Ls[i]}, {"status", to_string(r.status)}, {"l_Delta", r.l_Delta},
+                    {"sigma_final", r.sigma_final}, {"error_Delta", e}, {"error_sigma", es},
+                    {"rhs_evaluations", r.counters.rhs_evaluations}, {"seconds", r.seconds}});
+  }
+  std::filesystem::create_directories(o.output);
+  const std::string base = o.output + "/" + sf.scene.name + "_truncation";
+  write_file_atomic(base + ".csv", csv.str());
+  const nlohmann::json j{{"scene", to_json(sf.scene)}, {"reference_L", o.Ls.back()}, {"rows", rows}};
+  write_file_atomic(base + ".json", j.dump(2) + "\n");
+  std::cout << (o.json ? j.dump(2) + "\n" : csv.str());
+  return kOk;
+}
+
+int run(const BenchOptions& o) {
+  const SceneFile sf = o.scene.resolve();
+  if (o.kind == "truncation") return run_truncation(o, sf);
+  return run_work_precision(o, sf);
+}
+}  // namespace
+
+static Runner add_bench(CLI::App& app) {
+  auto o = std::make_shared<BenchOptions>();
+  app.add_option("kind", o->kind, "what to measure")
+      ->check(CLI::IsMember({"work-precision", "truncation"}))
+      ->capture_default_str();
+  o->scene.add_to(app);
+  app.add_option("--output", o->output, "folder for the CSV, JSON and PNG")->capture_default_str();
+  app.add_option("--levels", o->levels, "model levels to compare (work-precision)")->capture_default_str();
+  app.add_option("--steppers", o->steppers, "steppers to compare (work-precision)")->capture_default_str();
+  app.add_option("--rtols", o->rtols, "tolerances (work-precision), each in [1e-14, 0.1]")->capture_default_str();
+  app.add_option("--Ls", o->Ls, "truncations (truncation); the last is the reference")->capture_default_str();
+  app.add_option("--max-seconds", o->max_seconds, "wall-clock budget per run (> 0)")->capture_default_str();
+  app.add_flag("!--no-plot", o->plot, "skip the PNG figure");
+  app.add_flag("--json", o->json, "print the table as JSON");
+  return [o] { return run(*o); };
+}
+
+namespace {
+const RegisterCommand kRegister{"bench", "Speed against accuracy: work-precision tables and figures, truncation in L",
+                                add_bench, 80};
+}  // namespace
+
+}  // namespace rbcstab::cli
