@@ -114,7 +114,8 @@ def plot_excess_areas(trajectory_csv, out, size_px=(900, 600), title=None):
     data = read_csv(trajectory_csv)
     modes = mode_columns(data)
     fig, ax = new_figure(size_px)
-    cols = greys(len(modes))
+    # Distinct hues for neighbouring modes; the line styles keep them apart in greyscale.
+    cols = [plt.get_cmap("tab10")(k % 10) for k in range(len(modes))]
     for k, (l, key) in enumerate(modes):
         ax.plot(data["t"], positive(data[key]), color=cols[k], ls=LINESTYLES[k % len(LINESTYLES)],
                 lw=2.0 if l == 2 else 1.5, label=rf"$\Delta_{{{l}}}$")
@@ -141,12 +142,16 @@ def plot_tension(trajectory_csv, thresholds_json, out, reduced_csv=None, size_px
     data = read_csv(trajectory_csv)
     th = read_json(thresholds_json)
     fig, ax = new_figure(size_px)
-    if reduced_csv:
-        red = read_csv(reduced_csv)
-        ax.plot(red["t"], red["sigma"], color="0.6", lw=5, alpha=0.8, label=r"$\sigma_R(t)$ (reduced)", zorder=1)
-    ax.plot(data["t"], data["sigma"], color="black", lw=1.3, label=r"$\sigma(t)$", zorder=3)
     finite = [s for s in data["sigma"] if math.isfinite(s)]
     lo, hi = (min(finite), max(finite)) if finite else (-1.0, 1.0)
+    if reduced_csv:
+        red = read_csv(reduced_csv)
+        rf = [s for s in red["sigma"] if math.isfinite(s)]
+        # The axis follows sigma(t) and the thresholds; sigma_R may leave it (tumbling spikes).
+        clipped = bool(rf) and (min(rf) < lo - 0.5 * (hi - lo) or max(rf) > hi + 0.5 * (hi - lo))
+        ax.plot(red["t"], red["sigma"], color="0.65", lw=3 if len(red["t"]) < 400 else 1.8,
+                label=r"$\sigma_R(t)$ (reduced)" + (", clipped" if clipped else ""), zorder=1)
+    ax.plot(data["t"], data["sigma"], color="black", lw=1.3, label=r"$\sigma(t)$", zorder=3)
     span = max(hi - lo, 1e-9)
     sig_c = {int(k): v for k, v in th.get("sigma_c", {}).items() if v is not None}
     if modes is None:
@@ -167,6 +172,8 @@ def plot_tension(trajectory_csv, thresholds_json, out, reduced_csv=None, size_px
         shown.append(th["sigma_star"])
     ymin = min([lo] + shown)
     ymax = max([hi] + shown)
+    if reduced_csv and rf and not clipped:
+        ymin, ymax = min(ymin, min(rf)), max(ymax, max(rf))
     pad = 0.06 * max(ymax - ymin, 1e-9)
     ax.set_ylim(ymin - pad, ymax + pad)
     ax.set_xlim(0, tmax)
@@ -221,6 +228,7 @@ def shaded_colors(X, Y, Z, R, norm, cmap):
     n = np.where(norm_n > 0, n / np.where(norm_n > 0, norm_n, 1), P / np.maximum(np.linalg.norm(P, axis=-1, keepdims=True), 1e-300))
     light = np.array([-0.4, -0.5, 0.77])
     light = light / np.linalg.norm(light)
+    n[0], n[-1] = n[1], n[-2]  # the pole rows are single points: borrow the neighbouring ring's normals
     lam = np.clip((n * light).sum(axis=-1), 0, 1)
     c = cmap(norm(R))
     c[..., :3] *= (0.72 + 0.28 * lam)[..., None]
@@ -470,8 +478,9 @@ def draw_report(folder):
             drawn.append(plot_tension(path(data[0]), path(data[1]), out, red, size, title=tag))
         elif kind == "shape":
             in_plane = m["shape"].get("in_plane", False)
-            # Out of plane: from the side, tilted; in plane: from above the shear plane, tilted (Fig. 6 insets).
-            elev, azim = (55.0, -75.0) if in_plane else (20.0, -60.0)
+            # Fig. 6 insets: the out-of-plane start becomes a stomatocyte whose cup opens along -z, seen
+            # obliquely from below; the in-plane start a trilobe lying in the shear plane, seen from above.
+            elev, azim = (70.0, -90.0) if in_plane else (-35.0, -60.0)
             drawn.append(plot_shape(path(data[0]), out, size, title=f"{scene['name']}: shape at $t = {f['t']:.4g}$",
                                     elev=elev, azim=azim))
         elif kind == "animation":
