@@ -355,32 +355,66 @@ def symbol(name):
 def plot_phase_diagram(csv_path, out, overlay_json=None, size_px=(900, 750), x=None, y=None, title=None):
     """Points (x, y) coloured by l_Delta (l_Delta = 2, stable, left white), with curves overlaid.
 
-    CSV: two axis columns (named e.g. ln_B, ln_C; default the first two columns) and l_Delta.
+    CSV: the output of `rbcstab diagram` (index,i,j,<x>,<y>,verdict,l_Delta,...), or any CSV with two axis
+    columns (default: ln_B and ln_C, else the first two columns) and l_Delta.
     Overlay JSON: {"curves": [{"label", "x": [...], "y": [...], "style": "solid|dashed|dotted", "color"}]}."""
     d = read_csv(csv_path)
+    keys = list(d)
+    if "j" in keys and keys.index("j") + 2 < len(keys):  # rbcstab diagram: index,i,j,<x>,<y>,verdict,l_Delta,...
+        x = x or keys[keys.index("j") + 1]
+        y = y or keys[keys.index("j") + 2]
     x = x or _pick(d, ["ln_B", "x"], 0)
     y = y or _pick(d, ["ln_C", "y"], 1)
     ld = [int(v) if math.isfinite(v) else 0 for v in d["l_Delta"]]
     xs, ys = d[x], d[y]
     levels = sorted({v for v in ld if v >= 3})
     fig, ax = new_figure(size_px)
-    # Marker size from the grid spacing (so a regular grid tiles the plane).
     ux, uy = sorted(set(xs)), sorted(set(ys))
-    cols = greys(len(levels), 0.0, 0.9) if levels else []
-    for k, lv in enumerate(levels):
-        px = [a for a, b in zip(xs, ld) if b == lv]
-        py = [a for a, b in zip(ys, ld) if b == lv]
-        ax.scatter(px, py, s=max(4.0, 9000.0 / max(len(ux), len(uy)) ** 2 * 4), marker="s",
-                   color=cols[k], edgecolors="none", label=rf"$l_\Delta = {lv}$", zorder=1)
+    # Light-to-mid colours only, so the black and red overlay lines stay visible on every class.
+    cols = greys(len(levels), 0.35, 0.95) if levels else []
+    colour_of = {lv: cols[k] for k, lv in enumerate(levels)}
+    if len(ux) * len(uy) == len(xs) and len(ux) > 1 and len(uy) > 1:
+        # A full grid: cells centred on the points, white where stable (l_Delta = 2), as the paper draws it.
+        import numpy as np
+
+        ix = {v: k for k, v in enumerate(ux)}
+        iy = {v: k for k, v in enumerate(uy)}
+        rgba = np.ones((len(uy), len(ux), 4))
+        for a_, b_, lv in zip(xs, ys, ld):
+            if lv in colour_of:
+                rgba[iy[b_], ix[a_]] = colour_of[lv]
+
+        def edges(u):
+            u = np.asarray(u)
+            mid = (u[1:] + u[:-1]) / 2
+            return np.concatenate([[u[0] - (mid[0] - u[0])], mid, [u[-1] + (u[-1] - mid[-1])]])
+
+        ax.imshow(rgba, origin="lower", aspect="auto", interpolation="nearest",
+                  extent=(edges(ux)[0], edges(ux)[-1], edges(uy)[0], edges(uy)[-1]), zorder=0)
+        from matplotlib.patches import Patch
+
+        ax.legend_handles_extra = [Patch(color=colour_of[lv], label=rf"$l_\Delta = {lv}$") for lv in levels]
+        x_lim, y_lim = (edges(ux)[0], edges(ux)[-1]), (edges(uy)[0], edges(uy)[-1])
+    else:
+        for lv in levels:
+            px = [a_ for a_, b_ in zip(xs, ld) if b_ == lv]
+            py = [a_ for a_, b_ in zip(ys, ld) if b_ == lv]
+            ax.scatter(px, py, s=16, marker="s", color=colour_of[lv], edgecolors="none", label=rf"$l_\Delta = {lv}$",
+                       zorder=1)
+        x_lim, y_lim = (min(xs), max(xs)), (min(ys), max(ys))
     if overlay_json:
         for c in read_json(overlay_json).get("curves", []):
             ls = {"solid": "-", "dashed": "--", "dotted": ":", "dashdot": "-."}.get(c.get("style", "solid"), "-")
             ax.plot(c["x"], c["y"], ls=ls, color=c.get("color", "black"), lw=1.6, label=c.get("label"), zorder=3)
-    ax.set_xlim(min(xs), max(xs))
-    ax.set_ylim(min(ys), max(ys))
+    ax.set_xlim(*x_lim)
+    ax.set_ylim(*y_lim)
     ax.set_xlabel(symbol(x))
     ax.set_ylabel(symbol(y))
-    ax.legend(loc="center left", bbox_to_anchor=(1.01, 0.5), fontsize=9)
+    ax.grid(False)
+    handles, labels = ax.get_legend_handles_labels()
+    extra = getattr(ax, "legend_handles_extra", [])
+    ax.legend(extra + handles, [h.get_label() for h in extra] + labels, loc="center left",
+              bbox_to_anchor=(1.01, 0.5), fontsize=9)
     ax.set_title(title or r"$l_\Delta$ (white: stable, $l_\Delta = 2$)", fontsize=11)
     return save(fig, out, size_px)
 
@@ -503,13 +537,13 @@ def selftest(folder):
     os.makedirs(folder, exist_ok=True)
     p = lambda name: os.path.join(folder, name)  # noqa: E731
     with open(p("phase_diagram.csv"), "w") as f:
-        f.write("ln_B,ln_C,l_Delta\n")
+        f.write("index,i,j,ln_B,ln_C,verdict,l_Delta,status\n")  # the layout of `rbcstab diagram`
         for i in range(12):
             for j in range(10):
                 lb, lc = -1 + 7 * i / 11, -5.5 + 7.5 * j / 9
                 la = lb - lc  # ln alpha
                 lv = 2 if la < 3 else (3 if la < 5 else (4 if la < 7 else 5))
-                f.write(f"{lb},{lc},{lv}\n")
+                f.write(f"{i * 10 + j},{i},{j},{lb},{lc},{'stable' if lv == 2 else 'unstable'},{lv},success\n")
     with open(p("phase_diagram_overlay.json"), "w") as f:
         json.dump({"curves": [
             {"label": r"$l_* = 2.5$", "x": [-1, 6], "y": [-4, 3], "style": "solid"},
