@@ -358,7 +358,9 @@ class Engine {
       try {
         Eigen::VectorXd X = a.X + ds * a.t;
         int it = 0;
-        ok = correct(X, a.t, a.X, ds, it);
+        // A predictor beyond a bound goes straight to the landing below (no residual outside the range).
+        const bool beyond = X[n_] > o_.p_max || X[n_] < o_.p_min;
+        ok = beyond || correct(X, a.t, a.X, ds, it);
         if (ok && (X[n_] > o_.p_max || X[n_] < o_.p_min)) {
           // Land exactly on the bound: natural-parameter corrector from the interpolated predictor.
           const double bound = X[n_] > o_.p_max ? o_.p_max : o_.p_min;
