@@ -135,6 +135,13 @@ void check_figures(const Built& b) {
       EXPECT_NE(md.find("](" + file + ")"), std::string::npos) << file;
     }
   }
+  // The per-mode table lists l = 2, 3, 4 in numeric order.
+  const auto table = md.find("## Excess area per mode");
+  ASSERT_NE(table, std::string::npos);
+  const auto row2 = md.find("\n| 2 | ", table), row3 = md.find("\n| 3 | ", table), row4 = md.find("\n| 4 | ", table);
+  EXPECT_NE(row2, std::string::npos);
+  EXPECT_LT(row2, row3);
+  EXPECT_LT(row3, row4);
   EXPECT_FALSE(has_leftovers(parent_));
 }
 

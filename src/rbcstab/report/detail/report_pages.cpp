@@ -80,9 +80,13 @@ Page make_page(const nlohmann::json& m) {
 
   Table modes{{"l", "Delta_l(0)", "Delta_l(T)", "tail mean", "sigma_l^c"}, {}};
   const auto& sigc = m.at("thresholds").at("sigma_c");
-  for (const auto& [l, v] : s.at("excess_area_initial").items())
-    modes.rows.push_back({l, num(v), num(s.at("excess_area_final").at(l)), num(s.at("excess_area_tail_mean").at(l)),
-                          sigc.contains(l) ? num(sigc.at(l)) : "n/a"});
+  // Numeric order (JSON object keys sort as strings: "10" < "2").
+  const auto& init = s.at("excess_area_initial");
+  for (int l = 2; init.contains(std::to_string(l)); ++l) {
+    const std::string k = std::to_string(l);
+    modes.rows.push_back({k, num(init.at(k)), num(s.at("excess_area_final").at(k)),
+                          num(s.at("excess_area_tail_mean").at(k)), sigc.contains(k) ? num(sigc.at(k)) : "n/a"});
+  }
   p.tables.push_back({"Excess area per mode (mode l grows while sigma < sigma_l^c)", modes});
 
   Table run{{"quantity", "value"}, {}};
