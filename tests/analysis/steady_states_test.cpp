@@ -180,6 +180,82 @@ TEST(OutOfPlaneEquilibrium, ExactVersusLargeSTension) {
   }
 }
 
+// Exact identity at any equilibrium: the f_{2,0} balance mu w = -kappa gives
+// sigma_R = -6 + (2 alpha/3)(sqrt(Delta0/Delta)/w - 1) (docs/theory.md), for every S.
+TEST(OutOfPlaneEquilibrium, TensionFromTheWBalance) {
+  for (const Case& c : kCases) {
+    const Parameters p = with_Lambda_S(c.Lambda, c.S);
+    if (std::isinf(c.S)) continue;
+    const OutOfPlaneEquilibrium eq = out_of_plane_equilibrium(p);
+    const double a = p.alpha();
+    EXPECT_NEAR(eq.sigma_R, -6 + 2 * a / 3 * (std::sqrt(p.Delta0 / p.Delta) / eq.w - 1), 1e-11 * (10 + a))
+        << c.Lambda << " " << c.S;
+  }
+}
+
+// S >> 1 at fixed alpha (Delta0 -> 0 with B, C fixed): the exact equilibrium tension tends to Eq. ss_st_red's
+// <sigma_R^-> and to the corrected <sigma_R^+>; the printed-structure <sigma_R^+> (shear term dropped) does not.
+TEST(OutOfPlaneEquilibrium, LargeSTensionAtFixedAlpha) {
+  for (double lambda : {1.0, 5.0, 8.7}) {  // Lambda = 0.71, 1.89, 2.98 at Delta = 1
+    Parameters p;
+    p.lambda = lambda;
+    p.Delta = 1;
+    p.B = 2;
+    p.C = 0.04;  // alpha = 50
+    for (double Delta0 : {1e-6, 1e-10}) {
+      p.Delta0 = Delta0;
+      const OutOfPlaneEquilibrium eq = out_of_plane_equilibrium(p);
+      ASSERT_TRUE(eq.sigma_R_large_S.valid());
+      const double gap = std::abs(eq.sigma_R - eq.sigma_R_large_S.value);
+      std::printf("lambda %g Delta0 %g S %.4g: sigma_R exact %.10g, S>>1 %.10g, gap %.3g\n", lambda, Delta0, p.S(),
+                  eq.sigma_R, eq.sigma_R_large_S.value, gap);
+      // Corrections are O(alpha sqrt(Delta0)/S) ~ O(alpha Delta0 / C): 1e3 Delta0 covers alpha = 50, C = 0.04.
+      EXPECT_LT(gap, 1e3 * Delta0 + 1e-10 * std::abs(eq.sigma_R));
+      if (p.Lambda() > 1) {
+        // The S >> 1 form without the shear term (w in place of 1/w): off by O(alpha sqrt(Delta0)).
+        const double w_ss = std::sqrt(p.Lambda() * p.Lambda() - 1) / p.Lambda();
+        const double dropped = -6 + 2 * p.alpha() / 3 * (std::sqrt(Delta0 / p.Delta) * w_ss - 1);
+        EXPECT_GT(std::abs(eq.sigma_R - dropped), 10 * gap);
+      }
+    }
+  }
+}
+
+// C_* from the exact finite-S equilibrium against Eq. c_crit: C_*^- and the corrected C_*^+ converge to it as
+// Delta0 -> 0 (S -> inf at fixed C); the printed C_*^+ does not (Lambda = 2.99: off by -5e-3 relative at Delta0 = 1e-8,
+// where the corrected form agrees to 1e-11; measured).
+TEST(OutOfPlaneEquilibrium, CStarAgainstExactEquilibrium) {
+  for (double lambda : {1.0, 5.0, 8.7}) {
+    Parameters p;
+    p.lambda = lambda;
+    p.Delta = 1;
+    p.B = 2;
+    p.C = 1;
+    p.Delta0 = 1e-8;
+    const std::vector<double> roots = exact_C_star(p, std::exp(-5.5), std::exp(2.0));
+    // Eq. c_crit's root is on the sqrt(alpha) > 3 branch (the other root has sqrt(alpha) < 3, l_* < 2).
+    double exact = 0;
+    for (double C : roots)
+      if (p.B / C > 9) exact = std::max(exact, C);
+    ASSERT_GT(exact, 0);
+    const Quantity paper = p.Lambda() < 1 ? C_star_minus(p) : C_star_plus(p, 0);
+    ASSERT_TRUE(paper.valid());
+    const double e = paper.value / exact - 1;
+    std::printf("lambda %g (Lambda %.3f), Delta0 1e-8: exact C_* %.8g, closed form %.8g (%+.2g)", lambda, p.Lambda(),
+                exact, paper.value, e);
+    // The exact root carries O(sqrt(Delta0)) = 1e-4 corrections in sigma_R relative to alpha.
+    EXPECT_LT(std::abs(e), 1e-4);
+    if (p.Lambda() > 1) {
+      const double ep = C_star_plus_printed(p, 0).value / exact - 1;
+      std::printf(", printed A^+ %+.2g", ep);
+      if (p.Lambda() > 2.5) {
+        EXPECT_GT(std::abs(ep), 1e-3);
+      }
+    }
+    std::printf("\n");
+  }
+}
+
 TEST(OutOfPlaneEquilibrium, ExactCStarIsARoot) {
   Parameters p;
   p.lambda = 1;

@@ -104,27 +104,40 @@ Quantity mean_sigma_R_minus(const Parameters& p) {
 }
 
 namespace {
-Quantity mean_sigma_R_plus_impl(const Parameters& p, double r0, bool printed) {
+// Corrected Lambda > 1 coefficient a = sqrt(Delta0/Delta) w0 / w_ss with w_ss = sqrt(Lambda^2 - 1)/Lambda:
+// at an equilibrium the f_{2,0} balance gives mu = -kappa w0/w exactly, hence
+// sigma_R = -6 + (2 alpha/3)(sqrt(Delta0/Delta) w0/w - 1) (docs/theory.md). The paper sets Psi = 0 and drops
+// the shear term B r sin Psi, but sin Psi = r/(S w) and B/S = alpha sqrt(2 Delta0/(15 pi)): the dropped term
+// is as large as the elastic one.
+Quantity plus_coefficient(const Parameters& p, double r0) {
   p.validate();
   require(std::isfinite(r0) && r0 >= 0 && r0 <= 1, "r0", r0, "in [0, 1]");
   const double Lambda = p.Lambda();
-  if (Lambda < 1) return Quantity::outside("Lambda = " + format_value(Lambda) + " < 1: <sigma_R^+> needs Lambda >= 1");
-  const double L2 = Lambda * Lambda;
-  const double radicand = p.Delta0 / p.Delta * (printed ? (1 - L2) : (L2 - 1)) * (1 - r0 * r0) / L2;
-  if (radicand < 0)
-    return Quantity::outside("printed <sigma_R^+>: (1 - Lambda^2)(1 - r0^2) = " +
-                             format_value((1 - L2) * (1 - r0 * r0)) + " < 0 under the square root");
-  return Quantity::of(-6 + (2 * p.alpha() / 3) * (std::sqrt(radicand) - 1));
+  if (Lambda <= 1)
+    return Quantity::outside("Lambda = " + format_value(Lambda) + " <= 1: the Lambda > 1 forms need Lambda > 1");
+  return Quantity::of(std::sqrt(p.Delta0 / p.Delta * (1 - r0 * r0)) * Lambda / std::sqrt(Lambda * Lambda - 1));
+}
+
+Quantity mean_sigma_R_plus_impl(const Parameters& p, double r0, bool printed) {
+  const Quantity a = plus_coefficient(p, r0);
+  if (!a.valid()) return a;
+  const double Lambda = p.Lambda(), L2 = Lambda * Lambda;
+  if (printed) {
+    const double radicand = p.Delta0 / p.Delta * (1 - L2) * (1 - r0 * r0) / L2;
+    if (radicand < 0)
+      return Quantity::outside("printed <sigma_R^+>: (1 - Lambda^2)(1 - r0^2) = " +
+                               format_value((1 - L2) * (1 - r0 * r0)) + " < 0 under the square root");
+    return Quantity::of(-6 + (2 * p.alpha() / 3) * (std::sqrt(radicand) - 1));
+  }
+  return Quantity::of(-6 + (2 * p.alpha() / 3) * (a.value - 1));
 }
 
 Quantity C_star_plus_impl(const Parameters& p, double r0, bool printed) {
-  p.validate();
-  require(std::isfinite(r0) && r0 >= 0 && r0 <= 1, "r0", r0, "in [0, 1]");
-  const double Lambda = p.Lambda();
-  if (Lambda < 1) return Quantity::outside("Lambda = " + format_value(Lambda) + " < 1: C_*^+ needs Lambda >= 1");
-  const double L2 = Lambda * Lambda;
-  // corrected: A^+ = sqrt(Delta0/Delta (Lambda^2 - 1)(1 - r0^2)) / Lambda; printed: /sqrt(Lambda).
-  const double A = std::sqrt(p.Delta0 / p.Delta * (L2 - 1) * (1 - r0 * r0) / (printed ? Lambda : L2));
+  const Quantity a = plus_coefficient(p, r0);
+  if (!a.valid()) return a;
+  const double Lambda = p.Lambda(), L2 = Lambda * Lambda;
+  // printed: A^+ = sqrt(Delta0/Delta (1 - Lambda^2)/Lambda (r0^2 - 1)); corrected: A^+ = a.
+  const double A = printed ? std::sqrt(p.Delta0 / p.Delta * (L2 - 1) * (1 - r0 * r0) / Lambda) : a.value;
   const double s = std::sqrt(A);
   if (s >= 1)
     return Quantity::outside("sqrt(A^+) = " + format_value(s) +

@@ -42,7 +42,9 @@ Quantity alpha_init(const Parameters& p);
 
 // <sigma_R^-> (Eq. ss_st_red, Lambda < 1, S >> 1): -6 + (sqrt(30 pi)/3) sqrt((1 - Lambda^2)/Delta) B - 2 alpha/3.
 Quantity mean_sigma_R_minus(const Parameters& p);
-// <sigma_R^+> (Lambda > 1, S >> 1), corrected: -6 + (2 alpha/3)(sqrt(Delta0/Delta (Lambda^2-1)(1-r0^2)/Lambda^2) - 1).
+// <sigma_R^+> (Lambda > 1, S >> 1), corrected: -6 + (2 alpha/3)(sqrt(Delta0/Delta (1 - r0^2)) Lambda/sqrt(Lambda^2 - 1) - 1).
+// The printed form drops the shear term B r sin Psi, which is O(alpha sqrt(Delta0)) because sin Psi = O(1/S)
+// (docs/theory.md). Outside domain for Lambda <= 1. r0 enters through the Phi-average (w0 = sqrt(1 - r0^2)).
 Quantity mean_sigma_R_plus(const Parameters& p, double r0);
 // The printed <sigma_R^+> with (1 - Lambda^2)(1 - r0^2) under the root: negative for every Lambda > 1, r0 < 1.
 Quantity mean_sigma_R_plus_printed(const Parameters& p, double r0);
@@ -50,8 +52,8 @@ Quantity mean_sigma_R_plus_printed(const Parameters& p, double r0);
 // C_*^- = 2 B / (3 (sqrt 6 + sqrt(B A^-))^2), A^- = sqrt(30 pi (1 - Lambda^2)/Delta)/3 (Eq. c_crit, Lambda < 1).
 // Unstable for C < C_*^- (p.C is ignored).
 Quantity C_star_minus(const Parameters& p);
-// C_*^+ = B (1 - sqrt(A^+))^2 / 9 with the corrected A^+ = sqrt(Delta0/Delta (Lambda^2 - 1)(1 - r0^2)) / Lambda
-// (Eq. c_crit prints /sqrt(Lambda) instead of /Lambda). Lambda > 1; unstable for C < C_*^+.
+// C_*^+ = B (1 - sqrt(A^+))^2 / 9 with the corrected A^+ = sqrt(Delta0/Delta (1 - r0^2)) Lambda / sqrt(Lambda^2 - 1)
+// (the coefficient of the corrected <sigma_R^+>). Lambda > 1; unstable for C < C_*^+; outside when sqrt(A^+) >= 1.
 Quantity C_star_plus(const Parameters& p, double r0);
 // The printed form, A^+ = sqrt(Delta0/Delta (1 - Lambda^2)/Lambda (r0^2 - 1)), kept to show the discrepancy.
 Quantity C_star_plus_printed(const Parameters& p, double r0);
