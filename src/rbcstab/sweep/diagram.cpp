@@ -125,12 +125,9 @@ void DiagramOptions::validate() const {
           "finite and > 0");
 }
 
-Scene point_scene(const Scene& base, const DiagramSpec& spec, std::size_t index) {
-  require(index < spec.size(), "index", double(index), "below the number of grid points");
+Scene plane_scene(const Scene& base, const DiagramSpec& spec, double x, double y) {
   Scene s = base;
-  const int i = int(index % std::size_t(spec.x.count));
-  const int j = int(index / std::size_t(spec.x.count));
-  const std::pair<const AxisRange*, double> values[2] = {{&spec.x, spec.x.value(i)}, {&spec.y, spec.y.value(j)}};
+  const std::pair<const AxisRange*, double> values[2] = {{&spec.x, x}, {&spec.y, y}};
   double alpha = spec.alpha > 0 ? spec.alpha : -1;
   for (const auto& [a, v] : values) {
     switch (a->axis) {
@@ -151,6 +148,14 @@ Scene point_scene(const Scene& base, const DiagramSpec& spec, std::size_t index)
     else
       s.parameters.B = alpha * s.parameters.C;
   }
+  return s;
+}
+
+Scene point_scene(const Scene& base, const DiagramSpec& spec, std::size_t index) {
+  require(index < spec.size(), "index", double(index), "below the number of grid points");
+  const int i = int(index % std::size_t(spec.x.count));
+  const int j = int(index / std::size_t(spec.x.count));
+  Scene s = plane_scene(base, spec, spec.x.value(i), spec.y.value(j));
   std::ostringstream name;
   name << base.name << "[" << index << "]";
   s.name = name.str();

@@ -49,6 +49,8 @@ struct DiagramSpec {
 // Delta, Delta0 and beta set their parameter; alpha = B/C (an axis value, or spec.alpha > 0) is
 // applied last and keeps ln B fixed when an axis is ln B (C = B/alpha), otherwise keeps C (B = alpha C).
 Scene point_scene(const Scene& base, const DiagramSpec& spec, std::size_t index);
+// The same mapping at continuous axis values (x, y) (boundary tracing); the scene name is kept.
+Scene plane_scene(const Scene& base, const DiagramSpec& spec, double x, double y);
 
 enum class Verdict { stable, unstable, failed };  // failed: the integrator did not reach T
 std::string to_string(Verdict v);

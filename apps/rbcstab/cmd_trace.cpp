@@ -1,0 +1,142 @@
+// rbcstab trace: the stability boundary in a parameter plane as curves (asymptotic criterion
+// mu_l = Upsilon_l(sigma_R^eq) = 0, out-of-plane scenes), one record per curve with its mode, plus the
+// corners where the mode changes; CSV and JSON. With --diagram FILE.json (an `rbcstab diagram`
+// output of the same plane) it also measures the agreement of the criterion with the simulations.
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include "commands.hpp"
+#include "exit_codes.hpp"
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/io/files.hpp"
+#include "rbcstab/io/json.hpp"
+#include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/sweep/diagram_output.hpp"
+#include "rbcstab/sweep/point_io.hpp"
+#include "rbcstab/sweep/trace.hpp"
+#include "scene_options.hpp"
+
+namespace rbcstab::cli {
+
+namespace {
+struct TraceCliOptions {
+  SceneOptions scene;
+  std::vector<std::string> axes;
+  std::vector<double> x_range, y_range;
+  double alpha_fixed = -1;
+  TraceOptions trace;
+  std::string out = "trace", diagram;
+};
+
+nlohmann::json agreement_json(const Agreement& a) {
+  nlohmann::json d = nlohmann::json::array();
+  for (const auto& x : a.verdict_disagreements)
+    d.push_back({{"index", x.index}, {"simulated", to_string(x.simulated)}, {"l_simulated", x.l_simulated},
+                 {"predicted", x.predicted_unstable ? "unstable" : "stable"}, {"l_predicted", x.l_predicted},
+                 {"distance_grid_steps", number_or_null(x.distance_steps)}, {"S", number_or_null(x.S)},
+                 {"alpha_over_alpha_init", x.alpha_over_alpha_init}});
+  const double n = a.points ? double(a.points) : 1.0;
+  return {{"predictor", "asymptotic (exact out-of-plane equilibrium)"},
+          {"points", a.points},
+          {"verdict_fraction", double(a.verdict_matches) / n},
+          {"mode_fraction", double(a.mode_matches) / n},
+          {"verdict_disagreements", a.verdict_disagreements.size()},
+          {"beyond_one_grid_step", a.beyond_one_step},
+          {"disagreements", d}};
+}
+
+int run(const TraceCliOptions& o) {
+  const SceneFile sf = o.scene.resolve();
+  DiagramSpec spec;
+  if (!o.scene.scene_path.empty()) spec = parse_diagram_table(read_file(o.scene.scene_path), o.scene.scene_path);
+  if (!o.axes.empty()) {
+    if (o.axes.size() != 2) throw InvalidArgument("--axes", "--axes takes two names, e.g. lnB,lnC");
+    spec.x.axis = axis_from_string(o.axes[0]);
+    spec.y.axis = axis_from_string(o.axes[1]);
+  }
+  if (o.x_range.size() == 2) spec.x.min = o.x_range[0], spec.x.max = o.x_range[1];
+  if (o.y_range.size() == 2) spec.y.min = o.y_range[0], spec.y.max = o.y_range[1];
+  if (o.alpha_fixed >= 0) spec.alpha = o.alpha_fixed;
+  spec.validate();
+  const TraceResult t = trace_boundary(sf.scene, spec, o.trace);
+
+  std::ostringstream csv;
+  csv << "curve,l," << to_string(spec.x.axis) << ',' << to_string(spec.y.axis) << ",sigma_R,sigma_c,mu\n";
+  nlohmann::json curves = nlohmann::json::array();
+  for (std::size_t c = 0; c < t.curves.size(); ++c) {
+    const TraceCurve& tc = t.curves[c];
+    nlohmann::json xs = nlohmann::json::array(), ys = nlohmann::json::array(), mus = nlohmann::json::array();
+    for (const TracePoint& p : tc.points) {
+      csv << c << ',' << tc.l << ',' << exact(p.x) << ',' << exact(p.y) << ',' << exact(p.sigma_R) << ','
+          << exact(p.sigma_c) << ',' << exact(p.mu) << '\n';
+      xs.push_back(p.x);
+      ys.push_back(p.y);
+      mus.push_back(p.mu);
+    }
+    curves.push_back({{"curve", c}, {"l", tc.l}, {"criterion", tc.criterion}, {"x", xs}, {"y", ys}, {"mu", mus}});
+  }
+  nlohmann::json corners = nlohmann::json::array();
+  for (const auto& k : t.corners) corners.push_back({{"x", k.x}, {"y", k.y}, {"l_from", k.l_from}, {"l_to", k.l_to}});
+  nlohmann::json doc{{"format", "rbcstab-trace"},
+                     {"version", 1},
+                     {"scene", to_json(sf.scene)},
+                     {"plane", {{"x", to_string(spec.x.axis)}, {"x_range", {spec.x.min, spec.x.max}},
+                                {"y", to_string(spec.y.axis)}, {"y_range", {spec.y.min, spec.y.max}},
+                                {"alpha", spec.alpha}}},
+                     {"options", {{"lines", o.trace.lines}, {"samples", o.trace.samples}, {"bisections", o.trace.bisections}}},
+                     {"curves", curves},
+                     {"corners", corners},
+                     {"evaluations", t.evaluations},
+                     {"seconds", t.seconds}};
+  if (!o.diagram.empty()) {
+    nlohmann::json dj;
+    try {
+      dj = nlohmann::json::parse(read_file(o.diagram));
+    } catch (const nlohmann::json::exception& e) {
+      throw InvalidArgument("--diagram", "'" + o.diagram + "' is not JSON: " + e.what());
+    }
+    const DiagramSpec ds = spec_from_json(dj);
+    if (ds.x.axis != spec.x.axis || ds.y.axis != spec.y.axis || ds.alpha != spec.alpha)
+      throw InvalidArgument("--diagram", "the diagram's plane differs from the traced plane");
+    const SceneFile dsf = parse_scene(dj.at("scene_toml").get<std::string>(), o.diagram);
+    doc["agreement"] = agreement_json(asymptotic_agreement(dsf.scene, ds, points_from_json(dj, ds), t));
+  }
+  try {
+    write_file_atomic(o.out + ".csv", csv.str());
+    write_file_atomic(o.out + ".json", doc.dump(1) + "\n");
+  } catch (const std::runtime_error& e) {
+    std::cerr << "rbcstab: error: " << e.what() << "\n";
+    return kOutputError;
+  }
+  std::cerr << "rbcstab: traced " << t.curves.size() << " curve pieces, " << t.corners.size() << " corners, "
+            << t.evaluations << " criterion evaluations in " << t.seconds << " s; wrote " << o.out << ".csv and "
+            << o.out << ".json\n";
+  if (doc.contains("agreement"))
+    std::cerr << "rbcstab: agreement with the simulations: verdict " << doc["agreement"]["verdict_fraction"]
+              << ", mode " << doc["agreement"]["mode_fraction"] << ", disagreements beyond one grid step "
+              << doc["agreement"]["beyond_one_grid_step"] << "\n";
+  return kOk;
+}
+}  // namespace
+
+static Runner add_trace(CLI::App& app) {
+  auto o = std::make_shared<TraceCliOptions>();
+  o->scene.add_to(app);
+  app.add_option("--axes", o->axes, "plane axes x,y (default: the scene's [diagram] or lnB,lnC)")->delimiter(',');
+  app.add_option("--x-range", o->x_range, "min,max of x")->delimiter(',')->expected(2);
+  app.add_option("--y-range", o->y_range, "min,max of y")->delimiter(',')->expected(2);
+  app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C fixed over the plane (0: off)");
+  app.add_option("--lines", o->trace.lines, "lines across the plane (x fixed on each)")->capture_default_str();
+  app.add_option("--samples", o->trace.samples, "brackets per line")->capture_default_str();
+  app.add_option("--diagram", o->diagram, "diagram JSON of the same plane: measure the criterion's agreement")
+      ->check(CLI::ExistingFile);
+  app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")->capture_default_str();
+  return [o] { return run(*o); };
+}
+
+namespace {
+const RegisterCommand kRegister{"trace", "Trace the stability boundary of a parameter plane as curves", add_trace, 42};
+}  // namespace
+
+}  // namespace rbcstab::cli
