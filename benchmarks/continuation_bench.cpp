@@ -1,0 +1,89 @@
+// Continuation throughput and accuracy (docs/continuation.md): the out-of-plane equilibrium branch
+// of the reduced system over lambda in [0, 20] against the closed form (design/model.md sec. 4), and
+// the location precision of a fold (x' = p - x^2, LP at p = 0) and a Hopf point.
+#include <benchmark/benchmark.h>
+
+#include <cmath>
+
+#include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/equilibrium.hpp"
+
+namespace rbcstab {
+namespace {
+
+PolarState closed_form(const Parameters& p) {
+  const double L = p.Lambda(), iS = 1 / p.S();
+  const double b = 1 + L * L + iS * iS;
+  const double u = 2 / (b + std::sqrt(b * b - 4 * L * L));
+  return {std::sqrt(u), std::atan2(iS / std::sqrt(1 - u), L)};
+}
+
+void BM_OutOfPlaneBranchLambda(benchmark::State& state) {
+  Scene s;
+  s.beta = 0;
+  s.parameters.lambda = 0;
+  s.parameters.Delta = 1;
+  s.parameters.Delta0 = 0.01;
+  s.parameters.C = 0.04;
+  const ReducedEquilibriumProblem pr(s, ContinuationParameter::lambda);
+  const PolarState c0 = closed_form(s.parameters);
+  Eigen::VectorXd y(3);
+  y << c0.r * std::cos(c0.Psi), -c0.r * std::sin(c0.Psi), std::sqrt(1 - c0.r * c0.r);
+  ContinuationOptions o;
+  o.p_min = 0;
+  o.p_max = 20;
+  o.max_step = static_cast<double>(state.range(0)) / 100;
+  std::size_t points = 0, newton = 0;
+  double err = 0;
+  for (auto _ : state) {
+    const Branch b = continue_branch(pr, y, 0.0, o);
+    points += b.points.size();
+    newton += b.counters.newton_iterations;
+    state.PauseTiming();
+    for (const auto& pt : b.points) {
+      const PolarState c = closed_form(with_parameter(s.parameters, ContinuationParameter::lambda, pt.p));
+      const PolarState g = polar(pt.x);
+      err = std::max({err, std::abs(g.r - c.r), std::abs(g.Psi - c.Psi)});
+    }
+    state.ResumeTiming();
+  }
+  state.counters["points_per_second"] = benchmark::Counter(static_cast<double>(points), benchmark::Counter::kIsRate);
+  state.counters["points"] = static_cast<double>(points) / static_cast<double>(state.iterations());
+  state.counters["newton_per_point"] = static_cast<double>(newton) / static_cast<double>(points);
+  state.counters["max_error_vs_closed_form"] = err;
+}
+BENCHMARK(BM_OutOfPlaneBranchLambda)->Arg(50)->Arg(200)->Unit(benchmark::kMillisecond);
+
+class Fold final : public ContinuationProblem {
+ public:
+  Eigen::Index dimension() const override { return 1; }
+  void residual(const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) const override { F[0] = p - x[0] * x[0]; }
+};
+
+void BM_FoldLocation(benchmark::State& state) {
+  const Fold pr;
+  ContinuationOptions o;
+  o.p_max = 1;
+  o.direction = Direction::backward;
+  Eigen::VectorXd x(1);
+  x << 1;
+  double err = 0, precision = 0;
+  std::size_t iters = 0;
+  for (auto _ : state) {
+    const Branch b = continue_branch(pr, x, 1.0, o);
+    for (const auto& sp : b.special_points) {
+      err = std::max(err, std::abs(sp.p));
+      precision = std::max(precision, sp.precision);
+    }
+    iters += b.counters.location_iterations;
+  }
+  state.counters["LP_error"] = err;
+  state.counters["LP_precision"] = precision;
+  state.counters["location_iterations"] = static_cast<double>(iters) / static_cast<double>(state.iterations());
+}
+BENCHMARK(BM_FoldLocation)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace rbcstab
+
+BENCHMARK_MAIN();
