@@ -74,7 +74,12 @@ int run_fig6e(const PostOptions& o) {
   std::cout << "# Fig. 6e: Delta~2 (continuous l_*, integer l_s) vs simulated Delta-bar_2 (T = " << f.T
             << ", tail mean over " << f.simulation.tail_window << "); n/a: outside domain or stable\n";
   std::cout << "lambda,B,C,alpha,ln_alpha,l_s,l_Delta,Delta2_tilde,Delta2_tilde_integer,Delta2_bar,ratio,ratio_integer\n";
-  auto v = [](const Quantity& q) { return q.valid() ? std::to_string(q.value) : std::string("n/a"); };
+  auto v = [](const Quantity& q) {
+    if (!q.valid()) return std::string("n/a");
+    std::ostringstream ss;
+    ss << std::setprecision(10) << q.value;
+    return ss.str();
+  };
   for (const Fig6eRow& r : rows)
     std::cout << r.lambda << ',' << r.B << ',' << r.C << ',' << r.alpha << ',' << r.ln_alpha << ',' << r.surviving_mode
               << ',' << r.l_Delta << ',' << v(r.Delta2_tilde) << ',' << v(r.Delta2_tilde_integer) << ','
