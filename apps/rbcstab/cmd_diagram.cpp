@@ -108,8 +108,9 @@ int run(const DiagramCliOptions& o) {
   const Shard out_shard = mpi.size() > 1 ? Shard{} : ro.shard;
   try {
     write_file_atomic(prefix + ".csv", diagram_csv(spec, r.points, oo));
-    write_file_atomic(prefix + ".json",
-                      diagram_json(diagram_header(sf.scene, sf.options, spec), spec, r.points, out_shard, oo).dump(1) + "\n");
+    nlohmann::json doc = diagram_json(diagram_header(sf.scene, sf.options, spec), spec, r.points, out_shard, oo);
+    if (out_shard.n == 1) doc["agreement"] = agreement_json(sf.scene, spec, r.points);
+    write_file_atomic(prefix + ".json", doc.dump(1) + "\n");
   } catch (const std::runtime_error& e) {
     std::cerr << "rbcstab: error: " << e.what() << "\n";
     return kOutputError;

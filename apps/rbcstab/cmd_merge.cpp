@@ -7,6 +7,7 @@
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
+#include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/diagram_output.hpp"
 
 namespace rbcstab::cli {
@@ -36,7 +37,9 @@ int run(const MergeOptions& o) {
   const DiagramOutputOptions oo{m.seconds_present};
   try {
     write_file_atomic(o.out + ".csv", diagram_csv(m.spec, m.points, oo));
-    write_file_atomic(o.out + ".json", diagram_json(m.header, m.spec, m.points, {}, oo).dump(1) + "\n");
+    nlohmann::json doc = diagram_json(m.header, m.spec, m.points, {}, oo);
+    if (m.missing.empty()) doc["agreement"] = agreement_json(parse_scene(m.header.at("scene_toml").get<std::string>()).scene, m.spec, m.points);
+    write_file_atomic(o.out + ".json", doc.dump(1) + "\n");
   } catch (const std::runtime_error& e) {
     std::cerr << "rbcstab: error: " << e.what() << "\n";
     return kOutputError;

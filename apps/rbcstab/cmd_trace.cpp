@@ -29,23 +29,6 @@ struct TraceCliOptions {
   std::string out = "trace", diagram;
 };
 
-nlohmann::json agreement_json(const Agreement& a) {
-  nlohmann::json d = nlohmann::json::array();
-  for (const auto& x : a.verdict_disagreements)
-    d.push_back({{"index", x.index}, {"simulated", to_string(x.simulated)}, {"l_simulated", x.l_simulated},
-                 {"predicted", x.predicted_unstable ? "unstable" : "stable"}, {"l_predicted", x.l_predicted},
-                 {"distance_grid_steps", number_or_null(x.distance_steps)}, {"S", number_or_null(x.S)},
-                 {"alpha_over_alpha_init", x.alpha_over_alpha_init}});
-  const double n = a.points ? double(a.points) : 1.0;
-  return {{"predictor", "asymptotic (exact out-of-plane equilibrium)"},
-          {"points", a.points},
-          {"verdict_fraction", double(a.verdict_matches) / n},
-          {"mode_fraction", double(a.mode_matches) / n},
-          {"verdict_disagreements", a.verdict_disagreements.size()},
-          {"beyond_one_grid_step", a.beyond_one_step},
-          {"disagreements", d}};
-}
-
 int run(const TraceCliOptions& o) {
   const SceneFile sf = o.scene.resolve();
   DiagramSpec spec;
@@ -100,7 +83,7 @@ int run(const TraceCliOptions& o) {
     if (ds.x.axis != spec.x.axis || ds.y.axis != spec.y.axis || ds.alpha != spec.alpha)
       throw InvalidArgument("--diagram", "the diagram's plane differs from the traced plane");
     const SceneFile dsf = parse_scene(dj.at("scene_toml").get<std::string>(), o.diagram);
-    doc["agreement"] = agreement_json(asymptotic_agreement(dsf.scene, ds, points_from_json(dj, ds), t));
+    doc["agreement"] = agreement_json(dsf.scene, ds, points_from_json(dj, ds));
   }
   try {
     write_file_atomic(o.out + ".csv", csv.str());

@@ -114,3 +114,32 @@ TEST(DiagramCli, SigkillMidRunLosesNothingAndRecomputesNothing) { kill_and_resum
 TEST(DiagramCli, SigintMidRunLosesNothingAndRecomputesNothing) { kill_and_resume(SIGINT); }
 
 }  // namespace
+
+namespace {
+// Job arrays: `--shard k/3` runs then `rbcstab merge` give the serial CSV and JSON byte for byte.
+TEST(DiagramCli, ShardsMergeToTheSerialOutput) {
+  const fs::path dir = fs::temp_directory_path() / ("rbcstab_merge_test_" + std::to_string(getpid()));
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  const std::string err = (dir / "err.txt").string();
+  auto args = [&](const std::string& out) {
+    return std::vector<std::string>{RBCSTAB_CLI, "diagram", "--L", "5", "--T", "60", "--dt", "60", "--counts", "5,4",
+                                    "--threads", "2", "--no-seconds", "--quiet", "--out", (dir / out).string()};
+  };
+  ASSERT_EQ(wait_exit(spawn(args("serial"), err)), 0) << slurp(err);
+  std::vector<std::string> merge{RBCSTAB_CLI, "merge", "--out", (dir / "merged").string()};
+  for (int k = 0; k < 3; ++k) {
+    auto a = args("part");
+    a.push_back("--shard");
+    a.push_back(std::to_string(k) + "/3");
+    ASSERT_EQ(wait_exit(spawn(a, err)), 0) << slurp(err);
+    merge.push_back((dir / ("part.shard" + std::to_string(k) + "of3.json")).string());
+  }
+  std::vector<std::string> partial(merge.begin(), merge.end() - 1);
+  EXPECT_EQ(wait_exit(spawn(partial, err)), 1) << "a merge with a missing shard must fail";
+  ASSERT_EQ(wait_exit(spawn(merge, err)), 0) << slurp(err);
+  EXPECT_EQ(slurp((dir / "merged.csv").string()), slurp((dir / "serial.csv").string()));
+  EXPECT_EQ(slurp((dir / "merged.json").string()), slurp((dir / "serial.json").string()));
+  fs::remove_all(dir);
+}
+}  // namespace

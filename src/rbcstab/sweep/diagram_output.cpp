@@ -8,6 +8,7 @@
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/point_io.hpp"
+#include "rbcstab/sweep/trace.hpp"
 
 namespace rbcstab {
 
@@ -106,6 +107,39 @@ nlohmann::json diagram_json(const nlohmann::json& header, const DiagramSpec& spe
   return doc;
 }
 
+nlohmann::json agreement_json(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points) {
+  if (spec.x.axis == Axis::beta || spec.y.axis == Axis::beta) return nullptr;
+  try {
+    (void)asymptotic_verdict(base);
+  } catch (const InvalidArgument&) {
+    return nullptr;  // in plane: no exact asymptotic criterion
+  }
+  TraceResult t;
+  Agreement a;
+  try {
+    t = trace_boundary(base, spec);
+    a = asymptotic_agreement(base, spec, points, t);
+  } catch (const InvalidArgument& e) {
+    return {{"predictor", "asymptotic"}, {"error", e.what()}};  // e.g. part of the plane has Delta0 > Delta
+  }
+  nlohmann::json d = nlohmann::json::array();
+  for (const auto& x : a.verdict_disagreements)
+    d.push_back({{"index", x.index}, {"simulated", to_string(x.simulated)}, {"l_simulated", x.l_simulated},
+                 {"predicted", x.predicted_unstable ? "unstable" : "stable"}, {"l_predicted", x.l_predicted},
+                 {"distance_grid_steps", number_or_null(x.distance_steps)}, {"S", number_or_null(x.S)},
+                 {"alpha_over_alpha_init", x.alpha_over_alpha_init}});
+  const double n = a.points ? double(a.points) : 1.0;
+  return {{"predictor", "asymptotic: mu_l = Upsilon_l(sigma_R^eq), exact out-of-plane equilibrium"},
+          {"points", a.points},
+          {"verdict_fraction", double(a.verdict_matches) / n},
+          {"mode_fraction", double(a.mode_matches) / n},
+          {"verdict_disagreements", a.verdict_disagreements.size()},
+          {"beyond_one_grid_step", a.beyond_one_step},
+          {"boundary_pieces", t.curves.size()},
+          {"boundary_corners", t.corners.size()},
+          {"disagreements", d}};
+}
+
 DiagramSpec spec_from_json(const nlohmann::json& doc) {
   try {
     if (doc.at("format").get<std::string>() != "rbcstab-diagram")
@@ -164,7 +198,7 @@ MergeResult merge_diagrams(const std::vector<nlohmann::json>& docs) {
   MergeResult m;
   m.spec = spec_from_json(docs.front());
   m.header = docs.front();
-  for (const char* k : {"shard", "complete", "seconds_included", "summary", "points"}) m.header.erase(k);
+  for (const char* k : {"shard", "complete", "seconds_included", "summary", "points", "agreement"}) m.header.erase(k);
   const std::string hash = docs.front().value("config_hash", "");
   std::map<std::size_t, PointResult> all;
   for (std::size_t d = 0; d < docs.size(); ++d) {

@@ -25,6 +25,10 @@ nlohmann::json diagram_json(const nlohmann::json& header, const DiagramSpec& spe
                             const std::vector<PointResult>& points, const Shard& shard,
                             const DiagramOutputOptions& o = {});
 
+// The asymptotic predictor's agreement with the points (trace.hpp) as JSON; null when the scene is not out of
+// plane or beta is an axis (the criterion holds only for the out-of-plane equilibrium).
+nlohmann::json agreement_json(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points);
+
 // The spec and points back from a diagram_json document (throws InvalidArgument("merge", ...)).
 DiagramSpec spec_from_json(const nlohmann::json& doc);
 std::vector<PointResult> points_from_json(const nlohmann::json& doc, const DiagramSpec& spec);
