@@ -1,0 +1,73 @@
+#include "rbcstab/continuation/fold_curve.hpp"
+
+#include <cmath>
+#include <limits>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/SVD>
+
+#include "rbcstab/core/error.hpp"
+
+namespace rbcstab {
+
+void TwoParameterProblem::jacobian(const Eigen::VectorXd& x, double p1, double p2, Eigen::MatrixXd& J) const {
+  const Eigen::Index n = dimension();
+  J.resize(n, n);
+  Eigen::VectorXd xp = x, xm = x, Fp(n), Fm(n);
+  for (Eigen::Index j = 0; j < n; ++j) {
+    const double h = std::cbrt(std::numeric_limits<double>::epsilon()) * (1 + std::abs(x[j]));
+    xp[j] = x[j] + h;
+    xm[j] = x[j] - h;
+    residual(xp, p1, p2, Fp);
+    residual(xm, p1, p2, Fm);
+    J.col(j) = (Fp - Fm) / (xp[j] - xm[j]);
+    xp[j] = xm[j] = x[j];
+  }
+}
+
+FoldCurveProblem::FoldCurveProblem(const TwoParameterProblem& base, const SpecialPoint& lp, double p2) : base_(base) {
+  if (lp.type != SpecialPointType::LP || lp.status != LocationStatus::located)
+    throw InvalidArgument("lp", "a fold curve starts from a located LP point (got " + to_string(lp.type) + ", " +
+                                    to_string(lp.status) + ")");
+  const Eigen::Index n = base.dimension();
+  require(lp.x.size() == n, "lp", static_cast<double>(lp.x.size()), "a point of the base problem's dimension");
+  Eigen::MatrixXd J;
+  base.jacobian(lp.x, lp.p, p2, J);
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  b_ = svd.matrixU().col(n - 1);  // left singular vector of the smallest singular value
+  c_ = svd.matrixV().col(n - 1);
+  start_.resize(n + 1);
+  start_ << lp.x, lp.p;
+}
+
+double FoldCurveProblem::test_function(const Eigen::VectorXd& x, double p1, double p2) const {
+  const Eigen::Index n = base_.dimension();
+  Eigen::MatrixXd J;
+  base_.jacobian(x, p1, p2, J);
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n + 1, n + 1);
+  M.topLeftCorner(n, n) = J;
+  M.topRightCorner(n, 1) = b_;
+  M.bottomLeftCorner(1, n) = c_.transpose();
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(n + 1);
+  e[n] = 1;
+  return M.partialPivLu().solve(e)[n];
+}
+
+void FoldCurveProblem::residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const {
+  const Eigen::Index n = base_.dimension();
+  const Eigen::VectorXd x = X.head(n);
+  Eigen::VectorXd F(n);
+  base_.residual(x, X[n], p2, F);
+  R.resize(n + 1);
+  R.head(n) = F;
+  R[n] = test_function(x, X[n], p2);
+}
+
+Eigen::VectorXcd FoldCurveProblem::spectrum(const Eigen::VectorXd& X, double p2) const {
+  const Eigen::Index n = base_.dimension();
+  Eigen::MatrixXd J;
+  base_.jacobian(X.head(n), X[n], p2, J);
+  return Eigen::EigenSolver<Eigen::MatrixXd>(J, false).eigenvalues();
+}
+
+}  // namespace rbcstab

@@ -1,0 +1,60 @@
+#pragma once
+// Two-parameter continuation of a fold (LP) curve by minimal augmentation (Govaerts): unknowns
+// (x, p1), free parameter p2, equations F(x, p1, p2) = 0 and g(x, p1, p2) = 0 where g solves the
+// bordered system [J b; c^T 0] [v; g] = [0; 1]. g vanishes exactly where J = dF/dx is singular, and
+// the bordered matrix stays regular along the curve when b, c are the left/right null vectors at the
+// starting LP. Only one scalar is added, so the curve is a branch of the same engine.
+#include <string>
+
+#include "rbcstab/continuation/continuation.hpp"
+
+namespace rbcstab {
+
+// F(x, p1, p2): the problem with two free parameters.
+class TwoParameterProblem {
+ public:
+  virtual ~TwoParameterProblem() = default;
+  virtual Eigen::Index dimension() const = 0;
+  virtual void residual(const Eigen::VectorXd& x, double p1, double p2, Eigen::VectorXd& F) const = 0;
+  // dF/dx; default: central differences.
+  virtual void jacobian(const Eigen::VectorXd& x, double p1, double p2, Eigen::MatrixXd& J) const;
+  virtual std::string name1() const { return "p1"; }
+  virtual std::string name2() const { return "p2"; }
+};
+
+// The one-parameter problem in p1 at fixed p2 (where LP points are found first).
+class SliceProblem final : public ContinuationProblem {
+ public:
+  SliceProblem(const TwoParameterProblem& base, double p2) : base_(base), p2_(p2) {}
+  Eigen::Index dimension() const override { return base_.dimension(); }
+  void residual(const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) const override { base_.residual(x, p, p2_, F); }
+  void jacobian(const Eigen::VectorXd& x, double p, Eigen::MatrixXd& J) const override { base_.jacobian(x, p, p2_, J); }
+  std::string parameter_name() const override { return base_.name1(); }
+
+ private:
+  const TwoParameterProblem& base_;
+  double p2_;
+};
+
+class FoldCurveProblem final : public ContinuationProblem {
+ public:
+  // Starts from an LP of SliceProblem(base, p2) (status located); bordering vectors from its SVD.
+  FoldCurveProblem(const TwoParameterProblem& base, const SpecialPoint& lp, double p2);
+  Eigen::Index dimension() const override { return base_.dimension() + 1; }
+  void residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const override;
+  // Stability of the equilibria along the fold: the base Jacobian's eigenvalues (one is ~0).
+  Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p2) const override;
+  std::string parameter_name() const override { return base_.name2(); }
+  std::vector<std::string> parameter_names() const override { return {base_.name1(), base_.name2()}; }
+  std::vector<double> parameter_values(const Eigen::VectorXd& X, double p2) const override {
+    return {X[X.size() - 1], p2};
+  }
+  const Eigen::VectorXd& start() const { return start_; }  // (x, p1) at the LP
+  double test_function(const Eigen::VectorXd& x, double p1, double p2) const;  // g
+
+ private:
+  const TwoParameterProblem& base_;
+  Eigen::VectorXd b_, c_, start_;
+};
+
+}  // namespace rbcstab
