@@ -22,7 +22,7 @@ class MpiSession {
 
  private:
   int rank_ = 0, size_ = 1;
-  bool owner_ = false;
+  [[maybe_unused]] bool owner_ = false;  // this session called MPI_Init (unused without MPI)
 };
 
 }  // namespace rbcstab
