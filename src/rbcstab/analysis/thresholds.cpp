@@ -22,7 +22,7 @@ double l_star(double alpha) {
 
 double sigma_star(double alpha) {
   require_alpha(alpha);
-  return -4 * std::sqrt(alpha);
+  return alpha > 0 ? -4 * std::sqrt(alpha) : 0.0;  // +0, not -0, in the vesicle limit alpha = 0
 }
 
 double alpha_for_l_star(double l) {
