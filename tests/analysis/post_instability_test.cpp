@@ -136,8 +136,15 @@ TEST(PostInstability, AgainstSimulation) {
       if (beta > 0.1)
         std::printf("    in plane with the out-of-plane g (w0 = 1): integer %+.3g, continuous %+.3g\n",
                     post0.integer_mode.Delta2_tilde.value / bar - 1, post0.continuous.Delta2_tilde.value / bar - 1);
+      // Measured (docs/theory.md): OP integer 1e-9 (an exact steady state, reached to the tail's precision),
+      // OP continuous -4.5 % / -6.0 %; IP with the out-of-plane g: integer +1.2 % / +2.4 %, continuous -4.9 % / -2.2 %.
+      // Bounds keep those measurements from regressing silently.
       if (beta < 0.1) {
-        EXPECT_LT(std::abs(e_int), 1e-3);
+        EXPECT_LT(std::abs(e_int), 1e-6);
+        EXPECT_LT(std::abs(e_cont), 0.08);
+      } else {
+        EXPECT_LT(std::abs(post0.integer_mode.Delta2_tilde.value / bar - 1), 0.04);
+        EXPECT_LT(std::abs(post0.continuous.Delta2_tilde.value / bar - 1), 0.07);
       }
     }
 }
@@ -150,7 +157,8 @@ TEST(PostInstability, Fig6eTableSmall) {
   const std::vector<Fig6eRow> rows = fig6e_table(o);
   ASSERT_EQ(rows.size(), 2u);
   EXPECT_TRUE(rows[0].Delta2_bar.valid());
-  EXPECT_TRUE(rows[0].ratio_integer.valid());
+  ASSERT_TRUE(rows[0].ratio_integer.valid());
+  EXPECT_NEAR(rows[0].ratio_integer.value, 1, 1e-6);  // measured 1e-9 (tail mean over 10 at T = 500)
   EXPECT_NEAR(rows[0].ln_alpha, std::log(50.0), 1e-14);
   // alpha = 4 < 9: stable, no post-instability state; every field explains itself.
   EXPECT_FALSE(rows[1].Delta2_bar.valid());
