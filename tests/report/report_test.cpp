@@ -323,6 +323,25 @@ TEST(ReportHooks, SelftestDrawsHookFiguresOfTheDeclaredSize) {
   for (const auto& [file, size] : expected) EXPECT_EQ(png_size(dir / file), size) << file;
 }
 
+// amplitudes_at: at t = 0 the scene's initial amplitudes (exact: no step taken); at T the state of
+// an independent simulate() (different output grids: agreement to the integrator's tolerance).
+TEST(AmplitudesAt, StartsAtTheSceneAndEndsAtTheSimulation) {
+  const SceneFile sf = small_scene(0.4);
+  const AmplitudeSeries a = amplitudes_at(sf, {0.0, 2.5, sf.scene.T});
+  ASSERT_EQ(a.status, IntegrationStatus::success);
+  ASSERT_EQ(a.t.size(), 3u);
+  const InitialState init = initial_state(sf.scene);
+  for (int l = 2; l <= sf.scene.L; ++l)
+    for (int m = -l; m <= l; ++m) EXPECT_NEAR(std::abs(a.f[0].at(l, m) - init.f.at(l, m)), 0, 1e-15) << l << ' ' << m;
+  const SimulationResult r = simulate(sf.scene, sf.options);
+  const auto system = make_system(sf.scene.parameters, init, r.level.level);
+  const ModeAmplitudes fT = system->amplitudes(r.t_reached, r.y_final);
+  for (int l = 2; l <= sf.scene.L; ++l)
+    for (int m = -l; m <= l; ++m) EXPECT_NEAR(std::abs(a.f[2].at(l, m) - fT.at(l, m)), 0, 1e-6) << l << ' ' << m;
+  EXPECT_THROW(amplitudes_at(sf, {1.0, 0.5}), InvalidArgument);
+  EXPECT_THROW(amplitudes_at(sf, {sf.scene.T + 1}), InvalidArgument);
+}
+
 #ifdef RBCSTAB_CLI
 // The CLI's exit codes: 3 when python/matplotlib is missing (nothing written), 2 for an existing folder.
 TEST(ReportCli, ExitCodes) {
@@ -339,6 +358,35 @@ TEST(ReportCli, ExitCodes) {
   rc = std::system((base + "--frames 1 --output '" + (parent / "c").string() + "'" + quiet).c_str());
   EXPECT_EQ(WEXITSTATUS(rc), 2);
   EXPECT_FALSE(has_leftovers(parent));
+}
+
+// rbcstab shape: the t = 0 VTK holds the scene's initial shape (closed form through shape_radius).
+TEST(ShapeCli, WritesTheInitialShapeAtTimeZero) {
+  const fs::path parent = fresh_dir("shapecli");
+  const Cleanup cleanup{parent};
+  const std::string stem = (parent / "cell").string();
+  const int rc = std::system((std::string(RBCSTAB_CLI) + " shape --T 2 --L 3 --beta 0.7 --at 0 --at 2 --resolution 8 "
+                              "--format vtk --format ply --output '" + stem + "' > /dev/null 2>&1").c_str());
+  ASSERT_EQ(WEXITSTATUS(rc), 0);
+  EXPECT_TRUE(fs::exists(stem + "_t2.vtk"));
+  EXPECT_TRUE(fs::exists(stem + "_t2.ply"));
+  Scene s;
+  s.T = 2;
+  s.L = 3;
+  s.beta = 0.7;
+  const ModeAmplitudes f0 = initial_state(s).f;
+  std::istringstream in(read_file(stem + "_t0.vtk"));
+  std::string line, word, type;
+  for (int k = 0; k < 4; ++k) std::getline(in, line);
+  std::size_t n = 0;
+  in >> word >> n >> type;
+  ASSERT_EQ(n, 2u + 7u * 16u);
+  for (std::size_t k = 0; k < n; ++k) {
+    double x = 0, y = 0, z = 0;
+    in >> x >> y >> z;
+    const double rho = std::hypot(x, y, z);
+    EXPECT_NEAR(rho, shape_radius(f0, std::acos(std::clamp(z / rho, -1.0, 1.0)), std::atan2(y, x)), 1e-12);
+  }
 }
 #endif
 

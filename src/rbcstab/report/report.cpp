@@ -140,30 +140,17 @@ struct Frames {
   IntegrationStatus status = IntegrationStatus::success;
 };
 
-// Shapes along the run: the same level and initial state simulate() uses, sampled at the frames.
+// Shapes along the run on the frame grid.
 Frames shape_frames(const SceneFile& sf, const ReportOptions& o, double window) {
-  const Scene& s = sf.scene;
-  const InitialState init = initial_state(s);
-  const LevelChoice level = choose_level(s, init);
-  const auto system = make_system(s.parameters, init, level.level);
-  const double t0 = std::max(0.0, s.T - window);
-  std::vector<double> y0 = system->initial_state();
-  Frames f;
-  if (t0 > 0) {  // advance to the window's start without sampling
-    const std::vector<double> g{t0};
-    const IntegrationResult ir = integrate(*system, y0, 0.0, g, sf.options.integrator, {});
-    f.status = ir.status;
-    if (ir.status != IntegrationStatus::success) return f;
-    y0 = ir.y;
-  }
+  const double t0 = std::max(0.0, sf.scene.T - window);
   std::vector<double> grid;
-  for (int k = 0; k < o.frames; ++k) grid.push_back(t0 + (s.T - t0) * k / (o.frames - 1));
-  grid.back() = s.T;
-  const IntegrationResult ir = integrate(*system, y0, t0, grid, sf.options.integrator, [&](double t, std::span<const double> y) {
-    f.t.push_back(t);
-    f.grids.push_back(shape_on_grid(system->amplitudes(t, y), o.frame_shape));
-  });
-  f.status = ir.status;
+  for (int k = 0; k < o.frames; ++k) grid.push_back(t0 + (sf.scene.T - t0) * k / (o.frames - 1));
+  grid.back() = sf.scene.T;
+  const AmplitudeSeries series = amplitudes_at(sf, grid);
+  Frames f;
+  f.t = series.t;
+  for (const auto& a : series.f) f.grids.push_back(shape_on_grid(a, o.frame_shape));
+  f.status = series.status;
   return f;
 }
 
@@ -212,6 +199,28 @@ std::string import_hook(const std::string& src, const fs::path& dir, const std::
   return name;
 }
 }  // namespace
+
+AmplitudeSeries amplitudes_at(const SceneFile& sf, const std::vector<double>& times) {
+  const Scene& s = sf.scene;
+  s.validate();
+  sf.options.validate();
+  for (std::size_t k = 0; k < times.size(); ++k)
+    require(std::isfinite(times[k]) && times[k] >= 0 && times[k] <= s.T && (k == 0 || times[k] > times[k - 1]),
+            "t", times[k], "increasing times in [0, T]");
+  const InitialState init = initial_state(s);
+  AmplitudeSeries out;
+  out.level = choose_level(s, init);
+  const auto system = make_system(s.parameters, init, out.level.level);
+  const std::vector<double> y0 = system->initial_state();
+  const IntegrationResult ir =
+      integrate(*system, y0, 0.0, times, sf.options.integrator, [&](double t, std::span<const double> y) {
+        out.t.push_back(t);
+        out.f.push_back(system->amplitudes(t, y));
+      });
+  out.status = ir.status;
+  out.reason = ir.reason;
+  return out;
+}
 
 void ReportOptions::validate() const {
   if (output.empty()) throw InvalidArgument("output", "output: a folder path is required");

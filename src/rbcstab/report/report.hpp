@@ -45,6 +45,17 @@ struct ReportResult {
   double seconds = 0;
 };
 
+// The amplitudes f_{l,m}(t) at increasing times in [0, T], from the level and initial state
+// simulate() uses for the scene. A failed integration keeps the samples before it, with its status.
+struct AmplitudeSeries {
+  std::vector<double> t;
+  std::vector<ModeAmplitudes> f;
+  LevelChoice level;
+  IntegrationStatus status = IntegrationStatus::success;
+  std::string reason;
+};
+AmplitudeSeries amplitudes_at(const SceneFile& scene, const std::vector<double>& times);
+
 namespace detail {
 // Mean spacing of the maxima of x(t) over the second half of the samples (maxima reaching the
 // upper third of the swing); 0 when x is flat there or has fewer than 3 such maxima.
