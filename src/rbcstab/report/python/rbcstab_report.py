@@ -39,7 +39,7 @@ plt.rcParams.update({
 def read_csv(path):
     """Columns of a CSV file as {name: [float]} (non-numbers become nan)."""
     with open(path, newline="") as f:
-        rows = list(csv.reader(f))
+        rows = [r for r in csv.reader(f) if r and not r[0].startswith("#")]  # '#' lines are comments
     header, body = rows[0], rows[1:]
     cols = {h: [] for h in header}
     for r in body:
@@ -422,9 +422,14 @@ def plot_phase_diagram(csv_path, out, overlay_json=None, size_px=(900, 750), x=N
 def plot_delta2_comparison(csv_path, out, size_px=(750, 750), title=None):
     """Fig. 6e: theoretical Delta~_2 against the simulated mean Delta-bar_2, a diagonal guide, and (when the
     CSV has an alpha column) an inset of the ratio theory/simulation against ln alpha.
-    CSV columns: Delta2_theory, Delta2_simulation[, alpha][, lambda]."""
+    CSV columns: Delta2_theory, Delta2_simulation[, alpha][, lambda], or the CSV of `rbcstab post --fig6e`
+    (Delta2_tilde, Delta2_bar, alpha, lambda, ...; rows with n/a are skipped)."""
     d = read_csv(csv_path)
-    th, sim = d["Delta2_theory"], d["Delta2_simulation"]
+    th = d[_pick(d, ["Delta2_theory", "Delta2_tilde"])]  # `rbcstab post --fig6e` names: Delta2_tilde, Delta2_bar
+    sim = d[_pick(d, ["Delta2_simulation", "Delta2_bar"])]
+    keep = [k for k in range(len(th)) if math.isfinite(th[k]) and math.isfinite(sim[k])]  # n/a: stable or outside
+    d = {key: [v[k] for k in keep] for key, v in d.items()}
+    th, sim = [th[k] for k in keep], [sim[k] for k in keep]
     groups = {}
     for k in range(len(th)):
         key = d["lambda"][k] if "lambda" in d else None
@@ -550,11 +555,14 @@ def selftest(folder):
             {"label": r"$l = 3 \to 4$", "x": [-1, 6], "y": [-6, 1], "style": "dashed"},
             {"label": r"$\mathcal{C}_*$", "x": [-1, 6], "y": [1, 1], "style": "solid", "color": "tab:red"}]}, f)
     with open(p("delta2_comparison.csv"), "w") as f:
-        f.write("Delta2_theory,Delta2_simulation,alpha,lambda\n")
+        # The layout of `rbcstab post --fig6e` (comment line, n/a where stable or outside the domain).
+        f.write("# Fig. 6e: synthetic\nlambda,B,C,alpha,ln_alpha,l_s,l_Delta,Delta2_tilde,Delta2_bar,ratio\n")
         for k in range(8):
             a = math.exp(3 + 0.5 * k)
             s = 0.3 + 0.05 * k
-            f.write(f"{s * (1 + 0.3 / math.log(a))},{s},{a},{1 if k % 2 else 5}\n")
+            t = s * (1 + 0.3 / math.log(a))
+            f.write(f"{1 if k % 2 else 5},1,{1 / a},{a},{math.log(a)},3,3,{t},{s},{t / s}\n")
+        f.write("5,1,1,1,0,3,2,n/a,n/a,n/a\n")
     with open(p("bifurcation.json"), "w") as f:
         xs = [0.1 * k for k in range(21)]
         json.dump({"parameter": "ln_C", "measure": "r",
