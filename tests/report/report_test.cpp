@@ -319,7 +319,8 @@ TEST(ReportHooks, SelftestDrawsHookFiguresOfTheDeclaredSize) {
                           (dir / "log.txt").string() + "' 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << read_file((dir / "log.txt").string());
   const std::map<std::string, std::pair<int, int>> expected{
-      {"fig_phase_diagram.png", {900, 750}}, {"fig_delta2_theory.png", {750, 750}}, {"fig_bifurcation.png", {900, 675}}};
+      {"fig_phase_diagram.png", {900, 750}}, {"fig_delta2_theory.png", {750, 750}}, {"fig_bifurcation.png", {900, 675}},
+      {"fig_bifurcation_continue.png", {900, 675}}};  // from the layout of `rbcstab continue --json`
   for (const auto& [file, size] : expected) EXPECT_EQ(png_size(dir / file), size) << file;
 }
 

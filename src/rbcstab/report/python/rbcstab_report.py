@@ -457,12 +457,29 @@ def plot_delta2_comparison(csv_path, out, size_px=(750, 750), title=None):
     return save(fig, out, size_px)
 
 
+def from_continue_json(j, measure="r"):
+    """The output of `rbcstab continue --json` ({"branch": [points], "special_points": [...]}) as the
+    {"parameter", "measure", "branches", "points"} layout plot_bifurcation draws; other input unchanged."""
+    if "branch" not in j:
+        return j
+    pts = j["branch"]
+    state = {"r", "Psi", "stable", "n_unstable", "eigenvalues"}
+    params = [k for k in (pts[0] if pts else {}) if k not in state]
+    par = params[0] if params else "parameter"
+    num = lambda v: float("nan") if v is None else v  # noqa: E731  (null: not finite)
+    branch = {"label": "equilibria", "x": [num(p.get(par)) for p in pts], "y": [num(p.get(measure)) for p in pts],
+              "stable": [bool(p.get("stable", True)) for p in pts]}
+    points = [{"x": num(sp.get(par)), "y": num(sp.get(measure)), "label": sp.get("type", sp.get("name", ""))}
+              for sp in j.get("special_points", [])]
+    return {"parameter": par, "measure": measure, "branches": [branch], "points": points}
+
+
 def plot_bifurcation(json_path, out, size_px=(900, 675), title=None):
     """Branches against a parameter: stable parts solid, unstable dashed, special points labelled.
 
     JSON: {"parameter": "ln_C", "measure": "r", "branches": [{"label", "x": [...], "y": [...],
-    "stable": [bool per point]}], "points": [{"x", "y", "label"}]}."""
-    b = read_json(json_path)
+    "stable": [bool per point]}], "points": [{"x", "y", "label"}]}, or the output of `rbcstab continue --json`."""
+    b = from_continue_json(read_json(json_path))
     fig, ax = new_figure(size_px)
     cols = greys(max(2, len(b.get("branches", []))), 0.0, 0.7)
     for n, br in enumerate(b.get("branches", [])):
@@ -571,7 +588,14 @@ def selftest(folder):
                                 {"label": "mode 3", "x": xs[10:], "y": [0.6 + 0.3 * math.sqrt(x - 1.0) for x in xs[10:]],
                                  "stable": [True] * 11}],
                    "points": [{"x": 1.0, "y": 0.6, "label": "BP"}]}, f)
-    out = [plot_phase_diagram(p("phase_diagram.csv"), p("fig_phase_diagram.png"), p("phase_diagram_overlay.json")),
+    with open(p("continue.json"), "w") as f:  # the layout of `rbcstab continue --json`
+        xs = [0.1 * k for k in range(21)]
+        json.dump({"branch": [{"C": x, "r": 0.5 + 0.2 * x, "Psi": 0.3, "stable": x < 1.2, "n_unstable": int(x >= 1.2)}
+                              for x in xs],
+                   "special_points": [{"type": "BP", "name": "branch point", "C": 1.2, "r": 0.74, "Psi": 0.3}],
+                   "status": "success"}, f)
+    out = [plot_bifurcation(p("continue.json"), p("fig_bifurcation_continue.png")),
+           plot_phase_diagram(p("phase_diagram.csv"), p("fig_phase_diagram.png"), p("phase_diagram_overlay.json")),
            plot_delta2_comparison(p("delta2_comparison.csv"), p("fig_delta2_theory.png")),
            plot_bifurcation(p("bifurcation.json"), p("fig_bifurcation.png"))]
     with open(p("figures.json"), "w") as f:
