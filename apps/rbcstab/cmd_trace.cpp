@@ -61,6 +61,9 @@ int run(const TraceCliOptions& o) {
   }
   nlohmann::json corners = nlohmann::json::array();
   for (const auto& k : t.corners) corners.push_back({{"x", k.x}, {"y", k.y}, {"l_from", k.l_from}, {"l_to", k.l_to}});
+  nlohmann::json overlays = nlohmann::json::array();
+  for (const Overlay& ov : analytic_overlays(sf.scene, spec, o.trace.lines))
+    overlays.push_back({{"name", ov.name}, {"x", ov.x}, {"y", ov.y}});
   nlohmann::json doc{{"format", "rbcstab-trace"},
                      {"version", 1},
                      {"scene", to_json(sf.scene)},
@@ -70,6 +73,7 @@ int run(const TraceCliOptions& o) {
                      {"options", {{"lines", o.trace.lines}, {"samples", o.trace.samples}, {"bisections", o.trace.bisections}}},
                      {"curves", curves},
                      {"corners", corners},
+                     {"analytic_lines", overlays},
                      {"evaluations", t.evaluations},
                      {"seconds", t.seconds}};
   if (!o.diagram.empty()) {

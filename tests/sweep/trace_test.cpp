@@ -113,3 +113,30 @@ TEST(Trace, BoundarySeparatesSimulatedVerdictsOnASmallGrid) {
 
 }  // namespace
 }  // namespace rbcstab
+
+namespace rbcstab {
+namespace {
+// The overlay alpha lines are where l_* (analysis::l_star, the forward formula) takes its value.
+TEST(Trace, AnalyticOverlaysLieOnTheirDefiningLines) {
+  const Scene base = op_scene(1.0, 1.0);
+  const DiagramSpec plane = fig4_plane();
+  const std::vector<Overlay> lines = analytic_overlays(base, plane, 50);
+  bool saw_l25 = false, saw_cminus = false;
+  for (const Overlay& o : lines) {
+    ASSERT_EQ(o.x.size(), o.y.size());
+    if (o.name == "l_star=2.5") {
+      saw_l25 = true;
+      ASSERT_FALSE(o.x.empty());
+      for (std::size_t k = 0; k < o.x.size(); ++k)
+        EXPECT_NEAR(l_star(plane_scene(base, plane, o.x[k], o.y[k]).parameters.alpha()), 2.5, 1e-12);
+    }
+    if (o.name == "C_star_minus") saw_cminus = !o.x.empty();  // Lambda ~ 0.7 < 1: C_*^- exists
+  }
+  EXPECT_TRUE(saw_l25);
+  EXPECT_TRUE(saw_cminus);
+  DiagramSpec other = plane;
+  other.x.axis = Axis::Delta;
+  EXPECT_TRUE(analytic_overlays(base, other, 10).empty());
+}
+}  // namespace
+}  // namespace rbcstab

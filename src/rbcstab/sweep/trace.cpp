@@ -183,6 +183,44 @@ TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane_spec, con
   return res;
 }
 
+std::vector<Overlay> analytic_overlays(const Scene& base, const DiagramSpec& plane, int n) {
+  require(n >= 2 && n <= 1'000'000, "n", n, "an integer in [2, 1000000]");
+  std::vector<Overlay> out;
+  const AxisRange& X = plane.x;
+  const AxisRange& Y = plane.y;
+  auto xs = [&](int k) { return X.min + (X.max - X.min) * double(k) / double(n - 1); };
+  auto inside = [&](double y) { return std::isfinite(y) && y >= std::min(Y.min, Y.max) && y <= std::max(Y.min, Y.max); };
+  if (X.axis == Axis::lnB && Y.axis == Axis::lnC && plane.alpha == 0) {
+    auto alpha_line = [&](const std::string& name, double alpha) {
+      Overlay o{name, {}, {}};
+      for (int k = 0; k < n; ++k)
+        if (const double y = xs(k) - std::log(alpha); inside(y)) o.x.push_back(xs(k)), o.y.push_back(y);
+      out.push_back(o);
+    };
+    alpha_line("l_star=2.5", alpha_for_l_star(2.5));
+    for (int l = 3; l < base.L; ++l) alpha_line("l_star=" + std::to_string(l) + ".5", alpha_for_l_star(l + 0.5));
+    if (const Quantity ai = alpha_init(base.parameters); ai.valid()) alpha_line("alpha_init", ai.value);
+    Overlay cm{"C_star_minus", {}, {}}, cp{"C_star_plus", {}, {}};
+    for (int k = 0; k < n; ++k) {
+      const Parameters p = plane_scene(base, plane, xs(k), 0.5 * (Y.min + Y.max)).parameters;
+      if (const Quantity q = C_star_minus(p); q.valid() && q.value > 0 && inside(std::log(q.value)))
+        cm.x.push_back(xs(k)), cm.y.push_back(std::log(q.value));
+      if (const Quantity q = C_star_plus(p, stress_free_r0(base)); q.valid() && q.value > 0 && inside(std::log(q.value)))
+        cp.x.push_back(xs(k)), cp.y.push_back(std::log(q.value));
+    }
+    out.push_back(cm);
+    out.push_back(cp);
+  } else if (X.axis == Axis::lnC && Y.axis == Axis::lambda && plane.alpha > 0) {
+    Overlay o{"lambda_star_minus", {}, {}};
+    for (int k = 0; k < n; ++k)
+      if (const Quantity q = lambda_star_minus(plane.alpha, std::exp(xs(k)), base.parameters.Delta);
+          q.valid() && inside(q.value))
+        o.x.push_back(xs(k)), o.y.push_back(q.value);
+    out.push_back(o);
+  }
+  return out;
+}
+
 Agreement asymptotic_agreement(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points,
                                const TraceResult& boundary) {
   Agreement a;

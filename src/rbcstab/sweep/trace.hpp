@@ -55,6 +55,16 @@ struct TraceResult {
 
 TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane, const TraceOptions& options = {});
 
+// The paper's analytic lines on the same plane, for overlay (Sec. IV, Appendix D), sampled at n values of x;
+// points where a formula is outside its domain are left out. ln B - ln C planes: l_* = 2.5 and
+// l_* = l + 1/2 (l = 3..L-1) as alpha lines, alpha_*^init, C_*^- (Lambda < 1) and C_*^+ (Lambda > 1, corrected
+// form); ln C - lambda planes at fixed alpha: lambda_*^-(C). Other planes: none.
+struct Overlay {
+  std::string name;
+  std::vector<double> x, y;
+};
+std::vector<Overlay> analytic_overlays(const Scene& base, const DiagramSpec& plane, int n = 200);
+
 // Agreement of the asymptotic predictor with simulated points (issue 5 point 3).
 struct Disagreement {
   std::size_t index = 0;
