@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <string>
 
 #include "integrate/run_helpers.hpp"
@@ -102,6 +103,66 @@ TEST(Failure, IntegrateRejectsBadGrid) {
   EXPECT_THROW(integrate(*sys, sys->initial_state(), 0.0, bad, {}, {}), InvalidArgument);
   const std::vector<double> y_wrong(3, 0.0), grid{1.0};
   EXPECT_THROW(integrate(*sys, y_wrong, 0.0, grid, {}, {}), InvalidArgument);
+}
+
+
+// A one-dimensional test system y' = 1 - y whose F is NaN where y > y_bad or t > t_bad.
+class ToySystem final : public System {
+ public:
+  ToySystem(double y_bad, double t_bad) : y_bad_(y_bad), t_bad_(t_bad) {}
+  ModelLevel level() const override { return ModelLevel::full; }
+  std::size_t dimension() const override { return 1; }
+  int L() const override { return 2; }
+  void rhs(double t, std::span<const double> y, std::span<double> dydt) const override {
+    dydt[0] = (y[0] > y_bad_ || t > t_bad_) ? std::numeric_limits<double>::quiet_NaN() : 1 - y[0];
+  }
+  void jacobian(double t, std::span<const double> y, StructuredJacobian& J, std::span<double> dfdt) const override {
+    J.resize(1);
+    J.diag[0] = (y[0] > y_bad_ || t > t_bad_) ? std::numeric_limits<double>::quiet_NaN() : -1.0;
+    dfdt[0] = 0;
+  }
+  Observation observe(double, std::span<const double>) const override { return {}; }
+  std::vector<double> initial_state() const override { return {0.0}; }
+  ModeAmplitudes amplitudes(double, std::span<const double>) const override { return ModeAmplitudes(2); }
+
+ private:
+  double y_bad_, t_bad_;
+};
+
+TEST(Failure, NonFiniteTrialStateRejectsTheStepNotTheRun) {
+  // y' = 1 - y from 0 stays below 1, but a first trial step of h = 50 overshoots far past 1.5 where F
+  // is NaN: that trial must be rejected and retried with a smaller step (regression: such a trial
+  // used to end the run as non_finite_state; seen with msbdf on the modal level at rtol 1e-4).
+  const ToySystem sys(1.5, INFINITY);
+  const std::vector<double> grid{20.0};
+  for (Stepper st : {Stepper::rk8pd, Stepper::rosenbrock, Stepper::msbdf}) {
+    IntegratorOptions o;
+    o.stepper = st;
+    o.h_init = 50;
+    const IntegrationResult r = integrate(sys, sys.initial_state(), 0.0, grid, o, {});
+    EXPECT_EQ(r.status, IntegrationStatus::success) << to_string(st) << ": " << r.reason;
+    // y(20) = 1 - e^-20, to the tolerance.
+    EXPECT_NEAR(r.y[0], 1 - std::exp(-20.0), 1e-6) << to_string(st);
+  }
+}
+
+TEST(Failure, PersistentNonFiniteRhsEndsWithStatus) {
+  // F is NaN for every t > 0.5: no step can pass it. The run ends there with non_finite_state and
+  // a reason; it does not hang.
+  const ToySystem sys(INFINITY, 0.5);
+  const std::vector<double> grid{0.25, 1.0};
+  for (Stepper st : {Stepper::rk8pd, Stepper::rosenbrock, Stepper::msbdf}) {
+    IntegratorOptions o;
+    o.stepper = st;
+    int samples = 0;
+    const IntegrationResult r = integrate(sys, sys.initial_state(), 0.0, grid, o, [&](double, std::span<const double>) { ++samples; });
+    EXPECT_EQ(r.status, IntegrationStatus::non_finite_state) << to_string(st) << ": " << r.reason;
+    EXPECT_NE(r.reason.find("non-finite"), std::string::npos) << r.reason;
+    EXPECT_EQ(samples, 1) << to_string(st);
+    EXPECT_LE(r.t_reached, 0.5 + 1e-9);
+    EXPECT_GT(r.t_reached, 0.25);
+    EXPECT_TRUE(std::isfinite(r.y[0]));
+  }
 }
 
 }  // namespace

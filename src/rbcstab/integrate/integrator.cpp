@@ -44,8 +44,16 @@ int gsl_rhs(double t, const double y[], double dydt[], void* params) {
   ++ctx->counters->rhs_evaluations;
   const std::size_t n = ctx->system->dimension();
   ctx->system->rhs(t, {y, n}, {dydt, n});
+  // A non-finite F at a trial state (e.g. an implicit stepper's Newton iterate after an over-long
+  // step) rejects that trial: GSL_FAILURE makes gsl_odeiv2_evolve_apply halve the step and retry,
+  // whereas GSL_EBADFUNC would end the run at once. A state that stays non-finite as h shrinks ends
+  // the run as non_finite_state (see integrate()).
   for (std::size_t i = 0; i < n; ++i)
-    if (!std::isfinite(dydt[i])) return GSL_EBADFUNC;
+    if (!std::isfinite(dydt[i])) {
+      ++ctx->nonfinite_rhs;
+      ctx->nonfinite_t = t;
+      return GSL_FAILURE;
+    }
   return GSL_SUCCESS;
 }
 
@@ -156,9 +164,12 @@ IntegrationResult integrate(const System& system, std::span<const double> y0, do
   for (std::size_t k = 0; k < grid.size() && result.status == IntegrationStatus::success; ++k) {
     const double target = grid[k];
     while (t < target) {
+      const std::size_t nonfinite_before = ctx.nonfinite_rhs;
       const int rc = gsl_odeiv2_evolve_apply(driver->e, driver->c, driver->s, &sys, &t, target, &h, y.data());
-      if (rc == GSL_EBADFUNC) {
-        fail(IntegrationStatus::non_finite_state, "the right-hand side became non-finite at t = " + format_value(t));
+      if (rc == GSL_EBADFUNC || (rc != GSL_SUCCESS && ctx.nonfinite_rhs > nonfinite_before)) {
+        fail(IntegrationStatus::non_finite_state,
+             "the right-hand side became non-finite at t = " + format_value(ctx.nonfinite_t) +
+                 " and stayed so as the trial step shrank (h = " + format_value(h) + ")");
         break;
       }
       if (rc != GSL_SUCCESS) {
@@ -174,6 +185,11 @@ IntegrationResult integrate(const System& system, std::span<const double> y0, do
         break;
       }
       if (on_step) on_step(t, y);
+      if (t < target && std::abs(h) < options.h_min && ctx.nonfinite_rhs > nonfinite_before) {
+        fail(IntegrationStatus::non_finite_state, "the right-hand side is non-finite just beyond t = " + format_value(t) +
+                                                      " (the step size fell to " + format_value(h) + ")");
+        break;
+      }
       if (t < target && std::abs(h) < options.h_min) {
         fail(IntegrationStatus::step_size_underflow, "the step size fell to " + format_value(h) + " < h_min = " +
                                                          format_value(options.h_min) + " at t = " + format_value(t));

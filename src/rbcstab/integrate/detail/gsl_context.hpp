@@ -11,6 +11,8 @@ struct GslContext {
   const System* system = nullptr;
   IntegrationCounters* counters = nullptr;
   StructuredJacobian jacobian;  // scratch for the dense-Jacobian callback
+  std::size_t nonfinite_rhs = 0;  // trial states where F was not finite (each rejects its trial step)
+  double nonfinite_t = 0;         // time of the last such trial state
 };
 
 // The linearly implicit Rosenbrock stepper, as a GSL step type.
