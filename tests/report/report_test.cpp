@@ -343,6 +343,34 @@ TEST(AmplitudesAt, StartsAtTheSceneAndEndsAtTheSimulation) {
   EXPECT_THROW(amplitudes_at(sf, {sf.scene.T + 1}), InvalidArgument);
 }
 
+// The paper-figure scenes this module owns load, validate, and hold the panels' parameters.
+TEST(PaperScenes, Fig2Fig3Fig6ScenesLoadWithThePapersParameters) {
+  int count = 0;
+  for (const auto& e : fs::directory_iterator(RBCSTAB_SCENES_DIR)) {
+    const std::string name = e.path().filename().string();
+    if (!(name.starts_with("fig2_") || name.starts_with("fig3_") || name.starts_with("fig6_"))) continue;
+    const SceneFile sf = load_scene(e.path().string());
+    EXPECT_NO_THROW(sf.scene.validate()) << name;
+    const Parameters& p = sf.scene.parameters;
+    EXPECT_EQ(p.C, 0.04) << name;  // every Fig. 2, 3, 6 panel: C = 0.04, Delta0 = 0.01 (captions)
+    EXPECT_EQ(p.Delta0, 0.01) << name;
+    const bool in_plane = name.find("_ip") != std::string::npos;
+    EXPECT_EQ(sf.scene.beta, in_plane ? 1.5707963267948966 : 0.001) << name;
+    EXPECT_EQ(sf.scene.name + ".toml", name);
+    if (!name.starts_with("fig2_")) {  // Figs. 3, 6: L = 10, B = 2, Delta = 1, T = 500
+      EXPECT_EQ(sf.scene.L, 10) << name;
+      EXPECT_EQ(p.B, 2.0) << name;
+      EXPECT_EQ(p.Delta, 1.0) << name;
+      EXPECT_EQ(sf.scene.T, 500.0) << name;
+    } else {
+      EXPECT_EQ(sf.scene.model, ModelLevel::reduced) << name;
+      EXPECT_EQ(p.lambda, 5.0) << name;
+    }
+    ++count;
+  }
+  EXPECT_EQ(count, 4 + 2 + 8);
+}
+
 #ifdef RBCSTAB_CLI
 // The CLI's exit codes: 3 when python/matplotlib is missing (nothing written), 2 for an existing folder.
 TEST(ReportCli, ExitCodes) {

@@ -92,6 +92,21 @@ def plot_reduced_dynamics(reduced_csv, full_csv, out, size_px=(1200, 450), title
     for data, label, style in series:
         ax_r.plot(data["t"], data["r"], label=label, **style)
         ax_p.plot(data["t"], data["Psi"], label=label, **style)
+    # Many oscillations turn the curves into a band: show the first 10 (the data files hold the whole run).
+    t0 = series[0][0]["t"] if series else []
+    r0 = series[0][0]["r"] if series else []
+    peaks = [t0[k] for k in range(1, len(r0) - 1) if r0[k] > r0[k - 1] and r0[k] >= r0[k + 1]
+             and r0[k] > min(r0) + 0.67 * (max(r0) - min(r0))]
+    if len(peaks) > 15:
+        t_end = peaks[10]
+        for ax in (ax_r, ax_p):
+            ax.set_xlim(0, t_end)
+        ax_r.set_title(f"(a) amplitude $r(t)$: first 10 of {len(peaks)} oscillations (all in the CSV)",
+                       loc="left", fontsize=11)
+        visible = [v for data, _, _ in series for tt, v in zip(data["t"], data["Psi"]) if tt <= t_end]
+        if visible:
+            pad = 0.05 * (max(visible) - min(visible) + 1e-9)
+            ax_p.set_ylim(min(visible) - pad, max(visible) + pad)
     ax_r.set_xlabel("$t$")
     ax_r.set_ylabel("$r$")
     ax_p.set_xlabel("$t$")
