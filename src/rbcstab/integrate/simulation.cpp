@@ -104,7 +104,11 @@ SimulationResult simulate(const Scene& scene, const SimulationOptions& options) 
         res.trajectory.Psi.push_back(psi);
       }
     }
-    if (t >= tail_start - 1e-12 * scene.T) {
+    // Only the uniform tail grid feeds the averages: user samples inside the window (dt not a
+    // multiple of the tail spacing) would break Simpson's rule and drop it to the trapezoid rule.
+    const double tail_h = (scene.T - tail_start) / kTailIntervals;
+    const double tail_k = tail_h > 0 ? (t - tail_start) / tail_h : 0.0;
+    if (t >= tail_start - 1e-12 * scene.T && std::abs(tail_k - std::round(tail_k)) <= 1e-6) {
       tail_t.push_back(t);
       tail_D.push_back(o.Delta_l);
       tail_sigma.push_back(o.sigma);
