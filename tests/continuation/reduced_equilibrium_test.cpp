@@ -94,6 +94,59 @@ TEST(ReducedEquilibrium, StartFromRelaxedSimulation) {
   EXPECT_NEAR(g.Psi, c.Psi, 1e-12);
 }
 
+TEST(ReducedEquilibrium, VesicleLimitTankTreadingEndsAtLambdaOne) {
+  // S = inf (Delta0 = 0), paper Eq. ss_red: for Lambda < 1 the equilibria are r = 1, Psi = +-arccos
+  // Lambda (+ stable, - unstable); they merge at Lambda = 1, where the r = 1/Lambda family
+  // (w != 0) is born: a fold of the r = 1 branch that is also a branch point, both at Lambda = 1.
+  Scene s = op_scene();
+  s.parameters.lambda = 5;
+  s.parameters.Delta = 0.2;  // Lambda = 0.85
+  s.parameters.Delta0 = 0;
+  const ReducedEquilibriumProblem pr(s, ContinuationParameter::Lambda);
+  const double L0 = s.parameters.Lambda();
+  Eigen::VectorXd y(3);
+  y << L0, -std::sqrt(1 - L0 * L0), 0;  // z = e^{-i Psi}, cos Psi = Lambda
+  ContinuationOptions o;
+  o.p_min = 0.3;
+  o.p_max = 3;
+  o.max_step = 0.05;
+  const Branch b = continue_branch(pr, y, L0, o);
+  ASSERT_EQ(b.status, ContinuationStatus::completed) << b.message;
+  EXPECT_DOUBLE_EQ(b.points.back().p, 0.3);  // came back on the mirror branch
+  for (const auto& pt : b.points) {
+    const PolarState g = polar(pt.x);
+    EXPECT_NEAR(g.r, 1.0, 1e-12);
+    EXPECT_NEAR(std::cos(g.Psi), pt.p, 1e-10);
+    EXPECT_EQ(pt.stable, g.Psi > 0) << "Lambda = " << pt.p;
+  }
+  bool lp = false, bp = false;
+  for (const auto& sp : b.special_points) {
+    EXPECT_NEAR(sp.p, 1.0, 1e-8) << to_string(sp.type);
+    lp = lp || sp.type == SpecialPointType::LP;
+    bp = bp || sp.type == SpecialPointType::BP;
+    EXPECT_NE(sp.type, SpecialPointType::HB);
+  }
+  EXPECT_TRUE(lp);
+  EXPECT_TRUE(bp);
+
+  // The r = 1/Lambda family for Lambda > 1 is a centre (eigenvalues +-i omega): neutral, so no
+  // spurious HB may be read from rounding noise in the spectral test function.
+  s.parameters.Delta = 1;  // Lambda = 1.9
+  const ReducedEquilibriumProblem pr2(s, ContinuationParameter::Lambda);
+  const double L1 = s.parameters.Lambda();
+  Eigen::VectorXd y2(3);
+  y2 << 1 / L1, 0, std::sqrt(1 - 1 / (L1 * L1));
+  o.p_min = 1.05;
+  o.direction = Direction::both;
+  const Branch c = continue_branch(pr2, y2, L1, o);
+  ASSERT_EQ(c.status, ContinuationStatus::completed) << c.message;
+  EXPECT_TRUE(c.special_points.empty());
+  for (const auto& pt : c.points) {
+    EXPECT_NEAR(polar(pt.x).r, 1 / pt.p, 1e-10);
+    EXPECT_NEAR(pt.spectrum[0].real(), 0.0, 1e-12);
+  }
+}
+
 TEST(ReducedEquilibrium, InPlaneRestShapeIsRejected) {
   Scene s = op_scene();
   s.beta = M_PI / 2;

@@ -174,6 +174,19 @@ class Engine {
     return event >= 0 ? q.events[static_cast<std::size_t>(event)] : q.tests[static_cast<std::size_t>(slot)];
   }
 
+  // Whether the eigenvalue/multiplier that test slot k watches is within stability_tol of critical.
+  bool neutral(const Pt& q, int slot) const {
+    const Eigen::VectorXcd& s = q.spectrum;
+    for (Eigen::Index i = 0; i < s.size(); ++i) {
+      double d = 0;
+      if (!cycles_) d = s[i].imag() != 0 ? std::abs(s[i].real()) : std::numeric_limits<double>::infinity();
+      else if (slot == 2) d = s[i].imag() != 0 ? std::abs(std::abs(s[i]) - 1) : std::numeric_limits<double>::infinity();
+      else d = std::abs(s[i] + 1.0);
+      if (d <= o_.stability_tol) return true;
+    }
+    return false;
+  }
+
   SpecialPointType slot_type(int slot) const {
     switch (slot) {
       case 0: return cycles_ ? SpecialPointType::LPC : SpecialPointType::LP;
@@ -266,6 +279,9 @@ class Engine {
       for (int k = 0; k < kSlots; ++k) {
         const double ga = a.tests[static_cast<std::size_t>(k)], gb = b.tests[static_cast<std::size_t>(k)];
         if (std::isnan(ga) || std::isnan(gb) || !(ga * gb < 0)) continue;
+        // A neutral spectrum on both sides (a centre, e.g. the conservative S = inf reduced system)
+        // makes the spectral products pure rounding noise: no crossing can be read from them.
+        if (k >= 2 && a.n_unstable == b.n_unstable && neutral(a, k) && neutral(b, k)) continue;
         any = true;
         SpecialPoint sp;
         if (locate(a, b, k, -1, after, sp)) found.push_back(sp);
