@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # One-step set-up for a fresh Debian 12 machine: installs the missing Debian packages (needs root,
 # or sudo), builds rbcstab in Release with warnings as errors, then
-#   run  : runs the main job (the report of the default scene; see README)
+#   run  : runs the main job (summary and report of the default scene, or of the scene flags given after 'run')
 #   test : runs the default test suite (ctest, every label except 'slow')
 #   build: only installs and builds
 # Environment: RBCSTAB_BUILD_DIR (default build/release), RBCSTAB_JOBS (default: number of cores).
@@ -38,8 +38,10 @@ cmake --build "$build" -j "$jobs"
 
 case "$mode" in
   run)
-    # The main job: the report of the default scene (paper Fig. 3, out of plane) into out/default.
+    # The main job on the default scene (paper Fig. 3, out of plane): the summary (regime, thresholds,
+    # predictions against simulation) on stdout, then the full report with figures and 3-D shape.
     "$build/bin/rbcstab" summary "$@"
+    "$build/bin/rbcstab" report --output "${RBCSTAB_REPORT_DIR:-$root/out/default}" --overwrite "$@"
     ;;
   test)
     # OpenMPI refuses to run as root unless told; CI runs as root.
