@@ -2,6 +2,8 @@
 // JSON views of analysis results for the thresholds, post and summary commands: a quantity outside its domain
 // is null with "<key>_reason" beside it, never silently missing.
 #include <complex>
+#include <iomanip>
+#include <sstream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -28,6 +30,17 @@ inline nlohmann::json to_json(const ModePrediction& m) {
 }
 
 inline nlohmann::json to_json(const std::complex<double>& z) { return {number_or_null(z.real()), number_or_null(z.imag())}; }
+
+// A quantity for text output: its value, or "n/a (reason)" outside its domain.
+inline std::string show(const Quantity& q) {
+  std::ostringstream s;
+  s << std::setprecision(6);
+  if (q.valid())
+    s << q.value;
+  else
+    s << "n/a (" << q.reason << ")";
+  return s.str();
+}
 
 // "3, 4" or "none"
 inline std::string mode_list(const std::vector<int>& modes) {

@@ -40,16 +40,6 @@ nlohmann::json to_json(const Delta2Prediction& d) {
   return j;
 }
 
-std::string show(const Quantity& q) {
-  std::ostringstream s;
-  s << std::setprecision(6);
-  if (q.valid())
-    s << q.value;
-  else
-    s << "n/a (" << q.reason << ")";
-  return s.str();
-}
-
 int run_fig6e(const PostOptions& o) {
   Fig6eOptions f;
   if (!o.fig6e_lambda.empty()) f.lambdas = o.fig6e_lambda;

@@ -5,6 +5,7 @@
 #include <memory>
 #include <sstream>
 
+#include "analysis_json.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/analysis/post_instability.hpp"
@@ -16,22 +17,6 @@
 namespace rbcstab::cli {
 
 namespace {
-std::string show(const Quantity& q) {
-  std::ostringstream s;
-  s << std::setprecision(6);
-  if (q.valid())
-    s << q.value;
-  else
-    s << "n/a (" << q.reason << ")";
-  return s.str();
-}
-
-std::string modes(const std::vector<int>& m) {
-  if (m.empty()) return "none";
-  std::string s;
-  for (std::size_t i = 0; i < m.size(); ++i) s += (i ? ", " : "") + std::to_string(m[i]);
-  return s;
-}
 
 // The analysis of issue 3: regime, thresholds, the three predictors and Delta~2 predicted vs simulated.
 void print_analysis(std::ostream& out, const Scene& s, const SimulationResult& r, double tail_window) {
@@ -45,12 +30,12 @@ void print_analysis(std::ostream& out, const Scene& s, const SimulationResult& r
       << ", alpha_*^init = " << show(alpha_init(p)) << "\n";
   if (s.L >= 3) out << "             surviving integer mode (largest sigma_l^c) l_s = " << surviving_mode(alpha, s.L) << "\n";
   out << "Predictors   (a) asymptotic     <sigma_R> = " << show(pr.sigma_R_asymptotic) << " ("
-      << pr.asymptotic_source << "): unstable " << modes(pr.asymptotic.unstable) << ", l_Delta = " << pr.asymptotic.l_Delta
+      << pr.asymptotic_source << "): unstable " << mode_list(pr.asymptotic.unstable) << ", l_Delta = " << pr.asymptotic.l_Delta
       << "\n";
   out << "             (b) finite horizon <sigma_R>_T = " << pr.horizon.mean_sigma_R << " over [0, " << pr.horizon.T
-      << "]: unstable " << modes(pr.finite_horizon.unstable) << ", l_Delta = " << pr.finite_horizon.l_Delta
+      << "]: unstable " << mode_list(pr.finite_horizon.unstable) << ", l_Delta = " << pr.finite_horizon.l_Delta
       << " (linear growth exp(2 G_l))\n";
-  out << "             (c) simulation     unstable " << modes(pr.simulation.unstable) << ", l_Delta = " << pr.simulation.l_Delta
+  out << "             (c) simulation     unstable " << mode_list(pr.simulation.unstable) << ", l_Delta = " << pr.simulation.l_Delta
       << "\n";
   if (s.L >= 3) {
     const PostInstability post = post_instability(p, s.L, 0.0);

@@ -23,16 +23,6 @@ struct ThresholdsOptions {
   bool exact_C_star = false;
 };
 
-std::string show(const Quantity& q) {
-  std::ostringstream s;
-  s << std::setprecision(6);
-  if (q.valid())
-    s << q.value;
-  else
-    s << "n/a (" << q.reason << ")";
-  return s.str();
-}
-
 int run(const ThresholdsOptions& o) {
   const SceneFile sf = o.scene.resolve();
   const Scene& s = sf.scene;
