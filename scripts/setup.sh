@@ -40,8 +40,10 @@ case "$mode" in
   run)
     # The main job on the default scene (paper Fig. 3, out of plane): the summary (regime, thresholds,
     # predictions against simulation) on stdout, then the full report with figures and 3-D shape.
+    report_dir="${RBCSTAB_REPORT_DIR:-$root/out/default}"
+    mkdir -p "$(dirname "$report_dir")"
     "$build/bin/rbcstab" summary "$@"
-    "$build/bin/rbcstab" report --output "${RBCSTAB_REPORT_DIR:-$root/out/default}" --overwrite "$@"
+    "$build/bin/rbcstab" report --output "$report_dir" --overwrite "$@"
     ;;
   test)
     # OpenMPI refuses to run as root unless told; CI runs as root.
