@@ -96,6 +96,27 @@ TEST(Failure, BadOptionsThrowNamingTheField) {
   EXPECT_THROW(model_level_from_string("foo"), InvalidArgument);
 }
 
+TEST(Failure, DenseImplicitSteppersRefuseHugeSystems) {
+  // Full level at L = 40: 2 (41^2 - 4) = 3354 unknowns. A dense GSL Jacobian would need 90 MB per matrix;
+  // the refusal names the stepper and the way out, and the structured Rosenbrock stepper is accepted.
+  Scene s = fig3_scene(0.001);
+  s.L = 40;
+  s.T = 0.01;
+  s.dt = 0.01;
+  s.model = ModelLevel::full;
+  SimulationOptions o;
+  o.integrator.stepper = Stepper::msbdf;
+  try {
+    (void)simulate(s, o);
+    ADD_FAILURE() << "msbdf on 3354 unknowns was not refused";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "stepper");
+    EXPECT_NE(std::string(e.what()).find("rosenbrock"), std::string::npos) << e.what();
+  }
+  o.integrator.stepper = Stepper::rosenbrock;
+  EXPECT_EQ(simulate(s, o).status, IntegrationStatus::success);
+}
+
 TEST(Failure, IntegrateRejectsBadGrid) {
   const Scene s = fig3_scene(0.001);
   const auto sys = make_system(s.parameters, initial_state(s), ModelLevel::modal);

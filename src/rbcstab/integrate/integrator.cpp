@@ -134,6 +134,14 @@ IntegrationResult integrate(const System& system, std::span<const double> y0, do
   options.validate();
   const std::size_t n = system.dimension();
   require(y0.size() == n, "y0", double(y0.size()), "of the system's dimension " + std::to_string(n));
+  // GSL's implicit steppers keep several dense n x n matrices: refuse sizes that would take gigabytes
+  // rather than exhaust memory; the structured Rosenbrock stepper solves in O(n) at any size.
+  constexpr std::size_t kMaxDenseDimension = 3000;  // 72 MB per matrix
+  if (is_implicit(options.stepper) && options.stepper != Stepper::rosenbrock && n > kMaxDenseDimension)
+    throw InvalidArgument("stepper", "stepper = " + to_string(options.stepper) + " needs dense " + std::to_string(n) +
+                                         " x " + std::to_string(n) + " Jacobians; it is allowed up to dimension " +
+                                         std::to_string(kMaxDenseDimension) +
+                                         ": use rosenbrock (O(n) structured solves), an explicit stepper, or the modal level");
   require_finite("t0", t0);
   for (std::size_t i = 0; i < grid.size(); ++i)
     require(std::isfinite(grid[i]) && grid[i] >= t0 && (i == 0 || grid[i] > grid[i - 1]), "grid", grid[i],
