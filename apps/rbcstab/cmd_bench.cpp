@@ -71,9 +71,11 @@ int run_work_precision(const BenchOptions& o, const SceneFile& sf) {
     check_python("/usr/bin/python3");
     const std::string dir = find_script_dir("");
     if (dir.empty()) throw std::runtime_error("cannot find the plotting scripts (set RBCSTAB_DATA_DIR)");
-    const std::string cmd = "/usr/bin/python3 '" + dir + "/work_precision.py' '" + base + ".csv' '" + base +
-                            ".png' 'work-precision: " + sf.scene.name + "'";
-    if (std::system(cmd.c_str()) != 0) throw std::runtime_error("the work-precision figure failed: " + cmd);
+    const std::string log = base + ".plot.log";
+    if (run_process({"/usr/bin/python3", dir + "/work_precision.py", base + ".csv", base + ".png",
+                     "work-precision: " + sf.scene.name},
+                    log) != 0)
+      throw std::runtime_error("the work-precision figure failed: see " + log);
   }
   if (o.json) {
     std::cout << j.dump(2) << "\n";

@@ -66,6 +66,10 @@ double oscillation_period(const std::vector<double>& t, const std::vector<double
 // (installed), then the source tree this library was built from. Empty if none holds the script.
 std::string find_script_dir(const std::string& executable_path);
 
+// Runs args[0] with args (no shell), stdout and stderr appended to log_path ("" discards them);
+// returns the exit status, or -1 if the program could not be started or did not exit normally.
+int run_process(const std::vector<std::string>& args, const std::string& log_path);
+
 // Throws ReportError with a remedy unless `python` runs and imports matplotlib (Agg backend).
 void check_python(const std::string& python);
 
