@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "plane_options.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
@@ -47,27 +48,12 @@ std::string duration(double s) {
 
 int run(const DiagramCliOptions& o) {
   const SceneFile sf = o.scene.resolve();
-  DiagramSpec spec;
-  if (!o.scene.scene_path.empty()) spec = parse_diagram_table(read_file(o.scene.scene_path), o.scene.scene_path);
-  if (!o.axes.empty()) {
-    if (o.axes.size() != 2) throw InvalidArgument("--axes", "--axes takes two names, e.g. lnB,lnC");
-    spec.x.axis = axis_from_string(o.axes[0]);
-    spec.y.axis = axis_from_string(o.axes[1]);
-  }
-  if (!o.x_range.empty()) {
-    if (o.x_range.size() != 2) throw InvalidArgument("--x-range", "--x-range takes two numbers: min,max");
-    spec.x.min = o.x_range[0], spec.x.max = o.x_range[1];
-  }
-  if (!o.y_range.empty()) {
-    if (o.y_range.size() != 2) throw InvalidArgument("--y-range", "--y-range takes two numbers: min,max");
-    spec.y.min = o.y_range[0], spec.y.max = o.y_range[1];
-  }
+  DiagramSpec spec = plane_spec(o.scene, o.axes, o.x_range, o.y_range, o.alpha_fixed);
   if (!o.counts.empty()) {
     if (o.counts.size() != 2) throw InvalidArgument("--counts", "--counts takes two integers: nx,ny");
     spec.x.count = o.counts[0], spec.y.count = o.counts[1];
   }
   if (!o.classifier.empty()) spec.classifier = classifier_from_string(o.classifier);
-  if (o.alpha_fixed >= 0) spec.alpha = o.alpha_fixed;
   spec.validate();
 
   MpiSession mpi;  // a no-op unless started by mpirun (and built with MPI)

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "plane_options.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
@@ -31,16 +32,7 @@ struct TraceCliOptions {
 
 int run(const TraceCliOptions& o) {
   const SceneFile sf = o.scene.resolve();
-  DiagramSpec spec;
-  if (!o.scene.scene_path.empty()) spec = parse_diagram_table(read_file(o.scene.scene_path), o.scene.scene_path);
-  if (!o.axes.empty()) {
-    if (o.axes.size() != 2) throw InvalidArgument("--axes", "--axes takes two names, e.g. lnB,lnC");
-    spec.x.axis = axis_from_string(o.axes[0]);
-    spec.y.axis = axis_from_string(o.axes[1]);
-  }
-  if (o.x_range.size() == 2) spec.x.min = o.x_range[0], spec.x.max = o.x_range[1];
-  if (o.y_range.size() == 2) spec.y.min = o.y_range[0], spec.y.max = o.y_range[1];
-  if (o.alpha_fixed >= 0) spec.alpha = o.alpha_fixed;
+  DiagramSpec spec = plane_spec(o.scene, o.axes, o.x_range, o.y_range, o.alpha_fixed);
   spec.validate();
   const TraceResult t = trace_boundary(sf.scene, spec, o.trace);
 
