@@ -6,7 +6,10 @@
 
 #include <cmath>
 #include <complex>
+#include <algorithm>
 #include <vector>
+
+#include <Eigen/Eigenvalues>
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/orbit.hpp"
@@ -206,6 +209,187 @@ TEST(OrbitOptionsTest, ValidateNamesTheField) {
   o = {};
   o.rtol = 1e-3;
   EXPECT_THROW(o.validate(), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace rbcstab
+
+namespace rbcstab {
+namespace {
+Scene fig2_ip(double Delta) {
+  Scene s;
+  s.name = "fig2_ip";
+  s.parameters.lambda = 5;
+  s.parameters.Delta = Delta;
+  s.parameters.Delta0 = 0.01;
+  s.parameters.B = 2;
+  s.parameters.C = 0.04;
+  s.beta = M_PI / 2;
+  s.delta = 0;
+  s.L = 2;
+  s.model = ModelLevel::reduced;
+  return s;
+}
+// Newton from the scene relaxed for T = 300 (a state at a multiple of 2 pi).
+Eigen::VectorXd reduced_orbit(const ReducedForcedSystem& sys, const PeriodicOrbitProblem& pr) {
+  const double p0 = sys.start_parameter();
+  const NewtonResult nr = solve_fixed_parameter(pr, pr.shooting_guess(sys.relaxed_state(300), p0), p0);
+  EXPECT_TRUE(nr.converged);
+  return nr.x;
+}
+
+// Flow of the reduced model over whole periods, integrated directly (not through the shooting code).
+Eigen::Vector3d period_map(const ReducedModel& m, const Eigen::Vector3d& y, int periods = 1) {
+  IntegratorOptions io;
+  io.rtol = 1e-13;
+  io.atol = 1e-14;
+  const double grid[1] = {kTwoPi * periods};
+  const IntegrationResult r = integrate(m, std::span<const double>(y.data(), 3), 0.0, grid, io, {});
+  return {r.y[0], r.y[1], r.y[2]};
+}
+
+// The monodromy against central differences of the directly integrated period map, and the trivial
+// multiplier. h = 1e-4: truncation ~h^2 |third derivative| ~ 1e-8 and integration noise ~1e-13/h =
+// 1e-9, so the finite-difference monodromy is good to ~1e-7; its (separated) eigenvalues likewise.
+TEST(ReducedOrbit, FloquetMatchesFiniteDifferenceMonodromy) {
+  for (double Delta : {0.2, 1.0}) {  // swinging, tumbling
+    const ReducedForcedSystem sys(fig2_ip(Delta), ContinuationParameter::Delta);
+    const PeriodicOrbitProblem pr(sys);
+    const Eigen::VectorXd X = reduced_orbit(sys, pr);
+    const Floquet f = pr.floquet(X, Delta);
+    const Eigen::Vector3d x0 = X.head(3);
+    EXPECT_NEAR(x0.norm(), 1.0, 1e-13);
+    Eigen::Matrix3d Mfd;
+    const double h = 1e-4;
+    for (int i = 0; i < 3; ++i) {
+      const Eigen::Vector3d e = h * Eigen::Vector3d::Unit(i);
+      Mfd.col(i) = (period_map(sys.model(Delta), x0 + e) - period_map(sys.model(Delta), x0 - e)) / (2 * h);
+    }
+    EXPECT_LT((Mfd - f.monodromy).lpNorm<Eigen::Infinity>(), 1e-7) << Delta;
+    // Trivial multiplier: exactly 1 by the conservation of |y|^2; 1e-11 ~ 10 x the rtol.
+    ASSERT_TRUE(f.trivial.has_value());
+    EXPECT_NEAR(*f.trivial, 1.0, 1e-11);
+    const Eigen::VectorXcd all = Eigen::EigenSolver<Eigen::Matrix3d>(Mfd, false).eigenvalues();
+    // Each nontrivial multiplier and 1 appear among the finite-difference eigenvalues.
+    const std::vector<std::complex<double>> want = {f.multipliers[0], f.multipliers[1], 1.0};
+    for (const auto& w : want) {
+      double best = 1e300;
+      for (Eigen::Index i = 0; i < 3; ++i) best = std::min(best, std::abs(all[i] - w));
+      EXPECT_LT(best, 1e-6) << Delta << " multiplier " << w;
+    }
+  }
+}
+
+// The orbit is the attractor of the dynamics: a long direct integration from the scene's shape
+// (40 periods; the multipliers are < 0.2, so transients are < 0.2^40) lands on x_0, and its period
+// average equals the orbit's. 1e-9: the bar, ~1000 x the integration tolerance.
+TEST(ReducedOrbit, MatchesLongSimulation) {
+  for (double Delta : {0.2, 1.0}) {
+    const ReducedForcedSystem sys(fig2_ip(Delta), ContinuationParameter::Delta);
+    const PeriodicOrbitProblem pr(sys);
+    const Eigen::VectorXd X = reduced_orbit(sys, pr);
+    const ReducedModel& m = sys.model(Delta);
+    const std::vector<double> y0 = m.initial_state();
+    const Eigen::Vector3d yT = period_map(m, Eigen::Vector3d(y0[0], y0[1], y0[2]), 40);
+    EXPECT_LT((yT - X.head(3)).norm(), 1e-9) << Delta;
+    // Period average of the simulation over one more period: 2000 uniform samples (the periodic
+    // trapezoid rule, spectrally accurate, and independent of the summary's 8 x 64 samples).
+    std::vector<double> grid;
+    for (int k = 1; k <= 2000; ++k) grid.push_back(kTwoPi * k / 2000);
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    IntegratorOptions io;
+    io.rtol = 1e-12;
+    integrate(m, std::span<const double>(yT.data(), 3), 0.0, grid, io,
+              [&](double, std::span<const double> y) { mean += Eigen::Vector3d(y[0], y[1], y[2]) / 2000.0; });
+    const OrbitSummary s = pr.summary(X, Delta);
+    EXPECT_LT((s.mean - mean).norm(), 1e-9) << Delta;
+    EXPECT_EQ(s.kind, Delta < 0.38 ? OrbitKind::swinging : OrbitKind::tumbling);
+    if (s.kind == OrbitKind::tumbling) {
+      EXPECT_EQ(s.winding, 1);  // z turns counter-clockwise: Psi decreases by 2 pi per period
+      EXPECT_GE(s.Psi_max - s.Psi_min, kTwoPi - 1e-9);
+    } else {
+      EXPECT_LT(s.Psi_max - s.Psi_min, M_PI);
+    }
+  }
+}
+
+// Fig. 2's in-plane scene continued in Delta: the swinging orbit (Delta = 0.01) becomes tumbling
+// (Delta = 1) where the orbit passes through z = 0 (r_min = 0) with both multipliers deep inside
+// the unit circle: no LPC/PD/NS, only the UZ event. The number of segments changes neither the
+// multipliers (to 1e-9) nor the labels nor the transition's location (to 1e-9).
+TEST(ReducedOrbit, SwingingToTumblingIsPassageThroughZeroAndIndependentOfSegments) {
+  std::vector<double> located;
+  for (int N : {4, 16}) {
+    const ReducedForcedSystem sys(fig2_ip(0.3), ContinuationParameter::Delta);
+    OrbitOptions oo;
+    oo.segments = N;
+    const PeriodicOrbitProblem pr(sys, oo);
+    const Eigen::VectorXd X = reduced_orbit(sys, pr);
+    ContinuationOptions o;
+    o.direction = Direction::forward;
+    o.p_max = 0.45;
+    o.max_step = 0.05;
+    o.events.push_back(pr.transition_event());
+    const Branch b = continue_branch(pr, X, 0.3, o);
+    ASSERT_EQ(b.status, ContinuationStatus::completed) << b.message;
+    ASSERT_EQ(b.special_points.size(), 1u) << N;
+    const SpecialPoint& uz = b.special_points[0];
+    EXPECT_EQ(uz.type, SpecialPointType::UZ);
+    EXPECT_EQ(uz.name, "swing_tumble");
+    EXPECT_EQ(uz.status, LocationStatus::located);
+    EXPECT_LT(uz.precision, 1e-10);
+    located.push_back(uz.p);
+    const OrbitSummary at = pr.summary(uz.x, uz.p);
+    EXPECT_LT(at.r_min, 1e-8);
+    const Eigen::VectorXcd mu = pr.spectrum(uz.x, uz.p);
+    EXPECT_LT(std::abs(mu[0]), 0.1);
+    EXPECT_LT(std::abs(mu[1]), 0.1);
+    for (const auto& pt : b.points) {
+      EXPECT_TRUE(pt.stable);
+      const OrbitSummary s = pr.summary(pt.x, pt.p);
+      EXPECT_EQ(s.winding, pt.p < uz.p ? 0 : 1) << pt.p;
+      const Floquet f = pr.floquet(pt.x, pt.p);
+      ASSERT_TRUE(f.trivial.has_value());
+      EXPECT_NEAR(*f.trivial, 1.0, 1e-11);
+    }
+  }
+  EXPECT_NEAR(located[0], located[1], 1e-9);
+  EXPECT_NEAR(located[0], 0.38478125, 1e-6);  // measured at N = 8 (docs/continuation.md)
+  // Multipliers at fixed Delta for N = 4, 8, 16 (plain monodromy products) agree to 1e-9.
+  for (double Delta : {0.35, 1.0}) {
+    std::vector<Eigen::VectorXcd> mus;
+    for (int N : {4, 8, 16}) {
+      const ReducedForcedSystem sys(fig2_ip(Delta), ContinuationParameter::Delta);
+      OrbitOptions oo;
+      oo.segments = N;
+      const PeriodicOrbitProblem pr(sys, oo);
+      mus.push_back(pr.spectrum(reduced_orbit(sys, pr), Delta));
+    }
+    for (std::size_t k = 1; k < mus.size(); ++k)
+      for (Eigen::Index i = 0; i < 2; ++i) {
+        double best = 1e300;
+        for (Eigen::Index j = 0; j < 2; ++j) best = std::min(best, std::abs(mus[k][i] - mus[0][j]));
+        EXPECT_LT(best, 1e-9) << Delta;
+      }
+  }
+}
+
+// Delta = 1 tumbles at lambda = 5 (Fig. 2) and swings at low viscosity ratio.
+TEST(ReducedOrbit, ContinuesInLambdaThroughTheTransition) {
+  const ReducedForcedSystem sys(fig2_ip(1.0), ContinuationParameter::lambda);
+  const PeriodicOrbitProblem pr(sys);
+  ContinuationOptions o;
+  o.direction = Direction::backward;
+  o.p_min = 2;
+  o.max_step = 0.2;
+  o.events.push_back(pr.transition_event());
+  const Branch b = continue_branch(pr, reduced_orbit(sys, pr), 5.0, o);
+  ASSERT_EQ(b.status, ContinuationStatus::completed) << b.message;
+  ASSERT_EQ(b.special_points.size(), 1u);
+  EXPECT_EQ(b.special_points[0].type, SpecialPointType::UZ);
+  EXPECT_NEAR(b.special_points[0].p, 2.573269, 1e-5);  // measured at N = 8, max step 0.05
+  EXPECT_EQ(pr.summary(b.points.back().x, b.points.back().p).kind, OrbitKind::swinging);
+  EXPECT_EQ(pr.summary(b.points.front().x, b.points.front().p).kind, OrbitKind::tumbling);
 }
 
 }  // namespace

@@ -374,6 +374,9 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p) c
     o.mean += xs[k];
   }
   o.mean /= static_cast<double>(xs.size());
+  // The period's end (the state is back at x_0): a tumbling orbit's Psi range spans 2 pi |winding|.
+  o.Psi_min = std::min(o.Psi_min, o.Psi0 - total);
+  o.Psi_max = std::max(o.Psi_max, o.Psi0 - total);
 
   // Refine r_min: the zero of g(t) = d/dt |z|^2 / 2 = x0 f0 + x1 f1 between the neighbouring samples
   // (Illinois secant; each trial integrates from the left sample). A smooth function of p, so the
