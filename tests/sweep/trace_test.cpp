@@ -9,6 +9,7 @@
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/trace.hpp"
 
 namespace rbcstab {
