@@ -171,7 +171,7 @@ std::vector<Agreement> predictor_agreements(const Scene& base, const DiagramSpec
                                             const std::vector<PointResult>& points, const AgreementOptions& options) {
   options.validate();
   const int threads = options.threads > 0 ? options.threads : int(std::max(1u, std::thread::hardware_concurrency()));
-  const PredictorOptions& po = options.trace_options.predictor;
+  const PredictorOptions& po = options.predictor;
   std::vector<Agreement> out;
 
   auto traced = [&](TraceCriterion c, Agreement& a) {
@@ -191,10 +191,12 @@ std::vector<Agreement> predictor_agreements(const Scene& base, const DiagramSpec
     }
   };
 
+  Agreement asymptotic_boundary;
+  const BoundaryDistance asymptotic_distance = traced(TraceCriterion::asymptotic, asymptotic_boundary);
   {  // asymptotic
     const auto v = verdicts(base, spec, points, threads, [&](const Scene& s) { return asymptotic_point(s, po); });
-    Agreement tmp;
-    const BoundaryDistance d = traced(TraceCriterion::asymptotic, tmp);
+    const Agreement& tmp = asymptotic_boundary;
+    const BoundaryDistance& d = asymptotic_distance;
     Agreement a = compare(base, spec, points, v, d);
     a.predictor = "asymptotic";
     a.description = "unstable iff mu_l = Upsilon_l(<sigma_R>) > 0 for some l in [3, L] (exact equilibrium out of "
@@ -211,8 +213,9 @@ std::vector<Agreement> predictor_agreements(const Scene& base, const DiagramSpec
       if (m.status != DomainStatus::ok) return PointVerdict{};
       return PointVerdict{true, !m.unstable.empty(), m.unstable.empty() ? 2 : m.l_Delta};
     });
-    Agreement tmp;
-    const BoundaryDistance d = traced(TraceCriterion::finite_horizon, tmp);
+    Agreement tmp = asymptotic_boundary;
+    const BoundaryDistance d =
+        options.trace_finite_horizon ? traced(TraceCriterion::finite_horizon, tmp) : asymptotic_distance;
     Agreement a = compare(base, spec, points, v, d);
     a.predictor = "finite_horizon";
     a.description = "unstable iff G_l(T) > 0 for some l in [3, L] along the reduced transient; mode: argmax_l "

@@ -48,8 +48,12 @@ struct TraceOptions {
   int samples = 128;     // brackets per edge or line: start roots closer than 1/samples of it can be missed
   int bisections = 60;   // per start root (to the last bit; Newton then polishes)
   double max_step = 0.02;  // arclength step cap in the unit square: the curve's resolution
-  PredictorOptions predictor;  // reduced runs of the finite-horizon and in-plane criteria
+  // Reduced runs of the finite-horizon and in-plane criteria: rk8pd at rtol 1e-12 (analysis default 1e-10),
+  // because Newton needs the criterion smooth below the 1e-10 residual it is traced to (at 1e-10 the step
+  // selection leaves ~1e-10 jitter in G_l(T) = 500 Upsilon_l; measured); costs ~1.7x per evaluation.
+  PredictorOptions predictor = tracing_predictor();
   void validate() const;
+  static PredictorOptions tracing_predictor();
   ZeroSetOptions zero_set() const;
 };
 

@@ -310,13 +310,16 @@ class Tracer {
   ZeroSetResult& res_;
 };
 
-// Newton along the gradient when the corrector left |g| above residual_tol (rare: the engine's
-// acceptance test is |F| <= sqrt(newton_tol) 1e-3).
+// Newton along the gradient when the corrector left |g| above residual_tol (the engine's acceptance test
+// is |F| <= sqrt(newton_tol) 1e-3). A point on an edge moves along the edge only.
 Vec2 polish(Evaluator& ev, Vec2 w, std::size_t k, double tol) {
+  const bool u_fixed = w[0] == 0 || w[0] == 1, v_fixed = w[1] == 0 || w[1] == 1;
   for (int it = 0; it < 6; ++it) {
     const double g = ev.g(w[0], w[1], k);
     if (std::abs(g) <= tol) break;
-    const Vec2 d = ev.gradient(w[0], w[1], k);
+    Vec2 d = ev.gradient(w[0], w[1], k);
+    if (u_fixed) d[0] = 0;
+    if (v_fixed) d[1] = 0;
     const double n2 = d[0] * d[0] + d[1] * d[1];
     if (!(n2 > 0)) break;
     w = {w[0] - g * d[0] / n2, w[1] - g * d[1] / n2};
