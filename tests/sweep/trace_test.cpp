@@ -187,8 +187,9 @@ TEST(Trace, InPlaneAsymptoticByTimeAverage) {
   plane.y = {Axis::lnC, -3, 0, 5};
   TraceOptions o;
   o.lines = 0;
-  o.samples = 16;
-  o.max_step = 0.05;
+  o.samples = 8;
+  o.bisections = 30;
+  o.max_step = 0.1;
   o.predictor.transient = 100;
   o.predictor.window = 200;
   o.predictor.average_tolerance = 1e-2;
