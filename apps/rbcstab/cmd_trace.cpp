@@ -28,6 +28,7 @@ struct TraceCliOptions {
   double alpha_fixed = -1;
   TraceOptions trace;
   std::string out = "trace", diagram;
+  bool json = false;
 };
 
 int run(const TraceCliOptions& o) {
@@ -91,6 +92,14 @@ int run(const TraceCliOptions& o) {
   std::cerr << "rbcstab: traced " << t.curves.size() << " curve pieces, " << t.corners.size() << " corners, "
             << t.evaluations << " criterion evaluations in " << t.seconds << " s; wrote " << o.out << ".csv and "
             << o.out << ".json\n";
+  if (o.json) {
+    nlohmann::json j{{"csv", o.out + ".csv"},          {"json", o.out + ".json"},
+                     {"pieces", t.curves.size()},       {"corners", corners},
+                     {"evaluations", t.evaluations},    {"seconds", t.seconds},
+                     {"analytic_lines", overlays.size()}};
+    if (doc.contains("agreement")) j["agreement"] = doc["agreement"];
+    std::cout << j.dump(2) << "\n";
+  }
   if (doc.contains("agreement"))
     std::cerr << "rbcstab: agreement with the simulations: verdict " << doc["agreement"]["verdict_fraction"]
               << ", mode " << doc["agreement"]["mode_fraction"] << ", disagreements beyond one grid step "
@@ -111,6 +120,7 @@ static Runner add_trace(CLI::App& app) {
   app.add_option("--diagram", o->diagram, "diagram JSON of the same plane: measure the criterion's agreement")
       ->check(CLI::ExistingFile);
   app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")->capture_default_str();
+  app.add_flag("--json", o->json, "print one JSON object on stdout (output files, pieces, corners, agreement)");
   return [o] { return run(*o); };
 }
 
