@@ -310,6 +310,31 @@ TEST(ModalEquilibrium, BranchPointCurveIsTheAsymptoticBoundary) {
     EXPECT_TRUE(below.unstable);
     EXPECT_EQ(below.l, l);
   }
+  // trace.hpp's own traced boundary on the (ln B, ln C) plane: at each traced B, Newton on the curve
+  // problem (from the nearest curve point) gives the traced C to 1e-9 relative (trace bisects to the
+  // last bit of ln C).
+  DiagramSpec plane;
+  plane.x = {Axis::lnB, std::log(0.65), std::log(1.55), 8};
+  plane.y = {Axis::lnC, std::log(0.012), std::log(0.07), 8};
+  TraceOptions to;
+  to.lines = 8;
+  to.samples = 64;
+  const TraceResult tr = trace_boundary(run.s, plane, to);
+  std::size_t compared = 0;
+  for (const TraceCurve& tc : tr.curves) {
+    if (tc.l != l) continue;
+    for (const TracePoint& tp : tc.points) {
+      const double B = std::exp(tp.x);
+      const BranchPoint* near = &b.points.front();
+      for (const BranchPoint& pt : b.points)
+        if (std::abs(pt.p - B) < std::abs(near->p - B)) near = &pt;
+      const NewtonResult nr = solve_fixed_parameter(curve, near->x, B);
+      ASSERT_TRUE(nr.converged);
+      EXPECT_NEAR(nr.x[5] / std::exp(tp.y), 1.0, 1e-9) << "B = " << B;
+      ++compared;
+    }
+  }
+  EXPECT_GE(compared, 5u);
 }
 
 }  // namespace
