@@ -5,6 +5,7 @@
 #include <memory>
 #include <sstream>
 
+#include "checks.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/continuation/continuation.hpp"
@@ -138,16 +139,19 @@ int run(ContinueOptions& o) {
 static Runner add_continue(CLI::App& app) {
   auto o = std::make_shared<ContinueOptions>();
   o->scene.add_to(app);
-  app.add_option("--kind", o->kind, "what to continue: equilibrium (reduced system, autonomous scenes)");
-  app.add_option("--parameter", o->parameter, "free parameter: lambda, Delta, Delta0, B, C, Lambda or S");
-  app.add_option("--min", o->p_min, "lower bound of the free parameter (the branch ends there exactly)");
-  app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly)");
+  app.add_option("--kind", o->kind, "what to continue: equilibrium (reduced system, autonomous scenes)")->capture_default_str();
+  app.add_option("--parameter", o->parameter, "free parameter: lambda, Delta, Delta0, B, C, Lambda or S")->capture_default_str();
+  app.add_option("--min", o->p_min, "lower bound of the free parameter (the branch ends there exactly; default: none, 0 for lambda)");
+  app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly; default: none)");
   app.add_option("--direction", o->direction, "forward (parameter increasing), backward or both")
-      ->check(CLI::IsMember({"forward", "backward", "both"}));
-  app.add_option("--step", o->engine.initial_step, "first arclength step");
-  app.add_option("--max-step", o->engine.max_step, "largest arclength step");
-  app.add_option("--max-points", o->engine.max_points, "points per direction");
-  app.add_option("--relax-T", o->relax_T, "relaxation time that gives the start state from the scene's shape");
+      ->check(CLI::IsMember({"forward", "backward", "both"}))
+      ->capture_default_str();
+  app.add_option("--step", o->engine.initial_step, "first arclength step, > 0")->check(positive())->capture_default_str();
+  app.add_option("--max-step", o->engine.max_step, "largest arclength step, > 0")->check(positive())->capture_default_str();
+  app.add_option("--max-points", o->engine.max_points, "points per direction, integer >= 2")->check(CLI::Range(2, 100000000))->capture_default_str();
+  app.add_option("--relax-T", o->relax_T, "relaxation time that gives the start state from the scene's shape, > 0")
+      ->check(positive())
+      ->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object (branch, special_points) on stdout");
   app.add_option("--csv", o->csv, "write the branch as CSV to this file");
   return [o] { return run(*o); };

@@ -6,6 +6,7 @@
 #include <memory>
 #include <sstream>
 
+#include "checks.hpp"
 #include "commands.hpp"
 #include "plane_options.hpp"
 #include "exit_codes.hpp"
@@ -111,12 +112,13 @@ int run(const TraceCliOptions& o) {
 static Runner add_trace(CLI::App& app) {
   auto o = std::make_shared<TraceCliOptions>();
   o->scene.add_to(app);
-  app.add_option("--axes", o->axes, "plane axes x,y (default: the scene's [diagram] or lnB,lnC)")->delimiter(',');
-  app.add_option("--x-range", o->x_range, "min,max of x")->delimiter(',')->expected(2);
-  app.add_option("--y-range", o->y_range, "min,max of y")->delimiter(',')->expected(2);
-  app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C fixed over the plane (0: off)");
-  app.add_option("--lines", o->trace.lines, "lines across the plane (x fixed on each)")->capture_default_str();
-  app.add_option("--samples", o->trace.samples, "brackets per line")->capture_default_str();
+  app.add_option("--axes", o->axes, "plane axes x,y from lnB lnC lambda Delta Delta0 alpha beta (default: the scene's [diagram] or lnB,lnC)")->delimiter(',');
+  app.add_option("--x-range", o->x_range, "min,max of x, finite (default: the scene's [diagram] or -1,6)")->delimiter(',')->expected(2);
+  app.add_option("--y-range", o->y_range, "min,max of y, finite (default: the scene's [diagram] or -5.5,2)")->delimiter(',')->expected(2);
+  app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C fixed over the plane, >= 0 (0: off; default: the scene's [diagram] or off)")
+      ->check(non_negative());
+  app.add_option("--lines", o->trace.lines, "lines across the plane (x fixed on each), integer in [2, 100000]")->capture_default_str();
+  app.add_option("--samples", o->trace.samples, "brackets per line, integer in [2, 100000]")->capture_default_str();
   app.add_option("--diagram", o->diagram, "diagram JSON of the same plane: measure the criterion's agreement")
       ->check(CLI::ExistingFile);
   app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")->capture_default_str();
