@@ -96,7 +96,9 @@ int run(const DiagramCliOptions& o) {
   try {
     write_file_atomic(prefix + ".csv", diagram_csv(spec, r.points, oo));
     nlohmann::json doc = diagram_json(diagram_header(sf.scene, sf.options, spec), spec, r.points, out_shard, oo);
-    if (out_shard.n == 1) doc["agreement"] = agreement_json(sf.scene, spec, r.points);
+    AgreementOptions ao;
+    ao.threads = o.threads;
+    if (out_shard.n == 1) doc["agreement"] = agreement_json(sf.scene, spec, r.points, ao);
     write_file_atomic(prefix + ".json", doc.dump(1) + "\n");
   } catch (const std::runtime_error& e) {
     std::cerr << "rbcstab: error: " << e.what() << "\n";
