@@ -224,8 +224,6 @@ class Tracer {
                                  const std::vector<double>& g = ev_.at(w[0], w[1]).g;
                                  return g[j] - g[k];
                                }});
-      co.events.push_back({"edge low", [](const Eigen::VectorXd& x, double) { return x[0]; }});
-      co.events.push_back({"edge high", [](const Eigen::VectorXd& x, double) { return 1 - x[0]; }});
       std::size_t steps = 0;
       bool closed = false;
       const bool may_close = origin[0] >= 0;
@@ -280,7 +278,12 @@ class Tracer {
         k = j;
         continue;
       }
-      if (stop_at || br.message == "reached the parameter bound") {
+      const Eigen::VectorXd& xl = br.points.back().x;
+      if (!stop_at && br.points.size() >= 2 && (xl[0] < 0 || xl[0] > 1)) {
+        // Left through an edge of the unknown coordinate: replace the point outside by the crossing.
+        h.pieces.back().w.back() = edge_crossing(k, h.pieces.back().w, swapped, xl[0] < 0 ? 0.0 : 1.0);
+        h.end = End::edge;
+      } else if (br.message == "reached the parameter bound") {
         h.end = End::edge;
       } else if (closed) {
         h.pieces.back().w.push_back(origin);
@@ -297,6 +300,33 @@ class Tracer {
   }
 
  private:
+  // The zero of g_k on the edge (coordinate c = value) between the last two points of w (the last one
+  // outside): secant along the edge from the linear interpolation (the engine's events would spend ~20
+  // corrected secant steps on what is a 1-D root on a known line).
+  Vec2 edge_crossing(std::size_t k, const std::vector<Vec2>& w, bool swapped, double value) {
+    const int c = swapped ? 0 : 1, f = 1 - c;  // c: the unknown (edge) coordinate, f: along the edge
+    const Vec2 a = w[w.size() - 2], b = w.back();
+    const double t = (value - a[c]) / (b[c] - a[c]);
+    Vec2 e;
+    e[c] = value;
+    auto g = [&](double s) {
+      Vec2 q;
+      q[c] = value;
+      q[f] = s;
+      return ev_.g(q[0], q[1], k);
+    };
+    double s0 = a[f] + t * (b[f] - a[f]), s1 = s0 + 1e-6;
+    double g0 = g(s0), g1 = g(s1);
+    for (int it = 0; it < 30 && std::abs(g1) > o_.residual_tol && g1 != g0; ++it) {
+      const double s2 = s1 - g1 * (s1 - s0) / (g1 - g0);
+      s0 = s1;
+      g0 = g1;
+      s1 = s2;
+      g1 = g(s1);
+    }
+    e[f] = std::abs(g1) <= std::abs(g0) ? s1 : s0;
+    return e;
+  }
   static void add(ContinuationCounters& a, const ContinuationCounters& b) {
     a.steps += b.steps;
     a.rejected_steps += b.rejected_steps;
