@@ -68,6 +68,7 @@ class Evaluator {
     return {(g(u + h, v, k) - g(u - h, v, k)) / (2 * h), (g(u, v + h, k) - g(u, v - h, k)) / (2 * h)};
   }
   std::size_t evaluations = 0;
+  std::size_t failures = 0;  // start-search samples outside the criterion's domain
 
  private:
   struct Entry {
@@ -133,20 +134,27 @@ struct Root {
 void roots_on_segment(Evaluator& ev, Vec2 a, Vec2 b, Vec2 inward, int samples, int bisections,
                       std::vector<Root>& out) {
   auto at = [&](double s) { return Vec2{a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])}; };
+  // NaN where the criterion is outside its domain (e.g. an unconverged time average): no bracket there.
   auto env = [&](double s) {
     const Vec2 w = at(s);
-    return ev.envelope(w[0], w[1]).first;
+    try {
+      return ev.envelope(w[0], w[1]).first;
+    } catch (const InvalidArgument&) {
+      ++ev.failures;
+      return std::numeric_limits<double>::quiet_NaN();
+    }
   };
   double s0 = 0, f0 = env(0);
   for (int k = 1; k <= samples; ++k) {
     const double s1 = k == samples ? 1.0 : double(k) / samples;
     const double f1 = env(s1);
-    if ((f0 < 0) != (f1 < 0)) {
+    if (!std::isnan(f0) && !std::isnan(f1) && (f0 < 0) != (f1 < 0)) {
       double lo = s0, hi = s1, flo = f0;
       for (int it = 0; it < bisections; ++it) {
         const double m = 0.5 * (lo + hi);
         if (m <= lo || m >= hi) break;
         const double fm = env(m);
+        if (std::isnan(fm)) break;
         if ((fm < 0) == (flo < 0)) {
           lo = m;
           flo = fm;
@@ -198,6 +206,18 @@ class Tracer {
   // through corners, until an edge, a closure (back at `origin`) or a failure.
   Half run(Vec2 start, std::size_t k, Vec2 want, Vec2 origin) {
     Half h;
+    try {
+      follow(h, start, k, want, origin);
+    } catch (const InvalidArgument& e) {
+      // A gradient at a start or corner left the criterion's domain: keep what was traced.
+      res_.notes.push_back(std::string("a piece stopped: ") + e.what());
+      h.end = End::other;
+    }
+    return h;
+  }
+
+ private:
+  void follow(Half& h, Vec2 start, std::size_t k, Vec2 want, Vec2 origin) {
     const std::size_t nmodes = ev_.at(start[0], start[1]).g.size();
     for (int piece = 0; piece < o_.max_pieces; ++piece) {
       const Vec2 grad = ev_.gradient(start[0], start[1], k);
@@ -246,7 +266,7 @@ class Tracer {
       if (br.points.empty()) {
         res_.notes.push_back("a piece of mode index " + std::to_string(k) + " did not start: " + br.message);
         h.end = End::other;
-        return h;
+        return;
       }
       // The first located event away from the start ends the piece.
       const SpecialPoint* stop_at = nullptr;
@@ -293,13 +313,11 @@ class Tracer {
                              format_value(end[1]) + ") (unit square): " + to_string(br.status) + ": " + br.message);
         h.end = End::other;
       }
-      return h;
+      return;
     }
     res_.notes.push_back("stopped after max_pieces pieces");
-    return h;
   }
 
- private:
   // The zero of g_k on the edge (coordinate c = value) between the last two points of w (the last one
   // outside): secant along the edge from the linear interpolation (the engine's events would spend ~20
   // corrected secant steps on what is a 1-D root on a known line).
@@ -394,13 +412,20 @@ ZeroSetResult trace_zero_set(const ModeCriteria& criteria, const PlaneBox& box, 
   Tracer tracer(ev, options, res);
   for (const Root& r : roots) {
     if (covered(r.w)) continue;
-    const std::size_t k = ev.envelope(r.w[0], r.w[1]).second;
+    std::size_t k = 0;
+    Vec2 g{0, 0};
+    try {
+      k = ev.envelope(r.w[0], r.w[1]).second;
+      if (r.inward[0] == 0 && r.inward[1] == 0) g = ev.gradient(r.w[0], r.w[1], k);
+    } catch (const InvalidArgument& e) {
+      res.notes.push_back(std::string("a start was skipped: ") + e.what());
+      continue;
+    }
     Half chain;
     if (r.inward[0] != 0 || r.inward[1] != 0) {
       chain = tracer.run(r.w, k, r.inward, {-1, -1});
     } else {
       // Interior seed: both ways along the curve, unless the first closes a loop.
-      const Vec2 g = ev.gradient(r.w[0], r.w[1], k);
       const Vec2 t{-g[1], g[0]};
       chain = tracer.run(r.w, k, t, r.w);
       if (chain.end != End::closed) {
@@ -444,7 +469,12 @@ ZeroSetResult trace_zero_set(const ModeCriteria& criteria, const PlaneBox& box, 
       piece.l = criteria.l_min + int(p.k);
       piece.chain = id;
       for (const Vec2& w0 : p.w) {
-        const Vec2 w = polish(ev, w0, p.k, options.residual_tol);
+        Vec2 w = w0;
+        try {
+          w = polish(ev, w0, p.k, options.residual_tol);
+        } catch (const InvalidArgument&) {
+          // the gradient left the domain: keep the corrector's point
+        }
         const CriterionSample& s = ev.at(w[0], w[1]);
         piece.points.push_back({ev.x(w[0]), ev.y(w[1]), piece.l, s.g[p.k], s.sigma_R, s.alpha});
         line.push_back(w);
@@ -457,6 +487,9 @@ ZeroSetResult trace_zero_set(const ModeCriteria& criteria, const PlaneBox& box, 
     traced.push_back(std::move(line));
   }
   res.evaluations = ev.evaluations;
+  if (ev.failures > 0)
+    res.notes.push_back(std::to_string(ev.failures) +
+                        " start-search samples were outside the criterion's domain (no start bracketed there)");
   return res;
 }
 
