@@ -31,6 +31,7 @@ struct TraceCliOptions {
   TraceOptions trace;
   std::string out = "trace", diagram, criterion = "asymptotic";
   int threads = 1;
+  bool json = false;
 };
 
 int run(const TraceCliOptions& o) {
@@ -117,6 +118,14 @@ int run(const TraceCliOptions& o) {
       std::cerr << "rbcstab: agreement of " << a["predictor"].get<std::string>() << ": verdict " << a["verdict_fraction"]
                 << ", mode " << a["mode_fraction"] << " over " << a["points"] << " points, disagreements beyond one grid step "
                 << a["beyond_one_grid_step"] << "\n";
+  if (o.json) {
+    nlohmann::json j{{"csv", o.out + ".csv"},          {"json", o.out + ".json"},
+                     {"pieces", t.curves.size()},       {"corners", corners},
+                     {"evaluations", t.evaluations},    {"seconds", t.seconds},
+                     {"analytic_lines", overlays.size()}};
+    if (doc.contains("agreement")) j["agreement"] = doc["agreement"];
+    std::cout << j.dump(2) << "\n";
+  }
   return kOk;
 }
 }  // namespace
@@ -141,6 +150,7 @@ static Runner add_trace(CLI::App& app) {
   app.add_option("--diagram", o->diagram, "diagram JSON of the same plane: measure the criterion's agreement")
       ->check(CLI::ExistingFile);
   app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")->capture_default_str();
+  app.add_flag("--json", o->json, "print one JSON object on stdout (output files, pieces, corners, agreement)");
   return [o] { return run(*o); };
 }
 
