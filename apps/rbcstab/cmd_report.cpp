@@ -173,7 +173,8 @@ static Runner add_report(CLI::App& app) {
                  "scene's counts)")
 ;
   app.add_option("--trace-lines", o->panel.trace.lines,
-                 "[diagram] scenes: lines across the plane for the traced boundary, integer >= 2")
+                 "[diagram] scenes: interior lines (x fixed) searched for starts of the traced boundary besides the "
+                 "plane's edges, integer >= 0")
       ->capture_default_str();
   app.add_flag("--quiet", o->quiet, "[diagram] scenes: no progress on stderr");
   app.add_flag("--json", o->json, "print one JSON object (files, summaries) on stdout");

@@ -391,8 +391,8 @@ PanelReportResult build_panel_report(const SceneFile& sf, const std::string& tom
     std::size_t unstable = 0;
     for (const PointResult& p : run.points) unstable += p.verdict == Verdict::unstable;
     const double diagram_seconds = run.seconds;
-    // The traced boundary exists for out-of-plane scenes (the criterion's equilibrium); elsewhere the
-    // panel shows the simulations and the analytic lines only.
+    // The traced boundary (asymptotic criterion: the exact equilibrium out of plane, a time average in plane,
+    // where tracing costs ~1-2 k reduced runs); on beta planes the panel shows the simulations and lines only.
     std::vector<TraceCurve> boundary;
     std::string trace_note;
     try {
@@ -408,12 +408,14 @@ PanelReportResult build_panel_report(const SceneFile& sf, const std::string& tom
     } catch (const InvalidArgument& e) {
       trace_note = std::string("not traced: ") + e.what();
     }
-    const std::vector<Overlay> lines = analytic_overlays(sf.scene, spec, panel.trace.lines);
+    const std::vector<Overlay> lines = analytic_overlays(sf.scene, spec, 200);
     // Without the per-point wall-clock seconds: the data behind the figure is the same on every run.
     ro.phase_diagram = staging.put("phase_diagram.csv", diagram_csv(spec, run.points, DiagramOutputOptions{false}));
     staging.put("phase_diagram.json", phase_overlay_json(boundary, lines).dump(1) + "\n");
     nlohmann::json doc = diagram_json(diagram_header(sf.scene, sf.options, spec), spec, run.points, Shard{});
-    doc["agreement"] = agreement_json(sf.scene, spec, run.points);
+    AgreementOptions agreement;
+    agreement.threads = panel.threads;
+    doc["agreement"] = agreement_json(sf.scene, spec, run.points, agreement);
     ro.attachments.push_back(staging.put("diagram.json", doc.dump(1) + "\n"));
     res.status = res.failed ? "failed runs" : "success";
     res.facts = {{"grid", std::to_string(spec.x.count) + " x " + std::to_string(spec.y.count) + " (" +
