@@ -176,7 +176,8 @@ static Runner add_report(CLI::App& app) {
                  "[diagram] scenes: override the grid's nx,ny (or NxM), integers in [1, 1000000], for a quick look "
                  "(default: the scene's counts)");
   app.add_option("--trace-lines", o->panel.trace.lines,
-                 "[diagram] scenes: interior lines searched for starts of the traced boundary, integer in [0, 10000]")
+                 "[diagram] scenes: interior lines (x fixed) searched for starts of the traced boundary besides the "
+                 "plane's edges, integer in [0, 10000]")
       ->check(CLI::Range(0, 10000))
       ->capture_default_str();
   app.add_flag("--quiet", o->quiet, "[diagram] scenes: no progress on stderr");
