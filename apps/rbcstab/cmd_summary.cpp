@@ -50,7 +50,8 @@ void print_analysis(std::ostream& out, const Scene& s, const SimulationResult& r
 }
 
 int run(const SceneOptions& so) {
-  const SceneFile sf = so.resolve();
+  std::string L_reason;
+  const SceneFile sf = so.resolve_with_default_L(L_reason);
   const Scene& s = sf.scene;
   const Parameters& p = s.parameters;
   const SimulationResult r = simulate(s, sf.options);
@@ -61,6 +62,7 @@ int run(const SceneOptions& so) {
       << ", C = " << p.C << "\n";
   out << "             beta = " << s.beta << ", delta = " << s.delta << ", L = " << s.L << ", T = " << s.T << "\n";
   out << "Derived      Lambda = " << p.Lambda() << ", S = " << p.S() << ", alpha = B/C = " << p.alpha() << "\n";
+  out << "Truncation   " << L_reason << "\n";
   out << "Model level  " << to_string(r.level.level) << " -- " << r.level.reason << "\n";
   for (const auto& w : r.warnings) out << "Warning      " << w << "\n";
   out << "\nExcess area by mode (Delta_l):\n";
