@@ -8,6 +8,7 @@
 #include <optional>
 #include <sstream>
 
+#include "checks.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/continuation/branch_switch.hpp"
@@ -291,20 +292,26 @@ static Runner add_continue(CLI::App& app) {
                  "equilibria with every Delta_l, out-of-plane rest shape: the ellipsoidal branch and its BPs where "
                  "Upsilon_l(sigma) = 0) or orbit (periodic orbits "
                  "of the forced in-plane reduced system: swinging/tumbling, Floquet multipliers, LPC/PD/NS, UZ "
-                 "swing_tumble)");
-  app.add_option("--segments", o->orbit.segments, "orbit: number of multiple-shooting segments");
+                 "swing_tumble)")
+      ->capture_default_str();
+  app.add_option("--segments", o->orbit.segments, "orbit: number of multiple-shooting segments")->capture_default_str();
   app.add_flag("--switch-at-bp", o->switch_at_bp,
                "equilibrium, modal: also continue the branch that bifurcates at the first BP (modal: the "
                "post-instability state); JSON key switched_branch, CSV rows with branch = switched");
-  app.add_option("--parameter", o->parameter, "free parameter: lambda, Delta, Delta0, B, C, Lambda or S");
-  app.add_option("--min", o->p_min, "lower bound of the free parameter (the branch ends there exactly)");
-  app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly)");
+  app.add_option("--parameter", o->parameter, "free parameter: lambda, Delta, Delta0, B, C, Lambda or S")->capture_default_str();
+  app.add_option("--min", o->p_min, "lower bound of the free parameter (the branch ends there exactly; default: none, 0 for lambda)");
+  app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly; default: none)");
   app.add_option("--direction", o->direction, "forward (parameter increasing), backward or both")
-      ->check(CLI::IsMember({"forward", "backward", "both"}));
-  app.add_option("--step", o->engine.initial_step, "first arclength step");
-  app.add_option("--max-step", o->engine.max_step, "largest arclength step");
-  app.add_option("--max-points", o->engine.max_points, "points per direction");
-  app.add_option("--relax-T", o->relax_T, "relaxation time that gives the start state from the scene's shape (orbits: rounded up to a multiple of 2 pi)");
+      ->check(CLI::IsMember({"forward", "backward", "both"}))
+      ->capture_default_str();
+  app.add_option("--step", o->engine.initial_step, "first arclength step, > 0")->check(positive())->capture_default_str();
+  app.add_option("--max-step", o->engine.max_step, "largest arclength step, > 0")->check(positive())->capture_default_str();
+  app.add_option("--max-points", o->engine.max_points, "points per direction, integer >= 2")->check(CLI::Range(2, 100000000))->capture_default_str();
+  app.add_option("--relax-T", o->relax_T,
+                 "relaxation time that gives the start state from the scene's shape, > 0 (orbits: rounded up to a "
+                 "multiple of 2 pi)")
+      ->check(positive())
+      ->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object (branch, special_points) on stdout");
   app.add_option("--csv", o->csv, "write the branch as CSV to this file");
   return [o] { return run(*o); };
