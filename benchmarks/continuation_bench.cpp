@@ -1,12 +1,14 @@
 // Continuation throughput and accuracy (docs/continuation.md): the out-of-plane equilibrium branch
 // of the reduced system over lambda in [0, 20] against the closed form (design/model.md sec. 4), and
-// the location precision of a fold (x' = p - x^2, LP at p = 0) and a Hopf point.
+// the location precision of a fold (x' = p - x^2, LP at p = 0) and a Hopf point; the in-plane
+// periodic-orbit branch of Fig. 2 in Delta (multiple shooting) with its swinging -> tumbling UZ point.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"
+#include "rbcstab/continuation/orbit.hpp"
 
 namespace rbcstab {
 namespace {
@@ -82,6 +84,69 @@ void BM_FoldLocation(benchmark::State& state) {
   state.counters["location_iterations"] = static_cast<double>(iters) / static_cast<double>(state.iterations());
 }
 BENCHMARK(BM_FoldLocation)->Unit(benchmark::kMillisecond);
+
+// Fig. 2's in-plane scene (lambda = 5, Delta0 = 0.01, B = 2, C = 0.04): the swinging orbit branch
+// from Delta = 0.05 through the swinging -> tumbling transition to 0.5, with N = range(0) segments.
+// Precision of the UZ point: its bracket, and its distance to the same point located with N = 32.
+Scene fig2_in_plane(double Delta) {
+  Scene s;
+  s.parameters.lambda = 5;
+  s.parameters.Delta = Delta;
+  s.parameters.Delta0 = 0.01;
+  s.parameters.B = 2;
+  s.parameters.C = 0.04;
+  s.beta = M_PI / 2;
+  s.delta = 0;
+  s.L = 2;
+  return s;
+}
+
+Branch in_plane_branch(const PeriodicOrbitProblem& pr, const ReducedForcedSystem& sys) {
+  const double p0 = sys.start_parameter();
+  const NewtonResult nr = solve_fixed_parameter(pr, pr.shooting_guess(sys.relaxed_state(300), p0), p0);
+  ContinuationOptions o;
+  o.direction = Direction::forward;
+  o.p_max = 0.5;
+  o.events.push_back(pr.transition_event());
+  return continue_branch(pr, nr.x, p0, o);
+}
+
+void BM_InPlaneOrbitBranchDelta(benchmark::State& state) {
+  const ReducedForcedSystem sys(fig2_in_plane(0.05), ContinuationParameter::Delta);
+  static const double reference = [&] {
+    OrbitOptions ro;
+    ro.segments = 32;
+    const PeriodicOrbitProblem pr(sys, ro);
+    const Branch b = in_plane_branch(pr, sys);
+    return b.special_points.empty() ? std::nan("") : b.special_points[0].p;
+  }();
+  OrbitOptions oo;
+  oo.segments = static_cast<int>(state.range(0));
+  const PeriodicOrbitProblem pr(sys, oo);
+  std::size_t points = 0, integrations = 0;
+  double precision = 0, err = 0, trivial = 0;
+  for (auto _ : state) {
+    const std::size_t i0 = pr.integrations();
+    const Branch b = in_plane_branch(pr, sys);
+    points += b.points.size();
+    integrations += pr.integrations() - i0;
+    state.PauseTiming();
+    if (b.special_points.size() != 1) state.SkipWithError("expected one UZ point");
+    for (const auto& sp : b.special_points) {
+      precision = std::max(precision, sp.precision);
+      err = std::max(err, std::abs(sp.p - reference));
+    }
+    for (const auto& pt : b.points) trivial = std::max(trivial, std::abs(*pr.floquet(pt.x, pt.p).trivial - 1));
+    state.ResumeTiming();
+  }
+  state.counters["points_per_second"] = benchmark::Counter(static_cast<double>(points), benchmark::Counter::kIsRate);
+  state.counters["points"] = static_cast<double>(points) / static_cast<double>(state.iterations());
+  state.counters["integrations_per_point"] = static_cast<double>(integrations) / static_cast<double>(points);
+  state.counters["UZ_precision"] = precision;
+  state.counters["UZ_vs_N32"] = err;
+  state.counters["max_trivial_multiplier_error"] = trivial;
+}
+BENCHMARK(BM_InPlaneOrbitBranchDelta)->Arg(4)->Arg(8)->Arg(16)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace rbcstab

@@ -33,7 +33,7 @@ struct DiagramCliOptions {
   std::vector<int> counts;
   std::string classifier, out = "diagram", journal, shard = "0/1", schedule = "dynamic";
   int threads = 0;
-  bool no_seconds = false, quiet = false, no_journal = false;
+  bool no_seconds = false, quiet = false, no_journal = false, json = false;
   double sync_interval = 1.0;
   double alpha_fixed = -1;
 };
@@ -95,7 +95,9 @@ int run(const DiagramCliOptions& o) {
   try {
     write_file_atomic(prefix + ".csv", diagram_csv(spec, r.points, oo));
     nlohmann::json doc = diagram_json(diagram_header(sf.scene, sf.options, spec), spec, r.points, out_shard, oo);
-    if (out_shard.n == 1) doc["agreement"] = agreement_json(sf.scene, spec, r.points);
+    AgreementOptions ao;
+    ao.threads = o.threads;
+    if (out_shard.n == 1) doc["agreement"] = agreement_json(sf.scene, spec, r.points, ao);
     write_file_atomic(prefix + ".json", doc.dump(1) + "\n");
   } catch (const std::runtime_error& e) {
     std::cerr << "rbcstab: error: " << e.what() << "\n";
@@ -106,6 +108,20 @@ int run(const DiagramCliOptions& o) {
     failed += p.verdict == Verdict::failed;
     unstable += p.verdict == Verdict::unstable;
   }
+  if (o.json)
+    std::cout << nlohmann::json{{"csv", prefix + ".csv"},
+                                {"json", prefix + ".json"},
+                                {"points", r.points.size()},
+                                {"computed", r.computed},
+                                {"resumed", r.resumed},
+                                {"stable", r.points.size() - unstable - failed},
+                                {"unstable", unstable},
+                                {"failed", failed},
+                                {"complete", r.complete},
+                                {"config_hash", r.config_hash},
+                                {"seconds", r.seconds}}
+                     .dump(2)
+              << "\n";
   if (show)
     std::cerr << "rbcstab: diagram done: " << r.points.size() << " points (" << r.computed << " computed, " << r.resumed
               << " resumed) in " << duration(r.seconds) << "; " << unstable << " unstable, " << failed
@@ -137,6 +153,7 @@ static Runner add_diagram(CLI::App& app) {
   app.add_option("--sync-interval", o->sync_interval, "fdatasync the journal at most this often [s]")->capture_default_str();
   app.add_flag("--no-seconds", o->no_seconds, "omit per-point wall-clock seconds: outputs identical byte for byte across runs");
   app.add_flag("--quiet", o->quiet, "no progress on stderr");
+  app.add_flag("--json", o->json, "print one JSON object on stdout (output files, point counts by verdict, seconds)");
   return [o] { return run(*o); };
 }
 

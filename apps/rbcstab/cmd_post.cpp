@@ -11,6 +11,7 @@
 #include "exit_codes.hpp"
 #include "rbcstab/analysis/post_instability.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/report/panels.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -61,19 +62,7 @@ int run_fig6e(const PostOptions& o) {
     std::cout << j.dump(2) << "\n";
     return kOk;
   }
-  std::cout << "# Fig. 6e: Delta~2 (continuous l_*, integer l_s) vs simulated Delta-bar_2 (T = " << f.T
-            << ", tail mean over " << f.simulation.tail_window << "); n/a: outside domain or stable\n";
-  std::cout << "lambda,B,C,alpha,ln_alpha,l_s,l_Delta,Delta2_tilde,Delta2_tilde_integer,Delta2_bar,ratio,ratio_integer\n";
-  auto v = [](const Quantity& q) {
-    if (!q.valid()) return std::string("n/a");
-    std::ostringstream ss;
-    ss << std::setprecision(10) << q.value;
-    return ss.str();
-  };
-  for (const Fig6eRow& r : rows)
-    std::cout << r.lambda << ',' << r.B << ',' << r.C << ',' << r.alpha << ',' << r.ln_alpha << ',' << r.surviving_mode
-              << ',' << r.l_Delta << ',' << v(r.Delta2_tilde) << ',' << v(r.Delta2_tilde_integer) << ','
-              << v(r.Delta2_bar) << ',' << v(r.ratio) << ',' << v(r.ratio_integer) << '\n';
+  std::cout << fig6e_csv(f, rows);  // the same CSV a Fig. 6e panel report draws (report/panels.hpp)
   return kOk;
 }
 

@@ -1,0 +1,434 @@
+#include "rbcstab/continuation/orbit.hpp"
+
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <utility>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/integrate/integrator.hpp"
+
+namespace rbcstab {
+
+namespace {
+
+constexpr double kTwoPi = 2 * M_PI;
+
+// Central-difference step in p: cube root of eps balances truncation against rounding.
+double fd_step(double v) { return std::cbrt(std::numeric_limits<double>::epsilon()) * (1 + std::abs(v)); }
+
+// A ForcedSystem at fixed p seen as a System for integrate(), optionally augmented with
+//   variational: Phi' = J Phi (n x n, column-major) and s' = J s + f_p (the parameter sensitivity);
+//   angle:       theta' = (x0 f1 - x1 f0) / (x0^2 + x1^2), the continuous argument of z = x0 + i x1.
+// Only explicit steppers are used (rk8pd), which never ask for the Jacobian of the augmented system,
+// so jacobian/observe/amplitudes are not part of this adapter's contract and throw logic_error.
+class Augmented final : public System {
+ public:
+  enum class Mode { plain, variational, angle };
+  Augmented(const ForcedSystem& s, double p, Mode mode) : s_(s), p_(p), mode_(mode), n_(s.dimension()) {}
+  ModelLevel level() const override { return ModelLevel::automatic; }
+  std::size_t dimension() const override {
+    const auto n = static_cast<std::size_t>(n_);
+    return mode_ == Mode::plain ? n : mode_ == Mode::angle ? n + 1 : n + n * n + n;
+  }
+  int L() const override { return 2; }
+  void rhs(double t, std::span<const double> y, std::span<double> dydt) const override {
+    const auto n = static_cast<std::size_t>(n_);
+    s_.rhs(t, y.first(n), p_, dydt.first(n));
+    if (mode_ == Mode::angle) {
+      dydt[n] = (y[0] * dydt[1] - y[1] * dydt[0]) / (y[0] * y[0] + y[1] * y[1]);
+    } else if (mode_ == Mode::variational) {
+      s_.jacobian(t, y.first(n), p_, J_);
+      Eigen::Map<const Eigen::MatrixXd> Phi(y.data() + n, n_, n_);
+      Eigen::Map<Eigen::MatrixXd>(dydt.data() + n, n_, n_).noalias() = J_ * Phi;
+      fp_.resize(n_);
+      s_.parameter_derivative(t, y.first(n), p_, std::span<double>(fp_.data(), n));
+      Eigen::Map<const Eigen::VectorXd> sp(y.data() + n + n * n, n_);
+      Eigen::Map<Eigen::VectorXd>(dydt.data() + n + n * n, n_).noalias() = J_ * sp + fp_;
+    }
+  }
+  void jacobian(double, std::span<const double>, StructuredJacobian&, std::span<double>) const override {
+    throw std::logic_error("orbit shooting integrates with explicit steppers only");
+  }
+  Observation observe(double, std::span<const double>) const override {
+    throw std::logic_error("orbit shooting adapter has no observation");
+  }
+  std::vector<double> initial_state() const override { return {}; }
+  ModeAmplitudes amplitudes(double, std::span<const double>) const override {
+    throw std::logic_error("orbit shooting adapter has no amplitudes");
+  }
+
+ private:
+  const ForcedSystem& s_;
+  double p_;
+  Mode mode_;
+  Eigen::Index n_;
+  mutable Eigen::MatrixXd J_;
+  mutable Eigen::VectorXd fp_;
+};
+
+IntegratorOptions integrator_options(const OrbitOptions& o) {
+  IntegratorOptions io;
+  io.stepper = Stepper::rk8pd;
+  io.rtol = o.rtol;
+  io.atol = o.atol;
+  return io;
+}
+
+}  // namespace
+
+void ForcedSystem::parameter_derivative(double t, std::span<const double> x, double p, std::span<double> fp) const {
+  const double h = fd_step(p);
+  std::vector<double> fm(fp.size());
+  rhs(t, x, p + h, fp);
+  rhs(t, x, p - h, fm);
+  for (std::size_t i = 0; i < fp.size(); ++i) fp[i] = (fp[i] - fm[i]) / (2 * h);
+}
+
+// ---------------------------------------------------------------- reduced in-plane system
+
+ReducedForcedSystem::ReducedForcedSystem(const Scene& scene, ContinuationParameter free) : scene_(scene), free_(free) {
+  scene_.validate();
+  // As for equilibria: only the rest shape's orientation enters the reduced system (its size is
+  // kappa = 1/(Lambda S)), so build it with Delta0 = Delta > 0 to keep it when Delta0 is continued.
+  Scene oriented = scene_;
+  oriented.parameters.Delta0 = oriented.parameters.Delta;
+  init_ = initial_state(oriented);
+}
+
+const ReducedModel& ReducedForcedSystem::model(double p) const {
+  auto it = cache_.find(p);
+  if (it != cache_.end()) return it->second;
+  if (cache_.size() >= 8) cache_.clear();  // no reference is held across calls (see parameter_derivative)
+  return cache_.try_emplace(p, with_parameter(scene_.parameters, free_, p), init_).first->second;
+}
+
+void ReducedForcedSystem::rhs(double t, std::span<const double> x, double p, std::span<double> f) const {
+  model(p).rhs(t, x, f);
+}
+
+void ReducedForcedSystem::jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const {
+  StructuredJacobian sj;
+  double dfdt[3];
+  model(p).jacobian(t, x, sj, dfdt);
+  Eigen::Matrix<double, 3, 3, Eigen::RowMajor> D;
+  sj.to_dense(std::span<double>(D.data(), 9));
+  J = D;
+}
+
+void ReducedForcedSystem::parameter_derivative(double t, std::span<const double> x, double p,
+                                               std::span<double> fp) const {
+  const double h = fd_step(p);
+  double fplus[3], fminus[3];
+  model(p + h).rhs(t, x, fplus);
+  try {
+    model(p - h).rhs(t, x, fminus);
+  } catch (const InvalidArgument&) {
+    // p on the edge of its domain (lambda = 0): second-order one-sided difference.
+    double f0[3], f2[3];
+    model(p).rhs(t, x, f0);
+    model(p + 2 * h).rhs(t, x, f2);
+    for (int i = 0; i < 3; ++i) fp[static_cast<std::size_t>(i)] = (4 * fplus[i] - 3 * f0[i] - f2[i]) / (2 * h);
+    return;
+  }
+  for (int i = 0; i < 3; ++i) fp[static_cast<std::size_t>(i)] = (fplus[i] - fminus[i]) / (2 * h);
+}
+
+Eigen::VectorXd ReducedForcedSystem::relaxed_state(double T) const {
+  require(std::isfinite(T) && T > 0, "T", T, "a finite number > 0");
+  const ReducedModel& m = model(start_parameter());
+  const std::vector<double> y0 = m.initial_state();
+  const double grid[1] = {kTwoPi * std::ceil(T / kTwoPi)};
+  IntegratorOptions o;
+  o.rtol = 1e-10;
+  o.atol = 1e-12;
+  const IntegrationResult r = integrate(m, y0, 0.0, grid, o, {});
+  return Eigen::Vector3d(r.y[0], r.y[1], r.y[2]);
+}
+
+// ---------------------------------------------------------------- options, names
+
+void OrbitOptions::validate() const {
+  require(segments >= 1 && segments <= 1000, "segments", segments, "an integer in [1, 1000]");
+  require(std::isfinite(rtol) && rtol >= 1e-15 && rtol <= 1e-6, "rtol", rtol, "[1e-15, 1e-6] (Floquet multipliers need a tight tolerance)");
+  require(std::isfinite(atol) && atol > 0 && atol <= 1e-6, "atol", atol, "(0, 1e-6]");
+  require(samples_per_segment >= 4 && samples_per_segment <= 100000, "samples_per_segment", samples_per_segment,
+          "an integer in [4, 100000]");
+}
+
+std::string to_string(OrbitKind kind) { return kind == OrbitKind::swinging ? "swinging" : "tumbling"; }
+
+// ---------------------------------------------------------------- the shooting problem
+
+PeriodicOrbitProblem::PeriodicOrbitProblem(const ForcedSystem& system, const OrbitOptions& options)
+    : sys_(system), o_(options), n_(system.dimension()), N_(options.segments) {
+  o_.validate();
+  require(n_ >= 2, "dimension", static_cast<double>(n_), ">= 2 (components 0 and 1 are the winding plane)");
+}
+
+const PeriodicOrbitProblem::Shooting& PeriodicOrbitProblem::shoot(const Eigen::VectorXd& X, double p) const {
+  if (cache_.valid && cache_.p == p && cache_.X.size() == X.size() && cache_.X == X) return cache_;
+  cache_.valid = false;
+  cache_.X = X;
+  cache_.p = p;
+  cache_.ok = true;
+  const auto n = static_cast<std::size_t>(n_);
+  const Augmented aug(sys_, p, Augmented::Mode::variational);
+  const IntegratorOptions io = integrator_options(o_);
+  cache_.phi.assign(static_cast<std::size_t>(N_), Eigen::VectorXd());
+  cache_.s.assign(static_cast<std::size_t>(N_), Eigen::VectorXd());
+  cache_.M.assign(static_cast<std::size_t>(N_), Eigen::MatrixXd());
+  std::vector<double> y0(n + n * n + n, 0.0);
+  for (int j = 0; j < N_; ++j) {
+    const double t0 = kTwoPi * j / N_, t1 = kTwoPi * (j + 1) / N_;
+    std::fill(y0.begin(), y0.end(), 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      y0[i] = X[static_cast<Eigen::Index>(static_cast<std::size_t>(j) * n + i)];
+      y0[n + i * n + i] = 1;  // Phi(t0) = I
+    }
+    const double grid[1] = {t1};
+    const IntegrationResult r = integrate(aug, y0, t0, grid, io, {});
+    ++integrations_;
+    const auto js = static_cast<std::size_t>(j);
+    if (r.status != IntegrationStatus::success) {
+      cache_.ok = false;
+      break;
+    }
+    cache_.phi[js] = Eigen::Map<const Eigen::VectorXd>(r.y.data(), n_);
+    cache_.M[js] = Eigen::Map<const Eigen::MatrixXd>(r.y.data() + n, n_, n_);
+    cache_.s[js] = Eigen::Map<const Eigen::VectorXd>(r.y.data() + n + n * n, n_);
+  }
+  cache_.valid = true;
+  return cache_;
+}
+
+void PeriodicOrbitProblem::residual(const Eigen::VectorXd& X, double p, Eigen::VectorXd& F) const {
+  const Shooting& sh = shoot(X, p);
+  F.resize(n_ * N_);
+  // A failed integration (the orbit leaves the integrator's reach) is not an exception: NaN makes
+  // the engine's corrector fail and shrink the step, as for any non-converging Newton.
+  if (!sh.ok) {
+    F.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+  for (int j = 0; j < N_; ++j) {
+    const auto js = static_cast<std::size_t>(j);
+    const Eigen::Index next = ((j + 1) % N_) * n_;
+    F.segment(j * n_, n_) = sh.phi[js] - X.segment(next, n_);
+  }
+  if (sys_.conserves_norm()) F.head(n_) += (X.head(n_).squaredNorm() - 1) * sh.phi[0];
+}
+
+void PeriodicOrbitProblem::jacobian(const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) const {
+  const Shooting& sh = shoot(X, p);
+  const Eigen::Index m = n_ * N_;
+  J.setZero(m, m);
+  if (!sh.ok) {
+    J.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+  for (int j = 0; j < N_; ++j) {
+    const auto js = static_cast<std::size_t>(j);
+    J.block(j * n_, j * n_, n_, n_) += sh.M[js];
+    J.block(j * n_, ((j + 1) % N_) * n_, n_, n_) -= Eigen::MatrixXd::Identity(n_, n_);
+  }
+  if (sys_.conserves_norm()) {
+    const Eigen::VectorXd x0 = X.head(n_);
+    J.block(0, 0, n_, n_) += (x0.squaredNorm() - 1) * sh.M[0] + 2 * sh.phi[0] * x0.transpose();
+  }
+}
+
+void PeriodicOrbitProblem::parameter_derivative(const Eigen::VectorXd& X, double p, Eigen::VectorXd& Fp) const {
+  const Shooting& sh = shoot(X, p);
+  Fp.resize(n_ * N_);
+  if (!sh.ok) {
+    Fp.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+  for (int j = 0; j < N_; ++j) Fp.segment(j * n_, n_) = sh.s[static_cast<std::size_t>(j)];
+  if (sys_.conserves_norm()) Fp.head(n_) *= X.head(n_).squaredNorm();
+}
+
+Floquet PeriodicOrbitProblem::floquet(const Eigen::VectorXd& X, double p) const {
+  const Shooting& sh = shoot(X, p);
+  Floquet fl;
+  if (!sh.ok) {
+    fl.monodromy.setConstant(n_, n_, std::numeric_limits<double>::quiet_NaN());
+    fl.multipliers.setConstant(sys_.conserves_norm() ? n_ - 1 : n_, std::numeric_limits<double>::quiet_NaN());
+    return fl;
+  }
+  fl.monodromy = sh.M[0];
+  for (int j = 1; j < N_; ++j) fl.monodromy = sh.M[static_cast<std::size_t>(j)] * fl.monodromy;
+  if (!sys_.conserves_norm()) {
+    fl.multipliers = Eigen::EigenSolver<Eigen::MatrixXd>(fl.monodromy, false).eigenvalues();
+    return fl;
+  }
+  // x0^T M = x0^T (d/dt (x^T Phi) = (f + J^T x)^T Phi = 0 because x.f = 0 identically), so M maps
+  // the tangent plane x0^perp into itself: its restriction carries the nontrivial multipliers.
+  const Eigen::VectorXd x0 = X.head(n_);
+  const Eigen::MatrixXd Q = Eigen::HouseholderQR<Eigen::MatrixXd>(x0).householderQ();
+  const Eigen::MatrixXd T = Q.rightCols(n_ - 1);
+  const Eigen::MatrixXd R = T.transpose() * fl.monodromy * T;
+  fl.multipliers = Eigen::EigenSolver<Eigen::MatrixXd>(R, false).eigenvalues();
+  fl.trivial = x0.dot(fl.monodromy * x0) / x0.squaredNorm();
+  return fl;
+}
+
+Eigen::VectorXcd PeriodicOrbitProblem::spectrum(const Eigen::VectorXd& X, double p) const {
+  return floquet(X, p).multipliers;
+}
+
+Eigen::VectorXd PeriodicOrbitProblem::shooting_guess(const Eigen::VectorXd& x0, double p) const {
+  require(x0.size() == n_, "x0", static_cast<double>(x0.size()), "a state of the system's dimension");
+  Eigen::VectorXd X(n_ * N_);
+  X.head(n_) = x0;
+  if (N_ == 1) return X;
+  std::vector<double> grid;
+  for (int j = 1; j < N_; ++j) grid.push_back(kTwoPi * j / N_);
+  const Augmented plain(sys_, p, Augmented::Mode::plain);
+  int k = 1;
+  integrate(plain, std::span<const double>(x0.data(), static_cast<std::size_t>(n_)), 0.0, grid,
+            integrator_options(o_), [&](double, std::span<const double> y) {
+              X.segment(k * n_, n_) = Eigen::Map<const Eigen::VectorXd>(y.data(), n_);
+              ++k;
+            });
+  ++integrations_;
+  return X;
+}
+
+OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p) const {
+  const auto n = static_cast<std::size_t>(n_);
+  const int S = o_.samples_per_segment;
+  const double h = kTwoPi / (N_ * S);
+  const Augmented with_angle(sys_, p, Augmented::Mode::angle);
+  const Augmented plain(sys_, p, Augmented::Mode::plain);
+  const IntegratorOptions io = integrator_options(o_);
+  const bool norm = sys_.conserves_norm();
+  auto r_of = [&](const Eigen::VectorXd& x) { return std::hypot(x[0], x[1]) / (norm ? x.norm() : 1.0); };
+
+  // Uniform samples t_k = k h, k = 0 .. N S - 1, with the continuous angle of z.
+  std::vector<Eigen::VectorXd> xs;
+  std::vector<double> theta;
+  xs.reserve(static_cast<std::size_t>(N_ * S));
+  double th = std::atan2(X[1], X[0]);
+  const double theta0 = th;
+  for (int j = 0; j < N_; ++j) {
+    const Eigen::VectorXd xj = X.segment(j * n_, n_);
+    // Continue the angle across segments (x_j equals the previous segment's end to Newton's tolerance).
+    if (j > 0) th += std::remainder(std::atan2(xj[1], xj[0]) - th, kTwoPi);
+    std::vector<double> y0(xj.data(), xj.data() + n_);
+    y0.push_back(th);
+    std::vector<double> grid;
+    for (int k = 1; k <= S; ++k) grid.push_back(kTwoPi * j / N_ + k * h);
+    xs.push_back(xj);
+    theta.push_back(th);
+    int k = 1;
+    const IntegrationResult r = integrate(with_angle, y0, kTwoPi * j / N_, grid, io, [&](double, std::span<const double> y) {
+      if (k < S) {
+        xs.emplace_back(Eigen::Map<const Eigen::VectorXd>(y.data(), n_));
+        theta.push_back(y[n]);
+      }
+      ++k;
+    });
+    ++integrations_;
+    if (r.status != IntegrationStatus::success) {
+      // z passed (numerically) through 0: the angle is undefined there. Fill the segment from the
+      // plain flow and read the winding from sample increments below.
+      xs.resize(static_cast<std::size_t>(j * S + 1));
+      theta.resize(static_cast<std::size_t>(j * S + 1));
+      k = 1;
+      integrate(plain, std::span<const double>(xj.data(), n), kTwoPi * j / N_, grid, io, [&](double, std::span<const double> y) {
+        if (k < S) {
+          xs.emplace_back(Eigen::Map<const Eigen::VectorXd>(y.data(), n_));
+          theta.push_back(theta.back() + std::remainder(std::atan2(y[1], y[0]) - theta.back(), kTwoPi));
+        }
+        ++k;
+      });
+      ++integrations_;
+      th = theta.back() + std::remainder(std::atan2(X[((j + 1) % N_) * n_ + 1], X[((j + 1) % N_) * n_]) - theta.back(), kTwoPi);
+    } else {
+      th = r.y[n];
+    }
+  }
+  OrbitSummary o;
+  const double total = th - theta0;  // the angle gained over one period (state back at x_0)
+  o.winding = static_cast<int>(std::lround(total / kTwoPi));
+  o.kind = o.winding == 0 ? OrbitKind::swinging : OrbitKind::tumbling;
+  o.r0 = r_of(X.head(n_));
+  o.Psi0 = -theta0;
+  if (o.Psi0 <= -M_PI) o.Psi0 += kTwoPi;
+  o.r_min = o.r_max = o.r0;
+  o.Psi_min = o.Psi_max = o.Psi0;
+  o.mean = Eigen::VectorXd::Zero(n_);
+  std::size_t kmin = 0;
+  for (std::size_t k = 0; k < xs.size(); ++k) {
+    const double r = r_of(xs[k]);
+    if (r < o.r_min) o.r_min = r, kmin = k;
+    o.r_max = std::max(o.r_max, r);
+    const double Psi = o.Psi0 - (theta[k] - theta0);
+    o.Psi_min = std::min(o.Psi_min, Psi);
+    o.Psi_max = std::max(o.Psi_max, Psi);
+    o.mean += xs[k];
+  }
+  o.mean /= static_cast<double>(xs.size());
+  // The period's end (the state is back at x_0): a tumbling orbit's Psi range spans 2 pi |winding|.
+  o.Psi_min = std::min(o.Psi_min, o.Psi0 - total);
+  o.Psi_max = std::max(o.Psi_max, o.Psi0 - total);
+
+  // Refine r_min: the zero of g(t) = d/dt |z|^2 / 2 = x0 f0 + x1 f1 between the neighbouring samples
+  // (Illinois secant; each trial integrates from the left sample). A smooth function of p, so the
+  // transition function below is continuous and its zero can be located as a UZ event.
+  const std::size_t K = xs.size();
+  const std::size_t kl = (kmin + K - 1) % K, kr = (kmin + 1) % K;
+  const double ta = static_cast<double>(kmin) * h - h, tb = static_cast<double>(kmin) * h + h;
+  const Eigen::VectorXd xa = xs[kl];
+  auto state_at = [&](double t, Eigen::VectorXd& x) {
+    x = xa;
+    if (t == ta) return true;
+    const double grid[1] = {t};
+    const IntegrationResult r = integrate(plain, std::span<const double>(xa.data(), n), ta, grid, io, {});
+    ++integrations_;
+    if (r.status != IntegrationStatus::success) return false;
+    x = Eigen::Map<const Eigen::VectorXd>(r.y.data(), n_);
+    return true;
+  };
+  auto g_at = [&](double t, const Eigen::VectorXd& x) {
+    Eigen::VectorXd f(n_);
+    sys_.rhs(t, std::span<const double>(x.data(), n), p, std::span<double>(f.data(), n));
+    return x[0] * f[0] + x[1] * f[1];
+  };
+  double a = ta, b = tb;
+  double ga = g_at(ta, xa), gb = g_at(tb, xs[kr]);
+  if (ga < 0 && gb > 0) {
+    int side = 0;
+    Eigen::VectorXd x;
+    for (int it = 0; it < 60 && b - a > 1e-10; ++it) {
+      double t = a - ga * (b - a) / (gb - ga);
+      if (!(t > a && t < b) || it % 4 == 3) t = 0.5 * (a + b);
+      if (!state_at(t, x)) break;
+      o.r_min = std::min(o.r_min, r_of(x));
+      const double g = g_at(t, x);
+      if (g == 0) break;
+      if (g < 0) {
+        a = t, ga = g;
+        if (side == -1) gb *= 0.5;
+        side = -1;
+      } else {
+        b = t, gb = g;
+        if (side == 1) ga *= 0.5;
+        side = 1;
+      }
+    }
+  }
+  o.transition_function = o.winding == 0 ? o.r_min : -o.r_min;
+  return o;
+}
+
+UserEvent PeriodicOrbitProblem::transition_event(const std::string& name) const {
+  return UserEvent{name, [this](const Eigen::VectorXd& X, double p) { return summary(X, p).transition_function; }};
+}
+
+}  // namespace rbcstab

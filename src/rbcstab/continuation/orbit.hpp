@@ -1,0 +1,150 @@
+#pragma once
+// Periodic orbits of periodically forced ODEs x' = f(t, x, p) (period 2 pi in t, fixed) by multiple
+// shooting with variational equations, as a ContinuationProblem with Floquet multipliers
+// (stability_kind = multipliers, so the engine's LPC / PD / NS test functions apply).
+//
+// One code path for every forced system: the in-plane reduced system (ReducedForcedSystem) and the
+// textbook normal forms of the tests implement the small ForcedSystem interface.
+//
+// Angles modulo 2 pi: a tumbling orbit of the reduced system (Psi advances by -2 pi k per period) is
+// still closed in the regular coordinates y = (Re z, Im z, w), because Psi only enters through
+// z = r e^{-i Psi}. The unknowns therefore never carry an angle and need no unwrapping; the winding
+// number is a property of the solution, computed afterwards (orbit_summary).
+#include <Eigen/Dense>
+#include <cstddef>
+#include <map>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/problem.hpp"
+#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/scene.hpp"
+
+namespace rbcstab {
+
+// x' = f(t, x, p), 2 pi-periodic in t. Components 0 and 1 are the plane whose winding classifies
+// the orbit (Re z, Im z for the reduced system).
+class ForcedSystem {
+ public:
+  virtual ~ForcedSystem() = default;
+  virtual Eigen::Index dimension() const = 0;
+  virtual void rhs(double t, std::span<const double> x, double p, std::span<double> f) const = 0;
+  // df/dx (n x n).
+  virtual void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const = 0;
+  // df/dp. Default: central differences of rhs in p (no integration noise: rhs is smooth in p).
+  virtual void parameter_derivative(double t, std::span<const double> x, double p, std::span<double> fp) const;
+  // True when x . f(t, x, p) = 0 identically (Q = |x|^2 conserved, the reduced system's excess
+  // area): the monodromy then has a trivial multiplier 1 and the shooting system is regularised.
+  virtual bool conserves_norm() const { return false; }
+  virtual std::string parameter_name() const { return "p"; }
+};
+
+// The in-plane reduced system (ReducedModel, z0(t) = z0(0) e^{it}) with one free ContinuationParameter.
+class ReducedForcedSystem final : public ForcedSystem {
+ public:
+  ReducedForcedSystem(const Scene& scene, ContinuationParameter free);
+  Eigen::Index dimension() const override { return 3; }
+  void rhs(double t, std::span<const double> x, double p, std::span<double> f) const override;
+  void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const override;
+  void parameter_derivative(double t, std::span<const double> x, double p, std::span<double> fp) const override;
+  bool conserves_norm() const override { return true; }
+  std::string parameter_name() const override { return to_string(free_); }
+
+  double start_parameter() const { return get_parameter(scene_.parameters, free_); }
+  // The state after relaxing from the scene's initial shape for T rounded up to a multiple of 2 pi
+  // (so it is a state at t = 0 mod 2 pi, a start for the shooting Newton on an attracting orbit).
+  Eigen::VectorXd relaxed_state(double T) const;
+  const ReducedModel& model(double p) const;  // cached (a few parameter values: p and p +- h)
+
+ private:
+  Scene scene_;
+  ContinuationParameter free_;
+  InitialState init_;
+  mutable std::map<double, ReducedModel> cache_;
+};
+
+struct OrbitOptions {
+  int segments = 8;            // shooting segments N: more = better conditioned Newton for unstable orbits
+  double rtol = 1e-12;         // integration tolerance of each segment (with its variational equations)
+  double atol = 1e-13;         // absolute tolerance (states are O(1))
+  int samples_per_segment = 64;  // dense samples for r_min/max, Psi_min/max (the winding is integrated)
+  void validate() const;       // throws InvalidArgument naming the field
+};
+
+// Floquet data of a periodic orbit at t = 0: the monodromy M = M_{N-1} ... M_0 (plain product; the
+// 3 x 3 case loses nothing measurable at rtol 1e-12, docs/continuation.md), the nontrivial
+// multipliers (on the sphere's tangent plane x0^perp, which M leaves invariant when |x|^2 is conserved)
+// and the trivial one x0^T M x0 / |x0|^2 (exactly 1 in exact arithmetic).
+struct Floquet {
+  Eigen::MatrixXd monodromy;
+  Eigen::VectorXcd multipliers;       // nontrivial (all of them when no norm is conserved)
+  std::optional<double> trivial;      // only for conserves_norm systems
+};
+
+enum class OrbitKind { swinging, tumbling };
+std::string to_string(OrbitKind kind);
+
+// What an orbit looks like over one period (reduced system: r, Psi of z = r e^{-i Psi}).
+struct OrbitSummary {
+  double r0 = 0, Psi0 = 0;          // at t = 0 (Psi0 in (-pi, pi])
+  double r_min = 0, r_max = 0;      // r_min refined to the integration tolerance; r_max over the samples
+  double Psi_min = 0, Psi_max = 0;  // of the continuous Psi(t) started at Psi0, over the samples
+  int winding = 0;                  // turns of z around 0 per period (counter-clockwise); Psi advances -2 pi winding
+  OrbitKind kind = OrbitKind::swinging;
+  double transition_function = 0;   // +r_min when swinging, -r_min when tumbling: continuous, 0 at the transition
+  Eigen::VectorXd mean;             // period average of x (periodic trapezoid rule on the uniform samples:
+                                    // spectrally accurate for a smooth periodic orbit)
+};
+
+// F(X, p) = 0 for X = (x_0, ..., x_{N-1}), x_j the state at t_j = 2 pi j / N:
+//   E_j = phi(t_{j+1}, t_j, x_j) - x_{j+1}  (x_N = x_0), and for conserves_norm systems
+//   E_0 = |x_0|^2 phi(t_1, t_0, x_0) - x_1, which forces |x_0| = 1 at a zero and makes the Jacobian
+//   regular where the trivial multiplier is simple (docs/continuation.md). The system must outlive
+//   the problem.
+class PeriodicOrbitProblem final : public ContinuationProblem {
+ public:
+  PeriodicOrbitProblem(const ForcedSystem& system, const OrbitOptions& options = {});
+  Eigen::Index dimension() const override { return n_ * N_; }
+  void residual(const Eigen::VectorXd& X, double p, Eigen::VectorXd& F) const override;
+  void jacobian(const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) const override;
+  void parameter_derivative(const Eigen::VectorXd& X, double p, Eigen::VectorXd& Fp) const override;
+  StabilityKind stability_kind() const override { return StabilityKind::multipliers; }
+  Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p) const override;
+  std::string parameter_name() const override { return sys_.parameter_name(); }
+
+  int segments() const { return N_; }
+  const OrbitOptions& options() const { return o_; }
+  // The shooting unknowns of the trajectory through x0 at t = 0 (a start for Newton).
+  Eigen::VectorXd shooting_guess(const Eigen::VectorXd& x0, double p) const;
+  Eigen::VectorXd state_at_zero(const Eigen::VectorXd& X) const { return X.head(n_); }
+  Floquet floquet(const Eigen::VectorXd& X, double p) const;
+  // Integrates the orbit densely from the segments' states (winding via the integrated angle of z).
+  OrbitSummary summary(const Eigen::VectorXd& X, double p) const;
+  // The swinging <-> tumbling transition as a UZ event: summary().transition_function.
+  UserEvent transition_event(const std::string& name = "swing_tumble") const;
+  // Counters of the integrations done so far (work measure for benchmarks).
+  std::size_t integrations() const { return integrations_; }
+
+ private:
+  struct Shooting {
+    Eigen::VectorXd X;
+    double p = 0;
+    bool valid = false, ok = false;
+    std::vector<Eigen::VectorXd> phi, s;  // phi_j(x_j), d phi_j / dp
+    std::vector<Eigen::MatrixXd> M;       // d phi_j / d x_j
+  };
+  const Shooting& shoot(const Eigen::VectorXd& X, double p) const;
+  const ForcedSystem& sys_;
+  OrbitOptions o_;
+  Eigen::Index n_;
+  int N_;
+  mutable Shooting cache_;
+  mutable std::size_t integrations_ = 0;
+};
+
+}  // namespace rbcstab

@@ -1,0 +1,434 @@
+// Periodic orbits by multiple shooting: LPC / PD / NS on textbook forced systems whose orbit and
+// Floquet multipliers are known in closed form, and the in-plane reduced system (Floquet multipliers
+// against a finite-difference monodromy, the trivial multiplier, independence of the number of
+// segments, a long direct simulation, the swinging <-> tumbling transition).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <algorithm>
+#include <vector>
+
+#include <Eigen/Eigenvalues>
+
+#include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/integrate/integrator.hpp"
+
+namespace rbcstab {
+namespace {
+
+constexpr double kTwoPi = 2 * M_PI;
+
+// Forced saddle-node: x1' = p - (x1 - sin t)^2 + cos t, x2' = -x2 + sin t. With u = x1 - sin t,
+// u' = p - u^2: orbits x1 = sin t +- sqrt(p), x2 = (sin t - cos t)/2, multipliers e^{-+4 pi sqrt(p)}
+// and e^{-2 pi}. The two orbits meet in a fold of cycles (LPC) at p = 0.
+class ForcedFold final : public ForcedSystem {
+ public:
+  Eigen::Index dimension() const override { return 2; }
+  void rhs(double t, std::span<const double> x, double p, std::span<double> f) const override {
+    const double u = x[0] - std::sin(t);
+    f[0] = p - u * u + std::cos(t);
+    f[1] = -x[1] + std::sin(t);
+  }
+  void jacobian(double t, std::span<const double> x, double, Eigen::MatrixXd& J) const override {
+    J.setZero(2, 2);
+    J(0, 0) = -2 * (x[0] - std::sin(t));
+    J(1, 1) = -1;
+  }
+  void parameter_derivative(double, std::span<const double>, double, std::span<double> fp) const override {
+    fp[0] = 1;
+    fp[1] = 0;
+  }
+};
+
+// x' = A(t) x + b(t) + c |x - x_p(t)|^2 e_1 with the known orbit x_p(t) = (cos t + a sin 2t, sin t)
+// (b(t) = x_p' - A x_p). The quadratic term vanishes to second order on the orbit, so the multipliers
+// are those of A(t) alone, but Newton and the continuation see a nonlinear problem.
+class ForcedLinear : public ForcedSystem {
+ public:
+  Eigen::Index dimension() const override { return 2; }
+  virtual Eigen::Matrix2d A(double t, double a) const = 0;
+  static Eigen::Vector2d xp(double t, double a) { return {std::cos(t) + a * std::sin(2 * t), std::sin(t)}; }
+  static Eigen::Vector2d xp_dot(double t, double a) { return {-std::sin(t) + 2 * a * std::cos(2 * t), std::cos(t)}; }
+  void rhs(double t, std::span<const double> x, double a, std::span<double> f) const override {
+    const Eigen::Vector2d X(x[0], x[1]), e = X - xp(t, a);
+    const Eigen::Vector2d F = A(t, a) * e + xp_dot(t, a) + Eigen::Vector2d(0.7 * e.squaredNorm(), 0);
+    f[0] = F[0];
+    f[1] = F[1];
+  }
+  void jacobian(double t, std::span<const double> x, double a, Eigen::MatrixXd& J) const override {
+    const Eigen::Vector2d e = Eigen::Vector2d(x[0], x[1]) - xp(t, a);
+    J = A(t, a);
+    J.row(0) += 1.4 * e.transpose();
+  }
+};
+
+// Half-turn rotating frame: x = R(t/2) u with u' = diag(a, -1) u, so A(t) = J/2 + R D R^T and the
+// monodromy is R(pi) e^{2 pi D}: multipliers -e^{2 pi a}, -e^{-2 pi}. PD at a = 0.
+class ForcedFlip final : public ForcedLinear {
+ public:
+  Eigen::Matrix2d A(double t, double a) const override {
+    const double c = std::cos(t / 2), s = std::sin(t / 2);
+    Eigen::Matrix2d R, D, Jr;
+    R << c, -s, s, c;
+    D << a, 0, 0, -1;
+    Jr << 0, -0.5, 0.5, 0;
+    return Jr + R * D * R.transpose();
+  }
+};
+
+// Complex mode x' = (a + i omega) x (omega = 0.3, away from strong resonances): multipliers
+// e^{2 pi (a +- i omega)}, NS at a = 0.
+class ForcedFocus final : public ForcedLinear {
+ public:
+  Eigen::Matrix2d A(double, double a) const override {
+    Eigen::Matrix2d M;
+    M << a, -0.3, 0.3, a;
+    return M;
+  }
+};
+
+Eigen::VectorXd orbit_state(const Eigen::Vector2d& x) { return Eigen::VectorXd(x); }
+
+// Located to 1e-8 in the parameter (the bar); the location tolerance is 1e-11 in (X, p).
+TEST(OrbitNormalForms, FoldOfCyclesLocatedAtZero) {
+  const ForcedFold sys;
+  OrbitOptions oo;
+  oo.segments = 4;
+  const PeriodicOrbitProblem pr(sys, oo);
+  const double p0 = 0.25;
+  const Eigen::VectorXd X0 = pr.shooting_guess(Eigen::Vector2d(0.5 + 0.05, -0.5 + 0.02), p0);
+  const NewtonResult nr = solve_fixed_parameter(pr, X0, p0);
+  ASSERT_TRUE(nr.converged);
+  EXPECT_NEAR(nr.x[0], 0.5, 1e-10);  // x1(0) = sin 0 + sqrt(p)
+  ContinuationOptions o;
+  o.direction = Direction::backward;
+  o.p_min = -1;
+  o.p_max = 0.3;
+  o.max_step = 0.1;
+  o.max_points = 60;
+  const Branch b = continue_branch(pr, nr.x, p0, o);
+  ASSERT_GE(b.special_points.size(), 1u);
+  const SpecialPoint& lpc = b.special_points.front();
+  EXPECT_EQ(lpc.type, SpecialPointType::LPC);
+  EXPECT_EQ(lpc.status, LocationStatus::located);
+  EXPECT_NEAR(lpc.p, 0.0, 1e-8);
+  // Past the fold the branch is the unstable orbit x1 = sin t - sqrt(p), multiplier e^{4 pi sqrt p}.
+  bool saw_lower = false;
+  for (const auto& pt : b.points) {
+    const double sq = std::sqrt(std::max(pt.p, 0.0));
+    const bool lower = pt.x[0] < 0;
+    saw_lower = saw_lower || (lower && pt.p > 0.01);
+    EXPECT_NEAR(pt.x[0], lower ? -sq : sq, 1e-9) << pt.p;
+    // Multipliers in closed form; 1e-9: integration at rtol 1e-12 over one period.
+    std::vector<double> mu = {pt.spectrum[0].real(), pt.spectrum[1].real()};
+    std::sort(mu.begin(), mu.end());
+    const double m1 = std::exp((lower ? 4 : -4) * M_PI * sq), m2 = std::exp(-kTwoPi);
+    std::vector<double> ex = {m1, m2};
+    std::sort(ex.begin(), ex.end());
+    EXPECT_NEAR(mu[0], ex[0], 1e-9 * ex[0] + 1e-12);
+    EXPECT_NEAR(mu[1], ex[1], 1e-9 * ex[1]);
+    EXPECT_EQ(pt.stable, !lower);
+  }
+  EXPECT_TRUE(saw_lower);
+}
+
+template <class System>
+Branch continue_linear(const System& sys, int segments, double a0, double a_lo, double a_hi) {
+  OrbitOptions oo;
+  oo.segments = segments;
+  const PeriodicOrbitProblem pr(sys, oo);
+  // Start off the orbit so Newton has work to do.
+  const Eigen::VectorXd X0 = pr.shooting_guess(orbit_state(ForcedLinear::xp(0, a0) + Eigen::Vector2d(0.03, -0.02)), a0);
+  const NewtonResult nr = solve_fixed_parameter(pr, X0, a0);
+  EXPECT_TRUE(nr.converged);
+  EXPECT_NEAR((nr.x.head(2) - ForcedLinear::xp(0, a0)).norm(), 0, 1e-10);
+  ContinuationOptions o;
+  o.direction = Direction::forward;
+  o.p_min = a_lo;
+  o.p_max = a_hi;
+  o.max_step = 0.05;
+  return continue_branch(pr, nr.x, a0, o);
+}
+
+TEST(OrbitNormalForms, PeriodDoublingLocatedAtZero) {
+  const ForcedFlip sys;
+  const Branch b = continue_linear(sys, 6, -0.13, -0.2, 0.1);
+  ASSERT_EQ(b.status, ContinuationStatus::completed) << b.message;
+  ASSERT_EQ(b.special_points.size(), 1u);
+  const SpecialPoint& pd = b.special_points[0];
+  EXPECT_EQ(pd.type, SpecialPointType::PD);
+  EXPECT_EQ(pd.status, LocationStatus::located);
+  EXPECT_NEAR(pd.p, 0.0, 1e-8);
+  EXPECT_NEAR(pd.eigenvalue.real(), -1.0, 1e-8);
+  EXPECT_EQ(pd.unstable_before, 0);
+  EXPECT_EQ(pd.unstable_after, 1);
+  for (const auto& pt : b.points) {
+    // The orbit x_p and the multipliers -e^{2 pi a}, -e^{-2 pi} in closed form (1e-9: rtol 1e-12).
+    for (int j = 0; j < 6; ++j)
+      EXPECT_NEAR((pt.x.segment(2 * j, 2) - ForcedLinear::xp(kTwoPi * j / 6, pt.p)).norm(), 0, 1e-10);
+    std::vector<double> mu = {pt.spectrum[0].real(), pt.spectrum[1].real()};
+    std::sort(mu.begin(), mu.end());
+    EXPECT_NEAR(mu[0], -std::exp(kTwoPi * pt.p), 1e-9);
+    EXPECT_NEAR(mu[1], -std::exp(-kTwoPi), 1e-9);
+    EXPECT_NEAR(pt.spectrum[0].imag(), 0, 1e-9);
+  }
+}
+
+TEST(OrbitNormalForms, NeimarkSackerLocatedAtZero) {
+  const ForcedFocus sys;
+  const Branch b = continue_linear(sys, 5, -0.11, -0.2, 0.1);
+  ASSERT_EQ(b.status, ContinuationStatus::completed) << b.message;
+  ASSERT_EQ(b.special_points.size(), 1u);
+  const SpecialPoint& ns = b.special_points[0];
+  EXPECT_EQ(ns.type, SpecialPointType::NS);
+  EXPECT_EQ(ns.status, LocationStatus::located);
+  EXPECT_NEAR(ns.p, 0.0, 1e-8);
+  EXPECT_NEAR(std::abs(ns.eigenvalue), 1.0, 1e-8);
+  EXPECT_NEAR(std::arg(ns.eigenvalue), kTwoPi * 0.3, 1e-8);
+  EXPECT_EQ(ns.unstable_before, 0);
+  EXPECT_EQ(ns.unstable_after, 2);
+  for (const auto& pt : b.points) {
+    const std::complex<double> ex = std::exp(kTwoPi * std::complex<double>(pt.p, 0.3));
+    const std::complex<double> got = pt.spectrum[0].imag() > 0 ? pt.spectrum[0] : pt.spectrum[1];
+    EXPECT_NEAR(std::abs(got - ex), 0, 1e-9) << pt.p;
+  }
+}
+
+TEST(OrbitOptionsTest, ValidateNamesTheField) {
+  OrbitOptions o;
+  o.segments = 0;
+  try {
+    o.validate();
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("segments"), std::string::npos);
+  }
+  o = {};
+  o.rtol = 1e-3;
+  EXPECT_THROW(o.validate(), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace rbcstab
+
+namespace rbcstab {
+namespace {
+Scene fig2_ip(double Delta) {
+  Scene s;
+  s.name = "fig2_ip";
+  s.parameters.lambda = 5;
+  s.parameters.Delta = Delta;
+  s.parameters.Delta0 = 0.01;
+  s.parameters.B = 2;
+  s.parameters.C = 0.04;
+  s.beta = M_PI / 2;
+  s.delta = 0;
+  s.L = 2;
+  s.model = ModelLevel::reduced;
+  return s;
+}
+// Newton from the scene relaxed for T = 300 (a state at a multiple of 2 pi).
+Eigen::VectorXd reduced_orbit(const ReducedForcedSystem& sys, const PeriodicOrbitProblem& pr) {
+  const double p0 = sys.start_parameter();
+  const NewtonResult nr = solve_fixed_parameter(pr, pr.shooting_guess(sys.relaxed_state(300), p0), p0);
+  EXPECT_TRUE(nr.converged);
+  return nr.x;
+}
+
+// Flow of the reduced model over whole periods, integrated directly (not through the shooting code).
+Eigen::Vector3d period_map(const ReducedModel& m, const Eigen::Vector3d& y, int periods = 1) {
+  IntegratorOptions io;
+  io.rtol = 1e-13;
+  io.atol = 1e-14;
+  const double grid[1] = {kTwoPi * periods};
+  const IntegrationResult r = integrate(m, std::span<const double>(y.data(), 3), 0.0, grid, io, {});
+  return {r.y[0], r.y[1], r.y[2]};
+}
+
+// The monodromy against central differences of the directly integrated period map, and the trivial
+// multiplier. h = 1e-4: truncation ~h^2 |third derivative| ~ 1e-8 and integration noise ~1e-13/h =
+// 1e-9, so the finite-difference monodromy is good to ~1e-7; its (separated) eigenvalues likewise.
+TEST(ReducedOrbit, FloquetMatchesFiniteDifferenceMonodromy) {
+  for (double Delta : {0.2, 1.0}) {  // swinging, tumbling
+    const ReducedForcedSystem sys(fig2_ip(Delta), ContinuationParameter::Delta);
+    const PeriodicOrbitProblem pr(sys);
+    const Eigen::VectorXd X = reduced_orbit(sys, pr);
+    const Floquet f = pr.floquet(X, Delta);
+    const Eigen::Vector3d x0 = X.head(3);
+    EXPECT_NEAR(x0.norm(), 1.0, 1e-13);
+    Eigen::Matrix3d Mfd;
+    const double h = 1e-4;
+    for (int i = 0; i < 3; ++i) {
+      const Eigen::Vector3d e = h * Eigen::Vector3d::Unit(i);
+      Mfd.col(i) = (period_map(sys.model(Delta), x0 + e) - period_map(sys.model(Delta), x0 - e)) / (2 * h);
+    }
+    EXPECT_LT((Mfd - f.monodromy).lpNorm<Eigen::Infinity>(), 1e-7) << Delta;
+    // Trivial multiplier: exactly 1 by the conservation of |y|^2; 1e-11 ~ 10 x the rtol.
+    ASSERT_TRUE(f.trivial.has_value());
+    EXPECT_NEAR(*f.trivial, 1.0, 1e-11);
+    const Eigen::VectorXcd all = Eigen::EigenSolver<Eigen::Matrix3d>(Mfd, false).eigenvalues();
+    // Each nontrivial multiplier and 1 appear among the finite-difference eigenvalues.
+    const std::vector<std::complex<double>> want = {f.multipliers[0], f.multipliers[1], 1.0};
+    for (const auto& w : want) {
+      double best = 1e300;
+      for (Eigen::Index i = 0; i < 3; ++i) best = std::min(best, std::abs(all[i] - w));
+      EXPECT_LT(best, 1e-6) << Delta << " multiplier " << w;
+    }
+  }
+}
+
+// Liouville: det M = exp(int_0^{2 pi} tr J dt), and the trivial multiplier is 1, so the product of
+// the nontrivial multipliers is exp(int tr J) -- an independent oracle for their *relative* accuracy
+// (the quadrature: periodic trapezoid on 4000 samples of a directly integrated orbit, spectrally
+// accurate). Measured relative errors of the plain monodromy product (printed for the docs): 6e-10
+// at |mu_1 mu_2| = 2.5e-13, 2e-13 at 3e-5, 3e-15 at 3e-2; the bound 1e-8 leaves margin for rounding.
+TEST(ReducedOrbit, MultiplierProductMatchesLiouville) {
+  for (double Delta : {0.05, 0.2, 1.0}) {
+    const ReducedForcedSystem sys(fig2_ip(Delta), ContinuationParameter::Delta);
+    const PeriodicOrbitProblem pr(sys);
+    const Eigen::VectorXd X = reduced_orbit(sys, pr);
+    const Eigen::Vector3d x0 = X.head(3);
+    const ReducedModel& m = sys.model(Delta);
+    std::vector<double> grid;
+    const int K = 4000;
+    for (int k = 1; k < K; ++k) grid.push_back(kTwoPi * k / K);
+    double integral = 0;
+    auto add_trace = [&](double t, std::span<const double> y) {
+      StructuredJacobian J;
+      double dfdt[3];
+      m.jacobian(t, y, J, dfdt);
+      Eigen::Matrix<double, 3, 3, Eigen::RowMajor> D;
+      J.to_dense(std::span<double>(D.data(), 9));
+      integral += D.trace() * kTwoPi / K;
+    };
+    add_trace(0, std::span<const double>(x0.data(), 3));
+    IntegratorOptions io;
+    io.rtol = 1e-13;
+    io.atol = 1e-14;
+    integrate(m, std::span<const double>(x0.data(), 3), 0.0, grid, io, add_trace);
+    const Eigen::VectorXcd mu = pr.spectrum(X, Delta);
+    const double product = (mu[0] * mu[1]).real(), expected = std::exp(integral);
+    const double rel = std::abs(product - expected) / expected;
+    std::printf("Delta = %g: mu1 mu2 = %.6e, exp(int tr J) = %.6e, relative error %.2e\n", Delta, product, expected, rel);
+    EXPECT_LT(rel, 1e-8) << Delta;
+  }
+}
+
+// The orbit is the attractor of the dynamics: a long direct integration from the scene's shape
+// (40 periods; the multipliers are < 0.2, so transients are < 0.2^40) lands on x_0, and its period
+// average equals the orbit's. 1e-9: the bar, ~1000 x the integration tolerance.
+TEST(ReducedOrbit, MatchesLongSimulation) {
+  for (double Delta : {0.2, 1.0}) {
+    const ReducedForcedSystem sys(fig2_ip(Delta), ContinuationParameter::Delta);
+    const PeriodicOrbitProblem pr(sys);
+    const Eigen::VectorXd X = reduced_orbit(sys, pr);
+    const ReducedModel& m = sys.model(Delta);
+    const std::vector<double> y0 = m.initial_state();
+    const Eigen::Vector3d yT = period_map(m, Eigen::Vector3d(y0[0], y0[1], y0[2]), 40);
+    EXPECT_LT((yT - X.head(3)).norm(), 1e-9) << Delta;
+    // Period average of the simulation over one more period: 2000 uniform samples (the periodic
+    // trapezoid rule, spectrally accurate, and independent of the summary's 8 x 64 samples).
+    std::vector<double> grid;
+    for (int k = 1; k <= 2000; ++k) grid.push_back(kTwoPi * k / 2000);
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    IntegratorOptions io;
+    io.rtol = 1e-12;
+    integrate(m, std::span<const double>(yT.data(), 3), 0.0, grid, io,
+              [&](double, std::span<const double> y) { mean += Eigen::Vector3d(y[0], y[1], y[2]) / 2000.0; });
+    const OrbitSummary s = pr.summary(X, Delta);
+    EXPECT_LT((s.mean - mean).norm(), 1e-9) << Delta;
+    EXPECT_EQ(s.kind, Delta < 0.38 ? OrbitKind::swinging : OrbitKind::tumbling);
+    if (s.kind == OrbitKind::tumbling) {
+      EXPECT_EQ(s.winding, 1);  // z turns counter-clockwise: Psi decreases by 2 pi per period
+      EXPECT_GE(s.Psi_max - s.Psi_min, kTwoPi - 1e-9);
+    } else {
+      EXPECT_LT(s.Psi_max - s.Psi_min, M_PI);
+    }
+  }
+}
+
+// Fig. 2's in-plane scene continued in Delta: the swinging orbit (Delta = 0.01) becomes tumbling
+// (Delta = 1) where the orbit passes through z = 0 (r_min = 0) with both multipliers deep inside
+// the unit circle: no LPC/PD/NS, only the UZ event. The number of segments changes neither the
+// multipliers (to 1e-9) nor the labels nor the transition's location (to 1e-9).
+TEST(ReducedOrbit, SwingingToTumblingIsPassageThroughZeroAndIndependentOfSegments) {
+  std::vector<double> located;
+  for (int N : {4, 16}) {
+    const ReducedForcedSystem sys(fig2_ip(0.3), ContinuationParameter::Delta);
+    OrbitOptions oo;
+    oo.segments = N;
+    const PeriodicOrbitProblem pr(sys, oo);
+    const Eigen::VectorXd X = reduced_orbit(sys, pr);
+    ContinuationOptions o;
+    o.direction = Direction::forward;
+    o.p_max = 0.45;
+    o.max_step = 0.05;
+    o.events.push_back(pr.transition_event());
+    const Branch b = continue_branch(pr, X, 0.3, o);
+    ASSERT_EQ(b.status, ContinuationStatus::completed) << b.message;
+    ASSERT_EQ(b.special_points.size(), 1u) << N;
+    const SpecialPoint& uz = b.special_points[0];
+    EXPECT_EQ(uz.type, SpecialPointType::UZ);
+    EXPECT_EQ(uz.name, "swing_tumble");
+    EXPECT_EQ(uz.status, LocationStatus::located);
+    EXPECT_LT(uz.precision, 1e-10);
+    located.push_back(uz.p);
+    const OrbitSummary at = pr.summary(uz.x, uz.p);
+    EXPECT_LT(at.r_min, 1e-8);
+    const Eigen::VectorXcd mu = pr.spectrum(uz.x, uz.p);
+    EXPECT_LT(std::abs(mu[0]), 0.1);
+    EXPECT_LT(std::abs(mu[1]), 0.1);
+    for (const auto& pt : b.points) {
+      EXPECT_TRUE(pt.stable);
+      const OrbitSummary s = pr.summary(pt.x, pt.p);
+      EXPECT_EQ(s.winding, pt.p < uz.p ? 0 : 1) << pt.p;
+      const Floquet f = pr.floquet(pt.x, pt.p);
+      ASSERT_TRUE(f.trivial.has_value());
+      EXPECT_NEAR(*f.trivial, 1.0, 1e-11);
+    }
+  }
+  EXPECT_NEAR(located[0], located[1], 1e-9);
+  EXPECT_NEAR(located[0], 0.38478125, 1e-6);  // measured at N = 8 (docs/continuation.md)
+  // Multipliers at fixed Delta for N = 4, 8, 16 (plain monodromy products) agree to 1e-9.
+  for (double Delta : {0.35, 1.0}) {
+    std::vector<Eigen::VectorXcd> mus;
+    for (int N : {4, 8, 16}) {
+      const ReducedForcedSystem sys(fig2_ip(Delta), ContinuationParameter::Delta);
+      OrbitOptions oo;
+      oo.segments = N;
+      const PeriodicOrbitProblem pr(sys, oo);
+      mus.push_back(pr.spectrum(reduced_orbit(sys, pr), Delta));
+    }
+    for (std::size_t k = 1; k < mus.size(); ++k)
+      for (Eigen::Index i = 0; i < 2; ++i) {
+        double best = 1e300;
+        for (Eigen::Index j = 0; j < 2; ++j) best = std::min(best, std::abs(mus[k][i] - mus[0][j]));
+        EXPECT_LT(best, 1e-9) << Delta;
+      }
+  }
+}
+
+// Delta = 1 tumbles at lambda = 5 (Fig. 2) and swings at low viscosity ratio.
+TEST(ReducedOrbit, ContinuesInLambdaThroughTheTransition) {
+  const ReducedForcedSystem sys(fig2_ip(1.0), ContinuationParameter::lambda);
+  const PeriodicOrbitProblem pr(sys);
+  ContinuationOptions o;
+  o.direction = Direction::backward;
+  o.p_min = 2;
+  o.max_step = 0.2;
+  o.events.push_back(pr.transition_event());
+  const Branch b = continue_branch(pr, reduced_orbit(sys, pr), 5.0, o);
+  ASSERT_EQ(b.status, ContinuationStatus::completed) << b.message;
+  ASSERT_EQ(b.special_points.size(), 1u);
+  EXPECT_EQ(b.special_points[0].type, SpecialPointType::UZ);
+  EXPECT_NEAR(b.special_points[0].p, 2.573269, 1e-5);  // measured at N = 8, max step 0.05
+  EXPECT_EQ(pr.summary(b.points.back().x, b.points.back().p).kind, OrbitKind::swinging);
+  EXPECT_EQ(pr.summary(b.points.front().x, b.points.front().p).kind, OrbitKind::tumbling);
+}
+
+}  // namespace
+}  // namespace rbcstab
