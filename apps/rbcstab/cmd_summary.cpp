@@ -101,7 +101,6 @@ int run(const SummaryOptions& o) {
   const SimulationResult r = simulate(s, sf.options);
   if (o.json) {
     nlohmann::json j = summary_json(s, r, sf.options.tail_window);
-    j["L"] = s.L;
     j["L_reason"] = L_reason;
     std::cout << j.dump(2) << "\n";
     return r.status == IntegrationStatus::success ? kOk : kRunFailed;
