@@ -10,6 +10,24 @@
 
 namespace rbcstab {
 
+double bordered_test_function(const Eigen::MatrixXd& J, const Eigen::VectorXd& b, const Eigen::VectorXd& c) {
+  const Eigen::Index n = J.rows();
+  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n + 1, n + 1);
+  M.topLeftCorner(n, n) = J;
+  M.topRightCorner(n, 1) = b;
+  M.bottomLeftCorner(1, n) = c.transpose();
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(n + 1);
+  e[n] = 1;
+  return M.partialPivLu().solve(e)[n];
+}
+
+void bordering_vectors(const Eigen::MatrixXd& J, Eigen::VectorXd& b, Eigen::VectorXd& c) {
+  const Eigen::Index n = J.rows();
+  Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  b = svd.matrixU().col(n - 1);  // left singular vector of the smallest singular value
+  c = svd.matrixV().col(n - 1);
+}
+
 void TwoParameterProblem::jacobian(const Eigen::VectorXd& x, double p1, double p2, Eigen::MatrixXd& J) const {
   const Eigen::Index n = dimension();
   J.resize(n, n);
@@ -34,24 +52,15 @@ FoldCurveProblem::FoldCurveProblem(const TwoParameterProblem& base, const Specia
   require(lp.x.size() == n, "lp", static_cast<double>(lp.x.size()), "a point of the base problem's dimension");
   Eigen::MatrixXd J;
   base.jacobian(lp.x, lp.p, p2, J);
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  b_ = svd.matrixU().col(n - 1);  // left singular vector of the smallest singular value
-  c_ = svd.matrixV().col(n - 1);
+  bordering_vectors(J, b_, c_);
   start_.resize(n + 1);
   start_ << lp.x, lp.p;
 }
 
 double FoldCurveProblem::test_function(const Eigen::VectorXd& x, double p1, double p2) const {
-  const Eigen::Index n = base_.dimension();
   Eigen::MatrixXd J;
   base_.jacobian(x, p1, p2, J);
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n + 1, n + 1);
-  M.topLeftCorner(n, n) = J;
-  M.topRightCorner(n, 1) = b_;
-  M.bottomLeftCorner(1, n) = c_.transpose();
-  Eigen::VectorXd e = Eigen::VectorXd::Zero(n + 1);
-  e[n] = 1;
-  return M.partialPivLu().solve(e)[n];
+  return bordered_test_function(J, b_, c_);
 }
 
 void FoldCurveProblem::residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const {

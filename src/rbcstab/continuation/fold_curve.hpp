@@ -10,6 +10,11 @@
 
 namespace rbcstab {
 
+// Minimal augmentation shared by every curve kind: g with [J b; c^T 0][v; g] = [0; 1] (zero exactly
+// where J is singular), and b, c = the left/right singular vectors of J's smallest singular value.
+double bordered_test_function(const Eigen::MatrixXd& J, const Eigen::VectorXd& b, const Eigen::VectorXd& c);
+void bordering_vectors(const Eigen::MatrixXd& J, Eigen::VectorXd& b, Eigen::VectorXd& c);
+
 // F(x, p1, p2): the problem with two free parameters.
 class TwoParameterProblem {
  public:
