@@ -36,8 +36,9 @@ void TwoParameterProblem::jacobian(const Eigen::VectorXd& x, double p1, double p
 }
 
 FoldCurveProblem::FoldCurveProblem(const TwoParameterProblem& base, const SpecialPoint& lp, double p2) : base_(base) {
-  if (lp.type != SpecialPointType::LP || lp.status != LocationStatus::located)
-    throw InvalidArgument("lp", "a fold curve starts from a located LP point (got " + to_string(lp.type) + ", " +
+  // LPC: a fold of a fixed-period shooting system (orbit.hpp), the same singularity of dF/dx.
+  if ((lp.type != SpecialPointType::LP && lp.type != SpecialPointType::LPC) || lp.status != LocationStatus::located)
+    throw InvalidArgument("lp", "a fold curve starts from a located LP or LPC point (got " + to_string(lp.type) + ", " +
                                     to_string(lp.status) + ")");
   const Eigen::Index n = base.dimension();
   require(lp.x.size() == n, "lp", static_cast<double>(lp.x.size()), "a point of the base problem's dimension");

@@ -43,7 +43,8 @@ class SliceProblem final : public ContinuationProblem {
 
 class FoldCurveProblem final : public ContinuationProblem {
  public:
-  // Starts from an LP of SliceProblem(base, p2) (status located); bordering vectors from its SVD.
+  // Starts from an LP of SliceProblem(base, p2) (status located), or an LPC of a fixed-period orbit
+  // problem (orbit.hpp); bordering vectors from its SVD.
   FoldCurveProblem(const TwoParameterProblem& base, const SpecialPoint& lp, double p2);
   Eigen::Index dimension() const override { return base_.dimension() + 1; }
   void residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const override;
