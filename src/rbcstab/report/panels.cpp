@@ -304,15 +304,16 @@ nlohmann::json phase_overlay_json(const std::vector<TraceCurve>& boundary, const
     if (o.x.empty()) continue;
     nlohmann::json j{{"x", o.x}, {"y", o.y}};
     if (o.name.rfind("l_star=", 0) == 0) {
+      // As the paper's Fig. 4: l_* = 2.5 solid, the transitions to the next l dashed.
       j["label"] = "$l_* = " + o.name.substr(7) + "$";
-      j["style"] = "dashed";
+      j["style"] = o.name == "l_star=2.5" ? "solid" : "dashed";
       j["color"] = "0.25";
-      j["width"] = 1.0;
+      j["width"] = o.name == "l_star=2.5" ? 1.4 : 1.0;
       j["label_on_line"] = true;  // many parallel lines: label them in place rather than in the legend
     } else if (o.name == "alpha_init") {
       j["label"] = "$\\alpha_*^{\\mathrm{init}}$";
       j["style"] = "dashdot";
-      j["color"] = "black";
+      j["color"] = "tab:blue";  // the paper's blue line; dash-dotted for greyscale
     } else if (o.name == "C_star_minus") {
       j["label"] = "$\\mathcal{C}_*^-$";
       j["style"] = "dotted";
