@@ -104,7 +104,8 @@ std::string executable_path() {
 }
 
 int run(ReportCliOptions& o) {
-  const SceneFile sf = o.scene.resolve();
+  std::string L_reason;
+  const SceneFile sf = o.scene.resolve_with_default_L(L_reason);
   ReportOptions ro = o.report;
   ro.shape = {o.n_theta, 2 * o.n_theta};
   ro.reduced_companion = !o.no_reduced;
@@ -125,6 +126,8 @@ int run(ReportCliOptions& o) {
     if (r.has_reduced) j["reduced_summary"] = to_json(r.reduced);
     j["shape"] = {{"rho_min", r.shape.rho_min}, {"rho_max", r.shape.rho_max}};
     j["seconds"] = r.seconds;
+    j["L"] = sf.scene.L;
+    j["L_reason"] = L_reason;
     std::cout << j.dump(2) << "\n";
   } else {
     std::cout << "report written to " << ro.output << " (" << r.files.size() << " files, open index.html); l_Delta = "
@@ -176,7 +179,8 @@ static Runner add_report(CLI::App& app) {
                  "[diagram] scenes: override the grid's nx,ny (or NxM), integers in [1, 1000000], for a quick look "
                  "(default: the scene's counts)");
   app.add_option("--trace-lines", o->panel.trace.lines,
-                 "[diagram] scenes: interior lines searched for starts of the traced boundary, integer in [0, 10000]")
+                 "[diagram] scenes: interior lines (x fixed) searched for starts of the traced boundary besides the "
+                 "plane's edges, integer in [0, 10000]")
       ->check(CLI::Range(0, 10000))
       ->capture_default_str();
   app.add_flag("--quiet", o->quiet, "[diagram] scenes: no progress on stderr");

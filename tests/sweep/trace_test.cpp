@@ -203,7 +203,7 @@ TEST(Trace, InPlaneAsymptoticByTimeAverage) {
       EXPECT_FALSE(asymptotic_sigma_R(q, o.predictor).exact);
       EXPECT_LE(std::abs(Upsilon(q.parameters, c.l, sigma)), 1e-10) << p.x << ", " << p.y;
     }
-  std::cout << "in-plane trace: " << t.curves.size() << " pieces, " << t.evaluations << " evaluations, " << t.seconds
+  std::cout << "in-plane trace: " << t.curves.size() << " pieces, " << t.evaluations << " evaluations, " << t.counters.steps << " steps, " << t.counters.rejected_steps << " rejected, " << t.counters.newton_iterations << " newton, " << t.counters.location_iterations << " location, " << t.seconds
             << " s\n";
 }
 

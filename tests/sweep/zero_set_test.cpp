@@ -90,6 +90,25 @@ TEST(ZeroSet, CurveCutByTheBoxStartsAndEndsOnEdges) {
   EXPECT_LT(first.x, last.x);
 }
 
+// A criterion with a hole in its domain (throws InvalidArgument for x > 1.5, as an unconverged time average
+// does): the trace keeps what it reached, says why it stopped, and every point still solves its criterion.
+TEST(ZeroSet, DomainHolesEndPiecesWithANote) {
+  ModeCriteria c = two_disks(1.0);
+  const auto inner = c.at;
+  c.at = [inner](double x, double y) {
+    if (x > 1.5) throw InvalidArgument("x", "outside the test domain");
+    return inner(x, y);
+  };
+  const ZeroSetResult r = trace_zero_set(c, PlaneBox{-2, 3, -2, 2});
+  ASSERT_GE(r.chains, 1u);
+  EXPECT_FALSE(r.notes.empty());
+  for (const ZeroSetPiece& p : r.pieces)
+    for (const ZeroSetPoint& q : p.points) {
+      EXPECT_LE(q.x, 1.5);
+      EXPECT_LE(std::abs(q.g), 1e-12);
+    }
+}
+
 TEST(ZeroSet, NoBoundaryAndBadOptions) {
   ModeCriteria c;
   c.at = [](double, double) { return CriterionSample{{-1.0, -2.0}, 0, 0}; };

@@ -68,6 +68,7 @@ class Evaluator {
     return {(g(u + h, v, k) - g(u - h, v, k)) / (2 * h), (g(u, v + h, k) - g(u, v - h, k)) / (2 * h)};
   }
   std::size_t evaluations = 0;
+  std::size_t failures = 0;  // start-search samples outside the criterion's domain
 
  private:
   struct Entry {
@@ -133,20 +134,27 @@ struct Root {
 void roots_on_segment(Evaluator& ev, Vec2 a, Vec2 b, Vec2 inward, int samples, int bisections,
                       std::vector<Root>& out) {
   auto at = [&](double s) { return Vec2{a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])}; };
+  // NaN where the criterion is outside its domain (e.g. an unconverged time average): no bracket there.
   auto env = [&](double s) {
     const Vec2 w = at(s);
-    return ev.envelope(w[0], w[1]).first;
+    try {
+      return ev.envelope(w[0], w[1]).first;
+    } catch (const InvalidArgument&) {
+      ++ev.failures;
+      return std::numeric_limits<double>::quiet_NaN();
+    }
   };
   double s0 = 0, f0 = env(0);
   for (int k = 1; k <= samples; ++k) {
     const double s1 = k == samples ? 1.0 : double(k) / samples;
     const double f1 = env(s1);
-    if ((f0 < 0) != (f1 < 0)) {
+    if (!std::isnan(f0) && !std::isnan(f1) && (f0 < 0) != (f1 < 0)) {
       double lo = s0, hi = s1, flo = f0;
       for (int it = 0; it < bisections; ++it) {
         const double m = 0.5 * (lo + hi);
         if (m <= lo || m >= hi) break;
         const double fm = env(m);
+        if (std::isnan(fm)) break;
         if ((fm < 0) == (flo < 0)) {
           lo = m;
           flo = fm;
@@ -198,6 +206,18 @@ class Tracer {
   // through corners, until an edge, a closure (back at `origin`) or a failure.
   Half run(Vec2 start, std::size_t k, Vec2 want, Vec2 origin) {
     Half h;
+    try {
+      follow(h, start, k, want, origin);
+    } catch (const InvalidArgument& e) {
+      // A gradient at a start or corner left the criterion's domain: keep what was traced.
+      res_.notes.push_back(std::string("a piece stopped: ") + e.what());
+      h.end = End::other;
+    }
+    return h;
+  }
+
+ private:
+  void follow(Half& h, Vec2 start, std::size_t k, Vec2 want, Vec2 origin) {
     const std::size_t nmodes = ev_.at(start[0], start[1]).g.size();
     for (int piece = 0; piece < o_.max_pieces; ++piece) {
       const Vec2 grad = ev_.gradient(start[0], start[1], k);
@@ -224,8 +244,6 @@ class Tracer {
                                  const std::vector<double>& g = ev_.at(w[0], w[1]).g;
                                  return g[j] - g[k];
                                }});
-      co.events.push_back({"edge low", [](const Eigen::VectorXd& x, double) { return x[0]; }});
-      co.events.push_back({"edge high", [](const Eigen::VectorXd& x, double) { return 1 - x[0]; }});
       std::size_t steps = 0;
       bool closed = false;
       const bool may_close = origin[0] >= 0;
@@ -248,7 +266,7 @@ class Tracer {
       if (br.points.empty()) {
         res_.notes.push_back("a piece of mode index " + std::to_string(k) + " did not start: " + br.message);
         h.end = End::other;
-        return h;
+        return;
       }
       // The first located event away from the start ends the piece.
       const SpecialPoint* stop_at = nullptr;
@@ -280,7 +298,12 @@ class Tracer {
         k = j;
         continue;
       }
-      if (stop_at || br.message == "reached the parameter bound") {
+      const Eigen::VectorXd& xl = br.points.back().x;
+      if (!stop_at && br.points.size() >= 2 && (xl[0] < 0 || xl[0] > 1)) {
+        // Left through an edge of the unknown coordinate: replace the point outside by the crossing.
+        h.pieces.back().w.back() = edge_crossing(k, h.pieces.back().w, swapped, xl[0] < 0 ? 0.0 : 1.0);
+        h.end = End::edge;
+      } else if (br.message == "reached the parameter bound") {
         h.end = End::edge;
       } else if (closed) {
         h.pieces.back().w.push_back(origin);
@@ -290,13 +313,38 @@ class Tracer {
                              format_value(end[1]) + ") (unit square): " + to_string(br.status) + ": " + br.message);
         h.end = End::other;
       }
-      return h;
+      return;
     }
     res_.notes.push_back("stopped after max_pieces pieces");
-    return h;
   }
 
- private:
+  // The zero of g_k on the edge (coordinate c = value) between the last two points of w (the last one
+  // outside): secant along the edge from the linear interpolation (the engine's events would spend ~20
+  // corrected secant steps on what is a 1-D root on a known line).
+  Vec2 edge_crossing(std::size_t k, const std::vector<Vec2>& w, bool swapped, double value) {
+    const int c = swapped ? 0 : 1, f = 1 - c;  // c: the unknown (edge) coordinate, f: along the edge
+    const Vec2 a = w[w.size() - 2], b = w.back();
+    const double t = (value - a[c]) / (b[c] - a[c]);
+    Vec2 e;
+    e[c] = value;
+    auto g = [&](double s) {
+      Vec2 q;
+      q[c] = value;
+      q[f] = s;
+      return ev_.g(q[0], q[1], k);
+    };
+    double s0 = a[f] + t * (b[f] - a[f]), s1 = s0 + 1e-6;
+    double g0 = g(s0), g1 = g(s1);
+    for (int it = 0; it < 30 && std::abs(g1) > o_.residual_tol && g1 != g0; ++it) {
+      const double s2 = s1 - g1 * (s1 - s0) / (g1 - g0);
+      s0 = s1;
+      g0 = g1;
+      s1 = s2;
+      g1 = g(s1);
+    }
+    e[f] = std::abs(g1) <= std::abs(g0) ? s1 : s0;
+    return e;
+  }
   static void add(ContinuationCounters& a, const ContinuationCounters& b) {
     a.steps += b.steps;
     a.rejected_steps += b.rejected_steps;
@@ -364,13 +412,20 @@ ZeroSetResult trace_zero_set(const ModeCriteria& criteria, const PlaneBox& box, 
   Tracer tracer(ev, options, res);
   for (const Root& r : roots) {
     if (covered(r.w)) continue;
-    const std::size_t k = ev.envelope(r.w[0], r.w[1]).second;
+    std::size_t k = 0;
+    Vec2 g{0, 0};
+    try {
+      k = ev.envelope(r.w[0], r.w[1]).second;
+      if (r.inward[0] == 0 && r.inward[1] == 0) g = ev.gradient(r.w[0], r.w[1], k);
+    } catch (const InvalidArgument& e) {
+      res.notes.push_back(std::string("a start was skipped: ") + e.what());
+      continue;
+    }
     Half chain;
     if (r.inward[0] != 0 || r.inward[1] != 0) {
       chain = tracer.run(r.w, k, r.inward, {-1, -1});
     } else {
       // Interior seed: both ways along the curve, unless the first closes a loop.
-      const Vec2 g = ev.gradient(r.w[0], r.w[1], k);
       const Vec2 t{-g[1], g[0]};
       chain = tracer.run(r.w, k, t, r.w);
       if (chain.end != End::closed) {
@@ -414,7 +469,12 @@ ZeroSetResult trace_zero_set(const ModeCriteria& criteria, const PlaneBox& box, 
       piece.l = criteria.l_min + int(p.k);
       piece.chain = id;
       for (const Vec2& w0 : p.w) {
-        const Vec2 w = polish(ev, w0, p.k, options.residual_tol);
+        Vec2 w = w0;
+        try {
+          w = polish(ev, w0, p.k, options.residual_tol);
+        } catch (const InvalidArgument&) {
+          // the gradient left the domain: keep the corrector's point
+        }
         const CriterionSample& s = ev.at(w[0], w[1]);
         piece.points.push_back({ev.x(w[0]), ev.y(w[1]), piece.l, s.g[p.k], s.sigma_R, s.alpha});
         line.push_back(w);
@@ -427,6 +487,9 @@ ZeroSetResult trace_zero_set(const ModeCriteria& criteria, const PlaneBox& box, 
     traced.push_back(std::move(line));
   }
   res.evaluations = ev.evaluations;
+  if (ev.failures > 0)
+    res.notes.push_back(std::to_string(ev.failures) +
+                        " start-search samples were outside the criterion's domain (no start bracketed there)");
   return res;
 }
 
