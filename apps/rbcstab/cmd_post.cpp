@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "analysis_json.hpp"
+#include "checks.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/analysis/post_instability.hpp"
@@ -128,9 +129,11 @@ static Runner add_post(CLI::App& app) {
   app.add_flag("--json", o->json, "print one JSON object on stdout");
   app.add_flag("--fig6e", o->fig6e,
                "print the Fig. 6e table instead (Delta~2 vs simulated Delta-bar_2 over lambda, B, C; ~80 runs)");
-  app.add_option("--fig6e-lambda", o->fig6e_lambda, "lambda values of the Fig. 6e table (default 1 5)");
-  app.add_option("--fig6e-B", o->fig6e_B, "B values of the Fig. 6e table (default 1..10)");
-  app.add_option("--fig6e-C", o->fig6e_C, "C values of the Fig. 6e table (default 0.01 0.02 0.04 0.08)");
+  app.add_option("--fig6e-lambda", o->fig6e_lambda, "lambda values of the Fig. 6e table, each > 0 (default 1 5)")
+      ->check(positive());
+  app.add_option("--fig6e-B", o->fig6e_B, "B values of the Fig. 6e table, each > 0 (default 1..10)")->check(positive());
+  app.add_option("--fig6e-C", o->fig6e_C, "C values of the Fig. 6e table, each > 0 (default 0.01 0.02 0.04 0.08)")
+      ->check(positive());
   return [o] { return run(*o); };
 }
 

@@ -6,6 +6,7 @@
 #include <iostream>
 #include <memory>
 
+#include "checks.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
@@ -103,7 +104,8 @@ std::string executable_path() {
 }
 
 int run(ReportCliOptions& o) {
-  const SceneFile sf = o.scene.resolve();
+  std::string L_reason;
+  const SceneFile sf = o.scene.resolve_with_default_L(L_reason);
   ReportOptions ro = o.report;
   ro.shape = {o.n_theta, 2 * o.n_theta};
   ro.reduced_companion = !o.no_reduced;
@@ -124,6 +126,8 @@ int run(ReportCliOptions& o) {
     if (r.has_reduced) j["reduced_summary"] = to_json(r.reduced);
     j["shape"] = {{"rho_min", r.shape.rho_min}, {"rho_max", r.shape.rho_max}};
     j["seconds"] = r.seconds;
+    j["L"] = sf.scene.L;
+    j["L_reason"] = L_reason;
     std::cout << j.dump(2) << "\n";
   } else {
     std::cout << "report written to " << ro.output << " (" << r.files.size() << " files, open index.html); l_Delta = "
@@ -149,13 +153,15 @@ static Runner add_report(CLI::App& app) {
   app.add_flag("--overwrite", r.overwrite, "replace an existing output folder (swapped in whole at the end)");
   app.add_option("--python", r.python, "python3 interpreter with matplotlib (Debian python3-matplotlib)")
       ->capture_default_str();
-  app.add_option("--frames", r.frames, "animation frames, integer in [2, 2000]")->capture_default_str();
+  app.add_option("--frames", r.frames, "animation frames, integer in [2, 2000]")->check(CLI::Range(2, 2000))->capture_default_str();
   app.add_option("--frame-window", r.frame_window,
                  "animate the last W time units [T - W, T], >= 0; 0 = auto: one period of r(t) at the end if the run "
                  "oscillates (swinging, tumbling), else the whole run")
+      ->check(non_negative())
       ->capture_default_str();
   app.add_option("--shape-resolution", o->n_theta,
                  "polar grid points n_theta of the exported and rendered shape (n_phi = 2 n_theta), in [2, 4096]")
+      ->check(CLI::Range(2, 4096))
       ->capture_default_str();
   app.add_flag("--no-reduced", o->no_reduced, "skip the reduced-system companion run (Fig. 2 r, Psi from the l = 2 block only)");
   app.add_option("--phase-diagram", r.phase_diagram,
@@ -167,14 +173,15 @@ static Runner add_report(CLI::App& app) {
                  "folder holding rbcstab_report.py (default: $RBCSTAB_DATA_DIR, <prefix>/share/rbcstab/python)");
   app.add_option("--threads", o->panel.threads,
                  "[diagram] scenes: worker threads for the grid, integer in [0, 4096] (0: all cores)")
+      ->check(CLI::Range(0, 4096))
       ->capture_default_str();
   app.add_option("--counts", o->counts,
-                 "[diagram] scenes: override the grid's nx,ny (or NxM), integers >= 1, for a quick look (default: the "
-                 "scene's counts)")
-;
+                 "[diagram] scenes: override the grid's nx,ny (or NxM), integers in [1, 1000000], for a quick look "
+                 "(default: the scene's counts)");
   app.add_option("--trace-lines", o->panel.trace.lines,
                  "[diagram] scenes: interior lines (x fixed) searched for starts of the traced boundary besides the "
-                 "plane's edges, integer >= 0")
+                 "plane's edges, integer in [0, 10000]")
+      ->check(CLI::Range(0, 10000))
       ->capture_default_str();
   app.add_flag("--quiet", o->quiet, "[diagram] scenes: no progress on stderr");
   app.add_flag("--json", o->json, "print one JSON object (files, summaries) on stdout");

@@ -7,6 +7,7 @@
 #include <memory>
 #include <sstream>
 
+#include "checks.hpp"
 #include "commands.hpp"
 #include "plane_options.hpp"
 #include "exit_codes.hpp"
@@ -134,19 +135,22 @@ int run(const TraceCliOptions& o) {
 static Runner add_trace(CLI::App& app) {
   auto o = std::make_shared<TraceCliOptions>();
   o->scene.add_to(app);
-  app.add_option("--axes", o->axes, "plane axes x,y (default: the scene's [diagram] or lnB,lnC)")->delimiter(',');
-  app.add_option("--x-range", o->x_range, "min,max of x")->delimiter(',')->expected(2);
-  app.add_option("--y-range", o->y_range, "min,max of y")->delimiter(',')->expected(2);
-  app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C fixed over the plane (0: off)");
+  app.add_option("--axes", o->axes, "plane axes x,y from lnB lnC lambda Delta Delta0 alpha beta (default: the scene's [diagram] or lnB,lnC)")->delimiter(',');
+  app.add_option("--x-range", o->x_range, "min,max of x, finite (default: the scene's [diagram] or -1,6)")->delimiter(',')->expected(2);
+  app.add_option("--y-range", o->y_range, "min,max of y, finite (default: the scene's [diagram] or -5.5,2)")->delimiter(',')->expected(2);
+  app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C fixed over the plane, >= 0 (0: off; default: the scene's [diagram] or off)")
+      ->check(non_negative());
   app.add_option("--criterion", o->criterion, "asymptotic | finite-horizon")->capture_default_str();
-  app.add_option("--horizon", o->trace.T, "finite-horizon T (0: the scene's T)")->capture_default_str();
-  app.add_option("--lines", o->trace.lines, "interior lines (x fixed) searched for starting points besides the edges")
+  app.add_option("--horizon", o->trace.T, "finite-horizon T, >= 0 (0: the scene's T)")->capture_default_str();
+  app.add_option("--lines", o->trace.lines,
+                 "interior lines (x fixed) searched for starting points besides the edges, integer in [0, 10000]")
+      ->check(CLI::Range(0, 10000))
       ->capture_default_str();
-  app.add_option("--samples", o->trace.samples, "brackets per edge or line when searching for starts")
+  app.add_option("--samples", o->trace.samples, "brackets per edge or line when searching for starts, integer in [2, 1000000]")
       ->capture_default_str();
-  app.add_option("--max-step", o->trace.max_step, "continuation step cap in the unit square (curve resolution)")
+  app.add_option("--max-step", o->trace.max_step, "continuation step cap in the unit square (curve resolution), > 0")
       ->capture_default_str();
-  app.add_option("--threads", o->threads, "threads for the per-point predictor verdicts of --diagram")
+  app.add_option("--threads", o->threads, "threads for the per-point predictor verdicts of --diagram, integer in [0, 4096] (0: all cores)")
       ->capture_default_str();
   app.add_option("--diagram", o->diagram, "diagram JSON of the same plane: measure the criterion's agreement")
       ->check(CLI::ExistingFile);

@@ -19,23 +19,11 @@
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/levels.hpp"
 #include "rbcstab/sweep/trace.hpp"
+#include "continuation/modal_fixtures.hpp"
 
 namespace rbcstab {
 namespace {
-
-// lambda = 1, B = 1, Delta = 1, Delta0 = 0.01 (the paper's Fig. 6 family): the ellipsoidal state is
-// stable at C = 0.08 and unstable to l = 3 (then l = 4) as C decreases (alpha = B/C grows).
-Scene scene(double C = 0.08, int L = 6) {
-  Scene s;
-  s.beta = 0;
-  s.parameters.lambda = 1;
-  s.parameters.B = 1;
-  s.parameters.Delta = 1;
-  s.parameters.Delta0 = 0.01;
-  s.parameters.C = C;
-  s.L = L;
-  return s;
-}
+using namespace modal_fixtures;
 
 // sigma at the exact ellipsoidal equilibrium minus sigma_l^c: the asymptotic criterion mu_l = 0
 // of trace.hpp (analysis/steady_states closed form); its root in C by bisection to the last bit.
@@ -187,22 +175,6 @@ TEST(ModalEquilibrium, BranchPointsWhereUpsilonCrossesZero) {
   }
 }
 
-// Exact post-instability state with surviving mode l at parameters q: sigma = sigma_l^c, the l = 2
-// block from its linear equations (z = 1/(Lambda (1 - i Y2)), w = -kappa w0/Y2, v = 0), and
-// Delta_l = Delta - Delta_2 (closed form, independent of the continuation).
-struct PostState {
-  double sigma, Delta2, Delta_l;
-};
-PostState exact_post_state(const Parameters& q, int l) {
-  const double sigma = sigma_critical(l, q.alpha());
-  const double Y2 = Upsilon(q, 2, sigma);
-  const double L = q.Lambda();
-  const double z2 = 1 / (L * L * (1 + Y2 * Y2));
-  const double w = -q.inv_Lambda_S() / Y2;
-  const double Delta2 = q.Delta * (z2 + w * w);
-  return {sigma, Delta2, q.Delta - Delta2};
-}
-
 TEST(ModalEquilibrium, BranchSwitchingGivesThePostInstabilityState) {
   const CRun run;
   const SpecialPoint* bp = nullptr;
@@ -338,6 +310,31 @@ TEST(ModalEquilibrium, BranchPointCurveIsTheAsymptoticBoundary) {
     EXPECT_TRUE(below.unstable);
     EXPECT_EQ(below.l, l);
   }
+  // trace.hpp's own traced boundary on the (ln B, ln C) plane: at each traced B, Newton on the curve
+  // problem (from the nearest curve point) gives the traced C to 1e-9 relative (trace bisects to the
+  // last bit of ln C).
+  DiagramSpec plane;
+  plane.x = {Axis::lnB, std::log(0.65), std::log(1.55), 8};
+  plane.y = {Axis::lnC, std::log(0.012), std::log(0.07), 8};
+  TraceOptions to;
+  to.lines = 8;
+  to.samples = 64;
+  const TraceResult tr = trace_boundary(run.s, plane, to);
+  std::size_t compared = 0;
+  for (const TraceCurve& tc : tr.curves) {
+    if (tc.l != l) continue;
+    for (const TracePoint& tp : tc.points) {
+      const double B = std::exp(tp.x);
+      const BranchPoint* near = &b.points.front();
+      for (const BranchPoint& pt : b.points)
+        if (std::abs(pt.p - B) < std::abs(near->p - B)) near = &pt;
+      const NewtonResult nr = solve_fixed_parameter(curve, near->x, B);
+      ASSERT_TRUE(nr.converged);
+      EXPECT_NEAR(nr.x[5] / std::exp(tp.y), 1.0, 1e-9) << "B = " << B;
+      ++compared;
+    }
+  }
+  EXPECT_GE(compared, 5u);
 }
 
 }  // namespace

@@ -198,6 +198,68 @@ TEST(OrbitNormalForms, NeimarkSackerLocatedAtZero) {
   }
 }
 
+// Two-parameter forced fold: x1' = p1 + p2 u - u^2 + cos t with u = x1 - sin t, x2' = -x2 + sin t.
+// Orbits u = (p2 +- sqrt(D))/2, D = p2^2 + 4 p1, multipliers e^{-+2 pi sqrt(D)}: the LPC curve is
+// p1 = -p2^2/4 with x1(0) = p2/2.
+class ForcedFold2 final : public ForcedSystem2 {
+ public:
+  Eigen::Index dimension() const override { return 2; }
+  void rhs(double t, std::span<const double> x, double p1, double p2, std::span<double> f) const override {
+    const double u = x[0] - std::sin(t);
+    f[0] = p1 + p2 * u - u * u + std::cos(t);
+    f[1] = -x[1] + std::sin(t);
+  }
+  void jacobian(double t, std::span<const double> x, double, double p2, Eigen::MatrixXd& J) const override {
+    J.setZero(2, 2);
+    J(0, 0) = p2 - 2 * (x[0] - std::sin(t));
+    J(1, 1) = -1;
+  }
+};
+
+// The LPC curve from a one-parameter LPC, continued in p2 over [-1, 1], against p1 = -p2^2/4 and
+// x1(0) = p2/2. 1e-9: the curve's Newton converges to 1e-12 on residuals integrated at rtol 1e-12.
+TEST(OrbitNormalForms, FoldOfCyclesCurveInTwoParameters) {
+  const ForcedFold2 sys;
+  OrbitOptions oo;
+  oo.segments = 3;
+  const double p2 = 0.4;
+  const ForcedSlice slice(sys, p2);
+  const PeriodicOrbitProblem pr(slice, oo);
+  const double p1 = 0.2;  // D = 0.96: upper orbit u = (0.4 + sqrt(0.96))/2
+  const double u0 = (p2 + std::sqrt(p2 * p2 + 4 * p1)) / 2;
+  const NewtonResult nr = solve_fixed_parameter(pr, pr.shooting_guess(Eigen::Vector2d(u0 + 0.02, -0.5), p1), p1);
+  ASSERT_TRUE(nr.converged);
+  ContinuationOptions o;
+  o.direction = Direction::backward;
+  o.p_min = -1;
+  o.max_step = 0.1;
+  o.max_points = 40;
+  const Branch b = continue_branch(pr, nr.x, p1, o);
+  ASSERT_GE(b.special_points.size(), 1u);
+  const SpecialPoint& lpc = b.special_points.front();
+  ASSERT_EQ(lpc.type, SpecialPointType::LPC);
+  EXPECT_NEAR(lpc.p, -p2 * p2 / 4, 1e-8);
+
+  const OrbitTwoParameterProblem base(sys, oo);
+  const FoldCurveProblem curve(base, lpc, p2);
+  ContinuationOptions co;
+  co.direction = Direction::both;
+  co.p_min = -1;
+  co.p_max = 1;
+  co.max_step = 0.1;
+  co.compute_stability = false;  // the shooting Jacobian's eigenvalues are not a stability
+  const Branch c = continue_branch(curve, curve.start(), p2, co);
+  ASSERT_EQ(c.status, ContinuationStatus::completed) << c.message;
+  EXPECT_DOUBLE_EQ(c.points.front().p, -1.0);
+  EXPECT_DOUBLE_EQ(c.points.back().p, 1.0);
+  EXPECT_GE(c.points.size(), 10u);
+  for (const auto& pt : c.points) {
+    const double q2 = pt.p, q1 = pt.x[pt.x.size() - 1];
+    EXPECT_NEAR(q1, -q2 * q2 / 4, 1e-9) << q2;
+    EXPECT_NEAR(pt.x[0], q2 / 2, 1e-9) << q2;
+  }
+}
+
 TEST(OrbitOptionsTest, ValidateNamesTheField) {
   OrbitOptions o;
   o.segments = 0;

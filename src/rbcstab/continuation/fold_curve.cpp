@@ -6,9 +6,19 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 
+#include "rbcstab/continuation/detail/minimal_augmentation.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
+
+void TwoParameterProblem::parameter_derivative(const Eigen::VectorXd& x, double p1, double p2,
+                                               Eigen::VectorXd& Fp) const {
+  const double h = std::cbrt(std::numeric_limits<double>::epsilon()) * (1 + std::abs(p1));
+  Eigen::VectorXd Fm;
+  residual(x, p1 + h, p2, Fp);
+  residual(x, p1 - h, p2, Fm);
+  Fp = (Fp - Fm) / (2 * h);
+}
 
 void TwoParameterProblem::jacobian(const Eigen::VectorXd& x, double p1, double p2, Eigen::MatrixXd& J) const {
   const Eigen::Index n = dimension();
@@ -26,31 +36,26 @@ void TwoParameterProblem::jacobian(const Eigen::VectorXd& x, double p1, double p
 }
 
 FoldCurveProblem::FoldCurveProblem(const TwoParameterProblem& base, const SpecialPoint& lp, double p2) : base_(base) {
-  if (lp.type != SpecialPointType::LP || lp.status != LocationStatus::located)
-    throw InvalidArgument("lp", "a fold curve starts from a located LP point (got " + to_string(lp.type) + ", " +
+  // LPC: a fold of a fixed-period shooting system (orbit.hpp), the same singularity of dF/dx.
+  if ((lp.type != SpecialPointType::LP && lp.type != SpecialPointType::LPC) || lp.status != LocationStatus::located)
+    throw InvalidArgument("lp", "a fold curve starts from a located LP or LPC point (got " + to_string(lp.type) + ", " +
                                     to_string(lp.status) + ")");
   const Eigen::Index n = base.dimension();
   require(lp.x.size() == n, "lp", static_cast<double>(lp.x.size()), "a point of the base problem's dimension");
   Eigen::MatrixXd J;
   base.jacobian(lp.x, lp.p, p2, J);
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  b_ = svd.matrixU().col(n - 1);  // left singular vector of the smallest singular value
-  c_ = svd.matrixV().col(n - 1);
+  Eigen::MatrixXd B, C;
+  detail::null_borders(J, 1, B, C);  // left / right singular vectors of the smallest singular value
+  b_ = B.col(0);
+  c_ = C.col(0);
   start_.resize(n + 1);
   start_ << lp.x, lp.p;
 }
 
 double FoldCurveProblem::test_function(const Eigen::VectorXd& x, double p1, double p2) const {
-  const Eigen::Index n = base_.dimension();
   Eigen::MatrixXd J;
   base_.jacobian(x, p1, p2, J);
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n + 1, n + 1);
-  M.topLeftCorner(n, n) = J;
-  M.topRightCorner(n, 1) = b_;
-  M.bottomLeftCorner(1, n) = c_.transpose();
-  Eigen::VectorXd e = Eigen::VectorXd::Zero(n + 1);
-  e[n] = 1;
-  return M.partialPivLu().solve(e)[n];
+  return detail::bordered_g(J, b_, c_)(0, 0);
 }
 
 void FoldCurveProblem::residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const {

@@ -18,6 +18,8 @@ class TwoParameterProblem {
   virtual void residual(const Eigen::VectorXd& x, double p1, double p2, Eigen::VectorXd& F) const = 0;
   // dF/dx; default: central differences.
   virtual void jacobian(const Eigen::VectorXd& x, double p1, double p2, Eigen::MatrixXd& J) const;
+  // dF/dp1; default: central differences (the BP curve's equations use it).
+  virtual void parameter_derivative(const Eigen::VectorXd& x, double p1, double p2, Eigen::VectorXd& Fp) const;
   virtual std::string name1() const { return "p1"; }
   virtual std::string name2() const { return "p2"; }
 };
@@ -29,6 +31,9 @@ class SliceProblem final : public ContinuationProblem {
   Eigen::Index dimension() const override { return base_.dimension(); }
   void residual(const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) const override { base_.residual(x, p, p2_, F); }
   void jacobian(const Eigen::VectorXd& x, double p, Eigen::MatrixXd& J) const override { base_.jacobian(x, p, p2_, J); }
+  void parameter_derivative(const Eigen::VectorXd& x, double p, Eigen::VectorXd& Fp) const override {
+    base_.parameter_derivative(x, p, p2_, Fp);
+  }
   std::string parameter_name() const override { return base_.name1(); }
 
  private:
@@ -38,7 +43,8 @@ class SliceProblem final : public ContinuationProblem {
 
 class FoldCurveProblem final : public ContinuationProblem {
  public:
-  // Starts from an LP of SliceProblem(base, p2) (status located); bordering vectors from its SVD.
+  // Starts from an LP of SliceProblem(base, p2) (status located), or an LPC of a fixed-period orbit
+  // problem (orbit.hpp); bordering vectors from its SVD.
   FoldCurveProblem(const TwoParameterProblem& base, const SpecialPoint& lp, double p2);
   Eigen::Index dimension() const override { return base_.dimension() + 1; }
   void residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const override;

@@ -431,4 +431,23 @@ UserEvent PeriodicOrbitProblem::transition_event(const std::string& name) const 
   return UserEvent{name, [this](const Eigen::VectorXd& X, double p) { return summary(X, p).transition_function; }};
 }
 
+// ---------------------------------------------------------------- two parameters
+
+void OrbitTwoParameterProblem::at(double p2) const {
+  if (slice_.p2() != p2) {
+    slice_.set_p2(p2);
+    orbit_.clear_cache();
+  }
+}
+
+void OrbitTwoParameterProblem::residual(const Eigen::VectorXd& X, double p1, double p2, Eigen::VectorXd& F) const {
+  at(p2);
+  orbit_.residual(X, p1, F);
+}
+
+void OrbitTwoParameterProblem::jacobian(const Eigen::VectorXd& X, double p1, double p2, Eigen::MatrixXd& J) const {
+  at(p2);
+  orbit_.jacobian(X, p1, J);
+}
+
 }  // namespace rbcstab

@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/fold_curve.hpp"
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/continuation/problem.hpp"
 #include "rbcstab/model/levels.hpp"
@@ -129,6 +130,8 @@ class PeriodicOrbitProblem final : public ContinuationProblem {
   UserEvent transition_event(const std::string& name = "swing_tumble") const;
   // Counters of the integrations done so far (work measure for benchmarks).
   std::size_t integrations() const { return integrations_; }
+  // Forget the cached shooting (the system changed behind the problem's back, e.g. a second parameter).
+  void clear_cache() const { cache_.valid = false; }
 
  private:
   struct Shooting {
@@ -145,6 +148,58 @@ class PeriodicOrbitProblem final : public ContinuationProblem {
   int N_;
   mutable Shooting cache_;
   mutable std::size_t integrations_ = 0;
+};
+
+// Two-parameter forced systems and LPC curves. An LPC of a fixed-period orbit is a fold of the
+// shooting system F(X, p1) = 0 (its Jacobian is singular where a multiplier crosses 1), so the fold
+// curve machinery of fold_curve.hpp (minimal augmentation) continues it in (p1, p2) unchanged:
+// FoldCurveProblem(OrbitTwoParameterProblem(system, options), lpc, p2).
+class ForcedSystem2 {
+ public:
+  virtual ~ForcedSystem2() = default;
+  virtual Eigen::Index dimension() const = 0;
+  virtual void rhs(double t, std::span<const double> x, double p1, double p2, std::span<double> f) const = 0;
+  virtual void jacobian(double t, std::span<const double> x, double p1, double p2, Eigen::MatrixXd& J) const = 0;
+  virtual bool conserves_norm() const { return false; }
+  virtual std::string name1() const { return "p1"; }
+  virtual std::string name2() const { return "p2"; }
+};
+
+// The two-parameter system as a one-parameter ForcedSystem in p1 at fixed p2.
+class ForcedSlice final : public ForcedSystem {
+ public:
+  ForcedSlice(const ForcedSystem2& base, double p2) : base_(base), p2_(p2) {}
+  Eigen::Index dimension() const override { return base_.dimension(); }
+  void rhs(double t, std::span<const double> x, double p, std::span<double> f) const override { base_.rhs(t, x, p, p2_, f); }
+  void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const override {
+    base_.jacobian(t, x, p, p2_, J);
+  }
+  bool conserves_norm() const override { return base_.conserves_norm(); }
+  std::string parameter_name() const override { return base_.name1(); }
+  void set_p2(double p2) { p2_ = p2; }
+  double p2() const { return p2_; }
+
+ private:
+  const ForcedSystem2& base_;
+  double p2_;
+};
+
+// The shooting system with both parameters free (base of FoldCurveProblem for LPC curves).
+class OrbitTwoParameterProblem final : public TwoParameterProblem {
+ public:
+  OrbitTwoParameterProblem(const ForcedSystem2& system, const OrbitOptions& options = {})
+      : system_(system), slice_(system, 0.0), orbit_(slice_, options) {}
+  Eigen::Index dimension() const override { return orbit_.dimension(); }
+  void residual(const Eigen::VectorXd& X, double p1, double p2, Eigen::VectorXd& F) const override;
+  void jacobian(const Eigen::VectorXd& X, double p1, double p2, Eigen::MatrixXd& J) const override;
+  std::string name1() const override { return system_.name1(); }
+  std::string name2() const override { return system_.name2(); }
+
+ private:
+  void at(double p2) const;
+  const ForcedSystem2& system_;
+  mutable ForcedSlice slice_;
+  PeriodicOrbitProblem orbit_;
 };
 
 }  // namespace rbcstab

@@ -179,6 +179,16 @@ SceneFile parse_scene(const std::string& toml_text, const std::string& source_na
 
 SceneFile load_scene(const std::string& path) { return parse_scene(read_file(path), path); }
 
+bool scene_sets_L(const std::string& toml_text, const std::string& source_name) {
+  try {
+    const toml::table root = toml::parse(toml_text, source_name);
+    const toml::table* run = root["run"].as_table();
+    return run && run->contains("L");
+  } catch (const toml::parse_error&) {
+    return false;  // parse_scene reports the syntax error with its location
+  }
+}
+
 std::string to_toml(const SceneFile& file) {
   const Scene& s = file.scene;
   auto mode_table = [](const std::map<int, double>& m) {

@@ -391,32 +391,29 @@ PanelReportResult build_panel_report(const SceneFile& sf, const std::string& tom
     std::size_t unstable = 0;
     for (const PointResult& p : run.points) unstable += p.verdict == Verdict::unstable;
     const double diagram_seconds = run.seconds;
-    // The traced boundary for out-of-plane scenes (exact equilibrium: milliseconds). In plane the criterion
-    // is a time average per evaluation (~100 s CPU per plane): left to `rbcstab trace`, as before.
+    // The traced boundary of the asymptotic criterion (sweep/trace.hpp): the exact equilibrium out of plane,
+    // a time average of sigma_R in plane. Where the library cannot trace (e.g. an unconverged average) the
+    // panel shows the simulations and the analytic lines, and says why.
     std::vector<TraceCurve> boundary;
     std::string trace_note;
     try {
-      if (!(stress_free_r0(sf.scene) < PredictorOptions{}.out_of_plane_r0))
-        trace_note = "not traced here: in-plane scene (rbcstab trace traces it by time averages, ~100 s CPU)";
-      else if (spec.x.axis == Axis::beta || spec.y.axis == Axis::beta)
-        trace_note = "not traced: beta is an axis (the criterion holds for the out-of-plane equilibrium only)";
-      else {
-        const TraceResult tr = trace_boundary(sf.scene, spec, panel.trace);
-        boundary = tr.curves;
-        trace_note = std::to_string(tr.curves.size()) + " pieces, " + std::to_string(tr.corners.size()) +
-                     " mode corners, " + std::to_string(tr.evaluations) + " criterion evaluations";
-      }
+      const TraceResult tr = trace_boundary(sf.scene, spec, panel.trace);
+      boundary = tr.curves;
+      trace_note = std::to_string(tr.curves.size()) + " pieces, " + std::to_string(tr.corners.size()) +
+                   " mode corners, " + std::to_string(tr.evaluations) + " criterion evaluations, " +
+                   fixed(tr.seconds, 2) + " s";
     } catch (const InvalidArgument& e) {
       trace_note = std::string("not traced: ") + e.what();
     }
-    const std::vector<Overlay> lines = analytic_overlays(sf.scene, spec, 200);
+    const std::vector<Overlay> lines = analytic_overlays(sf.scene, spec, 200);  // 200 samples per line: smooth at 900 px
     // Without the per-point wall-clock seconds: the data behind the figure is the same on every run.
     ro.phase_diagram = staging.put("phase_diagram.csv", diagram_csv(spec, run.points, DiagramOutputOptions{false}));
     staging.put("phase_diagram.json", phase_overlay_json(boundary, lines).dump(1) + "\n");
     nlohmann::json doc = diagram_json(diagram_header(sf.scene, sf.options, spec), spec, run.points, Shard{});
-    AgreementOptions agreement;
-    agreement.threads = panel.threads;
-    doc["agreement"] = agreement_json(sf.scene, spec, run.points, agreement);
+    AgreementOptions ao;
+    ao.threads = panel.threads;
+    ao.trace_options = panel.trace;
+    doc["agreement"] = agreement_json(sf.scene, spec, run.points, ao);
     ro.attachments.push_back(staging.put("diagram.json", doc.dump(1) + "\n"));
     res.status = res.failed ? "failed runs" : "success";
     res.facts = {{"grid", std::to_string(spec.x.count) + " x " + std::to_string(spec.y.count) + " (" +

@@ -18,6 +18,7 @@
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/report/report.hpp"
+#include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/trace.hpp"
 
@@ -57,7 +58,7 @@ nlohmann::json phase_overlay_json(const std::vector<TraceCurve>& boundary, const
 struct PanelOptions {
   int threads = 0;           // diagram worker threads; 0 = all cores (the points are independent)
   int nx = 0, ny = 0;        // > 0: override the scene's [diagram] counts (a quick look at a coarse grid)
-  TraceOptions trace;        // the traced boundary's resolution
+  TraceOptions trace;        // the traced boundary (criterion, start search, step cap)
   std::function<void(const Progress&)> on_progress;  // diagram progress (called on the calling thread)
   const std::atomic<bool>* stop = nullptr;           // set to stop a diagram early (then nothing is drawn)
   void validate() const;     // names the field

@@ -409,7 +409,8 @@ def plot_phase_diagram(csv_path, out, overlay_json=None, size_px=(900, 750), x=N
                   extent=(edges(ux)[0], edges(ux)[-1], edges(uy)[0], edges(uy)[-1]), zorder=0)
         from matplotlib.patches import Patch
 
-        ax.legend_handles_extra = [Patch(color=colour_of[lv], label=rf"$l_\Delta = {lv}$") for lv in levels]
+        ax.legend_handles_extra = ([Patch(facecolor="white", edgecolor="0.5", label=r"$l_\Delta = 2$ (stable)")] +
+                                   [Patch(color=colour_of[lv], label=rf"$l_\Delta = {lv}$") for lv in levels])
         x_lim, y_lim = (edges(ux)[0], edges(ux)[-1]), (edges(uy)[0], edges(uy)[-1])
     else:
         for lv in levels:
