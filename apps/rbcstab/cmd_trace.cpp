@@ -101,6 +101,7 @@ int run(const TraceCliOptions& o) {
     ao.threads = o.threads;
     ao.trace_options = to;
     ao.trace_finite_horizon = true;
+    ao.trace_in_plane = true;
     doc["agreement"] = agreement_json(dsf.scene, ds, points_from_json(dj, ds), ao);
   }
   try {

@@ -176,6 +176,10 @@ std::vector<Agreement> predictor_agreements(const Scene& base, const DiagramSpec
 
   auto traced = [&](TraceCriterion c, Agreement& a) {
     if (!options.trace) return BoundaryDistance(spec, {});
+    if (!options.trace_in_plane && !(stress_free_r0(base) < options.predictor.out_of_plane_r0)) {
+      a.note = "boundary not traced: in-plane scene (AgreementOptions::trace_in_plane, or rbcstab trace --diagram)";
+      return BoundaryDistance(spec, {});
+    }
     TraceOptions to = options.trace_options;
     to.criterion = c;
     try {
