@@ -177,6 +177,52 @@ TEST(ContinuationEngine, TwoHopfPairsCrossingInOneStepAreBothFound) {
   EXPECT_EQ(b.points.back().n_unstable, 4);
 }
 
+TEST(ContinuationEngine, TwoRealCrossingsInOneStepAreBothFound) {
+  // Pitchforks at p = 0.3 and 0.3005 on the trivial branch; one step of 0.5 spans both. The BP
+  // determinant (p - 0.3)(p - 0.3005) keeps its sign over the step, and the HB product's zero (the
+  // pair sum at p = 0.30025) is a neutral saddle, rejected: only the unstable count (0 -> 2) shows
+  // the two crossings, and the engine must split the step until each one is located.
+  const Lambda pr(2, [](const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) {
+    F[0] = (p - 0.3) * x[0] - x[0] * x[0] * x[0];
+    F[1] = (p - 0.3005) * x[1] - x[1] * x[1] * x[1];
+  });
+  ContinuationOptions o;
+  o.initial_step = 0.5;
+  o.max_step = 0.5;
+  o.p_max = 0.6;
+  const Branch b = continue_branch(pr, vec({0, 0}), 0.1, o);
+  EXPECT_TRUE(of_type(b, SpecialPointType::HB).empty());
+  const auto bp = of_type(b, SpecialPointType::BP);
+  ASSERT_EQ(bp.size(), 2u);
+  EXPECT_NEAR(bp[0].p, 0.3, kLocated);
+  EXPECT_NEAR(bp[1].p, 0.3005, kLocated);
+  for (const auto& q : bp) EXPECT_EQ(q.status, LocationStatus::located);
+  EXPECT_EQ(b.points.back().n_unstable, 2);
+}
+
+TEST(ContinuationEngine, CoincidentRealCrossingsAreOneLocatedBranchPoint) {
+  // x' = px - x^3, y' = py - y^3: two real eigenvalues cross together at p = 0 (a BP of multiplicity
+  // two). No test function changes sign; splitting cannot separate them, so the engine reports one
+  // BP whose bracket shrinks below location_tol, typed from the spectrum (real crossing, not HB).
+  const Lambda pr(2, [](const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) {
+    F[0] = p * x[0] - x[0] * x[0] * x[0];
+    F[1] = p * x[1] - x[1] * x[1] * x[1];
+  });
+  ContinuationOptions o;
+  o.initial_step = 0.3;
+  o.max_step = 0.3;
+  o.p_max = 0.5;
+  const Branch b = continue_branch(pr, vec({0, 0}), -0.5, o);
+  EXPECT_TRUE(of_type(b, SpecialPointType::HB).empty());
+  const auto bp = of_type(b, SpecialPointType::BP);
+  ASSERT_EQ(bp.size(), 1u);
+  EXPECT_NEAR(bp[0].p, 0.0, kLocated);
+  EXPECT_EQ(bp[0].status, LocationStatus::located);
+  EXPECT_LE(bp[0].precision, o.location_tol);
+  EXPECT_EQ(bp[0].unstable_before, 0);
+  EXPECT_EQ(bp[0].unstable_after, 2);
+}
+
 TEST(ContinuationEngine, NeutralSaddleIsNotReportedAsHopf) {
   // Real eigenvalues l1 = p - 0.2 and l2 = -0.1: the pair sum l1 + l2 vanishes at p = 0.3, a neutral
   // saddle (no imaginary part), which the HB test function sees but the engine must reject.

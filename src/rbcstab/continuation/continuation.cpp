@@ -270,11 +270,37 @@ class Engine {
     return true;
   }
 
-  // All special points between consecutive accepted points a, b. When the unstable count changes
-  // but no test function changes sign (two crossings that cancel in one step), split the step.
+  // How many eigenvalues (multipliers) a special point moves across the stability boundary: a complex
+  // pair for HB/NS, one real one otherwise.
+  static int crossings(SpecialPointType type) {
+    return type == SpecialPointType::HB || type == SpecialPointType::NS ? 2 : 1;
+  }
+
+  // Type of a crossing the test functions could not see (they cancel when two eigenvalues cross
+  // together): from which part of the spectrum the change of the unstable count comes.
+  SpecialPointType unresolved_type(const Pt& a, const Pt& b) const {
+    auto counts = [&](const Pt& q, bool want_complex, bool want_negative) {
+      int c = 0;
+      for (Eigen::Index i = 0; i < q.spectrum.size(); ++i) {
+        const std::complex<double> z = q.spectrum[i];
+        const bool unstable = cycles_ ? std::abs(z) > 1 + o_.stability_tol : z.real() > o_.stability_tol;
+        const bool is_complex = z.imag() != 0;
+        if (unstable && is_complex == want_complex && (!cycles_ || want_complex || (z.real() < 0) == want_negative)) ++c;
+      }
+      return c;
+    };
+    if (counts(a, true, false) != counts(b, true, false)) return cycles_ ? SpecialPointType::NS : SpecialPointType::HB;
+    if (cycles_ && counts(a, false, true) != counts(b, false, true)) return SpecialPointType::PD;
+    return SpecialPointType::BP;
+  }
+
+  // All special points between consecutive accepted points a, b. The test functions' sign changes are
+  // located; when they do not account for the change of the unstable count (two crossings that cancel
+  // in a product, or a located change rejected as a neutral saddle), the step is split until they do.
+  // Crossings that coincide to within location_tol are reported as one located point of that bracket.
   void detect(const Pt& a, const Pt& b, std::size_t after, int depth, std::vector<SpecialPoint>& out) {
-    bool any = false;
     std::vector<SpecialPoint> found;
+    int explained = 0;
     if (o_.detect_bifurcations) {
       for (int k = 0; k < kSlots; ++k) {
         const double ga = a.tests[static_cast<std::size_t>(k)], gb = b.tests[static_cast<std::size_t>(k)];
@@ -282,40 +308,41 @@ class Engine {
         // A neutral spectrum on both sides (a centre, e.g. the conservative S = inf reduced system)
         // makes the spectral products pure rounding noise: no crossing can be read from them.
         if (k >= 2 && a.n_unstable == b.n_unstable && neutral(a, k) && neutral(b, k)) continue;
-        any = true;
         SpecialPoint sp;
-        if (locate(a, b, k, -1, after, sp)) found.push_back(sp);
+        if (locate(a, b, k, -1, after, sp)) {
+          explained += crossings(sp.type);
+          found.push_back(sp);
+        }
       }
+    }
+    const int change = std::abs(a.n_unstable - b.n_unstable);
+    if (o_.detect_bifurcations && o_.compute_stability && change > explained) {
+      const double s = a.t.dot(b.X - a.X);
+      Pt m;
+      if (depth < 60 && std::abs(s) > o_.location_tol && probe(a, 0.5 * s, m)) {
+        detect(a, m, after, depth + 1, out);
+        detect(m, b, after, depth + 1, out);
+        return;  // the halves find the test-function zeros and the user events again
+      }
+      SpecialPoint sp;
+      sp.type = unresolved_type(a, b);
+      sp.name = to_string(sp.type);
+      sp.x = b.X.head(n_);
+      sp.p = b.X[n_];
+      sp.parameters = pr_.parameter_values(sp.x, sp.p);
+      sp.p_lo = std::min(a.X[n_], b.X[n_]);
+      sp.p_hi = std::max(a.X[n_], b.X[n_]);
+      sp.precision = (b.X - a.X).lpNorm<Eigen::Infinity>();
+      sp.status = sp.precision <= o_.location_tol ? LocationStatus::located : LocationStatus::guess;
+      sp.unstable_before = a.n_unstable;
+      sp.unstable_after = b.n_unstable;
+      sp.after_index = after;
+      found.push_back(sp);
     }
     for (std::size_t e = 0; e < o_.events.size(); ++e) {
       if (!(a.events[e] * b.events[e] < 0) && !(b.events[e] == 0 && a.events[e] != 0)) continue;
       SpecialPoint sp;
       if (locate(a, b, -1, static_cast<int>(e), after, sp)) found.push_back(sp);
-    }
-    if (o_.detect_bifurcations && o_.compute_stability && !any && a.n_unstable != b.n_unstable) {
-      const double s = a.t.dot(b.X - a.X);
-      Pt m;
-      if (depth < 40 && std::abs(s) > o_.location_tol && probe(a, 0.5 * s, m)) {
-        detect(a, m, after, depth + 1, out);
-        detect(m, b, after, depth + 1, out);
-      } else {
-        // Unresolved change of stability: report it as a guess (type from the spectrum's change).
-        SpecialPoint sp;
-        const bool complex_pair = std::abs(a.n_unstable - b.n_unstable) % 2 == 0;
-        sp.type = complex_pair ? (cycles_ ? SpecialPointType::NS : SpecialPointType::HB) : SpecialPointType::BP;
-        sp.name = to_string(sp.type);
-        sp.x = b.X.head(n_);
-        sp.p = b.X[n_];
-        sp.parameters = pr_.parameter_values(sp.x, sp.p);
-        sp.p_lo = std::min(a.X[n_], b.X[n_]);
-        sp.p_hi = std::max(a.X[n_], b.X[n_]);
-        sp.precision = (b.X - a.X).lpNorm<Eigen::Infinity>();
-        sp.status = LocationStatus::guess;
-        sp.unstable_before = a.n_unstable;
-        sp.unstable_after = b.n_unstable;
-        sp.after_index = after;
-        out.push_back(sp);
-      }
     }
     // Sort along the step by arclength rather than p (p may turn at an LP inside the step).
     std::sort(found.begin(), found.end(), [&](const SpecialPoint& u, const SpecialPoint& v) {
