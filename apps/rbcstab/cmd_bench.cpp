@@ -153,6 +153,9 @@ void plot(const BenchOptions& o, const std::string& script, const std::string& b
 int run_threshold(const BenchOptions& o, const SceneFile& sf) {
   if (o.ln_C_range.size() != 2)
     throw InvalidArgument("--lnC-range", "--lnC-range takes two numbers (lo hi), got " + std::to_string(o.ln_C_range.size()));
+  if (!(o.ln_C_range[0] < o.ln_C_range[1]))
+    throw InvalidArgument("--lnC-range", "--lnC-range = " + format_value(o.ln_C_range[0]) + " " +
+                                             format_value(o.ln_C_range[1]) + ": needs lo < hi (finite)");
   ThresholdPrecisionOptions tp;
   tp.ln_C_lo = o.ln_C_range[0];
   tp.ln_C_hi = o.ln_C_range[1];

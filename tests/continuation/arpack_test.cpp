@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <thread>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
@@ -103,6 +104,27 @@ TEST(Arpack, ReproducesKnownSpectrumInEveryMode) {
     if (which == ArpackWhich::nearest_shift) {
       EXPECT_LT(r.applications, 200u);  // shift-invert converges fast
     }
+  }
+}
+
+// ARPACK is not reentrant; concurrent calls are serialised and give the serial answer bit for bit
+// (deterministic start vector).
+TEST(Arpack, ConcurrentCallsAgreeWithSerial) {
+  const KnownMatrix km = known_matrix(120);
+  const auto A = dense_operator(km.A);
+  ArpackOptions o;
+  o.k = 6;
+  const ArpackResult serial = arpack_eigenvalues(120, A, {}, o);
+  ASSERT_EQ(serial.status, ArpackStatus::converged);
+  std::vector<ArpackResult> par(4);
+  std::vector<std::thread> threads;
+  for (std::size_t i = 0; i < par.size(); ++i)
+    threads.emplace_back([&, i] { par[i] = arpack_eigenvalues(120, A, {}, o); });
+  for (auto& t : threads) t.join();
+  for (const auto& r : par) {
+    ASSERT_EQ(r.status, ArpackStatus::converged);
+    EXPECT_EQ(r.applications, serial.applications);
+    for (Eigen::Index i = 0; i < 6; ++i) EXPECT_EQ(r.eigenvalues[i], serial.eigenvalues[i]);
   }
 }
 

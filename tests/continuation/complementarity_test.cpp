@@ -12,6 +12,7 @@
 #include "rbcstab/continuation/complementarity.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/coefficients.hpp"
 
 namespace rbcstab {
@@ -133,6 +134,41 @@ TEST(Complementarity, PaperContinuousDelta2IsExactOnlyWhenLStarIsAnInteger) {
       EXPECT_GT(std::abs(r.Delta_l[0] - post.continuous.Delta2_tilde.value), 1e-3);
     }
   }
+}
+
+TEST(Complementarity, AgreesWithALongModalSimulationWhereL4Survives) {
+  // C = 0.015 (alpha = 66.7 > 60): on the ellipsoid l = 3, 4, 5 all grow, and the l = 3 post-instability
+  // branch is unstable to l = 4; the simulation must end in Ipopt's state. Transients: the slowest
+  // decay is Upsilon_3(sigma_4^c) ~ -0.66 (Delta_3 ~ e^{-1.3 t}), so T = 200 leaves them far below the
+  // integrator's 1e-11; 1e-8 is the bar. The simulation holds Delta + (L - 2) delta of area.
+  Scene sim_scene = scene(0.015, 6);
+  sim_scene.model = ModelLevel::modal;
+  sim_scene.delta = 1e-6;
+  sim_scene.T = 200;
+  sim_scene.dt = 100;
+  SimulationOptions so;
+  so.integrator.rtol = 1e-11;
+  so.integrator.atol = 1e-14;
+  so.record_trajectory = false;
+  const SimulationResult sim = simulate(sim_scene, so);
+  ASSERT_EQ(sim.status, IntegrationStatus::success) << sim.reason;
+  Scene s = sim_scene;
+  s.parameters.Delta = sim.Delta_total_initial;
+  const ModalEquilibriumProblem pr(s, ContinuationParameter::C);
+  const ComplementarityResult r = solve_surviving_modes(pr, s.parameters.C);
+  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_EQ(r.surviving, std::vector<int>{4});
+  for (std::size_t k = 0; k < r.Delta_l.size(); ++k) EXPECT_NEAR(sim.Delta_final[k], r.Delta_l[k], 1e-8) << "l = " << k + 2;
+  EXPECT_NEAR(sim.sigma_final, r.sigma, 1e-7);
+}
+
+TEST(ModalBranchPointCurve, RejectsCoupledParameters) {
+  const Scene s = scene(0.04, 6);
+  EXPECT_THROW(ModalBranchPointCurve(s, ContinuationParameter::Lambda, ContinuationParameter::Delta, 3), InvalidArgument);
+  EXPECT_THROW(ModalBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::S, 3), InvalidArgument);
+  EXPECT_THROW(ModalBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::C, 3), InvalidArgument);
+  EXPECT_THROW(ModalBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::B, 7), InvalidArgument);
+  EXPECT_NO_THROW(ModalBranchPointCurve(s, ContinuationParameter::S, ContinuationParameter::lambda, 3));
 }
 
 // Why no bounded (Ipopt) corrector is needed for 0 <= r <= 1: in sphere coordinates r = |z|/|y| is

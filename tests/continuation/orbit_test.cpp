@@ -214,6 +214,10 @@ class ForcedFold2 final : public ForcedSystem2 {
     J(0, 0) = p2 - 2 * (x[0] - std::sin(t));
     J(1, 1) = -1;
   }
+  void parameter_derivative(double, std::span<const double>, double, double, std::span<double> fp) const override {
+    fp[0] = 1;
+    fp[1] = 0;
+  }
 };
 
 // The LPC curve from a one-parameter LPC, continued in p2 over [-1, 1], against p1 = -p2^2/4 and
@@ -260,6 +264,96 @@ TEST(OrbitNormalForms, FoldOfCyclesCurveInTwoParameters) {
   }
 }
 
+// Two-parameter flip: the half-turn rotating frame of ForcedFlip with u' = diag(p1 - p2^2, -1) u and
+// the orbit x_p(t) = (cos t + p1 sin 2t, sin t + p2 cos 2t): multipliers -e^{2 pi (p1 - p2^2)},
+// -e^{-2 pi}, so the PD curve is p1 = p2^2 with x(0) = (1, p2).
+class ForcedFlip2 final : public ForcedSystem2 {
+ public:
+  Eigen::Index dimension() const override { return 2; }
+  static Eigen::Matrix2d A(double t, double a) {
+    const double c = std::cos(t / 2), s = std::sin(t / 2);
+    Eigen::Matrix2d R, D, Jr;
+    R << c, -s, s, c;
+    D << a, 0, 0, -1;
+    Jr << 0, -0.5, 0.5, 0;
+    return Jr + R * D * R.transpose();
+  }
+  static Eigen::Vector2d xp(double t, double p1, double p2) {
+    return {std::cos(t) + p1 * std::sin(2 * t), std::sin(t) + p2 * std::cos(2 * t)};
+  }
+  static Eigen::Vector2d xp_dot(double t, double p1, double p2) {
+    return {-std::sin(t) + 2 * p1 * std::cos(2 * t), std::cos(t) - 2 * p2 * std::sin(2 * t)};
+  }
+  void rhs(double t, std::span<const double> x, double p1, double p2, std::span<double> f) const override {
+    const Eigen::Vector2d e = Eigen::Vector2d(x[0], x[1]) - xp(t, p1, p2);
+    const Eigen::Vector2d F = A(t, p1 - p2 * p2) * e + xp_dot(t, p1, p2) + Eigen::Vector2d(0.7 * e.squaredNorm(), 0);
+    f[0] = F[0];
+    f[1] = F[1];
+  }
+  void jacobian(double t, std::span<const double> x, double p1, double p2, Eigen::MatrixXd& J) const override {
+    const Eigen::Vector2d e = Eigen::Vector2d(x[0], x[1]) - xp(t, p1, p2);
+    J = A(t, p1 - p2 * p2);
+    J.row(0) += 1.4 * e.transpose();
+  }
+  // df/dp1 = dA/da e - A dxp/dp1 + d(xp_dot)/dp1 - 1.4 (e . dxp/dp1) e_1, with dA/da = R e1 e1^T R^T.
+  void parameter_derivative(double t, std::span<const double> x, double p1, double p2,
+                            std::span<double> fp) const override {
+    const Eigen::Vector2d e = Eigen::Vector2d(x[0], x[1]) - xp(t, p1, p2);
+    const Eigen::Vector2d r(std::cos(t / 2), std::sin(t / 2));  // R e_1
+    const Eigen::Vector2d dxp(std::sin(2 * t), 0), dxp_dot(2 * std::cos(2 * t), 0);
+    const Eigen::Vector2d F = r * r.dot(e) - A(t, p1 - p2 * p2) * dxp + dxp_dot - Eigen::Vector2d(1.4 * e.dot(dxp), 0);
+    fp[0] = F[0];
+    fp[1] = F[1];
+  }
+};
+
+// The PD curve from a one-parameter PD point, continued in p2 over [-1, 1], against p1 = p2^2 and
+// x(0) = (1, p2) to 1e-9 (Newton to 1e-12 on residuals integrated at rtol 1e-12).
+TEST(OrbitNormalForms, PeriodDoublingCurveInTwoParameters) {
+  const ForcedFlip2 sys;
+  OrbitOptions oo;
+  oo.segments = 3;
+  const double p2 = 0.5;
+  const ForcedSlice slice(sys, p2);
+  const PeriodicOrbitProblem pr(slice, oo);
+  const NewtonResult nr =
+      solve_fixed_parameter(pr, pr.shooting_guess(ForcedFlip2::xp(0, 0.1, p2) + Eigen::Vector2d(0.02, 0.01), 0.1), 0.1);
+  ASSERT_TRUE(nr.converged);
+  ContinuationOptions o;
+  o.p_max = 0.4;
+  o.max_step = 0.1;
+  const Branch b = continue_branch(pr, nr.x, 0.1, o);
+  ASSERT_EQ(b.special_points.size(), 1u);
+  const SpecialPoint& pd = b.special_points[0];
+  ASSERT_EQ(pd.type, SpecialPointType::PD);
+  EXPECT_NEAR(pd.p, p2 * p2, 1e-8);
+
+  const OrbitTwoParameterProblem base(sys, oo);
+  const PeriodDoublingCurveProblem curve(base, pd, p2);
+  ContinuationOptions co;
+  co.direction = Direction::both;
+  co.p_min = -1;
+  co.p_max = 1;
+  co.max_step = 0.1;
+  const Branch c = continue_branch(curve, curve.start(), p2, co);
+  ASSERT_EQ(c.status, ContinuationStatus::completed) << c.message;
+  EXPECT_DOUBLE_EQ(c.points.front().p, -1.0);
+  EXPECT_DOUBLE_EQ(c.points.back().p, 1.0);
+  EXPECT_GE(c.points.size(), 10u);
+  for (const auto& pt : c.points) {
+    const double q2 = pt.p, q1 = pt.x[pt.x.size() - 1];
+    EXPECT_NEAR(q1, q2 * q2, 1e-9) << q2;
+    EXPECT_NEAR(pt.x[0], 1.0, 1e-9) << q2;
+    EXPECT_NEAR(pt.x[1], q2, 1e-9) << q2;
+    // A multiplier -1 all along the curve (neutral: no spurious PD points are reported).
+    double d = 1e300;
+    for (Eigen::Index i = 0; i < pt.spectrum.size(); ++i) d = std::min(d, std::abs(pt.spectrum[i] + 1.0));
+    EXPECT_LT(d, 1e-9) << q2;
+  }
+  for (const auto& sp : c.special_points) EXPECT_NE(sp.type, SpecialPointType::PD);
+  std::printf("points %zu steps %zu rejected %zu newton %zu loc %zu sps %zu\n", c.points.size(), c.counters.steps, c.counters.rejected_steps, c.counters.newton_iterations, c.counters.location_iterations, c.special_points.size());
+}
+
 TEST(OrbitOptionsTest, ValidateNamesTheField) {
   OrbitOptions o;
   o.segments = 0;
@@ -293,6 +387,27 @@ Scene fig2_ip(double Delta) {
   s.model = ModelLevel::reduced;
   return s;
 }
+// The reduced system's analytic df/dp (through 1/Lambda and kappa) against central differences of
+// its rhs in p, for every parameter, at states off and on the sphere and several times. 1e-7
+// relative: the difference's truncation (~h^2, h ~ 6e-6) and rounding (~eps/h ~ 4e-11) errors.
+TEST(ReducedOrbit, ParameterDerivativeMatchesDifferences) {
+  for (const std::string& name : continuation_parameter_names()) {
+    const ContinuationParameter q = continuation_parameter_from_string(name);
+    const ReducedForcedSystem sys(fig2_ip(0.3), q);
+    const double p = sys.start_parameter();
+    for (double t : {0.0, 1.3, 4.0}) {
+      for (const Eigen::Vector3d& y : {Eigen::Vector3d(0.3, -0.5, 0.81), Eigen::Vector3d(0.9, 0.2, -0.3)}) {
+        double a[3], f[3];
+        const std::span<const double> ys(y.data(), 3);
+        sys.parameter_derivative(t, ys, p, a);
+        sys.ForcedSystem::parameter_derivative(t, ys, p, f);
+        const double scale = std::max({std::abs(f[0]), std::abs(f[1]), std::abs(f[2]), 1e-3});
+        for (int i = 0; i < 3; ++i) EXPECT_NEAR(a[i], f[i], 1e-7 * scale) << name << " t = " << t << " i = " << i;
+      }
+    }
+  }
+}
+
 // Newton from the scene relaxed for T = 300 (a state at a multiple of 2 pi).
 Eigen::VectorXd reduced_orbit(const ReducedForcedSystem& sys, const PeriodicOrbitProblem& pr) {
   const double p0 = sys.start_parameter();

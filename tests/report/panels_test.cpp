@@ -233,6 +233,31 @@ TEST(PanelReport, TinyDiagramBuildsAndItsDataEqualAnIndependentRun) {
   EXPECT_GE(overlay.at("curves").size(), 2u);  // the traced boundary and at least the l_* = 2.5 line
 }
 
+// The hook flags (--phase-diagram FILE) still draw another command's output into a scene report.
+TEST(PanelReport, HookFlagsStillDrawIntoASceneReport) {
+  const fs::path parent = fresh_dir("hooks");
+  const fs::path csv = parent / "d.csv";
+  {
+    std::ofstream f(csv);
+    f << "index,i,j,lnB,lnC,verdict,l_Delta\n0,0,0,0,0,stable,2\n1,1,0,1,0,unstable,3\n2,0,1,0,1,stable,2\n"
+         "3,1,1,1,1,unstable,4\n";
+  }
+  SceneFile sf;
+  sf.scene.L = 3;
+  sf.scene.T = 4;
+  sf.scene.dt = 1;
+  ReportOptions ro;
+  ro.output = (parent / "scene").string();
+  ro.shape = {8, 16};
+  ro.frame_shape = {6, 12};
+  ro.frames = 2;
+  ro.phase_diagram = csv.string();
+  const ReportResult r = build_report(sf, ro);
+  EXPECT_TRUE(fs::is_regular_file(parent / "scene" / "trajectory.csv"));
+  EXPECT_EQ(read_file((parent / "scene" / "phase_diagram.csv").string()), read_file(csv.string()));
+  EXPECT_GT(fs::file_size(parent / "scene" / "fig_phase_diagram.png"), 1000u);
+}
+
 TEST(PanelReport, SceneWithoutPanelTableIsRefused) {
   const SceneFile sf = parse_scene(kBase);
   ReportOptions ro;

@@ -35,6 +35,7 @@ ThresholdPrecisionOptions small_options() {
   o.rtols = {1e-6};
   o.grid_points = {5, 17};
   o.reference_bisections = 36;  // 7.5 / 2^36 ~ 1e-10 in ln C
+  o.trace_max_steps = {};       // continuation has its own test (its finite-horizon trace costs seconds)
   return o;
 }
 
@@ -115,7 +116,7 @@ TEST(ThresholdPrecision, EachReferenceSeparatesItsVerdicts) {
 TEST(ThresholdPrecision, MethodErrorsObeyTheirBounds) {
   const double width = 7.5;
   for (const ThresholdRow& row : result().rows) {
-    if (row.method == "closed_form") continue;
+    if (row.method == "closed_form" || row.method == "continuation") continue;
     ASSERT_EQ(row.status, "ok") << row.predictor << " " << row.method << " " << row.budget;
     const double ref_err = reference(row.predictor).bracket;
     // rtol enters only beyond 1e-8 here (measured: the boundary moves < 1e-9 between rtol 1e-4 and 1e-12,
@@ -140,6 +141,30 @@ TEST(ThresholdPrecision, PredictorsAgreeOnTheBoundaryToModelAccuracy) {
   EXPECT_NEAR(reference("finite_horizon").ln_C, reference("simulation").ln_C, 1e-2);
 }
 
+TEST(ThresholdPrecision, ContinuationPointsInterpolateTheBoundary) {
+  // The traced curve is Newton-corrected onto the boundary; read at ln B by linear interpolation between points
+  // at most max_step apart (in the unit square of the strip: 0.05 * 7.5 in ln C), its error is the chord's,
+  // ~ h^2 |y''| / 8; measured 1.4e-7 at this step, bound 1e-5 (a wrong crossing or piece would be >= 1e-3).
+  ThresholdPrecisionOptions o = small_options();
+  o.predictors = {"asymptotic"};
+  o.bisections = {1};
+  o.grid_points = {2};
+  o.trace_max_steps = {0.05};
+  const ThresholdPrecision t = threshold_precision(fig4b_at_B2(), o);
+  bool seen = false;
+  for (const ThresholdRow& row : t.rows) {
+    if (row.method != "continuation") continue;
+    seen = true;
+    ASSERT_EQ(row.status, "ok");
+    EXPECT_LT(row.error, 1e-5);
+    EXPECT_EQ(row.budget, 20);
+    EXPECT_GT(row.evaluations, 0u);
+  }
+  EXPECT_TRUE(seen);
+  ASSERT_EQ(t.references.size(), 1u);
+  EXPECT_NEAR(t.references[0].ln_C, reference("asymptotic").ln_C, 1e-10);
+}
+
 TEST(ThresholdPrecision, NoSignChangeIsAStatusAndBadOptionsThrow) {
   ThresholdPrecisionOptions o = small_options();
   o.ln_C_lo = 1.0;  // both ends stable
@@ -153,6 +178,12 @@ TEST(ThresholdPrecision, NoSignChangeIsAStatusAndBadOptionsThrow) {
   EXPECT_THROW(threshold_precision(fig4b_at_B2(), bad), InvalidArgument);
   bad = {};
   bad.reference_rtol = 1e-6;
+  EXPECT_THROW(threshold_precision(fig4b_at_B2(), bad), InvalidArgument);
+  bad = {};
+  bad.predictors = {"oracle"};
+  EXPECT_THROW(threshold_precision(fig4b_at_B2(), bad), InvalidArgument);
+  bad = {};
+  bad.trace_max_steps = {0.0};
   EXPECT_THROW(threshold_precision(fig4b_at_B2(), bad), InvalidArgument);
 }
 

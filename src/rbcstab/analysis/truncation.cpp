@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -20,6 +21,13 @@ void TruncationOptions::validate() const {
 
 namespace {
 constexpr double kNoGain = -1e300;  // log_gain of a mode that never gains area (finite, never -inf)
+
+// Three significant digits: the reason is read by a person.
+std::string short_value(double v) {
+  std::ostringstream ss;
+  ss << std::setprecision(3) << v;
+  return ss.str();
+}
 
 // ln(d (exp(2 G) - 1)) for G > 0, d > 0, without overflow for large G.
 double log_area_gain(double d, double G) { return std::log(d) + 2 * G + std::log1p(-std::exp(-2 * G)); }
@@ -77,16 +85,21 @@ TruncationChoice choose_truncation(const Scene& scene, const TruncationOptions& 
   c.L = std::max({L_needed, L_explicit, L_floor});
   for (int l = c.L + 1; l <= options.L_max; ++l) c.dropped_seeded_area += s.perturbation(l);
 
-  why << "L = " << c.L << ": the smallest L keeping every mode whose linear area gain delta_l (exp(2 max_t G_l) - 1) by T = "
-      << format_value(s.T) << " exceeds " << format_value(options.tolerance) << " Delta (finite-horizon predictor)";
-  if (L_needed >= 3) why << "; l = " << L_needed << " grows (max_t G = " << format_value(c.G_max[std::size_t(L_needed - 3)]) << ")";
-  else why << "; no mode gains";
-  if (c.L < options.L_max) why << ", l = " << c.L + 1 << " does not (max_t G = " << format_value(c.G_max[std::size_t(c.L + 1 - 3)]) << ")";
+  why << "L = " << c.L << ": the smallest L keeping every mode whose linear area gain delta_l (exp(2 max_t G_l) - 1)"
+      << " by T = " << format_value(s.T) << " exceeds " << short_value(options.tolerance)
+      << " Delta (finite-horizon predictor)";
+  if (L_needed >= 3) {
+    why << "; l = " << L_needed << " grows (max_t G = " << short_value(c.G_max[std::size_t(L_needed - 3)]) << ")";
+  } else {
+    why << "; no mode gains";
+  }
+  if (c.L < options.L_max)
+    why << ", l = " << c.L + 1 << " does not (max_t G = " << short_value(c.G_max[std::size_t(c.L + 1 - 3)]) << ")";
   if (L_explicit > L_needed && L_explicit == c.L) why << "; raised to the highest mode the scene sets explicitly";
   if (c.L == options.L_max && L_needed == options.L_max)
     why << "; capped at L_max: the linear predictor ignores saturation, so this is conservative";
   if (c.dropped_seeded_area > 0)
-    why << "; the seeded area " << format_value(c.dropped_seeded_area) << " of l = " << c.L + 1 << ".." << options.L_max
+    why << "; the seeded area " << short_value(c.dropped_seeded_area) << " of l = " << c.L + 1 << ".." << options.L_max
         << " would only move to the kept modes";
   c.reason = why.str();
   return c;

@@ -20,7 +20,7 @@ namespace rbcstab {
 
 struct TruncationOptions {
   double tolerance = 1e-4;  // in (0, 1): area gain (relative to Delta) a dropped mode may take from the kept ones;
-                            // 1e-4 moves sigma(T) by ~1e-6 relative (measured sensitivity ~0.04 per unit area)
+                            // 1e-4 moves sigma(T) by ~4e-6 relative (measured: ~0.04 per unit area)
   int L_max = 40;           // in [3, 100]: largest L considered (the reference of the truncation study)
   int checkpoints = 32;     // in [1, 10000]: times T k/K where G_l(t) is evaluated, so that a mode that grows
                             // and decays again before T still counts

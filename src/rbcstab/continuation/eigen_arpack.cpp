@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <mutex>
 #include <numeric>
 #include <vector>
 
@@ -85,6 +86,11 @@ ArpackResult arpack_eigenvalues(std::size_t n_size, const LinearOperator& apply,
   const char bmat = 'I';
   const double tol = options.tol;
 
+  // ARPACK keeps state between reverse-communication calls in Fortran SAVE variables, so it is not
+  // reentrant: concurrent calls (threaded sweeps) are serialised here. The one process-wide lock is
+  // unavoidable for a non-reentrant library (the operator must not itself call arpack_eigenvalues).
+  static std::mutex arpack_mutex;
+  const std::lock_guard<std::mutex> lock(arpack_mutex);
   ArpackResult out;
   std::vector<double> resid(n_size), v(n_size * static_cast<std::size_t>(ncv)), workd(3 * n_size), workl(static_cast<std::size_t>(lworkl));
   start_vector(resid);

@@ -4,9 +4,10 @@
 // and shift-invert (mode 3) by a user solve x -> (A - s I)^{-1} x. For the model levels,
 // StructuredJacobian gives both in O(n) (shifted_inverse below).
 //
-// Limits a user must know: a single-vector Krylov method sees one copy of a semisimple multiple
-// eigenvalue (its start vector's projection on the eigenspace), so multiplicities are not resolved
-// (the full model's (l, m) and (l, -m) modes give equal pairs); ask for distinct values only.
+// Limits a user must know: in exact arithmetic a single-vector Krylov method sees one copy of a
+// semisimple multiple eigenvalue (the full model's (l, m) and (l, -m) modes give equal pairs);
+// rounding usually reveals the second copy (it did in every test here), but do not rely on counts.
+// ARPACK is not reentrant (Fortran SAVE state): calls from several threads are serialised inside.
 #include <Eigen/Dense>
 #include <complex>
 #include <cstddef>

@@ -166,7 +166,8 @@ ModalState ModalEquilibriumProblem::observe(const Eigen::VectorXd& x, double p) 
   const double Delta = c.parameters.Delta;
   ModalState s;
   s.sigma = sigma(c, x);
-  s.r = std::hypot(x[0], x[1]) / std::hypot(std::hypot(x[0], x[1]), x[2]);
+  const double q2 = std::hypot(std::hypot(x[0], x[1]), x[2]);
+  s.r = q2 > 0 ? std::hypot(x[0], x[1]) / q2 : 0.0;  // no l = 2 area (never an equilibrium): r = 0
   s.Psi = -std::atan2(x[1], x[0]);
   if (s.Psi <= -M_PI) s.Psi += 2 * M_PI;
   s.Delta_l.assign(static_cast<std::size_t>(L_ - 1), 0.0);
@@ -205,7 +206,16 @@ int critical_mode(const ModalEquilibriumProblem& problem, const Eigen::VectorXd&
 ModalBranchPointCurve::ModalBranchPointCurve(const Scene& scene, ContinuationParameter p1, ContinuationParameter p2,
                                              int l)
     : scene_(scene), p1_(p1), p2_(p2), l_(l), base_(scene, p1) {
-  require(p1 != p2, "p2", static_cast<double>(static_cast<int>(p2)), "a parameter different from p1");
+  // Lambda is moved through Delta and depends on lambda; S is moved through C and depends on Delta0:
+  // setting one of a coupled pair would undo the other.
+  using P = ContinuationParameter;
+  auto coupled = [](P a, P b) {
+    return a == b || (a == P::Lambda && (b == P::Delta || b == P::lambda)) || (a == P::S && (b == P::C || b == P::Delta0));
+  };
+  if (coupled(p1, p2) || coupled(p2, p1))
+    throw InvalidArgument("p2", "p2 = " + to_string(p2) + " is not independent of p1 = " + to_string(p1) +
+                                    ": choose two of lambda, Delta, Delta0, B, C, or a composite (Lambda, S) with a "
+                                    "parameter it does not depend on");
   require(l >= 3 && l <= scene.L, "l", l, "in [3, L = " + std::to_string(scene.L) + "]");
 }
 

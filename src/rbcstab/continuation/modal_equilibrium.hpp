@@ -104,6 +104,8 @@ class ModalEquilibriumProblem final : public ContinuationProblem {
 // Upsilon_l(sigma) = 0, so the curve is a branch of the same engine.
 class ModalBranchPointCurve final : public ContinuationProblem {
  public:
+  // Throws InvalidArgument("p2", ...) unless p1, p2 are independent (not equal, not Lambda with Delta or
+  // lambda, not S with C or Delta0), and InvalidArgument("l", ...) unless 3 <= l <= L.
   ModalBranchPointCurve(const Scene& scene, ContinuationParameter p1, ContinuationParameter p2, int l);
   Eigen::Index dimension() const override { return 6; }
   void residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const override;

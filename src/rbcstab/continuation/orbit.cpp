@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
+#include "rbcstab/continuation/detail/minimal_augmentation.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 
@@ -88,6 +89,15 @@ void ForcedSystem::parameter_derivative(double t, std::span<const double> x, dou
   for (std::size_t i = 0; i < fp.size(); ++i) fp[i] = (fp[i] - fm[i]) / (2 * h);
 }
 
+void ForcedSystem2::parameter_derivative(double t, std::span<const double> x, double p1, double p2,
+                                         std::span<double> fp) const {
+  const double h = fd_step(p1);
+  std::vector<double> fm(fp.size());
+  rhs(t, x, p1 + h, p2, fp);
+  rhs(t, x, p1 - h, p2, fm);
+  for (std::size_t i = 0; i < fp.size(); ++i) fp[i] = (fp[i] - fm[i]) / (2 * h);
+}
+
 // ---------------------------------------------------------------- reduced in-plane system
 
 ReducedForcedSystem::ReducedForcedSystem(const Scene& scene, ContinuationParameter free) : scene_(scene), free_(free) {
@@ -119,22 +129,58 @@ void ReducedForcedSystem::jacobian(double t, std::span<const double> x, double p
   J = D;
 }
 
-void ReducedForcedSystem::parameter_derivative(double t, std::span<const double> x, double p,
-                                               std::span<double> fp) const {
+ReducedForcedSystem::Slopes ReducedForcedSystem::coefficient_slopes(double p) const {
+  auto it = slopes_.find(p);
+  if (it != slopes_.end()) return it->second;
+  // d(1/Lambda)/dp and d kappa/dp by central differences of two scalar functions of the parameters
+  // (constants during an integration, so their rounding does not disturb the error control).
+  auto coefficients = [&](double q) {
+    const Parameters pq = with_parameter(scene_.parameters, free_, q);
+    return std::pair<double, double>(1 / pq.Lambda(), pq.inv_Lambda_S());
+  };
   const double h = fd_step(p);
-  double fplus[3], fminus[3];
-  model(p + h).rhs(t, x, fplus);
+  Slopes d;
+  const auto c0 = coefficients(p), plus = coefficients(p + h);
+  d.kappa = c0.second;
   try {
-    model(p - h).rhs(t, x, fminus);
+    const auto minus = coefficients(p - h);
+    d.dinvL = (plus.first - minus.first) / (2 * h);
+    d.dkappa = (plus.second - minus.second) / (2 * h);
   } catch (const InvalidArgument&) {
     // p on the edge of its domain (lambda = 0): second-order one-sided difference.
-    double f0[3], f2[3];
-    model(p).rhs(t, x, f0);
-    model(p + 2 * h).rhs(t, x, f2);
-    for (int i = 0; i < 3; ++i) fp[static_cast<std::size_t>(i)] = (4 * fplus[i] - 3 * f0[i] - f2[i]) / (2 * h);
+    const auto c2 = coefficients(p + 2 * h);
+    d.dinvL = (4 * plus.first - 3 * c0.first - c2.first) / (2 * h);
+    d.dkappa = (4 * plus.second - 3 * c0.second - c2.second) / (2 * h);
+  }
+  if (slopes_.size() >= 8) slopes_.clear();
+  slopes_.emplace(p, d);
+  return d;
+}
+
+void ReducedForcedSystem::parameter_derivative(double t, std::span<const double> x, double p,
+                                               std::span<double> fp) const {
+  // f depends on p only through 1/Lambda and kappa = 1/(Lambda S) (ReducedModel::rhs):
+  //   f = mu y + (-y1, y0, 0) - (0, 1/Lambda, 0) + kappa g(t),  mu = (y1/Lambda - kappa y.g) / |y|^2,
+  // with g = (Re z0(t), Im z0(t), w0) the rest shape's direction, so df/dp is exact in y and t:
+  //   df/d(1/Lambda) = (y1/Q) y - e_y,  df/dkappa = g - (y.g/Q) y.
+  // Central differences of f itself would put rounding noise (~eps |f| / h) into the sensitivity
+  // equation and force rk8pd at rtol 1e-12 into small steps (measured: ~6x slower shooting).
+  const Slopes d = coefficient_slopes(p);
+  if (d.kappa == 0) {
+    // kappa = 0: the model dropped the rest shape's direction; difference f in p instead.
+    ForcedSystem::parameter_derivative(t, x, p, fp);
     return;
   }
-  for (int i = 0; i < 3; ++i) fp[static_cast<std::size_t>(i)] = (fplus[i] - fminus[i]) / (2 * h);
+  const ReducedModel& m = model(p);
+  const std::complex<double> z0 = m.z0(t);
+  const double g[3] = {z0.real(), z0.imag(), m.w0()};
+  const double Q = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
+  const double yg = x[0] * g[0] + x[1] * g[1] + x[2] * g[2];
+  for (std::size_t i = 0; i < 3; ++i) {
+    const double dfdinvL = x[1] / Q * x[i] - (i == 1 ? 1.0 : 0.0);
+    const double dfdkappa = g[i] - yg / Q * x[i];
+    fp[i] = d.dinvL * dfdinvL + d.dkappa * dfdkappa;
+  }
 }
 
 Eigen::VectorXd ReducedForcedSystem::relaxed_state(double T) const {
@@ -238,6 +284,21 @@ void PeriodicOrbitProblem::jacobian(const Eigen::VectorXd& X, double p, Eigen::M
   if (sys_.conserves_norm()) {
     const Eigen::VectorXd x0 = X.head(n_);
     J.block(0, 0, n_, n_) += (x0.squaredNorm() - 1) * sh.M[0] + 2 * sh.phi[0] * x0.transpose();
+  }
+}
+
+void PeriodicOrbitProblem::antiperiodic_jacobian(const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) const {
+  const Shooting& sh = shoot(X, p);
+  const Eigen::Index m = n_ * N_;
+  J.setZero(m, m);
+  if (!sh.ok) {
+    J.setConstant(std::numeric_limits<double>::quiet_NaN());
+    return;
+  }
+  for (int j = 0; j < N_; ++j) {
+    J.block(j * n_, j * n_, n_, n_) += sh.M[static_cast<std::size_t>(j)];
+    const double sign = j + 1 == N_ ? 1.0 : -1.0;  // x_N = -x_0 closes the anti-periodic cycle
+    J.block(j * n_, ((j + 1) % N_) * n_, n_, n_) += sign * Eigen::MatrixXd::Identity(n_, n_);
   }
 }
 
@@ -448,6 +509,56 @@ void OrbitTwoParameterProblem::residual(const Eigen::VectorXd& X, double p1, dou
 void OrbitTwoParameterProblem::jacobian(const Eigen::VectorXd& X, double p1, double p2, Eigen::MatrixXd& J) const {
   at(p2);
   orbit_.jacobian(X, p1, J);
+}
+
+void OrbitTwoParameterProblem::antiperiodic_jacobian(const Eigen::VectorXd& X, double p1, double p2,
+                                                     Eigen::MatrixXd& J) const {
+  at(p2);
+  orbit_.antiperiodic_jacobian(X, p1, J);
+}
+
+Eigen::VectorXcd OrbitTwoParameterProblem::multipliers(const Eigen::VectorXd& X, double p1, double p2) const {
+  at(p2);
+  return orbit_.spectrum(X, p1);
+}
+
+PeriodDoublingCurveProblem::PeriodDoublingCurveProblem(const OrbitTwoParameterProblem& base, const SpecialPoint& pd,
+                                                       double p2)
+    : base_(base) {
+  if (pd.type != SpecialPointType::PD || pd.status != LocationStatus::located)
+    throw InvalidArgument("pd", "a PD curve starts from a located PD point (got " + to_string(pd.type) + ", " +
+                                    to_string(pd.status) + ")");
+  const Eigen::Index n = base.dimension();
+  require(pd.x.size() == n, "pd", static_cast<double>(pd.x.size()), "a point of the orbit problem's dimension");
+  Eigen::MatrixXd J;
+  base.antiperiodic_jacobian(pd.x, pd.p, p2, J);
+  Eigen::MatrixXd B, C;
+  detail::null_borders(J, 1, B, C);  // left / right singular vectors of the smallest singular value
+  b_ = B.col(0);
+  c_ = C.col(0);
+  start_.resize(n + 1);
+  start_ << pd.x, pd.p;
+}
+
+double PeriodDoublingCurveProblem::test_function(const Eigen::VectorXd& X, double p1, double p2) const {
+  Eigen::MatrixXd J;
+  base_.antiperiodic_jacobian(X, p1, p2, J);
+  return detail::bordered_g(J, b_, c_)(0, 0);
+}
+
+void PeriodDoublingCurveProblem::residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const {
+  const Eigen::Index n = base_.dimension();
+  const Eigen::VectorXd x = X.head(n);
+  Eigen::VectorXd F(n);
+  base_.residual(x, X[n], p2, F);
+  R.resize(n + 1);
+  R.head(n) = F;
+  R[n] = test_function(x, X[n], p2);
+}
+
+Eigen::VectorXcd PeriodDoublingCurveProblem::spectrum(const Eigen::VectorXd& X, double p2) const {
+  const Eigen::Index n = base_.dimension();
+  return base_.multipliers(X.head(n), X[n], p2);
 }
 
 }  // namespace rbcstab

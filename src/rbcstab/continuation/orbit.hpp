@@ -37,7 +37,9 @@ class ForcedSystem {
   virtual void rhs(double t, std::span<const double> x, double p, std::span<double> f) const = 0;
   // df/dx (n x n).
   virtual void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const = 0;
-  // df/dp. Default: central differences of rhs in p (no integration noise: rhs is smooth in p).
+  // df/dp. Default: central differences of rhs in p. Prefer an analytic one: the rounding noise of
+  // the difference (~eps |f| / h) enters the sensitivity equation, whose error control at rtol 1e-12
+  // then forces small steps (measured: ~20x slower shooting on the test systems).
   virtual void parameter_derivative(double t, std::span<const double> x, double p, std::span<double> fp) const;
   // True when x . f(t, x, p) = 0 identically (Q = |x|^2 conserved, the reduced system's excess
   // area): the monodromy then has a trivial multiplier 1 and the shooting system is regularised.
@@ -63,10 +65,15 @@ class ReducedForcedSystem final : public ForcedSystem {
   const ReducedModel& model(double p) const;  // cached (a few parameter values: p and p +- h)
 
  private:
+  struct Slopes {
+    double dinvL = 0, dkappa = 0, kappa = 0;  // d(1/Lambda)/dp, d kappa/dp, kappa at p
+  };
+  Slopes coefficient_slopes(double p) const;
   Scene scene_;
   ContinuationParameter free_;
   InitialState init_;
   mutable std::map<double, ReducedModel> cache_;
+  mutable std::map<double, Slopes> slopes_;
 };
 
 struct OrbitOptions {
@@ -130,6 +137,9 @@ class PeriodicOrbitProblem final : public ContinuationProblem {
   UserEvent transition_event(const std::string& name = "swing_tumble") const;
   // Counters of the integrations done so far (work measure for benchmarks).
   std::size_t integrations() const { return integrations_; }
+  // The shooting Jacobian of the anti-periodic problem x_N = -x_0 (closing block +I, no norm term):
+  // singular exactly where det(M + I) = 0, i.e. a multiplier -1 (the bordered PD test function).
+  void antiperiodic_jacobian(const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) const;
   // Forget the cached shooting (the system changed behind the problem's back, e.g. a second parameter).
   void clear_cache() const { cache_.valid = false; }
 
@@ -160,6 +170,8 @@ class ForcedSystem2 {
   virtual Eigen::Index dimension() const = 0;
   virtual void rhs(double t, std::span<const double> x, double p1, double p2, std::span<double> f) const = 0;
   virtual void jacobian(double t, std::span<const double> x, double p1, double p2, Eigen::MatrixXd& J) const = 0;
+  // df/dp1. Default: central differences (see ForcedSystem::parameter_derivative).
+  virtual void parameter_derivative(double t, std::span<const double> x, double p1, double p2, std::span<double> fp) const;
   virtual bool conserves_norm() const { return false; }
   virtual std::string name1() const { return "p1"; }
   virtual std::string name2() const { return "p2"; }
@@ -173,6 +185,9 @@ class ForcedSlice final : public ForcedSystem {
   void rhs(double t, std::span<const double> x, double p, std::span<double> f) const override { base_.rhs(t, x, p, p2_, f); }
   void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const override {
     base_.jacobian(t, x, p, p2_, J);
+  }
+  void parameter_derivative(double t, std::span<const double> x, double p, std::span<double> fp) const override {
+    base_.parameter_derivative(t, x, p, p2_, fp);
   }
   bool conserves_norm() const override { return base_.conserves_norm(); }
   std::string parameter_name() const override { return base_.name1(); }
@@ -194,12 +209,38 @@ class OrbitTwoParameterProblem final : public TwoParameterProblem {
   void jacobian(const Eigen::VectorXd& X, double p1, double p2, Eigen::MatrixXd& J) const override;
   std::string name1() const override { return system_.name1(); }
   std::string name2() const override { return system_.name2(); }
+  void antiperiodic_jacobian(const Eigen::VectorXd& X, double p1, double p2, Eigen::MatrixXd& J) const;
+  Eigen::VectorXcd multipliers(const Eigen::VectorXd& X, double p1, double p2) const;
 
  private:
   void at(double p2) const;
   const ForcedSystem2& system_;
   mutable ForcedSlice slice_;
   PeriodicOrbitProblem orbit_;
+};
+
+// PD curve by minimal augmentation: unknowns (X, p1), free p2, equations F = 0 and g = 0 where
+// [J_PD b; c^T 0][v; g] = [0; 1] with J_PD the anti-periodic shooting Jacobian and b, c its left/right
+// singular vectors at the starting PD point. The spectrum is the orbit's multipliers (one is -1 along
+// the curve: the engine treats it as neutral, so no spurious PD points are reported).
+class PeriodDoublingCurveProblem final : public ContinuationProblem {
+ public:
+  PeriodDoublingCurveProblem(const OrbitTwoParameterProblem& base, const SpecialPoint& pd, double p2);
+  Eigen::Index dimension() const override { return base_.dimension() + 1; }
+  void residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const override;
+  StabilityKind stability_kind() const override { return StabilityKind::multipliers; }
+  Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p2) const override;
+  std::string parameter_name() const override { return base_.name2(); }
+  std::vector<std::string> parameter_names() const override { return {base_.name1(), base_.name2()}; }
+  std::vector<double> parameter_values(const Eigen::VectorXd& X, double p2) const override {
+    return {X[X.size() - 1], p2};
+  }
+  const Eigen::VectorXd& start() const { return start_; }  // (X, p1) at the PD point
+  double test_function(const Eigen::VectorXd& X, double p1, double p2) const;  // g
+
+ private:
+  const OrbitTwoParameterProblem& base_;
+  Eigen::VectorXd b_, c_, start_;
 };
 
 }  // namespace rbcstab

@@ -89,6 +89,7 @@ class ReducedModel final : public System {
   // sigma_R from the l = 2 growth rate mu (Eq. st_red).
   double sigma_from_mu(double mu) const;
   std::complex<double> z0(double t) const;
+  double w0() const { return w0_; }  // rest shape's w component (with z0: the forcing direction)
 
  private:
   Parameters p_;

@@ -1,5 +1,6 @@
 #include "rbcstab/sweep/threshold_precision.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
@@ -24,6 +25,12 @@ void ThresholdPrecisionOptions::validate() const {
           reference_rtol, "in [1e-14, 1e-9]");
   require(reference_bisections >= 10 && reference_bisections <= 60, "reference_bisections", reference_bisections,
           "an integer in [10, 60]");
+  for (double h : trace_max_steps) require(std::isfinite(h) && h > 0 && h <= 0.5, "trace_max_steps", h, "each in (0, 0.5]");
+  require(std::isfinite(trace_half_width) && trace_half_width > 0 && trace_half_width <= 10, "trace_half_width",
+          trace_half_width, "in (0, 10]");
+  for (const auto& name : predictors)
+    if (name != "asymptotic" && name != "finite_horizon" && name != "simulation")
+      throw InvalidArgument("predictors", "predictors: '" + name + "' is not one of asymptotic, finite_horizon, simulation");
 }
 
 namespace {
@@ -113,6 +120,33 @@ Bisection bisect(const VerdictFn& f, double lo, double hi, double rtol, int halv
   return b;
 }
 
+// The boundary by continuation: trace the strip ln B +- half_width, then interpolate the traced curve linearly
+// at ln B (the points themselves are Newton-corrected onto the curve; the interpolation error is the method's).
+ThresholdRow continuation(const Scene& base, const std::string& name, TraceCriterion criterion, double lo, double hi,
+                          double half_width, double max_step) {
+  ThresholdRow row{name, "continuation", 0, int(std::lround(1 / max_step)), 0, 0, 0, 0, 0, "ok"};
+  const double x0 = std::log(base.parameters.B);
+  DiagramSpec plane;
+  plane.x = {Axis::lnB, x0 - half_width, x0 + half_width, 2};
+  plane.y = {Axis::lnC, lo, hi, 2};
+  TraceOptions to;
+  to.criterion = criterion;
+  to.max_step = max_step;
+  const TraceResult tr = trace_boundary(base, plane, to);
+  row.evaluations = tr.evaluations;
+  row.seconds = tr.seconds;
+  bool found = false;
+  for (const TraceCurve& c : tr.curves)
+    for (std::size_t k = 1; k < c.points.size() && !found; ++k) {
+      const TracePoint &a = c.points[k - 1], &b = c.points[k];
+      if ((a.x - x0) * (b.x - x0) > 0 || a.x == b.x) continue;
+      row.ln_C = a.y + (b.y - a.y) * (x0 - a.x) / (b.x - a.x);
+      found = true;
+    }
+  if (!found) row.status = "the traced curve does not cross ln B = " + format_value(x0);
+  return row;
+}
+
 ThresholdRow grid(const std::string& name, const VerdictFn& f, double lo, double hi, double rtol, int n) {
   ThresholdRow row{name, "grid", rtol, n, 0, 0, 0, 0, 0, "ok"};
   const auto t0 = Clock::now();
@@ -157,6 +191,7 @@ ThresholdPrecision threshold_precision(const Scene& base, const ThresholdPrecisi
   for (int k : options.bisections) kmax = std::max(kmax, k);
 
   for (const Predictor& p : predictors) {
+    if (std::find(options.predictors.begin(), options.predictors.end(), p.name) == options.predictors.end()) continue;
     const double ref_rtol = p.integrates ? options.reference_rtol : 0.0;
     const Bisection ref = bisect(p.f, lo, hi, ref_rtol, options.reference_bisections);
     ThresholdReference r{p.name, 0, 0, ref.status};
@@ -188,6 +223,13 @@ ThresholdPrecision threshold_precision(const Scene& base, const ThresholdPrecisi
       if (row.status == "ok") row.error = error_of(row.ln_C);
       out.rows.push_back(row);
     }
+    if (p.name != "simulation")  // the simulated verdict has no smooth criterion to continue
+      for (double h : options.trace_max_steps) {
+        const TraceCriterion crit = p.name == "asymptotic" ? TraceCriterion::asymptotic : TraceCriterion::finite_horizon;
+        ThresholdRow row = continuation(base, p.name, crit, lo, hi, options.trace_half_width, h);
+        if (row.status == "ok") row.error = error_of(row.ln_C);
+        out.rows.push_back(row);
+      }
     if (p.name == "asymptotic") {
       // The paper's closed form (S >> 1): a model approximation of this predictor, not a numerical method.
       const Parameters& par = base.parameters;

@@ -21,7 +21,7 @@ def main():
         series.setdefault(label, []).append(r)
     fig, axes = plt.subplots(1, 2, figsize=(12, 5), constrained_layout=True)
     colors = {"asymptotic": "tab:blue", "finite_horizon": "tab:green", "simulation": "tab:red"}
-    styles = {"bisection": "-", "grid": "--", "closed_form": ""}
+    styles = {"bisection": "-", "grid": "--", "continuation": ":", "closed_form": ""}
     markers = ["o", "s", "^", "D", "v", "P"]
     for i, (label, pts) in enumerate(sorted(series.items())):
         pts.sort(key=lambda r: float(r["evaluations"]))
