@@ -3,6 +3,9 @@
 // evaluations per point, criterion evaluations) beside the time; docs/sweeps.md has the full-panel numbers.
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <cmath>
+
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/trace.hpp"
 
@@ -37,20 +40,37 @@ void BM_DiagramPanel(benchmark::State& state) {
 }
 BENCHMARK(BM_DiagramPanel)->Args({8, 1})->Args({8, 2})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
-void BM_TraceFig4b(benchmark::State& state) {
+// The boundary of a Fig. 4 plane traced by continuation (trace_boundary): range(0) selects the panel
+// (0: Fig. 4(b), lambda = 5, Delta = 1, one l = 3 piece; 1: Fig. 4(a), lambda = 1, seven pieces and six
+// corners), range(1) the criterion (0 asymptotic, 1 finite horizon T = 500). Counters: criterion
+// evaluations, curve points, curve points per second, corners, and the largest |criterion| at a traced
+// point (the error: 0 on the exact boundary).
+void BM_TraceFig4(benchmark::State& state) {
+  rbcstab::Scene scene = fig4b();
+  if (state.range(0) == 1) scene.parameters.lambda = 1;
   rbcstab::DiagramSpec plane;
   rbcstab::TraceOptions o;
-  o.lines = int(state.range(0));
-  std::size_t evaluations = 0, points = 0;
+  o.criterion = state.range(1) == 0 ? rbcstab::TraceCriterion::asymptotic : rbcstab::TraceCriterion::finite_horizon;
+  std::size_t evaluations = 0, points = 0, corners = 0;
+  double worst = 0;
   for (auto _ : state) {
-    const rbcstab::TraceResult t = rbcstab::trace_boundary(fig4b(), plane, o);
+    const rbcstab::TraceResult t = rbcstab::trace_boundary(scene, plane, o);
     evaluations += t.evaluations;
-    for (const auto& c : t.curves) points += c.points.size();
+    corners += t.corners.size();
+    for (const auto& c : t.curves) {
+      points += c.points.size();
+      for (const auto& p : c.points) worst = std::max(worst, std::abs(p.mu));
+    }
   }
-  state.counters["evaluations"] = double(evaluations) / double(state.iterations());
-  state.counters["curve_points"] = double(points) / double(state.iterations());
+  const double n = double(state.iterations());
+  state.counters["evaluations"] = double(evaluations) / n;
+  state.counters["curve_points"] = double(points) / n;
+  state.counters["points_per_s"] = benchmark::Counter(double(points), benchmark::Counter::kIsRate);
+  state.counters["corners"] = double(corners) / n;
+  state.counters["max_abs_criterion"] = worst;
 }
-BENCHMARK(BM_TraceFig4b)->Arg(64)->Arg(200)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_TraceFig4)->Args({0, 0})->Args({1, 0})->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_TraceFig4)->Args({0, 1})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 }  // namespace
 

@@ -1,6 +1,7 @@
 // rbcstab bench: measured speed against accuracy.
 //   work-precision: every level x stepper x rtol against a ~1e-13 reference by another level (CSV, JSON, PNG)
 //   truncation:     convergence of Delta_l(T), sigma(T) and l_Delta with the truncation L
+//   threshold:      error of the located critical C at fixed B against cost, per predictor and method
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -9,7 +10,9 @@
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/work_precision.hpp"
+#include "rbcstab/sweep/threshold_precision.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/report/report.hpp"
@@ -26,6 +29,7 @@ struct BenchOptions {
   std::vector<double> rtols{1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
   std::vector<int> Ls{4, 6, 8, 10, 12, 16, 20, 24, 30, 40};
   double max_seconds = 30;
+  std::vector<double> ln_C_range{-5.5, 2.0};
   bool json = false;
   bool plot = true;
 };
@@ -136,9 +140,69 @@ int run_truncation(const BenchOptions& o, const SceneFile& sf) {
   return kOk;
 }
 
+void plot(const BenchOptions& o, const std::string& script, const std::string& base, const std::string& title) {
+  if (!o.plot) return;
+  check_python("/usr/bin/python3");
+  const std::string dir = find_script_dir("");
+  if (dir.empty()) throw std::runtime_error("cannot find the plotting scripts (set RBCSTAB_DATA_DIR)");
+  const std::string log = base + ".plot.log";
+  if (run_process({"/usr/bin/python3", dir + "/" + script, base + ".csv", base + ".png", title}, log) != 0)
+    throw std::runtime_error("the figure failed: see " + log);
+}
+
+int run_threshold(const BenchOptions& o, const SceneFile& sf) {
+  if (o.ln_C_range.size() != 2)
+    throw InvalidArgument("--lnC-range", "--lnC-range takes two numbers (lo hi), got " + std::to_string(o.ln_C_range.size()));
+  ThresholdPrecisionOptions tp;
+  tp.ln_C_lo = o.ln_C_range[0];
+  tp.ln_C_hi = o.ln_C_range[1];
+  const ThresholdPrecision t = threshold_precision(sf.scene, tp);
+  std::ostringstream csv;
+  csv << std::setprecision(12)
+      << "predictor,method,rtol,budget,ln_C,error,evaluations,rhs_evaluations,seconds,status\n";
+  nlohmann::json rows = nlohmann::json::array(), refs = nlohmann::json::array();
+  for (const auto& r : t.rows) {
+    csv << r.predictor << ',' << r.method << ',' << r.rtol << ',' << r.budget << ',' << r.ln_C << ',' << r.error << ','
+        << r.evaluations << ',' << r.rhs_evaluations << ',' << r.seconds << ",\"" << r.status << "\"\n";
+    rows.push_back({{"predictor", r.predictor}, {"method", r.method}, {"rtol", r.rtol}, {"budget", r.budget},
+                    {"ln_C", r.ln_C}, {"error", r.error}, {"evaluations", r.evaluations},
+                    {"rhs_evaluations", r.rhs_evaluations}, {"seconds", r.seconds}, {"status", r.status}});
+  }
+  for (const auto& r : t.references)
+    refs.push_back({{"predictor", r.predictor}, {"ln_C", r.ln_C}, {"bracket", r.bracket}, {"status", r.status},
+                    {"rtol", r.predictor == "asymptotic" ? 0.0 : tp.reference_rtol}});
+  std::filesystem::create_directories(o.output);
+  const std::string base = o.output + "/" + sf.scene.name + "_threshold";
+  write_file_atomic(base + ".csv", csv.str());
+  const nlohmann::json j{{"scene", to_json(sf.scene)}, {"B", t.B}, {"ln_C_range", o.ln_C_range},
+                         {"references", refs}, {"rows", rows}};
+  write_file_atomic(base + ".json", j.dump(2) + "\n");
+  std::ostringstream title;
+  title << "critical C at B = " << t.B << ": " << sf.scene.name;
+  plot(o, "threshold_precision.py", base, title.str());
+  if (o.json) {
+    std::cout << j.dump(2) << "\n";
+    return kOk;
+  }
+  std::cout << std::setprecision(12) << "critical ln C at B = " << t.B << " (scene " << sf.scene.name << ")\n";
+  for (const auto& r : t.references)
+    std::cout << "  reference " << std::setw(15) << r.predictor << ": ln C = " << r.ln_C << " (bracket " << r.bracket
+              << ")" << (r.status == "ok" ? "" : "  " + r.status) << "\n";
+  std::cout << std::setprecision(4) << std::setw(15) << "predictor" << std::setw(12) << "method" << std::setw(8) << "rtol"
+            << std::setw(8) << "budget" << std::setw(12) << "error" << std::setw(8) << "evals" << std::setw(12) << "RHS"
+            << std::setw(11) << "seconds\n";
+  for (const auto& r : t.rows)
+    std::cout << std::setw(15) << r.predictor << std::setw(12) << r.method << std::setw(8) << r.rtol << std::setw(8)
+              << r.budget << std::setw(12) << r.error << std::setw(8) << r.evaluations << std::setw(12)
+              << r.rhs_evaluations << std::setw(11) << r.seconds << (r.status == "ok" ? "" : "  " + r.status) << "\n";
+  std::cout << "wrote " << base << ".csv, .json" << (o.plot ? ", .png" : "") << "\n";
+  return kOk;
+}
+
 int run(const BenchOptions& o) {
   const SceneFile sf = o.scene.resolve();
   if (o.kind == "truncation") return run_truncation(o, sf);
+  if (o.kind == "threshold") return run_threshold(o, sf);
   return run_work_precision(o, sf);
 }
 }  // namespace
@@ -146,7 +210,7 @@ int run(const BenchOptions& o) {
 static Runner add_bench(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
   app.add_option("kind", o->kind, "what to measure")
-      ->check(CLI::IsMember({"work-precision", "truncation"}))
+      ->check(CLI::IsMember({"work-precision", "truncation", "threshold"}))
       ->capture_default_str();
   o->scene.add_to(app);
   app.add_option("--output", o->output, "folder for the CSV, JSON and PNG")->capture_default_str();
@@ -155,13 +219,16 @@ static Runner add_bench(CLI::App& app) {
   app.add_option("--rtols", o->rtols, "tolerances (work-precision), each in [1e-14, 0.1]")->capture_default_str();
   app.add_option("--Ls", o->Ls, "truncations (truncation); the last is the reference")->capture_default_str();
   app.add_option("--max-seconds", o->max_seconds, "wall-clock budget per run (> 0)")->capture_default_str();
+  app.add_option("--lnC-range", o->ln_C_range, "bracket of the critical ln C at the scene's B (threshold)")
+      ->expected(2)
+      ->capture_default_str();
   app.add_flag("!--no-plot", o->plot, "skip the PNG figure");
   app.add_flag("--json", o->json, "print the table as JSON");
   return [o] { return run(*o); };
 }
 
 namespace {
-const RegisterCommand kRegister{"bench", "Speed against accuracy: work-precision tables and figures, truncation in L",
+const RegisterCommand kRegister{"bench", "Speed against accuracy: work-precision, truncation in L, threshold precision",
                                 add_bench, 80};
 }  // namespace
 

@@ -1,16 +1,20 @@
-// rbcstab continue: an equilibrium or periodic-orbit branch of the reduced system in one parameter,
+// rbcstab continue: an equilibrium branch (reduced system or modal model) or a periodic-orbit branch of the reduced system in one parameter,
 // with its special points (AUTO-07p labels), as CSV and/or one JSON object.
 #include <cmath>
 #include <functional>
 #include <iomanip>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <sstream>
 
+#include "checks.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "rbcstab/continuation/branch_switch.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"
+#include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
@@ -31,6 +35,7 @@ struct ContinueOptions {
   OrbitOptions orbit;  // --segments
   bool json = false;
   std::string csv;
+  bool switch_at_bp = false;  // continue the bifurcating branch from the first BP (equilibrium, modal)
 };
 
 std::string branch_csv(const Branch& b, const std::string& name) {
@@ -127,18 +132,67 @@ nlohmann::json orbit_json(const PeriodicOrbitProblem& pr, const Eigen::VectorXd&
           {"trivial_multiplier", f.trivial ? number_or_null(*f.trivial) : nlohmann::json(nullptr)}};
 }
 
+// Modal equilibria: the l = 2 shape (r, Psi), sigma and every Delta_l; `branch` tells the continued
+// branch (primary) from the one switched to at its first BP (switched).
+std::string modal_csv(const Branch& b, const BranchSwitchResult* sw, const std::string& name,
+                      const ModalEquilibriumProblem& pr) {
+  std::ostringstream ss;
+  ss << std::setprecision(17) << name << ",branch,r,Psi,sigma";
+  for (int l = 2; l <= pr.L(); ++l) ss << ",Delta_" << l;
+  ss << ",stable,n_unstable,max_Re_eig\n";
+  auto rows = [&](const Branch& br, const char* label) {
+    for (const auto& pt : br.points) {
+      const ModalState st = pr.observe(pt.x, pt.p);
+      double m = -INFINITY;
+      for (Eigen::Index i = 0; i < pt.spectrum.size(); ++i) m = std::max(m, pt.spectrum[i].real());
+      ss << pt.p << ',' << label << ',' << st.r << ',' << st.Psi << ',' << st.sigma;
+      for (double D : st.Delta_l) ss << ',' << D;
+      ss << ',' << (pt.stable ? 1 : 0) << ',' << pt.n_unstable << ',' << m << '\n';
+    }
+  };
+  rows(b, "primary");
+  if (sw && sw->switched) rows(sw->branch, "switched");
+  return ss.str();
+}
+
+nlohmann::json modal_json(const ModalEquilibriumProblem& pr, const Eigen::VectorXd& x, double p) {
+  const ModalState st = pr.observe(x, p);
+  nlohmann::json j = {{"r", number_or_null(st.r)}, {"Psi", number_or_null(st.Psi)}, {"sigma", number_or_null(st.sigma)}};
+  for (int l = 2; l <= pr.L(); ++l) j["Delta_" + std::to_string(l)] = number_or_null(st.Delta_l[static_cast<std::size_t>(l - 2)]);
+  return j;
+}
+
+// --switch-at-bp: the bifurcating branch at the first BP of b, continued with the same engine options.
+BranchSwitchResult switch_at_first_bp(const ContinuationProblem& problem, const Branch& b, const ContinuationOptions& engine) {
+  for (const auto& sp : b.special_points) {
+    if (sp.type != SpecialPointType::BP) continue;
+    BranchSwitchOptions so;
+    so.continuation = engine;
+    return switch_branch(problem, b, sp, so);
+  }
+  BranchSwitchResult none;
+  none.message = "--switch-at-bp: the branch has no BP (branch point) to switch at";
+  return none;
+}
+
 // Shared by both kinds: output and exit code.
 int report(const ContinueOptions& o, const SceneFile& sf, const Branch& b, const std::string& csv,
-           const Describe& describe, const std::string& spectrum_key) {
+           const Describe& describe, const std::string& spectrum_key, const BranchSwitchResult* switched = nullptr) {
   if (!o.csv.empty()) write_file_atomic(o.csv, csv);
   if (o.json) {
     nlohmann::json j = branch_json(b, describe, spectrum_key);
     j["kind"] = o.kind;
-    j["level"] = "reduced";
+    j["level"] = o.kind == "modal" ? "modal" : "reduced";
     j["free_parameter"] = o.parameter;
     j["parameters"] = to_json(sf.scene.parameters);
     j["beta"] = sf.scene.beta;
     if (o.kind == "orbit") j["segments"] = o.orbit.segments;
+    if (switched) {
+      nlohmann::json sw = branch_json(switched->branch, describe, spectrum_key);
+      sw["switched"] = switched->switched;
+      if (!switched->switched) sw["message"] = switched->message;
+      j["switched_branch"] = sw;
+    }
     std::cout << j.dump(2) << "\n";
   } else {
     std::cout << std::setprecision(10) << b.points.size() << " points in " << o.parameter << " from "
@@ -147,6 +201,20 @@ int report(const ContinueOptions& o, const SceneFile& sf, const Branch& b, const
     for (const auto& sp : b.special_points)
       std::cout << sp.name << " " << o.parameter << " = " << sp.p << " (" << to_string(sp.status) << ", precision "
                 << sp.precision << ", unstable " << sp.unstable_before << " -> " << sp.unstable_after << ")\n";
+    if (switched && switched->switched) {
+      const Branch& s = switched->branch;
+      std::cout << "switched at the first BP: " << s.points.size() << " points in " << o.parameter << " from "
+                << s.points.front().p << " to " << s.points.back().p << ", status " << to_string(s.status) << " ("
+                << s.message << ")\n";
+      for (const auto& sp : s.special_points)
+        std::cout << "  " << sp.name << " " << o.parameter << " = " << sp.p << " (" << to_string(sp.status)
+                  << ", precision " << sp.precision << ", unstable " << sp.unstable_before << " -> "
+                  << sp.unstable_after << ")\n";
+    }
+  }
+  if (switched && !switched->switched) {
+    std::cerr << "rbcstab: branch switching failed: " << switched->message << "\n";
+    return kRunFailed;
   }
   // A branch that runs into the edge of the parameter's domain has ended normally.
   if (b.status != ContinuationStatus::completed && b.status != ContinuationStatus::outside_domain) {
@@ -157,18 +225,22 @@ int report(const ContinueOptions& o, const SceneFile& sf, const Branch& b, const
 }
 
 int run(ContinueOptions& o) {
-  if (o.kind != "equilibrium" && o.kind != "orbit")
-    throw InvalidArgument("kind", "kind = '" + o.kind + "' is not available: must be equilibrium or orbit "
+  if (o.kind != "equilibrium" && o.kind != "orbit" && o.kind != "modal")
+    throw InvalidArgument("kind", "kind = '" + o.kind + "' is not available: must be equilibrium, orbit or modal "
                                                         "(two-parameter curves are not implemented yet)");
   const bool orbit = o.kind == "orbit";
+  const bool modal = o.kind == "modal";
+  if (orbit && o.switch_at_bp)
+    throw InvalidArgument("switch-at-bp", "--switch-at-bp is available for --kind equilibrium and modal, not orbit");
   if (orbit) o.orbit.validate();
   SceneFile sf = o.scene.resolve();
   // Equilibria need an autonomous reduced system (rest shape out of plane), periodic orbits a forced
   // one (rest shape in plane), unless beta is given.
   if (o.scene.o_beta->count() == 0 && o.scene.scene_path.empty()) sf.scene.beta = orbit ? M_PI / 2 : 0;
-  if (sf.scene.model != ModelLevel::automatic && sf.scene.model != ModelLevel::reduced)
-    throw InvalidArgument("model", "model = " + to_string(sf.scene.model) +
-                                       " is not available for continuation: must be reduced (or auto)");
+  const ModelLevel level = modal ? ModelLevel::modal : ModelLevel::reduced;
+  if (sf.scene.model != ModelLevel::automatic && sf.scene.model != level)
+    throw InvalidArgument("model", "model = " + to_string(sf.scene.model) + " is not available for --kind " + o.kind +
+                                       ": must be " + to_string(level) + " (or auto)");
   const ContinuationParameter q = continuation_parameter_from_string(o.parameter);
   // lambda's domain starts at 0 inclusive: land there exactly unless told otherwise.
   o.engine.p_min = (q == ContinuationParameter::lambda && o.p_min < 0) ? 0.0 : o.p_min;
@@ -176,11 +248,24 @@ int run(ContinueOptions& o) {
   o.engine.direction = o.direction == "forward" ? Direction::forward
                        : o.direction == "backward" ? Direction::backward
                                                    : Direction::both;
+  if (modal) {
+    // Start on the ellipsoidal branch (a_l = 0) at its closed form; Newton polishes it.
+    const ModalEquilibriumProblem problem(sf.scene, q);
+    const double p0 = problem.start_parameter();
+    const Branch b = continue_branch(problem, problem.ellipsoidal_state(p0), p0, o.engine);
+    std::optional<BranchSwitchResult> sw;
+    if (o.switch_at_bp) sw = switch_at_first_bp(problem, b, o.engine);
+    const BranchSwitchResult* swp = sw ? &*sw : nullptr;
+    return report(o, sf, b, modal_csv(b, swp, o.parameter, problem),
+                  [&](const Eigen::VectorXd& x, double p) { return modal_json(problem, x, p); }, "eigenvalues", swp);
+  }
   if (!orbit) {
     const ReducedEquilibriumProblem problem(sf.scene, q);
     const Branch b = continue_branch(problem, problem.relaxed_state(o.relax_T), problem.start_parameter(), o.engine);
+    std::optional<BranchSwitchResult> sw;
+    if (o.switch_at_bp) sw = switch_at_first_bp(problem, b, o.engine);
     return report(o, sf, b, branch_csv(b, o.parameter), [](const Eigen::VectorXd& y, double) { return polar_json(y); },
-                  "eigenvalues");
+                  "eigenvalues", sw ? &*sw : nullptr);
   }
   const ReducedForcedSystem system(sf.scene, q);
   const PeriodicOrbitProblem problem(system, o.orbit);
@@ -203,19 +288,30 @@ static Runner add_continue(CLI::App& app) {
   auto o = std::make_shared<ContinueOptions>();
   o->scene.add_to(app);
   app.add_option("--kind", o->kind,
-                 "what to continue: equilibrium (reduced system, out-of-plane rest shape) or orbit (periodic orbits "
+                 "what to continue: equilibrium (reduced system, out-of-plane rest shape), modal (modal-model "
+                 "equilibria with every Delta_l, out-of-plane rest shape: the ellipsoidal branch and its BPs where "
+                 "Upsilon_l(sigma) = 0) or orbit (periodic orbits "
                  "of the forced in-plane reduced system: swinging/tumbling, Floquet multipliers, LPC/PD/NS, UZ "
-                 "swing_tumble)");
-  app.add_option("--segments", o->orbit.segments, "orbit: number of multiple-shooting segments");
-  app.add_option("--parameter", o->parameter, "free parameter: lambda, Delta, Delta0, B, C, Lambda or S");
-  app.add_option("--min", o->p_min, "lower bound of the free parameter (the branch ends there exactly)");
-  app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly)");
+                 "swing_tumble)")
+      ->capture_default_str();
+  app.add_option("--segments", o->orbit.segments, "orbit: number of multiple-shooting segments")->capture_default_str();
+  app.add_flag("--switch-at-bp", o->switch_at_bp,
+               "equilibrium, modal: also continue the branch that bifurcates at the first BP (modal: the "
+               "post-instability state); JSON key switched_branch, CSV rows with branch = switched");
+  app.add_option("--parameter", o->parameter, "free parameter: lambda, Delta, Delta0, B, C, Lambda or S")->capture_default_str();
+  app.add_option("--min", o->p_min, "lower bound of the free parameter (the branch ends there exactly; default: none, 0 for lambda)");
+  app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly; default: none)");
   app.add_option("--direction", o->direction, "forward (parameter increasing), backward or both")
-      ->check(CLI::IsMember({"forward", "backward", "both"}));
-  app.add_option("--step", o->engine.initial_step, "first arclength step");
-  app.add_option("--max-step", o->engine.max_step, "largest arclength step");
-  app.add_option("--max-points", o->engine.max_points, "points per direction");
-  app.add_option("--relax-T", o->relax_T, "relaxation time that gives the start state from the scene's shape (orbits: rounded up to a multiple of 2 pi)");
+      ->check(CLI::IsMember({"forward", "backward", "both"}))
+      ->capture_default_str();
+  app.add_option("--step", o->engine.initial_step, "first arclength step, > 0")->check(positive())->capture_default_str();
+  app.add_option("--max-step", o->engine.max_step, "largest arclength step, > 0")->check(positive())->capture_default_str();
+  app.add_option("--max-points", o->engine.max_points, "points per direction, integer >= 2")->check(CLI::Range(2, 100000000))->capture_default_str();
+  app.add_option("--relax-T", o->relax_T,
+                 "relaxation time that gives the start state from the scene's shape, > 0 (orbits: rounded up to a "
+                 "multiple of 2 pi)")
+      ->check(positive())
+      ->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object (branch, special_points) on stdout");
   app.add_option("--csv", o->csv, "write the branch as CSV to this file");
   return [o] { return run(*o); };

@@ -9,6 +9,7 @@
 #include <memory>
 #include <sstream>
 
+#include "checks.hpp"
 #include "commands.hpp"
 #include "plane_options.hpp"
 #include "exit_codes.hpp"
@@ -33,7 +34,8 @@ struct DiagramCliOptions {
   std::vector<int> counts;
   std::string classifier, out = "diagram", journal, shard = "0/1", schedule = "dynamic";
   int threads = 0;
-  bool no_seconds = false, quiet = false, no_journal = false;
+  bool no_seconds = false, quiet = false, no_journal = false, json = false;
+  bool no_finite_horizon_agreement = false;
   double sync_interval = 1.0;
   double alpha_fixed = -1;
 };
@@ -95,7 +97,10 @@ int run(const DiagramCliOptions& o) {
   try {
     write_file_atomic(prefix + ".csv", diagram_csv(spec, r.points, oo));
     nlohmann::json doc = diagram_json(diagram_header(sf.scene, sf.options, spec), spec, r.points, out_shard, oo);
-    if (out_shard.n == 1) doc["agreement"] = agreement_json(sf.scene, spec, r.points);
+    AgreementOptions ao;
+    ao.threads = o.threads;
+    ao.finite_horizon = !o.no_finite_horizon_agreement;
+    if (out_shard.n == 1) doc["agreement"] = agreement_json(sf.scene, spec, r.points, ao);
     write_file_atomic(prefix + ".json", doc.dump(1) + "\n");
   } catch (const std::runtime_error& e) {
     std::cerr << "rbcstab: error: " << e.what() << "\n";
@@ -106,6 +111,20 @@ int run(const DiagramCliOptions& o) {
     failed += p.verdict == Verdict::failed;
     unstable += p.verdict == Verdict::unstable;
   }
+  if (o.json)
+    std::cout << nlohmann::json{{"csv", prefix + ".csv"},
+                                {"json", prefix + ".json"},
+                                {"points", r.points.size()},
+                                {"computed", r.computed},
+                                {"resumed", r.resumed},
+                                {"stable", r.points.size() - unstable - failed},
+                                {"unstable", unstable},
+                                {"failed", failed},
+                                {"complete", r.complete},
+                                {"config_hash", r.config_hash},
+                                {"seconds", r.seconds}}
+                     .dump(2)
+              << "\n";
   if (show)
     std::cerr << "rbcstab: diagram done: " << r.points.size() << " points (" << r.computed << " computed, " << r.resumed
               << " resumed) in " << duration(r.seconds) << "; " << unstable << " unstable, " << failed
@@ -119,24 +138,31 @@ static Runner add_diagram(CLI::App& app) {
   o->scene.add_to(app);
   app.add_option("--axes", o->axes, "two axes x,y from lnB lnC lambda Delta Delta0 alpha beta (default: the scene's [diagram] or lnB,lnC)")
       ->delimiter(',');
-  app.add_option("--x-range", o->x_range, "min,max of the x axis (inclusive)")->delimiter(',')->allow_extra_args(false);
-  app.add_option("--y-range", o->y_range, "min,max of the y axis (inclusive)")->delimiter(',')->allow_extra_args(false);
-  app.add_option("--counts", o->counts, "grid values nx,ny")->delimiter(',');
-  app.add_option("--classifier", o->classifier, "l_Delta rule: auto (tail mean if oscillating), final (Fig. 4), tail (App. E)")
+  app.add_option("--x-range", o->x_range, "min,max of the x axis (inclusive, finite; default: the scene's [diagram] or -1,6)")->delimiter(',')->allow_extra_args(false);
+  app.add_option("--y-range", o->y_range, "min,max of the y axis (inclusive, finite; default: the scene's [diagram] or -5.5,2)")->delimiter(',')->allow_extra_args(false);
+  app.add_option("--counts", o->counts, "grid values nx,ny, integers in [1, 1000000] (default: the scene's [diagram] or 64,64)")
+      ->delimiter(',')
+      ->check(CLI::Range(1, 1000000));
+  app.add_option("--classifier", o->classifier,
+                 "l_Delta rule: auto (tail mean if oscillating), final (Fig. 4), tail (App. E) (default: the scene's [diagram] or auto)")
       ->check(CLI::IsMember({"auto", "final", "tail"}));
-  app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C at this value over the plane (0: off; Fig. 5)");
-  app.add_option("--threads", o->threads, "worker threads (0: all cores)")->capture_default_str();
+  app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C at this value over the plane, >= 0 (0: off; Fig. 5; default: the scene's [diagram] or off)")
+      ->check(non_negative());
+  app.add_option("--threads", o->threads, "worker threads, integer in [0, 4096] (0: all cores)")->capture_default_str();
   app.add_option("--schedule", o->schedule, "point scheduling over threads")
       ->check(CLI::IsMember({"dynamic", "static"}))
       ->capture_default_str();
-  app.add_option("--shard", o->shard, "compute only the points with index % n == k (job arrays; then rbcstab merge)")
+  app.add_option("--shard", o->shard, "k/n with 0 <= k < n: compute only the points with index % n == k (job arrays; then rbcstab merge)")
       ->capture_default_str();
   app.add_option("--out", o->out, "output prefix: PREFIX.csv, PREFIX.json (shards: PREFIX.shardKofN.*)")->capture_default_str();
   app.add_option("--journal", o->journal, "checkpoint journal prefix (default: the output prefix; file PREFIX.journal)");
   app.add_flag("--no-journal", o->no_journal, "no checkpoint journal (no resume)");
-  app.add_option("--sync-interval", o->sync_interval, "fdatasync the journal at most this often [s]")->capture_default_str();
+  app.add_option("--sync-interval", o->sync_interval, "fdatasync the journal at most this often [s], >= 0")->capture_default_str();
   app.add_flag("--no-seconds", o->no_seconds, "omit per-point wall-clock seconds: outputs identical byte for byte across runs");
   app.add_flag("--quiet", o->quiet, "no progress on stderr");
+  app.add_flag("--no-finite-horizon-agreement", o->no_finite_horizon_agreement,
+               "skip the finite-horizon predictor in the agreement block (one reduced run per point, ~1 ms each)");
+  app.add_flag("--json", o->json, "print one JSON object on stdout (output files, point counts by verdict, seconds)");
   return [o] { return run(*o); };
 }
 

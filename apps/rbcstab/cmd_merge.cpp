@@ -17,6 +17,7 @@ struct MergeOptions {
   std::vector<std::string> inputs;
   std::string out = "diagram";
   bool allow_incomplete = false;
+  bool json = false;
 };
 
 int run(const MergeOptions& o) {
@@ -46,6 +47,15 @@ int run(const MergeOptions& o) {
   }
   std::cerr << "rbcstab: merged " << docs.size() << " files, " << m.points.size() << " points into " << o.out
             << ".csv and " << o.out << ".json\n";
+  if (o.json)
+    std::cout << nlohmann::json{{"csv", o.out + ".csv"},
+                                {"json", o.out + ".json"},
+                                {"inputs", docs.size()},
+                                {"points", m.points.size()},
+                                {"missing", m.missing.size()},
+                                {"complete", m.missing.empty()}}
+                     .dump(2)
+              << "\n";
   return m.missing.empty() ? kOk : kRunFailed;
 }
 }  // namespace
@@ -57,6 +67,7 @@ static Runner add_merge(CLI::App& app) {
       ->check(CLI::ExistingFile);
   app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")->capture_default_str();
   app.add_flag("--allow-incomplete", o->allow_incomplete, "write the merge even if points are missing (exit 1)");
+  app.add_flag("--json", o->json, "print one JSON object on stdout (output files, points, missing)");
   return [o] { return run(*o); };
 }
 

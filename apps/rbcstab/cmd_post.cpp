@@ -7,10 +7,12 @@
 #include <sstream>
 
 #include "analysis_json.hpp"
+#include "checks.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/analysis/post_instability.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/report/panels.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -61,19 +63,7 @@ int run_fig6e(const PostOptions& o) {
     std::cout << j.dump(2) << "\n";
     return kOk;
   }
-  std::cout << "# Fig. 6e: Delta~2 (continuous l_*, integer l_s) vs simulated Delta-bar_2 (T = " << f.T
-            << ", tail mean over " << f.simulation.tail_window << "); n/a: outside domain or stable\n";
-  std::cout << "lambda,B,C,alpha,ln_alpha,l_s,l_Delta,Delta2_tilde,Delta2_tilde_integer,Delta2_bar,ratio,ratio_integer\n";
-  auto v = [](const Quantity& q) {
-    if (!q.valid()) return std::string("n/a");
-    std::ostringstream ss;
-    ss << std::setprecision(10) << q.value;
-    return ss.str();
-  };
-  for (const Fig6eRow& r : rows)
-    std::cout << r.lambda << ',' << r.B << ',' << r.C << ',' << r.alpha << ',' << r.ln_alpha << ',' << r.surviving_mode
-              << ',' << r.l_Delta << ',' << v(r.Delta2_tilde) << ',' << v(r.Delta2_tilde_integer) << ','
-              << v(r.Delta2_bar) << ',' << v(r.ratio) << ',' << v(r.ratio_integer) << '\n';
+  std::cout << fig6e_csv(f, rows);  // the same CSV a Fig. 6e panel report draws (report/panels.hpp)
   return kOk;
 }
 
@@ -139,9 +129,11 @@ static Runner add_post(CLI::App& app) {
   app.add_flag("--json", o->json, "print one JSON object on stdout");
   app.add_flag("--fig6e", o->fig6e,
                "print the Fig. 6e table instead (Delta~2 vs simulated Delta-bar_2 over lambda, B, C; ~80 runs)");
-  app.add_option("--fig6e-lambda", o->fig6e_lambda, "lambda values of the Fig. 6e table (default 1 5)");
-  app.add_option("--fig6e-B", o->fig6e_B, "B values of the Fig. 6e table (default 1..10)");
-  app.add_option("--fig6e-C", o->fig6e_C, "C values of the Fig. 6e table (default 0.01 0.02 0.04 0.08)");
+  app.add_option("--fig6e-lambda", o->fig6e_lambda, "lambda values of the Fig. 6e table, each > 0 (default 1 5)")
+      ->check(positive());
+  app.add_option("--fig6e-B", o->fig6e_B, "B values of the Fig. 6e table, each > 0 (default 1..10)")->check(positive());
+  app.add_option("--fig6e-C", o->fig6e_C, "C values of the Fig. 6e table, each > 0 (default 0.01 0.02 0.04 0.08)")
+      ->check(positive());
   return [o] { return run(*o); };
 }
 

@@ -1,11 +1,18 @@
 // rbcstab report: run a scene and write a self-contained report folder (figures, data, shapes).
+#include <atomic>
+#include <csignal>
 #include <filesystem>
+#include <iomanip>
 #include <iostream>
 #include <memory>
 
+#include "checks.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
+#include "rbcstab/report/panels.hpp"
 #include "rbcstab/report/report.hpp"
 #include "scene_options.hpp"
 
@@ -18,7 +25,77 @@ struct ReportCliOptions {
   int n_theta = 64;
   bool no_reduced = false;
   bool json = false;
+  PanelOptions panel;
+  std::string counts;  // "nx,ny" or "NxM"
+  bool quiet = false;
 };
+
+std::atomic<bool> g_stop{false};
+extern "C" void on_report_signal(int) { g_stop.store(true); }
+
+// A scene file with a [diagram], [fig6e] or [continuation] table: compute the panel, then draw it.
+int run_panel(ReportCliOptions& o, const SceneFile& sf, const std::string& toml_text, ReportOptions& ro) {
+  if (!o.counts.empty()) {
+    const std::size_t sep = o.counts.find_first_of(",x");
+    auto integer = [&](const std::string& t) {
+      std::size_t pos = 0;
+      int v = 0;
+      try {
+        v = std::stoi(t, &pos);
+      } catch (const std::exception&) {
+        pos = 0;
+      }
+      if (pos == 0 || pos != t.size() || v < 1 || v > 1'000'000)
+        throw InvalidArgument("--counts", "--counts = '" + o.counts + "' must be two integers in [1, 1000000]: nx,ny or NxM");
+      return v;
+    };
+    if (sep == std::string::npos) integer("");
+    o.panel.nx = integer(o.counts.substr(0, sep));
+    o.panel.ny = integer(o.counts.substr(sep + 1));
+  }
+  for (const std::string* hook : {&ro.phase_diagram, &ro.delta2_comparison, &ro.bifurcation})
+    if (!hook->empty())
+      throw InvalidArgument("--phase-diagram", "--phase-diagram, --delta2-comparison and --bifurcation draw data from "
+                                               "other commands into a scene report; a panel scene computes its own");
+  if (!o.quiet)
+    o.panel.on_progress = [](const Progress& p) {
+      std::cerr << "rbcstab: report: diagram " << p.done << "/" << p.total << ", " << std::fixed << std::setprecision(1)
+                << p.rate << " points/s, ETA " << (p.rate > 0 ? std::to_string(int(p.eta)) + " s" : std::string("?"))
+                << "\n";
+      std::cerr.unsetf(std::ios::floatfield);
+    };
+  o.panel.stop = &g_stop;
+  std::signal(SIGINT, on_report_signal);
+  std::signal(SIGTERM, on_report_signal);
+  const PanelReportResult r = build_panel_report(sf, toml_text, o.scene.scene_path, o.panel, ro);
+  if (!r.complete) {
+    std::cerr << "rbcstab: interrupted: the panel was not finished and no report was written\n";
+    return kRunFailed;
+  }
+  if (o.json) {
+    nlohmann::json j;
+    j["output"] = ro.output;
+    j["panel"] = to_string(r.kind);
+    j["files"] = r.report.files;
+    j["status"] = r.status;
+    j["failed"] = r.failed;
+    nlohmann::json facts = nlohmann::json::object();
+    for (const auto& [k, v] : r.facts) facts[k] = v;
+    j["facts"] = facts;
+    j["compute_seconds"] = r.compute_seconds;
+    j["seconds"] = r.report.seconds + r.compute_seconds;
+    std::cout << j.dump(2) << "\n";
+  } else {
+    std::cout << "report written to " << ro.output << " (" << to_string(r.kind) << " panel, " << r.report.files.size()
+              << " files, open index.html); status " << r.status << "\n";
+  }
+  if (r.failed) {
+    std::cerr << "rbcstab: " << r.failed << " run(s) of the panel did not finish (status " << r.status
+              << "); the report shows them as failed\n";
+    return kRunFailed;
+  }
+  return kOk;
+}
 
 std::string executable_path() {
   std::error_code ec;
@@ -27,11 +104,18 @@ std::string executable_path() {
 }
 
 int run(ReportCliOptions& o) {
-  const SceneFile sf = o.scene.resolve();
+  std::string L_reason;
+  const SceneFile sf = o.scene.resolve_with_default_L(L_reason);
   ReportOptions ro = o.report;
   ro.shape = {o.n_theta, 2 * o.n_theta};
   ro.reduced_companion = !o.no_reduced;
   if (ro.script_dir.empty()) ro.script_dir = find_script_dir(executable_path());
+  if (!o.scene.scene_path.empty()) {
+    const std::string text = read_file(o.scene.scene_path);
+    if (panel_kind(text, o.scene.scene_path) != PanelKind::none) return run_panel(o, sf, text, ro);
+  }
+  if (!o.counts.empty() || o.panel.threads != 0)
+    throw InvalidArgument("--counts", "--counts and --threads apply to a scene with a [diagram] table only");
   const ReportResult r = build_report(sf, ro);
   for (const auto& w : r.warnings) std::cerr << "rbcstab: warning: " << w << "\n";
   if (o.json) {
@@ -42,6 +126,8 @@ int run(ReportCliOptions& o) {
     if (r.has_reduced) j["reduced_summary"] = to_json(r.reduced);
     j["shape"] = {{"rho_min", r.shape.rho_min}, {"rho_max", r.shape.rho_max}};
     j["seconds"] = r.seconds;
+    j["L"] = sf.scene.L;
+    j["L_reason"] = L_reason;
     std::cout << j.dump(2) << "\n";
   } else {
     std::cout << "report written to " << ro.output << " (" << r.files.size() << " files, open index.html); l_Delta = "
@@ -67,13 +153,15 @@ static Runner add_report(CLI::App& app) {
   app.add_flag("--overwrite", r.overwrite, "replace an existing output folder (swapped in whole at the end)");
   app.add_option("--python", r.python, "python3 interpreter with matplotlib (Debian python3-matplotlib)")
       ->capture_default_str();
-  app.add_option("--frames", r.frames, "animation frames, integer in [2, 2000]")->capture_default_str();
+  app.add_option("--frames", r.frames, "animation frames, integer in [2, 2000]")->check(CLI::Range(2, 2000))->capture_default_str();
   app.add_option("--frame-window", r.frame_window,
                  "animate the last W time units [T - W, T], >= 0; 0 = auto: one period of r(t) at the end if the run "
                  "oscillates (swinging, tumbling), else the whole run")
+      ->check(non_negative())
       ->capture_default_str();
   app.add_option("--shape-resolution", o->n_theta,
                  "polar grid points n_theta of the exported and rendered shape (n_phi = 2 n_theta), in [2, 4096]")
+      ->check(CLI::Range(2, 4096))
       ->capture_default_str();
   app.add_flag("--no-reduced", o->no_reduced, "skip the reduced-system companion run (Fig. 2 r, Psi from the l = 2 block only)");
   app.add_option("--phase-diagram", r.phase_diagram,
@@ -83,6 +171,19 @@ static Runner add_report(CLI::App& app) {
   app.add_option("--bifurcation", r.bifurcation, "also draw this bifurcation-diagram JSON (branches, stability, points)");
   app.add_option("--data-dir", r.script_dir,
                  "folder holding rbcstab_report.py (default: $RBCSTAB_DATA_DIR, <prefix>/share/rbcstab/python)");
+  app.add_option("--threads", o->panel.threads,
+                 "[diagram] scenes: worker threads for the grid, integer in [0, 4096] (0: all cores)")
+      ->check(CLI::Range(0, 4096))
+      ->capture_default_str();
+  app.add_option("--counts", o->counts,
+                 "[diagram] scenes: override the grid's nx,ny (or NxM), integers in [1, 1000000], for a quick look "
+                 "(default: the scene's counts)");
+  app.add_option("--trace-lines", o->panel.trace.lines,
+                 "[diagram] scenes: interior lines (x fixed) searched for starts of the traced boundary besides the "
+                 "plane's edges, integer in [0, 10000]")
+      ->check(CLI::Range(0, 10000))
+      ->capture_default_str();
+  app.add_flag("--quiet", o->quiet, "[diagram] scenes: no progress on stderr");
   app.add_flag("--json", o->json, "print one JSON object (files, summaries) on stdout");
   app.footer("Exit codes: 0 ok, 1 a run stopped early (report still written), 2 invalid input, 3 output error "
              "(python3/matplotlib missing, plotting failed, folder not writable: nothing is left behind).");
@@ -90,7 +191,7 @@ static Runner add_report(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"report", "Run a scene and write a report folder: figures, data, 3-D shapes",
+const RegisterCommand kRegister{"report", "Run a scene (or a figure panel: [diagram], [fig6e], [continuation]) and write a report folder",
                                 add_report, 60};
 }  // namespace
 

@@ -49,11 +49,62 @@ void print_analysis(std::ostream& out, const Scene& s, const SimulationResult& r
   }
 }
 
-int run(const SceneOptions& so) {
-  const SceneFile sf = so.resolve();
+// The summary as one JSON object: the run (the keys of `simulate --json`), then the analysis.
+nlohmann::json summary_json(const Scene& s, const SimulationResult& r, double tail_window) {
+  const Parameters& p = s.parameters;
+  const double alpha = p.alpha();
+  const ScenePrediction pr = predict(s, &r);
+  nlohmann::json j = rbcstab::to_json(r);
+  j.erase("trajectory");
+  j["scene"] = s.name;
+  j["regime"] = to_string(pr.regime.regime);
+  j["regime_reason"] = pr.regime.reason;
+  j["alpha"] = number_or_null(alpha);
+  j["sigma_star"] = number_or_null(sigma_star(alpha));
+  j["l_star"] = number_or_null(l_star(alpha));
+  j["l_star_criterion"] = l_star_criterion(alpha);
+  put(j, "alpha_init", alpha_init(p));
+  if (s.L >= 3) j["surviving_mode"] = surviving_mode(alpha, s.L);
+  put(j, "sigma_R_asymptotic", pr.sigma_R_asymptotic);
+  j["sigma_R_asymptotic_source"] = pr.asymptotic_source;
+  j["asymptotic"] = to_json(pr.asymptotic);
+  j["finite_horizon"] = to_json(pr.finite_horizon);
+  j["finite_horizon"]["T"] = pr.horizon.T;
+  j["finite_horizon"]["mean_sigma_R"] = number_or_null(pr.horizon.mean_sigma_R);
+  j["simulation"] = to_json(pr.simulation);
+  if (s.L >= 3) {
+    const PostInstability post = post_instability(p, s.L, 0.0);
+    put(j, "Delta2_tilde", post.continuous.Delta2_tilde);
+    put(j, "Delta2_tilde_integer_mode", post.integer_mode.Delta2_tilde);
+    if (r.l_Delta >= 3 && r.status == IntegrationStatus::success)
+      j["Delta2_simulated"] = number_or_null(r.Delta_tail_mean[0]);
+    else {
+      j["Delta2_simulated"] = nullptr;
+      j["Delta2_simulated_reason"] = "no post-instability state (l_Delta = " + std::to_string(r.l_Delta) + ")";
+    }
+  }
+  j["tail_window"] = tail_window;
+  return j;
+}
+
+struct SummaryOptions {
+  SceneOptions scene;
+  bool json = false;
+};
+
+int run(const SummaryOptions& o) {
+  const SceneOptions& so = o.scene;
+  std::string L_reason;
+  const SceneFile sf = so.resolve_with_default_L(L_reason);
   const Scene& s = sf.scene;
   const Parameters& p = s.parameters;
   const SimulationResult r = simulate(s, sf.options);
+  if (o.json) {
+    nlohmann::json j = summary_json(s, r, sf.options.tail_window);
+    j["L_reason"] = L_reason;
+    std::cout << j.dump(2) << "\n";
+    return r.status == IntegrationStatus::success ? kOk : kRunFailed;
+  }
   std::ostream& out = std::cout;
   out << std::setprecision(6);
   out << "rbcstab " << RBCSTAB_VERSION << " -- scene '" << s.name << "'\n\n";
@@ -61,6 +112,7 @@ int run(const SceneOptions& so) {
       << ", C = " << p.C << "\n";
   out << "             beta = " << s.beta << ", delta = " << s.delta << ", L = " << s.L << ", T = " << s.T << "\n";
   out << "Derived      Lambda = " << p.Lambda() << ", S = " << p.S() << ", alpha = B/C = " << p.alpha() << "\n";
+  out << "Truncation   " << L_reason << "\n";
   out << "Model level  " << to_string(r.level.level) << " -- " << r.level.reason << "\n";
   for (const auto& w : r.warnings) out << "Warning      " << w << "\n";
   out << "\nExcess area by mode (Delta_l):\n";
@@ -99,8 +151,9 @@ int run(const SceneOptions& so) {
 }  // namespace
 
 static Runner add_summary(CLI::App& app) {
-  auto o = std::make_shared<SceneOptions>();
-  o->add_to(app);
+  auto o = std::make_shared<SummaryOptions>();
+  o->scene.add_to(app);
+  app.add_flag("--json", o->json, "print one JSON object on stdout (the keys of simulate --json, then the analysis)");
   return [o] { return run(*o); };
 }
 

@@ -1,17 +1,20 @@
-// rbcstab trace: the stability boundary in a parameter plane as curves (asymptotic criterion
-// mu_l = Upsilon_l(sigma_R^eq) = 0, out-of-plane scenes), one record per curve with its mode, plus the
-// corners where the mode changes; CSV and JSON. With --diagram FILE.json (an `rbcstab diagram`
-// output of the same plane) it also measures the agreement of the criterion with the simulations.
+// rbcstab trace: the stability boundary in a parameter plane as curves traced by continuation
+// (--criterion asymptotic: mu_l = Upsilon_l(<sigma_R>) = 0; finite-horizon: G_l(T) = 0), one record per
+// curve piece with its mode, plus the corners where the mode changes; CSV and JSON. With --diagram
+// FILE.json (an `rbcstab diagram` output of the same plane) it also measures every predictor's agreement
+// with the simulations.
 #include <iostream>
 #include <memory>
 #include <sstream>
 
+#include "checks.hpp"
 #include "commands.hpp"
 #include "plane_options.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
+#include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
 #include "rbcstab/sweep/diagram_output.hpp"
 #include "rbcstab/sweep/point_io.hpp"
@@ -27,14 +30,18 @@ struct TraceCliOptions {
   std::vector<double> x_range, y_range;
   double alpha_fixed = -1;
   TraceOptions trace;
-  std::string out = "trace", diagram;
+  std::string out = "trace", diagram, criterion = "asymptotic";
+  int threads = 1;
+  bool json = false;
 };
 
 int run(const TraceCliOptions& o) {
   const SceneFile sf = o.scene.resolve();
   DiagramSpec spec = plane_spec(o.scene, o.axes, o.x_range, o.y_range, o.alpha_fixed);
   spec.validate();
-  const TraceResult t = trace_boundary(sf.scene, spec, o.trace);
+  TraceOptions to = o.trace;
+  to.criterion = trace_criterion_from_string(o.criterion);
+  const TraceResult t = trace_boundary(sf.scene, spec, to);
 
   std::ostringstream csv;
   csv << "curve,l," << to_string(spec.x.axis) << ',' << to_string(spec.y.axis) << ",sigma_R,sigma_c,mu\n";
@@ -49,12 +56,13 @@ int run(const TraceCliOptions& o) {
       ys.push_back(p.y);
       mus.push_back(p.mu);
     }
-    curves.push_back({{"curve", c}, {"l", tc.l}, {"criterion", tc.criterion}, {"x", xs}, {"y", ys}, {"mu", mus}});
+    curves.push_back({{"curve", c}, {"chain", tc.chain}, {"l", tc.l}, {"criterion", tc.criterion}, {"x", xs}, {"y", ys},
+                      {"mu", mus}});
   }
   nlohmann::json corners = nlohmann::json::array();
   for (const auto& k : t.corners) corners.push_back({{"x", k.x}, {"y", k.y}, {"l_from", k.l_from}, {"l_to", k.l_to}});
   nlohmann::json overlays = nlohmann::json::array();
-  for (const Overlay& ov : analytic_overlays(sf.scene, spec, o.trace.lines))
+  for (const Overlay& ov : analytic_overlays(sf.scene, spec, 200))
     overlays.push_back({{"name", ov.name}, {"x", ov.x}, {"y", ov.y}});
   nlohmann::json doc{{"format", "rbcstab-trace"},
                      {"version", 1},
@@ -62,11 +70,21 @@ int run(const TraceCliOptions& o) {
                      {"plane", {{"x", to_string(spec.x.axis)}, {"x_range", {spec.x.min, spec.x.max}},
                                 {"y", to_string(spec.y.axis)}, {"y_range", {spec.y.min, spec.y.max}},
                                 {"alpha", spec.alpha}}},
-                     {"options", {{"lines", o.trace.lines}, {"samples", o.trace.samples}, {"bisections", o.trace.bisections}}},
+                     {"criterion", to_string(to.criterion)},
+                     {"options", {{"criterion", to_string(to.criterion)}, {"T", to.T > 0 ? to.T : sf.scene.T},
+                                  {"lines", to.lines}, {"samples", to.samples}, {"bisections", to.bisections},
+                                  {"max_step", to.max_step}}},
                      {"curves", curves},
                      {"corners", corners},
                      {"analytic_lines", overlays},
                      {"evaluations", t.evaluations},
+                     {"chains", t.chains},
+                     {"starts", t.starts},
+                     {"turning_points", t.turning_points},
+                     {"continuation", {{"steps", t.counters.steps}, {"rejected_steps", t.counters.rejected_steps},
+                                       {"newton_iterations", t.counters.newton_iterations},
+                                       {"location_iterations", t.counters.location_iterations}}},
+                     {"notes", t.notes},
                      {"seconds", t.seconds}};
   if (!o.diagram.empty()) {
     nlohmann::json dj;
@@ -79,7 +97,11 @@ int run(const TraceCliOptions& o) {
     if (ds.x.axis != spec.x.axis || ds.y.axis != spec.y.axis || ds.alpha != spec.alpha)
       throw InvalidArgument("--diagram", "the diagram's plane differs from the traced plane");
     const SceneFile dsf = parse_scene(dj.at("scene_toml").get<std::string>(), o.diagram);
-    doc["agreement"] = agreement_json(dsf.scene, ds, points_from_json(dj, ds));
+    AgreementOptions ao;
+    ao.threads = o.threads;
+    ao.trace_options = to;
+    ao.trace_finite_horizon = true;
+    doc["agreement"] = agreement_json(dsf.scene, ds, points_from_json(dj, ds), ao);
   }
   try {
     write_file_atomic(o.out + ".csv", csv.str());
@@ -91,10 +113,20 @@ int run(const TraceCliOptions& o) {
   std::cerr << "rbcstab: traced " << t.curves.size() << " curve pieces, " << t.corners.size() << " corners, "
             << t.evaluations << " criterion evaluations in " << t.seconds << " s; wrote " << o.out << ".csv and "
             << o.out << ".json\n";
-  if (doc.contains("agreement"))
-    std::cerr << "rbcstab: agreement with the simulations: verdict " << doc["agreement"]["verdict_fraction"]
-              << ", mode " << doc["agreement"]["mode_fraction"] << ", disagreements beyond one grid step "
-              << doc["agreement"]["beyond_one_grid_step"] << "\n";
+  for (const std::string& n : t.notes) std::cerr << "rbcstab: note: " << n << "\n";
+  if (doc.contains("agreement") && doc["agreement"].contains("predictors"))
+    for (const auto& a : doc["agreement"]["predictors"])
+      std::cerr << "rbcstab: agreement of " << a["predictor"].get<std::string>() << ": verdict " << a["verdict_fraction"]
+                << ", mode " << a["mode_fraction"] << " over " << a["points"] << " points, disagreements beyond one grid step "
+                << a["beyond_one_grid_step"] << "\n";
+  if (o.json) {
+    nlohmann::json j{{"csv", o.out + ".csv"},          {"json", o.out + ".json"},
+                     {"pieces", t.curves.size()},       {"corners", corners},
+                     {"evaluations", t.evaluations},    {"seconds", t.seconds},
+                     {"analytic_lines", overlays.size()}};
+    if (doc.contains("agreement")) j["agreement"] = doc["agreement"];
+    std::cout << j.dump(2) << "\n";
+  }
   return kOk;
 }
 }  // namespace
@@ -102,15 +134,27 @@ int run(const TraceCliOptions& o) {
 static Runner add_trace(CLI::App& app) {
   auto o = std::make_shared<TraceCliOptions>();
   o->scene.add_to(app);
-  app.add_option("--axes", o->axes, "plane axes x,y (default: the scene's [diagram] or lnB,lnC)")->delimiter(',');
-  app.add_option("--x-range", o->x_range, "min,max of x")->delimiter(',')->expected(2);
-  app.add_option("--y-range", o->y_range, "min,max of y")->delimiter(',')->expected(2);
-  app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C fixed over the plane (0: off)");
-  app.add_option("--lines", o->trace.lines, "lines across the plane (x fixed on each)")->capture_default_str();
-  app.add_option("--samples", o->trace.samples, "brackets per line")->capture_default_str();
+  app.add_option("--axes", o->axes, "plane axes x,y from lnB lnC lambda Delta Delta0 alpha beta (default: the scene's [diagram] or lnB,lnC)")->delimiter(',');
+  app.add_option("--x-range", o->x_range, "min,max of x, finite (default: the scene's [diagram] or -1,6)")->delimiter(',')->expected(2);
+  app.add_option("--y-range", o->y_range, "min,max of y, finite (default: the scene's [diagram] or -5.5,2)")->delimiter(',')->expected(2);
+  app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C fixed over the plane, >= 0 (0: off; default: the scene's [diagram] or off)")
+      ->check(non_negative());
+  app.add_option("--criterion", o->criterion, "asymptotic | finite-horizon")->capture_default_str();
+  app.add_option("--horizon", o->trace.T, "finite-horizon T, >= 0 (0: the scene's T)")->capture_default_str();
+  app.add_option("--lines", o->trace.lines,
+                 "interior lines (x fixed) searched for starting points besides the edges, integer in [0, 10000]")
+      ->check(CLI::Range(0, 10000))
+      ->capture_default_str();
+  app.add_option("--samples", o->trace.samples, "brackets per edge or line when searching for starts, integer in [2, 1000000]")
+      ->capture_default_str();
+  app.add_option("--max-step", o->trace.max_step, "continuation step cap in the unit square (curve resolution), > 0")
+      ->capture_default_str();
+  app.add_option("--threads", o->threads, "threads for the per-point predictor verdicts of --diagram, integer in [0, 4096] (0: all cores)")
+      ->capture_default_str();
   app.add_option("--diagram", o->diagram, "diagram JSON of the same plane: measure the criterion's agreement")
       ->check(CLI::ExistingFile);
   app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")->capture_default_str();
+  app.add_flag("--json", o->json, "print one JSON object on stdout (output files, pieces, corners, agreement)");
   return [o] { return run(*o); };
 }
 

@@ -15,6 +15,23 @@ std::vector<Command>& command_registry() {
 }
 }  // namespace rbcstab::cli
 
+namespace {
+// "--flag: " when the library named a parameter that the user gave as a flag of the running subcommand
+// (max_points -> --max-points), so every message names the flag; "" when the message already does or the
+// value came from a scene file or a default.
+std::string flag_hint(CLI::App& app, const rbcstab::InvalidArgument& e) {
+  std::string flag = "--" + e.parameter();
+  for (char& c : flag)
+    if (c == '_') c = '-';
+  if (std::string(e.what()).find(flag) != std::string::npos) return "";
+  for (CLI::App* sub : app.get_subcommands()) {
+    const CLI::Option* o = sub->get_option_no_throw(flag);
+    if (o && o->count() > 0) return flag + ": ";
+  }
+  return "";
+}
+}  // namespace
+
 int main(int argc, char** argv) {
   using namespace rbcstab::cli;
   CLI::App app{"rbcstab " RBCSTAB_VERSION
@@ -43,7 +60,7 @@ int main(int argc, char** argv) {
     summary->parse(std::vector<std::string>{});
     return runners[summary]();
   } catch (const rbcstab::InvalidArgument& e) {
-    std::cerr << "rbcstab: error: " << e.what() << "\n";
+    std::cerr << "rbcstab: error: " << flag_hint(app, e) << e.what() << "\n";
     return kInvalidInput;
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? kOk : kInvalidInput;

@@ -1,6 +1,8 @@
 #include "scene_options.hpp"
 
+#include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/io/files.hpp"
 
 namespace rbcstab::cli {
 
@@ -23,7 +25,9 @@ void SceneOptions::add_to(CLI::App& app) {
   o_delta_l = app.add_option("--delta-l", delta_l, "per-mode perturbation override, l=value (repeatable)");
   o_rest_delta_l = app.add_option("--rest-delta-l", rest_delta_l,
                                   "stress-free l >= 3 content Delta0_l, l=value (repeatable; needs the full level)");
-  o_L = num("--L", flags.L, "truncation: modes l = 2..L, integer in [2, 100]");
+  o_L = num("--L", flags.L,
+            "truncation: modes l = 2..L, integer in [2, 100] (simulate, summary, report: without --L or run.L, "
+            "the smallest L whose dropped modes gain < 1e-4 Delta)");
   o_T = num("--T", flags.T, "horizon T, in (0, 1e7]");
   o_dt = num("--dt", flags.dt, "output sampling interval, in (0, T]");
   o_model = app.add_option("--model", model, "model level")
@@ -76,6 +80,23 @@ SceneFile SceneOptions::resolve() const {
   parse_mode_values(rest_delta_l, "--rest-delta-l", s.rest_delta_l);
   s.validate();
   f.options.validate();
+  return f;
+}
+
+SceneFile SceneOptions::resolve_with_default_L(std::string& L_reason) const {
+  SceneFile f = resolve();
+  if (o_L && o_L->count() > 0) {
+    L_reason = "L = " + std::to_string(f.scene.L) + ": given by --L";
+    return f;
+  }
+  if (!scene_path.empty() && scene_sets_L(read_file(scene_path), scene_path)) {
+    L_reason = "L = " + std::to_string(f.scene.L) + ": given by the scene file's run.L";
+    return f;
+  }
+  const TruncationChoice c = choose_truncation(f.scene);
+  f.scene.L = c.L;
+  L_reason = c.reason;
+  f.scene.validate();
   return f;
 }
 

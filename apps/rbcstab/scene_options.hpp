@@ -20,6 +20,9 @@ struct SceneOptions {
   void add_to(CLI::App& app);
   // The default scene (paper Fig. 3, out of plane), then the scene file, then the flags.
   SceneFile resolve() const;
+  // resolve(), then, unless --L or the file's run.L gave L, the smallest L meeting the truncation tolerance
+  // (choose_truncation, docs/benchmarks.md "Automatic L"); the choice and its reason land in L_reason.
+  SceneFile resolve_with_default_L(std::string& L_reason) const;
 };
 
 }  // namespace rbcstab::cli

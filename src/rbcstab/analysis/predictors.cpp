@@ -180,6 +180,31 @@ FiniteHorizon finite_horizon_growth(const Scene& scene, double T, const Predicto
   return h;
 }
 
+ModePrediction finite_horizon_prediction(const Scene& scene, const FiniteHorizon& horizon) {
+  ModePrediction b;
+  b.predictor = "finite_horizon";
+  b.rate = horizon.G;
+  if (horizon.status != IntegrationStatus::success) {
+    b.status = DomainStatus::outside_domain;
+    b.reason = "reduced run stopped at t = " + format_value(horizon.T) + ": " + horizon.reason;
+  }
+  double best = 0;
+  for (int l = 3; l <= scene.L && std::size_t(l - 2) < horizon.G.size(); ++l) {
+    const double G = horizon.G[std::size_t(l - 2)];
+    const double d = scene.perturbation(l);
+    if (G > 0) b.unstable.push_back(l);
+    // linear growth of the excess area of mode l: d (exp(2 G) - 1), compared in logs to avoid overflow
+    if (G > 0 && d > 0) {
+      const double score = std::log(d) + 2 * G + std::log1p(-std::exp(-2 * G));
+      if (b.l_Delta == 2 || score > best) {
+        best = score;
+        b.l_Delta = l;
+      }
+    }
+  }
+  return b;
+}
+
 ScenePrediction predict(const Scene& scene, const SimulationResult* simulated, const PredictorOptions& options) {
   scene.validate();
   options.validate();
@@ -220,27 +245,7 @@ ScenePrediction predict(const Scene& scene, const SimulationResult* simulated, c
 
   // (b) finite horizon
   out.horizon = finite_horizon_growth(scene, scene.T, options);
-  ModePrediction& b = out.finite_horizon;
-  b.predictor = "finite_horizon";
-  b.rate = out.horizon.G;
-  if (out.horizon.status != IntegrationStatus::success) {
-    b.status = DomainStatus::outside_domain;
-    b.reason = "reduced run stopped at t = " + format_value(out.horizon.T) + ": " + out.horizon.reason;
-  }
-  double best = 0;
-  for (int l = 3; l <= scene.L; ++l) {
-    const double G = out.horizon.G[std::size_t(l - 2)];
-    const double d = scene.perturbation(l);
-    if (G > 0) b.unstable.push_back(l);
-    // linear growth of the excess area of mode l: d (exp(2 G) - 1), compared in logs to avoid overflow
-    if (G > 0 && d > 0) {
-      const double score = std::log(d) + 2 * G + std::log1p(-std::exp(-2 * G));
-      if (b.l_Delta == 2 || score > best) {
-        best = score;
-        b.l_Delta = l;
-      }
-    }
-  }
+  out.finite_horizon = finite_horizon_prediction(scene, out.horizon);
 
   // (c) simulation
   ModePrediction& c = out.simulation;

@@ -77,6 +77,10 @@ struct ScenePrediction {
   ModePrediction asymptotic, finite_horizon, simulation;
   RegimeResult regime;
 };
+// The finite-horizon predictor's verdict from G_l(T): the modes with G_l > 0, and l_Delta = the argmax of the
+// linear excess-area growth Delta_l(0) (exp(2 G_l) - 1) (status outside_domain when the reduced run stopped).
+ModePrediction finite_horizon_prediction(const Scene& scene, const FiniteHorizon& horizon);
+
 // (a) and (b) for the scene; (c) from a simulation result of the same scene (pass nullptr to skip it).
 ScenePrediction predict(const Scene& scene, const SimulationResult* simulated, const PredictorOptions& options = {});
 

@@ -6,26 +6,18 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 
+#include "rbcstab/continuation/detail/minimal_augmentation.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
 
-double bordered_test_function(const Eigen::MatrixXd& J, const Eigen::VectorXd& b, const Eigen::VectorXd& c) {
-  const Eigen::Index n = J.rows();
-  Eigen::MatrixXd M = Eigen::MatrixXd::Zero(n + 1, n + 1);
-  M.topLeftCorner(n, n) = J;
-  M.topRightCorner(n, 1) = b;
-  M.bottomLeftCorner(1, n) = c.transpose();
-  Eigen::VectorXd e = Eigen::VectorXd::Zero(n + 1);
-  e[n] = 1;
-  return M.partialPivLu().solve(e)[n];
-}
-
-void bordering_vectors(const Eigen::MatrixXd& J, Eigen::VectorXd& b, Eigen::VectorXd& c) {
-  const Eigen::Index n = J.rows();
-  Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
-  b = svd.matrixU().col(n - 1);  // left singular vector of the smallest singular value
-  c = svd.matrixV().col(n - 1);
+void TwoParameterProblem::parameter_derivative(const Eigen::VectorXd& x, double p1, double p2,
+                                               Eigen::VectorXd& Fp) const {
+  const double h = std::cbrt(std::numeric_limits<double>::epsilon()) * (1 + std::abs(p1));
+  Eigen::VectorXd Fm;
+  residual(x, p1 + h, p2, Fp);
+  residual(x, p1 - h, p2, Fm);
+  Fp = (Fp - Fm) / (2 * h);
 }
 
 void TwoParameterProblem::jacobian(const Eigen::VectorXd& x, double p1, double p2, Eigen::MatrixXd& J) const {
@@ -52,7 +44,10 @@ FoldCurveProblem::FoldCurveProblem(const TwoParameterProblem& base, const Specia
   require(lp.x.size() == n, "lp", static_cast<double>(lp.x.size()), "a point of the base problem's dimension");
   Eigen::MatrixXd J;
   base.jacobian(lp.x, lp.p, p2, J);
-  bordering_vectors(J, b_, c_);
+  Eigen::MatrixXd B, C;
+  detail::null_borders(J, 1, B, C);  // left / right singular vectors of the smallest singular value
+  b_ = B.col(0);
+  c_ = C.col(0);
   start_.resize(n + 1);
   start_ << lp.x, lp.p;
 }
@@ -60,7 +55,7 @@ FoldCurveProblem::FoldCurveProblem(const TwoParameterProblem& base, const Specia
 double FoldCurveProblem::test_function(const Eigen::VectorXd& x, double p1, double p2) const {
   Eigen::MatrixXd J;
   base_.jacobian(x, p1, p2, J);
-  return bordered_test_function(J, b_, c_);
+  return detail::bordered_g(J, b_, c_)(0, 0);
 }
 
 void FoldCurveProblem::residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const {

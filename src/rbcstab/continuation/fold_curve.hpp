@@ -10,11 +10,6 @@
 
 namespace rbcstab {
 
-// Minimal augmentation shared by every curve kind: g with [J b; c^T 0][v; g] = [0; 1] (zero exactly
-// where J is singular), and b, c = the left/right singular vectors of J's smallest singular value.
-double bordered_test_function(const Eigen::MatrixXd& J, const Eigen::VectorXd& b, const Eigen::VectorXd& c);
-void bordering_vectors(const Eigen::MatrixXd& J, Eigen::VectorXd& b, Eigen::VectorXd& c);
-
 // F(x, p1, p2): the problem with two free parameters.
 class TwoParameterProblem {
  public:
@@ -23,6 +18,8 @@ class TwoParameterProblem {
   virtual void residual(const Eigen::VectorXd& x, double p1, double p2, Eigen::VectorXd& F) const = 0;
   // dF/dx; default: central differences.
   virtual void jacobian(const Eigen::VectorXd& x, double p1, double p2, Eigen::MatrixXd& J) const;
+  // dF/dp1; default: central differences (the BP curve's equations use it).
+  virtual void parameter_derivative(const Eigen::VectorXd& x, double p1, double p2, Eigen::VectorXd& Fp) const;
   virtual std::string name1() const { return "p1"; }
   virtual std::string name2() const { return "p2"; }
 };
@@ -34,6 +31,9 @@ class SliceProblem final : public ContinuationProblem {
   Eigen::Index dimension() const override { return base_.dimension(); }
   void residual(const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) const override { base_.residual(x, p, p2_, F); }
   void jacobian(const Eigen::VectorXd& x, double p, Eigen::MatrixXd& J) const override { base_.jacobian(x, p, p2_, J); }
+  void parameter_derivative(const Eigen::VectorXd& x, double p, Eigen::VectorXd& Fp) const override {
+    base_.parameter_derivative(x, p, p2_, Fp);
+  }
   std::string parameter_name() const override { return base_.name1(); }
 
  private:

@@ -8,6 +8,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
+#include "rbcstab/continuation/detail/minimal_augmentation.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 
@@ -510,6 +511,12 @@ void OrbitTwoParameterProblem::jacobian(const Eigen::VectorXd& X, double p1, dou
   orbit_.jacobian(X, p1, J);
 }
 
+void OrbitTwoParameterProblem::parameter_derivative(const Eigen::VectorXd& X, double p1, double p2,
+                                                    Eigen::VectorXd& Fp) const {
+  at(p2);
+  orbit_.parameter_derivative(X, p1, Fp);
+}
+
 void OrbitTwoParameterProblem::antiperiodic_jacobian(const Eigen::VectorXd& X, double p1, double p2,
                                                      Eigen::MatrixXd& J) const {
   at(p2);
@@ -531,7 +538,10 @@ PeriodDoublingCurveProblem::PeriodDoublingCurveProblem(const OrbitTwoParameterPr
   require(pd.x.size() == n, "pd", static_cast<double>(pd.x.size()), "a point of the orbit problem's dimension");
   Eigen::MatrixXd J;
   base.antiperiodic_jacobian(pd.x, pd.p, p2, J);
-  bordering_vectors(J, b_, c_);
+  Eigen::MatrixXd B, C;
+  detail::null_borders(J, 1, B, C);  // left / right singular vectors of the smallest singular value
+  b_ = B.col(0);
+  c_ = C.col(0);
   start_.resize(n + 1);
   start_ << pd.x, pd.p;
 }
@@ -539,7 +549,7 @@ PeriodDoublingCurveProblem::PeriodDoublingCurveProblem(const OrbitTwoParameterPr
 double PeriodDoublingCurveProblem::test_function(const Eigen::VectorXd& X, double p1, double p2) const {
   Eigen::MatrixXd J;
   base_.antiperiodic_jacobian(X, p1, p2, J);
-  return bordered_test_function(J, b_, c_);
+  return detail::bordered_g(J, b_, c_)(0, 0);
 }
 
 void PeriodDoublingCurveProblem::residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const {

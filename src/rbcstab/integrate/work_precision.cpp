@@ -63,7 +63,7 @@ WorkPrecisionTable work_precision(const Scene& scene, const WorkPrecisionOptions
                               r.counters.steps, r.seconds,
                               relative_error(r.Delta_final, ref.Delta_final, scene.parameters.Delta),
                               std::abs(r.sigma_final - ref.sigma_final) / std::max(1.0, std::abs(ref.sigma_final)),
-                              r.l_Delta, r.l_Delta != ref.l_Delta});
+                              r.l_Delta, r.status == IntegrationStatus::success && r.l_Delta != ref.l_Delta});
       }
   return table;
 }

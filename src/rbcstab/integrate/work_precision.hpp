@@ -28,7 +28,7 @@ struct WorkPrecisionRow {
   double error_Delta;   // max over l with Delta_l(T) > 1e-8 Delta of |Delta_l(T) - ref| / ref
   double error_sigma;   // |sigma(T) - ref| / max(1, |ref|)
   int l_Delta;
-  bool verdict_changed;  // l_Delta differs from the reference's
+  bool verdict_changed;  // l_Delta differs from the reference's (runs that reached T only: a stopped run has no verdict)
 };
 
 struct WorkPrecisionTable {

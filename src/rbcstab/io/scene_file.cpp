@@ -122,8 +122,9 @@ SceneFile parse_scene(const std::string& toml_text, const std::string& source_na
   }
   SceneFile f;
   Scene& s = f.scene;
-  // [diagram] belongs to sweeps (rbcstab/sweep/diagram_file.hpp); scenes accept and ignore it.
-  reject_unknown(root, "", {"name", "parameters", "initial", "run", "integrator", "diagram"});
+  // [diagram] belongs to sweeps (rbcstab/sweep/diagram_file.hpp), [fig6e] and [continuation] to figure
+  // panels (rbcstab/report/panels.hpp); scenes accept and ignore them.
+  reject_unknown(root, "", {"name", "parameters", "initial", "run", "integrator", "diagram", "fig6e", "continuation"});
   read_string(root, "", "name", s.name);
   if (const toml::table* t = subtable(root, "parameters")) {
     reject_unknown(*t, "parameters.", {"lambda", "Delta", "Delta0", "B", "C"});
@@ -177,6 +178,16 @@ SceneFile parse_scene(const std::string& toml_text, const std::string& source_na
 }
 
 SceneFile load_scene(const std::string& path) { return parse_scene(read_file(path), path); }
+
+bool scene_sets_L(const std::string& toml_text, const std::string& source_name) {
+  try {
+    const toml::table root = toml::parse(toml_text, source_name);
+    const toml::table* run = root["run"].as_table();
+    return run && run->contains("L");
+  } catch (const toml::parse_error&) {
+    return false;  // parse_scene reports the syntax error with its location
+  }
+}
 
 std::string to_toml(const SceneFile& file) {
   const Scene& s = file.scene;

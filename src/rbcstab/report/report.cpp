@@ -198,6 +198,106 @@ std::string import_hook(const std::string& src, const fs::path& dir, const std::
   write_file_atomic((dir / name).string(), text);
   return name;
 }
+
+// The figures of the hooks (phase diagram, Fig. 6e, bifurcation), their data copied into `dir`.
+void add_hook_figures(const ReportOptions& o, const fs::path& dir, std::vector<std::string>& files,
+                      nlohmann::json& figs) {
+  std::error_code ec;
+  auto titled = [&](nlohmann::json f) {
+    if (!o.figure_title.empty()) f["title"] = o.figure_title;
+    return f;
+  };
+    if (!o.phase_diagram.empty()) {
+      std::vector<std::string> data{import_hook(o.phase_diagram, dir, "phase_diagram.csv")};
+      const fs::path overlay = fs::path(o.phase_diagram).replace_extension(".json");
+      if (fs::is_regular_file(overlay, ec)) data.push_back(import_hook(overlay.string(), dir, "phase_diagram_overlay.json"));
+      files.insert(files.end(), data.begin(), data.end());
+      figs.push_back(titled(figure("phase_diagram", "fig_phase_diagram.png", 900, 750, data,
+                            "Phase diagram coloured by l_Delta with the traced boundaries and analytic lines")));
+    }
+    if (!o.delta2_comparison.empty()) {
+      const std::string d = import_hook(o.delta2_comparison, dir, "delta2_comparison.csv");
+      files.push_back(d);
+      figs.push_back(titled(figure("delta2_comparison", "fig_delta2_theory.png", 750, 750, {d},
+                            "Fig. 6e-type: post-instability Delta~_2 from theory against the simulated mean")));
+    }
+    if (!o.bifurcation.empty()) {
+      const std::string d = import_hook(o.bifurcation, dir, "bifurcation.json");
+      files.push_back(d);
+      figs.push_back(titled(figure("bifurcation", "fig_bifurcation.png", 900, 675, {d},
+                            "Bifurcation diagram: stable branches solid, unstable dashed, special points labelled")));
+    }
+
+  for (const std::string& a : o.attachments) files.push_back(import_hook(a, dir, fs::path(a).filename().string()));
+}
+
+// Draws the figures listed in the manifest (report.json, already in tmp), writes the pages and renames
+// tmp into place (swapping out an existing folder under --overwrite).
+void draw_and_publish(const ReportOptions& o, const nlohmann::json& manifest, const fs::path& tmp,
+                      const fs::path& target, std::vector<std::string>& files) {
+  std::error_code ec;
+  const std::string log = (tmp / "plot.log").string();
+  const int rc = run_process({o.python, (fs::path(o.script_dir) / kScript).string(), "report", tmp.string()}, log);
+  if (rc != 0)
+    throw ReportError("the plotting script failed (exit " + std::to_string(rc) + "): " + tail_of(log, 1500));
+  files.push_back("plot.log");
+  const nlohmann::json drawn = nlohmann::json::parse(read_file((tmp / "figures.json").string()));
+  for (const auto& f : drawn) files.push_back(f.at("file").get<std::string>());
+  files.push_back("figures.json");
+  for (const auto& [name, text] : {std::pair{"README.md", detail::report_markdown(manifest, drawn)},
+                                   std::pair{"index.html", detail::report_html(manifest, drawn)}}) {
+    write_file_atomic((tmp / name).string(), text);
+    files.push_back(name);
+  }
+  if (fs::exists(target, ec)) {  // --overwrite: swap, then remove the old folder
+    const fs::path old = target.parent_path() / hidden_sibling_name(target, ".old-");
+    fs::rename(target, old);
+    fs::rename(tmp, target);
+    fs::remove_all(old, ec);
+  } else {
+    fs::rename(tmp, target);
+  }
+}
+
+// A figure-panel report: the scene as given, the hooks' data and figures, the attachments.
+ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, const fs::path& target,
+                                std::chrono::steady_clock::time_point start) {
+  if (o.phase_diagram.empty() && o.delta2_comparison.empty() && o.bifurcation.empty())
+    throw InvalidArgument("run_scene", "run_scene = false (a figure panel) needs a phase diagram, a Fig. 6e table "
+                                       "or a bifurcation to draw");
+  ReportResult res;
+  std::error_code ec;
+  const fs::path tmp = target.parent_path() / hidden_sibling_name(target, ".tmp-");
+  fs::create_directory(tmp, ec);
+  if (ec) throw ReportError("output: cannot create " + tmp.string() + ": " + ec.message());
+  try {
+    write_file_atomic((tmp / "scene.toml").string(), o.scene_toml.empty() ? to_toml(sf) : o.scene_toml);
+    res.files.push_back("scene.toml");
+    nlohmann::json figs = nlohmann::json::array();
+    add_hook_figures(o, tmp, res.files, figs);
+    nlohmann::json manifest;
+    manifest["scene"] = to_json(sf.scene);
+    manifest["parameters"] = to_json(sf.scene.parameters);
+    nlohmann::json panel;
+    panel["summary"] = o.panel_summary;
+    panel["facts"] = nlohmann::json::array();
+    for (const auto& [k, v] : o.panel_facts) panel["facts"].push_back({k, v});
+    manifest["panel"] = panel;
+    manifest["warnings"] = nlohmann::json::array();
+    manifest["figures"] = figs;
+    write_file_atomic((tmp / "report.json").string(), manifest.dump(2) + "\n");
+    res.files.push_back("report.json");
+    draw_and_publish(o, manifest, tmp, target, res.files);
+  } catch (const fs::filesystem_error& e) {
+    fs::remove_all(tmp, ec);
+    throw ReportError(std::string("output: ") + e.what());
+  } catch (...) {
+    fs::remove_all(tmp, ec);
+    throw;
+  }
+  res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return res;
+}
 }  // namespace
 
 AmplitudeSeries amplitudes_at(const SceneFile& sf, const std::vector<double>& times) {
@@ -278,6 +378,9 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
   for (const std::string* hook : {&o.phase_diagram, &o.delta2_comparison, &o.bifurcation})
     if (!hook->empty() && !fs::is_regular_file(*hook, ec))
       throw InvalidArgument("file", "data file '" + *hook + "' not found");
+  for (const std::string& a : o.attachments)
+    if (!fs::is_regular_file(a, ec)) throw InvalidArgument("file", "data file '" + a + "' not found");
+  if (!o.run_scene) return build_panel_folder(sf, o, target, start);
 
   ReportResult res;
   res.run = simulate(sf.scene, sf.options);
@@ -368,27 +471,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     anim["gif"] = "animation.gif";
     anim["gif_size_px"] = {400, 400};
     figs.push_back(anim);
-    if (!o.phase_diagram.empty()) {
-      std::vector<std::string> data{import_hook(o.phase_diagram, tmp, "phase_diagram.csv")};
-      const fs::path overlay = fs::path(o.phase_diagram).replace_extension(".json");
-      if (fs::is_regular_file(overlay, ec)) data.push_back(import_hook(overlay.string(), tmp, "phase_diagram_overlay.json"));
-      res.files.insert(res.files.end(), data.begin(), data.end());
-      figs.push_back(figure("phase_diagram", "fig_phase_diagram.png", 900, 750, data,
-                            "Phase diagram coloured by l_Delta with the traced boundaries and analytic lines"));
-    }
-    if (!o.delta2_comparison.empty()) {
-      const std::string d = import_hook(o.delta2_comparison, tmp, "delta2_comparison.csv");
-      res.files.push_back(d);
-      figs.push_back(figure("delta2_comparison", "fig_delta2_theory.png", 750, 750, {d},
-                            "Fig. 6e-type: post-instability Delta~_2 from theory against the simulated mean"));
-    }
-    if (!o.bifurcation.empty()) {
-      const std::string d = import_hook(o.bifurcation, tmp, "bifurcation.json");
-      res.files.push_back(d);
-      figs.push_back(figure("bifurcation", "fig_bifurcation.png", 900, 675, {d},
-                            "Bifurcation diagram: stable branches solid, unstable dashed, special points labelled"));
-    }
-
+    add_hook_figures(o, tmp, res.files, figs);
     nlohmann::json manifest;
     manifest["scene"] = to_json(sf.scene);
     manifest["parameters"] = to_json(p);
@@ -405,27 +488,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     manifest["warnings"] = res.warnings;
     manifest["figures"] = figs;
     put("report.json", manifest.dump(2) + "\n");
-
-    const std::string log = (tmp / "plot.log").string();
-    const int rc = run_process({o.python, (fs::path(o.script_dir) / kScript).string(), "report", tmp.string()}, log);
-    if (rc != 0)
-      throw ReportError("the plotting script failed (exit " + std::to_string(rc) + "): " + tail_of(log, 1500));
-    res.files.push_back("plot.log");
-    const nlohmann::json drawn = nlohmann::json::parse(read_file((tmp / "figures.json").string()));
-    for (const auto& f : drawn) res.files.push_back(f.at("file").get<std::string>());
-    res.files.push_back("figures.json");
-
-    put("README.md", detail::report_markdown(manifest, drawn));
-    put("index.html", detail::report_html(manifest, drawn));
-
-    if (fs::exists(target, ec)) {  // --overwrite: swap, then remove the old folder
-      const fs::path old = target.parent_path() / hidden_sibling_name(target, ".old-");
-      fs::rename(target, old);
-      fs::rename(tmp, target);
-      fs::remove_all(old, ec);
-    } else {
-      fs::rename(tmp, target);
-    }
+    draw_and_publish(o, manifest, tmp, target, res.files);
   } catch (const fs::filesystem_error& e) {
     fs::remove_all(tmp, ec);
     throw ReportError(std::string("output: ") + e.what());

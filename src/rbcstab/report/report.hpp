@@ -3,6 +3,7 @@
 // behind every figure (CSV/JSON), the shape at T (VTK, VTP, PLY), figures drawn by matplotlib
 // (python/rbcstab_report.py), index.html and README.md. The folder appears whole or not at all.
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rbcstab/integrate/simulation.hpp"
@@ -32,6 +33,14 @@ struct ReportOptions {
   std::string phase_diagram;           // CSV with columns x, y, l_Delta (+ optional overlay JSON beside it)
   std::string delta2_comparison;       // CSV with columns Delta2_theory, Delta2_simulation[, alpha]
   std::string bifurcation;             // JSON {"branches": [...], "points": [...]}
+  // Figure panels (phase diagram, Fig. 6e, bifurcation; report/panels.hpp): no run of the scene itself,
+  // whose time-dependent figures would mean nothing there; only the hooks are drawn (at least one is needed).
+  bool run_scene = true;
+  std::vector<std::string> attachments;  // files copied in as they are (the raw data behind a panel)
+  std::string panel_summary;             // panel reports: what was computed, shown under the title
+  std::vector<std::pair<std::string, std::string>> panel_facts;  // panel reports: rows of the "Panel" table
+  std::string figure_title;              // panel reports: title drawn above the hook figures
+  std::string scene_toml;                // panel reports: the scene file as read (its panel table kept) for scene.toml
   void validate() const;               // throws InvalidArgument naming the field
 };
 

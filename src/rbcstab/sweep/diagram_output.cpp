@@ -8,7 +8,7 @@
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/point_io.hpp"
-#include "rbcstab/sweep/trace.hpp"
+#include "rbcstab/sweep/agreement.hpp"
 
 namespace rbcstab {
 
@@ -107,21 +107,8 @@ nlohmann::json diagram_json(const nlohmann::json& header, const DiagramSpec& spe
   return doc;
 }
 
-nlohmann::json agreement_json(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points) {
-  if (spec.x.axis == Axis::beta || spec.y.axis == Axis::beta) return nullptr;
-  try {
-    (void)asymptotic_verdict(base);
-  } catch (const InvalidArgument&) {
-    return nullptr;  // in plane: no exact asymptotic criterion
-  }
-  TraceResult t;
-  Agreement a;
-  try {
-    t = trace_boundary(base, spec);
-    a = asymptotic_agreement(base, spec, points, t);
-  } catch (const InvalidArgument& e) {
-    return {{"predictor", "asymptotic"}, {"error", e.what()}};  // e.g. part of the plane has Delta0 > Delta
-  }
+namespace {
+nlohmann::json agreement_entry(const Agreement& a) {
   nlohmann::json d = nlohmann::json::array();
   for (const auto& x : a.verdict_disagreements)
     d.push_back({{"index", x.index}, {"simulated", to_string(x.simulated)}, {"l_simulated", x.l_simulated},
@@ -129,15 +116,40 @@ nlohmann::json agreement_json(const Scene& base, const DiagramSpec& spec, const 
                  {"distance_grid_steps", number_or_null(x.distance_steps)}, {"S", number_or_null(x.S)},
                  {"alpha_over_alpha_init", x.alpha_over_alpha_init}});
   const double n = a.points ? double(a.points) : 1.0;
-  return {{"predictor", "asymptotic: mu_l = Upsilon_l(sigma_R^eq), exact out-of-plane equilibrium"},
-          {"points", a.points},
-          {"verdict_fraction", double(a.verdict_matches) / n},
-          {"mode_fraction", double(a.mode_matches) / n},
-          {"verdict_disagreements", a.verdict_disagreements.size()},
-          {"beyond_one_grid_step", a.beyond_one_step},
-          {"boundary_pieces", t.curves.size()},
-          {"boundary_corners", t.corners.size()},
-          {"disagreements", d}};
+  nlohmann::json j{{"predictor", a.predictor},
+                   {"description", a.description},
+                   {"boundary", a.boundary},
+                   {"points", a.points},
+                   {"not_classified", a.not_classified},
+                   {"verdict_fraction", a.points ? nlohmann::json(double(a.verdict_matches) / n) : nlohmann::json()},
+                   {"mode_fraction", a.points ? nlohmann::json(double(a.mode_matches) / n) : nlohmann::json()},
+                   {"verdict_disagreements", a.verdict_disagreements.size()},
+                   {"within_one_grid_step", a.verdict_disagreements.size() - a.beyond_one_step},
+                   {"beyond_one_grid_step", a.beyond_one_step},
+                   {"small_S", a.small_S},
+                   {"near_alpha_init", a.near_alpha_init},
+                   {"boundary_pieces", a.boundary_pieces},
+                   {"boundary_corners", a.boundary_corners},
+                   {"disagreements", d}};
+  if (!a.note.empty()) j["note"] = a.note;
+  return j;
+}
+}  // namespace
+
+nlohmann::json agreement_json(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points,
+                              const AgreementOptions& options) {
+  std::vector<Agreement> all;
+  try {
+    all = predictor_agreements(base, spec, points, options);
+  } catch (const InvalidArgument& e) {
+    return {{"predictor", "asymptotic"}, {"error", e.what()}};
+  }
+  // The asymptotic entry's fields at the top level (the block's original shape), every predictor in "predictors".
+  nlohmann::json doc = agreement_entry(all.front());
+  nlohmann::json list = nlohmann::json::array();
+  for (const Agreement& a : all) list.push_back(agreement_entry(a));
+  doc["predictors"] = list;
+  return doc;
 }
 
 DiagramSpec spec_from_json(const nlohmann::json& doc) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 
 namespace rbcstab {
@@ -25,9 +26,10 @@ nlohmann::json diagram_json(const nlohmann::json& header, const DiagramSpec& spe
                             const std::vector<PointResult>& points, const Shard& shard,
                             const DiagramOutputOptions& o = {});
 
-// The asymptotic predictor's agreement with the points (trace.hpp) as JSON; null when the scene is not out of
-// plane or beta is an axis (the criterion holds only for the out-of-plane equilibrium).
-nlohmann::json agreement_json(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points);
+// Every predictor's agreement with the points (agreement.hpp) as JSON: the asymptotic predictor's fields at the
+// top level and one entry per predictor in "predictors".
+nlohmann::json agreement_json(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points,
+                              const AgreementOptions& options = {});
 
 // The spec and points back from a diagram_json document (throws InvalidArgument("merge", ...)).
 DiagramSpec spec_from_json(const nlohmann::json& doc);

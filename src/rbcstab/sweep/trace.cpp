@@ -14,171 +14,129 @@
 namespace rbcstab {
 
 namespace {
-const char* kCriterion = "mu_l = Upsilon_l(sigma_R^eq) = 0 (exact out-of-plane equilibrium, envelope over l = 3..L)";
+const char* kAsymptoticExact = "mu_l = Upsilon_l(sigma_R^eq) = 0 (exact out-of-plane equilibrium, envelope over l = 3..L)";
+const char* kAsymptoticAverage = "mu_l = Upsilon_l(<sigma_R>) = 0 (time average on the reduced attractor, envelope over l = 3..L)";
+const char* kFiniteHorizon = "G_l(T) = int_0^T Upsilon_l(sigma_R(t)) dt = 0 (reduced transient, envelope over l = 3..L)";
 
-AsymptoticVerdict verdict_of(const Parameters& p, int L) {
+bool out_of_plane(const Scene& scene, const PredictorOptions& o) { return stress_free_r0(scene) < o.out_of_plane_r0; }
+}  // namespace
+
+std::string to_string(TraceCriterion c) {
+  return c == TraceCriterion::asymptotic ? "asymptotic" : "finite-horizon";
+}
+TraceCriterion trace_criterion_from_string(const std::string& name) {
+  if (name == "asymptotic") return TraceCriterion::asymptotic;
+  if (name == "finite-horizon" || name == "finite_horizon") return TraceCriterion::finite_horizon;
+  throw InvalidArgument("criterion", "'" + name + "' is not a criterion: asymptotic | finite-horizon");
+}
+
+AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const PredictorOptions& options) {
+  if (out_of_plane(scene, options)) {
+    const OutOfPlaneEquilibrium eq = out_of_plane_equilibrium(scene.parameters);
+    if (eq.stable) return {eq.sigma_R, true};
+  }
+  // In plane: the period average of sigma_R on the swinging/tumbling orbit, here from a converged time
+  // average. (A periodic-orbit average would replace this one call.)
+  // It needs the sigma_R integral at three times only: no dense regime sampling (10x cheaper).
+  PredictorOptions o = options;
+  o.regime_sample_dt = 0.5 * o.window;
+  const SigmaAverage avg = time_averaged_sigma_R(scene, o);
+  if (!avg.mean.valid()) throw InvalidArgument("criterion", avg.mean.reason);
+  return {avg.mean.value, false};
+}
+
+AsymptoticVerdict asymptotic_verdict(const Scene& scene, const PredictorOptions& options) {
   AsymptoticVerdict v;
-  const OutOfPlaneEquilibrium eq = out_of_plane_equilibrium(p);
-  v.sigma_R = eq.sigma_R;
-  v.active_mode = surviving_mode(p.alpha(), L);
-  v.margin = v.sigma_R - sigma_critical(v.active_mode, p.alpha());
+  v.sigma_R = asymptotic_sigma_R(scene, options).sigma_R;
+  const double alpha = scene.parameters.alpha();
+  v.active_mode = surviving_mode(alpha, scene.L);
+  v.margin = v.sigma_R - sigma_critical(v.active_mode, alpha);
   v.unstable = v.margin < 0;
   v.l = v.unstable ? v.active_mode : 2;
   return v;
 }
 
-struct Plane {
-  const Scene& base;
-  const DiagramSpec& spec;
-  std::size_t evaluations = 0;
-  AsymptoticVerdict at(double x, double y) {
-    ++evaluations;
-    return verdict_of(plane_scene(base, spec, x, y).parameters, base.L);
-  }
-  double margin(double x, double y) { return at(x, y).margin; }
-};
-
-// Root of margin(x, .) in [a, b] with a sign change, bisected to the last bit.
-double bisect_y(Plane& plane, double x, double a, double b, double fa, int iterations) {
-  for (int k = 0; k < iterations; ++k) {
-    const double m = 0.5 * (a + b);
-    if (m <= std::min(a, b) || m >= std::max(a, b)) break;
-    const double fm = plane.margin(x, m);
-    if (fm == 0) return m;
-    if ((fm < 0) == (fa < 0)) {
-      a = m;
-      fa = fm;
-    } else {
-      b = m;
-    }
-  }
-  return 0.5 * (a + b);
-}
-
-std::vector<double> roots_on_line(Plane& plane, double x, double y0, double y1, int samples, int bisections) {
-  std::vector<double> roots;
-  double ya = y0, fa = plane.margin(x, ya);
-  for (int k = 1; k <= samples; ++k) {
-    const double yb = k == samples ? y1 : y0 + (y1 - y0) * double(k) / samples;
-    const double fb = plane.margin(x, yb);
-    if (fa == 0) roots.push_back(ya);
-    else if ((fa < 0) != (fb < 0) && fb != 0) roots.push_back(bisect_y(plane, x, ya, yb, fa, bisections));
-    ya = yb;
-    fa = fb;
-  }
-  if (fa == 0) roots.push_back(ya);
-  return roots;
-}
-
-TracePoint point_at(Plane& plane, double x, double y) {
-  const AsymptoticVerdict v = plane.at(x, y);
-  const Parameters p = plane_scene(plane.base, plane.spec, x, y).parameters;
-  TracePoint t{x, y, v.active_mode, v.sigma_R, sigma_critical(v.active_mode, p.alpha()), 0};
-  t.mu = Upsilon(p, t.l, v.sigma_R);
-  return t;
-}
-}  // namespace
-
-AsymptoticVerdict asymptotic_verdict(const Scene& scene) {
-  const double r0 = stress_free_r0(scene);
-  const double limit = PredictorOptions{}.out_of_plane_r0;
-  if (!(r0 < limit))
-    throw InvalidArgument("beta", "the asymptotic criterion with the exact equilibrium needs an out-of-plane scene: "
-                                  "stress-free r0 = " + format_value(r0) + " must be < " + format_value(limit) +
-                                  " (beta near 0 or pi)");
-  return verdict_of(scene.parameters, scene.L);
-}
-
 void TraceOptions::validate() const {
-  require(lines >= 2 && lines <= 100000, "lines", lines, "an integer in [2, 100000]");
-  require(samples >= 2 && samples <= 100000, "samples", samples, "an integer in [2, 100000]");
-  require(bisections >= 1 && bisections <= 200, "bisections", bisections, "an integer in [1, 200]");
+  require(std::isfinite(T) && T >= 0, "T", T, "finite and >= 0 (0: the scene's T)");
+  predictor.validate();
+  zero_set().validate();
+}
+
+PredictorOptions TraceOptions::tracing_predictor() {
+  PredictorOptions o;
+  o.integrator.rtol = 1e-12;
+  o.integrator.atol = 1e-14;
+  return o;
+}
+
+ZeroSetOptions TraceOptions::zero_set() const {
+  ZeroSetOptions z;
+  z.seed_lines = lines;
+  z.samples = samples;
+  z.bisections = bisections;
+  z.max_step = max_step;
+  z.initial_step = std::min(z.initial_step, max_step);
+  return z;
+}
+
+ModeCriteria plane_criteria(const Scene& base, const DiagramSpec& plane, const TraceOptions& options) {
+  ModeCriteria c;
+  c.l_min = 3;
+  if (options.criterion == TraceCriterion::asymptotic) {
+    c.description = out_of_plane(base, options.predictor) ? kAsymptoticExact : kAsymptoticAverage;
+    c.at = [&base, &plane, po = options.predictor](double x, double y) {
+      const Scene s = plane_scene(base, plane, x, y);
+      s.validate();
+      CriterionSample out;
+      out.sigma_R = asymptotic_sigma_R(s, po).sigma_R;
+      out.alpha = s.parameters.alpha();
+      for (int l = 3; l <= s.L; ++l) out.g.push_back(Upsilon(s.parameters, l, out.sigma_R));
+      return out;
+    };
+  } else {
+    c.description = kFiniteHorizon;
+    c.at = [&base, &plane, &options](double x, double y) {
+      const Scene s = plane_scene(base, plane, x, y);
+      const FiniteHorizon h = finite_horizon_growth(s, options.T > 0 ? options.T : s.T, options.predictor);
+      if (h.status != IntegrationStatus::success)
+        throw InvalidArgument("criterion", "reduced run stopped at t = " + format_value(h.T) + ": " + h.reason);
+      CriterionSample out;
+      out.sigma_R = h.mean_sigma_R;
+      out.alpha = s.parameters.alpha();
+      out.g.assign(h.G.begin() + 1, h.G.end());  // G is indexed l - 2
+      return out;
+    };
+  }
+  return c;
 }
 
 TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane_spec, const TraceOptions& options) {
   options.validate();
   plane_spec.validate();
   base.validate();
-  (void)asymptotic_verdict(base);  // out-of-plane check
+  require(base.L >= 3, "L", base.L, ">= 3 (a boundary needs a mode l >= 3)");
   const auto t0 = std::chrono::steady_clock::now();
-  Plane plane{base, plane_spec};
+  const ModeCriteria criteria = plane_criteria(base, plane_spec, options);
+  const PlaneBox box{plane_spec.x.min, plane_spec.x.max, plane_spec.y.min, plane_spec.y.max};
+  const ZeroSetResult z = trace_zero_set(criteria, box, options.zero_set());
   TraceResult res;
-  const AxisRange& X = plane_spec.x;
-  const AxisRange& Y = plane_spec.y;
-
-  // Roots on each line, linked into curves while the number of roots per line stays the same.
-  std::vector<std::vector<TracePoint>> raw;  // curves before the split by mode
-  std::vector<std::size_t> open;             // raw indices continued by the current line
-  for (int k = 0; k < options.lines; ++k) {
-    const double x = X.min + (X.max - X.min) * double(k) / double(options.lines - 1);
-    const std::vector<double> ys = roots_on_line(plane, x, Y.min, Y.max, options.samples, options.bisections);
-    if (ys.size() != open.size()) open.clear();
-    const bool extend = !open.empty();
-    for (std::size_t r = 0; r < ys.size(); ++r) {
-      const TracePoint tp = point_at(plane, x, ys[r]);
-      if (extend) {
-        raw[open[r]].push_back(tp);
-      } else {
-        raw.push_back({tp});
-        open.push_back(raw.size() - 1);
-      }
-    }
+  res.criterion = options.criterion;
+  for (const ZeroSetPiece& p : z.pieces) {
+    TraceCurve c;
+    c.l = p.l;
+    c.criterion = criteria.description;
+    c.chain = p.chain;
+    for (const ZeroSetPoint& q : p.points)
+      c.points.push_back({q.x, q.y, q.l, q.sigma_R, sigma_critical(q.l, q.alpha), q.g});
+    res.curves.push_back(std::move(c));
   }
-
-  // Split by active mode; locate each corner by bisection in x, re-solving the root near the curve.
-  const double dy_sample = (Y.max - Y.min) / options.samples;
-  for (const auto& curve : raw) {
-    TraceCurve piece;
-    piece.criterion = kCriterion;
-    piece.l = curve.front().l;
-    piece.points.push_back(curve.front());
-    for (std::size_t k = 1; k < curve.size(); ++k) {
-      const TracePoint& a = curve[k - 1];
-      const TracePoint& b = curve[k];
-      if (b.l != a.l) {
-        double xa = a.x, xb = b.x, ya = a.y, yb = b.y;
-        TracePoint corner = a;
-        for (int it = 0; it < 60 && xb - xa > 0; ++it) {
-          const double xm = 0.5 * (xa + xb);
-          if (xm <= xa || xm >= xb) break;
-          const double guess = 0.5 * (ya + yb);
-          const double half = std::abs(yb - ya) + 2 * dy_sample;
-          const double lo = std::max(Y.min, guess - half), hi = std::min(Y.max, guess + half);
-          const std::vector<double> ys = roots_on_line(plane, xm, lo, hi, 16, options.bisections);
-          if (ys.empty()) break;
-          const double ym = *std::min_element(ys.begin(), ys.end(), [&](double u, double v) {
-            return std::abs(u - guess) < std::abs(v - guess);
-          });
-          corner = point_at(plane, xm, ym);
-          if (corner.l == a.l) {
-            xa = xm;
-            ya = ym;
-          } else {
-            xb = xm;
-            yb = ym;
-          }
-        }
-        res.corners.push_back({corner.x, corner.y, a.l, b.l});
-        TracePoint end = corner;  // the corner closes this piece with its own mode
-        end.l = a.l;
-        const Parameters p = plane_scene(base, plane_spec, end.x, end.y).parameters;
-        end.sigma_c = sigma_critical(end.l, p.alpha());
-        end.mu = Upsilon(p, end.l, end.sigma_R);
-        piece.points.push_back(end);
-        res.curves.push_back(piece);
-        piece.points.clear();
-        piece.l = b.l;
-        TracePoint start = end;
-        start.l = b.l;
-        start.sigma_c = sigma_critical(start.l, p.alpha());
-        start.mu = Upsilon(p, start.l, start.sigma_R);
-        piece.points.push_back(start);
-      }
-      piece.points.push_back(b);
-    }
-    res.curves.push_back(piece);
-  }
-  res.evaluations = plane.evaluations;
+  for (const ZeroSetCorner& k : z.corners) res.corners.push_back({k.x, k.y, k.l_from, k.l_to});
+  res.evaluations = z.evaluations;
+  res.chains = z.chains;
+  res.starts = z.starts;
+  res.turning_points = z.turning_points;
+  res.counters = z.counters;
+  res.notes = z.notes;
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return res;
 }
@@ -219,55 +177,6 @@ std::vector<Overlay> analytic_overlays(const Scene& base, const DiagramSpec& pla
     out.push_back(o);
   }
   return out;
-}
-
-Agreement asymptotic_agreement(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points,
-                               const TraceResult& boundary) {
-  Agreement a;
-  const double dx = spec.x.count > 1 ? (spec.x.max - spec.x.min) / (spec.x.count - 1) : 1.0;
-  const double dy = spec.y.count > 1 ? (spec.y.max - spec.y.min) / (spec.y.count - 1) : 1.0;
-  auto distance = [&](double x, double y) {
-    double best = std::numeric_limits<double>::infinity();
-    for (const TraceCurve& c : boundary.curves)
-      for (std::size_t k = 0; k < c.points.size(); ++k) {
-        // Distance to the segment (k-1, k) in grid steps (one point: to the point).
-        const double px = (x - c.points[k].x) / dx, py = (y - c.points[k].y) / dy;
-        if (k == 0) {
-          best = std::min(best, std::hypot(px, py));
-          continue;
-        }
-        const double sx = (c.points[k - 1].x - c.points[k].x) / dx, sy = (c.points[k - 1].y - c.points[k].y) / dy;
-        const double len2 = sx * sx + sy * sy;
-        const double t = len2 > 0 ? std::clamp((px * sx + py * sy) / len2, 0.0, 1.0) : 0.0;
-        best = std::min(best, std::hypot(px - t * sx, py - t * sy));
-      }
-    return best;
-  };
-  for (const PointResult& p : points) {
-    if (p.verdict == Verdict::failed) continue;
-    const Scene s = point_scene(base, spec, p.index);
-    const AsymptoticVerdict v = asymptotic_verdict(s);
-    ++a.points;
-    const bool sim_unstable = p.verdict == Verdict::unstable;
-    if (sim_unstable == v.unstable) {
-      ++a.verdict_matches;
-      if (!v.unstable || v.l == p.l_Delta) ++a.mode_matches;
-      continue;
-    }
-    Disagreement d;
-    d.index = p.index;
-    d.simulated = p.verdict;
-    d.l_simulated = p.l_Delta;
-    d.predicted_unstable = v.unstable;
-    d.l_predicted = v.l;
-    d.distance_steps = distance(p.x, p.y);
-    d.S = s.parameters.S();
-    const Quantity ai = alpha_init(s.parameters);
-    d.alpha_over_alpha_init = ai.valid() && ai.value > 0 ? s.parameters.alpha() / ai.value : 0.0;
-    if (d.distance_steps > 1) ++a.beyond_one_step;
-    a.verdict_disagreements.push_back(d);
-  }
-  return a;
 }
 
 }  // namespace rbcstab

@@ -1,56 +1,90 @@
 #pragma once
-// Stability boundaries traced as curves, and their agreement with simulated diagrams (issue 5,
-// points 2 and 3). Criterion: the asymptotic one for out-of-plane scenes, mu_l = Upsilon_l(sigma_R^eq)
-// with sigma_R^eq at the exact out-of-plane equilibrium of the reduced system (analysis/steady_states.hpp);
-// mode l grows iff sigma_R^eq < sigma_l^c(alpha). The boundary is the envelope over the integer modes
-// l = 3..L: the zero set of the margin m = sigma_R^eq - max_l sigma_l^c (m < 0: unstable), continued
-// line by line across the plane with every root refined by bisection to full precision; on each piece the
-// active mode is the argmax l, and the corners where it changes are located exactly.
+// Stability boundaries traced as curves by continuation (issue 5 point 2). Criteria, per mode l = 3..L
+// (g_l > 0: mode l grows):
+//  - asymptotic: mu_l = Upsilon_l(<sigma_R>) on the reduced attractor: the exact out-of-plane equilibrium
+//    (analysis/steady_states.hpp) for out-of-plane scenes, a converged time average of sigma_R otherwise
+//    (asymptotic_sigma_R below: the one function to swap for a periodic-orbit average);
+//  - finite horizon: G_l(T) = int_0^T Upsilon_l(sigma_R(t)) dt along the reduced transient
+//    (analysis finite_horizon_growth).
+// The boundary is the zero set of the envelope max_l g_l, traced by pseudo-arclength continuation of
+// g_l = 0 from automatically located starts, with the corners where another mode takes over located as
+// engine events (sweep/zero_set.hpp).
 #include <string>
 #include <vector>
 
+#include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/model/scene.hpp"
 #include "rbcstab/sweep/diagram.hpp"
+#include "rbcstab/sweep/zero_set.hpp"
 
 namespace rbcstab {
+
+enum class TraceCriterion { asymptotic, finite_horizon };
+std::string to_string(TraceCriterion c);
+TraceCriterion trace_criterion_from_string(const std::string& name);  // throws InvalidArgument("criterion", ...)
+
+// <sigma_R> on the reduced attractor: the exact equilibrium when the scene is out of plane and it is stable,
+// else the time average (PredictorOptions transient/window). Throws InvalidArgument("criterion", ...) when
+// the time average has not converged (the value would not be a property of the attractor).
+struct AsymptoticSigma {
+  double sigma_R = 0;
+  bool exact = false;  // the out-of-plane equilibrium (else a time average)
+};
+AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const PredictorOptions& options = {});
 
 struct AsymptoticVerdict {
   bool unstable = false;
   int l = 2;              // mode with the largest sigma_l^c among l = 3..L (the surviving mode) if unstable, else 2
-  double sigma_R = 0;     // at the exact out-of-plane equilibrium
+  double sigma_R = 0;     // <sigma_R> (asymptotic_sigma_R)
   double margin = 0;      // sigma_R - max_{3<=l<=L} sigma_l^c (< 0: unstable)
   int active_mode = 3;    // the argmax l of sigma_l^c (ties to the lower l)
 };
-// Throws InvalidArgument("beta", ...) unless the scene is out of plane (its stress-free r0 is below 1e-4).
-AsymptoticVerdict asymptotic_verdict(const Scene& scene);
+AsymptoticVerdict asymptotic_verdict(const Scene& scene, const PredictorOptions& options = {});
 
 struct TraceOptions {
-  int lines = 200;       // lines across the plane (x fixed on each); the curve's resolution
-  int samples = 256;     // brackets per line: roots closer than (y range)/samples can be missed
-  int bisections = 80;   // per root: halves the bracket to the last bit (|y| range / 2^80)
+  TraceCriterion criterion = TraceCriterion::asymptotic;
+  double T = 0;          // finite horizon; 0: the scene's T
+  int lines = 4;         // interior lines x = const searched for starts, besides the plane's four edges
+  int samples = 128;     // brackets per edge or line: start roots closer than 1/samples of it can be missed
+  int bisections = 60;   // per start root (to the last bit; Newton then polishes)
+  double max_step = 0.02;  // arclength step cap in the unit square: the curve's resolution
+  // Reduced runs of the finite-horizon and in-plane criteria: rk8pd at rtol 1e-12 (analysis default 1e-10),
+  // because Newton needs the criterion smooth below the 1e-10 residual it is traced to (at 1e-10 the step
+  // selection leaves ~1e-10 jitter in G_l(T) = 500 Upsilon_l; measured); costs ~1.7x per evaluation.
+  PredictorOptions predictor = tracing_predictor();
   void validate() const;
+  static PredictorOptions tracing_predictor();
+  ZeroSetOptions zero_set() const;
 };
+
+// The criteria g_l(x, y) of a plane (mu_l or G_l(T) for l = 3..L), as traced.
+ModeCriteria plane_criteria(const Scene& base, const DiagramSpec& plane, const TraceOptions& options);
 
 struct TracePoint {
   double x = 0, y = 0;
   int l = 3;            // active mode
-  double sigma_R = 0, sigma_c = 0;
-  double mu = 0;        // Upsilon_l(sigma_R^eq): the criterion's residual (0 on the boundary)
+  double sigma_R = 0, sigma_c = 0;  // <sigma_R> (asymptotic) or <sigma_R>_T (finite horizon); sigma_l^c(alpha)
+  double mu = 0;        // the criterion's residual g_l: mu_l (asymptotic) or G_l(T) (finite horizon); 0 on the boundary
 };
 struct TraceCurve {
   int l = 3;                   // the mode of this piece
-  std::string criterion;       // "mu_l = Upsilon_l(sigma_R^eq) = 0 (exact out-of-plane equilibrium)"
-  std::vector<TracePoint> points;  // ordered along x
+  std::string criterion;       // e.g. "mu_l = Upsilon_l(sigma_R^eq) = 0 (...)"
+  std::vector<TracePoint> points;  // ordered along the curve (each chain runs towards increasing x)
+  std::size_t chain = 0;       // pieces of one connected curve share this index
 };
 struct TraceCorner {
   double x = 0, y = 0;
-  int l_from = 3, l_to = 4;    // active mode before and after (in increasing x)
+  int l_from = 3, l_to = 4;    // active mode before and after (along the chain, i.e. towards increasing x)
 };
 struct TraceResult {
   std::vector<TraceCurve> curves;
   std::vector<TraceCorner> corners;
   std::size_t evaluations = 0;  // criterion evaluations
   double seconds = 0;
+  TraceCriterion criterion = TraceCriterion::asymptotic;
+  std::size_t chains = 0, starts = 0, turning_points = 0;
+  ContinuationCounters counters;   // the engine's work
+  std::vector<std::string> notes;  // pieces that ended inside the plane, and why
 };
 
 TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane, const TraceOptions& options = {});
@@ -64,26 +98,5 @@ struct Overlay {
   std::vector<double> x, y;
 };
 std::vector<Overlay> analytic_overlays(const Scene& base, const DiagramSpec& plane, int n = 200);
-
-// Agreement of the asymptotic predictor with simulated points (issue 5 point 3).
-struct Disagreement {
-  std::size_t index = 0;
-  Verdict simulated = Verdict::stable;
-  int l_simulated = 2;
-  bool predicted_unstable = false;
-  int l_predicted = 2;
-  double distance_steps = 0;  // to the nearest traced boundary point, in grid steps (max over the two axes' steps)
-  double S = 0;               // the point's S (small S: far from the paper's S >> 1 regime)
-  double alpha_over_alpha_init = 0;  // near 1: the initial-tension criterion competes (0 if alpha_init undefined)
-};
-struct Agreement {
-  std::size_t points = 0;           // simulated points that finished (failed ones are excluded)
-  std::size_t verdict_matches = 0;  // stable/unstable agree
-  std::size_t mode_matches = 0;     // verdict agrees and, if unstable, l agrees
-  std::vector<Disagreement> verdict_disagreements;
-  std::size_t beyond_one_step = 0;  // verdict disagreements farther than one grid step from the boundary
-};
-Agreement asymptotic_agreement(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points,
-                               const TraceResult& boundary);
 
 }  // namespace rbcstab

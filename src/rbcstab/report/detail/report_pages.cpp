@@ -57,9 +57,9 @@ Page make_page(const nlohmann::json& m) {
   Page p;
   const auto& sc = m.at("scene");
   const auto& par = m.at("parameters");
-  const auto& s = m.at("summary");
-  p.title = "rbcstab report: scene " + num(sc.at("name"));
-  p.regime = regime_text(m);
+  const bool panel = m.contains("panel");
+  p.title = (panel ? "rbcstab figure panel: scene " : "rbcstab report: scene ") + num(sc.at("name"));
+  p.regime = panel ? m.at("panel").at("summary").get<std::string>() : regime_text(m);
   Table params{{"symbol", "value", "meaning"}, {}};
   auto row = [&](const char* k, const nlohmann::json& v, const char* meaning) {
     params.rows.push_back({k, num(v, 10), meaning});
@@ -76,7 +76,15 @@ Page make_page(const nlohmann::json& m) {
   row("delta", sc.at("delta"), "initial perturbation Delta_l(0), l >= 3");
   row("L", sc.at("L"), "truncation");
   row("T", sc.at("T"), "horizon");
-  p.tables.push_back({"Parameters", params});
+  p.tables.push_back({panel ? "Base scene (the panel varies some of these)" : "Parameters", params});
+  if (panel) {
+    Table facts{{"quantity", "value"}, {}};
+    for (const auto& f : m.at("panel").at("facts")) facts.rows.push_back({f.at(0).get<std::string>(), f.at(1).get<std::string>()});
+    p.tables.push_back({"Panel", facts});
+    for (const auto& w : m.at("warnings")) p.warnings.push_back(w.get<std::string>());
+    return p;
+  }
+  const auto& s = m.at("summary");
 
   Table modes{{"l", "Delta_l(0)", "Delta_l(T)", "tail mean", "sigma_l^c"}, {}};
   const auto& sigc = m.at("thresholds").at("sigma_c");
@@ -157,6 +165,11 @@ std::string report_markdown(const nlohmann::json& m, const nlohmann::json& drawn
     if (f->contains("gif")) md << ". Animation: [" << f->at("gif").get<std::string>() << "](" << f->at("gif").get<std::string>() << ")";
     md << ".\n\n";
   }
+  if (m.contains("panel")) {
+    md << "## Reproduce\n\n```\nrbcstab report --scene scene.toml --output DIR\n```\n\nThe numbers are in report.json "
+       << "(manifest) and the data files beside each figure.\n";
+    return md.str();
+  }
   md << "## Shape files\n\n" << kShapeFiles << ": open the .vtk or .vtp in ParaView, colour by `rho`.\n\n";
   md << "## Reproduce\n\n```\nrbcstab report --scene scene.toml --output " << "DIR\n```\n\n"
      << "The numbers above are in report.json (manifest), trajectory.csv (t, Delta_2..Delta_L, sigma, r, Psi) and "
@@ -197,6 +210,11 @@ std::string report_html(const nlohmann::json& m, const nlohmann::json& drawn) {
       h << ". Animation: <a href=\"" << html_escape(f->at("gif").get<std::string>()) << "\">"
         << html_escape(f->at("gif").get<std::string>()) << "</a>";
     h << ".</figcaption></figure>\n";
+  }
+  if (m.contains("panel")) {
+    h << "<h2>Reproduce</h2>\n<pre>rbcstab report --scene scene.toml --output DIR</pre>\n"
+      << "<p>Numbers: <a href=\"report.json\">report.json</a> and the data files beside each figure.</p>\n</body></html>\n";
+    return h.str();
   }
   h << "<h2>Shape files</h2>\n<p>" << html_escape(kShapeFiles)
     << ": open the .vtk or .vtp in ParaView, colour by <code>rho</code>.</p>\n"

@@ -357,7 +357,8 @@ def _pick(cols, names, fallback_index=None):
     return keys[fallback_index] if fallback_index is not None and fallback_index < len(keys) else None
 
 
-SYMBOLS = {"ln_B": r"$\ln\mathcal{B}$", "ln_C": r"$\ln\mathcal{C}$", "lambda": r"$\lambda$", "Delta": r"$\Delta$",
+SYMBOLS = {"ln_B": r"$\ln\mathcal{B}$", "ln_C": r"$\ln\mathcal{C}$", "lnB": r"$\ln\mathcal{B}$",
+           "lnC": r"$\ln\mathcal{C}$", "Lambda": r"$\Lambda$", "S": "$S$", "lambda": r"$\lambda$", "Delta": r"$\Delta$",
            "Delta0": r"$\Delta_0$", "alpha": r"$\alpha$", "beta": r"$\beta$", "ln_alpha": r"$\ln\alpha$",
            "B": r"$\mathcal{B}$", "C": r"$\mathcal{C}$", "r": "$r$", "Psi": r"$\Psi$", "Delta2": r"$\Delta_2$",
            "sigma": r"$\sigma$"}
@@ -408,7 +409,8 @@ def plot_phase_diagram(csv_path, out, overlay_json=None, size_px=(900, 750), x=N
                   extent=(edges(ux)[0], edges(ux)[-1], edges(uy)[0], edges(uy)[-1]), zorder=0)
         from matplotlib.patches import Patch
 
-        ax.legend_handles_extra = [Patch(color=colour_of[lv], label=rf"$l_\Delta = {lv}$") for lv in levels]
+        ax.legend_handles_extra = ([Patch(facecolor="white", edgecolor="0.5", label=r"$l_\Delta = 2$ (stable)")] +
+                                   [Patch(color=colour_of[lv], label=rf"$l_\Delta = {lv}$") for lv in levels])
         x_lim, y_lim = (edges(ux)[0], edges(ux)[-1]), (edges(uy)[0], edges(uy)[-1])
     else:
         for lv in levels:
@@ -419,8 +421,17 @@ def plot_phase_diagram(csv_path, out, overlay_json=None, size_px=(900, 750), x=N
         x_lim, y_lim = (min(xs), max(xs)), (min(ys), max(ys))
     if overlay_json:
         for c in read_json(overlay_json).get("curves", []):
+            if not c["x"]:
+                continue
             ls = {"solid": "-", "dashed": "--", "dotted": ":", "dashdot": "-."}.get(c.get("style", "solid"), "-")
-            ax.plot(c["x"], c["y"], ls=ls, color=c.get("color", "black"), lw=1.6, label=c.get("label"), zorder=3)
+            on_line = c.get("label_on_line", False)
+            ax.plot(c["x"], c["y"], ls=ls, color=c.get("color", "black"), lw=c.get("width", 1.6),
+                    label=None if on_line else c.get("label"), zorder=3)
+            if on_line and c.get("label"):
+                # Families of parallel lines (l_* = 2.5, 3.5, ...): labelled at their upper end, not in the legend.
+                ax.annotate(c["label"], (c["x"][-1], c["y"][-1]), xytext=(-2, -2), textcoords="offset points",
+                            ha="right", va="top", fontsize=8, color=c.get("color", "black"), zorder=4,
+                            bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.7))
     ax.set_xlim(*x_lim)
     ax.set_ylim(*y_lim)
     ax.set_xlabel(symbol(x))
@@ -458,12 +469,17 @@ def plot_delta2_comparison(csv_path, out, size_px=(750, 750), title=None):
     vals = [v for v in th + sim if math.isfinite(v)]
     lo, hi = min(vals), max(vals)
     ax.plot([lo, hi], [lo, hi], color="0.4", ls="--", lw=1, label="diagonal", zorder=1)
+    if lo > 0 and hi / lo > 10:  # values over more than a decade: log axes keep the small ones apart
+        ax.set_xscale("log")
+        ax.set_yscale("log")
     ax.set_xlabel(r"simulation $\bar{\Delta}_2$")
     ax.set_ylabel(r"theory $\tilde{\Delta}_2$")
     ax.legend(loc="upper left")
     if "alpha" in d:
         ins = ax.inset_axes([0.58, 0.1, 0.38, 0.32])
-        ins.plot([math.log(a) for a in d["alpha"]], [a / b for a, b in zip(th, sim)], "ko", ms=3)
+        for n, (key, idx) in enumerate(sorted(groups.items(), key=lambda kv: (kv[0] is None, kv[0]))):
+            ins.plot([math.log(d["alpha"][i]) for i in idx], [th[i] / sim[i] for i in idx],
+                     MARKERS[n % len(MARKERS)], ms=3.5, color="black", mfc="none" if n % 2 else "black")
         ins.set_xlabel(r"$\ln\alpha$", fontsize=9)
         ins.set_ylabel(r"$\tilde{\Delta}_2/\bar{\Delta}_2$", fontsize=9)
         ins.tick_params(labelsize=8)
@@ -513,9 +529,24 @@ def plot_bifurcation(json_path, out, size_px=(900, 675), title=None):
             ax.plot(x[k:seg_end + 1], y[k:seg_end + 1], color=cols[n], ls="-" if st[k] else "--",
                     lw=2.0 if st[k] else 1.4, label=lab)
             k = seg_end if seg_end > k else k + 1
+    # Special points at the same place (e.g. LP and BP where two branches meet) share one marker and label.
+    merged = []
     for p in b.get("points", []):
-        ax.plot(p["x"], p["y"], "o", color="black", ms=6, mfc="white", zorder=4)
-        ax.annotate(p.get("label", ""), (p["x"], p["y"]), xytext=(5, 5), textcoords="offset points", fontsize=10)
+        if p["x"] is None or p["y"] is None:
+            continue
+        for q in merged:
+            if math.isclose(q["x"], p["x"], rel_tol=1e-6, abs_tol=1e-9) and \
+                    math.isclose(q["y"], p["y"], rel_tol=1e-6, abs_tol=1e-6):
+                if p.get("label") and p["label"] not in q["labels"]:
+                    q["labels"].append(p["label"])
+                break
+        else:
+            merged.append({"x": p["x"], "y": p["y"], "labels": [p.get("label", "")]})
+    for p in merged:
+        ax.plot(p["x"], p["y"], "o", color="black", ms=7, mfc="white", zorder=4)
+        ax.annotate(", ".join(l for l in p["labels"] if l), (p["x"], p["y"]), xytext=(6, 6),
+                    textcoords="offset points", fontsize=11, zorder=5,
+                    bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
     ax.set_xlabel(symbol(b.get("parameter", "parameter")))
     ax.set_ylabel(symbol(b.get("measure", "measure")))
     ax.legend(loc="best")
@@ -558,11 +589,12 @@ def draw_report(folder):
             drawn.extend(plot_animation(path(data[0]), out, path(f["gif"]) if f.get("gif") else None, size,
                                         tuple(f.get("gif_size_px", (400, 400)))))
         elif kind == "phase_diagram":
-            drawn.append(plot_phase_diagram(path(data[0]), out, path(data[1]) if len(data) > 1 else None, size))
+            drawn.append(plot_phase_diagram(path(data[0]), out, path(data[1]) if len(data) > 1 else None, size,
+                                            title=f.get("title")))
         elif kind == "delta2_comparison":
-            drawn.append(plot_delta2_comparison(path(data[0]), out, size))
+            drawn.append(plot_delta2_comparison(path(data[0]), out, size, title=f.get("title")))
         elif kind == "bifurcation":
-            drawn.append(plot_bifurcation(path(data[0]), out, size))
+            drawn.append(plot_bifurcation(path(data[0]), out, size, title=f.get("title")))
         else:
             raise ValueError(f"unknown figure kind {kind!r}")
     with open(path("figures.json"), "w") as f:

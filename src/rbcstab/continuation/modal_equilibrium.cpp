@@ -1,0 +1,245 @@
+#include "rbcstab/continuation/modal_equilibrium.hpp"
+
+#include <cmath>
+#include <complex>
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/QR>
+
+#include "rbcstab/analysis/steady_states.hpp"
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/model/coefficients.hpp"
+
+namespace rbcstab {
+
+namespace {
+
+// Orthonormal basis of x^perp: the last n - 1 columns of x's Householder Q.
+Eigen::MatrixXd tangent_basis(const Eigen::VectorXd& x) {
+  const Eigen::Index n = x.size();
+  const Eigen::MatrixXd Q = Eigen::HouseholderQR<Eigen::MatrixXd>(x).householderQ() * Eigen::MatrixXd::Identity(n, n);
+  return Q.rightCols(n - 1);
+}
+
+}  // namespace
+
+ModalEquilibriumProblem::ModalEquilibriumProblem(const Scene& scene, ContinuationParameter free)
+    : scene_(scene), free_(free), L_(scene.L) {
+  scene_.validate();
+  require(L_ >= 3, "L", L_, "an integer >= 3 (the modal problem needs at least one mode l >= 3)");
+  // The rest shape's orientation from the scene built with Delta0 = Delta > 0 (as equilibrium.cpp):
+  // a branch started at Delta0 = 0 keeps it when continued in Delta0.
+  Scene oriented = scene_;
+  oriented.parameters.Delta0 = oriented.parameters.Delta;
+  const InitialState init = initial_state(oriented);
+  const double g20 = init.g.at(2, 0).real();
+  const double in_plane = std::abs(init.g.at(2, 1)) + std::abs(init.g.at(2, 2));
+  w0_ = g20 <= 0 ? 1.0 : -1.0;  // w0 = -g20 sqrt(a2/Delta0) normalised: +1 for beta = 0
+  if (scene_.parameters.inv_Lambda_S() > 0 && in_plane > 0)
+    throw InvalidArgument("beta", "beta = " + format_value(scene_.beta) +
+                                      " gives the rest shape m = 1, 2 content that rotates with the flow: the modal "
+                                      "l = 2 block is forced with period 2 pi and has no equilibria; use beta = 0, "
+                                      "Delta0 = 0, or continue periodic orbits");
+}
+
+ModalCoefficients ModalEquilibriumProblem::coefficients_at(const Parameters& q) const {
+  q.validate();
+  ModalCoefficients c;
+  c.parameters = q;
+  c.L = L_;
+  c.inv_Lambda = 1 / q.Lambda();
+  c.kappa_w0 = q.inv_Lambda_S() * w0_;
+  for (int l = 2; l <= L_; ++l) {
+    c.slope.push_back(Gamma2(q.lambda, l) / q.B);
+    c.ups0.push_back(Upsilon(q, l, 0.0));
+  }
+  return c;
+}
+
+const ModalCoefficients& ModalEquilibriumProblem::coefficients(double p) const {
+  if (!cache_ || cache_p_ != p) {
+    cache_ = coefficients_at(with_parameter(scene_.parameters, free_, p));
+    cache_p_ = p;
+  }
+  return *cache_;
+}
+
+double ModalEquilibriumProblem::sigma(const ModalCoefficients& c, const Eigen::VectorXd& x) {
+  const double q2 = x.head(5).squaredNorm();
+  // x.h: the forcing's work on the sphere (Re conj(z)(-i/Lambda) = -Im z/Lambda; kappa w0 w).
+  double P = q2 * c.ups0[0] - x[1] * c.inv_Lambda + c.kappa_w0 * x[2];
+  double D = q2 * c.slope[0];
+  for (int l = 3; l <= c.L; ++l) {
+    const double ql = x[index_of_mode(l)] * x[index_of_mode(l)];
+    P += ql * c.ups0[static_cast<std::size_t>(l - 2)];
+    D += ql * c.slope[static_cast<std::size_t>(l - 2)];
+  }
+  return -P / D;
+}
+
+void ModalEquilibriumProblem::l2_dynamics(const ModalCoefficients& c, const Eigen::VectorXd& x2, double sigma,
+                                          Eigen::VectorXd& F2) {
+  const double Y2 = c.upsilon(2, sigma);
+  F2.resize(5);
+  F2[0] = Y2 * x2[0] - x2[1];
+  F2[1] = x2[0] + Y2 * x2[1] - c.inv_Lambda;
+  F2[2] = Y2 * x2[2] + c.kappa_w0;
+  F2[3] = Y2 * x2[3] - 0.5 * x2[4];
+  F2[4] = 0.5 * x2[3] + Y2 * x2[4];
+}
+
+void ModalEquilibriumProblem::l2_jacobian(const ModalCoefficients& c, double sigma, Eigen::MatrixXd& J2) {
+  const double Y2 = c.upsilon(2, sigma);
+  J2 = Y2 * Eigen::MatrixXd::Identity(5, 5);
+  J2(0, 1) = -1;
+  J2(1, 0) = 1;
+  J2(3, 4) = -0.5;
+  J2(4, 3) = 0.5;
+}
+
+void ModalEquilibriumProblem::dynamics(const ModalCoefficients& c, const Eigen::VectorXd& x, Eigen::VectorXd& F) {
+  const double s = sigma(c, x);
+  F.resize(x.size());
+  Eigen::VectorXd F2;
+  l2_dynamics(c, x.head(5), s, F2);
+  F.head(5) = F2;
+  for (int l = 3; l <= c.L; ++l) F[index_of_mode(l)] = c.upsilon(l, s) * x[index_of_mode(l)];
+}
+
+void ModalEquilibriumProblem::dynamics_jacobian(const ModalCoefficients& c, const Eigen::VectorXd& x,
+                                                Eigen::MatrixXd& DF) {
+  const Eigen::Index n = x.size();
+  const double s = sigma(c, x);
+  DF.setZero(n, n);
+  Eigen::MatrixXd J2;
+  l2_jacobian(c, s, J2);
+  DF.topLeftCorner(5, 5) = J2;
+  // DF = diag(Y) + rotation + u grad(sigma)^T, u_i = slope x_i; from sigma = -P/D:
+  // grad sigma = -(grad P + sigma grad D)/D = -(2 x_i Y_i + h_i)/D.
+  Eigen::VectorXd u(n), grad(n);
+  double D = x.head(5).squaredNorm() * c.slope[0];
+  for (Eigen::Index i = 0; i < 5; ++i) {
+    u[i] = c.slope[0] * x[i];
+    grad[i] = 2 * x[i] * c.upsilon(2, s);
+  }
+  grad[1] -= c.inv_Lambda;
+  grad[2] += c.kappa_w0;
+  for (int l = 3; l <= c.L; ++l) {
+    const Eigen::Index i = index_of_mode(l);
+    const double sl = c.slope[static_cast<std::size_t>(l - 2)];
+    DF(i, i) = c.upsilon(l, s);
+    u[i] = sl * x[i];
+    grad[i] = 2 * x[i] * c.upsilon(l, s);
+    D += x[i] * x[i] * sl;
+  }
+  DF -= u * grad.transpose() / D;
+}
+
+void ModalEquilibriumProblem::residual(const Eigen::VectorXd& x, double p, Eigen::VectorXd& G) const {
+  dynamics(coefficients(p), x, G);
+  G += (x.squaredNorm() - 1) * x;
+}
+
+void ModalEquilibriumProblem::jacobian(const Eigen::VectorXd& x, double p, Eigen::MatrixXd& J) const {
+  dynamics_jacobian(coefficients(p), x, J);
+  J += (x.squaredNorm() - 1) * Eigen::MatrixXd::Identity(x.size(), x.size()) + 2 * x * x.transpose();
+}
+
+Eigen::VectorXcd ModalEquilibriumProblem::spectrum(const Eigen::VectorXd& x, double p) const {
+  Eigen::MatrixXd DF;
+  dynamics_jacobian(coefficients(p), x, DF);
+  const Eigen::MatrixXd T = tangent_basis(x);
+  return Eigen::EigenSolver<Eigen::MatrixXd>(T.transpose() * DF * T, false).eigenvalues();
+}
+
+Eigen::VectorXd ModalEquilibriumProblem::ellipsoidal_state(double p) const {
+  const OutOfPlaneEquilibrium e = out_of_plane_equilibrium(with_parameter(scene_.parameters, free_, p));
+  // The closed form is written for w0 = +1; the system is odd in (w, w0). (Built through a
+  // std::vector with the values first: GCC 12 flags element writes into a fresh dynamic Eigen vector as null dereferences.)
+  std::vector<double> x = {e.r * std::cos(e.Psi), -e.r * std::sin(e.Psi), w0_ * e.w};
+  x.resize(static_cast<std::size_t>(dimension()), 0.0);
+  return Eigen::Map<const Eigen::VectorXd>(x.data(), dimension());
+}
+
+ModalState ModalEquilibriumProblem::observe(const Eigen::VectorXd& x, double p) const {
+  const ModalCoefficients& c = coefficients(p);
+  const double Delta = c.parameters.Delta;
+  ModalState s;
+  s.sigma = sigma(c, x);
+  s.r = std::hypot(x[0], x[1]) / std::hypot(std::hypot(x[0], x[1]), x[2]);
+  s.Psi = -std::atan2(x[1], x[0]);
+  if (s.Psi <= -M_PI) s.Psi += 2 * M_PI;
+  s.Delta_l.assign(static_cast<std::size_t>(L_ - 1), 0.0);
+  s.Delta_l[0] = Delta * x.head(5).squaredNorm();
+  for (int l = 3; l <= L_; ++l) s.Delta_l[static_cast<std::size_t>(l - 2)] = Delta * x[index_of_mode(l)] * x[index_of_mode(l)];
+  return s;
+}
+
+std::vector<double> ModalEquilibriumProblem::to_modal_model_state(const Eigen::VectorXd& x, double p) const {
+  const double Delta = coefficients(p).parameters.Delta;
+  const double a2 = a_l(2);
+  const double fz = std::sqrt(Delta / (2 * a2)), fw = -std::sqrt(Delta / a2);
+  std::vector<double> y = {fw * x[2], fz * x[3], fz * x[4], fz * x[0], fz * x[1]};
+  for (int l = 3; l <= L_; ++l) {
+    const double al = x[index_of_mode(l)];
+    require(al != 0, "a_l", al, "non-zero (the modal model carries ln Delta_l)");
+    y.push_back(std::log(Delta * al * al));
+  }
+  return y;
+}
+
+int critical_mode(const ModalEquilibriumProblem& problem, const Eigen::VectorXd& x, double p) {
+  const ModalCoefficients& c = problem.coefficients(p);
+  const double s = ModalEquilibriumProblem::sigma(c, x);
+  int best = 0;
+  for (int l = 3; l <= c.L; ++l) {
+    if (x[ModalEquilibriumProblem::index_of_mode(l)] != 0) continue;  // not an eigendirection there
+    if (best == 0 || std::abs(c.upsilon(l, s)) < std::abs(c.upsilon(best, s))) best = l;
+  }
+  require(best != 0, "x", 0.0, "a state with at least one mode l >= 3 at zero amplitude");
+  return best;
+}
+
+// ---- the branch-point curve ----
+
+ModalBranchPointCurve::ModalBranchPointCurve(const Scene& scene, ContinuationParameter p1, ContinuationParameter p2,
+                                             int l)
+    : scene_(scene), p1_(p1), p2_(p2), l_(l), base_(scene, p1) {
+  require(p1 != p2, "p2", static_cast<double>(static_cast<int>(p2)), "a parameter different from p1");
+  require(l >= 3 && l <= scene.L, "l", l, "in [3, L = " + std::to_string(scene.L) + "]");
+}
+
+Parameters ModalBranchPointCurve::parameters(double p1, double p2) const {
+  return with_parameter(with_parameter(scene_.parameters, p2_, p2), p1_, p1);
+}
+
+void ModalBranchPointCurve::residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const {
+  const ModalCoefficients c = base_.coefficients_at(parameters(X[5], p2));
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(base_.dimension());
+  x.head(5) = X.head(5);
+  const double s = ModalEquilibriumProblem::sigma(c, x);
+  Eigen::VectorXd F2;
+  ModalEquilibriumProblem::l2_dynamics(c, x.head(5), s, F2);
+  R.resize(6);
+  R.head(5) = F2 + (x.squaredNorm() - 1) * x.head(5);
+  // Upsilon_l / |slope_l| = sigma - sigma_l^c: the same zero, scaled to O(sigma).
+  R[5] = c.upsilon(l_, s) / std::abs(c.slope[static_cast<std::size_t>(l_ - 2)]);
+}
+
+Eigen::VectorXcd ModalBranchPointCurve::spectrum(const Eigen::VectorXd& X, double p2) const {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(base_.dimension());
+  x.head(5) = X.head(5);
+  const ModalCoefficients c = base_.coefficients_at(parameters(X[5], p2));
+  Eigen::MatrixXd DF;
+  ModalEquilibriumProblem::dynamics_jacobian(c, x, DF);
+  const Eigen::MatrixXd T = tangent_basis(x);
+  return Eigen::EigenSolver<Eigen::MatrixXd>(T.transpose() * DF * T, false).eigenvalues();
+}
+
+Eigen::VectorXd ModalBranchPointCurve::start(const Eigen::VectorXd& x_bp, double p1_bp) const {
+  Eigen::VectorXd X(6);
+  X << x_bp.head(5), p1_bp;
+  return X;
+}
+
+}  // namespace rbcstab

@@ -1,0 +1,63 @@
+#pragma once
+// Floquet multipliers of a (periodic) trajectory of any model level, matrix-free: the monodromy
+// action v -> Phi(t0 + T, t0) v integrates the variational equation v' = J(t, y(t)) v (J the level's
+// structured Jacobian, applied in O(n)) together with y' = F(t, y) from the given orbit state, so no
+// n x n matrix is ever formed; ARPACK then finds the leading multipliers from a few dozen actions.
+// The orbit itself is an input (the periodic-orbit solver or a long simulation sampled at t0 + kT).
+#include <Eigen/Dense>
+#include <cstddef>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "rbcstab/continuation/eigen_arpack.hpp"
+#include "rbcstab/integrate/integrator.hpp"
+#include "rbcstab/model/system.hpp"
+
+namespace rbcstab {
+
+struct MonodromyOptions {
+  double period = 6.283185307179586;  // T: the forcing period 2 pi of the in-plane scenes
+  // Explicit steppers only (the augmented (y, v) system has no structured Jacobian). Tight
+  // tolerances: the multipliers are only as accurate as each column of Phi.
+  IntegratorOptions integrator = {Stepper::rk8pd, 1e-11, 1e-13};
+  void validate() const;  // throws InvalidArgument naming the field
+};
+
+class MonodromyAction {
+ public:
+  // The trajectory through (t0, y0) of `system`; keeps a reference to system (must outlive this).
+  MonodromyAction(const System& system, std::span<const double> y0, double t0, const MonodromyOptions& options);
+  std::size_t dimension() const { return y0_.size(); }
+  // out = Phi(t0 + T, t0) v. Linear in v: v is integrated scaled to unit norm (the error control then
+  // acts on a fixed scale) and the result scaled back. Returns false (and out = 0) when the
+  // integration fails; failure_reason() says why.
+  bool apply(std::span<const double> v, std::span<double> out) const;
+  // The n x n monodromy matrix, column by column (n integrations): the dense oracle for small n.
+  Eigen::MatrixXd dense(bool* ok = nullptr) const;
+  std::size_t applications() const { return applications_; }
+  const IntegrationCounters& counters() const { return counters_; }  // summed over all actions
+  const std::string& failure_reason() const { return failure_; }
+
+ private:
+  const System& system_;
+  std::vector<double> y0_;
+  double t0_;
+  MonodromyOptions options_;
+  mutable std::size_t applications_ = 0;
+  mutable IntegrationCounters counters_;
+  mutable std::string failure_;
+};
+
+struct FloquetResult {
+  ArpackResult arpack;           // multipliers in arpack.eigenvalues, largest |mu| first
+  std::size_t integrations = 0;  // monodromy actions (one variational integration each)
+  IntegrationCounters counters;  // summed integrator work
+};
+
+// Leading k Floquet multipliers (largest modulus) of the trajectory through (t0, y0) over one period.
+// arpack.which is forced to largest_magnitude. A failed integration gives status failed with the reason.
+FloquetResult leading_floquet_multipliers(const System& system, std::span<const double> y0, double t0,
+                                          const MonodromyOptions& options, ArpackOptions arpack);
+
+}  // namespace rbcstab

@@ -1,0 +1,496 @@
+#include "rbcstab/report/panels.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <iomanip>
+#include <random>
+#include <set>
+#include <sstream>
+#include <toml++/toml.h>
+
+#include "rbcstab/continuation/equilibrium.hpp"
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/io/files.hpp"
+#include "rbcstab/io/json.hpp"
+#include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/sweep/diagram_output.hpp"
+
+namespace rbcstab {
+
+namespace fs = std::filesystem;
+
+namespace {
+toml::table parse_root(const std::string& text, const std::string& source) {
+  try {
+    return toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream msg;
+    msg << source << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
+    throw InvalidArgument("scene", "cannot parse scene file " + msg.str());
+  }
+}
+
+// The table `name`, its keys checked against `allowed` (the message lists them).
+const toml::table* panel_table(const toml::table& root, const std::string& name, const std::set<std::string>& allowed) {
+  const toml::node* node = root.get(name);
+  if (!node) return nullptr;
+  const toml::table* t = node->as_table();
+  if (!t) throw InvalidArgument(name, "scene key '" + name + "' must be a table ([" + name + "])");
+  for (const auto& [k, v] : *t)
+    if (!allowed.count(std::string(k.str()))) {
+      std::string list;
+      for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
+      throw InvalidArgument(name + "." + std::string(k.str()),
+                            "unknown scene key '" + name + "." + std::string(k.str()) + "' (allowed here: " + list + ")");
+    }
+  return t;
+}
+
+std::vector<double> positive_list(const toml::table& t, const std::string& table, const char* key) {
+  const std::string name = table + "." + key;
+  const toml::array* a = t.get(key)->as_array();
+  if (!a || a->empty()) throw InvalidArgument(name, name + " must be a non-empty array of numbers > 0");
+  std::vector<double> out;
+  for (const auto& v : *a) {
+    const auto x = v.value<double>();
+    if (!x) throw InvalidArgument(name, name + " must be a non-empty array of numbers > 0");
+    require(std::isfinite(*x) && *x > 0, name, *x, "finite numbers > 0");
+    out.push_back(*x);
+  }
+  return out;
+}
+
+double number(const toml::table& t, const std::string& table, const char* key) {
+  const auto x = t.get(key)->value<double>();
+  if (!x) throw InvalidArgument(table + "." + key, table + "." + key + " must be a number");
+  return *x;
+}
+
+std::string text(const toml::table& t, const std::string& table, const char* key) {
+  const auto x = t.get(key)->value_exact<std::string>();
+  if (!x) throw InvalidArgument(table + "." + key, table + "." + key + " must be a string");
+  return *x;
+}
+
+std::string csv_value(const Quantity& q) {
+  if (!q.valid()) return "n/a";
+  std::ostringstream ss;
+  ss << std::setprecision(10) << q.value;
+  return ss.str();
+}
+
+std::string fixed(double v, int digits = 1) {
+  std::ostringstream ss;
+  ss << std::fixed << std::setprecision(digits) << v;
+  return ss.str();
+}
+
+std::string symbol_of(Axis a) {
+  switch (a) {
+    case Axis::lnB: return "ln B";
+    case Axis::lnC: return "ln C";
+    default: return to_string(a);
+  }
+}
+
+// Staging folder for the panel's data (a hidden sibling of the report folder), removed at the end.
+struct Staging {
+  fs::path dir;
+  explicit Staging(const std::string& output) {
+    const fs::path out = fs::absolute(output).lexically_normal();
+    const fs::path target = out.has_filename() ? out : out.parent_path();
+    std::random_device rd;
+    std::ostringstream name;
+    name << "." << target.filename().string() << ".panel-" << std::hex << rd() << rd();
+    dir = target.parent_path() / name.str();
+    std::error_code ec;
+    fs::create_directory(dir, ec);
+    if (ec) throw ReportError("output: cannot create " + dir.string() + ": " + ec.message());
+  }
+  ~Staging() {
+    std::error_code ec;
+    fs::remove_all(dir, ec);
+  }
+  Staging(const Staging&) = delete;
+  Staging& operator=(const Staging&) = delete;
+  std::string put(const std::string& name, const std::string& content) const {
+    const std::string path = (dir / name).string();
+    write_file_atomic(path, content);
+    return path;
+  }
+};
+
+std::string parameters_text(const Scene& s, bool with_lambda, bool with_BC) {
+  std::ostringstream ss;
+  ss << std::setprecision(4);
+  const Parameters& p = s.parameters;
+  if (with_lambda) ss << "lambda = " << p.lambda << ", ";
+  ss << "Delta = " << p.Delta << ", Delta0 = " << p.Delta0;
+  if (with_BC) ss << ", B = " << p.B << ", C = " << p.C;
+  ss << ", beta = " << s.beta;
+  return ss.str();
+}
+
+// Title parts in the paper's symbols (mathtext), for the figures; `varied` names what the panel varies.
+std::string tex_parameters(const Scene& s, const std::set<std::string>& varied, bool with_BC, double alpha_fixed = 0) {
+  std::ostringstream ss;
+  ss << std::setprecision(4);
+  const Parameters& p = s.parameters;
+  auto put = [&](const char* name, const char* tex, double v) {
+    if (varied.count(name)) return;
+    ss << "$" << tex << " = ";
+    if (std::isinf(v)) ss << "\\infty";
+    else ss << v;
+    ss << "$, ";
+  };
+  put("lambda", "\\lambda", p.lambda);
+  put("Delta", "\\Delta", p.Delta);
+  put("Delta0", "\\Delta_0", p.Delta0);
+  if (with_BC) {
+    put("B", "\\mathcal{B}", p.B);
+    put("C", "\\mathcal{C}", p.C);
+  }
+  if (alpha_fixed > 0) put("alpha", "\\alpha", alpha_fixed);
+  ss << (std::abs(std::cos(s.beta)) < 0.5 ? "in plane" : "out of plane");
+  return ss.str();
+}
+}  // namespace
+
+std::string to_string(PanelKind k) {
+  switch (k) {
+    case PanelKind::none: return "none";
+    case PanelKind::diagram: return "diagram";
+    case PanelKind::fig6e: return "fig6e";
+    case PanelKind::continuation: return "continuation";
+  }
+  return "none";
+}
+
+PanelKind panel_kind(const std::string& toml_text, const std::string& source) {
+  const toml::table root = parse_root(toml_text, source);
+  std::vector<PanelKind> found;
+  for (auto [name, kind] : {std::pair{"diagram", PanelKind::diagram}, std::pair{"fig6e", PanelKind::fig6e},
+                            std::pair{"continuation", PanelKind::continuation}})
+    if (root.get(name)) found.push_back(kind);
+  if (found.size() > 1)
+    throw InvalidArgument("scene", source + " holds more than one panel table ([diagram], [fig6e], [continuation]): "
+                                            "one figure panel per scene file");
+  return found.empty() ? PanelKind::none : found[0];
+}
+
+Fig6eOptions parse_fig6e_table(const SceneFile& sf, const std::string& toml_text, const std::string& source) {
+  const toml::table root = parse_root(toml_text, source);
+  Fig6eOptions f;
+  const Scene& s = sf.scene;
+  f.Delta = s.parameters.Delta;
+  f.Delta0 = s.parameters.Delta0;
+  f.beta = s.beta;
+  f.delta = s.delta;
+  f.L = s.L;
+  f.T = s.T;
+  f.simulation = sf.options;
+  f.simulation.record_trajectory = false;  // the table keeps tail means only
+  if (const toml::table* t = panel_table(root, "fig6e", {"lambda", "B", "C"})) {
+    if (t->get("lambda")) f.lambdas = positive_list(*t, "fig6e", "lambda");
+    if (t->get("B")) f.B = positive_list(*t, "fig6e", "B");
+    if (t->get("C")) f.C = positive_list(*t, "fig6e", "C");
+  }
+  f.validate();
+  return f;
+}
+
+std::string fig6e_csv(const Fig6eOptions& f, const std::vector<Fig6eRow>& rows) {
+  std::ostringstream ss;
+  ss << "# Fig. 6e: Delta~2 (continuous l_*, integer l_s) vs simulated Delta-bar_2 (T = " << f.T
+     << ", tail mean over " << f.simulation.tail_window << "); n/a: outside domain or stable\n";
+  ss << "lambda,B,C,alpha,ln_alpha,l_s,l_Delta,Delta2_tilde,Delta2_tilde_integer,Delta2_bar,ratio,ratio_integer\n";
+  for (const Fig6eRow& r : rows)
+    ss << r.lambda << ',' << r.B << ',' << r.C << ',' << r.alpha << ',' << r.ln_alpha << ',' << r.surviving_mode << ','
+       << r.l_Delta << ',' << csv_value(r.Delta2_tilde) << ',' << csv_value(r.Delta2_tilde_integer) << ','
+       << csv_value(r.Delta2_bar) << ',' << csv_value(r.ratio) << ',' << csv_value(r.ratio_integer) << '\n';
+  return ss.str();
+}
+
+ContinuationPanel parse_continuation_table(const std::string& toml_text, const std::string& source) {
+  const toml::table root = parse_root(toml_text, source);
+  ContinuationPanel c;
+  const toml::table* t = panel_table(
+      root, "continuation",
+      {"parameter", "min", "max", "direction", "measure", "step", "max_step", "max_points", "relax_T"});
+  if (!t) return c;
+  const std::string T = "continuation";
+  if (t->get("parameter")) {
+    try {
+      c.parameter = continuation_parameter_from_string(text(*t, T, "parameter"));
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument("continuation.parameter", std::string("continuation.parameter: ") + e.what());
+    }
+  }
+  if (t->get("min")) c.engine.p_min = number(*t, T, "min");
+  if (t->get("max")) c.engine.p_max = number(*t, T, "max");
+  require(!(c.engine.p_min >= c.engine.p_max), "continuation.max", c.engine.p_max, "> continuation.min");
+  c.engine.direction = Direction::both;
+  if (t->get("direction")) {
+    const std::string d = text(*t, T, "direction");
+    if (d == "forward") c.engine.direction = Direction::forward;
+    else if (d == "backward") c.engine.direction = Direction::backward;
+    else if (d == "both") c.engine.direction = Direction::both;
+    else throw InvalidArgument("continuation.direction", "continuation.direction = '" + d + "' must be forward, backward or both");
+  }
+  if (t->get("measure")) {
+    c.measure = text(*t, T, "measure");
+    if (c.measure != "r" && c.measure != "Psi")
+      throw InvalidArgument("continuation.measure", "continuation.measure = '" + c.measure + "' must be r or Psi");
+  }
+  if (t->get("step")) c.engine.initial_step = number(*t, T, "step");
+  if (t->get("max_step")) c.engine.max_step = number(*t, T, "max_step");
+  if (t->get("max_points")) {
+    const auto n = t->get("max_points")->value_exact<int64_t>();
+    if (!n) throw InvalidArgument("continuation.max_points", "continuation.max_points must be an integer");
+    require(*n >= 2 && *n <= 1'000'000, "continuation.max_points", double(*n), "an integer in [2, 1000000]");
+    c.engine.max_points = std::size_t(*n);
+  }
+  if (t->get("relax_T")) c.relax_T = number(*t, T, "relax_T");
+  require(std::isfinite(c.relax_T) && c.relax_T >= 0, "continuation.relax_T", c.relax_T, "finite and >= 0");
+  try {
+    c.engine.validate();
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument("continuation", std::string("continuation: ") + e.what());
+  }
+  return c;
+}
+
+nlohmann::json bifurcation_json(const Branch& b, const std::string& parameter, const std::string& measure) {
+  auto value = [&](const Eigen::VectorXd& x) {
+    const PolarState s = polar(x);
+    return number_or_null(measure == "r" ? s.r : s.Psi);
+  };
+  nlohmann::json xs = nlohmann::json::array(), ys = nlohmann::json::array(), st = nlohmann::json::array();
+  for (const BranchPoint& pt : b.points) {
+    xs.push_back(number_or_null(pt.p));
+    ys.push_back(value(pt.x));
+    st.push_back(pt.stable);
+  }
+  nlohmann::json points = nlohmann::json::array(), specials = nlohmann::json::array();
+  for (const SpecialPoint& sp : b.special_points) {
+    points.push_back({{"x", number_or_null(sp.p)}, {"y", value(sp.x)}, {"label", to_string(sp.type)}});
+    specials.push_back({{"type", to_string(sp.type)}, {"name", sp.name}, {parameter, number_or_null(sp.p)},
+                        {measure, value(sp.x)}, {"bracket", {number_or_null(sp.p_lo), number_or_null(sp.p_hi)}},
+                        {"precision", number_or_null(sp.precision)}, {"status", to_string(sp.status)},
+                        {"unstable_before", sp.unstable_before}, {"unstable_after", sp.unstable_after}});
+  }
+  return {{"parameter", parameter},
+          {"measure", measure},
+          {"branches", {{{"label", "equilibria"}, {"x", xs}, {"y", ys}, {"stable", st}}}},
+          {"points", points},
+          {"special_points", specials},
+          {"status", to_string(b.status)},
+          {"message", b.message}};
+}
+
+nlohmann::json phase_overlay_json(const std::vector<TraceCurve>& boundary, const std::vector<Overlay>& lines) {
+  nlohmann::json curves = nlohmann::json::array();
+  std::set<int> labelled;
+  for (const TraceCurve& c : boundary) {
+    std::vector<double> x, y;
+    for (const TracePoint& p : c.points) x.push_back(p.x), y.push_back(p.y);
+    nlohmann::json j{{"x", x}, {"y", y}, {"style", "solid"}, {"color", "black"}, {"width", 2.2}};
+    // One legend entry for the whole traced boundary (its pieces differ only in the active mode).
+    if (labelled.insert(0).second) j["label"] = "traced boundary (asymptotic criterion)";
+    curves.push_back(j);
+  }
+  for (const Overlay& o : lines) {
+    if (o.x.empty()) continue;
+    nlohmann::json j{{"x", o.x}, {"y", o.y}};
+    if (o.name.rfind("l_star=", 0) == 0) {
+      j["label"] = "$l_* = " + o.name.substr(7) + "$";
+      j["style"] = "dashed";
+      j["color"] = "0.25";
+      j["width"] = 1.0;
+      j["label_on_line"] = true;  // many parallel lines: label them in place rather than in the legend
+    } else if (o.name == "alpha_init") {
+      j["label"] = "$\\alpha_*^{\\mathrm{init}}$";
+      j["style"] = "dashdot";
+      j["color"] = "black";
+    } else if (o.name == "C_star_minus") {
+      j["label"] = "$\\mathcal{C}_*^-$";
+      j["style"] = "dotted";
+      j["color"] = "tab:red";
+      j["width"] = 2.2;
+    } else if (o.name == "C_star_plus") {
+      j["label"] = "$\\mathcal{C}_*^+$";
+      j["style"] = "dashed";
+      j["color"] = "tab:red";
+    } else if (o.name == "lambda_star_minus") {
+      j["label"] = "$\\lambda_*^-$";
+      j["style"] = "dashed";
+      j["color"] = "tab:red";
+    } else {
+      j["label"] = o.name;
+      j["style"] = "dotted";
+    }
+    curves.push_back(j);
+  }
+  return {{"curves", curves}};
+}
+
+void PanelOptions::validate() const {
+  require(threads >= 0 && threads <= 4096, "threads", threads, "an integer in [0, 4096] (0: all cores)");
+  require(nx >= 0 && nx <= 1'000'000, "counts", nx, "integers in [1, 1000000] (0: the scene's)");
+  require(ny >= 0 && ny <= 1'000'000, "counts", ny, "integers in [1, 1000000] (0: the scene's)");
+  trace.validate();
+}
+
+PanelReportResult build_panel_report(const SceneFile& sf, const std::string& toml_text, const std::string& source,
+                                     const PanelOptions& panel, const ReportOptions& options) {
+  panel.validate();
+  options.validate();
+  sf.scene.validate();
+  sf.options.validate();
+  PanelReportResult res;
+  res.kind = panel_kind(toml_text, source);
+  if (res.kind == PanelKind::none)
+    throw InvalidArgument("scene", source + " holds no panel table ([diagram], [fig6e] or [continuation])");
+  // Refuse what build_report would refuse before computing anything (a grid can take hours).
+  check_python(options.python);
+  {
+    const fs::path out = fs::absolute(options.output).lexically_normal();
+    const fs::path target = out.has_filename() ? out : out.parent_path();
+    std::error_code ec;
+    if (fs::exists(target, ec) && !options.overwrite)
+      throw InvalidArgument("output", "output: " + target.string() + " exists; pass --overwrite to replace it");
+    if (!fs::is_directory(target.parent_path(), ec))
+      throw ReportError("output: parent folder " + target.parent_path().string() + " does not exist");
+  }
+  ReportOptions ro = options;
+  ro.run_scene = false;
+  ro.scene_toml = toml_text;
+  const auto t0 = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+  Staging staging(options.output);
+  std::ostringstream summary;
+  summary << std::setprecision(4);
+
+  if (res.kind == PanelKind::diagram) {
+    DiagramSpec spec = parse_diagram_table(toml_text, source);
+    if (panel.nx > 0) spec.x.count = panel.nx;
+    if (panel.ny > 0) spec.y.count = panel.ny;
+    spec.validate();
+    DiagramOptions dopt;
+    dopt.threads = panel.threads;
+    dopt.on_progress = panel.on_progress;
+    dopt.stop = panel.stop;
+    const DiagramRun run = run_diagram(sf.scene, sf.options, spec, dopt);
+    if (!run.complete) {
+      res.complete = false;
+      res.status = "interrupted";
+      return res;
+    }
+    for (const PointResult& p : run.points) res.failed += p.verdict == Verdict::failed;
+    std::size_t unstable = 0;
+    for (const PointResult& p : run.points) unstable += p.verdict == Verdict::unstable;
+    const double diagram_seconds = run.seconds;
+    // The traced boundary of the asymptotic criterion (sweep/trace.hpp): the exact equilibrium out of plane,
+    // a time average of sigma_R in plane. Where the library cannot trace (e.g. an unconverged average) the
+    // panel shows the simulations and the analytic lines, and says why.
+    std::vector<TraceCurve> boundary;
+    std::string trace_note;
+    try {
+      const TraceResult tr = trace_boundary(sf.scene, spec, panel.trace);
+      boundary = tr.curves;
+      trace_note = std::to_string(tr.curves.size()) + " pieces, " + std::to_string(tr.corners.size()) +
+                   " mode corners, " + std::to_string(tr.evaluations) + " criterion evaluations, " +
+                   fixed(tr.seconds, 2) + " s";
+    } catch (const InvalidArgument& e) {
+      trace_note = std::string("not traced: ") + e.what();
+    }
+    const std::vector<Overlay> lines = analytic_overlays(sf.scene, spec, 200);  // 200 samples per line: smooth at 900 px
+    // Without the per-point wall-clock seconds: the data behind the figure is the same on every run.
+    ro.phase_diagram = staging.put("phase_diagram.csv", diagram_csv(spec, run.points, DiagramOutputOptions{false}));
+    staging.put("phase_diagram.json", phase_overlay_json(boundary, lines).dump(1) + "\n");
+    nlohmann::json doc = diagram_json(diagram_header(sf.scene, sf.options, spec), spec, run.points, Shard{});
+    AgreementOptions ao;
+    ao.threads = panel.threads;
+    ao.trace_options = panel.trace;
+    doc["agreement"] = agreement_json(sf.scene, spec, run.points, ao);
+    ro.attachments.push_back(staging.put("diagram.json", doc.dump(1) + "\n"));
+    res.status = res.failed ? "failed runs" : "success";
+    res.facts = {{"grid", std::to_string(spec.x.count) + " x " + std::to_string(spec.y.count) + " (" +
+                              symbol_of(spec.x.axis) + " in [" + fixed(spec.x.min, 3) + ", " + fixed(spec.x.max, 3) +
+                              "], " + symbol_of(spec.y.axis) + " in [" + fixed(spec.y.min, 3) + ", " +
+                              fixed(spec.y.max, 3) + "])"},
+                 {"classifier", to_string(spec.classifier)},
+                 {"unstable points", std::to_string(unstable)},
+                 {"failed points", std::to_string(res.failed)},
+                 {"diagram wall time [s]", fixed(diagram_seconds)},
+                 {"traced boundary", trace_note},
+                 {"analytic lines", std::to_string(lines.size())}};
+    if (doc["agreement"].is_object() && doc["agreement"].contains("verdict_fraction"))
+      res.facts.push_back({"asymptotic criterion agrees (verdict / mode)",
+                           fixed(100 * doc["agreement"]["verdict_fraction"].get<double>()) + "% / " +
+                               fixed(100 * doc["agreement"]["mode_fraction"].get<double>()) + "%"});
+    summary << "Phase diagram by direct simulation (modal level, L = " << sf.scene.L << ", T = " << sf.scene.T
+            << ") over " << symbol_of(spec.x.axis) << " and " << symbol_of(spec.y.axis) << ", coloured by l_Delta ("
+            << to_string(spec.classifier) << " classifier), with the traced stability boundary and the paper's "
+            << "analytic lines. Base scene: "
+            << parameters_text(sf.scene, spec.x.axis != Axis::lambda && spec.y.axis != Axis::lambda, false) << ".";
+    ro.figure_title = sf.scene.name + ": " + tex_parameters(sf.scene, {to_string(spec.x.axis), to_string(spec.y.axis)},
+                                                            false, spec.alpha);
+  } else if (res.kind == PanelKind::fig6e) {
+    const Fig6eOptions f = parse_fig6e_table(sf, toml_text, source);
+    const std::vector<Fig6eRow> rows = fig6e_table(f);
+    std::size_t compared = 0;
+    for (const Fig6eRow& r : rows) {
+      compared += r.ratio.valid();
+      // A row whose run did not finish says so in its reason (a stable run is not a failure).
+      res.failed += !r.Delta2_bar.valid() && r.l_Delta != 2;
+    }
+    ro.delta2_comparison = staging.put("fig6e.csv", fig6e_csv(f, rows));
+    res.status = res.failed ? "failed runs" : "success";
+    res.facts = {{"rows (lambda x B x C)", std::to_string(rows.size())},
+                 {"rows compared (unstable, theory defined)", std::to_string(compared)},
+                 {"rows without a simulated value (failed or stable)", std::to_string(rows.size() - compared)},
+                 {"T, L", fixed(f.T, 0) + ", " + std::to_string(f.L)}};
+    summary << "Fig. 6e: the post-instability excess area Delta~2 of Eq. ss (continuous l_*) against the simulated "
+            << "long-time mean Delta-bar_2, over lambda, B and C (" << rows.size() << " runs, Delta = " << f.Delta
+            << ", Delta0 = " << f.Delta0 << ", beta = " << f.beta << ").";
+    ro.figure_title = sf.scene.name + ": " + tex_parameters(sf.scene, {"lambda"}, false);
+  } else {
+    const ContinuationPanel c = parse_continuation_table(toml_text, source);
+    const ReducedEquilibriumProblem problem(sf.scene, c.parameter);  // throws InvalidArgument("beta") if forced
+    const Branch b = continue_branch(problem, problem.relaxed_state(c.relax_T), problem.start_parameter(), c.engine);
+    const std::string name = to_string(c.parameter);
+    ro.bifurcation = staging.put("bifurcation.json", bifurcation_json(b, name, c.measure).dump(1) + "\n");
+    res.status = to_string(b.status);
+    // A branch that ends on the edge of the parameter's domain has ended normally (as `rbcstab continue`).
+    res.failed = b.status != ContinuationStatus::completed && b.status != ContinuationStatus::outside_domain;
+    std::string specials;
+    for (const SpecialPoint& sp : b.special_points) {
+      std::ostringstream ss;
+      ss << std::setprecision(8) << to_string(sp.type) << " at " << name << " = " << sp.p;
+      specials += (specials.empty() ? "" : "; ") + ss.str();
+    }
+    res.facts = {{"points", std::to_string(b.points.size())},
+                 {"status", res.status + (b.message.empty() ? "" : " (" + b.message + ")")},
+                 {"special points", specials.empty() ? "none" : specials},
+                 {"Newton iterations", std::to_string(b.counters.newton_iterations)}};
+    summary << "Bifurcation diagram: equilibria of the reduced system (out-of-plane rest shape) continued in " << name
+            << " from " << problem.start_parameter() << ", " << c.measure
+            << " against " << name << "; stable solid, unstable dashed, special points (AUTO-07p labels) marked. "
+            << "Base scene: " << parameters_text(sf.scene, c.parameter != ContinuationParameter::lambda, true) << ".";
+    // Lambda moves Delta, S moves C (parameters.hpp): those are varied too.
+    std::set<std::string> varied{name};
+    if (c.parameter == ContinuationParameter::Lambda) varied.insert("Delta");
+    if (c.parameter == ContinuationParameter::S) varied.insert("C");
+    ro.figure_title = sf.scene.name + ": " + tex_parameters(sf.scene, varied, true);
+  }
+  res.compute_seconds = elapsed();
+  res.facts.push_back({"computation wall time [s]", fixed(res.compute_seconds)});
+  ro.panel_summary = summary.str();
+  ro.panel_facts = res.facts;
+  res.report = build_report(sf, ro);
+  return res;
+}
+
+}  // namespace rbcstab

@@ -1,0 +1,83 @@
+#pragma once
+// One command per paper figure panel. A scene file with a panel table is a figure panel:
+//   [diagram]       a phase diagram by simulation (sweep/diagram_file.hpp; Figs. 4, 5, Appendix E), drawn
+//                   with the traced boundary (out-of-plane scenes) and the paper's analytic lines on top;
+//   [fig6e]         the Fig. 6e table (analysis/post_instability.hpp): Delta~2 against the simulated mean;
+//   [continuation]  an equilibrium branch of the reduced system (continuation/equilibrium.hpp), drawn as a
+//                   bifurcation diagram (stable solid, unstable dashed, special points labelled).
+// build_panel_report computes the panel's data and hands it to build_report's hooks.
+#include <atomic>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "rbcstab/analysis/post_instability.hpp"
+#include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/report/report.hpp"
+#include "rbcstab/sweep/agreement.hpp"
+#include "rbcstab/sweep/diagram.hpp"
+#include "rbcstab/sweep/trace.hpp"
+
+namespace rbcstab {
+
+enum class PanelKind { none, diagram, fig6e, continuation };
+std::string to_string(PanelKind k);
+// The panel table the scene file holds: none, or exactly one (two throw InvalidArgument("scene", ...)).
+PanelKind panel_kind(const std::string& toml_text, const std::string& source = "scene");
+
+// [fig6e]: lambda = [1, 5], B = [1, ..., 10], C = [0.01, ...] (each optional: Fig6eOptions' defaults, the
+// paper's grid). Delta, Delta0, beta, delta, L, T and the integrator come from the scene, so the table
+// runs what the scene says. Unknown keys and bad values throw InvalidArgument naming "fig6e.<key>".
+Fig6eOptions parse_fig6e_table(const SceneFile& scene, const std::string& toml_text, const std::string& source = "scene");
+// "# ..." comment, then lambda,B,C,alpha,ln_alpha,l_s,l_Delta,Delta2_tilde,Delta2_tilde_integer,Delta2_bar,ratio,
+// ratio_integer; n/a where a quantity is outside its domain (stable run, failed run). Also `post --fig6e`.
+std::string fig6e_csv(const Fig6eOptions& options, const std::vector<Fig6eRow>& rows);
+
+// [continuation]: parameter (lambda Delta Delta0 B C Lambda S), min, max, direction (forward backward both),
+// measure (r or Psi: the y axis), step, max_step, max_points, relax_T. Unknown keys and bad values throw
+// InvalidArgument naming "continuation.<key>".
+struct ContinuationPanel {
+  ContinuationParameter parameter = ContinuationParameter::lambda;
+  std::string measure = "Psi";  // the tank-treading angle shows the fold at Lambda = 1; r is 1 on that branch
+  double relax_T = 200;         // relaxation that gives the start state (as `rbcstab continue --relax-T`)
+  ContinuationOptions engine;   // p_min, p_max, direction, steps; validated by continue_branch
+};
+ContinuationPanel parse_continuation_table(const std::string& toml_text, const std::string& source = "scene");
+// The branch in the layout rbcstab_report.py draws: {"parameter", "measure", "branches": [{"label", "x", "y",
+// "stable"}], "points": [{"x", "y", "label"}]}, plus "special_points" with type, bracket, precision and status.
+nlohmann::json bifurcation_json(const Branch& branch, const std::string& parameter, const std::string& measure);
+
+// The phase diagram's overlay {"curves": [{"label", "x", "y", "style", "color"}]}: the traced boundary
+// pieces (solid black, one legend entry per mode) and the analytic lines (dashed / dotted; C_*^± red).
+nlohmann::json phase_overlay_json(const std::vector<TraceCurve>& boundary, const std::vector<Overlay>& lines);
+
+struct PanelOptions {
+  int threads = 0;           // diagram worker threads; 0 = all cores (the points are independent)
+  int nx = 0, ny = 0;        // > 0: override the scene's [diagram] counts (a quick look at a coarse grid)
+  TraceOptions trace;        // the traced boundary (criterion, start search, step cap)
+  std::function<void(const Progress&)> on_progress;  // diagram progress (called on the calling thread)
+  const std::atomic<bool>* stop = nullptr;           // set to stop a diagram early (then nothing is drawn)
+  void validate() const;     // names the field
+};
+
+struct PanelReportResult {
+  PanelKind kind = PanelKind::none;
+  ReportResult report;
+  bool complete = true;        // false: the panel's computation did not finish (diagram stopped) and no folder was written
+  std::size_t failed = 0;      // diagram points or Fig. 6e rows whose run did not reach T; a branch that was lost
+  std::string status;          // continuation: the branch status; otherwise "success" or "failed runs"
+  double compute_seconds = 0;  // the panel's computation (drawing excluded)
+  std::vector<std::pair<std::string, std::string>> facts;  // also shown on the report's "Panel" table
+};
+
+// Runs the panel of a scene file holding a panel table and writes its report folder (options.output).
+// Throws InvalidArgument for bad input (InvalidArgument("scene", ...) if the file holds no panel table),
+// ReportError when drawing or writing fails, as build_report.
+PanelReportResult build_panel_report(const SceneFile& scene, const std::string& toml_text, const std::string& source,
+                                     const PanelOptions& panel, const ReportOptions& options);
+
+}  // namespace rbcstab

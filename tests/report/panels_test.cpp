@@ -1,0 +1,249 @@
+// Figure panels (report/panels.hpp): the [fig6e] and [continuation] tables, the bifurcation data against
+// the closed-form vesicle branch, the phase-diagram overlay against the traced boundary, and a tiny
+// diagram panel end to end (PNG of the declared size; its CSV equals an independent single-thread run).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <unistd.h>
+
+#include "rbcstab/continuation/equilibrium.hpp"
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/io/files.hpp"
+#include "rbcstab/report/panels.hpp"
+#include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/sweep/diagram_output.hpp"
+
+namespace rbcstab {
+namespace {
+namespace fs = std::filesystem;
+
+const std::string kBase = R"(name = "panel"
+[parameters]
+lambda = 1.0
+Delta = 0.8
+Delta0 = 0.02
+B = 2.0
+C = 0.04
+[initial]
+beta = 0.001
+delta = 1e-4
+[run]
+L = 6
+T = 40
+)";
+
+std::string expect_invalid(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const InvalidArgument& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no InvalidArgument";
+  return "";
+}
+
+TEST(PanelKind, OneTableAtMost) {
+  EXPECT_EQ(panel_kind(kBase), PanelKind::none);
+  EXPECT_EQ(panel_kind(kBase + "[diagram]\ncounts = [2, 2]\n"), PanelKind::diagram);
+  EXPECT_EQ(panel_kind(kBase + "[fig6e]\nB = [1.0]\n"), PanelKind::fig6e);
+  EXPECT_EQ(panel_kind(kBase + "[continuation]\nparameter = \"C\"\n"), PanelKind::continuation);
+  const std::string m = expect_invalid([] { (void)panel_kind(kBase + "[fig6e]\n[continuation]\n", "two.toml"); });
+  EXPECT_NE(m.find("more than one panel table"), std::string::npos) << m;
+  // The scene parser accepts the panel tables (and ignores them).
+  EXPECT_NO_THROW((void)parse_scene(kBase + "[fig6e]\nB = [1.0]\n"));
+  EXPECT_NO_THROW((void)parse_scene(kBase + "[continuation]\nmin = 0.5\n"));
+}
+
+TEST(Fig6eTable, TakesTheRunFromTheSceneAndNamesBadKeys) {
+  const std::string text = kBase + "[fig6e]\nlambda = [2.0]\nB = [1.0, 3.0]\nC = [0.05]\n";
+  const SceneFile sf = parse_scene(text);
+  const Fig6eOptions f = parse_fig6e_table(sf, text);
+  EXPECT_EQ(f.lambdas, std::vector<double>{2.0});
+  EXPECT_EQ(f.B, (std::vector<double>{1.0, 3.0}));
+  EXPECT_EQ(f.C, std::vector<double>{0.05});
+  EXPECT_EQ(f.Delta, 0.8);
+  EXPECT_EQ(f.Delta0, 0.02);
+  EXPECT_EQ(f.L, 6);
+  EXPECT_EQ(f.T, 40.0);
+  EXPECT_EQ(f.delta, 1e-4);
+  // Absent keys: the paper's grid.
+  const Fig6eOptions d = parse_fig6e_table(sf, kBase + "[fig6e]\n");
+  EXPECT_EQ(d.B.size(), 10u);
+  EXPECT_EQ(d.C.size(), 4u);
+  std::string m = expect_invalid([&] { (void)parse_fig6e_table(sf, kBase + "[fig6e]\nkappa = 1\n"); });
+  EXPECT_NE(m.find("fig6e.kappa"), std::string::npos) << m;
+  m = expect_invalid([&] { (void)parse_fig6e_table(sf, kBase + "[fig6e]\nB = [1.0, -2.0]\n"); });
+  EXPECT_NE(m.find("fig6e.B"), std::string::npos) << m;
+  EXPECT_NE(m.find("> 0"), std::string::npos) << m;
+  m = expect_invalid([&] { (void)parse_fig6e_table(sf, kBase + "[fig6e]\nC = \"x\"\n"); });
+  EXPECT_NE(m.find("fig6e.C"), std::string::npos) << m;
+}
+
+// The CSV carries the table's values: read back, every number equals the row's to the 10 printed digits.
+TEST(Fig6eTable, CsvRoundTripsTheRows) {
+  const std::string text = kBase + "[fig6e]\nlambda = [1.0]\nB = [2.0]\nC = [0.01, 0.04]\n";
+  const SceneFile sf = parse_scene(text);
+  const Fig6eOptions f = parse_fig6e_table(sf, text);
+  const std::vector<Fig6eRow> rows = fig6e_table(f);
+  ASSERT_EQ(rows.size(), 2u);
+  std::istringstream in(fig6e_csv(f, rows));
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("# Fig. 6e", 0), 0u);
+  std::getline(in, line);
+  EXPECT_EQ(line, "lambda,B,C,alpha,ln_alpha,l_s,l_Delta,Delta2_tilde,Delta2_tilde_integer,Delta2_bar,ratio,ratio_integer");
+  for (const Fig6eRow& r : rows) {
+    ASSERT_TRUE(std::getline(in, line));
+    std::vector<std::string> cells;
+    std::stringstream ls(line);
+    for (std::string c; std::getline(ls, c, ',');) cells.push_back(c);
+    ASSERT_EQ(cells.size(), 12u);
+    EXPECT_DOUBLE_EQ(std::stod(cells[2]), r.C);
+    EXPECT_EQ(std::stoi(cells[6]), r.l_Delta);
+    auto same = [&](const std::string& cell, const Quantity& q) {
+      if (!q.valid()) {
+        EXPECT_EQ(cell, "n/a");
+        return;
+      }
+      EXPECT_NEAR(std::stod(cell), q.value, 1e-9 * std::abs(q.value));  // 10 significant digits printed
+    };
+    same(cells[7], r.Delta2_tilde);
+    same(cells[9], r.Delta2_bar);
+    same(cells[10], r.ratio);
+  }
+}
+
+TEST(ContinuationTable, ParsesAndNamesBadKeys) {
+  const ContinuationPanel c = parse_continuation_table(
+      kBase + "[continuation]\nparameter = \"C\"\nmin = 0.01\nmax = 2.0\ndirection = \"forward\"\nmeasure = \"r\"\n"
+              "max_points = 50\n");
+  EXPECT_EQ(c.parameter, ContinuationParameter::C);
+  EXPECT_EQ(c.engine.p_min, 0.01);
+  EXPECT_EQ(c.engine.p_max, 2.0);
+  EXPECT_EQ(c.engine.direction, Direction::forward);
+  EXPECT_EQ(c.measure, "r");
+  EXPECT_EQ(c.engine.max_points, 50u);
+  for (const auto& [table, name] :
+       {std::pair{"measure = \"Q\"\n", "continuation.measure"}, std::pair{"parameter = \"kappa\"\n", "continuation.parameter"},
+        std::pair{"direction = \"up\"\n", "continuation.direction"}, std::pair{"min = 2.0\nmax = 1.0\n", "continuation.max"},
+        std::pair{"max_points = 1\n", "continuation.max_points"}, std::pair{"colour = 1\n", "continuation.colour"}}) {
+    const std::string m = expect_invalid([&] { (void)parse_continuation_table(kBase + "[continuation]\n" + table); });
+    EXPECT_NE(m.find(name), std::string::npos) << table << ": " << m;
+  }
+}
+
+// Oracle: at C = inf the tank-treading equilibria are r = 1, Psi = +-arccos(Lambda) (docs/continuation.md,
+// design/model.md section 4), stable for Psi > 0; the fold (LP) is at Lambda = 1.
+TEST(BifurcationJson, VesicleBranchFollowsTheClosedForm) {
+  std::string text = kBase + "[continuation]\nmin = 0.0\nmax = 10.0\nmeasure = \"Psi\"\n";
+  text.replace(text.find("C = 0.04"), 8, "C = inf");
+  text.replace(text.find("beta = 0.001"), 12, "beta = 0.0");
+  const SceneFile sf = parse_scene(text);
+  const ContinuationPanel c = parse_continuation_table(text);
+  const ReducedEquilibriumProblem problem(sf.scene, c.parameter);
+  const Branch b = continue_branch(problem, problem.relaxed_state(c.relax_T), problem.start_parameter(), c.engine);
+  const nlohmann::json j = bifurcation_json(b, "lambda", c.measure);
+  ASSERT_EQ(j.at("branches").size(), 1u);
+  const auto& br = j.at("branches")[0];
+  ASSERT_EQ(br.at("x").size(), b.points.size());
+  ASSERT_GT(b.points.size(), 10u);
+  Parameters p = sf.scene.parameters;
+  for (std::size_t k = 0; k < b.points.size(); ++k) {
+    p.lambda = br.at("x")[k].get<double>();
+    const double psi = br.at("y")[k].get<double>();
+    // Newton converges to 1e-12 (newton_tol); arccos loses up to sqrt of that near Lambda = 1.
+    EXPECT_NEAR(std::abs(psi), std::acos(std::min(1.0, p.Lambda())), 2e-6) << "lambda = " << p.lambda;
+    if (std::abs(psi) > 1e-3) {
+      EXPECT_EQ(br.at("stable")[k].get<bool>(), psi > 0) << "lambda = " << p.lambda;
+    }
+  }
+  bool lp = false;
+  for (const auto& sp : j.at("points"))
+    if (sp.at("label") == "LP") {
+      lp = true;
+      p.lambda = sp.at("x").get<double>();
+      EXPECT_NEAR(p.Lambda(), 1.0, 1e-6);  // located to 1e-8 in the parameter (docs/continuation.md)
+    }
+  EXPECT_TRUE(lp);
+}
+
+TEST(PhaseOverlay, HoldsTheTracedBoundaryAndTheAnalyticLines) {
+  TraceCurve a, b;
+  a.l = 3;
+  a.points = {TracePoint{0, 1, 3, 0, 0, 0}, TracePoint{1, 2, 3, 0, 0, 0}};
+  b.l = 4;
+  b.points = {TracePoint{1, 2, 4, 0, 0, 0}, TracePoint{2, 2.5, 4, 0, 0, 0}};
+  const std::vector<Overlay> lines{{"l_star=2.5", {0, 1}, {-3, -2}}, {"C_star_plus", {0, 2}, {1, 1}}, {"empty", {}, {}}};
+  const nlohmann::json o = phase_overlay_json({a, b}, lines);
+  const auto& c = o.at("curves");
+  ASSERT_EQ(c.size(), 4u);  // two boundary pieces, two non-empty lines
+  EXPECT_EQ(c[0].at("x"), (std::vector<double>{0, 1}));
+  EXPECT_EQ(c[1].at("y"), (std::vector<double>{2, 2.5}));
+  EXPECT_TRUE(c[0].contains("label"));
+  EXPECT_FALSE(c[1].contains("label"));  // one legend entry for the boundary
+  EXPECT_EQ(c[2].at("label"), "$l_* = 2.5$");
+  EXPECT_EQ(c[3].at("label"), "$\\mathcal{C}_*^+$");
+}
+
+fs::path fresh_dir(const std::string& name) {
+  const fs::path d = fs::path(::testing::TempDir()) / ("rbcstab_panels_test_" + name + "_" + std::to_string(getpid()));
+  fs::remove_all(d);
+  fs::create_directories(d);
+  return d;
+}
+
+// A 4 x 3 diagram panel end to end; the data behind the figure equals an independent single-thread run.
+TEST(PanelReport, TinyDiagramBuildsAndItsDataEqualAnIndependentRun) {
+  const std::string text = kBase + "[diagram]\naxes = [\"lnB\", \"lnC\"]\nx_range = [-1.0, 6.0]\n"
+                                   "y_range = [-5.5, 2.0]\ncounts = [9, 9]\nclassifier = \"final\"\n";
+  const SceneFile sf = parse_scene(text);
+  const fs::path parent = fresh_dir("diagram");
+  ReportOptions ro;
+  ro.output = (parent / "panel").string();
+  PanelOptions po;
+  po.threads = 2;
+  po.nx = 4;
+  po.ny = 3;
+  po.trace.lines = 20;
+  const PanelReportResult r = build_panel_report(sf, text, "tiny.toml", po, ro);
+  EXPECT_EQ(r.kind, PanelKind::diagram);
+  EXPECT_TRUE(r.complete);
+  EXPECT_EQ(r.failed, 0u);
+  const fs::path dir = parent / "panel";
+  for (const char* f : {"index.html", "README.md", "report.json", "scene.toml", "phase_diagram.csv",
+                        "phase_diagram_overlay.json", "diagram.json", "fig_phase_diagram.png"})
+    EXPECT_TRUE(fs::is_regular_file(dir / f)) << f;
+  EXPECT_EQ(read_file((dir / "scene.toml").string()), text);  // reproduces the panel, [diagram] table included
+  EXPECT_GT(fs::file_size(dir / "fig_phase_diagram.png"), 1000u);
+  // No staging folder is left behind.
+  int entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(parent)) ++entries;
+  EXPECT_EQ(entries, 1);
+  DiagramSpec spec = parse_diagram_table(text);
+  spec.x.count = 4;
+  spec.y.count = 3;
+  DiagramOptions one;
+  one.threads = 1;
+  const DiagramRun serial = run_diagram(sf.scene, sf.options, spec, one);
+  EXPECT_EQ(read_file((dir / "phase_diagram.csv").string()), diagram_csv(spec, serial.points, DiagramOutputOptions{false}));
+  const nlohmann::json overlay = nlohmann::json::parse(read_file((dir / "phase_diagram_overlay.json").string()));
+  EXPECT_GE(overlay.at("curves").size(), 2u);  // the traced boundary and at least the l_* = 2.5 line
+}
+
+TEST(PanelReport, SceneWithoutPanelTableIsRefused) {
+  const SceneFile sf = parse_scene(kBase);
+  ReportOptions ro;
+  ro.output = (fresh_dir("none") / "x").string();
+  const std::string m = expect_invalid([&] { (void)build_panel_report(sf, kBase, "plain.toml", {}, ro); });
+  EXPECT_NE(m.find("no panel table"), std::string::npos) << m;
+  PanelOptions bad;
+  bad.threads = -1;
+  const std::string m2 = expect_invalid([&] { (void)build_panel_report(sf, kBase, "plain.toml", bad, ro); });
+  EXPECT_NE(m2.find("threads"), std::string::npos) << m2;
+}
+
+}  // namespace
+}  // namespace rbcstab
