@@ -511,6 +511,12 @@ void OrbitTwoParameterProblem::jacobian(const Eigen::VectorXd& X, double p1, dou
   orbit_.jacobian(X, p1, J);
 }
 
+void OrbitTwoParameterProblem::parameter_derivative(const Eigen::VectorXd& X, double p1, double p2,
+                                                    Eigen::VectorXd& Fp) const {
+  at(p2);
+  orbit_.parameter_derivative(X, p1, Fp);
+}
+
 void OrbitTwoParameterProblem::antiperiodic_jacobian(const Eigen::VectorXd& X, double p1, double p2,
                                                      Eigen::MatrixXd& J) const {
   at(p2);

@@ -207,6 +207,7 @@ class OrbitTwoParameterProblem final : public TwoParameterProblem {
   Eigen::Index dimension() const override { return orbit_.dimension(); }
   void residual(const Eigen::VectorXd& X, double p1, double p2, Eigen::VectorXd& F) const override;
   void jacobian(const Eigen::VectorXd& X, double p1, double p2, Eigen::MatrixXd& J) const override;
+  void parameter_derivative(const Eigen::VectorXd& X, double p1, double p2, Eigen::VectorXd& Fp) const override;
   std::string name1() const override { return system_.name1(); }
   std::string name2() const override { return system_.name2(); }
   void antiperiodic_jacobian(const Eigen::VectorXd& X, double p1, double p2, Eigen::MatrixXd& J) const;
