@@ -11,9 +11,12 @@
 #include "checks.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "rbcstab/continuation/branch_point_curve.hpp"
 #include "rbcstab/continuation/branch_switch.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"
+#include "rbcstab/continuation/hopf_curve.hpp"
+#include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/core/error.hpp"
@@ -36,6 +39,11 @@ struct ContinueOptions {
   bool json = false;
   std::string csv;
   bool switch_at_bp = false;  // continue the bifurcating branch from the first BP (equilibrium, modal)
+  // --curve: the two-parameter curve of the point-th special point of this type, in (parameter, parameter2).
+  std::string curve;
+  std::string parameter2;
+  double p2_min = -INFINITY, p2_max = INFINITY;
+  int point = 1;
 };
 
 std::string branch_csv(const Branch& b, const std::string& name) {
@@ -224,15 +232,184 @@ int report(const ContinueOptions& o, const SceneFile& sf, const Branch& b, const
   return kOk;
 }
 
+// ---- --curve: a special point's curve in two parameters ----
+
+// The point-th special point of type `type` on b (located: the curve systems start from an exact point).
+const SpecialPoint& pick_point(const Branch& b, const std::string& type, int point) {
+  int k = 0;
+  for (const auto& sp : b.special_points) {
+    if (to_string(sp.type) != type) continue;
+    if (++k < point) continue;
+    if (sp.status != LocationStatus::located)
+      throw std::runtime_error("--curve " + type + ": special point " + sp.name + " at " + b.parameter_names.front() +
+                               " = " + std::to_string(sp.p) + " was not located (" + to_string(sp.status) +
+                               "); its curve needs an exact start");
+    return sp;
+  }
+  throw std::runtime_error("--curve " + type + ": the one-parameter branch has " + std::to_string(k) + " " + type +
+                           " point(s), --point " + std::to_string(point) + " asked for; widen --min/--max");
+}
+
+// Output of a curve: the underlying point's state by symbol (describe(x, p1, p2)) and, for HB, omega.
+using DescribeCurve = std::function<nlohmann::json(const Eigen::VectorXd& x, double p1, double p2)>;
+
+int report_curve(const ContinueOptions& o, const SceneFile& sf, const Branch& one, const SpecialPoint& start,
+                 const ContinuationProblem& curve, const Branch& c, Eigen::Index n, const DescribeCurve& describe,
+                 const std::string& spectrum_key, const std::function<double(const Eigen::VectorXd&)>& omega) {
+  // describe a curve point X (first n entries: the state, then p1 at n except for the modal BP curve).
+  auto state = [&](const Eigen::VectorXd& X, double p2) {
+    const double p1 = curve.parameter_values(X, p2)[0];
+    nlohmann::json j = describe(X.head(n), p1, p2);
+    if (omega) j["omega"] = number_or_null(omega(X));
+    return j;
+  };
+  if (!o.csv.empty()) {
+    std::ostringstream ss;
+    ss << std::setprecision(17) << o.parameter << ',' << o.parameter2 << ",r,Psi" << (omega ? ",omega" : "")
+       << ",stable,n_unstable\n";
+    for (const auto& pt : c.points) {
+      const nlohmann::json j = state(pt.x, pt.p);
+      ss << pt.parameters[0] << ',' << pt.parameters[1] << ',' << j["r"].get<double>() << ',' << j["Psi"].get<double>();
+      if (omega) ss << ',' << j["omega"].get<double>();
+      ss << ',' << (pt.stable ? 1 : 0) << ',' << pt.n_unstable << '\n';
+    }
+    write_file_atomic(o.csv, ss.str());
+  }
+  if (o.json) {
+    nlohmann::json j = branch_json(c, [&](const Eigen::VectorXd& X, double p2) { return state(X, p2); }, spectrum_key);
+    j["kind"] = o.kind;
+    j["level"] = o.kind == "modal" ? "modal" : "reduced";
+    j["free_parameter"] = o.parameter2;
+    j["parameters"] = to_json(sf.scene.parameters);
+    j["beta"] = sf.scene.beta;
+    if (o.kind == "orbit") j["segments"] = o.orbit.segments;
+    nlohmann::json st;
+    st["type"] = to_string(start.type);
+    st["name"] = start.name;
+    st[o.parameter] = number_or_null(start.p);
+    st[o.parameter2] = number_or_null(get_parameter(sf.scene.parameters, continuation_parameter_from_string(o.parameter2)));
+    st["precision"] = number_or_null(start.precision);
+    st["status"] = to_string(start.status);
+    j["curve"] = {{"type", o.curve}, {"parameters", {o.parameter, o.parameter2}}, {"start", st},
+                  {"one_parameter_points", one.points.size()}};
+    std::cout << j.dump(2) << "\n";
+  } else {
+    std::cout << std::setprecision(10) << o.curve << " curve from " << start.name << " (" << o.parameter << " = "
+              << start.p << "): " << c.points.size() << " points in (" << o.parameter << ", " << o.parameter2
+              << "), " << o.parameter2 << " from " << c.points.front().p << " to " << c.points.back().p << ", status "
+              << to_string(c.status) << " (" << c.message << ")\n";
+    for (const auto& sp : c.special_points)
+      std::cout << sp.name << " " << o.parameter << " = " << sp.parameters[0] << ", " << o.parameter2 << " = "
+                << sp.parameters[1] << " (" << to_string(sp.status) << ", precision " << sp.precision << ")\n";
+  }
+  if (c.status != ContinuationStatus::completed && c.status != ContinuationStatus::outside_domain) {
+    std::cerr << "rbcstab: curve continuation stopped: " << to_string(c.status) << ": " << c.message << "\n";
+    return kRunFailed;
+  }
+  return kOk;
+}
+
+// The curve run: validates the combination, runs the curve from the chosen point of `one`.
+int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
+  const ContinuationParameter q1 = continuation_parameter_from_string(o.parameter);
+  const ContinuationParameter q2 = [&] {
+    try {
+      return continuation_parameter_from_string(o.parameter2);
+    } catch (const InvalidArgument&) {
+      throw InvalidArgument("parameter2", "parameter2 = '" + o.parameter2 +
+                                              "' is not a continuation parameter: must be one of lambda, Delta, "
+                                              "Delta0, B, C, Lambda, S");
+    }
+  }();
+  require_independent(q1, q2, "parameter2");
+  const SpecialPoint* sp = nullptr;
+  try {
+    sp = &pick_point(one, o.curve, o.point);
+  } catch (const std::runtime_error& e) {
+    std::cerr << "rbcstab: " << e.what() << "\n";
+    return kRunFailed;
+  }
+  ContinuationOptions engine = o.engine;
+  engine.events.clear();  // the one-parameter events read the one-parameter state
+  engine.p_min = o.p2_min;
+  engine.p_max = o.p2_max;
+  engine.direction = Direction::both;
+  Scene scene = sf.scene;
+  scene.parameters = with_parameter(scene.parameters, q1, sp->p);  // the curve's start
+  const double p2_0 = get_parameter(scene.parameters, q2);
+  auto polar_of = [](const Eigen::VectorXd& y, double, double) { return polar_json(y.head(3)); };
+  if (o.kind == "orbit") {
+    const ReducedForcedSystem2 system(scene, q1, q2);
+    const OrbitTwoParameterProblem base(system, o.orbit);
+    const Eigen::Index n = base.dimension();
+    if (o.curve == "LPC") {
+      const FoldCurveProblem curve(base, *sp, p2_0);
+      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, polar_of,
+                          "multipliers", nullptr);
+    }
+    const PeriodDoublingCurveProblem curve(base, *sp, p2_0);
+    return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, polar_of,
+                        "multipliers", nullptr);
+  }
+  if (o.kind == "modal") {
+    const SceneTwoParameterProblem<ModalEquilibriumProblem> base(scene, q1, q2);
+    const DescribeCurve modal_of = [&](const Eigen::VectorXd& x, double p1, double p2) {
+      Eigen::VectorXd full = Eigen::VectorXd::Zero(base.dimension());
+      full.head(x.size()) = x;
+      return modal_json(base.at(p2), full, p1);
+    };
+    if (o.curve == "BP") {
+      // The symmetry-breaking BP of mode l: ModalBranchPointCurve (the ellipsoidal l = 2 block plus
+      // Upsilon_l(sigma) = 0, six unknowns, exact) instead of the generic 2n + 2 BP system.
+      const ModalBranchPointCurve curve(scene, q1, q2, critical_mode(base.at(p2_0), sp->x, sp->p));
+      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(sp->x, sp->p), p2_0, engine), 5,
+                          modal_of, "eigenvalues", nullptr);
+    }
+    if (o.curve == "LP") {
+      const FoldCurveProblem curve(base, *sp, p2_0);
+      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine),
+                          base.dimension(), modal_of, "eigenvalues", nullptr);
+    }
+    const HopfCurveProblem curve(base, *sp, p2_0);
+    return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), base.dimension(),
+                        modal_of, "eigenvalues", [&](const Eigen::VectorXd& X) { return curve.omega(X); });
+  }
+  const SceneTwoParameterProblem<ReducedEquilibriumProblem> base(scene, q1, q2);
+  if (o.curve == "LP") {
+    const FoldCurveProblem curve(base, *sp, p2_0);
+    return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), 3, polar_of,
+                        "eigenvalues", nullptr);
+  }
+  if (o.curve == "BP") {
+    const BranchPointCurveProblem curve(base, *sp, p2_0);
+    return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), 3, polar_of,
+                        "eigenvalues", nullptr);
+  }
+  const HopfCurveProblem curve(base, *sp, p2_0);
+  return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), 3, polar_of,
+                      "eigenvalues", [&](const Eigen::VectorXd& X) { return curve.omega(X); });
+}
+
 int run(ContinueOptions& o) {
   if (o.kind != "equilibrium" && o.kind != "orbit" && o.kind != "modal")
-    throw InvalidArgument("kind", "kind = '" + o.kind + "' is not available: must be equilibrium, orbit or modal "
-                                                        "(two-parameter curves are not implemented yet)");
+    throw InvalidArgument("kind", "kind = '" + o.kind + "' is not available: must be equilibrium, orbit or modal");
   const bool orbit = o.kind == "orbit";
   const bool modal = o.kind == "modal";
   if (orbit && o.switch_at_bp)
     throw InvalidArgument("switch-at-bp", "--switch-at-bp is available for --kind equilibrium and modal, not orbit");
   if (orbit) o.orbit.validate();
+  if (!o.curve.empty()) {
+    const bool cycle_curve = o.curve == "LPC" || o.curve == "PD";
+    if (orbit != cycle_curve)
+      throw InvalidArgument("curve", "curve = " + o.curve + " is not available for --kind " + o.kind + ": must be " +
+                                         (orbit ? "LPC or PD" : "LP, BP or HB"));
+    if (o.parameter2.empty()) throw InvalidArgument("parameter2", "--curve needs --parameter2 (the second free parameter)");
+    if (o.switch_at_bp) throw InvalidArgument("switch-at-bp", "--switch-at-bp and --curve cannot be combined");
+    if (!(o.p2_min < o.p2_max))
+      throw InvalidArgument("min2", "min2 = " + std::to_string(o.p2_min) + " must be < max2 = " + std::to_string(o.p2_max));
+  } else if (!o.parameter2.empty()) {
+    throw InvalidArgument("parameter2", "--parameter2 needs --curve LP|BP|HB|LPC|PD");
+  }
   SceneFile sf = o.scene.resolve();
   // Equilibria need an autonomous reduced system (rest shape out of plane), periodic orbits a forced
   // one (rest shape in plane), unless beta is given.
@@ -253,6 +430,7 @@ int run(ContinueOptions& o) {
     const ModalEquilibriumProblem problem(sf.scene, q);
     const double p0 = problem.start_parameter();
     const Branch b = continue_branch(problem, problem.ellipsoidal_state(p0), p0, o.engine);
+    if (!o.curve.empty()) return run_curve(o, sf, b);
     std::optional<BranchSwitchResult> sw;
     if (o.switch_at_bp) sw = switch_at_first_bp(problem, b, o.engine);
     const BranchSwitchResult* swp = sw ? &*sw : nullptr;
@@ -262,6 +440,7 @@ int run(ContinueOptions& o) {
   if (!orbit) {
     const ReducedEquilibriumProblem problem(sf.scene, q);
     const Branch b = continue_branch(problem, problem.relaxed_state(o.relax_T), problem.start_parameter(), o.engine);
+    if (!o.curve.empty()) return run_curve(o, sf, b);
     std::optional<BranchSwitchResult> sw;
     if (o.switch_at_bp) sw = switch_at_first_bp(problem, b, o.engine);
     return report(o, sf, b, branch_csv(b, o.parameter), [](const Eigen::VectorXd& y, double) { return polar_json(y); },
@@ -279,6 +458,7 @@ int run(ContinueOptions& o) {
   }
   o.engine.events.push_back(problem.transition_event());
   const Branch b = continue_branch(problem, start.x, p0, o.engine);
+  if (!o.curve.empty()) return run_curve(o, sf, b);
   return report(o, sf, b, orbit_csv(b, o.parameter, problem),
                 [&](const Eigen::VectorXd& X, double p) { return orbit_json(problem, X, p); }, "multipliers");
 }
@@ -312,13 +492,26 @@ static Runner add_continue(CLI::App& app) {
                  "multiple of 2 pi)")
       ->check(positive())
       ->capture_default_str();
+  app.add_option("--curve", o->curve,
+                 "continue the curve of a special point of the one-parameter branch in (--parameter, --parameter2): "
+                 "LP, BP, HB (equilibrium, modal; modal BP: the symmetry-breaking curve Upsilon_l(sigma) = 0) or LPC, "
+                 "PD (orbit); default: none (one-parameter run)")
+      ->check(CLI::IsMember({"LP", "BP", "HB", "LPC", "PD"}));
+  app.add_option("--parameter2", o->parameter2,
+                 "--curve: second free parameter (lambda, Delta, Delta0, B, C, Lambda or S; independent of "
+                 "--parameter: not Lambda with Delta or lambda, not S with C or Delta0)");
+  app.add_option("--min2", o->p2_min, "--curve: lower bound of --parameter2 (the curve ends there exactly; default: none)");
+  app.add_option("--max2", o->p2_max, "--curve: upper bound of --parameter2 (the curve ends there exactly; default: none)");
+  app.add_option("--point", o->point, "--curve: start from the K-th located special point of that type, integer >= 1")
+      ->check(CLI::Range(1, 1000000))
+      ->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object (branch, special_points) on stdout");
   app.add_option("--csv", o->csv, "write the branch as CSV to this file");
   return [o] { return run(*o); };
 }
 
 namespace {
-const RegisterCommand kRegister{"continue", "Continue an equilibrium or periodic-orbit branch in one parameter; locate LP/BP/HB, LPC/PD/NS",
+const RegisterCommand kRegister{"continue", "Continue an equilibrium or periodic-orbit branch in one parameter (LP/BP/HB, LPC/PD/NS), or a special point's curve in two",
                                 add_continue, 40};
 }  // namespace
 

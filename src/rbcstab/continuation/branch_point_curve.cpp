@@ -44,9 +44,7 @@ void BranchPointCurveProblem::residual(const Eigen::VectorXd& X, double p2, Eige
 
 Eigen::VectorXcd BranchPointCurveProblem::spectrum(const Eigen::VectorXd& X, double p2) const {
   const Eigen::Index n = base_.dimension();
-  Eigen::MatrixXd J;
-  base_.jacobian(X.head(n), X[n], p2, J);
-  return Eigen::EigenSolver<Eigen::MatrixXd>(J, false).eigenvalues();
+  return base_.spectrum(X.head(n), X[n], p2);
 }
 
 }  // namespace rbcstab

@@ -68,11 +68,15 @@ void FoldCurveProblem::residual(const Eigen::VectorXd& X, double p2, Eigen::Vect
   R[n] = test_function(x, X[n], p2);
 }
 
+Eigen::VectorXcd TwoParameterProblem::spectrum(const Eigen::VectorXd& x, double p1, double p2) const {
+  Eigen::MatrixXd J;
+  jacobian(x, p1, p2, J);
+  return Eigen::EigenSolver<Eigen::MatrixXd>(J, false).eigenvalues();
+}
+
 Eigen::VectorXcd FoldCurveProblem::spectrum(const Eigen::VectorXd& X, double p2) const {
   const Eigen::Index n = base_.dimension();
-  Eigen::MatrixXd J;
-  base_.jacobian(X.head(n), X[n], p2, J);
-  return Eigen::EigenSolver<Eigen::MatrixXd>(J, false).eigenvalues();
+  return base_.spectrum(X.head(n), X[n], p2);
 }
 
 }  // namespace rbcstab

@@ -22,6 +22,11 @@ class TwoParameterProblem {
   virtual void parameter_derivative(const Eigen::VectorXd& x, double p1, double p2, Eigen::VectorXd& Fp) const;
   virtual std::string name1() const { return "p1"; }
   virtual std::string name2() const { return "p2"; }
+  // The dynamical spectrum of the point (x, p1) at p2 and how to read it; curves report the stability
+  // of their underlying points with it. Default: eigenvalues of jacobian (problems whose Newton system
+  // differs from the dynamics, e.g. the sphere-regularised equilibria, override it).
+  virtual Eigen::VectorXcd spectrum(const Eigen::VectorXd& x, double p1, double p2) const;
+  virtual StabilityKind stability_kind() const { return StabilityKind::eigenvalues; }
 };
 
 // The one-parameter problem in p1 at fixed p2 (where LP points are found first).
@@ -48,8 +53,10 @@ class FoldCurveProblem final : public ContinuationProblem {
   FoldCurveProblem(const TwoParameterProblem& base, const SpecialPoint& lp, double p2);
   Eigen::Index dimension() const override { return base_.dimension() + 1; }
   void residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const override;
-  // Stability of the equilibria along the fold: the base Jacobian's eigenvalues (one is ~0).
+  // Stability of the points along the fold: the base problem's spectrum (one eigenvalue ~0, or one
+  // multiplier ~1 on an LPC curve).
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p2) const override;
+  StabilityKind stability_kind() const override { return base_.stability_kind(); }
   std::string parameter_name() const override { return base_.name2(); }
   std::vector<std::string> parameter_names() const override { return {base_.name1(), base_.name2()}; }
   std::vector<double> parameter_values(const Eigen::VectorXd& X, double p2) const override {

@@ -77,9 +77,7 @@ void HopfCurveProblem::residual(const Eigen::VectorXd& X, double p2, Eigen::Vect
 
 Eigen::VectorXcd HopfCurveProblem::spectrum(const Eigen::VectorXd& X, double p2) const {
   const Eigen::Index n = base_.dimension();
-  Eigen::MatrixXd J;
-  base_.jacobian(X.head(n), X[n], p2, J);
-  return Eigen::EigenSolver<Eigen::MatrixXd>(J, false).eigenvalues();
+  return base_.spectrum(X.head(n), X[n], p2);
 }
 
 double HopfCurveProblem::omega(const Eigen::VectorXd& X) const {

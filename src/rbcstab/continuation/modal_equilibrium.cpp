@@ -206,16 +206,7 @@ int critical_mode(const ModalEquilibriumProblem& problem, const Eigen::VectorXd&
 ModalBranchPointCurve::ModalBranchPointCurve(const Scene& scene, ContinuationParameter p1, ContinuationParameter p2,
                                              int l)
     : scene_(scene), p1_(p1), p2_(p2), l_(l), base_(scene, p1) {
-  // Lambda is moved through Delta and depends on lambda; S is moved through C and depends on Delta0:
-  // setting one of a coupled pair would undo the other.
-  using P = ContinuationParameter;
-  auto coupled = [](P a, P b) {
-    return a == b || (a == P::Lambda && (b == P::Delta || b == P::lambda)) || (a == P::S && (b == P::C || b == P::Delta0));
-  };
-  if (coupled(p1, p2) || coupled(p2, p1))
-    throw InvalidArgument("p2", "p2 = " + to_string(p2) + " is not independent of p1 = " + to_string(p1) +
-                                    ": choose two of lambda, Delta, Delta0, B, C, or a composite (Lambda, S) with a "
-                                    "parameter it does not depend on");
+  require_independent(p1, p2, "p2");
   require(l >= 3 && l <= scene.L, "l", l, "in [3, L = " + std::to_string(scene.L) + "]");
 }
 

@@ -212,6 +212,9 @@ class OrbitTwoParameterProblem final : public TwoParameterProblem {
   std::string name2() const override { return system_.name2(); }
   void antiperiodic_jacobian(const Eigen::VectorXd& X, double p1, double p2, Eigen::MatrixXd& J) const;
   Eigen::VectorXcd multipliers(const Eigen::VectorXd& X, double p1, double p2) const;
+  // Curves over this problem (LPC) report the orbits' Floquet multipliers.
+  Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p1, double p2) const override { return multipliers(X, p1, p2); }
+  StabilityKind stability_kind() const override { return StabilityKind::multipliers; }
 
  private:
   void at(double p2) const;

@@ -61,4 +61,17 @@ Parameters with_parameter(Parameters p, ContinuationParameter q, double value) {
   return p;
 }
 
+void require_independent(ContinuationParameter p1, ContinuationParameter p2, const std::string& name) {
+  // Lambda is moved through Delta and depends on lambda; S is moved through C and depends on Delta0:
+  // setting one of a coupled pair would undo the other.
+  using P = ContinuationParameter;
+  auto coupled = [](P a, P b) {
+    return a == b || (a == P::Lambda && (b == P::Delta || b == P::lambda)) || (a == P::S && (b == P::C || b == P::Delta0));
+  };
+  if (coupled(p1, p2) || coupled(p2, p1))
+    throw InvalidArgument(name, name + " = " + to_string(p2) + " is not independent of the first parameter " + to_string(p1) +
+                                    ": choose two of lambda, Delta, Delta0, B, C, or a composite (Lambda, S) with a "
+                                    "parameter it does not depend on");
+}
+
 }  // namespace rbcstab

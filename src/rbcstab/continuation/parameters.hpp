@@ -20,4 +20,8 @@ double get_parameter(const Parameters& p, ContinuationParameter q);
 // (S ~ C at fixed Delta0, Lambda unchanged), so each composite moves alone.
 Parameters with_parameter(Parameters p, ContinuationParameter q, double value);
 
+// Throws InvalidArgument(name, ...) unless p2 can be set independently of p1 (not equal, not Lambda with
+// Delta or lambda, not S with C or Delta0): the pairs of a two-parameter curve.
+void require_independent(ContinuationParameter p1, ContinuationParameter p2, const std::string& name);
+
 }  // namespace rbcstab
