@@ -331,7 +331,7 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
   }
   ContinuationOptions engine = o.engine;
   engine.events.clear();  // the one-parameter events read the one-parameter state
-  engine.p_min = o.p2_min;
+  engine.p_min = (q2 == ContinuationParameter::lambda && o.p2_min < 0) ? 0.0 : o.p2_min;  // as for --min
   engine.p_max = o.p2_max;
   engine.direction = Direction::both;
   Scene scene = sf.scene;
