@@ -310,8 +310,8 @@ int report_curve(const ContinueOptions& o, const SceneFile& sf, const Branch& on
 }
 
 // The curve run: validates the combination, runs the curve from the chosen point of `one`.
-int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
-  const ContinuationParameter q1 = continuation_parameter_from_string(o.parameter);
+// --parameter2, checked against --parameter (before any work is done).
+ContinuationParameter parameter2(const ContinueOptions& o) {
   const ContinuationParameter q2 = [&] {
     try {
       return continuation_parameter_from_string(o.parameter2);
@@ -321,7 +321,13 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
                                               "Delta0, B, C, Lambda, S");
     }
   }();
-  require_independent(q1, q2, "parameter2");
+  require_independent(continuation_parameter_from_string(o.parameter), q2, "parameter2");
+  return q2;
+}
+
+int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
+  const ContinuationParameter q1 = continuation_parameter_from_string(o.parameter);
+  const ContinuationParameter q2 = parameter2(o);
   const SpecialPoint* sp = nullptr;
   try {
     sp = &pick_point(one, o.curve, o.point);
@@ -405,6 +411,7 @@ int run(ContinueOptions& o) {
                                          (orbit ? "LPC or PD" : "LP, BP or HB"));
     if (o.parameter2.empty()) throw InvalidArgument("parameter2", "--curve needs --parameter2 (the second free parameter)");
     if (o.switch_at_bp) throw InvalidArgument("switch-at-bp", "--switch-at-bp and --curve cannot be combined");
+    parameter2(o);
     if (!(o.p2_min < o.p2_max))
       throw InvalidArgument("min2", "min2 = " + std::to_string(o.p2_min) + " must be < max2 = " + std::to_string(o.p2_max));
   } else if (!o.parameter2.empty()) {
