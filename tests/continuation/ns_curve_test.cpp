@@ -204,6 +204,48 @@ TEST(NeimarkSackerCurve, NeutralSaddleReportedAsSuch) {
   EXPECT_DOUBLE_EQ(k.theta, 0.0);
 }
 
+// Through the 1:1 resonance: with q = p2 - omega^2 the NS curve a = 0 (p1 = p2^2) reaches kappa = 1 at
+// p2 = omega^2 (double multiplier 1) and continues as a neutral-saddle curve, kappa = cos(2 pi sqrt(-q))
+// before and cosh(2 pi sqrt(q)) after (one analytic function of q). Every point is checked against the
+// closed form (1e-9) and classified from kappa. The resonance is reported as a UZ event near
+// p2 = omega^2, but only to ~1e-3: in this system the forced orbit persists through the double
+// multiplier 1, so dF/dp lies in the range of the singular shooting Jacobian and the 1:1 point is a
+// singular point of the defining system (Newton stalls next to it; a generic R1 point sits on an LPC
+// curve instead). Bifurcation detection is off: the engine would report that singularity as a BP.
+TEST(NeimarkSackerCurve, ThroughResonanceIntoNeutralSaddle) {
+  const Forced3 sys(-kOmega * kOmega, 1.0);
+  OrbitOptions oo;
+  oo.segments = 3;
+  const SpecialPoint ns = locate_ns(sys, oo, 0.0);
+  ASSERT_EQ(ns.type, SpecialPointType::NS);
+  const NeimarkSackerCurveProblem curve(sys, oo, ns, 0.0);
+  ContinuationOptions co;
+  co.p_min = -0.05;
+  co.p_max = 0.15;
+  co.max_step = 0.02;
+  co.detect_bifurcations = false;
+  co.max_location_iterations = 20;
+  co.events = {curve.resonance_event()};
+  const Branch c = continue_branch(curve, curve.start(), 0.0, co);
+  ASSERT_EQ(c.status, ContinuationStatus::completed) << c.message;
+  EXPECT_DOUBLE_EQ(c.points.back().p, 0.15);
+  const Eigen::Index m = curve.dimension() - 2;
+  for (const auto& pt : c.points) {
+    const double q = pt.p - kOmega * kOmega;
+    const double kappa = q < 0 ? std::cos(kTwoPi * std::sqrt(-q)) : std::cosh(kTwoPi * std::sqrt(q));
+    EXPECT_NEAR(pt.x[m], pt.p * pt.p, 1e-9) << pt.p;
+    EXPECT_NEAR(pt.x[m + 1], kappa, 1e-9) << pt.p;
+    EXPECT_EQ(curve.classify(pt.x).neutral_saddle, q > 0) << pt.p;
+  }
+  int uz = 0;
+  for (const auto& sp : c.special_points) {
+    if (sp.type != SpecialPointType::UZ) continue;
+    ++uz;
+    EXPECT_NEAR(sp.p, kOmega * kOmega, 1e-3);
+  }
+  EXPECT_EQ(uz, 1);
+}
+
 TEST(NeimarkSackerCurve, RejectsNonNsStart) {
   const Forced3 sys(-kOmega * kOmega);
   SpecialPoint sp;
