@@ -39,7 +39,7 @@ NeimarkSackerCurveProblem::NeimarkSackerCurveProblem(const ForcedSystem2& system
   // (m + 2) x (m + 2) Jacobian in (X, p1, kappa) at the start (the choice only needs to be regular;
   // one difference sweep serves all six pairs).
   Eigen::MatrixXd J;
-  jacobian(start_, p2, J);  // rows m, m + 1 hold the current pair; rebuilt below for each pair
+  shooting_rows(start_, p2, J);  // rows m, m + 1 filled below for each pair
   const Eigen::MatrixXd dG = g_derivatives(start_, p2);
   const std::array<std::array<int, 4>, 6> pairs = {{{0, 0, 1, 1}, {0, 0, 0, 1}, {0, 0, 1, 0},
                                                      {0, 1, 1, 0}, {0, 1, 1, 1}, {1, 0, 1, 1}}};
@@ -105,8 +105,7 @@ Eigen::MatrixXd NeimarkSackerCurveProblem::g_derivatives(const Eigen::VectorXd& 
   return D;
 }
 
-void NeimarkSackerCurveProblem::jacobian(const Eigen::VectorXd& X, double p2, Eigen::MatrixXd& J) const {
-  require(X.size() == m_ + 2, "X", static_cast<double>(X.size()), "(shooting unknowns, p1, kappa)");
+void NeimarkSackerCurveProblem::shooting_rows(const Eigen::VectorXd& X, double p2, Eigen::MatrixXd& J) const {
   const Eigen::VectorXd x = X.head(m_);
   J.setZero(m_ + 2, m_ + 2);
   Eigen::MatrixXd Fx;
@@ -116,6 +115,11 @@ void NeimarkSackerCurveProblem::jacobian(const Eigen::VectorXd& X, double p2, Ei
   orbit_.parameter_derivative(x, X[m_], Fp);
   J.topLeftCorner(m_, m_) = Fx;
   J.col(m_).head(m_) = Fp;  // F does not depend on kappa
+}
+
+void NeimarkSackerCurveProblem::jacobian(const Eigen::VectorXd& X, double p2, Eigen::MatrixXd& J) const {
+  require(X.size() == m_ + 2, "X", static_cast<double>(X.size()), "(shooting unknowns, p1, kappa)");
+  shooting_rows(X, p2, J);
   const Eigen::MatrixXd dG = g_derivatives(X, p2);
   J.row(m_) = dG.row(2 * entries_[0] + entries_[1]);
   J.row(m_ + 1) = dG.row(2 * entries_[2] + entries_[3]);

@@ -72,6 +72,8 @@ class NeimarkSackerCurveProblem final : public ContinuationProblem {
 
  private:
   void at(double p2) const;
+  // The Jacobian with its first m rows (dF/dX, dF/dp1, 0) filled and the G rows zero.
+  void shooting_rows(const Eigen::VectorXd& X, double p2, Eigen::MatrixXd& J) const;
   // dG/d(X, p1, kappa) for all four entries (rows: G00, G01, G10, G11).
   Eigen::MatrixXd g_derivatives(const Eigen::VectorXd& X, double p2) const;
   const ForcedSystem2& system_;
