@@ -246,6 +246,105 @@ TEST(NeimarkSackerCurve, ThroughResonanceIntoNeutralSaddle) {
   EXPECT_EQ(uz, 1);
 }
 
+// A norm-conserving forced system (x . f = 0 identically, like the reduced in-plane system):
+// f = g |x|^2 - (x . g) x with g = (a x1 - omega x2 + eps cos t, omega x1 + a x2 + eps sin t, 0),
+// a = p1 - p2^2. Near the pole x = e_3 the tangent dynamics is the forced focus, so an NS curve exists
+// near a = 0, shifted by O(eps^2) (no closed form). Oracles: the one-parameter NS location of a
+// ForcedSlice run at p2 = 0.5 (the engine's multiplier-product test function, located to 1e-11 in
+// (X, p)) against the curve's point at p2 = 0.5 (a UZ event), and at every curve point the tangent-plane
+// multipliers (computed independently of the pencil, by orbit.hpp's restriction to x0^perp) with a pair
+// e^{+-i theta}, theta = arccos kappa, and the trivial multiplier 1, to 1e-9.
+class NormConserving final : public ForcedSystem2 {
+ public:
+  Eigen::Index dimension() const override { return 3; }
+  bool conserves_norm() const override { return true; }
+  static Eigen::Vector3d g(double t, const Eigen::Vector3d& x, double a) {
+    return {a * x[0] - kOmega * x[1] + kEps * std::cos(t), kOmega * x[0] + a * x[1] + kEps * std::sin(t), 0};
+  }
+  void rhs(double t, std::span<const double> x, double p1, double p2, std::span<double> f) const override {
+    const Eigen::Vector3d X(x[0], x[1], x[2]), G = g(t, X, p1 - p2 * p2);
+    const Eigen::Vector3d F = G * X.squaredNorm() - X.dot(G) * X;
+    for (int i = 0; i < 3; ++i) f[static_cast<std::size_t>(i)] = F[i];
+  }
+  // df/dx = Dg |x|^2 + 2 g x^T - (x . g) I - x (g + Dg^T x)^T.
+  void jacobian(double t, std::span<const double> x, double p1, double p2, Eigen::MatrixXd& J) const override {
+    const double a = p1 - p2 * p2;
+    const Eigen::Vector3d X(x[0], x[1], x[2]), G = g(t, X, a);
+    Eigen::Matrix3d Dg;
+    Dg << a, -kOmega, 0, kOmega, a, 0, 0, 0, 0;
+    J = Dg * X.squaredNorm() + 2 * G * X.transpose() - X.dot(G) * Eigen::Matrix3d::Identity() -
+        X * (G + Dg.transpose() * X).transpose();
+  }
+  // dg/da = (x1, x2, 0) =: h; df/dp1 = h |x|^2 - (x . h) x.
+  void parameter_derivative(double, std::span<const double> x, double, double, std::span<double> fp) const override {
+    const Eigen::Vector3d X(x[0], x[1], x[2]), h(x[0], x[1], 0);
+    const Eigen::Vector3d F = h * X.squaredNorm() - X.dot(h) * X;
+    for (int i = 0; i < 3; ++i) fp[static_cast<std::size_t>(i)] = F[i];
+  }
+
+ private:
+  static constexpr double kEps = 0.2;
+};
+
+SpecialPoint locate_ns_sphere(const NormConserving& sys, const OrbitOptions& oo, double p2) {
+  const ForcedSlice slice(sys, p2);
+  const PeriodicOrbitProblem pr(slice, oo);
+  const double p1 = p2 * p2 - 0.1;
+  const NewtonResult nr = solve_fixed_parameter(pr, pr.shooting_guess(Eigen::Vector3d(0.1, 0.1, 0.99), p1), p1);
+  EXPECT_TRUE(nr.converged);
+  ContinuationOptions o;
+  o.p_max = p2 * p2 + 0.1;
+  o.max_step = 0.05;
+  const Branch b = continue_branch(pr, nr.x, p1, o);
+  EXPECT_EQ(b.special_points.size(), 1u);
+  return b.special_points.empty() ? SpecialPoint{} : b.special_points[0];
+}
+
+TEST(NeimarkSackerCurve, ConservedNormAgreesWithSliceLocation) {
+  const NormConserving sys;
+  OrbitOptions oo;
+  oo.segments = 3;
+  const SpecialPoint ns = locate_ns_sphere(sys, oo, 0.2);
+  ASSERT_EQ(ns.type, SpecialPointType::NS);
+  ASSERT_EQ(ns.status, LocationStatus::located);
+  const SpecialPoint ns5 = locate_ns_sphere(sys, oo, 0.5);
+  ASSERT_EQ(ns5.type, SpecialPointType::NS);
+  ASSERT_EQ(ns5.status, LocationStatus::located);
+
+  const NeimarkSackerCurveProblem curve(sys, oo, ns, 0.2);
+  ContinuationOptions co;
+  co.p_min = 0.0;
+  co.p_max = 0.6;
+  co.max_step = 0.1;
+  co.events = {UserEvent{"p2_half", [](const Eigen::VectorXd&, double p2) { return p2 - 0.5; }}};
+  const Branch c = continue_branch(curve, curve.start(), 0.2, co);
+  ASSERT_EQ(c.status, ContinuationStatus::completed) << c.message;
+  EXPECT_DOUBLE_EQ(c.points.back().p, 0.6);
+  const Eigen::Index m = curve.dimension() - 2;
+  for (const auto& pt : c.points) {
+    const double q1 = pt.x[m], theta = curve.classify(pt.x).theta;
+    EXPECT_FALSE(curve.classify(pt.x).neutral_saddle);
+    const Floquet fl = curve.floquet(pt.x.head(m), q1, pt.p);
+    ASSERT_TRUE(fl.trivial.has_value());
+    EXPECT_NEAR(*fl.trivial, 1.0, 1e-9) << pt.p;
+    ASSERT_EQ(fl.multipliers.size(), 2);
+    for (Eigen::Index i = 0; i < 2; ++i) {
+      EXPECT_NEAR(std::abs(fl.multipliers[i]), 1.0, 1e-9) << pt.p;
+      EXPECT_NEAR(std::abs(std::arg(fl.multipliers[i])), theta, 1e-9) << pt.p;
+    }
+  }
+  int uz = 0;
+  for (const auto& sp : c.special_points) {
+    if (sp.type != SpecialPointType::UZ) continue;
+    ++uz;
+    ASSERT_EQ(sp.status, LocationStatus::located);
+    // Both locations converge to 1e-11 in (X, p); 1e-8 leaves room for the bracket widths.
+    EXPECT_NEAR(sp.x[m], ns5.p, 1e-8);
+    EXPECT_NEAR(std::acos(sp.x[m + 1]), std::abs(std::arg(ns5.eigenvalue)), 1e-8);
+  }
+  EXPECT_EQ(uz, 1);
+}
+
 TEST(NeimarkSackerCurve, RejectsNonNsStart) {
   const Forced3 sys(-kOmega * kOmega);
   SpecialPoint sp;
