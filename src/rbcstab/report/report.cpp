@@ -259,6 +259,25 @@ void draw_and_publish(const ReportOptions& o, const nlohmann::json& manifest, co
   }
 }
 
+// Runs body(tmp) on a fresh hidden sibling folder of target (body publishes it by renaming); on any
+// failure the folder is removed, so nothing half-written is left behind.
+template <class Body>
+void in_staging_folder(const fs::path& target, Body&& body) {
+  std::error_code ec;
+  const fs::path tmp = target.parent_path() / hidden_sibling_name(target, ".tmp-");
+  fs::create_directory(tmp, ec);
+  if (ec) throw ReportError("output: cannot create " + tmp.string() + ": " + ec.message());
+  try {
+    body(tmp);
+  } catch (const fs::filesystem_error& e) {
+    fs::remove_all(tmp, ec);
+    throw ReportError(std::string("output: ") + e.what());
+  } catch (...) {
+    fs::remove_all(tmp, ec);
+    throw;
+  }
+}
+
 // A figure-panel report: the scene as given, the hooks' data and figures, the attachments.
 ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, const fs::path& target,
                                 std::chrono::steady_clock::time_point start) {
@@ -266,11 +285,7 @@ ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, con
     throw InvalidArgument("run_scene", "run_scene = false (a figure panel) needs a phase diagram, a Fig. 6e table "
                                        "or a bifurcation to draw");
   ReportResult res;
-  std::error_code ec;
-  const fs::path tmp = target.parent_path() / hidden_sibling_name(target, ".tmp-");
-  fs::create_directory(tmp, ec);
-  if (ec) throw ReportError("output: cannot create " + tmp.string() + ": " + ec.message());
-  try {
+  in_staging_folder(target, [&](const fs::path& tmp) {
     write_file_atomic((tmp / "scene.toml").string(), o.scene_toml.empty() ? to_toml(sf) : o.scene_toml);
     res.files.push_back("scene.toml");
     nlohmann::json figs = nlohmann::json::array();
@@ -288,13 +303,7 @@ ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, con
     write_file_atomic((tmp / "report.json").string(), manifest.dump(2) + "\n");
     res.files.push_back("report.json");
     draw_and_publish(o, manifest, tmp, target, res.files);
-  } catch (const fs::filesystem_error& e) {
-    fs::remove_all(tmp, ec);
-    throw ReportError(std::string("output: ") + e.what());
-  } catch (...) {
-    fs::remove_all(tmp, ec);
-    throw;
-  }
+  });
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return res;
 }
@@ -410,10 +419,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
                            "): Delta is beyond the quasi-spherical expansion; the mesh folds over itself");
 
   // Everything is written into a hidden sibling folder, renamed into place at the end.
-  const fs::path tmp = target.parent_path() / hidden_sibling_name(target, ".tmp-");
-  fs::create_directory(tmp, ec);
-  if (ec) throw ReportError("output: cannot create " + tmp.string() + ": " + ec.message());
-  try {
+  in_staging_folder(target, [&](const fs::path& tmp) {
     auto put = [&](const std::string& name, const std::string& text) {
       write_file_atomic((tmp / name).string(), text);
       res.files.push_back(name);
@@ -489,13 +495,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     manifest["figures"] = figs;
     put("report.json", manifest.dump(2) + "\n");
     draw_and_publish(o, manifest, tmp, target, res.files);
-  } catch (const fs::filesystem_error& e) {
-    fs::remove_all(tmp, ec);
-    throw ReportError(std::string("output: ") + e.what());
-  } catch (...) {
-    fs::remove_all(tmp, ec);
-    throw;
-  }
+  });
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return res;
 }
