@@ -35,30 +35,25 @@ void TwoParameterProblem::jacobian(const Eigen::VectorXd& x, double p1, double p
   }
 }
 
-FoldCurveProblem::FoldCurveProblem(const TwoParameterProblem& base, const SpecialPoint& lp, double p2) : base_(base) {
-  // LPC: a fold of a fixed-period shooting system (orbit.hpp), the same singularity of dF/dx.
-  if ((lp.type != SpecialPointType::LP && lp.type != SpecialPointType::LPC) || lp.status != LocationStatus::located)
-    throw InvalidArgument("lp", "a fold curve starts from a located LP or LPC point (got " + to_string(lp.type) + ", " +
-                                    to_string(lp.status) + ")");
-  const Eigen::Index n = base.dimension();
-  require(lp.x.size() == n, "lp", static_cast<double>(lp.x.size()), "a point of the base problem's dimension");
-  Eigen::MatrixXd J;
-  base.jacobian(lp.x, lp.p, p2, J);
-  Eigen::MatrixXd B, C;
-  detail::null_borders(J, 1, B, C);  // left / right singular vectors of the smallest singular value
+void SingularityCurveProblem::start_at(const SpecialPoint& point, double p2) {
+  const Eigen::Index n = base_.dimension();
+  require(point.x.size() == n, "point", static_cast<double>(point.x.size()), "a point of the base problem's dimension");
+  Eigen::MatrixXd A, B, C;
+  singular_matrix(point.x, point.p, p2, A);
+  detail::null_borders(A, 1, B, C);  // left / right singular vectors of the smallest singular value
   b_ = B.col(0);
   c_ = C.col(0);
   start_.resize(n + 1);
-  start_ << lp.x, lp.p;
+  start_ << point.x, point.p;
 }
 
-double FoldCurveProblem::test_function(const Eigen::VectorXd& x, double p1, double p2) const {
-  Eigen::MatrixXd J;
-  base_.jacobian(x, p1, p2, J);
-  return detail::bordered_g(J, b_, c_)(0, 0);
+double SingularityCurveProblem::test_function(const Eigen::VectorXd& x, double p1, double p2) const {
+  Eigen::MatrixXd A;
+  singular_matrix(x, p1, p2, A);
+  return detail::bordered_g(A, b_, c_)(0, 0);
 }
 
-void FoldCurveProblem::residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const {
+void SingularityCurveProblem::residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const {
   const Eigen::Index n = base_.dimension();
   const Eigen::VectorXd x = X.head(n);
   Eigen::VectorXd F(n);
@@ -66,6 +61,15 @@ void FoldCurveProblem::residual(const Eigen::VectorXd& X, double p2, Eigen::Vect
   R.resize(n + 1);
   R.head(n) = F;
   R[n] = test_function(x, X[n], p2);
+}
+
+FoldCurveProblem::FoldCurveProblem(const TwoParameterProblem& base, const SpecialPoint& lp, double p2)
+    : SingularityCurveProblem(base) {
+  // LPC: a fold of a fixed-period shooting system (orbit.hpp), the same singularity of dF/dx.
+  if ((lp.type != SpecialPointType::LP && lp.type != SpecialPointType::LPC) || lp.status != LocationStatus::located)
+    throw InvalidArgument("lp", "a fold curve starts from a located LP or LPC point (got " + to_string(lp.type) + ", " +
+                                    to_string(lp.status) + ")");
+  start_at(lp, p2);
 }
 
 Eigen::VectorXcd FoldCurveProblem::spectrum(const Eigen::VectorXd& X, double p2) const {

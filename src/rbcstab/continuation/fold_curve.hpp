@@ -41,26 +41,46 @@ class SliceProblem final : public ContinuationProblem {
   double p2_;
 };
 
-class FoldCurveProblem final : public ContinuationProblem {
+// A curve in (p1, p2) of points where the solution x of F(x, p1, p2) = 0 makes a matrix A(x, p1, p2)
+// singular, by minimal augmentation: unknowns X = (x, p1), free p2, equations F = 0 and g = 0 with
+// [A b; c^T 0][v; g] = [0; 1], b and c the left/right singular vectors of A's smallest singular value
+// at the start. Fold curves take A = dF/dx; PD curves of orbits the anti-periodic shooting Jacobian.
+class SingularityCurveProblem : public ContinuationProblem {
  public:
-  // Starts from an LP of SliceProblem(base, p2) (status located), or an LPC of a fixed-period orbit
-  // problem (orbit.hpp); bordering vectors from its SVD.
-  FoldCurveProblem(const TwoParameterProblem& base, const SpecialPoint& lp, double p2);
   Eigen::Index dimension() const override { return base_.dimension() + 1; }
   void residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const override;
-  // Stability of the equilibria along the fold: the base Jacobian's eigenvalues (one is ~0).
-  Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p2) const override;
   std::string parameter_name() const override { return base_.name2(); }
   std::vector<std::string> parameter_names() const override { return {base_.name1(), base_.name2()}; }
   std::vector<double> parameter_values(const Eigen::VectorXd& X, double p2) const override {
     return {X[X.size() - 1], p2};
   }
-  const Eigen::VectorXd& start() const { return start_; }  // (x, p1) at the LP
+  const Eigen::VectorXd& start() const { return start_; }  // (x, p1) at the special point
   double test_function(const Eigen::VectorXd& x, double p1, double p2) const;  // g
 
- private:
+ protected:
+  explicit SingularityCurveProblem(const TwoParameterProblem& base) : base_(base) {}
+  // The matrix whose singularity defines the curve.
+  virtual void singular_matrix(const Eigen::VectorXd& x, double p1, double p2, Eigen::MatrixXd& A) const = 0;
+  // Checks the start point's size and takes the bordering vectors there (call from the derived constructor).
+  void start_at(const SpecialPoint& point, double p2);
   const TwoParameterProblem& base_;
+
+ private:
   Eigen::VectorXd b_, c_, start_;
+};
+
+class FoldCurveProblem final : public SingularityCurveProblem {
+ public:
+  // Starts from an LP of SliceProblem(base, p2) (status located), or an LPC of a fixed-period orbit
+  // problem (orbit.hpp).
+  FoldCurveProblem(const TwoParameterProblem& base, const SpecialPoint& lp, double p2);
+  // Stability of the equilibria along the fold: the base Jacobian's eigenvalues (one is ~0).
+  Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p2) const override;
+
+ protected:
+  void singular_matrix(const Eigen::VectorXd& x, double p1, double p2, Eigen::MatrixXd& A) const override {
+    base_.jacobian(x, p1, p2, A);
+  }
 };
 
 }  // namespace rbcstab

@@ -530,41 +530,16 @@ Eigen::VectorXcd OrbitTwoParameterProblem::multipliers(const Eigen::VectorXd& X,
 
 PeriodDoublingCurveProblem::PeriodDoublingCurveProblem(const OrbitTwoParameterProblem& base, const SpecialPoint& pd,
                                                        double p2)
-    : base_(base) {
+    : SingularityCurveProblem(base), orbit_base_(base) {
   if (pd.type != SpecialPointType::PD || pd.status != LocationStatus::located)
     throw InvalidArgument("pd", "a PD curve starts from a located PD point (got " + to_string(pd.type) + ", " +
                                     to_string(pd.status) + ")");
-  const Eigen::Index n = base.dimension();
-  require(pd.x.size() == n, "pd", static_cast<double>(pd.x.size()), "a point of the orbit problem's dimension");
-  Eigen::MatrixXd J;
-  base.antiperiodic_jacobian(pd.x, pd.p, p2, J);
-  Eigen::MatrixXd B, C;
-  detail::null_borders(J, 1, B, C);  // left / right singular vectors of the smallest singular value
-  b_ = B.col(0);
-  c_ = C.col(0);
-  start_.resize(n + 1);
-  start_ << pd.x, pd.p;
-}
-
-double PeriodDoublingCurveProblem::test_function(const Eigen::VectorXd& X, double p1, double p2) const {
-  Eigen::MatrixXd J;
-  base_.antiperiodic_jacobian(X, p1, p2, J);
-  return detail::bordered_g(J, b_, c_)(0, 0);
-}
-
-void PeriodDoublingCurveProblem::residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const {
-  const Eigen::Index n = base_.dimension();
-  const Eigen::VectorXd x = X.head(n);
-  Eigen::VectorXd F(n);
-  base_.residual(x, X[n], p2, F);
-  R.resize(n + 1);
-  R.head(n) = F;
-  R[n] = test_function(x, X[n], p2);
+  start_at(pd, p2);
 }
 
 Eigen::VectorXcd PeriodDoublingCurveProblem::spectrum(const Eigen::VectorXd& X, double p2) const {
-  const Eigen::Index n = base_.dimension();
-  return base_.multipliers(X.head(n), X[n], p2);
+  const Eigen::Index n = orbit_base_.dimension();
+  return orbit_base_.multipliers(X.head(n), X[n], p2);
 }
 
 }  // namespace rbcstab

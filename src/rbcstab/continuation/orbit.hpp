@@ -224,24 +224,19 @@ class OrbitTwoParameterProblem final : public TwoParameterProblem {
 // [J_PD b; c^T 0][v; g] = [0; 1] with J_PD the anti-periodic shooting Jacobian and b, c its left/right
 // singular vectors at the starting PD point. The spectrum is the orbit's multipliers (one is -1 along
 // the curve: the engine treats it as neutral, so no spurious PD points are reported).
-class PeriodDoublingCurveProblem final : public ContinuationProblem {
+class PeriodDoublingCurveProblem final : public SingularityCurveProblem {
  public:
   PeriodDoublingCurveProblem(const OrbitTwoParameterProblem& base, const SpecialPoint& pd, double p2);
-  Eigen::Index dimension() const override { return base_.dimension() + 1; }
-  void residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const override;
   StabilityKind stability_kind() const override { return StabilityKind::multipliers; }
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p2) const override;
-  std::string parameter_name() const override { return base_.name2(); }
-  std::vector<std::string> parameter_names() const override { return {base_.name1(), base_.name2()}; }
-  std::vector<double> parameter_values(const Eigen::VectorXd& X, double p2) const override {
-    return {X[X.size() - 1], p2};
+
+ protected:
+  void singular_matrix(const Eigen::VectorXd& X, double p1, double p2, Eigen::MatrixXd& A) const override {
+    orbit_base_.antiperiodic_jacobian(X, p1, p2, A);
   }
-  const Eigen::VectorXd& start() const { return start_; }  // (X, p1) at the PD point
-  double test_function(const Eigen::VectorXd& X, double p1, double p2) const;  // g
 
  private:
-  const OrbitTwoParameterProblem& base_;
-  Eigen::VectorXd b_, c_, start_;
+  const OrbitTwoParameterProblem& orbit_base_;
 };
 
 }  // namespace rbcstab

@@ -8,6 +8,7 @@
 #include <toml++/toml.h>
 
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/io/detail/scene_toml.hpp"
 #include "rbcstab/io/files.hpp"
 
 namespace rbcstab {
@@ -112,14 +113,7 @@ void read_mode_map(const toml::table& table, const std::string& prefix, const ch
 }  // namespace
 
 SceneFile parse_scene(const std::string& toml_text, const std::string& source_name) {
-  toml::table root;
-  try {
-    root = toml::parse(toml_text, source_name);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream msg;
-    msg << source_name << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
-    throw InvalidArgument("scene", "cannot parse scene file " + msg.str());
-  }
+  const toml::table root = detail::parse_scene_toml(toml_text, source_name);
   SceneFile f;
   Scene& s = f.scene;
   // [diagram] belongs to sweeps (rbcstab/sweep/diagram_file.hpp), [fig6e] and [continuation] to figure

@@ -11,6 +11,7 @@
 
 #include "rbcstab/continuation/equilibrium.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/io/detail/scene_toml.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
@@ -21,15 +22,6 @@ namespace rbcstab {
 namespace fs = std::filesystem;
 
 namespace {
-toml::table parse_root(const std::string& text, const std::string& source) {
-  try {
-    return toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream msg;
-    msg << source << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
-    throw InvalidArgument("scene", "cannot parse scene file " + msg.str());
-  }
-}
 
 // The table `name`, its keys checked against `allowed` (the message lists them).
 const toml::table* panel_table(const toml::table& root, const std::string& name, const std::set<std::string>& allowed) {
@@ -168,7 +160,7 @@ std::string to_string(PanelKind k) {
 }
 
 PanelKind panel_kind(const std::string& toml_text, const std::string& source) {
-  const toml::table root = parse_root(toml_text, source);
+  const toml::table root = detail::parse_scene_toml(toml_text, source);
   std::vector<PanelKind> found;
   for (auto [name, kind] : {std::pair{"diagram", PanelKind::diagram}, std::pair{"fig6e", PanelKind::fig6e},
                             std::pair{"continuation", PanelKind::continuation}})
@@ -180,7 +172,7 @@ PanelKind panel_kind(const std::string& toml_text, const std::string& source) {
 }
 
 Fig6eOptions parse_fig6e_table(const SceneFile& sf, const std::string& toml_text, const std::string& source) {
-  const toml::table root = parse_root(toml_text, source);
+  const toml::table root = detail::parse_scene_toml(toml_text, source);
   Fig6eOptions f;
   const Scene& s = sf.scene;
   f.Delta = s.parameters.Delta;
@@ -213,7 +205,7 @@ std::string fig6e_csv(const Fig6eOptions& f, const std::vector<Fig6eRow>& rows) 
 }
 
 ContinuationPanel parse_continuation_table(const std::string& toml_text, const std::string& source) {
-  const toml::table root = parse_root(toml_text, source);
+  const toml::table root = detail::parse_scene_toml(toml_text, source);
   ContinuationPanel c;
   const toml::table* t = panel_table(
       root, "continuation",

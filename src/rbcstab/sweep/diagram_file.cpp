@@ -5,19 +5,11 @@
 #include <toml++/toml.h>
 
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/io/detail/scene_toml.hpp"
 
 namespace rbcstab {
 
 namespace {
-toml::table parse_root(const std::string& text, const std::string& source) {
-  try {
-    return toml::parse(text, source);
-  } catch (const toml::parse_error& e) {
-    std::ostringstream msg;
-    msg << source << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
-    throw InvalidArgument("scene", "cannot parse scene file " + msg.str());
-  }
-}
 
 const toml::array& pair_of(const toml::table& t, const char* key) {
   const toml::array* a = t.get(key)->as_array();
@@ -28,12 +20,12 @@ const toml::array& pair_of(const toml::table& t, const char* key) {
 }  // namespace
 
 bool has_diagram_table(const std::string& toml_text) {
-  const toml::table root = parse_root(toml_text, "scene");
+  const toml::table root = detail::parse_scene_toml(toml_text, "scene");
   return root.get("diagram") != nullptr;
 }
 
 DiagramSpec parse_diagram_table(const std::string& toml_text, const std::string& source_name) {
-  const toml::table root = parse_root(toml_text, source_name);
+  const toml::table root = detail::parse_scene_toml(toml_text, source_name);
   DiagramSpec s;
   const toml::node* node = root.get("diagram");
   if (!node) return s;
