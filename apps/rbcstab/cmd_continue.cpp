@@ -15,6 +15,7 @@
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
+#include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
@@ -162,6 +163,42 @@ nlohmann::json modal_json(const ModalEquilibriumProblem& pr, const Eigen::Vector
   return j;
 }
 
+// Modal orbits (--kind modal-orbit): the state at t = 0 (r, Psi, sigma, every Delta_l), the winding
+// of z and the trivial multiplier.
+std::string modal_orbit_csv(const Branch& b, const std::string& name, const PeriodicOrbitProblem& pr,
+                            const ModalForcedSystem& sys) {
+  std::ostringstream ss;
+  ss << std::setprecision(17) << name << ",r,Psi,sigma";
+  for (int l = 2; l <= sys.L(); ++l) ss << ",Delta_" << l;
+  ss << ",winding,kind,stable,n_unstable,max_abs_multiplier\n";
+  for (const auto& pt : b.points) {
+    const ModalState st = sys.observe(0.0, pr.state_at_zero(pt.x), pt.p);
+    const OrbitSummary s = pr.summary(pt.x, pt.p);
+    double m = 0;
+    for (Eigen::Index i = 0; i < pt.spectrum.size(); ++i) m = std::max(m, std::abs(pt.spectrum[i]));
+    ss << pt.p << ',' << st.r << ',' << st.Psi << ',' << st.sigma;
+    for (double D : st.Delta_l) ss << ',' << D;
+    ss << ',' << s.winding << ',' << to_string(s.kind) << ',' << (pt.stable ? 1 : 0) << ',' << pt.n_unstable << ','
+       << m << '\n';
+  }
+  return ss.str();
+}
+
+nlohmann::json modal_orbit_json(const PeriodicOrbitProblem& pr, const ModalForcedSystem& sys, const Eigen::VectorXd& X,
+                                double p) {
+  const ModalState st = sys.observe(0.0, pr.state_at_zero(X), p);
+  const OrbitSummary s = pr.summary(X, p);
+  const Floquet f = pr.floquet(X, p);
+  nlohmann::json j = {{"r", number_or_null(st.r)},
+                      {"Psi", number_or_null(st.Psi)},
+                      {"sigma", number_or_null(st.sigma)},
+                      {"winding", s.winding},
+                      {"kind", to_string(s.kind)},
+                      {"trivial_multiplier", f.trivial ? number_or_null(*f.trivial) : nlohmann::json(nullptr)}};
+  for (int l = 2; l <= sys.L(); ++l) j["Delta_" + std::to_string(l)] = number_or_null(st.Delta_l[static_cast<std::size_t>(l - 2)]);
+  return j;
+}
+
 // --switch-at-bp: the bifurcating branch at the first BP of b, continued with the same engine options.
 BranchSwitchResult switch_at_first_bp(const ContinuationProblem& problem, const Branch& b, const ContinuationOptions& engine) {
   for (const auto& sp : b.special_points) {
@@ -182,11 +219,11 @@ int report(const ContinueOptions& o, const SceneFile& sf, const Branch& b, const
   if (o.json) {
     nlohmann::json j = branch_json(b, describe, spectrum_key);
     j["kind"] = o.kind;
-    j["level"] = o.kind == "modal" ? "modal" : "reduced";
+    j["level"] = o.kind == "modal" || o.kind == "modal-orbit" ? "modal" : "reduced";
     j["free_parameter"] = o.parameter;
     j["parameters"] = to_json(sf.scene.parameters);
     j["beta"] = sf.scene.beta;
-    if (o.kind == "orbit") j["segments"] = o.orbit.segments;
+    if (o.kind == "orbit" || o.kind == "modal-orbit") j["segments"] = o.orbit.segments;
     if (switched) {
       nlohmann::json sw = branch_json(switched->branch, describe, spectrum_key);
       sw["switched"] = switched->switched;
@@ -225,13 +262,14 @@ int report(const ContinueOptions& o, const SceneFile& sf, const Branch& b, const
 }
 
 int run(ContinueOptions& o) {
-  if (o.kind != "equilibrium" && o.kind != "orbit" && o.kind != "modal")
-    throw InvalidArgument("kind", "kind = '" + o.kind + "' is not available: must be equilibrium, orbit or modal "
+  if (o.kind != "equilibrium" && o.kind != "orbit" && o.kind != "modal" && o.kind != "modal-orbit")
+    throw InvalidArgument("kind", "kind = '" + o.kind + "' is not available: must be equilibrium, orbit, modal or modal-orbit "
                                                         "(two-parameter curves are not implemented yet)");
-  const bool orbit = o.kind == "orbit";
-  const bool modal = o.kind == "modal";
+  const bool modal_orbit = o.kind == "modal-orbit";
+  const bool orbit = o.kind == "orbit" || modal_orbit;
+  const bool modal = o.kind == "modal" || modal_orbit;
   if (orbit && o.switch_at_bp)
-    throw InvalidArgument("switch-at-bp", "--switch-at-bp is available for --kind equilibrium and modal, not orbit");
+    throw InvalidArgument("switch-at-bp", "--switch-at-bp is available for --kind equilibrium and modal, not orbit or modal-orbit");
   if (orbit) o.orbit.validate();
   SceneFile sf = o.scene.resolve();
   // Equilibria need an autonomous reduced system (rest shape out of plane), periodic orbits a forced
@@ -248,6 +286,24 @@ int run(ContinueOptions& o) {
   o.engine.direction = o.direction == "forward" ? Direction::forward
                        : o.direction == "backward" ? Direction::backward
                                                    : Direction::both;
+  if (modal_orbit) {
+    // The scene is the one simulated to relax; the orbit problem's Delta is its total excess area.
+    const ModalForcedSystem system(total_area_scene(sf.scene), q);
+    const PeriodicOrbitProblem problem(system, o.orbit);
+    const double p0 = system.start_parameter();
+    const NewtonResult start =
+        solve_fixed_parameter(problem, problem.shooting_guess(system.relaxed_state(sf.scene, o.relax_T), p0), p0);
+    if (!start.converged) {
+      std::cerr << "rbcstab: no periodic orbit near the relaxed modal state (Newton residual " << start.residual_norm
+                << " after " << start.iterations << " iterations); try a longer --relax-T\n";
+      return kRunFailed;
+    }
+    o.engine.events.push_back(problem.transition_event());
+    const Branch b = continue_branch(problem, start.x, p0, o.engine);
+    return report(o, sf, b, modal_orbit_csv(b, o.parameter, problem, system),
+                  [&](const Eigen::VectorXd& X, double p) { return modal_orbit_json(problem, system, X, p); },
+                  "multipliers");
+  }
   if (modal) {
     // Start on the ellipsoidal branch (a_l = 0) at its closed form; Newton polishes it.
     const ModalEquilibriumProblem problem(sf.scene, q);
@@ -292,7 +348,8 @@ static Runner add_continue(CLI::App& app) {
                  "equilibria with every Delta_l, out-of-plane rest shape: the ellipsoidal branch and its BPs where "
                  "Upsilon_l(sigma) = 0) or orbit (periodic orbits "
                  "of the forced in-plane reduced system: swinging/tumbling, Floquet multipliers, LPC/PD/NS, UZ "
-                 "swing_tumble)")
+                 "swing_tumble) or modal-orbit (periodic orbits of the forced modal model relaxed from the scene, "
+                 "e.g. the in-plane post-instability state, with every Delta_l)")
       ->capture_default_str();
   app.add_option("--segments", o->orbit.segments, "orbit: number of multiple-shooting segments")->capture_default_str();
   app.add_flag("--switch-at-bp", o->switch_at_bp,

@@ -42,18 +42,22 @@ ModalEquilibriumProblem::ModalEquilibriumProblem(const Scene& scene, Continuatio
                                       "Delta0 = 0, or continue periodic orbits");
 }
 
-ModalCoefficients ModalEquilibriumProblem::coefficients_at(const Parameters& q) const {
+ModalCoefficients modal_coefficients(const Parameters& q, int L, double w0) {
   q.validate();
   ModalCoefficients c;
   c.parameters = q;
-  c.L = L_;
+  c.L = L;
   c.inv_Lambda = 1 / q.Lambda();
-  c.kappa_w0 = q.inv_Lambda_S() * w0_;
-  for (int l = 2; l <= L_; ++l) {
+  c.kappa_w0 = q.inv_Lambda_S() * w0;
+  for (int l = 2; l <= L; ++l) {
     c.slope.push_back(Gamma2(q.lambda, l) / q.B);
     c.ups0.push_back(Upsilon(q, l, 0.0));
   }
   return c;
+}
+
+ModalCoefficients ModalEquilibriumProblem::coefficients_at(const Parameters& q) const {
+  return modal_coefficients(q, L_, w0_);
 }
 
 const ModalCoefficients& ModalEquilibriumProblem::coefficients(double p) const {
@@ -64,17 +68,80 @@ const ModalCoefficients& ModalEquilibriumProblem::coefficients(double p) const {
   return *cache_;
 }
 
-double ModalEquilibriumProblem::sigma(const ModalCoefficients& c, const Eigen::VectorXd& x) {
+namespace {
+
+// The equilibrium problem's (autonomous) forcing: the shear drive of z and the rest shape's pull on w.
+Eigen::VectorXd steady_forcing(const ModalCoefficients& c, Eigen::Index n) {
+  Eigen::VectorXd h = Eigen::VectorXd::Zero(n);
+  h[1] = -c.inv_Lambda;
+  h[2] = c.kappa_w0;
+  return h;
+}
+
+}  // namespace
+
+double modal_sigma(const ModalCoefficients& c, const Eigen::Ref<const Eigen::VectorXd>& x,
+                   const Eigen::Ref<const Eigen::VectorXd>& h) {
   const double q2 = x.head(5).squaredNorm();
-  // x.h: the forcing's work on the sphere (Re conj(z)(-i/Lambda) = -Im z/Lambda; kappa w0 w).
-  double P = q2 * c.ups0[0] - x[1] * c.inv_Lambda + c.kappa_w0 * x[2];
+  // x.h: the forcing's work on the sphere.
+  double P = q2 * c.ups0[0] + x.dot(h);
   double D = q2 * c.slope[0];
   for (int l = 3; l <= c.L; ++l) {
-    const double ql = x[index_of_mode(l)] * x[index_of_mode(l)];
+    const Eigen::Index i = ModalEquilibriumProblem::index_of_mode(l);
+    const double ql = x[i] * x[i];
     P += ql * c.ups0[static_cast<std::size_t>(l - 2)];
     D += ql * c.slope[static_cast<std::size_t>(l - 2)];
   }
   return -P / D;
+}
+
+double modal_dynamics(const ModalCoefficients& c, const Eigen::Ref<const Eigen::VectorXd>& x,
+                      const Eigen::Ref<const Eigen::VectorXd>& h, double omega_v, Eigen::Ref<Eigen::VectorXd> F) {
+  const double s = modal_sigma(c, x, h);
+  const double Y2 = c.upsilon(2, s);
+  F[0] = Y2 * x[0] - x[1] + h[0];
+  F[1] = x[0] + Y2 * x[1] + h[1];
+  F[2] = Y2 * x[2] + h[2];
+  F[3] = Y2 * x[3] - omega_v * x[4] + h[3];
+  F[4] = omega_v * x[3] + Y2 * x[4] + h[4];
+  for (int l = 3; l <= c.L; ++l) {
+    const Eigen::Index i = ModalEquilibriumProblem::index_of_mode(l);
+    F[i] = c.upsilon(l, s) * x[i] + h[i];
+  }
+  return s;
+}
+
+void modal_dynamics_jacobian(const ModalCoefficients& c, const Eigen::Ref<const Eigen::VectorXd>& x,
+                             const Eigen::Ref<const Eigen::VectorXd>& h, double omega_v, Eigen::MatrixXd& DF) {
+  const Eigen::Index n = x.size();
+  const double s = modal_sigma(c, x, h);
+  DF.setZero(n, n);
+  const double Y2 = c.upsilon(2, s);
+  for (Eigen::Index i = 0; i < 5; ++i) DF(i, i) = Y2;
+  DF(0, 1) = -1;
+  DF(1, 0) = 1;
+  DF(3, 4) = -omega_v;
+  DF(4, 3) = omega_v;
+  // From sigma = -P/D: grad sigma = -(grad P + sigma grad D)/D = -(2 x_i Y_i + h_i)/D.
+  Eigen::VectorXd u(n), grad(n);
+  double D = x.head(5).squaredNorm() * c.slope[0];
+  for (Eigen::Index i = 0; i < 5; ++i) {
+    u[i] = c.slope[0] * x[i];
+    grad[i] = 2 * x[i] * Y2 + h[i];
+  }
+  for (int l = 3; l <= c.L; ++l) {
+    const Eigen::Index i = ModalEquilibriumProblem::index_of_mode(l);
+    const double sl = c.slope[static_cast<std::size_t>(l - 2)];
+    DF(i, i) = c.upsilon(l, s);
+    u[i] = sl * x[i];
+    grad[i] = 2 * x[i] * c.upsilon(l, s) + h[i];
+    D += x[i] * x[i] * sl;
+  }
+  DF -= u * grad.transpose() / D;
+}
+
+double ModalEquilibriumProblem::sigma(const ModalCoefficients& c, const Eigen::VectorXd& x) {
+  return modal_sigma(c, x, steady_forcing(c, x.size()));
 }
 
 void ModalEquilibriumProblem::l2_dynamics(const ModalCoefficients& c, const Eigen::VectorXd& x2, double sigma,
@@ -98,41 +165,13 @@ void ModalEquilibriumProblem::l2_jacobian(const ModalCoefficients& c, double sig
 }
 
 void ModalEquilibriumProblem::dynamics(const ModalCoefficients& c, const Eigen::VectorXd& x, Eigen::VectorXd& F) {
-  const double s = sigma(c, x);
   F.resize(x.size());
-  Eigen::VectorXd F2;
-  l2_dynamics(c, x.head(5), s, F2);
-  F.head(5) = F2;
-  for (int l = 3; l <= c.L; ++l) F[index_of_mode(l)] = c.upsilon(l, s) * x[index_of_mode(l)];
+  modal_dynamics(c, x, steady_forcing(c, x.size()), 0.5, F);
 }
 
 void ModalEquilibriumProblem::dynamics_jacobian(const ModalCoefficients& c, const Eigen::VectorXd& x,
                                                 Eigen::MatrixXd& DF) {
-  const Eigen::Index n = x.size();
-  const double s = sigma(c, x);
-  DF.setZero(n, n);
-  Eigen::MatrixXd J2;
-  l2_jacobian(c, s, J2);
-  DF.topLeftCorner(5, 5) = J2;
-  // DF = diag(Y) + rotation + u grad(sigma)^T, u_i = slope x_i; from sigma = -P/D:
-  // grad sigma = -(grad P + sigma grad D)/D = -(2 x_i Y_i + h_i)/D.
-  Eigen::VectorXd u(n), grad(n);
-  double D = x.head(5).squaredNorm() * c.slope[0];
-  for (Eigen::Index i = 0; i < 5; ++i) {
-    u[i] = c.slope[0] * x[i];
-    grad[i] = 2 * x[i] * c.upsilon(2, s);
-  }
-  grad[1] -= c.inv_Lambda;
-  grad[2] += c.kappa_w0;
-  for (int l = 3; l <= c.L; ++l) {
-    const Eigen::Index i = index_of_mode(l);
-    const double sl = c.slope[static_cast<std::size_t>(l - 2)];
-    DF(i, i) = c.upsilon(l, s);
-    u[i] = sl * x[i];
-    grad[i] = 2 * x[i] * c.upsilon(l, s);
-    D += x[i] * x[i] * sl;
-  }
-  DF -= u * grad.transpose() / D;
+  modal_dynamics_jacobian(c, x, steady_forcing(c, x.size()), 0.5, DF);
 }
 
 void ModalEquilibriumProblem::residual(const Eigen::VectorXd& x, double p, Eigen::VectorXd& G) const {

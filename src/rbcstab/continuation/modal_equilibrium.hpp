@@ -28,6 +28,8 @@
 #include <optional>
 #include <vector>
 
+#include <Eigen/Dense>
+
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/continuation/problem.hpp"
 #include "rbcstab/model/scene.hpp"
@@ -44,6 +46,24 @@ struct ModalCoefficients {
   std::vector<double> ups0;   // Upsilon_l(0), index l - 2 (Upsilon_l(sigma) = ups0 + slope sigma)
   double upsilon(int l, double sigma) const { return ups0[static_cast<std::size_t>(l - 2)] + slope[static_cast<std::size_t>(l - 2)] * sigma; }
 };
+
+// The coefficients at a parameter set for modes 2..L, with the rest shape's pull kappa w0 (w0 = +-1).
+ModalCoefficients modal_coefficients(const Parameters& q, int L, double w0);
+
+// The modal dynamics on the sphere for any x-independent forcing h (layout of x) and rotation rate
+// omega_v of v (1/2 in the lab frame, 0 in the frame co-rotating with an m = 1 forcing):
+//   F = Y x + R x + h,  R z = i z, R v = i omega_v v,  Y = Upsilon_l(sigma) on mode l's entries,
+// with sigma from the area constraint x.F = 0 (linear in sigma, denominator < 0 for x != 0).
+// Shared by equilibria (h = (0, -1/Lambda, kappa w0, 0, ...), omega_v = 1/2) and the forced orbits
+// of modal_orbit.hpp (h(t)).
+double modal_sigma(const ModalCoefficients& c, const Eigen::Ref<const Eigen::VectorXd>& x,
+                   const Eigen::Ref<const Eigen::VectorXd>& h);
+// Writes F (sized like x) and returns sigma.
+double modal_dynamics(const ModalCoefficients& c, const Eigen::Ref<const Eigen::VectorXd>& x,
+                      const Eigen::Ref<const Eigen::VectorXd>& h, double omega_v, Eigen::Ref<Eigen::VectorXd> F);
+// DF = dF/dx = diag(Y) + R - u grad(sigma)^T with u_i = slope_i x_i, grad sigma = -(2 x_i Y_i + h_i)/D.
+void modal_dynamics_jacobian(const ModalCoefficients& c, const Eigen::Ref<const Eigen::VectorXd>& x,
+                             const Eigen::Ref<const Eigen::VectorXd>& h, double omega_v, Eigen::MatrixXd& DF);
 
 // Observables of a modal equilibrium state.
 struct ModalState {
