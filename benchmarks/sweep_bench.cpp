@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/trace.hpp"
@@ -71,6 +72,44 @@ void BM_TraceFig4(benchmark::State& state) {
 }
 BENCHMARK(BM_TraceFig4)->Args({0, 0})->Args({1, 0})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_TraceFig4)->Args({0, 1})->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
+
+// One in-plane asymptotic criterion evaluation (asymptotic_sigma_R) on the Appendix E(a) plane
+// (lambda = 1, Delta = 1, beta = pi/2, ln B = 3) at 8 values of ln C in [-5, 2]: range(0) = 1 the periodic-
+// orbit average, 0 the former time average (PredictorOptions transient 500, window 2000, tracing rtol 1e-12).
+// Counters: evaluations per second and, for the orbit, the largest |orbit - time average| over the 8 points
+// relative to (1 + |sigma_R|) (the error of the slower method bounds it).
+void BM_InPlaneSigma(benchmark::State& state) {
+  const bool orbit = state.range(0) == 1;
+  rbcstab::PredictorOptions po = rbcstab::TraceOptions::tracing_predictor();
+  rbcstab::OrbitAverageOptions oo, off;
+  oo.enabled = orbit;
+  off.enabled = false;
+  std::vector<rbcstab::Scene> scenes;
+  for (int k = 0; k < 8; ++k) {
+    rbcstab::Scene s;
+    s.parameters.lambda = 1;
+    s.parameters.B = std::exp(3.0);
+    s.parameters.C = std::exp(-5.0 + 7.0 * k / 7.0);
+    s.beta = 1.5707963267948966;
+    s.L = 5;
+    scenes.push_back(s);
+  }
+  std::size_t evaluations = 0;
+  for (auto _ : state)
+    for (const auto& s : scenes) {
+      benchmark::DoNotOptimize(rbcstab::asymptotic_sigma_R(s, po, oo).sigma_R);
+      ++evaluations;
+    }
+  double worst = 0;
+  if (orbit)
+    for (const auto& s : scenes) {
+      const double a = rbcstab::asymptotic_sigma_R(s, po, oo).sigma_R, b = rbcstab::asymptotic_sigma_R(s, po, off).sigma_R;
+      worst = std::max(worst, std::abs(a - b) / (1 + std::abs(b)));
+    }
+  state.counters["evaluations_per_s"] = benchmark::Counter(double(evaluations), benchmark::Counter::kIsRate);
+  state.counters["rel_diff_to_time_average"] = worst;
+}
+BENCHMARK(BM_InPlaneSigma)->Arg(1)->Arg(0)->Unit(benchmark::kMillisecond)->UseRealTime();
 
 }  // namespace
 

@@ -201,6 +201,8 @@ TEST(Trace, InPlaneAsymptoticByTimeAverage) {
       const Scene q = plane_scene(s, plane, p.x, p.y);
       const double sigma = asymptotic_sigma_R(q, o.predictor).sigma_R;
       EXPECT_FALSE(asymptotic_sigma_R(q, o.predictor).exact);
+      // Since the periodic-orbit average (OrbitAverageOptions on by default): every point of this plane from it.
+      EXPECT_EQ(asymptotic_sigma_R(q, o.predictor, o.orbit).source, SigmaSource::periodic_orbit);
       EXPECT_LE(std::abs(Upsilon(q.parameters, c.l, sigma)), 1e-10) << p.x << ", " << p.y;
     }
   std::cout << "in-plane trace: " << t.curves.size() << " pieces, " << t.evaluations << " evaluations, " << t.counters.steps << " steps, " << t.counters.rejected_steps << " rejected, " << t.counters.newton_iterations << " newton, " << t.counters.location_iterations << " location, " << t.seconds

@@ -204,7 +204,7 @@ std::vector<Agreement> predictor_agreements(const Scene& base, const DiagramSpec
     Agreement a = compare(base, spec, points, v, d);
     a.predictor = "asymptotic";
     a.description = "unstable iff mu_l = Upsilon_l(<sigma_R>) > 0 for some l in [3, L] (exact equilibrium out of "
-                    "plane, time average in plane); mode: the surviving mode argmax_l sigma_l^c";
+                    "plane, periodic-orbit average in plane, time average where no orbit attracts); mode: the surviving mode argmax_l sigma_l^c";
     a.boundary = tmp.boundary;
     a.boundary_pieces = tmp.boundary_pieces;
     a.boundary_corners = tmp.boundary_corners;
