@@ -268,19 +268,29 @@ void PeriodicOrbitProblem::residual(const Eigen::VectorXd& X, double p, Eigen::V
   if (sys_.conserves_norm()) F.head(n_) += (X.head(n_).squaredNorm() - 1) * sh.phi[0];
 }
 
-void PeriodicOrbitProblem::jacobian(const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) const {
+// The cyclic shooting Jacobian: M_j on the diagonal blocks, -I coupling x_{j+1}, and the closing block
+// coupling x_0 scaled by closing_sign (-I: periodic x_N = x_0; +I: anti-periodic x_N = -x_0).
+const PeriodicOrbitProblem::Shooting& PeriodicOrbitProblem::cyclic_jacobian(const Eigen::VectorXd& X, double p,
+                                                                            double closing_sign,
+                                                                            Eigen::MatrixXd& J) const {
   const Shooting& sh = shoot(X, p);
   const Eigen::Index m = n_ * N_;
   J.setZero(m, m);
   if (!sh.ok) {
     J.setConstant(std::numeric_limits<double>::quiet_NaN());
-    return;
+    return sh;
   }
   for (int j = 0; j < N_; ++j) {
-    const auto js = static_cast<std::size_t>(j);
-    J.block(j * n_, j * n_, n_, n_) += sh.M[js];
-    J.block(j * n_, ((j + 1) % N_) * n_, n_, n_) -= Eigen::MatrixXd::Identity(n_, n_);
+    J.block(j * n_, j * n_, n_, n_) += sh.M[static_cast<std::size_t>(j)];
+    const double sign = j + 1 == N_ ? closing_sign : -1.0;
+    J.block(j * n_, ((j + 1) % N_) * n_, n_, n_) += sign * Eigen::MatrixXd::Identity(n_, n_);
   }
+  return sh;
+}
+
+void PeriodicOrbitProblem::jacobian(const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) const {
+  const Shooting& sh = cyclic_jacobian(X, p, -1.0, J);
+  if (!sh.ok) return;
   if (sys_.conserves_norm()) {
     const Eigen::VectorXd x0 = X.head(n_);
     J.block(0, 0, n_, n_) += (x0.squaredNorm() - 1) * sh.M[0] + 2 * sh.phi[0] * x0.transpose();
@@ -288,18 +298,7 @@ void PeriodicOrbitProblem::jacobian(const Eigen::VectorXd& X, double p, Eigen::M
 }
 
 void PeriodicOrbitProblem::antiperiodic_jacobian(const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) const {
-  const Shooting& sh = shoot(X, p);
-  const Eigen::Index m = n_ * N_;
-  J.setZero(m, m);
-  if (!sh.ok) {
-    J.setConstant(std::numeric_limits<double>::quiet_NaN());
-    return;
-  }
-  for (int j = 0; j < N_; ++j) {
-    J.block(j * n_, j * n_, n_, n_) += sh.M[static_cast<std::size_t>(j)];
-    const double sign = j + 1 == N_ ? 1.0 : -1.0;  // x_N = -x_0 closes the anti-periodic cycle
-    J.block(j * n_, ((j + 1) % N_) * n_, n_, n_) += sign * Eigen::MatrixXd::Identity(n_, n_);
-  }
+  cyclic_jacobian(X, p, 1.0, J);
 }
 
 void PeriodicOrbitProblem::parameter_derivative(const Eigen::VectorXd& X, double p, Eigen::VectorXd& Fp) const {

@@ -152,6 +152,7 @@ class PeriodicOrbitProblem final : public ContinuationProblem {
     std::vector<Eigen::MatrixXd> M;       // d phi_j / d x_j
   };
   const Shooting& shoot(const Eigen::VectorXd& X, double p) const;
+  const Shooting& cyclic_jacobian(const Eigen::VectorXd& X, double p, double closing_sign, Eigen::MatrixXd& J) const;
   const ForcedSystem& sys_;
   OrbitOptions o_;
   Eigen::Index n_;
