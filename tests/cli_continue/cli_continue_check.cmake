@@ -1,24 +1,5 @@
 # Usage: cmake -DCLI=<rbcstab> -DCASE=<case> -DWORK=<dir> -P cli_continue_check.cmake
-function(fail msg)
-  message(FATAL_ERROR "cli.continue.${CASE}: ${msg}")
-endfunction()
-
-function(require_keys json)
-  foreach(key IN LISTS ARGN)
-    string(JSON type ERROR_VARIABLE err TYPE "${json}" ${key})
-    if(err)
-      fail("missing key '${key}'")
-    endif()
-  endforeach()
-endfunction()
-
-# One JSON path (its elements as separate arguments) must exist.
-function(require_path json)
-  string(JSON type ERROR_VARIABLE err TYPE "${json}" ${ARGN})
-  if(err)
-    fail("missing '${ARGN}'")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/cli_common.cmake)
 
 # Fig. 2's in-plane scene (lambda = 5, Delta0 = 0.01, B = 2, C = 0.04) from Delta = 0.3 to 0.45: one
 # swinging -> tumbling transition near Delta = 0.3848 (docs/continuation.md).
@@ -88,18 +69,7 @@ elseif(CASE STREQUAL "orbit_csv")
     fail("summary does not report the transition: ${out}")
   endif()
 elseif(CASE STREQUAL "bad_segments")
-  execute_process(COMMAND ${CLI} ${ORBIT_ARGS} --segments 0 --csv ${WORK}/never.csv
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 2)
-    fail("expected exit 2, got ${rc}")
-  endif()
-  string(FIND "${err}" "segments = 0" pos)
-  if(pos EQUAL -1)
-    fail("message does not name segments: ${err}")
-  endif()
-  if(EXISTS ${WORK}/never.csv)
-    fail("a file was written on bad input")
-  endif()
+  expect_bad_input("segments = 0" ${ORBIT_ARGS} --segments 0)
 elseif(CASE STREQUAL "modal_switch_json")
   # Modal equilibria (lambda = 1, B = 1, L = 6) in C from 0.08 down: the first BP (l = 3) near
   # C = 0.036169 (tests/continuation: located to 1e-8 against the closed form), and the switched
@@ -139,18 +109,7 @@ elseif(CASE STREQUAL "modal_csv")
     fail("no switched rows in the CSV")
   endif()
 elseif(CASE STREQUAL "modal_bad_L")
-  execute_process(COMMAND ${CLI} continue --kind modal --parameter C --L 2 --csv ${WORK}/never.csv
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 2)
-    fail("expected exit 2, got ${rc}")
-  endif()
-  string(FIND "${err}" "L = 2" pos)
-  if(pos EQUAL -1)
-    fail("message does not name L: ${err}")
-  endif()
-  if(EXISTS ${WORK}/never.csv)
-    fail("a file was written on bad input")
-  endif()
+  expect_bad_input("L = 2" continue --kind modal --parameter C --L 2)
 elseif(CASE STREQUAL "modal_orbit_json")
   # The in-plane post-instability orbit of the Fig. 6 (ab) scene (lambda = 5, L = 5, delta = 1e-3)
   # relaxed for 600: mode 3 carries the area (tests/continuation/modal_orbit_test.cpp: Delta_3(0) =

@@ -2,16 +2,7 @@
 # through `rbcstab thresholds` (analysis/, not continuation/) at points of the curve, the JSON/CSV
 # keys, and bad input refused with exit code 2 naming the flag.
 # Usage: cmake -DCLI=<rbcstab> -DCASE=<case> -DWORK=<dir> -P cli_curve_check.cmake
-function(fail msg)
-  message(FATAL_ERROR "cli.continue.${CASE}: ${msg}")
-endfunction()
-
-function(require_path json)
-  string(JSON type ERROR_VARIABLE err TYPE "${json}" ${ARGN})
-  if(err)
-    fail("missing '${ARGN}'")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/cli_common.cmake)
 
 # thresholds --json at (lambda, Delta, Delta0, B, C) of the modal scene: sets OUT_JSON in the caller.
 macro(thresholds)
@@ -107,18 +98,7 @@ elseif(CASE STREQUAL "curve_vesicle_lp")
     endif()
   endforeach()
 elseif(CASE STREQUAL "curve_bad_parameter2")
-  execute_process(COMMAND ${CLI} continue --parameter Lambda --curve LP --parameter2 Delta --csv ${WORK}/never.csv
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 2)
-    fail("expected exit 2, got ${rc}")
-  endif()
-  string(FIND "${err}" "parameter2 = Delta" pos)
-  if(pos EQUAL -1)
-    fail("message does not name parameter2: ${err}")
-  endif()
-  if(EXISTS ${WORK}/never.csv)
-    fail("a file was written on bad input")
-  endif()
+  expect_bad_input("parameter2 = Delta" continue --parameter Lambda --curve LP --parameter2 Delta)
   execute_process(COMMAND ${CLI} continue --curve LPC --parameter2 B RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   string(FIND "${err}" "curve = LPC" pos)
   if(NOT rc EQUAL 2 OR pos EQUAL -1)

@@ -1,0 +1,38 @@
+# Helpers shared by the `rbcstab continue` CLI checks (cli_continue_check.cmake, cli_curve_check.cmake).
+function(fail msg)
+  message(FATAL_ERROR "cli.continue.${CASE}: ${msg}")
+endfunction()
+
+# Every listed top-level key must exist.
+function(require_keys json)
+  foreach(key IN LISTS ARGN)
+    string(JSON type ERROR_VARIABLE err TYPE "${json}" ${key})
+    if(err)
+      fail("missing key '${key}'")
+    endif()
+  endforeach()
+endfunction()
+
+# One JSON path (its elements as separate arguments) must exist.
+function(require_path json)
+  string(JSON type ERROR_VARIABLE err TYPE "${json}" ${ARGN})
+  if(err)
+    fail("missing '${ARGN}'")
+  endif()
+endfunction()
+
+# `rbcstab <args> --csv WORK/never.csv` must exit 2, name `fragment` on stderr and write no file.
+function(expect_bad_input fragment)
+  execute_process(COMMAND ${CLI} ${ARGN} --csv ${WORK}/never.csv
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 2)
+    fail("expected exit 2, got ${rc}")
+  endif()
+  string(FIND "${err}" "${fragment}" pos)
+  if(pos EQUAL -1)
+    fail("message does not name '${fragment}': ${err}")
+  endif()
+  if(EXISTS ${WORK}/never.csv)
+    fail("a file was written on bad input")
+  endif()
+endfunction()
