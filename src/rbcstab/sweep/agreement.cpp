@@ -195,21 +195,24 @@ std::vector<Agreement> predictor_agreements(const Scene& base, const DiagramSpec
     }
   };
 
+  // A predictor's entry: its agreement, plus the traced boundary it was measured against.
+  auto push = [&](Agreement a, const Agreement& boundary, const char* predictor, const char* description) {
+    a.predictor = predictor;
+    a.description = description;
+    a.boundary = boundary.boundary;
+    a.boundary_pieces = boundary.boundary_pieces;
+    a.boundary_corners = boundary.boundary_corners;
+    a.note = boundary.note;
+    out.push_back(std::move(a));
+  };
   Agreement asymptotic_boundary;
   const BoundaryDistance asymptotic_distance = traced(TraceCriterion::asymptotic, asymptotic_boundary);
   {  // asymptotic
     const auto v = verdicts(base, spec, points, threads, [&](const Scene& s) { return asymptotic_point(s, po); });
-    const Agreement& tmp = asymptotic_boundary;
-    const BoundaryDistance& d = asymptotic_distance;
-    Agreement a = compare(base, spec, points, v, d);
-    a.predictor = "asymptotic";
-    a.description = "unstable iff mu_l = Upsilon_l(<sigma_R>) > 0 for some l in [3, L] (exact equilibrium out of "
-                    "plane, periodic-orbit average in plane, time average where no orbit attracts); mode: the surviving mode argmax_l sigma_l^c";
-    a.boundary = tmp.boundary;
-    a.boundary_pieces = tmp.boundary_pieces;
-    a.boundary_corners = tmp.boundary_corners;
-    a.note = tmp.note;
-    out.push_back(std::move(a));
+    push(compare(base, spec, points, v, asymptotic_distance), asymptotic_boundary, "asymptotic",
+         "unstable iff mu_l = Upsilon_l(<sigma_R>) > 0 for some l in [3, L] (exact equilibrium out of "
+         "plane, periodic-orbit average in plane, time average where no orbit attracts); mode: the surviving mode "
+         "argmax_l sigma_l^c");
   }
   if (options.finite_horizon) {
     const auto v = verdicts(base, spec, points, threads, [&](const Scene& s) {
@@ -220,15 +223,9 @@ std::vector<Agreement> predictor_agreements(const Scene& base, const DiagramSpec
     Agreement tmp = asymptotic_boundary;
     const BoundaryDistance d =
         options.trace_finite_horizon ? traced(TraceCriterion::finite_horizon, tmp) : asymptotic_distance;
-    Agreement a = compare(base, spec, points, v, d);
-    a.predictor = "finite_horizon";
-    a.description = "unstable iff G_l(T) > 0 for some l in [3, L] along the reduced transient; mode: argmax_l "
-                    "Delta_l(0)(exp(2 G_l(T)) - 1)";
-    a.boundary = tmp.boundary;
-    a.boundary_pieces = tmp.boundary_pieces;
-    a.boundary_corners = tmp.boundary_corners;
-    a.note = tmp.note;
-    out.push_back(std::move(a));
+    push(compare(base, spec, points, v, d), tmp, "finite_horizon",
+         "unstable iff G_l(T) > 0 for some l in [3, L] along the reduced transient; mode: argmax_l "
+         "Delta_l(0)(exp(2 G_l(T)) - 1)");
   }
   constexpr int kOverlaySamples = 400;
   const std::vector<Overlay> overlays = analytic_overlays(base, spec, kOverlaySamples);
