@@ -19,6 +19,7 @@
 #include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
+#include "rbcstab/continuation/ns_curve.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
@@ -283,8 +284,9 @@ const SpecialPoint& pick_point(const Branch& b, const std::string& type, int poi
                                "); its curve needs an exact start");
     return sp;
   }
-  throw std::runtime_error("--curve " + type + ": the one-parameter branch has " + std::to_string(k) + " " + type +
-                           " point(s), --point " + std::to_string(point) + " asked for; widen --min/--max");
+  throw std::runtime_error("--curve " + type + ": no located " + type + " point number " + std::to_string(point) +
+                           ": the one-parameter branch has " + std::to_string(k) + " " + type +
+                           " point(s); widen --min/--max");
 }
 
 // Output of a curve: the underlying point's state by symbol (describe(x, p1, p2)) and, for HB, omega.
@@ -324,7 +326,7 @@ int report_curve(const ContinueOptions& o, const SceneFile& sf, const Branch& on
     st["type"] = to_string(start.type);
     st["name"] = start.name;
     st[o.parameter] = number_or_null(start.p);
-    st[o.parameter2] = number_or_null(get_parameter(sf.scene.parameters, continuation_parameter_from_string(o.parameter2)));
+    st[o.parameter2] = number_or_null(get_parameter(sf.scene, continuation_parameter_from_string(o.parameter2)));
     st["precision"] = number_or_null(start.precision);
     st["status"] = to_string(start.status);
     j["curve"] = {{"type", o.curve}, {"parameters", {o.parameter, o.parameter2}}, {"start", st},
@@ -355,11 +357,19 @@ ContinuationParameter parameter2(const ContinueOptions& o) {
     } catch (const InvalidArgument&) {
       throw InvalidArgument("parameter2", "parameter2 = '" + o.parameter2 +
                                               "' is not a continuation parameter: must be one of lambda, Delta, "
-                                              "Delta0, B, C, Lambda, S");
+                                              "Delta0, B, C, Lambda, S, beta");
     }
   }();
   require_independent(continuation_parameter_from_string(o.parameter), q2, "parameter2");
   return q2;
+}
+
+// The engine's bounds of parameter q from --min/--max (or --min2/--max2). Closed domain edges are
+// landed on exactly unless told otherwise: lambda >= 0, beta in [0, pi].
+void set_bounds(ContinuationOptions& engine, ContinuationParameter q, double lo, double hi) {
+  const bool beta = q == ContinuationParameter::beta;
+  engine.p_min = ((q == ContinuationParameter::lambda || beta) && lo < 0) ? 0.0 : lo;
+  engine.p_max = (beta && hi > M_PI) ? M_PI : hi;
 }
 
 int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
@@ -374,12 +384,11 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
   }
   ContinuationOptions engine = o.engine;
   engine.events.clear();  // the one-parameter events read the one-parameter state
-  engine.p_min = (q2 == ContinuationParameter::lambda && o.p2_min < 0) ? 0.0 : o.p2_min;  // as for --min
-  engine.p_max = o.p2_max;
+  set_bounds(engine, q2, o.p2_min, o.p2_max);  // as for --min/--max
   engine.direction = Direction::both;
   Scene scene = sf.scene;
-  scene.parameters = with_parameter(scene.parameters, q1, sp->p);  // the curve's start
-  const double p2_0 = get_parameter(scene.parameters, q2);
+  scene = with_parameter(scene, q1, sp->p);  // the curve's start
+  const double p2_0 = get_parameter(scene, q2);
   auto polar_of = [](const Eigen::VectorXd& y, double, double) { return polar_json(y.head(3)); };
   if (o.kind == "orbit") {
     const ReducedForcedSystem2 system(scene, q1, q2);
@@ -387,6 +396,12 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
     const Eigen::Index n = base.dimension();
     if (o.curve == "LPC") {
       const FoldCurveProblem curve(base, *sp, p2_0);
+      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, polar_of,
+                          "multipliers", nullptr);
+    }
+    if (o.curve == "NS") {
+      // Unknowns (X, p1, kappa = cos theta): the shooting state comes first, as for LPC/PD.
+      const NeimarkSackerCurveProblem curve(system, o.orbit, *sp, p2_0);
       return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, polar_of,
                           "multipliers", nullptr);
     }
@@ -446,17 +461,17 @@ int run(ContinueOptions& o) {
     if (modal_orbit)
       throw InvalidArgument("curve", "curve = " + o.curve + " is not available for --kind modal-orbit (no two-parameter "
                                          "modal forced system yet): use --kind orbit, equilibrium or modal");
-    const bool cycle_curve = o.curve == "LPC" || o.curve == "PD";
+    const bool cycle_curve = o.curve == "LPC" || o.curve == "PD" || o.curve == "NS";
     if (orbit != cycle_curve)
       throw InvalidArgument("curve", "curve = " + o.curve + " is not available for --kind " + o.kind + ": must be " +
-                                         (orbit ? "LPC or PD" : "LP, BP or HB"));
+                                         (orbit ? "LPC, PD or NS" : "LP, BP or HB"));
     if (o.parameter2.empty()) throw InvalidArgument("parameter2", "--curve needs --parameter2 (the second free parameter)");
     if (o.switch_at_bp) throw InvalidArgument("switch-at-bp", "--switch-at-bp and --curve cannot be combined");
     parameter2(o);
     if (!(o.p2_min < o.p2_max))
       throw InvalidArgument("min2", "min2 = " + std::to_string(o.p2_min) + " must be < max2 = " + std::to_string(o.p2_max));
   } else if (!o.parameter2.empty()) {
-    throw InvalidArgument("parameter2", "--parameter2 needs --curve LP|BP|HB|LPC|PD");
+    throw InvalidArgument("parameter2", "--parameter2 needs --curve LP|BP|HB|LPC|PD|NS");
   }
   SceneFile sf = o.scene.resolve();
   // Equilibria need an autonomous reduced system (rest shape out of plane), periodic orbits a forced
@@ -467,9 +482,7 @@ int run(ContinueOptions& o) {
     throw InvalidArgument("model", "model = " + to_string(sf.scene.model) + " is not available for --kind " + o.kind +
                                        ": must be " + to_string(level) + " (or auto)");
   const ContinuationParameter q = continuation_parameter_from_string(o.parameter);
-  // lambda's domain starts at 0 inclusive: land there exactly unless told otherwise.
-  o.engine.p_min = (q == ContinuationParameter::lambda && o.p_min < 0) ? 0.0 : o.p_min;
-  o.engine.p_max = o.p_max;
+  set_bounds(o.engine, q, o.p_min, o.p_max);
   o.engine.direction = o.direction == "forward" ? Direction::forward
                        : o.direction == "backward" ? Direction::backward
                                                    : Direction::both;
@@ -545,9 +558,13 @@ static Runner add_continue(CLI::App& app) {
   app.add_flag("--switch-at-bp", o->switch_at_bp,
                "equilibrium, modal: also continue the branch that bifurcates at the first BP (modal: the "
                "post-instability state); JSON key switched_branch, CSV rows with branch = switched");
-  app.add_option("--parameter", o->parameter, "free parameter: lambda, Delta, Delta0, B, C, Lambda or S")->capture_default_str();
-  app.add_option("--min", o->p_min, "lower bound of the free parameter (the branch ends there exactly; default: none, 0 for lambda)");
-  app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly; default: none)");
+  app.add_option("--parameter", o->parameter,
+                 "free parameter: lambda, Delta, Delta0, B, C, Lambda, S or beta (the rest shape's orientation, "
+                 "[0, pi]; equilibria exist only at beta = 0 unless Delta0 = 0 or C = inf)")
+      ->capture_default_str();
+  app.add_option("--min", o->p_min,
+                 "lower bound of the free parameter (the branch ends there exactly; default: none, 0 for lambda and beta)");
+  app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly; default: none, pi for beta)");
   app.add_option("--direction", o->direction, "forward (parameter increasing), backward or both")
       ->check(CLI::IsMember({"forward", "backward", "both"}))
       ->capture_default_str();
@@ -562,10 +579,10 @@ static Runner add_continue(CLI::App& app) {
   app.add_option("--curve", o->curve,
                  "continue the curve of a special point of the one-parameter branch in (--parameter, --parameter2): "
                  "LP, BP, HB (equilibrium, modal; modal BP: the symmetry-breaking curve Upsilon_l(sigma) = 0) or LPC, "
-                 "PD (orbit); default: none (one-parameter run)")
-      ->check(CLI::IsMember({"LP", "BP", "HB", "LPC", "PD"}));
+                 "PD, NS (orbit); default: none (one-parameter run)")
+      ->check(CLI::IsMember({"LP", "BP", "HB", "LPC", "PD", "NS"}));
   app.add_option("--parameter2", o->parameter2,
-                 "--curve: second free parameter (lambda, Delta, Delta0, B, C, Lambda or S; independent of "
+                 "--curve: second free parameter (lambda, Delta, Delta0, B, C, Lambda, S or beta; independent of "
                  "--parameter: not Lambda with Delta or lambda, not S with C or Delta0)");
   app.add_option("--min2", o->p2_min, "--curve: lower bound of --parameter2 (the curve ends there exactly; default: none)");
   app.add_option("--max2", o->p2_max, "--curve: upper bound of --parameter2 (the curve ends there exactly; default: none)");

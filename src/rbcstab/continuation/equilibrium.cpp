@@ -6,34 +6,61 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
+#include "rbcstab/continuation/detail/rest_direction.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 
 namespace rbcstab {
 
+namespace {
+// Only the rest shape's orientation enters (ReducedModel normalises g onto the sphere; its size is
+// kappa = 1/(Lambda S) from the parameters), so build it with Delta0 = Delta > 0: a branch started
+// at Delta0 = 0 keeps the orientation when continued in Delta0.
+InitialState oriented_initial_state(Scene s) {
+  s.parameters.Delta0 = s.parameters.Delta;
+  return initial_state(s);
+}
+}  // namespace
+
 ReducedEquilibriumProblem::ReducedEquilibriumProblem(const Scene& scene, ContinuationParameter free)
     : scene_(scene), free_(free) {
   scene_.validate();
-  // Only the rest shape's orientation enters (ReducedModel normalises g onto the sphere; its size is
-  // kappa = 1/(Lambda S) from the parameters), so build it with Delta0 = Delta > 0: a branch started
-  // at Delta0 = 0 keeps the orientation when continued in Delta0.
-  Scene oriented = scene_;
-  oriented.parameters.Delta0 = oriented.parameters.Delta;
-  init_ = initial_state(oriented);
-  const ReducedModel& m = model(start_parameter());
-  if (scene_.parameters.inv_Lambda_S() > 0 && std::abs(m.z0(0)) > 0)
-    throw InvalidArgument("beta", "beta = " + format_value(scene_.beta) +
-                                      " gives an in-plane rest-shape component (r0 > 0): the reduced system is "
-                                      "forced with period 2 pi and has no equilibria; use beta = 0, Delta0 = 0, "
-                                      "or continue periodic orbits");
+  init_ = oriented_initial_state(scene_);
+  model(start_parameter());  // throws InvalidArgument("beta", ...) for a forced scene
 }
 
 const ReducedModel& ReducedEquilibriumProblem::model(double p) const {
   if (!cache_ || cache_p_ != p) {
-    cache_.emplace(with_parameter(scene_.parameters, free_, p), init_);
+    const Scene at = with_parameter(scene_, free_, p);  // throws InvalidArgument outside p's domain
+    // beta turns the rest shape: its direction is rebuilt per value.
+    cache_.emplace(at.parameters, free_ == ContinuationParameter::beta ? oriented_initial_state(at) : init_);
     cache_p_ = p;
+    // The domain of an equilibrium (at every p, not only the start: a branch in Delta0 from 0 or in
+    // beta from 0 would otherwise walk into a forced system read at t = 0).
+    if (at.parameters.inv_Lambda_S() > 0 && std::abs(cache_->z0(0)) > 0) {
+      cache_.reset();
+      const std::string where = free_ == ContinuationParameter::beta ? "" : " at " + to_string(free_) + " = " + format_value(p);
+      throw InvalidArgument("beta", "beta = " + format_value(at.beta) + " gives an in-plane rest-shape component (r0 > 0)" +
+                                        where + ": the reduced system is forced with period 2 pi and has no equilibria; use "
+                                        "beta = 0, Delta0 = 0, or continue periodic orbits");
+    }
   }
   return *cache_;
+}
+
+void ReducedEquilibriumProblem::parameter_derivative(const Eigen::VectorXd& y, double p, Eigen::VectorXd& Fp) const {
+  if (free_ != ContinuationParameter::beta) {
+    ContinuationProblem::parameter_derivative(y, p, Fp);
+    return;
+  }
+  // Wherever an equilibrium exists, F does not move with beta: either kappa = 0 (no rest-shape pull)
+  // or beta = 0 exactly, where the direction's slope vanishes (z0 ~ sin^2 beta, w0' ~ sin 2 beta) — and
+  // a difference in beta would step off that one-point domain.
+  model(p);  // the domain check
+  const detail::RestDirection r = detail::rest_direction(p, false);
+  const double kappa = with_parameter(scene_, free_, p).parameters.inv_Lambda_S();
+  const Eigen::Vector3d dg(r.dz0, 0.0, r.dw0);
+  Fp = kappa * (dg - y.dot(dg) / y.squaredNorm() * y);
 }
 
 void ReducedEquilibriumProblem::residual(const Eigen::VectorXd& y, double p, Eigen::VectorXd& G) const {

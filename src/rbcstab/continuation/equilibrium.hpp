@@ -23,17 +23,21 @@ namespace rbcstab {
 
 class ReducedEquilibriumProblem final : public ContinuationProblem {
  public:
-  // The scene supplies every parameter but the free one, and the rest shape's orientation beta.
-  // Throws InvalidArgument("beta", ...) when the system is forced (see above).
+  // The scene supplies every parameter but the free one (which may be beta, the rest shape's
+  // orientation). Throws InvalidArgument("beta", ...) when the system is forced (see above), at the
+  // start and at any later parameter value (the engine ends the branch there: outside_domain).
   ReducedEquilibriumProblem(const Scene& scene, ContinuationParameter free);
 
   Eigen::Index dimension() const override { return 3; }
   void residual(const Eigen::VectorXd& y, double p, Eigen::VectorXd& G) const override;
   void jacobian(const Eigen::VectorXd& y, double p, Eigen::MatrixXd& J) const override;
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& y, double p) const override;
+  // Central differences, except for beta: exact (the equilibrium's domain in beta is one point when
+  // the rest shape pulls, where a difference would step outside; see equilibrium.cpp).
+  void parameter_derivative(const Eigen::VectorXd& y, double p, Eigen::VectorXd& Fp) const override;
   std::string parameter_name() const override { return to_string(free_); }
 
-  double start_parameter() const { return get_parameter(scene_.parameters, free_); }
+  double start_parameter() const { return get_parameter(scene_, free_); }
   // The scene's own initial state (a start for Newton only if it is near an equilibrium).
   Eigen::VectorXd scene_state() const;
   // The reduced state after relaxing for time T from the scene's initial state (a start on the

@@ -31,15 +31,30 @@ ModalEquilibriumProblem::ModalEquilibriumProblem(const Scene& scene, Continuatio
   // a branch started at Delta0 = 0 keeps it when continued in Delta0.
   Scene oriented = scene_;
   oriented.parameters.Delta0 = oriented.parameters.Delta;
-  const InitialState init = initial_state(oriented);
-  const double g20 = init.g.at(2, 0).real();
-  const double in_plane = std::abs(init.g.at(2, 1)) + std::abs(init.g.at(2, 2));
+  const double g20 = initial_state(oriented).g.at(2, 0).real();
   w0_ = g20 <= 0 ? 1.0 : -1.0;  // w0 = -g20 sqrt(a2/Delta0) normalised: +1 for beta = 0
-  if (scene_.parameters.inv_Lambda_S() > 0 && in_plane > 0)
-    throw InvalidArgument("beta", "beta = " + format_value(scene_.beta) +
+  require_autonomous(scene_);
+}
+
+void ModalEquilibriumProblem::require_autonomous(const Scene& scene) {
+  // g_{2,m} is proportional to D^(2)_{m,0}(beta) (initial_state): read the orientation from it
+  // directly (initial_state would also validate the perturbations against a continued Delta).
+  const std::vector<double> D = wigner_column(2, scene.beta);
+  const double in_plane = std::abs(D[3]) + std::abs(D[4]);
+  if (scene.parameters.inv_Lambda_S() > 0 && in_plane > 0)
+    throw InvalidArgument("beta", "beta = " + format_value(scene.beta) +
                                       " gives the rest shape m = 1, 2 content that rotates with the flow: the modal "
                                       "l = 2 block is forced with period 2 pi and has no equilibria; use beta = 0, "
                                       "Delta0 = 0, or continue periodic orbits");
+}
+
+void ModalEquilibriumProblem::parameter_derivative(const Eigen::VectorXd& x, double p, Eigen::VectorXd& Fp) const {
+  if (free_ != ContinuationParameter::beta) {
+    ContinuationProblem::parameter_derivative(x, p, Fp);
+    return;
+  }
+  coefficients(p);  // the domain check
+  Fp = Eigen::VectorXd::Zero(dimension());
 }
 
 ModalCoefficients modal_coefficients(const Parameters& q, int L, double w0) {
@@ -62,7 +77,11 @@ ModalCoefficients ModalEquilibriumProblem::coefficients_at(const Parameters& q) 
 
 const ModalCoefficients& ModalEquilibriumProblem::coefficients(double p) const {
   if (!cache_ || cache_p_ != p) {
-    cache_ = coefficients_at(with_parameter(scene_.parameters, free_, p));
+    const Scene at = with_parameter(scene_, free_, p);  // throws InvalidArgument outside p's domain
+    // At every p, not only the start: a branch in Delta0 from 0 or in beta from 0 would otherwise
+    // walk into a forced system read as autonomous.
+    require_autonomous(at);
+    cache_ = coefficients_at(at.parameters);
     cache_p_ = p;
   }
   return *cache_;
@@ -192,7 +211,7 @@ Eigen::VectorXcd ModalEquilibriumProblem::spectrum(const Eigen::VectorXd& x, dou
 }
 
 Eigen::VectorXd ModalEquilibriumProblem::ellipsoidal_state(double p) const {
-  const OutOfPlaneEquilibrium e = out_of_plane_equilibrium(with_parameter(scene_.parameters, free_, p));
+  const OutOfPlaneEquilibrium e = out_of_plane_equilibrium(with_parameter(scene_, free_, p).parameters);
   // The closed form is written for w0 = +1; the system is odd in (w, w0). (Built through a
   // std::vector with the values first: GCC 12 flags element writes into a fresh dynamic Eigen vector as null dereferences.)
   std::vector<double> x = {e.r * std::cos(e.Psi), -e.r * std::sin(e.Psi), w0_ * e.w};
@@ -250,7 +269,9 @@ ModalBranchPointCurve::ModalBranchPointCurve(const Scene& scene, ContinuationPar
 }
 
 Parameters ModalBranchPointCurve::parameters(double p1, double p2) const {
-  return with_parameter(with_parameter(scene_.parameters, p2_, p2), p1_, p1);
+  const Scene at = with_parameter(with_parameter(scene_, p2_, p2), p1_, p1);
+  ModalEquilibriumProblem::require_autonomous(at);
+  return at.parameters;
 }
 
 void ModalBranchPointCurve::residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const {

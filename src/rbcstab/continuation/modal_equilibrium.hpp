@@ -81,12 +81,18 @@ class ModalEquilibriumProblem final : public ContinuationProblem {
   void residual(const Eigen::VectorXd& x, double p, Eigen::VectorXd& G) const override;
   void jacobian(const Eigen::VectorXd& x, double p, Eigen::MatrixXd& J) const override;
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& x, double p) const override;
+  // Central differences, except for beta: zero wherever the problem is defined (kappa = 0, or the
+  // one-point domain beta = 0 of a pulling rest shape, where a difference would step outside).
+  void parameter_derivative(const Eigen::VectorXd& x, double p, Eigen::VectorXd& Fp) const override;
   std::string parameter_name() const override { return to_string(free_); }
 
   int L() const { return L_; }
   ContinuationParameter free_parameter() const { return free_; }
   const Scene& scene() const { return scene_; }
-  double start_parameter() const { return get_parameter(scene_.parameters, free_); }
+  double start_parameter() const { return get_parameter(scene_, free_); }
+  // Throws InvalidArgument("beta", ...) unless the scene's l = 2 block is autonomous (no rest-shape
+  // m = 1, 2 content that rotates with the flow, or kappa = 0): where equilibria exist.
+  static void require_autonomous(const Scene& scene);
   static Eigen::Index index_of_mode(int l) { return 5 + (l - 3); }  // the a_l entry
 
   // Coefficients at a full parameter set (two-parameter problems use this) or at the free value p.
@@ -136,7 +142,7 @@ class ModalBranchPointCurve final : public ContinuationProblem {
   int mode() const { return l_; }
   // (x_2, p1) at a BP of a one-parameter modal run in p1 (with p2 at the scene's value).
   Eigen::VectorXd start(const Eigen::VectorXd& x_bp, double p1_bp) const;
-  double start_parameter() const { return get_parameter(scene_.parameters, p2_); }
+  double start_parameter() const { return get_parameter(scene_, p2_); }
   Parameters parameters(double p1, double p2) const;
 
  private:

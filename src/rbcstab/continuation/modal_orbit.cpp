@@ -4,6 +4,7 @@
 #include <complex>
 #include <limits>
 
+#include "rbcstab/continuation/detail/rest_direction.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
@@ -31,9 +32,13 @@ ModalForcedSystem::ModalForcedSystem(const Scene& scene, ContinuationParameter f
     : scene_(scene), free_(free), L_(scene.L) {
   scene_.validate();
   require(L_ >= 3, "L", L_, "an integer >= 3 (the modal orbit needs at least one mode l >= 3)");
+  direction_ = direction_of(scene_);
+}
+
+ModalForcedSystem::Direction ModalForcedSystem::direction_of(const Scene& scene) {
   // The rest shape's direction from the scene built with Delta0 = Delta > 0 (as the reduced and the
   // modal equilibrium problems): its size is kappa = 1/(Lambda S), so a branch may pass Delta0 = 0.
-  Scene oriented = scene_;
+  Scene oriented = scene;
   oriented.parameters.Delta0 = oriented.parameters.Delta;
   const InitialState init = initial_state(oriented);
   for (int l = 3; l <= init.g.L; ++l)
@@ -42,34 +47,44 @@ ModalForcedSystem::ModalForcedSystem(const Scene& scene, ContinuationParameter f
   const std::complex<double> z0 = std::sqrt(2.0) * init.g.at(2, 2), v0 = std::sqrt(2.0) * init.g.at(2, 1);
   const double w0 = -init.g.at(2, 0).real();
   const double q0 = std::sqrt(std::norm(z0) + w0 * w0 + std::norm(v0));
+  Direction d;
   if (q0 > 0) {
-    z0_ = z0 / q0;
-    v0_ = v0 / q0;
-    w0_ = w0 / q0;
+    d.z0 = z0 / q0;
+    d.v0 = v0 / q0;
+    d.w0 = w0 / q0;
   }
+  return d;
+}
+
+const ModalForcedSystem::Direction& ModalForcedSystem::direction(double p) const {
+  if (free_ != ContinuationParameter::beta) return direction_;
+  auto it = directions_.find(p);
+  if (it != directions_.end()) return it->second;
+  if (directions_.size() >= 8) directions_.clear();  // no reference is held across calls
+  return directions_.emplace(p, direction_of(with_parameter(scene_, free_, p))).first->second;
 }
 
 const ModalCoefficients& ModalForcedSystem::coefficients(double p) const {
   auto it = cache_.find(p);
   if (it != cache_.end()) return it->second;
   if (cache_.size() >= 8) cache_.clear();  // no reference is held across calls
-  return cache_.emplace(p, modal_coefficients(with_parameter(scene_.parameters, free_, p), L_, 0.0)).first->second;
+  return cache_.emplace(p, modal_coefficients(with_parameter(scene_, free_, p).parameters, L_, 0.0)).first->second;
 }
 
-Eigen::VectorXd ModalForcedSystem::forcing_with(double t, double inv_Lambda, double k) const {
+Eigen::VectorXd ModalForcedSystem::forcing_with(double t, double inv_Lambda, double k, const Direction& d) const {
   Eigen::VectorXd h = Eigen::VectorXd::Zero(dimension());
-  const std::complex<double> zt = z0_ * std::polar(1.0, t);
+  const std::complex<double> zt = d.z0 * std::polar(1.0, t);
   h[0] = k * zt.real();
   h[1] = -inv_Lambda + k * zt.imag();
-  h[2] = k * w0_;
-  h[3] = k * v0_.real();  // co-rotating frame: the m = 1 forcing is constant
-  h[4] = k * v0_.imag();
+  h[2] = k * d.w0;
+  h[3] = k * d.v0.real();  // co-rotating frame: the m = 1 forcing is constant
+  h[4] = k * d.v0.imag();
   return h;
 }
 
 Eigen::VectorXd ModalForcedSystem::forcing(double t, double p) const {
   const ModalCoefficients& c = coefficients(p);
-  return forcing_with(t, c.inv_Lambda, c.parameters.inv_Lambda_S());
+  return forcing_with(t, c.inv_Lambda, c.parameters.inv_Lambda_S(), direction(p));
 }
 
 void ModalForcedSystem::rhs(double t, std::span<const double> x, double p, std::span<double> f) const {
@@ -86,8 +101,17 @@ void ModalForcedSystem::jacobian(double t, std::span<const double> x, double p, 
 const ModalForcedSystem::Slopes& ModalForcedSystem::slopes(double p) const {
   auto it = slopes_.find(p);
   if (it != slopes_.end()) return it->second;
+  if (free_ == ContinuationParameter::beta) {
+    // beta turns the rest shape only: no coefficient depends on it (and beta = 0, pi are both edges
+    // of its domain, where a difference would step outside). Its forcing term: parameter_derivative.
+    Slopes d;
+    d.dups0.assign(static_cast<std::size_t>(L_ - 1), 0.0);
+    d.dslope.assign(static_cast<std::size_t>(L_ - 1), 0.0);
+    if (slopes_.size() >= 8) slopes_.clear();
+    return slopes_.emplace(p, std::move(d)).first->second;
+  }
   const double h = fd_step(p);
-  auto at = [&](double q) { return modal_coefficients(with_parameter(scene_.parameters, free_, q), L_, 0.0); };
+  auto at = [&](double q) { return modal_coefficients(with_parameter(scene_, free_, q).parameters, L_, 0.0); };
   const ModalCoefficients c0 = at(p), plus = at(p + h);
   // Central differences, or second-order one-sided ones on the edge of the domain (lambda = 0).
   ModalCoefficients minus, c2;
@@ -117,11 +141,19 @@ void ModalForcedSystem::parameter_derivative(double t, std::span<const double> x
                                              std::span<double> fp) const {
   // F_i = Y_l(i) x_i + R x + h_i with Y_l = ups0_l + slope_l sigma and sigma = -P/D (modal_dynamics):
   //   dsigma/dp = -(dP + sigma dD)/D, dP = sum q_l dups0_l + x.dh, dD = sum q_l dslope_l,
-  //   dF_i/dp = (dups0_l + dslope_l sigma + slope_l dsigma) x_i + dh_i   (h is linear in 1/Lambda, kappa).
+  //   dF_i/dp = (dups0_l + dslope_l sigma + slope_l dsigma) x_i + dh_i   (h is linear in 1/Lambda, kappa,
+  //   and in the rest direction g; beta moves only g).
   const Eigen::Map<const Eigen::VectorXd> X(x.data(), dimension());
   const ModalCoefficients& c = coefficients(p);
   const Slopes d = slopes(p);
-  const Eigen::VectorXd h = forcing(t, p), dh = forcing_with(t, d.dinvL, d.dkappa);
+  Eigen::VectorXd h = forcing(t, p), dh = forcing_with(t, d.dinvL, d.dkappa, direction(p));
+  if (free_ == ContinuationParameter::beta) {
+    // h = kappa g(beta) (shear part fixed): dh/dbeta = kappa g'(beta), g' exact (detail/rest_direction.hpp).
+    const detail::RestDirection r = detail::rest_direction(p, true);
+    Direction dg;
+    dg.z0 = r.dz0, dg.w0 = r.dw0, dg.v0 = r.dv0;
+    dh += forcing_with(t, 0.0, c.parameters.inv_Lambda_S(), dg);
+  }
   const double s = modal_sigma(c, X, h);
   double D = 0, dP = X.dot(dh), dD = 0;
   for (Eigen::Index i = 0; i < dimension(); ++i) {

@@ -44,13 +44,14 @@ class ModalForcedSystem final : public ForcedSystem {
   void rhs(double t, std::span<const double> x, double p, std::span<double> f) const override;
   void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const override;
   // Exact in x and t: f depends on p only through the coefficients (Upsilon_l(0), slopes, 1/Lambda,
-  // kappa), whose p-slopes are central differences of constants (no noise in the sensitivity equation).
+  // kappa), whose p-slopes are central differences of constants (no noise in the sensitivity equation),
+  // and, for beta, through the rest shape's direction, differentiated in closed form.
   void parameter_derivative(double t, std::span<const double> x, double p, std::span<double> fp) const override;
   bool conserves_norm() const override { return true; }
   std::string parameter_name() const override { return to_string(free_); }
 
   int L() const { return L_; }
-  double start_parameter() const { return get_parameter(scene_.parameters, free_); }
+  double start_parameter() const { return get_parameter(scene_, free_); }
   const Scene& scene() const { return scene_; }
   // The forcing h(t) at p (layout of x).
   Eigen::VectorXd forcing(double t, double p) const;
@@ -72,16 +73,22 @@ class ModalForcedSystem final : public ForcedSystem {
     std::vector<double> dups0, dslope;  // index l - 2
     double dinvL = 0, dkappa = 0;
   };
+  struct Direction {
+    std::complex<double> z0, v0;  // rest shape's unit direction (with w0)
+    double w0 = 0;
+  };
+  static Direction direction_of(const Scene& scene);
+  const Direction& direction(double p) const;  // the scene's, or rebuilt per value when beta is free
   const Slopes& slopes(double p) const;
   double kappa(double p) const { return coefficients(p).parameters.inv_Lambda_S(); }
-  Eigen::VectorXd forcing_with(double t, double inv_Lambda, double kappa) const;
+  Eigen::VectorXd forcing_with(double t, double inv_Lambda, double kappa, const Direction& d) const;
   Scene scene_;
   ContinuationParameter free_;
   int L_;
-  std::complex<double> z0_, v0_;  // rest shape's unit direction (with w0_)
-  double w0_ = 0;
+  Direction direction_;
   mutable std::map<double, ModalCoefficients> cache_;
   mutable std::map<double, Slopes> slopes_;
+  mutable std::map<double, Direction> directions_;
 };
 
 }  // namespace rbcstab

@@ -9,6 +9,7 @@
 #include <Eigen/QR>
 
 #include "rbcstab/continuation/detail/minimal_augmentation.hpp"
+#include "rbcstab/continuation/detail/rest_direction.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 
@@ -100,20 +101,29 @@ void ForcedSystem2::parameter_derivative(double t, std::span<const double> x, do
 
 // ---------------------------------------------------------------- reduced in-plane system
 
+namespace {
+// As for equilibria: only the rest shape's orientation enters the reduced system (its size is
+// kappa = 1/(Lambda S)), so build it with Delta0 = Delta > 0 to keep it when Delta0 is continued.
+InitialState oriented_initial_state(Scene s) {
+  s.parameters.Delta0 = s.parameters.Delta;
+  return initial_state(s);
+}
+}  // namespace
+
 ReducedForcedSystem::ReducedForcedSystem(const Scene& scene, ContinuationParameter free) : scene_(scene), free_(free) {
   scene_.validate();
-  // As for equilibria: only the rest shape's orientation enters the reduced system (its size is
-  // kappa = 1/(Lambda S)), so build it with Delta0 = Delta > 0 to keep it when Delta0 is continued.
-  Scene oriented = scene_;
-  oriented.parameters.Delta0 = oriented.parameters.Delta;
-  init_ = initial_state(oriented);
+  init_ = oriented_initial_state(scene_);
 }
 
 const ReducedModel& ReducedForcedSystem::model(double p) const {
   auto it = cache_.find(p);
   if (it != cache_.end()) return it->second;
   if (cache_.size() >= 8) cache_.clear();  // no reference is held across calls (see parameter_derivative)
-  return cache_.try_emplace(p, with_parameter(scene_.parameters, free_, p), init_).first->second;
+  const Scene at = with_parameter(scene_, free_, p);  // throws InvalidArgument outside p's domain
+  // beta turns the rest shape: its direction is rebuilt per value (cached with the model).
+  return cache_
+      .try_emplace(p, at.parameters, free_ == ContinuationParameter::beta ? oriented_initial_state(at) : init_)
+      .first->second;
 }
 
 void ReducedForcedSystem::rhs(double t, std::span<const double> x, double p, std::span<double> f) const {
@@ -135,11 +145,17 @@ ReducedForcedSystem::Slopes ReducedForcedSystem::coefficient_slopes(double p) co
   // d(1/Lambda)/dp and d kappa/dp by central differences of two scalar functions of the parameters
   // (constants during an integration, so their rounding does not disturb the error control).
   auto coefficients = [&](double q) {
-    const Parameters pq = with_parameter(scene_.parameters, free_, q);
+    const Parameters pq = with_parameter(scene_, free_, q).parameters;
     return std::pair<double, double>(1 / pq.Lambda(), pq.inv_Lambda_S());
   };
-  const double h = fd_step(p);
   Slopes d;
+  if (free_ == ContinuationParameter::beta) {
+    // beta turns the rest shape only: 1/Lambda and kappa do not depend on it (and beta = 0, pi are
+    // both edges of its domain, where a difference would step outside).
+    d.kappa = coefficients(p).second;
+    return d;
+  }
+  const double h = fd_step(p);
   const auto c0 = coefficients(p), plus = coefficients(p + h);
   d.kappa = c0.second;
   try {
@@ -165,8 +181,11 @@ void ReducedForcedSystem::parameter_derivative(double t, std::span<const double>
   //   df/d(1/Lambda) = (y1/Q) y - e_y,  df/dkappa = g - (y.g/Q) y.
   // Central differences of f itself would put rounding noise (~eps |f| / h) into the sensitivity
   // equation and force rk8pd at rtol 1e-12 into small steps (measured: ~6x slower shooting).
+  // beta enters only through the direction g (1/Lambda and kappa fixed): df/dbeta = kappa (g' - (y.g'/Q) y)
+  // with g' = (Re, Im of z0'(0) e^{it}, w0') exact (detail/rest_direction.hpp); zero when kappa = 0.
+  const bool beta = free_ == ContinuationParameter::beta;
   const Slopes d = coefficient_slopes(p);
-  if (d.kappa == 0) {
+  if (d.kappa == 0 && !beta) {
     // kappa = 0: the model dropped the rest shape's direction; difference f in p instead.
     ForcedSystem::parameter_derivative(t, x, p, fp);
     return;
@@ -174,12 +193,20 @@ void ReducedForcedSystem::parameter_derivative(double t, std::span<const double>
   const ReducedModel& m = model(p);
   const std::complex<double> z0 = m.z0(t);
   const double g[3] = {z0.real(), z0.imag(), m.w0()};
+  double dg[3] = {0, 0, 0};
+  if (beta) {
+    const detail::RestDirection r = detail::rest_direction(p, false);
+    const std::complex<double> dz0 = r.dz0 * std::polar(1.0, t);
+    dg[0] = dz0.real(), dg[1] = dz0.imag(), dg[2] = r.dw0;
+  }
   const double Q = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
   const double yg = x[0] * g[0] + x[1] * g[1] + x[2] * g[2];
+  const double ydg = x[0] * dg[0] + x[1] * dg[1] + x[2] * dg[2];
   for (std::size_t i = 0; i < 3; ++i) {
     const double dfdinvL = x[1] / Q * x[i] - (i == 1 ? 1.0 : 0.0);
     const double dfdkappa = g[i] - yg / Q * x[i];
-    fp[i] = d.dinvL * dfdinvL + d.dkappa * dfdkappa;
+    const double dfdg = d.kappa * (dg[i] - ydg / Q * x[i]);
+    fp[i] = d.dinvL * dfdinvL + d.dkappa * dfdkappa + dfdg;
   }
 }
 

@@ -58,7 +58,7 @@ class ReducedForcedSystem final : public ForcedSystem {
   bool conserves_norm() const override { return true; }
   std::string parameter_name() const override { return to_string(free_); }
 
-  double start_parameter() const { return get_parameter(scene_.parameters, free_); }
+  double start_parameter() const { return get_parameter(scene_, free_); }
   // The state after relaxing from the scene's initial shape for T rounded up to a multiple of 2 pi
   // (so it is a state at t = 0 mod 2 pi, a start for the shooting Newton on an attracting orbit).
   Eigen::VectorXd relaxed_state(double T) const;

@@ -7,7 +7,7 @@
 namespace rbcstab {
 
 const std::vector<std::string>& continuation_parameter_names() {
-  static const std::vector<std::string> names{"lambda", "Delta", "Delta0", "B", "C", "Lambda", "S"};
+  static const std::vector<std::string> names{"lambda", "Delta", "Delta0", "B", "C", "Lambda", "S", "beta"};
   return names;
 }
 
@@ -21,7 +21,7 @@ ContinuationParameter continuation_parameter_from_string(const std::string& name
     if (names[k] == name) return static_cast<ContinuationParameter>(k);
   throw InvalidArgument("parameter", "parameter = '" + name +
                                          "' is not a continuation parameter: must be one of lambda, Delta, "
-                                         "Delta0, B, C, Lambda, S");
+                                         "Delta0, B, C, Lambda, S, beta");
 }
 
 double get_parameter(const Parameters& p, ContinuationParameter q) {
@@ -33,8 +33,10 @@ double get_parameter(const Parameters& p, ContinuationParameter q) {
     case ContinuationParameter::C: return p.C;
     case ContinuationParameter::Lambda: return p.Lambda();
     case ContinuationParameter::S: return p.S();
+    case ContinuationParameter::beta: break;
   }
-  return 0;
+  throw InvalidArgument("parameter", "parameter = beta is the rest shape's orientation, a scene parameter, not a "
+                                     "material one (internal: use the Scene overload)");
 }
 
 Parameters with_parameter(Parameters p, ContinuationParameter q, double value) {
@@ -56,9 +58,27 @@ Parameters with_parameter(Parameters p, ContinuationParameter q, double value) {
       p.C *= value / S;
       break;
     }
+    case ContinuationParameter::beta:
+      throw InvalidArgument("parameter", "parameter = beta is the rest shape's orientation, a scene parameter, not a "
+                                         "material one (internal: use the Scene overload)");
   }
   p.validate();
   return p;
+}
+
+double get_parameter(const Scene& s, ContinuationParameter q) {
+  return q == ContinuationParameter::beta ? s.beta : get_parameter(s.parameters, q);
+}
+
+Scene with_parameter(Scene s, ContinuationParameter q, double value) {
+  if (q != ContinuationParameter::beta) {
+    s.parameters = with_parameter(s.parameters, q, value);
+    return s;
+  }
+  require(std::isfinite(value) && value >= 0 && value <= M_PI, "beta", value,
+          "[0, pi] (0: rest shape out of plane, pi/2: in plane)");
+  s.beta = value;
+  return s;
 }
 
 void require_independent(ContinuationParameter p1, ContinuationParameter p2, const std::string& name) {

@@ -1,24 +1,33 @@
 #pragma once
 // The physical parameters a branch can be continued in, by the paper's symbols: the five material
-// and shape numbers, and the composite Lambda, S of the reduced system (Eq. Lambda_S).
+// and shape numbers, the composite Lambda, S of the reduced system (Eq. Lambda_S), and the
+// orientation beta of the stress-free (and initial) shape, which lives in the Scene.
 #include <string>
 #include <vector>
 
 #include "rbcstab/model/parameters.hpp"
+#include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
 
-enum class ContinuationParameter { lambda, Delta, Delta0, B, C, Lambda, S };
+enum class ContinuationParameter { lambda, Delta, Delta0, B, C, Lambda, S, beta };
 std::string to_string(ContinuationParameter q);
-// "lambda", "Delta", "Delta0", "B", "C", "Lambda", "S"; throws InvalidArgument("parameter", ...).
+// "lambda", "Delta", "Delta0", "B", "C", "Lambda", "S", "beta"; throws InvalidArgument("parameter", ...).
 ContinuationParameter continuation_parameter_from_string(const std::string& name);
 const std::vector<std::string>& continuation_parameter_names();
 
+// The material parameters only: beta throws InvalidArgument("parameter", ...) (use the Scene overloads).
 double get_parameter(const Parameters& p, ContinuationParameter q);
 // p with q set to value, validated (throws InvalidArgument naming q outside its domain).
 // Lambda is moved through Delta (Lambda ~ sqrt(Delta) at fixed lambda, S unchanged) and S through C
 // (S ~ C at fixed Delta0, Lambda unchanged), so each composite moves alone.
 Parameters with_parameter(Parameters p, ContinuationParameter q, double value);
+
+// Every parameter, beta included: what the problems and adapters use. beta's domain is [0, pi]
+// (0: rest shape out of plane, pi/2: in plane; pi - beta is the mirror image), InvalidArgument("beta")
+// outside; the others as with_parameter(Parameters, ...).
+double get_parameter(const Scene& s, ContinuationParameter q);
+Scene with_parameter(Scene s, ContinuationParameter q, double value);
 
 // Throws InvalidArgument(name, ...) unless p2 can be set independently of p1 (not equal, not Lambda with
 // Delta or lambda, not S with C or Delta0): the pairs of a two-parameter curve.

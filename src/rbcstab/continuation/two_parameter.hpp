@@ -31,7 +31,7 @@ class ByP2 {
     for (const auto& [v, t] : cache_)
       if (v == p2) return *t;
     Scene s = scene_;
-    s.parameters = with_parameter(s.parameters, p2_, p2);  // throws InvalidArgument outside p2's domain
+    s = with_parameter(s, p2_, p2);  // throws InvalidArgument outside p2's domain
     if (cache_.size() >= 4) cache_.erase(cache_.begin());
     cache_.emplace_back(p2, std::make_unique<T>(s, p1_));
     return *cache_.back().second;
@@ -68,7 +68,7 @@ class SceneTwoParameterProblem final : public TwoParameterProblem {
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& x, double p1, double p2) const override { return at(p2).spectrum(x, p1); }
   std::string name1() const override { return to_string(by_.p1()); }
   std::string name2() const override { return to_string(by_.p2()); }
-  double start_parameter2() const { return get_parameter(by_.scene().parameters, by_.p2()); }
+  double start_parameter2() const { return get_parameter(by_.scene(), by_.p2()); }
   const P& at(double p2) const { return by_.at(p2); }  // the one-parameter problem in p1 at p2
 
  private:
@@ -93,7 +93,7 @@ class ReducedForcedSystem2 final : public ForcedSystem2 {
   bool conserves_norm() const override { return true; }
   std::string name1() const override { return to_string(by_.p1()); }
   std::string name2() const override { return to_string(by_.p2()); }
-  double start_parameter2() const { return get_parameter(by_.scene().parameters, by_.p2()); }
+  double start_parameter2() const { return get_parameter(by_.scene(), by_.p2()); }
   const ReducedForcedSystem& at(double p2) const { return by_.at(p2); }
 
  private:

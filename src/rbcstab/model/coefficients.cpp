@@ -93,4 +93,15 @@ std::vector<double> wigner_column(int l, double beta) {
   return col;
 }
 
+std::vector<double> wigner_column_derivative(int l, double beta) {
+  const std::vector<double> D = wigner_column(l, beta);
+  std::vector<double> d(D.size(), 0.0);
+  for (int m = -l; m <= l; ++m) {
+    const double lo = m > -l ? std::sqrt(double(l + m) * (l - m + 1)) * D[static_cast<std::size_t>(l + m - 1)] : 0.0;
+    const double hi = m < l ? std::sqrt(double(l - m) * (l + m + 1)) * D[static_cast<std::size_t>(l + m + 1)] : 0.0;
+    d[static_cast<std::size_t>(l + m)] = 0.5 * (lo - hi);
+  }
+  return d;
+}
+
 }  // namespace rbcstab

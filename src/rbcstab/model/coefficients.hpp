@@ -32,5 +32,9 @@ double sigma_critical(int l, double alpha);
 // D^(l)_{m,0}(beta) = sqrt((l-m)!/(l+m)!) P_l^m(cos beta) without the Condon-Shortley phase.
 // Computed by the normalised three-term recursion: no factorials, accurate for large l.
 std::vector<double> wigner_column(int l, double beta);
+// d/dbeta of wigner_column(l, beta) (index m + l), from the ladder identity of the same convention
+//   dD_{m,0}/dbeta = (sqrt((l+m)(l-m+1)) D_{m-1,0} - sqrt((l-m)(l+m+1)) D_{m+1,0}) / 2
+// (e.g. l = 2: dD_{0,0} = -3 sin cos, dD_{2,0} = sqrt(3/2) sin cos, dD_{1,0} = sqrt(3/2) cos 2beta).
+std::vector<double> wigner_column_derivative(int l, double beta);
 
 }  // namespace rbcstab
