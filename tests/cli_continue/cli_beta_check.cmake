@@ -1,0 +1,139 @@
+# rbcstab continue with beta (the rest shape's orientation) free, and --curve NS: the orbit branch in
+# beta against an independent path (`rbcstab simulate` of the reduced model at that beta, relaxed and
+# sampled at t = 2 pi k), the modal orbit in beta, the NS curve's clear refusal when the branch has no
+# NS point, and bad input refused with exit code 2 naming the flag.
+# Usage: cmake -DCLI=<rbcstab> -DCASE=<case> -DWORK=<dir> -P cli_beta_check.cmake
+include(${CMAKE_CURRENT_LIST_DIR}/cli_common.cmake)
+
+# Fig. 2's in-plane scene at Delta = 1 (tumbling at beta = pi/2), the reduced level.
+set(FIG2 --lambda 5 --Delta 1 --Delta0 0.01 --B 2 --C 0.04 --L 2)
+
+# A decimal in (0, 1) as an integer in units of 1e-12 (CMake has no floating-point arithmetic).
+function(e12 value out)
+  if(NOT value MATCHES "^0\\.([0-9]+)$")
+    fail("not a plain decimal in (0, 1): ${value}")
+  endif()
+  string(SUBSTRING "${CMAKE_MATCH_1}000000000000" 0 12 digits)
+  string(REGEX REPLACE "^0+" "" digits "${digits}")
+  if(digits STREQUAL "")
+    set(digits 0)
+  endif()
+  set(${out} ${digits} PARENT_SCOPE)
+endfunction()
+
+# |a - b| <= tol_e12 * 1e-12 for decimals in (0, 1).
+function(expect_close what a b tol_e12)
+  e12("${a}" ia)
+  e12("${b}" ib)
+  math(EXPR d "${ia} - ${ib}")
+  if(d LESS 0)
+    math(EXPR d "-${d}")
+  endif()
+  if(d GREATER ${tol_e12})
+    fail("${what}: ${a} vs ${b} differ by ${d}e-12 > ${tol_e12}e-12")
+  endif()
+endfunction()
+
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK})
+if(CASE STREQUAL "beta_orbit_json")
+  # From the in-plane tumbling orbit (beta = pi/2) down to beta = 0.3 (swinging), through the
+  # swinging <-> tumbling UZ (beta = 0.6477, tests/continuation/beta_test.cpp, where it is checked
+  # against a continuation in Delta).
+  execute_process(COMMAND ${CLI} continue --kind orbit --parameter beta --min 0.3 --direction backward ${FIG2}
+                  --csv ${WORK}/beta.csv --json RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    fail("exit ${rc}: ${err}")
+  endif()
+  string(JSON free GET "${out}" free_parameter)
+  if(NOT free STREQUAL "beta")
+    fail("free_parameter = ${free}")
+  endif()
+  foreach(key beta r Psi winding kind multipliers)
+    require_path("${out}" branch 0 ${key})
+  endforeach()
+  string(JSON nsp LENGTH "${out}" special_points)
+  string(JSON name GET "${out}" special_points 0 name)
+  string(JSON b GET "${out}" special_points 0 beta)
+  if(NOT nsp EQUAL 1 OR NOT name STREQUAL "swing_tumble" OR b LESS 0.6 OR b GREATER 0.7)
+    fail("expected one swing_tumble UZ near beta = 0.65, got ${nsp} points, ${name} at ${b}")
+  endif()
+  file(STRINGS ${WORK}/beta.csv lines)
+  list(GET lines 0 header)
+  if(NOT header MATCHES "^beta,r,Psi,")
+    fail("CSV header: ${header}")
+  endif()
+  # The branch ends on the bound beta = 0.3 exactly; its orbit at t = 0 (r, Psi) ...
+  list(GET lines -1 row)
+  string(REPLACE "," ";" row "${row}")
+  list(GET row 0 beta_end)
+  list(GET row 1 r_branch)
+  list(GET row 2 Psi_branch)
+  list(GET row 8 kind)
+  if(NOT beta_end EQUAL 0.3 OR NOT kind STREQUAL "swinging")
+    fail("last row at beta = ${beta_end} (${kind}), expected 0.3 (swinging)")
+  endif()
+  # ... is where the reduced model relaxes to at t = 2 pi k (here k = 50; the multipliers ~0.15 damp
+  # the transient by 0.15^50). 1e-8: the simulation's rtol 1e-11 over 50 periods and the orbit's
+  # rtol 1e-12 shooting (measured agreement ~1e-14).
+  execute_process(COMMAND ${CLI} simulate ${FIG2} --beta 0.3 --delta 0 --model reduced --T 314.15926535897932
+                  --dt 6.2831853071795865 --rtol 1e-11 --atol 1e-13 --trajectory ${WORK}/sim.csv
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE sout ERROR_VARIABLE serr)
+  if(NOT rc EQUAL 0)
+    fail("simulate: exit ${rc}: ${serr}")
+  endif()
+  file(STRINGS ${WORK}/sim.csv slines)
+  list(GET slines 0 sheader)
+  if(NOT sheader STREQUAL "t,Delta_2,sigma,r,Psi")
+    fail("simulate trajectory header: ${sheader}")
+  endif()
+  list(GET slines -1 srow)
+  string(REPLACE "," ";" srow "${srow}")
+  list(GET srow 0 t_end)
+  list(GET srow 3 r_sim)
+  list(GET srow 4 Psi_sim)
+  if(t_end LESS 314.159 OR t_end GREATER 314.16)
+    fail("simulation ends at t = ${t_end}, expected 100 pi")
+  endif()
+  expect_close("r at beta = 0.3" "${r_branch}" "${r_sim}" 10000)
+  expect_close("Psi at beta = 0.3" "${Psi_branch}" "${Psi_sim}" 10000)
+elseif(CASE STREQUAL "beta_modal_orbit_json")
+  # The in-plane post-instability modal orbit (as modal_orbit_json) tilted a little: beta from pi/2 down.
+  execute_process(COMMAND ${CLI} continue --kind modal-orbit --parameter beta --min 1.4 --direction backward
+                  --lambda 5 --Delta 1 --Delta0 0.01 --B 2 --C 0.04 --L 5 --delta 1e-3 --relax-T 600 --max-points 3
+                  --json RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    fail("exit ${rc}: ${err}")
+  endif()
+  string(JSON free GET "${out}" free_parameter)
+  foreach(key beta r Psi sigma Delta_2 Delta_3 stable multipliers)
+    require_path("${out}" branch 2 ${key})
+  endforeach()
+  string(JSON b0 GET "${out}" branch 0 beta)
+  string(JSON b2 GET "${out}" branch 2 beta)
+  string(JSON D3 GET "${out}" branch 2 Delta_3)
+  if(NOT free STREQUAL "beta" OR NOT b0 EQUAL 1.5707963267948966 OR NOT b2 LESS b0 OR D3 LESS 0.5)
+    fail("free ${free}, beta ${b0} -> ${b2}, Delta_3 = ${D3}: expected beta decreasing from pi/2, Delta_3 > 0.5")
+  endif()
+elseif(CASE STREQUAL "curve_ns_none")
+  # No NS point on the in-plane orbit branch (its multipliers stay inside the unit circle,
+  # docs/continuation.md): the NS curve is refused with exit 1 and the reason, no file written.
+  execute_process(COMMAND ${CLI} continue --kind orbit --parameter Delta --min 0.3 --max 0.45 --Delta 0.3 --lambda 5
+                  --Delta0 0.01 --B 2 --C 0.04 --L 2 --curve NS --parameter2 C --csv ${WORK}/ns.csv
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(FIND "${err}" "no located NS point" pos)
+  if(NOT rc EQUAL 1 OR pos EQUAL -1)
+    fail("expected exit 1 with 'no located NS point', got ${rc}: ${err}")
+  endif()
+  if(EXISTS ${WORK}/ns.csv)
+    fail("a curve file was written without a curve")
+  endif()
+elseif(CASE STREQUAL "beta_bad_input")
+  expect_bad_input("beta" continue --kind orbit --parameter beta --beta 4 ${FIG2})
+  expect_bad_input("curve = NS" continue --kind equilibrium --parameter lambda --curve NS --parameter2 B)
+  expect_bad_input("curve = NS" continue --kind modal-orbit --parameter lambda --curve NS --parameter2 B)
+  expect_bad_input("parameter2" continue --kind orbit --parameter Delta --curve NS)
+  expect_bad_input("parameter2 = beta" continue --kind orbit --parameter beta --curve NS --parameter2 beta)
+else()
+  fail("unknown case")
+endif()
