@@ -19,6 +19,7 @@
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
 
 namespace rbcstab {
@@ -290,6 +291,54 @@ TEST(Beta, EquilibriaEndAtBetaZeroWhenTheRestShapePullsAndAreConstantOtherwise) 
       const PolarState ps = polar(pt.x);
       EXPECT_NEAR(ps.r, c.r, 1e-10) << pt.p;
       EXPECT_NEAR(std::remainder(ps.Psi - c.Psi, kTwoPi), 0.0, 1e-10) << pt.p;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace rbcstab
+
+namespace rbcstab {
+namespace {
+
+// Why the reduced in-plane orbits have no NS (nor LPC, PD) point: on the unit sphere the field is
+// f = P_y c(t) + (rotation), c = -e_y/Lambda + kappa g(t), i.e. the gradient of the l = 1 harmonic c.y
+// plus a Killing field: a conformal field, so the period map is a Moebius transformation and its
+// derivative at a fixed point is a complex number k: the nontrivial multipliers are k and conj(k)
+// (equal moduli), and div_S f = -2 c.y = 2 mu gives |k|^2 = exp(2 int_0^{2 pi} mu dt). A multiplier on
+// the unit circle therefore needs int mu dt = 0 (an elliptic period map, every orbit neutral). Checked
+// here against mu(t) = Upsilon_2 integrated along the orbit by ReducedModel directly (not through the
+// shooting code): 1e-9 relative (periodic trapezoid on 512 samples, rtol 1e-13 integration).
+TEST(Beta, ReducedMultipliersAreAConformalPairWithModulusExpOfTheMeanGrowthRate) {
+  for (double beta : {M_PI / 2, 0.9, 0.4}) {
+    for (double C : {0.04, 1.0}) {
+      Scene s = fig2(1.0, beta);
+      s.parameters.C = C;
+      const ReducedForcedSystem sys(s, ContinuationParameter::beta);
+      const PeriodicOrbitProblem pr(sys);
+      const NewtonResult nr = solve_fixed_parameter(pr, pr.shooting_guess(sys.relaxed_state(300), beta), beta);
+      ASSERT_TRUE(nr.converged);
+      const Eigen::VectorXcd mu = pr.spectrum(nr.x, beta);
+      ASSERT_EQ(mu.size(), 2);
+      EXPECT_NEAR(std::abs(mu[0]), std::abs(mu[1]), 1e-9 * std::abs(mu[0]));
+      const ReducedModel& m = sys.model(beta);
+      const int n = 512;
+      std::vector<double> grid;
+      for (int k = 1; k <= n; ++k) grid.push_back(kTwoPi * k / n);
+      IntegratorOptions io;
+      io.rtol = 1e-13;
+      io.atol = 1e-14;
+      double integral = 0;
+      const Eigen::Vector3d y0 = nr.x.head<3>();
+      integral += m.mu(0.0, std::span<const double>(y0.data(), 3));
+      int k = 0;
+      integrate(m, std::span<const double>(y0.data(), 3), 0.0, grid, io, [&](double t, std::span<const double> y) {
+        if (++k < n) integral += m.mu(t, y);
+      });
+      integral *= kTwoPi / n;
+      EXPECT_NEAR(std::abs(mu[0]), std::exp(integral), 1e-9 * std::exp(integral)) << "beta " << beta << " C " << C;
+      EXPECT_LT(integral, 0.0);
+      std::printf("beta = %.3f, C = %.2f: |k| = %.12e, exp(int mu dt) = %.12e\n", beta, C, std::abs(mu[0]), std::exp(integral));
     }
   }
 }
