@@ -317,16 +317,17 @@ int report_curve(const ContinueOptions& o, const SceneFile& sf, const Branch& on
   if (o.json) {
     nlohmann::json j = branch_json(c, [&](const Eigen::VectorXd& X, double p2) { return state(X, p2); }, spectrum_key);
     j["kind"] = o.kind;
-    j["level"] = o.kind == "modal" ? "modal" : "reduced";
+    j["level"] = o.kind == "modal" || o.kind == "modal-orbit" ? "modal" : "reduced";
     j["free_parameter"] = o.parameter2;
     j["parameters"] = to_json(sf.scene.parameters);
     j["beta"] = sf.scene.beta;
-    if (o.kind == "orbit") j["segments"] = o.orbit.segments;
+    if (o.kind == "orbit" || o.kind == "modal-orbit") j["segments"] = o.orbit.segments;
     nlohmann::json st;
     st["type"] = to_string(start.type);
     st["name"] = start.name;
     st[o.parameter] = number_or_null(start.p);
-    st[o.parameter2] = number_or_null(get_parameter(sf.scene, continuation_parameter_from_string(o.parameter2)));
+    const Scene& s2 = o.kind == "modal-orbit" ? total_area_scene(sf.scene) : sf.scene;  // as run_curve
+    st[o.parameter2] = number_or_null(get_parameter(s2, continuation_parameter_from_string(o.parameter2)));
     st["precision"] = number_or_null(start.precision);
     st["status"] = to_string(start.status);
     j["curve"] = {{"type", o.curve}, {"parameters", {o.parameter, o.parameter2}}, {"start", st},
@@ -386,12 +387,14 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
   engine.events.clear();  // the one-parameter events read the one-parameter state
   set_bounds(engine, q2, o.p2_min, o.p2_max);  // as for --min/--max
   engine.direction = Direction::both;
-  Scene scene = sf.scene;
+  // modal-orbit: the orbit problem's Delta is the relaxed scene's total excess area (as in run()).
+  Scene scene = o.kind == "modal-orbit" ? total_area_scene(sf.scene) : sf.scene;
   scene = with_parameter(scene, q1, sp->p);  // the curve's start
   const double p2_0 = get_parameter(scene, q2);
   auto polar_of = [](const Eigen::VectorXd& y, double, double) { return polar_json(y.head(3)); };
-  if (o.kind == "orbit") {
-    const ReducedForcedSystem2 system(scene, q1, q2);
+  // Cycle curves: one code path for the reduced and the modal forced systems. The curve unknowns start
+  // with the shooting state (the NS curve's are (X, p1, kappa = cos theta)); r, Psi are those of (z, w).
+  auto cycle_curve = [&](const ForcedSystem2& system) {
     const OrbitTwoParameterProblem base(system, o.orbit);
     const Eigen::Index n = base.dimension();
     if (o.curve == "LPC") {
@@ -400,7 +403,6 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
                           "multipliers", nullptr);
     }
     if (o.curve == "NS") {
-      // Unknowns (X, p1, kappa = cos theta): the shooting state comes first, as for LPC/PD.
       const NeimarkSackerCurveProblem curve(system, o.orbit, *sp, p2_0);
       return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, polar_of,
                           "multipliers", nullptr);
@@ -408,7 +410,9 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
     const PeriodDoublingCurveProblem curve(base, *sp, p2_0);
     return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, polar_of,
                         "multipliers", nullptr);
-  }
+  };
+  if (o.kind == "orbit") return cycle_curve(ReducedForcedSystem2(scene, q1, q2));
+  if (o.kind == "modal-orbit") return cycle_curve(ModalForcedSystem2(scene, q1, q2));
   if (o.kind == "modal") {
     const SceneTwoParameterProblem<ModalEquilibriumProblem> base(scene, q1, q2);
     const DescribeCurve modal_of = [&](const Eigen::VectorXd& x, double p1, double p2) {
@@ -458,9 +462,6 @@ int run(ContinueOptions& o) {
     throw InvalidArgument("switch-at-bp", "--switch-at-bp is available for --kind equilibrium and modal, not orbit or modal-orbit");
   if (orbit) o.orbit.validate();
   if (!o.curve.empty()) {
-    if (modal_orbit)
-      throw InvalidArgument("curve", "curve = " + o.curve + " is not available for --kind modal-orbit (no two-parameter "
-                                         "modal forced system yet): use --kind orbit, equilibrium or modal");
     const bool cycle_curve = o.curve == "LPC" || o.curve == "PD" || o.curve == "NS";
     if (orbit != cycle_curve)
       throw InvalidArgument("curve", "curve = " + o.curve + " is not available for --kind " + o.kind + ": must be " +
@@ -500,6 +501,7 @@ int run(ContinueOptions& o) {
     }
     o.engine.events.push_back(problem.transition_event());
     const Branch b = continue_branch(problem, start.x, p0, o.engine);
+    if (!o.curve.empty()) return run_curve(o, sf, b);
     return report(o, sf, b, modal_orbit_csv(b, o.parameter, problem, system),
                   [&](const Eigen::VectorXd& X, double p) { return modal_orbit_json(problem, system, X, p); },
                   "multipliers");
@@ -579,7 +581,7 @@ static Runner add_continue(CLI::App& app) {
   app.add_option("--curve", o->curve,
                  "continue the curve of a special point of the one-parameter branch in (--parameter, --parameter2): "
                  "LP, BP, HB (equilibrium, modal; modal BP: the symmetry-breaking curve Upsilon_l(sigma) = 0) or LPC, "
-                 "PD, NS (orbit); default: none (one-parameter run)")
+                 "PD, NS (orbit, modal-orbit); default: none (one-parameter run)")
       ->check(CLI::IsMember({"LP", "BP", "HB", "LPC", "PD", "NS"}));
   app.add_option("--parameter2", o->parameter2,
                  "--curve: second free parameter (lambda, Delta, Delta0, B, C, Lambda, S or beta; independent of "

@@ -128,10 +128,20 @@ elseif(CASE STREQUAL "curve_ns_none")
   if(EXISTS ${WORK}/ns.csv)
     fail("a curve file was written without a curve")
   endif()
+elseif(CASE STREQUAL "curve_modal_orbit_none")
+  # --kind modal-orbit --curve runs the one-parameter modal orbit branch and then refuses the curve:
+  # the post-instability orbit has no located NS point in lambda in [4.9, 5.1] (exit 1, the reason).
+  execute_process(COMMAND ${CLI} continue --kind modal-orbit --parameter lambda --min 4.9 --max 5.1 --lambda 5
+                  --Delta 1 --Delta0 0.01 --B 2 --C 0.04 --L 5 --delta 1e-3 --relax-T 600 --max-points 3
+                  --curve NS --parameter2 beta RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  string(FIND "${err}" "no located NS point" pos)
+  if(NOT rc EQUAL 1 OR pos EQUAL -1)
+    fail("expected exit 1 with 'no located NS point', got ${rc}: ${err}")
+  endif()
 elseif(CASE STREQUAL "beta_bad_input")
   expect_bad_input("beta" continue --kind orbit --parameter beta --beta 4 ${FIG2})
   expect_bad_input("curve = NS" continue --kind equilibrium --parameter lambda --curve NS --parameter2 B)
-  expect_bad_input("curve = NS" continue --kind modal-orbit --parameter lambda --curve NS --parameter2 B)
+  expect_bad_input("curve = LP" continue --kind modal-orbit --parameter lambda --curve LP --parameter2 B)
   expect_bad_input("parameter2" continue --kind orbit --parameter Delta --curve NS)
   expect_bad_input("parameter2 = beta" continue --kind orbit --parameter beta --curve NS --parameter2 beta)
 else()

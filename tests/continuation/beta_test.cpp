@@ -18,6 +18,7 @@
 #include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
@@ -340,6 +341,56 @@ TEST(Beta, ReducedMultipliersAreAConformalPairWithModulusExpOfTheMeanGrowthRate)
       EXPECT_LT(integral, 0.0);
       std::printf("beta = %.3f, C = %.2f: |k| = %.12e, exp(int mu dt) = %.12e\n", beta, C, std::abs(mu[0]), std::exp(integral));
     }
+  }
+}
+
+}  // namespace
+}  // namespace rbcstab
+
+namespace rbcstab {
+namespace {
+
+// ModalForcedSystem2 (issue 4 item 5: two-parameter cycle curves of the modal model) is
+// ModalForcedSystem at p2, bit for bit (the same computation through the scene), here with beta as
+// the second parameter, and its d/dp1 matches central differences of its rhs (h = 1e-5: truncation
+// ~h^2 f''' ~ 1e-10, rounding eps/h ~ 1e-11, so 1e-8 relative).
+TEST(ModalForcedSystem2, IsTheOneParameterSystemAtP2WithBetaSecond) {
+  Scene s = fig2(1.0, M_PI / 2);
+  s.L = 5;
+  s.delta = 1e-3;
+  s.model = ModelLevel::automatic;
+  const Scene total = total_area_scene(s);
+  const ModalForcedSystem2 sys2(total, ContinuationParameter::lambda, ContinuationParameter::beta);
+  EXPECT_EQ(sys2.start_parameter2(), M_PI / 2);
+  EXPECT_EQ(sys2.dimension(), 8);
+  Scene t = total;
+  t.beta = 0.8;
+  const ModalForcedSystem sys1(t, ContinuationParameter::lambda);
+  std::mt19937 gen(5);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<double> x(8), f1(8), f2(8), fp(8), fa(8), fb(8);
+  for (double time : {0.0, 1.3, 4.0}) {
+    for (double& v : x) v = u(gen);
+    sys1.rhs(time, x, 4.5, f1);
+    sys2.rhs(time, x, 4.5, 0.8, f2);
+    for (std::size_t i = 0; i < 8; ++i) EXPECT_EQ(f1[i], f2[i]) << i;
+    sys2.parameter_derivative(time, x, 4.5, 0.8, fp);
+    const double h = 1e-5;
+    sys2.rhs(time, x, 4.5 + h, 0.8, fa);
+    sys2.rhs(time, x, 4.5 - h, 0.8, fb);
+    double scale = 1;
+    for (std::size_t i = 0; i < 8; ++i) scale = std::max(scale, std::abs(fa[i]));
+    for (std::size_t i = 0; i < 8; ++i) EXPECT_NEAR(fp[i], (fa[i] - fb[i]) / (2 * h), 1e-8 * scale) << i;
+  }
+  EXPECT_TRUE(sys2.conserves_norm());
+  EXPECT_EQ(sys2.name1(), "lambda");
+  EXPECT_EQ(sys2.name2(), "beta");
+  // beta outside [0, pi] as the second parameter names beta.
+  try {
+    sys2.rhs(0.0, x, 4.5, 3.5, f2);
+    ADD_FAILURE() << "no throw";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "beta");
   }
 }
 

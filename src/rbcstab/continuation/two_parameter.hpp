@@ -6,7 +6,8 @@
 // independent (require_independent).
 //   SceneTwoParameterProblem<ReducedEquilibriumProblem>, <ModalEquilibriumProblem>: LP, HB, BP curves
 //   of equilibria (FoldCurveProblem, HopfCurveProblem, BranchPointCurveProblem);
-//   ReducedForcedSystem2: LPC and PD curves of the forced in-plane orbits (OrbitTwoParameterProblem).
+//   ReducedForcedSystem2: LPC and PD curves of the forced in-plane orbits (OrbitTwoParameterProblem), NS
+//   curves (NeimarkSackerCurveProblem); ModalForcedSystem2: the same for the modal model's orbits.
 #include <memory>
 #include <utility>
 #include <vector>
@@ -14,6 +15,7 @@
 #include "rbcstab/continuation/equilibrium.hpp"
 #include "rbcstab/continuation/fold_curve.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
+#include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 
 namespace rbcstab {
@@ -98,6 +100,33 @@ class ReducedForcedSystem2 final : public ForcedSystem2 {
 
  private:
   detail::ByP2<ReducedForcedSystem> by_;
+};
+
+// The forced modal model in two parameters (ModalForcedSystem at each p2; scene.parameters.Delta is
+// the total excess area, as for ModalForcedSystem: build it from total_area_scene(simulated)).
+class ModalForcedSystem2 final : public ForcedSystem2 {
+ public:
+  ModalForcedSystem2(const Scene& scene, ContinuationParameter p1, ContinuationParameter p2)
+      : by_(scene, p1, p2), n_(by_.at(start_parameter2()).dimension()) {}
+  Eigen::Index dimension() const override { return n_; }
+  void rhs(double t, std::span<const double> x, double p1, double p2, std::span<double> f) const override {
+    by_.at(p2).rhs(t, x, p1, f);
+  }
+  void jacobian(double t, std::span<const double> x, double p1, double p2, Eigen::MatrixXd& J) const override {
+    by_.at(p2).jacobian(t, x, p1, J);
+  }
+  void parameter_derivative(double t, std::span<const double> x, double p1, double p2, std::span<double> fp) const override {
+    by_.at(p2).parameter_derivative(t, x, p1, fp);  // exact in x (modal_orbit.hpp)
+  }
+  bool conserves_norm() const override { return true; }
+  std::string name1() const override { return to_string(by_.p1()); }
+  std::string name2() const override { return to_string(by_.p2()); }
+  double start_parameter2() const { return get_parameter(by_.scene(), by_.p2()); }
+  const ModalForcedSystem& at(double p2) const { return by_.at(p2); }
+
+ private:
+  detail::ByP2<ModalForcedSystem> by_;
+  Eigen::Index n_;
 };
 
 }  // namespace rbcstab
