@@ -12,16 +12,6 @@
 
 namespace rbcstab {
 
-namespace {
-// Only the rest shape's orientation enters (ReducedModel normalises g onto the sphere; its size is
-// kappa = 1/(Lambda S) from the parameters), so build it with Delta0 = Delta > 0: a branch started
-// at Delta0 = 0 keeps the orientation when continued in Delta0.
-InitialState oriented_initial_state(Scene s) {
-  s.parameters.Delta0 = s.parameters.Delta;
-  return initial_state(s);
-}
-}  // namespace
-
 ReducedEquilibriumProblem::ReducedEquilibriumProblem(const Scene& scene, ContinuationParameter free)
     : scene_(scene), free_(free) {
   scene_.validate();

@@ -27,11 +27,7 @@ ModalEquilibriumProblem::ModalEquilibriumProblem(const Scene& scene, Continuatio
     : scene_(scene), free_(free), L_(scene.L) {
   scene_.validate();
   require(L_ >= 3, "L", L_, "an integer >= 3 (the modal problem needs at least one mode l >= 3)");
-  // The rest shape's orientation from the scene built with Delta0 = Delta > 0 (as equilibrium.cpp):
-  // a branch started at Delta0 = 0 keeps it when continued in Delta0.
-  Scene oriented = scene_;
-  oriented.parameters.Delta0 = oriented.parameters.Delta;
-  const double g20 = initial_state(oriented).g.at(2, 0).real();
+  const double g20 = oriented_initial_state(scene_).g.at(2, 0).real();
   w0_ = g20 <= 0 ? 1.0 : -1.0;  // w0 = -g20 sqrt(a2/Delta0) normalised: +1 for beta = 0
   require_autonomous(scene_);
 }

@@ -36,11 +36,8 @@ ModalForcedSystem::ModalForcedSystem(const Scene& scene, ContinuationParameter f
 }
 
 ModalForcedSystem::Direction ModalForcedSystem::direction_of(const Scene& scene) {
-  // The rest shape's direction from the scene built with Delta0 = Delta > 0 (as the reduced and the
-  // modal equilibrium problems): its size is kappa = 1/(Lambda S), so a branch may pass Delta0 = 0.
-  Scene oriented = scene;
-  oriented.parameters.Delta0 = oriented.parameters.Delta;
-  const InitialState init = initial_state(oriented);
+  // The rest shape's direction (its size is kappa = 1/(Lambda S), so a branch may pass Delta0 = 0).
+  const InitialState init = oriented_initial_state(scene);
   for (int l = 3; l <= init.g.L; ++l)
     if (init.g.excess_area(l) != 0)
       throw InvalidArgument("rest_delta_l", "the modal model cannot hold a stress-free shape with l >= 3 content");

@@ -101,15 +101,6 @@ void ForcedSystem2::parameter_derivative(double t, std::span<const double> x, do
 
 // ---------------------------------------------------------------- reduced in-plane system
 
-namespace {
-// As for equilibria: only the rest shape's orientation enters the reduced system (its size is
-// kappa = 1/(Lambda S)), so build it with Delta0 = Delta > 0 to keep it when Delta0 is continued.
-InitialState oriented_initial_state(Scene s) {
-  s.parameters.Delta0 = s.parameters.Delta;
-  return initial_state(s);
-}
-}  // namespace
-
 ReducedForcedSystem::ReducedForcedSystem(const Scene& scene, ContinuationParameter free) : scene_(scene), free_(free) {
   scene_.validate();
   init_ = oriented_initial_state(scene_);

@@ -94,4 +94,9 @@ void require_independent(ContinuationParameter p1, ContinuationParameter p2, con
                                     "parameter it does not depend on");
 }
 
+InitialState oriented_initial_state(Scene s) {
+  s.parameters.Delta0 = s.parameters.Delta;
+  return initial_state(s);
+}
+
 }  // namespace rbcstab

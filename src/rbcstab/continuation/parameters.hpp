@@ -29,6 +29,11 @@ Parameters with_parameter(Parameters p, ContinuationParameter q, double value);
 double get_parameter(const Scene& s, ContinuationParameter q);
 Scene with_parameter(Scene s, ContinuationParameter q, double value);
 
+// The scene's initial state built with Delta0 = Delta > 0. The continuation problems take only the rest
+// shape's orientation from it (its size is kappa = 1/(Lambda S) from the parameters), so a branch
+// started at Delta0 = 0 keeps the orientation when continued in Delta0.
+InitialState oriented_initial_state(Scene s);
+
 // Throws InvalidArgument(name, ...) unless p2 can be set independently of p1 (not equal, not Lambda with
 // Delta or lambda, not S with C or Delta0): the pairs of a two-parameter curve.
 void require_independent(ContinuationParameter p1, ContinuationParameter p2, const std::string& name);
