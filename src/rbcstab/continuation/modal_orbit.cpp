@@ -104,6 +104,8 @@ const ModalForcedSystem::Slopes& ModalForcedSystem::slopes(double p) const {
     Slopes d;
     d.dups0.assign(static_cast<std::size_t>(L_ - 1), 0.0);
     d.dslope.assign(static_cast<std::size_t>(L_ - 1), 0.0);
+    const detail::RestDirection r = detail::rest_direction(p, true);  // exact
+    d.dg.z0 = r.dz0, d.dg.w0 = r.dw0, d.dg.v0 = r.dv0;
     if (slopes_.size() >= 8) slopes_.clear();
     return slopes_.emplace(p, std::move(d)).first->second;
   }
@@ -142,15 +144,11 @@ void ModalForcedSystem::parameter_derivative(double t, std::span<const double> x
   //   and in the rest direction g; beta moves only g).
   const Eigen::Map<const Eigen::VectorXd> X(x.data(), dimension());
   const ModalCoefficients& c = coefficients(p);
-  const Slopes d = slopes(p);
-  Eigen::VectorXd h = forcing(t, p), dh = forcing_with(t, d.dinvL, d.dkappa, direction(p));
-  if (free_ == ContinuationParameter::beta) {
-    // h = kappa g(beta) (shear part fixed): dh/dbeta = kappa g'(beta), g' exact (detail/rest_direction.hpp).
-    const detail::RestDirection r = detail::rest_direction(p, true);
-    Direction dg;
-    dg.z0 = r.dz0, dg.w0 = r.dw0, dg.v0 = r.dv0;
-    dh += forcing_with(t, 0.0, c.parameters.inv_Lambda_S(), dg);
-  }
+  const Slopes& d = slopes(p);
+  const Eigen::VectorXd h = forcing(t, p);
+  Eigen::VectorXd dh = forcing_with(t, d.dinvL, d.dkappa, direction(p));
+  // h = kappa g(beta) + shear: dh/dbeta = kappa g'(beta), g' exact (detail/rest_direction.hpp).
+  if (free_ == ContinuationParameter::beta) dh += forcing_with(t, 0.0, c.parameters.inv_Lambda_S(), d.dg);
   const double s = modal_sigma(c, X, h);
   double D = 0, dP = X.dot(dh), dD = 0;
   for (Eigen::Index i = 0; i < dimension(); ++i) {

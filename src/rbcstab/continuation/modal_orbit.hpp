@@ -69,13 +69,14 @@ class ModalForcedSystem final : public ForcedSystem {
   Eigen::VectorXd relaxed_state(const Scene& simulated, double T, double rtol = 1e-11) const;
 
  private:
-  struct Slopes {
-    std::vector<double> dups0, dslope;  // index l - 2
-    double dinvL = 0, dkappa = 0;
-  };
   struct Direction {
     std::complex<double> z0, v0;  // rest shape's unit direction (with w0)
     double w0 = 0;
+  };
+  struct Slopes {
+    std::vector<double> dups0, dslope;  // index l - 2
+    double dinvL = 0, dkappa = 0;
+    Direction dg;  // beta only: the rest direction's slope
   };
   static Direction direction_of(const Scene& scene);
   const Direction& direction(double p) const;  // the scene's, or rebuilt per value when beta is free

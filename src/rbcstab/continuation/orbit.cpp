@@ -142,8 +142,12 @@ ReducedForcedSystem::Slopes ReducedForcedSystem::coefficient_slopes(double p) co
   Slopes d;
   if (free_ == ContinuationParameter::beta) {
     // beta turns the rest shape only: 1/Lambda and kappa do not depend on it (and beta = 0, pi are
-    // both edges of its domain, where a difference would step outside).
+    // both edges of its domain, where a difference would step outside); the direction's slope is exact.
     d.kappa = coefficients(p).second;
+    const detail::RestDirection r = detail::rest_direction(p, false);
+    d.dz0 = r.dz0, d.dw0 = r.dw0;
+    if (slopes_.size() >= 8) slopes_.clear();
+    slopes_.emplace(p, d);
     return d;
   }
   const double h = fd_step(p);
@@ -186,9 +190,8 @@ void ReducedForcedSystem::parameter_derivative(double t, std::span<const double>
   const double g[3] = {z0.real(), z0.imag(), m.w0()};
   double dg[3] = {0, 0, 0};
   if (beta) {
-    const detail::RestDirection r = detail::rest_direction(p, false);
-    const std::complex<double> dz0 = r.dz0 * std::polar(1.0, t);
-    dg[0] = dz0.real(), dg[1] = dz0.imag(), dg[2] = r.dw0;
+    const std::complex<double> dz0 = d.dz0 * std::polar(1.0, t);
+    dg[0] = dz0.real(), dg[1] = dz0.imag(), dg[2] = d.dw0;
   }
   const double Q = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
   const double yg = x[0] * g[0] + x[1] * g[1] + x[2] * g[2];

@@ -67,6 +67,7 @@ class ReducedForcedSystem final : public ForcedSystem {
  private:
   struct Slopes {
     double dinvL = 0, dkappa = 0, kappa = 0;  // d(1/Lambda)/dp, d kappa/dp, kappa at p
+    double dz0 = 0, dw0 = 0;                  // beta only: the rest direction's slope (z0 at t = 0)
   };
   Slopes coefficient_slopes(double p) const;
   Scene scene_;
