@@ -402,6 +402,13 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
       return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, polar_of,
                           "multipliers", nullptr);
     }
+    if (o.curve == "BP") {
+      // A BP of cycles (e.g. the modal orbit's symmetry-breaking a_l -> -a_l pitchfork): the generic
+      // BP system over the shooting problem (2 n + 2 unknowns, central-difference Jacobian).
+      const BranchPointCurveProblem curve(base, *sp, p2_0);
+      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, polar_of,
+                          "multipliers", nullptr);
+    }
     if (o.curve == "NS") {
       const NeimarkSackerCurveProblem curve(system, o.orbit, *sp, p2_0);
       return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, polar_of,
@@ -463,9 +470,9 @@ int run(ContinueOptions& o) {
   if (orbit) o.orbit.validate();
   if (!o.curve.empty()) {
     const bool cycle_curve = o.curve == "LPC" || o.curve == "PD" || o.curve == "NS";
-    if (orbit != cycle_curve)
+    if (orbit != cycle_curve && !(orbit && o.curve == "BP"))
       throw InvalidArgument("curve", "curve = " + o.curve + " is not available for --kind " + o.kind + ": must be " +
-                                         (orbit ? "LPC, PD or NS" : "LP, BP or HB"));
+                                         (orbit ? "LPC, PD, NS or BP" : "LP, BP or HB"));
     if (o.parameter2.empty()) throw InvalidArgument("parameter2", "--curve needs --parameter2 (the second free parameter)");
     if (o.switch_at_bp) throw InvalidArgument("switch-at-bp", "--switch-at-bp and --curve cannot be combined");
     parameter2(o);
@@ -581,7 +588,8 @@ static Runner add_continue(CLI::App& app) {
   app.add_option("--curve", o->curve,
                  "continue the curve of a special point of the one-parameter branch in (--parameter, --parameter2): "
                  "LP, BP, HB (equilibrium, modal; modal BP: the symmetry-breaking curve Upsilon_l(sigma) = 0) or LPC, "
-                 "PD, NS (orbit, modal-orbit); default: none (one-parameter run)")
+                 "PD, NS, BP (orbit, modal-orbit; BP: the generic BP system over the shooting problem, e.g. the "
+                 "modal orbit's symmetry-breaking BPs); default: none (one-parameter run)")
       ->check(CLI::IsMember({"LP", "BP", "HB", "LPC", "PD", "NS"}));
   app.add_option("--parameter2", o->parameter2,
                  "--curve: second free parameter (lambda, Delta, Delta0, B, C, Lambda, S or beta; independent of "

@@ -8,20 +8,23 @@ include(${CMAKE_CURRENT_LIST_DIR}/cli_common.cmake)
 # Fig. 2's in-plane scene at Delta = 1 (tumbling at beta = pi/2), the reduced level.
 set(FIG2 --lambda 5 --Delta 1 --Delta0 0.01 --B 2 --C 0.04 --L 2)
 
-# A decimal in (0, 1) as an integer in units of 1e-12 (CMake has no floating-point arithmetic).
+# A plain decimal in [0, 1e6) as an integer in units of 1e-12 (truncated; CMake has no floating-point
+# arithmetic, and its integers are 64-bit).
 function(e12 value out)
-  if(NOT value MATCHES "^0\\.([0-9]+)$")
-    fail("not a plain decimal in (0, 1): ${value}")
+  if(NOT value MATCHES "^([0-9]+)(\\.([0-9]+))?$")
+    fail("not a plain decimal: ${value}")
   endif()
-  string(SUBSTRING "${CMAKE_MATCH_1}000000000000" 0 12 digits)
+  set(int "${CMAKE_MATCH_1}")
+  string(SUBSTRING "${CMAKE_MATCH_3}000000000000" 0 12 digits)
   string(REGEX REPLACE "^0+" "" digits "${digits}")
   if(digits STREQUAL "")
     set(digits 0)
   endif()
-  set(${out} ${digits} PARENT_SCOPE)
+  math(EXPR v "${int} * 1000000000000 + ${digits}")
+  set(${out} ${v} PARENT_SCOPE)
 endfunction()
 
-# |a - b| <= tol_e12 * 1e-12 for decimals in (0, 1).
+# |a - b| <= tol_e12 * 1e-12 for plain decimals.
 function(expect_close what a b tol_e12)
   e12("${a}" ia)
   e12("${b}" ib)
@@ -137,6 +140,56 @@ elseif(CASE STREQUAL "curve_modal_orbit_none")
   string(FIND "${err}" "no located NS point" pos)
   if(NOT rc EQUAL 1 OR pos EQUAL -1)
     fail("expected exit 1 with 'no located NS point', got ${rc}: ${err}")
+  endif()
+elseif(CASE STREQUAL "curve_modal_orbit_bp")
+  # The modal post-instability orbit (L = 4: a_3 carries area) continued in C has a BP where the
+  # l = 4 multiplier crosses 1. Closed form (docs/continuation.md, modal orbits): a periodic a_3 != 0
+  # needs int Upsilon_3 dt = 0, i.e. the period mean of sigma is sigma_3^c, and the zero-amplitude
+  # l = 4 direction has the multiplier exp(2 pi Upsilon_4(sigma_3^c)); Upsilon_l ~ Pi_l + sigma + 4 alpha/Pi_l
+  # vanishes at sigma_3^c = -(12 + alpha/3) iff alpha = B/C = 3 Pi_4 = 60: the BP curve is C = B/60,
+  # whatever lambda, Delta. Its BP curve in (C, B) from B = 2 (C = 1/30) over B in [1.5, 2.5].
+  execute_process(COMMAND ${CLI} continue --kind modal-orbit --parameter C --min 0.025 --max 0.04 --lambda 5
+                  --Delta 1 --Delta0 0.01 --B 2 --C 0.04 --L 4 --delta 1e-3 --relax-T 600 --segments 2 --curve BP
+                  --parameter2 B --min2 1.5 --max2 2.5 --csv ${WORK}/bp.csv --json
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    fail("exit ${rc}: ${err}")
+  endif()
+  string(JSON type GET "${out}" curve type)
+  string(JSON level GET "${out}" level)
+  string(JSON stable GET "${out}" branch 0 stable)
+  if(NOT type STREQUAL "BP" OR NOT level STREQUAL "modal" OR NOT stable)
+    fail("curve ${type}, level ${level}, stable ${stable}: expected a BP curve of stable modal orbits")
+  endif()
+  file(STRINGS ${WORK}/bp.csv lines)
+  list(GET lines 0 header)
+  if(NOT header STREQUAL "C,B,r,Psi,stable,n_unstable")
+    fail("CSV header: ${header}")
+  endif()
+  list(LENGTH lines n)
+  if(n LESS 8)
+    fail("only ${n} CSV lines")
+  endif()
+  list(REMOVE_AT lines 0)
+  set(first "")
+  foreach(line IN LISTS lines)
+    string(REPLACE "," ";" row "${line}")
+    list(GET row 0 C)
+    list(GET row 1 B)
+    if(first STREQUAL "")
+      set(first "${B}")
+    endif()
+    set(last "${B}")
+    # 60 C = B to 1e-9 (the curve's Newton tolerance 1e-12 and the shooting's rtol 1e-12 give ~1e-10).
+    e12("${C}" iC)
+    e12("${B}" iB)
+    math(EXPR d "60 * ${iC} - ${iB}")
+    if(d LESS -1000 OR d GREATER 1000)
+      fail("point (C = ${C}, B = ${B}): 60 C - B = ${d}e-12, expected 0")
+    endif()
+  endforeach()
+  if(NOT first EQUAL 1.5 OR NOT last EQUAL 2.5)
+    fail("curve spans B = ${first} .. ${last}, expected 1.5 .. 2.5")
   endif()
 elseif(CASE STREQUAL "beta_bad_input")
   expect_bad_input("beta" continue --kind orbit --parameter beta --beta 4 ${FIG2})

@@ -22,7 +22,9 @@ class BranchPointCurveProblem final : public ContinuationProblem {
   BranchPointCurveProblem(const TwoParameterProblem& base, const SpecialPoint& bp, double p2);
   Eigen::Index dimension() const override { return 2 * base_.dimension() + 2; }
   void residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const override;
-  Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p2) const override;  // base Jacobian's
+  Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p2) const override;  // the base problem's
+  // The base problem's kind: eigenvalues, or Floquet multipliers for a BP curve of cycles.
+  StabilityKind stability_kind() const override { return base_.stability_kind(); }
   std::string parameter_name() const override { return base_.name2(); }
   std::vector<std::string> parameter_names() const override { return {base_.name1(), base_.name2()}; }
   std::vector<double> parameter_values(const Eigen::VectorXd& X, double p2) const override {
