@@ -1,0 +1,383 @@
+// Full-model equilibria (continuation/full_equilibrium.hpp): the coordinates and the area identity,
+// the analytic Jacobian, the ellipsoidal branch against the modal level and the closed form, a
+// stress-free shape with l = 3 content against a closed form derived here (below), a long full-model
+// simulation, the branch point of the unforced l = 4 and the rejection of rotating forcings.
+//
+// Closed form with an m = 0 forcing (beta = 0). At fixed sigma every (l, m) obeys
+// f' = (i m/2 + Upsilon_l(sigma)) f + S_{l,m} alone (Eq. eom), with the constant drive
+// S_{l,m} = C_{l,m} - Gamma3_l/C g_{l,m} (C_{l,m}: shear, only l = 2, m = +-2; g: the stress-free shape,
+// only m = 0 at beta = 0). Its equilibrium is f_{l,m} = -S_{l,m} / (i m/2 + Upsilon_l(sigma)), and the
+// area constraint becomes ONE equation for sigma:
+//   Phi(sigma) = sum_{l,m} a_l |S_{l,m}|^2 / (m^2/4 + Upsilon_l(sigma)^2) = Delta.
+// Upsilon_l = (Gamma2/B)(Pi_l + sigma + 4 alpha/Pi_l) with Gamma2 < 0: on sigma > max over forced m = 0
+// modes of sigma_l^c every Upsilon_l is < 0 and falls with sigma, so Phi decreases from +inf to 0 there:
+// exactly one root on that interval (solved by bisection), the branch connected to the stable
+// ellipsoid (other roots, with some forced Upsilon_l > 0, lie below that sigma_l^c). That
+// sigma is also what the tension formula (Eq. st) returns at this f (it is the unique sigma with
+// Re <f, f'> = 0), so the state is an equilibrium of the full model.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <limits>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/full_equilibrium.hpp"
+#include "rbcstab/continuation/modal_equilibrium.hpp"
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/integrate/simulation.hpp"
+#include "rbcstab/model/coefficients.hpp"
+#include "continuation/full_model_fixture.hpp"
+#include "continuation/modal_fixtures.hpp"
+
+namespace rbcstab {
+namespace {
+
+using cd = std::complex<double>;
+
+// The modal tests' scene (lambda = 1, B = 1, Delta = 1, Delta0 = 0.01, beta = 0) with an optional
+// stress-free l = 3 content and no perturbation of the current shape.
+Scene forced_scene(double C, int L, double rest3) {
+  Scene s = modal_fixtures::scene(C, L);
+  s.delta = 0;
+  if (rest3 > 0) s.rest_delta_l[3] = rest3;
+  return s;
+}
+
+// ---- the closed form of the header comment, from the paper's definitions only ----
+struct ClosedForm {
+  double sigma = 0;
+  std::vector<cd> f;  // f_{l,m}, ModeAmplitudes::index
+  std::vector<double> Delta_l;
+};
+
+cd drive(const Scene& s, const Parameters& q, int l, int m) {
+  // beta = 0: D^(l)_{m,0}(0) = delta_{m,0}, so g_{l,0} = -sqrt(Delta0/a2) (l = 2), +sqrt(Delta0_l/a_l).
+  double g = 0;
+  if (m == 0) g = l == 2 ? -std::sqrt(q.Delta0 / a_l(2)) : std::sqrt(s.rest_perturbation(l) / a_l(l));
+  return shear_drive(q.lambda, l, m) - Gamma3(q.lambda, l) * q.inv_C() * g;
+}
+
+double area_at(const Scene& s, const Parameters& q, double sigma) {
+  double A = 0;
+  for (int l = 2; l <= s.L; ++l) {
+    const double Y = Upsilon(q, l, sigma);
+    for (int m = -l; m <= l; ++m) A += a_l(l) * std::norm(drive(s, q, l, m)) / (0.25 * m * m + Y * Y);
+  }
+  return A;
+}
+
+ClosedForm closed_form(const Scene& s, const Parameters& q) {
+  double lo = -1e300;
+  for (int l = 2; l <= s.L; ++l)
+    if (std::abs(drive(s, q, l, 0)) > 0) lo = std::max(lo, sigma_critical(l, q.alpha()));
+  double hi = lo + 1;
+  while (area_at(s, q, hi) > q.Delta) hi = lo + 2 * (hi - lo);
+  for (int it = 0; it < 400; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    if (mid == lo || mid == hi) break;
+    (area_at(s, q, mid) > q.Delta ? lo : hi) = mid;
+  }
+  ClosedForm c;
+  c.sigma = 0.5 * (lo + hi);
+  c.f.resize(ModeAmplitudes::count(s.L));
+  c.Delta_l.assign(static_cast<std::size_t>(s.L - 1), 0.0);
+  for (int l = 2; l <= s.L; ++l)
+    for (int m = -l; m <= l; ++m) {
+      const cd f = -drive(s, q, l, m) / cd(Upsilon(q, l, c.sigma), 0.5 * m);
+      c.f[ModeAmplitudes::index(l, m)] = f;
+      c.Delta_l[static_cast<std::size_t>(l - 2)] += a_l(l) * std::norm(f);
+    }
+  return c;
+}
+
+// Largest |closed form - state| over the stored f_{l,m}.
+double state_error(const FullEquilibriumProblem& pr, const Eigen::VectorXd& x, double p, const ClosedForm& c) {
+  const std::vector<double> y = pr.to_full_state(x, p);
+  double e = 0;
+  for (std::size_t k = 0; k < c.f.size(); ++k) e = std::max(e, std::abs(cd(y[2 * k], y[2 * k + 1]) - c.f[k]));
+  return e;
+}
+
+TEST(FullEquilibrium, CoordinatesAreRealShapesAndAreaIsTheSphere) {
+  const Scene s = forced_scene(0.03, 5, 1e-3);
+  const FullEquilibriumProblem pr(s, ContinuationParameter::C);
+  EXPECT_EQ(pr.dimension(), 32);  // (L+1)^2 - 4
+  const double p = s.parameters.C;
+  std::mt19937 rng(11);
+  std::normal_distribution<double> N01;
+  for (int trial = 0; trial < 5; ++trial) {
+    Eigen::VectorXd x(pr.dimension());
+    for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = N01(rng);
+    x *= (0.5 + 0.2 * trial) / x.norm();  // on and off the sphere
+    const std::vector<double> y = pr.to_full_state(x, p);
+    const FullModel& m = pr.model(p);
+    const ModeAmplitudes f = m.amplitudes(0, y);
+    // Reality: f_{l,-m} = (-1)^m conj f_{l,m}, Im f_{l,0} = 0 (exact by construction).
+    for (int l = 2; l <= s.L; ++l)
+      for (int mm = 0; mm <= l; ++mm) EXPECT_EQ(f.at(l, -mm), (mm % 2 ? -1.0 : 1.0) * std::conj(f.at(l, mm)));
+    // |x|^2 Delta is the total excess area (Eq. excess_f); round trip.
+    EXPECT_NEAR(x.squaredNorm() * s.parameters.Delta, f.total_excess_area(), 1e-14);
+    EXPECT_LT((pr.from_full_state(y, p) - x).lpNorm<Eigen::Infinity>(), 1e-15);
+    // Area conservation x.F = 0 (the identity G = F + (|x|^2 - 1) x relies on), relative to |x||F|.
+    Eigen::VectorXd F;
+    pr.dynamics(x, p, F);
+    EXPECT_LT(std::abs(x.dot(F)), 1e-13 * x.norm() * F.norm());
+    EXPECT_GT(F.norm(), 1e-3);  // not vacuous
+    // F is FullModel's rhs on the real shape (that rhs keeps real shapes real).
+    std::vector<double> dydt(y.size());
+    m.rhs(0, y, dydt);
+    EXPECT_LT((pr.from_full_state(dydt, p) - F).lpNorm<Eigen::Infinity>(), 1e-13 * (1 + F.lpNorm<Eigen::Infinity>()));
+    const ModeAmplitudes df = m.amplitudes(0, dydt);
+    for (int l = 2; l <= s.L; ++l)
+      for (int mm = 0; mm <= l; ++mm)
+        EXPECT_LT(std::abs(df.at(l, -mm) - (mm % 2 ? -1.0 : 1.0) * std::conj(df.at(l, mm))),
+                  1e-12 * (1 + std::abs(df.at(l, mm))));
+  }
+}
+
+TEST(FullEquilibrium, AnalyticJacobianMatchesDifferences) {
+  const Scene s = forced_scene(0.03, 4, 1e-3);
+  const FullEquilibriumProblem pr(s, ContinuationParameter::lambda);
+  std::mt19937 rng(5);
+  std::normal_distribution<double> N01;
+  Eigen::VectorXd x(pr.dimension());
+  for (Eigen::Index i = 0; i < x.size(); ++i) x[i] = N01(rng);
+  x *= 0.9 / x.norm();
+  Eigen::MatrixXd Ja, Jd;
+  pr.jacobian(x, 1.3, Ja);
+  pr.ContinuationProblem::jacobian(x, 1.3, Jd);
+  // Central differences with h ~ eps^(1/3): error ~ 1e-10 |J| (|J| ~ |Upsilon_4| ~ 10 here).
+  EXPECT_LT((Ja - Jd).lpNorm<Eigen::Infinity>(), 1e-7 * (1 + Ja.lpNorm<Eigen::Infinity>()));
+}
+
+TEST(FullEquilibrium, EllipsoidalBranchEqualsModalLevelAndClosedForm) {
+  const Scene s = forced_scene(0.08, 4, 0.0);
+  const FullEquilibriumProblem pr(s, ContinuationParameter::lambda);
+  const ModalEquilibriumProblem modal(s, ContinuationParameter::lambda);
+  ContinuationOptions o;
+  o.p_min = 0;
+  o.p_max = 20;
+  o.direction = Direction::both;
+  const Branch b = continue_branch(pr, pr.ellipsoidal_state(1.0), 1.0, o);
+  ASSERT_EQ(b.status, ContinuationStatus::completed) << b.message;
+  EXPECT_DOUBLE_EQ(b.points.front().p, 0);
+  EXPECT_DOUBLE_EQ(b.points.back().p, 20);
+  ASSERT_GE(b.points.size(), 10u);
+  for (const BranchPoint& pt : b.points) {
+    // The closed form (analysis/steady_states) to 1e-10, the bar (Newton stops at 1e-12).
+    EXPECT_LT((pt.x - pr.ellipsoidal_state(pt.p)).lpNorm<Eigen::Infinity>(), 1e-10) << "lambda = " << pt.p;
+    // The modal level's Newton solution: x_{2,2} = z, x_{2,0} = -w, x_{2,1} = v, l >= 3 zero.
+    const NewtonResult nr = solve_fixed_parameter(modal, modal.ellipsoidal_state(pt.p), pt.p);
+    ASSERT_TRUE(nr.converged);
+    const Eigen::Index i22 = FullEquilibriumProblem::index(2, 2), i21 = FullEquilibriumProblem::index(2, 1);
+    EXPECT_NEAR(pt.x[i22], nr.x[0], 1e-10);
+    EXPECT_NEAR(pt.x[i22 + 1], nr.x[1], 1e-10);
+    EXPECT_NEAR(pt.x[0], -nr.x[2], 1e-10);
+    EXPECT_NEAR(pt.x[i21], nr.x[3], 1e-10);
+    EXPECT_NEAR(pt.x[i21 + 1], nr.x[4], 1e-10);
+    EXPECT_EQ(pt.x.tail(pt.x.size() - 5).lpNorm<Eigen::Infinity>(), 0.0);  // invariant under Newton
+    const FullEquilibriumState st = pr.observe(pt.x, pt.p);
+    const ModalState ms = modal.observe(nr.x, pt.p);
+    EXPECT_NEAR(st.sigma, ms.sigma, 1e-9 * (1 + std::abs(ms.sigma)));
+    EXPECT_NEAR(st.r, ms.r, 1e-10);
+    // Spectrum: the modal one (reduced pair, Upsilon_2 +- i/2, Upsilon_l for the a_l = m = 0 directions)
+    // plus Upsilon_l(sigma) +- i m/2 for l >= 3, m = 1..l; 1e-9 relative (dense QR, |J| ~ 10).
+    const Parameters q = with_parameter(s.parameters, ContinuationParameter::lambda, pt.p);
+    const Eigen::VectorXcd ms_spec = modal.spectrum(nr.x, pt.p);
+    std::vector<cd> want(ms_spec.data(), ms_spec.data() + ms_spec.size());
+    for (int l = 3; l <= s.L; ++l)
+      for (int m = 1; m <= l; ++m) {
+        want.emplace_back(Upsilon(q, l, ms.sigma), 0.5 * m);
+        want.emplace_back(Upsilon(q, l, ms.sigma), -0.5 * m);
+      }
+    const std::vector<cd> got(pt.spectrum.data(), pt.spectrum.data() + pt.spectrum.size());
+    ASSERT_EQ(got.size(), want.size());
+    EXPECT_LT(test::multiset_distance(got, want), 1e-9) << "lambda = " << pt.p;
+  }
+}
+
+
+// The branch in C from 0.08 down to 0.012 with a stress-free l = 3 content (L = 5).
+struct ForcedRun {
+  Scene s;
+  FullEquilibriumProblem pr;
+  Eigen::VectorXd x0;
+  Branch branch;
+  explicit ForcedRun(double rest3 = 1e-3, int L = 5, double C_min = 0.012)
+      : s(forced_scene(0.08, L, rest3)), pr(s, ContinuationParameter::C) {
+    const NewtonResult nr = solve_fixed_parameter(pr, pr.ellipsoidal_state(0.08), 0.08);
+    x0 = nr.x;
+    ContinuationOptions o;
+    o.p_min = C_min;
+    o.p_max = 0.08;
+    o.max_step = 0.05;
+    o.direction = Direction::backward;
+    if (nr.converged) branch = continue_branch(pr, x0, 0.08, o);
+  }
+};
+
+TEST(FullEquilibrium, ForcedBranchEqualsClosedForm) {
+  const ForcedRun run;
+  ASSERT_TRUE(run.x0.size() > 0);
+  ASSERT_EQ(run.branch.status, ContinuationStatus::completed) << run.branch.message;
+  EXPECT_DOUBLE_EQ(run.branch.points.front().p, 0.08);  // backward from the start
+  EXPECT_DOUBLE_EQ(run.branch.points.back().p, 0.012);
+  ASSERT_GE(run.branch.points.size(), 20u);
+  double worst = 0;
+  for (const BranchPoint& pt : run.branch.points) {
+    const Parameters q = with_parameter(run.s.parameters, ContinuationParameter::C, pt.p);
+    const ClosedForm c = closed_form(run.s, q);
+    const FullEquilibriumState st = run.pr.observe(pt.x, pt.p);
+    // 1e-10, the bar: Newton stops at |dX| <= 1e-12 (1e-12 (1 + |x|)), and the closed form's
+    // bisection is exact to the last bit of sigma; |f| <= 1.
+    const double e = state_error(run.pr, pt.x, pt.p, c);
+    worst = std::max(worst, e);
+    EXPECT_LT(e, 1e-10) << "C = " << pt.p;
+    EXPECT_NEAR(st.sigma, c.sigma, 1e-10 * std::abs(c.sigma)) << "C = " << pt.p;
+    for (std::size_t k = 0; k < c.Delta_l.size(); ++k) EXPECT_NEAR(st.Delta_l[k], c.Delta_l[k], 1e-10);
+    // The unforced modes hold nothing (invariant subspace of Newton), the forced l = 3 does.
+    EXPECT_EQ(st.Delta_l[2], 0.0);
+    EXPECT_EQ(st.Delta_l[3], 0.0);
+    EXPECT_GT(st.Delta_l[1], 5e-4);
+  }
+  std::printf("forced branch: %zu points, max |f - closed form| = %.2e\n", run.branch.points.size(), worst);
+  // The forcing unfolds the l = 3 pitchfork of the modal branch (C = 0.0362 there): no special point
+  // before the unforced l = 4 crossing near C = 0.0153; Delta_3 grows smoothly to 0.92 instead.
+  for (const auto& sp : run.branch.special_points) EXPECT_LT(sp.p, 0.016) << to_string(sp.type);
+  EXPECT_GT(run.pr.observe(run.branch.points.back().x, 0.012).Delta_l[1], 0.9);
+}
+
+// C where the closed-form sigma(C) reaches sigma_4^c(B/C): the unforced l = 4 becomes neutral.
+double l4_threshold(const Scene& s, double lo, double hi) {
+  auto margin = [&](double C) {
+    const Parameters q = with_parameter(s.parameters, ContinuationParameter::C, C);
+    return closed_form(s, q).sigma - sigma_critical(4, q.alpha());
+  };
+  const double mlo = margin(lo);
+  EXPECT_LT(mlo * margin(hi), 0);
+  for (int it = 0; it < 200 && hi - lo > 1e-16; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    ((margin(mid) > 0) == (mlo > 0) ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+TEST(FullEquilibrium, UnforcedModeCrossingIsLocatedAsBranchPointWithCoincidentHopfPairs) {
+  const ForcedRun run;
+  ASSERT_EQ(run.branch.status, ContinuationStatus::completed) << run.branch.message;
+  const SpecialPoint *bp = nullptr, *hb = nullptr;
+  for (const auto& sp : run.branch.special_points) {
+    if (sp.type == SpecialPointType::BP && !bp) bp = &sp;
+    if (sp.type == SpecialPointType::HB && !hb) hb = &sp;
+  }
+  ASSERT_NE(bp, nullptr);
+  ASSERT_NE(hb, nullptr);
+  const double C4 = l4_threshold(run.s, 0.014, 0.017);
+  // Located to 1e-8 against the nested closed-form root (the engine's bracket is < 1e-11).
+  EXPECT_EQ(bp->status, LocationStatus::located);
+  EXPECT_NEAR(bp->p, C4, 1e-8);
+  const FullEquilibriumState st = run.pr.observe(bp->x, bp->p);
+  const Parameters q = with_parameter(run.s.parameters, ContinuationParameter::C, bp->p);
+  EXPECT_NEAR(Upsilon(q, 4, st.sigma), 0.0, 1e-8);
+  // Coincident crossings: at Upsilon_4 = 0 the m = 0 real eigenvalue (the Z2 pitchfork f_{4,0} -> -f_{4,0})
+  // and the four pairs Upsilon_4 +- i m/2 (m = 1..4, rotating l = 4 waves) cross together. det[J F_p; t^T]
+  // changes sign once (BP); the Hopf product changes sign four times (no net change), so the engine
+  // bisects for the unexplained change of the unstable count, cannot separate the crossings, and
+  // reports one HB at the same parameter carrying the whole change 0 -> 9 (= 1 + 2 * 4).
+  EXPECT_EQ(hb->status, LocationStatus::located);
+  EXPECT_NEAR(hb->p, C4, 1e-8);
+  EXPECT_EQ(hb->unstable_before, 0);
+  EXPECT_EQ(hb->unstable_after, 9);
+  // The crossing spectrum itself: at the BP, 9 eigenvalues on the imaginary axis (|Re| < 1e-7, the
+  // location bracket times |dUpsilon_4/dC|), at 0 and +- i m/2, m = 1..4.
+  const Eigen::VectorXcd ev = run.pr.spectrum(bp->x, bp->p);
+  std::vector<cd> neutral;
+  for (Eigen::Index i = 0; i < ev.size(); ++i)
+    if (std::abs(ev[i].real()) < 1e-7) neutral.push_back(ev[i]);
+  ASSERT_EQ(neutral.size(), 9u);
+  std::vector<cd> want = {cd(0, 0)};
+  for (int m = 1; m <= 4; ++m) want.insert(want.end(), {cd(0, 0.5 * m), cd(0, -0.5 * m)});
+  EXPECT_LT(test::multiset_distance(neutral, want), 1e-7);
+  const double omega = std::abs(hb->eigenvalue.imag());
+  std::printf("l = 4 crossing: BP C = %.12f (%s, %d -> %d, vs closed form %.1e), HB C = %.12f (omega %.6f, %d -> %d)\n",
+              bp->p, to_string(bp->status).c_str(), bp->unstable_before, bp->unstable_after, std::abs(bp->p - C4), hb->p, omega,
+              hb->unstable_before, hb->unstable_after);
+}
+
+TEST(FullEquilibrium, LongFullSimulationRelaxesOntoTheForcedEquilibrium) {
+  // C = 0.03: Delta_3 = 0.55 (far from the ellipsoid), stable (l = 4 crosses only at C = 0.0153).
+  const double C = 0.03;
+  Scene sim_scene = forced_scene(C, 4, 1e-3);
+  sim_scene.model = ModelLevel::full;
+  sim_scene.T = 400;
+  sim_scene.dt = 100;
+  SimulationOptions so;
+  so.integrator.rtol = 1e-11;
+  so.integrator.atol = 1e-14;
+  so.record_trajectory = false;
+  const SimulationResult sim = simulate(sim_scene, so);
+  ASSERT_EQ(sim.status, IntegrationStatus::success) << sim.reason;
+  ASSERT_EQ(sim.level.level, ModelLevel::full);
+  // delta = 0: the run's area is Delta exactly, so the problem's sphere is the run's.
+  ASSERT_NEAR(sim.Delta_total_initial, sim_scene.parameters.Delta, 1e-14);
+  // The equilibrium continued from the stable ellipsoid at C = 0.08 (Newton straight from the
+  // ellipsoid at C = 0.03 lands on an unstable member of the unfolded pitchfork instead).
+  const ForcedRun run(1e-3, 4, C);
+  ASSERT_EQ(run.branch.status, ContinuationStatus::completed) << run.branch.message;
+  const FullEquilibriumProblem& pr = run.pr;
+  NewtonResult nr;
+  nr.x = run.branch.points.back().x;
+  ASSERT_DOUBLE_EQ(run.branch.points.back().p, C);
+  const FullEquilibriumState st = pr.observe(nr.x, C);
+  // Tolerance: the slowest transient decays like exp(max Re lambda t); require it to be below e^-30
+  // at T, so the remaining distance is set by the integrator (rtol 1e-11) -> bar 1e-8.
+  const Eigen::VectorXcd ev = pr.spectrum(nr.x, C);
+  const double slowest = ev.real().maxCoeff();
+  ASSERT_LT(slowest, -30.0 / sim_scene.T);
+  for (std::size_t k = 0; k < st.Delta_l.size(); ++k)
+    EXPECT_NEAR(sim.Delta_final[k], st.Delta_l[k], 1e-8) << "l = " << k + 2;
+  EXPECT_NEAR(sim.sigma_final, st.sigma, 1e-8 * std::abs(st.sigma));
+  EXPECT_NEAR(sim.r_final, st.r, 1e-8);
+  EXPECT_GT(st.Delta_l[1], 0.5);
+  // relaxed_state() is the same path inside the problem: Newton from it lands on the same state.
+  const FullEquilibriumProblem pr_C(sim_scene, ContinuationParameter::C);
+  const NewtonResult nr2 = solve_fixed_parameter(pr_C, pr_C.relaxed_state(400), C);
+  ASSERT_TRUE(nr2.converged);
+  EXPECT_LT((nr2.x - nr.x).lpNorm<Eigen::Infinity>(), 1e-10);
+  std::printf("simulation vs equilibrium: dDelta_3 = %.2e, dsigma = %.2e, slowest eigenvalue %.4f\n",
+              std::abs(sim.Delta_final[1] - st.Delta_l[1]), std::abs(sim.sigma_final - st.sigma), slowest);
+}
+
+TEST(FullEquilibrium, RotatingForcingAndLargeLAreRejected) {
+  Scene s = forced_scene(0.03, 4, 1e-3);
+  s.beta = 0.3;  // Delta0 > 0, finite C: g has m != 0 content that rotates
+  try {
+    FullEquilibriumProblem pr(s, ContinuationParameter::C);
+    ADD_FAILURE() << "no exception";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "beta");
+  }
+  s.parameters.Delta0 = 0;  // the l = 3 rest content still rotates
+  EXPECT_THROW(FullEquilibriumProblem(s, ContinuationParameter::C), InvalidArgument);
+  s.rest_delta_l.clear();  // no elastic memory left: autonomous
+  EXPECT_NO_THROW(FullEquilibriumProblem(s, ContinuationParameter::C));
+  Scene t = forced_scene(0.03, 4, 1e-3);
+  t.beta = 0.3;
+  t.parameters.C = std::numeric_limits<double>::infinity();  // C = inf: no rest-shape drive at all
+  EXPECT_NO_THROW(FullEquilibriumProblem(t, ContinuationParameter::lambda));
+  Scene u = forced_scene(0.03, FullEquilibriumProblem::max_L + 1, 1e-3);
+  try {
+    FullEquilibriumProblem pr(u, ContinuationParameter::C);
+    ADD_FAILURE() << "no exception";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "L");
+  }
+}
+
+}  // namespace
+}  // namespace rbcstab
