@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/detail/sphere_constraint.hpp"
 #include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/core/error.hpp"
@@ -351,6 +352,28 @@ TEST(FullEquilibrium, LongFullSimulationRelaxesOntoTheForcedEquilibrium) {
   EXPECT_LT((nr2.x - nr.x).lpNorm<Eigen::Infinity>(), 1e-10);
   std::printf("simulation vs equilibrium: dDelta_3 = %.2e, dsigma = %.2e, slowest eigenvalue %.4f\n",
               std::abs(sim.Delta_final[1] - st.Delta_l[1]), std::abs(sim.sigma_final - st.sigma), slowest);
+}
+
+TEST(FullEquilibrium, BlockSpectrumEqualsDenseTangentSpectrum) {
+  // spectrum() solves only the blocks that hold x densely; the dense tangent-plane spectrum of the
+  // whole DF is the oracle (1e-9 relative: dense QR error ~ eps |DF|, |DF| ~ |Upsilon_6| ~ 50).
+  const ForcedRun run(1e-3, 6, 0.02);
+  ASSERT_EQ(run.branch.status, ContinuationStatus::completed) << run.branch.message;
+  std::mt19937 rng(3);
+  std::normal_distribution<double> N01;
+  std::vector<Eigen::VectorXd> states = {run.branch.points.front().x, run.branch.points.back().x};
+  Eigen::VectorXd random(run.pr.dimension());
+  for (Eigen::Index i = 0; i < random.size(); ++i) random[i] = N01(rng);
+  states.push_back(random / random.norm());  // every block active: the dense path alone
+  for (const Eigen::VectorXd& x : states) {
+    Eigen::MatrixXd DF;
+    run.pr.dynamics_jacobian(x, 0.03, DF);
+    const Eigen::VectorXcd dense = detail::tangent_spectrum(DF, x), blocks = run.pr.spectrum(x, 0.03);
+    ASSERT_EQ(blocks.size(), run.pr.dimension() - 1);
+    EXPECT_LT(test::multiset_distance(std::vector<cd>(blocks.data(), blocks.data() + blocks.size()),
+                                      std::vector<cd>(dense.data(), dense.data() + dense.size())),
+              1e-9);
+  }
 }
 
 TEST(FullEquilibrium, RotatingForcingAndLargeLAreRejected) {

@@ -1,6 +1,7 @@
 #include "rbcstab/continuation/full_equilibrium.hpp"
 
 #include <cmath>
+#include <complex>
 #include <string>
 
 #include "rbcstab/analysis/steady_states.hpp"
@@ -117,17 +118,32 @@ void FullEquilibriumProblem::dynamics_jacobian(const Eigen::VectorXd& x, double 
   StructuredJacobian J;
   std::vector<double> dfdt(y.size());
   model(p).jacobian(0, y, J, dfdt);
-  // DF e_j = R J E e_j: E e_j has at most two non-zeros, J applies in O(N).
-  DF.resize(n_, n_);
-  Eigen::VectorXd e = Eigen::VectorXd::Zero(n_);
-  std::vector<double> Ju(y.size());
-  for (Eigen::Index j = 0; j < n_; ++j) {
-    e[j] = 1;
-    const std::vector<double> u = to_full_state(e, p);
-    J.apply(u, Ju);
-    DF.col(j) = from_full_state(Ju, p);
-    e[j] = 0;
+  // DF = R J E = R M E + (R v)(E^T w)^T. M maps real shapes to real shapes block by block, so R M E
+  // is M's own (l, m >= 0) block: Upsilon_l for m = 0 (the Im f_{l,0} half is dropped), the 2x2
+  // rotation [[Y, -m/2], [m/2, Y]] for m > 0. E^T w collects w over both halves of each (l, +-m).
+  const double Delta = parameters(p).Delta;
+  const Eigen::VectorXd Rv = from_full_state(J.v, p);
+  std::vector<double> Etw(at(n_));
+  DF.setZero(n_, n_);
+  for (int l = 2; l <= L_; ++l) {
+    const std::size_t k0 = ModeAmplitudes::index(l, 0);
+    const Eigen::Index i0 = index(l, 0);
+    DF(i0, i0) = J.diag[2 * k0];
+    Etw[at(i0)] = std::sqrt(Delta / a_l(l)) * J.w[2 * k0];
+    const double c = std::sqrt(Delta / (2 * a_l(l)));
+    for (int m = 1; m <= l; ++m) {
+      const std::size_t kp = ModeAmplitudes::index(l, m), km = ModeAmplitudes::index(l, -m);
+      const double sign = m % 2 == 0 ? 1.0 : -1.0;
+      const Eigen::Index i = index(l, m);
+      DF(i, i) = J.diag[2 * kp];
+      DF(i, i + 1) = J.upper[2 * kp];
+      DF(i + 1, i) = J.lower[2 * kp];
+      DF(i + 1, i + 1) = J.diag[2 * kp + 1];
+      Etw[at(i)] = c * (J.w[2 * kp] + sign * J.w[2 * km]);
+      Etw[at(i + 1)] = c * (J.w[2 * kp + 1] - sign * J.w[2 * km + 1]);
+    }
   }
+  DF.noalias() += Rv * Eigen::Map<const Eigen::VectorXd>(Etw.data(), n_).transpose();
 }
 
 void FullEquilibriumProblem::residual(const Eigen::VectorXd& x, double p, Eigen::VectorXd& G) const {
@@ -143,7 +159,35 @@ void FullEquilibriumProblem::jacobian(const Eigen::VectorXd& x, double p, Eigen:
 Eigen::VectorXcd FullEquilibriumProblem::spectrum(const Eigen::VectorXd& x, double p) const {
   Eigen::MatrixXd DF;
   dynamics_jacobian(x, p, DF);
-  return detail::tangent_spectrum(DF, x);
+  // Block structure: DF = D + u grad(sigma)^T with D block diagonal (1x1 for m = 0, the 2x2 rotation
+  // for m > 0) and u proportional to x (FullModel::jacobian). A block (l, m) with x = 0 there has u = 0
+  // there, so its rows hold only its D block: DF is block triangular and that block's eigenvalues
+  // (Upsilon_l +- i m/2) are exact without the dense solve. The rest (the "active" blocks, which
+  // contain x, so x^perp splits the same way) goes through the dense tangent-plane spectrum.
+  // On the symmetric branches almost every l >= 3 block is inactive: the dense part is ~6 x 6.
+  std::vector<Eigen::Index> active;
+  std::vector<std::complex<double>> values;
+  for (int l = 2; l <= L_; ++l)
+    for (int m = 0; m <= l; ++m) {
+      const Eigen::Index i = index(l, m), k = m == 0 ? 1 : 2;
+      if (x.segment(i, k).cwiseAbs().maxCoeff() > 0) {
+        for (Eigen::Index j = 0; j < k; ++j) active.push_back(i + j);
+        continue;
+      }
+      const Eigen::MatrixXd block = DF.block(i, i, k, k);
+      const Eigen::VectorXcd ev = Eigen::EigenSolver<Eigen::MatrixXd>(block, false).eigenvalues();
+      values.insert(values.end(), ev.data(), ev.data() + ev.size());
+    }
+  const Eigen::Index na = static_cast<Eigen::Index>(active.size());
+  Eigen::MatrixXd DFa(na, na);
+  Eigen::VectorXd xa(na);
+  for (Eigen::Index a = 0; a < na; ++a) {
+    xa[a] = x[active[at(a)]];
+    for (Eigen::Index b = 0; b < na; ++b) DFa(a, b) = DF(active[at(a)], active[at(b)]);
+  }
+  const Eigen::VectorXcd ev = detail::tangent_spectrum(DFa, xa);
+  values.insert(values.end(), ev.data(), ev.data() + ev.size());
+  return Eigen::Map<const Eigen::VectorXcd>(values.data(), static_cast<Eigen::Index>(values.size()));
 }
 
 Eigen::VectorXd FullEquilibriumProblem::ellipsoidal_state(double p) const {
