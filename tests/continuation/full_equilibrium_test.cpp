@@ -17,6 +17,8 @@
 // Re <f, f'> = 0), so the state is an equilibrium of the full model.
 #include <gtest/gtest.h>
 
+#include <Eigen/Eigenvalues>
+
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -25,6 +27,7 @@
 #include <random>
 #include <vector>
 
+#include "rbcstab/continuation/branch_switch.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"
 #include "rbcstab/continuation/full_equilibrium.hpp"
@@ -304,10 +307,64 @@ TEST(FullEquilibrium, UnforcedModeCrossingIsLocatedAsBranchPointWithCoincidentHo
   std::vector<cd> want = {cd(0, 0)};
   for (int m = 1; m <= 4; ++m) want.insert(want.end(), {cd(0, 0.5 * m), cd(0, -0.5 * m)});
   EXPECT_LT(test::multiset_distance(neutral, want), 1e-7);
+  // Why the problem uses independent real-shape coordinates: FullModel's stored state (both halves of
+  // every m) also carries i times a real shape, a copy of the same linear spectrum, so there the m = 0
+  // eigenvalue Upsilon_4 = 0 is double (Re and Im f_{4,0}), besides the area direction's trivial 0.
+  {
+    const std::vector<double> y = run.pr.to_full_state(bp->x, bp->p);
+    StructuredJacobian J;
+    std::vector<double> dfdt(y.size());
+    run.pr.model(bp->p).jacobian(0, y, J, dfdt);
+    const Eigen::VectorXcd all = Eigen::EigenSolver<Eigen::MatrixXd>(test::dense(J), false).eigenvalues();
+    int zeros = 0, zeros_here = 0;
+    for (Eigen::Index i = 0; i < all.size(); ++i) zeros += std::abs(all[i]) < 1e-7 ? 1 : 0;
+    for (Eigen::Index i = 0; i < ev.size(); ++i) zeros_here += std::abs(ev[i]) < 1e-7 ? 1 : 0;
+    EXPECT_EQ(zeros, 3);
+    EXPECT_EQ(zeros_here, 1);
+  }
   const double omega = std::abs(hb->eigenvalue.imag());
   std::printf("l = 4 crossing: BP C = %.12f (%s, %d -> %d, vs closed form %.1e), HB C = %.12f (omega %.6f, %d -> %d)\n",
               bp->p, to_string(bp->status).c_str(), bp->unstable_before, bp->unstable_after, std::abs(bp->p - C4), hb->p, omega,
               hb->unstable_before, hb->unstable_after);
+}
+
+TEST(FullEquilibrium, BranchSwitchAtTheL4CrossingHasSigmaPinnedAtItsCriticalValue) {
+  // On the branch born at the l = 4 pitchfork f_{4,0} != 0 is unforced, so f_{4,0}' = Upsilon_4 f_{4,0}
+  // = 0 pins sigma = sigma_4^c(B/C); every other mode is f = -S/(i m/2 + Upsilon_l(sigma_4^c)) (the
+  // closed form above at that sigma) and Delta_4 = Delta minus their area. Tolerance 1e-10 as above.
+  const ForcedRun run;
+  const SpecialPoint* bp = nullptr;
+  for (const auto& sp : run.branch.special_points)
+    if (sp.type == SpecialPointType::BP && !bp) bp = &sp;
+  ASSERT_NE(bp, nullptr);
+  BranchSwitchOptions o;
+  o.continuation.p_min = 0.012;
+  o.continuation.p_max = 0.08;
+  o.continuation.max_step = 0.05;
+  const BranchSwitchResult sw = switch_branch(run.pr, run.branch, *bp, o);
+  ASSERT_TRUE(sw.switched) << sw.message;
+  EXPECT_LT(sw.singular_values[1], 1e-7 * sw.singular_values[2]);  // a 2-D kernel: one real crossing
+  ASSERT_EQ(sw.branch.status, ContinuationStatus::completed) << sw.branch.message;
+  ASSERT_GE(sw.branch.points.size(), 5u);
+  EXPECT_DOUBLE_EQ(sw.branch.points.back().p, 0.012);
+  for (const BranchPoint& pt : sw.branch.points) {
+    const Parameters q = with_parameter(run.s.parameters, ContinuationParameter::C, pt.p);
+    const double sigma4 = sigma_critical(4, q.alpha());
+    const FullEquilibriumState st = run.pr.observe(pt.x, pt.p);
+    EXPECT_NEAR(st.sigma, sigma4, 1e-10 * std::abs(sigma4)) << "C = " << pt.p;
+    double rest = 0;
+    for (int l = 2; l <= run.s.L; ++l) {
+      if (l == 4) continue;
+      double Dl = 0;
+      for (int m = -l; m <= l; ++m)
+        Dl += a_l(l) * std::norm(drive(run.s, q, l, m)) / (0.25 * m * m + std::pow(Upsilon(q, l, sigma4), 2));
+      EXPECT_NEAR(st.Delta_l[static_cast<std::size_t>(l - 2)], Dl, 1e-10) << "C = " << pt.p << ", l = " << l;
+      rest += Dl;
+    }
+    EXPECT_NEAR(st.Delta_l[2], q.Delta - rest, 1e-10) << "C = " << pt.p;
+    for (int m = 1; m <= 4; ++m) EXPECT_EQ(pt.x.segment(FullEquilibriumProblem::index(4, m), 2).norm(), 0.0);
+  }
+  EXPECT_GT(run.pr.observe(sw.branch.points.back().x, 0.012).Delta_l[2], 0.05);  // l = 4 takes area
 }
 
 TEST(FullEquilibrium, LongFullSimulationRelaxesOntoTheForcedEquilibrium) {
