@@ -1,9 +1,9 @@
 // Full-model equilibria (continuation/full_equilibrium.hpp, docs/continuation.md) at L = 4, 8, 12:
 // - the ellipsoidal branch over lambda in [0, 20] (no stress-free l >= 3 content): points/s and the
 //   largest error against the out-of-plane closed form (analysis/steady_states) embedded;
-// - a stress-free l = 3 content (rest_delta_l = {3: 1e-3}) continued in C from 0.08 to 0.012: points/s
-//   and the located l = 4 crossing's |sigma - sigma_4^c| (Upsilon_4 = 0 there; the closed-form
-//   location itself is checked in tests/continuation/full_equilibrium_test.cpp).
+// - a stress-free l = 3 content (rest_delta_l = {3: 1e-3}) continued in C from 0.08 to 0.012: points/s,
+//   the largest error of f_{l,m} against the constant-drive closed form (tests/continuation/
+//   full_fixtures.hpp) and the located l = 4 crossing's |sigma - sigma_4^c| (Upsilon_4 = 0 there).
 // Scene: lambda = 1, B = 1, Delta = 1, Delta0 = 0.01, beta = 0 (the modal benchmarks' scene).
 #include <benchmark/benchmark.h>
 
@@ -13,26 +13,13 @@
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "continuation/full_fixtures.hpp"
 
 namespace rbcstab {
 namespace {
 
-Scene full_scene(int L, double C, double rest3) {
-  Scene s;
-  s.beta = 0;
-  s.delta = 0;
-  s.parameters.lambda = 1;
-  s.parameters.B = 1;
-  s.parameters.Delta = 1;
-  s.parameters.Delta0 = 0.01;
-  s.parameters.C = C;
-  s.L = L;
-  if (rest3 > 0) s.rest_delta_l[3] = rest3;
-  return s;
-}
-
 void BM_FullEllipsoidalBranchLambda(benchmark::State& state) {
-  const Scene s = full_scene(static_cast<int>(state.range(0)), 0.08, 0);
+  const Scene s = full_fixtures::forced_scene(0.08, static_cast<int>(state.range(0)), 0);
   const FullEquilibriumProblem pr(s, ContinuationParameter::lambda);
   ContinuationOptions o;
   o.p_min = 0;
@@ -56,7 +43,7 @@ void BM_FullEllipsoidalBranchLambda(benchmark::State& state) {
 BENCHMARK(BM_FullEllipsoidalBranchLambda)->Arg(4)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
 
 void BM_FullForcedBranchC(benchmark::State& state) {
-  const Scene s = full_scene(static_cast<int>(state.range(0)), 0.08, 1e-3);
+  const Scene s = full_fixtures::forced_scene(0.08, static_cast<int>(state.range(0)), 1e-3);
   const FullEquilibriumProblem pr(s, ContinuationParameter::C);
   const NewtonResult start = solve_fixed_parameter(pr, pr.ellipsoidal_state(0.08), 0.08);
   if (!start.converged) {
@@ -68,12 +55,16 @@ void BM_FullForcedBranchC(benchmark::State& state) {
   o.p_max = 0.08;
   o.direction = Direction::backward;
   std::size_t points = 0, special = 0;
-  double bp_err = 0;
+  double bp_err = 0, err = 0;
   for (auto _ : state) {
     const Branch b = continue_branch(pr, start.x, 0.08, o);
     points += b.points.size();
     state.PauseTiming();
     special = b.special_points.size();
+    for (const auto& pt : b.points) {
+      const Parameters q = with_parameter(s.parameters, ContinuationParameter::C, pt.p);
+      err = std::max(err, full_fixtures::state_error(pr, pt.x, pt.p, full_fixtures::closed_form(s, q)));
+    }
     for (const auto& sp : b.special_points) {
       if (sp.type != SpecialPointType::BP) continue;
       const Parameters q = with_parameter(s.parameters, ContinuationParameter::C, sp.p);
@@ -85,6 +76,7 @@ void BM_FullForcedBranchC(benchmark::State& state) {
   state.counters["n"] = static_cast<double>(pr.dimension());
   state.counters["points_per_second"] = benchmark::Counter(static_cast<double>(points), benchmark::Counter::kIsRate);
   state.counters["special_points"] = static_cast<double>(special);
+  state.counters["max_error_vs_closed_form"] = err;
   state.counters["l4_BP_sigma_error"] = bp_err;
 }
 BENCHMARK(BM_FullForcedBranchC)->Arg(4)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);
