@@ -202,6 +202,41 @@ double l4_threshold(const Scene& s, double lo, double hi) {
   return 0.5 * (lo + hi);
 }
 
+TEST(FullEquilibrium, ForcedBranchesInEveryParameterEqualClosedForm) {
+  // The same closed form along branches in the other parameters (the composites Lambda, S move Delta,
+  // C underneath), each from the stable state at C = 0.03 (Delta_3 = 0.55), both directions, L = 4.
+  struct Case {
+    ContinuationParameter q;
+    double lo, hi;
+  };
+  const Case cases[] = {{ContinuationParameter::lambda, 0.2, 5},  {ContinuationParameter::Delta, 0.5, 2},
+                        {ContinuationParameter::Delta0, 1e-3, 0.05}, {ContinuationParameter::B, 0.7, 1.5},
+                        {ContinuationParameter::Lambda, 0.3, 1.5}, {ContinuationParameter::S, 0.5, 2}};
+  const ForcedRun at_C(1e-3, 4, 0.03);
+  ASSERT_EQ(at_C.branch.status, ContinuationStatus::completed) << at_C.branch.message;
+  const Eigen::VectorXd x0 = at_C.branch.points.back().x;
+  for (const Case& c : cases) {
+    const Scene s = forced_scene(0.03, 4, 1e-3);
+    const FullEquilibriumProblem pr(s, c.q);
+    const double p0 = pr.start_parameter();
+    ASSERT_GT(p0, c.lo);
+    ASSERT_LT(p0, c.hi);
+    ContinuationOptions o;
+    o.p_min = c.lo;
+    o.p_max = c.hi;
+    o.direction = Direction::both;
+    o.detect_bifurcations = false;
+    const Branch b = continue_branch(pr, x0, p0, o);
+    // Ends on a bound, or (outside_domain) where a scene validation refuses the parameter.
+    EXPECT_TRUE(b.status == ContinuationStatus::completed) << to_string(c.q) << ": " << b.message;
+    EXPECT_GE(b.points.size(), 5u) << to_string(c.q);
+    for (const BranchPoint& pt : b.points) {
+      const Parameters q = with_parameter(s.parameters, c.q, pt.p);
+      EXPECT_LT(state_error(pr, pt.x, pt.p, closed_form(s, q)), 1e-10) << to_string(c.q) << " = " << pt.p;
+    }
+  }
+}
+
 TEST(FullEquilibrium, UnforcedModeCrossingIsLocatedAsBranchPointWithCoincidentHopfPairs) {
   const ForcedRun run;
   ASSERT_EQ(run.branch.status, ContinuationStatus::completed) << run.branch.message;
