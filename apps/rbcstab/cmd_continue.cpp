@@ -318,7 +318,7 @@ int report_curve(const ContinueOptions& o, const SceneFile& sf, const Branch& on
   if (o.json) {
     nlohmann::json j = branch_json(c, [&](const Eigen::VectorXd& X, double p2) { return state(X, p2); }, spectrum_key);
     j["kind"] = o.kind;
-    j["level"] = o.kind == "modal" ? "modal" : "reduced";
+    j["level"] = o.kind == "full" ? "full" : o.kind == "modal" ? "modal" : "reduced";
     j["free_parameter"] = o.parameter2;
     j["parameters"] = to_json(sf.scene.parameters);
     j["beta"] = sf.scene.beta;
@@ -420,6 +420,28 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
     return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), base.dimension(),
                         modal_of, "eigenvalues", [&](const Eigen::VectorXd& X) { return curve.omega(X); });
   }
+  if (o.kind == "full") {
+    // The generic curve systems over the full problem (BP: the 2n + 2 system of branch_point_curve.hpp,
+    // e.g. an unforced mode's Z2 pitchfork).
+    const SceneTwoParameterProblem<FullEquilibriumProblem> base(scene, q1, q2);
+    const Eigen::Index n = base.dimension();
+    const DescribeCurve full_of = [&](const Eigen::VectorXd& x, double p1, double p2) {
+      return modal_json(base.at(p2), x, p1);
+    };
+    if (o.curve == "LP") {
+      const FoldCurveProblem curve(base, *sp, p2_0);
+      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, full_of,
+                          "eigenvalues", nullptr);
+    }
+    if (o.curve == "BP") {
+      const BranchPointCurveProblem curve(base, *sp, p2_0);
+      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, full_of,
+                          "eigenvalues", nullptr);
+    }
+    const HopfCurveProblem curve(base, *sp, p2_0);
+    return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, full_of,
+                        "eigenvalues", [&](const Eigen::VectorXd& X) { return curve.omega(X); });
+  }
   const SceneTwoParameterProblem<ReducedEquilibriumProblem> base(scene, q1, q2);
   if (o.curve == "LP") {
     const FoldCurveProblem curve(base, *sp, p2_0);
@@ -447,9 +469,6 @@ int run(ContinueOptions& o) {
     throw InvalidArgument("switch-at-bp", "--switch-at-bp is available for --kind equilibrium, modal and full, not orbit or modal-orbit");
   if (orbit) o.orbit.validate();
   if (!o.curve.empty()) {
-    if (full)
-      throw InvalidArgument("curve", "curve = " + o.curve + " is not available for --kind full (no two-parameter full "
-                                         "problem yet): use --kind modal or equilibrium");
     if (modal_orbit)
       throw InvalidArgument("curve", "curve = " + o.curve + " is not available for --kind modal-orbit (no two-parameter "
                                          "modal forced system yet): use --kind orbit, equilibrium or modal");
@@ -515,6 +534,7 @@ int run(ContinueOptions& o) {
       return kRunFailed;
     }
     const Branch b = continue_branch(problem, start.x, p0, o.engine);
+    if (!o.curve.empty()) return run_curve(o, sf, b);
     std::optional<BranchSwitchResult> sw;
     if (o.switch_at_bp) sw = switch_at_first_bp(problem, b, o.engine);
     const BranchSwitchResult* swp = sw ? &*sw : nullptr;
@@ -593,7 +613,7 @@ static Runner add_continue(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--curve", o->curve,
                  "continue the curve of a special point of the one-parameter branch in (--parameter, --parameter2): "
-                 "LP, BP, HB (equilibrium, modal; modal BP: the symmetry-breaking curve Upsilon_l(sigma) = 0) or LPC, "
+                 "LP, BP, HB (equilibrium, modal, full; modal BP: the symmetry-breaking curve Upsilon_l(sigma) = 0) or LPC, "
                  "PD (orbit); default: none (one-parameter run)")
       ->check(CLI::IsMember({"LP", "BP", "HB", "LPC", "PD"}));
   app.add_option("--parameter2", o->parameter2,

@@ -16,11 +16,13 @@
 #include <random>
 #include <vector>
 
+#include "rbcstab/continuation/branch_point_curve.hpp"
 #include "rbcstab/continuation/branch_switch.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"
 #include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
+#include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/coefficients.hpp"
@@ -331,6 +333,49 @@ TEST(FullEquilibrium, BranchSwitchAtTheL4CrossingHasSigmaPinnedAtItsCriticalValu
     for (int m = 1; m <= 4; ++m) EXPECT_EQ(pt.x.segment(FullEquilibriumProblem::index(4, m), 2).norm(), 0.0);
   }
   EXPECT_GT(run.pr.observe(sw.branch.points.back().x, 0.012).Delta_l[2], 0.05);  // l = 4 takes area
+}
+
+TEST(FullEquilibrium, L4CrossingContinuedInTwoParametersByTheGenericBranchPointCurve) {
+  // The l = 4 BP persists in (C, B) (the Z2 symmetry f_{4,0} -> -f_{4,0} of the unforced mode), so the
+  // generic BP-curve system (branch_point_curve.hpp) over the full problem continues it. Oracle at
+  // every curve point: the closed form's sigma(C, B) equals sigma_4^c(B/C) (1e-9 relative: the curve's
+  // Newton tolerance 1e-12 on C times d(sigma - sigma_4^c)/dC ~ 1e3), mu = 0 and the state is the
+  // closed form (1e-9).
+  const ForcedRun run;
+  const SpecialPoint* bp = nullptr;
+  for (const auto& sp : run.branch.special_points)
+    if (sp.type == SpecialPointType::BP && !bp) bp = &sp;
+  ASSERT_NE(bp, nullptr);
+  Scene scene = run.s;
+  scene.parameters.C = bp->p;
+  const SceneTwoParameterProblem<FullEquilibriumProblem> base(scene, ContinuationParameter::C, ContinuationParameter::B);
+  const BranchPointCurveProblem curve(base, *bp, 1.0);
+  ContinuationOptions o;
+  o.p_min = 0.8;
+  o.p_max = 1.25;
+  o.direction = Direction::both;
+  o.max_step = 0.05;
+  o.detect_bifurcations = false;
+  const Branch c = continue_branch(curve, curve.start(), 1.0, o);
+  ASSERT_EQ(c.status, ContinuationStatus::completed) << c.message;
+  EXPECT_DOUBLE_EQ(c.points.front().p, 0.8);
+  EXPECT_DOUBLE_EQ(c.points.back().p, 1.25);
+  ASSERT_GE(c.points.size(), 5u);
+  const Eigen::Index n = base.dimension();
+  double worst_sigma = 0;
+  for (const BranchPoint& pt : c.points) {
+    const double C = pt.parameters[0], B = pt.p;
+    Scene sB = run.s;
+    sB.parameters.B = B;
+    const Parameters q = with_parameter(sB.parameters, ContinuationParameter::C, C);
+    const ClosedForm cf = closed_form(sB, q);
+    EXPECT_NEAR(cf.sigma, sigma_critical(4, q.alpha()), 1e-9 * std::abs(cf.sigma)) << "B = " << B;
+    worst_sigma = std::max(worst_sigma, std::abs(cf.sigma - sigma_critical(4, q.alpha())) / std::abs(cf.sigma));
+    EXPECT_LT(std::abs(curve.mu(pt.x)), 1e-10);
+    EXPECT_LT(state_error(base.at(B), pt.x.head(n), C, cf), 1e-9) << "B = " << B;
+  }
+  std::printf("l = 4 BP curve in (C, B): %zu points, C from %.6f to %.6f, max relative |sigma - sigma_4^c| %.1e\n",
+              c.points.size(), c.points.front().parameters[0], c.points.back().parameters[0], worst_sigma);
 }
 
 TEST(FullEquilibrium, LongFullSimulationRelaxesOntoTheForcedEquilibrium) {

@@ -19,7 +19,9 @@
 // projection onto real shapes), so every equation is FullModel's (sigma, Upsilon, drive): nothing is
 // re-coded. x.F = 0 identically (area conservation), Newton solves G = F + (|x|^2 - 1) x and stability
 // is DF on x^perp (detail/sphere_constraint.hpp, shared with the reduced and modal problems).
-// DF = R J E with J = M + v w^T FullModel's structured Jacobian.
+// DF = R J E with J = M + v w^T FullModel's structured Jacobian, assembled in O(n^2). The spectrum is
+// block triangular: blocks (l, m) where x = 0 contribute Upsilon_l +- i m/2 exactly, only the blocks
+// holding x go through a dense eigensolver. dF/dp: the engine's central differences.
 //
 // Which equilibria exist: the drive S_{l,m} = C_{l,m} - Gamma3_l/C g_{l,m}(0) e^{i m t/2} is constant
 // only if the stress-free shape has no m != 0 content (beta = 0: axisymmetric about the vorticity
