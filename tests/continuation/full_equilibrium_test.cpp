@@ -444,6 +444,37 @@ TEST(FullEquilibrium, BlockSpectrumEqualsDenseTangentSpectrum) {
   }
 }
 
+TEST(FullEquilibrium, AtTheLargestLTheBranchStillEqualsClosedForm) {
+  // L = max_L (n = 285): a few points from C = 0.08 against the closed form (1e-10) and the spectrum's
+  // inactive blocks (every l >= 4) against Upsilon_l +- i m/2.
+  const Scene s = forced_scene(0.08, FullEquilibriumProblem::max_L, 1e-3);
+  const FullEquilibriumProblem pr(s, ContinuationParameter::C);
+  ASSERT_EQ(pr.dimension(), 285);
+  const NewtonResult start = solve_fixed_parameter(pr, pr.ellipsoidal_state(0.08), 0.08);
+  ASSERT_TRUE(start.converged);
+  ContinuationOptions o;
+  o.p_min = 0.05;
+  o.p_max = 0.08;
+  o.direction = Direction::backward;
+  o.max_points = 4;
+  const Branch b = continue_branch(pr, start.x, 0.08, o);
+  ASSERT_EQ(b.points.size(), 4u) << b.message;
+  for (const BranchPoint& pt : b.points) {
+    const Parameters q = with_parameter(s.parameters, ContinuationParameter::C, pt.p);
+    const ClosedForm c = closed_form(s, q);
+    EXPECT_LT(state_error(pr, pt.x, pt.p, c), 1e-10) << "C = " << pt.p;
+    std::vector<cd> want;
+    for (int m = -16; m <= 16; ++m) want.emplace_back(Upsilon(q, 16, c.sigma), 0.5 * m);
+    std::vector<cd> got;
+    for (Eigen::Index i = 0; i < pt.spectrum.size(); ++i)
+      if (std::abs(pt.spectrum[i].real() - Upsilon(q, 16, c.sigma)) < 1e-6 * std::abs(Upsilon(q, 16, c.sigma)))
+        got.push_back(pt.spectrum[i]);
+    ASSERT_EQ(got.size(), want.size());  // l = 16's 2l + 1 eigenvalues, none else there
+    EXPECT_LT(test::multiset_distance(got, want), 1e-12);
+    EXPECT_TRUE(pt.stable);
+  }
+}
+
 TEST(FullEquilibrium, RotatingForcingAndLargeLAreRejected) {
   Scene s = forced_scene(0.03, 4, 1e-3);
   s.beta = 0.3;  // Delta0 > 0, finite C: g has m != 0 content that rotates
