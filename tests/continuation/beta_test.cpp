@@ -14,6 +14,7 @@
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"
+#include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/orbit.hpp"
@@ -268,6 +269,11 @@ TEST(Beta, EquilibriaEndAtBetaZeroWhenTheRestShapePullsAndAreConstantOtherwise) 
     EXPECT_EQ(mb.status, ContinuationStatus::outside_domain);
     EXPECT_NE(mb.message.find("beta"), std::string::npos) << mb.message;
     ASSERT_EQ(mb.points.size(), 1u);
+    const FullEquilibriumProblem fp(m, ContinuationParameter::beta);
+    const Branch fb = continue_branch(fp, fp.ellipsoidal_state(0.0), 0.0, o);
+    EXPECT_EQ(fb.status, ContinuationStatus::outside_domain);
+    EXPECT_NE(fb.message.find("beta"), std::string::npos) << fb.message;
+    ASSERT_EQ(fb.points.size(), 1u);
     // A forced scene is refused up front, naming beta.
     EXPECT_THROW(ReducedEquilibriumProblem(fig2(1.0, 0.3), ContinuationParameter::beta), InvalidArgument);
     // beta outside [0, pi] names beta.
@@ -286,6 +292,20 @@ TEST(Beta, EquilibriaEndAtBetaZeroWhenTheRestShapePullsAndAreConstantOtherwise) 
     const Branch b = continue_branch(pr, pr.relaxed_state(300), 0.0, o);
     EXPECT_EQ(b.status, ContinuationStatus::completed) << b.message;
     EXPECT_EQ(b.points.back().p, M_PI);
+    if (variant == 1) {
+      // The full level too (C = inf: no rest-shape term at all): every point is the start's closed form
+      // (ellipsoidal_state(p) itself picks w's sign from the rest shape's orientation at p, which
+      // flips at cos^2 beta = 1/3 — immaterial at C = inf, where w -> -w is a symmetry).
+      Scene m = s;
+      m.L = 3;
+      m.model = ModelLevel::automatic;
+      const FullEquilibriumProblem fp(m, ContinuationParameter::beta);
+      const Branch fb = continue_branch(fp, fp.ellipsoidal_state(0.0), 0.0, o);
+      EXPECT_EQ(fb.status, ContinuationStatus::completed) << fb.message;
+      EXPECT_EQ(fb.points.back().p, M_PI);
+      for (const auto& pt : fb.points)
+        EXPECT_LT((pt.x - fp.ellipsoidal_state(0.0)).cwiseAbs().maxCoeff(), 1e-10) << pt.p;
+    }
     // The closed form does not know beta: every point is it (Newton tolerance 1e-12 -> 1e-10).
     const OutOfPlaneEquilibrium c = out_of_plane_equilibrium(s.parameters);
     for (const auto& pt : b.points) {
