@@ -90,7 +90,7 @@ void require_independent(ContinuationParameter p1, ContinuationParameter p2, con
   };
   if (coupled(p1, p2) || coupled(p2, p1))
     throw InvalidArgument(name, name + " = " + to_string(p2) + " is not independent of the first parameter " + to_string(p1) +
-                                    ": choose two of lambda, Delta, Delta0, B, C, or a composite (Lambda, S) with a "
+                                    ": choose two of lambda, Delta, Delta0, B, C, beta, or a composite (Lambda, S) with a "
                                     "parameter it does not depend on");
 }
 
