@@ -1,6 +1,9 @@
 #include "rbcstab/continuation/monodromy.hpp"
 
 #include <cmath>
+#include <limits>
+#include <memory>
+#include <stdexcept>
 
 #include "rbcstab/core/error.hpp"
 
@@ -8,13 +11,89 @@ namespace rbcstab {
 
 void MonodromyOptions::validate() const {
   require(std::isfinite(period) && period > 0, "period", period, "> 0");
-  integrator.validate();
-  if (is_implicit(integrator.stepper))
-    throw InvalidArgument("stepper", "the monodromy action integrates the variational system with an explicit stepper "
-                                     "(rk8pd, rkck, rkf45); got " + to_string(integrator.stepper));
+  require(implicit_from_L >= 0, "implicit_from_L", implicit_from_L, ">= 0 (0: never)");
+  for (const auto* io : {&integrator, &implicit}) {
+    io->validate();
+    if (is_implicit(io->stepper) && io->stepper != Stepper::rosenbrock)
+      throw InvalidArgument("stepper", "stepper = " + to_string(io->stepper) +
+                                           " needs the dense Jacobian of the variational system; the monodromy "
+                                           "action integrates with rosenbrock (block-triangular O(n) solves) or an "
+                                           "explicit stepper (rk8pd, rkck, rkf45, msadams)");
+  }
 }
 
 namespace {
+
+// Linear algebra of the variational system for the Rosenbrock stepper. Its Jacobian is block lower
+// triangular, J_aug = [[J, 0], [K, J]] with K x = d/de [J(y + e x) v] = F''(y)[x, v], so
+// (I - c J_aug) [x1; x2] = [b1; b2] is two structured O(n) solves of the base level:
+//   (I - c J) x1 = b1,   (I - c J) x2 = b2 + c K x1.
+// K is the second derivative of F, symmetric in its two arguments, so K x1 = d/de [J(y + e v) x1]: the
+// two Jacobians J(y +- e v) are formed once per step (linearize) and every stage's K x1 is a central
+// difference of two O(n) products. Likewise dF_aug/dt = (dF/dt, (dJ/dt) v) with
+// (dJ/dt) v = d/de [dF/dt(t, y + e v)], the central difference of the level's analytic dF/dt.
+// Step: |e v| = cbrt(eps) |y| balances the truncation error (e |v| / |y|)^2 ~ 4e-11 against rounding
+// eps / cbrt(eps) ~ 4e-11 (relative to the nonlinear scale |y| of F, whose tension sigma(y) is
+// homogeneous of degree 0 in y up to the drive). That ~1e-10 relative error in K and dJ/dt v only
+// perturbs the matrix W = I - c J_aug and the dF/dt term of the stages: the Rosenbrock step stays
+// consistent (order 1 needs no Jacobian at all) and the order conditions that involve J are violated
+// by O(1e-10 |K|) terms that multiply h^2 f, far below the local error tolerated per step; the tests
+// compare with rk8pd (which uses no Jacobian) to 1e-7.
+class VariationalSolver final : public ShiftedSolver {
+ public:
+  explicit VariationalSolver(const System& base) : base_(base), n_(base.dimension()) {}
+  void linearize(double t, std::span<const double> yv, std::span<double> dfdt) override {
+    const auto y = yv.first(n_), v = yv.subspan(n_, n_);
+    base_.jacobian(t, y, J_, dfdt.first(n_));
+    double ny = 0, nv = 0;
+    for (std::size_t i = 0; i < n_; ++i) {
+      ny += y[i] * y[i];
+      nv += v[i] * v[i];
+    }
+    ny = std::sqrt(ny);
+    nv = std::sqrt(nv);
+    auto dJv_dt = dfdt.subspan(n_, n_);
+    has_K_ = nv > 0;
+    if (!has_K_) {  // v = 0: K = F''[., v] = 0 and (dJ/dt) v = 0
+      std::fill(dJv_dt.begin(), dJv_dt.end(), 0.0);
+      return;
+    }
+    const double e = std::cbrt(std::numeric_limits<double>::epsilon()) * (ny > 0 ? ny : 1.0) / nv;
+    yp_.resize(n_);
+    ym_.resize(n_);
+    dfp_.resize(n_);
+    dfm_.resize(n_);
+    for (std::size_t i = 0; i < n_; ++i) {
+      yp_[i] = y[i] + e * v[i];
+      ym_[i] = y[i] - e * v[i];
+    }
+    base_.jacobian(t, yp_, Jp_, dfp_);
+    base_.jacobian(t, ym_, Jm_, dfm_);
+    inv_2e_ = 1 / (2 * e);
+    for (std::size_t i = 0; i < n_; ++i) dJv_dt[i] = (dfp_[i] - dfm_[i]) * inv_2e_;
+  }
+  bool solve(double c, std::span<const double> b, std::span<double> x) override {
+    const auto x1 = x.first(n_), x2 = x.subspan(n_, n_);
+    if (!J_.solve_shifted(c, b.first(n_), x1)) return false;
+    rhs2_.assign(b.begin() + static_cast<std::ptrdiff_t>(n_), b.end());
+    if (has_K_) {
+      Kp_.resize(n_);
+      Km_.resize(n_);
+      Jp_.apply(x1, Kp_);
+      Jm_.apply(x1, Km_);
+      for (std::size_t i = 0; i < n_; ++i) rhs2_[i] += c * (Kp_[i] - Km_[i]) * inv_2e_;
+    }
+    return J_.solve_shifted(c, rhs2_, x2);
+  }
+
+ private:
+  const System& base_;
+  std::size_t n_;
+  StructuredJacobian J_, Jp_, Jm_;  // J at y and at y +- e v
+  bool has_K_ = false;
+  double inv_2e_ = 0;
+  std::vector<double> yp_, ym_, dfp_, dfm_, Kp_, Km_, rhs2_;
+};
 
 // (y, v)' = (F(t, y), J(t, y) v): the state and one tangent vector.
 class VariationalSystem final : public System {
@@ -31,8 +110,12 @@ class VariationalSystem final : public System {
     J_.apply(yv.subspan(n_, n_), d.subspan(n_, n_));
   }
   void jacobian(double, std::span<const double>, StructuredJacobian&, std::span<double>) const override {
-    // Unreachable: MonodromyOptions::validate admits explicit steppers only.
+    // Unreachable: J_aug is not of the form M + v w^T; rosenbrock uses make_shifted_solver() and
+    // MonodromyOptions::validate rejects the dense implicit steppers.
     throw std::logic_error("VariationalSystem has no structured Jacobian");
+  }
+  std::unique_ptr<ShiftedSolver> make_shifted_solver() const override {
+    return std::make_unique<VariationalSolver>(base_);
   }
   Observation observe(double t, std::span<const double> yv) const override { return base_.observe(t, yv.first(n_)); }
   std::vector<double> initial_state() const override { return {}; }
@@ -48,6 +131,10 @@ class VariationalSystem final : public System {
 };
 
 }  // namespace
+
+std::unique_ptr<System> make_variational_system(const System& base) {
+  return std::make_unique<VariationalSystem>(base);
+}
 
 MonodromyAction::MonodromyAction(const System& system, std::span<const double> y0, double t0,
                                  const MonodromyOptions& options)
@@ -68,12 +155,13 @@ bool MonodromyAction::apply(std::span<const double> v, std::span<double> out) co
   std::vector<double> yv(2 * n);
   std::copy(y0_.begin(), y0_.end(), yv.begin());
   for (std::size_t i = 0; i < n; ++i) yv[n + i] = v[i] / norm;
-  const VariationalSystem sys(system_);
+  const VariationalSystem sys(system_);  // per call: its scratch is not shared between threads
   const double grid[1] = {t0_ + options_.period};
-  const IntegrationResult r = integrate(sys, yv, t0_, grid, options_.integrator, {});
+  const IntegrationResult r = integrate(sys, yv, t0_, grid, options_.integrator_for(system_.L()), {});
   counters_.steps += r.counters.steps;
   counters_.failed_steps += r.counters.failed_steps;
   counters_.rhs_evaluations += r.counters.rhs_evaluations;
+  counters_.jacobian_evaluations += r.counters.jacobian_evaluations;
   if (r.status != IntegrationStatus::success) {
     failure_ = "variational integration failed at t = " + std::to_string(r.t_reached) + ": " + r.reason;
     return false;

@@ -6,6 +6,7 @@
 // The orbit itself is an input (the periodic-orbit solver or a long simulation sampled at t0 + kT).
 #include <Eigen/Dense>
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -18,11 +19,28 @@ namespace rbcstab {
 
 struct MonodromyOptions {
   double period = 6.283185307179586;  // T: the forcing period 2 pi of the in-plane scenes
-  // Explicit steppers only (the augmented (y, v) system has no structured Jacobian). Tight
-  // tolerances: the multipliers are only as accurate as each column of Phi.
+  // Below implicit_from_L: rk8pd (explicit), or any stepper but GSL's dense implicit ones (msbdf,
+  // bsimp, rk4imp: the variational system has no dense Jacobian); rosenbrock solves its block-
+  // triangular Jacobian by two O(n) structured solves per stage. Tight tolerances: the multipliers
+  // are only as accurate as each column of Phi (rk8pd is stability-bound here, ~1e-13 per action).
   IntegratorOptions integrator = {Stepper::rk8pd, 1e-11, 1e-13};
+  // Systems with L >= implicit_from_L integrate with `implicit` instead (0: never). The full model is
+  // stiff (Upsilon_l ~ -l^3): rk8pd's steps grow like |Upsilon_L| (1400 at L = 30, 11000 at L = 60)
+  // while rosenbrock's are set by accuracy alone (~5600 at rtol 1e-10, any L); measured cross-over at
+  // equal action error (~1e-11) near L = 40 (docs/benchmarks.md, BM_FloquetAction).
+  int implicit_from_L = 40;
+  IntegratorOptions implicit = {Stepper::rosenbrock, 1e-10, 1e-12};
+  // The integrator options used for a system truncated at L.
+  const IntegratorOptions& integrator_for(int L) const {
+    return implicit_from_L > 0 && L >= implicit_from_L ? implicit : integrator;
+  }
   void validate() const;  // throws InvalidArgument naming the field
 };
+
+// The variational system (y, v)' = (F(t, y), J(t, y) v) of `base` (kept by reference), dimension 2n.
+// Its make_shifted_solver() gives the exact block-triangular solve used by the rosenbrock stepper;
+// jacobian() throws logic_error (J_aug is not of the form M + v w^T).
+std::unique_ptr<System> make_variational_system(const System& base);
 
 class MonodromyAction {
  public:
