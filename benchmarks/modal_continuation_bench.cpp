@@ -11,44 +11,13 @@
 #include "rbcstab/continuation/complementarity.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "continuation/modal_fixtures.hpp"
 
 namespace rbcstab {
 namespace {
 
-Scene modal_scene() {
-  Scene s;
-  s.beta = 0;
-  s.parameters.lambda = 1;
-  s.parameters.B = 1;
-  s.parameters.Delta = 1;
-  s.parameters.Delta0 = 0.01;
-  s.parameters.C = 0.08;
-  s.L = 10;
-  return s;
-}
-
-// The closed-form threshold of mode l in C: sigma_eq(C) = sigma_l^c(B/C), by bisection.
-double threshold(const Parameters& p0, int l, double lo, double hi) {
-  auto g = [&](double C) {
-    const Parameters q = with_parameter(p0, ContinuationParameter::C, C);
-    return out_of_plane_equilibrium(q).sigma_R - sigma_critical(l, q.alpha());
-  };
-  double glo = g(lo);
-  for (int it = 0; it < 200 && hi - lo > 1e-16; ++it) {
-    const double mid = 0.5 * (lo + hi);
-    const double gm = g(mid);
-    if ((gm > 0) == (glo > 0)) lo = mid, glo = gm;
-    else hi = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
-// Post-instability closed form with surviving mode l: Delta_2 at sigma = sigma_l^c.
-double post_Delta2(const Parameters& q, int l) {
-  const double Y2 = Upsilon(q, 2, sigma_critical(l, q.alpha()));
-  const double L = q.Lambda(), w = -q.inv_Lambda_S() / Y2;
-  return q.Delta * (1 / (L * L * (1 + Y2 * Y2)) + w * w);
-}
+// The test suite's scene and closed forms (tests/continuation/modal_fixtures.hpp) at L = 10.
+Scene modal_scene() { return modal_fixtures::scene(0.08, 10); }
 
 void BM_ModalEllipsoidalBranchAndBPs(benchmark::State& state) {
   const Scene s = modal_scene();
@@ -68,7 +37,7 @@ void BM_ModalEllipsoidalBranchAndBPs(benchmark::State& state) {
       if (sp.type != SpecialPointType::BP) continue;
       ++bps;
       const int l = critical_mode(pr, sp.x, sp.p);
-      err = std::max(err, std::abs(sp.p - threshold(s.parameters, l, sp.p_lo - 1e-3, sp.p_hi + 1e-3)));
+      err = std::max(err, std::abs(sp.p - modal_fixtures::threshold_root(s.parameters, ContinuationParameter::C, l, sp.p_lo - 1e-3, sp.p_hi + 1e-3)));
     }
     state.ResumeTiming();
   }
@@ -104,7 +73,7 @@ void BM_ModalBranchSwitch(benchmark::State& state) {
     state.PauseTiming();
     for (const auto& pt : sw.branch.points) {
       const Parameters q = with_parameter(s.parameters, ContinuationParameter::C, pt.p);
-      err = std::max(err, std::abs(pr.observe(pt.x, pt.p).Delta_l[0] - post_Delta2(q, l)));
+      err = std::max(err, std::abs(pr.observe(pt.x, pt.p).Delta_l[0] - modal_fixtures::exact_post_state(q, l).Delta2));
     }
     state.ResumeTiming();
   }
@@ -125,7 +94,7 @@ void BM_IpoptSurvivingModes(benchmark::State& state) {
     iterations = r.iterations;
     l = r.surviving.empty() ? 2 : r.surviving.front();
     state.PauseTiming();
-    err = l == 2 ? std::abs(r.Delta_l[0] - s.parameters.Delta) : std::abs(r.Delta_l[0] - post_Delta2(s.parameters, l));
+    err = l == 2 ? std::abs(r.Delta_l[0] - s.parameters.Delta) : std::abs(r.Delta_l[0] - modal_fixtures::exact_post_state(s.parameters, l).Delta2);
     state.ResumeTiming();
   }
   state.counters["ipopt_iterations"] = iterations;

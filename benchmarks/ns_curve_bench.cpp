@@ -1,4 +1,4 @@
-// NS curve of a forced orbit with a closed-form answer (the Focus system of ns_curve_test.cpp):
+// NS curve of a forced orbit with a closed-form answer (the focus case of ns_curve_test.cpp's Forced3):
 // continuation over p2 in [-0.8, 0.8] both ways; work (points, Newton iterations, integrations) and
 // error (max |p1 - p2^2|, max |kappa - cos 2 pi omega|) in counters, for N shooting segments.
 #include <benchmark/benchmark.h>
@@ -8,56 +8,22 @@
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/ns_curve.hpp"
+#include "continuation/ns_fixtures.hpp"
 
 namespace {
 
 using namespace rbcstab;
-constexpr double kOmega = 0.3, kC = 0.7;
-
-// x' = A e + xp' + c |e|^2 e_1, e = x - xp, A = [[a, -omega, 0], [omega, a, 0], [0, 0, -1]], a = p1 - p2^2.
-class Focus final : public ForcedSystem2 {
- public:
-  Eigen::Index dimension() const override { return 3; }
-  static Eigen::Matrix3d A(double p1, double p2) {
-    const double a = p1 - p2 * p2;
-    Eigen::Matrix3d M;
-    M << a, -kOmega, 0, kOmega, a, 0, 0, 0, -1;
-    return M;
-  }
-  static Eigen::Vector3d xp(double t, double p1, double p2) {
-    return {std::cos(t) + p1 * std::sin(2 * t), std::sin(t) + p2 * std::cos(2 * t), 0.5 * std::sin(t)};
-  }
-  static Eigen::Vector3d xp_dot(double t, double p1, double p2) {
-    return {-std::sin(t) + 2 * p1 * std::cos(2 * t), std::cos(t) - 2 * p2 * std::sin(2 * t), 0.5 * std::cos(t)};
-  }
-  void rhs(double t, std::span<const double> x, double p1, double p2, std::span<double> f) const override {
-    const Eigen::Vector3d e = Eigen::Vector3d(x[0], x[1], x[2]) - xp(t, p1, p2);
-    const Eigen::Vector3d F = A(p1, p2) * e + xp_dot(t, p1, p2) + Eigen::Vector3d(kC * e.squaredNorm(), 0, 0);
-    for (int i = 0; i < 3; ++i) f[static_cast<std::size_t>(i)] = F[i];
-  }
-  void jacobian(double t, std::span<const double> x, double p1, double p2, Eigen::MatrixXd& J) const override {
-    const Eigen::Vector3d e = Eigen::Vector3d(x[0], x[1], x[2]) - xp(t, p1, p2);
-    J = A(p1, p2);
-    J.row(0) += 2 * kC * e.transpose();
-  }
-  void parameter_derivative(double t, std::span<const double> x, double p1, double p2,
-                            std::span<double> fp) const override {
-    const Eigen::Vector3d e = Eigen::Vector3d(x[0], x[1], x[2]) - xp(t, p1, p2);
-    const Eigen::Vector3d dxp(std::sin(2 * t), 0, 0), dxp_dot(2 * std::cos(2 * t), 0, 0);
-    const Eigen::Vector3d F =
-        Eigen::Vector3d(e[0], e[1], 0) - A(p1, p2) * dxp + dxp_dot - Eigen::Vector3d(2 * kC * e.dot(dxp), 0, 0);
-    for (int i = 0; i < 3; ++i) fp[static_cast<std::size_t>(i)] = F[i];
-  }
-};
+constexpr double kOmega = 0.3;
+using ns_fixtures::Forced3;
 
 void BM_NeimarkSackerCurve(benchmark::State& state) {
-  const Focus sys;
+  const Forced3 sys(-kOmega * kOmega);  // multipliers e^{2 pi (p1 - p2^2 +- i omega)}, e^{-2 pi}
   OrbitOptions oo;
   oo.segments = static_cast<int>(state.range(0));
   const double p2 = 0.4, p1 = p2 * p2 - 0.1;
   const ForcedSlice slice(sys, p2);
   const PeriodicOrbitProblem pr(slice, oo);
-  const NewtonResult nr = solve_fixed_parameter(pr, pr.shooting_guess(Focus::xp(0, p1, p2), p1), p1);
+  const NewtonResult nr = solve_fixed_parameter(pr, pr.shooting_guess(Forced3::xp(0, p1, p2), p1), p1);
   ContinuationOptions o;
   o.p_max = p2 * p2 + 0.1;
   o.max_step = 0.05;

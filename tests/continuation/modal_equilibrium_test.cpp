@@ -25,22 +25,6 @@ namespace rbcstab {
 namespace {
 using namespace modal_fixtures;
 
-// sigma at the exact ellipsoidal equilibrium minus sigma_l^c: the asymptotic criterion mu_l = 0
-// of trace.hpp (analysis/steady_states closed form); its root in C by bisection to the last bit.
-double threshold_margin(const Parameters& p, int l) {
-  return out_of_plane_equilibrium(p).sigma_R - sigma_critical(l, p.alpha());
-}
-double threshold_root(Parameters p, ContinuationParameter q, int l, double lo, double hi) {
-  double glo = threshold_margin(with_parameter(p, q, lo), l);
-  for (int it = 0; it < 200 && hi - lo > 1e-15 * std::abs(hi); ++it) {
-    const double mid = 0.5 * (lo + hi);
-    const double g = threshold_margin(with_parameter(p, q, mid), l);
-    if ((g > 0) == (glo > 0)) lo = mid, glo = g;
-    else hi = mid;
-  }
-  return 0.5 * (lo + hi);
-}
-
 TEST(ModalEquilibrium, EquationsMatchModalModelRhs) {
   // sigma and every derivative at random states (off the sphere too) against ModalModel::rhs after
   // the change of coordinates; 1e-12 relative: both are O(10) sums of O(100) terms in double.

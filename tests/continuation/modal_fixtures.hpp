@@ -2,6 +2,8 @@
 // Shared scenes and closed forms of the modal-equilibrium tests.
 #include <cmath>
 
+#include "rbcstab/analysis/steady_states.hpp"
+#include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/scene.hpp"
 
@@ -35,6 +37,22 @@ inline PostState exact_post_state(const Parameters& q, int l) {
   const double w = -q.inv_Lambda_S() / Y2;
   const double Delta2 = q.Delta * (z2 + w * w);
   return {sigma, Delta2, q.Delta - Delta2};
+}
+
+// sigma at the exact ellipsoidal equilibrium minus sigma_l^c: the asymptotic criterion mu_l = 0
+// of trace.hpp (analysis/steady_states closed form); its root in C by bisection to the last bit.
+inline double threshold_margin(const Parameters& p, int l) {
+  return out_of_plane_equilibrium(p).sigma_R - sigma_critical(l, p.alpha());
+}
+inline double threshold_root(Parameters p, ContinuationParameter q, int l, double lo, double hi) {
+  double glo = threshold_margin(with_parameter(p, q, lo), l);
+  for (int it = 0; it < 200 && hi - lo > 1e-15 * std::abs(hi); ++it) {
+    const double mid = 0.5 * (lo + hi);
+    const double g = threshold_margin(with_parameter(p, q, mid), l);
+    if ((g > 0) == (glo > 0)) lo = mid, glo = g;
+    else hi = mid;
+  }
+  return 0.5 * (lo + hi);
 }
 
 }  // namespace rbcstab::modal_fixtures

@@ -1,7 +1,6 @@
 #include "rbcstab/continuation/hopf_curve.hpp"
 
 #include <cmath>
-#include <limits>
 
 #include <Eigen/Eigenvalues>
 
@@ -26,33 +25,15 @@ HopfCurveProblem::HopfCurveProblem(const TwoParameterProblem& base, const Specia
   start_.resize(n + 2);
   start_ << hb.x, hb.p, omega * omega;
 
-  // Choose the two entries of G whose equations, with F = 0, give the best-conditioned Jacobian in
-  // (x, p1, kappa) at the start (central differences; the choice only needs to be regular).
-  const std::array<std::array<int, 4>, 6> pairs = {{{0, 0, 1, 1}, {0, 0, 0, 1}, {0, 0, 1, 0},
-                                                     {0, 1, 1, 0}, {0, 1, 1, 1}, {1, 0, 1, 1}}};
-  double best = -1;
-  std::array<int, 4> chosen = entries_;
-  for (const auto& e : pairs) {
-    entries_ = e;  // residual() reads the pair under trial
-    Eigen::MatrixXd Jx(n + 2, n + 2);
-    Eigen::VectorXd Rp, Rm, X = start_;
-    for (Eigen::Index j = 0; j < n + 2; ++j) {
-      const double h = std::cbrt(std::numeric_limits<double>::epsilon()) * (1 + std::abs(X[j]));
-      X[j] = start_[j] + h;
-      residual(X, p2, Rp);
-      X[j] = start_[j] - h;
-      residual(X, p2, Rm);
-      X[j] = start_[j];
-      Jx.col(j) = (Rp - Rm) / (2 * h);
-    }
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(Jx);
-    const double s = svd.singularValues()(n + 1) / svd.singularValues()(0);  // inverse condition number
-    if (s > best) {
-      best = s;
-      chosen = e;
-    }
-  }
-  entries_ = chosen;
+  // Two of the four entries of G, chosen at the start: the pair that, under the rows
+  // [dF/dx, dF/dp1, 0], gives the best-conditioned Jacobian in (x, p1, kappa).
+  Eigen::MatrixXd Jx = Eigen::MatrixXd::Zero(n + 2, n + 2);
+  Eigen::VectorXd Fp;
+  base.parameter_derivative(hb.x, hb.p, p2, Fp);
+  Jx.topLeftCorner(n, n) = J;
+  Jx.col(n).head(n) = Fp;
+  entries_ = detail::best_conditioned_entries(
+      Jx, detail::g_entry_derivatives(start_, [&](const Eigen::VectorXd& Z) { return G(Z.head(n), Z[n], Z[n + 1], p2); }));
 }
 
 Eigen::Matrix2d HopfCurveProblem::G(const Eigen::VectorXd& x, double p1, double kappa, double p2) const {
@@ -68,11 +49,7 @@ void HopfCurveProblem::residual(const Eigen::VectorXd& X, double p2, Eigen::Vect
   const Eigen::VectorXd x = X.head(n);
   Eigen::VectorXd F(n);
   base_.residual(x, X[n], p2, F);
-  const Eigen::Matrix2d g = G(x, X[n], X[n + 1], p2);
-  R.resize(n + 2);
-  R.head(n) = F;
-  R[n] = g(entries_[0], entries_[1]);
-  R[n + 1] = g(entries_[2], entries_[3]);
+  detail::rank_two_residual(F, G(x, X[n], X[n + 1], p2), entries_, R);
 }
 
 Eigen::VectorXcd HopfCurveProblem::spectrum(const Eigen::VectorXd& X, double p2) const {

@@ -1,9 +1,6 @@
 #include "rbcstab/continuation/ns_curve.hpp"
 
 #include <cmath>
-#include <limits>
-
-#include <Eigen/SVD>
 
 #include "rbcstab/continuation/detail/minimal_augmentation.hpp"
 #include "rbcstab/core/error.hpp"
@@ -35,25 +32,10 @@ NeimarkSackerCurveProblem::NeimarkSackerCurveProblem(const ForcedSystem2& system
   start_.resize(m_ + 2);
   start_ << ns.x, ns.p, kappa;
 
-  // Two of the four entries of G: the pair whose equations, with F = 0, give the best-conditioned
-  // (m + 2) x (m + 2) Jacobian in (X, p1, kappa) at the start (the choice only needs to be regular;
-  // one difference sweep serves all six pairs).
+  // Two of the four entries of G, chosen at the start (one difference sweep serves all six pairs).
   Eigen::MatrixXd J;
-  shooting_rows(start_, p2, J);  // rows m, m + 1 filled below for each pair
-  const Eigen::MatrixXd dG = g_derivatives(start_, p2);
-  const std::array<std::array<int, 4>, 6> pairs = {{{0, 0, 1, 1}, {0, 0, 0, 1}, {0, 0, 1, 0},
-                                                     {0, 1, 1, 0}, {0, 1, 1, 1}, {1, 0, 1, 1}}};
-  double best = -1;
-  for (const auto& e : pairs) {
-    J.row(m_) = dG.row(2 * e[0] + e[1]);
-    J.row(m_ + 1) = dG.row(2 * e[2] + e[3]);
-    const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J);
-    const double s = svd.singularValues()(m_ + 1) / svd.singularValues()(0);  // inverse condition number
-    if (s > best) {
-      best = s;
-      entries_ = e;
-    }
-  }
+  shooting_rows(start_, p2, J);
+  entries_ = detail::best_conditioned_entries(J, g_derivatives(start_, p2));
 }
 
 void NeimarkSackerCurveProblem::at(double p2) const {
@@ -79,30 +61,12 @@ void NeimarkSackerCurveProblem::residual(const Eigen::VectorXd& X, double p2, Ei
   Eigen::VectorXd F(m_);
   at(p2);
   orbit_.residual(x, X[m_], F);
-  const Eigen::Matrix2d g = test_functions(x, X[m_], X[m_ + 1], p2);
-  R.resize(m_ + 2);
-  R.head(m_) = F;
-  R[m_] = g(entries_[0], entries_[1]);
-  R[m_ + 1] = g(entries_[2], entries_[3]);
+  detail::rank_two_residual(F, test_functions(x, X[m_], X[m_ + 1], p2), entries_, R);
 }
 
 Eigen::MatrixXd NeimarkSackerCurveProblem::g_derivatives(const Eigen::VectorXd& X, double p2) const {
-  Eigen::MatrixXd D(4, m_ + 2);
-  Eigen::VectorXd Y = X;
-  const auto g = [&](const Eigen::VectorXd& Z) {
-    const Eigen::Matrix2d G = test_functions(Z.head(m_), Z[m_], Z[m_ + 1], p2);
-    return Eigen::Vector4d(G(0, 0), G(0, 1), G(1, 0), G(1, 1));
-  };
-  for (Eigen::Index j = 0; j < m_ + 2; ++j) {
-    const double h = std::cbrt(std::numeric_limits<double>::epsilon()) * (1 + std::abs(X[j]));
-    Y[j] = X[j] + h;
-    const Eigen::Vector4d gp = g(Y);
-    Y[j] = X[j] - h;
-    const Eigen::Vector4d gm = g(Y);
-    Y[j] = X[j];
-    D.col(j) = (gp - gm) / (2 * h);
-  }
-  return D;
+  return detail::g_entry_derivatives(
+      X, [&](const Eigen::VectorXd& Z) { return test_functions(Z.head(m_), Z[m_], Z[m_ + 1], p2); });
 }
 
 void NeimarkSackerCurveProblem::shooting_rows(const Eigen::VectorXd& X, double p2, Eigen::MatrixXd& J) const {
@@ -120,9 +84,7 @@ void NeimarkSackerCurveProblem::shooting_rows(const Eigen::VectorXd& X, double p
 void NeimarkSackerCurveProblem::jacobian(const Eigen::VectorXd& X, double p2, Eigen::MatrixXd& J) const {
   require(X.size() == m_ + 2, "X", static_cast<double>(X.size()), "(shooting unknowns, p1, kappa)");
   shooting_rows(X, p2, J);
-  const Eigen::MatrixXd dG = g_derivatives(X, p2);
-  J.row(m_) = dG.row(2 * entries_[0] + entries_[1]);
-  J.row(m_ + 1) = dG.row(2 * entries_[2] + entries_[3]);
+  detail::set_g_rows(J, g_derivatives(X, p2), entries_);
 }
 
 Eigen::VectorXcd NeimarkSackerCurveProblem::spectrum(const Eigen::VectorXd& X, double p2) const {
