@@ -169,13 +169,18 @@ TEST(FloquetImplicit, ActionAtL30MatchesExactMonodromyAndConservesArea) {
   (void)gTn;
 }
 
-TEST(FloquetImplicit, OptionsChooseTheStepperByL) {
+TEST(FloquetImplicit, OptionsChooseTheStepperByLevelAndL) {
   const MonodromyOptions mo;
-  EXPECT_EQ(mo.integrator_for(30).stepper, Stepper::rk8pd);
-  EXPECT_EQ(mo.integrator_for(mo.implicit_from_L).stepper, Stepper::rosenbrock);
+  auto model = [](int L, ModelLevel level) {
+    const Scene s = test::ellipsoidal_scene(L, std::numbers::pi / 2);
+    return make_system(s.parameters, initial_state(s), level);
+  };
+  EXPECT_EQ(mo.integrator_for(*model(mo.implicit_from_L - 1, ModelLevel::full)).stepper, Stepper::rk8pd);
+  EXPECT_EQ(mo.integrator_for(*model(mo.implicit_from_L, ModelLevel::full)).stepper, Stepper::rosenbrock);
+  EXPECT_EQ(mo.integrator_for(*model(mo.implicit_from_L, ModelLevel::modal)).stepper, Stepper::rk8pd);
   MonodromyOptions never = mo;
   never.implicit_from_L = 0;
-  EXPECT_EQ(never.integrator_for(60).stepper, Stepper::rk8pd);
+  EXPECT_EQ(never.integrator_for(*model(60, ModelLevel::full)).stepper, Stepper::rk8pd);
   MonodromyOptions bad = mo;
   bad.implicit.stepper = Stepper::msbdf;
   try {

@@ -20,7 +20,7 @@ TEST(FloquetSlow, LeadingMultipliersAtL60MatchClosedForm) {
   ASSERT_TRUE(o.ok);
   const FullModel full(o.p, o.init);
   MonodromyOptions mo;
-  ASSERT_EQ(mo.integrator_for(L).stepper, Stepper::rosenbrock);
+  ASSERT_EQ(mo.integrator_for(full).stepper, Stepper::rosenbrock);
   mo.implicit.rtol = 1e-8;
   mo.implicit.atol = 1e-10;
   ArpackOptions ao;

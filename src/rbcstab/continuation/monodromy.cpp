@@ -157,7 +157,7 @@ bool MonodromyAction::apply(std::span<const double> v, std::span<double> out) co
   for (std::size_t i = 0; i < n; ++i) yv[n + i] = v[i] / norm;
   const VariationalSystem sys(system_);  // per call: its scratch is not shared between threads
   const double grid[1] = {t0_ + options_.period};
-  const IntegrationResult r = integrate(sys, yv, t0_, grid, options_.integrator_for(system_.L()), {});
+  const IntegrationResult r = integrate(sys, yv, t0_, grid, options_.integrator_for(system_), {});
   counters_.steps += r.counters.steps;
   counters_.failed_steps += r.counters.failed_steps;
   counters_.rhs_evaluations += r.counters.rhs_evaluations;

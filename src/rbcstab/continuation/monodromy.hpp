@@ -24,15 +24,17 @@ struct MonodromyOptions {
   // triangular Jacobian by two O(n) structured solves per stage. Tight tolerances: the multipliers
   // are only as accurate as each column of Phi (rk8pd is stability-bound here, ~1e-13 per action).
   IntegratorOptions integrator = {Stepper::rk8pd, 1e-11, 1e-13};
-  // Systems with L >= implicit_from_L integrate with `implicit` instead (0: never). The full model is
-  // stiff (Upsilon_l ~ -l^3): rk8pd's steps grow like |Upsilon_L| (1400 at L = 30, 11000 at L = 60)
-  // while rosenbrock's are set by accuracy alone (~5600 at rtol 1e-10, any L); measured cross-over at
-  // equal action error (~1e-11) near L = 40 (docs/benchmarks.md, BM_FloquetAction).
+  // The full level with L >= implicit_from_L integrates with `implicit` instead (0: never). Its
+  // diagonal carries Upsilon_l ~ -l^3: rk8pd's steps grow like |Upsilon_L| (1400 at L = 30, 11000 at
+  // L = 60) while rosenbrock's are set by accuracy alone (~5600 at rtol 1e-10, any L); measured
+  // cross-over at equal cost near L = 40 (docs/benchmarks.md, BM_FloquetAction). The modal and reduced
+  // levels hold no l >= 3 amplitudes to be stiff in and keep `integrator`.
   int implicit_from_L = 40;
   IntegratorOptions implicit = {Stepper::rosenbrock, 1e-10, 1e-12};
-  // The integrator options used for a system truncated at L.
-  const IntegratorOptions& integrator_for(int L) const {
-    return implicit_from_L > 0 && L >= implicit_from_L ? implicit : integrator;
+  // The integrator options used for the variational system of `system`.
+  const IntegratorOptions& integrator_for(const System& system) const {
+    const bool stiff = system.level() == ModelLevel::full && implicit_from_L > 0 && system.L() >= implicit_from_L;
+    return stiff ? implicit : integrator;
   }
   void validate() const;  // throws InvalidArgument naming the field
 };
