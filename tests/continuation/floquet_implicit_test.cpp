@@ -16,6 +16,8 @@
 namespace rbcstab {
 namespace {
 
+std::size_t full_dimension(int L) { return 2 * ModeAmplitudes::count(L); }
+
 double rel_error(std::span<const double> a, std::span<const double> b) {
   double d = 0, n = 0;
   for (std::size_t i = 0; i < a.size(); ++i) {
@@ -193,6 +195,37 @@ TEST(FloquetImplicit, OptionsChooseTheStepperByLevelAndL) {
   bad = mo;
   bad.implicit_from_L = -1;
   EXPECT_THROW(bad.validate(), InvalidArgument);
+}
+
+// The scene-level entry point (relax at the scene's own level, embed in the full model, ARPACK): for
+// the in-plane ellipsoidal scene it must reproduce the exact multipliers of the same relaxed orbit
+// (1e-7 as above; rk8pd at L = 6).
+TEST(SceneFloquet, InPlaneSceneMatchesExactMultipliers) {
+  const int L = 6;
+  const Scene s = test::ellipsoidal_scene(L, std::numbers::pi / 2);
+  const SceneFloquetResult r = scene_floquet_multipliers(s, {});
+  ASSERT_EQ(r.status, SceneFloquetStatus::converged) << r.message;
+  EXPECT_DOUBLE_EQ(r.period, test::kTwoPi);  // in-plane rest shape: only even m
+  EXPECT_DOUBLE_EQ(r.t0, 30 * test::kTwoPi);
+  EXPECT_EQ(r.dimension, full_dimension(L));
+  EXPECT_EQ(r.stepper, Stepper::rk8pd);
+  EXPECT_LT(r.periodicity_defect, 1e-6);  // 30 periods relax onto the attracting orbit
+  const auto exact = test::exact_in_plane_monodromy(test::in_plane_orbit(L), L).multipliers();
+  const auto& e = r.floquet.arpack.eigenvalues;
+  ASSERT_EQ(e.size(), 12);
+  EXPECT_LT(test::multiset_distance({e.data(), e.data() + e.size()}, exact), 1e-7);
+}
+
+TEST(SceneFloquet, OddMRestShapeDoublesThePeriodAndBadInputIsRefused) {
+  Scene s = test::ellipsoidal_scene(3, 1.0);  // tilted rest shape: g_{2,+-1} != 0, period 4 pi
+  SceneFloquetOptions o;
+  o.relax_periods = 0;
+  o.arpack.k = 4;
+  const SceneFloquetResult r = scene_floquet_multipliers(s, o);
+  ASSERT_EQ(r.status, SceneFloquetStatus::converged) << r.message;
+  EXPECT_DOUBLE_EQ(r.period, 2 * test::kTwoPi);
+  o.relax_periods = -1;
+  EXPECT_THROW(scene_floquet_multipliers(s, o), InvalidArgument);
 }
 
 }  // namespace

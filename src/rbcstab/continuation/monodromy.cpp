@@ -1,11 +1,13 @@
 #include "rbcstab/continuation/monodromy.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <memory>
 #include <stdexcept>
 
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/model/levels.hpp"
 
 namespace rbcstab {
 
@@ -202,6 +204,77 @@ FloquetResult leading_floquet_multipliers(const System& system, std::span<const 
   }
   out.integrations = action.applications();
   out.counters = action.counters();
+  return out;
+}
+
+void SceneFloquetOptions::validate() const {
+  require(relax_periods >= 0 && relax_periods <= 1000000, "relax_periods", relax_periods, "in [0, 1e6]");
+  relax.validate();
+  monodromy.validate();
+}
+
+std::string to_string(SceneFloquetStatus s) {
+  switch (s) {
+    case SceneFloquetStatus::converged: return "converged";
+    case SceneFloquetStatus::relaxation_failed: return "relaxation_failed";
+    case SceneFloquetStatus::arpack_failed: return "arpack_failed";
+  }
+  return "arpack_failed";
+}
+
+SceneFloquetResult scene_floquet_multipliers(const Scene& scene, const SceneFloquetOptions& options) {
+  options.validate();
+  const InitialState init = initial_state(scene);  // validates the scene
+  SceneFloquetResult out;
+  // Odd-m rest-shape content below 1e-12 of the largest is rounding (the Wigner d^l_{m,0}(pi/2) of odd
+  // m are ~1e-16, not 0): its 4 pi forcing is far below the integration accuracy.
+  double g_max = 0, g_odd = 0;
+  for (int l = 2; l <= init.g.L; ++l)
+    for (int m = -l; m <= l; ++m) {
+      g_max = std::max(g_max, std::abs(init.g.at(l, m)));
+      if (m % 2 != 0) g_odd = std::max(g_odd, std::abs(init.g.at(l, m)));
+    }
+  const bool odd_m = g_odd > 1e-12 * g_max;
+  out.period = (odd_m ? 2 : 1) * 2 * M_PI;
+  out.t0 = options.relax_periods * out.period;
+  out.relax_level = choose_level(scene, init).level;
+  const auto relaxing = make_system(scene.parameters, init, out.relax_level);
+  InitialState relaxed = init;
+  if (options.relax_periods > 0) {
+    const double grid[1] = {out.t0};
+    const IntegrationResult r = integrate(*relaxing, relaxing->initial_state(), 0.0, grid, options.relax, {});
+    if (r.status != IntegrationStatus::success) {
+      out.status = SceneFloquetStatus::relaxation_failed;
+      out.message = "relaxation at the " + to_string(out.relax_level) + " level failed at t = " +
+                    std::to_string(r.t_reached) + ": " + r.reason;
+      return out;
+    }
+    relaxed.f = relaxing->amplitudes(out.t0, r.y);
+  }
+  const FullModel full(scene.parameters, relaxed);
+  const std::vector<double> y0 = full.initial_state();
+  out.dimension = y0.size();
+  MonodromyOptions mo = options.monodromy;
+  mo.period = out.period;
+  out.stepper = mo.integrator_for(full).stepper;
+  const double grid[1] = {out.t0 + out.period};
+  const IntegrationResult once = integrate(full, y0, out.t0, grid, mo.integrator_for(full), {});
+  if (once.status != IntegrationStatus::success) {
+    out.status = SceneFloquetStatus::relaxation_failed;
+    out.message = "one period of the full model failed at t = " + std::to_string(once.t_reached) + ": " + once.reason;
+    return out;
+  }
+  double d = 0, n = 0;
+  for (std::size_t i = 0; i < y0.size(); ++i) {
+    d += (once.y[i] - y0[i]) * (once.y[i] - y0[i]);
+    n += y0[i] * y0[i];
+  }
+  out.periodicity_defect = n > 0 ? std::sqrt(d / n) : std::sqrt(d);
+  out.floquet = leading_floquet_multipliers(full, y0, out.t0, mo, options.arpack);
+  if (out.floquet.arpack.status != ArpackStatus::converged) {
+    out.status = SceneFloquetStatus::arpack_failed;
+    out.message = out.floquet.arpack.message;
+  }
   return out;
 }
 

@@ -13,6 +13,7 @@
 
 #include "rbcstab/continuation/eigen_arpack.hpp"
 #include "rbcstab/integrate/integrator.hpp"
+#include "rbcstab/model/scene.hpp"
 #include "rbcstab/model/system.hpp"
 
 namespace rbcstab {
@@ -79,5 +80,41 @@ struct FloquetResult {
 // arpack.which is forced to largest_magnitude. A failed integration gives status failed with the reason.
 FloquetResult leading_floquet_multipliers(const System& system, std::span<const double> y0, double t0,
                                           const MonodromyOptions& options, ArpackOptions arpack);
+
+// Leading Floquet multipliers of the FULL model (truncated at scene.L) along the orbit a scene relaxes to:
+// the scene is integrated at its own level (choose_level: the smallest exact one) for relax_periods
+// forcing periods, the state is embedded in the full model (System::amplitudes) and ARPACK analyses the
+// monodromy over one period from there. The forcing period is 2 pi, or 4 pi when the rest shape has
+// odd-m content (g_{l,m}(t) = g_{l,m}(0) e^{imt/2}); a multiple of the orbit's own period is fine too
+// (multipliers raised to that power), so the result also reports how periodic the state is.
+struct SceneFloquetOptions {
+  int relax_periods = 30;  // forcing periods simulated first: the state must have reached the orbit
+  // Relaxation accuracy: the multipliers belong to the state actually reached.
+  IntegratorOptions relax = {Stepper::rk8pd, 1e-11, 1e-13};
+  MonodromyOptions monodromy;  // its period is replaced by the scene's forcing period
+  ArpackOptions arpack = [] {
+    ArpackOptions a;
+    a.k = 12;      // the leading dozen: enough to see every unstable (l, m) family of the paper's scenes
+    a.tol = 1e-10;  // ~ the action's accuracy at the default tolerances (docs/benchmarks.md)
+    return a;
+  }();
+  void validate() const;  // throws InvalidArgument naming the field
+};
+
+enum class SceneFloquetStatus { converged, relaxation_failed, arpack_failed };
+std::string to_string(SceneFloquetStatus s);
+
+struct SceneFloquetResult {
+  SceneFloquetStatus status = SceneFloquetStatus::converged;
+  std::string message;                         // empty when converged
+  ModelLevel relax_level = ModelLevel::full;   // the level the scene was relaxed with
+  double t0 = 0, period = 0;                   // the monodromy runs from t0 over one period
+  Stepper stepper = Stepper::rk8pd;            // the variational integration's stepper
+  std::size_t dimension = 0;                   // n of the full model
+  double periodicity_defect = 0;               // |y(t0 + T) - y(t0)| / |y(t0)| along the full model
+  FloquetResult floquet;                       // multipliers in floquet.arpack.eigenvalues, largest first
+};
+
+SceneFloquetResult scene_floquet_multipliers(const Scene& scene, const SceneFloquetOptions& options);
 
 }  // namespace rbcstab
