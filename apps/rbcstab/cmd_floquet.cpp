@@ -3,6 +3,7 @@
 // monodromy action; rosenbrock variational integration for the full level from --implicit-from-L).
 // The scene's --T, --dt, --stepper, --rtol and --atol do not apply: the relaxation (rk8pd, rtol 1e-11)
 // and the variational integration use their own tight tolerances (docs/continuation.md).
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <memory>
@@ -10,6 +11,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/continuation/monodromy.hpp"
+#include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"
 #include "scene_options.hpp"
 
@@ -23,6 +25,9 @@ struct FloquetOptions {
 };
 
 int run(const FloquetOptions& o) {
+  // ARPACK names this field "tol"; checked here so that the message names the flag --arpack-tol.
+  require(std::isfinite(o.floquet.arpack.tol) && o.floquet.arpack.tol >= 0 && o.floquet.arpack.tol < 1, "arpack_tol",
+          o.floquet.arpack.tol, "[0, 1)");
   const SceneFile sf = o.scene.resolve();
   const SceneFloquetResult r = scene_floquet_multipliers(sf.scene, o.floquet);
   const Eigen::VectorXcd& mu = r.floquet.arpack.eigenvalues;

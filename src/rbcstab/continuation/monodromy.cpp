@@ -207,10 +207,11 @@ FloquetResult leading_floquet_multipliers(const System& system, std::span<const 
   return out;
 }
 
-void SceneFloquetOptions::validate() const {
+void SceneFloquetOptions::validate(int L) const {
   require(relax_periods >= 0 && relax_periods <= 1000000, "relax_periods", relax_periods, "in [0, 1e6]");
   relax.validate();
   monodromy.validate();
+  arpack.validate(2 * ModeAmplitudes::count(L));
 }
 
 std::string to_string(SceneFloquetStatus s) {
@@ -223,8 +224,8 @@ std::string to_string(SceneFloquetStatus s) {
 }
 
 SceneFloquetResult scene_floquet_multipliers(const Scene& scene, const SceneFloquetOptions& options) {
-  options.validate();
   const InitialState init = initial_state(scene);  // validates the scene
+  options.validate(scene.L);  // before any work: bad input computes nothing
   SceneFloquetResult out;
   // Odd-m rest-shape content below 1e-12 of the largest is rounding (the Wigner d^l_{m,0}(pi/2) of odd
   // m are ~1e-16, not 0): its 4 pi forcing is far below the integration accuracy.

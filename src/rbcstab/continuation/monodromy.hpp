@@ -94,11 +94,11 @@ struct SceneFloquetOptions {
   MonodromyOptions monodromy;  // its period is replaced by the scene's forcing period
   ArpackOptions arpack = [] {
     ArpackOptions a;
-    a.k = 12;      // the leading dozen: enough to see every unstable (l, m) family of the paper's scenes
+    a.k = 12;       // the leading dozen (at the Fig. 3 in-plane orbit the unstable l = 4 family alone has 18)
     a.tol = 1e-10;  // ~ the action's accuracy at the default tolerances (docs/benchmarks.md)
     return a;
   }();
-  void validate() const;  // throws InvalidArgument naming the field
+  void validate(int L) const;  // throws InvalidArgument naming the field (arpack against n at truncation L)
 };
 
 enum class SceneFloquetStatus { converged, relaxation_failed, arpack_failed };
