@@ -1,5 +1,6 @@
-// rbcstab continue: an equilibrium branch (reduced system or modal model) or a periodic-orbit branch of the reduced system in one parameter,
+// rbcstab continue: an equilibrium branch (reduced system, modal or full model) or a periodic-orbit branch of the reduced system in one parameter,
 // with its special points (AUTO-07p labels), as CSV and/or one JSON object.
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <iomanip>
@@ -15,6 +16,7 @@
 #include "rbcstab/continuation/branch_switch.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"
+#include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/continuation/hopf_curve.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
@@ -141,17 +143,17 @@ nlohmann::json orbit_json(const PeriodicOrbitProblem& pr, const Eigen::VectorXd&
           {"trivial_multiplier", f.trivial ? number_or_null(*f.trivial) : nlohmann::json(nullptr)}};
 }
 
-// Modal equilibria: the l = 2 shape (r, Psi), sigma and every Delta_l; `branch` tells the continued
-// branch (primary) from the one switched to at its first BP (switched).
-std::string modal_csv(const Branch& b, const BranchSwitchResult* sw, const std::string& name,
-                      const ModalEquilibriumProblem& pr) {
+// Modal and full equilibria: the l = 2 shape (r, Psi), sigma and every Delta_l; `branch` tells the
+// continued branch (primary) from the one switched to at its first BP (switched).
+template <class Problem>  // ModalEquilibriumProblem, FullEquilibriumProblem
+std::string modal_csv(const Branch& b, const BranchSwitchResult* sw, const std::string& name, const Problem& pr) {
   std::ostringstream ss;
   ss << std::setprecision(17) << name << ",branch,r,Psi,sigma";
   for (int l = 2; l <= pr.L(); ++l) ss << ",Delta_" << l;
   ss << ",stable,n_unstable,max_Re_eig\n";
   auto rows = [&](const Branch& br, const char* label) {
     for (const auto& pt : br.points) {
-      const ModalState st = pr.observe(pt.x, pt.p);
+      const auto st = pr.observe(pt.x, pt.p);
       double m = -INFINITY;
       for (Eigen::Index i = 0; i < pt.spectrum.size(); ++i) m = std::max(m, pt.spectrum[i].real());
       ss << pt.p << ',' << label << ',' << st.r << ',' << st.Psi << ',' << st.sigma;
@@ -164,8 +166,9 @@ std::string modal_csv(const Branch& b, const BranchSwitchResult* sw, const std::
   return ss.str();
 }
 
-nlohmann::json modal_json(const ModalEquilibriumProblem& pr, const Eigen::VectorXd& x, double p) {
-  const ModalState st = pr.observe(x, p);
+template <class Problem>  // ModalEquilibriumProblem, FullEquilibriumProblem
+nlohmann::json modal_json(const Problem& pr, const Eigen::VectorXd& x, double p) {
+  const auto st = pr.observe(x, p);
   nlohmann::json j = {{"r", number_or_null(st.r)}, {"Psi", number_or_null(st.Psi)}, {"sigma", number_or_null(st.sigma)}};
   for (int l = 2; l <= pr.L(); ++l) j["Delta_" + std::to_string(l)] = number_or_null(st.Delta_l[static_cast<std::size_t>(l - 2)]);
   return j;
@@ -227,7 +230,7 @@ int report(const ContinueOptions& o, const SceneFile& sf, const Branch& b, const
   if (o.json) {
     nlohmann::json j = branch_json(b, describe, spectrum_key);
     j["kind"] = o.kind;
-    j["level"] = o.kind == "modal" || o.kind == "modal-orbit" ? "modal" : "reduced";
+    j["level"] = o.kind == "full" ? "full" : o.kind == "modal" || o.kind == "modal-orbit" ? "modal" : "reduced";
     j["free_parameter"] = o.parameter;
     j["parameters"] = to_json(sf.scene.parameters);
     j["beta"] = sf.scene.beta;
@@ -315,7 +318,7 @@ int report_curve(const ContinueOptions& o, const SceneFile& sf, const Branch& on
   if (o.json) {
     nlohmann::json j = branch_json(c, [&](const Eigen::VectorXd& X, double p2) { return state(X, p2); }, spectrum_key);
     j["kind"] = o.kind;
-    j["level"] = o.kind == "modal" ? "modal" : "reduced";
+    j["level"] = o.kind == "full" ? "full" : o.kind == "modal" ? "modal" : "reduced";
     j["free_parameter"] = o.parameter2;
     j["parameters"] = to_json(sf.scene.parameters);
     j["beta"] = sf.scene.beta;
@@ -417,6 +420,28 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
     return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), base.dimension(),
                         modal_of, "eigenvalues", [&](const Eigen::VectorXd& X) { return curve.omega(X); });
   }
+  if (o.kind == "full") {
+    // The generic curve systems over the full problem (BP: the 2n + 2 system of branch_point_curve.hpp,
+    // e.g. an unforced mode's Z2 pitchfork).
+    const SceneTwoParameterProblem<FullEquilibriumProblem> base(scene, q1, q2);
+    const Eigen::Index n = base.dimension();
+    const DescribeCurve full_of = [&](const Eigen::VectorXd& x, double p1, double p2) {
+      return modal_json(base.at(p2), x, p1);
+    };
+    if (o.curve == "LP") {
+      const FoldCurveProblem curve(base, *sp, p2_0);
+      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, full_of,
+                          "eigenvalues", nullptr);
+    }
+    if (o.curve == "BP") {
+      const BranchPointCurveProblem curve(base, *sp, p2_0);
+      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, full_of,
+                          "eigenvalues", nullptr);
+    }
+    const HopfCurveProblem curve(base, *sp, p2_0);
+    return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, full_of,
+                        "eigenvalues", [&](const Eigen::VectorXd& X) { return curve.omega(X); });
+  }
   const SceneTwoParameterProblem<ReducedEquilibriumProblem> base(scene, q1, q2);
   if (o.curve == "LP") {
     const FoldCurveProblem curve(base, *sp, p2_0);
@@ -434,13 +459,14 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
 }
 
 int run(ContinueOptions& o) {
-  if (o.kind != "equilibrium" && o.kind != "orbit" && o.kind != "modal" && o.kind != "modal-orbit")
-    throw InvalidArgument("kind", "kind = '" + o.kind + "' is not available: must be equilibrium, orbit, modal or modal-orbit");
+  if (o.kind != "equilibrium" && o.kind != "orbit" && o.kind != "modal" && o.kind != "modal-orbit" && o.kind != "full")
+    throw InvalidArgument("kind", "kind = '" + o.kind + "' is not available: must be equilibrium, orbit, modal, modal-orbit or full");
+  const bool full = o.kind == "full";
   const bool modal_orbit = o.kind == "modal-orbit";
   const bool orbit = o.kind == "orbit" || modal_orbit;
   const bool modal = o.kind == "modal" || modal_orbit;
   if (orbit && o.switch_at_bp)
-    throw InvalidArgument("switch-at-bp", "--switch-at-bp is available for --kind equilibrium and modal, not orbit or modal-orbit");
+    throw InvalidArgument("switch-at-bp", "--switch-at-bp is available for --kind equilibrium, modal and full, not orbit or modal-orbit");
   if (orbit) o.orbit.validate();
   if (!o.curve.empty()) {
     if (modal_orbit)
@@ -462,7 +488,12 @@ int run(ContinueOptions& o) {
   // Equilibria need an autonomous reduced system (rest shape out of plane), periodic orbits a forced
   // one (rest shape in plane), unless beta is given.
   if (o.scene.o_beta->count() == 0 && o.scene.scene_path.empty()) sf.scene.beta = orbit ? M_PI / 2 : 0;
-  const ModelLevel level = modal ? ModelLevel::modal : ModelLevel::reduced;
+  const bool rest_high = std::any_of(sf.scene.rest_delta_l.begin(), sf.scene.rest_delta_l.end(),
+                                     [](const auto& kv) { return kv.second > 0; });
+  if (rest_high && !full)
+    throw InvalidArgument("rest_delta_l", "the stress-free shape has l >= 3 content (initial.rest_delta_l), which only "
+                                          "the full model holds: --kind " + o.kind + " would drop it; use --kind full");
+  const ModelLevel level = full ? ModelLevel::full : modal ? ModelLevel::modal : ModelLevel::reduced;
   if (sf.scene.model != ModelLevel::automatic && sf.scene.model != level)
     throw InvalidArgument("model", "model = " + to_string(sf.scene.model) + " is not available for --kind " + o.kind +
                                        ": must be " + to_string(level) + " (or auto)");
@@ -490,6 +521,28 @@ int run(ContinueOptions& o) {
     return report(o, sf, b, modal_orbit_csv(b, o.parameter, problem, system),
                   [&](const Eigen::VectorXd& X, double p) { return modal_orbit_json(problem, system, X, p); },
                   "multipliers");
+  }
+  if (full) {
+    // Start: without stress-free l >= 3 content the ellipsoidal closed form (exact); with it, the scene
+    // relaxed by the full model for --relax-T (an attracting state; Newton from the ellipsoid may land
+    // on an unstable member of the unfolded pitchfork), then Newton at the scene's parameter.
+    const FullEquilibriumProblem problem(sf.scene, q);
+    const double p0 = problem.start_parameter();
+    const NewtonResult start = solve_fixed_parameter(
+        problem, rest_high ? problem.relaxed_state(o.relax_T) : problem.ellipsoidal_state(p0), p0);
+    if (!start.converged) {
+      std::cerr << "rbcstab: no full-model equilibrium near the " << (rest_high ? "relaxed state" : "ellipsoid")
+                << " (Newton residual " << start.residual_norm << " after " << start.iterations
+                << " iterations); try a longer --relax-T\n";
+      return kRunFailed;
+    }
+    const Branch b = continue_branch(problem, start.x, p0, o.engine);
+    if (!o.curve.empty()) return run_curve(o, sf, b);
+    std::optional<BranchSwitchResult> sw;
+    if (o.switch_at_bp) sw = switch_at_first_bp(problem, b, o.engine);
+    const BranchSwitchResult* swp = sw ? &*sw : nullptr;
+    return report(o, sf, b, modal_csv(b, swp, o.parameter, problem),
+                  [&](const Eigen::VectorXd& x, double p) { return modal_json(problem, x, p); }, "eigenvalues", swp);
   }
   if (modal) {
     // Start on the ellipsoidal branch (a_l = 0) at its closed form; Newton polishes it.
@@ -539,11 +592,13 @@ static Runner add_continue(CLI::App& app) {
                  "Upsilon_l(sigma) = 0) or orbit (periodic orbits "
                  "of the forced in-plane reduced system: swinging/tumbling, Floquet multipliers, LPC/PD/NS, UZ "
                  "swing_tumble) or modal-orbit (periodic orbits of the forced modal model relaxed from the scene, "
-                 "e.g. the in-plane post-instability state, with every Delta_l)")
+                 "e.g. the in-plane post-instability state, with every Delta_l) or full (full-model equilibria, "
+                 "L <= 16, for stress-free shapes with l >= 3 content, initial.rest_delta_l in a scene file; "
+                 "beta = 0 or C = inf)")
       ->capture_default_str();
   app.add_option("--segments", o->orbit.segments, "orbit: number of multiple-shooting segments")->capture_default_str();
   app.add_flag("--switch-at-bp", o->switch_at_bp,
-               "equilibrium, modal: also continue the branch that bifurcates at the first BP (modal: the "
+               "equilibrium, modal, full: also continue the branch that bifurcates at the first BP (modal: the "
                "post-instability state); JSON key switched_branch, CSV rows with branch = switched");
   app.add_option("--parameter", o->parameter, "free parameter: lambda, Delta, Delta0, B, C, Lambda or S")->capture_default_str();
   app.add_option("--min", o->p_min, "lower bound of the free parameter (the branch ends there exactly; default: none, 0 for lambda)");
@@ -561,7 +616,7 @@ static Runner add_continue(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--curve", o->curve,
                  "continue the curve of a special point of the one-parameter branch in (--parameter, --parameter2): "
-                 "LP, BP, HB (equilibrium, modal; modal BP: the symmetry-breaking curve Upsilon_l(sigma) = 0) or LPC, "
+                 "LP, BP, HB (equilibrium, modal, full; modal BP: the symmetry-breaking curve Upsilon_l(sigma) = 0) or LPC, "
                  "PD (orbit); default: none (one-parameter run)")
       ->check(CLI::IsMember({"LP", "BP", "HB", "LPC", "PD"}));
   app.add_option("--parameter2", o->parameter2,

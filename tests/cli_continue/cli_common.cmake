@@ -36,3 +36,15 @@ function(expect_bad_input fragment)
     fail("a file was written on bad input")
   endif()
 endfunction()
+
+# A JSON number in [0, 1) written as 0.ddd... (no exponent) -> integer units of 1e-12 (truncated), so
+# that two runs' values can be subtracted with math(EXPR) (CMake has no floating-point arithmetic).
+function(to_pico value out)
+  if(NOT value MATCHES "^0\\.([0-9]+)$")
+    fail("to_pico: ${value} is not of the form 0.ddd")
+  endif()
+  set(digits "${CMAKE_MATCH_1}000000000000")
+  string(SUBSTRING "${digits}" 0 12 digits)
+  string(REGEX REPLACE "^0+([0-9])" "\\1" digits "${digits}")
+  set(${out} ${digits} PARENT_SCOPE)
+endfunction()

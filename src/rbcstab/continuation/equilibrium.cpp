@@ -6,6 +6,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
+#include "rbcstab/continuation/detail/sphere_constraint.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 
@@ -39,7 +40,7 @@ const ReducedModel& ReducedEquilibriumProblem::model(double p) const {
 void ReducedEquilibriumProblem::residual(const Eigen::VectorXd& y, double p, Eigen::VectorXd& G) const {
   G.resize(3);
   model(p).rhs(0, std::span<const double>(y.data(), 3), std::span<double>(G.data(), 3));
-  G += (y.squaredNorm() - 1) * y;
+  detail::add_sphere_constraint(y, G);
 }
 
 void ReducedEquilibriumProblem::jacobian(const Eigen::VectorXd& y, double p, Eigen::MatrixXd& J) const {
@@ -48,7 +49,8 @@ void ReducedEquilibriumProblem::jacobian(const Eigen::VectorXd& y, double p, Eig
   model(p).jacobian(0, std::span<const double>(y.data(), 3), sj, dfdt);
   Eigen::Matrix<double, 3, 3, Eigen::RowMajor> D;
   sj.to_dense(std::span<double>(D.data(), 9));
-  J = D + (y.squaredNorm() - 1) * Eigen::Matrix3d::Identity() + 2 * y * y.transpose();
+  J = D;
+  detail::add_sphere_constraint_jacobian(y, J);
 }
 
 Eigen::VectorXcd ReducedEquilibriumProblem::spectrum(const Eigen::VectorXd& y, double p) const {
@@ -57,11 +59,7 @@ Eigen::VectorXcd ReducedEquilibriumProblem::spectrum(const Eigen::VectorXd& y, d
   model(p).jacobian(0, std::span<const double>(y.data(), 3), sj, dfdt);
   Eigen::Matrix<double, 3, 3, Eigen::RowMajor> D;
   sj.to_dense(std::span<double>(D.data(), 9));
-  // Orthonormal basis of the tangent plane y^perp: the last two columns of y's Householder Q.
-  const Eigen::Matrix3d Q = Eigen::HouseholderQR<Eigen::Vector3d>(y).householderQ();
-  const Eigen::Matrix<double, 3, 2> T = Q.rightCols<2>();
-  const Eigen::Matrix2d R = T.transpose() * Eigen::Matrix3d(D) * T;
-  return Eigen::EigenSolver<Eigen::Matrix2d>(R, false).eigenvalues();
+  return detail::tangent_spectrum(Eigen::MatrixXd(D), y);
 }
 
 Eigen::VectorXd ReducedEquilibriumProblem::scene_state() const {

@@ -7,21 +7,11 @@
 #include <Eigen/QR>
 
 #include "rbcstab/analysis/steady_states.hpp"
+#include "rbcstab/continuation/detail/sphere_constraint.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
 
 namespace rbcstab {
-
-namespace {
-
-// Orthonormal basis of x^perp: the last n - 1 columns of x's Householder Q.
-Eigen::MatrixXd tangent_basis(const Eigen::VectorXd& x) {
-  const Eigen::Index n = x.size();
-  const Eigen::MatrixXd Q = Eigen::HouseholderQR<Eigen::MatrixXd>(x).householderQ() * Eigen::MatrixXd::Identity(n, n);
-  return Q.rightCols(n - 1);
-}
-
-}  // namespace
 
 ModalEquilibriumProblem::ModalEquilibriumProblem(const Scene& scene, ContinuationParameter free)
     : scene_(scene), free_(free), L_(scene.L) {
@@ -176,19 +166,18 @@ void ModalEquilibriumProblem::dynamics_jacobian(const ModalCoefficients& c, cons
 
 void ModalEquilibriumProblem::residual(const Eigen::VectorXd& x, double p, Eigen::VectorXd& G) const {
   dynamics(coefficients(p), x, G);
-  G += (x.squaredNorm() - 1) * x;
+  detail::add_sphere_constraint(x, G);
 }
 
 void ModalEquilibriumProblem::jacobian(const Eigen::VectorXd& x, double p, Eigen::MatrixXd& J) const {
   dynamics_jacobian(coefficients(p), x, J);
-  J += (x.squaredNorm() - 1) * Eigen::MatrixXd::Identity(x.size(), x.size()) + 2 * x * x.transpose();
+  detail::add_sphere_constraint_jacobian(x, J);
 }
 
 Eigen::VectorXcd ModalEquilibriumProblem::spectrum(const Eigen::VectorXd& x, double p) const {
   Eigen::MatrixXd DF;
   dynamics_jacobian(coefficients(p), x, DF);
-  const Eigen::MatrixXd T = tangent_basis(x);
-  return Eigen::EigenSolver<Eigen::MatrixXd>(T.transpose() * DF * T, false).eigenvalues();
+  return detail::tangent_spectrum(DF, x);
 }
 
 Eigen::VectorXd ModalEquilibriumProblem::ellipsoidal_state(double p) const {
@@ -272,8 +261,7 @@ Eigen::VectorXcd ModalBranchPointCurve::spectrum(const Eigen::VectorXd& X, doubl
   const ModalCoefficients c = base_.coefficients_at(parameters(X[5], p2));
   Eigen::MatrixXd DF;
   ModalEquilibriumProblem::dynamics_jacobian(c, x, DF);
-  const Eigen::MatrixXd T = tangent_basis(x);
-  return Eigen::EigenSolver<Eigen::MatrixXd>(T.transpose() * DF * T, false).eigenvalues();
+  return detail::tangent_spectrum(DF, x);
 }
 
 Eigen::VectorXd ModalBranchPointCurve::start(const Eigen::VectorXd& x_bp, double p1_bp) const {

@@ -9,6 +9,7 @@
 #include <Eigen/QR>
 
 #include "rbcstab/continuation/detail/minimal_augmentation.hpp"
+#include "rbcstab/continuation/detail/sphere_constraint.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 
@@ -329,10 +330,7 @@ Floquet PeriodicOrbitProblem::floquet(const Eigen::VectorXd& X, double p) const 
   // x0^T M = x0^T (d/dt (x^T Phi) = (f + J^T x)^T Phi = 0 because x.f = 0 identically), so M maps
   // the tangent plane x0^perp into itself: its restriction carries the nontrivial multipliers.
   const Eigen::VectorXd x0 = X.head(n_);
-  const Eigen::MatrixXd Q = Eigen::HouseholderQR<Eigen::MatrixXd>(x0).householderQ();
-  const Eigen::MatrixXd T = Q.rightCols(n_ - 1);
-  const Eigen::MatrixXd R = T.transpose() * fl.monodromy * T;
-  fl.multipliers = Eigen::EigenSolver<Eigen::MatrixXd>(R, false).eigenvalues();
+  fl.multipliers = detail::tangent_spectrum(fl.monodromy, x0);
   fl.trivial = x0.dot(fl.monodromy * x0) / x0.squaredNorm();
   return fl;
 }
