@@ -17,6 +17,8 @@
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/levels.hpp"
 
+#include "../tests/continuation/in_plane_orbit.hpp"  // the in-plane orbit and its exact monodromy (oracle)
+
 namespace rbcstab {
 namespace {
 
@@ -155,6 +157,66 @@ void BM_Floquet(benchmark::State& state) {
   state.counters["leading_abs_mu"] = lead;
 }
 BENCHMARK(BM_Floquet)->Args({6, 0})->Args({6, 1})->Args({12, 0})->Args({12, 1})->Args({20, 0})->Unit(benchmark::kMillisecond);
+
+// One monodromy action Phi v (v a fixed pseudo-random unit vector) on the in-plane orbit, explicit
+// rk8pd vs the implicit rosenbrock variational integration, against the exact block-diagonal Phi
+// (test::ExactInPlaneMonodromy): error against cost. Args: L, stepper (0 rk8pd, 1 rosenbrock), -log10 rtol.
+// Counters: actions/s, accepted steps per action, relative error |Phi v - exact| / |exact|.
+void BM_FloquetAction(benchmark::State& state) {
+  const int L = static_cast<int>(state.range(0));
+  const test::InPlaneOrbit o = test::in_plane_orbit(L);
+  const FullModel full(o.p, o.init);
+  const test::ExactInPlaneMonodromy exact = test::exact_in_plane_monodromy(o, L);
+  const std::vector<double> v = test::test_vector(full.dimension());
+  std::vector<double> want(v.size()), got(v.size());
+  exact.apply(v, want);
+  MonodromyOptions mo;
+  mo.implicit_from_L = 0;  // exactly the stepper asked for
+  mo.integrator.stepper = state.range(1) ? Stepper::rosenbrock : Stepper::rk8pd;
+  mo.integrator.rtol = std::pow(10.0, -static_cast<double>(state.range(2)));
+  mo.integrator.atol = 1e-2 * mo.integrator.rtol;
+  const MonodromyAction action(full, full.initial_state(), o.t0, mo);
+  for (auto _ : state) benchmark::DoNotOptimize(action.apply(v, got));
+  double d = 0, w = 0;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    d += (got[i] - want[i]) * (got[i] - want[i]);
+    w += want[i] * want[i];
+  }
+  state.counters["n"] = static_cast<double>(full.dimension());
+  state.counters["actions"] = benchmark::Counter(1, benchmark::Counter::kIsIterationInvariantRate);
+  state.counters["steps"] = static_cast<double>(action.counters().steps) / static_cast<double>(action.applications());
+  state.counters["error"] = std::sqrt(d / w);
+}
+BENCHMARK(BM_FloquetAction)
+    ->ArgsProduct({{6, 12, 20, 30, 40}, {0}, {11}})
+    ->ArgsProduct({{6, 12, 20, 30, 40, 60}, {1}, {8, 10}})
+    ->Args({60, 0, 11})
+    ->Unit(benchmark::kMillisecond);
+
+// The 12 leading multipliers by ARPACK on the action with the default MonodromyOptions (rk8pd below
+// implicit_from_L, rosenbrock from it) against the exact multiset (test::multiset_distance, relative
+// to 1 + |mu|). Args: L, -log10 of the implicit rtol (default 10; 8 keeps L = 60 at ~2 min).
+// Counters: actions, steps per action, error.
+void BM_FloquetLeading(benchmark::State& state) {
+  const int L = static_cast<int>(state.range(0));
+  const test::InPlaneOrbit o = test::in_plane_orbit(L);
+  const FullModel full(o.p, o.init);
+  const auto exact = test::exact_in_plane_monodromy(o, L).multipliers();
+  ArpackOptions ao;
+  ao.k = 12;
+  ao.tol = 1e-10;
+  MonodromyOptions mo;
+  mo.implicit.rtol = std::pow(10.0, -static_cast<double>(state.range(1)));
+  mo.implicit.atol = 1e-2 * mo.implicit.rtol;
+  FloquetResult r;
+  for (auto _ : state) r = leading_floquet_multipliers(full, full.initial_state(), o.t0, mo, ao);
+  const Eigen::VectorXcd& e = r.arpack.eigenvalues;
+  state.counters["n"] = static_cast<double>(full.dimension());
+  state.counters["integrations"] = static_cast<double>(r.integrations);
+  state.counters["steps"] = static_cast<double>(r.counters.steps) / static_cast<double>(std::max<std::size_t>(1, r.integrations));
+  state.counters["error"] = test::multiset_distance({e.data(), e.data() + e.size()}, exact);
+}
+BENCHMARK(BM_FloquetLeading)->Args({20, 10})->Args({30, 10})->Args({60, 8})->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace
 }  // namespace rbcstab

@@ -1,11 +1,13 @@
 // Linearly implicit Rosenbrock 4(3) method with Shampine's (1982) coefficients (the GRK4T-type
 // scheme of Kaps and Rentrop used by Numerical Recipes' stiff integrator), as a GSL odeiv2 step
-// type. Each stage solves (I - gamma h J) x = b with J = M + v w^T from the model's structured
-// Jacobian, by block-diagonal solves plus Sherman-Morrison: O(n) per stage instead of O(n^3).
+// type. Each stage solves (I - gamma h J) x = b with the system's ShiftedSolver: by default J = M + v w^T
+// from the model's structured Jacobian, block-diagonal solves plus Sherman-Morrison, O(n) per stage
+// instead of O(n^3); the variational system supplies its block-triangular solver the same way.
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
 #include <cmath>
+#include <memory>
 #include <vector>
 
 #include "rbcstab/integrate/detail/gsl_context.hpp"
@@ -21,7 +23,9 @@ constexpr double GAM = 1.0 / 2, A21 = 2.0, A31 = 48.0 / 25, A32 = 6.0 / 25, C21 
 struct State {
   explicit State(std::size_t n) : f0(n), dfdt(n), g1(n), g2(n), g3(n), g4(n), ytmp(n), ftmp(n), b(n) {}
   std::vector<double> f0, dfdt, g1, g2, g3, g4, ytmp, ftmp, b;
-  StructuredJacobian J;
+  // Made lazily from the integrated system at the first step (ros_alloc does not see the system);
+  // the State belongs to one driver, i.e. one integrate() call, so nothing is shared between threads.
+  std::unique_ptr<ShiftedSolver> solver;
 };
 
 void* ros_alloc(std::size_t dim) { return new State(dim); }
@@ -40,12 +44,13 @@ int ros_apply(void* vstate, std::size_t n, double t, double h, double y[], doubl
     return rc;
   }
   ++ctx->counters->jacobian_evaluations;
-  ctx->system->jacobian(t, {y, n}, s.J, s.dfdt);
+  if (!s.solver) s.solver = ctx->system->make_shifted_solver();
+  s.solver->linearize(t, {y, n}, s.dfdt);
   const double c = GAM * h;
   // A x = rhs with A = I/(gamma h) - J  <=>  (I - gamma h J) x = gamma h rhs.
   auto solve = [&](std::vector<double>& x) -> bool {
     for (std::size_t i = 0; i < n; ++i) s.b[i] *= c;
-    return s.J.solve_shifted(c, s.b, x);
+    return s.solver->solve(c, s.b, x);
   };
   for (std::size_t i = 0; i < n; ++i) s.b[i] = s.f0[i] + h * C1X * s.dfdt[i];
   if (!solve(s.g1)) return GSL_FAILURE;

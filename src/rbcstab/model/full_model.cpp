@@ -129,7 +129,7 @@ void FullModel::jacobian(double t, std::span<const double> y, StructuredJacobian
       const double cN = 2 * md.a * (md.Gamma1 + alpha * md.Gamma3), cD = 2 * md.a * md.Gamma2;
       J.w[i] = -((cN + sigma * cD) * re + p_.B * md.a * S[k].real()) / s.D;
       J.w[i + 1] = -((cN + sigma * cD) * im + p_.B * md.a * S[k].imag()) / s.D;
-      const std::complex<double> g = g0_[k] * std::polar(1.0, 0.5 * m * t);
+      const std::complex<double> g = g0_[k] == 0.0 ? 0.0 : g0_[k] * std::polar(1.0, 0.5 * m * t);  // as in drive()
       dS[k] = -md.Gamma3 * p_.inv_C() * std::complex<double>(0, om) * g;
       dsigma_dt_num += md.a * (dS[k].real() * re + dS[k].imag() * im);
     }

@@ -5,6 +5,7 @@
 // J = M + v w^T with M block diagonal (1x1 and 2x2 rotation blocks) and v w^T of rank one.
 #include <complex>
 #include <cstddef>
+#include <memory>
 #include <span>
 #include <string>
 #include <vector>
@@ -26,6 +27,18 @@ struct Observation {
   double Delta2 = 0;            // excess area held by l = 2 (normalises r)
 };
 
+// The linear algebra of a linearly implicit stepper at one point (t, y): solves (I - c J) x = b with
+// J = dF/dy there. Made per integration by System::make_shifted_solver, so it may keep scratch and the
+// last linearisation without any state shared between threads.
+class ShiftedSolver {
+ public:
+  virtual ~ShiftedSolver() = default;
+  // Evaluates J and dF/dt at (t, y); the solves below use this J until the next call.
+  virtual void linearize(double t, std::span<const double> y, std::span<double> dfdt) = 0;
+  // (I - c J) x = b; false if the shifted matrix is singular to working precision.
+  virtual bool solve(double c, std::span<const double> b, std::span<double> x) = 0;
+};
+
 class System {
  public:
   virtual ~System() = default;
@@ -40,6 +53,9 @@ class System {
   // The state the system was built from, and the amplitudes f_{l,m}(t) rebuilt from any state.
   virtual std::vector<double> initial_state() const = 0;
   virtual ModeAmplitudes amplitudes(double t, std::span<const double> y) const = 0;
+  // The Rosenbrock stepper's linear solver. Default: jacobian() + StructuredJacobian::solve_shifted
+  // (O(n)); systems without a structured Jacobian of their own (the variational system) override it.
+  virtual std::unique_ptr<ShiftedSolver> make_shifted_solver() const;
 };
 
 }  // namespace rbcstab
