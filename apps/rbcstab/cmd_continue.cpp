@@ -511,11 +511,6 @@ int run(ContinueOptions& o) {
   // Equilibria need an autonomous reduced system (rest shape out of plane), periodic orbits a forced
   // one (rest shape in plane), unless beta is given.
   if (o.scene.o_beta->count() == 0 && o.scene.scene_path.empty()) sf.scene.beta = orbit ? M_PI / 2 : 0;
-  const bool rest_high = std::any_of(sf.scene.rest_delta_l.begin(), sf.scene.rest_delta_l.end(),
-                                     [](const auto& kv) { return kv.second > 0; });
-  if (rest_high && !full)
-    throw InvalidArgument("rest_delta_l", "the stress-free shape has l >= 3 content (initial.rest_delta_l), which only "
-                                          "the full model holds: --kind " + o.kind + " would drop it; use --kind full");
   const ModelLevel level = full ? ModelLevel::full : modal ? ModelLevel::modal : ModelLevel::reduced;
   if (sf.scene.model != ModelLevel::automatic && sf.scene.model != level)
     throw InvalidArgument("model", "model = " + to_string(sf.scene.model) + " is not available for --kind " + o.kind +
@@ -550,6 +545,8 @@ int run(ContinueOptions& o) {
     // on an unstable member of the unfolded pitchfork), then Newton at the scene's parameter.
     const FullEquilibriumProblem problem(sf.scene, q);
     const double p0 = problem.start_parameter();
+    const bool rest_high = std::any_of(sf.scene.rest_delta_l.begin(), sf.scene.rest_delta_l.end(),
+                                       [](const auto& kv) { return kv.second > 0; });
     const NewtonResult start = solve_fixed_parameter(
         problem, rest_high ? problem.relaxed_state(o.relax_T) : problem.ellipsoidal_state(p0), p0);
     if (!start.converged) {

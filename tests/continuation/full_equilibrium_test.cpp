@@ -20,8 +20,11 @@
 #include "rbcstab/continuation/branch_switch.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"
+#include "rbcstab/continuation/equilibrium.hpp"
 #include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
+#include "rbcstab/continuation/modal_orbit.hpp"
+#include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/simulation.hpp"
@@ -499,6 +502,30 @@ TEST(FullEquilibrium, RotatingForcingAndLargeLAreRejected) {
   } catch (const InvalidArgument& e) {
     EXPECT_EQ(e.parameter(), "L");
   }
+}
+
+// The lower levels cannot hold a stress-free shape with l >= 3 content: their problems refuse it by
+// name instead of continuing the cell without it.
+TEST(FullEquilibrium, LowerLevelProblemsRefuseRestContent) {
+  const Scene s = forced_scene(0.03, 4, 1e-3);
+  const auto names_rest = [](auto&& make) {
+    try {
+      make();
+      ADD_FAILURE() << "no exception";
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(e.parameter(), "rest_delta_l");
+    }
+  };
+  names_rest([&] { ReducedEquilibriumProblem pr(s, ContinuationParameter::C); });
+  names_rest([&] { ModalEquilibriumProblem pr(s, ContinuationParameter::C); });
+  Scene in_plane = s;
+  in_plane.beta = M_PI / 2;
+  names_rest([&] { ReducedForcedSystem f(in_plane, ContinuationParameter::C); });
+  names_rest([&] { ModalForcedSystem f(in_plane, ContinuationParameter::C); });
+  Scene without = s;
+  without.rest_delta_l.clear();
+  EXPECT_NO_THROW(ReducedEquilibriumProblem(without, ContinuationParameter::C));
+  EXPECT_NO_THROW(ModalEquilibriumProblem(without, ContinuationParameter::C));
 }
 
 }  // namespace

@@ -95,6 +95,12 @@ void require_independent(ContinuationParameter p1, ContinuationParameter p2, con
 }
 
 InitialState oriented_initial_state(Scene s) {
+  for (const auto& [l, d] : s.rest_delta_l)
+    if (d > 0)
+      throw InvalidArgument("rest_delta_l", "rest_delta_l[" + std::to_string(l) + "] = " + std::to_string(d) +
+                                                ": the stress-free shape has l >= 3 content, which only the full model "
+                                                "holds; the reduced and modal problems would drop it (use the full "
+                                                "level: FullEquilibriumProblem, rbcstab continue --kind full)");
   s.parameters.Delta0 = s.parameters.Delta;
   return initial_state(s);
 }

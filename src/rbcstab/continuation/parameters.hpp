@@ -31,7 +31,9 @@ Scene with_parameter(Scene s, ContinuationParameter q, double value);
 
 // The scene's initial state built with Delta0 = Delta > 0. The continuation problems take only the rest
 // shape's orientation from it (its size is kappa = 1/(Lambda S) from the parameters), so a branch
-// started at Delta0 = 0 keeps the orientation when continued in Delta0.
+// started at Delta0 = 0 keeps the orientation when continued in Delta0. Throws
+// InvalidArgument("rest_delta_l") for a stress-free shape with l >= 3 content: those problems (reduced,
+// modal) cannot hold it, and silently dropping it would continue a different cell.
 InitialState oriented_initial_state(Scene s);
 
 // Throws InvalidArgument(name, ...) unless p2 can be set independently of p1 (not equal, not Lambda with
