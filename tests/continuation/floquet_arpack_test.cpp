@@ -16,76 +16,24 @@
 #include <vector>
 
 #include "continuation/full_model_fixture.hpp"
+#include "continuation/in_plane_orbit.hpp"
 #include "rbcstab/continuation/monodromy.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
 namespace {
 
-constexpr double kTwoPi = 2 * std::numbers::pi;
-
-// An in-plane orbit state at t0 = 2 pi k: the reduced model (exact for ellipsoidal states) relaxed over
-// 30 forcing periods, embedded with f_{l>=3} = 0.
-struct InPlaneOrbit {
-  Parameters p;
-  InitialState init;
-  double t0 = 0;
-};
-
-InPlaneOrbit in_plane_orbit(int L) {
-  InPlaneOrbit o;
-  const Scene s = test::ellipsoidal_scene(L, std::numbers::pi / 2);
-  o.p = s.parameters;
-  o.init = initial_state(s);
-  const ReducedModel red(o.p, o.init);
-  o.t0 = 30 * kTwoPi;
-  const double grid[1] = {o.t0};
-  IntegratorOptions io;
-  io.rtol = 1e-11;
-  io.atol = 1e-13;
-  const IntegrationResult r = integrate(red, red.initial_state(), 0.0, grid, io, {});
-  EXPECT_EQ(r.status, IntegrationStatus::success);
-  o.init.f = red.amplitudes(o.t0, r.y);
-  return o;
-}
-
-// Mean of sigma over one period along the full-model trajectory (composite Simpson, 4000 intervals:
-// error ~ h^4 |sigma''''| ~ 1e-12 relative for this smooth periodic sigma).
-double mean_sigma(const FullModel& full, std::span<const double> y0, double t0) {
-  const int N = 4000;
-  std::vector<double> grid(N + 1), sig;
-  for (int i = 0; i <= N; ++i) grid[std::size_t(i)] = t0 + kTwoPi * i / N;
-  IntegratorOptions io;
-  io.rtol = 1e-12;
-  io.atol = 1e-14;
-  integrate(full, y0, t0, grid, io, [&](double t, std::span<const double> y) { sig.push_back(full.sigma(t, y)); });
-  EXPECT_EQ(sig.size(), std::size_t(N + 1));
-  double s = sig.front() + sig.back();
-  for (int i = 1; i < N; ++i) s += (i % 2 ? 4 : 2) * sig[std::size_t(i)];
-  return s / (3.0 * N);  // (h/3) sum / T with h = T/N
-}
+using test::in_plane_orbit;
+using test::InPlaneOrbit;
 
 std::vector<std::complex<double>> eigenvalues(const Eigen::MatrixXd& M) {
   const Eigen::VectorXcd e = Eigen::EigenSolver<Eigen::MatrixXd>(M, false).eigenvalues();
   return {e.data(), e.data() + e.size()};
 }
 
+// (-1)^m exp(2 pi Upsilon_l(sigma_bar)) twice per (l, m), l >= 3, and the l = 2 block's dense monodromy.
 std::vector<std::complex<double>> closed_form_multipliers(const InPlaneOrbit& o, int L) {
-  const MonodromyOptions mo;
-  InitialState init2 = o.init;
-  ModeAmplitudes f2(2);
-  for (int m = -2; m <= 2; ++m) f2.at(2, m) = o.init.f.at(2, m);
-  init2.f = f2;
-  const FullModel full2(o.p, init2);
-  const MonodromyAction a2(full2, full2.initial_state(), o.t0, mo);
-  auto all = eigenvalues(a2.dense());
-  const FullModel full(o.p, o.init);
-  const double sbar = mean_sigma(full, full.initial_state(), o.t0);
-  for (int l = 3; l <= L; ++l) {
-    const double E = std::exp(kTwoPi * Upsilon(o.p, l, sbar));
-    for (int m = -l; m <= l; ++m) all.insert(all.end(), 2, (m % 2 ? -E : E));
-  }
-  return all;
+  return test::exact_in_plane_monodromy(o, L).multipliers();
 }
 
 std::vector<std::complex<double>> by_modulus(std::vector<std::complex<double>> v) {
@@ -99,6 +47,7 @@ std::vector<std::complex<double>> by_modulus(std::vector<std::complex<double>> v
 TEST(FloquetArpack, LeadingMultipliersMatchDenseMonodromyAndClosedForm) {
   const int L = 6;
   const InPlaneOrbit o = in_plane_orbit(L);
+  ASSERT_TRUE(o.ok);
   const FullModel full(o.p, o.init);
   const MonodromyOptions mo;
   ArpackOptions ao;
@@ -130,6 +79,7 @@ TEST(FloquetArpack, LeadingMultipliersMatchDenseMonodromyAndClosedForm) {
 TEST(FloquetArpack, LeadingMultipliersMatchClosedFormAtL12) {
   const int L = 12;
   const InPlaneOrbit o = in_plane_orbit(L);
+  ASSERT_TRUE(o.ok);
   const FullModel full(o.p, o.init);
   ArpackOptions ao;
   ao.k = 12;
