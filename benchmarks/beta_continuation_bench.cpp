@@ -10,23 +10,12 @@
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/orbit.hpp"
+#include "continuation/fig2_fixture.hpp"
 
 namespace rbcstab {
 namespace {
 
-Scene fig2_in_plane_Delta1() {
-  Scene s;
-  s.parameters.lambda = 5;
-  s.parameters.Delta = 1;
-  s.parameters.Delta0 = 0.01;
-  s.parameters.B = 2;
-  s.parameters.C = 0.04;
-  s.beta = M_PI / 2;
-  s.delta = 0;
-  s.L = 2;
-  s.model = ModelLevel::reduced;
-  return s;
-}
+Scene fig2_in_plane_Delta1() { return test::fig2_in_plane(1); }
 
 // The same system with df/dbeta left to ForcedSystem's central differences of the rhs.
 class DifferencedBeta final : public ForcedSystem {

@@ -9,6 +9,7 @@
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"
 #include "rbcstab/continuation/orbit.hpp"
+#include "continuation/fig2_fixture.hpp"
 
 namespace rbcstab {
 namespace {
@@ -88,18 +89,7 @@ BENCHMARK(BM_FoldLocation)->Unit(benchmark::kMillisecond);
 // Fig. 2's in-plane scene (lambda = 5, Delta0 = 0.01, B = 2, C = 0.04): the swinging orbit branch
 // from Delta = 0.05 through the swinging -> tumbling transition to 0.5, with N = range(0) segments.
 // Precision of the UZ point: its bracket, and its distance to the same point located with N = 32.
-Scene fig2_in_plane(double Delta) {
-  Scene s;
-  s.parameters.lambda = 5;
-  s.parameters.Delta = Delta;
-  s.parameters.Delta0 = 0.01;
-  s.parameters.B = 2;
-  s.parameters.C = 0.04;
-  s.beta = M_PI / 2;
-  s.delta = 0;
-  s.L = 2;
-  return s;
-}
+Scene fig2_in_plane(double Delta) { return test::fig2_in_plane(Delta); }
 
 Branch in_plane_branch(const PeriodicOrbitProblem& pr, const ReducedForcedSystem& sys) {
   const double p0 = sys.start_parameter();

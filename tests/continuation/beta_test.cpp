@@ -23,26 +23,14 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "continuation/fig2_fixture.hpp"
 
 namespace rbcstab {
 namespace {
 
 constexpr double kTwoPi = 2 * M_PI;
 
-// Fig. 2's in-plane reduced scene (lambda = 5, Delta0 = 0.01, B = 2, C = 0.04) at excess area Delta.
-Scene fig2(double Delta, double beta = M_PI / 2) {
-  Scene s;
-  s.parameters.lambda = 5;
-  s.parameters.Delta = Delta;
-  s.parameters.Delta0 = 0.01;
-  s.parameters.B = 2;
-  s.parameters.C = 0.04;
-  s.beta = beta;
-  s.delta = 0;
-  s.L = 2;
-  s.model = ModelLevel::reduced;
-  return s;
-}
+Scene fig2(double Delta, double beta = M_PI / 2) { return test::fig2_in_plane(Delta, beta); }
 
 // The ladder identity against central differences of wigner_column itself. h = 1e-5: truncation
 // h^2 |D'''| / 6 <= 1e-10 l^3 / 6 and rounding eps / h ~ 2e-11, so 1e-8 holds up to l = 6.

@@ -16,6 +16,7 @@
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
+#include "continuation/fig2_fixture.hpp"
 
 namespace rbcstab {
 namespace {
@@ -373,20 +374,7 @@ TEST(OrbitOptionsTest, ValidateNamesTheField) {
 
 namespace rbcstab {
 namespace {
-Scene fig2_ip(double Delta) {
-  Scene s;
-  s.name = "fig2_ip";
-  s.parameters.lambda = 5;
-  s.parameters.Delta = Delta;
-  s.parameters.Delta0 = 0.01;
-  s.parameters.B = 2;
-  s.parameters.C = 0.04;
-  s.beta = M_PI / 2;
-  s.delta = 0;
-  s.L = 2;
-  s.model = ModelLevel::reduced;
-  return s;
-}
+Scene fig2_ip(double Delta) { return test::fig2_in_plane(Delta); }
 // The reduced system's analytic df/dp (through 1/Lambda and kappa) against central differences of
 // its rhs in p, for every parameter, at states off and on the sphere and several times. 1e-7
 // relative: the difference's truncation (~h^2, h ~ 6e-6) and rounding (~eps/h ~ 4e-11) errors.
