@@ -24,6 +24,13 @@ ContinuationParameter continuation_parameter_from_string(const std::string& name
                                          "Delta0, B, C, Lambda, S, beta");
 }
 
+namespace {
+[[noreturn]] void beta_is_a_scene_parameter() {
+  throw InvalidArgument("parameter", "parameter = beta is the rest shape's orientation, a scene parameter, not a "
+                                     "material one (internal: use the Scene overload)");
+}
+}  // namespace
+
 double get_parameter(const Parameters& p, ContinuationParameter q) {
   switch (q) {
     case ContinuationParameter::lambda: return p.lambda;
@@ -35,8 +42,7 @@ double get_parameter(const Parameters& p, ContinuationParameter q) {
     case ContinuationParameter::S: return p.S();
     case ContinuationParameter::beta: break;
   }
-  throw InvalidArgument("parameter", "parameter = beta is the rest shape's orientation, a scene parameter, not a "
-                                     "material one (internal: use the Scene overload)");
+  beta_is_a_scene_parameter();
 }
 
 Parameters with_parameter(Parameters p, ContinuationParameter q, double value) {
@@ -59,8 +65,7 @@ Parameters with_parameter(Parameters p, ContinuationParameter q, double value) {
       break;
     }
     case ContinuationParameter::beta:
-      throw InvalidArgument("parameter", "parameter = beta is the rest shape's orientation, a scene parameter, not a "
-                                         "material one (internal: use the Scene overload)");
+      beta_is_a_scene_parameter();
   }
   p.validate();
   return p;
