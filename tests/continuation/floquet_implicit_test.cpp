@@ -7,6 +7,7 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -219,12 +220,20 @@ TEST(SceneFloquet, InPlaneSceneMatchesExactMultipliers) {
 TEST(SceneFloquet, OddMRestShapeDoublesThePeriodAndBadInputIsRefused) {
   Scene s = test::ellipsoidal_scene(3, 1.0);  // tilted rest shape: g_{2,+-1} != 0, period 4 pi
   SceneFloquetOptions o;
-  o.relax_periods = 0;
+  o.relax_periods = 0;  // the initial shape: not on the orbit
   o.arpack.k = 4;
+  const SceneFloquetResult off = scene_floquet_multipliers(s, o);
+  EXPECT_EQ(off.status, SceneFloquetStatus::not_periodic) << off.periodicity_defect;
+  EXPECT_GT(off.periodicity_defect, o.max_periodicity_defect);
+  EXPECT_EQ(off.floquet.integrations, 0u);  // no monodromy of a non-orbit unless asked for
+  o.max_periodicity_defect = std::numeric_limits<double>::infinity();
   const SceneFloquetResult r = scene_floquet_multipliers(s, o);
   ASSERT_EQ(r.status, SceneFloquetStatus::converged) << r.message;
   EXPECT_DOUBLE_EQ(r.period, 2 * test::kTwoPi);
   o.relax_periods = -1;
+  EXPECT_THROW(scene_floquet_multipliers(s, o), InvalidArgument);
+  o.relax_periods = 0;
+  o.max_periodicity_defect = 0;
   EXPECT_THROW(scene_floquet_multipliers(s, o), InvalidArgument);
 }
 

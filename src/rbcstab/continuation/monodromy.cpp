@@ -209,6 +209,7 @@ FloquetResult leading_floquet_multipliers(const System& system, std::span<const 
 
 void SceneFloquetOptions::validate(int L) const {
   require(relax_periods >= 0 && relax_periods <= 1000000, "relax_periods", relax_periods, "in [0, 1e6]");
+  require(max_periodicity_defect > 0, "max_periodicity_defect", max_periodicity_defect, "> 0 (inf: any state)");
   relax.validate();
   monodromy.validate();
   arpack.validate(2 * ModeAmplitudes::count(L));
@@ -218,6 +219,7 @@ std::string to_string(SceneFloquetStatus s) {
   switch (s) {
     case SceneFloquetStatus::converged: return "converged";
     case SceneFloquetStatus::relaxation_failed: return "relaxation_failed";
+    case SceneFloquetStatus::not_periodic: return "not_periodic";
     case SceneFloquetStatus::arpack_failed: return "arpack_failed";
   }
   return "arpack_failed";
@@ -271,6 +273,13 @@ SceneFloquetResult scene_floquet_multipliers(const Scene& scene, const SceneFloq
     n += y0[i] * y0[i];
   }
   out.periodicity_defect = n > 0 ? std::sqrt(d / n) : std::sqrt(d);
+  if (!(out.periodicity_defect <= options.max_periodicity_defect)) {
+    out.status = SceneFloquetStatus::not_periodic;
+    out.message = "the state at t0 = " + std::to_string(out.t0) + " is not periodic (defect " +
+                  std::to_string(out.periodicity_defect) + " > " + std::to_string(options.max_periodicity_defect) +
+                  "): relax for more periods, or accept the state with a larger max_periodicity_defect";
+    return out;
+  }
   out.floquet = leading_floquet_multipliers(full, y0, out.t0, mo, options.arpack);
   if (out.floquet.arpack.status != ArpackStatus::converged) {
     out.status = SceneFloquetStatus::arpack_failed;

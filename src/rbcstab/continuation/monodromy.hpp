@@ -92,6 +92,10 @@ struct SceneFloquetOptions {
   // Relaxation accuracy: the multipliers belong to the state actually reached.
   IntegratorOptions relax = {Stepper::rk8pd, 1e-11, 1e-13};
   MonodromyOptions monodromy;  // its period is replaced by the scene's forcing period
+  // A state farther than this from periodic (|y(t0 + T) - y(t0)| / |y(t0)|) is not on an orbit and its
+  // monodromy's eigenvalues are not Floquet multipliers: status not_periodic, no ARPACK run (relax
+  // longer). +inf accepts any state (the monodromy of a trajectory segment).
+  double max_periodicity_defect = 1e-6;
   ArpackOptions arpack = [] {
     ArpackOptions a;
     a.k = 12;       // the leading dozen (at the Fig. 3 in-plane orbit the unstable l = 4 family alone has 18)
@@ -101,7 +105,7 @@ struct SceneFloquetOptions {
   void validate(int L) const;  // throws InvalidArgument naming the field (arpack against n at truncation L)
 };
 
-enum class SceneFloquetStatus { converged, relaxation_failed, arpack_failed };
+enum class SceneFloquetStatus { converged, relaxation_failed, not_periodic, arpack_failed };
 std::string to_string(SceneFloquetStatus s);
 
 struct SceneFloquetResult {
