@@ -517,6 +517,17 @@ int run(ContinueOptions& o) {
                                        ": must be " + to_string(level) + " (or auto)");
   const ContinuationParameter q = continuation_parameter_from_string(o.parameter);
   set_bounds(o.engine, q, o.p_min, o.p_max);
+  {
+    // Every branch starts at the scene's value (modal-orbit: its total excess area, as below).
+    const double p_start = get_parameter(modal_orbit ? total_area_scene(sf.scene) : sf.scene, q);
+    if (!(p_start >= o.engine.p_min && p_start <= o.engine.p_max)) {
+      std::ostringstream m;
+      m << std::setprecision(10) << "the branch starts at the scene's " << o.parameter << " = " << p_start
+        << ", outside [--min, --max] = [" << o.engine.p_min << ", " << o.engine.p_max
+        << "]: widen the range or change the scene";
+      throw InvalidArgument("min", m.str());
+    }
+  }
   o.engine.direction = o.direction == "forward" ? Direction::forward
                        : o.direction == "backward" ? Direction::backward
                                                    : Direction::both;

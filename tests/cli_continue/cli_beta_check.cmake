@@ -197,6 +197,8 @@ elseif(CASE STREQUAL "beta_bad_input")
   expect_bad_input("curve = LP" continue --kind modal-orbit --parameter lambda --curve LP --parameter2 B)
   expect_bad_input("parameter2" continue --kind orbit --parameter Delta --curve NS)
   expect_bad_input("parameter2 = beta" continue --kind orbit --parameter beta --curve NS --parameter2 beta)
+  # A range that excludes the scene's own value (beta = pi/2) names --min/--max and the start value.
+  expect_bad_input("outside [--min, --max] = [0, 1]" continue --kind orbit --parameter beta --min 0 --max 1 ${FIG2})
 else()
   fail("unknown case")
 endif()
