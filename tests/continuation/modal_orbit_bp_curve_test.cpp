@@ -1,0 +1,216 @@
+// The Z2-reduced BP curve of the in-plane ellipsoidal orbit (modal_orbit_bp_curve.hpp), against
+//  - a 1-D bisection of sigma_bar(C) = sigma_3^c(B/C) with sigma_bar from a long direct simulation of
+//    the reduced model (time average, no shooting, no quadrature state);
+//  - the modal orbit's own Floquet multipliers (variational equations of ModalForcedSystem at L = 4):
+//    the a_3 multiplier is 1 on the curve;
+//  - the generic BP system (BranchPointCurveProblem over the modal shooting problem, L = 4);
+//  - the in-plane asymptotic criterion of sweep/trace (orbit_sigma_average: trapezoid of sigma_R on
+//    ReducedModel::observe samples): mu_3 = Upsilon_3(<sigma_R>) = 0 on the curve.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <vector>
+
+#include "rbcstab/continuation/branch_point_curve.hpp"
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/modal_orbit.hpp"
+#include "rbcstab/continuation/modal_orbit_bp_curve.hpp"
+#include "rbcstab/continuation/two_parameter.hpp"
+#include "rbcstab/integrate/integrator.hpp"
+#include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/sweep/trace.hpp"
+
+namespace rbcstab {
+namespace {
+
+constexpr double kTwoPi = 2 * M_PI;
+
+// The paper's in-plane scene (Fig. 2 parameters), rest shape in the flow plane.
+Scene in_plane(double lambda, double B, double C, int L) {
+  Scene s;
+  s.name = "zbp";
+  s.parameters.lambda = lambda;
+  s.parameters.Delta = 1;
+  s.parameters.Delta0 = 0.01;
+  s.parameters.B = B;
+  s.parameters.C = C;
+  s.beta = M_PI / 2;
+  s.L = L;
+  s.model = ModelLevel::modal;
+  return s;
+}
+
+// <sigma> on the reduced attractor by brute force: relax 150 forcing periods from the scene's own state,
+// then average sigma over 20 periods by the trapezoid rule on 128 samples per period (spectrally accurate
+// for a periodic integrand). Independent of the curve's shooting and quadrature.
+double simulated_sigma_bar(const Scene& s) {
+  const ReducedModel m(s.parameters, oriented_initial_state(s));
+  const int relax = 150, periods = 20, per = 128;
+  std::vector<double> grid;
+  grid.push_back(relax * kTwoPi);
+  for (int k = 1; k <= periods * per; ++k) grid.push_back(relax * kTwoPi + kTwoPi * k / per);
+  IntegratorOptions o;
+  o.stepper = Stepper::rk8pd;
+  o.rtol = 1e-12;
+  o.atol = 1e-13;
+  double sum = 0;
+  bool first = true;
+  const IntegrationResult r = integrate(m, m.initial_state(), 0.0, grid, o, [&](double t, std::span<const double> y) {
+    if (first) {  // the sample at the end of the relaxation equals the last one of the window (periodic)
+      first = false;
+      return;
+    }
+    sum += m.sigma_from_mu(m.mu(t, y));
+  });
+  EXPECT_EQ(r.status, IntegrationStatus::success);
+  return sum / (periods * per);
+}
+
+// The root in C of simulated_sigma_bar - sigma_3^c(B/C) by bisection on [lo, hi].
+double bisect_C(double lambda, double B, double lo, double hi) {
+  auto h = [&](double C) { return simulated_sigma_bar(in_plane(lambda, B, C, 4)) - sigma_critical(3, B / C); };
+  double hlo = h(lo);
+  EXPECT_LT(hlo * h(hi), 0) << "no sign change in [" << lo << ", " << hi << "]";
+  for (int i = 0; i < 45 && hi - lo > 1e-13; ++i) {
+    const double mid = 0.5 * (lo + hi), hm = h(mid);
+    if (hm * hlo > 0) {
+      lo = mid;
+      hlo = hm;
+    } else {
+      hi = mid;
+    }
+  }
+  return 0.5 * (lo + hi);
+}
+
+// The curve's start at (C_guess, B): the reduced orbit at C_guess, then Newton on the curve system.
+NewtonResult curve_point(const ModalOrbitBranchPointCurve& curve, const Scene& s, double C_guess, double B) {
+  const Scene at = with_parameter(with_parameter(s, ContinuationParameter::B, B), ContinuationParameter::C, C_guess);
+  const ReducedForcedSystem red(at, ContinuationParameter::C);
+  const PeriodicOrbitProblem rp(red);
+  const NewtonResult rn = solve_fixed_parameter(rp, rp.shooting_guess(red.relaxed_state(200), C_guess), C_guess);
+  EXPECT_TRUE(rn.converged);
+  Eigen::VectorXd X(curve.dimension());
+  X << rn.x, C_guess;
+  return solve_fixed_parameter(curve, X, B);
+}
+
+// Newton from a guess 20 % off lands on the bisection root of the brute-force average, and the curve
+// continued in B over [1.5, 2.5] matches the bisection at its ends and middle. Tolerance 1e-8 relative
+// in C: the time average is exact to ~1e-11 (rtol 1e-12, relaxation e^{-150 * 2 pi * decay} negligible:
+// measured multipliers < 0.5), and dh/dC ~ 300 turns that into ~1e-13 in C; the curve's residual
+// is 1e-12.
+TEST(ModalOrbitBranchPointCurve, MatchesBisectionOfLongSimulationAverage) {
+  const double lambda = 1;
+  const Scene s = in_plane(lambda, 2, 0.08, 4);
+  const ModalOrbitBranchPointCurve curve(s, ContinuationParameter::C, ContinuationParameter::B, 3);
+  const NewtonResult n = curve_point(curve, s, 0.08, 2.0);
+  ASSERT_TRUE(n.converged);
+  const Eigen::Index k = curve.dimension() - 1;
+  const double C_bisect = bisect_C(lambda, 2.0, 0.05, 0.1);
+  std::printf("B = 2: curve C = %.15f, bisection C = %.15f (Newton %d iterations)\n", n.x[k], C_bisect, n.iterations);
+  EXPECT_NEAR(n.x[k], C_bisect, 1e-8 * C_bisect);
+
+  ContinuationOptions o;
+  o.p_min = 1.5;
+  o.p_max = 2.5;
+  o.direction = Direction::both;
+  o.initial_step = 0.05;
+  o.max_step = 0.1;
+  const Branch b = continue_branch(curve, n.x, 2.0, o);
+  ASSERT_EQ(b.status, ContinuationStatus::completed) << b.message;
+  ASSERT_GE(b.points.size(), 5u);
+  EXPECT_NEAR(b.points.front().p, 1.5, 1e-12);
+  EXPECT_NEAR(b.points.back().p, 2.5, 1e-12);
+  for (const std::size_t i : {std::size_t{0}, b.points.size() / 2, b.points.size() - 1}) {
+    const auto& pt = b.points[i];
+    const double C = pt.parameters[0], B = pt.parameters[1];
+    const double Cb = bisect_C(lambda, B, 0.8 * C, 1.25 * C);
+    std::printf("B = %.6f: curve C = %.15f, bisection C = %.15f\n", B, C, Cb);
+    EXPECT_NEAR(C, Cb, 1e-8 * Cb) << "B = " << B;
+  }
+  // Every point: the orbits are stable apart from the critical multiplier 1 (mode 3), which the engine
+  // counts as neutral (|mu| - 1 < stability_tol).
+  for (const auto& pt : b.points) EXPECT_EQ(pt.n_unstable, 0) << "B = " << pt.p;
+}
+
+// The modal orbit's Floquet multipliers (ModalForcedSystem variational equations, L = 4) at curve
+// points: the orbit embedded with a_l = 0, v~ = 0 solves the modal shooting system, and its multipliers
+// contain 1 (mode 3's) to 1e-8 (shooting at rtol 1e-12 over 8 segments; the tests of modal_orbit.hpp
+// measure the decoupled multipliers to 1e-7 relative, ~1e-9 here).
+TEST(ModalOrbitBranchPointCurve, ModalMultiplierOfModeLIsOneOnTheCurve) {
+  for (double lambda : {1.0, 5.0}) {
+    const Scene s = in_plane(lambda, 2, 0.08, 4);
+    const ModalOrbitBranchPointCurve curve(s, ContinuationParameter::C, ContinuationParameter::B, 3);
+    for (double B : {1.6, 2.4}) {
+      const NewtonResult n = curve_point(curve, s, lambda == 1 ? 0.05 * B : 0.048 * B, B);
+      ASSERT_TRUE(n.converged) << "lambda " << lambda << " B " << B;
+      const Eigen::Index k = curve.dimension() - 1;
+      const double C = n.x[k];
+      const Scene at = with_parameter(with_parameter(s, ContinuationParameter::B, B), ContinuationParameter::C, C);
+      const ModalForcedSystem sys(at, ContinuationParameter::C);
+      const PeriodicOrbitProblem mp(sys);
+      const Eigen::Index nm = sys.dimension();
+      Eigen::VectorXd Xm = Eigen::VectorXd::Zero(nm * mp.segments());
+      for (int j = 0; j < mp.segments(); ++j) Xm.segment<3>(nm * j) = n.x.segment<3>(3 * j);
+      Eigen::VectorXd F;
+      mp.residual(Xm, C, F);
+      EXPECT_LT(F.norm(), 1e-10) << "the embedded orbit solves the modal shooting system";
+      const Floquet f = mp.floquet(Xm, C);
+      double closest = 1e300;
+      for (Eigen::Index i = 0; i < f.multipliers.size(); ++i) closest = std::min(closest, std::abs(f.multipliers[i] - 1.0));
+      std::printf("lambda %g B %g C %.12f: closest modal multiplier to 1 at %.2e\n", lambda, B, C, closest);
+      EXPECT_LT(closest, 1e-8);
+      // The curve's own spectrum (closed-form decoupled multipliers) matches the modal Floquet set.
+      const Eigen::VectorXcd mine = curve.spectrum(n.x, B);
+      ASSERT_EQ(mine.size(), f.multipliers.size());
+      for (Eigen::Index i = 0; i < mine.size(); ++i) {
+        double d = 1e300;
+        for (Eigen::Index j = 0; j < mine.size(); ++j) d = std::min(d, std::abs(mine[i] - f.multipliers[j]));
+        EXPECT_LT(d, 1e-7 * std::max(1.0, std::abs(mine[i]))) << "multiplier " << mine[i];
+      }
+    }
+  }
+}
+
+// The in-plane asymptotic criterion that sweep/trace traces (mu_3 = Upsilon_3(<sigma_R>), <sigma_R> the
+// trapezoid average over the attracting orbit, orbit_sigma_average) vanishes on the curve: |<sigma_R> -
+// sigma_3^c| < 1e-8 (both period means are accurate to ~1e-11 at rtol 1e-12), and asymptotic_verdict
+// flips from stable to unstable (l = 3) across the curve (C * (1 +- 1e-4)).
+TEST(ModalOrbitBranchPointCurve, IsTheInPlaneAsymptoticBoundaryOfTrace) {
+  const double lambda = 5;
+  const Scene s = in_plane(lambda, 2, 0.1, 4);
+  const ModalOrbitBranchPointCurve curve(s, ContinuationParameter::C, ContinuationParameter::B, 3);
+  for (double B : {1.5, 2.0, 3.0}) {
+    const NewtonResult n = curve_point(curve, s, 0.05 * B, B);
+    ASSERT_TRUE(n.converged) << "B " << B;
+    const double C = n.x[curve.dimension() - 1];
+    const Scene at = with_parameter(with_parameter(s, ContinuationParameter::B, B), ContinuationParameter::C, C);
+    const OrbitSigmaAverage avg = orbit_sigma_average(at);
+    ASSERT_TRUE(avg.ok) << avg.reason;
+    std::printf("B %g: C %.12f, trace <sigma_R> - sigma_3^c = %.2e\n", B, C, avg.sigma_R - sigma_critical(3, B / C));
+    EXPECT_NEAR(avg.sigma_R, sigma_critical(3, B / C), 1e-8);
+    const AsymptoticVerdict above = asymptotic_verdict(with_parameter(at, ContinuationParameter::C, C * (1 + 1e-4)));
+    const AsymptoticVerdict below = asymptotic_verdict(with_parameter(at, ContinuationParameter::C, C * (1 - 1e-4)));
+    EXPECT_FALSE(above.unstable);
+    EXPECT_TRUE(below.unstable);
+    EXPECT_EQ(below.l, 3);
+  }
+}
+
+// Bad input names the parameter.
+TEST(ModalOrbitBranchPointCurve, RejectsCoupledPairsModesAndTiltedRestShapes) {
+  const Scene s = in_plane(1, 2, 0.08, 4);
+  EXPECT_THROW(ModalOrbitBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::S, 3), InvalidArgument);
+  EXPECT_THROW(ModalOrbitBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::B, 5), InvalidArgument);
+  EXPECT_THROW(ModalOrbitBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::B, 2), InvalidArgument);
+  Scene tilted = s;
+  tilted.beta = 1.0;
+  EXPECT_THROW(ModalOrbitBranchPointCurve(tilted, ContinuationParameter::C, ContinuationParameter::B, 3), InvalidArgument);
+  EXPECT_THROW(ModalOrbitBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::beta, 3), InvalidArgument);
+}
+
+}  // namespace
+}  // namespace rbcstab
