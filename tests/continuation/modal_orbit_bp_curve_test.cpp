@@ -200,6 +200,71 @@ TEST(ModalOrbitBranchPointCurve, IsTheInPlaneAsymptoticBoundaryOfTrace) {
   }
 }
 
+// The generic BP system (BranchPointCurveProblem over the modal shooting problem, L = 4, 2 segments:
+// 2 n + 2 = 30 unknowns, its own psi/mu unfolding) continues the same curve: the one-parameter modal
+// orbit run in C from the embedded ellipsoidal orbit locates the a_3 -> -a_3 BP, the generic curve is
+// continued a few steps in B, and at each of its points the reduced curve's Newton (8 segments) gives the
+// same C to 1e-8 relative (both solve to residual 1e-12 with rtol 1e-12 shooting; measured ~1e-12).
+TEST(ModalOrbitBranchPointCurve, MatchesGenericBranchPointSystemAtL4) {
+  const double lambda = 1, C0 = 0.07, B0 = 2;
+  const Scene s = in_plane(lambda, B0, C0, 4);
+  OrbitOptions oo;
+  oo.segments = 2;
+  const ModalForcedSystem2 sys2(s, ContinuationParameter::C, ContinuationParameter::B);
+  const OrbitTwoParameterProblem base(sys2, oo);
+  const SliceProblem slice(base, B0);
+  // The ellipsoidal modal orbit: the reduced orbit embedded with a = 0, v~ = 0.
+  const ModalOrbitBranchPointCurve mine(s, ContinuationParameter::C, ContinuationParameter::B, 3);
+  const ReducedForcedSystem red(s, ContinuationParameter::C);
+  const PeriodicOrbitProblem rp(red);
+  const NewtonResult rn = solve_fixed_parameter(rp, rp.shooting_guess(red.relaxed_state(200), C0), C0);
+  ASSERT_TRUE(rn.converged);
+  Eigen::VectorXd x0 = Eigen::VectorXd::Zero(sys2.dimension());
+  x0.head(3) = rp.state_at_zero(rn.x);
+  const PeriodicOrbitProblem mp(sys2.at(B0), oo);
+  const NewtonResult mn = solve_fixed_parameter(slice, mp.shooting_guess(x0, C0), C0);
+  ASSERT_TRUE(mn.converged);
+  ContinuationOptions o;
+  o.p_min = 0.055;
+  o.p_max = 0.075;
+  o.direction = Direction::backward;
+  o.initial_step = 0.002;
+  o.max_step = 0.005;
+  const Branch one = continue_branch(slice, mn.x, C0, o);
+  const SpecialPoint* bp = nullptr;
+  for (const auto& sp : one.special_points)
+    if (sp.type == SpecialPointType::BP && sp.status == LocationStatus::located) bp = &sp;
+  ASSERT_NE(bp, nullptr) << "no located BP on the modal ellipsoidal orbit branch";
+  // The BP's state is the ellipsoidal orbit (a_3 = a_4 = 0, v~ = 0) and its mode is 3.
+  EXPECT_LT(bp->x.segment(3, 4).norm(), 1e-10);
+  const BranchPointCurveProblem generic(base, *bp, B0);
+  ContinuationOptions oc;
+  oc.p_min = 1.9;
+  oc.p_max = 2.1;
+  oc.direction = Direction::both;
+  oc.initial_step = 0.05;
+  oc.max_step = 0.05;
+  oc.max_points = 4;
+  const Branch g = continue_branch(generic, generic.start(), B0, oc);
+  ASSERT_GE(g.points.size(), 5u);
+  int compared = 0;
+  for (const auto& pt : g.points) {
+    const double C = pt.parameters[0], B = pt.parameters[1];
+    const NewtonResult n = curve_point(mine, s, C, B);
+    ASSERT_TRUE(n.converged);
+    const double Cm = n.x[mine.dimension() - 1];
+    std::printf("B %.6f: generic C = %.15f, reduced C = %.15f\n", B, C, Cm);
+    EXPECT_NEAR(Cm, C, 1e-8 * C) << "B = " << B;
+    ++compared;
+  }
+  EXPECT_GE(compared, 5);
+  // The critical mode read from sigma_bar at the BP (the CLI's choice): 3.
+  const Eigen::Index n = mine.dimension() - 1;
+  const NewtonResult n0 = curve_point(mine, s, bp->p, B0);
+  ASSERT_TRUE(n0.converged);
+  EXPECT_EQ(ellipsoidal_orbit_critical_mode(mine.parameters(bp->p, B0), 4, mine.sigma_bar(n0.x.head(n), bp->p, B0)), 3);
+}
+
 // Bad input names the parameter.
 TEST(ModalOrbitBranchPointCurve, RejectsCoupledPairsModesAndTiltedRestShapes) {
   const Scene s = in_plane(1, 2, 0.08, 4);
