@@ -21,6 +21,7 @@
 #include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
+#include "rbcstab/continuation/modal_orbit_bp_curve.hpp"
 #include "rbcstab/continuation/ns_curve.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/core/error.hpp"
@@ -307,12 +308,15 @@ int report_curve(const ContinueOptions& o, const SceneFile& sf, const Branch& on
   };
   if (!o.csv.empty()) {
     std::ostringstream ss;
+    // The ellipsoidal-orbit BP curve also reports sigma_bar and the critical mode.
+    const bool zbp = !c.points.empty() && state(c.points.front().x, c.points.front().p).contains("sigma_bar");
     ss << std::setprecision(17) << o.parameter << ',' << o.parameter2 << ",r,Psi" << (omega ? ",omega" : "")
-       << ",stable,n_unstable\n";
+       << (zbp ? ",sigma_bar,mode" : "") << ",stable,n_unstable\n";
     for (const auto& pt : c.points) {
       const nlohmann::json j = state(pt.x, pt.p);
       ss << pt.parameters[0] << ',' << pt.parameters[1] << ',' << j["r"].get<double>() << ',' << j["Psi"].get<double>();
       if (omega) ss << ',' << j["omega"].get<double>();
+      if (zbp) ss << ',' << j["sigma_bar"].get<double>() << ',' << j["mode"].get<int>();
       ss << ',' << (pt.stable ? 1 : 0) << ',' << pt.n_unstable << '\n';
     }
     write_file_atomic(o.csv, ss.str());
@@ -422,6 +426,32 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
                         "multipliers", nullptr);
   };
   if (o.kind == "orbit") return cycle_curve(ReducedForcedSystem2(scene, q1, q2));
+  if (o.kind == "modal-orbit" && o.curve == "BP") {
+    // A symmetry-breaking BP of the in-plane ellipsoidal orbit (v~ = 0 and every a_l = 0 at the point):
+    // the Z2-reduced system (reduced shooting + sigma_bar = sigma_l^c, 3 N + 1 unknowns, cost independent
+    // of L). Any other BP (e.g. of the post-instability orbit) keeps the generic system.
+    const Eigen::Index nm = 5 + (scene.L - 2);
+    const Eigen::VectorXd x0 = sp->x.head(nm);
+    const bool in_plane = std::abs(std::sin(2 * scene.beta)) < 1e-12 || scene.parameters.Delta0 == 0 ||
+                          !std::isfinite(scene.parameters.C);
+    if (in_plane && q1 != ContinuationParameter::beta && q2 != ContinuationParameter::beta &&
+        x0.tail(nm - 3).cwiseAbs().maxCoeff() <= 1e-8) {
+      const ModalOrbitBranchPointCurve probe(scene, q1, q2, 3, o.orbit);
+      const Eigen::VectorXd X0 = probe.start_from_modal(sp->x, sp->p);
+      const Eigen::Index n = X0.size() - 1;
+      const int l = ellipsoidal_orbit_critical_mode(probe.parameters(sp->p, p2_0), scene.L,
+                                                    probe.sigma_bar(X0.head(n), sp->p, p2_0));
+      const ModalOrbitBranchPointCurve curve(scene, q1, q2, l, o.orbit);
+      const DescribeCurve zbp_of = [&](const Eigen::VectorXd& X, double p1, double p2) {
+        nlohmann::json j = polar_json(X.head(3));
+        j["sigma_bar"] = number_or_null(curve.sigma_bar(X, p1, p2));
+        j["mode"] = l;
+        return j;
+      };
+      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, X0, p2_0, engine), n, zbp_of, "multipliers",
+                          nullptr);
+    }
+  }
   if (o.kind == "modal-orbit") return cycle_curve(ModalForcedSystem2(scene, q1, q2));
   if (o.kind == "modal") {
     const SceneTwoParameterProblem<ModalEquilibriumProblem> base(scene, q1, q2);
