@@ -8,6 +8,7 @@
 //    ReducedModel::observe samples): mu_3 = Upsilon_3(<sigma_R>) = 0 on the curve.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -263,6 +264,42 @@ TEST(ModalOrbitBranchPointCurve, MatchesGenericBranchPointSystemAtL4) {
   const NewtonResult n0 = curve_point(mine, s, bp->p, B0);
   ASSERT_TRUE(n0.converged);
   EXPECT_EQ(ellipsoidal_orbit_critical_mode(mine.parameters(bp->p, B0), 4, mine.sigma_bar(n0.x.head(n), bp->p, B0)), 3);
+}
+
+// sweep/trace's traced in-plane asymptotic boundary (trace_boundary, the whole pipeline: starts, arclength
+// tracing of mu_l = 0 on the (ln B, ln C) plane) lies on the curve where l = 3 is the active mode: at each
+// traced point's B the curve's C equals the traced one to 1e-8 in ln C (trace solves its criterion to
+// 1e-10 in Upsilon_3, |dUpsilon_3/d ln C| ~ 10 here, so ~1e-11; the curve's residual is 1e-12).
+TEST(ModalOrbitBranchPointCurve, ContainsTheTracedInPlaneBoundary) {
+  const Scene s = in_plane(5, 2, 0.1, 4);
+  DiagramSpec plane;
+  plane.x = {Axis::lnB, std::log(1.5), std::log(3.0), 3};
+  plane.y = {Axis::lnC, std::log(0.05), std::log(0.2), 3};
+  TraceOptions o;
+  o.lines = 0;
+  o.samples = 8;
+  o.bisections = 30;
+  o.max_step = 0.2;
+  const TraceResult t = trace_boundary(s, plane, o);
+  ASSERT_FALSE(t.curves.empty()) << (t.notes.empty() ? "" : t.notes.front());
+  const ModalOrbitBranchPointCurve curve(s, ContinuationParameter::C, ContinuationParameter::B, 3);
+  int compared = 0;
+  double worst = 0;
+  for (const TraceCurve& c : t.curves) {
+    if (c.l != 3) continue;
+    for (const TracePoint& p : c.points) {
+      const double B = std::exp(p.x);
+      const NewtonResult n = curve_point(curve, s, std::exp(p.y), B);
+      ASSERT_TRUE(n.converged) << "B " << B;
+      const double lnC = std::log(n.x[curve.dimension() - 1]);
+      EXPECT_NEAR(lnC, p.y, 1e-8) << "B = " << B;
+      worst = std::max(worst, std::abs(lnC - p.y));
+      ++compared;
+    }
+  }
+  std::printf("compared %d traced points (%zu evaluations, %.2f s): max |ln C - traced| = %.2e\n", compared,
+              t.evaluations, t.seconds, worst);
+  EXPECT_GE(compared, 3);
 }
 
 // Bad input names the parameter.
