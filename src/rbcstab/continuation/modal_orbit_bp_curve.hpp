@@ -36,6 +36,9 @@ class ModalOrbitBranchPointCurve final : public ContinuationProblem {
   // with Delta0 > 0, C finite): only without it is v~ = 0 invariant and the ellipsoidal orbit the reduced one.
   ModalOrbitBranchPointCurve(const Scene& scene, ContinuationParameter p1, ContinuationParameter p2, int l,
                              const OrbitOptions& options = {});
+  // base_ refers to system_: not copyable.
+  ModalOrbitBranchPointCurve(const ModalOrbitBranchPointCurve&) = delete;
+  ModalOrbitBranchPointCurve& operator=(const ModalOrbitBranchPointCurve&) = delete;
   Eigen::Index dimension() const override { return n_ + 1; }
   void residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const override;
   void jacobian(const Eigen::VectorXd& X, double p2, Eigen::MatrixXd& J) const override;
