@@ -22,26 +22,14 @@
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/sweep/trace.hpp"
+#include "continuation/ellipsoidal_orbit_bp_fixture.hpp"
 
 namespace rbcstab {
 namespace {
 
 constexpr double kTwoPi = 2 * M_PI;
 
-// The paper's in-plane scene (Fig. 2 parameters), rest shape in the flow plane.
-Scene in_plane(double lambda, double B, double C, int L) {
-  Scene s;
-  s.name = "zbp";
-  s.parameters.lambda = lambda;
-  s.parameters.Delta = 1;
-  s.parameters.Delta0 = 0.01;
-  s.parameters.B = B;
-  s.parameters.C = C;
-  s.beta = M_PI / 2;
-  s.L = L;
-  s.model = ModelLevel::modal;
-  return s;
-}
+using test::curve_point;
 
 // <sigma> on the reduced attractor by brute force: relax 150 forcing periods from the scene's own state,
 // then average sigma over 20 periods by the trapezoid rule on 128 samples per period (spectrally accurate
@@ -71,7 +59,7 @@ double simulated_sigma_bar(const Scene& s) {
 
 // The root in C of simulated_sigma_bar - sigma_3^c(B/C) by bisection on [lo, hi].
 double bisect_C(double lambda, double B, double lo, double hi) {
-  auto h = [&](double C) { return simulated_sigma_bar(in_plane(lambda, B, C, 4)) - sigma_critical(3, B / C); };
+  auto h = [&](double C) { return simulated_sigma_bar(test::in_plane_modal(lambda, B, C, 4)) - sigma_critical(3, B / C); };
   double hlo = h(lo);
   EXPECT_LT(hlo * h(hi), 0) << "no sign change in [" << lo << ", " << hi << "]";
   for (int i = 0; i < 45 && hi - lo > 1e-13; ++i) {
@@ -86,18 +74,6 @@ double bisect_C(double lambda, double B, double lo, double hi) {
   return 0.5 * (lo + hi);
 }
 
-// The curve's start at (C_guess, B): the reduced orbit at C_guess, then Newton on the curve system.
-NewtonResult curve_point(const ModalOrbitBranchPointCurve& curve, const Scene& s, double C_guess, double B) {
-  const Scene at = with_parameter(with_parameter(s, ContinuationParameter::B, B), ContinuationParameter::C, C_guess);
-  const ReducedForcedSystem red(at, ContinuationParameter::C);
-  const PeriodicOrbitProblem rp(red);
-  const NewtonResult rn = solve_fixed_parameter(rp, rp.shooting_guess(red.relaxed_state(200), C_guess), C_guess);
-  EXPECT_TRUE(rn.converged);
-  Eigen::VectorXd X(curve.dimension());
-  X << rn.x, C_guess;
-  return solve_fixed_parameter(curve, X, B);
-}
-
 // Newton from a guess 20 % off lands on the bisection root of the brute-force average, and the curve
 // continued in B over [1.5, 2.5] matches the bisection at its ends and middle. Tolerance 1e-8 relative
 // in C: the time average is exact to ~1e-11 (rtol 1e-12, relaxation e^{-150 * 2 pi * decay} negligible:
@@ -105,7 +81,7 @@ NewtonResult curve_point(const ModalOrbitBranchPointCurve& curve, const Scene& s
 // is 1e-12.
 TEST(ModalOrbitBranchPointCurve, MatchesBisectionOfLongSimulationAverage) {
   const double lambda = 1;
-  const Scene s = in_plane(lambda, 2, 0.08, 4);
+  const Scene s = test::in_plane_modal(lambda, 2, 0.08, 4);
   const ModalOrbitBranchPointCurve curve(s, ContinuationParameter::C, ContinuationParameter::B, 3);
   const NewtonResult n = curve_point(curve, s, 0.08, 2.0);
   ASSERT_TRUE(n.converged);
@@ -143,7 +119,7 @@ TEST(ModalOrbitBranchPointCurve, MatchesBisectionOfLongSimulationAverage) {
 // measure the decoupled multipliers to 1e-7 relative, ~1e-9 here).
 TEST(ModalOrbitBranchPointCurve, ModalMultiplierOfModeLIsOneOnTheCurve) {
   for (double lambda : {1.0, 5.0}) {
-    const Scene s = in_plane(lambda, 2, 0.08, 4);
+    const Scene s = test::in_plane_modal(lambda, 2, 0.08, 4);
     const ModalOrbitBranchPointCurve curve(s, ContinuationParameter::C, ContinuationParameter::B, 3);
     for (double B : {1.6, 2.4}) {
       const NewtonResult n = curve_point(curve, s, lambda == 1 ? 0.05 * B : 0.048 * B, B);
@@ -182,7 +158,7 @@ TEST(ModalOrbitBranchPointCurve, ModalMultiplierOfModeLIsOneOnTheCurve) {
 // flips from stable to unstable (l = 3) across the curve (C * (1 +- 1e-4)).
 TEST(ModalOrbitBranchPointCurve, IsTheInPlaneAsymptoticBoundaryOfTrace) {
   const double lambda = 5;
-  const Scene s = in_plane(lambda, 2, 0.1, 4);
+  const Scene s = test::in_plane_modal(lambda, 2, 0.1, 4);
   const ModalOrbitBranchPointCurve curve(s, ContinuationParameter::C, ContinuationParameter::B, 3);
   for (double B : {1.5, 2.0, 3.0}) {
     const NewtonResult n = curve_point(curve, s, 0.05 * B, B);
@@ -208,34 +184,16 @@ TEST(ModalOrbitBranchPointCurve, IsTheInPlaneAsymptoticBoundaryOfTrace) {
 // same C to 1e-8 relative (both solve to residual 1e-12 with rtol 1e-12 shooting; measured ~1e-12).
 TEST(ModalOrbitBranchPointCurve, MatchesGenericBranchPointSystemAtL4) {
   const double lambda = 1, C0 = 0.07, B0 = 2;
-  const Scene s = in_plane(lambda, B0, C0, 4);
+  const Scene s = test::in_plane_modal(lambda, B0, C0, 4);
   OrbitOptions oo;
   oo.segments = 2;
   const ModalForcedSystem2 sys2(s, ContinuationParameter::C, ContinuationParameter::B);
   const OrbitTwoParameterProblem base(sys2, oo);
-  const SliceProblem slice(base, B0);
-  // The ellipsoidal modal orbit: the reduced orbit embedded with a = 0, v~ = 0.
   const ModalOrbitBranchPointCurve mine(s, ContinuationParameter::C, ContinuationParameter::B, 3);
-  const ReducedForcedSystem red(s, ContinuationParameter::C);
-  const PeriodicOrbitProblem rp(red);
-  const NewtonResult rn = solve_fixed_parameter(rp, rp.shooting_guess(red.relaxed_state(200), C0), C0);
-  ASSERT_TRUE(rn.converged);
-  Eigen::VectorXd x0 = Eigen::VectorXd::Zero(sys2.dimension());
-  x0.head(3) = rp.state_at_zero(rn.x);
-  const PeriodicOrbitProblem mp(sys2.at(B0), oo);
-  const NewtonResult mn = solve_fixed_parameter(slice, mp.shooting_guess(x0, C0), C0);
-  ASSERT_TRUE(mn.converged);
-  ContinuationOptions o;
-  o.p_min = 0.055;
-  o.p_max = 0.075;
-  o.direction = Direction::backward;
-  o.initial_step = 0.002;
-  o.max_step = 0.005;
-  const Branch one = continue_branch(slice, mn.x, C0, o);
-  const SpecialPoint* bp = nullptr;
-  for (const auto& sp : one.special_points)
-    if (sp.type == SpecialPointType::BP && sp.status == LocationStatus::located) bp = &sp;
-  ASSERT_NE(bp, nullptr) << "no located BP on the modal ellipsoidal orbit branch";
+  const test::EllipsoidalOrbitBP located = test::locate_ellipsoidal_orbit_bp(sys2, s, 0.055, oo);
+  ASSERT_TRUE(located.start_converged);
+  ASSERT_TRUE(located.bp.has_value()) << "no located BP on the modal ellipsoidal orbit branch";
+  const SpecialPoint* bp = &*located.bp;
   // The BP's state is the ellipsoidal orbit (a_3 = a_4 = 0, v~ = 0) and its mode is 3.
   EXPECT_LT(bp->x.segment(3, 4).norm(), 1e-10);
   const BranchPointCurveProblem generic(base, *bp, B0);
@@ -254,7 +212,6 @@ TEST(ModalOrbitBranchPointCurve, MatchesGenericBranchPointSystemAtL4) {
     const NewtonResult n = curve_point(mine, s, C, B);
     ASSERT_TRUE(n.converged);
     const double Cm = n.x[mine.dimension() - 1];
-    std::printf("B %.6f: generic C = %.15f, reduced C = %.15f\n", B, C, Cm);
     EXPECT_NEAR(Cm, C, 1e-8 * C) << "B = " << B;
     ++compared;
   }
@@ -271,7 +228,7 @@ TEST(ModalOrbitBranchPointCurve, MatchesGenericBranchPointSystemAtL4) {
 // traced point's B the curve's C equals the traced one to 1e-8 in ln C (trace solves its criterion to
 // 1e-10 in Upsilon_3, |dUpsilon_3/d ln C| ~ 10 here, so ~1e-11; the curve's residual is 1e-12).
 TEST(ModalOrbitBranchPointCurve, ContainsTheTracedInPlaneBoundary) {
-  const Scene s = in_plane(5, 2, 0.1, 4);
+  const Scene s = test::in_plane_modal(5, 2, 0.1, 4);
   DiagramSpec plane;
   plane.x = {Axis::lnB, std::log(1.5), std::log(3.0), 3};
   plane.y = {Axis::lnC, std::log(0.05), std::log(0.2), 3};
@@ -304,7 +261,7 @@ TEST(ModalOrbitBranchPointCurve, ContainsTheTracedInPlaneBoundary) {
 
 // Bad input names the parameter.
 TEST(ModalOrbitBranchPointCurve, RejectsCoupledPairsModesAndTiltedRestShapes) {
-  const Scene s = in_plane(1, 2, 0.08, 4);
+  const Scene s = test::in_plane_modal(1, 2, 0.08, 4);
   EXPECT_THROW(ModalOrbitBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::S, 3), InvalidArgument);
   EXPECT_THROW(ModalOrbitBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::B, 5), InvalidArgument);
   EXPECT_THROW(ModalOrbitBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::B, 2), InvalidArgument);
