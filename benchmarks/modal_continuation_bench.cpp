@@ -55,9 +55,7 @@ void BM_ModalBranchSwitch(benchmark::State& state) {
   o.p_max = 0.08;
   o.direction = Direction::backward;
   const Branch b = continue_branch(pr, pr.ellipsoidal_state(0.08), 0.08, o);
-  const SpecialPoint* bp = nullptr;
-  for (const auto& sp : b.special_points)
-    if (sp.type == SpecialPointType::BP && !bp) bp = &sp;
+  const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP);
   if (!bp) {
     state.SkipWithError("no BP");
     return;

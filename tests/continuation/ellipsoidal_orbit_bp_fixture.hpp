@@ -68,8 +68,8 @@ inline EllipsoidalOrbitBP locate_ellipsoidal_orbit_bp(const ModalForcedSystem2& 
   o.initial_step = 0.002;
   o.max_step = 0.005;
   out.branch = continue_branch(slice, mn.x, C0, o);
-  for (const auto& sp : out.branch.special_points)
-    if (sp.type == SpecialPointType::BP && sp.status == LocationStatus::located) out.bp = sp;
+  const SpecialPoint* bp = find_special_point(out.branch, SpecialPointType::BP);
+  if (bp && bp->status == LocationStatus::located) out.bp = *bp;
   return out;
 }
 

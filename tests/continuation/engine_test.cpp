@@ -294,5 +294,21 @@ TEST(ContinuationEngine, DomainErrorsAndBadOptions) {
   EXPECT_NEAR(s.points.front().x[0], 2.0, 1e-14);
 }
 
+TEST(Engine, FindSpecialPointCountsByTypeInBranchOrder) {
+  Branch b;
+  for (SpecialPointType t : {SpecialPointType::BP, SpecialPointType::LP, SpecialPointType::BP}) {
+    SpecialPoint sp;
+    sp.type = t;
+    sp.p = static_cast<double>(b.special_points.size());
+    b.special_points.push_back(sp);
+  }
+  ASSERT_NE(find_special_point(b, SpecialPointType::BP), nullptr);
+  EXPECT_EQ(find_special_point(b, SpecialPointType::BP)->p, 0);
+  EXPECT_EQ(find_special_point(b, SpecialPointType::BP, 2)->p, 2);
+  EXPECT_EQ(find_special_point(b, SpecialPointType::LP)->p, 1);
+  EXPECT_EQ(find_special_point(b, SpecialPointType::BP, 3), nullptr);
+  EXPECT_EQ(find_special_point(b, SpecialPointType::HB), nullptr);
+}
+
 }  // namespace
 }  // namespace rbcstab

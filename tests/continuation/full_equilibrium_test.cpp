@@ -245,11 +245,8 @@ TEST(FullEquilibrium, ForcedBranchesInEveryParameterEqualClosedForm) {
 TEST(FullEquilibrium, UnforcedModeCrossingIsLocatedAsBranchPointWithCoincidentHopfPairs) {
   const ForcedRun run;
   ASSERT_EQ(run.branch.status, ContinuationStatus::completed) << run.branch.message;
-  const SpecialPoint *bp = nullptr, *hb = nullptr;
-  for (const auto& sp : run.branch.special_points) {
-    if (sp.type == SpecialPointType::BP && !bp) bp = &sp;
-    if (sp.type == SpecialPointType::HB && !hb) hb = &sp;
-  }
+  const SpecialPoint* bp = find_special_point(run.branch, SpecialPointType::BP);
+  const SpecialPoint* hb = find_special_point(run.branch, SpecialPointType::HB);
   ASSERT_NE(bp, nullptr);
   ASSERT_NE(hb, nullptr);
   const double C4 = l4_threshold(run.s, 0.014, 0.017);
@@ -304,9 +301,7 @@ TEST(FullEquilibrium, BranchSwitchAtTheL4CrossingHasSigmaPinnedAtItsCriticalValu
   // = 0 pins sigma = sigma_4^c(B/C); every other mode is f = -S/(i m/2 + Upsilon_l(sigma_4^c)) (the
   // closed form above at that sigma) and Delta_4 = Delta minus their area. Tolerance 1e-10 as above.
   const ForcedRun run;
-  const SpecialPoint* bp = nullptr;
-  for (const auto& sp : run.branch.special_points)
-    if (sp.type == SpecialPointType::BP && !bp) bp = &sp;
+  const SpecialPoint* bp = find_special_point(run.branch, SpecialPointType::BP);
   ASSERT_NE(bp, nullptr);
   BranchSwitchOptions o;
   o.continuation.p_min = 0.012;
@@ -345,9 +340,7 @@ TEST(FullEquilibrium, L4CrossingContinuedInTwoParametersByTheGenericBranchPointC
   // Newton tolerance 1e-12 on C times d(sigma - sigma_4^c)/dC ~ 1e3), mu = 0 and the state is the
   // closed form (1e-9).
   const ForcedRun run;
-  const SpecialPoint* bp = nullptr;
-  for (const auto& sp : run.branch.special_points)
-    if (sp.type == SpecialPointType::BP && !bp) bp = &sp;
+  const SpecialPoint* bp = find_special_point(run.branch, SpecialPointType::BP);
   ASSERT_NE(bp, nullptr);
   Scene scene = run.s;
   scene.parameters.C = bp->p;

@@ -161,9 +161,7 @@ TEST(ModalEquilibrium, BranchPointsWhereUpsilonCrossesZero) {
 
 TEST(ModalEquilibrium, BranchSwitchingGivesThePostInstabilityState) {
   const CRun run;
-  const SpecialPoint* bp = nullptr;
-  for (const auto& sp : run.branch.special_points)
-    if (sp.type == SpecialPointType::BP && !bp) bp = &sp;
+  const SpecialPoint* bp = find_special_point(run.branch, SpecialPointType::BP);
   ASSERT_NE(bp, nullptr);
   BranchSwitchOptions o;
   o.continuation.p_min = 0.015;
@@ -201,9 +199,7 @@ TEST(ModalEquilibrium, BranchSwitchingGivesThePostInstabilityState) {
   }
   // The secondary BP where the l = 3 state loses stability to l = 4: Upsilon_4(sigma_3^c) = 0 at
   // alpha = 60, C = B/60 exactly.
-  const SpecialPoint* bp2 = nullptr;
-  for (const auto& sp : nb.special_points)
-    if (sp.type == SpecialPointType::BP && !bp2) bp2 = &sp;
+  const SpecialPoint* bp2 = find_special_point(nb, SpecialPointType::BP);
   ASSERT_NE(bp2, nullptr);
   EXPECT_NEAR(bp2->p, run.s.parameters.B / 60, 1e-8);
   EXPECT_EQ(critical_mode(run.pr, bp2->x, bp2->p), 4);
@@ -211,9 +207,7 @@ TEST(ModalEquilibrium, BranchSwitchingGivesThePostInstabilityState) {
 
 TEST(ModalEquilibrium, BranchSwitchedStateIsTheLongTimeStateOfTheModalSimulation) {
   const CRun run;
-  const SpecialPoint* bp = nullptr;
-  for (const auto& sp : run.branch.special_points)
-    if (sp.type == SpecialPointType::BP && !bp) bp = &sp;
+  const SpecialPoint* bp = find_special_point(run.branch, SpecialPointType::BP);
   ASSERT_NE(bp, nullptr);
   const double C = 0.025;  // past the l = 3 threshold (C ~ 0.037); l = 4 is unstable on the ellipsoid too
   Scene sim_scene = scene(C, run.s.L);
@@ -237,9 +231,7 @@ TEST(ModalEquilibrium, BranchSwitchedStateIsTheLongTimeStateOfTheModalSimulation
   co.p_max = 0.08;
   co.direction = Direction::backward;
   const Branch eb = continue_branch(pr, pr.ellipsoidal_state(0.08), 0.08, co);
-  const SpecialPoint* bp2 = nullptr;
-  for (const auto& sp : eb.special_points)
-    if (sp.type == SpecialPointType::BP && !bp2) bp2 = &sp;
+  const SpecialPoint* bp2 = find_special_point(eb, SpecialPointType::BP);
   ASSERT_NE(bp2, nullptr);
   BranchSwitchOptions o;
   o.continuation.p_min = C;
@@ -261,9 +253,7 @@ TEST(ModalEquilibrium, BranchSwitchedStateIsTheLongTimeStateOfTheModalSimulation
 
 TEST(ModalEquilibrium, BranchPointCurveIsTheAsymptoticBoundary) {
   const CRun run;
-  const SpecialPoint* bp = nullptr;
-  for (const auto& sp : run.branch.special_points)
-    if (sp.type == SpecialPointType::BP && !bp) bp = &sp;
+  const SpecialPoint* bp = find_special_point(run.branch, SpecialPointType::BP);
   ASSERT_NE(bp, nullptr);
   const int l = critical_mode(run.pr, bp->x, bp->p);
   const ModalBranchPointCurve curve(run.s, ContinuationParameter::C, ContinuationParameter::B, l);

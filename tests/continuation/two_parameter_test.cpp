@@ -39,10 +39,9 @@ TEST(SceneTwoParameterProblem, VesicleFoldCurveIsLambdaEqualsOne) {
   o.p_min = 0;
   o.p_max = 20;
   const Branch b = continue_branch(pr, y, s.parameters.lambda, o);
-  const SpecialPoint* lp = nullptr;
-  for (const auto& sp : b.special_points)
-    if (sp.type == SpecialPointType::LP && sp.status == LocationStatus::located) lp = &sp;
+  const SpecialPoint* lp = find_special_point(b, SpecialPointType::LP);
   ASSERT_NE(lp, nullptr);
+  ASSERT_EQ(lp->status, LocationStatus::located);
   const SceneTwoParameterProblem<ReducedEquilibriumProblem> base(s, ContinuationParameter::lambda,
                                                                  ContinuationParameter::Delta);
   EXPECT_EQ(base.dimension(), 3);
@@ -102,10 +101,9 @@ TEST(SceneTwoParameterProblem, ModalBranchPointCurveGenericSystemMatchesSigmaCri
   o.p_max = 0.08;
   o.direction = Direction::backward;
   const Branch b = continue_branch(pr, pr.ellipsoidal_state(0.08), 0.08, o);
-  const SpecialPoint* bp = nullptr;
-  for (const auto& sp : b.special_points)
-    if (sp.type == SpecialPointType::BP && sp.status == LocationStatus::located && !bp) bp = &sp;
+  const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP);
   ASSERT_NE(bp, nullptr);
+  ASSERT_EQ(bp->status, LocationStatus::located);
   ASSERT_EQ(critical_mode(pr, bp->x, bp->p), 3);
   Scene at_bp = s;
   at_bp.parameters.C = bp->p;

@@ -11,6 +11,12 @@
 
 namespace rbcstab {
 
+const SpecialPoint* find_special_point(const Branch& b, SpecialPointType type, int k) {
+  for (const auto& sp : b.special_points)
+    if (sp.type == type && --k == 0) return &sp;
+  return nullptr;
+}
+
 std::string to_string(SpecialPointType type) {
   switch (type) {
     case SpecialPointType::LP: return "LP";

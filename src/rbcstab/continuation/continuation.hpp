@@ -104,6 +104,9 @@ struct Branch {
   ContinuationCounters counters;
 };
 
+// The k-th (k >= 1) special point of `type` along b, in branch order; nullptr if b has fewer.
+const SpecialPoint* find_special_point(const Branch& b, SpecialPointType type, int k = 1);
+
 // Newton on F(x, p) = 0 at fixed p from x0. Returns whether it converged; x holds the last iterate.
 struct NewtonResult {
   Eigen::VectorXd x;
