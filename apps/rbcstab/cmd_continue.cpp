@@ -425,6 +425,23 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
     return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, polar_of,
                         "multipliers", nullptr);
   };
+  // Equilibrium curves over any level's two-parameter problem: the generic LP, BP (2n + 2 system) and HB
+  // systems; the first n unknowns of a curve point are the state.
+  auto equilibrium_curve = [&](const TwoParameterProblem& base, Eigen::Index n, const DescribeCurve& describe) {
+    if (o.curve == "LP") {
+      const FoldCurveProblem curve(base, *sp, p2_0);
+      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, describe,
+                          "eigenvalues", nullptr);
+    }
+    if (o.curve == "BP") {
+      const BranchPointCurveProblem curve(base, *sp, p2_0);
+      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, describe,
+                          "eigenvalues", nullptr);
+    }
+    const HopfCurveProblem curve(base, *sp, p2_0);
+    return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, describe,
+                        "eigenvalues", [&](const Eigen::VectorXd& X) { return curve.omega(X); });
+  };
   if (o.kind == "orbit") return cycle_curve(ReducedForcedSystem2(scene, q1, q2));
   if (o.kind == "modal-orbit" && o.curve == "BP") {
     // A symmetry-breaking BP of the in-plane ellipsoidal orbit (v~ = 0 and every a_l = 0 at the point):
@@ -467,51 +484,18 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
       return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(sp->x, sp->p), p2_0, engine), 5,
                           modal_of, "eigenvalues", nullptr);
     }
-    if (o.curve == "LP") {
-      const FoldCurveProblem curve(base, *sp, p2_0);
-      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine),
-                          base.dimension(), modal_of, "eigenvalues", nullptr);
-    }
-    const HopfCurveProblem curve(base, *sp, p2_0);
-    return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), base.dimension(),
-                        modal_of, "eigenvalues", [&](const Eigen::VectorXd& X) { return curve.omega(X); });
+    return equilibrium_curve(base, base.dimension(), modal_of);
   }
   if (o.kind == "full") {
     // The generic curve systems over the full problem (BP: the 2n + 2 system of branch_point_curve.hpp,
     // e.g. an unforced mode's Z2 pitchfork).
     const SceneTwoParameterProblem<FullEquilibriumProblem> base(scene, q1, q2);
-    const Eigen::Index n = base.dimension();
     const DescribeCurve full_of = [&](const Eigen::VectorXd& x, double p1, double p2) {
       return modal_json(base.at(p2), x, p1);
     };
-    if (o.curve == "LP") {
-      const FoldCurveProblem curve(base, *sp, p2_0);
-      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, full_of,
-                          "eigenvalues", nullptr);
-    }
-    if (o.curve == "BP") {
-      const BranchPointCurveProblem curve(base, *sp, p2_0);
-      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, full_of,
-                          "eigenvalues", nullptr);
-    }
-    const HopfCurveProblem curve(base, *sp, p2_0);
-    return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, full_of,
-                        "eigenvalues", [&](const Eigen::VectorXd& X) { return curve.omega(X); });
+    return equilibrium_curve(base, base.dimension(), full_of);
   }
-  const SceneTwoParameterProblem<ReducedEquilibriumProblem> base(scene, q1, q2);
-  if (o.curve == "LP") {
-    const FoldCurveProblem curve(base, *sp, p2_0);
-    return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), 3, polar_of,
-                        "eigenvalues", nullptr);
-  }
-  if (o.curve == "BP") {
-    const BranchPointCurveProblem curve(base, *sp, p2_0);
-    return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), 3, polar_of,
-                        "eigenvalues", nullptr);
-  }
-  const HopfCurveProblem curve(base, *sp, p2_0);
-  return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), 3, polar_of,
-                      "eigenvalues", [&](const Eigen::VectorXd& X) { return curve.omega(X); });
+  return equilibrium_curve(SceneTwoParameterProblem<ReducedEquilibriumProblem>(scene, q1, q2), 3, polar_of);
 }
 
 int run(ContinueOptions& o) {
