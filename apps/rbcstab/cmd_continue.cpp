@@ -399,6 +399,12 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
   scene = with_parameter(scene, q1, sp->p);  // the curve's start
   const double p2_0 = get_parameter(scene, q2);
   auto polar_of = [](const Eigen::VectorXd& y, double, double) { return polar_json(y.head(3)); };
+  // Continues a curve from its own start and writes it (n: the curve point's state size).
+  auto trace = [&](const auto& curve, Eigen::Index n, const DescribeCurve& describe, const std::string& spectrum_key,
+                   const std::function<double(const Eigen::VectorXd&)>& omega = nullptr) {
+    return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, describe,
+                        spectrum_key, omega);
+  };
   // Cycle curves: one code path for the reduced and the modal forced systems. The curve unknowns start
   // with the shooting state (the NS curve's are (X, p1, kappa = cos theta)); r, Psi are those of (z, w).
   auto cycle_curve = [&](const ForcedSystem2& system) {
@@ -406,41 +412,34 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
     const Eigen::Index n = base.dimension();
     if (o.curve == "LPC") {
       const FoldCurveProblem curve(base, *sp, p2_0);
-      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, polar_of,
-                          "multipliers", nullptr);
+      return trace(curve, n, polar_of, "multipliers");
     }
     if (o.curve == "BP") {
       // A BP of cycles (e.g. the modal orbit's symmetry-breaking a_l -> -a_l pitchfork): the generic
       // BP system over the shooting problem (2 n + 2 unknowns, central-difference Jacobian).
       const BranchPointCurveProblem curve(base, *sp, p2_0);
-      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, polar_of,
-                          "multipliers", nullptr);
+      return trace(curve, n, polar_of, "multipliers");
     }
     if (o.curve == "NS") {
       const NeimarkSackerCurveProblem curve(system, o.orbit, *sp, p2_0);
-      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, polar_of,
-                          "multipliers", nullptr);
+      return trace(curve, n, polar_of, "multipliers");
     }
     const PeriodDoublingCurveProblem curve(base, *sp, p2_0);
-    return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, polar_of,
-                        "multipliers", nullptr);
+    return trace(curve, n, polar_of, "multipliers");
   };
   // Equilibrium curves over any level's two-parameter problem: the generic LP, BP (2n + 2 system) and HB
   // systems; the first n unknowns of a curve point are the state.
   auto equilibrium_curve = [&](const TwoParameterProblem& base, Eigen::Index n, const DescribeCurve& describe) {
     if (o.curve == "LP") {
       const FoldCurveProblem curve(base, *sp, p2_0);
-      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, describe,
-                          "eigenvalues", nullptr);
+      return trace(curve, n, describe, "eigenvalues");
     }
     if (o.curve == "BP") {
       const BranchPointCurveProblem curve(base, *sp, p2_0);
-      return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, describe,
-                          "eigenvalues", nullptr);
+      return trace(curve, n, describe, "eigenvalues");
     }
     const HopfCurveProblem curve(base, *sp, p2_0);
-    return report_curve(o, sf, one, *sp, curve, continue_branch(curve, curve.start(), p2_0, engine), n, describe,
-                        "eigenvalues", [&](const Eigen::VectorXd& X) { return curve.omega(X); });
+    return trace(curve, n, describe, "eigenvalues", [&](const Eigen::VectorXd& X) { return curve.omega(X); });
   };
   if (o.kind == "orbit") return cycle_curve(ReducedForcedSystem2(scene, q1, q2));
   if (o.kind == "modal-orbit" && o.curve == "BP") {
