@@ -208,9 +208,7 @@ TEST(Beta, BranchOnUpperHalfMirrorsLowerHalfAndSwingTumblePointsToo) {
 TEST(Beta, SwingTumblePointInBetaAgreesWithTheOneInDelta) {
   const BetaRun r;
   const Branch lo = r.run(Direction::backward, 0.0, M_PI / 2);
-  const SpecialPoint* uz = nullptr;
-  for (const auto& sp : lo.special_points)
-    if (sp.type == SpecialPointType::UZ) uz = &sp;
+  const SpecialPoint* uz = find_special_point(lo, SpecialPointType::UZ);
   ASSERT_NE(uz, nullptr);
   EXPECT_LT(r.pr.summary(uz->x, uz->p).r_min, 1e-7);
   // The same scene at beta = beta_UZ, continued in Delta through Delta = 1 from the UZ's orbit.

@@ -51,16 +51,10 @@ Branch trivial(const ContinuationProblem& pr) {
   return continue_branch(pr, Eigen::Vector2d::Zero(), -1, o);
 }
 
-const SpecialPoint* first_bp(const Branch& b) {
-  for (const auto& sp : b.special_points)
-    if (sp.type == SpecialPointType::BP) return &sp;
-  return nullptr;
-}
-
 TEST(BranchSwitch, PitchforkNewBranchIsXSquaredEqualsP) {
   const NormalForm pr(NormalForm::pitchfork);
   const Branch b = trivial(pr);
-  const SpecialPoint* bp = first_bp(b);
+  const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP);
   ASSERT_NE(bp, nullptr);
   EXPECT_NEAR(bp->p, 0.0, 1e-8);
   for (int side : {1, -1}) {
@@ -84,7 +78,7 @@ TEST(BranchSwitch, PitchforkNewBranchIsXSquaredEqualsP) {
 TEST(BranchSwitch, TranscriticalNewBranchIsXEqualsPOnBothSides) {
   const NormalForm pr(NormalForm::transcritical);
   const Branch b = trivial(pr);
-  const SpecialPoint* bp = first_bp(b);
+  const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP);
   ASSERT_NE(bp, nullptr);
   double p_ends[2];
   int k = 0;
@@ -125,7 +119,7 @@ TEST(BranchSwitch, RefusesAThreeDimensionalKernel) {
 TEST(BranchSwitch, RejectsBadOptionsAndNonBPs) {
   const NormalForm pr(NormalForm::pitchfork);
   const Branch b = trivial(pr);
-  const SpecialPoint* bp = first_bp(b);
+  const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP);
   ASSERT_NE(bp, nullptr);
   BranchSwitchOptions o;
   o.amplitude = -1;

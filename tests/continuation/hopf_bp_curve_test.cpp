@@ -41,9 +41,7 @@ TEST(HopfCurve, BrusselatorHopfCurveMatchesClosedForm) {
   Eigen::VectorXd x0(3);
   x0 << a0, 1.2 / a0, 0;
   const Branch b = continue_branch(slice, x0, 1.2, o);
-  const SpecialPoint* hb = nullptr;
-  for (const auto& sp : b.special_points)
-    if (sp.type == SpecialPointType::HB) hb = &sp;
+  const SpecialPoint* hb = find_special_point(b, SpecialPointType::HB);
   ASSERT_NE(hb, nullptr);
   EXPECT_NEAR(hb->p, 1 + a0 * a0, 1e-8);
 
@@ -124,9 +122,7 @@ void check_bp_curve(const TwoParameterProblem& base, double p2_0, double p1_lo, 
   o.p_max = p1_hi;
   o.max_step = 0.1;
   const Branch b = continue_branch(slice, Eigen::VectorXd::Zero(2), p1_lo, o);  // the trivial branch
-  const SpecialPoint* bp = nullptr;
-  for (const auto& sp : b.special_points)
-    if (sp.type == SpecialPointType::BP) bp = &sp;
+  const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP);
   ASSERT_NE(bp, nullptr);
   EXPECT_NEAR(bp->p, closed(p2_0), 1e-8);
 
@@ -182,9 +178,7 @@ TEST(BranchPointCurve, SymmetryBreakingParameterShowsAsNonzeroMu) {
   o.p_max = 1;
   o.max_step = 0.1;
   const Branch b = continue_branch(slice, Eigen::VectorXd::Zero(1), -1.0, o);
-  const SpecialPoint* bp = nullptr;
-  for (const auto& sp : b.special_points)
-    if (sp.type == SpecialPointType::BP) bp = &sp;
+  const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP);
   ASSERT_NE(bp, nullptr);
   const BranchPointCurveProblem bc(base, *bp, 0.0);
   ContinuationOptions o2;
