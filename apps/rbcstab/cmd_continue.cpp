@@ -448,9 +448,7 @@ int run_curve(ContinueOptions& o, const SceneFile& sf, const Branch& one) {
     // of L). Any other BP (e.g. of the post-instability orbit) keeps the generic system.
     const Eigen::Index nm = 5 + (scene.L - 2);
     const Eigen::VectorXd x0 = sp->x.head(nm);
-    const bool in_plane = std::abs(std::sin(2 * scene.beta)) < 1e-12 || scene.parameters.Delta0 == 0 ||
-                          !std::isfinite(scene.parameters.C);
-    if (in_plane && q1 != ContinuationParameter::beta && q2 != ContinuationParameter::beta &&
+    if (ModalOrbitBranchPointCurve::has_untilted_rest_shape(scene) && q1 != ContinuationParameter::beta && q2 != ContinuationParameter::beta &&
         x0.tail(nm - 3).cwiseAbs().maxCoeff() <= 1e-8) {
       const ModalOrbitBranchPointCurve probe(scene, q1, q2, 3, o.orbit);
       const Eigen::VectorXd X0 = probe.start_from_modal(sp->x, sp->p);

@@ -58,12 +58,15 @@ ModalOrbitBranchPointCurve::ModalOrbitBranchPointCurve(const Scene& scene, Conti
   if (p1 == ContinuationParameter::beta || p2 == ContinuationParameter::beta)
     throw InvalidArgument("beta", "the ellipsoidal-orbit BP curve needs a fixed in-plane rest shape: beta cannot be "
                                   "a free parameter (a tilted rest shape forces v~ away from 0)");
-  const Parameters& q = scene.parameters;
-  const bool no_m1 = std::abs(std::sin(2 * scene.beta)) < 1e-12 || q.Delta0 == 0 || !std::isfinite(q.C);
-  if (!no_m1)
+  if (!has_untilted_rest_shape(scene))
     throw InvalidArgument("beta", "beta = " + std::to_string(scene.beta) +
                                       ": the rest shape's m = 1 content forces v~ (no ellipsoidal orbit with v~ = 0); "
                                       "allowed: beta in {0, pi/2, pi}, or Delta0 = 0, or C = inf");
+}
+
+bool ModalOrbitBranchPointCurve::has_untilted_rest_shape(const Scene& scene) {
+  const Parameters& q = scene.parameters;
+  return std::abs(std::sin(2 * scene.beta)) < 1e-12 || q.Delta0 == 0 || !std::isfinite(q.C);
 }
 
 Parameters ModalOrbitBranchPointCurve::parameters(double p1, double p2) const {

@@ -50,6 +50,9 @@ class ModalOrbitBranchPointCurve final : public ContinuationProblem {
   std::vector<std::string> parameter_names() const override { return {to_string(p1_), to_string(p2_)}; }
   std::vector<double> parameter_values(const Eigen::VectorXd& X, double p2) const override { return {X[n_], p2}; }
 
+  // No m = 1 rest-shape forcing (sin 2 beta = 0, or Delta0 = 0, or C = inf): only then is v~ = 0
+  // invariant and the ellipsoidal orbit the reduced one (the constructor's condition besides a fixed beta).
+  static bool has_untilted_rest_shape(const Scene& scene);
   int mode() const { return l_; }
   double start_parameter() const { return get_parameter(scene_, p2_); }
   Parameters parameters(double p1, double p2) const;
