@@ -8,6 +8,7 @@
 #include "rbcstab/analysis/post_instability.hpp"
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
+#include "rbcstab/verdict/predict.hpp"
 
 namespace {
 

@@ -8,9 +8,9 @@
 #include <string>
 #include <vector>
 
-#include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/quantity.hpp"
 #include "rbcstab/io/json.hpp"
+#include "rbcstab/verdict/predict.hpp"
 
 namespace rbcstab::cli {
 

@@ -11,6 +11,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/analysis/post_instability.hpp"
+#include "rbcstab/sweep/fig6e.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "scene_options.hpp"

@@ -11,6 +11,7 @@
 #include "rbcstab/analysis/post_instability.hpp"
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
+#include "rbcstab/verdict/predict.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "scene_options.hpp"
 
@@ -19,10 +20,11 @@ namespace rbcstab::cli {
 namespace {
 
 // The analysis of issue 3: regime, thresholds, the three predictors and Delta~2 predicted vs simulated.
-void print_analysis(std::ostream& out, const Scene& s, const SimulationResult& r, double tail_window) {
+void print_analysis(std::ostream& out, const Scene& s, const ReducedTransient& transient, const SimulationResult& r,
+                    double tail_window) {
   const Parameters& p = s.parameters;
   const double alpha = p.alpha();
-  const ScenePrediction pr = predict(s, &r);
+  const ScenePrediction pr = predict(s, transient, &r);
   out << "\nAnalysis (docs/theory.md)\n";
   out << "Regime       " << to_string(pr.regime.regime) << " -- " << pr.regime.reason << " (reduced dynamics)\n";
   out << "Thresholds   sigma_* = " << sigma_star(alpha) << ", l_* = " << l_star(alpha)
@@ -50,10 +52,11 @@ void print_analysis(std::ostream& out, const Scene& s, const SimulationResult& r
 }
 
 // The summary as one JSON object: the run (the keys of `simulate --json`), then the analysis.
-nlohmann::json summary_json(const Scene& s, const SimulationResult& r, double tail_window) {
+nlohmann::json summary_json(const Scene& s, const ReducedTransient& transient, const SimulationResult& r,
+                            double tail_window) {
   const Parameters& p = s.parameters;
   const double alpha = p.alpha();
-  const ScenePrediction pr = predict(s, &r);
+  const ScenePrediction pr = predict(s, transient, &r);
   nlohmann::json j = rbcstab::to_json(r);
   j.erase("trajectory");
   j["scene"] = s.name;
@@ -95,12 +98,13 @@ struct SummaryOptions {
 int run(const SummaryOptions& o) {
   const SceneOptions& so = o.scene;
   std::string L_reason;
-  const SceneFile sf = so.resolve_with_default_L(L_reason);
+  ReducedTransient transient;  // integrated once: the truncation rule and the finite-horizon predictor read it
+  const SceneFile sf = so.resolve_with_default_L(L_reason, &transient);
   const Scene& s = sf.scene;
   const Parameters& p = s.parameters;
   const SimulationResult r = simulate(s, sf.options);
   if (o.json) {
-    nlohmann::json j = summary_json(s, r, sf.options.tail_window);
+    nlohmann::json j = summary_json(s, transient, r, sf.options.tail_window);
     j["L_reason"] = L_reason;
     std::cout << j.dump(2) << "\n";
     return r.status == IntegrationStatus::success ? kOk : kRunFailed;
@@ -136,7 +140,7 @@ int run(const SummaryOptions& o) {
       << "\n";
   out << "r(T) = " << r.r_final << ", Psi(T) = " << r.Psi_final << "\n";
   out << "Excess-area drift max_t |Delta(t) - Delta(0)| = " << r.excess_area_drift << "\n";
-  print_analysis(out, s, r, sf.options.tail_window);
+  print_analysis(out, s, transient, r, sf.options.tail_window);
   out << "Cost: " << r.counters.steps << " steps (" << r.counters.failed_steps << " rejected), "
       << r.counters.rhs_evaluations << " RHS and " << r.counters.jacobian_evaluations << " Jacobian evaluations, "
       << r.seconds << " s with " << to_string(sf.options.integrator.stepper) << " at rtol " << sf.options.integrator.rtol

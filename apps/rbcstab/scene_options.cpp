@@ -83,8 +83,9 @@ SceneFile SceneOptions::resolve() const {
   return f;
 }
 
-SceneFile SceneOptions::resolve_with_default_L(std::string& L_reason) const {
+SceneFile SceneOptions::resolve_with_default_L(std::string& L_reason, ReducedTransient* transient) const {
   SceneFile f = resolve();
+  if (transient) *transient = truncation_transient(f.scene);
   if (o_L && o_L->count() > 0) {
     L_reason = "L = " + std::to_string(f.scene.L) + ": given by --L";
     return f;
@@ -93,7 +94,7 @@ SceneFile SceneOptions::resolve_with_default_L(std::string& L_reason) const {
     L_reason = "L = " + std::to_string(f.scene.L) + ": given by the scene file's run.L";
     return f;
   }
-  const TruncationChoice c = choose_truncation(f.scene);
+  const TruncationChoice c = transient ? choose_truncation(f.scene, *transient) : choose_truncation(f.scene);
   f.scene.L = c.L;
   L_reason = c.reason;
   f.scene.validate();

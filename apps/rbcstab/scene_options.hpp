@@ -5,6 +5,10 @@
 
 #include "rbcstab/io/scene_file.hpp"
 
+namespace rbcstab {
+struct ReducedTransient;  // analysis/predictors.hpp
+}  // namespace rbcstab
+
 namespace rbcstab::cli {
 
 struct SceneOptions {
@@ -22,7 +26,9 @@ struct SceneOptions {
   SceneFile resolve() const;
   // resolve(), then, unless --L or the file's run.L gave L, the smallest L meeting the truncation tolerance
   // (choose_truncation, docs/benchmarks.md "Automatic L"); the choice and its reason land in L_reason.
-  SceneFile resolve_with_default_L(std::string& L_reason) const;
+  // transient (optional): receives the scene's truncation_transient, which the rule then reads, so that the
+  // finite-horizon predictor can share the run.
+  SceneFile resolve_with_default_L(std::string& L_reason, ReducedTransient* transient = nullptr) const;
 };
 
 }  // namespace rbcstab::cli

@@ -9,12 +9,17 @@
 //    unstable mode, whichever holds the area at T).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
+#include "rbcstab/analysis/detail/reduced_quadrature.hpp"
 #include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/integrate/simulation.hpp"
+#include "rbcstab/model/coefficients.hpp"
 
 namespace rbcstab {
 namespace {
@@ -137,6 +142,83 @@ TEST(Truncation, ReasonAndGainsAreFinite) {
   ASSERT_EQ(c.G_max.size(), 38u);
   for (double g : c.G_max) EXPECT_TRUE(std::isfinite(g));
   for (double g : c.log_gain) EXPECT_TRUE(std::isfinite(g));
+}
+
+// The rule from a shared reduced transient equals, bit for bit, the rule's own run before the transient was
+// shared. Oracle: that former run written out here (the reduced model with the sigma_R quadrature integrated
+// over the checkpoints T k/K of the L_max scene, G_l(t) = t Upsilon_l(<sigma_R>_t) maxed over them). The
+// transient depends on the parameters and beta only, so one integrated for another L and other seeds gives
+// the same choice; the finite-horizon predictor reads the same run (its G_l(T) is the last checkpoint's).
+TEST(Truncation, SharedTransientGivesTheFormerChoiceBitForBit) {
+  for (double beta : {1e-3, std::numbers::pi / 2}) {
+    const Scene s = base(5, 2, 0.04, beta, 1e-3);
+    const TruncationOptions o;
+    Scene sL = s;
+    sL.L = o.L_max;
+    const detail::ReducedWithQuadrature sys(sL.parameters, initial_state(sL));
+    std::vector<double> grid;
+    for (int k = 1; k <= o.checkpoints; ++k) grid.push_back(s.T * k / o.checkpoints);
+    std::vector<double> G_max(std::size_t(o.L_max - 2), -std::numeric_limits<double>::max());
+    const IntegrationResult former = integrate(sys, sys.initial_state(), 0.0, grid, o.predictor.integrator,
+                                               [&](double t, std::span<const double> y) {
+                                                 for (int l = 3; l <= o.L_max; ++l) {
+                                                   double& G = G_max[std::size_t(l - 3)];
+                                                   G = std::max(G, t * Upsilon(s.parameters, l, y[3] / t));
+                                                 }
+                                               });
+    ASSERT_EQ(former.status, IntegrationStatus::success);
+
+    const ReducedTransient tr = truncation_transient(s, o);
+    const TruncationChoice shared = choose_truncation(s, tr, o), own = choose_truncation(s, o);
+    EXPECT_EQ(shared.G_max, G_max);
+    EXPECT_EQ(own.G_max, G_max);
+    EXPECT_EQ(shared.counters.rhs_evaluations, former.counters.rhs_evaluations);
+    EXPECT_EQ(shared.L, own.L);
+    EXPECT_EQ(shared.reason, own.reason);
+    EXPECT_EQ(shared.log_gain, own.log_gain);
+    EXPECT_EQ(shared.dropped_seeded_area, own.dropped_seeded_area);
+
+    Scene other = s;  // another truncation and other seeds: the same reduced transient
+    other.L = 3;
+    other.delta = 1e-7;
+    other.delta_l = {{3, 1e-5}};
+    EXPECT_EQ(choose_truncation(s, truncation_transient(other, o), o).G_max, G_max);
+
+    // The finite-horizon predictor from the same run: G_l(T) is the last checkpoint's G_l, at most the max
+    // over the checkpoints, and agrees with its own one-checkpoint run to the integration error (the runs
+    // step to different output times: 1e-7 relative, as FiniteHorizon.ConvergesWithTolerance).
+    const FiniteHorizon h = finite_horizon_growth(s, tr), alone = finite_horizon_growth(s, s.T);
+    ASSERT_EQ(h.G.size(), std::size_t(s.L - 1));
+    for (int l = 3; l <= s.L; ++l) {
+      const double G = h.G[std::size_t(l - 2)];
+      EXPECT_EQ(G, s.T * Upsilon(s.parameters, l, tr.integral.back() / s.T));
+      EXPECT_LE(G, shared.G_max[std::size_t(l - 3)]);
+      EXPECT_NEAR(G, alone.G[std::size_t(l - 2)], 1e-7 * (1 + std::abs(G)));
+    }
+  }
+}
+
+TEST(Truncation, TransientOfAnotherSceneIsRefused) {
+  const Scene s = base(5, 2, 0.04, 1e-3, 1e-3);
+  const TruncationOptions o;
+  Scene other = s;
+  other.parameters.C = 0.05;
+  auto parameter = [](auto&& f) {
+    try {
+      f();
+    } catch (const InvalidArgument& e) {
+      return e.parameter();
+    }
+    return std::string("no throw");
+  };
+  EXPECT_EQ(parameter([&] { (void)choose_truncation(s, truncation_transient(other, o), o); }), "transient");
+  other = s;
+  other.T = other.dt = 400;
+  EXPECT_EQ(parameter([&] { (void)choose_truncation(s, truncation_transient(other, o), o); }), "transient");
+  EXPECT_EQ(parameter([&] { (void)choose_truncation(s, reduced_transient(s, s.T, 8, o.predictor), o); }), "transient");
+  other = s;
+  other.beta = 0.5;
+  EXPECT_EQ(parameter([&] { (void)finite_horizon_growth(s, truncation_transient(other, o)); }), "transient");
 }
 
 }  // namespace

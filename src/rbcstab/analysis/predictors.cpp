@@ -155,119 +155,62 @@ RegimeResult reduced_regime(const Scene& scene, const PredictorOptions& options)
   return regime_from(run_reduced(scene, options), initial_r(scene) < options.out_of_plane_r0);
 }
 
-FiniteHorizon finite_horizon_growth(const Scene& scene, double T, const PredictorOptions& options) {
+bool ReducedTransient::of(const Scene& scene) const {
+  const Parameters& p = scene.parameters;
+  return p.lambda == parameters.lambda && p.Delta == parameters.Delta && p.Delta0 == parameters.Delta0 &&
+         p.B == parameters.B && p.C == parameters.C && scene.beta == beta;
+}
+
+ReducedTransient reduced_transient(const Scene& scene, double T, int checkpoints, const PredictorOptions& options) {
   scene.validate();
   options.validate();
   require(std::isfinite(T) && T > 0, "T", T, "finite and > 0");
+  require(checkpoints >= 1 && checkpoints <= 10000, "checkpoints", checkpoints, "an integer in [1, 10000]");
+  const detail::ReducedWithQuadrature sys(scene.parameters, initial_state(scene));
+  ReducedTransient tr;
+  tr.parameters = scene.parameters;
+  tr.beta = scene.beta;
+  tr.T = T;
+  tr.checkpoints = checkpoints;
+  std::vector<double> grid;
+  for (int k = 1; k <= checkpoints; ++k) grid.push_back(T * k / checkpoints);
+  auto on_sample = [&](double t, std::span<const double> y) {
+    tr.t.push_back(t);
+    tr.integral.push_back(y[3]);
+  };
+  const IntegrationResult res = integrate(sys, sys.initial_state(), 0.0, grid, options.integrator, on_sample);
+  tr.status = res.status;
+  tr.reason = res.reason;
+  tr.counters = res.counters;
+  if (res.status == IntegrationStatus::success) {
+    tr.t_end = T;
+    tr.integral_end = tr.integral.back();
+  } else {
+    tr.t_end = res.t_reached;
+    tr.integral_end = res.y.size() > 3 ? res.y[3] : 0.0;
+  }
+  return tr;
+}
+
+FiniteHorizon finite_horizon_growth(const Scene& scene, const ReducedTransient& transient) {
+  scene.validate();
+  if (!transient.of(scene))
+    throw InvalidArgument("transient", "the reduced transient was integrated for other parameters or another beta");
   const Parameters& p = scene.parameters;
-  const detail::ReducedWithQuadrature sys(p, initial_state(scene));
   FiniteHorizon h;
-  h.T = T;
-  const double grid[1] = {T};
-  double I = 0;
-  const std::vector<double> y0 = sys.initial_state();
-  const IntegrationResult res =
-      integrate(sys, y0, 0.0, grid, options.integrator, [&](double, std::span<const double> y) { I = y[3]; });
-  h.status = res.status;
-  h.reason = res.reason;
-  h.counters = res.counters;
-  const double Tr = res.status == IntegrationStatus::success ? T : res.t_reached;
-  if (res.status != IntegrationStatus::success) I = res.y.size() > 3 ? res.y[3] : 0.0;
+  h.status = transient.status;
+  h.reason = transient.reason;
+  h.counters = transient.counters;
+  const double Tr = transient.t_end;
   h.T = Tr;
-  h.mean_sigma_R = Tr > 0 ? I / Tr : 0.0;
+  h.mean_sigma_R = Tr > 0 ? transient.integral_end / Tr : 0.0;
   // Upsilon_l is affine in sigma: int_0^T Upsilon_l(sigma_R) dt = T Upsilon_l(<sigma_R>_T).
   for (int l = 2; l <= scene.L; ++l) h.G.push_back(Tr * Upsilon(p, l, h.mean_sigma_R));
   return h;
 }
 
-ModePrediction finite_horizon_prediction(const Scene& scene, const FiniteHorizon& horizon) {
-  ModePrediction b;
-  b.predictor = "finite_horizon";
-  b.rate = horizon.G;
-  if (horizon.status != IntegrationStatus::success) {
-    b.status = DomainStatus::outside_domain;
-    b.reason = "reduced run stopped at t = " + format_value(horizon.T) + ": " + horizon.reason;
-  }
-  double best = 0;
-  for (int l = 3; l <= scene.L && std::size_t(l - 2) < horizon.G.size(); ++l) {
-    const double G = horizon.G[std::size_t(l - 2)];
-    const double d = scene.perturbation(l);
-    if (G > 0) b.unstable.push_back(l);
-    // linear growth of the excess area of mode l: d (exp(2 G) - 1), compared in logs to avoid overflow
-    if (G > 0 && d > 0) {
-      const double score = std::log(d) + 2 * G + std::log1p(-std::exp(-2 * G));
-      if (b.l_Delta == 2 || score > best) {
-        best = score;
-        b.l_Delta = l;
-      }
-    }
-  }
-  return b;
-}
-
-ScenePrediction predict(const Scene& scene, const SimulationResult* simulated, const PredictorOptions& options) {
-  scene.validate();
-  options.validate();
-  const Parameters& p = scene.parameters;
-  const double alpha = p.alpha();
-  ScenePrediction out;
-  out.out_of_plane = initial_r(scene) < options.out_of_plane_r0;
-  const ReducedRun run = run_reduced(scene, options);
-  out.regime = regime_from(run, out.out_of_plane);
-
-  // (a) asymptotic
-  bool use_equilibrium = false;
-  if (out.out_of_plane) {
-    out.equilibrium = out_of_plane_equilibrium(p);
-    use_equilibrium = out.equilibrium.stable;
-  }
-  if (use_equilibrium) {
-    out.sigma_R_asymptotic = Quantity::of(out.equilibrium.sigma_R);
-    out.asymptotic_source = "exact out-of-plane equilibrium (design/model.md section 4)";
-  } else {
-    const SigmaAverage avg = average_from(run, options);
-    out.sigma_R_asymptotic = avg.mean;
-    out.asymptotic_source = "time average of sigma_R over t in [" + format_value(options.transient) + ", " +
-                            format_value(options.transient + options.window) + "] of the reduced model";
-  }
-  ModePrediction& a = out.asymptotic;
-  a.predictor = "asymptotic";
-  if (out.sigma_R_asymptotic.valid()) {
-    const double s = out.sigma_R_asymptotic.value;
-    for (int l = 2; l <= scene.L; ++l) a.rate.push_back(Upsilon(p, l, s));
-    a.unstable = unstable_modes(s, alpha, scene.L);
-    // Once modes grow, sigma rises until only the mode with the largest sigma_l^c stays: it takes the area.
-    a.l_Delta = a.unstable.empty() ? 2 : surviving_mode(alpha, scene.L);
-  } else {
-    a.status = DomainStatus::outside_domain;
-    a.reason = out.sigma_R_asymptotic.reason;
-  }
-
-  // (b) finite horizon
-  out.horizon = finite_horizon_growth(scene, scene.T, options);
-  out.finite_horizon = finite_horizon_prediction(scene, out.horizon);
-
-  // (c) simulation
-  ModePrediction& c = out.simulation;
-  c.predictor = "simulation";
-  if (simulated) {
-    const SimulationResult& r = *simulated;
-    const std::vector<double>& X = r.oscillating ? r.Delta_tail_mean : r.Delta_final;
-    for (std::size_t k = 0; k < X.size(); ++k) {
-      const double d0 = r.Delta_initial[k];
-      c.rate.push_back(d0 > 0 && X[k] > 0 ? 0.5 * std::log(X[k] / d0) : 0.0);
-      if (k >= 1 && X[k] > d0 && d0 > 0) c.unstable.push_back(int(k) + 2);
-    }
-    c.l_Delta = r.l_Delta;
-    if (r.status != IntegrationStatus::success) {
-      c.status = DomainStatus::outside_domain;
-      c.reason = "simulation stopped at t = " + format_value(r.t_reached) + ": " + r.reason;
-    }
-  } else {
-    c.status = DomainStatus::outside_domain;
-    c.reason = "no simulation supplied";
-  }
-  return out;
+FiniteHorizon finite_horizon_growth(const Scene& scene, double T, const PredictorOptions& options) {
+  return finite_horizon_growth(scene, reduced_transient(scene, T, 1, options));
 }
 
 }  // namespace rbcstab

@@ -1,18 +1,16 @@
 #pragma once
-// Three predictors of a scene's verdict, cheapest first (issue 3 point 3):
-//  (a) asymptotic: mu_l = Upsilon_l(<sigma_R>) on the reduced attractor (the exact equilibrium for an
-//      out-of-plane scene, else a converged time average of sigma_R along a long ReducedModel run);
-//  (b) finite horizon: G_l(T) = int_0^T Upsilon_l(sigma_R(t)) dt along the reduced transient from the scene's
-//      own initial state, the linear prediction Delta_l(T)/Delta_l(0) = exp(2 G_l(T));
-//  (c) the nonlinear modal simulation (simulate()).
-// Also the regime of the reduced (ellipsoidal) dynamics: rolling, tank-treading, swinging or tumbling.
+// The reduced-model runs the stability verdicts consume (the verdicts themselves, and the predict() that
+// combines them, live in rbcstab::verdict):
+//  - the time average of sigma_R on the reduced attractor (a long ReducedModel run);
+//  - the reduced transient over [0, T] from the scene's own initial state, integrated once and shared by the
+//    finite-horizon predictor G_l(T) = int_0^T Upsilon_l(sigma_R(t)) dt (the linear prediction
+//    Delta_l(T)/Delta_l(0) = exp(2 G_l(T))) and the truncation rule (analysis/truncation.hpp);
+//  - the regime of the reduced (ellipsoidal) dynamics: rolling, tank-treading, swinging or tumbling.
 #include <string>
 #include <vector>
 
 #include "rbcstab/analysis/quantity.hpp"
-#include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/integrate/integrator.hpp"
-#include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
@@ -37,6 +35,27 @@ struct SigmaAverage {
 };
 SigmaAverage time_averaged_sigma_R(const Scene& scene, const PredictorOptions& options = {});
 
+// The reduced transient over [0, T] from the scene's own initial state: int_0^t sigma_R at the checkpoints
+// t_k = T k/K (k = 1..K). It depends on the parameters and beta only (the reduced model holds l = 2 alone, whose
+// initial state ignores L and the l >= 3 seeds), so one run serves the truncation rule at L_max and the
+// finite-horizon predictor at the chosen L. The integrator steps to every checkpoint: runs with different K
+// agree to the integration error, not bit for bit.
+struct ReducedTransient {
+  Parameters parameters;  // of the scene it was integrated for
+  double beta = 0;
+  double T = 0;           // the requested horizon
+  int checkpoints = 1;    // K
+  std::vector<double> t, integral;      // checkpoints reached, int_0^{t_k} sigma_R there
+  double t_end = 0, integral_end = 0;   // T on success, else where the run stopped; the integral there
+  IntegrationStatus status = IntegrationStatus::success;
+  std::string reason;
+  IntegrationCounters counters;
+  bool of(const Scene& scene) const;    // integrated for this scene's parameters and beta (any T, L, seeds)
+};
+// checkpoints in [1, 10000]; options: its integrator.
+ReducedTransient reduced_transient(const Scene& scene, double T, int checkpoints = 1,
+                                   const PredictorOptions& options = {});
+
 // G_l(T) for l = 2..L (index l - 2) along the reduced transient over [0, T]; also the mean sigma_R over [0, T].
 struct FiniteHorizon {
   double T = 0;
@@ -46,6 +65,9 @@ struct FiniteHorizon {
   std::string reason;
   IntegrationCounters counters;
 };
+// From a transient of the scene (throws InvalidArgument("transient", ...) if it is another scene's); T = its T.
+FiniteHorizon finite_horizon_growth(const Scene& scene, const ReducedTransient& transient);
+// The same on its own run with one checkpoint (T only).
 FiniteHorizon finite_horizon_growth(const Scene& scene, double T, const PredictorOptions& options = {});
 
 enum class Regime { rolling, tank_treading, swinging, tumbling, undetermined };
@@ -58,31 +80,6 @@ struct RegimeResult {
 // rolling: out-of-plane steady state (the paper's deformed rolling); tank_treading: in-plane steady state;
 // swinging: Psi oscillates with no net rotation; tumbling: Psi decreases without bound.
 RegimeResult reduced_regime(const Scene& scene, const PredictorOptions& options = {});
-
-struct ModePrediction {
-  std::string predictor;      // "asymptotic", "finite_horizon", "simulation"
-  std::vector<int> unstable;  // l in [3, L] predicted (or seen) to grow
-  int l_Delta = 2;            // predicted argmax_l [Delta_l(T) - Delta_l(0)]
-  std::vector<double> rate;   // index l - 2: mu_l (asymptotic), G_l(T) (finite horizon), ln(X_l/Delta_l(0))/2 (simulation)
-  DomainStatus status = DomainStatus::ok;
-  std::string reason;
-};
-
-struct ScenePrediction {
-  Quantity sigma_R_asymptotic;          // <sigma_R> on the attractor
-  std::string asymptotic_source;        // "exact out-of-plane equilibrium" or "time average ..."
-  bool out_of_plane = false;
-  OutOfPlaneEquilibrium equilibrium;    // filled when out_of_plane
-  FiniteHorizon horizon;
-  ModePrediction asymptotic, finite_horizon, simulation;
-  RegimeResult regime;
-};
-// The finite-horizon predictor's verdict from G_l(T): the modes with G_l > 0, and l_Delta = the argmax of the
-// linear excess-area growth Delta_l(0) (exp(2 G_l) - 1) (status outside_domain when the reduced run stopped).
-ModePrediction finite_horizon_prediction(const Scene& scene, const FiniteHorizon& horizon);
-
-// (a) and (b) for the scene; (c) from a simulation result of the same scene (pass nullptr to skip it).
-ScenePrediction predict(const Scene& scene, const SimulationResult* simulated, const PredictorOptions& options = {});
 
 // r0 = |z0| of the scene's stress-free l = 2 shape (0 out of plane, sqrt(3)/2 in plane).
 double stress_free_r0(const Scene& scene);

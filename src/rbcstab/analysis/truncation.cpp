@@ -6,9 +6,8 @@
 #include <limits>
 #include <sstream>
 
-#include "rbcstab/analysis/detail/reduced_quadrature.hpp"
 #include "rbcstab/core/error.hpp"
-#include "rbcstab/integrate/integrator.hpp"
+#include "rbcstab/model/coefficients.hpp"
 
 namespace rbcstab {
 
@@ -33,9 +32,23 @@ std::string short_value(double v) {
 double log_area_gain(double d, double G) { return std::log(d) + 2 * G + std::log1p(-std::exp(-2 * G)); }
 }  // namespace
 
-TruncationChoice choose_truncation(const Scene& scene, const TruncationOptions& options) {
+ReducedTransient truncation_transient(const Scene& scene, const TruncationOptions& options) {
   options.validate();
   scene.validate();
+  return reduced_transient(scene, scene.T, options.checkpoints, options.predictor);
+}
+
+TruncationChoice choose_truncation(const Scene& scene, const TruncationOptions& options) {
+  return choose_truncation(scene, truncation_transient(scene, options), options);
+}
+
+TruncationChoice choose_truncation(const Scene& scene, const ReducedTransient& transient,
+                                   const TruncationOptions& options) {
+  options.validate();
+  scene.validate();
+  if (!transient.of(scene) || transient.T != scene.T || transient.checkpoints != options.checkpoints)
+    throw InvalidArgument("transient", "the reduced transient must be the scene's over [0, T = " + format_value(scene.T) +
+                                           "] with " + std::to_string(options.checkpoints) + " checkpoints");
   Scene s = scene;
   // Every explicitly set mode must exist; L_max covers the candidates of the rule.
   int L_explicit = 2;
@@ -46,20 +59,18 @@ TruncationChoice choose_truncation(const Scene& scene, const TruncationOptions& 
   const double Delta = p.Delta;
 
   TruncationChoice c;
-  const detail::ReducedWithQuadrature sys(p, initial_state(s));
-  std::vector<double> grid;
-  for (int k = 1; k <= options.checkpoints; ++k) grid.push_back(s.T * k / options.checkpoints);
   c.G_max.assign(std::size_t(options.L_max - 2), -std::numeric_limits<double>::max());
-  auto on_sample = [&](double t, std::span<const double> y) {
-    if (t <= 0) return;
-    const double mean_sigma = y[3] / t;
+  // G_l(t) at every checkpoint the run reached, so that a mode that grows and decays again before T counts.
+  for (std::size_t k = 0; k < transient.t.size(); ++k) {
+    const double t = transient.t[k];
+    if (t <= 0) continue;
+    const double mean_sigma = transient.integral[k] / t;
     for (int l = 3; l <= options.L_max; ++l) {
       double& G = c.G_max[std::size_t(l - 3)];
       G = std::max(G, t * Upsilon(p, l, mean_sigma));
     }
-  };
-  const IntegrationResult res = integrate(sys, sys.initial_state(), 0.0, grid, options.predictor.integrator, on_sample);
-  c.counters = res.counters;
+  }
+  c.counters = transient.counters;
 
   std::ostringstream why;
   const double floor = std::log(options.tolerance * Delta);
@@ -71,11 +82,11 @@ TruncationChoice choose_truncation(const Scene& scene, const TruncationOptions& 
     if (d > 0 && G > 0) c.log_gain[std::size_t(l - 3)] = log_area_gain(d, G) - std::log(Delta);
     if (c.log_gain[std::size_t(l - 3)] + std::log(Delta) > floor) L_needed = l;
   }
-  if (res.status != IntegrationStatus::success) {
+  if (transient.status != IntegrationStatus::success) {
     c.status = DomainStatus::outside_domain;
     c.L = std::max(options.L_max, L_explicit);
     why << "L = " << c.L << " (conservative): the reduced run for the finite-horizon predictor stopped at t = "
-        << format_value(res.t_reached) << " (" << res.reason << ")";
+        << format_value(transient.t_end) << " (" << transient.reason << ")";
     c.reason = why.str();
     return c;
   }

@@ -39,5 +39,12 @@ struct TruncationChoice {
 };
 
 TruncationChoice choose_truncation(const Scene& scene, const TruncationOptions& options = {});
+// The reduced transient the rule reads: over [0, scene.T] at options.checkpoints, with options.predictor's
+// integrator. The finite-horizon predictor can share it (finite_horizon_growth(scene, transient)).
+ReducedTransient truncation_transient(const Scene& scene, const TruncationOptions& options = {});
+// The rule from that transient: bit for bit choose_truncation(scene, options). Throws
+// InvalidArgument("transient", ...) if it is another scene's or has another horizon or checkpoint count.
+TruncationChoice choose_truncation(const Scene& scene, const ReducedTransient& transient,
+                                   const TruncationOptions& options = {});
 
 }  // namespace rbcstab

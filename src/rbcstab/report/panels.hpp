@@ -2,7 +2,7 @@
 // One command per paper figure panel. A scene file with a panel table is a figure panel:
 //   [diagram]       a phase diagram by simulation (sweep/diagram_file.hpp; Figs. 4, 5, Appendix E), drawn
 //                   with the traced boundary (out-of-plane scenes) and the paper's analytic lines on top;
-//   [fig6e]         the Fig. 6e table (analysis/post_instability.hpp): Delta~2 against the simulated mean;
+//   [fig6e]         the Fig. 6e table (sweep/fig6e.hpp): Delta~2 against the simulated mean;
 //   [continuation]  an equilibrium branch of the reduced system (continuation/equilibrium.hpp), drawn as a
 //                   bifurcation diagram (stable solid, unstable dashed, special points labelled).
 // build_panel_report computes the panel's data and hands it to build_report's hooks.
@@ -13,7 +13,7 @@
 #include <utility>
 #include <vector>
 
-#include "rbcstab/analysis/post_instability.hpp"
+#include "rbcstab/sweep/fig6e.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/io/scene_file.hpp"

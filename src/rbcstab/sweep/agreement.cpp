@@ -8,6 +8,7 @@
 
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/verdict/predict.hpp"
 
 namespace rbcstab {
 
@@ -148,8 +149,8 @@ Agreement compare(const Scene& base, const DiagramSpec& spec, const std::vector<
   return a;
 }
 
-PointVerdict asymptotic_point(const Scene& s, const PredictorOptions& o) {
-  const AsymptoticVerdict v = asymptotic_verdict(s, o);
+PointVerdict asymptotic_point(const Scene& s, const PredictorOptions& o, const OrbitAverageOptions& orbit) {
+  const AsymptoticVerdict v = asymptotic_verdict(s, o, orbit);
   return {true, v.unstable, v.l};
 }
 
@@ -158,7 +159,7 @@ PointVerdict asymptotic_point(const Scene& s, const PredictorOptions& o) {
 Agreement asymptotic_agreement(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points,
                                const TraceResult& boundary) {
   const std::vector<PointVerdict> v =
-      verdicts(base, spec, points, 1, [](const Scene& s) { return asymptotic_point(s, PredictorOptions{}); });
+      verdicts(base, spec, points, 1, [](const Scene& s) { return asymptotic_point(s, PredictorOptions{}, {}); });
   Agreement a = compare(base, spec, points, v, BoundaryDistance(spec, polylines(boundary)));
   a.predictor = "asymptotic";
   a.boundary = "the given traced boundary";
@@ -176,7 +177,7 @@ std::vector<Agreement> predictor_agreements(const Scene& base, const DiagramSpec
 
   auto traced = [&](TraceCriterion c, Agreement& a) {
     if (!options.trace) return BoundaryDistance(spec, {});
-    if (!options.trace_in_plane && !(stress_free_r0(base) < options.predictor.out_of_plane_r0)) {
+    if (!options.trace_in_plane && !is_out_of_plane(base, options.predictor)) {
       a.note = "boundary not traced: in-plane scene (AgreementOptions::trace_in_plane, or rbcstab trace --diagram)";
       return BoundaryDistance(spec, {});
     }
@@ -208,7 +209,8 @@ std::vector<Agreement> predictor_agreements(const Scene& base, const DiagramSpec
   Agreement asymptotic_boundary;
   const BoundaryDistance asymptotic_distance = traced(TraceCriterion::asymptotic, asymptotic_boundary);
   {  // asymptotic
-    const auto v = verdicts(base, spec, points, threads, [&](const Scene& s) { return asymptotic_point(s, po); });
+    const auto v = verdicts(base, spec, points, threads,
+                            [&](const Scene& s) { return asymptotic_point(s, po, options.trace_options.orbit); });
     push(compare(base, spec, points, v, asymptotic_distance), asymptotic_boundary, "asymptotic",
          "unstable iff mu_l = Upsilon_l(<sigma_R>) > 0 for some l in [3, L] (exact equilibrium out of "
          "plane, periodic-orbit average in plane, time average where no orbit attracts); mode: the surviving mode "

@@ -3,8 +3,8 @@
 // of grid points whose verdict (stable / unstable) and mode match the simulation, and where the
 // disagreements sit (distance to that predictor's boundary in grid steps, S, alpha / alpha_*^init).
 // Predictors (verdict; mode when unstable):
-//   asymptotic      mu_l = Upsilon_l(<sigma_R>) > 0 for some l in [3, L]; the surviving mode (trace.hpp)
-//   finite_horizon  G_l(T) > 0 for some l; argmax Delta_l(0)(exp(2 G_l) - 1) (analysis finite_horizon_prediction)
+//   asymptotic      mu_l = Upsilon_l(<sigma_R>) > 0 for some l in [3, L]; the surviving mode (verdict asymptotic_verdict)
+//   finite_horizon  G_l(T) > 0 for some l; argmax Delta_l(0)(exp(2 G_l) - 1) (verdict finite_horizon_prediction)
 //   l_star          l_* >= 2.5 (alpha >= (35/8)^2); round(l_*) (the paper's l -> l+1 lines at l_* = l + 1/2)
 //   alpha_init      alpha > alpha_*^init (sigma_R(0) < sigma_*: unstable at the start); round(l_*)
 //   large_S         <sigma_R^-+> (S >> 1 closed forms) < sigma_* and l_* >= 2.5, i.e. C < C_*^-+ (or
@@ -52,7 +52,8 @@ struct AgreementOptions {
   bool trace_finite_horizon = false;  // also trace the finite-horizon boundary (~1-3 s on a Fig. 4 plane: one
                                       // reduced run per evaluation); else its distances are to the asymptotic one
   int threads = 1;              // per-point predictor verdicts in parallel (results do not depend on it)
-  TraceOptions trace_options;   // for the traced boundaries (criterion is set per predictor)
+  TraceOptions trace_options;   // for the traced boundaries (criterion is set per predictor); its orbit options
+                                // also serve the per-point asymptotic verdicts
   PredictorOptions predictor;   // per-point verdicts (analysis defaults: verdicts need no 1e-12 smoothness)
   void validate() const;
 };

@@ -7,11 +7,11 @@
 #include <numbers>
 
 #include "rbcstab/analysis/predictors.hpp"
-#include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/verdict/predict.hpp"
 
 namespace rbcstab {
 
@@ -21,8 +21,6 @@ const char* kAsymptoticAverage = "mu_l = Upsilon_l(<sigma_R>) = 0 (time average 
 const char* kAsymptoticOrbit =
     "mu_l = Upsilon_l(<sigma_R>) = 0 (period average on the attracting periodic orbit, else time average; envelope over l = 3..L)";
 const char* kFiniteHorizon = "G_l(T) = int_0^T Upsilon_l(sigma_R(t)) dt = 0 (reduced transient, envelope over l = 3..L)";
-
-bool out_of_plane(const Scene& scene, const PredictorOptions& o) { return stress_free_r0(scene) < o.out_of_plane_r0; }
 }  // namespace
 
 std::string to_string(TraceCriterion c) {
@@ -32,134 +30,6 @@ TraceCriterion trace_criterion_from_string(const std::string& name) {
   if (name == "asymptotic") return TraceCriterion::asymptotic;
   if (name == "finite-horizon" || name == "finite_horizon") return TraceCriterion::finite_horizon;
   throw InvalidArgument("criterion", "'" + name + "' is not a criterion: asymptotic | finite-horizon");
-}
-
-std::string to_string(SigmaSource s) {
-  switch (s) {
-    case SigmaSource::equilibrium: return "equilibrium";
-    case SigmaSource::periodic_orbit: return "periodic_orbit";
-    case SigmaSource::time_average: return "time_average";
-  }
-  return "time_average";
-}
-
-void OrbitAverageOptions::validate() const {
-  require(relaxation_periods >= 0 && relaxation_periods <= 100000, "relaxation_periods", relaxation_periods,
-          "an integer in [0, 100000]");
-  require(samples >= 4 && samples <= 1000000, "samples", samples, "an integer in [4, 1000000]");
-  require(std::isfinite(max_multiplier) && max_multiplier > 0 && max_multiplier <= 1, "max_multiplier",
-          max_multiplier, "(0, 1]");
-  require(std::isfinite(newton_tol) && newton_tol >= 1e-15 && newton_tol <= 1e-6, "newton_tol", newton_tol,
-          "[1e-15, 1e-6]");
-  require(max_iterations >= 1 && max_iterations <= 1000, "max_iterations", max_iterations, "an integer in [1, 1000]");
-  shooting.validate();
-}
-
-OrbitSigmaAverage orbit_sigma_average(const Scene& scene, const OrbitAverageOptions& o) {
-  o.validate();
-  scene.validate();
-  constexpr double kTwoPi = 2 * std::numbers::pi;
-  OrbitSigmaAverage a;
-  // The free parameter is irrelevant at fixed p; B is defined for every valid scene.
-  const ReducedForcedSystem sys(scene, ContinuationParameter::B);
-  const PeriodicOrbitProblem orbit(sys, o.shooting);
-  const double p = sys.start_parameter();
-  const ReducedModel& model = sys.model(p);
-  Eigen::VectorXd x0;
-  if (o.relaxation_periods > 0) {
-    x0 = sys.relaxed_state(kTwoPi * o.relaxation_periods);
-  } else {
-    const std::vector<double> y0 = model.initial_state();
-    x0 = Eigen::Map<const Eigen::VectorXd>(y0.data(), 3);
-  }
-  if (!x0.allFinite()) {
-    a.reason = "relaxation run failed";
-    return a;
-  }
-  const NewtonResult nr = solve_fixed_parameter(orbit, orbit.shooting_guess(x0, p), p, o.newton_tol, o.max_iterations);
-  a.newton_iterations = nr.iterations;
-  a.newton_residual = nr.residual_norm;
-  if (!nr.converged) {
-    a.integrations = orbit.integrations();
-    a.reason = "periodic-orbit Newton did not converge in " + std::to_string(nr.iterations) + " iterations (residual " +
-               format_value(nr.residual_norm) + ")";
-    return a;
-  }
-  const Floquet fl = orbit.floquet(nr.x, p);
-  a.max_multiplier = fl.multipliers.size() > 0 ? fl.multipliers.cwiseAbs().maxCoeff() : 0.0;
-  a.x0 = orbit.state_at_zero(nr.x);
-  if (!(a.max_multiplier < o.max_multiplier)) {
-    a.integrations = orbit.integrations();
-    a.reason = "the periodic orbit is not attracting (largest nontrivial Floquet multiplier modulus " +
-               format_value(a.max_multiplier) + ")";
-    return a;
-  }
-  // Periodic trapezoid rule on t_k = 2 pi k / K: sigma_R(t) from the model's own observation.
-  const int K = o.samples;
-  std::vector<double> grid;
-  grid.reserve(static_cast<std::size_t>(K));
-  for (int k = 1; k < K; ++k) grid.push_back(kTwoPi * k / K);
-  double sum = model.observe(0.0, std::span<const double>(a.x0.data(), 3)).sigma;
-  IntegratorOptions io;
-  io.stepper = Stepper::rk8pd;
-  io.rtol = o.shooting.rtol;
-  io.atol = o.shooting.atol;
-  const IntegrationResult r = integrate(model, std::span<const double>(a.x0.data(), 3), 0.0, grid, io,
-                                        [&](double t, std::span<const double> y) { sum += model.observe(t, y).sigma; });
-  a.integrations = orbit.integrations() + 1;
-  if (r.status != IntegrationStatus::success) {
-    a.reason = "one-period run failed: " + r.reason;
-    return a;
-  }
-  a.sigma_R = sum / K;
-  a.ok = std::isfinite(a.sigma_R);
-  if (!a.ok) a.reason = "non-finite period average";
-  return a;
-}
-
-AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const PredictorOptions& options, const OrbitAverageOptions& orbit) {
-  AsymptoticSigma out;
-  if (out_of_plane(scene, options)) {
-    const OutOfPlaneEquilibrium eq = out_of_plane_equilibrium(scene.parameters);
-    if (eq.stable) {
-      out.sigma_R = eq.sigma_R;
-      out.exact = true;
-      out.source = SigmaSource::equilibrium;
-      return out;
-    }
-  } else if (orbit.enabled) {
-    // In plane the attractor is (mostly) a 2 pi-periodic orbit of the forced reduced system.
-    const OrbitSigmaAverage a = orbit_sigma_average(scene, orbit);
-    out.max_multiplier = a.max_multiplier;
-    out.newton_iterations = a.newton_iterations;
-    if (a.ok) {
-      out.sigma_R = a.sigma_R;
-      out.source = SigmaSource::periodic_orbit;
-      return out;
-    }
-    out.note = a.reason;
-  }
-  // The time average (the needed sigma_R integral at three times only: no dense regime sampling, 10x cheaper).
-  PredictorOptions o = options;
-  o.regime_sample_dt = 0.5 * o.window;
-  const SigmaAverage avg = time_averaged_sigma_R(scene, o);
-  if (!avg.mean.valid())
-    throw InvalidArgument("criterion", out.note.empty() ? avg.mean.reason : avg.mean.reason + " (" + out.note + ")");
-  out.sigma_R = avg.mean.value;
-  out.source = SigmaSource::time_average;
-  return out;
-}
-
-AsymptoticVerdict asymptotic_verdict(const Scene& scene, const PredictorOptions& options,
-                                     const OrbitAverageOptions& orbit) {
-  AsymptoticVerdict v;
-  v.sigma_R = asymptotic_sigma_R(scene, options, orbit).sigma_R;
-  const double alpha = scene.parameters.alpha();
-  v.active_mode = surviving_mode(alpha, scene.L);
-  v.margin = v.sigma_R - sigma_critical(v.active_mode, alpha);
-  v.unstable = v.margin < 0;
-  v.l = v.unstable ? v.active_mode : 2;
-  return v;
 }
 
 void TraceOptions::validate() const {
@@ -190,14 +60,14 @@ ModeCriteria plane_criteria(const Scene& base, const DiagramSpec& plane, const T
   ModeCriteria c;
   c.l_min = 3;
   if (options.criterion == TraceCriterion::asymptotic) {
-    c.description = out_of_plane(base, options.predictor) ? kAsymptoticExact
-                    : options.orbit.enabled                ? kAsymptoticOrbit
-                                                           : kAsymptoticAverage;
+    c.description = is_out_of_plane(base, options.predictor) ? kAsymptoticExact
+                    : options.orbit.enabled                   ? kAsymptoticOrbit
+                                                              : kAsymptoticAverage;
     c.at = [&base, &plane, po = options.predictor, oo = options.orbit](double x, double y) {
       const Scene s = plane_scene(base, plane, x, y);
       s.validate();
       CriterionSample out;
-      out.sigma_R = asymptotic_sigma_R(s, po, oo).sigma_R;
+      out.sigma_R = asymptotic_verdict(s, po, oo).sigma_R;
       out.alpha = s.parameters.alpha();
       for (int l = 3; l <= s.L; ++l) out.g.push_back(Upsilon(s.parameters, l, out.sigma_R));
       return out;
@@ -207,8 +77,8 @@ ModeCriteria plane_criteria(const Scene& base, const DiagramSpec& plane, const T
     c.at = [&base, &plane, &options](double x, double y) {
       const Scene s = plane_scene(base, plane, x, y);
       const FiniteHorizon h = finite_horizon_growth(s, options.T > 0 ? options.T : s.T, options.predictor);
-      if (h.status != IntegrationStatus::success)
-        throw InvalidArgument("criterion", "reduced run stopped at t = " + format_value(h.T) + ": " + h.reason);
+      const ModePrediction verdict = finite_horizon_prediction(s, h);
+      if (verdict.status != DomainStatus::ok) throw InvalidArgument("criterion", verdict.reason);
       CriterionSample out;
       out.sigma_R = h.mean_sigma_R;
       out.alpha = s.parameters.alpha();

@@ -1,12 +1,11 @@
 #pragma once
 // Stability boundaries traced as curves by continuation (issue 5 point 2). Criteria, per mode l = 3..L
-// (g_l > 0: mode l grows):
+// (g_l > 0: mode l grows), the verdicts of rbcstab::verdict:
 //  - asymptotic: mu_l = Upsilon_l(<sigma_R>) on the reduced attractor: the exact out-of-plane equilibrium
-//    (analysis/steady_states.hpp) for out-of-plane scenes; in plane the period average over the attracting
-//    2 pi-periodic orbit (continuation/orbit.hpp, multiple shooting), or a converged time average of sigma_R
-//    where the attractor is not such an orbit (asymptotic_sigma_R below);
+//    for out-of-plane scenes; in plane the period average over the attracting 2 pi-periodic orbit, or a
+//    converged time average of sigma_R where the attractor is not such an orbit (verdict/asymptotic.hpp);
 //  - finite horizon: G_l(T) = int_0^T Upsilon_l(sigma_R(t)) dt along the reduced transient
-//    (analysis finite_horizon_growth).
+//    (analysis finite_horizon_growth, verdict finite_horizon_prediction).
 // The boundary is the zero set of the envelope max_l g_l, traced by pseudo-arclength continuation of
 // g_l = 0 from automatically located starts, with the corners where another mode takes over located as
 // engine events (sweep/zero_set.hpp).
@@ -14,77 +13,16 @@
 #include <vector>
 
 #include "rbcstab/analysis/predictors.hpp"
-#include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/model/scene.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/zero_set.hpp"
+#include "rbcstab/verdict/asymptotic.hpp"
 
 namespace rbcstab {
 
 enum class TraceCriterion { asymptotic, finite_horizon };
 std::string to_string(TraceCriterion c);
 TraceCriterion trace_criterion_from_string(const std::string& name);  // throws InvalidArgument("criterion", ...)
-
-// <sigma_R> on the reduced attractor, from the first source that applies:
-//  - equilibrium: the exact out-of-plane equilibrium when the scene is out of plane and it is stable;
-//  - periodic_orbit (in plane): relax a few forcing periods from the scene's state, solve the 2 pi-periodic
-//    orbit by multiple shooting (PeriodicOrbitProblem + solve_fixed_parameter), require it attracting
-//    (nontrivial Floquet multipliers inside the unit circle), and average sigma_R(t) (ReducedModel::observe)
-//    over one period by the periodic trapezoid rule (spectrally accurate for a smooth periodic integrand);
-//  - time_average: otherwise (PredictorOptions transient/window), with the reason the orbit was not used.
-// Deterministic: every evaluation starts from the scene's own state (no warm starts), so traces are
-// bit-identical for any thread count. Throws InvalidArgument("criterion", ...) when the time average is
-// needed and has not converged (the value would not be a property of the attractor).
-enum class SigmaSource { equilibrium, periodic_orbit, time_average };
-std::string to_string(SigmaSource s);
-
-struct OrbitAverageOptions {
-  bool enabled = true;           // false: in plane always by the time average (the former criterion; comparisons)
-  int relaxation_periods = 8;    // forcing periods relaxed from the scene's state before Newton: enough to enter
-                                 // the attracting orbit's basin on the App. E planes (measured), far below the 500
-                                 // time units the time average skips
-  int samples = 128;             // trapezoid samples per period (64 vs 128 agree to ~1e-13: tested)
-  double max_multiplier = 1 - 1e-8;  // attracting: all nontrivial |multipliers| below this (a neutral one to the
-                                     // shooting accuracy does not certify an attractor)
-  double newton_tol = 1e-12;     // shooting Newton step tolerance (solve_fixed_parameter)
-  int max_iterations = 20;       // Newton iterations before falling back: from a relaxed start it takes 2-5
-  OrbitOptions shooting;         // segments, rtol 1e-12 of the shooting and of the one-period quadrature run
-  void validate() const;         // throws InvalidArgument naming the field
-};
-
-struct AsymptoticSigma {
-  double sigma_R = 0;
-  bool exact = false;  // the out-of-plane equilibrium (source == equilibrium)
-  SigmaSource source = SigmaSource::time_average;
-  std::string note;    // time_average in plane: why the periodic orbit was not used
-  double max_multiplier = 0;  // periodic_orbit: largest nontrivial |Floquet multiplier|
-  int newton_iterations = 0;  // periodic_orbit attempt
-};
-AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const PredictorOptions& options = {},
-                                   const OrbitAverageOptions& orbit = {});
-
-// The periodic-orbit average alone (no fallback): status in the result. Exposed for tests and benchmarks.
-struct OrbitSigmaAverage {
-  bool ok = false;
-  std::string reason;          // why not ok
-  double sigma_R = 0;          // period average of sigma_R (trapezoid, `samples` points)
-  double max_multiplier = 0;   // largest nontrivial |Floquet multiplier|
-  int newton_iterations = 0;
-  double newton_residual = 0;
-  Eigen::VectorXd x0;          // the orbit's state at t = 0 mod 2 pi
-  std::size_t integrations = 0;  // shooting + quadrature runs (work)
-};
-OrbitSigmaAverage orbit_sigma_average(const Scene& scene, const OrbitAverageOptions& orbit = {});
-
-struct AsymptoticVerdict {
-  bool unstable = false;
-  int l = 2;              // mode with the largest sigma_l^c among l = 3..L (the surviving mode) if unstable, else 2
-  double sigma_R = 0;     // <sigma_R> (asymptotic_sigma_R)
-  double margin = 0;      // sigma_R - max_{3<=l<=L} sigma_l^c (< 0: unstable)
-  int active_mode = 3;    // the argmax l of sigma_l^c (ties to the lower l)
-};
-AsymptoticVerdict asymptotic_verdict(const Scene& scene, const PredictorOptions& options = {},
-                                     const OrbitAverageOptions& orbit = {});
 
 struct TraceOptions {
   TraceCriterion criterion = TraceCriterion::asymptotic;

@@ -1,4 +1,4 @@
-// The in-plane asymptotic criterion from the exact periodic orbit (sweep/trace.hpp orbit_sigma_average,
+// The in-plane asymptotic criterion from the exact periodic orbit (verdict/asymptotic.hpp orbit_sigma_average,
 // asymptotic_sigma_R): against long time averages, the trapezoid rule's convergence, out-of-plane
 // invariance, the fallback path, and traced points.
 #include <gtest/gtest.h>
@@ -14,7 +14,7 @@
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "rbcstab/sweep/trace.hpp"
+#include "rbcstab/verdict/asymptotic.hpp"
 
 namespace rbcstab {
 namespace {

@@ -1,0 +1,165 @@
+#include "rbcstab/verdict/asymptotic.hpp"
+
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "rbcstab/analysis/thresholds.hpp"
+#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/model/coefficients.hpp"
+
+namespace rbcstab {
+
+std::string to_string(SigmaSource s) {
+  switch (s) {
+    case SigmaSource::equilibrium: return "equilibrium";
+    case SigmaSource::periodic_orbit: return "periodic_orbit";
+    case SigmaSource::time_average: return "time_average";
+  }
+  return "time_average";
+}
+
+void OrbitAverageOptions::validate() const {
+  require(relaxation_periods >= 0 && relaxation_periods <= 100000, "relaxation_periods", relaxation_periods,
+          "an integer in [0, 100000]");
+  require(samples >= 4 && samples <= 1000000, "samples", samples, "an integer in [4, 1000000]");
+  require(std::isfinite(max_multiplier) && max_multiplier > 0 && max_multiplier <= 1, "max_multiplier",
+          max_multiplier, "(0, 1]");
+  require(std::isfinite(newton_tol) && newton_tol >= 1e-15 && newton_tol <= 1e-6, "newton_tol", newton_tol,
+          "[1e-15, 1e-6]");
+  require(max_iterations >= 1 && max_iterations <= 1000, "max_iterations", max_iterations, "an integer in [1, 1000]");
+  shooting.validate();
+}
+
+OrbitSigmaAverage orbit_sigma_average(const Scene& scene, const OrbitAverageOptions& o) {
+  o.validate();
+  scene.validate();
+  constexpr double kTwoPi = 2 * std::numbers::pi;
+  OrbitSigmaAverage a;
+  // The free parameter is irrelevant at fixed p; B is defined for every valid scene.
+  const ReducedForcedSystem sys(scene, ContinuationParameter::B);
+  const PeriodicOrbitProblem orbit(sys, o.shooting);
+  const double p = sys.start_parameter();
+  const ReducedModel& model = sys.model(p);
+  Eigen::VectorXd x0;
+  if (o.relaxation_periods > 0) {
+    x0 = sys.relaxed_state(kTwoPi * o.relaxation_periods);
+  } else {
+    const std::vector<double> y0 = model.initial_state();
+    x0 = Eigen::Map<const Eigen::VectorXd>(y0.data(), 3);
+  }
+  if (!x0.allFinite()) {
+    a.reason = "relaxation run failed";
+    return a;
+  }
+  const NewtonResult nr = solve_fixed_parameter(orbit, orbit.shooting_guess(x0, p), p, o.newton_tol, o.max_iterations);
+  a.newton_iterations = nr.iterations;
+  a.newton_residual = nr.residual_norm;
+  if (!nr.converged) {
+    a.integrations = orbit.integrations();
+    a.reason = "periodic-orbit Newton did not converge in " + std::to_string(nr.iterations) + " iterations (residual " +
+               format_value(nr.residual_norm) + ")";
+    return a;
+  }
+  const Floquet fl = orbit.floquet(nr.x, p);
+  a.max_multiplier = fl.multipliers.size() > 0 ? fl.multipliers.cwiseAbs().maxCoeff() : 0.0;
+  a.x0 = orbit.state_at_zero(nr.x);
+  if (!(a.max_multiplier < o.max_multiplier)) {
+    a.integrations = orbit.integrations();
+    a.reason = "the periodic orbit is not attracting (largest nontrivial Floquet multiplier modulus " +
+               format_value(a.max_multiplier) + ")";
+    return a;
+  }
+  // Periodic trapezoid rule on t_k = 2 pi k / K: sigma_R(t) from the model's own observation.
+  const int K = o.samples;
+  std::vector<double> grid;
+  grid.reserve(static_cast<std::size_t>(K));
+  for (int k = 1; k < K; ++k) grid.push_back(kTwoPi * k / K);
+  double sum = model.observe(0.0, std::span<const double>(a.x0.data(), 3)).sigma;
+  IntegratorOptions io;
+  io.stepper = Stepper::rk8pd;
+  io.rtol = o.shooting.rtol;
+  io.atol = o.shooting.atol;
+  const IntegrationResult r = integrate(model, std::span<const double>(a.x0.data(), 3), 0.0, grid, io,
+                                        [&](double t, std::span<const double> y) { sum += model.observe(t, y).sigma; });
+  a.integrations = orbit.integrations() + 1;
+  if (r.status != IntegrationStatus::success) {
+    a.reason = "one-period run failed: " + r.reason;
+    return a;
+  }
+  a.sigma_R = sum / K;
+  a.ok = std::isfinite(a.sigma_R);
+  if (!a.ok) a.reason = "non-finite period average";
+  return a;
+}
+
+bool is_out_of_plane(const Scene& scene, const PredictorOptions& options) {
+  return stress_free_r0(scene) < options.out_of_plane_r0;
+}
+
+AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const PredictorOptions& options, const OrbitAverageOptions& orbit) {
+  scene.validate();
+  options.validate();
+  orbit.validate();
+  AsymptoticSigma out;
+  out.out_of_plane = is_out_of_plane(scene, options);
+  if (out.out_of_plane) {
+    out.equilibrium = out_of_plane_equilibrium(scene.parameters);
+    if (out.equilibrium.stable) {
+      out.sigma_R = out.equilibrium.sigma_R;
+      out.exact = true;
+      out.source = SigmaSource::equilibrium;
+      return out;
+    }
+    out.note = "the out-of-plane equilibrium is not stable";
+  } else if (orbit.enabled) {
+    // In plane the attractor is (mostly) a 2 pi-periodic orbit of the forced reduced system.
+    const OrbitSigmaAverage a = orbit_sigma_average(scene, orbit);
+    out.max_multiplier = a.max_multiplier;
+    out.newton_iterations = a.newton_iterations;
+    if (a.ok) {
+      out.sigma_R = a.sigma_R;
+      out.source = SigmaSource::periodic_orbit;
+      return out;
+    }
+    out.note = a.reason;
+  }
+  // The time average (the needed sigma_R integral at three times only: no dense regime sampling, 10x cheaper).
+  PredictorOptions o = options;
+  o.regime_sample_dt = 0.5 * o.window;
+  const SigmaAverage avg = time_averaged_sigma_R(scene, o);
+  out.source = SigmaSource::time_average;
+  if (!avg.mean.valid()) {
+    out.status = DomainStatus::outside_domain;
+    out.reason = out.note.empty() ? avg.mean.reason : avg.mean.reason + " (" + out.note + ")";
+    return out;
+  }
+  out.sigma_R = avg.mean.value;
+  return out;
+}
+
+AsymptoticVerdict asymptotic_verdict(const Scene& scene, double sigma_R) {
+  AsymptoticVerdict v;
+  v.sigma_R = sigma_R;
+  if (scene.L < 3) {  // no mode l >= 3 to destabilise
+    v.active_mode = 2;
+    v.margin = std::numeric_limits<double>::infinity();
+    return v;
+  }
+  const double alpha = scene.parameters.alpha();
+  v.active_mode = surviving_mode(alpha, scene.L);
+  v.margin = v.sigma_R - sigma_critical(v.active_mode, alpha);
+  v.unstable = v.margin < 0;
+  v.l = v.unstable ? v.active_mode : 2;
+  return v;
+}
+
+AsymptoticVerdict asymptotic_verdict(const Scene& scene, const PredictorOptions& options,
+                                     const OrbitAverageOptions& orbit) {
+  const AsymptoticSigma a = asymptotic_sigma_R(scene, options, orbit);
+  if (!a.valid()) throw InvalidArgument("criterion", a.reason);
+  return asymptotic_verdict(scene, a.sigma_R);
+}
+
+}  // namespace rbcstab
