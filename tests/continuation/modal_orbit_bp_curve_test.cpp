@@ -4,7 +4,7 @@
 //  - the modal orbit's own Floquet multipliers (variational equations of ModalForcedSystem at L = 4):
 //    the a_3 multiplier is 1 on the curve;
 //  - the generic BP system (BranchPointCurveProblem over the modal shooting problem, L = 4);
-//  - the in-plane asymptotic criterion of sweep/trace (orbit_sigma_average: trapezoid of sigma_R on
+//  - the in-plane asymptotic criterion of verdict/asymptotic (orbit_sigma_average: trapezoid of sigma_R on
 //    ReducedModel::observe samples): mu_3 = Upsilon_3(<sigma_R>) = 0 on the curve.
 #include <gtest/gtest.h>
 
