@@ -14,6 +14,7 @@
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/sweep/trace.hpp"
 #include "rbcstab/verdict/predict.hpp"
+#include "model/test_scenes.hpp"
 
 namespace rbcstab {
 namespace {
@@ -21,9 +22,8 @@ namespace {
 constexpr double kHalfPi = std::numbers::pi / 2;
 
 Scene fig3(double lambda, double beta) {
-  Scene s;  // defaults: B = 2, C = 0.04, Delta = 1, Delta0 = 0.01, L = 10, T = 500
+  Scene s = testing::fig3_scene(beta);
   s.parameters.lambda = lambda;
-  s.beta = beta;
   return s;
 }
 

@@ -5,7 +5,6 @@
 #include <numbers>
 
 #include "rbcstab/analysis/detail/reduced_quadrature.hpp"
-#include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
 

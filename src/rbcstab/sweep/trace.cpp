@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
-#include <numbers>
 
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/thresholds.hpp"

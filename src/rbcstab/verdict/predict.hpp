@@ -41,7 +41,7 @@ struct ScenePrediction {
   Quantity sigma_R_asymptotic;          // <sigma_R> on the attractor
   std::string asymptotic_source;        // which source gave it, in words
   AsymptoticSigma asymptotic_sigma;     // the source and its diagnostics
-  bool out_of_plane = false;
+  bool out_of_plane = false;           // the stress-free shape is out of plane (is_out_of_plane)
   OutOfPlaneEquilibrium equilibrium;    // filled when out_of_plane
   FiniteHorizon horizon;
   ModePrediction asymptotic, finite_horizon, simulation;
