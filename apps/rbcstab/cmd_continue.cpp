@@ -42,10 +42,12 @@ struct ContinueOptions {
 template <class Result>
 void print(const ContinueOptions& o, const Result& r) {
   if (!o.csv.empty()) write_file_atomic(o.csv, to_csv(r));
-  if (o.json)
-    std::cout << to_json(r).dump(2) << "\n";
-  else
+  if (o.json) {
+    const nlohmann::json j = to_json(r);
+    std::cout << j.dump(2) << "\n";
+  } else {
     std::cout << to_text(r);
+  }
 }
 
 int report(const ContinueOptions& o, const SceneBranch& r) {

@@ -4,8 +4,7 @@
 
 #include <sstream>
 
-#include "continuation/fig2_fixture.hpp"
-#include "continuation/modal_fixtures.hpp"
+#include "continuation/scene_spec_fixture.hpp"
 #include "rbcstab/continuation/branch_io.hpp"
 
 namespace rbcstab {
@@ -22,13 +21,7 @@ std::vector<std::string> lines_of(const std::string& text) {
 
 const SceneBranch& modal_switched() {
   static const SceneBranch r = [] {
-    BranchSpec s;
-    s.scene = modal_fixtures::scene(0.08, 4);
-    s.kind = ProblemKind::modal;
-    s.parameter = P::C;
-    s.engine.p_min = 0.02;
-    s.engine.p_max = 0.08;
-    s.engine.direction = Direction::backward;
+    BranchSpec s = test::modal_spec(4, 0.02);
     s.switch_at_bp = true;
     return continue_scene(s);
   }();
@@ -36,17 +29,7 @@ const SceneBranch& modal_switched() {
 }
 
 const SceneBranch& orbit_branch() {
-  static const SceneBranch r = [] {
-    BranchSpec s;
-    s.scene = test::fig2_in_plane(0.3);
-    s.kind = ProblemKind::orbit;
-    s.parameter = P::Delta;
-    s.engine.p_min = 0.3;
-    s.engine.p_max = 0.45;
-    s.engine.direction = Direction::forward;
-    s.orbit.segments = 4;
-    return continue_scene(s);
-  }();
+  static const SceneBranch r = continue_scene(test::orbit_spec());
   return r;
 }
 
@@ -142,19 +125,7 @@ TEST(BranchText, SummarisesTheBranchItsSpecialPointsAndTheSwitch) {
 }
 
 TEST(CurveOutput, JsonCsvAndTextOfAModalBPCurve) {
-  BranchSpec s;
-  s.scene = modal_fixtures::scene(0.08, 4);
-  s.kind = ProblemKind::modal;
-  s.parameter = P::C;
-  s.engine.p_min = 0.02;
-  s.engine.p_max = 0.08;
-  s.engine.direction = Direction::backward;
-  CurveSpec cs;
-  cs.type = CurveKind::BP;
-  cs.parameter2 = P::B;
-  cs.p2_min = 0.8;
-  cs.p2_max = 1.2;
-  const SceneCurve c = continue_curve(s, cs);
+  const SceneCurve c = continue_curve(test::modal_spec(4, 0.02), test::curve_of(CurveKind::BP, P::B, 0.8, 1.2));
   ASSERT_TRUE(c.started) << c.message;
   const nlohmann::json j = to_json(c);
   EXPECT_EQ(j.at("free_parameter"), "B");

@@ -11,6 +11,7 @@
 #include "continuation/fig2_fixture.hpp"
 #include "continuation/full_fixtures.hpp"
 #include "continuation/modal_fixtures.hpp"
+#include "continuation/scene_spec_fixture.hpp"
 #include "rbcstab/continuation/branch_point_curve.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"
 #include "rbcstab/continuation/fold_curve.hpp"
@@ -25,6 +26,10 @@ namespace rbcstab {
 namespace {
 
 using P = ContinuationParameter;
+using test::curve_of;
+using test::modal_spec;
+using test::orbit_spec;
+using test::spec_of;
 
 // Bit for bit: every point (state, parameter, spectrum, stability), every special point, the status.
 void expect_same_branch(const Branch& a, const Branch& b) {
@@ -55,29 +60,6 @@ std::string invalid_parameter(const std::function<void()>& f, std::string* messa
   }
   ADD_FAILURE() << "expected InvalidArgument";
   return "";
-}
-
-BranchSpec spec_of(const Scene& scene, ProblemKind kind, P q, double lo, double hi, Direction d) {
-  BranchSpec s;
-  s.scene = scene;
-  s.kind = kind;
-  s.parameter = q;
-  s.engine.p_min = lo;
-  s.engine.p_max = hi;
-  s.engine.direction = d;
-  return s;
-}
-
-// The modal scene of the CLI tests: ellipsoidal branch in C from 0.08 down, BPs where Upsilon_l(sigma) = 0.
-BranchSpec modal_spec() {
-  return spec_of(modal_fixtures::scene(0.08, 6), ProblemKind::modal, P::C, 0.015, 0.08, Direction::backward);
-}
-
-// Fig. 2's in-plane orbit from Delta = 0.3 to 0.45: one swinging -> tumbling transition.
-BranchSpec orbit_spec() {
-  BranchSpec s = spec_of(test::fig2_in_plane(0.3), ProblemKind::orbit, P::Delta, 0.3, 0.45, Direction::forward);
-  s.orbit.segments = 4;
-  return s;
 }
 
 TEST(SceneContinuation, EquilibriumIsTheDirectBranchWithPolarMeasures) {
@@ -243,12 +225,7 @@ TEST(SceneCurve, VesicleFoldCurveIsTheDirectFoldCurve) {
   s.parameters.Delta = 0.2;
   s.parameters.Delta0 = 0;
   const BranchSpec spec = spec_of(s, ProblemKind::equilibrium, P::lambda, 0, 20, Direction::both);
-  CurveSpec cs;
-  cs.type = CurveKind::LP;
-  cs.parameter2 = P::Delta;
-  cs.p2_min = 0.1;
-  cs.p2_max = 2;
-  const SceneCurve c = continue_curve(spec, cs);
+  const SceneCurve c = continue_curve(spec, curve_of(CurveKind::LP, P::Delta, 0.1, 2));
   ASSERT_TRUE(c.started) << c.message;
   EXPECT_EQ(c.system, CurveSystem::fold);
   const SpecialPoint* lp = find_special_point(c.one.branch.branch, SpecialPointType::LP);
@@ -274,12 +251,7 @@ TEST(SceneCurve, VesicleFoldCurveIsTheDirectFoldCurve) {
 }
 
 TEST(SceneCurve, ModalBPCurveUsesTheSymmetryBreakingSystem) {
-  CurveSpec cs;
-  cs.type = CurveKind::BP;
-  cs.parameter2 = P::B;
-  cs.p2_min = 0.5;
-  cs.p2_max = 2;
-  const SceneCurve c = continue_curve(modal_spec(), cs);
+  const SceneCurve c = continue_curve(modal_spec(), curve_of(CurveKind::BP, P::B, 0.5, 2));
   ASSERT_TRUE(c.started) << c.message;
   EXPECT_EQ(c.system, CurveSystem::modal_branch_point);
   const Scene at = with_parameter(modal_fixtures::scene(0.08, 6), P::C, c.start.p);
@@ -296,10 +268,7 @@ TEST(SceneCurve, ModalBPCurveUsesTheSymmetryBreakingSystem) {
 }
 
 TEST(SceneCurve, NoLocatedPointIsAReasonNotAnException) {
-  CurveSpec cs;
-  cs.type = CurveKind::NS;
-  cs.parameter2 = P::C;
-  const SceneCurve c = continue_curve(orbit_spec(), cs);
+  const SceneCurve c = continue_curve(orbit_spec(), curve_of(CurveKind::NS, P::C, -INFINITY, INFINITY));
   EXPECT_FALSE(c.started);
   EXPECT_NE(c.message.find("no located NS point number 1"), std::string::npos) << c.message;
   EXPECT_TRUE(c.curve.branch.points.empty());

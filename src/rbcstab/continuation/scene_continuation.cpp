@@ -138,51 +138,34 @@ class SceneProblem {
   virtual std::vector<UserEvent> events() const { return {}; }
 };
 
-class ReducedEquilibrium final : public SceneProblem {
+// The start of each level's equilibria (StartMethod in the header says why).
+StartPoint equilibrium_start(const ReducedEquilibriumProblem& pr, const BranchSpec& spec) {
+  return given_start(StartMethod::relaxed, pr.relaxed_state(spec.relax_T), pr.start_parameter());
+}
+StartPoint equilibrium_start(const ModalEquilibriumProblem& pr, const BranchSpec&) {
+  const double p0 = pr.start_parameter();
+  return given_start(StartMethod::ellipsoidal, pr.ellipsoidal_state(p0), p0);  // the engine's Newton polishes it
+}
+StartPoint equilibrium_start(const FullEquilibriumProblem& pr, const BranchSpec& spec) {
+  const double p0 = pr.start_parameter();
+  const auto& rest = pr.scene().rest_delta_l;
+  if (std::any_of(rest.begin(), rest.end(), [](const auto& kv) { return kv.second > 0; }))
+    return newton_start(pr, StartMethod::relaxed, pr.relaxed_state(spec.relax_T), p0,
+                        "full-model equilibrium near the relaxed state");
+  return newton_start(pr, StartMethod::ellipsoidal, pr.ellipsoidal_state(p0), p0, "full-model equilibrium near the ellipsoid");
+}
+
+// Equilibria of one level (Problem: ReducedEquilibriumProblem, ModalEquilibriumProblem, FullEquilibriumProblem).
+template <class Problem>
+class Equilibrium final : public SceneProblem {
  public:
-  ReducedEquilibrium(const Scene& scene, ContinuationParameter q) : pr_(scene, q) {}
+  Equilibrium(const Scene& scene, ContinuationParameter q) : pr_(scene, q) {}
   const ContinuationProblem& problem() const override { return pr_; }
-  StartPoint start(const BranchSpec& spec) const override {
-    return given_start(StartMethod::relaxed, pr_.relaxed_state(spec.relax_T), pr_.start_parameter());
-  }
+  StartPoint start(const BranchSpec& spec) const override { return equilibrium_start(pr_, spec); }
   Values measures(const Eigen::VectorXd& x, double p) const override { return equilibrium_values(pr_, x, p); }
 
  private:
-  ReducedEquilibriumProblem pr_;
-};
-
-class ModalEquilibrium final : public SceneProblem {
- public:
-  ModalEquilibrium(const Scene& scene, ContinuationParameter q) : pr_(scene, q) {}
-  const ContinuationProblem& problem() const override { return pr_; }
-  StartPoint start(const BranchSpec&) const override {
-    const double p0 = pr_.start_parameter();
-    return given_start(StartMethod::ellipsoidal, pr_.ellipsoidal_state(p0), p0);  // the engine's Newton polishes it
-  }
-  Values measures(const Eigen::VectorXd& x, double p) const override { return equilibrium_values(pr_, x, p); }
-
- private:
-  ModalEquilibriumProblem pr_;
-};
-
-class FullEquilibrium final : public SceneProblem {
- public:
-  FullEquilibrium(const Scene& scene, ContinuationParameter q) : pr_(scene, q) {}
-  const ContinuationProblem& problem() const override { return pr_; }
-  StartPoint start(const BranchSpec& spec) const override {
-    const double p0 = pr_.start_parameter();
-    const auto& rest = pr_.scene().rest_delta_l;
-    const bool rest_high = std::any_of(rest.begin(), rest.end(), [](const auto& kv) { return kv.second > 0; });
-    if (rest_high)
-      return newton_start(pr_, StartMethod::relaxed, pr_.relaxed_state(spec.relax_T), p0,
-                          "full-model equilibrium near the relaxed state");
-    return newton_start(pr_, StartMethod::ellipsoidal, pr_.ellipsoidal_state(p0), p0,
-                        "full-model equilibrium near the ellipsoid");
-  }
-  Values measures(const Eigen::VectorXd& x, double p) const override { return equilibrium_values(pr_, x, p); }
-
- private:
-  FullEquilibriumProblem pr_;
+  Problem pr_;
 };
 
 // Orbits of the forced reduced system or modal model (System: ReducedForcedSystem, ModalForcedSystem).
@@ -215,9 +198,10 @@ Scene problem_scene_of(const BranchSpec& spec) {
 
 std::unique_ptr<SceneProblem> make_problem(const BranchSpec& spec, const Scene& scene) {
   switch (spec.kind) {
-    case ProblemKind::equilibrium: return std::make_unique<ReducedEquilibrium>(scene, spec.parameter);
-    case ProblemKind::modal: return std::make_unique<ModalEquilibrium>(scene, spec.parameter);
-    case ProblemKind::full: return std::make_unique<FullEquilibrium>(scene, spec.parameter);
+    case ProblemKind::equilibrium:
+      return std::make_unique<Equilibrium<ReducedEquilibriumProblem>>(scene, spec.parameter);
+    case ProblemKind::modal: return std::make_unique<Equilibrium<ModalEquilibriumProblem>>(scene, spec.parameter);
+    case ProblemKind::full: return std::make_unique<Equilibrium<FullEquilibriumProblem>>(scene, spec.parameter);
     case ProblemKind::orbit: return std::make_unique<Orbit<ReducedForcedSystem>>(scene, spec.parameter, spec.orbit);
     case ProblemKind::modal_orbit: return std::make_unique<Orbit<ModalForcedSystem>>(scene, spec.parameter, spec.orbit);
   }
