@@ -116,6 +116,8 @@ TEST(SceneContinuation, ModalIsTheDirectBranchAndSwitchesAtItsFirstBP) {
   const SwitchedBranch none = switch_at_bp(r, 99);
   EXPECT_FALSE(none.switched);
   EXPECT_NE(none.message.find("no BP number 99"), std::string::npos) << none.message;
+  // A branch run with its switched branch still has curves (continue_curve from the result).
+  EXPECT_TRUE(continue_curve(r, curve_of(CurveKind::BP, P::B, 0.9, 1.1)).started);
 }
 
 TEST(SceneContinuation, FullStartsFromTheRelaxedSceneWithRestContentAndFromTheEllipsoidWithout) {

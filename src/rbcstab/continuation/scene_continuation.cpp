@@ -558,7 +558,9 @@ SceneCurve continue_curve(const BranchSpec& branch, const CurveSpec& curve) {
 }
 
 SceneCurve continue_curve(const SceneBranch& one, const CurveSpec& spec) {
-  spec.validate(one.spec);
+  BranchSpec branch = one.spec;
+  branch.switch_at_bp = false;  // a branch already run with its switched branch still has curves
+  spec.validate(branch);
   SceneCurve r;
   r.spec = spec;
   r.one = one;

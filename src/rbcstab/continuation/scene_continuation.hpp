@@ -191,7 +191,7 @@ struct SceneCurve {
 
 // Validates both specs (before any work), runs the branch, then its curve.
 SceneCurve continue_curve(const BranchSpec& branch, const CurveSpec& curve);
-// The curve from a branch already run (no re-run).
+// The curve from a branch already run (no re-run; its switched branch, if any, does not matter).
 SceneCurve continue_curve(const SceneBranch& one, const CurveSpec& curve);
 
 // A branch that ends at a stop condition or on the edge of its parameter's domain has ended normally.
