@@ -9,7 +9,6 @@
 #include <sstream>
 #include <unistd.h>
 
-#include "rbcstab/continuation/equilibrium.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/report/panels.hpp"
@@ -143,28 +142,29 @@ TEST(BifurcationJson, VesicleBranchFollowsTheClosedForm) {
   text.replace(text.find("beta = 0.001"), 12, "beta = 0.0");
   const SceneFile sf = parse_scene(text);
   const ContinuationPanel c = parse_continuation_table(text);
-  const ReducedEquilibriumProblem problem(sf.scene, c.parameter);
-  const Branch b = continue_branch(problem, problem.relaxed_state(c.relax_T), problem.start_parameter(), c.engine);
-  const nlohmann::json j = bifurcation_json(b, "lambda", c.measure);
-  ASSERT_EQ(j.at("branches").size(), 1u);
-  const auto& br = j.at("branches")[0];
-  ASSERT_EQ(br.at("x").size(), b.points.size());
+  const SceneBranch r = continue_scene(branch_spec(c, sf.scene));
+  const Branch& b = r.branch.branch;
+  const nlohmann::json j = bifurcation_json(r, c.measure);
+  EXPECT_EQ(j.at("measure"), c.measure);
+  ASSERT_FALSE(j.contains("switched_branch"));  // one branch
+  const auto& br = j.at("branch");
+  ASSERT_EQ(br.size(), b.points.size());
   ASSERT_GT(b.points.size(), 10u);
   Parameters p = sf.scene.parameters;
   for (std::size_t k = 0; k < b.points.size(); ++k) {
-    p.lambda = br.at("x")[k].get<double>();
-    const double psi = br.at("y")[k].get<double>();
+    p.lambda = br[k].at("lambda").get<double>();
+    const double psi = br[k].at(c.measure).get<double>();
     // Newton converges to 1e-12 (newton_tol); arccos loses up to sqrt of that near Lambda = 1.
     EXPECT_NEAR(std::abs(psi), std::acos(std::min(1.0, p.Lambda())), 2e-6) << "lambda = " << p.lambda;
     if (std::abs(psi) > 1e-3) {
-      EXPECT_EQ(br.at("stable")[k].get<bool>(), psi > 0) << "lambda = " << p.lambda;
+      EXPECT_EQ(br[k].at("stable").get<bool>(), psi > 0) << "lambda = " << p.lambda;
     }
   }
   bool lp = false;
-  for (const auto& sp : j.at("points"))
-    if (sp.at("label") == "LP") {
+  for (const auto& sp : j.at("special_points"))
+    if (sp.at("type") == "LP") {
       lp = true;
-      p.lambda = sp.at("x").get<double>();
+      p.lambda = sp.at("lambda").get<double>();
       EXPECT_NEAR(p.Lambda(), 1.0, 1e-6);  // located to 1e-8 in the parameter (docs/continuation.md)
     }
   EXPECT_TRUE(lp);

@@ -9,7 +9,7 @@
 #include <sstream>
 #include <toml++/toml.h>
 
-#include "rbcstab/continuation/equilibrium.hpp"
+#include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/detail/scene_toml.hpp"
 #include "rbcstab/io/files.hpp"
@@ -253,32 +253,20 @@ ContinuationPanel parse_continuation_table(const std::string& toml_text, const s
   return c;
 }
 
-nlohmann::json bifurcation_json(const Branch& b, const std::string& parameter, const std::string& measure) {
-  auto value = [&](const Eigen::VectorXd& x) {
-    const PolarState s = polar(x);
-    return number_or_null(measure == "r" ? s.r : s.Psi);
-  };
-  nlohmann::json xs = nlohmann::json::array(), ys = nlohmann::json::array(), st = nlohmann::json::array();
-  for (const BranchPoint& pt : b.points) {
-    xs.push_back(number_or_null(pt.p));
-    ys.push_back(value(pt.x));
-    st.push_back(pt.stable);
-  }
-  nlohmann::json points = nlohmann::json::array(), specials = nlohmann::json::array();
-  for (const SpecialPoint& sp : b.special_points) {
-    points.push_back({{"x", number_or_null(sp.p)}, {"y", value(sp.x)}, {"label", to_string(sp.type)}});
-    specials.push_back({{"type", to_string(sp.type)}, {"name", sp.name}, {parameter, number_or_null(sp.p)},
-                        {measure, value(sp.x)}, {"bracket", {number_or_null(sp.p_lo), number_or_null(sp.p_hi)}},
-                        {"precision", number_or_null(sp.precision)}, {"status", to_string(sp.status)},
-                        {"unstable_before", sp.unstable_before}, {"unstable_after", sp.unstable_after}});
-  }
-  return {{"parameter", parameter},
-          {"measure", measure},
-          {"branches", {{{"label", "equilibria"}, {"x", xs}, {"y", ys}, {"stable", st}}}},
-          {"points", points},
-          {"special_points", specials},
-          {"status", to_string(b.status)},
-          {"message", b.message}};
+BranchSpec branch_spec(const ContinuationPanel& panel, const Scene& scene) {
+  BranchSpec spec;
+  spec.scene = scene;
+  spec.kind = ProblemKind::equilibrium;
+  spec.parameter = panel.parameter;
+  spec.engine = panel.engine;
+  spec.relax_T = panel.relax_T;
+  return spec;
+}
+
+nlohmann::json bifurcation_json(const SceneBranch& branch, const std::string& measure) {
+  nlohmann::json j = to_json(branch);
+  j["measure"] = measure;
+  return j;
 }
 
 nlohmann::json phase_overlay_json(const std::vector<TraceCurve>& boundary, const std::vector<Overlay>& lines) {
@@ -459,13 +447,12 @@ PanelReportResult build_panel_report(const SceneFile& sf, const std::string& tom
     ro.figure_title = sf.scene.name + ": " + tex_parameters(sf.scene, {"lambda"}, false);
   } else {
     const ContinuationPanel c = parse_continuation_table(toml_text, source);
-    const ReducedEquilibriumProblem problem(sf.scene, c.parameter);  // throws InvalidArgument("beta") if forced
-    const Branch b = continue_branch(problem, problem.relaxed_state(c.relax_T), problem.start_parameter(), c.engine);
+    const SceneBranch r = continue_scene(branch_spec(c, sf.scene));  // throws InvalidArgument("beta") if forced
+    const Branch& b = r.branch.branch;
     const std::string name = to_string(c.parameter);
-    ro.bifurcation = staging.put("bifurcation.json", bifurcation_json(b, name, c.measure).dump(1) + "\n");
+    ro.bifurcation = staging.put("bifurcation.json", bifurcation_json(r, c.measure).dump(1) + "\n");
     res.status = to_string(b.status);
-    // A branch that ends on the edge of the parameter's domain has ended normally (as `rbcstab continue`).
-    res.failed = b.status != ContinuationStatus::completed && b.status != ContinuationStatus::outside_domain;
+    res.failed = !ended_normally(b.status);
     std::string specials;
     for (const SpecialPoint& sp : b.special_points) {
       std::ostringstream ss;
@@ -477,7 +464,7 @@ PanelReportResult build_panel_report(const SceneFile& sf, const std::string& tom
                  {"special points", specials.empty() ? "none" : specials},
                  {"Newton iterations", std::to_string(b.counters.newton_iterations)}};
     summary << "Bifurcation diagram: equilibria of the reduced system (out-of-plane rest shape) continued in " << name
-            << " from " << problem.start_parameter() << ", " << c.measure
+            << " from " << r.start.p << ", " << c.measure
             << " against " << name << "; stable solid, unstable dashed, special points (AUTO-07p labels) marked. "
             << "Base scene: " << parameters_text(sf.scene, c.parameter != ContinuationParameter::lambda, true) << ".";
     // Lambda moves Delta, S moves C (parameters.hpp): those are varied too.

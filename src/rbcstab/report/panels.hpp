@@ -3,8 +3,8 @@
 //   [diagram]       a phase diagram by simulation (sweep/diagram_file.hpp; Figs. 4, 5, Appendix E), drawn
 //                   with the traced boundary (out-of-plane scenes) and the paper's analytic lines on top;
 //   [fig6e]         the Fig. 6e table (sweep/fig6e.hpp): Delta~2 against the simulated mean;
-//   [continuation]  an equilibrium branch of the reduced system (continuation/equilibrium.hpp), drawn as a
-//                   bifurcation diagram (stable solid, unstable dashed, special points labelled).
+//   [continuation]  an equilibrium branch of the reduced system (continue_scene, as `rbcstab continue`), drawn
+//                   as a bifurcation diagram (stable solid, unstable dashed, special points labelled).
 // build_panel_report computes the panel's data and hands it to build_report's hooks.
 #include <atomic>
 #include <functional>
@@ -16,6 +16,7 @@
 #include "rbcstab/sweep/fig6e.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/scene_continuation.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/report/report.hpp"
 #include "rbcstab/sweep/agreement.hpp"
@@ -47,9 +48,11 @@ struct ContinuationPanel {
   ContinuationOptions engine;   // p_min, p_max, direction, steps; validated by continue_branch
 };
 ContinuationPanel parse_continuation_table(const std::string& toml_text, const std::string& source = "scene");
-// The branch in the layout rbcstab_report.py draws: {"parameter", "measure", "branches": [{"label", "x", "y",
-// "stable"}], "points": [{"x", "y", "label"}]}, plus "special_points" with type, bracket, precision and status.
-nlohmann::json bifurcation_json(const Branch& branch, const std::string& parameter, const std::string& measure);
+// The panel's branch: reduced-system equilibria from the scene, as `rbcstab continue` (same start, bounds).
+BranchSpec branch_spec(const ContinuationPanel& panel, const Scene& scene);
+// The Branch JSON of `rbcstab continue --json` (continuation/branch_io.hpp) plus "measure", the quantity
+// rbcstab_report.py draws against the parameter.
+nlohmann::json bifurcation_json(const SceneBranch& branch, const std::string& measure);
 
 // The phase diagram's overlay {"curves": [{"label", "x", "y", "style", "color"}]}: the traced boundary
 // pieces (solid black, one legend entry per mode) and the analytic lines (dashed / dotted; C_*^± red).

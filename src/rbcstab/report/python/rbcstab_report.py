@@ -488,28 +488,34 @@ def plot_delta2_comparison(csv_path, out, size_px=(750, 750), title=None):
     return save(fig, out, size_px)
 
 
-def from_continue_json(j, measure="r"):
-    """The output of `rbcstab continue --json` ({"branch": [points], "special_points": [...]}) as the
+def from_continue_json(j):
+    """The Branch JSON (`rbcstab continue --json`, the report's [continuation] panel: "branch", "special_points",
+    "free_parameter", "kind", optional "switched_branch", and "measure", the y axis, default r) as the
     {"parameter", "measure", "branches", "points"} layout plot_bifurcation draws; other input unchanged."""
     if "branch" not in j:
         return j
-    pts = j["branch"]
-    state = {"r", "Psi", "stable", "n_unstable", "eigenvalues"}
-    params = [k for k in (pts[0] if pts else {}) if k not in state]
-    par = params[0] if params else "parameter"
+    par, measure = j["free_parameter"], j.get("measure", "r")
     num = lambda v: float("nan") if v is None else v  # noqa: E731  (null: not finite)
-    branch = {"label": "equilibria", "x": [num(p.get(par)) for p in pts], "y": [num(p.get(measure)) for p in pts],
-              "stable": [bool(p.get("stable", True)) for p in pts]}
-    points = [{"x": num(sp.get(par)), "y": num(sp.get(measure)), "label": sp.get("type", sp.get("name", ""))}
-              for sp in j.get("special_points", [])]
-    return {"parameter": par, "measure": measure, "branches": [branch], "points": points}
+    label = f"{j['curve']['type']} curve" if "curve" in j else \
+        "periodic orbits" if j.get("kind") in ("orbit", "modal-orbit") else "equilibria"
+    parts = [(label, j)]
+    if j.get("switched_branch", {}).get("switched"):
+        parts.append(("switched branch", j["switched_branch"]))
+    branches, points = [], []
+    for lab, b in parts:
+        pts = b["branch"]
+        branches.append({"label": lab, "x": [num(p.get(par)) for p in pts], "y": [num(p.get(measure)) for p in pts],
+                         "stable": [bool(p.get("stable", True)) for p in pts]})
+        points += [{"x": num(sp.get(par)), "y": num(sp.get(measure)), "label": sp.get("type", sp.get("name", ""))}
+                   for sp in b.get("special_points", [])]
+    return {"parameter": par, "measure": measure, "branches": branches, "points": points}
 
 
 def plot_bifurcation(json_path, out, size_px=(900, 675), title=None):
     """Branches against a parameter: stable parts solid, unstable dashed, special points labelled.
 
     JSON: {"parameter": "ln_C", "measure": "r", "branches": [{"label", "x": [...], "y": [...],
-    "stable": [bool per point]}], "points": [{"x", "y", "label"}]}, or the output of `rbcstab continue --json`."""
+    "stable": [bool per point]}], "points": [{"x", "y", "label"}]}, or the Branch JSON (from_continue_json)."""
     b = from_continue_json(read_json(json_path))
     fig, ax = new_figure(size_px)
     cols = greys(max(2, len(b.get("branches", []))), 0.0, 0.7)
@@ -635,12 +641,17 @@ def selftest(folder):
                                 {"label": "mode 3", "x": xs[10:], "y": [0.6 + 0.3 * math.sqrt(x - 1.0) for x in xs[10:]],
                                  "stable": [True] * 11}],
                    "points": [{"x": 1.0, "y": 0.6, "label": "BP"}]}, f)
-    with open(p("continue.json"), "w") as f:  # the layout of `rbcstab continue --json`
+    with open(p("continue.json"), "w") as f:  # the Branch JSON of `rbcstab continue --json`
         xs = [0.1 * k for k in range(21)]
-        json.dump({"branch": [{"C": x, "r": 0.5 + 0.2 * x, "Psi": 0.3, "stable": x < 1.2, "n_unstable": int(x >= 1.2)}
+        sw = [1.2 + 0.05 * k for k in range(11)]
+        json.dump({"kind": "modal", "free_parameter": "C",
+                   "branch": [{"C": x, "r": 0.5 + 0.2 * x, "Psi": 0.3, "stable": x < 1.2, "n_unstable": int(x >= 1.2)}
                               for x in xs],
-                   "special_points": [{"type": "BP", "name": "branch point", "C": 1.2, "r": 0.74, "Psi": 0.3}],
-                   "status": "success"}, f)
+                   "special_points": [{"type": "BP", "name": "BP", "C": 1.2, "r": 0.74, "Psi": 0.3}],
+                   "status": "completed",
+                   "switched_branch": {"switched": True, "status": "completed", "special_points": [],
+                                       "branch": [{"C": x, "r": 0.74 + 0.4 * math.sqrt(x - 1.2), "Psi": 0.3,
+                                                   "stable": True, "n_unstable": 0} for x in sw]}}, f)
     out = [plot_bifurcation(p("continue.json"), p("fig_bifurcation_continue.png")),
            plot_phase_diagram(p("phase_diagram.csv"), p("fig_phase_diagram.png"), p("phase_diagram_overlay.json")),
            plot_delta2_comparison(p("delta2_comparison.csv"), p("fig_delta2_theory.png")),

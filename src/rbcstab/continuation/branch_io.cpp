@@ -1,0 +1,223 @@
+#include "rbcstab/continuation/branch_io.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+#include "rbcstab/io/json.hpp"
+
+namespace rbcstab {
+
+namespace {
+
+nlohmann::json value_json(const MeasureValue& v) {
+  if (const double* d = std::get_if<double>(&v)) return number_or_null(*d);
+  if (const int* i = std::get_if<int>(&v)) return *i;
+  return std::get<std::string>(v);
+}
+
+void put_value(std::ostream& os, const MeasureValue& v) {
+  std::visit([&](const auto& x) { os << x; }, v);
+}
+
+nlohmann::json complex_json(std::complex<double> z) { return {number_or_null(z.real()), number_or_null(z.imag())}; }
+
+// The parameters by name and the measures by name of one point (its row k).
+nlohmann::json point_json(const MeasuredBranch& m, const std::vector<double>& parameters,
+                          const std::vector<MeasureValue>& measures) {
+  nlohmann::json j;
+  const auto& names = m.branch.parameter_names;
+  for (std::size_t k = 0; k < names.size(); ++k) j[names[k]] = number_or_null(parameters[k]);
+  for (std::size_t k = 0; k < m.measure_names.size(); ++k) j[m.measure_names[k]] = value_json(measures[k]);
+  return j;
+}
+
+// The keys a scene's branch and a curve share: what was continued, from which scene.
+void put_header(nlohmann::json& j, const BranchSpec& spec) {
+  j["kind"] = to_string(spec.kind);
+  j["level"] = to_string(model_level(spec.kind));
+  j["free_parameter"] = to_string(spec.parameter);
+  j["parameters"] = to_json(spec.scene.parameters);
+  j["beta"] = spec.scene.beta;
+  if (is_orbit(spec.kind)) j["segments"] = spec.orbit.segments;
+}
+
+// The most unstable spectral value: max Re(lambda), or max |mu| for multipliers.
+double most_unstable(const Eigen::VectorXcd& spectrum, StabilityKind kind) {
+  double m = kind == StabilityKind::eigenvalues ? -std::numeric_limits<double>::infinity() : 0.0;
+  for (Eigen::Index i = 0; i < spectrum.size(); ++i)
+    m = std::max(m, kind == StabilityKind::eigenvalues ? spectrum[i].real() : std::abs(spectrum[i]));
+  return m;
+}
+
+// CSV rows of a branch: its parameters, the label (if any), the CSV measures, stability and (with_max)
+// the most unstable spectral value.
+void csv_rows(std::ostream& os, const MeasuredBranch& m, const char* label, bool with_max) {
+  for (std::size_t k = 0; k < m.branch.points.size(); ++k) {
+    const BranchPoint& pt = m.branch.points[k];
+    for (std::size_t i = 0; i < pt.parameters.size(); ++i) os << (i ? "," : "") << pt.parameters[i];
+    if (label) os << ',' << label;
+    for (std::size_t i = 0; i < m.measure_names.size(); ++i)
+      if (is_csv_measure(m.measure_names[i])) {
+        os << ',';
+        put_value(os, m.point_measures[k][i]);
+      }
+    os << ',' << (pt.stable ? 1 : 0) << ',' << pt.n_unstable;
+    if (with_max) os << ',' << most_unstable(pt.spectrum, m.spectrum_kind);
+    os << '\n';
+  }
+}
+
+void csv_header(std::ostream& os, const std::vector<std::string>& parameters, bool with_label,
+                const MeasuredBranch& m, bool with_max) {
+  for (std::size_t i = 0; i < parameters.size(); ++i) os << (i ? "," : "") << parameters[i];
+  if (with_label) os << ",branch";
+  for (const auto& n : m.measure_names)
+    if (is_csv_measure(n)) os << ',' << n;
+  os << ",stable,n_unstable";
+  if (with_max) os << (m.spectrum_kind == StabilityKind::eigenvalues ? ",max_Re_eig" : ",max_abs_multiplier");
+  os << '\n';
+}
+
+// "N points in P from a to b, status s (message)".
+void branch_line(std::ostream& os, const Branch& b, const std::string& parameter) {
+  os << b.points.size() << " points in " << parameter;
+  if (!b.points.empty()) os << " from " << b.points.front().p << " to " << b.points.back().p;
+  os << ", status " << to_string(b.status) << " (" << b.message << ")\n";
+}
+
+void special_lines(std::ostream& os, const Branch& b, const std::string& parameter, const char* indent) {
+  for (const auto& sp : b.special_points)
+    os << indent << sp.name << " " << parameter << " = " << sp.p << " (" << to_string(sp.status) << ", precision "
+       << sp.precision << ", unstable " << sp.unstable_before << " -> " << sp.unstable_after << ")\n";
+}
+
+}  // namespace
+
+nlohmann::json to_json(const MeasuredBranch& m) {
+  const Branch& b = m.branch;
+  const char* spectrum_key = m.spectrum_kind == StabilityKind::eigenvalues ? "eigenvalues" : "multipliers";
+  nlohmann::json pts = nlohmann::json::array();
+  for (std::size_t k = 0; k < b.points.size(); ++k) {
+    const BranchPoint& pt = b.points[k];
+    nlohmann::json j = point_json(m, pt.parameters, m.point_measures[k]);
+    j["stable"] = pt.stable;
+    j["n_unstable"] = pt.n_unstable;
+    nlohmann::json ev = nlohmann::json::array();
+    for (Eigen::Index i = 0; i < pt.spectrum.size(); ++i) ev.push_back(complex_json(pt.spectrum[i]));
+    j[spectrum_key] = ev;
+    pts.push_back(j);
+  }
+  nlohmann::json sps = nlohmann::json::array();
+  for (std::size_t k = 0; k < b.special_points.size(); ++k) {
+    const SpecialPoint& sp = b.special_points[k];
+    nlohmann::json j = point_json(m, sp.parameters, m.special_measures[k]);
+    j["type"] = to_string(sp.type);
+    j["name"] = sp.name;
+    if (sp.type == SpecialPointType::PD || sp.type == SpecialPointType::NS || sp.type == SpecialPointType::HB)
+      j["critical"] = complex_json(sp.eigenvalue);
+    j["bracket"] = {number_or_null(sp.p_lo), number_or_null(sp.p_hi)};
+    j["precision"] = number_or_null(sp.precision);
+    j["status"] = to_string(sp.status);
+    j["unstable_before"] = sp.unstable_before;
+    j["unstable_after"] = sp.unstable_after;
+    sps.push_back(j);
+  }
+  const ContinuationCounters& c = b.counters;
+  return {{"branch", pts},
+          {"special_points", sps},
+          {"status", to_string(b.status)},
+          {"message", b.message},
+          {"counters",
+           {{"steps", c.steps},
+            {"rejected_steps", c.rejected_steps},
+            {"newton_iterations", c.newton_iterations},
+            {"residual_evaluations", c.residual_evaluations},
+            {"jacobian_evaluations", c.jacobian_evaluations},
+            {"location_iterations", c.location_iterations}}}};
+}
+
+nlohmann::json to_json(const SceneBranch& r) {
+  nlohmann::json j = to_json(r.branch);
+  put_header(j, r.spec);
+  if (r.switched) {
+    nlohmann::json sw = to_json(r.switched->branch);
+    sw["switched"] = r.switched->switched;
+    if (!r.switched->switched) sw["message"] = r.switched->message;
+    j["switched_branch"] = sw;
+  }
+  return j;
+}
+
+nlohmann::json to_json(const SceneCurve& r) {
+  nlohmann::json j = to_json(r.curve);
+  put_header(j, r.one.spec);
+  const std::string p1 = to_string(r.one.spec.parameter), p2 = to_string(*r.spec.parameter2);
+  j["free_parameter"] = p2;
+  nlohmann::json start{{"type", to_string(r.start.type)},
+                       {"name", r.start.name},
+                       {p1, number_or_null(r.start.p)},
+                       {p2, number_or_null(r.start_p2)},
+                       {"precision", number_or_null(r.start.precision)},
+                       {"status", to_string(r.start.status)}};
+  j["curve"] = {{"type", to_string(r.spec.type)},
+                {"parameters", {p1, p2}},
+                {"start", start},
+                {"one_parameter_points", r.one.branch.branch.points.size()},
+                {"system", to_string(r.system)}};
+  return j;
+}
+
+std::string to_csv(const SceneBranch& r) {
+  // Kinds that can switch label their rows, so a switched branch can follow in the same table.
+  const bool labelled = !is_orbit(r.spec.kind);
+  std::ostringstream ss;
+  ss << std::setprecision(17);
+  csv_header(ss, {to_string(r.spec.parameter)}, labelled, r.branch, true);
+  csv_rows(ss, r.branch, labelled ? "primary" : nullptr, true);
+  if (r.switched && r.switched->switched) csv_rows(ss, r.switched->branch, "switched", true);
+  return ss.str();
+}
+
+std::string to_csv(const SceneCurve& r) {
+  std::ostringstream ss;
+  ss << std::setprecision(17);
+  csv_header(ss, {to_string(r.one.spec.parameter), to_string(*r.spec.parameter2)}, false, r.curve, false);
+  csv_rows(ss, r.curve, nullptr, false);
+  return ss.str();
+}
+
+std::string to_text(const SceneBranch& r) {
+  const std::string p = to_string(r.spec.parameter);
+  std::ostringstream ss;
+  ss << std::setprecision(10);
+  branch_line(ss, r.branch.branch, p);
+  special_lines(ss, r.branch.branch, p, "");
+  if (r.switched && r.switched->switched) {
+    ss << "switched at "
+       << (r.switched->bp_number == 1 ? std::string("the first BP")
+                                      : "BP number " + std::to_string(r.switched->bp_number))
+       << ": ";
+    branch_line(ss, r.switched->branch.branch, p);
+    special_lines(ss, r.switched->branch.branch, p, "  ");
+  }
+  return ss.str();
+}
+
+std::string to_text(const SceneCurve& r) {
+  const std::string p1 = to_string(r.one.spec.parameter), p2 = to_string(*r.spec.parameter2);
+  const Branch& c = r.curve.branch;
+  std::ostringstream ss;
+  ss << std::setprecision(10) << to_string(r.spec.type) << " curve from " << r.start.name << " (" << p1 << " = "
+     << r.start.p << "): " << c.points.size() << " points in (" << p1 << ", " << p2 << ")";
+  if (!c.points.empty()) ss << ", " << p2 << " from " << c.points.front().p << " to " << c.points.back().p;
+  ss << ", status " << to_string(c.status) << " (" << c.message << ")\n";
+  for (const auto& sp : c.special_points)
+    ss << sp.name << " " << p1 << " = " << sp.parameters[0] << ", " << p2 << " = " << sp.parameters[1] << " ("
+       << to_string(sp.status) << ", precision " << sp.precision << ")\n";
+  return ss.str();
+}
+
+}  // namespace rbcstab

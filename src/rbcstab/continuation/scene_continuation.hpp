@@ -1,0 +1,200 @@
+#pragma once
+// Continuation of a scene: the typed entry points behind `rbcstab continue` and the report's
+// [continuation] panel. A BranchSpec names what to continue (the problem kind, the free parameter, its
+// bounds, the engine options); continue_scene picks the problem and its start, continues the branch and
+// measures every point by name; continue_curve continues a special point's curve in a second parameter
+// (choosing the curve system); switch_at_bp follows the branch bifurcating at a BP. Results are plain
+// data; branch_io.hpp renders them (JSON, CSV, text).
+#include <Eigen/Dense>
+#include <cstddef>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include "rbcstab/continuation/branch_switch.hpp"
+#include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/model/scene.hpp"
+#include "rbcstab/model/system.hpp"
+
+namespace rbcstab {
+
+// What is continued: equilibria of the reduced system, of the modal model or of the full model, or
+// periodic orbits of the forced in-plane reduced system or modal model.
+enum class ProblemKind { equilibrium, modal, full, orbit, modal_orbit };
+std::string to_string(ProblemKind kind);  // "equilibrium", "modal", "full", "orbit", "modal-orbit"
+ProblemKind problem_kind_from_string(const std::string& name);  // throws InvalidArgument("kind", ...)
+ModelLevel model_level(ProblemKind kind);                       // reduced, modal or full
+bool is_orbit(ProblemKind kind);
+// The rest shape's orientation a kind needs when the user gives none: equilibria need an autonomous
+// system (rest shape out of plane, 0), periodic orbits a forced one (in plane, pi/2).
+double default_beta(ProblemKind kind);
+
+// The curve of a special point in two parameters: LP, BP, HB of equilibria; LPC, PD, NS, BP of orbits.
+enum class CurveKind { LP, BP, HB, LPC, PD, NS };
+std::string to_string(CurveKind kind);
+CurveKind curve_kind_from_string(const std::string& name);  // throws InvalidArgument("curve", ...)
+SpecialPointType special_point_type(CurveKind kind);
+
+// The system that continues a curve: the fold (LP, LPC), Hopf and period-doubling minimal augmentations,
+// the Neimark-Sacker system, the generic 2n + 2 branch-point system, and the two symmetry-reduced BP
+// systems: ModalBranchPointCurve (modal equilibria) and ModalOrbitBranchPointCurve (Z2-reduced, the
+// in-plane ellipsoidal modal orbit).
+enum class CurveSystem {
+  fold,
+  hopf,
+  period_doubling,
+  neimark_sacker,
+  branch_point,
+  modal_branch_point,
+  ellipsoidal_orbit_branch_point
+};
+std::string to_string(CurveSystem system);
+
+// A named measure of a point: a number, an integer (winding, mode) or a label (orbit kind).
+using MeasureValue = std::variant<double, int, std::string>;
+
+// The measures of a point of a branch of `kind` (L: the scene's truncation), in output order:
+//   equilibrium: r, Psi;  modal, full: r, Psi, sigma, Delta_2 ... Delta_L;
+//   orbit: r, Psi (t = 0), r_min, r_max, Psi_min, Psi_max, winding, kind, trivial_multiplier;
+//   modal_orbit: r, Psi, sigma, Delta_2 ... Delta_L (t = 0), winding, kind, trivial_multiplier.
+std::vector<std::string> measure_names(ProblemKind kind, int L);
+// The measures of a point of a curve continued by `system` from a branch of `kind`: an equilibrium's
+// measures (plus omega on a Hopf curve); for orbits r, Psi at t = 0 (plus sigma_bar, mode on the
+// ellipsoidal-orbit BP curve).
+std::vector<std::string> curve_measure_names(ProblemKind kind, CurveSystem system, int L);
+// Whether a measure is a CSV column: not trivial_multiplier, a check of the shooting (1 up to rounding)
+// rather than a property of the orbit, which JSON carries.
+bool is_csv_measure(std::string_view name);
+
+// A branch (or curve) and its points' measures: what every rendering and plot reads. The points keep
+// their parameters, full state x, spectrum and stability (Branch); measures are aligned with measure_names.
+struct MeasuredBranch {
+  Branch branch;
+  StabilityKind spectrum_kind = StabilityKind::eigenvalues;  // eigenvalues or Floquet multipliers
+  std::vector<std::string> measure_names;
+  std::vector<std::vector<MeasureValue>> point_measures;    // [k]: of branch.points[k]
+  std::vector<std::vector<MeasureValue>> special_measures;  // [k]: of branch.special_points[k]
+  // The measure `name` of point k; throws InvalidArgument("measure", ...) for an unknown name.
+  const MeasureValue& measure(std::size_t k, std::string_view name) const;
+  // The same as a number (integers converted); throws InvalidArgument("measure", ...) for a label.
+  double number(std::size_t k, std::string_view name) const;
+};
+
+// A one-parameter branch from a scene.
+struct BranchSpec {
+  Scene scene;  // every parameter but the free one; modal_orbit: the scene that is simulated to relax
+  ProblemKind kind = ProblemKind::equilibrium;
+  ContinuationParameter parameter = ContinuationParameter::lambda;
+  // Steps, tolerances, detection; p_min/p_max bound the free parameter (landed on exactly; lambda's and
+  // beta's closed domain edges replace bounds beyond them) and the branch runs both ways by default.
+  ContinuationOptions engine = [] {
+    ContinuationOptions o;
+    o.direction = Direction::both;
+    return o;
+  }();
+  double relax_T = 200;       // relaxation that gives the start state (orbits: rounded up to a multiple of 2 pi)
+  OrbitOptions orbit;         // orbit, modal_orbit: the shooting
+  bool switch_at_bp = false;  // equilibrium, modal, full: also follow the branch bifurcating at the first BP
+  // Throws InvalidArgument naming the field: switch_at_bp for orbits, the orbit options, the scene's
+  // model level against the kind (model), relax_T, the engine options, and a start value (the scene's
+  // parameter) outside the bounds (min).
+  void validate() const;
+};
+
+// The bounds the engine uses for parameter q from the requested [lo, hi]: lambda >= 0 and beta in
+// [0, pi] are closed domain edges, landed on exactly instead of failing beyond them.
+void set_domain_bounds(ContinuationOptions& engine, ContinuationParameter q, double lo, double hi);
+
+// How a branch starts from its scene. equilibrium: the scene relaxed for relax_T (on the stable branch
+// when one attracts it); modal: the ellipsoidal equilibrium's closed form; full: the closed form without
+// stress-free l >= 3 content, else the scene relaxed by the full model (Newton from the ellipsoid may land
+// on an unstable member of the unfolded pitchfork); orbits: the relaxed state's shooting guess. Full and
+// orbits are then solved by Newton at fixed parameter; the other kinds leave that to the engine's start.
+enum class StartMethod { relaxed, ellipsoidal };
+std::string to_string(StartMethod method);
+struct StartPoint {
+  StartMethod method = StartMethod::relaxed;
+  Eigen::VectorXd x;  // the problem's unknowns (orbits: the shooting vector)
+  double p = 0;       // the free parameter's start value
+  bool newton = false;      // Newton at fixed p solved x (full, orbits)
+  bool converged = true;    // false: no solution near the start state; message says which
+  int iterations = 0;
+  double residual_norm = 0;
+  std::string message;
+};
+StartPoint find_start(const BranchSpec& spec);  // validates spec
+
+// The branch that bifurcates at a BP of a branch.
+struct SwitchedBranch {
+  bool switched = false;  // false: message says why (no such BP, not a simple BP, corrector failed)
+  std::string message;
+  int bp_number = 1;      // the k-th BP of the primary branch
+  MeasuredBranch branch;
+};
+
+struct SceneBranch {
+  BranchSpec spec;      // as run: the engine's bounds set by set_domain_bounds
+  Scene problem_scene;  // the problem's scene (modal_orbit: spec.scene with its total excess area as Delta)
+  StartPoint start;
+  MeasuredBranch branch;  // status start_failed (no points) when the start did not converge
+  std::optional<SwitchedBranch> switched;  // spec.switch_at_bp: at the first BP
+};
+
+// Validates spec, finds the start and continues the branch (orbits with the swing_tumble UZ event).
+SceneBranch continue_scene(const BranchSpec& spec);
+
+// The branch bifurcating at the k-th BP of `from` (equilibrium, modal, full), continued with
+// from.spec.engine or options.continuation. Throws InvalidArgument("switch_at_bp", ...) for orbits and
+// ("bp", ...) for k < 1.
+SwitchedBranch switch_at_bp(const SceneBranch& from, int k = 1);
+SwitchedBranch switch_at_bp(const SceneBranch& from, int k, const BranchSwitchOptions& options);
+
+// The curve of the point-th located special point of type `type` of a one-parameter branch, in
+// (branch parameter, parameter2) with parameter2 free, both directions, the branch's engine options
+// (without its events) and [p2_min, p2_max] as bounds (set_domain_bounds).
+struct CurveSpec {
+  CurveKind type = CurveKind::LP;
+  std::optional<ContinuationParameter> parameter2;  // required; independent of the branch's parameter
+  double p2_min = -std::numeric_limits<double>::infinity(), p2_max = std::numeric_limits<double>::infinity();
+  int point = 1;
+  // A BP of a modal orbit whose v~ and every a_l are below this (max norm) lies on the in-plane
+  // ellipsoidal orbit, which the Z2-reduced system continues: those entries are exactly 0 there on a
+  // continued branch (an invariant subspace), while an orbit with l >= 3 content has them O(1).
+  double symmetric_tol = 1e-8;
+  // Throws InvalidArgument naming the field: the type against the branch's kind (curve), parameter2
+  // (missing, or coupled to the branch's parameter), min2 >= max2, point < 1, switch_at_bp set.
+  void validate(const BranchSpec& branch) const;
+};
+
+// Which system continues the curve of `start` (a special point of a branch of `kind` in q1, with the
+// problem's scene at the start: parameter q1 set to start.p): BP of modal equilibria -> the symmetry-
+// breaking ModalBranchPointCurve; BP of a modal orbit on the ellipsoidal orbit (v~ = 0, a_l = 0 within
+// symmetric_tol, an untilted rest shape, beta fixed) -> the Z2-reduced system; any other BP -> generic.
+CurveSystem curve_system(ProblemKind kind, CurveKind type, const Scene& scene, ContinuationParameter q1,
+                         ContinuationParameter q2, const SpecialPoint& start, double symmetric_tol = 1e-8);
+
+struct SceneCurve {
+  CurveSpec spec;      // as run: the bounds set by set_domain_bounds
+  SceneBranch one;     // the one-parameter branch the curve starts from
+  bool started = false;  // false: no start (the branch's start failed, or no located point); message says why
+  std::string message;
+  SpecialPoint start;  // the special point of `one`
+  double start_p2 = 0;   // parameter2 at the start (the scene's value)
+  CurveSystem system = CurveSystem::fold;
+  MeasuredBranch curve;  // points carry (parameter, parameter2)
+};
+
+// Validates both specs (before any work), runs the branch, then its curve.
+SceneCurve continue_curve(const BranchSpec& branch, const CurveSpec& curve);
+// The curve from a branch already run (no re-run; its switched branch, if any, does not matter).
+SceneCurve continue_curve(const SceneBranch& one, const CurveSpec& curve);
+
+// A branch that ends at a stop condition or on the edge of its parameter's domain has ended normally.
+bool ended_normally(ContinuationStatus status);
+
+}  // namespace rbcstab
