@@ -234,6 +234,7 @@ int report(const ContinueOptions& o, const SceneFile& sf, const Branch& b, const
     j["kind"] = o.kind;
     j["level"] = o.kind == "full" ? "full" : o.kind == "modal" || o.kind == "modal-orbit" ? "modal" : "reduced";
     j["free_parameter"] = o.parameter;
+    put_truncation(j, sf);
     j["parameters"] = to_json(sf.scene.parameters);
     j["beta"] = sf.scene.beta;
     if (o.kind == "orbit" || o.kind == "modal-orbit") j["segments"] = o.orbit.segments;
@@ -326,6 +327,7 @@ int report_curve(const ContinueOptions& o, const SceneFile& sf, const Branch& on
     j["kind"] = o.kind;
     j["level"] = o.kind == "full" ? "full" : o.kind == "modal" || o.kind == "modal-orbit" ? "modal" : "reduced";
     j["free_parameter"] = o.parameter2;
+    put_truncation(j, sf);
     j["parameters"] = to_json(sf.scene.parameters);
     j["beta"] = sf.scene.beta;
     if (o.kind == "orbit" || o.kind == "modal-orbit") j["segments"] = o.orbit.segments;
@@ -518,10 +520,10 @@ int run(ContinueOptions& o) {
   } else if (!o.parameter2.empty()) {
     throw InvalidArgument("parameter2", "--parameter2 needs --curve LP|BP|HB|LPC|PD|NS");
   }
-  SceneFile sf = o.scene.resolve();
+  SceneFile sf = o.scene.resolve(full || modal ? TruncationUse::analysis : TruncationUse::reduced);
   // Equilibria need an autonomous reduced system (rest shape out of plane), periodic orbits a forced
   // one (rest shape in plane), unless beta is given.
-  if (o.scene.o_beta->count() == 0 && o.scene.scene_path.empty()) sf.scene.beta = orbit ? M_PI / 2 : 0;
+  if (sf.origin("initial.beta") != Origin::flag && o.scene.scene_path.empty()) sf.scene.beta = orbit ? M_PI / 2 : 0;
   const ModelLevel level = full ? ModelLevel::full : modal ? ModelLevel::modal : ModelLevel::reduced;
   if (sf.scene.model != ModelLevel::automatic && sf.scene.model != level)
     throw InvalidArgument("model", "model = " + to_string(sf.scene.model) + " is not available for --kind " + o.kind +

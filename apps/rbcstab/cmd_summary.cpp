@@ -94,14 +94,13 @@ struct SummaryOptions {
 
 int run(const SummaryOptions& o) {
   const SceneOptions& so = o.scene;
-  std::string L_reason;
-  const SceneFile sf = so.resolve_with_default_L(L_reason);
+  const SceneFile sf = so.resolve(TruncationUse::simulation);
   const Scene& s = sf.scene;
   const Parameters& p = s.parameters;
   const SimulationResult r = simulate(s, sf.options);
   if (o.json) {
     nlohmann::json j = summary_json(s, r, sf.options.tail_window);
-    j["L_reason"] = L_reason;
+    put_truncation(j, sf);
     std::cout << j.dump(2) << "\n";
     return r.status == IntegrationStatus::success ? kOk : kRunFailed;
   }
@@ -112,7 +111,7 @@ int run(const SummaryOptions& o) {
       << ", C = " << p.C << "\n";
   out << "             beta = " << s.beta << ", delta = " << s.delta << ", L = " << s.L << ", T = " << s.T << "\n";
   out << "Derived      Lambda = " << p.Lambda() << ", S = " << p.S() << ", alpha = B/C = " << p.alpha() << "\n";
-  out << "Truncation   " << L_reason << "\n";
+  out << "Truncation   " << sf.L_reason << "\n";
   out << "Model level  " << to_string(r.level.level) << " -- " << r.level.reason << "\n";
   for (const auto& w : r.warnings) out << "Warning      " << w << "\n";
   out << "\nExcess area by mode (Delta_l):\n";

@@ -36,8 +36,8 @@ struct TraceCliOptions {
 };
 
 int run(const TraceCliOptions& o) {
-  const SceneFile sf = o.scene.resolve();
-  DiagramSpec spec = plane_spec(o.scene, o.axes, o.x_range, o.y_range, o.alpha_fixed);
+  const SceneFile sf = o.scene.resolve(TruncationUse::grid);
+  DiagramSpec spec = plane_spec(sf, o.axes, o.x_range, o.y_range, o.alpha_fixed);
   spec.validate();
   TraceOptions to = o.trace;
   to.criterion = trace_criterion_from_string(o.criterion);
@@ -86,6 +86,7 @@ int run(const TraceCliOptions& o) {
                                        {"location_iterations", t.counters.location_iterations}}},
                      {"notes", t.notes},
                      {"seconds", t.seconds}};
+  put_truncation(doc, sf);
   if (!o.diagram.empty()) {
     nlohmann::json dj;
     try {
@@ -126,6 +127,7 @@ int run(const TraceCliOptions& o) {
                      {"evaluations", t.evaluations},    {"seconds", t.seconds},
                      {"analytic_lines", overlays.size()}};
     if (doc.contains("agreement")) j["agreement"] = doc["agreement"];
+    put_truncation(j, sf);
     std::cout << j.dump(2) << "\n";
   }
   return kOk;
