@@ -140,7 +140,7 @@ int run(const DiagramCliOptions& o) {
 static Runner add_diagram(CLI::App& app) {
   auto o = std::make_shared<DiagramCliOptions>();
   o->scene.add_to(app);
-  app.add_option("--axes", o->axes, "two axes x,y from lnB lnC lambda Delta Delta0 alpha beta (default: the scene's [diagram] or lnB,lnC)")
+  app.add_option("--axes", o->axes, axes_help("two axes"))
       ->delimiter(',');
   app.add_option("--x-range", o->x_range, "min,max of the x axis (inclusive, finite; default: the scene's [diagram] or -1,6)")->delimiter(',')->allow_extra_args(false);
   app.add_option("--y-range", o->y_range, "min,max of the y axis (inclusive, finite; default: the scene's [diagram] or -5.5,2)")->delimiter(',')->allow_extra_args(false);

@@ -137,7 +137,7 @@ int run(const TraceCliOptions& o) {
 static Runner add_trace(CLI::App& app) {
   auto o = std::make_shared<TraceCliOptions>();
   o->scene.add_to(app);
-  app.add_option("--axes", o->axes, "plane axes x,y from lnB lnC lambda Delta Delta0 alpha beta (default: the scene's [diagram] or lnB,lnC)")->delimiter(',');
+  app.add_option("--axes", o->axes, axes_help("plane axes"))->delimiter(',');
   app.add_option("--x-range", o->x_range, "min,max of x, finite (default: the scene's [diagram] or -1,6)")->delimiter(',')->expected(2);
   app.add_option("--y-range", o->y_range, "min,max of y, finite (default: the scene's [diagram] or -5.5,2)")->delimiter(',')->expected(2);
   app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C fixed over the plane, >= 0 (0: off; default: the scene's [diagram] or off)")

@@ -9,6 +9,15 @@
 
 namespace rbcstab::cli {
 
+// --help of --axes: the parameter table's axes and the default plane.
+inline std::string axes_help(const std::string& what) {
+  std::string names;
+  for (const std::string& n : axis_names()) names += (names.empty() ? "" : " ") + n;
+  const DiagramSpec d;
+  return what + " x,y from " + names + " (default: the scene's [diagram] or " + to_string(d.x.axis) + "," +
+         to_string(d.y.axis) + ")";
+}
+
 inline DiagramSpec plane_spec(const SceneFile& scene, const std::vector<std::string>& axes,
                               const std::vector<double>& x_range, const std::vector<double>& y_range,
                               double alpha_fixed) {

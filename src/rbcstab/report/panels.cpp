@@ -83,22 +83,19 @@ std::string parameters_text(const Scene& s, bool with_lambda, bool with_BC) {
 std::string tex_parameters(const Scene& s, const std::set<std::string>& varied, bool with_BC, double alpha_fixed = 0) {
   std::ostringstream ss;
   ss << std::setprecision(4);
-  const Parameters& p = s.parameters;
-  auto put = [&](const char* name, const char* tex, double v) {
-    if (varied.count(name)) return;
-    ss << "$" << tex << " = ";
+  auto put = [&](SceneParameter q, double v) {
+    const ParameterRow& r = parameter_row(q);
+    if (varied.count(r.name)) return;
+    ss << "$" << r.symbol << " = ";
     if (std::isinf(v)) ss << "\\infty";
     else ss << v;
     ss << "$, ";
   };
-  put("lambda", "\\lambda", p.lambda);
-  put("Delta", "\\Delta", p.Delta);
-  put("Delta0", "\\Delta_0", p.Delta0);
-  if (with_BC) {
-    put("B", "\\mathcal{B}", p.B);
-    put("C", "\\mathcal{C}", p.C);
-  }
-  if (alpha_fixed > 0) put("alpha", "\\alpha", alpha_fixed);
+  for (SceneParameter q : {SceneParameter::lambda, SceneParameter::Delta, SceneParameter::Delta0})
+    put(q, get_parameter(s, q));
+  if (with_BC)
+    for (SceneParameter q : {SceneParameter::B, SceneParameter::C}) put(q, get_parameter(s, q));
+  if (alpha_fixed > 0) put(SceneParameter::alpha, alpha_fixed);
   ss << (std::abs(std::cos(s.beta)) < 0.5 ? "in plane" : "out of plane");
   return ss.str();
 }
