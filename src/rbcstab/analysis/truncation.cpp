@@ -113,7 +113,7 @@ TruncationDecision resolve_truncation(const Scene& scene, Origin L_origin, Trunc
   const std::string L = "L = " + std::to_string(scene.L);
   const std::string given = L_origin == Origin::flag   ? "given by --L"
                             : L_origin == Origin::file ? "given by the scene file's run.L"
-                                                       : "the default (neither --L nor run.L)";
+                                                       : "the default";
   if (use == TruncationUse::reduced) {
     d.reason = L + " (" + given + ") is not used: the reduced system holds the l = 2 modes only";
     return d;
@@ -122,6 +122,7 @@ TruncationDecision resolve_truncation(const Scene& scene, Origin L_origin, Trunc
     d.reason = L + ": " + given;
     return d;
   }
+  const std::string unset = L + ": the default (neither --L nor run.L); ";
   switch (use) {
     case TruncationUse::simulation: {
       const TruncationChoice c = choose_truncation(scene, options);
@@ -130,13 +131,13 @@ TruncationDecision resolve_truncation(const Scene& scene, Origin L_origin, Trunc
       return d;
     }
     case TruncationUse::grid:
-      d.reason = L + ": " + given + "; one L serves every scene of the grid, while the automatic choice is made per scene";
+      d.reason = unset + "one L serves every scene of the grid, while the automatic choice is made per scene";
       break;
     case TruncationUse::analysis:
-      d.reason = L + ": " + given + "; the automatic choice bounds the truncation error of a simulation over [0, T], "
-                 "and this computation has no such horizon";
+      d.reason = unset + "the automatic choice bounds the truncation error of a simulation over [0, T], and this "
+                         "computation has no such horizon";
       break;
-    case TruncationUse::measurement: d.reason = L + ": " + given + "; a benchmark measures at the L it is given"; break;
+    case TruncationUse::measurement: d.reason = unset + "a benchmark measures at the L it is given"; break;
     case TruncationUse::reduced: break;
   }
   return d;
