@@ -80,22 +80,18 @@ Domain log_of(const Domain& d) {
                 d.note};
 }
 
-const char* use_noun(ParameterUse use) {
+// How a message names a value of this use ("parameter = 'x'") and what it is not ("a continuation parameter").
+struct UseWords {
+  const char* name;
+  const char* noun;
+};
+UseWords words(ParameterUse use) {
   switch (use) {
-    case ParameterUse::scene_key: return "scene parameter";
-    case ParameterUse::continuation: return "continuation parameter";
-    case ParameterUse::axis: return "diagram axis";
+    case ParameterUse::scene_key: return {"key", "scene parameter"};
+    case ParameterUse::continuation: return {"parameter", "continuation parameter"};
+    case ParameterUse::axis: return {"axis", "diagram axis"};
   }
-  return "parameter";
-}
-
-const char* use_name(ParameterUse use) {
-  switch (use) {
-    case ParameterUse::scene_key: return "key";
-    case ParameterUse::continuation: return "parameter";
-    case ParameterUse::axis: return "axis";
-  }
-  return "parameter";
+  return {"parameter", "parameter"};
 }
 }  // namespace
 
@@ -170,8 +166,9 @@ SceneParameter parameter_from_string(std::string_view name, ParameterUse use) {
     if (name == r.name && usable_as(r.id, use)) return r.id;
   std::string list;
   for (const std::string& n : parameter_names(use)) list += (list.empty() ? "" : ", ") + n;
-  throw InvalidArgument(use_name(use), std::string(use_name(use)) + " = '" + std::string(name) + "' is not a " +
-                                           use_noun(use) + ": must be one of " + list);
+  const UseWords w = words(use);
+  throw InvalidArgument(w.name, std::string(w.name) + " = '" + std::string(name) + "' is not a " + w.noun +
+                                    ": must be one of " + list);
 }
 
 double get_parameter(const Scene& s, SceneParameter q) {
