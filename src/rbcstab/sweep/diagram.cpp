@@ -65,11 +65,10 @@ void DiagramSpec::validate() const {
     require(std::isfinite(a->max), "diagram." + n + "_range", a->max, "finite");
     require(a->count >= 1 && a->count <= 1'000'000, "diagram.counts", a->count, "an integer in [1, 1000000]");
     if (!usable_as(a->axis, ParameterUse::axis)) {
-      try {
-        (void)axis_from_string(to_string(a->axis));  // names the allowed axes
-      } catch (const InvalidArgument& e) {
-        throw InvalidArgument("diagram.axes", std::string("diagram.axes: ") + e.what());
-      }
+      std::string list;
+      for (const std::string& name : axis_names()) list += (list.empty() ? "" : ", ") + name;
+      throw InvalidArgument("diagram.axes", "diagram.axes: " + to_string(a->axis) + " is not a diagram axis (allowed: " +
+                                                list + ")");
     }
   }
   require(std::isfinite(alpha) && alpha >= 0, "diagram.alpha", alpha, "finite and >= 0 (0: alpha not held fixed)");
