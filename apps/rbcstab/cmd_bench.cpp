@@ -70,6 +70,7 @@ int run_work_precision(const BenchOptions& o, const SceneFile& sf) {
                          {"jacobian_evaluations", r.jacobian_evaluations}, {"steps", r.steps}, {"seconds", r.seconds},
                          {"error_Delta", r.error_Delta}, {"error_sigma", r.error_sigma}, {"l_Delta", r.l_Delta},
                          {"verdict_changed", r.verdict_changed}});
+  put_truncation(j, sf);
   write_file_atomic(base + ".json", j.dump(2) + "\n");
   if (o.plot) {
     check_python("/usr/bin/python3");
@@ -134,7 +135,8 @@ int run_truncation(const BenchOptions& o, const SceneFile& sf) {
   std::filesystem::create_directories(o.output);
   const std::string base = o.output + "/" + sf.scene.name + "_truncation";
   write_file_atomic(base + ".csv", csv.str());
-  const nlohmann::json j{{"scene", to_json(sf.scene)}, {"reference_L", o.Ls.back()}, {"rows", rows}};
+  nlohmann::json j{{"scene", to_json(sf.scene)}, {"reference_L", o.Ls.back()}, {"rows", rows}};
+  put_truncation(j, sf);
   write_file_atomic(base + ".json", j.dump(2) + "\n");
   std::cout << (o.json ? j.dump(2) + "\n" : csv.str());
   return kOk;
@@ -177,8 +179,9 @@ int run_threshold(const BenchOptions& o, const SceneFile& sf) {
   std::filesystem::create_directories(o.output);
   const std::string base = o.output + "/" + sf.scene.name + "_threshold";
   write_file_atomic(base + ".csv", csv.str());
-  const nlohmann::json j{{"scene", to_json(sf.scene)}, {"B", t.B}, {"ln_C_range", o.ln_C_range},
-                         {"references", refs}, {"rows", rows}};
+  nlohmann::json j{{"scene", to_json(sf.scene)}, {"B", t.B}, {"ln_C_range", o.ln_C_range},
+                   {"references", refs}, {"rows", rows}};
+  put_truncation(j, sf);
   write_file_atomic(base + ".json", j.dump(2) + "\n");
   std::ostringstream title;
   title << "critical C at B = " << t.B << ": " << sf.scene.name;
@@ -203,7 +206,7 @@ int run_threshold(const BenchOptions& o, const SceneFile& sf) {
 }
 
 int run(const BenchOptions& o) {
-  const SceneFile sf = o.scene.resolve();
+  const SceneFile sf = o.scene.resolve(TruncationUse::measurement);
   if (o.kind == "truncation") return run_truncation(o, sf);
   if (o.kind == "threshold") return run_threshold(o, sf);
   return run_work_precision(o, sf);

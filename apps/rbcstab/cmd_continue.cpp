@@ -40,22 +40,23 @@ struct ContinueOptions {
 
 // The same for a branch and a curve: CSV, then JSON or text.
 template <class Result>
-void print(const ContinueOptions& o, const Result& r) {
+void print(const ContinueOptions& o, const SceneFile& sf, const Result& r) {
   if (!o.csv.empty()) write_file_atomic(o.csv, to_csv(r));
   if (o.json) {
-    const nlohmann::json j = to_json(r);
+    nlohmann::json j = to_json(r);
+    put_truncation(j, sf);
     std::cout << j.dump(2) << "\n";
   } else {
     std::cout << to_text(r);
   }
 }
 
-int report(const ContinueOptions& o, const SceneBranch& r) {
+int report(const ContinueOptions& o, const SceneFile& sf, const SceneBranch& r) {
   if (!r.start.converged) {
     std::cerr << "rbcstab: " << r.start.message << "\n";
     return kRunFailed;
   }
-  print(o, r);
+  print(o, sf, r);
   if (r.switched && !r.switched->switched) {
     std::cerr << "rbcstab: branch switching failed: " << r.switched->message << "\n";
     return kRunFailed;
@@ -68,12 +69,12 @@ int report(const ContinueOptions& o, const SceneBranch& r) {
   return kOk;
 }
 
-int report(const ContinueOptions& o, const SceneCurve& r) {
+int report(const ContinueOptions& o, const SceneFile& sf, const SceneCurve& r) {
   if (!r.started) {
     std::cerr << "rbcstab: " << r.message << "\n";
     return kRunFailed;
   }
-  print(o, r);
+  print(o, sf, r);
   const Branch& c = r.curve.branch;
   if (!ended_normally(c.status)) {
     std::cerr << "rbcstab: curve continuation stopped: " << to_string(c.status) << ": " << c.message << "\n";
@@ -87,9 +88,9 @@ ContinuationParameter parameter2(const std::string& name) {
   try {
     return continuation_parameter_from_string(name);
   } catch (const InvalidArgument&) {
-    throw InvalidArgument("parameter2", "parameter2 = '" + name +
-                                            "' is not a continuation parameter: must be one of lambda, Delta, "
-                                            "Delta0, B, C, Lambda, S, beta");
+    std::string names;
+    for (const auto& n : continuation_parameter_names()) names += (names.empty() ? "" : ", ") + n;
+    throw InvalidArgument("parameter2", "parameter2 = '" + name + "' is not a continuation parameter: must be one of " + names);
   }
 }
 
@@ -107,8 +108,8 @@ int run(const ContinueOptions& o) {
   } else if (!o.parameter2.empty()) {
     throw InvalidArgument("parameter2", "--parameter2 needs --curve LP|BP|HB|LPC|PD|NS");
   }
-  SceneFile sf = o.scene.resolve();
-  if (o.scene.o_beta->count() == 0 && o.scene.scene_path.empty()) sf.scene.beta = default_beta(spec.kind);
+  SceneFile sf = o.scene.resolve(truncation_use(spec.kind));
+  if (sf.origin("initial.beta") == Origin::default_value) sf.scene.beta = default_beta(spec.kind);
   spec.scene = sf.scene;
   spec.parameter = continuation_parameter_from_string(o.parameter);
   spec.engine = o.engine;
@@ -120,8 +121,8 @@ int run(const ContinueOptions& o) {
   spec.relax_T = o.relax_T;
   spec.orbit = o.orbit;
   spec.switch_at_bp = o.switch_at_bp;
-  if (curve) return report(o, continue_curve(spec, *curve));
-  return report(o, continue_scene(spec));
+  if (curve) return report(o, sf, continue_curve(spec, *curve));
+  return report(o, sf, continue_scene(spec));
 }
 }  // namespace
 

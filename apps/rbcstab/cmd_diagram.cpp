@@ -15,6 +15,7 @@
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
+#include "rbcstab/io/json.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
 #include "rbcstab/sweep/diagram_output.hpp"
@@ -49,8 +50,8 @@ std::string duration(double s) {
 }
 
 int run(const DiagramCliOptions& o) {
-  const SceneFile sf = o.scene.resolve();
-  DiagramSpec spec = plane_spec(o.scene, o.axes, o.x_range, o.y_range, o.alpha_fixed);
+  const SceneFile sf = o.scene.resolve(TruncationUse::grid);
+  DiagramSpec spec = plane_spec(sf, o.axes, o.x_range, o.y_range, o.alpha_fixed);
   if (!o.counts.empty()) {
     if (o.counts.size() != 2) throw InvalidArgument("--counts", "--counts takes two integers: nx,ny");
     spec.x.count = o.counts[0], spec.y.count = o.counts[1];
@@ -96,7 +97,9 @@ int run(const DiagramCliOptions& o) {
   const Shard out_shard = mpi.size() > 1 ? Shard{} : ro.shard;
   try {
     write_file_atomic(prefix + ".csv", diagram_csv(spec, r.points, oo));
-    nlohmann::json doc = diagram_json(diagram_header(sf.scene, sf.options, spec), spec, r.points, out_shard, oo);
+    nlohmann::json header = diagram_header(sf.scene, sf.options, spec);
+    put_truncation(header, sf);
+    nlohmann::json doc = diagram_json(header, spec, r.points, out_shard, oo);
     AgreementOptions ao;
     ao.threads = o.threads;
     ao.finite_horizon = !o.no_finite_horizon_agreement;
@@ -111,20 +114,21 @@ int run(const DiagramCliOptions& o) {
     failed += p.verdict == Verdict::failed;
     unstable += p.verdict == Verdict::unstable;
   }
-  if (o.json)
-    std::cout << nlohmann::json{{"csv", prefix + ".csv"},
-                                {"json", prefix + ".json"},
-                                {"points", r.points.size()},
-                                {"computed", r.computed},
-                                {"resumed", r.resumed},
-                                {"stable", r.points.size() - unstable - failed},
-                                {"unstable", unstable},
-                                {"failed", failed},
-                                {"complete", r.complete},
-                                {"config_hash", r.config_hash},
-                                {"seconds", r.seconds}}
-                     .dump(2)
-              << "\n";
+  if (o.json) {
+    nlohmann::json j{{"csv", prefix + ".csv"},
+                     {"json", prefix + ".json"},
+                     {"points", r.points.size()},
+                     {"computed", r.computed},
+                     {"resumed", r.resumed},
+                     {"stable", r.points.size() - unstable - failed},
+                     {"unstable", unstable},
+                     {"failed", failed},
+                     {"complete", r.complete},
+                     {"config_hash", r.config_hash},
+                     {"seconds", r.seconds}};
+    put_truncation(j, sf);
+    std::cout << j.dump(2) << "\n";
+  }
   if (show)
     std::cerr << "rbcstab: diagram done: " << r.points.size() << " points (" << r.computed << " computed, " << r.resumed
               << " resumed) in " << duration(r.seconds) << "; " << unstable << " unstable, " << failed
@@ -136,7 +140,7 @@ int run(const DiagramCliOptions& o) {
 static Runner add_diagram(CLI::App& app) {
   auto o = std::make_shared<DiagramCliOptions>();
   o->scene.add_to(app);
-  app.add_option("--axes", o->axes, "two axes x,y from lnB lnC lambda Delta Delta0 alpha beta (default: the scene's [diagram] or lnB,lnC)")
+  app.add_option("--axes", o->axes, axes_help("two axes"))
       ->delimiter(',');
   app.add_option("--x-range", o->x_range, "min,max of the x axis (inclusive, finite; default: the scene's [diagram] or -1,6)")->delimiter(',')->allow_extra_args(false);
   app.add_option("--y-range", o->y_range, "min,max of the y axis (inclusive, finite; default: the scene's [diagram] or -5.5,2)")->delimiter(',')->allow_extra_args(false);

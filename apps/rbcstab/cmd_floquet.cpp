@@ -28,7 +28,7 @@ int run(const FloquetOptions& o) {
   // ARPACK names this field "tol"; checked here so that the message names the flag --arpack-tol.
   require(std::isfinite(o.floquet.arpack.tol) && o.floquet.arpack.tol >= 0 && o.floquet.arpack.tol < 1, "arpack_tol",
           o.floquet.arpack.tol, "[0, 1)");
-  const SceneFile sf = o.scene.resolve();
+  const SceneFile sf = o.scene.resolve(TruncationUse::analysis);
   const SceneFloquetResult r = scene_floquet_multipliers(sf.scene, o.floquet);
   const Eigen::VectorXcd& mu = r.floquet.arpack.eigenvalues;
   if (o.json) {
@@ -37,7 +37,7 @@ int run(const FloquetOptions& o) {
     if (!r.message.empty()) j["message"] = r.message;
     j["parameters"] = to_json(sf.scene.parameters);
     j["beta"] = sf.scene.beta;
-    j["L"] = sf.scene.L;
+    put_truncation(j, sf);
     j["n"] = r.dimension;
     j["relax_level"] = to_string(r.relax_level);
     j["relax_periods"] = o.floquet.relax_periods;

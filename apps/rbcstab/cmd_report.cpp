@@ -10,7 +10,6 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
-#include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/report/report.hpp"
@@ -34,7 +33,7 @@ std::atomic<bool> g_stop{false};
 extern "C" void on_report_signal(int) { g_stop.store(true); }
 
 // A scene file with a [diagram], [fig6e] or [continuation] table: compute the panel, then draw it.
-int run_panel(ReportCliOptions& o, const SceneFile& sf, const std::string& toml_text, ReportOptions& ro) {
+int run_panel(ReportCliOptions& o, const SceneFile& sf, ReportOptions& ro) {
   if (!o.counts.empty()) {
     const std::size_t sep = o.counts.find_first_of(",x");
     auto integer = [&](const std::string& t) {
@@ -67,7 +66,7 @@ int run_panel(ReportCliOptions& o, const SceneFile& sf, const std::string& toml_
   o.panel.stop = &g_stop;
   std::signal(SIGINT, on_report_signal);
   std::signal(SIGTERM, on_report_signal);
-  const PanelReportResult r = build_panel_report(sf, toml_text, o.scene.scene_path, o.panel, ro);
+  const PanelReportResult r = build_panel_report(sf, o.panel, ro);
   if (!r.complete) {
     std::cerr << "rbcstab: interrupted: the panel was not finished and no report was written\n";
     return kRunFailed;
@@ -84,6 +83,7 @@ int run_panel(ReportCliOptions& o, const SceneFile& sf, const std::string& toml_
     j["facts"] = facts;
     j["compute_seconds"] = r.compute_seconds;
     j["seconds"] = r.report.seconds + r.compute_seconds;
+    put_truncation(j, sf);
     std::cout << j.dump(2) << "\n";
   } else {
     std::cout << "report written to " << ro.output << " (" << to_string(r.kind) << " panel, " << r.report.files.size()
@@ -104,16 +104,14 @@ std::string executable_path() {
 }
 
 int run(ReportCliOptions& o) {
-  std::string L_reason;
-  const SceneFile sf = o.scene.resolve_with_default_L(L_reason);
+  SceneFile sf = o.scene.read();
+  const PanelKind kind = panel_kind(sf);
+  SceneOptions::apply_truncation(sf, truncation_use(kind));
   ReportOptions ro = o.report;
   ro.shape = {o.n_theta, 2 * o.n_theta};
   ro.reduced_companion = !o.no_reduced;
   if (ro.script_dir.empty()) ro.script_dir = find_script_dir(executable_path());
-  if (!o.scene.scene_path.empty()) {
-    const std::string text = read_file(o.scene.scene_path);
-    if (panel_kind(text, o.scene.scene_path) != PanelKind::none) return run_panel(o, sf, text, ro);
-  }
+  if (kind != PanelKind::none) return run_panel(o, sf, ro);
   if (!o.counts.empty() || o.panel.threads != 0)
     throw InvalidArgument("--counts", "--counts and --threads apply to a scene with a [diagram] table only");
   const ReportResult r = build_report(sf, ro);
@@ -126,8 +124,7 @@ int run(ReportCliOptions& o) {
     if (r.has_reduced) j["reduced_summary"] = to_json(r.reduced);
     j["shape"] = {{"rho_min", r.shape.rho_min}, {"rho_max", r.shape.rho_max}};
     j["seconds"] = r.seconds;
-    j["L"] = sf.scene.L;
-    j["L_reason"] = L_reason;
+    put_truncation(j, sf);
     std::cout << j.dump(2) << "\n";
   } else {
     std::cout << "report written to " << ro.output << " (" << r.files.size() << " files, open index.html); l_Delta = "

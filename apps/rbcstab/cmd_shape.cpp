@@ -36,7 +36,7 @@ std::string grid_csv(const ShapeGrid& g) {
 }
 
 int run(const ShapeCliOptions& o) {
-  const SceneFile sf = o.scene.resolve();
+  const SceneFile sf = o.scene.resolve(TruncationUse::simulation);
   std::vector<double> times = o.at.empty() ? std::vector<double>{sf.scene.T} : o.at;
   std::sort(times.begin(), times.end());
   times.erase(std::unique(times.begin(), times.end()), times.end());
@@ -61,10 +61,10 @@ int run(const ShapeCliOptions& o) {
     }
   }
   if (o.json) {
-    std::cout << nlohmann::json{{"model", to_string(series.level.level)}, {"status", to_string(series.status)},
-                                {"reason", series.reason}, {"files", files}}
-                     .dump(2)
-              << "\n";
+    nlohmann::json j{{"model", to_string(series.level.level)}, {"status", to_string(series.status)},
+                     {"reason", series.reason}, {"files", files}};
+    put_truncation(j, sf);
+    std::cout << j.dump(2) << "\n";
   } else {
     for (const auto& f : files)
       std::cout << f.at("file").get<std::string>() << "  t = " << f.at("t").get<double>() << ", rho in ["

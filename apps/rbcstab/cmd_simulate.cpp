@@ -35,8 +35,7 @@ std::string trajectory_csv(const SimulationResult& r) {
 }
 
 int run(const SimulateOptions& o) {
-  std::string L_reason;
-  const SceneFile sf = o.scene.resolve_with_default_L(L_reason);
+  const SceneFile sf = o.scene.resolve(TruncationUse::simulation);
   const SimulationResult r = simulate(sf.scene, sf.options);
   if (!o.trajectory.empty()) write_file_atomic(o.trajectory, trajectory_csv(r));
   for (const auto& w : r.warnings) std::cerr << "rbcstab: warning: " << w << "\n";
@@ -46,14 +45,13 @@ int run(const SimulateOptions& o) {
     j["stepper"] = to_string(sf.options.integrator.stepper);
     j["rtol"] = sf.options.integrator.rtol;
     j["atol"] = sf.options.integrator.atol;
-    j["L"] = sf.scene.L;
-    j["L_reason"] = L_reason;
+    put_truncation(j, sf);
     std::cout << j.dump(2) << "\n";
   } else {
     std::cout << std::setprecision(6) << "model " << to_string(r.level.level) << ", status " << to_string(r.status)
               << ", l_Delta = " << r.l_Delta << ", sigma(T) = " << r.sigma_final
               << ", drift = " << r.excess_area_drift << ", steps = " << r.counters.steps << "\n"
-              << L_reason << "\n";
+              << sf.L_reason << "\n";
   }
   if (r.status != IntegrationStatus::success) {
     std::cerr << "rbcstab: run stopped at t = " << r.t_reached << ": " << r.reason << "\n";

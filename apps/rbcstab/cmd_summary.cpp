@@ -97,15 +97,14 @@ struct SummaryOptions {
 
 int run(const SummaryOptions& o) {
   const SceneOptions& so = o.scene;
-  std::string L_reason;
   ReducedTransient transient;  // integrated once: the truncation rule and the finite-horizon predictor read it
-  const SceneFile sf = so.resolve_with_default_L(L_reason, &transient);
+  const SceneFile sf = so.resolve(TruncationUse::simulation, &transient);
   const Scene& s = sf.scene;
   const Parameters& p = s.parameters;
   const SimulationResult r = simulate(s, sf.options);
   if (o.json) {
     nlohmann::json j = summary_json(s, transient, r, sf.options.tail_window);
-    j["L_reason"] = L_reason;
+    put_truncation(j, sf);
     std::cout << j.dump(2) << "\n";
     return r.status == IntegrationStatus::success ? kOk : kRunFailed;
   }
@@ -116,7 +115,7 @@ int run(const SummaryOptions& o) {
       << ", C = " << p.C << "\n";
   out << "             beta = " << s.beta << ", delta = " << s.delta << ", L = " << s.L << ", T = " << s.T << "\n";
   out << "Derived      Lambda = " << p.Lambda() << ", S = " << p.S() << ", alpha = B/C = " << p.alpha() << "\n";
-  out << "Truncation   " << L_reason << "\n";
+  out << "Truncation   " << sf.L_reason << "\n";
   out << "Model level  " << to_string(r.level.level) << " -- " << r.level.reason << "\n";
   for (const auto& w : r.warnings) out << "Warning      " << w << "\n";
   out << "\nExcess area by mode (Delta_l):\n";

@@ -11,6 +11,7 @@
 #include "exit_codes.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
+#include "rbcstab/io/json.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "scene_options.hpp"
 
@@ -24,7 +25,7 @@ struct ThresholdsOptions {
 };
 
 int run(const ThresholdsOptions& o) {
-  const SceneFile sf = o.scene.resolve();
+  const SceneFile sf = o.scene.resolve(TruncationUse::analysis);
   const Scene& s = sf.scene;
   const Parameters& p = s.parameters;
   const double alpha = p.alpha();
@@ -39,6 +40,7 @@ int run(const ThresholdsOptions& o) {
   if (o.json) {
     nlohmann::json j;
     j["parameters"] = rbcstab::to_json(p);
+    put_truncation(j, sf);
     j["Lambda"] = p.Lambda();
     j["S"] = number_or_null(p.S());
     j["alpha"] = alpha;
@@ -94,7 +96,8 @@ int run(const ThresholdsOptions& o) {
   out << std::setprecision(6);
   out << "Scene '" << s.name << "': lambda = " << p.lambda << ", Delta = " << p.Delta << ", Delta0 = " << p.Delta0
       << ", B = " << p.B << ", C = " << p.C << ", beta = " << s.beta << "\n";
-  out << "Lambda = " << p.Lambda() << ", S = " << p.S() << ", alpha = " << alpha << ", r0 = " << r0 << "\n\n";
+  out << "Lambda = " << p.Lambda() << ", S = " << p.S() << ", alpha = " << alpha << ", r0 = " << r0 << "\n";
+  out << "Truncation: " << sf.L_reason << "\n\n";
   out << "Continuous band (Eq. inst): l_* = " << l_star(alpha) << ", sigma_* = " << sigma_star(alpha)
       << "; l_* >= 2.5 <=> alpha >= (35/8)^2 = " << alpha_for_l_star(2.5) << ": "
       << (l_star_criterion(alpha) ? "met" : "not met") << "\n";

@@ -36,8 +36,8 @@ struct TraceCliOptions {
 };
 
 int run(const TraceCliOptions& o) {
-  const SceneFile sf = o.scene.resolve();
-  DiagramSpec spec = plane_spec(o.scene, o.axes, o.x_range, o.y_range, o.alpha_fixed);
+  const SceneFile sf = o.scene.resolve(TruncationUse::grid);
+  DiagramSpec spec = plane_spec(sf, o.axes, o.x_range, o.y_range, o.alpha_fixed);
   spec.validate();
   TraceOptions to = o.trace;
   to.criterion = trace_criterion_from_string(o.criterion);
@@ -86,6 +86,7 @@ int run(const TraceCliOptions& o) {
                                        {"location_iterations", t.counters.location_iterations}}},
                      {"notes", t.notes},
                      {"seconds", t.seconds}};
+  put_truncation(doc, sf);
   if (!o.diagram.empty()) {
     nlohmann::json dj;
     try {
@@ -126,6 +127,7 @@ int run(const TraceCliOptions& o) {
                      {"evaluations", t.evaluations},    {"seconds", t.seconds},
                      {"analytic_lines", overlays.size()}};
     if (doc.contains("agreement")) j["agreement"] = doc["agreement"];
+    put_truncation(j, sf);
     std::cout << j.dump(2) << "\n";
   }
   return kOk;
@@ -135,7 +137,7 @@ int run(const TraceCliOptions& o) {
 static Runner add_trace(CLI::App& app) {
   auto o = std::make_shared<TraceCliOptions>();
   o->scene.add_to(app);
-  app.add_option("--axes", o->axes, "plane axes x,y from lnB lnC lambda Delta Delta0 alpha beta (default: the scene's [diagram] or lnB,lnC)")->delimiter(',');
+  app.add_option("--axes", o->axes, axes_help("plane axes"))->delimiter(',');
   app.add_option("--x-range", o->x_range, "min,max of x, finite (default: the scene's [diagram] or -1,6)")->delimiter(',')->expected(2);
   app.add_option("--y-range", o->y_range, "min,max of y, finite (default: the scene's [diagram] or -5.5,2)")->delimiter(',')->expected(2);
   app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C fixed over the plane, >= 0 (0: off; default: the scene's [diagram] or off)")

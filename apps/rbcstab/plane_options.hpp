@@ -1,21 +1,27 @@
 #pragma once
-// The parameter plane shared by `diagram` and `trace`: the scene file's [diagram] table, then the
+// The parameter plane shared by `diagram` and `trace`: the scene's [diagram] table, then the
 // --axes, --x-range, --y-range and --alpha-fixed flags. The caller adds its own fields and validates.
 #include <string>
 #include <vector>
 
 #include "rbcstab/core/error.hpp"
-#include "rbcstab/io/files.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
-#include "scene_options.hpp"
 
 namespace rbcstab::cli {
 
-inline DiagramSpec plane_spec(const SceneOptions& scene, const std::vector<std::string>& axes,
+// --help of --axes: the parameter table's axes and the default plane.
+inline std::string axes_help(const std::string& what) {
+  std::string names;
+  for (const std::string& n : axis_names()) names += (names.empty() ? "" : " ") + n;
+  const DiagramSpec d;
+  return what + " x,y from " + names + " (default: the scene's [diagram] or " + to_string(d.x.axis) + "," +
+         to_string(d.y.axis) + ")";
+}
+
+inline DiagramSpec plane_spec(const SceneFile& scene, const std::vector<std::string>& axes,
                               const std::vector<double>& x_range, const std::vector<double>& y_range,
                               double alpha_fixed) {
-  DiagramSpec spec;
-  if (!scene.scene_path.empty()) spec = parse_diagram_table(read_file(scene.scene_path), scene.scene_path);
+  DiagramSpec spec = diagram_spec(scene);
   if (!axes.empty()) {
     if (axes.size() != 2) throw InvalidArgument("--axes", "--axes takes two names, e.g. lnB,lnC");
     spec.x.axis = axis_from_string(axes[0]);

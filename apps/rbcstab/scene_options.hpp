@@ -1,8 +1,13 @@
 #pragma once
-// Scene flags shared by every subcommand that runs a scene: --scene FILE plus per-symbol overrides.
+// Scene flags shared by every subcommand that runs a scene: --scene FILE plus one flag per scene key that has
+// one (io's scene_flags(): the parameter table's stored parameters, L, T, dt, model, stepper, rtol, atol and
+// the per-mode perturbations).
 #include <CLI/CLI.hpp>
+#include <map>
 #include <string>
+#include <vector>
 
+#include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/io/scene_file.hpp"
 
 namespace rbcstab {
@@ -13,22 +18,29 @@ namespace rbcstab::cli {
 
 struct SceneOptions {
   std::string scene_path;
-  Scene flags;  // values given on the command line (only the ones with count() > 0 apply)
-  std::string model = "auto", stepper = "rk8pd";
-  double rtol = 1e-8, atol = 1e-12;
-  CLI::Option *o_lambda{}, *o_Delta{}, *o_Delta0{}, *o_B{}, *o_C{}, *o_beta{}, *o_delta{}, *o_L{}, *o_T{}, *o_dt{},
-      *o_model{}, *o_stepper{}, *o_rtol{}, *o_atol{};
-  std::vector<std::string> delta_l, rest_delta_l;  // "l=value"
-  CLI::Option *o_delta_l{}, *o_rest_delta_l{};
 
-  void add_to(CLI::App& app);
-  // The default scene (paper Fig. 3, out of plane), then the scene file, then the flags.
-  SceneFile resolve() const;
-  // resolve(), then, unless --L or the file's run.L gave L, the smallest L meeting the truncation tolerance
-  // (choose_truncation, docs/benchmarks.md "Automatic L"); the choice and its reason land in L_reason.
-  // transient (optional): receives the scene's truncation_transient, which the rule then reads, so that the
-  // finite-horizon predictor can share the run.
-  SceneFile resolve_with_default_L(std::string& L_reason, ReducedTransient* transient = nullptr) const;
+  void add_to(CLI::App& app);  // the options bind to this object: it must not move afterwards
+  // The default scene (paper Fig. 3, out of plane), then the scene file, then the flags; SceneFile::origins
+  // records which. L as they give it.
+  SceneFile read() const;
+  // read(), then the truncation policy for this use (resolve_truncation): scene.L and L_reason.
+  // transient (optional): receives the scene's truncation_transient, which the automatic choice then reads, so
+  // that the finite-horizon predictor can share the run.
+  SceneFile resolve(TruncationUse use, ReducedTransient* transient = nullptr) const;
+  // The truncation policy applied to a read() scene (for commands whose use depends on the scene's content).
+  static void apply_truncation(SceneFile& file, TruncationUse use, const ReducedTransient* transient = nullptr);
+
+ private:
+  struct Flag {
+    const SceneKey* key = nullptr;
+    CLI::Option* option = nullptr;
+  };
+  std::vector<Flag> flags_;
+  // The values CLI11 parses into, by scene key path (std::map: the references stay valid).
+  std::map<std::string, double> numbers_;
+  std::map<std::string, long long> integers_;
+  std::map<std::string, std::string> names_;
+  std::map<std::string, std::vector<std::string>> modes_;
 };
 
 }  // namespace rbcstab::cli

@@ -45,11 +45,12 @@ std::string expect_invalid(const std::function<void()>& f) {
 }
 
 TEST(PanelKind, OneTableAtMost) {
-  EXPECT_EQ(panel_kind(kBase), PanelKind::none);
-  EXPECT_EQ(panel_kind(kBase + "[diagram]\ncounts = [2, 2]\n"), PanelKind::diagram);
-  EXPECT_EQ(panel_kind(kBase + "[fig6e]\nB = [1.0]\n"), PanelKind::fig6e);
-  EXPECT_EQ(panel_kind(kBase + "[continuation]\nparameter = \"C\"\n"), PanelKind::continuation);
-  const std::string m = expect_invalid([] { (void)panel_kind(kBase + "[fig6e]\n[continuation]\n", "two.toml"); });
+  EXPECT_EQ(panel_kind(parse_scene(kBase)), PanelKind::none);
+  EXPECT_EQ(panel_kind(parse_scene(kBase + "[diagram]\ncounts = [2, 2]\n")), PanelKind::diagram);
+  EXPECT_EQ(panel_kind(parse_scene(kBase + "[fig6e]\nB = [1.0]\n")), PanelKind::fig6e);
+  EXPECT_EQ(panel_kind(parse_scene(kBase + "[continuation]\nparameter = \"C\"\n")), PanelKind::continuation);
+  const std::string m =
+      expect_invalid([] { (void)panel_kind(parse_scene(kBase + "[fig6e]\n[continuation]\n", "two.toml")); });
   EXPECT_NE(m.find("more than one panel table"), std::string::npos) << m;
   // The scene parser accepts the panel tables (and ignores them).
   EXPECT_NO_THROW((void)parse_scene(kBase + "[fig6e]\nB = [1.0]\n"));
@@ -59,7 +60,7 @@ TEST(PanelKind, OneTableAtMost) {
 TEST(Fig6eTable, TakesTheRunFromTheSceneAndNamesBadKeys) {
   const std::string text = kBase + "[fig6e]\nlambda = [2.0]\nB = [1.0, 3.0]\nC = [0.05]\n";
   const SceneFile sf = parse_scene(text);
-  const Fig6eOptions f = parse_fig6e_table(sf, text);
+  const Fig6eOptions f = fig6e_options(sf);
   EXPECT_EQ(f.lambdas, std::vector<double>{2.0});
   EXPECT_EQ(f.B, (std::vector<double>{1.0, 3.0}));
   EXPECT_EQ(f.C, std::vector<double>{0.05});
@@ -69,15 +70,15 @@ TEST(Fig6eTable, TakesTheRunFromTheSceneAndNamesBadKeys) {
   EXPECT_EQ(f.T, 40.0);
   EXPECT_EQ(f.delta, 1e-4);
   // Absent keys: the paper's grid.
-  const Fig6eOptions d = parse_fig6e_table(sf, kBase + "[fig6e]\n");
+  const Fig6eOptions d = fig6e_options(parse_scene(kBase + "[fig6e]\n"));
   EXPECT_EQ(d.B.size(), 10u);
   EXPECT_EQ(d.C.size(), 4u);
-  std::string m = expect_invalid([&] { (void)parse_fig6e_table(sf, kBase + "[fig6e]\nkappa = 1\n"); });
+  std::string m = expect_invalid([&] { (void)fig6e_options(parse_scene(kBase + "[fig6e]\nkappa = 1\n")); });
   EXPECT_NE(m.find("fig6e.kappa"), std::string::npos) << m;
-  m = expect_invalid([&] { (void)parse_fig6e_table(sf, kBase + "[fig6e]\nB = [1.0, -2.0]\n"); });
+  m = expect_invalid([&] { (void)fig6e_options(parse_scene(kBase + "[fig6e]\nB = [1.0, -2.0]\n")); });
   EXPECT_NE(m.find("fig6e.B"), std::string::npos) << m;
   EXPECT_NE(m.find("> 0"), std::string::npos) << m;
-  m = expect_invalid([&] { (void)parse_fig6e_table(sf, kBase + "[fig6e]\nC = \"x\"\n"); });
+  m = expect_invalid([&] { (void)fig6e_options(parse_scene(kBase + "[fig6e]\nC = \"x\"\n")); });
   EXPECT_NE(m.find("fig6e.C"), std::string::npos) << m;
 }
 
@@ -85,7 +86,7 @@ TEST(Fig6eTable, TakesTheRunFromTheSceneAndNamesBadKeys) {
 TEST(Fig6eTable, CsvRoundTripsTheRows) {
   const std::string text = kBase + "[fig6e]\nlambda = [1.0]\nB = [2.0]\nC = [0.01, 0.04]\n";
   const SceneFile sf = parse_scene(text);
-  const Fig6eOptions f = parse_fig6e_table(sf, text);
+  const Fig6eOptions f = fig6e_options(sf);
   const std::vector<Fig6eRow> rows = fig6e_table(f);
   ASSERT_EQ(rows.size(), 2u);
   std::istringstream in(fig6e_csv(f, rows));
@@ -116,9 +117,9 @@ TEST(Fig6eTable, CsvRoundTripsTheRows) {
 }
 
 TEST(ContinuationTable, ParsesAndNamesBadKeys) {
-  const ContinuationPanel c = parse_continuation_table(
+  const ContinuationPanel c = continuation_panel(parse_scene(
       kBase + "[continuation]\nparameter = \"C\"\nmin = 0.01\nmax = 2.0\ndirection = \"forward\"\nmeasure = \"r\"\n"
-              "max_points = 50\n");
+              "max_points = 50\n"));
   EXPECT_EQ(c.parameter, ContinuationParameter::C);
   EXPECT_EQ(c.engine.p_min, 0.01);
   EXPECT_EQ(c.engine.p_max, 2.0);
@@ -129,7 +130,7 @@ TEST(ContinuationTable, ParsesAndNamesBadKeys) {
        {std::pair{"measure = \"Q\"\n", "continuation.measure"}, std::pair{"parameter = \"kappa\"\n", "continuation.parameter"},
         std::pair{"direction = \"up\"\n", "continuation.direction"}, std::pair{"min = 2.0\nmax = 1.0\n", "continuation.max"},
         std::pair{"max_points = 1\n", "continuation.max_points"}, std::pair{"colour = 1\n", "continuation.colour"}}) {
-    const std::string m = expect_invalid([&] { (void)parse_continuation_table(kBase + "[continuation]\n" + table); });
+    const std::string m = expect_invalid([&] { (void)continuation_panel(parse_scene(kBase + "[continuation]\n" + table)); });
     EXPECT_NE(m.find(name), std::string::npos) << table << ": " << m;
   }
 }
@@ -141,7 +142,7 @@ TEST(BifurcationJson, VesicleBranchFollowsTheClosedForm) {
   text.replace(text.find("C = 0.04"), 8, "C = inf");
   text.replace(text.find("beta = 0.001"), 12, "beta = 0.0");
   const SceneFile sf = parse_scene(text);
-  const ContinuationPanel c = parse_continuation_table(text);
+  const ContinuationPanel c = continuation_panel(sf);
   const SceneBranch r = continue_scene(branch_spec(c, sf.scene));
   const Branch& b = r.branch.branch;
   const nlohmann::json j = bifurcation_json(r, c.measure);
@@ -208,7 +209,7 @@ TEST(PanelReport, TinyDiagramBuildsAndItsDataEqualAnIndependentRun) {
   po.nx = 4;
   po.ny = 3;
   po.trace.lines = 20;
-  const PanelReportResult r = build_panel_report(sf, text, "tiny.toml", po, ro);
+  const PanelReportResult r = build_panel_report(sf, po, ro);
   EXPECT_EQ(r.kind, PanelKind::diagram);
   EXPECT_TRUE(r.complete);
   EXPECT_EQ(r.failed, 0u);
@@ -222,7 +223,7 @@ TEST(PanelReport, TinyDiagramBuildsAndItsDataEqualAnIndependentRun) {
   int entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(parent)) ++entries;
   EXPECT_EQ(entries, 1);
-  DiagramSpec spec = parse_diagram_table(text);
+  DiagramSpec spec = diagram_spec(sf);
   spec.x.count = 4;
   spec.y.count = 3;
   DiagramOptions one;
@@ -262,11 +263,11 @@ TEST(PanelReport, SceneWithoutPanelTableIsRefused) {
   const SceneFile sf = parse_scene(kBase);
   ReportOptions ro;
   ro.output = (fresh_dir("none") / "x").string();
-  const std::string m = expect_invalid([&] { (void)build_panel_report(sf, kBase, "plain.toml", {}, ro); });
+  const std::string m = expect_invalid([&] { (void)build_panel_report(sf, {}, ro); });
   EXPECT_NE(m.find("no panel table"), std::string::npos) << m;
   PanelOptions bad;
   bad.threads = -1;
-  const std::string m2 = expect_invalid([&] { (void)build_panel_report(sf, kBase, "plain.toml", bad, ro); });
+  const std::string m2 = expect_invalid([&] { (void)build_panel_report(sf, bad, ro); });
   EXPECT_NE(m2.find("threads"), std::string::npos) << m2;
 }
 

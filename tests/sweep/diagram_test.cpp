@@ -206,7 +206,7 @@ y_range = [0.5, 6]
 counts = [8, 5]
 classifier = "tail"
 )";
-  const DiagramSpec d = parse_diagram_table(text);
+  const DiagramSpec d = diagram_spec(parse_scene(text));
   EXPECT_EQ(d.x.axis, Axis::lnC);
   EXPECT_EQ(d.y.axis, Axis::lambda);
   EXPECT_EQ(d.x.min, -5.0);
@@ -215,10 +215,10 @@ classifier = "tail"
   EXPECT_EQ(d.y.count, 5);
   EXPECT_EQ(d.classifier, Classifier::tail_mean);
   EXPECT_EQ(parse_scene(text).scene.parameters.lambda, 1.0);
-  EXPECT_THROW(parse_diagram_table("[diagram]\nsteps = 3\n"), InvalidArgument);
-  EXPECT_THROW(parse_diagram_table("[diagram]\naxes = [\"lnB\"]\n"), InvalidArgument);
-  EXPECT_THROW(parse_diagram_table("[diagram]\ncounts = [0, 3]\n"), InvalidArgument);
-  EXPECT_EQ(parse_diagram_table("name = 'x'\n").size(), DiagramSpec{}.size());
+  EXPECT_THROW(diagram_spec(parse_scene("[diagram]\nsteps = 3\n")), InvalidArgument);
+  EXPECT_THROW(diagram_spec(parse_scene("[diagram]\naxes = [\"lnB\"]\n")), InvalidArgument);
+  EXPECT_THROW(diagram_spec(parse_scene("[diagram]\ncounts = [0, 3]\n")), InvalidArgument);
+  EXPECT_EQ(diagram_spec(parse_scene("name = 'x'\n")).size(), DiagramSpec{}.size());
 }
 
 }  // namespace
@@ -233,9 +233,9 @@ TEST(DiagramScenes, PaperPanelsParse) {
     const std::string name = e.path().filename().string();
     if (name.rfind("fig4", 0) != 0 && name.rfind("fig5", 0) != 0 && name.rfind("appE", 0) != 0) continue;
     const std::string text = read_file(e.path().string());
-    ASSERT_TRUE(has_diagram_table(text)) << name;
     const SceneFile sf = parse_scene(text, name);
-    const DiagramSpec d = parse_diagram_table(text, name);
+    ASSERT_TRUE(sf.diagram.has_value()) << name;
+    const DiagramSpec d = diagram_spec(sf);
     EXPECT_NO_THROW(point_scene(sf.scene, d, d.size() - 1).validate()) << name;
     if (name.rfind("appE", 0) == 0) {
       EXPECT_EQ(d.classifier, Classifier::tail_mean) << name;

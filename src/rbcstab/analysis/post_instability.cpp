@@ -77,7 +77,7 @@ Delta2Prediction post_instability_Delta2(const Parameters& p, double sigma_s, do
 
 PostInstability post_instability(const Parameters& p, int L, double r0) {
   p.validate();
-  require(L >= 3 && L <= 100, "L", L, "an integer in [3, 100]");
+  require_L(L, 3, kMaxL, "a post-instability state needs a mode l >= 3");
   PostInstability out;
   const double alpha = p.alpha();
   out.surviving_mode = surviving_mode(alpha, L);

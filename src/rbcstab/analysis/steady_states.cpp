@@ -98,7 +98,7 @@ OutOfPlaneEquilibrium out_of_plane_equilibrium(const Parameters& p) {
 }
 
 OutOfPlaneCriterion out_of_plane_criterion(const Parameters& p, int L) {
-  require(L >= 2 && L <= 100, "L", L, "an integer in [2, 100]");
+  require_L(L);
   OutOfPlaneCriterion c;
   c.equilibrium = out_of_plane_equilibrium(p);
   c.unstable_exact = unstable_modes(c.equilibrium.sigma_R, p.alpha(), L);

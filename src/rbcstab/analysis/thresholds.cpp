@@ -5,6 +5,7 @@
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
 
@@ -68,7 +69,7 @@ std::vector<int> unstable_modes(double sigma, double alpha, int L) {
 
 int surviving_mode(double alpha, int L) {
   require_alpha(alpha);
-  require(L >= 3, "L", L, "an integer >= 3");
+  require_L(L, 3, kMaxL, "a surviving mode l >= 3");
   int best = 3;
   for (int l = 4; l <= L; ++l)
     if (sigma_critical(l, alpha) > sigma_critical(best, alpha)) best = l;

@@ -13,7 +13,7 @@ namespace rbcstab {
 
 void TruncationOptions::validate() const {
   require(std::isfinite(tolerance) && tolerance > 0 && tolerance < 1, "tolerance", tolerance, "in (0, 1)");
-  require(L_max >= 3 && L_max <= 100, "L_max", L_max, "an integer in [3, 100]");
+  require_L(L_max, 3, kMaxL, {}, "L_max");
   require(checkpoints >= 1 && checkpoints <= 10000, "checkpoints", checkpoints, "an integer in [1, 10000]");
   predictor.validate();
 }
@@ -114,6 +114,44 @@ TruncationChoice choose_truncation(const Scene& scene, const ReducedTransient& t
         << " would only move to the kept modes";
   c.reason = why.str();
   return c;
+}
+
+TruncationDecision resolve_truncation(const Scene& scene, Origin L_origin, TruncationUse use,
+                                      const TruncationOptions& options, const ReducedTransient* transient) {
+  scene.validate();
+  TruncationDecision d;
+  d.L = scene.L;
+  const std::string L = "L = " + std::to_string(scene.L);
+  const std::string given = L_origin == Origin::flag   ? "given by --L"
+                            : L_origin == Origin::file ? "given by the scene file's run.L"
+                                                       : "the default";
+  if (use == TruncationUse::reduced) {
+    d.reason = L + " (" + given + ") is not used: the reduced system holds the l = 2 modes only";
+    return d;
+  }
+  if (L_origin != Origin::default_value) {
+    d.reason = L + ": " + given;
+    return d;
+  }
+  const std::string unset = L + ": the default (neither --L nor run.L); ";
+  switch (use) {
+    case TruncationUse::simulation: {
+      const TruncationChoice c = transient ? choose_truncation(scene, *transient, options) : choose_truncation(scene, options);
+      d.L = c.L;
+      d.reason = c.reason;
+      return d;
+    }
+    case TruncationUse::grid:
+      d.reason = unset + "one L serves every scene of the grid, while the automatic choice is made per scene";
+      break;
+    case TruncationUse::analysis:
+      d.reason = unset + "the automatic choice bounds the truncation error of a simulation over [0, T], and this "
+                         "computation has no such horizon";
+      break;
+    case TruncationUse::measurement: d.reason = unset + "a benchmark measures at the L it is given"; break;
+    case TruncationUse::reduced: break;
+  }
+  return d;
 }
 
 }  // namespace rbcstab

@@ -9,6 +9,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
 
@@ -48,10 +49,9 @@ void require_steady_drive(const Scene& scene, const Parameters& q, const ModeAmp
 FullEquilibriumProblem::FullEquilibriumProblem(const Scene& scene, ContinuationParameter free)
     : scene_(scene), free_(free), L_(scene.L), n_((scene.L + 1) * (scene.L + 1) - 4) {
   scene_.validate();
-  require(L_ >= 2 && L_ <= max_L, "L", L_,
-          "an integer in [2, " + std::to_string(max_L) +
-              "]: the full equilibrium problem is dense, n = (L+1)^2 - 4 unknowns and O(n^3) work per point "
-              "(factorisations and the spectrum)");
+  require_L(L_, kMinL, max_L,
+            "the full equilibrium problem is dense, n = (L+1)^2 - 4 unknowns and O(n^3) work per point "
+            "(factorisations and the spectrum)");
   model(start_parameter());  // validates the drive at the start
 }
 

@@ -10,13 +10,14 @@
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
 
 ModalEquilibriumProblem::ModalEquilibriumProblem(const Scene& scene, ContinuationParameter free)
     : scene_(scene), free_(free), L_(scene.L) {
   scene_.validate();
-  require(L_ >= 3, "L", L_, "an integer >= 3 (the modal problem needs at least one mode l >= 3)");
+  require_L(L_, 3, kMaxL, "the modal problem needs at least one mode l >= 3");
   const double g20 = oriented_initial_state(scene_).g.at(2, 0).real();
   w0_ = g20 <= 0 ? 1.0 : -1.0;  // w0 = -g20 sqrt(a2/Delta0) normalised: +1 for beta = 0
   require_autonomous(scene_);

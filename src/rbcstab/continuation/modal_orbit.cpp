@@ -8,6 +8,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
 
@@ -31,7 +32,7 @@ Scene total_area_scene(const Scene& simulated) {
 ModalForcedSystem::ModalForcedSystem(const Scene& scene, ContinuationParameter free)
     : scene_(scene), free_(free), L_(scene.L) {
   scene_.validate();
-  require(L_ >= 3, "L", L_, "an integer >= 3 (the modal orbit needs at least one mode l >= 3)");
+  require_L(L_, 3, kMaxL, "the modal orbit needs at least one mode l >= 3");
   direction_ = direction_of(scene_);
 }
 

@@ -7,6 +7,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
 namespace {
@@ -164,7 +165,7 @@ Eigen::VectorXd ModalOrbitBranchPointCurve::start_from_modal(const Eigen::Vector
 }
 
 int ellipsoidal_orbit_critical_mode(const Parameters& q, int L, double sigma_bar) {
-  require(L >= 3, "L", L, ">= 3");
+  require_L(L, 3, kMaxL, "a critical mode l >= 3");
   int best = 3;
   for (int l = 4; l <= L; ++l)
     if (std::abs(Upsilon(q, l, sigma_bar)) < std::abs(Upsilon(q, best, sigma_bar))) best = l;

@@ -7,96 +7,59 @@
 namespace rbcstab {
 
 const std::vector<std::string>& continuation_parameter_names() {
-  static const std::vector<std::string> names{"lambda", "Delta", "Delta0", "B", "C", "Lambda", "S", "beta"};
+  static const std::vector<std::string> names = parameter_names(ParameterUse::continuation);
   return names;
 }
 
-std::string to_string(ContinuationParameter q) {
-  return continuation_parameter_names()[static_cast<std::size_t>(q)];
-}
-
 ContinuationParameter continuation_parameter_from_string(const std::string& name) {
-  const auto& names = continuation_parameter_names();
-  for (std::size_t k = 0; k < names.size(); ++k)
-    if (names[k] == name) return static_cast<ContinuationParameter>(k);
-  throw InvalidArgument("parameter", "parameter = '" + name +
-                                         "' is not a continuation parameter: must be one of lambda, Delta, "
-                                         "Delta0, B, C, Lambda, S, beta");
+  return parameter_from_string(name, ParameterUse::continuation);
 }
 
 namespace {
-[[noreturn]] void beta_is_a_scene_parameter() {
-  throw InvalidArgument("parameter", "parameter = beta is the rest shape's orientation, a scene parameter, not a "
-                                     "material one (internal: use the Scene overload)");
+// Throws unless q is a function of the material Parameters alone (beta lives in the Scene).
+void require_material(ContinuationParameter q) {
+  if (!is_material(q))
+    throw InvalidArgument("parameter", "parameter = " + to_string(q) +
+                                           " is a scene parameter, not a material one (internal: use the Scene overload)");
+}
+
+Scene scene_of(const Parameters& p) {
+  Scene s;
+  s.parameters = p;
+  return s;
 }
 }  // namespace
 
 double get_parameter(const Parameters& p, ContinuationParameter q) {
-  switch (q) {
-    case ContinuationParameter::lambda: return p.lambda;
-    case ContinuationParameter::Delta: return p.Delta;
-    case ContinuationParameter::Delta0: return p.Delta0;
-    case ContinuationParameter::B: return p.B;
-    case ContinuationParameter::C: return p.C;
-    case ContinuationParameter::Lambda: return p.Lambda();
-    case ContinuationParameter::S: return p.S();
-    case ContinuationParameter::beta: break;
-  }
-  beta_is_a_scene_parameter();
+  require_material(q);
+  return get_parameter(scene_of(p), q);
 }
 
 Parameters with_parameter(Parameters p, ContinuationParameter q, double value) {
-  require_finite(to_string(q), value);
-  switch (q) {
-    case ContinuationParameter::lambda: p.lambda = value; break;
-    case ContinuationParameter::Delta: p.Delta = value; break;
-    case ContinuationParameter::Delta0: p.Delta0 = value; break;
-    case ContinuationParameter::B: p.B = value; break;
-    case ContinuationParameter::C: p.C = value; break;
-    case ContinuationParameter::Lambda:
-      require(value > 0, "Lambda", value, "a number > 0");
-      p.Delta *= (value / p.Lambda()) * (value / p.Lambda());
-      break;
-    case ContinuationParameter::S: {
-      const double S = p.S();
-      require(std::isfinite(S), "S", value, "continuable only from a finite S (Delta0 > 0 and C finite)");
-      require(value > 0, "S", value, "a number > 0");
-      p.C *= value / S;
-      break;
-    }
-    case ContinuationParameter::beta:
-      beta_is_a_scene_parameter();
-  }
-  p.validate();
-  return p;
-}
-
-double get_parameter(const Scene& s, ContinuationParameter q) {
-  return q == ContinuationParameter::beta ? s.beta : get_parameter(s.parameters, q);
+  require_material(q);
+  return with_parameter(scene_of(p), q, value).parameters;
 }
 
 Scene with_parameter(Scene s, ContinuationParameter q, double value) {
-  if (q != ContinuationParameter::beta) {
-    s.parameters = with_parameter(s.parameters, q, value);
-    return s;
-  }
-  require(std::isfinite(value) && value >= 0 && value <= M_PI, "beta", value,
-          "[0, pi] (0: rest shape out of plane, pi/2: in plane)");
-  s.beta = value;
+  require_in(q, continuation_domain(q, s.parameters), value);
+  set_parameter(s, q, value);
+  s.parameters.validate();
   return s;
 }
 
 void require_independent(ContinuationParameter p1, ContinuationParameter p2, const std::string& name) {
   // Lambda is moved through Delta and depends on lambda; S is moved through C and depends on Delta0:
-  // setting one of a coupled pair would undo the other.
-  using P = ContinuationParameter;
-  auto coupled = [](P a, P b) {
-    return a == b || (a == P::Lambda && (b == P::Delta || b == P::lambda)) || (a == P::S && (b == P::C || b == P::Delta0));
-  };
-  if (coupled(p1, p2) || coupled(p2, p1))
-    throw InvalidArgument(name, name + " = " + to_string(p2) + " is not independent of the first parameter " + to_string(p1) +
-                                    ": choose two of lambda, Delta, Delta0, B, C, beta, or a composite (Lambda, S) with a "
-                                    "parameter it does not depend on");
+  // setting one of a pair that shares an input would undo the other.
+  if (independent(p1, p2)) return;
+  std::string stored, composite;
+  for (const ParameterRow& r : parameter_table()) {
+    if (!r.continuation) continue;
+    std::string& list = r.table ? stored : composite;
+    list += (list.empty() ? "" : ", ") + std::string(r.name);
+  }
+  throw InvalidArgument(name, name + " = " + to_string(p2) + " is not independent of the first parameter " +
+                                  to_string(p1) + ": choose two of " + stored + ", or a composite (" + composite +
+                                  ") with a parameter it does not depend on");
 }
 
 InitialState oriented_initial_state(Scene s) {

@@ -1,17 +1,18 @@
 #pragma once
-// The physical parameters a branch can be continued in, by the paper's symbols: the five material
-// and shape numbers, the composite Lambda, S of the reduced system (Eq. Lambda_S), and the
-// orientation beta of the stress-free (and initial) shape, which lives in the Scene.
+// The physical parameters a branch can be continued in: the rows of the parameter table
+// (model/parameter_table.hpp) marked for continuation. They are the five material and shape numbers, the
+// composites Lambda, S of the reduced system (Eq. Lambda_S), and the orientation beta of the stress-free
+// (and initial) shape, which lives in the Scene.
 #include <string>
 #include <vector>
 
+#include "rbcstab/model/parameter_table.hpp"
 #include "rbcstab/model/parameters.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
 
-enum class ContinuationParameter { lambda, Delta, Delta0, B, C, Lambda, S, beta };
-std::string to_string(ContinuationParameter q);
+using ContinuationParameter = SceneParameter;  // one of the rows usable_as(q, ParameterUse::continuation)
 // "lambda", "Delta", "Delta0", "B", "C", "Lambda", "S", "beta"; throws InvalidArgument("parameter", ...).
 ContinuationParameter continuation_parameter_from_string(const std::string& name);
 const std::vector<std::string>& continuation_parameter_names();
@@ -23,10 +24,10 @@ double get_parameter(const Parameters& p, ContinuationParameter q);
 // (S ~ C at fixed Delta0, Lambda unchanged), so each composite moves alone.
 Parameters with_parameter(Parameters p, ContinuationParameter q, double value);
 
-// Every parameter, beta included: what the problems and adapters use. beta's domain is [0, pi]
-// (0: rest shape out of plane, pi/2: in plane; pi - beta is the mirror image), InvalidArgument("beta")
-// outside; the others as with_parameter(Parameters, ...).
-double get_parameter(const Scene& s, ContinuationParameter q);
+// Every parameter, beta included: what the problems and adapters use (get_parameter(const Scene&, q) is the
+// table's). The value must lie in q's continuation domain (beta: [0, pi], 0: rest shape out of plane, pi/2:
+// in plane, pi - beta is the mirror image), else InvalidArgument naming q; then the material parameters are
+// validated (Lambda moves Delta, which must stay in its domain).
 Scene with_parameter(Scene s, ContinuationParameter q, double value);
 
 // The scene's initial state built with Delta0 = Delta > 0. The continuation problems take only the rest
@@ -37,7 +38,7 @@ Scene with_parameter(Scene s, ContinuationParameter q, double value);
 InitialState oriented_initial_state(Scene s);
 
 // Throws InvalidArgument(name, ...) unless p2 can be set independently of p1 (not equal, not Lambda with
-// Delta or lambda, not S with C or Delta0): the pairs of a two-parameter curve.
+// Delta or lambda, not S with C or Delta0: independent() of the table): the pairs of a two-parameter curve.
 void require_independent(ContinuationParameter p1, ContinuationParameter p2, const std::string& name);
 
 }  // namespace rbcstab

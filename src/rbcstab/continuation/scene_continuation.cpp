@@ -381,6 +381,10 @@ bool is_orbit(ProblemKind kind) { return kind == ProblemKind::orbit || kind == P
 
 double default_beta(ProblemKind kind) { return is_orbit(kind) ? M_PI / 2 : 0.0; }
 
+TruncationUse truncation_use(ProblemKind kind) {
+  return model_level(kind) == ModelLevel::reduced ? TruncationUse::reduced : TruncationUse::analysis;
+}
+
 std::string to_string(CurveKind kind) { return to_string(special_point_type(kind)); }
 
 CurveKind curve_kind_from_string(const std::string& name) {

@@ -14,6 +14,7 @@
 #include <variant>
 #include <vector>
 
+#include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/continuation/branch_switch.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/orbit.hpp"
@@ -30,6 +31,9 @@ std::string to_string(ProblemKind kind);  // "equilibrium", "modal", "full", "or
 ProblemKind problem_kind_from_string(const std::string& name);  // throws InvalidArgument("kind", ...)
 ModelLevel model_level(ProblemKind kind);                       // reduced, modal or full
 bool is_orbit(ProblemKind kind);
+// How the truncation policy treats a kind's L: the reduced kinds do not use it; modal and full equilibria
+// and modal orbits are analyses with no simulation horizon (resolve_truncation).
+TruncationUse truncation_use(ProblemKind kind);
 // The rest shape's orientation a kind needs when the user gives none: equilibria need an autonomous
 // system (rest shape out of plane, 0), periodic orbits a forced one (in plane, pi/2).
 double default_beta(ProblemKind kind);

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "rbcstab/model/parameter_table.hpp"
+
 namespace rbcstab {
 
 nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
@@ -13,9 +15,11 @@ nlohmann::json by_mode(const std::vector<double>& values) {
 }
 
 nlohmann::json to_json(const Parameters& p) {
-  nlohmann::json j{{"lambda", p.lambda}, {"Delta", p.Delta}, {"Delta0", p.Delta0}, {"B", p.B},
-                   {"C", number_or_null(p.C)}, {"alpha", p.alpha()}, {"Lambda", p.Lambda()},
-                   {"S", number_or_null(p.S())}};
+  Scene s;
+  s.parameters = p;
+  nlohmann::json j = nlohmann::json::object();
+  for (const ParameterRow& r : parameter_table())
+    if (is_material(r.id) && r.scale == AxisScale::linear) j[r.name] = number_or_null(get_parameter(s, r.id));
   if (!std::isfinite(p.C)) j["C_note"] = "infinite: the vesicle limit";
   if (!std::isfinite(p.S())) j["S_note"] = "infinite: the vesicle limit (Delta0 = 0 or C = inf)";
   return j;
@@ -27,6 +31,11 @@ nlohmann::json to_json(const Scene& s) {
   for (const auto& [l, v] : s.rest_delta_l) rl[std::to_string(l)] = v;
   return {{"name", s.name}, {"parameters", to_json(s.parameters)}, {"beta", s.beta}, {"delta", s.delta},
           {"delta_l", dl}, {"rest_delta_l", rl}, {"L", s.L}, {"T", s.T}, {"dt", s.dt}, {"model", to_string(s.model)}};
+}
+
+void put_truncation(nlohmann::json& j, const SceneFile& file) {
+  j["L"] = file.scene.L;
+  j["L_reason"] = file.L_reason;
 }
 
 nlohmann::json to_json(const SimulationResult& r) {

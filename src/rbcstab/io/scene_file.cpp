@@ -1,211 +1,296 @@
 #include "rbcstab/io/scene_file.hpp"
 
-#include <cmath>
-#include <limits>
-#include <map>
+#include <algorithm>
+#include <cstdint>
 #include <set>
 #include <sstream>
 #include <toml++/toml.h>
 
 #include "rbcstab/core/error.hpp"
-#include "rbcstab/io/detail/scene_toml.hpp"
 #include "rbcstab/io/files.hpp"
 
 namespace rbcstab {
 
 namespace {
-// Reads table.key as a number; absent keys keep the default.
-void read_number(const toml::table& table, const std::string& prefix, const char* key, double& out) {
-  const toml::node* node = table.get(key);
-  if (!node) return;
-  if (auto v = node->value<double>()) {
-    out = *v;
-    return;
-  }
-  throw InvalidArgument(prefix + key, prefix + key + " must be a number");
+constexpr const char* kPanelTables[] = {"diagram", "fig6e", "continuation"};
+
+double number_of(const SceneValue& v) { return std::get<double>(v); }
+long long integer_of(const SceneValue& v) { return std::get<long long>(v); }
+const std::string& text_of(const SceneValue& v) { return std::get<std::string>(v); }
+
+void merge_modes(std::map<int, double>& into, const SceneValue& v) {
+  for (const auto& [l, d] : std::get<std::map<int, double>>(v)) into[l] = d;
 }
 
-void read_int(const toml::table& table, const std::string& prefix, const char* key, long long& out) {
-  const toml::node* node = table.get(key);
-  if (!node) return;
-  if (auto v = node->value_exact<int64_t>()) {
-    out = *v;
-    return;
-  }
-  throw InvalidArgument(prefix + key, prefix + key + " must be an integer");
+// field: a generic lambda returning the number's reference in a (const or not) SceneFile.
+template <class Field>
+SceneKey number_key(const char* table, const char* key, const char* flag, const char* help, Field field) {
+  return {table, key, ValueKind::number, flag, help, {},
+          [field](const SceneFile& f) { return SceneValue{field(f)}; },
+          [field](SceneFile& f, const SceneValue& v) { field(f) = number_of(v); }};
 }
 
-void read_string(const toml::table& table, const std::string& prefix, const char* key, std::string& out) {
-  const toml::node* node = table.get(key);
-  if (!node) return;
-  if (auto v = node->value_exact<std::string>()) {
-    out = *v;
-    return;
+std::vector<SceneKey> make_scene_keys() {
+  std::vector<SceneKey> k;
+  k.push_back({"", "name", ValueKind::text, "", "label carried into outputs", {},
+               [](const SceneFile& f) { return SceneValue{f.scene.name}; },
+               [](SceneFile& f, const SceneValue& v) { f.scene.name = text_of(v); }});
+  for (const ParameterRow& r : parameter_table()) {
+    if (!r.table) continue;
+    const SceneParameter q = r.id;
+    k.push_back({r.table, r.name, ValueKind::number, std::string("--") + r.name,
+                 std::string(r.description) + ", " + parameter_domain(q, Parameters{}).text(false), {},
+                 [q](const SceneFile& f) { return SceneValue{get_parameter(f.scene, q)}; },
+                 [q](SceneFile& f, const SceneValue& v) { set_parameter(f.scene, q, number_of(v)); }});
   }
-  throw InvalidArgument(prefix + key, prefix + key + " must be a string");
-}
-
-void reject_unknown(const toml::table& table, const std::string& prefix, const std::set<std::string>& allowed) {
-  for (const auto& [k, v] : table) {
-    const std::string key(k.str());
-    if (!allowed.count(key)) {
-      std::string list;
-      for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-      throw InvalidArgument(prefix + key, "unknown scene key '" + prefix + key + "' (allowed here: " + list + ")");
-    }
-  }
+  k.push_back({"initial", "delta_l", ValueKind::modes, "--delta-l", "per-mode perturbation override, l=value (repeatable)",
+               {}, [](const SceneFile& f) { return SceneValue{f.scene.delta_l}; },
+               [](SceneFile& f, const SceneValue& v) { merge_modes(f.scene.delta_l, v); }});
+  k.push_back({"initial", "rest_delta_l", ValueKind::modes, "--rest-delta-l",
+               "stress-free l >= 3 content Delta0_l, l=value (repeatable; only the full level holds it)", {},
+               [](const SceneFile& f) { return SceneValue{f.scene.rest_delta_l}; },
+               [](SceneFile& f, const SceneValue& v) { merge_modes(f.scene.rest_delta_l, v); }});
+  k.push_back({"run", "L", ValueKind::integer, "--L",
+               "truncation: modes l = 2..L, an integer in [" + std::to_string(kMinL) + ", " + std::to_string(kMaxL) +
+                   "]; without --L or run.L each command states its choice (simulate, summary, report, post, "
+                   "shape: the smallest L whose dropped modes gain < 1e-4 Delta)",
+               {}, [](const SceneFile& f) { return SceneValue{static_cast<long long>(f.scene.L)}; },
+               [](SceneFile& f, const SceneValue& v) {
+                 require_L(integer_of(v));
+                 f.scene.L = int(integer_of(v));
+               }});
+  k.push_back(number_key("run", "T", "--T", "horizon T, in (0, 1e7]", [](auto& f) -> auto& { return f.scene.T; }));
+  k.push_back(number_key("run", "dt", "--dt", "output sampling interval, in (0, T]",
+                         [](auto& f) -> auto& { return f.scene.dt; }));
+  std::vector<std::string> levels;
+  for (ModelLevel m : {ModelLevel::automatic, ModelLevel::full, ModelLevel::modal, ModelLevel::reduced})
+    levels.push_back(to_string(m));
+  k.push_back({"run", "model", ValueKind::name, "--model", "model level", levels,
+               [](const SceneFile& f) { return SceneValue{to_string(f.scene.model)}; },
+               [](SceneFile& f, const SceneValue& v) { f.scene.model = model_level_from_string(text_of(v)); }});
+  k.push_back(number_key("run", "tail_window", "", "Delta_l are averaged over [T - tail_window, T], > 0",
+                         [](auto& f) -> auto& { return f.options.tail_window; }));
+  k.push_back({"integrator", "stepper", ValueKind::name, "--stepper", "time stepper", stepper_names(),
+               [](const SceneFile& f) { return SceneValue{to_string(f.options.integrator.stepper)}; },
+               [](SceneFile& f, const SceneValue& v) { f.options.integrator.stepper = stepper_from_string(text_of(v)); }});
+  k.push_back(number_key("integrator", "rtol", "--rtol", "relative tolerance, in [1e-15, 0.1]",
+                         [](auto& f) -> auto& { return f.options.integrator.rtol; }));
+  k.push_back(number_key("integrator", "atol", "--atol", "absolute tolerance, in [0, 1]",
+                         [](auto& f) -> auto& { return f.options.integrator.atol; }));
+  k.push_back(number_key("integrator", "h_init", "", "first trial step",
+                         [](auto& f) -> auto& { return f.options.integrator.h_init; }));
+  k.push_back(number_key("integrator", "h_min", "", "a smaller step ends the run with status step_size_underflow",
+                         [](auto& f) -> auto& { return f.options.integrator.h_min; }));
+  k.push_back({"integrator", "max_steps", ValueKind::integer, "", "a run never hangs: it ends with status step_limit", {},
+               [](const SceneFile& f) { return SceneValue{static_cast<long long>(f.options.integrator.max_steps)}; },
+               [](SceneFile& f, const SceneValue& v) {
+                 require(integer_of(v) > 0, "max_steps", double(integer_of(v)), "> 0");
+                 f.options.integrator.max_steps = std::size_t(integer_of(v));
+               }});
+  k.push_back(number_key("integrator", "max_seconds", "", "wall-clock budget (0 = none): status time_limit",
+                         [](auto& f) -> auto& { return f.options.integrator.max_seconds; }));
+  return k;
 }
 
 // Library validation names the bare symbol ("B", "rtol", "delta_l.3"); a scene file names its key
 // ("parameters.B"), so out-of-range messages point at the line to fix.
-std::string scene_key(const std::string& parameter) {
-  static const std::map<std::string, std::string> table_of = {
-      {"lambda", "parameters"}, {"Delta", "parameters"}, {"Delta0", "parameters"}, {"B", "parameters"},
-      {"C", "parameters"},      {"beta", "initial"},     {"delta", "initial"},     {"delta_l", "initial"},
-      {"rest_delta_l", "initial"}, {"L", "run"},         {"T", "run"},             {"dt", "run"},
-      {"model", "run"},         {"tail_window", "run"},  {"stepper", "integrator"}, {"rtol", "integrator"},
-      {"atol", "integrator"},   {"h_init", "integrator"}, {"h_min", "integrator"}, {"max_steps", "integrator"},
-      {"max_seconds", "integrator"}};
-  const auto it = table_of.find(parameter.substr(0, parameter.find('.')));
-  return it == table_of.end() ? parameter : it->second + "." + parameter;
-}
-
 template <class F>
 void with_scene_keys(F&& check) {
   try {
     check();
   } catch (const InvalidArgument& e) {
-    const std::string key = scene_key(e.parameter());
-    if (key == e.parameter()) throw;
-    std::string message = e.what();
-    message = message.rfind(e.parameter(), 0) == 0 ? key + message.substr(e.parameter().size()) : key + ": " + message;
-    throw InvalidArgument(key, message);
-  }
-}
-
-const toml::table* subtable(const toml::table& root, const char* name) {
-  const toml::node* node = root.get(name);
-  if (!node) return nullptr;
-  if (const toml::table* t = node->as_table()) return t;
-  throw InvalidArgument(name, std::string("scene key '") + name + "' must be a table ([" + name + "])");
-}
-
-void read_mode_map(const toml::table& table, const std::string& prefix, const char* key, std::map<int, double>& out) {
-  const toml::node* node = table.get(key);
-  if (!node) return;
-  const toml::table* t = node->as_table();
-  if (!t) throw InvalidArgument(prefix + key, prefix + key + " must be a table of mode = value, e.g. { 3 = 1e-3 }");
-  for (const auto& [k, v] : *t) {
-    const std::string ks(k.str());
-    int l = 0;
-    try {
-      std::size_t pos = 0;
-      l = std::stoi(ks, &pos);
-      if (pos != ks.size()) throw std::invalid_argument(ks);
-    } catch (const std::exception&) {
-      throw InvalidArgument(prefix + key, prefix + key + " has key '" + ks + "': keys must be integer modes l >= 3");
+    const std::string bare = e.parameter().substr(0, e.parameter().find('.'));
+    for (const SceneKey& k : scene_keys()) {
+      if (k.key != bare || k.table.empty()) continue;
+      const std::string key = k.table + "." + e.parameter();
+      std::string message = e.what();
+      message = message.rfind(e.parameter(), 0) == 0 ? key + message.substr(e.parameter().size()) : key + ": " + message;
+      throw InvalidArgument(key, message);
     }
-    auto value = v.value<double>();
-    if (!value) throw InvalidArgument(prefix + key + "." + ks, prefix + key + "." + ks + " must be a number");
-    out[l] = *value;
+    throw;
   }
+}
+
+// The root table; a syntax error becomes InvalidArgument("scene", "<source>:<line>:<column>: ...").
+toml::table parse_toml(const std::string& text, const std::string& source) {
+  try {
+    return toml::parse(text, source);
+  } catch (const toml::parse_error& e) {
+    std::ostringstream msg;
+    msg << source << ":" << e.source().begin.line << ":" << e.source().begin.column << ": " << e.description();
+    throw InvalidArgument("scene", "cannot parse scene file " + msg.str());
+  }
+}
+
+std::optional<SceneTable::Item> item_of(const toml::node& node) {
+  if (auto v = node.value_exact<bool>()) return SceneTable::Item{*v};
+  if (auto v = node.value_exact<int64_t>()) return SceneTable::Item{static_cast<long long>(*v)};
+  if (auto v = node.value_exact<double>()) return SceneTable::Item{*v};
+  if (auto v = node.value_exact<std::string>()) return SceneTable::Item{*v};
+  return std::nullopt;
+}
+
+// One value of a table: a scalar, or an array or inline table of scalars (mode maps).
+SceneTable::Value value_of(const toml::node& node, const std::string& path) {
+  using Shape = SceneTable::Value::Shape;
+  SceneTable::Value v;
+  auto add = [&](const toml::node& n) {
+    const auto item = item_of(n);
+    if (!item) throw InvalidArgument(path, path + " must be a number, a string, or an array or table of them");
+    v.items.push_back(*item);
+  };
+  if (const toml::array* a = node.as_array()) {
+    v.shape = Shape::array;
+    for (const toml::node& n : *a) add(n);
+  } else if (const toml::table* t = node.as_table()) {
+    v.shape = Shape::table;
+    for (const auto& [k, n] : *t) {
+      v.keys.emplace_back(k.str());
+      add(n);
+    }
+  } else {
+    add(node);
+  }
+  return v;
+}
+
+SceneTable table_of(const std::string& name, const toml::table& t) {
+  SceneTable out(name);
+  for (const auto& [k, node] : t) out.set(std::string(k.str()), value_of(node, out.path(std::string(k.str()))));
+  return out;
+}
+
+SceneValue read(const SceneTable& t, const SceneKey& k) {
+  switch (k.kind) {
+    case ValueKind::number: return t.number(k.key);
+    case ValueKind::integer: return t.integer(k.key);
+    case ValueKind::name:
+    case ValueKind::text: return t.text(k.key);
+    case ValueKind::modes: return t.modes(k.key);
+  }
+  return {};
 }
 }  // namespace
 
+Origin SceneFile::origin(const std::string& key) const {
+  const auto it = origins.find(key);
+  return it == origins.end() ? Origin::default_value : it->second;
+}
+
+const std::vector<SceneKey>& scene_keys() {
+  static const std::vector<SceneKey> keys = make_scene_keys();
+  return keys;
+}
+
+std::vector<const SceneKey*> scene_flags() {
+  std::vector<const SceneKey*> flags;
+  for (const SceneKey& k : scene_keys())
+    if (!k.flag.empty()) flags.push_back(&k);
+  return flags;
+}
+
+void apply_flag(SceneFile& file, const SceneKey& key, const SceneValue& value) {
+  key.set(file, value);
+  file.origins[key.path()] = Origin::flag;
+}
+
+std::map<int, double> parse_modes(const std::vector<std::string>& items, const std::string& flag) {
+  std::map<int, double> out;
+  for (const auto& item : items) {
+    const auto eq = item.find('=');
+    try {
+      if (eq == std::string::npos) throw std::invalid_argument(item);
+      std::size_t pos = 0;
+      const int l = std::stoi(item.substr(0, eq), &pos);
+      out[l] = std::stod(item.substr(eq + 1));
+    } catch (const std::exception&) {
+      throw InvalidArgument(flag, flag + " = '" + item + "' must have the form l=value, e.g. 3=1e-3");
+    }
+  }
+  return out;
+}
+
+void validate_scene_file(const SceneFile& file) {
+  file.scene.validate();
+  file.options.validate();
+}
+
 SceneFile parse_scene(const std::string& toml_text, const std::string& source_name) {
-  const toml::table root = detail::parse_scene_toml(toml_text, source_name);
+  const toml::table root = parse_toml(toml_text, source_name);
   SceneFile f;
-  Scene& s = f.scene;
-  // [diagram] belongs to sweeps (rbcstab/sweep/diagram_file.hpp), [fig6e] and [continuation] to figure
-  // panels (rbcstab/report/panels.hpp); scenes accept and ignore them.
-  reject_unknown(root, "", {"name", "parameters", "initial", "run", "integrator", "diagram", "fig6e", "continuation"});
-  read_string(root, "", "name", s.name);
-  if (const toml::table* t = subtable(root, "parameters")) {
-    reject_unknown(*t, "parameters.", {"lambda", "Delta", "Delta0", "B", "C"});
-    read_number(*t, "parameters.", "lambda", s.parameters.lambda);
-    read_number(*t, "parameters.", "Delta", s.parameters.Delta);
-    read_number(*t, "parameters.", "Delta0", s.parameters.Delta0);
-    read_number(*t, "parameters.", "B", s.parameters.B);
-    read_number(*t, "parameters.", "C", s.parameters.C);
+  f.source = source_name;
+  f.text = toml_text;
+  std::set<std::string> allowed(std::begin(kPanelTables), std::end(kPanelTables)), tables;
+  for (const SceneKey& k : scene_keys()) {
+    allowed.insert(k.table.empty() ? k.key : k.table);
+    if (!k.table.empty()) tables.insert(k.table);
   }
-  if (const toml::table* t = subtable(root, "initial")) {
-    reject_unknown(*t, "initial.", {"beta", "delta", "delta_l", "rest_delta_l"});
-    read_number(*t, "initial.", "beta", s.beta);
-    read_number(*t, "initial.", "delta", s.delta);
-    read_mode_map(*t, "initial.", "delta_l", s.delta_l);
-    read_mode_map(*t, "initial.", "rest_delta_l", s.rest_delta_l);
+  SceneTable names, top;  // every root key (checked first), and the root's values
+  std::map<std::string, SceneTable> sub;
+  for (const auto& [k, node] : root) {
+    const std::string key(k.str());
+    names.set(key, {});
+    if (const toml::table* t = node.as_table())
+      sub.emplace(key, table_of(key, *t));
+    else
+      top.set(key, value_of(node, key));
   }
-  if (const toml::table* t = subtable(root, "run")) {
-    reject_unknown(*t, "run.", {"L", "T", "dt", "model", "tail_window"});
-    long long L = s.L;
-    read_int(*t, "run.", "L", L);
-    require(L >= 2 && L <= 100, "run.L", double(L), "an integer in [2, 100]");
-    s.L = int(L);
-    read_number(*t, "run.", "T", s.T);
-    read_number(*t, "run.", "dt", s.dt);
-    read_number(*t, "run.", "tail_window", f.options.tail_window);
-    std::string model = to_string(s.model);
-    read_string(*t, "run.", "model", model);
-    with_scene_keys([&] { s.model = model_level_from_string(model); });
+  names.allow_only(allowed);
+  for (const auto& [key, v] : top.values())
+    if (tables.count(key) || std::find(std::begin(kPanelTables), std::end(kPanelTables), key) != std::end(kPanelTables))
+      throw InvalidArgument(key, "scene key '" + key + "' must be a table ([" + key + "])");
+  for (auto& [name, t] : sub) {
+    if (tables.count(name)) continue;
+    for (const auto& [key, v] : t.values()) f.origins[t.path(key)] = Origin::file;
+    (name == "diagram" ? f.diagram : name == "fig6e" ? f.fig6e : f.continuation) = std::move(t);
   }
-  if (const toml::table* t = subtable(root, "integrator")) {
-    reject_unknown(*t, "integrator.", {"stepper", "rtol", "atol", "h_init", "h_min", "max_steps", "max_seconds"});
-    IntegratorOptions& o = f.options.integrator;
-    std::string stepper = to_string(o.stepper);
-    read_string(*t, "integrator.", "stepper", stepper);
-    with_scene_keys([&] { o.stepper = stepper_from_string(stepper); });
-    read_number(*t, "integrator.", "rtol", o.rtol);
-    read_number(*t, "integrator.", "atol", o.atol);
-    read_number(*t, "integrator.", "h_init", o.h_init);
-    read_number(*t, "integrator.", "h_min", o.h_min);
-    read_number(*t, "integrator.", "max_seconds", o.max_seconds);
-    long long max_steps = static_cast<long long>(o.max_steps);
-    read_int(*t, "integrator.", "max_steps", max_steps);
-    require(max_steps > 0, "integrator.max_steps", double(max_steps), "> 0");
-    o.max_steps = std::size_t(max_steps);
+  for (const std::string& name : tables) {
+    const auto it = sub.find(name);
+    if (it == sub.end()) continue;
+    std::set<std::string> keys;
+    for (const SceneKey& k : scene_keys())
+      if (k.table == name) keys.insert(k.key);
+    it->second.allow_only(keys);
   }
-  with_scene_keys([&] {
-    s.validate();
-    f.options.validate();
-  });
+  for (const SceneKey& k : scene_keys()) {
+    const SceneTable* t = k.table.empty() ? &top : nullptr;
+    if (!t) {
+      const auto it = sub.find(k.table);
+      t = it == sub.end() ? nullptr : &it->second;
+    }
+    if (!t || !t->has(k.key)) continue;
+    const SceneValue v = read(*t, k);
+    with_scene_keys([&] { k.set(f, v); });
+    f.origins[k.path()] = Origin::file;
+  }
+  with_scene_keys([&] { validate_scene_file(f); });
   return f;
 }
 
 SceneFile load_scene(const std::string& path) { return parse_scene(read_file(path), path); }
 
-bool scene_sets_L(const std::string& toml_text, const std::string& source_name) {
-  try {
-    const toml::table root = toml::parse(toml_text, source_name);
-    const toml::table* run = root["run"].as_table();
-    return run && run->contains("L");
-  } catch (const toml::parse_error&) {
-    return false;  // parse_scene reports the syntax error with its location
-  }
-}
-
 std::string to_toml(const SceneFile& file) {
-  const Scene& s = file.scene;
-  auto mode_table = [](const std::map<int, double>& m) {
-    toml::table t;
-    for (const auto& [l, v] : m) t.insert(std::to_string(l), v);
-    return t;
-  };
-  toml::table root{
-      {"name", s.name},
-      {"parameters", toml::table{{"lambda", s.parameters.lambda}, {"Delta", s.parameters.Delta},
-                                 {"Delta0", s.parameters.Delta0}, {"B", s.parameters.B}, {"C", s.parameters.C}}},
-      {"initial", toml::table{{"beta", s.beta}, {"delta", s.delta}, {"delta_l", mode_table(s.delta_l)},
-                              {"rest_delta_l", mode_table(s.rest_delta_l)}}},
-      {"run", toml::table{{"L", s.L}, {"T", s.T}, {"dt", s.dt}, {"model", to_string(s.model)},
-                          {"tail_window", file.options.tail_window}}},
-      {"integrator", toml::table{{"stepper", to_string(file.options.integrator.stepper)},
-                                 {"rtol", file.options.integrator.rtol},
-                                 {"atol", file.options.integrator.atol},
-                                 {"h_init", file.options.integrator.h_init},
-                                 {"h_min", file.options.integrator.h_min},
-                                 {"max_steps", static_cast<int64_t>(file.options.integrator.max_steps)},
-                                 {"max_seconds", file.options.integrator.max_seconds}}},
-  };
+  toml::table root;
+  for (const SceneKey& k : scene_keys()) {
+    toml::table* t = &root;
+    if (!k.table.empty()) {
+      if (!root.contains(k.table)) root.insert(k.table, toml::table{});
+      t = root[k.table].as_table();
+    }
+    const SceneValue v = k.get(file);
+    switch (k.kind) {
+      case ValueKind::number: t->insert(k.key, number_of(v)); break;
+      case ValueKind::integer: t->insert(k.key, static_cast<int64_t>(integer_of(v))); break;
+      case ValueKind::name:
+      case ValueKind::text: t->insert(k.key, text_of(v)); break;
+      case ValueKind::modes: {
+        toml::table m;
+        for (const auto& [l, d] : std::get<std::map<int, double>>(v)) m.insert(std::to_string(l), d);
+        t->insert(k.key, std::move(m));
+        break;
+      }
+    }
+  }
   std::ostringstream ss;
   ss << root << "\n";
   return ss.str();

@@ -5,17 +5,14 @@
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/model/parameter_table.hpp"
 
 namespace rbcstab {
 
 void Parameters::validate() const {
-  require(std::isfinite(lambda) && lambda >= 0, "lambda", lambda, "finite and >= 0");
-  require(std::isfinite(Delta) && Delta > 0 && Delta < 4 * std::numbers::pi, "Delta", Delta,
-          "in (0, 4 pi)");
-  require(std::isfinite(Delta0) && Delta0 >= 0 && Delta0 <= Delta, "Delta0", Delta0,
-          "in [0, Delta] with Delta = " + format_value(Delta));
-  require(std::isfinite(B) && B > 0, "B", B, "finite and > 0");
-  require(!std::isnan(C) && C > 0, "C", C, "> 0 (inf allowed: the vesicle limit)");
+  Scene s;
+  s.parameters = *this;
+  validate_table(s, "parameters");
 }
 
 std::vector<std::string> Parameters::warnings() const {

@@ -5,6 +5,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/parameter_table.hpp"
 
 namespace rbcstab {
 
@@ -26,12 +27,16 @@ ModelLevel model_level_from_string(const std::string& name) {
   throw InvalidArgument("model", "model = '" + name + "' is not one of: auto, full, modal, reduced");
 }
 
+void require_L(long long L, int min_L, int max_L, std::string_view why, std::string_view name) {
+  std::string range = "an integer in [" + std::to_string(min_L) + ", " + std::to_string(max_L) + "]";
+  if (!why.empty()) range += " (" + std::string(why) + ")";
+  require(L >= min_L && L <= max_L, name, double(L), range);
+}
+
 void Scene::validate() const {
   parameters.validate();
-  require(L >= 2 && L <= 100, "L", L, "an integer in [2, 100]");
-  require_finite("beta", beta);
-  require(std::isfinite(delta) && delta >= 0 && delta <= parameters.Delta, "delta", delta,
-          "in [0, Delta] with Delta = " + format_value(parameters.Delta));
+  require_L(L);
+  validate_table(*this, "initial");
   for (const auto& [l, d] : delta_l) {
     require(l >= 3 && l <= L, "delta_l", l, "a mode l in [3, L] with L = " + std::to_string(L));
     require(std::isfinite(d) && d >= 0 && d <= parameters.Delta, "delta_l." + std::to_string(l), d,

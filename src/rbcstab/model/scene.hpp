@@ -5,6 +5,7 @@
 #include <map>
 #include <memory>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "rbcstab/model/amplitudes.hpp"
@@ -13,6 +14,14 @@
 
 namespace rbcstab {
 
+// The truncation L: modes l = 2..L. One rule for every caller: an integer in [min_L, max_L]; the scene's
+// range is [kMinL, kMaxL], and a computation that needs a mode l >= 3 (min_L = 3) or that is dense in L (the
+// full equilibrium problem, max_L = 16) narrows it and says why. Throws InvalidArgument(name, "L = 17 is out
+// of range: must be an integer in [2, 16] (why)").
+inline constexpr int kMinL = 2, kMaxL = 100;
+void require_L(long long L, int min_L = kMinL, int max_L = kMaxL, std::string_view why = {},
+               std::string_view name = "L");
+
 struct Scene {
   std::string name = "fig3_op";    // label carried into outputs
   Parameters parameters;           // defaults: the paper's Fig. 3 case
@@ -20,12 +29,12 @@ struct Scene {
   double delta = 1e-3;             // perturbation Delta_l(0) put in f_{l,0} for every l = 3..L
   std::map<int, double> delta_l;   // per-mode overrides of delta
   std::map<int, double> rest_delta_l;  // stress-free l >= 3 content Delta0_l (only the full model holds it)
-  int L = 10;                      // truncation: modes l = 2..L
+  int L = 10;                      // truncation: modes l = 2..L (require_L)
   double T = 500;                  // horizon
   double dt = 1;                   // output sampling interval
   ModelLevel model = ModelLevel::automatic;  // forced level, or automatic
 
-  void validate() const;  // throws InvalidArgument naming the key
+  void validate() const;  // throws InvalidArgument naming the key (parameter domains: parameter_table.hpp)
   double perturbation(int l) const;  // delta_l with overrides applied
   double rest_perturbation(int l) const;
 };

@@ -7,11 +7,9 @@
 #include <random>
 #include <set>
 #include <sstream>
-#include <toml++/toml.h>
 
 #include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/core/error.hpp"
-#include "rbcstab/io/detail/scene_toml.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
@@ -23,46 +21,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-// The table `name`, its keys checked against `allowed` (the message lists them).
-const toml::table* panel_table(const toml::table& root, const std::string& name, const std::set<std::string>& allowed) {
-  const toml::node* node = root.get(name);
-  if (!node) return nullptr;
-  const toml::table* t = node->as_table();
-  if (!t) throw InvalidArgument(name, "scene key '" + name + "' must be a table ([" + name + "])");
-  for (const auto& [k, v] : *t)
-    if (!allowed.count(std::string(k.str()))) {
-      std::string list;
-      for (const auto& a : allowed) list += (list.empty() ? "" : ", ") + a;
-      throw InvalidArgument(name + "." + std::string(k.str()),
-                            "unknown scene key '" + name + "." + std::string(k.str()) + "' (allowed here: " + list + ")");
-    }
-  return t;
-}
-
-std::vector<double> positive_list(const toml::table& t, const std::string& table, const char* key) {
-  const std::string name = table + "." + key;
-  const toml::array* a = t.get(key)->as_array();
-  if (!a || a->empty()) throw InvalidArgument(name, name + " must be a non-empty array of numbers > 0");
-  std::vector<double> out;
-  for (const auto& v : *a) {
-    const auto x = v.value<double>();
-    if (!x) throw InvalidArgument(name, name + " must be a non-empty array of numbers > 0");
-    require(std::isfinite(*x) && *x > 0, name, *x, "finite numbers > 0");
-    out.push_back(*x);
-  }
+// The table's numbers, each finite and > 0 (the grids of the Fig. 6e table).
+std::vector<double> positive_list(const SceneTable& t, const char* key) {
+  const std::vector<double> out = t.numbers(key, 0, "a non-empty array of numbers > 0");
+  for (double x : out) require(std::isfinite(x) && x > 0, t.path(key), x, "finite numbers > 0");
   return out;
-}
-
-double number(const toml::table& t, const std::string& table, const char* key) {
-  const auto x = t.get(key)->value<double>();
-  if (!x) throw InvalidArgument(table + "." + key, table + "." + key + " must be a number");
-  return *x;
-}
-
-std::string text(const toml::table& t, const std::string& table, const char* key) {
-  const auto x = t.get(key)->value_exact<std::string>();
-  if (!x) throw InvalidArgument(table + "." + key, table + "." + key + " must be a string");
-  return *x;
 }
 
 std::string csv_value(const Quantity& q) {
@@ -76,14 +39,6 @@ std::string fixed(double v, int digits = 1) {
   std::ostringstream ss;
   ss << std::fixed << std::setprecision(digits) << v;
   return ss.str();
-}
-
-std::string symbol_of(Axis a) {
-  switch (a) {
-    case Axis::lnB: return "ln B";
-    case Axis::lnC: return "ln C";
-    default: return to_string(a);
-  }
 }
 
 // Staging folder for the panel's data (a hidden sibling of the report folder), removed at the end.
@@ -128,22 +83,19 @@ std::string parameters_text(const Scene& s, bool with_lambda, bool with_BC) {
 std::string tex_parameters(const Scene& s, const std::set<std::string>& varied, bool with_BC, double alpha_fixed = 0) {
   std::ostringstream ss;
   ss << std::setprecision(4);
-  const Parameters& p = s.parameters;
-  auto put = [&](const char* name, const char* tex, double v) {
-    if (varied.count(name)) return;
-    ss << "$" << tex << " = ";
+  auto put = [&](SceneParameter q, double v) {
+    const ParameterRow& r = parameter_row(q);
+    if (varied.count(r.name)) return;
+    ss << "$" << r.symbol << " = ";
     if (std::isinf(v)) ss << "\\infty";
     else ss << v;
     ss << "$, ";
   };
-  put("lambda", "\\lambda", p.lambda);
-  put("Delta", "\\Delta", p.Delta);
-  put("Delta0", "\\Delta_0", p.Delta0);
-  if (with_BC) {
-    put("B", "\\mathcal{B}", p.B);
-    put("C", "\\mathcal{C}", p.C);
-  }
-  if (alpha_fixed > 0) put("alpha", "\\alpha", alpha_fixed);
+  for (SceneParameter q : {SceneParameter::lambda, SceneParameter::Delta, SceneParameter::Delta0})
+    put(q, get_parameter(s, q));
+  if (with_BC)
+    for (SceneParameter q : {SceneParameter::B, SceneParameter::C}) put(q, get_parameter(s, q));
+  if (alpha_fixed > 0) put(SceneParameter::alpha, alpha_fixed);
   ss << (std::abs(std::cos(s.beta)) < 0.5 ? "in plane" : "out of plane");
   return ss.str();
 }
@@ -159,20 +111,28 @@ std::string to_string(PanelKind k) {
   return "none";
 }
 
-PanelKind panel_kind(const std::string& toml_text, const std::string& source) {
-  const toml::table root = detail::parse_scene_toml(toml_text, source);
+PanelKind panel_kind(const SceneFile& scene) {
   std::vector<PanelKind> found;
-  for (auto [name, kind] : {std::pair{"diagram", PanelKind::diagram}, std::pair{"fig6e", PanelKind::fig6e},
-                            std::pair{"continuation", PanelKind::continuation}})
-    if (root.get(name)) found.push_back(kind);
+  for (auto [table, kind] : {std::pair{&scene.diagram, PanelKind::diagram}, std::pair{&scene.fig6e, PanelKind::fig6e},
+                             std::pair{&scene.continuation, PanelKind::continuation}})
+    if (table->has_value()) found.push_back(kind);
   if (found.size() > 1)
-    throw InvalidArgument("scene", source + " holds more than one panel table ([diagram], [fig6e], [continuation]): "
-                                            "one figure panel per scene file");
+    throw InvalidArgument("scene", scene.source + " holds more than one panel table ([diagram], [fig6e], [continuation]): "
+                                                  "one figure panel per scene file");
   return found.empty() ? PanelKind::none : found[0];
 }
 
-Fig6eOptions parse_fig6e_table(const SceneFile& sf, const std::string& toml_text, const std::string& source) {
-  const toml::table root = detail::parse_scene_toml(toml_text, source);
+TruncationUse truncation_use(PanelKind kind) {
+  switch (kind) {
+    case PanelKind::none: return TruncationUse::simulation;
+    case PanelKind::diagram:
+    case PanelKind::fig6e: return TruncationUse::grid;
+    case PanelKind::continuation: return TruncationUse::reduced;
+  }
+  return TruncationUse::simulation;
+}
+
+Fig6eOptions fig6e_options(const SceneFile& sf) {
   Fig6eOptions f;
   const Scene& s = sf.scene;
   f.Delta = s.parameters.Delta;
@@ -183,10 +143,11 @@ Fig6eOptions parse_fig6e_table(const SceneFile& sf, const std::string& toml_text
   f.T = s.T;
   f.simulation = sf.options;
   f.simulation.record_trajectory = false;  // the table keeps tail means only
-  if (const toml::table* t = panel_table(root, "fig6e", {"lambda", "B", "C"})) {
-    if (t->get("lambda")) f.lambdas = positive_list(*t, "fig6e", "lambda");
-    if (t->get("B")) f.B = positive_list(*t, "fig6e", "B");
-    if (t->get("C")) f.C = positive_list(*t, "fig6e", "C");
+  if (const auto& t = sf.fig6e) {
+    t->allow_only({"lambda", "B", "C"});
+    if (t->has("lambda")) f.lambdas = positive_list(*t, "lambda");
+    if (t->has("B")) f.B = positive_list(*t, "B");
+    if (t->has("C")) f.C = positive_list(*t, "C");
   }
   f.validate();
   return f;
@@ -204,46 +165,43 @@ std::string fig6e_csv(const Fig6eOptions& f, const std::vector<Fig6eRow>& rows) 
   return ss.str();
 }
 
-ContinuationPanel parse_continuation_table(const std::string& toml_text, const std::string& source) {
-  const toml::table root = detail::parse_scene_toml(toml_text, source);
+ContinuationPanel continuation_panel(const SceneFile& sf) {
   ContinuationPanel c;
-  const toml::table* t = panel_table(
-      root, "continuation",
-      {"parameter", "min", "max", "direction", "measure", "step", "max_step", "max_points", "relax_T"});
-  if (!t) return c;
-  const std::string T = "continuation";
-  if (t->get("parameter")) {
+  if (!sf.continuation) return c;
+  c.engine.direction = Direction::both;
+  const SceneTable& t = *sf.continuation;
+  t.allow_only({"parameter", "min", "max", "direction", "measure", "step", "max_step", "max_points", "relax_T"});
+  if (t.has("parameter")) {
     try {
-      c.parameter = continuation_parameter_from_string(text(*t, T, "parameter"));
+      c.parameter = continuation_parameter_from_string(t.text("parameter"));
     } catch (const InvalidArgument& e) {
-      throw InvalidArgument("continuation.parameter", std::string("continuation.parameter: ") + e.what());
+      if (e.parameter() == t.path("parameter")) throw;
+      throw InvalidArgument(t.path("parameter"), t.path("parameter") + ": " + e.what());
     }
   }
-  if (t->get("min")) c.engine.p_min = number(*t, T, "min");
-  if (t->get("max")) c.engine.p_max = number(*t, T, "max");
+  if (t.has("min")) c.engine.p_min = t.number("min");
+  if (t.has("max")) c.engine.p_max = t.number("max");
   require(!(c.engine.p_min >= c.engine.p_max), "continuation.max", c.engine.p_max, "> continuation.min");
-  c.engine.direction = Direction::both;
-  if (t->get("direction")) {
-    const std::string d = text(*t, T, "direction");
+  if (t.has("direction")) {
+    const std::string d = t.text("direction");
     if (d == "forward") c.engine.direction = Direction::forward;
     else if (d == "backward") c.engine.direction = Direction::backward;
     else if (d == "both") c.engine.direction = Direction::both;
     else throw InvalidArgument("continuation.direction", "continuation.direction = '" + d + "' must be forward, backward or both");
   }
-  if (t->get("measure")) {
-    c.measure = text(*t, T, "measure");
+  if (t.has("measure")) {
+    c.measure = t.text("measure");
     if (c.measure != "r" && c.measure != "Psi")
       throw InvalidArgument("continuation.measure", "continuation.measure = '" + c.measure + "' must be r or Psi");
   }
-  if (t->get("step")) c.engine.initial_step = number(*t, T, "step");
-  if (t->get("max_step")) c.engine.max_step = number(*t, T, "max_step");
-  if (t->get("max_points")) {
-    const auto n = t->get("max_points")->value_exact<int64_t>();
-    if (!n) throw InvalidArgument("continuation.max_points", "continuation.max_points must be an integer");
-    require(*n >= 2 && *n <= 1'000'000, "continuation.max_points", double(*n), "an integer in [2, 1000000]");
-    c.engine.max_points = std::size_t(*n);
+  if (t.has("step")) c.engine.initial_step = t.number("step");
+  if (t.has("max_step")) c.engine.max_step = t.number("max_step");
+  if (t.has("max_points")) {
+    const long long n = t.integer("max_points");
+    require(n >= 2 && n <= 1'000'000, "continuation.max_points", double(n), "an integer in [2, 1000000]");
+    c.engine.max_points = std::size_t(n);
   }
-  if (t->get("relax_T")) c.relax_T = number(*t, T, "relax_T");
+  if (t.has("relax_T")) c.relax_T = t.number("relax_T");
   require(std::isfinite(c.relax_T) && c.relax_T >= 0, "continuation.relax_T", c.relax_T, "finite and >= 0");
   try {
     c.engine.validate();
@@ -323,16 +281,15 @@ void PanelOptions::validate() const {
   trace.validate();
 }
 
-PanelReportResult build_panel_report(const SceneFile& sf, const std::string& toml_text, const std::string& source,
-                                     const PanelOptions& panel, const ReportOptions& options) {
+PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& panel, const ReportOptions& options) {
   panel.validate();
   options.validate();
   sf.scene.validate();
   sf.options.validate();
   PanelReportResult res;
-  res.kind = panel_kind(toml_text, source);
+  res.kind = panel_kind(sf);
   if (res.kind == PanelKind::none)
-    throw InvalidArgument("scene", source + " holds no panel table ([diagram], [fig6e] or [continuation])");
+    throw InvalidArgument("scene", sf.source + " holds no panel table ([diagram], [fig6e] or [continuation])");
   // Refuse what build_report would refuse before computing anything (a grid can take hours).
   check_python(options.python);
   {
@@ -346,7 +303,7 @@ PanelReportResult build_panel_report(const SceneFile& sf, const std::string& tom
   }
   ReportOptions ro = options;
   ro.run_scene = false;
-  ro.scene_toml = toml_text;
+  ro.scene_toml = sf.text;
   const auto t0 = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
   Staging staging(options.output);
@@ -354,7 +311,7 @@ PanelReportResult build_panel_report(const SceneFile& sf, const std::string& tom
   summary << std::setprecision(4);
 
   if (res.kind == PanelKind::diagram) {
-    DiagramSpec spec = parse_diagram_table(toml_text, source);
+    DiagramSpec spec = diagram_spec(sf);
     if (panel.nx > 0) spec.x.count = panel.nx;
     if (panel.ny > 0) spec.y.count = panel.ny;
     spec.validate();
@@ -397,7 +354,9 @@ PanelReportResult build_panel_report(const SceneFile& sf, const std::string& tom
     // Without the per-point wall-clock seconds: the data behind the figure is the same on every run.
     ro.phase_diagram = staging.put("phase_diagram.csv", diagram_csv(spec, run.points, DiagramOutputOptions{false}));
     staging.put("phase_diagram.json", phase_overlay_json(boundary, lines).dump(1) + "\n");
-    nlohmann::json doc = diagram_json(diagram_header(sf.scene, sf.options, spec), spec, run.points, Shard{});
+    nlohmann::json header = diagram_header(sf.scene, sf.options, spec);
+    put_truncation(header, sf);
+    nlohmann::json doc = diagram_json(header, spec, run.points, Shard{});
     AgreementOptions ao;
     ao.threads = panel.threads;
     ao.trace_options = panel.trace;
@@ -406,8 +365,8 @@ PanelReportResult build_panel_report(const SceneFile& sf, const std::string& tom
     ro.attachments.push_back(staging.put("diagram.json", doc.dump(1) + "\n"));
     res.status = res.failed ? "failed runs" : "success";
     res.facts = {{"grid", std::to_string(spec.x.count) + " x " + std::to_string(spec.y.count) + " (" +
-                              symbol_of(spec.x.axis) + " in [" + fixed(spec.x.min, 3) + ", " + fixed(spec.x.max, 3) +
-                              "], " + symbol_of(spec.y.axis) + " in [" + fixed(spec.y.min, 3) + ", " +
+                              parameter_label(spec.x.axis) + " in [" + fixed(spec.x.min, 3) + ", " + fixed(spec.x.max, 3) +
+                              "], " + parameter_label(spec.y.axis) + " in [" + fixed(spec.y.min, 3) + ", " +
                               fixed(spec.y.max, 3) + "])"},
                  {"classifier", to_string(spec.classifier)},
                  {"unstable points", std::to_string(unstable)},
@@ -420,14 +379,14 @@ PanelReportResult build_panel_report(const SceneFile& sf, const std::string& tom
                            fixed(100 * doc["agreement"]["verdict_fraction"].get<double>()) + "% / " +
                                fixed(100 * doc["agreement"]["mode_fraction"].get<double>()) + "%"});
     summary << "Phase diagram by direct simulation (modal level, L = " << sf.scene.L << ", T = " << sf.scene.T
-            << ") over " << symbol_of(spec.x.axis) << " and " << symbol_of(spec.y.axis) << ", coloured by l_Delta ("
+            << ") over " << parameter_label(spec.x.axis) << " and " << parameter_label(spec.y.axis) << ", coloured by l_Delta ("
             << to_string(spec.classifier) << " classifier), with the traced stability boundary and the paper's "
             << "analytic lines. Base scene: "
             << parameters_text(sf.scene, spec.x.axis != Axis::lambda && spec.y.axis != Axis::lambda, false) << ".";
     ro.figure_title = sf.scene.name + ": " + tex_parameters(sf.scene, {to_string(spec.x.axis), to_string(spec.y.axis)},
                                                             false, spec.alpha);
   } else if (res.kind == PanelKind::fig6e) {
-    const Fig6eOptions f = parse_fig6e_table(sf, toml_text, source);
+    const Fig6eOptions f = fig6e_options(sf);
     const std::vector<Fig6eRow> rows = fig6e_table(f);
     std::size_t compared = 0;
     for (const Fig6eRow& r : rows) {
@@ -446,7 +405,7 @@ PanelReportResult build_panel_report(const SceneFile& sf, const std::string& tom
             << ", Delta0 = " << f.Delta0 << ", beta = " << f.beta << ").";
     ro.figure_title = sf.scene.name + ": " + tex_parameters(sf.scene, {"lambda"}, false);
   } else {
-    const ContinuationPanel c = parse_continuation_table(toml_text, source);
+    const ContinuationPanel c = continuation_panel(sf);
     const SceneBranch r = continue_scene(branch_spec(c, sf.scene));  // throws InvalidArgument("beta") if forced
     const Branch& b = r.branch.branch;
     const std::string name = to_string(c.parameter);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "rbcstab/sweep/fig6e.hpp"
+#include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
@@ -28,12 +29,16 @@ namespace rbcstab {
 enum class PanelKind { none, diagram, fig6e, continuation };
 std::string to_string(PanelKind k);
 // The panel table the scene file holds: none, or exactly one (two throw InvalidArgument("scene", ...)).
-PanelKind panel_kind(const std::string& toml_text, const std::string& source = "scene");
+PanelKind panel_kind(const SceneFile& scene);
+// How the panel uses the truncation L (resolve_truncation): the grids of [diagram] and [fig6e] run every scene
+// at one L, [continuation] continues the reduced system; no panel: the scene's simulation.
+TruncationUse truncation_use(PanelKind kind);
 
 // [fig6e]: lambda = [1, 5], B = [1, ..., 10], C = [0.01, ...] (each optional: Fig6eOptions' defaults, the
 // paper's grid). Delta, Delta0, beta, delta, L, T and the integrator come from the scene, so the table
-// runs what the scene says. Unknown keys and bad values throw InvalidArgument naming "fig6e.<key>".
-Fig6eOptions parse_fig6e_table(const SceneFile& scene, const std::string& toml_text, const std::string& source = "scene");
+// runs what the scene says (a scene without the table: the paper's grid). Unknown keys and bad values throw
+// InvalidArgument naming "fig6e.<key>".
+Fig6eOptions fig6e_options(const SceneFile& scene);
 // "# ..." comment, then lambda,B,C,alpha,ln_alpha,l_s,l_Delta,Delta2_tilde,Delta2_tilde_integer,Delta2_bar,ratio,
 // ratio_integer; n/a where a quantity is outside its domain (stable run, failed run). Also `post --fig6e`.
 std::string fig6e_csv(const Fig6eOptions& options, const std::vector<Fig6eRow>& rows);
@@ -47,7 +52,7 @@ struct ContinuationPanel {
   double relax_T = 200;         // relaxation that gives the start state (as `rbcstab continue --relax-T`)
   ContinuationOptions engine;   // p_min, p_max, direction, steps; validated by continue_branch
 };
-ContinuationPanel parse_continuation_table(const std::string& toml_text, const std::string& source = "scene");
+ContinuationPanel continuation_panel(const SceneFile& scene);
 // The panel's branch: reduced-system equilibria from the scene, as `rbcstab continue` (same start, bounds).
 BranchSpec branch_spec(const ContinuationPanel& panel, const Scene& scene);
 // The Branch JSON of `rbcstab continue --json` (continuation/branch_io.hpp) plus "measure", the quantity
@@ -77,10 +82,10 @@ struct PanelReportResult {
   std::vector<std::pair<std::string, std::string>> facts;  // also shown on the report's "Panel" table
 };
 
-// Runs the panel of a scene file holding a panel table and writes its report folder (options.output).
-// Throws InvalidArgument for bad input (InvalidArgument("scene", ...) if the file holds no panel table),
-// ReportError when drawing or writing fails, as build_report.
-PanelReportResult build_panel_report(const SceneFile& scene, const std::string& toml_text, const std::string& source,
-                                     const PanelOptions& panel, const ReportOptions& options);
+// Runs the panel of a scene file holding a panel table and writes its report folder (options.output); the
+// folder's scene.toml is the file as read (scene.text). Throws InvalidArgument for bad input
+// (InvalidArgument("scene", ...) if the file holds no panel table), ReportError when drawing or writing fails,
+// as build_report.
+PanelReportResult build_panel_report(const SceneFile& scene, const PanelOptions& panel, const ReportOptions& options);
 
 }  // namespace rbcstab

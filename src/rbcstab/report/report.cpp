@@ -292,6 +292,7 @@ ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, con
     add_hook_figures(o, tmp, res.files, figs);
     nlohmann::json manifest;
     manifest["scene"] = to_json(sf.scene);
+    put_truncation(manifest, sf);
     manifest["parameters"] = to_json(sf.scene.parameters);
     nlohmann::json panel;
     panel["summary"] = o.panel_summary;
@@ -480,6 +481,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     add_hook_figures(o, tmp, res.files, figs);
     nlohmann::json manifest;
     manifest["scene"] = to_json(sf.scene);
+    put_truncation(manifest, sf);
     manifest["parameters"] = to_json(p);
     manifest["summary"] = to_json(res.run);
     manifest["summary"].erase("trajectory");

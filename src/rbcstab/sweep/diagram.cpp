@@ -20,36 +20,12 @@
 
 namespace rbcstab {
 
-namespace {
-struct AxisName {
-  Axis axis;
-  const char* name;
-};
-constexpr AxisName kAxes[] = {{Axis::lnB, "lnB"},       {Axis::lnC, "lnC"},       {Axis::lambda, "lambda"},
-                              {Axis::Delta, "Delta"},   {Axis::Delta0, "Delta0"}, {Axis::alpha, "alpha"},
-                              {Axis::beta, "beta"}};
-}  // namespace
-
-std::string to_string(Axis a) {
-  for (const auto& n : kAxes)
-    if (n.axis == a) return n.name;
-  return "?";
-}
-
 const std::vector<std::string>& axis_names() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> v;
-    for (const auto& n : kAxes) v.emplace_back(n.name);
-    return v;
-  }();
+  static const std::vector<std::string> names = parameter_names(ParameterUse::axis);
   return names;
 }
 
-Axis axis_from_string(const std::string& name) {
-  for (const auto& n : kAxes)
-    if (name == n.name) return n.axis;
-  throw InvalidArgument("axis", "axis '" + name + "' is unknown (allowed: lnB, lnC, lambda, Delta, Delta0, alpha, beta)");
-}
+Axis axis_from_string(const std::string& name) { return parameter_from_string(name, ParameterUse::axis); }
 
 std::string to_string(Classifier c) {
   switch (c) {
@@ -88,6 +64,12 @@ void DiagramSpec::validate() const {
     require(std::isfinite(a->min), "diagram." + n + "_range", a->min, "finite");
     require(std::isfinite(a->max), "diagram." + n + "_range", a->max, "finite");
     require(a->count >= 1 && a->count <= 1'000'000, "diagram.counts", a->count, "an integer in [1, 1000000]");
+    if (!usable_as(a->axis, ParameterUse::axis)) {
+      std::string list;
+      for (const std::string& name : axis_names()) list += (list.empty() ? "" : ", ") + name;
+      throw InvalidArgument("diagram.axes", "diagram.axes: " + to_string(a->axis) + " is not a diagram axis (allowed: " +
+                                                list + ")");
+    }
   }
   require(std::isfinite(alpha) && alpha >= 0, "diagram.alpha", alpha, "finite and >= 0 (0: alpha not held fixed)");
   if (alpha > 0 && (x.axis == Axis::alpha || y.axis == Axis::alpha))
@@ -127,26 +109,22 @@ void DiagramOptions::validate() const {
 
 Scene plane_scene(const Scene& base, const DiagramSpec& spec, double x, double y) {
   Scene s = base;
-  const std::pair<const AxisRange*, double> values[2] = {{&spec.x, x}, {&spec.y, y}};
   double alpha = spec.alpha > 0 ? spec.alpha : -1;
-  for (const auto& [a, v] : values) {
-    switch (a->axis) {
-      case Axis::lnB: s.parameters.B = std::exp(v); break;
-      case Axis::lnC: s.parameters.C = std::exp(v); break;
-      case Axis::lambda: s.parameters.lambda = v; break;
-      case Axis::Delta: s.parameters.Delta = v; break;
-      case Axis::Delta0: s.parameters.Delta0 = v; break;
-      case Axis::beta: s.beta = v; break;
-      case Axis::alpha: alpha = v; break;
-    }
+  for (const auto& [a, v] : {std::pair{&spec.x, x}, std::pair{&spec.y, y}}) {
+    if (a->axis == Axis::alpha)
+      alpha = v;
+    else
+      set_parameter(s, a->axis, v);
   }
   if (alpha != -1) {
     require(std::isfinite(alpha) && alpha > 0, "alpha", alpha, "finite and > 0 on an alpha axis");
-    const bool keep_B = spec.x.axis == Axis::lnB || spec.y.axis == Axis::lnB;
+    bool keep_B = false;
+    for (Axis a : {spec.x.axis, spec.y.axis})
+      keep_B = keep_B || (a != Axis::alpha && (parameter_row(a).inputs & parameter_row(Axis::B).inputs) != 0);
     if (keep_B)
       s.parameters.C = s.parameters.B / alpha;
     else
-      s.parameters.B = alpha * s.parameters.C;
+      set_parameter(s, Axis::alpha, alpha);
   }
   return s;
 }

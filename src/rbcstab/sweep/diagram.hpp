@@ -1,6 +1,6 @@
 #pragma once
 // Phase diagrams by direct simulation (paper Fig. 4, Fig. 5, Appendix E): a regular grid over two
-// of ln B, ln C, lambda, Delta, Delta0, alpha, beta; every point is one modal-level `simulate`
+// axes (the parameter table's, model/parameter_table.hpp: lambda, Delta, Delta0, alpha, ln B, ln C, beta); every point is one modal-level `simulate`
 // classified by l_Delta. Points are independent and deterministic, so the result does not depend
 // on the thread count, the scheduling, the shard split, MPI ranks or on resuming from a journal.
 #include <atomic>
@@ -11,12 +11,12 @@
 #include <vector>
 
 #include "rbcstab/integrate/simulation.hpp"
+#include "rbcstab/model/parameter_table.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
 
-enum class Axis { lnB, lnC, lambda, Delta, Delta0, alpha, beta };
-std::string to_string(Axis a);
+using Axis = SceneParameter;  // one of the rows usable_as(q, ParameterUse::axis); to_string gives its name
 Axis axis_from_string(const std::string& name);  // throws InvalidArgument("axis", ...)
 const std::vector<std::string>& axis_names();
 
@@ -45,9 +45,9 @@ struct DiagramSpec {
   std::size_t size() const { return std::size_t(x.count) * std::size_t(y.count); }
 };
 
-// The scene of grid point `index`: base with the two axis values applied. ln B, ln C, lambda,
-// Delta, Delta0 and beta set their parameter; alpha = B/C (an axis value, or spec.alpha > 0) is
-// applied last and keeps ln B fixed when an axis is ln B (C = B/alpha), otherwise keeps C (B = alpha C).
+// The scene of grid point `index`: base with the two axis values applied (set_parameter, unchecked: the
+// diagram validates every point's scene). alpha = B/C (an axis value, or spec.alpha > 0) is applied last and
+// keeps the other axis's B fixed when it moves B (ln B: C = B/alpha), otherwise keeps C (B = alpha C).
 Scene point_scene(const Scene& base, const DiagramSpec& spec, std::size_t index);
 // The same mapping at continuous axis values (x, y) (boundary tracing); the scene name is kept.
 Scene plane_scene(const Scene& base, const DiagramSpec& spec, double x, double y);

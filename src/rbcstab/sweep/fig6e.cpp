@@ -11,7 +11,7 @@ namespace rbcstab {
 void Fig6eOptions::validate() const {
   require(!lambdas.empty() && !B.empty() && !C.empty(), "lambdas/B/C", 0, "non-empty lists");
   simulation.validate();
-  require(L >= 3, "L", L, "an integer >= 3");
+  require_L(L, 3, kMaxL, "the Fig. 6e runs need a mode l >= 3");
 }
 
 std::vector<Fig6eRow> fig6e_table(const Fig6eOptions& options) {

@@ -10,6 +10,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/verdict/predict.hpp"
+#include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
 
@@ -91,7 +92,7 @@ TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane_spec, con
   options.validate();
   plane_spec.validate();
   base.validate();
-  require(base.L >= 3, "L", base.L, ">= 3 (a boundary needs a mode l >= 3)");
+  require_L(base.L, 3, kMaxL, "a boundary needs a mode l >= 3");
   const auto t0 = std::chrono::steady_clock::now();
   const ModeCriteria criteria = plane_criteria(base, plane_spec, options);
   const PlaneBox box{plane_spec.x.min, plane_spec.x.max, plane_spec.y.min, plane_spec.y.max};

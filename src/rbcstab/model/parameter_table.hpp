@@ -1,0 +1,95 @@
+#pragma once
+// The scene's parameters, one row each: name, symbol, description, domain with its message, get/set on a
+// Scene, where a scene file keeps it and how an axis spaces it. Scene files and command-line flags (io),
+// continuation parameters (continuation/parameters.hpp) and diagram axes (sweep/diagram.hpp) all take their
+// names and checks from this table, so adding a parameter is one enumerator and one row.
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "rbcstab/model/parameters.hpp"
+#include "rbcstab/model/scene.hpp"
+
+namespace rbcstab {
+
+// Table order: the five material numbers, the composites of the reduced system, the log axes, then the
+// scene's shape parameters. Lists of names (messages, --help) follow it.
+enum class SceneParameter { lambda, Delta, Delta0, B, C, Lambda, S, alpha, lnB, lnC, beta, delta };
+
+// Where a scene value came from.
+enum class Origin { default_value, file, flag };
+std::string to_string(Origin origin);  // "default", "file", "flag"
+
+enum class AxisScale { linear, log };
+
+// The values a parameter may take. An infinite end is a value only when closed (C = inf: the vesicle limit).
+struct Domain {
+  double lo = -INFINITY, hi = INFINITY;
+  bool lo_closed = false, hi_closed = false;
+  std::string lo_name, hi_name;  // shown instead of the number ("4 pi", "Delta"); empty: the number
+  std::string where;             // the values the bounds depend on ("Delta = 1"), shown after "with"
+  std::string note;              // shown in parentheses after the range
+  bool contains(double value) const;
+  // "finite and >= 0", "in (0, 4 pi)", "in [0, Delta] with Delta = 1", "> 0 (inf allowed: the vesicle limit)";
+  // without `where` for --help, where the bound's value is not known yet.
+  std::string text(bool with_where = true) const;
+};
+
+// What a name may be used as.
+enum class ParameterUse {
+  scene_key,     // a key of a scene file and a command-line flag (the row has a table)
+  continuation,  // a continuation parameter (rbcstab continue --parameter)
+  axis,          // a diagram or trace axis (rbcstab diagram --axes)
+};
+
+struct ParameterRow {
+  SceneParameter id;
+  const char* name;         // the scene key, the flag --name, the continuation and axis name
+  const char* symbol;       // TeX, for figure labels
+  const char* description;  // one line for --help and docs/scenes.md
+  const char* table;        // the scene file's table holding it ("parameters", "initial"); nullptr: derived
+  AxisScale scale;          // log: the value is ln of `of`'s (lnB = ln B); get, set and domain follow from `of`
+  SceneParameter of;        // log rows: the parameter taken the log of; otherwise the row itself
+  SceneParameter moves;     // the stored parameter that set() changes (a composite moves one input)
+  std::uint32_t inputs;     // bit set (1u << stored parameter) of the stored parameters the value depends on
+  bool continuation;        // usable as a continuation parameter
+  bool axis;                // usable as a diagram axis
+  // Linear rows only (log rows take them from `of`):
+  Domain (*domain)(const Parameters& p);  // where the scene is valid
+  // Narrower than `domain` where a continuation must stop (beta in [0, pi]: pi - beta is its mirror image);
+  // nullptr: `domain`.
+  Domain (*continuation_domain)(const Parameters& p);
+  double (*get)(const Scene& s);
+  // Sets the value without checking it; throws InvalidArgument only when the composite cannot be moved from
+  // this scene (S from an infinite S).
+  void (*set)(Scene& s, double value);
+};
+
+std::span<const ParameterRow> parameter_table();
+const ParameterRow& parameter_row(SceneParameter q);
+std::string to_string(SceneParameter q);      // the row's name
+std::string parameter_label(SceneParameter q);  // plain-text symbol: the name, "ln B" for a log axis
+bool usable_as(SceneParameter q, ParameterUse use);
+// A function of the material Parameters alone (every input lives in [parameters]; beta and delta do not).
+bool is_material(SceneParameter q);
+std::vector<std::string> parameter_names(ParameterUse use);  // in table order
+// Throws InvalidArgument("parameter" | "axis" | "key", "<what> = '<name>' is not a <use>: must be one of ...").
+SceneParameter parameter_from_string(std::string_view name, ParameterUse use);
+
+double get_parameter(const Scene& s, SceneParameter q);
+// Unchecked (see ParameterRow::set): callers validate the scene afterwards, or use with_parameter
+// (continuation/parameters.hpp), which checks the value first.
+void set_parameter(Scene& s, SceneParameter q, double value);
+Domain parameter_domain(SceneParameter q, const Parameters& p);
+Domain continuation_domain(SceneParameter q, const Parameters& p);
+// Throws InvalidArgument(name, "<name> = <value> is out of range: must be <domain text>") outside `domain`.
+void require_in(SceneParameter q, const Domain& domain, double value);
+// The stored parameters of one scene-file table, each against its domain, in table order.
+void validate_table(const Scene& s, std::string_view table);
+// False when setting one would move the other (equal, or sharing an input: Lambda with Delta or lambda).
+bool independent(SceneParameter a, SceneParameter b);
+
+}  // namespace rbcstab

@@ -1,0 +1,150 @@
+// The parameter table (model/parameter_table.hpp): rows in enum order, domains and their messages, get/set
+// on a scene (composites move one input, log rows are ln of their base), the names per use, independence,
+// and the one truncation rule require_L.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <set>
+#include <string>
+
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/model/parameter_table.hpp"
+#include "rbcstab/model/scene.hpp"
+
+namespace rbcstab {
+namespace {
+
+using P = SceneParameter;
+
+TEST(ParameterTable, RowsFollowTheEnumAndNamesAreUnique) {
+  std::set<std::string> names;
+  std::size_t k = 0;
+  for (const ParameterRow& r : parameter_table()) {
+    EXPECT_EQ(static_cast<std::size_t>(r.id), k++) << r.name;
+    EXPECT_TRUE(names.insert(r.name).second) << r.name;
+    EXPECT_EQ(&parameter_row(r.id), &r);
+    EXPECT_EQ(to_string(r.id), r.name);
+    for (ParameterUse use : {ParameterUse::scene_key, ParameterUse::continuation, ParameterUse::axis}) {
+      if (usable_as(r.id, use)) {
+        EXPECT_EQ(parameter_from_string(r.name, use), r.id) << r.name;
+      }
+    }
+    // A stored row moves itself; a derived one has no table.
+    if (r.table) {
+      EXPECT_EQ(r.moves, r.id) << r.name;
+    }
+    EXPECT_TRUE(r.scale == AxisScale::log ? r.get == nullptr && r.of != r.id : r.get != nullptr) << r.name;
+  }
+}
+
+// The messages every flag, key and continuation shows: "<name> = <value> is out of range: must be <text>".
+TEST(ParameterTable, DomainsReadLikeTheirMessages) {
+  const Parameters p;
+  EXPECT_EQ(parameter_domain(P::lambda, p).text(), "finite and >= 0");
+  EXPECT_EQ(parameter_domain(P::Delta, p).text(), "in (0, 4 pi)");
+  EXPECT_EQ(parameter_domain(P::Delta0, p).text(), "in [0, Delta] with Delta = 1");
+  EXPECT_EQ(parameter_domain(P::Delta0, p).text(false), "in [0, Delta]");
+  EXPECT_EQ(parameter_domain(P::B, p).text(), "finite and > 0");
+  EXPECT_EQ(parameter_domain(P::C, p).text(), "> 0 (inf allowed: the vesicle limit)");
+  EXPECT_EQ(parameter_domain(P::beta, p).text(), "finite");
+  EXPECT_EQ(continuation_domain(P::beta, p).text(), "in [0, pi] (0: rest shape out of plane, pi/2: in plane)");
+  EXPECT_EQ(continuation_domain(P::lambda, p).text(), parameter_domain(P::lambda, p).text());
+  // ln of (0, inf) is every finite number; ln of (0, inf] adds +inf (C = inf).
+  EXPECT_EQ(parameter_domain(P::lnB, p).text(), "finite");
+  EXPECT_TRUE(parameter_domain(P::lnC, p).contains(INFINITY));
+  EXPECT_FALSE(parameter_domain(P::lnB, p).contains(INFINITY));
+  EXPECT_TRUE(parameter_domain(P::C, p).contains(INFINITY));
+  EXPECT_FALSE(parameter_domain(P::C, p).contains(0));
+  EXPECT_FALSE(parameter_domain(P::Delta, p).contains(4 * std::numbers::pi));
+  EXPECT_TRUE(parameter_domain(P::Delta0, p).contains(1.0));
+  for (const ParameterRow& r : parameter_table()) {
+    EXPECT_FALSE(parameter_domain(r.id, p).contains(NAN)) << r.name;
+  }
+  try {
+    require_in(P::B, parameter_domain(P::B, p), -1);
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "B");
+    EXPECT_STREQ(e.what(), "B = -1 is out of range: must be finite and > 0");
+  }
+}
+
+// set then get returns the value, and only the stored parameter the row moves changes (composites move one
+// input, so each moves alone).
+TEST(ParameterTable, SetThenGetMovesOnlyTheRowsInput) {
+  for (const ParameterRow& r : parameter_table()) {
+    Scene s;
+    s.parameters.Delta0 = 0.02;
+    const Domain d = continuation_domain(r.id, s.parameters);
+    const double v = std::isfinite(d.hi) ? d.lo + 0.37 * (d.hi - d.lo) : std::max(d.lo, 0.0) + 1.7;
+    ASSERT_TRUE(d.contains(v)) << r.name << " " << v;
+    Scene t = s;
+    set_parameter(t, r.id, v);
+    EXPECT_NEAR(get_parameter(t, r.id), v, 1e-14 * std::abs(v)) << r.name;
+    const SceneParameter moved = parameter_row(r.id).moves;
+    for (const ParameterRow& stored : parameter_table()) {
+      if (!stored.table || stored.id == moved) continue;
+      EXPECT_EQ(get_parameter(t, stored.id), get_parameter(s, stored.id)) << r.name << " moved " << stored.name;
+    }
+  }
+}
+
+// The uses select the rows marked for them; the historical lists are the oracle.
+TEST(ParameterTable, NamesPerUseAreTheMarkedRows) {
+  EXPECT_EQ(parameter_names(ParameterUse::continuation),
+            (std::vector<std::string>{"lambda", "Delta", "Delta0", "B", "C", "Lambda", "S", "beta"}));
+  const std::vector<std::string> axes = parameter_names(ParameterUse::axis);
+  EXPECT_EQ(std::set<std::string>(axes.begin(), axes.end()),
+            (std::set<std::string>{"lnB", "lnC", "lambda", "Delta", "Delta0", "alpha", "beta"}));
+  EXPECT_EQ(parameter_names(ParameterUse::scene_key),
+            (std::vector<std::string>{"lambda", "Delta", "Delta0", "B", "C", "beta", "delta"}));
+  try {
+    (void)parameter_from_string("kappa", ParameterUse::continuation);
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "parameter");
+    EXPECT_NE(std::string(e.what()).find("lambda, Delta, Delta0, B, C, Lambda, S, beta"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW((void)parameter_from_string("lnB", ParameterUse::continuation), InvalidArgument);
+  EXPECT_THROW((void)parameter_from_string("C", ParameterUse::axis), InvalidArgument);
+  EXPECT_EQ(parameter_label(P::lnC), "ln C");
+  EXPECT_EQ(parameter_label(P::Delta0), "Delta0");
+}
+
+TEST(ParameterTable, IndependenceIsSharingNoInput) {
+  EXPECT_TRUE(independent(P::Lambda, P::S));
+  EXPECT_TRUE(independent(P::B, P::C));
+  EXPECT_TRUE(independent(P::beta, P::Lambda));
+  EXPECT_FALSE(independent(P::Lambda, P::Delta));
+  EXPECT_FALSE(independent(P::lambda, P::Lambda));
+  EXPECT_FALSE(independent(P::S, P::Delta0));
+  EXPECT_FALSE(independent(P::C, P::S));
+  EXPECT_FALSE(independent(P::alpha, P::B));
+  EXPECT_FALSE(independent(P::lnB, P::B));
+  EXPECT_FALSE(independent(P::beta, P::beta));
+  EXPECT_TRUE(is_material(P::S));
+  EXPECT_FALSE(is_material(P::beta));
+  EXPECT_FALSE(is_material(P::delta));
+}
+
+TEST(ParameterTable, OneTruncationRuleWithTheCallersReason) {
+  EXPECT_NO_THROW(require_L(kMinL));
+  EXPECT_NO_THROW(require_L(kMaxL));
+  try {
+    require_L(17, kMinL, 16, "dense");
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "L");
+    EXPECT_STREQ(e.what(), "L = 17 is out of range: must be an integer in [2, 16] (dense)");
+  }
+  try {
+    require_L(1LL << 40);  // a TOML integer beyond int: refused before narrowing
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("[2, 100]"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace rbcstab
