@@ -13,6 +13,7 @@
 #include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/io/json.hpp"
 #include "rbcstab/io/files.hpp"
 #include "scene_options.hpp"
 

@@ -7,6 +7,7 @@
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
 
