@@ -10,7 +10,7 @@
 #include "rbcstab/analysis/post_instability.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/modal_model.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <numbers>
 
-#include "rbcstab/analysis/detail/reduced_quadrature.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/integrate/quadrature.hpp"
 #include "rbcstab/model/coefficients.hpp"
 
 namespace rbcstab {
@@ -73,7 +73,8 @@ struct ReducedRun {
 
 ReducedRun run_reduced(const Scene& scene, const PredictorOptions& options) {
   options.validate();
-  const detail::ReducedWithQuadrature sys(scene.parameters, initial_state(scene));
+  const ReducedModel reduced(scene.parameters, initial_state(scene));
+  const WithQuadratures sys(reduced, tension_integral(reduced));
   const double t0 = options.transient, t1 = options.transient + options.window;
   std::vector<double> grid;
   const auto n = static_cast<std::size_t>(std::ceil(options.window / options.regime_sample_dt));
@@ -160,7 +161,8 @@ FiniteHorizon finite_horizon_growth(const Scene& scene, double T, const Predicto
   options.validate();
   require(std::isfinite(T) && T > 0, "T", T, "finite and > 0");
   const Parameters& p = scene.parameters;
-  const detail::ReducedWithQuadrature sys(p, initial_state(scene));
+  const ReducedModel reduced(p, initial_state(scene));
+  const WithQuadratures sys(reduced, tension_integral(reduced));
   FiniteHorizon h;
   h.T = T;
   const double grid[1] = {T};
@@ -176,7 +178,7 @@ FiniteHorizon finite_horizon_growth(const Scene& scene, double T, const Predicto
   h.T = Tr;
   h.mean_sigma_R = Tr > 0 ? I / Tr : 0.0;
   // Upsilon_l is affine in sigma: int_0^T Upsilon_l(sigma_R) dt = T Upsilon_l(<sigma_R>_T).
-  for (int l = 2; l <= scene.L; ++l) h.G.push_back(Tr * Upsilon(p, l, h.mean_sigma_R));
+  for (int l = 2; l <= scene.L; ++l) h.G.push_back(Tr * Upsilon_l(p, l, h.mean_sigma_R));
   return h;
 }
 
@@ -234,7 +236,7 @@ ScenePrediction predict(const Scene& scene, const SimulationResult* simulated, c
   a.predictor = "asymptotic";
   if (out.sigma_R_asymptotic.valid()) {
     const double s = out.sigma_R_asymptotic.value;
-    for (int l = 2; l <= scene.L; ++l) a.rate.push_back(Upsilon(p, l, s));
+    for (int l = 2; l <= scene.L; ++l) a.rate.push_back(Upsilon_l(p, l, s));
     a.unstable = unstable_modes(s, alpha, scene.L);
     // Once modes grow, sigma rises until only the mode with the largest sigma_l^c stays: it takes the area.
     a.l_Delta = a.unstable.empty() ? 2 : surviving_mode(alpha, scene.L);

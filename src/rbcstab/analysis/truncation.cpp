@@ -6,8 +6,8 @@
 #include <limits>
 #include <sstream>
 
-#include "rbcstab/analysis/detail/reduced_quadrature.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/integrate/quadrature.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 
 namespace rbcstab {
@@ -46,7 +46,8 @@ TruncationChoice choose_truncation(const Scene& scene, const TruncationOptions& 
   const double Delta = p.Delta;
 
   TruncationChoice c;
-  const detail::ReducedWithQuadrature sys(p, initial_state(s));
+  const ReducedModel reduced(p, initial_state(s));
+  const WithQuadratures sys(reduced, tension_integral(reduced));
   std::vector<double> grid;
   for (int k = 1; k <= options.checkpoints; ++k) grid.push_back(s.T * k / options.checkpoints);
   c.G_max.assign(std::size_t(options.L_max - 2), -std::numeric_limits<double>::max());
@@ -55,7 +56,7 @@ TruncationChoice choose_truncation(const Scene& scene, const TruncationOptions& 
     const double mean_sigma = y[3] / t;
     for (int l = 3; l <= options.L_max; ++l) {
       double& G = c.G_max[std::size_t(l - 3)];
-      G = std::max(G, t * Upsilon(p, l, mean_sigma));
+      G = std::max(G, t * Upsilon_l(p, l, mean_sigma));
     }
   };
   const IntegrationResult res = integrate(sys, sys.initial_state(), 0.0, grid, options.predictor.integrator, on_sample);

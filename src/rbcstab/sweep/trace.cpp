@@ -156,7 +156,7 @@ AsymptoticVerdict asymptotic_verdict(const Scene& scene, const PredictorOptions&
   v.sigma_R = asymptotic_sigma_R(scene, options, orbit).sigma_R;
   const double alpha = scene.parameters.alpha();
   v.active_mode = surviving_mode(alpha, scene.L);
-  v.margin = v.sigma_R - sigma_critical(v.active_mode, alpha);
+  v.margin = v.sigma_R - sigma_c(v.active_mode, alpha);
   v.unstable = v.margin < 0;
   v.l = v.unstable ? v.active_mode : 2;
   return v;
@@ -199,7 +199,7 @@ ModeCriteria plane_criteria(const Scene& base, const DiagramSpec& plane, const T
       CriterionSample out;
       out.sigma_R = asymptotic_sigma_R(s, po, oo).sigma_R;
       out.alpha = s.parameters.alpha();
-      for (int l = 3; l <= s.L; ++l) out.g.push_back(Upsilon(s.parameters, l, out.sigma_R));
+      for (int l = 3; l <= s.L; ++l) out.g.push_back(Upsilon_l(s.parameters, l, out.sigma_R));
       return out;
     };
   } else {
@@ -236,7 +236,7 @@ TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane_spec, con
     c.criterion = criteria.description;
     c.chain = p.chain;
     for (const ZeroSetPoint& q : p.points)
-      c.points.push_back({q.x, q.y, q.l, q.sigma_R, sigma_critical(q.l, q.alpha), q.g});
+      c.points.push_back({q.x, q.y, q.l, q.sigma_R, sigma_c(q.l, q.alpha), q.g});
     res.curves.push_back(std::move(c));
   }
   for (const ZeroSetCorner& k : z.corners) res.corners.push_back({k.x, k.y, k.l_from, k.l_to});
