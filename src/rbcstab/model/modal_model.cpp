@@ -52,7 +52,9 @@ AreaBalance ModalModel::balance(std::span<const double> y, const std::complex<do
   AreaBalance b;
   b.add_mode(Upsilon_[0], Delta2);
   b.add_work(a2 * work);
-  for (std::size_t j = 0; j < active_.size(); ++j) b.add_mode(Upsilon_[j + 1], area_of(y[5 + j]));
+  // Modes below the cut add nothing (area_of): skipping them keeps the hot loop free of work and calls.
+  for (std::size_t j = 0; j < active_.size(); ++j)
+    if (!(y[5 + j] < u_cut_)) b.add_mode(Upsilon_[j + 1], std::exp(y[5 + j]));
   return b;
 }
 
