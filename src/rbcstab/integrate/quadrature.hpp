@@ -48,6 +48,6 @@ class WithQuadratures final : public System {
 
 // int_0^t sigma_R dt' for the reduced model: sigma_R = Upsilon_2^-1(mu) is affine in mu (b = 1/slope_2). Because
 // every Upsilon_l is affine in sigma, int_0^T Upsilon_l(sigma_R) dt = T Upsilon_l(<sigma_R>_T) for all l at once.
-Quadrature tension_integral(const ReducedModel& model);
+Quadrature tension_integral(const ReducedModel& model);  // refers to model: it must outlive the integrand
 
 }  // namespace rbcstab
