@@ -15,7 +15,8 @@
 #include "rbcstab/continuation/eigen_arpack.hpp"
 #include "rbcstab/continuation/monodromy.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/full_model.hpp"
+#include "rbcstab/model/reduced_model.hpp"
 
 #include "../tests/continuation/in_plane_orbit.hpp"  // the in-plane orbit and its exact monodromy (oracle)
 
@@ -63,7 +64,7 @@ void BM_ArpackShiftInvert(benchmark::State& state) {
   for (auto _ : state) {
     const ArpackResult r = arpack_eigenvalues(st.J.size(), A, shifted_inverse(st.J, o.shift), o);
     apps = r.applications;
-    err = r.eigenvalues.size() ? std::abs(r.eigenvalues(0) - Upsilon(st.p, 4, st.sigma)) : 1.0;
+    err = r.eigenvalues.size() ? std::abs(r.eigenvalues(0) - Upsilon_l(st.p, 4, st.sigma)) : 1.0;
   }
   state.counters["n"] = static_cast<double>(st.J.size());
   state.counters["applications"] = static_cast<double>(apps);
@@ -84,7 +85,7 @@ void BM_ArpackLargestReal(benchmark::State& state) {
   for (auto _ : state) {
     const ArpackResult r = arpack_eigenvalues(st.J.size(), A, {}, o);
     apps = r.applications;
-    err = r.eigenvalues.size() ? std::abs(r.eigenvalues(0).real() - Upsilon(st.p, 4, st.sigma)) : 1.0;
+    err = r.eigenvalues.size() ? std::abs(r.eigenvalues(0).real() - Upsilon_l(st.p, 4, st.sigma)) : 1.0;
   }
   state.counters["n"] = static_cast<double>(st.J.size());
   state.counters["applications"] = static_cast<double>(apps);
@@ -104,7 +105,7 @@ void BM_DenseEigen(benchmark::State& state) {
     const std::vector<std::complex<double>> v(e.data(), e.data() + e.size());
     double lead = -1e300;
     for (const auto& x : v) lead = std::max(lead, x.real());
-    err = std::abs(lead - Upsilon(st.p, 4, st.sigma));
+    err = std::abs(lead - Upsilon_l(st.p, 4, st.sigma));
   }
   state.counters["n"] = static_cast<double>(n);
   state.counters["error"] = err;

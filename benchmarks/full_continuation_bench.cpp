@@ -68,7 +68,7 @@ void BM_FullForcedBranchC(benchmark::State& state) {
     for (const auto& sp : b.special_points) {
       if (sp.type != SpecialPointType::BP) continue;
       const Parameters q = with_parameter(s.parameters, ContinuationParameter::C, sp.p);
-      bp_err = std::max(bp_err, std::abs(pr.observe(sp.x, sp.p).sigma - sigma_critical(4, q.alpha())));
+      bp_err = std::max(bp_err, std::abs(pr.observe(sp.x, sp.p).sigma - sigma_c(4, q.alpha())));
       break;
     }
     state.ResumeTiming();

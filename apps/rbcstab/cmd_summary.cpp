@@ -125,7 +125,7 @@ int run(const SummaryOptions& o) {
     const double d0 = r.Delta_initial[k], d1 = r.Delta_final[k];
     out << std::setw(5) << l << std::setw(16) << d0 << std::setw(16) << d1 << std::setw(12) << r.Delta_tail_mean[k]
         << std::setw(13) << (d1 - d0);
-    if (l >= 3) out << std::setw(12) << sigma_critical(l, p.alpha());
+    if (l >= 3) out << std::setw(12) << sigma_c(l, p.alpha());
     out << "\n";
   }
   out << "\nl_Delta = " << r.l_Delta;

@@ -54,7 +54,7 @@ int run(const ThresholdsOptions& o) {
     for (int l = 2; l < s.L; ++l) change[std::to_string(l) + "->" + std::to_string(l + 1)] = alpha_mode_change(l);
     j["alpha_mode_change"] = change;
     std::vector<double> sc;
-    for (int l = 2; l <= s.L; ++l) sc.push_back(sigma_critical(l, alpha));
+    for (int l = 2; l <= s.L; ++l) sc.push_back(sigma_c(l, alpha));
     j["sigma_critical"] = by_mode(sc);
     j["sigma_R_initial"] = sigma_R_initial(p);
     put(j, "alpha_init", alpha_init(p));

@@ -11,7 +11,7 @@
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/modal_model.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {

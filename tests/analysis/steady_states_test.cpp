@@ -10,7 +10,7 @@
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/integrate/integrator.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/reduced_model.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {

@@ -10,7 +10,7 @@
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/reduced_model.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
@@ -75,11 +75,11 @@ TEST(Thresholds, UpsilonVanishesAtSigmaCritical) {
   for (double alpha : {5.0, 50.0, 5000.0})
     for (int l = 2; l <= 12; ++l) {
       const Parameters p = params(5, 1, 0.01, 2, 2 / alpha);
-      const double sc = sigma_critical(l, alpha);
+      const double sc = sigma_c(l, alpha);
       const double scale = std::abs(Gamma2(p.lambda, l) / p.B) * std::abs(sc);
-      EXPECT_NEAR(Upsilon(p, l, sc), 0, 1e-14 * scale) << l << " " << alpha;
-      EXPECT_GT(Upsilon(p, l, sc - 1e-6 * std::abs(sc)), 0);
-      EXPECT_LT(Upsilon(p, l, sc + 1e-6 * std::abs(sc)), 0);
+      EXPECT_NEAR(Upsilon_l(p, l, sc), 0, 1e-14 * scale) << l << " " << alpha;
+      EXPECT_GT(Upsilon_l(p, l, sc - 1e-6 * std::abs(sc)), 0);
+      EXPECT_LT(Upsilon_l(p, l, sc + 1e-6 * std::abs(sc)), 0);
     }
 }
 
@@ -101,7 +101,7 @@ TEST(Thresholds, UnstableBandRootsAndModes) {
     const std::vector<int> modes = unstable_modes(sigma, alpha, 200);
     for (int l = 3; l <= 200; ++l) {
       const bool in = std::find(modes.begin(), modes.end(), l) != modes.end();
-      EXPECT_EQ(in, Upsilon(p, l, sigma) > 0) << l;
+      EXPECT_EQ(in, Upsilon_l(p, l, sigma) > 0) << l;
       EXPECT_EQ(in, l > b.l_minus.value && l < b.l_plus.value) << l;
     }
   }
@@ -118,7 +118,7 @@ TEST(Thresholds, SurvivingModeChangesAtAlphaModeChange) {
   EXPECT_DOUBLE_EQ(alpha_mode_change(3), 60.0);
   for (int l = 3; l <= 9; ++l) {
     const double a = alpha_mode_change(l);
-    EXPECT_NEAR(sigma_critical(l, a), sigma_critical(l + 1, a), 1e-12 * a);
+    EXPECT_NEAR(sigma_c(l, a), sigma_c(l + 1, a), 1e-12 * a);
     EXPECT_EQ(surviving_mode(a * (1 - 1e-9), 20), l);
     EXPECT_EQ(surviving_mode(a * (1 + 1e-9), 20), l + 1);
   }

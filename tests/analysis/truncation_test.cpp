@@ -14,10 +14,11 @@
 #include <limits>
 #include <numbers>
 
-#include "rbcstab/analysis/detail/reduced_quadrature.hpp"
 #include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
+#include "rbcstab/integrate/quadrature.hpp"
+#include "rbcstab/model/reduced_model.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/coefficients.hpp"
 
@@ -155,7 +156,8 @@ TEST(Truncation, SharedTransientGivesTheFormerChoiceBitForBit) {
     const TruncationOptions o;
     Scene sL = s;
     sL.L = o.L_max;
-    const detail::ReducedWithQuadrature sys(sL.parameters, initial_state(sL));
+    const ReducedModel reduced(sL.parameters, initial_state(sL));
+    const WithQuadratures sys(reduced, tension_integral(reduced));
     std::vector<double> grid;
     for (int k = 1; k <= o.checkpoints; ++k) grid.push_back(s.T * k / o.checkpoints);
     std::vector<double> G_max(std::size_t(o.L_max - 2), -std::numeric_limits<double>::max());
@@ -163,7 +165,7 @@ TEST(Truncation, SharedTransientGivesTheFormerChoiceBitForBit) {
                                                [&](double t, std::span<const double> y) {
                                                  for (int l = 3; l <= o.L_max; ++l) {
                                                    double& G = G_max[std::size_t(l - 3)];
-                                                   G = std::max(G, t * Upsilon(s.parameters, l, y[3] / t));
+                                                   G = std::max(G, t * Upsilon_l(s.parameters, l, y[3] / t));
                                                  }
                                                });
     ASSERT_EQ(former.status, IntegrationStatus::success);
@@ -191,7 +193,7 @@ TEST(Truncation, SharedTransientGivesTheFormerChoiceBitForBit) {
     ASSERT_EQ(h.G.size(), std::size_t(s.L - 1));
     for (int l = 3; l <= s.L; ++l) {
       const double G = h.G[std::size_t(l - 2)];
-      EXPECT_EQ(G, s.T * Upsilon(s.parameters, l, tr.integral.back() / s.T));
+      EXPECT_EQ(G, s.T * Upsilon_l(s.parameters, l, tr.integral.back() / s.T));
       EXPECT_LE(G, shared.G_max[std::size_t(l - 3)]);
       EXPECT_NEAR(G, alone.G[std::size_t(l - 2)], 1e-7 * (1 + std::abs(G)));
     }

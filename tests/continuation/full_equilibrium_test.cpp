@@ -132,8 +132,8 @@ TEST(FullEquilibrium, EllipsoidalBranchEqualsModalLevelAndClosedForm) {
     std::vector<cd> want(ms_spec.data(), ms_spec.data() + ms_spec.size());
     for (int l = 3; l <= s.L; ++l)
       for (int m = 1; m <= l; ++m) {
-        want.emplace_back(Upsilon(q, l, ms.sigma), 0.5 * m);
-        want.emplace_back(Upsilon(q, l, ms.sigma), -0.5 * m);
+        want.emplace_back(Upsilon_l(q, l, ms.sigma), 0.5 * m);
+        want.emplace_back(Upsilon_l(q, l, ms.sigma), -0.5 * m);
       }
     const std::vector<cd> got(pt.spectrum.data(), pt.spectrum.data() + pt.spectrum.size());
     ASSERT_EQ(got.size(), want.size());
@@ -196,7 +196,7 @@ TEST(FullEquilibrium, ForcedBranchEqualsClosedForm) {
 double l4_threshold(const Scene& s, double lo, double hi) {
   auto margin = [&](double C) {
     const Parameters q = with_parameter(s.parameters, ContinuationParameter::C, C);
-    return closed_form(s, q).sigma - sigma_critical(4, q.alpha());
+    return closed_form(s, q).sigma - sigma_c(4, q.alpha());
   };
   const double mlo = margin(lo);
   EXPECT_LT(mlo * margin(hi), 0);
@@ -255,7 +255,7 @@ TEST(FullEquilibrium, UnforcedModeCrossingIsLocatedAsBranchPointWithCoincidentHo
   EXPECT_NEAR(bp->p, C4, 1e-8);
   const FullEquilibriumState st = run.pr.observe(bp->x, bp->p);
   const Parameters q = with_parameter(run.s.parameters, ContinuationParameter::C, bp->p);
-  EXPECT_NEAR(Upsilon(q, 4, st.sigma), 0.0, 1e-8);
+  EXPECT_NEAR(Upsilon_l(q, 4, st.sigma), 0.0, 1e-8);
   // Coincident crossings: at Upsilon_4 = 0 the m = 0 real eigenvalue (the Z2 pitchfork f_{4,0} -> -f_{4,0})
   // and the four pairs Upsilon_4 +- i m/2 (m = 1..4, rotating l = 4 waves) cross together. det[J F_p; t^T]
   // changes sign once (BP); the Hopf product changes sign four times (no net change), so the engine
@@ -315,7 +315,7 @@ TEST(FullEquilibrium, BranchSwitchAtTheL4CrossingHasSigmaPinnedAtItsCriticalValu
   EXPECT_DOUBLE_EQ(sw.branch.points.back().p, 0.012);
   for (const BranchPoint& pt : sw.branch.points) {
     const Parameters q = with_parameter(run.s.parameters, ContinuationParameter::C, pt.p);
-    const double sigma4 = sigma_critical(4, q.alpha());
+    const double sigma4 = sigma_c(4, q.alpha());
     const FullEquilibriumState st = run.pr.observe(pt.x, pt.p);
     EXPECT_NEAR(st.sigma, sigma4, 1e-10 * std::abs(sigma4)) << "C = " << pt.p;
     double rest = 0;
@@ -323,7 +323,7 @@ TEST(FullEquilibrium, BranchSwitchAtTheL4CrossingHasSigmaPinnedAtItsCriticalValu
       if (l == 4) continue;
       double Dl = 0;
       for (int m = -l; m <= l; ++m)
-        Dl += a_l(l) * std::norm(drive(run.s, q, l, m)) / (0.25 * m * m + std::pow(Upsilon(q, l, sigma4), 2));
+        Dl += a_l(l) * std::norm(drive(run.s, q, l, m)) / (0.25 * m * m + std::pow(Upsilon_l(q, l, sigma4), 2));
       EXPECT_NEAR(st.Delta_l[static_cast<std::size_t>(l - 2)], Dl, 1e-10) << "C = " << pt.p << ", l = " << l;
       rest += Dl;
     }
@@ -365,8 +365,8 @@ TEST(FullEquilibrium, L4CrossingContinuedInTwoParametersByTheGenericBranchPointC
     sB.parameters.B = B;
     const Parameters q = with_parameter(sB.parameters, ContinuationParameter::C, C);
     const ClosedForm cf = closed_form(sB, q);
-    EXPECT_NEAR(cf.sigma, sigma_critical(4, q.alpha()), 1e-9 * std::abs(cf.sigma)) << "B = " << B;
-    worst_sigma = std::max(worst_sigma, std::abs(cf.sigma - sigma_critical(4, q.alpha())) / std::abs(cf.sigma));
+    EXPECT_NEAR(cf.sigma, sigma_c(4, q.alpha()), 1e-9 * std::abs(cf.sigma)) << "B = " << B;
+    worst_sigma = std::max(worst_sigma, std::abs(cf.sigma - sigma_c(4, q.alpha())) / std::abs(cf.sigma));
     EXPECT_LT(std::abs(curve.mu(pt.x)), 1e-10);
     EXPECT_LT(state_error(base.at(B), pt.x.head(n), C, cf), 1e-9) << "B = " << B;
   }
@@ -460,10 +460,10 @@ TEST(FullEquilibrium, AtTheLargestLTheBranchStillEqualsClosedForm) {
     const ClosedForm c = closed_form(s, q);
     EXPECT_LT(state_error(pr, pt.x, pt.p, c), 1e-10) << "C = " << pt.p;
     std::vector<cd> want;
-    for (int m = -16; m <= 16; ++m) want.emplace_back(Upsilon(q, 16, c.sigma), 0.5 * m);
+    for (int m = -16; m <= 16; ++m) want.emplace_back(Upsilon_l(q, 16, c.sigma), 0.5 * m);
     std::vector<cd> got;
     for (Eigen::Index i = 0; i < pt.spectrum.size(); ++i)
-      if (std::abs(pt.spectrum[i].real() - Upsilon(q, 16, c.sigma)) < 1e-6 * std::abs(Upsilon(q, 16, c.sigma)))
+      if (std::abs(pt.spectrum[i].real() - Upsilon_l(q, 16, c.sigma)) < 1e-6 * std::abs(Upsilon_l(q, 16, c.sigma)))
         got.push_back(pt.spectrum[i]);
     ASSERT_EQ(got.size(), want.size());  // l = 16's 2l + 1 eigenvalues, none else there
     EXPECT_LT(test::multiset_distance(got, want), 1e-12);

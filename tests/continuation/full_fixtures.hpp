@@ -53,7 +53,7 @@ inline cd drive(const Scene& s, const Parameters& q, int l, int m) {
 inline double area_at(const Scene& s, const Parameters& q, double sigma) {
   double A = 0;
   for (int l = 2; l <= s.L; ++l) {
-    const double Y = Upsilon(q, l, sigma);
+    const double Y = Upsilon_l(q, l, sigma);
     for (int m = -l; m <= l; ++m) A += a_l(l) * std::norm(drive(s, q, l, m)) / (0.25 * m * m + Y * Y);
   }
   return A;
@@ -62,7 +62,7 @@ inline double area_at(const Scene& s, const Parameters& q, double sigma) {
 inline ClosedForm closed_form(const Scene& s, const Parameters& q) {
   double lo = -1e300;
   for (int l = 2; l <= s.L; ++l)
-    if (std::abs(drive(s, q, l, 0)) > 0) lo = std::max(lo, sigma_critical(l, q.alpha()));
+    if (std::abs(drive(s, q, l, 0)) > 0) lo = std::max(lo, sigma_c(l, q.alpha()));
   double hi = lo + 1;
   while (area_at(s, q, hi) > q.Delta) hi = lo + 2 * (hi - lo);
   for (int it = 0; it < 400; ++it) {
@@ -76,7 +76,7 @@ inline ClosedForm closed_form(const Scene& s, const Parameters& q) {
   c.Delta_l.assign(static_cast<std::size_t>(s.L - 1), 0.0);
   for (int l = 2; l <= s.L; ++l)
     for (int m = -l; m <= l; ++m) {
-      const cd f = -drive(s, q, l, m) / cd(Upsilon(q, l, c.sigma), 0.5 * m);
+      const cd f = -drive(s, q, l, m) / cd(Upsilon_l(q, l, c.sigma), 0.5 * m);
       c.f[ModeAmplitudes::index(l, m)] = f;
       c.Delta_l[static_cast<std::size_t>(l - 2)] += a_l(l) * std::norm(f);
     }

@@ -9,7 +9,8 @@
 
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/full_model.hpp"
+#include "rbcstab/model/reduced_model.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab::test {

@@ -42,7 +42,7 @@ std::vector<std::complex<double>> closed_form_spectrum(const FullJacobian& f, in
   const Eigen::MatrixXd D2 = test::dense(f.J, 10);
   auto all = to_vector(Eigen::EigenSolver<Eigen::MatrixXd>(D2, false).eigenvalues());
   for (int l = 3; l <= L; ++l) {
-    const double ups = Upsilon(f.p, l, f.st.sigma);
+    const double ups = Upsilon_l(f.p, l, f.st.sigma);
     for (int m = -l; m <= l; ++m) {
       all.push_back({ups, 0.5 * m});
       all.push_back({ups, -0.5 * m});
@@ -65,8 +65,8 @@ TEST(FullModelSpectrum, DecoupledBlockClosedFormMatchesDenseEigenvalues) {
   // 1e-10: dense QR error ~ eps |J| (|J| ~ |Upsilon_8| ~ 14) for these semisimple double eigenvalues.
   EXPECT_LT(test::multiset_distance(dense, closed), 1e-10);
   // The claim is not vacuous: l = 3, 4 are unstable here and lead the spectrum.
-  EXPECT_GT(Upsilon(f.p, 4, f.st.sigma), Upsilon(f.p, 3, f.st.sigma));
-  EXPECT_GT(Upsilon(f.p, 3, f.st.sigma), 0);
+  EXPECT_GT(Upsilon_l(f.p, 4, f.st.sigma), Upsilon_l(f.p, 3, f.st.sigma));
+  EXPECT_GT(Upsilon_l(f.p, 3, f.st.sigma), 0);
 }
 
 // Relative 1e-9: ARPACK's tol 1e-12 bounds the Ritz residual relative to |theta| = 1/|lambda - s|,

@@ -88,7 +88,7 @@ struct ExactInPlaneMonodromy {
   Eigen::MatrixXd Phi2;  // the l = 2 block (rk8pd, rtol 1e-12)
 
   double factor(int l, int m) const {
-    const double E = std::exp(kTwoPi * Upsilon(p, l, sigma_bar));
+    const double E = std::exp(kTwoPi * Upsilon_l(p, l, sigma_bar));
     return m % 2 ? -E : E;
   }
   // out = Phi v

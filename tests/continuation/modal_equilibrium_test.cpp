@@ -17,7 +17,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/modal_model.hpp"
 #include "rbcstab/sweep/trace.hpp"
 #include "continuation/modal_fixtures.hpp"
 
@@ -58,7 +58,7 @@ TEST(ModalEquilibrium, EquationsMatchModalModelRhs) {
         const Eigen::Index i = ModalEquilibriumProblem::index_of_mode(l);
         // u_l' = (ln Delta_l)' = 2 a_l'/a_l = 2 Upsilon_l.
         EXPECT_NEAR(2 * F[i] / x[i], dy[static_cast<std::size_t>(5 + l - 3)], 1e-11 * (1 + std::abs(dy[5 + l - 3])));
-        EXPECT_NEAR(F[i] / x[i], Upsilon(s.parameters, l, sigma), 1e-11 * (1 + std::abs(F[i] / x[i])));
+        EXPECT_NEAR(F[i] / x[i], Upsilon_l(s.parameters, l, sigma), 1e-11 * (1 + std::abs(F[i] / x[i])));
       }
     }
   }
@@ -113,9 +113,9 @@ TEST(ModalEquilibrium, EllipsoidalBranchReproducesReducedBranchAndClosedForm) {
     const Parameters q = with_parameter(s.parameters, ContinuationParameter::lambda, pt.p);
     const Eigen::VectorXcd rs = red.spectrum(nr.x, pt.p);
     std::vector<std::complex<double>> expected(rs.data(), rs.data() + rs.size());
-    expected.emplace_back(Upsilon(q, 2, sigma), 0.5);
-    expected.emplace_back(Upsilon(q, 2, sigma), -0.5);
-    for (int l = 3; l <= s.L; ++l) expected.emplace_back(Upsilon(q, l, sigma), 0.0);
+    expected.emplace_back(Upsilon_l(q, 2, sigma), 0.5);
+    expected.emplace_back(Upsilon_l(q, 2, sigma), -0.5);
+    for (int l = 3; l <= s.L; ++l) expected.emplace_back(Upsilon_l(q, l, sigma), 0.0);
     ASSERT_EQ(static_cast<std::size_t>(pt.spectrum.size()), expected.size());
     for (const auto& ev : expected) {
       double best = 1e300;

@@ -30,8 +30,8 @@ struct PostState {
   double sigma, Delta2, Delta_l;
 };
 inline PostState exact_post_state(const Parameters& q, int l) {
-  const double sigma = sigma_critical(l, q.alpha());
-  const double Y2 = Upsilon(q, 2, sigma);
+  const double sigma = sigma_c(l, q.alpha());
+  const double Y2 = Upsilon_l(q, 2, sigma);
   const double L = q.Lambda();
   const double z2 = 1 / (L * L * (1 + Y2 * Y2));
   const double w = -q.inv_Lambda_S() / Y2;
@@ -42,7 +42,7 @@ inline PostState exact_post_state(const Parameters& q, int l) {
 // sigma at the exact ellipsoidal equilibrium minus sigma_l^c: the asymptotic criterion mu_l = 0
 // of trace.hpp (analysis/steady_states closed form); its root in C by bisection to the last bit.
 inline double threshold_margin(const Parameters& p, int l) {
-  return out_of_plane_equilibrium(p).sigma_R - sigma_critical(l, p.alpha());
+  return out_of_plane_equilibrium(p).sigma_R - sigma_c(l, p.alpha());
 }
 inline double threshold_root(Parameters p, ContinuationParameter q, int l, double lo, double hi) {
   double glo = threshold_margin(with_parameter(p, q, lo), l);

@@ -59,7 +59,7 @@ double simulated_sigma_bar(const Scene& s) {
 
 // The root in C of simulated_sigma_bar - sigma_3^c(B/C) by bisection on [lo, hi].
 double bisect_C(double lambda, double B, double lo, double hi) {
-  auto h = [&](double C) { return simulated_sigma_bar(test::in_plane_modal(lambda, B, C, 4)) - sigma_critical(3, B / C); };
+  auto h = [&](double C) { return simulated_sigma_bar(test::in_plane_modal(lambda, B, C, 4)) - sigma_c(3, B / C); };
   double hlo = h(lo);
   EXPECT_LT(hlo * h(hi), 0) << "no sign change in [" << lo << ", " << hi << "]";
   for (int i = 0; i < 45 && hi - lo > 1e-13; ++i) {
@@ -167,8 +167,8 @@ TEST(ModalOrbitBranchPointCurve, IsTheInPlaneAsymptoticBoundaryOfTrace) {
     const Scene at = with_parameter(with_parameter(s, ContinuationParameter::B, B), ContinuationParameter::C, C);
     const OrbitSigmaAverage avg = orbit_sigma_average(at);
     ASSERT_TRUE(avg.ok) << avg.reason;
-    std::printf("B %g: C %.12f, trace <sigma_R> - sigma_3^c = %.2e\n", B, C, avg.sigma_R - sigma_critical(3, B / C));
-    EXPECT_NEAR(avg.sigma_R, sigma_critical(3, B / C), 1e-8);
+    std::printf("B %g: C %.12f, trace <sigma_R> - sigma_3^c = %.2e\n", B, C, avg.sigma_R - sigma_c(3, B / C));
+    EXPECT_NEAR(avg.sigma_R, sigma_c(3, B / C), 1e-8);
     const AsymptoticVerdict above = asymptotic_verdict(with_parameter(at, ContinuationParameter::C, C * (1 + 1e-4)));
     const AsymptoticVerdict below = asymptotic_verdict(with_parameter(at, ContinuationParameter::C, C * (1 - 1e-4)));
     EXPECT_FALSE(above.unstable);

@@ -171,8 +171,8 @@ TEST(ModalOrbit, EllipsoidalOrbitIsTheReducedOrbitWithClosedFormMultipliers) {
     for (int l = 2; l <= L; ++l) {
       // int Upsilon_l(sigma(t)) dt = 2 pi Upsilon_l(0) + (dUpsilon_l/dsigma) int sigma dt (Upsilon is affine)
       const Parameters& q = rs.parameters;
-      const double slope = Upsilon(q, l, 1.0) - Upsilon(q, l, 0.0);
-      const double rho = std::exp(kTwoPi * Upsilon(q, l, 0.0) + slope * I_sigma);
+      const double slope = Upsilon_l(q, l, 1.0) - Upsilon_l(q, l, 0.0);
+      const double rho = std::exp(kTwoPi * Upsilon_l(q, l, 0.0) + slope * I_sigma);
       expected.push_back(rho);
       if (l == 2) expected.push_back(rho);  // the v~ plane (m = 1 of l = 2) twice
       std::printf("lambda %g l %d closed-form multiplier %.12e\n", lambda, l, rho);
@@ -226,9 +226,9 @@ TEST(ModalOrbit, PostInstabilityInPlaneOrbitIsTheLongTimeStateOfTheModalSimulati
     // the v~ plane (v~ = 0 here; l = 2, twice). 1e-8 relative (1e-11 absolute for the tiny ones).
     {
       const Parameters& q = sim.parameters;
-      auto slope = [&](int l) { return Upsilon(q, l, 1.0) - Upsilon(q, l, 0.0); };
+      auto slope = [&](int l) { return Upsilon_l(q, l, 1.0) - Upsilon_l(q, l, 0.0); };
       for (int l : {2, 4, 5, 6, 7, 8, 9, 10}) {
-        const double rho = std::exp(kTwoPi * (Upsilon(q, l, 0.0) - slope(l) / slope(3) * Upsilon(q, 3, 0.0)));
+        const double rho = std::exp(kTwoPi * (Upsilon_l(q, l, 0.0) - slope(l) / slope(3) * Upsilon_l(q, 3, 0.0)));
         int found = 0;
         for (Eigen::Index i = 0; i < f8.multipliers.size(); ++i)
           if (std::abs(f8.multipliers[i] - rho) < std::max(1e-8 * rho, 1e-11)) ++found;

@@ -120,7 +120,7 @@ TEST(SceneTwoParameterProblem, ModalBranchPointCurveGenericSystemMatchesSigmaCri
     const double C = pt.parameters[0], B = pt.parameters[1];
     const ModalState st = base.at(B).observe(pt.x.head(base.dimension()), C);
     // 1e-8 relative: sigma ~ 20 is computed from a state converged to 1e-12 (the BP system is regular).
-    EXPECT_NEAR(st.sigma, sigma_critical(3, B / C), 1e-8 * std::abs(st.sigma)) << "B = " << B;
+    EXPECT_NEAR(st.sigma, sigma_c(3, B / C), 1e-8 * std::abs(st.sigma)) << "B = " << B;
     EXPECT_NEAR(curve.mu(pt.x), 0.0, 1e-10);  // a structurally stable (Z2) BP: no imperfection
   }
 }

@@ -205,7 +205,7 @@ TEST(Extremes, LongHorizon) {
   s.dt = 1e3;
   const SimulationResult r = run(s, ModelLevel::modal);
   expect_sane(r, 1e-5 * s.parameters.Delta);
-  EXPECT_NEAR(r.sigma_final, sigma_critical(3, s.parameters.alpha()), 1e-6);
+  EXPECT_NEAR(r.sigma_final, sigma_c(3, s.parameters.alpha()), 1e-6);
 }
 
 TEST(Extremes, LargeTruncation) {

@@ -48,7 +48,7 @@ TEST_P(Fig3, ExcessAreaMovesToL3AndSigmaSettlesAtSigma3c) {
   //   sigma_3^c + B ln(Delta_3(T)/Delta_3(T - w)) / (2 w Gamma_2^3).
   const double alpha = s.parameters.alpha();
   const double sigma3c = -(12 + alpha / 3);
-  EXPECT_DOUBLE_EQ(sigma3c, sigma_critical(3, alpha));
+  EXPECT_DOUBLE_EQ(sigma3c, sigma_c(3, alpha));
   const double G2 = Gamma2(s.parameters.lambda, 3), B = s.parameters.B;
   auto D3_at = [&](double t) {
     const auto it = std::lower_bound(tr.t.begin(), tr.t.end(), t - 1e-9);

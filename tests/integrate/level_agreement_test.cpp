@@ -14,7 +14,8 @@
 #include "model/test_scenes.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/full_model.hpp"
+#include "rbcstab/model/modal_model.hpp"
 
 namespace rbcstab {
 namespace {

@@ -76,27 +76,27 @@ TEST(Coefficients, UpsilonMatchesEqEomSupAndVanishesAtSigmaCritical) {
     p.lambda = 5.0;
     const double alpha = p.alpha();
     for (int l = 2; l <= 100; ++l) {
-      const double sc = sigma_critical(l, alpha);
+      const double sc = sigma_c(l, alpha);
       EXPECT_DOUBLE_EQ(sc, -(l * (l + 1.0) + 4 * alpha / (l * (l + 1.0))));
-      // Upsilon(sigma_c) is a difference of terms of size |Gamma2| |sigma_c| / B: relative 1e-14 of that.
+      // Upsilon_l(sigma_c) is a difference of terms of size |Gamma2| |sigma_c| / B: relative 1e-14 of that.
       const double scale = std::abs(Gamma2(p.lambda, l)) / p.B * std::abs(sc);
-      EXPECT_NEAR(Upsilon(p, l, sc), 0, 1e-14 * scale) << "l = " << l;
+      EXPECT_NEAR(Upsilon_l(p, l, sc), 0, 1e-14 * scale) << "l = " << l;
       // Eq. eom_sup_ups directly, at a generic sigma.
       const double sigma = -17.3;
       const double direct = (Gamma1(p.lambda, l) + sigma * Gamma2(p.lambda, l)) / p.B + Gamma3(p.lambda, l) / p.C;
       const double size = (std::abs(Gamma1(p.lambda, l)) + std::abs(sigma * Gamma2(p.lambda, l))) / p.B +
                           std::abs(Gamma3(p.lambda, l) / p.C);
-      EXPECT_NEAR(Upsilon(p, l, sigma), direct, 1e-14 * size) << "l = " << l;
+      EXPECT_NEAR(Upsilon_l(p, l, sigma), direct, 1e-14 * size) << "l = " << l;
       // Sign: mode l grows iff sigma < sigma_l^c.
-      EXPECT_GT(Upsilon(p, l, sc - 1), 0);
-      EXPECT_LT(Upsilon(p, l, sc + 1), 0);
+      EXPECT_GT(Upsilon_l(p, l, sc - 1), 0);
+      EXPECT_LT(Upsilon_l(p, l, sc + 1), 0);
     }
   }
   // Vesicle limit C = inf: Gamma3 drops out, finite.
   p.C = INFINITY;
   EXPECT_EQ(p.alpha(), 0);
-  EXPECT_NEAR(Upsilon(p, 3, -12.0), 0, 1e-15);
-  EXPECT_TRUE(std::isfinite(Upsilon(p, 50, -3.0)));
+  EXPECT_NEAR(Upsilon_l(p, 3, -12.0), 0, 1e-15);
+  EXPECT_TRUE(std::isfinite(Upsilon_l(p, 50, -3.0)));
 }
 
 TEST(Coefficients, ModeBelowTwoIsRefused) {

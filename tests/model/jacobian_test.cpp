@@ -9,7 +9,6 @@
 #include <string>
 
 #include "model/test_scenes.hpp"
-#include "rbcstab/model/levels.hpp"
 #include "rbcstab/model/structured_jacobian.hpp"
 
 namespace rbcstab {

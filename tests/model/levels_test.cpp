@@ -11,7 +11,9 @@
 #include "model/test_scenes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/full_model.hpp"
+#include "rbcstab/model/modal_model.hpp"
+#include "rbcstab/model/reduced_model.hpp"
 
 namespace rbcstab {
 namespace {

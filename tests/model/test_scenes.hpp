@@ -6,7 +6,6 @@
 #include <random>
 #include <vector>
 
-#include "rbcstab/model/levels.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {

@@ -179,7 +179,7 @@ void check_trajectories(const Built& b) {
   const auto th = nlohmann::json::parse(read_file((parent_ / "out" / "thresholds.json").string()));
   const double alpha = scene_.scene.parameters.alpha();
   for (int l = 2; l <= 4; ++l)
-    EXPECT_EQ(th.at("sigma_c").at(std::to_string(l)).get<double>(), sigma_critical(l, alpha));
+    EXPECT_EQ(th.at("sigma_c").at(std::to_string(l)).get<double>(), sigma_c(l, alpha));
   EXPECT_NEAR(th.at("sigma_star").get<double>(), -4 * std::sqrt(alpha), 1e-14 * std::sqrt(alpha));
 }
 

@@ -48,8 +48,8 @@ TEST(Trace, PointsSatisfyTheCriterionAndSeparateVerdicts) {
         ASSERT_EQ(p.l, c.l);
         const Parameters q = plane_scene(base, plane, p.x, p.y).parameters;
         const double sigma_R = out_of_plane_equilibrium(q).sigma_R;
-        EXPECT_LE(std::abs(Upsilon(q, c.l, sigma_R)), 1e-10) << "lambda " << lambda << " at " << p.x << ", " << p.y;
-        EXPECT_LE(std::abs(sigma_R - sigma_critical(c.l, q.alpha())), 1e-10 * (1 + std::abs(sigma_R)));
+        EXPECT_LE(std::abs(Upsilon_l(q, c.l, sigma_R)), 1e-10) << "lambda " << lambda << " at " << p.x << ", " << p.y;
+        EXPECT_LE(std::abs(sigma_R - sigma_c(c.l, q.alpha())), 1e-10 * (1 + std::abs(sigma_R)));
         const double eps = 1e-7 * (plane.y.max - plane.y.min);
         if (p.y - eps > plane.y.min && p.y + eps < plane.y.max) {
           Scene lo = plane_scene(base, plane, p.x, p.y - eps), hi = plane_scene(base, plane, p.x, p.y + eps);
@@ -203,7 +203,7 @@ TEST(Trace, InPlaneAsymptoticByTimeAverage) {
       EXPECT_FALSE(asymptotic_sigma_R(q, o.predictor).exact);
       // Since the periodic-orbit average (OrbitAverageOptions on by default): every point of this plane from it.
       EXPECT_EQ(asymptotic_sigma_R(q, o.predictor, o.orbit).source, SigmaSource::periodic_orbit);
-      EXPECT_LE(std::abs(Upsilon(q.parameters, c.l, sigma)), 1e-10) << p.x << ", " << p.y;
+      EXPECT_LE(std::abs(Upsilon_l(q.parameters, c.l, sigma)), 1e-10) << p.x << ", " << p.y;
     }
   std::cout << "in-plane trace: " << t.curves.size() << " pieces, " << t.evaluations << " evaluations, " << t.counters.steps << " steps, " << t.counters.rejected_steps << " rejected, " << t.counters.newton_iterations << " newton, " << t.counters.location_iterations << " location, " << t.seconds
             << " s\n";

@@ -54,7 +54,7 @@ double margin(double ln_C) {
   Parameters p = fig4b_at_B2().parameters;
   p.C = std::exp(ln_C);
   double sc = -1e300;
-  for (int l = 3; l <= 10; ++l) sc = std::max(sc, sigma_critical(l, p.alpha()));
+  for (int l = 3; l <= 10; ++l) sc = std::max(sc, sigma_c(l, p.alpha()));
   return out_of_plane_equilibrium(p).sigma_R - sc;
 }
 

@@ -41,7 +41,7 @@ TEST(Predict, Figure3Scenes) {
     EXPECT_EQ(pr.out_of_plane, beta < 0.1);
     EXPECT_EQ(pr.asymptotic.unstable, unstable_modes(pr.sigma_R_asymptotic.value, s.parameters.alpha(), s.L));
     for (int l = 2; l <= s.L; ++l)
-      EXPECT_DOUBLE_EQ(pr.asymptotic.rate[std::size_t(l - 2)], Upsilon(s.parameters, l, pr.sigma_R_asymptotic.value));
+      EXPECT_DOUBLE_EQ(pr.asymptotic.rate[std::size_t(l - 2)], Upsilon_l(s.parameters, l, pr.sigma_R_asymptotic.value));
     std::printf("beta %g: <sigma_R> %.6g (%s), l_Delta asymptotic %d, finite horizon %d, simulation %d\n", beta,
                 pr.sigma_R_asymptotic.value, pr.asymptotic_source.c_str(), pr.asymptotic.l_Delta,
                 pr.finite_horizon.l_Delta, pr.simulation.l_Delta);

@@ -21,7 +21,7 @@ Delta2Prediction post_instability_Delta2(const Parameters& p, double sigma_s, do
   const double sqrt30pi = std::sqrt(30 * std::numbers::pi);
   const double c_Lambda = d2 / (8 * sqrt30pi);  // Lambda~ = c_Lambda sqrt(Delta2)     (Eq. ssr)
   const double a2 = a_l(2);
-  d.mu_tilde = Upsilon(p, 2, sigma_s);
+  d.mu_tilde = Upsilon_l(p, 2, sigma_s);
   const double mu = d.mu_tilde;
   // Eq. rss_postinst: tan Psi~ = K = -mu~ and r~ = rho / sqrt(Delta2) with rho = 1/(c_Lambda sqrt(1 + mu~^2)).
   const double Psi = std::atan(-mu);
@@ -92,7 +92,7 @@ PostInstability post_instability(const Parameters& p, int L, double r0) {
     out.continuous.Delta2_tilde = Quantity::outside(why);
     out.continuous.r_tilde = Quantity::outside(why);
   }
-  out.integer_mode = post_instability_Delta2(p, sigma_critical(out.surviving_mode, alpha), r0);
+  out.integer_mode = post_instability_Delta2(p, sigma_c(out.surviving_mode, alpha), r0);
   out.integer_mode.variant = "integer";
   out.integer_mode.l = out.surviving_mode;
   return out;

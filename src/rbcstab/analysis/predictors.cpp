@@ -4,8 +4,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "rbcstab/analysis/detail/reduced_quadrature.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/integrate/quadrature.hpp"
 #include "rbcstab/model/coefficients.hpp"
 
 namespace rbcstab {
@@ -72,7 +72,8 @@ struct ReducedRun {
 
 ReducedRun run_reduced(const Scene& scene, const PredictorOptions& options) {
   options.validate();
-  const detail::ReducedWithQuadrature sys(scene.parameters, initial_state(scene));
+  const ReducedModel reduced(scene.parameters, initial_state(scene));
+  const WithQuadratures sys(reduced, tension_integral(reduced));
   const double t0 = options.transient, t1 = options.transient + options.window;
   std::vector<double> grid;
   const auto n = static_cast<std::size_t>(std::ceil(options.window / options.regime_sample_dt));
@@ -165,7 +166,8 @@ ReducedTransient reduced_transient(const Scene& scene, double T, int checkpoints
   options.validate();
   require(std::isfinite(T) && T > 0, "T", T, "finite and > 0");
   require(checkpoints >= 1 && checkpoints <= 10000, "checkpoints", checkpoints, "an integer in [1, 10000]");
-  const detail::ReducedWithQuadrature sys(scene.parameters, initial_state(scene));
+  const ReducedModel reduced(scene.parameters, initial_state(scene));
+  const WithQuadratures sys(reduced, tension_integral(reduced));
   ReducedTransient tr;
   tr.parameters = scene.parameters;
   tr.beta = scene.beta;
@@ -204,7 +206,7 @@ FiniteHorizon finite_horizon_growth(const Scene& scene, const ReducedTransient& 
   h.T = Tr;
   h.mean_sigma_R = Tr > 0 ? transient.integral_end / Tr : 0.0;
   // Upsilon_l is affine in sigma: int_0^T Upsilon_l(sigma_R) dt = T Upsilon_l(<sigma_R>_T).
-  for (int l = 2; l <= scene.L; ++l) h.G.push_back(Tr * Upsilon(p, l, h.mean_sigma_R));
+  for (int l = 2; l <= scene.L; ++l) h.G.push_back(Tr * Upsilon_l(p, l, h.mean_sigma_R));
   return h;
 }
 

@@ -5,7 +5,7 @@
 
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/core/error.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/reduced_model.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {

@@ -63,7 +63,7 @@ std::vector<int> unstable_modes(double sigma, double alpha, int L) {
   require_alpha(alpha);
   std::vector<int> modes;
   for (int l = 3; l <= L; ++l)
-    if (sigma < sigma_critical(l, alpha)) modes.push_back(l);
+    if (sigma < sigma_c(l, alpha)) modes.push_back(l);
   return modes;
 }
 
@@ -72,7 +72,7 @@ int surviving_mode(double alpha, int L) {
   require_L(L, 3, kMaxL, "a surviving mode l >= 3");
   int best = 3;
   for (int l = 4; l <= L; ++l)
-    if (sigma_critical(l, alpha) > sigma_critical(best, alpha)) best = l;
+    if (sigma_c(l, alpha) > sigma_c(best, alpha)) best = l;
   return best;
 }
 

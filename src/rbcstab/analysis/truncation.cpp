@@ -67,7 +67,7 @@ TruncationChoice choose_truncation(const Scene& scene, const ReducedTransient& t
     const double mean_sigma = transient.integral[k] / t;
     for (int l = 3; l <= options.L_max; ++l) {
       double& G = c.G_max[std::size_t(l - 3)];
-      G = std::max(G, t * Upsilon(p, l, mean_sigma));
+      G = std::max(G, t * Upsilon_l(p, l, mean_sigma));
     }
   }
   c.counters = transient.counters;

@@ -138,7 +138,7 @@ class SurvivingModesNlp final : public Ipopt::TNLP {
  private:
   static Index di(int l) { return 6 + (l - 3); }
   static double d(const Number* v, int l) { return v[di(l)]; }
-  double slope(int l) const { return c_.slope[static_cast<std::size_t>(l - 2)]; }
+  double slope(int l) const { return c_.rate(l).slope; }
 
   const ModalCoefficients& c_;
   int nl_;
@@ -169,7 +169,7 @@ ComplementarityResult solve_surviving_modes(const ModalEquilibriumProblem& probl
   const Eigen::VectorXd xe = problem.ellipsoidal_state(p);
   double sigma0 = ModalEquilibriumProblem::sigma(c, xe);
   double sigma_c_max = -1e300;
-  for (int l = 3; l <= c.L; ++l) sigma_c_max = std::max(sigma_c_max, -c.ups0[static_cast<std::size_t>(l - 2)] / c.slope[static_cast<std::size_t>(l - 2)]);
+  for (int l = 3; l <= c.L; ++l) sigma_c_max = std::max(sigma_c_max, c.rate(l).sigma_c);
   sigma0 = std::max(sigma0, sigma_c_max + 1e-2 * (1 + std::abs(sigma_c_max)));
   Eigen::VectorXd start(6 + nl);
   start.head(5) = xe.head(5);

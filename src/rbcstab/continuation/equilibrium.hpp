@@ -16,7 +16,7 @@
 
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/continuation/problem.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/reduced_model.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {

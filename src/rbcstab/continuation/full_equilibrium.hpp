@@ -35,7 +35,7 @@
 
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/continuation/problem.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/full_model.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {

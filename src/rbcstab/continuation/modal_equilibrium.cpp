@@ -51,10 +51,7 @@ ModalCoefficients modal_coefficients(const Parameters& q, int L, double w0) {
   c.L = L;
   c.inv_Lambda = 1 / q.Lambda();
   c.kappa_w0 = q.inv_Lambda_S() * w0;
-  for (int l = 2; l <= L; ++l) {
-    c.slope.push_back(Gamma2(q.lambda, l) / q.B);
-    c.ups0.push_back(Upsilon(q, l, 0.0));
-  }
+  for (int l = 2; l <= L; ++l) c.Upsilon.push_back(Upsilon_l(q, l));
   return c;
 }
 
@@ -86,19 +83,21 @@ Eigen::VectorXd steady_forcing(const ModalCoefficients& c, Eigen::Index n) {
 
 }  // namespace
 
-double modal_sigma(const ModalCoefficients& c, const Eigen::Ref<const Eigen::VectorXd>& x,
-                   const Eigen::Ref<const Eigen::VectorXd>& h) {
-  const double q2 = x.head(5).squaredNorm();
-  // x.h: the forcing's work on the sphere.
-  double P = q2 * c.ups0[0] + x.dot(h);
-  double D = q2 * c.slope[0];
+AreaBalance modal_area_balance(const ModalCoefficients& c, const Eigen::Ref<const Eigen::VectorXd>& x,
+                               const Eigen::Ref<const Eigen::VectorXd>& h) {
+  AreaBalance b;
+  b.add_mode(c.rate(2), x.head(5).squaredNorm());
+  b.add_work(x.dot(h));  // the forcing's work on the sphere
   for (int l = 3; l <= c.L; ++l) {
     const Eigen::Index i = ModalEquilibriumProblem::index_of_mode(l);
-    const double ql = x[i] * x[i];
-    P += ql * c.ups0[static_cast<std::size_t>(l - 2)];
-    D += ql * c.slope[static_cast<std::size_t>(l - 2)];
+    b.add_mode(c.rate(l), x[i] * x[i]);
   }
-  return -P / D;
+  return b;
+}
+
+double modal_sigma(const ModalCoefficients& c, const Eigen::Ref<const Eigen::VectorXd>& x,
+                   const Eigen::Ref<const Eigen::VectorXd>& h) {
+  return modal_area_balance(c, x, h).sigma();
 }
 
 double modal_dynamics(const ModalCoefficients& c, const Eigen::Ref<const Eigen::VectorXd>& x,
@@ -120,7 +119,8 @@ double modal_dynamics(const ModalCoefficients& c, const Eigen::Ref<const Eigen::
 void modal_dynamics_jacobian(const ModalCoefficients& c, const Eigen::Ref<const Eigen::VectorXd>& x,
                              const Eigen::Ref<const Eigen::VectorXd>& h, double omega_v, Eigen::MatrixXd& DF) {
   const Eigen::Index n = x.size();
-  const double s = modal_sigma(c, x, h);
+  const AreaBalance b = modal_area_balance(c, x, h);
+  const double s = b.sigma();
   DF.setZero(n, n);
   const double Y2 = c.upsilon(2, s);
   for (Eigen::Index i = 0; i < 5; ++i) DF(i, i) = Y2;
@@ -128,22 +128,21 @@ void modal_dynamics_jacobian(const ModalCoefficients& c, const Eigen::Ref<const 
   DF(1, 0) = 1;
   DF(3, 4) = -omega_v;
   DF(4, 3) = omega_v;
-  // From sigma = -P/D: grad sigma = -(grad P + sigma grad D)/D = -(2 x_i Y_i + h_i)/D.
+  // DF += u grad(sigma)^T, u = dF/dsigma = slope_l x_i; grad sigma from the sums (dq_l/dx_i = 2 x_i).
   Eigen::VectorXd u(n), grad(n);
-  double D = x.head(5).squaredNorm() * c.slope[0];
+  const GrowthRate& R2 = c.rate(2);
   for (Eigen::Index i = 0; i < 5; ++i) {
-    u[i] = c.slope[0] * x[i];
-    grad[i] = 2 * x[i] * Y2 + h[i];
+    u[i] = R2.slope * x[i];
+    grad[i] = b.sigma_change(2 * x[i] * R2(0.0) + h[i], 2 * x[i] * R2.slope);
   }
   for (int l = 3; l <= c.L; ++l) {
     const Eigen::Index i = ModalEquilibriumProblem::index_of_mode(l);
-    const double sl = c.slope[static_cast<std::size_t>(l - 2)];
-    DF(i, i) = c.upsilon(l, s);
-    u[i] = sl * x[i];
-    grad[i] = 2 * x[i] * c.upsilon(l, s) + h[i];
-    D += x[i] * x[i] * sl;
+    const GrowthRate& Rl = c.rate(l);
+    DF(i, i) = Rl(s);
+    u[i] = Rl.slope * x[i];
+    grad[i] = b.sigma_change(2 * x[i] * Rl(0.0) + h[i], 2 * x[i] * Rl.slope);
   }
-  DF -= u * grad.transpose() / D;
+  DF += u * grad.transpose();
 }
 
 double ModalEquilibriumProblem::sigma(const ModalCoefficients& c, const Eigen::VectorXd& x) {
@@ -270,7 +269,7 @@ void ModalBranchPointCurve::residual(const Eigen::VectorXd& X, double p2, Eigen:
   R.resize(6);
   R.head(5) = F2 + (x.squaredNorm() - 1) * x.head(5);
   // Upsilon_l / |slope_l| = sigma - sigma_l^c: the same zero, scaled to O(sigma).
-  R[5] = c.upsilon(l_, s) / std::abs(c.slope[static_cast<std::size_t>(l_ - 2)]);
+  R[5] = c.upsilon(l_, s) / std::abs(c.rate(l_).slope);
 }
 
 Eigen::VectorXcd ModalBranchPointCurve::spectrum(const Eigen::VectorXd& X, double p2) const {

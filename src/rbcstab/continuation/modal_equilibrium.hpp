@@ -32,7 +32,9 @@
 
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/continuation/problem.hpp"
+#include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/scene.hpp"
+#include "rbcstab/model/tension.hpp"
 
 namespace rbcstab {
 
@@ -42,9 +44,9 @@ struct ModalCoefficients {
   int L = 2;
   double inv_Lambda = 0;     // 1/Lambda: the shear drive of z
   double kappa_w0 = 0;       // kappa w0: the rest shape's pull on w
-  std::vector<double> slope;  // dUpsilon_l/dsigma = Gamma2/B, index l - 2
-  std::vector<double> ups0;   // Upsilon_l(0), index l - 2 (Upsilon_l(sigma) = ups0 + slope sigma)
-  double upsilon(int l, double sigma) const { return ups0[static_cast<std::size_t>(l - 2)] + slope[static_cast<std::size_t>(l - 2)] * sigma; }
+  std::vector<GrowthRate> Upsilon;  // Upsilon_l, index l - 2
+  const GrowthRate& rate(int l) const { return Upsilon[static_cast<std::size_t>(l - 2)]; }
+  double upsilon(int l, double sigma) const { return rate(l)(sigma); }
 };
 
 // The coefficients at a parameter set for modes 2..L, with the rest shape's pull kappa w0 (w0 = +-1).
@@ -56,12 +58,15 @@ ModalCoefficients modal_coefficients(const Parameters& q, int L, double w0);
 // with sigma from the area constraint x.F = 0 (linear in sigma, denominator < 0 for x != 0).
 // Shared by equilibria (h = (0, -1/Lambda, kappa w0, 0, ...), omega_v = 1/2) and the forced orbits
 // of modal_orbit.hpp (h(t)).
+// The area balance (model/tension.hpp) in these coordinates: Delta_l/Delta = q_l, work x.h.
+AreaBalance modal_area_balance(const ModalCoefficients& c, const Eigen::Ref<const Eigen::VectorXd>& x,
+                               const Eigen::Ref<const Eigen::VectorXd>& h);
 double modal_sigma(const ModalCoefficients& c, const Eigen::Ref<const Eigen::VectorXd>& x,
                    const Eigen::Ref<const Eigen::VectorXd>& h);
 // Writes F (sized like x) and returns sigma.
 double modal_dynamics(const ModalCoefficients& c, const Eigen::Ref<const Eigen::VectorXd>& x,
                       const Eigen::Ref<const Eigen::VectorXd>& h, double omega_v, Eigen::Ref<Eigen::VectorXd> F);
-// DF = dF/dx = diag(Y) + R - u grad(sigma)^T with u_i = slope_i x_i, grad sigma = -(2 x_i Y_i + h_i)/D.
+// DF = dF/dx = diag(Y) + R + u grad(sigma)^T with u_i = slope_i x_i, grad sigma = -(2 x_i Y_i + h_i)/D.
 void modal_dynamics_jacobian(const ModalCoefficients& c, const Eigen::Ref<const Eigen::VectorXd>& x,
                              const Eigen::Ref<const Eigen::VectorXd>& h, double omega_v, Eigen::MatrixXd& DF);
 

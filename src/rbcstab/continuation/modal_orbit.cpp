@@ -128,8 +128,8 @@ const ModalForcedSystem::Slopes& ModalForcedSystem::slopes(double p) const {
   Slopes d;
   for (int l = 2; l <= L_; ++l) {
     const std::size_t k = static_cast<std::size_t>(l - 2);
-    d.dups0.push_back(slope([k](const ModalCoefficients& c) { return c.ups0[k]; }));
-    d.dslope.push_back(slope([k](const ModalCoefficients& c) { return c.slope[k]; }));
+    d.dups0.push_back(slope([k](const ModalCoefficients& c) { return c.Upsilon[k](0.0); }));
+    d.dslope.push_back(slope([k](const ModalCoefficients& c) { return c.Upsilon[k].slope; }));
   }
   d.dinvL = slope([](const ModalCoefficients& c) { return c.inv_Lambda; });
   d.dkappa = slope([](const ModalCoefficients& c) { return c.parameters.inv_Lambda_S(); });
@@ -139,8 +139,8 @@ const ModalForcedSystem::Slopes& ModalForcedSystem::slopes(double p) const {
 
 void ModalForcedSystem::parameter_derivative(double t, std::span<const double> x, double p,
                                              std::span<double> fp) const {
-  // F_i = Y_l(i) x_i + R x + h_i with Y_l = ups0_l + slope_l sigma and sigma = -P/D (modal_dynamics):
-  //   dsigma/dp = -(dP + sigma dD)/D, dP = sum q_l dups0_l + x.dh, dD = sum q_l dslope_l,
+  // F_i = Y_l(i) x_i + R x + h_i with Y_l = Y_l(0) + slope_l sigma and sigma from the sums N, D of
+  // modal_area_balance: dsigma/dp from dN = sum q_l dY_l(0)/dp + x.dh, dD = sum q_l dslope_l/dp,
   //   dF_i/dp = (dups0_l + dslope_l sigma + slope_l dsigma) x_i + dh_i   (h is linear in 1/Lambda, kappa,
   //   and in the rest direction g; beta moves only g).
   const Eigen::Map<const Eigen::VectorXd> X(x.data(), dimension());
@@ -150,19 +150,19 @@ void ModalForcedSystem::parameter_derivative(double t, std::span<const double> x
   Eigen::VectorXd dh = forcing_with(t, d.dinvL, d.dkappa, direction(p));
   // h = kappa g(beta) + shear: dh/dbeta = kappa g'(beta), g' exact (detail/rest_direction.hpp).
   if (free_ == ContinuationParameter::beta) dh += forcing_with(t, 0.0, c.parameters.inv_Lambda_S(), d.dg);
-  const double s = modal_sigma(c, X, h);
-  double D = 0, dP = X.dot(dh), dD = 0;
+  const AreaBalance b = modal_area_balance(c, X, h);
+  const double s = b.sigma();
+  double dN = X.dot(dh), dD = 0;
   for (Eigen::Index i = 0; i < dimension(); ++i) {
     const std::size_t k = static_cast<std::size_t>(mode_of(i) - 2);
     const double q = X[i] * X[i];
-    D += q * c.slope[k];
-    dP += q * d.dups0[k];
+    dN += q * d.dups0[k];
     dD += q * d.dslope[k];
   }
-  const double ds = -(dP + s * dD) / D;
+  const double ds = b.sigma_change(dN, dD);
   for (Eigen::Index i = 0; i < dimension(); ++i) {
     const std::size_t k = static_cast<std::size_t>(mode_of(i) - 2);
-    fp[static_cast<std::size_t>(i)] = (d.dups0[k] + d.dslope[k] * s + c.slope[k] * ds) * X[i] + dh[i];
+    fp[static_cast<std::size_t>(i)] = (d.dups0[k] + d.dslope[k] * s + c.Upsilon[k].slope * ds) * X[i] + dh[i];
   }
 }
 

@@ -2,10 +2,10 @@
 
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
+#include "rbcstab/integrate/quadrature.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/scene.hpp"
 
@@ -13,33 +13,6 @@ namespace rbcstab {
 namespace {
 
 constexpr double kTwoPi = 2 * M_PI;
-
-// The reduced model plus the quadrature state q' = sigma(t, y) (ReducedModel::mu and sigma_from_mu).
-// Integrated with the explicit rk8pd only, which never asks for a Jacobian.
-class SigmaQuadrature final : public System {
- public:
-  explicit SigmaQuadrature(const ReducedModel& m) : m_(m) {}
-  ModelLevel level() const override { return ModelLevel::automatic; }
-  std::size_t dimension() const override { return 4; }
-  int L() const override { return 2; }
-  void rhs(double t, std::span<const double> y, std::span<double> dydt) const override {
-    m_.rhs(t, y.first(3), dydt.first(3));
-    dydt[3] = m_.sigma_from_mu(m_.mu(t, y.first(3)));
-  }
-  void jacobian(double, std::span<const double>, StructuredJacobian&, std::span<double>) const override {
-    throw std::logic_error("sigma quadrature integrates with explicit steppers only");
-  }
-  Observation observe(double, std::span<const double>) const override {
-    throw std::logic_error("sigma quadrature adapter has no observation");
-  }
-  std::vector<double> initial_state() const override { return {}; }
-  ModeAmplitudes amplitudes(double, std::span<const double>) const override {
-    throw std::logic_error("sigma quadrature adapter has no amplitudes");
-  }
-
- private:
-  const ReducedModel& m_;
-};
 
 double fd_step(double v) { return std::cbrt(std::numeric_limits<double>::epsilon()) * (1 + std::abs(v)); }
 
@@ -77,7 +50,7 @@ Parameters ModalOrbitBranchPointCurve::parameters(double p1, double p2) const {
 double ModalOrbitBranchPointCurve::segment_integral(const ReducedModel& m, const Eigen::Vector3d& x, int j) const {
   const int N = options_.segments;
   const double t0 = kTwoPi * j / N, t1 = kTwoPi * (j + 1) / N;
-  const SigmaQuadrature sq(m);
+  const WithQuadratures sq(m, tension_integral(m));  // integrated with rk8pd only
   const double y0[4] = {x[0], x[1], x[2], 0.0};
   const double grid[1] = {t1};
   IntegratorOptions io;
@@ -104,7 +77,7 @@ void ModalOrbitBranchPointCurve::residual(const Eigen::VectorXd& X, double p2, E
   R.resize(n_ + 1);
   R.head(n_) = F;
   // sigma_bar - sigma_l^c = Upsilon_l(sigma_bar) / |dUpsilon_l/dsigma| (Upsilon_l affine in sigma).
-  R[n_] = sigma_bar(X.head(n_), p1, p2) - sigma_critical(l_, parameters(p1, p2).alpha());
+  R[n_] = sigma_bar(X.head(n_), p1, p2) - sigma_c(l_, parameters(p1, p2).alpha());
 }
 
 void ModalOrbitBranchPointCurve::jacobian(const Eigen::VectorXd& X, double p2, Eigen::MatrixXd& J) const {
@@ -131,7 +104,7 @@ void ModalOrbitBranchPointCurve::jacobian(const Eigen::VectorXd& X, double p2, E
   Xp[n_] += h;
   Xm[n_] -= h;
   const auto g = [&](const Eigen::VectorXd& Y) {
-    return sigma_bar(Y.head(n_), Y[n_], p2) - sigma_critical(l_, parameters(Y[n_], p2).alpha());
+    return sigma_bar(Y.head(n_), Y[n_], p2) - sigma_c(l_, parameters(Y[n_], p2).alpha());
   };
   J(n_, n_) = (g(Xp) - g(Xm)) / (2 * h);
 }
@@ -145,10 +118,10 @@ Eigen::VectorXcd ModalOrbitBranchPointCurve::spectrum(const Eigen::VectorXd& X, 
   Eigen::VectorXcd out(red.size() + 2 + (L - 2));
   out.head(red.size()) = red;
   Eigen::Index k = red.size();
-  const double rho2 = std::exp(kTwoPi * Upsilon(q, 2, sb));  // the v~ plane (2 equal real multipliers)
+  const double rho2 = std::exp(kTwoPi * Upsilon_l(q, 2, sb));  // the v~ plane (2 equal real multipliers)
   out[k++] = rho2;
   out[k++] = rho2;
-  for (int l = 3; l <= L; ++l) out[k++] = std::exp(kTwoPi * Upsilon(q, l, sb));
+  for (int l = 3; l <= L; ++l) out[k++] = std::exp(kTwoPi * Upsilon_l(q, l, sb));
   return out;
 }
 
@@ -168,7 +141,7 @@ int ellipsoidal_orbit_critical_mode(const Parameters& q, int L, double sigma_bar
   require_L(L, 3, kMaxL, "a critical mode l >= 3");
   int best = 3;
   for (int l = 4; l <= L; ++l)
-    if (std::abs(Upsilon(q, l, sigma_bar)) < std::abs(Upsilon(q, best, sigma_bar))) best = l;
+    if (std::abs(Upsilon_l(q, l, sigma_bar)) < std::abs(Upsilon_l(q, best, sigma_bar))) best = l;
   return best;
 }
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "rbcstab/core/error.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/full_model.hpp"
 
 namespace rbcstab {
 

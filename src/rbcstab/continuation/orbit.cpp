@@ -13,6 +13,7 @@
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
+#include "rbcstab/integrate/quadrature.hpp"
 
 namespace rbcstab {
 
@@ -23,27 +24,24 @@ constexpr double kTwoPi = 2 * M_PI;
 // Central-difference step in p: cube root of eps balances truncation against rounding.
 double fd_step(double v) { return std::cbrt(std::numeric_limits<double>::epsilon()) * (1 + std::abs(v)); }
 
-// A ForcedSystem at fixed p seen as a System for integrate(), optionally augmented with
-//   variational: Phi' = J Phi (n x n, column-major) and s' = J s + f_p (the parameter sensitivity);
-//   angle:       theta' = (x0 f1 - x1 f0) / (x0^2 + x1^2), the continuous argument of z = x0 + i x1.
+// A ForcedSystem at fixed p seen as a System for integrate(), optionally augmented with the
+// variational equations Phi' = J Phi (n x n, column-major) and s' = J s + f_p (the parameter sensitivity).
 // Only explicit steppers are used (rk8pd), which never ask for the Jacobian of the augmented system,
 // so jacobian/observe/amplitudes are not part of this adapter's contract and throw logic_error.
 class Augmented final : public System {
  public:
-  enum class Mode { plain, variational, angle };
+  enum class Mode { plain, variational };
   Augmented(const ForcedSystem& s, double p, Mode mode) : s_(s), p_(p), mode_(mode), n_(s.dimension()) {}
   ModelLevel level() const override { return ModelLevel::automatic; }
   std::size_t dimension() const override {
     const auto n = static_cast<std::size_t>(n_);
-    return mode_ == Mode::plain ? n : mode_ == Mode::angle ? n + 1 : n + n * n + n;
+    return mode_ == Mode::plain ? n : n + n * n + n;
   }
   int L() const override { return 2; }
   void rhs(double t, std::span<const double> y, std::span<double> dydt) const override {
     const auto n = static_cast<std::size_t>(n_);
     s_.rhs(t, y.first(n), p_, dydt.first(n));
-    if (mode_ == Mode::angle) {
-      dydt[n] = (y[0] * dydt[1] - y[1] * dydt[0]) / (y[0] * y[0] + y[1] * y[1]);
-    } else if (mode_ == Mode::variational) {
+    if (mode_ == Mode::variational) {
       s_.jacobian(t, y.first(n), p_, J_);
       Eigen::Map<const Eigen::MatrixXd> Phi(y.data() + n, n_, n_);
       Eigen::Map<Eigen::MatrixXd>(dydt.data() + n, n_, n_).noalias() = J_ * Phi;
@@ -72,6 +70,15 @@ class Augmented final : public System {
   mutable Eigen::MatrixXd J_;
   mutable Eigen::VectorXd fp_;
 };
+
+// theta' = (x0 f1 - x1 f0) / (x0^2 + x1^2): the continuous argument of z = x0 + i x1.
+Quadrature winding_angle() {
+  Quadrature q;
+  q.rate = [](double, std::span<const double> x, std::span<const double> f, std::span<double> rate) {
+    rate[0] = (x[0] * f[1] - x[1] * f[0]) / (x[0] * x[0] + x[1] * x[1]);
+  };
+  return q;
+}
 
 IntegratorOptions integrator_options(const OrbitOptions& o) {
   IntegratorOptions io;
@@ -382,8 +389,8 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p) c
   const auto n = static_cast<std::size_t>(n_);
   const int S = o_.samples_per_segment;
   const double h = kTwoPi / (N_ * S);
-  const Augmented with_angle(sys_, p, Augmented::Mode::angle);
   const Augmented plain(sys_, p, Augmented::Mode::plain);
+  const WithQuadratures with_angle(plain, winding_angle());
   const IntegratorOptions io = integrator_options(o_);
   const bool norm = sys_.conserves_norm();
   auto r_of = [&](const Eigen::VectorXd& x) { return std::hypot(x[0], x[1]) / (norm ? x.norm() : 1.0); };

@@ -52,15 +52,14 @@ std::complex<double> shear_drive(double lambda, int l, int m) {
   return {0.0, m > 0 ? -magnitude : magnitude};
 }
 
-double Upsilon(const Parameters& p, int l, double sigma) {
-  const double Pi = Pi_l(l);
-  return Gamma2(p.lambda, l) / p.B * (Pi + sigma + 4 * p.alpha() / Pi);
-}
-
-double sigma_critical(int l, double alpha) {
+double sigma_c(int l, double alpha) {
   const double Pi = Pi_l(l);
   return -(Pi + 4 * alpha / Pi);
 }
+
+GrowthRate Upsilon_l(const Parameters& p, int l) { return {Gamma2(p.lambda, l) / p.B, sigma_c(l, p.alpha())}; }
+
+double Upsilon_l(const Parameters& p, int l, double sigma) { return Upsilon_l(p, l)(sigma); }
 
 std::vector<double> wigner_column(int l, double beta) {
   require(l >= 0, "l", l, "an integer >= 0");

@@ -21,11 +21,23 @@ double a_l(int l);
 double Pi_l(int l);
 // Shear drive C_{l,m}: only C_{2,+-2} = -+ 4 i sqrt(30 pi) / (32 + 23 lambda) are non-zero.
 std::complex<double> shear_drive(double lambda, int l, int m);
-// Growth rate Upsilon_l(sigma) = [Gamma_1 + sigma Gamma_2]/B + Gamma_3/C    (Eq. eom_sup_ups)
-// evaluated as (Gamma_2/B)(Pi + sigma + 4 alpha/Pi), which is exact and stays finite for C = inf.
-double Upsilon(const Parameters& p, int l, double sigma);
-// Critical tension sigma_l^c = -(Pi + 4 alpha / Pi): mode l grows iff sigma < sigma_l^c.
-double sigma_critical(int l, double alpha);
+// Critical tension sigma_l^c = -(Pi + 4 alpha/Pi): mode l grows iff sigma < sigma_l^c       (Eq. inst)
+double sigma_c(int l, double alpha);
+
+// Growth rate of mode l (Eq. eom_sup_ups) in its affine form. Eq. gammas gives Gamma_1/Gamma_2 = Pi and
+// Gamma_3/Gamma_2 = 4/Pi exactly, so
+//   Upsilon_l(sigma) = [Gamma_1 + sigma Gamma_2]/B + Gamma_3/C = (Gamma_2/B)(Pi + sigma + 4 alpha/Pi)
+//                    = slope (sigma - sigma_l^c),
+// finite for C = inf. Hot loops keep the two numbers per mode instead of re-evaluating the rationals.
+struct GrowthRate {
+  double slope = 0;    // dUpsilon_l/dsigma = Gamma_2^l / B (< 0)
+  double sigma_c = 0;  // its zero, sigma_l^c
+  double operator()(double sigma) const { return slope * (sigma - sigma_c); }
+  // The inverse: the tension at which the rate equals `rate` (the reduced model's sigma_R from mu = Upsilon_2).
+  double sigma_at(double rate) const { return rate / slope + sigma_c; }
+};
+GrowthRate Upsilon_l(const Parameters& p, int l);
+double Upsilon_l(const Parameters& p, int l, double sigma);  // = Upsilon_l(p, l)(sigma)
 
 // Wigner column D^(l)_{m,0}(beta), m = -l..l (index m + l), in the paper's convention
 // (Appendix A: D^(2)_{1,0} = +sqrt(3/2) cos(beta) sin(beta)), i.e.

@@ -1,26 +1,13 @@
+#include "rbcstab/model/full_model.hpp"
+
 #include <cmath>
 
-#include "rbcstab/model/coefficients.hpp"
-#include "rbcstab/model/levels.hpp"
-
 namespace rbcstab {
-
-double ModeAmplitudes::excess_area(int l) const {
-  double s = 0;
-  for (int m = -l; m <= l; ++m) s += std::norm(at(l, m));
-  return a_l(l) * s;
-}
-
-double ModeAmplitudes::total_excess_area() const {
-  double s = 0;
-  for (int l = 2; l <= L; ++l) s += excess_area(l);
-  return s;
-}
 
 FullModel::FullModel(const Parameters& p, const InitialState& init) : p_(p), L_(init.f.L) {
   p_.validate();
   for (int l = 2; l <= L_; ++l)
-    modes_.push_back({Gamma1(p.lambda, l), Gamma2(p.lambda, l), Gamma3(p.lambda, l), a_l(l)});
+    modes_.push_back({Upsilon_l(p, l), Gamma3(p.lambda, l) * p.inv_C(), a_l(l)});
   const std::size_t n = ModeAmplitudes::count(L_);
   C_.resize(n);
   g0_.assign(n, 0.0);
@@ -40,7 +27,7 @@ std::vector<double> FullModel::initial_state() const { return y0_; }
 void FullModel::drive(double t, std::vector<std::complex<double>>& S) const {
   S.resize(C_.size());
   for (int l = 2; l <= L_; ++l) {
-    const double G3C = modes_[l - 2].Gamma3 * p_.inv_C();
+    const double G3C = modes_[l - 2].G3C;
     for (int m = -l; m <= l; ++m) {
       const std::size_t k = ModeAmplitudes::index(l, m);
       // g_{l,m}(t) = g_{l,m}(0) e^{i m t / 2}                              (Eq. eom_g)
@@ -50,47 +37,36 @@ void FullModel::drive(double t, std::vector<std::complex<double>>& S) const {
   }
 }
 
-namespace {
-struct FullSums {
-  double N = 0, D = 0;
-};
-// sigma = -N / D with N = sum_l (Gamma1 + alpha Gamma3) Delta_l + B Re sum a_l S conj(f),
-// D = sum_l Gamma2 Delta_l (design/model.md section 1; D < 0 while Delta > 0).
-template <class Modes>
-FullSums full_sums(const Modes& modes, int L, double alpha, double B, std::span<const double> y,
-                   const std::vector<std::complex<double>>& S) {
-  FullSums s;
-  for (int l = 2; l <= L; ++l) {
-    const auto& md = modes[l - 2];
-    double norm2 = 0, drive = 0;
+// Eq. st from the sums of tension.hpp: Delta_l = a_l sum_m |f_{l,m}|^2 and W = Re sum a_l S conj(f).
+AreaBalance FullModel::balance(std::span<const double> y, const std::vector<std::complex<double>>& S) const {
+  AreaBalance b;
+  for (int l = 2; l <= L_; ++l) {
+    const ModeData& md = modes_[l - 2];
+    double norm2 = 0, work = 0;
     for (int m = -l; m <= l; ++m) {
       const std::size_t k = ModeAmplitudes::index(l, m);
       const double re = y[2 * k], im = y[2 * k + 1];
       norm2 += re * re + im * im;
-      drive += S[k].real() * re + S[k].imag() * im;
+      work += S[k].real() * re + S[k].imag() * im;
     }
-    const double Delta_l = md.a * norm2;
-    s.N += (md.Gamma1 + alpha * md.Gamma3) * Delta_l + B * md.a * drive;
-    s.D += md.Gamma2 * Delta_l;
+    b.add_mode(md.Upsilon, md.a * norm2);
+    b.add_work(md.a * work);
   }
-  return s;
+  return b;
 }
-}  // namespace
 
 double FullModel::sigma(double t, std::span<const double> y) const {
   std::vector<std::complex<double>> S;
   drive(t, S);
-  const FullSums s = full_sums(modes_, L_, p_.alpha(), p_.B, y, S);
-  return -s.N / s.D;
+  return balance(y, S).sigma();
 }
 
 void FullModel::rhs(double t, std::span<const double> y, std::span<double> dydt) const {
   std::vector<std::complex<double>> S;
   drive(t, S);
-  const FullSums s = full_sums(modes_, L_, p_.alpha(), p_.B, y, S);
-  const double sigma = -s.N / s.D;
+  const double sigma = balance(y, S).sigma();
   for (int l = 2; l <= L_; ++l) {
-    const double ups = Upsilon(p_, l, sigma);
+    const double ups = modes_[l - 2].Upsilon(sigma);
     for (int m = -l; m <= l; ++m) {
       const std::size_t k = ModeAmplitudes::index(l, m);
       const double re = y[2 * k], im = y[2 * k + 1], om = 0.5 * m;
@@ -104,17 +80,16 @@ void FullModel::rhs(double t, std::span<const double> y, std::span<double> dydt)
 void FullModel::jacobian(double t, std::span<const double> y, StructuredJacobian& J, std::span<double> dfdt) const {
   std::vector<std::complex<double>> S;
   drive(t, S);
-  const FullSums s = full_sums(modes_, L_, p_.alpha(), p_.B, y, S);
-  const double sigma = -s.N / s.D;
-  const double alpha = p_.alpha();
+  const AreaBalance b = balance(y, S);
+  const double sigma = b.sigma();
   J.resize(dimension());
-  // dS/dt = -Gamma3/C (i m/2) g(t); d sigma/dt = -B sum a Re(dS/dt conj f) / D.
-  double dsigma_dt_num = 0;
+  // v = dF/dsigma, w = grad sigma (tension.hpp): dDelta_l/dy = 2 a_l y, dW/dy = a_l S.
+  // Explicit time dependence: dS/dt = -Gamma3/C (i m/2) g(t), so dsigma/dt follows from dW/dt alone.
+  double dW_dt = 0;
   std::vector<std::complex<double>> dS(S.size());
   for (int l = 2; l <= L_; ++l) {
-    const auto& md = modes_[l - 2];
-    const double ups = Upsilon(p_, l, sigma);
-    const double dups = md.Gamma2 / p_.B;
+    const ModeData& md = modes_[l - 2];
+    const double ups = md.Upsilon(sigma), ups0 = md.Upsilon(0.0), dups = md.Upsilon.slope;
     for (int m = -l; m <= l; ++m) {
       const std::size_t k = ModeAmplitudes::index(l, m), i = 2 * k;
       const double re = y[i], im = y[i + 1], om = 0.5 * m;
@@ -125,16 +100,14 @@ void FullModel::jacobian(double t, std::span<const double> y, StructuredJacobian
       J.lower[i] = om;
       J.v[i] = dups * re;
       J.v[i + 1] = dups * im;
-      // grad sigma = -(grad N + sigma grad D) / D
-      const double cN = 2 * md.a * (md.Gamma1 + alpha * md.Gamma3), cD = 2 * md.a * md.Gamma2;
-      J.w[i] = -((cN + sigma * cD) * re + p_.B * md.a * S[k].real()) / s.D;
-      J.w[i + 1] = -((cN + sigma * cD) * im + p_.B * md.a * S[k].imag()) / s.D;
+      J.w[i] = b.sigma_change(2 * md.a * re * ups0 + md.a * S[k].real(), 2 * md.a * re * dups);
+      J.w[i + 1] = b.sigma_change(2 * md.a * im * ups0 + md.a * S[k].imag(), 2 * md.a * im * dups);
       const std::complex<double> g = g0_[k] == 0.0 ? 0.0 : g0_[k] * std::polar(1.0, 0.5 * m * t);  // as in drive()
-      dS[k] = -md.Gamma3 * p_.inv_C() * std::complex<double>(0, om) * g;
-      dsigma_dt_num += md.a * (dS[k].real() * re + dS[k].imag() * im);
+      dS[k] = -md.G3C * std::complex<double>(0, om) * g;
+      dW_dt += md.a * (dS[k].real() * re + dS[k].imag() * im);
     }
   }
-  const double dsigma_dt = -p_.B * dsigma_dt_num / s.D;
+  const double dsigma_dt = b.sigma_change(dW_dt, 0.0);
   for (std::size_t k = 0; k < dS.size(); ++k) {
     dfdt[2 * k] = dS[k].real() + J.v[2 * k] * dsigma_dt;
     dfdt[2 * k + 1] = dS[k].imag() + J.v[2 * k + 1] * dsigma_dt;

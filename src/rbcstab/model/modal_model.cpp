@@ -1,36 +1,28 @@
+#include "rbcstab/model/modal_model.hpp"
+
 #include <cmath>
 
 #include "rbcstab/core/error.hpp"
-#include "rbcstab/model/coefficients.hpp"
-#include "rbcstab/model/levels.hpp"
 
 namespace rbcstab {
 
 // State layout: y[0] = f20 (real by reality), y[1..2] = f21, y[3..4] = f22, y[5+j] = ln Delta_l
 // for l = active_[j]. Exactness: with g_{l>=3} = 0, S_{l,m} = 0 for l >= 3 and every f_{l,m}
-// obeys f' = (i m/2 + Upsilon_l) f, so Delta_l' = 2 Upsilon_l Delta_l (design/model.md section 2).
+// obeys f' = (i m/2 + Upsilon_l) f, so Delta_l' = 2 Upsilon_l Delta_l (docs/theory.md, "Model levels").
 ModalModel::ModalModel(const Parameters& p, const InitialState& init) : p_(p), L_(init.f.L), f0_(init.f) {
   p_.validate();
   for (int l = 3; l <= init.g.L; ++l)
     if (init.g.excess_area(l) != 0)
       throw InvalidArgument("model",
                             "model = modal cannot hold a stress-free shape with l >= 3 content: use full or auto");
-  const double alpha = p.alpha();
-  auto add_mode = [&](int l) {
-    G1a3_.push_back(Gamma1(p.lambda, l) + alpha * Gamma3(p.lambda, l));
-    G2_.push_back(Gamma2(p.lambda, l));
-    // Upsilon_l(sigma) = (Gamma2/B)(Pi + sigma + 4 alpha/Pi), precomputed for the hot loop.
-    ups_slope_.push_back(Gamma2(p.lambda, l) / p.B);
-    ups_shift_.push_back(Pi_l(l) + 4 * alpha / Pi_l(l));
-  };
-  add_mode(2);
+  Upsilon_.push_back(Upsilon_l(p, 2));
   y0_ = {init.f.at(2, 0).real(), init.f.at(2, 1).real(), init.f.at(2, 1).imag(), init.f.at(2, 2).real(),
          init.f.at(2, 2).imag()};
   for (int l = 3; l <= L_; ++l) {
     const double Dl = init.f.excess_area(l);
     if (Dl > 0) {  // a mode with no area stays at zero: it is not carried
       active_.push_back(l);
-      add_mode(l);
+      Upsilon_.push_back(Upsilon_l(p, l));
       y0_.push_back(std::log(Dl));
     }
   }
@@ -50,49 +42,49 @@ void ModalModel::drive(double t, std::complex<double> S[3]) const {
   S[2] = -G3C2_ * g20_[2] * e2 + C22_;
 }
 
-ModalModel::Sums ModalModel::sums(double, std::span<const double> y, const std::complex<double> S[3]) const {
+// Eq. st from the sums of tension.hpp.
+AreaBalance ModalModel::balance(std::span<const double> y, const std::complex<double> S[3]) const {
   const double a2 = 2;
   const double Delta2 = a2 * (y[0] * y[0] + 2 * (y[1] * y[1] + y[2] * y[2] + y[3] * y[3] + y[4] * y[4]));
   // Re sum_m S_{2,m} conj(f_{2,m}): the -m terms equal the +m ones by reality.
-  const double drive = S[0].real() * y[0] + 2 * (S[1].real() * y[1] + S[1].imag() * y[2]) +
-                       2 * (S[2].real() * y[3] + S[2].imag() * y[4]);
-  Sums s{G1a3_[0] * Delta2 + p_.B * a2 * drive, G2_[0] * Delta2, Delta2};
-  for (std::size_t j = 0; j < active_.size(); ++j) {
-    const double Dl = area_of(y[5 + j]);
-    s.N += G1a3_[j + 1] * Dl;
-    s.D += G2_[j + 1] * Dl;
-  }
-  return s;
+  const double work = S[0].real() * y[0] + 2 * (S[1].real() * y[1] + S[1].imag() * y[2]) +
+                      2 * (S[2].real() * y[3] + S[2].imag() * y[4]);
+  AreaBalance b;
+  b.add_mode(Upsilon_[0], Delta2);
+  b.add_work(a2 * work);
+  // Modes below the cut add nothing (area_of): skipping them keeps the hot loop free of work and calls.
+  for (std::size_t j = 0; j < active_.size(); ++j)
+    if (!(y[5 + j] < u_cut_)) b.add_mode(Upsilon_[j + 1], std::exp(y[5 + j]));
+  return b;
 }
 
 double ModalModel::sigma(double t, std::span<const double> y) const {
   std::complex<double> S[3];
   drive(t, S);
-  const Sums s = sums(t, y, S);
-  return -s.N / s.D;
+  return balance(y, S).sigma();
 }
 
 void ModalModel::rhs(double t, std::span<const double> y, std::span<double> dydt) const {
   std::complex<double> S[3];
   drive(t, S);
-  const Sums s = sums(t, y, S);
-  const double sigma = -s.N / s.D;
-  const double ups2 = ups_slope_[0] * (ups_shift_[0] + sigma);
+  const double sigma = balance(y, S).sigma();
+  const double ups2 = Upsilon_[0](sigma);
   dydt[0] = ups2 * y[0] + S[0].real();
   dydt[1] = ups2 * y[1] - 0.5 * y[2] + S[1].real();
   dydt[2] = 0.5 * y[1] + ups2 * y[2] + S[1].imag();
   dydt[3] = ups2 * y[3] - y[4] + S[2].real();
   dydt[4] = y[3] + ups2 * y[4] + S[2].imag();
-  for (std::size_t j = 0; j < active_.size(); ++j) dydt[5 + j] = 2 * ups_slope_[j + 1] * (ups_shift_[j + 1] + sigma);
+  for (std::size_t j = 0; j < active_.size(); ++j) dydt[5 + j] = 2 * Upsilon_[j + 1](sigma);
 }
 
 void ModalModel::jacobian(double t, std::span<const double> y, StructuredJacobian& J, std::span<double> dfdt) const {
   std::complex<double> S[3];
   drive(t, S);
-  const Sums s = sums(t, y, S);
-  const double sigma = -s.N / s.D;
-  const double ups2 = ups_slope_[0] * (ups_shift_[0] + sigma);
-  const double a2 = 2, B = p_.B;
+  const AreaBalance b = balance(y, S);
+  const double sigma = b.sigma();
+  const GrowthRate& Y2 = Upsilon_[0];
+  const double ups2 = Y2(sigma), ups2_0 = Y2(0.0);
+  const double a2 = 2;
   J.resize(dimension());
   J.diag[0] = ups2;
   for (int i : {1, 3}) {
@@ -102,25 +94,25 @@ void ModalModel::jacobian(double t, std::span<const double> y, StructuredJacobia
     J.upper[i] = i == 1 ? -0.5 : -1.0;
     J.lower[i] = -J.upper[i];
   }
-  // v = dF/d sigma; w = grad sigma = -(grad N + sigma grad D)/D.
-  const double dups2 = G2_[0] / B;
+  // v = dF/d sigma; w = grad sigma from the sums (tension.hpp).
   const double dDelta2[5] = {2 * a2 * y[0], 4 * a2 * y[1], 4 * a2 * y[2], 4 * a2 * y[3], 4 * a2 * y[4]};
-  const double dDrive[5] = {S[0].real(), 2 * S[1].real(), 2 * S[1].imag(), 2 * S[2].real(), 2 * S[2].imag()};
+  const double dWork[5] = {S[0].real(), 2 * S[1].real(), 2 * S[1].imag(), 2 * S[2].real(), 2 * S[2].imag()};
   for (int i = 0; i < 5; ++i) {
-    J.v[i] = dups2 * y[i];
-    J.w[i] = -((G1a3_[0] + sigma * G2_[0]) * dDelta2[i] + B * a2 * dDrive[i]) / s.D;
+    J.v[i] = Y2.slope * y[i];
+    J.w[i] = b.sigma_change(ups2_0 * dDelta2[i] + a2 * dWork[i], Y2.slope * dDelta2[i]);
   }
   for (std::size_t j = 0; j < active_.size(); ++j) {
-    const double Dl = area_of(y[5 + j]);
-    J.v[5 + j] = 2 * G2_[j + 1] / B;
-    J.w[5 + j] = -(G1a3_[j + 1] + sigma * G2_[j + 1]) * Dl / s.D;
+    const GrowthRate& Yl = Upsilon_[j + 1];
+    const double Dl = area_of(y[5 + j]);  // dDelta_l/du_l
+    J.v[5 + j] = 2 * Yl.slope;
+    J.w[5 + j] = b.sigma_change(Yl(0.0) * Dl, Yl.slope * Dl);
   }
   // Explicit time dependence through g_{2,m}(t): dS/dt = -Gamma3/C (i m/2) g(t).
   std::complex<double> dS[3];
   for (int m = 0; m <= 2; ++m) dS[m] = -G3C2_ * std::complex<double>(0, 0.5 * m) * g20_[m] * std::polar(1.0, 0.5 * m * t);
-  const double dnum = dS[0].real() * y[0] + 2 * (dS[1].real() * y[1] + dS[1].imag() * y[2]) +
-                      2 * (dS[2].real() * y[3] + dS[2].imag() * y[4]);
-  const double dsigma_dt = -B * a2 * dnum / s.D;
+  const double dwork = dS[0].real() * y[0] + 2 * (dS[1].real() * y[1] + dS[1].imag() * y[2]) +
+                       2 * (dS[2].real() * y[3] + dS[2].imag() * y[4]);
+  const double dsigma_dt = b.sigma_change(a2 * dwork, 0.0);
   const double dSflat[5] = {dS[0].real(), dS[1].real(), dS[1].imag(), dS[2].real(), dS[2].imag()};
   for (std::size_t i = 0; i < dimension(); ++i) dfdt[i] = (i < 5 ? dSflat[i] : 0.0) + J.v[i] * dsigma_dt;
 }

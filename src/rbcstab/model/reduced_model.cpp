@@ -1,14 +1,16 @@
+#include "rbcstab/model/reduced_model.hpp"
+
 #include <cmath>
 
-#include "rbcstab/model/coefficients.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/tension.hpp"
 
 namespace rbcstab {
 
 // State y = (Re z, Im z, w) with z = r e^{-i Psi} = f22 sqrt(2 a2/Delta), w = -f20 sqrt(a2/Delta).
 // The multiplier mu keeps Q = |z|^2 + w^2 exactly constant:  mu Q = Im(z)/Lambda - kappa (Re(conj(z) z0) + w w0),
 // which on Q = 1 is Upsilon_2 of Eq. red_eqs; r' and Psi' of Eq. red_eqs follow from z' by the chain rule.
-ReducedModel::ReducedModel(const Parameters& p, const InitialState& init) : p_(p), L_(init.f.L) {
+ReducedModel::ReducedModel(const Parameters& p, const InitialState& init)
+    : p_(p), L_(init.f.L), Upsilon2_(Upsilon_l(p, 2)) {
   p_.validate();
   const double a2 = 2;
   const double Delta2 = init.f.excess_area(2);
@@ -35,16 +37,17 @@ ReducedModel::ReducedModel(const Parameters& p, const InitialState& init) : p_(p
 
 std::complex<double> ReducedModel::z0(double t) const { return z00_ * std::polar(1.0, t); }
 
-double ReducedModel::mu(double t, std::span<const double> y) const {
+// The area balance of tension.hpp with the multiplier mu as the one rate (slope 1, zero 0):
+// (1/2) Q' = mu Q + y.h with h = (kappa z0, -1/Lambda, kappa w0) (the rotation does no work).
+AreaBalance ReducedModel::balance(double t, std::span<const double> y) const {
   const std::complex<double> zz0 = z0(t);
-  const double Q = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
-  return (inv_Lambda_ * y[1] - kappa_ * (y[0] * zz0.real() + y[1] * zz0.imag() + y[2] * w0_)) / Q;
+  AreaBalance b;
+  b.add_mode(GrowthRate{1.0, 0.0}, y[0] * y[0] + y[1] * y[1] + y[2] * y[2]);
+  b.add_work(kappa_ * (y[0] * zz0.real() + y[1] * zz0.imag() + y[2] * w0_) - inv_Lambda_ * y[1]);
+  return b;
 }
 
-double ReducedModel::sigma_from_mu(double mu_value) const {
-  // Upsilon_2 = (Gamma2/B)(6 + sigma + 2 alpha/3)
-  return mu_value * p_.B / Gamma2(p_.lambda, 2) - 6 - 4 * p_.alpha() / 6;
-}
+double ReducedModel::mu(double t, std::span<const double> y) const { return balance(t, y).sigma(); }
 
 void ReducedModel::rhs(double t, std::span<const double> y, std::span<double> dydt) const {
   const std::complex<double> zz0 = z0(t);
@@ -56,19 +59,19 @@ void ReducedModel::rhs(double t, std::span<const double> y, std::span<double> dy
 
 void ReducedModel::jacobian(double t, std::span<const double> y, StructuredJacobian& J, std::span<double> dfdt) const {
   const std::complex<double> zz0 = z0(t);
-  const double m = mu(t, y);
-  const double Q = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
+  const AreaBalance b = balance(t, y);
+  const double m = b.sigma();
   J.resize(3);
   J.block_start = {2, 0, 1};
   J.diag = {m, m, m};
   J.upper[0] = -1;
   J.lower[0] = 1;
   J.v = {y[0], y[1], y[2]};
-  const double gradP[3] = {-kappa_ * zz0.real(), inv_Lambda_ - kappa_ * zz0.imag(), -kappa_ * w0_};
-  for (int i = 0; i < 3; ++i) J.w[i] = (gradP[i] - m * 2 * y[i]) / Q;
+  const double dwork[3] = {kappa_ * zz0.real(), kappa_ * zz0.imag() - inv_Lambda_, kappa_ * w0_};
+  for (int i = 0; i < 3; ++i) J.w[i] = b.sigma_change(dwork[i], 2 * y[i]);
   // z0' = i z0
   const double dz0r = -zz0.imag(), dz0i = zz0.real();
-  const double dmu_dt = -kappa_ * (y[0] * dz0r + y[1] * dz0i) / Q;
+  const double dmu_dt = b.sigma_change(kappa_ * (y[0] * dz0r + y[1] * dz0i), 0.0);
   dfdt[0] = kappa_ * dz0r + y[0] * dmu_dt;
   dfdt[1] = kappa_ * dz0i + y[1] * dmu_dt;
   dfdt[2] = y[2] * dmu_dt;

@@ -4,7 +4,9 @@
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/full_model.hpp"
+#include "rbcstab/model/modal_model.hpp"
+#include "rbcstab/model/reduced_model.hpp"
 #include "rbcstab/model/parameter_table.hpp"
 
 namespace rbcstab {

@@ -432,7 +432,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     thresholds["sigma_star"] = number_or_null(-4 * std::sqrt(alpha));  // Pi = 2 sqrt(alpha) (Eq. inst)
     thresholds["l_star"] = number_or_null((-1 + std::sqrt(1 + 8 * std::sqrt(alpha))) / 2);
     nlohmann::json sc;
-    for (int l = 2; l <= sf.scene.L; ++l) sc[std::to_string(l)] = number_or_null(sigma_critical(l, alpha));
+    for (int l = 2; l <= sf.scene.L; ++l) sc[std::to_string(l)] = number_or_null(sigma_c(l, alpha));
     thresholds["sigma_c"] = sc;
     thresholds["note"] = "mode l grows iff sigma < sigma_c[l] = -(Pi + 4 alpha/Pi), Pi = l(l+1)";
 

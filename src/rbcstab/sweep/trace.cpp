@@ -68,7 +68,7 @@ ModeCriteria plane_criteria(const Scene& base, const DiagramSpec& plane, const T
       CriterionSample out;
       out.sigma_R = asymptotic_verdict(s, po, oo).sigma_R;
       out.alpha = s.parameters.alpha();
-      for (int l = 3; l <= s.L; ++l) out.g.push_back(Upsilon(s.parameters, l, out.sigma_R));
+      for (int l = 3; l <= s.L; ++l) out.g.push_back(Upsilon_l(s.parameters, l, out.sigma_R));
       return out;
     };
   } else {
@@ -105,7 +105,7 @@ TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane_spec, con
     c.criterion = criteria.description;
     c.chain = p.chain;
     for (const ZeroSetPoint& q : p.points)
-      c.points.push_back({q.x, q.y, q.l, q.sigma_R, sigma_critical(q.l, q.alpha), q.g});
+      c.points.push_back({q.x, q.y, q.l, q.sigma_R, sigma_c(q.l, q.alpha), q.g});
     res.curves.push_back(std::move(c));
   }
   for (const ZeroSetCorner& k : z.corners) res.corners.push_back({k.x, k.y, k.l_from, k.l_to});

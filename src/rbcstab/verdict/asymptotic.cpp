@@ -149,7 +149,7 @@ AsymptoticVerdict asymptotic_verdict(const Scene& scene, double sigma_R) {
   }
   const double alpha = scene.parameters.alpha();
   v.active_mode = surviving_mode(alpha, scene.L);
-  v.margin = v.sigma_R - sigma_critical(v.active_mode, alpha);
+  v.margin = v.sigma_R - sigma_c(v.active_mode, alpha);
   v.unstable = v.margin < 0;
   v.l = v.unstable ? v.active_mode : 2;
   return v;

@@ -35,7 +35,7 @@ ModePrediction asymptotic_prediction(const Scene& scene, const AsymptoticSigma& 
     return a;
   }
   const double s = sigma.sigma_R;
-  for (int l = 2; l <= scene.L; ++l) a.rate.push_back(Upsilon(p, l, s));
+  for (int l = 2; l <= scene.L; ++l) a.rate.push_back(Upsilon_l(p, l, s));
   a.unstable = unstable_modes(s, p.alpha(), scene.L);
   a.l_Delta = asymptotic_verdict(scene, s).l;
   return a;
