@@ -31,7 +31,7 @@ void SceneOptions::add_to(CLI::App& app) {
   o_T = num("--T", flags.T, "horizon T, in (0, 1e7]");
   o_dt = num("--dt", flags.dt, "output sampling interval, in (0, T]");
   o_model = app.add_option("--model", model, "model level")
-                ->check(CLI::IsMember({"auto", "full", "modal", "reduced"}))
+                ->check(CLI::IsMember(enum_names<ModelLevel>()))
                 ->capture_default_str();
   o_stepper = app.add_option("--stepper", stepper, "time stepper")->check(CLI::IsMember(stepper_names()))->capture_default_str();
   o_rtol = app.add_option("--rtol", rtol, "relative tolerance, in [1e-15, 0.1]")->default_val(io.rtol)->capture_default_str();

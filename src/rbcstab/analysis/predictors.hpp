@@ -1,5 +1,5 @@
 #pragma once
-// Three predictors of a scene's verdict, cheapest first (issue 3 point 3):
+// Three predictors of a scene's verdict, cheapest first (docs/theory.md):
 //  (a) asymptotic: mu_l = Upsilon_l(<sigma_R>) on the reduced attractor (the exact equilibrium for an
 //      out-of-plane scene, else a converged time average of sigma_R along a long ReducedModel run);
 //  (b) finite horizon: G_l(T) = int_0^T Upsilon_l(sigma_R(t)) dt along the reduced transient from the scene's
@@ -11,6 +11,7 @@
 
 #include "rbcstab/analysis/quantity.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
+#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/scene.hpp"
@@ -49,7 +50,15 @@ struct FiniteHorizon {
 FiniteHorizon finite_horizon_growth(const Scene& scene, double T, const PredictorOptions& options = {});
 
 enum class Regime { rolling, tank_treading, swinging, tumbling, undetermined };
-std::string to_string(Regime r);
+template <>
+struct EnumTable<Regime> {
+  static constexpr EnumName<Regime> entries[] = {
+      {Regime::rolling, "rolling"},
+      {Regime::tank_treading, "tank-treading"},
+      {Regime::swinging, "swinging"},
+      {Regime::tumbling, "tumbling"},
+      {Regime::undetermined, "undetermined"}};
+};
 struct RegimeResult {
   Regime regime = Regime::undetermined;
   std::string reason;

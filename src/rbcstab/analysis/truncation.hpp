@@ -1,5 +1,5 @@
 #pragma once
-// The truncation L a scene needs (issue 7 point 2). Modes that start with zero area stay at zero exactly
+// The truncation L a scene needs. Modes that start with zero area stay at zero exactly
 // (no l >= 3 source when the stress-free shape is ellipsoidal), so L only decides which seeded modes exist.
 // A dropped mode l > L affects the kept ones in two ways only:
 //  - its seeded area delta_l: a stable mode returns it to l = 2 (bookkeeping, not dynamics: an L run with

@@ -55,7 +55,7 @@ struct FullSums {
   double N = 0, D = 0;
 };
 // sigma = -N / D with N = sum_l (Gamma1 + alpha Gamma3) Delta_l + B Re sum a_l S conj(f),
-// D = sum_l Gamma2 Delta_l (design/model.md section 1; D < 0 while Delta > 0).
+// D = sum_l Gamma2 Delta_l (Eq. st with the Re the printed form lacks, docs/theory.md; D < 0 while Delta > 0).
 template <class Modes>
 FullSums full_sums(const Modes& modes, int L, double alpha, double B, std::span<const double> y,
                    const std::vector<std::complex<double>>& S) {

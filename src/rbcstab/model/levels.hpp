@@ -1,5 +1,5 @@
 #pragma once
-// The three model levels (design/model.md sections 1-3).
+// The three model levels: full, modal and reduced (docs/theory.md, "Model levels and why they are exact").
 #include <complex>
 #include <vector>
 
@@ -25,7 +25,7 @@ class FullModel final : public System {
 
  private:
   struct ModeData {
-    double Gamma1, Gamma2, Gamma3, a;
+    double Gamma1 = 0, Gamma2 = 0, Gamma3 = 0, a = 0;
   };
   void drive(double t, std::vector<std::complex<double>>& S) const;  // S_{l,m}(t)
   Parameters p_;
@@ -35,7 +35,7 @@ class FullModel final : public System {
   std::vector<double> y0_;
 };
 
-// Exact modal reduction (design/model.md section 2): the l = 2 block (f20, f21, f22) plus
+// Exact modal reduction (docs/theory.md): the l = 2 block (f20, f21, f22) plus
 // u_l = ln Delta_l for every l >= 3 that holds area. Exact when g has no l >= 3 content.
 class ModalModel final : public System {
  public:
@@ -53,7 +53,7 @@ class ModalModel final : public System {
 
  private:
   struct Sums {
-    double N, D, Delta2;
+    double N = 0, D = 0, Delta2 = 0;
   };
   void drive(double t, std::complex<double> S[3]) const;  // S_{2,0}, S_{2,1}, S_{2,2}
   Sums sums(double t, std::span<const double> y, const std::complex<double> S[3]) const;

@@ -8,7 +8,7 @@ namespace rbcstab {
 
 // State layout: y[0] = f20 (real by reality), y[1..2] = f21, y[3..4] = f22, y[5+j] = ln Delta_l
 // for l = active_[j]. Exactness: with g_{l>=3} = 0, S_{l,m} = 0 for l >= 3 and every f_{l,m}
-// obeys f' = (i m/2 + Upsilon_l) f, so Delta_l' = 2 Upsilon_l Delta_l (design/model.md section 2).
+// obeys f' = (i m/2 + Upsilon_l) f, so Delta_l' = 2 Upsilon_l Delta_l (docs/theory.md, "Modal").
 ModalModel::ModalModel(const Parameters& p, const InitialState& init) : p_(p), L_(init.f.L), f0_(init.f) {
   p_.validate();
   for (int l = 3; l <= init.g.L; ++l)

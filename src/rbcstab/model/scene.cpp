@@ -8,24 +8,6 @@
 
 namespace rbcstab {
 
-std::string to_string(ModelLevel level) {
-  switch (level) {
-    case ModelLevel::automatic: return "auto";
-    case ModelLevel::full: return "full";
-    case ModelLevel::modal: return "modal";
-    case ModelLevel::reduced: return "reduced";
-  }
-  return "auto";
-}
-
-ModelLevel model_level_from_string(const std::string& name) {
-  if (name == "auto") return ModelLevel::automatic;
-  if (name == "full") return ModelLevel::full;
-  if (name == "modal") return ModelLevel::modal;
-  if (name == "reduced") return ModelLevel::reduced;
-  throw InvalidArgument("model", "model = '" + name + "' is not one of: auto, full, modal, reduced");
-}
-
 void Scene::validate() const {
   parameters.validate();
   require(L >= 2 && L <= 100, "L", L, "an integer in [2, 100]");

@@ -149,22 +149,11 @@ std::string tex_parameters(const Scene& s, const std::set<std::string>& varied, 
 }
 }  // namespace
 
-std::string to_string(PanelKind k) {
-  switch (k) {
-    case PanelKind::none: return "none";
-    case PanelKind::diagram: return "diagram";
-    case PanelKind::fig6e: return "fig6e";
-    case PanelKind::continuation: return "continuation";
-  }
-  return "none";
-}
-
 PanelKind panel_kind(const std::string& toml_text, const std::string& source) {
   const toml::table root = detail::parse_scene_toml(toml_text, source);
   std::vector<PanelKind> found;
-  for (auto [name, kind] : {std::pair{"diagram", PanelKind::diagram}, std::pair{"fig6e", PanelKind::fig6e},
-                            std::pair{"continuation", PanelKind::continuation}})
-    if (root.get(name)) found.push_back(kind);
+  for (const auto& [kind, name] : EnumTable<PanelKind>::entries)
+    if (kind != PanelKind::none && root.get(name)) found.push_back(kind);
   if (found.size() > 1)
     throw InvalidArgument("scene", source + " holds more than one panel table ([diagram], [fig6e], [continuation]): "
                                             "one figure panel per scene file");
@@ -223,13 +212,8 @@ ContinuationPanel parse_continuation_table(const std::string& toml_text, const s
   if (t->get("max")) c.engine.p_max = number(*t, T, "max");
   require(!(c.engine.p_min >= c.engine.p_max), "continuation.max", c.engine.p_max, "> continuation.min");
   c.engine.direction = Direction::both;
-  if (t->get("direction")) {
-    const std::string d = text(*t, T, "direction");
-    if (d == "forward") c.engine.direction = Direction::forward;
-    else if (d == "backward") c.engine.direction = Direction::backward;
-    else if (d == "both") c.engine.direction = Direction::both;
-    else throw InvalidArgument("continuation.direction", "continuation.direction = '" + d + "' must be forward, backward or both");
-  }
+  if (t->get("direction"))
+    c.engine.direction = from_string<Direction>(text(*t, T, "direction"), "continuation.direction");
   if (t->get("measure")) {
     c.measure = text(*t, T, "measure");
     if (c.measure != "r" && c.measure != "Psi")

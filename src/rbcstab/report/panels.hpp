@@ -16,6 +16,7 @@
 #include "rbcstab/analysis/post_instability.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/report/report.hpp"
 #include "rbcstab/sweep/agreement.hpp"
@@ -24,8 +25,15 @@
 
 namespace rbcstab {
 
-enum class PanelKind { none, diagram, fig6e, continuation };
-std::string to_string(PanelKind k);
+enum class PanelKind { none, diagram, fig6e, continuation };  // names: the scene file's panel tables
+template <>
+struct EnumTable<PanelKind> {
+  static constexpr EnumName<PanelKind> entries[] = {
+      {PanelKind::none, "none"},
+      {PanelKind::diagram, "diagram"},
+      {PanelKind::fig6e, "fig6e"},
+      {PanelKind::continuation, "continuation"}};
+};
 // The panel table the scene file holds: none, or exactly one (two throw InvalidArgument("scene", ...)).
 PanelKind panel_kind(const std::string& toml_text, const std::string& source = "scene");
 

@@ -25,24 +25,6 @@ const char* kFiniteHorizon = "G_l(T) = int_0^T Upsilon_l(sigma_R(t)) dt = 0 (red
 bool out_of_plane(const Scene& scene, const PredictorOptions& o) { return stress_free_r0(scene) < o.out_of_plane_r0; }
 }  // namespace
 
-std::string to_string(TraceCriterion c) {
-  return c == TraceCriterion::asymptotic ? "asymptotic" : "finite-horizon";
-}
-TraceCriterion trace_criterion_from_string(const std::string& name) {
-  if (name == "asymptotic") return TraceCriterion::asymptotic;
-  if (name == "finite-horizon" || name == "finite_horizon") return TraceCriterion::finite_horizon;
-  throw InvalidArgument("criterion", "'" + name + "' is not a criterion: asymptotic | finite-horizon");
-}
-
-std::string to_string(SigmaSource s) {
-  switch (s) {
-    case SigmaSource::equilibrium: return "equilibrium";
-    case SigmaSource::periodic_orbit: return "periodic_orbit";
-    case SigmaSource::time_average: return "time_average";
-  }
-  return "time_average";
-}
-
 void OrbitAverageOptions::validate() const {
   require(relaxation_periods >= 0 && relaxation_periods <= 100000, "relaxation_periods", relaxation_periods,
           "an integer in [0, 100000]");

@@ -1,5 +1,5 @@
 #pragma once
-// Stability boundaries traced as curves by continuation (issue 5 point 2). Criteria, per mode l = 3..L
+// Stability boundaries traced as curves by continuation. Criteria, per mode l = 3..L
 // (g_l > 0: mode l grows):
 //  - asymptotic: mu_l = Upsilon_l(<sigma_R>) on the reduced attractor: the exact out-of-plane equilibrium
 //    (analysis/steady_states.hpp) for out-of-plane scenes; in plane the period average over the attracting
@@ -11,10 +11,12 @@
 // g_l = 0 from automatically located starts, with the corners where another mode takes over located as
 // engine events (sweep/zero_set.hpp).
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/model/scene.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/zero_set.hpp"
@@ -22,8 +24,16 @@
 namespace rbcstab {
 
 enum class TraceCriterion { asymptotic, finite_horizon };
-std::string to_string(TraceCriterion c);
-TraceCriterion trace_criterion_from_string(const std::string& name);  // throws InvalidArgument("criterion", ...)
+template <>
+struct EnumTable<TraceCriterion> {
+  static constexpr EnumName<TraceCriterion> entries[] = {{TraceCriterion::asymptotic, "asymptotic"},
+                                                        {TraceCriterion::finite_horizon, "finite-horizon"},
+                                                        {TraceCriterion::finite_horizon, "finite_horizon"}};  // alias
+};
+// Throws InvalidArgument("criterion", ...) naming the allowed criteria.
+inline TraceCriterion trace_criterion_from_string(std::string_view name) {
+  return from_string<TraceCriterion>(name, "criterion");
+}
 
 // <sigma_R> on the reduced attractor, from the first source that applies:
 //  - equilibrium: the exact out-of-plane equilibrium when the scene is out of plane and it is stable;
@@ -36,7 +46,13 @@ TraceCriterion trace_criterion_from_string(const std::string& name);  // throws 
 // bit-identical for any thread count. Throws InvalidArgument("criterion", ...) when the time average is
 // needed and has not converged (the value would not be a property of the attractor).
 enum class SigmaSource { equilibrium, periodic_orbit, time_average };
-std::string to_string(SigmaSource s);
+template <>
+struct EnumTable<SigmaSource> {
+  static constexpr EnumName<SigmaSource> entries[] = {
+      {SigmaSource::equilibrium, "equilibrium"},
+      {SigmaSource::periodic_orbit, "periodic_orbit"},
+      {SigmaSource::time_average, "time_average"}};
+};
 
 struct OrbitAverageOptions {
   bool enabled = true;           // false: in plane always by the time average (the former criterion; comparisons)
