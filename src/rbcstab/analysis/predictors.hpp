@@ -53,11 +53,8 @@ enum class Regime { rolling, tank_treading, swinging, tumbling, undetermined };
 template <>
 struct EnumTable<Regime> {
   static constexpr EnumName<Regime> entries[] = {
-      {Regime::rolling, "rolling"},
-      {Regime::tank_treading, "tank-treading"},
-      {Regime::swinging, "swinging"},
-      {Regime::tumbling, "tumbling"},
-      {Regime::undetermined, "undetermined"}};
+      {Regime::rolling, "rolling"}, {Regime::tank_treading, "tank-treading"}, {Regime::swinging, "swinging"},
+      {Regime::tumbling, "tumbling"}, {Regime::undetermined, "undetermined"}};
 };
 struct RegimeResult {
   Regime regime = Regime::undetermined;

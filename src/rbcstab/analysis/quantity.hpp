@@ -16,9 +16,7 @@ enum class DomainStatus {
 template <>
 struct EnumTable<DomainStatus> {
   static constexpr EnumName<DomainStatus> entries[] = {
-      {DomainStatus::ok, "ok"},
-      {DomainStatus::limit, "limit"},
-      {DomainStatus::outside_domain, "outside_domain"}};
+      {DomainStatus::ok, "ok"}, {DomainStatus::limit, "limit"}, {DomainStatus::outside_domain, "outside_domain"}};
 };
 
 struct Quantity {

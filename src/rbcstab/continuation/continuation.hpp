@@ -22,22 +22,16 @@ enum class SpecialPointType { LP, BP, HB, LPC, PD, NS, UZ, EP };
 template <>
 struct EnumTable<SpecialPointType> {
   static constexpr EnumName<SpecialPointType> entries[] = {
-      {SpecialPointType::LP, "LP"},
-      {SpecialPointType::BP, "BP"},
-      {SpecialPointType::HB, "HB"},
-      {SpecialPointType::LPC, "LPC"},
-      {SpecialPointType::PD, "PD"},
-      {SpecialPointType::NS, "NS"},
-      {SpecialPointType::UZ, "UZ"},
-      {SpecialPointType::EP, "EP"}};
+      {SpecialPointType::LP, "LP"}, {SpecialPointType::BP, "BP"}, {SpecialPointType::HB, "HB"},
+      {SpecialPointType::LPC, "LPC"}, {SpecialPointType::PD, "PD"}, {SpecialPointType::NS, "NS"},
+      {SpecialPointType::UZ, "UZ"}, {SpecialPointType::EP, "EP"}};
 };
 
 enum class LocationStatus { located, guess };  // guess: bracketed but the secant did not converge
 template <>
 struct EnumTable<LocationStatus> {
   static constexpr EnumName<LocationStatus> entries[] = {
-      {LocationStatus::located, "located"},
-      {LocationStatus::guess, "guess"}};
+      {LocationStatus::located, "located"}, {LocationStatus::guess, "guess"}};
 };
 
 enum class ContinuationStatus {
@@ -49,19 +43,15 @@ enum class ContinuationStatus {
 template <>
 struct EnumTable<ContinuationStatus> {
   static constexpr EnumName<ContinuationStatus> entries[] = {
-      {ContinuationStatus::completed, "completed"},
-      {ContinuationStatus::step_too_small, "step_too_small"},
-      {ContinuationStatus::outside_domain, "outside_domain"},
-      {ContinuationStatus::start_failed, "start_failed"}};
+      {ContinuationStatus::completed, "completed"}, {ContinuationStatus::step_too_small, "step_too_small"},
+      {ContinuationStatus::outside_domain, "outside_domain"}, {ContinuationStatus::start_failed, "start_failed"}};
 };
 
 enum class Direction { forward, backward, both };  // forward: p increasing at the start
 template <>
 struct EnumTable<Direction> {
   static constexpr EnumName<Direction> entries[] = {
-      {Direction::forward, "forward"},
-      {Direction::backward, "backward"},
-      {Direction::both, "both"}};
+      {Direction::forward, "forward"}, {Direction::backward, "backward"}, {Direction::both, "both"}};
 };
 
 // A zero of g(x, p) along the branch is reported as a UZ point named `name`.

@@ -33,8 +33,7 @@ enum class ArpackWhich {
 template <>
 struct EnumTable<ArpackWhich> {
   static constexpr EnumName<ArpackWhich> entries[] = {
-      {ArpackWhich::largest_real, "largest_real"},
-      {ArpackWhich::largest_magnitude, "largest_magnitude"},
+      {ArpackWhich::largest_real, "largest_real"}, {ArpackWhich::largest_magnitude, "largest_magnitude"},
       {ArpackWhich::nearest_shift, "nearest_shift"}};
 };
 
@@ -58,10 +57,8 @@ enum class ArpackStatus {
 template <>
 struct EnumTable<ArpackStatus> {
   static constexpr EnumName<ArpackStatus> entries[] = {
-      {ArpackStatus::converged, "converged"},
-      {ArpackStatus::max_iterations, "max_iterations"},
-      {ArpackStatus::solve_failed, "solve_failed"},
-      {ArpackStatus::failed, "failed"}};
+      {ArpackStatus::converged, "converged"}, {ArpackStatus::max_iterations, "max_iterations"},
+      {ArpackStatus::solve_failed, "solve_failed"}, {ArpackStatus::failed, "failed"}};
 };
 
 struct ArpackResult {

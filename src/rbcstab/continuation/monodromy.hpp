@@ -110,10 +110,8 @@ enum class SceneFloquetStatus { converged, relaxation_failed, not_periodic, arpa
 template <>
 struct EnumTable<SceneFloquetStatus> {
   static constexpr EnumName<SceneFloquetStatus> entries[] = {
-      {SceneFloquetStatus::converged, "converged"},
-      {SceneFloquetStatus::relaxation_failed, "relaxation_failed"},
-      {SceneFloquetStatus::not_periodic, "not_periodic"},
-      {SceneFloquetStatus::arpack_failed, "arpack_failed"}};
+      {SceneFloquetStatus::converged, "converged"}, {SceneFloquetStatus::relaxation_failed, "relaxation_failed"},
+      {SceneFloquetStatus::not_periodic, "not_periodic"}, {SceneFloquetStatus::arpack_failed, "arpack_failed"}};
 };
 
 struct SceneFloquetResult {

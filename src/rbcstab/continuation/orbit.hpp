@@ -100,8 +100,7 @@ enum class OrbitKind { swinging, tumbling };
 template <>
 struct EnumTable<OrbitKind> {
   static constexpr EnumName<OrbitKind> entries[] = {
-      {OrbitKind::swinging, "swinging"},
-      {OrbitKind::tumbling, "tumbling"}};
+      {OrbitKind::swinging, "swinging"}, {OrbitKind::tumbling, "tumbling"}};
 };
 
 // What an orbit looks like over one period (reduced system: r, Psi of z = r e^{-i Psi}).

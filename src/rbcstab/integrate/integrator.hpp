@@ -25,9 +25,9 @@ enum class Stepper {
 template <>
 struct EnumTable<Stepper> {
   static constexpr EnumName<Stepper> entries[] = {
-      {Stepper::rk8pd, "rk8pd"},     {Stepper::rkck, "rkck"},   {Stepper::rkf45, "rkf45"},
-      {Stepper::msadams, "msadams"}, {Stepper::rosenbrock, "rosenbrock"}, {Stepper::msbdf, "msbdf"},
-      {Stepper::bsimp, "bsimp"},     {Stepper::rk4imp, "rk4imp"}};
+      {Stepper::rk8pd, "rk8pd"}, {Stepper::rkck, "rkck"}, {Stepper::rkf45, "rkf45"}, {Stepper::msadams, "msadams"},
+      {Stepper::rosenbrock, "rosenbrock"}, {Stepper::msbdf, "msbdf"}, {Stepper::bsimp, "bsimp"},
+      {Stepper::rk4imp, "rk4imp"}};
 };
 // Throws InvalidArgument("stepper", ...) naming the allowed steppers.
 inline Stepper stepper_from_string(std::string_view name) { return from_string<Stepper>(name, "stepper"); }
@@ -49,12 +49,9 @@ enum class IntegrationStatus { success, step_size_underflow, non_finite_state, s
 template <>
 struct EnumTable<IntegrationStatus> {
   static constexpr EnumName<IntegrationStatus> entries[] = {
-      {IntegrationStatus::success, "success"},
-      {IntegrationStatus::step_size_underflow, "step_size_underflow"},
-      {IntegrationStatus::non_finite_state, "non_finite_state"},
-      {IntegrationStatus::step_limit, "step_limit"},
-      {IntegrationStatus::time_limit, "time_limit"},
-      {IntegrationStatus::solver_error, "solver_error"}};
+      {IntegrationStatus::success, "success"}, {IntegrationStatus::step_size_underflow, "step_size_underflow"},
+      {IntegrationStatus::non_finite_state, "non_finite_state"}, {IntegrationStatus::step_limit, "step_limit"},
+      {IntegrationStatus::time_limit, "time_limit"}, {IntegrationStatus::solver_error, "solver_error"}};
 };
 
 struct IntegrationCounters {

@@ -29,9 +29,7 @@ enum class PanelKind { none, diagram, fig6e, continuation };  // names: the scen
 template <>
 struct EnumTable<PanelKind> {
   static constexpr EnumName<PanelKind> entries[] = {
-      {PanelKind::none, "none"},
-      {PanelKind::diagram, "diagram"},
-      {PanelKind::fig6e, "fig6e"},
+      {PanelKind::none, "none"}, {PanelKind::diagram, "diagram"}, {PanelKind::fig6e, "fig6e"},
       {PanelKind::continuation, "continuation"}};
 };
 // The panel table the scene file holds: none, or exactly one (two throw InvalidArgument("scene", ...)).

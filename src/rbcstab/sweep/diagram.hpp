@@ -38,9 +38,7 @@ enum class Classifier {
 template <>
 struct EnumTable<Classifier> {
   static constexpr EnumName<Classifier> entries[] = {
-      {Classifier::automatic, "auto"},
-      {Classifier::final, "final"},
-      {Classifier::tail_mean, "tail"}};
+      {Classifier::automatic, "auto"}, {Classifier::final, "final"}, {Classifier::tail_mean, "tail"}};
 };
 // Throws InvalidArgument("classifier", ...) naming the allowed classifiers.
 inline Classifier classifier_from_string(std::string_view name) { return from_string<Classifier>(name, "classifier"); }
@@ -65,9 +63,7 @@ enum class Verdict { stable, unstable, failed };  // failed: the integrator did 
 template <>
 struct EnumTable<Verdict> {
   static constexpr EnumName<Verdict> entries[] = {
-      {Verdict::stable, "stable"},
-      {Verdict::unstable, "unstable"},
-      {Verdict::failed, "failed"}};
+      {Verdict::stable, "stable"}, {Verdict::unstable, "unstable"}, {Verdict::failed, "failed"}};
 };
 
 struct PointResult {

@@ -26,9 +26,9 @@ namespace rbcstab {
 enum class TraceCriterion { asymptotic, finite_horizon };
 template <>
 struct EnumTable<TraceCriterion> {
-  static constexpr EnumName<TraceCriterion> entries[] = {{TraceCriterion::asymptotic, "asymptotic"},
-                                                        {TraceCriterion::finite_horizon, "finite-horizon"},
-                                                        {TraceCriterion::finite_horizon, "finite_horizon"}};  // alias
+  static constexpr EnumName<TraceCriterion> entries[] = {
+      {TraceCriterion::asymptotic, "asymptotic"}, {TraceCriterion::finite_horizon, "finite-horizon"},
+      {TraceCriterion::finite_horizon, "finite_horizon"}};
 };
 // Throws InvalidArgument("criterion", ...) naming the allowed criteria.
 inline TraceCriterion trace_criterion_from_string(std::string_view name) {
@@ -49,8 +49,7 @@ enum class SigmaSource { equilibrium, periodic_orbit, time_average };
 template <>
 struct EnumTable<SigmaSource> {
   static constexpr EnumName<SigmaSource> entries[] = {
-      {SigmaSource::equilibrium, "equilibrium"},
-      {SigmaSource::periodic_orbit, "periodic_orbit"},
+      {SigmaSource::equilibrium, "equilibrium"}, {SigmaSource::periodic_orbit, "periodic_orbit"},
       {SigmaSource::time_average, "time_average"}};
 };
 
