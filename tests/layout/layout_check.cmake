@@ -38,11 +38,11 @@ elseif(CASE STREQUAL "citations")
   # Design notes (design/*.md) are not in the repository and issue numbers mean nothing to its reader:
   # say the fact, or cite docs/ or the paper's equation labels.
   file(GLOB_RECURSE files RELATIVE ${ROOT}
-    ${ROOT}/src/* ${ROOT}/apps/* ${ROOT}/docs/*.md ${ROOT}/scenes/* ${ROOT}/tests/* ${ROOT}/benchmarks/*)
+    ${ROOT}/src/* ${ROOT}/apps/* ${ROOT}/docs/*.md ${ROOT}/scenes/* ${ROOT}/tests/* ${ROOT}/benchmarks/* ${ROOT}/scripts/*)
   list(APPEND files README.md)
   list(FILTER files EXCLUDE REGEX "^tests/layout/|\\.(png|jpg|svg|pdf)$")
   foreach(f IN LISTS files)
-    file(STRINGS ${ROOT}/${f} hits REGEX "design/[A-Za-z_]+\\.md|[Ii]ssues? #?[0-9]")
+    file(STRINGS ${ROOT}/${f} hits REGEX "design/[A-Za-z_]+\\.md|(^|[^a-z_/])model\\.md|[Ii]ssues? #?[0-9]")
     foreach(line IN LISTS hits)
       string(STRIP "${line}" line)
       list(APPEND violations "${f}: ${line}")

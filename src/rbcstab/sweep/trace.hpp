@@ -24,6 +24,7 @@
 namespace rbcstab {
 
 enum class TraceCriterion { asymptotic, finite_horizon };
+// Outputs write "finite-horizon"; input also takes the enumerator's spelling "finite_horizon".
 template <>
 struct EnumTable<TraceCriterion> {
   static constexpr EnumName<TraceCriterion> entries[] = {
