@@ -1,5 +1,5 @@
 // Continuation throughput and accuracy (docs/continuation.md): the out-of-plane equilibrium branch
-// of the reduced system over lambda in [0, 20] against the closed form (design/model.md sec. 4), and
+// of the reduced system over lambda in [0, 20] against the closed form (docs/theory.md), and
 // the location precision of a fold (x' = p - x^2, LP at p = 0) and a Hopf point; the in-plane
 // periodic-orbit branch of Fig. 2 in Delta (multiple shooting) with its swinging -> tumbling UZ point.
 #include <benchmark/benchmark.h>

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Compare two Google Benchmark JSON files (baseline, current) and report changes by ratio.
 
-    scripts/bench_compare.py benchmarks/baseline.json current.json [--noise 0.10] [--fail]
+    scripts/bench_compare.py benchmarks/baseline/simulate_bench.json current.json [--noise 0.10] [--fail]
 
 For every benchmark present in both: the ratio current/baseline of cpu_time, a verdict
 (faster / slower / same within the noise band), and any change in the work counters

@@ -149,7 +149,7 @@ static Runner add_diagram(CLI::App& app) {
       ->check(CLI::Range(1, 1000000));
   app.add_option("--classifier", o->classifier,
                  "l_Delta rule: auto (tail mean if oscillating), final (Fig. 4), tail (App. E) (default: the scene's [diagram] or auto)")
-      ->check(CLI::IsMember({"auto", "final", "tail"}));
+      ->check(CLI::IsMember(enum_names<Classifier>()));
   app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C at this value over the plane, >= 0 (0: off; Fig. 5; default: the scene's [diagram] or off)")
       ->check(non_negative());
   app.add_option("--threads", o->threads, "worker threads, integer in [0, 4096] (0: all cores)")->capture_default_str();

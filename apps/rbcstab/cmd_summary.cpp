@@ -19,7 +19,7 @@ namespace rbcstab::cli {
 
 namespace {
 
-// The analysis of issue 3: regime, thresholds, the three predictors and Delta~2 predicted vs simulated.
+// The scene's analysis: regime, thresholds, the three predictors and Delta~2 predicted vs simulated.
 void print_analysis(std::ostream& out, const Scene& s, const ReducedTransient& transient, const SimulationResult& r,
                     double tail_window) {
   const Parameters& p = s.parameters;

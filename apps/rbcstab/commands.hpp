@@ -13,8 +13,8 @@ using CommandFactory = Runner (*)(CLI::App&);
 
 struct Command {
   std::string name, help;
-  CommandFactory make;
-  int order;  // position in --help
+  CommandFactory make = nullptr;
+  int order = 0;  // position in --help
 };
 
 std::vector<Command>& command_registry();

@@ -83,7 +83,7 @@ TEST(AsymptoticPredictor, TimeAverageEqualsEquilibriumOutOfPlane) {
   }
 }
 
-// Eq. ss_st_red against the time average along an integrated trajectory (issue 3 point 7): Lambda < 1, S >> 1,
+// Eq. ss_st_red against the time average along an integrated trajectory: Lambda < 1, S >> 1,
 // both orientations. The measured gap is O(1/S) (printed, recorded in docs/theory.md).
 TEST(AsymptoticPredictor, MeanSigmaRMinusMatchesTimeAverage) {
   for (double beta : {0.0, kHalfPi}) {

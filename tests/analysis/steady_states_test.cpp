@@ -56,7 +56,7 @@ TEST(OutOfPlaneEquilibrium, SatisfiesQuadraticAndOde) {
     EXPECT_NEAR(std::cos(eq.Psi), L * eq.r, 1e-14);
     EXPECT_NEAR(eq.w * std::sin(eq.Psi), eq.r / S, 1e-14);
     EXPECT_NEAR(eq.w * eq.w + u, 1, 1e-15);
-    EXPECT_LT(eq.residual, 1e-12) << c.Lambda << " " << c.S;  // the ODE to 1e-12 (issue 3 point 9)
+    EXPECT_LT(eq.residual, 1e-12) << c.Lambda << " " << c.S;  // the ODE to 1e-12
     // sigma_R via the multiplier equals Eq. st_red evaluated directly; scale ~ 2 alpha/3.
     EXPECT_NEAR(eq.sigma_R, sigma_R_printed(p, eq.r, eq.Psi), 1e-12 * (10 + p.alpha()));
   }

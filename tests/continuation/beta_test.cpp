@@ -123,7 +123,7 @@ TEST(Beta, InPlaneOrbitCollapsesOntoTheOutOfPlaneEquilibriumAtBetaZero) {
   const Branch b = r.run(Direction::backward, 0.0, M_PI / 2);
   ASSERT_EQ(b.status, ContinuationStatus::completed) << b.message;
   ASSERT_EQ(b.points.back().p, 0.0) << "the engine lands on the bound exactly";
-  // The closed form (analysis/, design/model.md section 4): z = r e^{-i Psi}, w = sqrt(1 - r^2).
+  // The closed form (analysis/steady_states.hpp): z = r e^{-i Psi}, w = sqrt(1 - r^2).
   const OutOfPlaneEquilibrium c = out_of_plane_equilibrium(r.scene.parameters);
   const Eigen::Vector3d e(c.r * std::cos(c.Psi), -c.r * std::sin(c.Psi), c.w);
   // At beta = 0 exactly the forcing is zero: every segment state is the equilibrium, to the shooting
@@ -356,7 +356,7 @@ TEST(Beta, ReducedMultipliersAreAConformalPairWithModulusExpOfTheMeanGrowthRate)
 namespace rbcstab {
 namespace {
 
-// ModalForcedSystem2 (issue 4 item 5: two-parameter cycle curves of the modal model) is
+// ModalForcedSystem2 (for two-parameter cycle curves of the modal model) is
 // ModalForcedSystem at p2, bit for bit (the same computation through the scene), here with beta as
 // the second parameter, and its d/dp1 matches central differences of its rhs (h = 1e-5: truncation
 // ~h^2 f''' ~ 1e-10, rounding eps/h ~ 1e-11, so 1e-8 relative).

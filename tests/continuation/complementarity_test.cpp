@@ -50,7 +50,7 @@ TEST(Complementarity, MatchesBranchSwitchingAndClosedFormWhereL3Survives) {
   EXPECT_LT(r.max_constraint_violation, 1e-10);
   const Eigen::VectorXd xn = newton_post_state(pr, C);
   ASSERT_EQ(xn.size(), pr.dimension());
-  // Same state to 1e-8 (the issue's ~1e-8): Ipopt's tol 1e-12 on the scaled KKT error; a_3 up to the
+  // Same state to 1e-8 (the required ~1e-8): Ipopt's tol 1e-12 on the scaled KKT error; a_3 up to the
   // Z2 sign (Ipopt returns a_3 = +sqrt(d_3)).
   Eigen::VectorXd xa = xn;
   xa = xa.cwiseAbs();

@@ -51,7 +51,7 @@ std::vector<SpecialPoint> of_type(const Branch& b, SpecialPointType t) {
   return out;
 }
 
-// Located to 1e-8 is the bar; location_tol = 1e-11 (bracket width in (x, p)) leaves margin
+// Located to 1e-8 is the required accuracy; location_tol = 1e-11 (bracket width in (x, p)) leaves margin
 // for the O(|x|^2) relation between p and the arclength at a fold.
 constexpr double kLocated = 1e-8;
 

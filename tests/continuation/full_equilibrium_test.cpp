@@ -109,7 +109,7 @@ TEST(FullEquilibrium, EllipsoidalBranchEqualsModalLevelAndClosedForm) {
   EXPECT_DOUBLE_EQ(b.points.back().p, 20);
   ASSERT_GE(b.points.size(), 10u);
   for (const BranchPoint& pt : b.points) {
-    // The closed form (analysis/steady_states) to 1e-10, the bar (Newton stops at 1e-12).
+    // The closed form (analysis/steady_states) to 1e-10, the required accuracy (Newton stops at 1e-12).
     EXPECT_LT((pt.x - pr.ellipsoidal_state(pt.p)).lpNorm<Eigen::Infinity>(), 1e-10) << "lambda = " << pt.p;
     // The modal level's Newton solution: x_{2,2} = z, x_{2,0} = -w, x_{2,1} = v, l >= 3 zero.
     const NewtonResult nr = solve_fixed_parameter(modal, modal.ellipsoidal_state(pt.p), pt.p);
@@ -173,7 +173,7 @@ TEST(FullEquilibrium, ForcedBranchEqualsClosedForm) {
     const Parameters q = with_parameter(run.s.parameters, ContinuationParameter::C, pt.p);
     const ClosedForm c = closed_form(run.s, q);
     const FullEquilibriumState st = run.pr.observe(pt.x, pt.p);
-    // 1e-10, the bar: Newton stops at |dX| <= 1e-12 (1e-12 (1 + |x|)), and the closed form's
+    // 1e-10, the required accuracy: Newton stops at |dX| <= 1e-12 (1e-12 (1 + |x|)), and the closed form's
     // bisection is exact to the last bit of sigma; |f| <= 1.
     const double e = state_error(run.pr, pt.x, pt.p, c);
     worst = std::max(worst, e);

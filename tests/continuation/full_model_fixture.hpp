@@ -24,7 +24,7 @@ inline Scene ellipsoidal_scene(int L, double beta) {
   return s;
 }
 
-// The full model at the exact out-of-plane equilibrium of the reduced system (design/model.md sec. 4),
+// The full model at the exact out-of-plane equilibrium of the reduced system (docs/theory.md),
 // embedded with f_{l>=3} = 0 through ReducedModel::amplitudes.
 struct OutOfPlaneFullState {
   InitialState init;

@@ -99,7 +99,7 @@ TEST(ModalEquilibrium, EllipsoidalBranchReproducesReducedBranchAndClosedForm) {
   EXPECT_DOUBLE_EQ(b.points.front().p, 0);
   EXPECT_DOUBLE_EQ(b.points.back().p, 20);
   for (const BranchPoint& pt : b.points) {
-    // The closed form (1e-10, the bar; Newton stops at |dX| <= 1e-12).
+    // The closed form (1e-10, the required accuracy; Newton stops at |dX| <= 1e-12).
     const Eigen::VectorXd e = pr.ellipsoidal_state(pt.p);
     EXPECT_LT((pt.x - e).lpNorm<Eigen::Infinity>(), 1e-10) << "lambda = " << pt.p;
     // The reduced problem's own Newton solution at the same lambda.

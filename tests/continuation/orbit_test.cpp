@@ -94,7 +94,7 @@ class ForcedFocus final : public ForcedLinear {
 
 Eigen::VectorXd orbit_state(const Eigen::Vector2d& x) { return Eigen::VectorXd(x); }
 
-// Located to 1e-8 in the parameter (the bar); the location tolerance is 1e-11 in (X, p).
+// Located to 1e-8 in the parameter (the required accuracy); the location tolerance is 1e-11 in (X, p).
 TEST(OrbitNormalForms, FoldOfCyclesLocatedAtZero) {
   const ForcedFold sys;
   OrbitOptions oo;
@@ -485,7 +485,7 @@ TEST(ReducedOrbit, MultiplierProductMatchesLiouville) {
 
 // The orbit is the attractor of the dynamics: a long direct integration from the scene's shape
 // (40 periods; the multipliers are < 0.2, so transients are < 0.2^40) lands on x_0, and its period
-// average equals the orbit's. 1e-9: the bar, ~1000 x the integration tolerance.
+// average equals the orbit's. 1e-9: the required accuracy, ~1000 x the integration tolerance.
 TEST(ReducedOrbit, MatchesLongSimulation) {
   for (double Delta : {0.2, 1.0}) {
     const ReducedForcedSystem sys(fig2_ip(Delta), ContinuationParameter::Delta);

@@ -1,4 +1,4 @@
-// Out-of-plane equilibria of the reduced system against the closed form of design/model.md sec. 4:
+// Out-of-plane equilibria of the reduced system against the closed form (docs/theory.md):
 // cos Psi = Lambda r, sqrt(1 - r^2) sin Psi = r / S, u = r^2 the root in (0, 1) of
 // Lambda^2 u^2 - (1 + Lambda^2 + S^-2) u + 1 = 0.
 #include <gtest/gtest.h>
@@ -33,7 +33,7 @@ Scene op_scene() {
 // Continues from a start 1e-2 away from the closed form and checks every branch point (and the
 // bound landing) against the closed form at that point's parameter. 1e-10: Newton converges to
 // |dX| <= 1e-12 (1 + |X|) and the closed form is evaluated cancellation-free, so the error budget is
-// a few 1e-12; 1e-10 is the bar.
+// a few 1e-12; 1e-10 is the required accuracy.
 void check_branch(ContinuationParameter q, Scene s, double p_lo, double p_hi, std::size_t min_points) {
   const ReducedEquilibriumProblem pr(s, q);
   const double p0 = get_parameter(s.parameters, q);

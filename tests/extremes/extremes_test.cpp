@@ -1,4 +1,4 @@
-// Extremes suite (issue 7): each case runs to completion with no NaN, conserves the excess area
+// Extremes suite: each case runs to completion with no NaN, conserves the excess area
 // within a bound tied to the tolerance, agrees between model levels where two are exact, and
 // recovers the analytic limit where one exists. Outcomes are documented in docs/extremes.md.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Extremes that must run to the end with finite output (design/model.md section 3 traps):
+// Extremes that must run to the end with finite output (the polar-coordinate traps the regular coordinates avoid):
 // beta = 0 exactly (reduced starts at r = 0), C = inf, Delta0 = 0, delta = 1e-14, L = 2, and the
 // reduced level with S = inf, which tends smoothly to r = 1, Psi = arccos(Lambda) (Eq. ss_red, Lambda < 1).
 #include <gtest/gtest.h>
@@ -119,14 +119,14 @@ TEST(Extremes, ReducedWithInfiniteSTendsToTankTreading) {
 
 
 TEST(ReducedEquilibrium, OutOfPlaneLongTimeStateMatchesClosedForm) {
-  // design/model.md section 4: for r0 = 0 the reduced system is autonomous and its equilibrium has
+  // docs/theory.md: for r0 = 0 the reduced system is autonomous and its equilibrium has
   // u = r^2 the root in (0, 1) of Lambda^2 u^2 - (1 + Lambda^2 + S^-2) u + 1 = 0, cos Psi = Lambda r.
   // Direct integration from beta = 0 must end there (convergence is exponential: by T = 300 the
   // distance is far below the 1e-7 we allow; the integration error at rtol 1e-11 is smaller still).
   struct P {
     double Delta, C;
   };
-  // (Lambda, S) ~ (0.19, 2), (1.9, 2), (0.7, 20), (1.9, 5): cases design/model.md lists as checked.
+  // (Lambda, S) ~ (0.19, 2), (1.9, 2), (0.7, 20), (1.9, 5): Lambda on both sides of 1, S from 2 to 20.
   for (const P q : {P{0.01, 0.04}, P{1.0, 0.04}, P{0.1368, 0.412}, P{1.0, 0.1}}) {
     Scene s = fig2_scene(q.Delta, 0.0);
     s.parameters.C = q.C;

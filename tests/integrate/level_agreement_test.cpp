@@ -1,4 +1,4 @@
-// Agreement between model levels where two are exact (design/model.md sections 2-3):
+// Agreement between model levels where two are exact (docs/theory.md, "Model levels and why they are exact"):
 // full vs modal on the Fig. 3 scenes, modal vs reduced on the Fig. 2 scenes, and the modal
 // level's reconstructed amplitudes against the full model's f_{l,m}.
 //

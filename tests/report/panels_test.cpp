@@ -136,7 +136,7 @@ TEST(ContinuationTable, ParsesAndNamesBadKeys) {
 }
 
 // Oracle: at C = inf the tank-treading equilibria are r = 1, Psi = +-arccos(Lambda) (docs/continuation.md,
-// design/model.md section 4), stable for Psi > 0; the fold (LP) is at Lambda = 1.
+// docs/theory.md), stable for Psi > 0; the fold (LP) is at Lambda = 1.
 TEST(BifurcationJson, VesicleBranchFollowsTheClosedForm) {
   std::string text = kBase + "[continuation]\nmin = 0.0\nmax = 10.0\nmeasure = \"Psi\"\n";
   text.replace(text.find("C = 0.04"), 8, "C = inf");

@@ -1,5 +1,5 @@
 #pragma once
-// Post-instability state (paper Sec. V; design/model.md section 5): after the instability the l = 2 mode and
+// Post-instability state (paper Sec. V; docs/theory.md): after the instability the l = 2 mode and
 // one surviving mode l_s hold the excess area and sigma -> sigma_s with Upsilon_{l_s}(sigma_s) = 0.
 // Delta~2 follows from dDelta_2/dt = 0 (Eq. ss, re-derived in docs/theory.md) with the l = 2 shape of
 // Eq. subs_ss and r~, Psi~ of Eq. rss_postinst. Two variants: the paper's continuous l_* with sigma_* = -4 sqrt(alpha),

@@ -30,17 +30,6 @@ void PredictorOptions::validate() const {
           "regime_sample_dt", regime_sample_dt, "in (0, window/2]");
 }
 
-std::string to_string(Regime r) {
-  switch (r) {
-    case Regime::rolling: return "rolling";
-    case Regime::tank_treading: return "tank-treading";
-    case Regime::swinging: return "swinging";
-    case Regime::tumbling: return "tumbling";
-    case Regime::undetermined: return "undetermined";
-  }
-  return "undetermined";
-}
-
 double stress_free_r0(const Scene& scene) {
   const InitialState init = initial_state(scene);
   const double Delta0 = init.g.excess_area(2);

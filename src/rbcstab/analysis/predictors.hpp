@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "rbcstab/analysis/quantity.hpp"
+#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/scene.hpp"
 
@@ -71,7 +72,12 @@ FiniteHorizon finite_horizon_growth(const Scene& scene, const ReducedTransient& 
 FiniteHorizon finite_horizon_growth(const Scene& scene, double T, const PredictorOptions& options = {});
 
 enum class Regime { rolling, tank_treading, swinging, tumbling, undetermined };
-std::string to_string(Regime r);
+template <>
+struct EnumTable<Regime> {
+  static constexpr EnumName<Regime> entries[] = {
+      {Regime::rolling, "rolling"}, {Regime::tank_treading, "tank-treading"}, {Regime::swinging, "swinging"},
+      {Regime::tumbling, "tumbling"}, {Regime::undetermined, "undetermined"}};
+};
 struct RegimeResult {
   Regime regime = Regime::undetermined;
   std::string reason;

@@ -4,6 +4,8 @@
 #include <string>
 #include <utility>
 
+#include "rbcstab/core/enum_table.hpp"
+
 namespace rbcstab {
 
 enum class DomainStatus {
@@ -11,7 +13,11 @@ enum class DomainStatus {
   limit,           // at an edge of the domain: value is the finite limit (reason says which)
   outside_domain,  // the formula does not apply: value is 0, reason says why
 };
-std::string to_string(DomainStatus s);
+template <>
+struct EnumTable<DomainStatus> {
+  static constexpr EnumName<DomainStatus> entries[] = {
+      {DomainStatus::ok, "ok"}, {DomainStatus::limit, "limit"}, {DomainStatus::outside_domain, "outside_domain"}};
+};
 
 struct Quantity {
   double value = 0;

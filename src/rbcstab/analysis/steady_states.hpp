@@ -1,5 +1,5 @@
 #pragma once
-// Exact out-of-plane (r0 = 0) equilibrium of the reduced system for every S (design/model.md section 4),
+// Exact out-of-plane (r0 = 0) equilibrium of the reduced system for every S (derived in docs/theory.md),
 // its linear stability on the sphere, sigma_R at it, and the exact finite-S instability criterion,
 // beside the paper's S >> 1 forms (Eq. ss_red, Eq. ss_st_red).
 #include <array>

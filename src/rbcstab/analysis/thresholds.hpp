@@ -28,7 +28,7 @@ UnstableBand unstable_band(double sigma, double alpha);
 // Integer modes l in [3, L] with Upsilon_l(sigma) > 0, i.e. sigma < sigma_l^c, ascending.
 std::vector<int> unstable_modes(double sigma, double alpha, int L);
 // The integer mode in [3, L] with the largest sigma_l^c: the last one to stay unstable as sigma rises,
-// hence the one that survives the instability (design/model.md section 5). Ties go to the lower l.
+// hence the one that survives the instability (docs/theory.md, "Post-instability state"). Ties go to the lower l.
 int surviving_mode(double alpha, int L);
 // alpha at which the surviving mode changes from l to l + 1: sigma_l^c = sigma_{l+1}^c
 // <=> alpha = Pi(l) Pi(l+1) / 4 (18 for 2 -> 3, 60 for 3 -> 4); l >= 2.

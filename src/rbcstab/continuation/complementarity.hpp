@@ -1,6 +1,6 @@
 #pragma once
 // The post-instability state when the surviving modes are not known in advance, as a
-// complementarity problem solved by Ipopt (interior point; issue 4 item 8). Unknowns: the l = 2
+// complementarity problem solved by Ipopt (interior point). Unknowns: the l = 2
 // coordinates x_2 = (Re z, Im z, w, Re v, Im v) of modal_equilibrium.hpp, sigma, and the area
 // fractions d_l = Delta_l/Delta >= 0 (l = 3..L). Constraints:
 //   the five l = 2 equilibrium equations at sigma (linear in x_2 for fixed sigma),

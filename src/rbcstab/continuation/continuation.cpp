@@ -17,32 +17,6 @@ const SpecialPoint* find_special_point(const Branch& b, SpecialPointType type, i
   return nullptr;
 }
 
-std::string to_string(SpecialPointType type) {
-  switch (type) {
-    case SpecialPointType::LP: return "LP";
-    case SpecialPointType::BP: return "BP";
-    case SpecialPointType::HB: return "HB";
-    case SpecialPointType::LPC: return "LPC";
-    case SpecialPointType::PD: return "PD";
-    case SpecialPointType::NS: return "NS";
-    case SpecialPointType::UZ: return "UZ";
-    case SpecialPointType::EP: return "EP";
-  }
-  return "?";
-}
-
-std::string to_string(LocationStatus status) { return status == LocationStatus::located ? "located" : "guess"; }
-
-std::string to_string(ContinuationStatus status) {
-  switch (status) {
-    case ContinuationStatus::completed: return "completed";
-    case ContinuationStatus::step_too_small: return "step_too_small";
-    case ContinuationStatus::outside_domain: return "outside_domain";
-    case ContinuationStatus::start_failed: return "start_failed";
-  }
-  return "?";
-}
-
 void ContinuationOptions::validate() const {
   require(std::isfinite(initial_step) && initial_step > 0, "initial_step", initial_step, "a finite number > 0");
   require(std::isfinite(min_step) && min_step > 0 && min_step <= initial_step, "min_step", min_step,

@@ -12,16 +12,27 @@
 #include <vector>
 
 #include "rbcstab/continuation/problem.hpp"
+#include "rbcstab/core/enum_table.hpp"
 
 namespace rbcstab {
 
 // AUTO-07p labels. LP/BP/HB on equilibrium branches; LPC/PD/NS on orbit branches (multipliers);
 // UZ a zero of a user function; EP the end points of a branch.
 enum class SpecialPointType { LP, BP, HB, LPC, PD, NS, UZ, EP };
-std::string to_string(SpecialPointType type);
+template <>
+struct EnumTable<SpecialPointType> {
+  static constexpr EnumName<SpecialPointType> entries[] = {
+      {SpecialPointType::LP, "LP"}, {SpecialPointType::BP, "BP"}, {SpecialPointType::HB, "HB"},
+      {SpecialPointType::LPC, "LPC"}, {SpecialPointType::PD, "PD"}, {SpecialPointType::NS, "NS"},
+      {SpecialPointType::UZ, "UZ"}, {SpecialPointType::EP, "EP"}};
+};
 
 enum class LocationStatus { located, guess };  // guess: bracketed but the secant did not converge
-std::string to_string(LocationStatus status);
+template <>
+struct EnumTable<LocationStatus> {
+  static constexpr EnumName<LocationStatus> entries[] = {
+      {LocationStatus::located, "located"}, {LocationStatus::guess, "guess"}};
+};
 
 enum class ContinuationStatus {
   completed,        // a stop condition was met (bound, max points, user stop)
@@ -29,9 +40,19 @@ enum class ContinuationStatus {
   outside_domain,   // the problem rejected a parameter value (message says which)
   start_failed      // Newton did not converge at the starting point
 };
-std::string to_string(ContinuationStatus status);
+template <>
+struct EnumTable<ContinuationStatus> {
+  static constexpr EnumName<ContinuationStatus> entries[] = {
+      {ContinuationStatus::completed, "completed"}, {ContinuationStatus::step_too_small, "step_too_small"},
+      {ContinuationStatus::outside_domain, "outside_domain"}, {ContinuationStatus::start_failed, "start_failed"}};
+};
 
 enum class Direction { forward, backward, both };  // forward: p increasing at the start
+template <>
+struct EnumTable<Direction> {
+  static constexpr EnumName<Direction> entries[] = {
+      {Direction::forward, "forward"}, {Direction::backward, "backward"}, {Direction::both, "both"}};
+};
 
 // A zero of g(x, p) along the branch is reported as a UZ point named `name`.
 struct UserEvent {

@@ -12,25 +12,6 @@
 
 namespace rbcstab {
 
-std::string to_string(ArpackWhich which) {
-  switch (which) {
-    case ArpackWhich::largest_real: return "largest_real";
-    case ArpackWhich::largest_magnitude: return "largest_magnitude";
-    case ArpackWhich::nearest_shift: return "nearest_shift";
-  }
-  return "?";
-}
-
-std::string to_string(ArpackStatus status) {
-  switch (status) {
-    case ArpackStatus::converged: return "converged";
-    case ArpackStatus::max_iterations: return "max_iterations";
-    case ArpackStatus::solve_failed: return "solve_failed";
-    case ArpackStatus::failed: return "failed";
-  }
-  return "?";
-}
-
 void ArpackOptions::validate(std::size_t n) const {
   const double nn = static_cast<double>(n);
   require(n >= 3, "n", nn, ">= 3 (ARPACK needs k + 2 <= ncv <= n)");

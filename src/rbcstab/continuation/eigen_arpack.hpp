@@ -15,6 +15,7 @@
 #include <span>
 #include <string>
 
+#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/model/structured_jacobian.hpp"
 
 namespace rbcstab {
@@ -29,7 +30,12 @@ enum class ArpackWhich {
   largest_magnitude,  // largest |lambda| (Floquet multipliers of a monodromy action); regular mode
   nearest_shift       // closest to the real shift: shift-invert mode 3, needs the shifted solve
 };
-std::string to_string(ArpackWhich which);
+template <>
+struct EnumTable<ArpackWhich> {
+  static constexpr EnumName<ArpackWhich> entries[] = {
+      {ArpackWhich::largest_real, "largest_real"}, {ArpackWhich::largest_magnitude, "largest_magnitude"},
+      {ArpackWhich::nearest_shift, "nearest_shift"}};
+};
 
 struct ArpackOptions {
   int k = 6;               // eigenvalues wanted
@@ -48,7 +54,12 @@ enum class ArpackStatus {
   solve_failed,    // the shifted solve reported a singular operator (shift on or too near the spectrum)
   failed           // ARPACK returned an error code (message has it)
 };
-std::string to_string(ArpackStatus status);
+template <>
+struct EnumTable<ArpackStatus> {
+  static constexpr EnumName<ArpackStatus> entries[] = {
+      {ArpackStatus::converged, "converged"}, {ArpackStatus::max_iterations, "max_iterations"},
+      {ArpackStatus::solve_failed, "solve_failed"}, {ArpackStatus::failed, "failed"}};
+};
 
 struct ArpackResult {
   ArpackStatus status = ArpackStatus::failed;

@@ -1,5 +1,5 @@
 #pragma once
-// Equilibria of the full model level (Eqs. eom, st; design/model.md section 1) as a continuation
+// Equilibria of the full model level (Eqs. eom, st; docs/theory.md) as a continuation
 // problem in any ContinuationParameter. Needed when the stress-free shape has l >= 3 content
 // (Scene::rest_delta_l), which only the full level holds; otherwise the modal problem is exact.
 //

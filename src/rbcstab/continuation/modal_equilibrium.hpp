@@ -1,5 +1,5 @@
 #pragma once
-// Equilibria of the modal model (design/model.md section 2) in regular coordinates, continued in any
+// Equilibria of the modal model (docs/theory.md) in regular coordinates, continued in any
 // ContinuationParameter, and the two-parameter curve of its symmetry-breaking branch points.
 //
 // Coordinates (all scaled by the total excess area Delta, so that the area is the unit sphere):
@@ -129,7 +129,7 @@ class ModalEquilibriumProblem final : public ContinuationProblem {
   mutable double cache_p_ = 0;
 };
 
-// The symmetry-breaking branch-point curve of mode l in two parameters (issue 4 item 5 for BP): the
+// The symmetry-breaking branch-point curve of mode l in two parameters: the
 // ellipsoidal state (a = 0) continued in p2 with p1 free and the extra equation Upsilon_l(sigma) = 0.
 // Unknowns X = (x_2 (the five l = 2 coordinates), p1); the equations are the l = 2 rows of G and
 // Upsilon_l(sigma) = 0, so the curve is a branch of the same engine.

@@ -1,5 +1,5 @@
 #pragma once
-// Periodic orbits of the modal model (issue 4 item 3) under the in-plane forcing of a rotating rest
+// Periodic orbits of the modal model under the in-plane forcing of a rotating rest
 // shape, as a ForcedSystem for PeriodicOrbitProblem (multiple shooting, Floquet multipliers).
 //
 // Coordinates: those of modal_equilibrium.hpp, x = (Re z, Im z, w, Re v~, Im v~, a_3, ..., a_L) scaled

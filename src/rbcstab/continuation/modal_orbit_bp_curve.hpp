@@ -1,6 +1,6 @@
 #pragma once
-// The Z2-reduced branch-point curve of the in-plane ELLIPSOIDAL orbit of the modal model (issue 4 item
-// 5 for BPs of cycles). On the modal orbit with a_l = 0 (l >= 3) and v~ = 0 the l = 2 block is the
+// The Z2-reduced two-parameter curve of branch points of cycles of the in-plane ELLIPSOIDAL orbit of the
+// modal model. On the modal orbit with a_l = 0 (l >= 3) and v~ = 0 the l = 2 block is the
 // reduced in-plane orbit (ReducedForcedSystem), and each a_l direction decouples, da_l' = Upsilon_l(sigma(t))
 // da_l, with Floquet multiplier exp(int_0^{2 pi} Upsilon_l dt) = exp(2 pi Upsilon_l(sigma_bar)) (Upsilon_l
 // is affine in sigma; sigma_bar = period mean of sigma). The a_l -> -a_l pitchfork of cycles of mode l

@@ -215,16 +215,6 @@ void SceneFloquetOptions::validate(int L) const {
   arpack.validate(2 * ModeAmplitudes::count(L));
 }
 
-std::string to_string(SceneFloquetStatus s) {
-  switch (s) {
-    case SceneFloquetStatus::converged: return "converged";
-    case SceneFloquetStatus::relaxation_failed: return "relaxation_failed";
-    case SceneFloquetStatus::not_periodic: return "not_periodic";
-    case SceneFloquetStatus::arpack_failed: return "arpack_failed";
-  }
-  return "arpack_failed";
-}
-
 SceneFloquetResult scene_floquet_multipliers(const Scene& scene, const SceneFloquetOptions& options) {
   const InitialState init = initial_state(scene);  // validates the scene
   options.validate(scene.L);  // before any work: bad input computes nothing

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "rbcstab/continuation/eigen_arpack.hpp"
+#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/scene.hpp"
 #include "rbcstab/model/system.hpp"
@@ -106,7 +107,12 @@ struct SceneFloquetOptions {
 };
 
 enum class SceneFloquetStatus { converged, relaxation_failed, not_periodic, arpack_failed };
-std::string to_string(SceneFloquetStatus s);
+template <>
+struct EnumTable<SceneFloquetStatus> {
+  static constexpr EnumName<SceneFloquetStatus> entries[] = {
+      {SceneFloquetStatus::converged, "converged"}, {SceneFloquetStatus::relaxation_failed, "relaxation_failed"},
+      {SceneFloquetStatus::not_periodic, "not_periodic"}, {SceneFloquetStatus::arpack_failed, "arpack_failed"}};
+};
 
 struct SceneFloquetResult {
   SceneFloquetStatus status = SceneFloquetStatus::converged;

@@ -234,8 +234,6 @@ void OrbitOptions::validate() const {
           "an integer in [4, 100000]");
 }
 
-std::string to_string(OrbitKind kind) { return kind == OrbitKind::swinging ? "swinging" : "tumbling"; }
-
 // ---------------------------------------------------------------- the shooting problem
 
 PeriodicOrbitProblem::PeriodicOrbitProblem(const ForcedSystem& system, const OrbitOptions& options)

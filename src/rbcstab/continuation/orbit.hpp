@@ -20,6 +20,7 @@
 #include <vector>
 
 #include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/continuation/fold_curve.hpp"
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/continuation/problem.hpp"
@@ -96,7 +97,11 @@ struct Floquet {
 };
 
 enum class OrbitKind { swinging, tumbling };
-std::string to_string(OrbitKind kind);
+template <>
+struct EnumTable<OrbitKind> {
+  static constexpr EnumName<OrbitKind> entries[] = {
+      {OrbitKind::swinging, "swinging"}, {OrbitKind::tumbling, "tumbling"}};
+};
 
 // What an orbit looks like over one period (reduced system: r, Psi of z = r e^{-i Psi}).
 struct OrbitSummary {

@@ -14,17 +14,6 @@
 namespace rbcstab {
 
 namespace {
-struct StepperInfo {
-  Stepper stepper;
-  const char* name;
-  bool implicit;
-};
-constexpr StepperInfo kSteppers[] = {
-    {Stepper::rk8pd, "rk8pd", false},       {Stepper::rkck, "rkck", false},   {Stepper::rkf45, "rkf45", false},
-    {Stepper::msadams, "msadams", false},   {Stepper::rosenbrock, "rosenbrock", true},
-    {Stepper::msbdf, "msbdf", true},        {Stepper::bsimp, "bsimp", true},  {Stepper::rk4imp, "rk4imp", true},
-};
-
 const gsl_odeiv2_step_type* gsl_type(Stepper s) {
   switch (s) {
     case Stepper::rk8pd: return gsl_odeiv2_step_rk8pd;
@@ -77,45 +66,18 @@ struct GslErrorHandlerOff {
 };
 }  // namespace
 
-std::string to_string(Stepper s) {
-  for (const auto& info : kSteppers)
-    if (info.stepper == s) return info.name;
-  return "rk8pd";
-}
-
-Stepper stepper_from_string(const std::string& name) {
-  for (const auto& info : kSteppers)
-    if (name == info.name) return info.stepper;
-  std::string all;
-  for (const auto& n : stepper_names()) all += (all.empty() ? "" : ", ") + n;
-  throw InvalidArgument("stepper", "stepper = '" + name + "' is not one of: " + all);
-}
-
-const std::vector<std::string>& stepper_names() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> v;
-    for (const auto& info : kSteppers) v.emplace_back(info.name);
-    return v;
-  }();
-  return names;
-}
-
 bool is_implicit(Stepper s) {
-  for (const auto& info : kSteppers)
-    if (info.stepper == s) return info.implicit;
-  return false;
-}
-
-std::string to_string(IntegrationStatus s) {
   switch (s) {
-    case IntegrationStatus::success: return "success";
-    case IntegrationStatus::step_size_underflow: return "step_size_underflow";
-    case IntegrationStatus::non_finite_state: return "non_finite_state";
-    case IntegrationStatus::step_limit: return "step_limit";
-    case IntegrationStatus::time_limit: return "time_limit";
-    case IntegrationStatus::solver_error: return "solver_error";
+    case Stepper::rk8pd:
+    case Stepper::rkck:
+    case Stepper::rkf45:
+    case Stepper::msadams: return false;
+    case Stepper::rosenbrock:
+    case Stepper::msbdf:
+    case Stepper::bsimp:
+    case Stepper::rk4imp: return true;
   }
-  return "solver_error";
+  return false;
 }
 
 void IntegratorOptions::validate() const {

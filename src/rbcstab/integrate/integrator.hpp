@@ -4,8 +4,10 @@
 #include <functional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/model/system.hpp"
 
 namespace rbcstab {
@@ -20,9 +22,16 @@ enum class Stepper {
   bsimp,       // GSL's implicit Bulirsch-Stoer with dense analytic Jacobian
   rk4imp,      // GSL's implicit Gauss 4th order with dense analytic Jacobian
 };
-std::string to_string(Stepper s);
-Stepper stepper_from_string(const std::string& name);  // throws InvalidArgument("stepper", ...)
-const std::vector<std::string>& stepper_names();
+template <>
+struct EnumTable<Stepper> {
+  static constexpr EnumName<Stepper> entries[] = {
+      {Stepper::rk8pd, "rk8pd"}, {Stepper::rkck, "rkck"}, {Stepper::rkf45, "rkf45"}, {Stepper::msadams, "msadams"},
+      {Stepper::rosenbrock, "rosenbrock"}, {Stepper::msbdf, "msbdf"}, {Stepper::bsimp, "bsimp"},
+      {Stepper::rk4imp, "rk4imp"}};
+};
+// Throws InvalidArgument("stepper", ...) naming the allowed steppers.
+inline Stepper stepper_from_string(std::string_view name) { return from_string<Stepper>(name, "stepper"); }
+inline const std::vector<std::string>& stepper_names() { return enum_names<Stepper>(); }
 bool is_implicit(Stepper s);
 
 struct IntegratorOptions {
@@ -37,7 +46,13 @@ struct IntegratorOptions {
 };
 
 enum class IntegrationStatus { success, step_size_underflow, non_finite_state, step_limit, time_limit, solver_error };
-std::string to_string(IntegrationStatus s);
+template <>
+struct EnumTable<IntegrationStatus> {
+  static constexpr EnumName<IntegrationStatus> entries[] = {
+      {IntegrationStatus::success, "success"}, {IntegrationStatus::step_size_underflow, "step_size_underflow"},
+      {IntegrationStatus::non_finite_state, "non_finite_state"}, {IntegrationStatus::step_limit, "step_limit"},
+      {IntegrationStatus::time_limit, "time_limit"}, {IntegrationStatus::solver_error, "solver_error"}};
+};
 
 struct IntegrationCounters {
   std::size_t steps = 0;             // accepted steps

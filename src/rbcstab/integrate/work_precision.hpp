@@ -19,16 +19,16 @@ struct WorkPrecisionOptions {
 };
 
 struct WorkPrecisionRow {
-  ModelLevel level;
-  Stepper stepper;
-  double rtol;
-  IntegrationStatus status;
-  std::size_t rhs_evaluations, jacobian_evaluations, steps;
-  double seconds;
-  double error_Delta;   // max over l with Delta_l(T) > 1e-8 Delta of |Delta_l(T) - ref| / ref
-  double error_sigma;   // |sigma(T) - ref| / max(1, |ref|)
-  int l_Delta;
-  bool verdict_changed;  // l_Delta differs from the reference's (runs that reached T only: a stopped run has no verdict)
+  ModelLevel level = ModelLevel::automatic;
+  Stepper stepper = Stepper::rk8pd;
+  double rtol = 0;
+  IntegrationStatus status = IntegrationStatus::success;
+  std::size_t rhs_evaluations = 0, jacobian_evaluations = 0, steps = 0;
+  double seconds = 0;
+  double error_Delta = 0;  // max over l with Delta_l(T) > 1e-8 Delta of |Delta_l(T) - ref| / ref
+  double error_sigma = 0;  // |sigma(T) - ref| / max(1, |ref|)
+  int l_Delta = 2;
+  bool verdict_changed = false;  // l_Delta differs from the reference's (runs that reached T only: a stopped run has no verdict)
 };
 
 struct WorkPrecisionTable {

@@ -11,24 +11,6 @@
 
 namespace rbcstab {
 
-std::string to_string(ModelLevel level) {
-  switch (level) {
-    case ModelLevel::automatic: return "auto";
-    case ModelLevel::full: return "full";
-    case ModelLevel::modal: return "modal";
-    case ModelLevel::reduced: return "reduced";
-  }
-  return "auto";
-}
-
-ModelLevel model_level_from_string(const std::string& name) {
-  if (name == "auto") return ModelLevel::automatic;
-  if (name == "full") return ModelLevel::full;
-  if (name == "modal") return ModelLevel::modal;
-  if (name == "reduced") return ModelLevel::reduced;
-  throw InvalidArgument("model", "model = '" + name + "' is not one of: auto, full, modal, reduced");
-}
-
 void require_L(long long L, int min_L, int max_L, std::string_view why, std::string_view name) {
   std::string range = "an integer in [" + std::to_string(min_L) + ", " + std::to_string(max_L) + "]";
   if (!why.empty()) range += " (" + std::string(why) + ")";

@@ -49,8 +49,8 @@ struct InitialState {
 InitialState initial_state(const Scene& scene);
 
 struct LevelChoice {
-  ModelLevel level;
-  bool exact;           // the chosen level represents the scene without approximation
+  ModelLevel level = ModelLevel::automatic;  // automatic only before a choice is made
+  bool exact = false;   // the chosen level represents the scene without approximation
   std::string reason;   // why this level (and what is dropped if not exact)
 };
 // The smallest exact level unless scene.model forces one; forcing a level that cannot hold the

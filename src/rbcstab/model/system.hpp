@@ -8,16 +8,24 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/model/amplitudes.hpp"
 #include "rbcstab/model/structured_jacobian.hpp"
 
 namespace rbcstab {
 
 enum class ModelLevel { automatic, full, modal, reduced };
-std::string to_string(ModelLevel level);
-ModelLevel model_level_from_string(const std::string& name);  // throws InvalidArgument
+template <>
+struct EnumTable<ModelLevel> {
+  static constexpr EnumName<ModelLevel> entries[] = {
+      {ModelLevel::automatic, "auto"}, {ModelLevel::full, "full"}, {ModelLevel::modal, "modal"},
+      {ModelLevel::reduced, "reduced"}};
+};
+// Throws InvalidArgument("model", ...) naming the allowed levels.
+inline ModelLevel model_level_from_string(std::string_view name) { return from_string<ModelLevel>(name, "model"); }
 
 // What every level reports at a state: the excess area per mode and the tension.
 struct Observation {

@@ -101,16 +101,6 @@ std::string tex_parameters(const Scene& s, const std::set<std::string>& varied, 
 }
 }  // namespace
 
-std::string to_string(PanelKind k) {
-  switch (k) {
-    case PanelKind::none: return "none";
-    case PanelKind::diagram: return "diagram";
-    case PanelKind::fig6e: return "fig6e";
-    case PanelKind::continuation: return "continuation";
-  }
-  return "none";
-}
-
 PanelKind panel_kind(const SceneFile& scene) {
   std::vector<PanelKind> found;
   for (auto [table, kind] : {std::pair{&scene.diagram, PanelKind::diagram}, std::pair{&scene.fig6e, PanelKind::fig6e},
@@ -183,11 +173,7 @@ ContinuationPanel continuation_panel(const SceneFile& sf) {
   if (t.has("max")) c.engine.p_max = t.number("max");
   require(!(c.engine.p_min >= c.engine.p_max), "continuation.max", c.engine.p_max, "> continuation.min");
   if (t.has("direction")) {
-    const std::string d = t.text("direction");
-    if (d == "forward") c.engine.direction = Direction::forward;
-    else if (d == "backward") c.engine.direction = Direction::backward;
-    else if (d == "both") c.engine.direction = Direction::both;
-    else throw InvalidArgument("continuation.direction", "continuation.direction = '" + d + "' must be forward, backward or both");
+    c.engine.direction = from_string<Direction>(t.text("direction"), "continuation.direction");
   }
   if (t.has("measure")) {
     c.measure = t.text("measure");

@@ -18,6 +18,7 @@
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
+#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/report/report.hpp"
 #include "rbcstab/sweep/agreement.hpp"
@@ -26,8 +27,13 @@
 
 namespace rbcstab {
 
-enum class PanelKind { none, diagram, fig6e, continuation };
-std::string to_string(PanelKind k);
+enum class PanelKind { none, diagram, fig6e, continuation };  // names: the scene file's panel tables
+template <>
+struct EnumTable<PanelKind> {
+  static constexpr EnumName<PanelKind> entries[] = {
+      {PanelKind::none, "none"}, {PanelKind::diagram, "diagram"}, {PanelKind::fig6e, "fig6e"},
+      {PanelKind::continuation, "continuation"}};
+};
 // The panel table the scene file holds: none, or exactly one (two throw InvalidArgument("scene", ...)).
 PanelKind panel_kind(const SceneFile& scene);
 // How the panel uses the truncation L (resolve_truncation): the grids of [diagram] and [fig6e] run every scene

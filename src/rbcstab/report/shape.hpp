@@ -16,7 +16,7 @@ namespace rbcstab {
 // Y_{l,-m} = (-1)^m conj(Y_{l,m}). Stable for large l (normalised recurrence, no factorials).
 std::complex<double> spherical_harmonic(int l, int m, double theta, double phi);
 
-// rho at one direction. Uses only m >= 0 and f_{l,-m} = (-1)^m conj(f_{l,m}) (model.md Sec. 1),
+// rho at one direction. Uses only m >= 0 and the reality condition f_{l,-m} = (-1)^m conj(f_{l,m}),
 // so the result is real by construction; a state that breaks the symmetry is projected onto it.
 double shape_radius(const ModeAmplitudes& f, double theta, double phi);
 

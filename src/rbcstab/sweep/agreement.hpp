@@ -1,5 +1,5 @@
 #pragma once
-// Agreement of every predictor with a simulated diagram (issue 5 point 3): for each predictor the fraction
+// Agreement of every predictor with a simulated diagram: for each predictor the fraction
 // of grid points whose verdict (stable / unstable) and mode match the simulation, and where the
 // disagreements sit (distance to that predictor's boundary in grid steps, S, alpha / alpha_*^init).
 // Predictors (verdict; mode when unstable):

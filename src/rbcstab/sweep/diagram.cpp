@@ -27,31 +27,6 @@ const std::vector<std::string>& axis_names() {
 
 Axis axis_from_string(const std::string& name) { return parameter_from_string(name, ParameterUse::axis); }
 
-std::string to_string(Classifier c) {
-  switch (c) {
-    case Classifier::automatic: return "auto";
-    case Classifier::final: return "final";
-    case Classifier::tail_mean: return "tail";
-  }
-  return "?";
-}
-
-Classifier classifier_from_string(const std::string& name) {
-  if (name == "auto") return Classifier::automatic;
-  if (name == "final") return Classifier::final;
-  if (name == "tail") return Classifier::tail_mean;
-  throw InvalidArgument("classifier", "classifier '" + name + "' is unknown (allowed: auto, final, tail)");
-}
-
-std::string to_string(Verdict v) {
-  switch (v) {
-    case Verdict::stable: return "stable";
-    case Verdict::unstable: return "unstable";
-    case Verdict::failed: return "failed";
-  }
-  return "?";
-}
-
 double AxisRange::value(int i) const {
   if (count <= 1) return min;
   if (i == count - 1) return max;

@@ -8,8 +8,10 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/parameter_table.hpp"
 #include "rbcstab/model/scene.hpp"
@@ -33,8 +35,13 @@ enum class Classifier {
   final,      // X = Delta_l(T): the paper's out-of-plane rule (Fig. 4)
   tail_mean,  // X = mean over [T - tail_window, T]: the paper's in-plane rule (Appendix E)
 };
-std::string to_string(Classifier c);
-Classifier classifier_from_string(const std::string& name);  // throws InvalidArgument("classifier", ...)
+template <>
+struct EnumTable<Classifier> {
+  static constexpr EnumName<Classifier> entries[] = {
+      {Classifier::automatic, "auto"}, {Classifier::final, "final"}, {Classifier::tail_mean, "tail"}};
+};
+// Throws InvalidArgument("classifier", ...) naming the allowed classifiers.
+inline Classifier classifier_from_string(std::string_view name) { return from_string<Classifier>(name, "classifier"); }
 
 struct DiagramSpec {
   AxisRange x{Axis::lnB, -1, 6, 64};    // fastest-varying axis: index = j * x.count + i
@@ -53,7 +60,11 @@ Scene point_scene(const Scene& base, const DiagramSpec& spec, std::size_t index)
 Scene plane_scene(const Scene& base, const DiagramSpec& spec, double x, double y);
 
 enum class Verdict { stable, unstable, failed };  // failed: the integrator did not reach T
-std::string to_string(Verdict v);
+template <>
+struct EnumTable<Verdict> {
+  static constexpr EnumName<Verdict> entries[] = {
+      {Verdict::stable, "stable"}, {Verdict::unstable, "unstable"}, {Verdict::failed, "failed"}};
+};
 
 struct PointResult {
   std::size_t index = 0;

@@ -180,17 +180,12 @@ std::vector<PointResult> points_from_json(const nlohmann::json& doc, const Diagr
       p.j = int(p.index / std::size_t(spec.x.count));
       p.x = spec.x.value(p.i);
       p.y = spec.y.value(p.j);
-      const std::string v = r.at("verdict").get<std::string>();
-      p.verdict = v == "stable" ? Verdict::stable : v == "unstable" ? Verdict::unstable : Verdict::failed;
+      p.verdict = try_from_string<Verdict>(r.at("verdict").get<std::string>()).value_or(Verdict::failed);
       p.l_Delta = r.at("l_Delta").get<int>();
       p.growth = number(r.at("growth"));
       p.oscillating = r.at("oscillating").get<bool>();
       p.sigma_final = number(r.at("sigma_final"));
-      const std::string st = r.at("status").get<std::string>();
-      for (IntegrationStatus s : {IntegrationStatus::success, IntegrationStatus::step_size_underflow,
-                                  IntegrationStatus::non_finite_state, IntegrationStatus::step_limit,
-                                  IntegrationStatus::time_limit, IntegrationStatus::solver_error})
-        if (to_string(s) == st) p.status = s;
+      if (const auto st = try_from_string<IntegrationStatus>(r.at("status").get<std::string>())) p.status = *st;
       p.reason = r.at("reason").get<std::string>();
       p.t_reached = number(r.at("t_reached"));
       p.steps = r.at("steps").get<std::size_t>();

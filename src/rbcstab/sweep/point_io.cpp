@@ -28,9 +28,6 @@ bool parse_int(const std::string& s, Int& out) {
   const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
   return r.ec == std::errc() && r.ptr == s.data() + s.size();
 }
-const IntegrationStatus kStatuses[] = {IntegrationStatus::success,    IntegrationStatus::step_size_underflow,
-                                       IntegrationStatus::non_finite_state, IntegrationStatus::step_limit,
-                                       IntegrationStatus::time_limit, IntegrationStatus::solver_error};
 }  // namespace
 
 std::string point_to_line(const PointResult& p, const std::string& config_hash) {
@@ -60,12 +57,11 @@ std::optional<PointResult> point_from_line(const std::string& line, const std::s
             parse_double(f[9], p.t_reached) && parse_int(f[10], p.steps) && parse_int(f[11], p.failed_steps) &&
             parse_int(f[12], p.rhs_evaluations) && parse_double(f[13], p.seconds);
   if (!ok) return std::nullopt;
-  bool verdict_ok = false, status_ok = false;
-  for (Verdict v : {Verdict::stable, Verdict::unstable, Verdict::failed})
-    if (to_string(v) == f[3]) p.verdict = v, verdict_ok = true;
-  for (IntegrationStatus s : kStatuses)
-    if (to_string(s) == f[8]) p.status = s, status_ok = true;
-  if (!verdict_ok || !status_ok) return std::nullopt;
+  const auto verdict = try_from_string<Verdict>(f[3]);
+  const auto status = try_from_string<IntegrationStatus>(f[8]);
+  if (!verdict || !status) return std::nullopt;
+  p.verdict = *verdict;
+  p.status = *status;
   p.oscillating = osc != 0;
   p.reason = line.substr(bar + 2);
   while (!p.reason.empty() && (p.reason.back() == '\n' || p.reason.back() == '\r')) p.reason.pop_back();

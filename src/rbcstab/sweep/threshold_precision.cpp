@@ -181,7 +181,7 @@ ThresholdPrecision threshold_precision(const Scene& base, const ThresholdPrecisi
   struct Predictor {
     std::string name;
     VerdictFn f;
-    bool integrates;
+    bool integrates = false;
   };
   const std::vector<Predictor> predictors{
       {"asymptotic", [&](double x, double r) { return asymptotic(base, x, r); }, false},

@@ -1,5 +1,5 @@
 #pragma once
-// Threshold precision against cost (issue 7 point 3): the critical C at fixed B (the ln B - ln C plane of
+// Threshold precision against cost: the critical C at fixed B (the ln B - ln C plane of
 // Fig. 4(b)) located by each predictor and each method, against that predictor's own converged boundary.
 //  predictors: asymptotic (exact out-of-plane equilibrium, verdict/asymptotic.hpp asymptotic_verdict; its S >> 1
 //              closed form C_*^+- is reported beside it), finite horizon (max_{l >= 3} G_l(T) > 0,

@@ -22,13 +22,6 @@ const char* kAsymptoticOrbit =
 const char* kFiniteHorizon = "G_l(T) = int_0^T Upsilon_l(sigma_R(t)) dt = 0 (reduced transient, envelope over l = 3..L)";
 }  // namespace
 
-std::string to_string(TraceCriterion c) {
-  return c == TraceCriterion::asymptotic ? "asymptotic" : "finite-horizon";
-}
-TraceCriterion trace_criterion_from_string(const std::string& name) {
-  if (name == "asymptotic") return TraceCriterion::asymptotic;
-  if (name == "finite-horizon" || name == "finite_horizon") return TraceCriterion::finite_horizon;
-  throw InvalidArgument("criterion", "'" + name + "' is not a criterion: asymptotic | finite-horizon");
 }
 
 void TraceOptions::validate() const {

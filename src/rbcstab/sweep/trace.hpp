@@ -1,5 +1,5 @@
 #pragma once
-// Stability boundaries traced as curves by continuation (issue 5 point 2). Criteria, per mode l = 3..L
+// Stability boundaries traced as curves by continuation. Criteria, per mode l = 3..L
 // (g_l > 0: mode l grows), the verdicts of rbcstab::verdict:
 //  - asymptotic: mu_l = Upsilon_l(<sigma_R>) on the reduced attractor: the exact out-of-plane equilibrium
 //    for out-of-plane scenes; in plane the period average over the attracting 2 pi-periodic orbit, or a
@@ -10,9 +10,11 @@
 // g_l = 0 from automatically located starts, with the corners where another mode takes over located as
 // engine events (sweep/zero_set.hpp).
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "rbcstab/analysis/predictors.hpp"
+#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/model/scene.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/zero_set.hpp"
@@ -21,8 +23,17 @@
 namespace rbcstab {
 
 enum class TraceCriterion { asymptotic, finite_horizon };
-std::string to_string(TraceCriterion c);
-TraceCriterion trace_criterion_from_string(const std::string& name);  // throws InvalidArgument("criterion", ...)
+// Outputs write "finite-horizon"; input also takes the enumerator's spelling "finite_horizon".
+template <>
+struct EnumTable<TraceCriterion> {
+  static constexpr EnumName<TraceCriterion> entries[] = {
+      {TraceCriterion::asymptotic, "asymptotic"}, {TraceCriterion::finite_horizon, "finite-horizon"},
+      {TraceCriterion::finite_horizon, "finite_horizon"}};
+};
+// Throws InvalidArgument("criterion", ...) naming the allowed criteria.
+inline TraceCriterion trace_criterion_from_string(std::string_view name) {
+  return from_string<TraceCriterion>(name, "criterion");
+}
 
 struct TraceOptions {
   TraceCriterion criterion = TraceCriterion::asymptotic;

@@ -126,8 +126,8 @@ class ModeCurve final : public ContinuationProblem {
 };
 
 struct Root {
-  Vec2 w;
-  Vec2 inward;  // into the square (edges); (0, 0) for interior seed lines
+  Vec2 w{};
+  Vec2 inward{};  // into the square (edges); (0, 0) for interior seed lines
 };
 
 // Sign changes of the envelope along w(s) = a + s (b - a), s in [0, 1], refined by bisection.
@@ -179,18 +179,18 @@ double segment_distance(Vec2 p, Vec2 a, Vec2 b) {
 enum class End { edge, corner, closed, other };
 
 struct UPoint {
-  Vec2 w;
-  std::size_t k;
+  Vec2 w{};
+  std::size_t k = 0;
 };
 struct HalfPiece {
-  std::size_t k;
+  std::size_t k = 0;
   std::vector<Vec2> w;
 };
 struct HalfCorner {
-  Vec2 w;
-  std::size_t from, to;
-  LocationStatus status;
-  double precision;
+  Vec2 w{};
+  std::size_t from = 0, to = 0;
+  LocationStatus status = LocationStatus::guess;
+  double precision = 0;
 };
 struct Half {
   std::vector<HalfPiece> pieces;
