@@ -18,6 +18,7 @@
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/trace.hpp"
+#include "rbcstab/verdict/asymptotic.hpp"
 
 namespace rbcstab {
 

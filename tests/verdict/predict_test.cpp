@@ -116,7 +116,7 @@ TEST(Verdict, OutOfPlaneSummaryUsesTheExactEquilibrium) {
   const ScenePrediction pr = predict(s, nullptr);
   EXPECT_EQ(pr.asymptotic_sigma.source, SigmaSource::equilibrium);
   EXPECT_EQ(pr.sigma_R_asymptotic.value, out_of_plane_equilibrium(s.parameters).sigma_R);
-  EXPECT_EQ(pr.asymptotic_source, "exact out-of-plane equilibrium (design/model.md section 4)");
+  EXPECT_EQ(pr.asymptotic_source, "exact out-of-plane equilibrium");
 }
 
 // predict() from the transient the truncation rule reads (the summary's path): the finite-horizon verdict is

@@ -22,8 +22,6 @@ const char* kAsymptoticOrbit =
 const char* kFiniteHorizon = "G_l(T) = int_0^T Upsilon_l(sigma_R(t)) dt = 0 (reduced transient, envelope over l = 3..L)";
 }  // namespace
 
-}
-
 void TraceOptions::validate() const {
   require(std::isfinite(T) && T >= 0, "T", T, "finite and >= 0 (0: the scene's T)");
   predictor.validate();

@@ -11,15 +11,6 @@
 
 namespace rbcstab {
 
-std::string to_string(SigmaSource s) {
-  switch (s) {
-    case SigmaSource::equilibrium: return "equilibrium";
-    case SigmaSource::periodic_orbit: return "periodic_orbit";
-    case SigmaSource::time_average: return "time_average";
-  }
-  return "time_average";
-}
-
 void OrbitAverageOptions::validate() const {
   require(relaxation_periods >= 0 && relaxation_periods <= 100000, "relaxation_periods", relaxation_periods,
           "an integer in [0, 100000]");

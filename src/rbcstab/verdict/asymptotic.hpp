@@ -19,12 +19,18 @@
 #include "rbcstab/analysis/quantity.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
 
 enum class SigmaSource { equilibrium, periodic_orbit, time_average };
-std::string to_string(SigmaSource s);
+template <>
+struct EnumTable<SigmaSource> {
+  static constexpr EnumName<SigmaSource> entries[] = {
+      {SigmaSource::equilibrium, "equilibrium"}, {SigmaSource::periodic_orbit, "periodic_orbit"},
+      {SigmaSource::time_average, "time_average"}};
+};
 
 struct OrbitAverageOptions {
   bool enabled = true;           // false: in plane always by the time average (the former criterion; comparisons)

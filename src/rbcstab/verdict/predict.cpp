@@ -11,7 +11,7 @@ namespace rbcstab {
 namespace {
 std::string source_in_words(const AsymptoticSigma& a, const PredictorOptions& options) {
   switch (a.source) {
-    case SigmaSource::equilibrium: return "exact out-of-plane equilibrium (design/model.md section 4)";
+    case SigmaSource::equilibrium: return "exact out-of-plane equilibrium";
     case SigmaSource::periodic_orbit:
       return "period average of sigma_R over the attracting 2 pi-periodic orbit of the reduced model (largest "
              "nontrivial Floquet multiplier modulus " +
