@@ -911,7 +911,7 @@ SceneBranch switch_at_label(const ContinuationRun& run, int label, const Restart
     for (const LabelledPoint& p : labelled_points(run))
       if (p.type == to_string(SpecialPointType::BP) && !(std::holds_alternative<SceneCurve>(run) && p.branch == 2))
         bps += (bps.empty() ? "" : ", ") + std::to_string(p.label);
-    throw InvalidArgument("switch_at", what + " is " + (lp.type.empty() ? "a regular point" : "a " + lp.type + " point") +
+    throw InvalidArgument("switch_at", what + " is " + (lp.type.empty() ? "a regular point" : "a point of type " + lp.type) +
                                            ", not a BP (branch point): " +
                                            (bps.empty() ? "this run has no BP" : "the BP labels of this run are " + bps));
   }
@@ -955,8 +955,9 @@ SceneCurve restart_curve(const ContinuationRun& run, int label, const CurveSpec&
   if (curve_point ? on->spec.type != curve.type : lp.type != T)
     throw InvalidArgument("label", "label = " + std::to_string(label) + " is " +
                                        (curve_point ? "a point of a " + to_string(on->spec.type) + " curve"
-                                                    : lp.type.empty() ? "a regular point" : "a " + lp.type + " point") +
-                                       ": --curve " + T + " starts from a " + T + " point or a point of a " + T + " curve");
+                                                    : lp.type.empty() ? "a regular point" : "a point of type " + lp.type) +
+                                       ": --curve " + T + " starts from a point of type " + T + " or a point of a " + T +
+                                       " curve");
   SceneBranch one;
   one.spec = restart_spec(run, label, changes);
   one.problem_scene = one.spec.scene;
