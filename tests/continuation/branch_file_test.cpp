@@ -297,14 +297,20 @@ TEST(BranchRestart, CurveLabelsRestartTheirBranchAndTheirCurve) {
   const LabelledPoint lp = regular_label(run, 2, 5);
   const std::vector<double>& pq = c.curve.branch.points[lp.index].parameters;
   RestartChanges ch;
-  ch.p_min = pq[0] - 0.01;
-  ch.p_max = pq[0] + 0.01;
+  ch.p_min = pq[0] - 0.005;
+  ch.p_max = pq[0] + 0.005;
+  ch.direction = Direction::both;
   const SceneBranch one = restart(run, lp.label, ch);
   EXPECT_EQ(one.spec.parameter, P::C);
   EXPECT_EQ(one.problem_scene.parameters.B, pq[1]);
-  const SpecialPoint* bp = find_special_point(one.branch.branch, SpecialPointType::BP);
-  ASSERT_NE(bp, nullptr);
-  EXPECT_NEAR(bp->p, pq[0], 1e-9);
+  // The start is that BP: both halves of the branch meet it, and it is reported once, with the unstable
+  // counts of either side.
+  const Branch& ob = one.branch.branch;
+  ASSERT_EQ(ob.special_points.size(), 1u);
+  EXPECT_EQ(ob.special_points[0].type, SpecialPointType::BP);
+  EXPECT_NEAR(ob.special_points[0].p, pq[0], 1e-9);
+  EXPECT_EQ(ob.points[ob.special_points[0].after_index].n_unstable, ob.special_points[0].unstable_before);
+  EXPECT_EQ(ob.points[ob.special_points[0].after_index + 1].n_unstable, ob.special_points[0].unstable_after);
   // The curve again from that point: it lands on the same ends (B = 0.8 and 1.2) at the same C.
   const SceneCurve again = restart_curve(run, lp.label, test::curve_of(CurveKind::BP, P::B, 0.8, 1.2));
   ASSERT_TRUE(again.started) << again.message;
