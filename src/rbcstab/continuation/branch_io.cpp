@@ -132,6 +132,9 @@ std::vector<std::string> table_measures(const MeasuredBranch& m, const TableOpti
   return out;
 }
 
+// "stable" for no unstable eigenvalue (multiplier), else "unstable n".
+std::string stability_word(int n_unstable) { return n_unstable == 0 ? "stable" : "unstable " + std::to_string(n_unstable); }
+
 // AUTO's b-file table: one row per labelled point of the branches (BR 1, 2, ...), in order along each.
 void b_table(std::ostream& os, const std::vector<const MeasuredBranch*>& branches, const TableOptions& table) {
   const MeasuredBranch* first = nullptr;
@@ -176,10 +179,12 @@ void b_table(std::ostream& os, const std::vector<const MeasuredBranch*>& branche
       }
       if (special) {
         const SpecialPoint& sp = m.branch.special_points[k];
-        os << "  unstable " << sp.unstable_before << " -> " << sp.unstable_after << '\n';
+        os << "  ";
+        if (sp.unstable_after == sp.unstable_before) os << stability_word(sp.unstable_before) << '\n';
+        else os << "unstable " << sp.unstable_before << " -> " << sp.unstable_after << '\n';
       } else {
         const BranchPoint& q = m.branch.points[k];
-        os << "  " << (q.stable ? "stable" : "unstable " + std::to_string(q.n_unstable)) << '\n';
+        os << "  " << (q.stable ? "stable" : stability_word(q.n_unstable)) << '\n';
       }
     });
   }
