@@ -21,18 +21,19 @@ function(require_path json)
   endif()
 endfunction()
 
-# `rbcstab <args> --csv WORK/never.csv` must exit 2, name `fragment` on stderr and write no file.
+# `rbcstab <args> --csv WORK/never.csv --save WORK/never.json` must exit 2, name `fragment` on stderr and
+# write neither file.
 function(expect_bad_input fragment)
-  execute_process(COMMAND ${CLI} ${ARGN} --csv ${WORK}/never.csv
+  execute_process(COMMAND ${CLI} ${ARGN} --csv ${WORK}/never.csv --save ${WORK}/never.json
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 2)
-    fail("expected exit 2, got ${rc}")
+    fail("expected exit 2, got ${rc}: ${err}")
   endif()
   string(FIND "${err}" "${fragment}" pos)
   if(pos EQUAL -1)
     fail("message does not name '${fragment}': ${err}")
   endif()
-  if(EXISTS ${WORK}/never.csv)
+  if(EXISTS ${WORK}/never.csv OR EXISTS ${WORK}/never.json)
     fail("a file was written on bad input")
   endif()
 endfunction()

@@ -11,23 +11,6 @@ include(${CMAKE_CURRENT_LIST_DIR}/cli_common.cmake)
 set(MODAL_ARGS continue --kind modal --parameter C --min 0.015 --max 0.08 --direction backward --lambda 1 --B 1
     --C 0.08 --Delta 1 --Delta0 0.01 --L 6)
 
-# `rbcstab <args> --csv WORK/never.csv --save WORK/never.json` must exit 2, name `fragment` on stderr and
-# write neither file.
-function(expect_refused fragment)
-  execute_process(COMMAND ${CLI} ${ARGN} --csv ${WORK}/never.csv --save ${WORK}/never.json
-                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
-  if(NOT rc EQUAL 2)
-    fail("expected exit 2, got ${rc}: ${err}")
-  endif()
-  string(FIND "${err}" "${fragment}" pos)
-  if(pos EQUAL -1)
-    fail("message does not name '${fragment}': ${err}")
-  endif()
-  if(EXISTS ${WORK}/never.csv OR EXISTS ${WORK}/never.json)
-    fail("a file was written on bad input")
-  endif()
-endfunction()
-
 function(run_ok out_var)
   execute_process(COMMAND ${CLI} ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 0)
@@ -100,7 +83,7 @@ if(CASE STREQUAL "labels_and_file")
   if(head STREQUAL "" OR bprow STREQUAL "")
     fail("text table: ${text}")
   endif()
-  expect_refused("measures = 'nope'" ${MODAL_ARGS} --measures nope)
+  expect_bad_input("measures = 'nope'" ${MODAL_ARGS} --measures nope)
 elseif(CASE STREQUAL "restart_reproduces")
   # From a label in the middle, the restart ends on the same bound at the same state and locates the BPs
   # beyond the label where the uninterrupted run did, to 1e-10.
@@ -212,20 +195,20 @@ elseif(CASE STREQUAL "restart_bad_input")
   math(EXPR half "${size} / 2")
   string(SUBSTRING "${whole}" 0 ${half} cut)
   file(WRITE ${WORK}/cut.json "${cut}")
-  expect_refused("label = 99 is not a label of this run: its labels are 1 to" continue --restart ${WORK}/m.json --label 99)
-  expect_refused("switch_at = 1 is a point of type EP, not a BP" continue --restart ${WORK}/m.json --switch-at 1)
-  expect_refused("restart = '${WORK}/plain.json' is not a valid branch file: it has no \"format\": \"rbcstab-branch\""
+  expect_bad_input("label = 99 is not a label of this run: its labels are 1 to" continue --restart ${WORK}/m.json --label 99)
+  expect_bad_input("switch_at = 1 is a point of type EP, not a BP" continue --restart ${WORK}/m.json --switch-at 1)
+  expect_bad_input("restart = '${WORK}/plain.json' is not a valid branch file: it has no \"format\": \"rbcstab-branch\""
                  continue --restart ${WORK}/plain.json --label 1)
-  expect_refused("restart = '${WORK}/cut.json' is not a valid branch file: it is not JSON (a truncated"
+  expect_bad_input("restart = '${WORK}/cut.json' is not a valid branch file: it is not JSON (a truncated"
                  continue --restart ${WORK}/cut.json --label 1)
-  expect_refused("restart = '${WORK}/none.json'" continue --restart ${WORK}/none.json --label 1)
-  expect_refused("--label needs --restart FILE" continue --kind modal --label 3)
-  expect_refused("--lambda cannot change it" continue --restart ${WORK}/m.json --label 1 --lambda 2)
-  expect_refused("--restart needs --label N" continue --restart ${WORK}/m.json)
-  expect_refused("kind = orbit is not the kind of the run restarted from, modal" continue --restart ${WORK}/m.json --label 1
+  expect_bad_input("restart = '${WORK}/none.json'" continue --restart ${WORK}/none.json --label 1)
+  expect_bad_input("--label needs --restart FILE" continue --kind modal --label 3)
+  expect_bad_input("--lambda cannot change it" continue --restart ${WORK}/m.json --label 1 --lambda 2)
+  expect_bad_input("--restart needs --label N" continue --restart ${WORK}/m.json)
+  expect_bad_input("kind = orbit is not the kind of the run restarted from, modal" continue --restart ${WORK}/m.json --label 1
                  --kind orbit)
   special_label("${out}" BP C 0.036 0.037 lbp Cbp)
-  expect_refused("parameter = B cannot switch at switch_at = ${lbp}" continue --restart ${WORK}/m.json --switch-at ${lbp}
+  expect_bad_input("parameter = B cannot switch at switch_at = ${lbp}" continue --restart ${WORK}/m.json --switch-at ${lbp}
                  --parameter B)
 else()
   fail("unknown case")

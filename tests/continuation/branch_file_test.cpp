@@ -53,16 +53,6 @@ LabelledPoint regular_label(const ContinuationRun& run, int b, std::size_t from 
   return {};
 }
 
-std::string invalid(const std::function<void()>& f, std::string* message = nullptr) {
-  try {
-    f();
-  } catch (const InvalidArgument& e) {
-    if (message) *message = e.what();
-    return e.parameter();
-  }
-  ADD_FAILURE() << "expected InvalidArgument";
-  return "";
-}
 
 double max_diff(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   return a.size() == b.size() ? (a - b).lpNorm<Eigen::Infinity>() : std::numeric_limits<double>::infinity();
@@ -98,32 +88,32 @@ TEST(BranchFile, RefusesWhatIsNotABranchFileNamingTheKey) {
     edit(j);
     return j.dump();
   };
-  EXPECT_EQ(invalid(parse(good.substr(0, good.size() / 2)), &m), "restart");  // truncated
+  EXPECT_EQ(test::invalid_parameter(parse(good.substr(0, good.size() / 2)), &m), "restart");  // truncated
   EXPECT_NE(m.find("restart = 'f.json' is not a valid branch file: it is not JSON (a truncated or corrupted file?)"),
             std::string::npos) << m;
-  EXPECT_EQ(invalid(parse("{\"branch\": []}"), &m), "restart");
+  EXPECT_EQ(test::invalid_parameter(parse("{\"branch\": []}"), &m), "restart");
   EXPECT_NE(m.find("it has no \"format\": \"rbcstab-branch\""), std::string::npos) << m;
-  EXPECT_EQ(invalid(parse("[parameters]\nC = 0.04\n"), &m), "restart");  // a scene file
+  EXPECT_EQ(test::invalid_parameter(parse("[parameters]\nC = 0.04\n"), &m), "restart");  // a scene file
   EXPECT_NE(m.find("not JSON"), std::string::npos) << m;
-  EXPECT_EQ(invalid(parse(edited([](json& j) { j["version"] = 2; })), &m), "restart");
+  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["version"] = 2; })), &m), "restart");
   EXPECT_NE(m.find("version 2: this rbcstab reads version 1"), std::string::npos) << m;
-  EXPECT_EQ(invalid(parse(edited([](json& j) { j.erase("spec"); })), &m), "restart");
+  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j.erase("spec"); })), &m), "restart");
   EXPECT_NE(m.find("key 'spec' is missing"), std::string::npos) << m;
-  EXPECT_EQ(invalid(parse(edited([](json& j) { j["spec"]["kind"] = "nope"; })), &m), "restart");
+  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["spec"]["kind"] = "nope"; })), &m), "restart");
   EXPECT_NE(m.find("spec.kind: kind = 'nope' is not available"), std::string::npos) << m;
-  EXPECT_EQ(invalid(parse(edited([](json& j) { j["branch"][3]["x"].erase(0); })), &m), "restart");
+  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["branch"][3]["x"].erase(0); })), &m), "restart");
   EXPECT_NE(m.find("branch[3].x has 8 entries: must be 9 (the problem's unknowns)"), std::string::npos) << m;
-  EXPECT_EQ(invalid(parse(edited([](json& j) { j["branch"][3]["x"][1] = nullptr; })), &m), "restart");
+  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["branch"][3]["x"][1] = nullptr; })), &m), "restart");
   EXPECT_NE(m.find("branch[3].x[1] must be a finite number, got null"), std::string::npos) << m;
-  EXPECT_EQ(invalid(parse(edited([](json& j) { j["switched_branch"]["branch"][0]["C"] = "0.1"; })), &m), "restart");
+  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["switched_branch"]["branch"][0]["C"] = "0.1"; })), &m), "restart");
   EXPECT_NE(m.find("switched_branch.branch[0].C must be a finite number"), std::string::npos) << m;
-  EXPECT_EQ(invalid(parse(edited([](json& j) { j["branch"][1]["label"] = 1; })), &m), "restart");
+  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["branch"][1]["label"] = 1; })), &m), "restart");
   EXPECT_NE(m.find("label 1 appears twice"), std::string::npos) << m;
-  EXPECT_EQ(invalid(parse(edited([](json& j) { j["branch"][0]["type"] = ""; })), &m), "restart");
+  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["branch"][0]["type"] = ""; })), &m), "restart");
   EXPECT_NE(m.find("branch[0].type = '' must be 'EP'"), std::string::npos) << m;
-  EXPECT_EQ(invalid(parse(edited([](json& j) { j["spec"]["scene"] = "[parameters]\nC = -1\n"; })), &m), "restart");
+  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["spec"]["scene"] = "[parameters]\nC = -1\n"; })), &m), "restart");
   EXPECT_NE(m.find("spec.scene: "), std::string::npos) << m;
-  EXPECT_EQ(invalid([] { (void)load_branch("/nonexistent/b.json"); }, &m), "restart");
+  EXPECT_EQ(test::invalid_parameter([] { (void)load_branch("/nonexistent/b.json"); }, &m), "restart");
   EXPECT_NE(m.find("restart = '/nonexistent/b.json'"), std::string::npos) << m;
 }
 
@@ -185,10 +175,10 @@ TEST(BranchRestart, AnyParameterFromALabel) {
   EXPECT_NEAR(fbp->p, 0.08, 1e-9);
   // A parameter outside the new bounds, and a kind that is not the run's, are refused.
   ch.p_max = 0.9;
-  EXPECT_EQ(invalid([&] { (void)restart_spec(run, 1, ch); }), "min");
+  EXPECT_EQ(test::invalid_parameter([&] { (void)restart_spec(run, 1, ch); }), "min");
   RestartChanges kind;
   kind.kind = ProblemKind::full;
-  EXPECT_EQ(invalid([&] { (void)restart_spec(run, 1, kind); }), "kind");
+  EXPECT_EQ(test::invalid_parameter([&] { (void)restart_spec(run, 1, kind); }), "kind");
 }
 
 TEST(BranchSwitch, AtTheLabelledOnsetBPIsThePostInstabilityBranch) {
@@ -239,15 +229,15 @@ TEST(BranchSwitch, AtTheLabelledOnsetBPIsThePostInstabilityBranch) {
 
   // Labels that are not BPs, a label the run does not have, a parameter other than the branch's.
   std::string m;
-  EXPECT_EQ(invalid([&] { (void)switch_at_label(saved, 1); }, &m), "switch_at");
+  EXPECT_EQ(test::invalid_parameter([&] { (void)switch_at_label(saved, 1); }, &m), "switch_at");
   EXPECT_NE(m.find("switch_at = 1 is a point of type EP, not a BP (branch point): the BP labels of this run are"), std::string::npos) << m;
-  EXPECT_EQ(invalid([&] { (void)switch_at_label(saved, 999); }, &m), "switch_at");
+  EXPECT_EQ(test::invalid_parameter([&] { (void)switch_at_label(saved, 999); }, &m), "switch_at");
   EXPECT_NE(m.find("switch_at = 999 is not a label of this run: its labels are 1 to "), std::string::npos) << m;
-  EXPECT_EQ(invalid([&] { (void)restart(saved, 999); }, &m), "label");
+  EXPECT_EQ(test::invalid_parameter([&] { (void)restart(saved, 999); }, &m), "label");
   RestartChanges lam;
   lam.parameter = P::lambda;
-  EXPECT_EQ(invalid([&] { (void)switch_at_label(saved, r.switched->bp_label, lam); }), "parameter");
-  EXPECT_EQ(invalid([&] { (void)switch_at_label(round_trip(orbit_run()), 1); }, &m), "switch_at");
+  EXPECT_EQ(test::invalid_parameter([&] { (void)switch_at_label(saved, r.switched->bp_label, lam); }), "parameter");
+  EXPECT_EQ(test::invalid_parameter([&] { (void)switch_at_label(round_trip(orbit_run()), 1); }, &m), "switch_at");
   EXPECT_NE(m.find("not orbit: the reduced in-plane orbit has no BP"), std::string::npos) << m;
 }
 
@@ -329,9 +319,9 @@ TEST(BranchRestart, CurveLabelsRestartTheirBranchAndTheirCurve) {
   EXPECT_NEAR(from_bp.curve.branch.points.back().parameters[0], a.points.back().parameters[0], 1e-10);
   // A curve of another type, and switching at a point of the curve, are refused naming the flag.
   std::string m;
-  EXPECT_EQ(invalid([&] { (void)restart_curve(run, lp.label, test::curve_of(CurveKind::LP, P::B, 0.8, 1.2)); }, &m), "label");
+  EXPECT_EQ(test::invalid_parameter([&] { (void)restart_curve(run, lp.label, test::curve_of(CurveKind::LP, P::B, 0.8, 1.2)); }, &m), "label");
   EXPECT_NE(m.find("is a point of a BP curve: --curve LP starts from a point of type LP or a point of a LP curve"), std::string::npos) << m;
-  EXPECT_EQ(invalid([&] { (void)switch_at_label(run, lp.label); }, &m), "switch_at");
+  EXPECT_EQ(test::invalid_parameter([&] { (void)switch_at_label(run, lp.label); }, &m), "switch_at");
   EXPECT_NE(m.find("is a point of the BP curve, not a BP of a one-parameter branch"), std::string::npos) << m;
 }
 

@@ -253,6 +253,36 @@ std::vector<MeasureValue> measures_of(const Reader& rd, const json& o, const std
   return v;
 }
 
+// A special point; its parameters by name (a branch's special points) or, names null, as the array
+// "parameters" (a curve's start).
+SpecialPoint read_special_point(const Reader& rd, const json& o, const std::string& at,
+                                const std::vector<std::string>* names = nullptr) {
+  SpecialPoint sp;
+  sp.type = enum_named(rd, rd.string(o, "type", at), kSpecialTypes, Reader::join(at, "type"));
+  sp.name = rd.string(o, "name", at);
+  sp.x = rd.vector(rd.at(o, "x", at), Reader::join(at, "x"));
+  sp.p = rd.number(o, "p", at);
+  if (names) {
+    sp.parameters = parameters_of(rd, o, *names, at);
+  } else {
+    const json& params = rd.array(o, "parameters", at);
+    for (std::size_t i = 0; i < params.size(); ++i)
+      sp.parameters.push_back(rd.value(params[i], Reader::item(Reader::join(at, "parameters"), i)));
+  }
+  const json& bracket = rd.at(o, "bracket", at);
+  if (!bracket.is_array() || bracket.size() != 2) rd.fail(Reader::join(at, "bracket") + " must be a pair");
+  sp.p_lo = rd.value(bracket[0], Reader::join(at, "bracket[0]"), true);
+  sp.p_hi = rd.value(bracket[1], Reader::join(at, "bracket[1]"), true);
+  sp.precision = rd.number(o, "precision", at, true);
+  sp.status = enum_named(rd, rd.string(o, "status", at), kLocations, Reader::join(at, "status"));
+  sp.unstable_before = rd.small_int(o, "unstable_before", at);
+  sp.unstable_after = rd.small_int(o, "unstable_after", at);
+  sp.test_value = rd.number(o, "test_value", at, true);
+  sp.after_index = rd.index(o, "after_index", at);
+  sp.eigenvalue = rd.complex(rd.at(o, "eigenvalue", at), Reader::join(at, "eigenvalue"));
+  return sp;
+}
+
 // A branch object back into a MeasuredBranch: parameter and measure names as the run's, states of
 // `dimension` unknowns (0: any, the same for every point).
 MeasuredBranch read_branch(const Reader& rd, const json& j, const std::string& path, std::vector<std::string> parameter_names,
@@ -302,27 +332,11 @@ MeasuredBranch read_branch(const Reader& rd, const json& j, const std::string& p
   for (std::size_t k = 0; k < sps.size(); ++k) {
     const std::string at = Reader::item(Reader::join(path, "special_points"), k);
     const json& o = sps[k];
-    SpecialPoint sp;
-    sp.type = enum_named(rd, rd.string(o, "type", at), kSpecialTypes, Reader::join(at, "type"));
-    sp.name = rd.string(o, "name", at);
-    sp.x = rd.vector(rd.at(o, "x", at), Reader::join(at, "x"));
+    SpecialPoint sp = read_special_point(rd, o, at, &m.branch.parameter_names);
     check_size(sp.x, Reader::join(at, "x"));
-    sp.p = rd.number(o, "p", at);
-    sp.parameters = parameters_of(rd, o, m.branch.parameter_names, at);
-    const json& bracket = rd.at(o, "bracket", at);
-    if (!bracket.is_array() || bracket.size() != 2) rd.fail(Reader::join(at, "bracket") + " must be a pair");
-    sp.p_lo = rd.value(bracket[0], Reader::join(at, "bracket[0]"), true);
-    sp.p_hi = rd.value(bracket[1], Reader::join(at, "bracket[1]"), true);
-    sp.precision = rd.number(o, "precision", at, true);
-    sp.status = enum_named(rd, rd.string(o, "status", at), kLocations, Reader::join(at, "status"));
-    sp.unstable_before = rd.small_int(o, "unstable_before", at);
-    sp.unstable_after = rd.small_int(o, "unstable_after", at);
-    sp.test_value = rd.number(o, "test_value", at, true);
-    sp.after_index = rd.index(o, "after_index", at);
-    if (sp.after_index + 1 >= std::max<std::size_t>(pts.size(), 1) && !pts.empty())
-      rd.fail(Reader::join(at, "after_index") + " = " + std::to_string(sp.after_index) + " must be below " +
-              std::to_string(pts.size() - 1) + " (it lies between two points of the branch)");
-    sp.eigenvalue = rd.complex(rd.at(o, "eigenvalue", at), Reader::join(at, "eigenvalue"));
+    if (sp.after_index + 1 >= pts.size())
+      rd.fail(Reader::join(at, "after_index") + " = " + std::to_string(sp.after_index) + " must be below the last "
+              "point's index (a special point lies between two points of the branch)");
     m.branch.special_points.push_back(std::move(sp));
     m.special_measures.push_back(measures_of(rd, o, m.measure_names, at));
     m.special_labels.push_back(label_of(rd, o, at));
@@ -397,29 +411,6 @@ StartPoint read_start(const Reader& rd, const json& j) {
   s.residual_norm = rd.number(j, "residual_norm", "start", true);
   s.message = rd.string(j, "message", "start");
   return s;
-}
-
-SpecialPoint read_special_point(const Reader& rd, const json& o, const std::string& at) {
-  SpecialPoint sp;
-  sp.type = enum_named(rd, rd.string(o, "type", at), kSpecialTypes, Reader::join(at, "type"));
-  sp.name = rd.string(o, "name", at);
-  sp.x = rd.vector(rd.at(o, "x", at), Reader::join(at, "x"));
-  sp.p = rd.number(o, "p", at, true);
-  const json& params = rd.array(o, "parameters", at);
-  for (std::size_t i = 0; i < params.size(); ++i)
-    sp.parameters.push_back(rd.value(params[i], Reader::item(Reader::join(at, "parameters"), i)));
-  const json& bracket = rd.at(o, "bracket", at);
-  if (!bracket.is_array() || bracket.size() != 2) rd.fail(Reader::join(at, "bracket") + " must be a pair");
-  sp.p_lo = rd.value(bracket[0], Reader::join(at, "bracket[0]"), true);
-  sp.p_hi = rd.value(bracket[1], Reader::join(at, "bracket[1]"), true);
-  sp.precision = rd.number(o, "precision", at, true);
-  sp.status = enum_named(rd, rd.string(o, "status", at), kLocations, Reader::join(at, "status"));
-  sp.unstable_before = rd.small_int(o, "unstable_before", at);
-  sp.unstable_after = rd.small_int(o, "unstable_after", at);
-  sp.test_value = rd.number(o, "test_value", at, true);
-  sp.after_index = rd.index(o, "after_index", at);
-  sp.eigenvalue = rd.complex(rd.at(o, "eigenvalue", at), Reader::join(at, "eigenvalue"));
-  return sp;
 }
 
 // The one-parameter part of a file: the run's branch (a curve's "one_parameter_branch") on the spec.

@@ -33,6 +33,8 @@ constexpr std::array<std::pair<ProblemKind, const char*>, 5> kKinds{{{ProblemKin
                                                                      {ProblemKind::modal, "modal"},
                                                                      {ProblemKind::modal_orbit, "modal-orbit"},
                                                                      {ProblemKind::full, "full"}}};
+constexpr std::array<std::pair<Direction, const char*>, 3> kDirections{
+    {{Direction::forward, "forward"}, {Direction::backward, "backward"}, {Direction::both, "both"}}};
 constexpr std::array<std::pair<CurveKind, SpecialPointType>, 6> kCurves{{{CurveKind::LP, SpecialPointType::LP},
                                                                          {CurveKind::BP, SpecialPointType::BP},
                                                                          {CurveKind::HB, SpecialPointType::HB},
@@ -674,17 +676,14 @@ int MeasuredBranch::last_label() const {
 }
 
 std::string to_string(Direction direction) {
-  switch (direction) {
-    case Direction::forward: return "forward";
-    case Direction::backward: return "backward";
-    case Direction::both: return "both";
-  }
+  for (const auto& [d, name] : kDirections)
+    if (d == direction) return name;
   return "?";
 }
 
 Direction direction_from_string(const std::string& name) {
-  for (Direction d : {Direction::forward, Direction::backward, Direction::both})
-    if (name == to_string(d)) return d;
+  for (const auto& [d, n] : kDirections)
+    if (name == n) return d;
   throw InvalidArgument("direction", "direction = '" + name + "' is not a direction: must be forward, backward or both");
 }
 
