@@ -120,13 +120,13 @@ int run_restart(const ContinueOptions& o, const std::optional<CurveSpec>& curve)
   if (o.label > 0 && o.switch_at > 0) throw InvalidArgument("switch_at", "--switch-at and --label cannot be combined");
   if (o.label == 0 && o.switch_at == 0)
     throw InvalidArgument("label", "--restart needs --label N (the labelled point to start from) or --switch-at N (a BP's label)");
+  if (o.switch_at > 0 && curve) throw InvalidArgument("switch_at", "--switch-at and --curve cannot be combined");
   const SceneOptions& so = o.scene;
+  const std::string from_file = "--restart takes the scene from the branch file: ";
+  if (!so.scene_path.empty()) throw InvalidArgument("restart", from_file + "--scene cannot change it");
   for (const CLI::Option* f : {so.o_lambda, so.o_Delta, so.o_Delta0, so.o_B, so.o_C, so.o_beta, so.o_delta, so.o_L,
                                so.o_delta_l, so.o_rest_delta_l, so.o_model})
-    if ((f && f->count() > 0) || !so.scene_path.empty())
-      throw InvalidArgument("restart", "--restart takes the scene from the branch file: " +
-                                           (so.scene_path.empty() ? f->get_name() : std::string("--scene")) +
-                                           " cannot change it");
+    if (f && f->count() > 0) throw InvalidArgument("restart", from_file + f->get_name() + " cannot change it");
   for (const CLI::Option* f : {o.o_segments, o.o_relax_T})
     if (f->count() > 0)
       throw InvalidArgument("restart", "--restart continues the file's states: " + f->get_name() + " cannot change");

@@ -205,6 +205,9 @@ elseif(CASE STREQUAL "restart_bad_input")
   expect_bad_input("--label needs --restart FILE" continue --kind modal --label 3)
   expect_bad_input("--lambda cannot change it" continue --restart ${WORK}/m.json --label 1 --lambda 2)
   expect_bad_input("--restart needs --label N" continue --restart ${WORK}/m.json)
+  expect_bad_input("--switch-at and --curve cannot be combined" continue --restart ${WORK}/m.json --switch-at 2 --curve BP
+                   --parameter2 B)
+  expect_bad_input("--segments cannot change" continue --restart ${WORK}/m.json --label 1 --segments 4)
   expect_bad_input("kind = orbit is not the kind of the run restarted from, modal" continue --restart ${WORK}/m.json --label 1
                  --kind orbit)
   special_label("${out}" BP C 0.036 0.037 lbp Cbp)
