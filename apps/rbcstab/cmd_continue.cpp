@@ -1,15 +1,20 @@
 // rbcstab continue: an equilibrium branch (reduced system, modal or full model) or a periodic-orbit branch
 // (reduced or modal) in one parameter, or a special point's curve in two, with its special points
-// (AUTO-07p labels), as CSV and/or one JSON object. The library decides (continuation/scene_continuation.hpp)
-// and renders (continuation/branch_io.hpp); this file maps flags to a BranchSpec and prints.
+// (AUTO-07p labels), as CSV and/or one JSON object and/or a branch file; or a restart from a labelled
+// point of a branch file. The library decides (continuation/scene_continuation.hpp), renders
+// (continuation/branch_io.hpp) and saves and loads (continuation/branch_file.hpp); this file maps flags to
+// a BranchSpec or RestartChanges and prints.
 #include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
+#include <variant>
+#include <sstream>
 
 #include "checks.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
+#include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
 #include "rbcstab/core/error.hpp"
@@ -37,27 +42,57 @@ struct ContinueOptions {
   std::string parameter2;
   double p2_min = -INFINITY, p2_max = INFINITY;
   int point = 1;
+  std::string save;  // branch file
+  int label_every = 10;
+  std::string measures;  // text table: comma-separated measure names
+  // A restart: the run in this branch file, from label N (--label) or switching at BP label N (--switch-at).
+  std::string restart;
+  int label = 0, switch_at = 0;
+  // Flags a restart takes from the command line only when given (else from the file).
+  CLI::Option *o_kind{}, *o_parameter{}, *o_min{}, *o_max{}, *o_direction{}, *o_step{}, *o_max_step{},
+      *o_max_points{}, *o_label_every{}, *o_segments{}, *o_relax_T{}, *o_label{}, *o_switch_at{};
 };
 
-// The same for a branch and a curve: CSV, then JSON or text.
-template <class Result>
-void print(const ContinueOptions& o, const SceneFile& sf, const Result& r) {
-  if (!o.csv.empty()) write_file_atomic(o.csv, to_csv(r));
-  if (o.json) {
-    nlohmann::json j = to_json(r);
-    put_truncation(j, sf);
-    std::cout << j.dump(2) << "\n";
-  } else {
-    std::cout << to_text(r);
-  }
+TableOptions table_options(const ContinueOptions& o) {
+  TableOptions t;
+  std::istringstream ss(o.measures);
+  for (std::string name; std::getline(ss, name, ',');)
+    if (!name.empty()) t.measures.push_back(name);
+  return t;
 }
 
-int report(const ContinueOptions& o, const SceneFile& sf, const SceneBranch& r) {
+// The truncation of a run's scene (a curve: the scene of the branch it starts from).
+int truncation_L(const SceneBranch& r) { return r.spec.scene.L; }
+int truncation_L(const SceneCurve& r) { return r.one.spec.scene.L; }
+int truncation_L(const ContinuationRun& run) {
+  return std::visit([](const auto& r) { return truncation_L(r); }, run);
+}
+
+// The same for a branch and a curve: every output rendered first (a rendering error writes nothing),
+// then the CSV and branch files, then JSON or text.
+template <class Result>
+void print(const ContinueOptions& o, const std::string& L_reason, const Result& r) {
+  const std::string csv = o.csv.empty() ? "" : to_csv(r);
+  const std::string file = o.save.empty() ? "" : branch_file_json(ContinuationRun(r)).dump(1) + "\n";
+  std::string out;
+  if (o.json) {
+    nlohmann::json j = to_json(r);
+    put_truncation(j, truncation_L(r), L_reason);
+    out = j.dump(2) + "\n";
+  } else {
+    out = to_text(r, table_options(o));
+  }
+  if (!o.csv.empty()) write_file_atomic(o.csv, csv);
+  if (!o.save.empty()) write_file_atomic(o.save, file);
+  std::cout << out;
+}
+
+int report(const ContinueOptions& o, const std::string& L_reason, const SceneBranch& r) {
   if (!r.start.converged) {
     std::cerr << "rbcstab: " << r.start.message << "\n";
     return kRunFailed;
   }
-  print(o, sf, r);
+  print(o, L_reason, r);
   if (r.switched && !r.switched->switched) {
     std::cerr << "rbcstab: branch switching failed: " << r.switched->message << "\n";
     return kRunFailed;
@@ -70,12 +105,12 @@ int report(const ContinueOptions& o, const SceneFile& sf, const SceneBranch& r) 
   return kOk;
 }
 
-int report(const ContinueOptions& o, const SceneFile& sf, const SceneCurve& r) {
+int report(const ContinueOptions& o, const std::string& L_reason, const SceneCurve& r) {
   if (!r.started) {
     std::cerr << "rbcstab: " << r.message << "\n";
     return kRunFailed;
   }
-  print(o, sf, r);
+  print(o, L_reason, r);
   const Branch& c = r.curve.branch;
   if (!ended_normally(c.status)) {
     std::cerr << "rbcstab: curve continuation stopped: " << to_string(c.status) << ": " << c.message << "\n";
@@ -95,6 +130,38 @@ ContinuationParameter parameter2(const std::string& name) {
   }
 }
 
+// --restart FILE: from --label N (a branch in --parameter, or with --curve that point's curve) or
+// --switch-at N. The scene, kind and segments are the file's.
+int run_restart(const ContinueOptions& o, const std::optional<CurveSpec>& curve) {
+  if (o.label > 0 && o.switch_at > 0) throw InvalidArgument("switch_at", "--switch-at and --label cannot be combined");
+  if (o.label == 0 && o.switch_at == 0)
+    throw InvalidArgument("label", "--restart needs --label N (the labelled point to start from) or --switch-at N (a BP's label)");
+  if (o.switch_at > 0 && curve) throw InvalidArgument("switch_at", "--switch-at and --curve cannot be combined");
+  const std::string from_file = "--restart takes the scene from the branch file: ";
+  if (!o.scene.scene_path.empty()) throw InvalidArgument("restart", from_file + "--scene cannot change it");
+  for (const std::string& flag : o.scene.given_flags())
+    throw InvalidArgument("restart", from_file + flag + " cannot change it");
+  for (const CLI::Option* f : {o.o_segments, o.o_relax_T})
+    if (f->count() > 0)
+      throw InvalidArgument("restart", "--restart continues the file's states: " + f->get_name() + " cannot change");
+  const ContinuationRun run = load_branch(o.restart);
+  RestartChanges ch;
+  if (o.o_kind->count() > 0) ch.kind = problem_kind_from_string(o.kind);
+  if (o.o_parameter->count() > 0) ch.parameter = continuation_parameter_from_string(o.parameter);
+  if (o.o_min->count() > 0) ch.p_min = o.p_min;
+  if (o.o_max->count() > 0) ch.p_max = o.p_max;
+  if (o.o_direction->count() > 0) ch.direction = direction_from_string(o.direction);
+  if (o.o_step->count() > 0) ch.initial_step = o.engine.initial_step;
+  if (o.o_max_step->count() > 0) ch.max_step = o.engine.max_step;
+  if (o.o_max_points->count() > 0) ch.max_points = o.engine.max_points;
+  if (o.o_label_every->count() > 0) ch.label_every = o.label_every;
+  ch.switch_at_bp = o.switch_at_bp;
+  const std::string L_reason = "L = " + std::to_string(truncation_L(run)) + ": the branch file's scene (--restart)";
+  if (o.switch_at > 0) return report(o, L_reason, switch_at_label(run, o.switch_at, ch));
+  if (curve) return report(o, L_reason, restart_curve(run, o.label, *curve, ch));
+  return report(o, L_reason, restart(run, o.label, ch));
+}
+
 int run(const ContinueOptions& o) {
   BranchSpec spec;
   spec.kind = problem_kind_from_string(o.kind);
@@ -109,6 +176,11 @@ int run(const ContinueOptions& o) {
   } else if (!o.parameter2.empty()) {
     throw InvalidArgument("parameter2", "--parameter2 needs --curve LP|BP|HB|LPC|PD|NS");
   }
+  if (!o.restart.empty()) return run_restart(o, curve);
+  if (o.o_label->count() > 0 || o.o_switch_at->count() > 0)
+    throw InvalidArgument(o.o_label->count() > 0 ? "label" : "switch_at",
+                          std::string(o.o_label->count() > 0 ? "--label" : "--switch-at") +
+                              " needs --restart FILE (the branch file that holds the label)");
   SceneFile sf = o.scene.resolve(truncation_use(spec.kind));
   if (sf.origin("initial.beta") == Origin::default_value) sf.scene.beta = default_beta(spec.kind);
   spec.scene = sf.scene;
@@ -116,21 +188,21 @@ int run(const ContinueOptions& o) {
   spec.engine = o.engine;
   spec.engine.p_min = o.p_min;
   spec.engine.p_max = o.p_max;
-  spec.engine.direction = o.direction == "forward"    ? Direction::forward
-                          : o.direction == "backward" ? Direction::backward
-                                                      : Direction::both;
+  spec.engine.direction = direction_from_string(o.direction);
   spec.relax_T = o.relax_T;
   spec.orbit = o.orbit;
   spec.switch_at_bp = o.switch_at_bp;
-  if (curve) return report(o, sf, continue_curve(spec, *curve));
-  return report(o, sf, continue_scene(spec));
+  spec.label_every = o.label_every;
+  if (!curve) table_options(o).validate(measure_names(spec.kind, spec.scene.L));
+  if (curve) return report(o, sf.L_reason, continue_curve(spec, *curve));
+  return report(o, sf.L_reason, continue_scene(spec));
 }
 }  // namespace
 
 static Runner add_continue(CLI::App& app) {
   auto o = std::make_shared<ContinueOptions>();
   o->scene.add_to(app);
-  app.add_option("--kind", o->kind,
+  o->o_kind = app.add_option("--kind", o->kind,
                  "what to continue: equilibrium (reduced system, out-of-plane rest shape), modal (modal-model "
                  "equilibria with every Delta_l, out-of-plane rest shape: the ellipsoidal branch and its BPs where "
                  "Upsilon_l(sigma) = 0) or orbit (periodic orbits "
@@ -140,24 +212,27 @@ static Runner add_continue(CLI::App& app) {
                  "L <= 16, for stress-free shapes with l >= 3 content, initial.rest_delta_l in a scene file; "
                  "beta = 0 or C = inf)")
       ->capture_default_str();
-  app.add_option("--segments", o->orbit.segments, "orbit: number of multiple-shooting segments")->capture_default_str();
+  o->o_segments =
+      app.add_option("--segments", o->orbit.segments, "orbit: number of multiple-shooting segments")->capture_default_str();
   app.add_flag("--switch-at-bp", o->switch_at_bp,
-               "equilibrium, modal, full: also continue the branch that bifurcates at the first BP (modal: the "
-               "post-instability state); JSON key switched_branch, CSV rows with branch = switched");
-  app.add_option("--parameter", o->parameter,
+               "equilibrium, modal, full, modal-orbit: also continue the branch that bifurcates at the first BP met "
+               "from the start in the continuation direction (--direction both: the BP nearest the start in "
+               "arclength; modal: the post-instability state); JSON key switched_branch, CSV rows with branch = "
+               "switched");
+  o->o_parameter = app.add_option("--parameter", o->parameter,
                  "free parameter: lambda, Delta, Delta0, B, C, Lambda, S or beta (the rest shape's orientation, "
                  "[0, pi]; equilibria exist only at beta = 0 unless Delta0 = 0 or C = inf)")
       ->capture_default_str();
-  app.add_option("--min", o->p_min,
+  o->o_min = app.add_option("--min", o->p_min,
                  "lower bound of the free parameter (the branch ends there exactly; default: none, 0 for lambda and beta)");
-  app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly; default: none, pi for beta)");
-  app.add_option("--direction", o->direction, "forward (parameter increasing), backward or both")
+  o->o_max = app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly; default: none, pi for beta)");
+  o->o_direction = app.add_option("--direction", o->direction, "forward (parameter increasing), backward or both")
       ->check(CLI::IsMember({"forward", "backward", "both"}))
       ->capture_default_str();
-  app.add_option("--step", o->engine.initial_step, "first arclength step, > 0")->check(positive())->capture_default_str();
-  app.add_option("--max-step", o->engine.max_step, "largest arclength step, > 0")->check(positive())->capture_default_str();
-  app.add_option("--max-points", o->engine.max_points, "points per direction, integer >= 2")->check(CLI::Range(2, 100000000))->capture_default_str();
-  app.add_option("--relax-T", o->relax_T,
+  o->o_step = app.add_option("--step", o->engine.initial_step, "first arclength step, > 0")->check(positive())->capture_default_str();
+  o->o_max_step = app.add_option("--max-step", o->engine.max_step, "largest arclength step, > 0")->check(positive())->capture_default_str();
+  o->o_max_points = app.add_option("--max-points", o->engine.max_points, "points per direction, integer >= 2")->check(CLI::Range(2, 100000000))->capture_default_str();
+  o->o_relax_T = app.add_option("--relax-T", o->relax_T,
                  "relaxation time that gives the start state from the scene's shape, > 0 (orbits: rounded up to a "
                  "multiple of 2 pi)")
       ->check(positive())
@@ -178,6 +253,25 @@ static Runner add_continue(CLI::App& app) {
       ->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object (branch, special_points) on stdout");
   app.add_option("--csv", o->csv, "write the branch as CSV to this file");
+  app.add_option("--save", o->save,
+                 "write a branch file (the JSON plus every point's state and what a restart needs) to this file");
+  o->o_label_every = app.add_option("--label-every", o->label_every,
+                                    "label every N-th point of a branch (AUTO's NPR), integer >= 0; special points "
+                                    "and the two ends are always labelled")
+                         ->check(CLI::Range(0, 100000000))
+                         ->capture_default_str();
+  app.add_option("--measures", o->measures,
+                 "text output: the measures of the labelled-point table, comma-separated (e.g. r,Psi,sigma); "
+                 "default: r, Psi, sigma, Delta_2, omega, sigma_bar, mode, r_min, r_max, kind as the branch has them");
+  app.add_option("--restart", o->restart,
+                 "continue from a labelled point of this branch file (--save): with --label N in --parameter (default: "
+                 "the file's) or, with --curve, that point's curve; or --switch-at N. Scene and kind are the file's");
+  o->o_label = app.add_option("--label", o->label, "--restart: the label to start from, integer >= 1")
+                   ->check(CLI::Range(1, 1000000000));
+  o->o_switch_at = app.add_option("--switch-at", o->switch_at,
+                                  "--restart: switch onto the other branch at the BP with this label (equilibrium, "
+                                  "modal, full, modal-orbit)")
+                       ->check(CLI::Range(1, 1000000000));
   return [o] { return run(*o); };
 }
 

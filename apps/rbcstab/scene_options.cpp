@@ -54,6 +54,13 @@ void SceneOptions::apply_truncation(SceneFile& file, TruncationUse use, const Re
   file.scene.validate();
 }
 
+std::vector<std::string> SceneOptions::given_flags() const {
+  std::vector<std::string> given;
+  for (const Flag& f : flags_)
+    if (f.option->count() > 0) given.push_back(f.option->get_name());
+  return given;
+}
+
 SceneFile SceneOptions::resolve(TruncationUse use, ReducedTransient* transient) const {
   SceneFile f = read();
   if (transient) *transient = truncation_transient(f.scene);

@@ -29,6 +29,8 @@ struct SceneOptions {
   SceneFile resolve(TruncationUse use, ReducedTransient* transient = nullptr) const;
   // The truncation policy applied to a read() scene (for commands whose use depends on the scene's content).
   static void apply_truncation(SceneFile& file, TruncationUse use, const ReducedTransient* transient = nullptr);
+  // The scene flags given on the command line, by name (e.g. "--lambda").
+  std::vector<std::string> given_flags() const;
 
  private:
   struct Flag {

@@ -1,4 +1,4 @@
-# Helpers shared by the `rbcstab continue` CLI checks (cli_continue_check.cmake, cli_curve_check.cmake).
+# Helpers shared by the `rbcstab continue` CLI checks (cli_*_check.cmake).
 function(fail msg)
   message(FATAL_ERROR "cli.continue.${CASE}: ${msg}")
 endfunction()
@@ -21,18 +21,19 @@ function(require_path json)
   endif()
 endfunction()
 
-# `rbcstab <args> --csv WORK/never.csv` must exit 2, name `fragment` on stderr and write no file.
+# `rbcstab <args> --csv WORK/never.csv --save WORK/never.json` must exit 2, name `fragment` on stderr and
+# write neither file.
 function(expect_bad_input fragment)
-  execute_process(COMMAND ${CLI} ${ARGN} --csv ${WORK}/never.csv
+  execute_process(COMMAND ${CLI} ${ARGN} --csv ${WORK}/never.csv --save ${WORK}/never.json
                   RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
   if(NOT rc EQUAL 2)
-    fail("expected exit 2, got ${rc}")
+    fail("expected exit 2, got ${rc}: ${err}")
   endif()
   string(FIND "${err}" "${fragment}" pos)
   if(pos EQUAL -1)
     fail("message does not name '${fragment}': ${err}")
   endif()
-  if(EXISTS ${WORK}/never.csv)
+  if(EXISTS ${WORK}/never.csv OR EXISTS ${WORK}/never.json)
     fail("a file was written on bad input")
   endif()
 endfunction()
@@ -47,4 +48,34 @@ function(to_pico value out)
   string(SUBSTRING "${digits}" 0 12 digits)
   string(REGEX REPLACE "^0+([0-9])" "\\1" digits "${digits}")
   set(${out} ${digits} PARENT_SCOPE)
+endfunction()
+
+# A plain decimal in (-1e6, 1e6) as an integer in units of 1e-12 (truncated; CMake has no floating-point
+# arithmetic, and its integers are 64-bit).
+function(e12 value out)
+  if(NOT value MATCHES "^(-?)([0-9]+)(\\.([0-9]+))?$")
+    fail("not a plain decimal: ${value}")
+  endif()
+  set(sign "${CMAKE_MATCH_1}")
+  set(int "${CMAKE_MATCH_2}")
+  string(SUBSTRING "${CMAKE_MATCH_4}000000000000" 0 12 digits)
+  string(REGEX REPLACE "^0+" "" digits "${digits}")
+  if(digits STREQUAL "")
+    set(digits 0)
+  endif()
+  math(EXPR v "${sign}(${int} * 1000000000000 + ${digits})")
+  set(${out} ${v} PARENT_SCOPE)
+endfunction()
+
+# |a - b| <= tol_e12 * 1e-12 for plain decimals.
+function(expect_close what a b tol_e12)
+  e12("${a}" ia)
+  e12("${b}" ib)
+  math(EXPR d "${ia} - ${ib}")
+  if(d LESS 0)
+    math(EXPR d "-${d}")
+  endif()
+  if(d GREATER ${tol_e12})
+    fail("${what}: ${a} vs ${b} differ by ${d}e-12 > ${tol_e12}e-12")
+  endif()
 endfunction()

@@ -2,6 +2,7 @@
 // they render (keys of the shared schema, every value, the columns and rows of the CSV).
 #include <gtest/gtest.h>
 
+#include <iomanip>
 #include <sstream>
 
 #include "continuation/scene_spec_fixture.hpp"
@@ -95,23 +96,94 @@ TEST(BranchJson, OrbitCarriesItsOrbitMeasuresAndSegments) {
   EXPECT_TRUE(j.at("branch")[0].contains("trivial_multiplier"));
 }
 
-TEST(BranchCsv, ColumnsFollowTheMeasuresAndRowsThePoints) {
+std::vector<std::string> cells_of(const std::string& line) {
+  std::vector<std::string> cells;
+  std::istringstream ss(line);
+  for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
+  if (!line.empty() && line.back() == ',') cells.emplace_back();  // an empty last cell
+  return cells;
+}
+
+TEST(BranchCsv, ColumnsFollowTheMeasuresAndRowsThePointsAndSpecialPoints) {
   const SceneBranch& m = modal_switched();
   const std::vector<std::string> lines = lines_of(to_csv(m));
-  EXPECT_EQ(lines.at(0), "C,branch,r,Psi,sigma,Delta_2,Delta_3,Delta_4,stable,n_unstable,max_Re_eig");
-  ASSERT_EQ(lines.size(), 1 + m.branch.branch.points.size() + m.switched->branch.branch.points.size());
-  std::istringstream first(lines.at(1));
-  std::vector<std::string> cells;
-  for (std::string c; std::getline(first, c, ',');) cells.push_back(c);
-  ASSERT_EQ(cells.size(), 11u);
-  EXPECT_EQ(std::stod(cells[0]), m.branch.branch.points[0].p);  // 17 digits: exact round trip
+  EXPECT_EQ(lines.at(0), "C,branch,r,Psi,sigma,Delta_2,Delta_3,Delta_4,stable,n_unstable,max_Re_eig,label,type");
+  // One row per point and per special point, in order along each branch.
+  const Branch &b = m.branch.branch, &s = m.switched->branch.branch;
+  ASSERT_EQ(lines.size(), 1 + b.points.size() + b.special_points.size() + s.points.size() + s.special_points.size());
+  std::vector<std::string> cells = cells_of(lines.at(1));
+  ASSERT_EQ(cells.size(), 13u);
+  EXPECT_EQ(std::stod(cells[0]), b.points[0].p);  // 17 digits: exact round trip
   EXPECT_EQ(cells[1], "primary");
   EXPECT_EQ(std::stod(cells[4]), m.branch.number(0, "sigma"));
+  EXPECT_EQ(cells[11], "1");
+  EXPECT_EQ(cells[12], "EP");
   EXPECT_NE(lines.back().find(",switched,"), std::string::npos);
+  // The first BP's row follows point after_index; its stability cells are empty.
+  const SpecialPoint& bp = b.special_points.at(0);
+  cells = cells_of(lines.at(1 + bp.after_index + 1));
+  ASSERT_EQ(cells.size(), 13u);
+  EXPECT_EQ(std::stod(cells[0]), bp.p);
+  EXPECT_EQ(cells[8] + cells[9] + cells[10], "");
+  EXPECT_EQ(cells[11], std::to_string(m.branch.special_labels[0]));
+  EXPECT_EQ(cells[12], "BP");
+  // A regular unlabelled point: empty label and type.
+  cells = cells_of(lines.at(3));
+  EXPECT_EQ(cells[11] + cells[12], "");
 
   // Orbits: no branch column, no trivial_multiplier (a JSON-only check of the shooting).
   EXPECT_EQ(lines_of(to_csv(orbit_branch())).at(0),
-            "Delta,r,Psi,r_min,r_max,Psi_min,Psi_max,winding,kind,stable,n_unstable,max_abs_multiplier");
+            "Delta,r,Psi,r_min,r_max,Psi_min,Psi_max,winding,kind,stable,n_unstable,max_abs_multiplier,label,type");
+}
+
+// Labels (AUTO's LAB): every special point, the two ends (EP) and every label_every-th point, numbered
+// 1, 2, ... along the primary branch and on along the switched one; the JSON carries them.
+TEST(BranchLabels, SpecialPointsEndsAndEveryNthPointNumberedAlongTheRun) {
+  const SceneBranch& r = modal_switched();
+  std::vector<int> seen;
+  for (const MeasuredBranch* m : {&r.branch, &r.switched->branch}) {
+    const Branch& b = m->branch;
+    ASSERT_EQ(m->point_labels.size(), b.points.size());
+    ASSERT_EQ(m->special_labels.size(), b.special_points.size());
+    std::size_t j = 0;
+    for (std::size_t k = 0; k < b.points.size(); ++k) {
+      const bool end = k == 0 || k + 1 == b.points.size();
+      EXPECT_EQ(m->point_type(k), end ? "EP" : "");
+      EXPECT_EQ(m->point_labels[k] > 0, end || k % 10 == 0) << k;
+      if (m->point_labels[k] > 0) seen.push_back(m->point_labels[k]);
+      for (; j < b.special_points.size() && b.special_points[j].after_index <= k; ++j) {
+        EXPECT_GT(m->special_labels[j], 0);
+        seen.push_back(m->special_labels[j]);
+      }
+    }
+    EXPECT_EQ(j, b.special_points.size());
+  }
+  // Unique, and increasing along the run: 1 .. n in walking order.
+  for (std::size_t i = 0; i < seen.size(); ++i) EXPECT_EQ(seen[i], static_cast<int>(i) + 1);
+  EXPECT_EQ(r.switched->bp_label, r.branch.special_labels[0]);  // backward from 0.08: the first BP met is the first
+
+  const nlohmann::json j = to_json(r);
+  EXPECT_EQ(j.at("branch")[0].at("label").get<int>(), 1);
+  EXPECT_EQ(j.at("branch")[0].at("type"), "EP");
+  EXPECT_TRUE(j.at("branch")[1].at("label").is_null());
+  EXPECT_EQ(j.at("branch")[1].at("type"), "");
+  EXPECT_EQ(j.at("special_points")[0].at("label").get<int>(), r.branch.special_labels[0]);
+  EXPECT_EQ(j.at("switched_branch").at("bp_label").get<int>(), r.switched->bp_label);
+  EXPECT_EQ(j.at("switched_branch").at("branch")[0].at("label").get<int>(), r.switched->branch.point_labels[0]);
+
+  // label_every: 0 labels only the ends and the special points; 3 every third point.
+  for (int every : {0, 3}) {
+    BranchSpec s = test::modal_spec(4, 0.02);
+    s.label_every = every;
+    const SceneBranch q = continue_scene(s);
+    int labelled = 0;
+    for (std::size_t k = 0; k < q.branch.branch.points.size(); ++k) labelled += q.branch.point_labels[k] > 0;
+    const std::size_t n = q.branch.branch.points.size();
+    EXPECT_EQ(labelled, every == 0 ? 2 : static_cast<int>((n - 1) / 3 + 1 + ((n - 1) % 3 != 0)));
+  }
+  BranchSpec bad = test::modal_spec(4, 0.02);
+  bad.label_every = -1;
+  EXPECT_EQ(test::invalid_parameter([&] { bad.validate(); }), "label_every");
 }
 
 TEST(BranchText, SummarisesTheBranchItsSpecialPointsAndTheSwitch) {
@@ -122,6 +194,40 @@ TEST(BranchText, SummarisesTheBranchItsSpecialPointsAndTheSwitch) {
   EXPECT_NE(t.find("\nBP C = 0.03616893"), std::string::npos) << t;
   EXPECT_NE(t.find("switched at the first BP: "), std::string::npos) << t;
   EXPECT_NE(to_text(orbit_branch()).find("swing_tumble Delta = 0.38478"), std::string::npos);
+}
+
+// AUTO's b-file table: a header, then one row per labelled point (BR, PT, TY, LAB, the parameter, the
+// measures, stability), primary then switched branch; the measures can be chosen.
+TEST(BranchText, TableHasOneRowPerLabelledPoint) {
+  const SceneBranch& m = modal_switched();
+  const std::vector<std::string> lines = lines_of(to_text(m));
+  std::size_t head = 0;
+  while (head < lines.size() && lines[head].rfind(" BR", 0) != 0) ++head;
+  ASSERT_LT(head, lines.size());
+  EXPECT_NE(lines[head].find("LAB                C                r              Psi            sigma          Delta_2  stability"),
+            std::string::npos) << lines[head];
+  const int n = std::max(m.branch.last_label(), m.switched->branch.last_label());
+  ASSERT_EQ(lines.size(), head + 1 + static_cast<std::size_t>(n));
+  // Row of the first BP: branch 1, PT k+ (between points k and k + 1), type, label, C to 10 digits.
+  const SpecialPoint& bp = m.branch.branch.special_points[0];
+  std::ostringstream row;
+  row << "  1" << std::setw(7) << (std::to_string(bp.after_index) + "+") << "  BP" << std::setw(6)
+      << m.branch.special_labels[0] << std::setw(17) << std::setprecision(10) << bp.p;
+  bool found = false;
+  for (std::size_t i = head + 1; i < lines.size(); ++i) found = found || lines[i].rfind(row.str(), 0) == 0;
+  EXPECT_TRUE(found) << row.str();
+  EXPECT_NE(lines.back().find("  2 "), std::string::npos);
+  EXPECT_NE(lines.back().find("EP"), std::string::npos);
+  // Chosen measures; an unknown one names the flag and the choices.
+  TableOptions table;
+  table.measures = {"Delta_3"};
+  const std::string t = to_text(m, table);
+  EXPECT_NE(t.find("LAB                C          Delta_3  stability"), std::string::npos) << t;
+  table.measures = {"nope"};
+  std::string message;
+  EXPECT_EQ(test::invalid_parameter([&] { (void)to_text(m, table); }, &message), "measures");
+  EXPECT_NE(message.find("measures = 'nope' is not a measure of this branch: must be one of r, Psi"), std::string::npos)
+      << message;
 }
 
 TEST(CurveOutput, JsonCsvAndTextOfAModalBPCurve) {
@@ -142,8 +248,11 @@ TEST(CurveOutput, JsonCsvAndTextOfAModalBPCurve) {
   EXPECT_EQ(j.at("branch")[0].at("B").get<double>(), 0.8);
   EXPECT_EQ(j.at("branch")[0].at("Delta_3").get<double>(), 0.0);
   const std::vector<std::string> lines = lines_of(to_csv(c));
-  EXPECT_EQ(lines.at(0), "C,B,r,Psi,sigma,Delta_2,Delta_3,Delta_4,stable,n_unstable");
-  EXPECT_EQ(lines.size(), 1 + c.curve.branch.points.size());
+  EXPECT_EQ(lines.at(0), "C,B,r,Psi,sigma,Delta_2,Delta_3,Delta_4,stable,n_unstable,label,type");
+  EXPECT_EQ(lines.size(), 1 + c.curve.branch.points.size() + c.curve.branch.special_points.size());
+  // The branch the curve started from is in the JSON, labelled first; the curve's labels follow.
+  EXPECT_EQ(j.at("one_parameter_branch").at("branch").size(), c.one.branch.branch.points.size());
+  EXPECT_EQ(j.at("branch")[0].at("label").get<int>(), c.one.branch.last_label() + 1);
   EXPECT_EQ(to_text(c).rfind("BP curve from BP (C = 0.03616893", 0), 0u) << to_text(c);
 }
 

@@ -51,16 +51,7 @@ void expect_same_branch(const Branch& a, const Branch& b) {
   EXPECT_EQ(a.message, b.message);
 }
 
-std::string invalid_parameter(const std::function<void()>& f, std::string* message = nullptr) {
-  try {
-    f();
-  } catch (const InvalidArgument& e) {
-    if (message) *message = e.what();
-    return e.parameter();
-  }
-  ADD_FAILURE() << "expected InvalidArgument";
-  return "";
-}
+using test::invalid_parameter;
 
 TEST(SceneContinuation, EquilibriumIsTheDirectBranchWithPolarMeasures) {
   const BranchSpec spec = spec_of(modal_fixtures::scene(0.08, 2), ProblemKind::equilibrium, P::lambda, 0.5, 3,

@@ -1,9 +1,16 @@
 #pragma once
 // Specs of the scene-continuation tests (scene_continuation.hpp): the modal scene's ellipsoidal branch
-// in C and Fig. 2's in-plane orbit in Delta, as `rbcstab continue` runs them in the CLI tests.
+// in C and Fig. 2's in-plane orbit in Delta, as `rbcstab continue` runs them in the CLI tests; and the
+// check that a call is refused naming a parameter.
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <string>
+
 #include "continuation/fig2_fixture.hpp"
 #include "continuation/modal_fixtures.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
+#include "rbcstab/core/error.hpp"
 
 namespace rbcstab::test {
 
@@ -41,6 +48,18 @@ inline BranchSpec orbit_spec() {
                          Direction::forward);
   s.orbit.segments = 4;
   return s;
+}
+
+// The parameter an InvalidArgument from f names (its message in *message); a failure if f throws none.
+inline std::string invalid_parameter(const std::function<void()>& f, std::string* message = nullptr) {
+  try {
+    f();
+  } catch (const InvalidArgument& e) {
+    if (message) *message = e.what();
+    return e.parameter();
+  }
+  ADD_FAILURE() << "expected InvalidArgument";
+  return "";
 }
 
 }  // namespace rbcstab::test

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"
 
 namespace rbcstab {
@@ -52,22 +53,47 @@ double most_unstable(const Eigen::VectorXcd& spectrum, StabilityKind kind) {
   return m;
 }
 
-// CSV rows of a branch: its parameters, the label (if any), the CSV measures, stability and (with_max)
-// the most unstable spectral value.
-void csv_rows(std::ostream& os, const MeasuredBranch& m, const char* label, bool with_max) {
+// Visits the points and special points of a branch in order along it: point k, then the special points
+// that lie between it and point k + 1. f(special, index).
+template <class F>
+void along(const MeasuredBranch& m, F f) {
+  const auto& sps = m.branch.special_points;
+  std::size_t j = 0;
   for (std::size_t k = 0; k < m.branch.points.size(); ++k) {
-    const BranchPoint& pt = m.branch.points[k];
-    for (std::size_t i = 0; i < pt.parameters.size(); ++i) os << (i ? "," : "") << pt.parameters[i];
-    if (label) os << ',' << label;
+    f(false, k);
+    for (; j < sps.size() && sps[j].after_index <= k; ++j) f(true, j);
+  }
+  for (; j < sps.size(); ++j) f(true, j);
+}
+
+nlohmann::json label_json(int label) { return label > 0 ? nlohmann::json(label) : nlohmann::json(nullptr); }
+
+// CSV rows of a branch: its parameters, the branch name (if any), the CSV measures, stability and
+// (with_max) the most unstable spectral value, label and type; special points as rows in their place.
+void csv_rows(std::ostream& os, const MeasuredBranch& m, const char* branch, bool with_max) {
+  along(m, [&](bool special, std::size_t k) {
+    const std::vector<double>& parameters =
+        special ? m.branch.special_points[k].parameters : m.branch.points[k].parameters;
+    const std::vector<MeasureValue>& values = special ? m.special_measures[k] : m.point_measures[k];
+    for (std::size_t i = 0; i < parameters.size(); ++i) os << (i ? "," : "") << parameters[i];
+    if (branch) os << ',' << branch;
     for (std::size_t i = 0; i < m.measure_names.size(); ++i)
       if (is_csv_measure(m.measure_names[i])) {
         os << ',';
-        put_value(os, m.point_measures[k][i]);
+        put_value(os, values[i]);
       }
-    os << ',' << (pt.stable ? 1 : 0) << ',' << pt.n_unstable;
-    if (with_max) os << ',' << most_unstable(pt.spectrum, m.spectrum_kind);
-    os << '\n';
-  }
+    if (special) {
+      os << ",," << (with_max ? "," : "");
+    } else {
+      const BranchPoint& pt = m.branch.points[k];
+      os << ',' << (pt.stable ? 1 : 0) << ',' << pt.n_unstable;
+      if (with_max) os << ',' << most_unstable(pt.spectrum, m.spectrum_kind);
+    }
+    const int label = special ? m.special_label(k) : m.point_label(k);
+    os << ',';
+    if (label > 0) os << label;
+    os << ',' << (special ? to_string(m.branch.special_points[k].type) : m.point_type(k)) << '\n';
+  });
 }
 
 void csv_header(std::ostream& os, const std::vector<std::string>& parameters, bool with_label,
@@ -78,7 +104,7 @@ void csv_header(std::ostream& os, const std::vector<std::string>& parameters, bo
     if (is_csv_measure(n)) os << ',' << n;
   os << ",stable,n_unstable";
   if (with_max) os << (m.spectrum_kind == StabilityKind::eigenvalues ? ",max_Re_eig" : ",max_abs_multiplier");
-  os << '\n';
+  os << ",label,type\n";
 }
 
 // "N points in P from a to b, status s (message)".
@@ -94,6 +120,76 @@ void special_lines(std::ostream& os, const Branch& b, const std::string& paramet
        << sp.precision << ", unstable " << sp.unstable_before << " -> " << sp.unstable_after << ")\n";
 }
 
+// The text table's measures: the chosen ones, or the default list those of the branch.
+std::vector<std::string> table_measures(const MeasuredBranch& m, const TableOptions& table) {
+  if (!table.measures.empty()) {
+    table.validate(m.measure_names);
+    return table.measures;
+  }
+  std::vector<std::string> out;
+  for (const char* name : {"r", "Psi", "sigma", "Delta_2", "omega", "sigma_bar", "mode", "r_min", "r_max", "kind"})
+    if (std::find(m.measure_names.begin(), m.measure_names.end(), name) != m.measure_names.end()) out.emplace_back(name);
+  return out;
+}
+
+// "stable" for no unstable eigenvalue (multiplier), else "unstable n".
+std::string stability_word(int n_unstable) { return n_unstable == 0 ? "stable" : "unstable " + std::to_string(n_unstable); }
+
+// AUTO's b-file table: one row per labelled point of the branches (BR 1, 2, ...), in order along each.
+void b_table(std::ostream& os, const std::vector<const MeasuredBranch*>& branches, const TableOptions& table) {
+  const MeasuredBranch* first = nullptr;
+  for (const MeasuredBranch* m : branches)
+    if (!first && !m->branch.points.empty()) first = m;
+  if (!first) return;
+  const std::vector<std::string> measures = table_measures(*branches.back(), table);
+  // The curve's parameters (two) head the table; a one-parameter branch of a curve run fills the first.
+  const std::vector<std::string>& parameters = branches.back()->branch.parameter_names.empty()
+                                                   ? first->branch.parameter_names
+                                                   : branches.back()->branch.parameter_names;
+  constexpr int w = 17;
+  os << std::setw(3) << "BR" << std::setw(7) << "PT" << std::setw(4) << "TY" << std::setw(6) << "LAB";
+  for (const auto& n : parameters) os << std::setw(w) << n;
+  for (const auto& n : measures) os << std::setw(w) << n;
+  os << "  stability\n";
+  for (std::size_t b = 0; b < branches.size(); ++b) {
+    const MeasuredBranch& m = *branches[b];
+    std::vector<std::size_t> columns;  // this branch's index of each table measure, or npos
+    for (const auto& n : measures) {
+      const auto it = std::find(m.measure_names.begin(), m.measure_names.end(), n);
+      columns.push_back(it == m.measure_names.end() ? std::string::npos
+                                                     : static_cast<std::size_t>(it - m.measure_names.begin()));
+    }
+    along(m, [&](bool special, std::size_t k) {
+      const int label = special ? m.special_label(k) : m.point_label(k);
+      if (label <= 0) return;
+      const std::vector<double>& values = special ? m.branch.special_points[k].parameters : m.branch.points[k].parameters;
+      const std::vector<MeasureValue>& row = special ? m.special_measures[k] : m.point_measures[k];
+      const std::size_t pt = special ? m.branch.special_points[k].after_index : k;
+      os << std::setw(3) << b + 1 << std::setw(7) << (std::to_string(pt) + (special ? "+" : ""))
+         << std::setw(4) << (special ? to_string(m.branch.special_points[k].type) : m.point_type(k)) << std::setw(6) << label;
+      for (std::size_t i = 0; i < parameters.size(); ++i) {
+        os << std::setw(w);
+        if (i < values.size()) os << values[i];
+        else os << "";
+      }
+      for (std::size_t c : columns) {
+        os << std::setw(w);
+        if (c == std::string::npos) os << "";
+        else put_value(os, row[c]);
+      }
+      if (special) {
+        const SpecialPoint& sp = m.branch.special_points[k];
+        os << "  ";
+        if (sp.unstable_after == sp.unstable_before) os << stability_word(sp.unstable_before) << '\n';
+        else os << "unstable " << sp.unstable_before << " -> " << sp.unstable_after << '\n';
+      } else {
+        const BranchPoint& q = m.branch.points[k];
+        os << "  " << (q.stable ? "stable" : stability_word(q.n_unstable)) << '\n';
+      }
+    });
+  }
+}
+
 }  // namespace
 
 nlohmann::json to_json(const MeasuredBranch& m) {
@@ -103,6 +199,8 @@ nlohmann::json to_json(const MeasuredBranch& m) {
   for (std::size_t k = 0; k < b.points.size(); ++k) {
     const BranchPoint& pt = b.points[k];
     nlohmann::json j = point_json(m, pt.parameters, m.point_measures[k]);
+    j["label"] = label_json(m.point_label(k));
+    j["type"] = m.point_type(k);
     j["stable"] = pt.stable;
     j["n_unstable"] = pt.n_unstable;
     nlohmann::json ev = nlohmann::json::array();
@@ -116,6 +214,7 @@ nlohmann::json to_json(const MeasuredBranch& m) {
     nlohmann::json j = point_json(m, sp.parameters, m.special_measures[k]);
     j["type"] = to_string(sp.type);
     j["name"] = sp.name;
+    j["label"] = label_json(m.special_label(k));
     if (sp.type == SpecialPointType::PD || sp.type == SpecialPointType::NS || sp.type == SpecialPointType::HB)
       j["critical"] = complex_json(sp.eigenvalue);
     j["bracket"] = {number_or_null(sp.p_lo), number_or_null(sp.p_hi)};
@@ -145,6 +244,7 @@ nlohmann::json to_json(const SceneBranch& r) {
   if (r.switched) {
     nlohmann::json sw = to_json(r.switched->branch);
     sw["switched"] = r.switched->switched;
+    sw["bp_label"] = label_json(r.switched->bp_label);
     if (!r.switched->switched) sw["message"] = r.switched->message;
     j["switched_branch"] = sw;
   }
@@ -167,7 +267,12 @@ nlohmann::json to_json(const SceneCurve& r) {
                 {"start", start},
                 {"one_parameter_points", r.one.branch.branch.points.size()},
                 {"system", to_string(r.system)}};
+  j["one_parameter_branch"] = to_json(r.one.branch);
   return j;
+}
+
+nlohmann::json to_json(const ContinuationRun& run) {
+  return std::visit([](const auto& r) { return to_json(r); }, run);
 }
 
 std::string to_csv(const SceneBranch& r) {
@@ -189,24 +294,40 @@ std::string to_csv(const SceneCurve& r) {
   return ss.str();
 }
 
-std::string to_text(const SceneBranch& r) {
+std::string to_csv(const ContinuationRun& run) {
+  return std::visit([](const auto& r) { return to_csv(r); }, run);
+}
+
+void TableOptions::validate(const std::vector<std::string>& available) const {
+  for (const std::string& name : measures)
+    if (std::find(available.begin(), available.end(), name) == available.end()) {
+      std::string list;
+      for (const auto& n : available) list += (list.empty() ? "" : ", ") + n;
+      throw InvalidArgument("measures", "measures = '" + name + "' is not a measure of this branch: must be one of " + list);
+    }
+}
+
+std::string to_text(const SceneBranch& r, const TableOptions& table) {
   const std::string p = to_string(r.spec.parameter);
   std::ostringstream ss;
   ss << std::setprecision(10);
   branch_line(ss, r.branch.branch, p);
   special_lines(ss, r.branch.branch, p, "");
+  std::vector<const MeasuredBranch*> branches{&r.branch};
   if (r.switched && r.switched->switched) {
-    ss << "switched at "
-       << (r.switched->bp_number == 1 ? std::string("the first BP")
-                                      : "BP number " + std::to_string(r.switched->bp_number))
-       << ": ";
+    const SpecialPoint* bp = find_special_point(r.branch.branch, SpecialPointType::BP, r.switched->bp_number);
+    ss << "switched at " << (r.spec.switch_at_bp ? "the first BP: " : "BP ") << "label " << r.switched->bp_label;
+    if (bp) ss << " at " << p << " = " << bp->p;
+    ss << (r.spec.switch_at_bp ? " (the first met from the start); " : "; ");
     branch_line(ss, r.switched->branch.branch, p);
     special_lines(ss, r.switched->branch.branch, p, "  ");
+    branches.push_back(&r.switched->branch);
   }
+  b_table(ss, branches, table);
   return ss.str();
 }
 
-std::string to_text(const SceneCurve& r) {
+std::string to_text(const SceneCurve& r, const TableOptions& table) {
   const std::string p1 = to_string(r.one.spec.parameter), p2 = to_string(*r.spec.parameter2);
   const Branch& c = r.curve.branch;
   std::ostringstream ss;
@@ -217,7 +338,12 @@ std::string to_text(const SceneCurve& r) {
   for (const auto& sp : c.special_points)
     ss << sp.name << " " << p1 << " = " << sp.parameters[0] << ", " << p2 << " = " << sp.parameters[1] << " ("
        << to_string(sp.status) << ", precision " << sp.precision << ")\n";
+  b_table(ss, {&r.one.branch, &r.curve}, table);
   return ss.str();
+}
+
+std::string to_text(const ContinuationRun& run, const TableOptions& table) {
+  return std::visit([&](const auto& r) { return to_text(r, table); }, run);
 }
 
 }  // namespace rbcstab

@@ -1,22 +1,33 @@
 #pragma once
 // The one rendering of continuation results (scene_continuation.hpp): the Branch JSON schema shared by
-// `rbcstab continue --json`, the report's bifurcation panel and later bindings, CSV tables and the text
-// summary.
+// `rbcstab continue --json`, the branch files (branch_file.hpp), the report's bifurcation panel and later
+// bindings, CSV tables and the text summary with its table of labelled points.
 //
 // JSON of a branch: {"branch": [points], "special_points": [...], "status", "message", "counters"}; each
-// point holds its parameter(s) by name, its measures by name (measure_names), "stable", "n_unstable"
-// and its spectrum as [re, im] pairs ("eigenvalues" or "multipliers"); each special point "type",
-// "name", its parameter(s) and measures, "critical" (HB, PD, NS: the crossing eigenvalue or multiplier),
+// point holds its parameter(s) by name, its measures by name (measure_names), "label" (an integer, null
+// for an unlabelled point), "type" ("EP" at the two ends, "" otherwise), "stable", "n_unstable" and its
+// spectrum as [re, im] pairs ("eigenvalues" or "multipliers"); each special point "type", "name",
+// "label", its parameter(s) and measures, "critical" (HB, PD, NS: the crossing eigenvalue or multiplier),
 // "bracket", "precision", "status", "unstable_before", "unstable_after". A scene's branch adds "kind",
 // "level", "free_parameter", "parameters" (the scene's), "beta", "segments" (orbits) and
-// "switched_branch" (the same schema plus "switched"); a curve adds "curve": {"type", "parameters",
-// "start", "one_parameter_points", "system"} and its "free_parameter" is the second parameter.
+// "switched_branch" (the same schema plus "switched" and "bp_label", the label of the BP it switched at);
+// a curve adds "curve": {"type", "parameters", "start", "one_parameter_points", "system"},
+// "one_parameter_branch" (the branch schema: the branch the curve started from, labelled first) and its
+// "free_parameter" is the second parameter.
 //
 // CSV: the parameter(s), "branch" (primary / switched: kinds that can switch), the CSV measures
-// (is_csv_measure), "stable", "n_unstable" and, for one-parameter branches, "max_Re_eig" or
-// "max_abs_multiplier"; 17 significant digits.
+// (is_csv_measure), "stable", "n_unstable", for one-parameter branches "max_Re_eig" or
+// "max_abs_multiplier", then "label" and "type"; one row per point and per special point, in order along
+// the branch (a special point's stability columns are empty: its unstable count changes there); 17
+// significant digits.
+//
+// Text: the summary (points, range, status, one line per special point, the switch), then AUTO's b-file
+// table: one row per labelled point with BR (1: the primary or one-parameter branch, 2: the switched
+// branch or the curve), PT (the point's index in "branch"; a special point k+ lies between points k and
+// k + 1), TY, LAB, the parameter(s), the chosen measures and the stability.
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "rbcstab/continuation/scene_continuation.hpp"
 
@@ -25,12 +36,22 @@ namespace rbcstab {
 nlohmann::json to_json(const MeasuredBranch& branch);
 nlohmann::json to_json(const SceneBranch& result);
 nlohmann::json to_json(const SceneCurve& result);
+nlohmann::json to_json(const ContinuationRun& run);
 
 std::string to_csv(const SceneBranch& result);
 std::string to_csv(const SceneCurve& result);
+std::string to_csv(const ContinuationRun& run);
 
-// A few lines: the points and the range covered, the status, one line per special point.
-std::string to_text(const SceneBranch& result);
-std::string to_text(const SceneCurve& result);
+// The measures of the text table: none given -> those of r, Psi, sigma, Delta_2, omega, sigma_bar, mode,
+// r_min, r_max, kind the branch has, in that order.
+struct TableOptions {
+  std::vector<std::string> measures;
+  // Throws InvalidArgument("measures", ...) for a name not in `available`.
+  void validate(const std::vector<std::string>& available) const;
+};
+
+std::string to_text(const SceneBranch& result, const TableOptions& table = {});
+std::string to_text(const SceneCurve& result, const TableOptions& table = {});
+std::string to_text(const ContinuationRun& run, const TableOptions& table = {});
 
 }  // namespace rbcstab

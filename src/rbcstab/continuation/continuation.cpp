@@ -554,6 +554,19 @@ Branch continue_branch(const ContinuationProblem& problem, const Eigen::VectorXd
     sp.after_index += nb;
     out.special_points.push_back(sp);
   }
+  // A start on a special point (a restart from a located one) is seen by both halves, each locating it
+  // to location_tol next to the start: one point, with the unstable counts of both sides.
+  const std::size_t nsb = back.special_points.size();
+  if (nsb > 0 && !fwd.special_points.empty()) {
+    SpecialPoint& a = out.special_points[nsb - 1];
+    const SpecialPoint& b = out.special_points[nsb];
+    const double d = std::max((a.x - b.x).lpNorm<Eigen::Infinity>(), std::abs(a.p - b.p));
+    if (a.type == b.type && a.name == b.name && a.after_index + 1 == nb && b.after_index == nb &&
+        d <= 10 * options.location_tol) {
+      a.unstable_after = b.unstable_after;
+      out.special_points.erase(out.special_points.begin() + static_cast<std::ptrdiff_t>(nsb));
+    }
+  }
   out.status = fwd.status != ContinuationStatus::completed ? fwd.status : back.status;
   out.message = "backward: " + (back.message.empty() ? to_string(back.status) : back.message) +
                 "; forward: " + (fwd.message.empty() ? to_string(fwd.status) : fwd.message);

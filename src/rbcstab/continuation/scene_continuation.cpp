@@ -33,6 +33,8 @@ constexpr std::array<std::pair<ProblemKind, const char*>, 5> kKinds{{{ProblemKin
                                                                      {ProblemKind::modal, "modal"},
                                                                      {ProblemKind::modal_orbit, "modal-orbit"},
                                                                      {ProblemKind::full, "full"}}};
+constexpr std::array<std::pair<Direction, const char*>, 3> kDirections{
+    {{Direction::forward, "forward"}, {Direction::backward, "backward"}, {Direction::both, "both"}}};
 constexpr std::array<std::pair<CurveKind, SpecialPointType>, 6> kCurves{{{CurveKind::LP, SpecialPointType::LP},
                                                                          {CurveKind::BP, SpecialPointType::BP},
                                                                          {CurveKind::HB, SpecialPointType::HB},
@@ -113,7 +115,7 @@ StartPoint given_start(StartMethod method, Eigen::VectorXd x, double p) {
 
 // Newton at fixed p from `guess`; `what` names the solution sought in the failure message.
 StartPoint newton_start(const ContinuationProblem& problem, StartMethod method, const Eigen::VectorXd& guess, double p,
-                        const std::string& what) {
+                        const std::string& what, const std::string& hint = "try a longer --relax-T") {
   const NewtonResult r = solve_fixed_parameter(problem, guess, p);
   StartPoint s = given_start(method, r.x, p);
   s.newton = true;
@@ -123,7 +125,7 @@ StartPoint newton_start(const ContinuationProblem& problem, StartMethod method, 
   if (!r.converged) {
     std::ostringstream m;
     m << "no " << what << " (Newton residual " << r.residual_norm << " after " << r.iterations
-      << " iterations); try a longer --relax-T";
+      << " iterations); " << hint;
     s.message = m.str();
   }
   return s;
@@ -191,11 +193,6 @@ class Orbit final : public SceneProblem {
   PeriodicOrbitProblem pr_;
 };
 
-// The scene the problem is built from: a modal orbit's Delta is the simulated scene's total excess area.
-Scene problem_scene_of(const BranchSpec& spec) {
-  return spec.kind == ProblemKind::modal_orbit ? total_area_scene(spec.scene) : spec.scene;
-}
-
 std::unique_ptr<SceneProblem> make_problem(const BranchSpec& spec, const Scene& scene) {
   switch (spec.kind) {
     case ProblemKind::equilibrium:
@@ -208,23 +205,60 @@ std::unique_ptr<SceneProblem> make_problem(const BranchSpec& spec, const Scene& 
   throw std::logic_error("unknown problem kind");
 }
 
+// The start of a branch: a restart's given state, solved by Newton at fixed p, else the kind's start.
+StartPoint start_of(const SceneProblem& sp, const BranchSpec& spec, const Scene& scene) {
+  if (!spec.start_state) return sp.start(spec);
+  const Eigen::Index n = sp.problem().dimension();
+  if (spec.start_state->size() != n || !spec.start_state->allFinite())
+    throw InvalidArgument("start_state", "start_state has " + std::to_string(spec.start_state->size()) +
+                                             " entries: must be " + std::to_string(n) +
+                                             " finite numbers (the problem's unknowns for --kind " + to_string(spec.kind) + ")");
+  return newton_start(sp.problem(), StartMethod::restart, *spec.start_state, get_parameter(scene, spec.parameter),
+                      "solution near the labelled point's state", "the labelled point is not a solution of this problem");
+}
+
+// Labels along the branch from `next`: each point that is an end or a label_every-th point, then the
+// special points that follow it. Returns the next free label.
+int label_branch(MeasuredBranch& m, int label_every, int next) {
+  const auto& pts = m.branch.points;
+  const auto& sps = m.branch.special_points;
+  m.point_labels.assign(pts.size(), 0);
+  m.special_labels.assign(sps.size(), 0);
+  std::size_t j = 0;
+  for (std::size_t k = 0; k < pts.size(); ++k) {
+    if (!m.point_type(k).empty() || (label_every > 0 && k % static_cast<std::size_t>(label_every) == 0))
+      m.point_labels[k] = next++;
+    for (; j < sps.size() && sps[j].after_index <= k; ++j) m.special_labels[j] = next++;
+  }
+  for (; j < sps.size(); ++j) m.special_labels[j] = next++;
+  return next;
+}
+
 MeasuredBranch measure_branch(const SceneProblem& sp, const SceneBranch& r, Branch b) {
   return measured(std::move(b), measure_names(r.spec.kind, r.problem_scene.L), sp.problem().stability_kind(),
                   [&](const Eigen::VectorXd& x, double p) { return sp.measures(x, p); });
 }
 
-void require_switchable(ProblemKind kind) {
-  if (is_orbit(kind))
-    throw InvalidArgument("switch_at_bp",
-                          "--switch-at-bp is available for --kind equilibrium, modal and full, not orbit or modal-orbit");
+// The modal orbit's BPs (a mode's multiplier crossing 1, a_l -> -a_l) switch like equilibria
+// (switch_branch is generic). The reduced in-plane orbit has none: its period map is a Moebius map, whose
+// two nontrivial multipliers k, conj(k) share |k| = exp(int Upsilon_2 dt); a multiplier 1 needs |k| = 1, an
+// elliptic map under which every orbit is neutral.
+void require_switchable(ProblemKind kind, const std::string& flag = "switch_at_bp") {
+  if (kind == ProblemKind::orbit)
+    throw InvalidArgument(flag, "--" + std::string(flag == "switch_at" ? "switch-at" : "switch-at-bp") +
+                                    " is available for --kind equilibrium, modal and full (and modal-orbit), not "
+                                    "orbit: the reduced in-plane orbit has no BP (its nontrivial multipliers are a "
+                                    "conjugate pair of one modulus)");
 }
 
-SwitchedBranch switch_with(const SceneProblem& sp, const SceneBranch& from, int k, const BranchSwitchOptions& options) {
+// The branch bifurcating at the k-th BP of `on` (a branch of from's problem), labelled from first_label.
+SwitchedBranch switch_with(const SceneProblem& sp, const SceneBranch& from, const MeasuredBranch& on, int k,
+                           const BranchSwitchOptions& options, int first_label) {
   require_switchable(from.spec.kind);
   require(k >= 1, "bp", k, "an integer >= 1 (the k-th BP of the branch)");
   SwitchedBranch s;
   s.bp_number = k;
-  const Branch& b = from.branch.branch;
+  const Branch& b = on.branch;
   const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP, k);
   if (!bp) {
     const auto n = std::count_if(b.special_points.begin(), b.special_points.end(),
@@ -237,10 +271,12 @@ SwitchedBranch switch_with(const SceneProblem& sp, const SceneBranch& from, int 
     s.branch = measure_branch(sp, from, std::move(none));
     return s;
   }
+  s.bp_label = on.special_labels.at(static_cast<std::size_t>(bp - b.special_points.data()));
   BranchSwitchResult sw = switch_branch(sp.problem(), b, *bp, options);
   s.switched = sw.switched;
   s.message = sw.message;
   s.branch = measure_branch(sp, from, std::move(sw.branch));
+  label_branch(s.branch, from.spec.label_every, first_label);
   return s;
 }
 
@@ -340,16 +376,191 @@ MeasuredBranch ellipsoidal_orbit_bp_curve(const CurveRun& run, const Scene& scen
   });
 }
 
+// The modal equilibrium (n unknowns) at a point X of ModalBranchPointCurve: its five l = 2 coordinates,
+// every a_l = 0 (the ellipsoidal branch).
+Eigen::VectorXd ellipsoidal_modal_state(const Eigen::VectorXd& X, Eigen::Index n) {
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(n);
+  x.head(5) = X.head(5);
+  return x;
+}
+
+// The modal orbit's shooting unknowns (segments of 5 + L - 2: Re z, Im z, w, Re v~, Im v~, a_3 .. a_L) at a
+// point X of ModalOrbitBranchPointCurve (the reduced shooting unknowns, 3 per segment, then p1): v~ and
+// every a_l are 0 on the ellipsoidal orbit (the inverse of start_from_modal).
+Eigen::VectorXd ellipsoidal_orbit_state(const Eigen::VectorXd& X, int L, int segments) {
+  const Eigen::Index nm = 5 + (L - 2);
+  Eigen::VectorXd x = Eigen::VectorXd::Zero(segments * nm);
+  for (Eigen::Index j = 0; j < segments; ++j) x.segment(j * nm, 3) = X.segment(3 * j, 3);
+  return x;
+}
+
 // The symmetry-breaking BP curve of modal equilibria (mode l = critical_mode of the start): the
 // ellipsoidal l = 2 block plus Upsilon_l(sigma) = 0, six unknowns, exact.
 MeasuredBranch modal_bp_curve(const CurveRun& run, const Scene& scene, ContinuationParameter q1, ContinuationParameter q2,
                               const SceneTwoParameterProblem<ModalEquilibriumProblem>& base) {
   const ModalBranchPointCurve curve(scene, q1, q2, critical_mode(base.at(run.p2_0), run.sp.x, run.sp.p));
   return run.trace(curve, curve.start(run.sp.x, run.sp.p), [&](const Eigen::VectorXd& X, double p1, double p2) {
-    Eigen::VectorXd x = Eigen::VectorXd::Zero(base.dimension());  // every a_l = 0 on the ellipsoidal branch
-    x.head(5) = X.head(5);
-    return equilibrium_values(base.at(p2), x, p1);
+    return equilibrium_values(base.at(p2), ellipsoidal_modal_state(X, base.dimension()), p1);
   });
+}
+
+// ---- runs and their labels ----
+
+// Branch 1 of a run (the primary or the one-parameter branch) or 2 (the switched branch or the curve);
+// nullptr if the run has no such branch.
+const MeasuredBranch* branch_of(const ContinuationRun& run, int b) {
+  if (const SceneCurve* c = std::get_if<SceneCurve>(&run)) return b == 1 ? &c->one.branch : &c->curve;
+  const SceneBranch& r = std::get<SceneBranch>(run);
+  if (b == 1) return &r.branch;
+  return r.switched ? &r.switched->branch : nullptr;
+}
+
+// The one-parameter run: the branch, or the branch a curve started from (its spec and problem scene).
+const SceneBranch& one_parameter_run(const ContinuationRun& run) {
+  if (const SceneCurve* c = std::get_if<SceneCurve>(&run)) return c->one;
+  return std::get<SceneBranch>(run);
+}
+
+int run_last_label(const SceneBranch& r) {
+  return std::max(r.branch.last_label(), r.switched ? r.switched->branch.last_label() : 0);
+}
+
+int run_last_label(const ContinuationRun& run) {
+  if (const SceneCurve* c = std::get_if<SceneCurve>(&run)) return std::max(run_last_label(c->one), c->curve.last_label());
+  return run_last_label(std::get<SceneBranch>(run));
+}
+
+// "its labels are 1 to 12" or the list.
+std::string label_list(const std::vector<LabelledPoint>& all) {
+  if (all.empty()) return "it has no labels";
+  bool contiguous = true;
+  for (std::size_t i = 0; i < all.size(); ++i) contiguous = contiguous && all[i].label == static_cast<int>(i) + 1;
+  if (contiguous) return "its labels are 1 to " + std::to_string(all.size());
+  std::string list;
+  for (const LabelledPoint& p : all) list += (list.empty() ? "" : ", ") + std::to_string(p.label);
+  return "its labels are " + list;
+}
+
+}  // namespace
+
+Eigen::Index problem_dimension(const SceneBranch& r) { return make_problem(r.spec, r.problem_scene)->problem().dimension(); }
+
+// Every curve system's unknowns start with the state, except the symmetry-reduced BP systems, which hold
+// only its l = 2 part.
+Eigen::VectorXd curve_point_state(const SceneCurve& c, const Eigen::VectorXd& X) {
+  const Eigen::Index n = problem_dimension(c.one);
+  const int L = c.one.problem_scene.L, N = c.one.spec.orbit.segments;
+  Eigen::Index need = n + 1;
+  if (c.system == CurveSystem::modal_branch_point) need = 6;
+  if (c.system == CurveSystem::ellipsoidal_orbit_branch_point) need = 3 * N + 1;
+  if (X.size() < need)
+    throw InvalidArgument("x", "a point of the " + to_string(c.system) + " curve has " + std::to_string(X.size()) +
+                                   " unknowns: must be at least " + std::to_string(need));
+  if (c.system == CurveSystem::modal_branch_point) return ellipsoidal_modal_state(X, n);
+  if (c.system == CurveSystem::ellipsoidal_orbit_branch_point) return ellipsoidal_orbit_state(X, L, N);
+  return X.head(n);
+}
+
+namespace {
+
+// The state x of a labelled point: its own (a point of a one-parameter branch) or that of the problem
+// its curve augments.
+Eigen::VectorXd labelled_state(const ContinuationRun& run, const LabelledPoint& lp) {
+  const MeasuredBranch& m = *branch_of(run, lp.branch);
+  const Eigen::VectorXd& x = lp.special ? m.branch.special_points[lp.index].x : m.branch.points[lp.index].x;
+  if (const SceneCurve* c = std::get_if<SceneCurve>(&run); c && lp.branch == 2) return curve_point_state(*c, x);
+  return x;
+}
+
+// The critical eigenvalue (HB: i omega) or multiplier (NS: e^{i theta}) at a point of a Hopf or NS curve.
+std::complex<double> curve_point_critical(const SceneCurve& c, const LabelledPoint& lp) {
+  const MeasuredBranch& m = c.curve;
+  if (c.system == CurveSystem::hopf) {
+    const auto& row = lp.special ? m.special_measures.at(lp.index) : m.point_measures.at(lp.index);
+    for (std::size_t i = 0; i < m.measure_names.size(); ++i)
+      if (m.measure_names[i] == "omega") return {0.0, std::get<double>(row.at(i))};
+  }
+  if (c.system == CurveSystem::neimark_sacker) {
+    const Eigen::VectorXd& X = lp.special ? m.branch.special_points[lp.index].x : m.branch.points[lp.index].x;
+    return std::polar(1.0, std::acos(std::clamp(X[X.size() - 1], -1.0, 1.0)));  // unknowns (X, p1, cos theta)
+  }
+  return {};
+}
+
+void apply_changes(BranchSpec& s, const RestartChanges& c) {
+  if (c.kind && *c.kind != s.kind)
+    throw InvalidArgument("kind", "kind = " + to_string(*c.kind) + " is not the kind of the run restarted from, " +
+                                      to_string(s.kind) + ": a restart continues the run's problem");
+  if (c.parameter && *c.parameter != s.parameter) {
+    s.parameter = *c.parameter;
+    s.engine.p_min = -std::numeric_limits<double>::infinity();
+    s.engine.p_max = std::numeric_limits<double>::infinity();
+  }
+  if (c.p_min) s.engine.p_min = *c.p_min;
+  if (c.p_max) s.engine.p_max = *c.p_max;
+  if (c.direction) s.engine.direction = *c.direction;
+  if (c.initial_step) s.engine.initial_step = *c.initial_step;
+  if (c.max_step) s.engine.max_step = *c.max_step;
+  if (c.max_points) s.engine.max_points = *c.max_points;
+  if (c.label_every) s.label_every = *c.label_every;
+  s.switch_at_bp = c.switch_at_bp;
+}
+
+// A curve's result before it runs: its spec (bounds as run) and the branch it starts from.
+SceneCurve curve_header(const SceneBranch& one, const CurveSpec& spec) {
+  SceneCurve r;
+  r.spec = spec;
+  r.one = one;
+  ContinuationOptions bounds;
+  set_domain_bounds(bounds, *spec.parameter2, spec.p2_min, spec.p2_max);
+  r.spec.p2_min = bounds.p_min;
+  r.spec.p2_max = bounds.p_max;
+  return r;
+}
+
+// Continues r's curve from sp, a special point of r.one's problem (x its state, p the first parameter's
+// value), labelled from first_label; a point that was not located is a reason, not a start.
+void trace_curve(SceneCurve& r, const SpecialPoint& sp, int first_label) {
+  const SceneBranch& one = r.one;
+  const ContinuationParameter q1 = one.spec.parameter, q2 = *r.spec.parameter2;
+  if (sp.status != LocationStatus::located) {
+    r.message = "--curve " + to_string(r.spec.type) + ": special point " + sp.name + " at " + to_string(q1) + " = " +
+                std::to_string(sp.p) + " was not located (" + to_string(sp.status) + "); its curve needs an exact start";
+    return;
+  }
+  ContinuationOptions engine = one.spec.engine;
+  engine.events.clear();  // the one-parameter events read the one-parameter state
+  engine.p_min = r.spec.p2_min;
+  engine.p_max = r.spec.p2_max;
+  engine.direction = Direction::both;
+  r.start = sp;
+  const Scene scene = with_parameter(one.problem_scene, q1, sp.p);  // the curve's start
+  r.start_p2 = get_parameter(scene, q2);
+  r.system = curve_system(one.spec.kind, r.spec.type, scene, q1, q2, sp, r.spec.symmetric_tol);
+  const CurveRun run{r.start, r.start_p2, engine, curve_measure_names(one.spec.kind, r.system, scene.L)};
+  switch (one.spec.kind) {
+    case ProblemKind::orbit: r.curve = cycle_curve(run, r.system, ReducedForcedSystem2(scene, q1, q2), one.spec.orbit); break;
+    case ProblemKind::modal_orbit:
+      r.curve = r.system == CurveSystem::ellipsoidal_orbit_branch_point
+                    ? ellipsoidal_orbit_bp_curve(run, scene, q1, q2, one.spec.orbit)
+                    : cycle_curve(run, r.system, ModalForcedSystem2(scene, q1, q2), one.spec.orbit);
+      break;
+    case ProblemKind::modal: {
+      const SceneTwoParameterProblem<ModalEquilibriumProblem> base(scene, q1, q2);
+      r.curve = r.system == CurveSystem::modal_branch_point ? modal_bp_curve(run, scene, q1, q2, base)
+                                                            : equilibrium_curve(run, r.system, base);
+      break;
+    }
+    case ProblemKind::full:
+      // The generic systems (BP: the 2n + 2 system, e.g. an unforced mode's Z2 pitchfork).
+      r.curve = equilibrium_curve(run, r.system, SceneTwoParameterProblem<FullEquilibriumProblem>(scene, q1, q2));
+      break;
+    case ProblemKind::equilibrium:
+      r.curve = equilibrium_curve(run, r.system, SceneTwoParameterProblem<ReducedEquilibriumProblem>(scene, q1, q2));
+      break;
+  }
+  label_branch(r.curve, one.spec.label_every, first_label);
+  r.started = true;
 }
 
 }  // namespace
@@ -453,6 +664,33 @@ double MeasuredBranch::number(std::size_t k, std::string_view name) const {
   throw InvalidArgument("measure", "measure = '" + std::string(name) + "' is a label, not a number");
 }
 
+int MeasuredBranch::point_label(std::size_t k) const { return k < point_labels.size() ? point_labels[k] : 0; }
+
+int MeasuredBranch::special_label(std::size_t k) const { return k < special_labels.size() ? special_labels[k] : 0; }
+
+std::string MeasuredBranch::point_type(std::size_t k) const {
+  return k == 0 || k + 1 == branch.points.size() ? to_string(SpecialPointType::EP) : "";
+}
+
+int MeasuredBranch::last_label() const {
+  int m = 0;
+  for (int l : point_labels) m = std::max(m, l);
+  for (int l : special_labels) m = std::max(m, l);
+  return m;
+}
+
+std::string to_string(Direction direction) {
+  for (const auto& [d, name] : kDirections)
+    if (d == direction) return name;
+  return "?";
+}
+
+Direction direction_from_string(const std::string& name) {
+  for (const auto& [d, n] : kDirections)
+    if (name == n) return d;
+  throw InvalidArgument("direction", "direction = '" + name + "' is not a direction: must be forward, backward or both");
+}
+
 // ---- specs ----
 
 void set_domain_bounds(ContinuationOptions& engine, ContinuationParameter q, double lo, double hi) {
@@ -469,6 +707,7 @@ void BranchSpec::validate() const {
     throw InvalidArgument("model", "model = " + to_string(scene.model) + " is not available for --kind " +
                                        to_string(kind) + ": must be " + to_string(level) + " (or auto)");
   require(std::isfinite(relax_T) && relax_T >= 0, "relax_T", relax_T, "a finite number >= 0");
+  require(label_every >= 0, "label_every", label_every, "an integer >= 0 (0: label only the ends and special points)");
   ContinuationOptions e = engine;
   set_domain_bounds(e, parameter, engine.p_min, engine.p_max);
   // Every branch starts at the scene's value (modal_orbit: its total excess area's scene).
@@ -499,9 +738,33 @@ void CurveSpec::validate(const BranchSpec& branch) const {
 
 // ---- entry points ----
 
+Scene problem_scene_of(const BranchSpec& spec) {
+  return spec.kind == ProblemKind::modal_orbit && !spec.start_state ? total_area_scene(spec.scene) : spec.scene;
+}
+
 StartPoint find_start(const BranchSpec& spec) {
   spec.validate();
-  return make_problem(spec, problem_scene_of(spec))->start(spec);
+  const Scene scene = problem_scene_of(spec);
+  return start_of(*make_problem(spec, scene), spec, scene);
+}
+
+int first_bp_met(const Branch& b, Direction direction) {
+  int k = 0, best = 0;
+  double best_s = std::numeric_limits<double>::infinity();
+  for (const SpecialPoint& sp : b.special_points) {
+    if (sp.type != SpecialPointType::BP) continue;
+    ++k;
+    if (direction != Direction::both) return k;  // the branch runs from its start
+    // Arclength from the start: that of the bracketing point nearer the start plus the distance to it.
+    const BranchPoint& a = b.points.at(sp.after_index);
+    const BranchPoint& c = b.points.at(sp.after_index + 1);
+    const BranchPoint& near = a.arclength >= 0 ? a : c;
+    Eigen::VectorXd d(sp.x.size() + 1);
+    d << sp.x - near.x, sp.p - near.p;
+    const double s = std::abs(near.arclength) + d.norm();
+    if (s < best_s) best_s = s, best = k;
+  }
+  return best;
 }
 
 SceneBranch continue_scene(const BranchSpec& spec) {
@@ -511,7 +774,7 @@ SceneBranch continue_scene(const BranchSpec& spec) {
   set_domain_bounds(r.spec.engine, spec.parameter, spec.engine.p_min, spec.engine.p_max);
   r.problem_scene = problem_scene_of(spec);
   const auto sp = make_problem(r.spec, r.problem_scene);
-  r.start = sp->start(r.spec);
+  r.start = start_of(*sp, r.spec, r.problem_scene);
   Branch b;
   if (r.start.converged) {
     ContinuationOptions engine = r.spec.engine;
@@ -523,7 +786,10 @@ SceneBranch continue_scene(const BranchSpec& spec) {
     b.message = r.start.message;
   }
   r.branch = measure_branch(*sp, r, std::move(b));
-  if (spec.switch_at_bp) r.switched = switch_with(*sp, r, 1, switch_options(r));
+  const int next = label_branch(r.branch, spec.label_every, 1);
+  if (spec.switch_at_bp)
+    r.switched = switch_with(*sp, r, r.branch, std::max(1, first_bp_met(r.branch.branch, r.spec.engine.direction)),
+                             switch_options(r), next);
   return r;
 }
 
@@ -531,7 +797,7 @@ SwitchedBranch switch_at_bp(const SceneBranch& from, int k) { return switch_at_b
 
 SwitchedBranch switch_at_bp(const SceneBranch& from, int k, const BranchSwitchOptions& options) {
   require_switchable(from.spec.kind);
-  return switch_with(*make_problem(from.spec, from.problem_scene), from, k, options);
+  return switch_with(*make_problem(from.spec, from.problem_scene), from, from.branch, k, options, run_last_label(from) + 1);
 }
 
 CurveSystem curve_system(ProblemKind kind, CurveKind type, const Scene& scene, ContinuationParameter q1,
@@ -565,16 +831,7 @@ SceneCurve continue_curve(const SceneBranch& one, const CurveSpec& spec) {
   BranchSpec branch = one.spec;
   branch.switch_at_bp = false;  // a branch already run with its switched branch still has curves
   spec.validate(branch);
-  SceneCurve r;
-  r.spec = spec;
-  r.one = one;
-  const ContinuationParameter q1 = one.spec.parameter, q2 = *spec.parameter2;
-  ContinuationOptions engine = one.spec.engine;
-  engine.events.clear();  // the one-parameter events read the one-parameter state
-  set_domain_bounds(engine, q2, spec.p2_min, spec.p2_max);
-  engine.direction = Direction::both;
-  r.spec.p2_min = engine.p_min;
-  r.spec.p2_max = engine.p_max;
+  SceneCurve r = curve_header(one, spec);
   if (!one.start.converged) {
     r.message = one.start.message;
     return r;
@@ -591,43 +848,144 @@ SceneCurve continue_curve(const SceneBranch& one, const CurveSpec& spec) {
                 ": the one-parameter branch has " + std::to_string(n) + " " + T + " point(s); widen --min/--max";
     return r;
   }
-  if (sp->status != LocationStatus::located) {
-    r.message = "--curve " + T + ": special point " + sp->name + " at " + b.parameter_names.front() + " = " +
-                std::to_string(sp->p) + " was not located (" + to_string(sp->status) + "); its curve needs an exact start";
-    return r;
-  }
-  r.start = *sp;
-  const Scene scene = with_parameter(one.problem_scene, q1, sp->p);  // the curve's start
-  r.start_p2 = get_parameter(scene, q2);
-  r.system = curve_system(one.spec.kind, spec.type, scene, q1, q2, *sp, spec.symmetric_tol);
-  const CurveRun run{r.start, r.start_p2, engine, curve_measure_names(one.spec.kind, r.system, scene.L)};
-  switch (one.spec.kind) {
-    case ProblemKind::orbit: r.curve = cycle_curve(run, r.system, ReducedForcedSystem2(scene, q1, q2), one.spec.orbit); break;
-    case ProblemKind::modal_orbit:
-      r.curve = r.system == CurveSystem::ellipsoidal_orbit_branch_point
-                    ? ellipsoidal_orbit_bp_curve(run, scene, q1, q2, one.spec.orbit)
-                    : cycle_curve(run, r.system, ModalForcedSystem2(scene, q1, q2), one.spec.orbit);
-      break;
-    case ProblemKind::modal: {
-      const SceneTwoParameterProblem<ModalEquilibriumProblem> base(scene, q1, q2);
-      r.curve = r.system == CurveSystem::modal_branch_point ? modal_bp_curve(run, scene, q1, q2, base)
-                                                            : equilibrium_curve(run, r.system, base);
-      break;
-    }
-    case ProblemKind::full:
-      // The generic systems (BP: the 2n + 2 system, e.g. an unforced mode's Z2 pitchfork).
-      r.curve = equilibrium_curve(run, r.system, SceneTwoParameterProblem<FullEquilibriumProblem>(scene, q1, q2));
-      break;
-    case ProblemKind::equilibrium:
-      r.curve = equilibrium_curve(run, r.system, SceneTwoParameterProblem<ReducedEquilibriumProblem>(scene, q1, q2));
-      break;
-  }
-  r.started = true;
+  trace_curve(r, *sp, run_last_label(one) + 1);
   return r;
 }
 
 bool ended_normally(ContinuationStatus status) {
   return status == ContinuationStatus::completed || status == ContinuationStatus::outside_domain;
+}
+
+// ---- restart ----
+
+std::vector<LabelledPoint> labelled_points(const ContinuationRun& run) {
+  std::vector<LabelledPoint> out;
+  for (int b = 1; b <= 2; ++b) {
+    const MeasuredBranch* m = branch_of(run, b);
+    if (!m) continue;
+    for (std::size_t k = 0; k < m->branch.points.size(); ++k)
+      if (const int l = m->point_label(k)) out.push_back({l, m->point_type(k), b, false, k});
+    for (std::size_t k = 0; k < m->branch.special_points.size(); ++k)
+      if (const int l = m->special_label(k)) out.push_back({l, to_string(m->branch.special_points[k].type), b, true, k});
+  }
+  std::sort(out.begin(), out.end(), [](const LabelledPoint& a, const LabelledPoint& b) { return a.label < b.label; });
+  return out;
+}
+
+LabelledPoint find_label(const ContinuationRun& run, int label, const std::string& flag) {
+  const std::vector<LabelledPoint> all = labelled_points(run);
+  for (const LabelledPoint& p : all)
+    if (p.label == label) return p;
+  throw InvalidArgument(flag, flag + " = " + std::to_string(label) + " is not a label of this run: " + label_list(all));
+}
+
+BranchSpec restart_spec(const ContinuationRun& run, int label, const RestartChanges& changes) {
+  const LabelledPoint lp = find_label(run, label);
+  const SceneBranch& ctx = one_parameter_run(run);
+  BranchSpec s = ctx.spec;
+  s.scene = ctx.problem_scene;
+  const MeasuredBranch& m = *branch_of(run, lp.branch);
+  const std::vector<double>& values =
+      lp.special ? m.branch.special_points[lp.index].parameters : m.branch.points[lp.index].parameters;
+  for (std::size_t i = 0; i < values.size(); ++i)
+    s.scene = with_parameter(s.scene, continuation_parameter_from_string(m.branch.parameter_names.at(i)), values[i]);
+  s.start_state = labelled_state(run, lp);
+  s.switch_at_bp = false;
+  apply_changes(s, changes);
+  s.validate();
+  return s;
+}
+
+SceneBranch restart(const ContinuationRun& run, int label, const RestartChanges& changes) {
+  return continue_scene(restart_spec(run, label, changes));
+}
+
+SceneBranch switch_at_label(const ContinuationRun& run, int label, const RestartChanges& changes) {
+  const LabelledPoint lp = find_label(run, label, "switch_at");
+  const SceneBranch& ctx = one_parameter_run(run);
+  require_switchable(ctx.spec.kind, "switch_at");
+  const std::string what = "switch_at = " + std::to_string(label);
+  if (std::holds_alternative<SceneCurve>(run) && lp.branch == 2)
+    throw InvalidArgument("switch_at", what + " is a point of the " + to_string(std::get<SceneCurve>(run).spec.type) +
+                                           " curve, not a BP of a one-parameter branch: restart a branch from it "
+                                           "(--label " + std::to_string(label) + ") and switch at that branch's BP");
+  if (lp.type != to_string(SpecialPointType::BP)) {
+    std::string bps;
+    for (const LabelledPoint& p : labelled_points(run))
+      if (p.type == to_string(SpecialPointType::BP) && !(std::holds_alternative<SceneCurve>(run) && p.branch == 2))
+        bps += (bps.empty() ? "" : ", ") + std::to_string(p.label);
+    throw InvalidArgument("switch_at", what + " is " + (lp.type.empty() ? "a regular point" : "a point of type " + lp.type) +
+                                           ", not a BP (branch point): " +
+                                           (bps.empty() ? "this run has no BP" : "the BP labels of this run are " + bps));
+  }
+  if (changes.parameter && *changes.parameter != ctx.spec.parameter)
+    throw InvalidArgument("parameter", "parameter = " + to_string(*changes.parameter) + " cannot switch at " + what +
+                                           ": a switch continues the branch's own parameter, " + to_string(ctx.spec.parameter));
+  SceneBranch r;
+  r.spec = ctx.spec;
+  r.spec.switch_at_bp = false;
+  apply_changes(r.spec, changes);
+  set_domain_bounds(r.spec.engine, r.spec.parameter, r.spec.engine.p_min, r.spec.engine.p_max);
+  r.spec.engine.validate();
+  r.problem_scene = ctx.problem_scene;
+  r.start = ctx.start;
+  r.branch = *branch_of(run, lp.branch);
+  const SpecialPoint& bp = r.branch.branch.special_points[lp.index];
+  if (!(bp.p >= r.spec.engine.p_min && bp.p <= r.spec.engine.p_max)) {
+    std::ostringstream m;
+    m << std::setprecision(10) << what << " lies at " << to_string(r.spec.parameter) << " = " << bp.p
+      << ", outside [--min, --max] = [" << r.spec.engine.p_min << ", " << r.spec.engine.p_max << "]";
+    throw InvalidArgument("min", m.str());
+  }
+  const int k = static_cast<int>(std::count_if(r.branch.branch.special_points.begin(),
+                                               r.branch.branch.special_points.begin() + static_cast<std::ptrdiff_t>(lp.index) + 1,
+                                               [](const SpecialPoint& p) { return p.type == SpecialPointType::BP; }));
+  r.switched = switch_with(*make_problem(r.spec, r.problem_scene), r, r.branch, k, switch_options(r), run_last_label(run) + 1);
+  return r;
+}
+
+SceneCurve restart_curve(const ContinuationRun& run, int label, const CurveSpec& curve, const RestartChanges& changes) {
+  const LabelledPoint lp = find_label(run, label);
+  const SceneBranch& ctx = one_parameter_run(run);
+  if (changes.parameter && *changes.parameter != ctx.spec.parameter)
+    throw InvalidArgument("parameter", "parameter = " + to_string(*changes.parameter) + " cannot continue the curve of label " +
+                                           std::to_string(label) + ": it is a special point in " + to_string(ctx.spec.parameter) +
+                                           ", the curve's first parameter");
+  const SpecialPointType type = special_point_type(curve.type);
+  const std::string T = to_string(curve.type);
+  const SceneCurve* on = std::get_if<SceneCurve>(&run);
+  const bool curve_point = on && lp.branch == 2;
+  if (curve_point ? on->spec.type != curve.type : lp.type != T)
+    throw InvalidArgument("label", "label = " + std::to_string(label) + " is " +
+                                       (curve_point ? "a point of a " + to_string(on->spec.type) + " curve"
+                                                    : lp.type.empty() ? "a regular point" : "a point of type " + lp.type) +
+                                       ": --curve " + T + " starts from a point of type " + T + " or a point of a " + T +
+                                       " curve");
+  SceneBranch one;
+  one.spec = restart_spec(run, label, changes);
+  one.problem_scene = one.spec.scene;
+  one.start.method = StartMethod::restart;
+  one.start.x = *one.spec.start_state;
+  one.start.p = get_parameter(one.problem_scene, one.spec.parameter);
+  one.branch.measure_names = measure_names(one.spec.kind, one.problem_scene.L);
+  one.branch.branch.parameter_names = {to_string(one.spec.parameter)};
+  curve.validate(one.spec);
+  SceneCurve r = curve_header(one, curve);
+  const MeasuredBranch& m = *branch_of(run, lp.branch);
+  SpecialPoint sp = lp.special ? m.branch.special_points[lp.index] : SpecialPoint{};
+  if (curve_point) {
+    // A point of a curve is a located point of its type at the curve's value of the second parameter.
+    sp = SpecialPoint{};
+    sp.type = type;
+    sp.name = T;
+    sp.status = LocationStatus::located;
+    sp.p = one.start.p;
+    sp.parameters = {sp.p};
+    sp.eigenvalue = curve_point_critical(*on, lp);
+  }
+  sp.x = one.start.x;
+  trace_curve(r, sp, 1);
+  return r;
 }
 
 }  // namespace rbcstab

@@ -3,8 +3,10 @@
 // [continuation] panel. A BranchSpec names what to continue (the problem kind, the free parameter, its
 // bounds, the engine options); continue_scene picks the problem and its start, continues the branch and
 // measures every point by name; continue_curve continues a special point's curve in a second parameter
-// (choosing the curve system); switch_at_bp follows the branch bifurcating at a BP. Results are plain
-// data; branch_io.hpp renders them (JSON, CSV, text).
+// (choosing the curve system); switch_at_bp follows the branch bifurcating at a BP. Every point a user
+// may restart from carries a label (AUTO's LAB); restart, switch_at_label and restart_curve start again
+// from a labelled point of a run (branch_file.hpp saves and loads runs). Results are plain data;
+// branch_io.hpp renders them (JSON, CSV, text).
 #include <Eigen/Dense>
 #include <cstddef>
 #include <limits>
@@ -37,6 +39,10 @@ TruncationUse truncation_use(ProblemKind kind);
 // The rest shape's orientation a kind needs when the user gives none: equilibria need an autonomous
 // system (rest shape out of plane, 0), periodic orbits a forced one (in plane, pi/2).
 double default_beta(ProblemKind kind);
+
+// "forward", "backward", "both"; direction_from_string throws InvalidArgument("direction", ...).
+std::string to_string(Direction direction);
+Direction direction_from_string(const std::string& name);
 
 // The curve of a special point in two parameters: LP, BP, HB of equilibria; LPC, PD, NS, BP of orbits.
 enum class CurveKind { LP, BP, HB, LPC, PD, NS };
@@ -83,6 +89,17 @@ struct MeasuredBranch {
   std::vector<std::string> measure_names;
   std::vector<std::vector<MeasureValue>> point_measures;    // [k]: of branch.points[k]
   std::vector<std::vector<MeasureValue>> special_measures;  // [k]: of branch.special_points[k]
+  // Labels (AUTO's LAB): positive integers, unique over a run (a branch, its switched branch, a curve and
+  // the branch it started from), on every special point, on the two ends of the branch and on every
+  // label_every-th point counted from the first; 0: an unlabelled point. Numbered along the branch.
+  std::vector<int> point_labels;    // [k]: of branch.points[k]
+  std::vector<int> special_labels;  // [k]: of branch.special_points[k]
+  // The label of point k / special point k (0 when unlabelled or labels were never assigned).
+  int point_label(std::size_t k) const;
+  int special_label(std::size_t k) const;
+  // "EP" for the first and the last point of the branch, "" for a regular point.
+  std::string point_type(std::size_t k) const;
+  int last_label() const;  // the largest label, 0 if none
   // The measure `name` of point k; throws InvalidArgument("measure", ...) for an unknown name.
   const MeasureValue& measure(std::size_t k, std::string_view name) const;
   // The same as a number (integers converted); throws InvalidArgument("measure", ...) for a label.
@@ -103,10 +120,17 @@ struct BranchSpec {
   }();
   double relax_T = 200;       // relaxation that gives the start state (orbits: rounded up to a multiple of 2 pi)
   OrbitOptions orbit;         // orbit, modal_orbit: the shooting
-  bool switch_at_bp = false;  // equilibrium, modal, full: also follow the branch bifurcating at the first BP
-  // Throws InvalidArgument naming the field: switch_at_bp for orbits, the orbit options, the scene's
-  // model level against the kind (model), relax_T, the engine options, and a start value (the scene's
-  // parameter) outside the bounds (min).
+  // Also follow the branch bifurcating at the first BP met from the start in the continuation direction
+  // (direction both: the BP nearest the start in arclength, first_bp_met).
+  bool switch_at_bp = false;
+  int label_every = 10;  // label every N-th point (AUTO's NPR); 0: only the ends and the special points
+  // A restart (restart_spec): the problem's unknowns at the scene's value of the free parameter replace
+  // the kind's start, and the scene is the problem's scene as it is (modal_orbit: not rescaled to the
+  // total excess area, which it already is).
+  std::optional<Eigen::VectorXd> start_state;
+  // Throws InvalidArgument naming the field: switch_at_bp for kinds that cannot switch, the orbit
+  // options, the scene's model level against the kind (model), relax_T, label_every, the engine options,
+  // and a start value (the scene's parameter) outside the bounds (min).
   void validate() const;
 };
 
@@ -119,7 +143,7 @@ void set_domain_bounds(ContinuationOptions& engine, ContinuationParameter q, dou
 // stress-free l >= 3 content, else the scene relaxed by the full model (Newton from the ellipsoid may land
 // on an unstable member of the unfolded pitchfork); orbits: the relaxed state's shooting guess. Full and
 // orbits are then solved by Newton at fixed parameter; the other kinds leave that to the engine's start.
-enum class StartMethod { relaxed, ellipsoidal };
+enum class StartMethod { relaxed, ellipsoidal, restart };  // restart: BranchSpec::start_state
 std::string to_string(StartMethod method);
 struct StartPoint {
   StartMethod method = StartMethod::relaxed;
@@ -133,12 +157,17 @@ struct StartPoint {
 };
 StartPoint find_start(const BranchSpec& spec);  // validates spec
 
+// The scene the problem is built from: a modal orbit's Delta is the simulated scene's total excess area
+// (spec.scene as it is for a restart).
+Scene problem_scene_of(const BranchSpec& spec);
+
 // The branch that bifurcates at a BP of a branch.
 struct SwitchedBranch {
   bool switched = false;  // false: message says why (no such BP, not a simple BP, corrector failed)
   std::string message;
-  int bp_number = 1;      // the k-th BP of the primary branch
-  MeasuredBranch branch;
+  int bp_number = 1;      // the k-th BP of the branch it switched from
+  int bp_label = 0;       // that BP's label (0: none)
+  MeasuredBranch branch;  // labelled after the branch it switched from
 };
 
 struct SceneBranch {
@@ -146,15 +175,20 @@ struct SceneBranch {
   Scene problem_scene;  // the problem's scene (modal_orbit: spec.scene with its total excess area as Delta)
   StartPoint start;
   MeasuredBranch branch;  // status start_failed (no points) when the start did not converge
-  std::optional<SwitchedBranch> switched;  // spec.switch_at_bp: at the first BP
+  std::optional<SwitchedBranch> switched;  // spec.switch_at_bp: at the first BP met (first_bp_met)
 };
+
+// The number k (find_special_point) of the first BP of b met from its start, continued in `direction`:
+// the first along the branch for forward and backward, the one nearest the start in arclength for both.
+// 0 if b has no BP.
+int first_bp_met(const Branch& b, Direction direction);
 
 // Validates spec, finds the start and continues the branch (orbits with the swing_tumble UZ event).
 SceneBranch continue_scene(const BranchSpec& spec);
 
 // The branch bifurcating at the k-th BP of `from` (equilibrium, modal, full), continued with
-// from.spec.engine or options.continuation. Throws InvalidArgument("switch_at_bp", ...) for orbits and
-// ("bp", ...) for k < 1.
+// from.spec.engine or options.continuation. Throws InvalidArgument("switch_at_bp", ...) for kinds that
+// cannot switch and ("bp", ...) for k < 1.
 SwitchedBranch switch_at_bp(const SceneBranch& from, int k = 1);
 SwitchedBranch switch_at_bp(const SceneBranch& from, int k, const BranchSwitchOptions& options);
 
@@ -197,6 +231,63 @@ struct SceneCurve {
 SceneCurve continue_curve(const BranchSpec& branch, const CurveSpec& curve);
 // The curve from a branch already run (no re-run; its switched branch, if any, does not matter).
 SceneCurve continue_curve(const SceneBranch& one, const CurveSpec& curve);
+
+// ---- restart from a labelled point (AUTO's IRS) ----
+
+// A run whose labelled points a restart starts from: a one-parameter branch (with its switched branch)
+// or a curve (with the one-parameter branch it started from).
+using ContinuationRun = std::variant<SceneBranch, SceneCurve>;
+
+// A labelled point of a run and where it lies.
+struct LabelledPoint {
+  int label = 0;
+  std::string type;     // "" or "EP" for a point of a branch, else the special point's type ("BP", "UZ", ...)
+  int branch = 1;       // 1: the primary (a curve run: the one-parameter) branch; 2: the switched branch or the curve
+  bool special = false;   // a special point (index into special_points) or a point (index into points)
+  std::size_t index = 0;
+};
+// The number of unknowns of a branch's problem (its spec on its problem scene).
+Eigen::Index problem_dimension(const SceneBranch& r);
+// The state of the problem a curve augments (c.one's) at a point X of the curve (c.curve's unknowns);
+// throws InvalidArgument("x", ...) when X is too short for the curve's system.
+Eigen::VectorXd curve_point_state(const SceneCurve& c, const Eigen::VectorXd& X);
+
+// Every labelled point of a run, in label order.
+std::vector<LabelledPoint> labelled_points(const ContinuationRun& run);
+// Throws InvalidArgument("label", ...) listing the run's labels when it has no such label.
+LabelledPoint find_label(const ContinuationRun& run, int label, const std::string& flag = "label");
+
+// What a restart changes in the run's spec; unset fields keep the run's values (the bounds: the run's when
+// the parameter is the run's, none otherwise).
+struct RestartChanges {
+  std::optional<ProblemKind> kind;  // not a change: when set, it must be the run's (else InvalidArgument("kind"))
+  std::optional<ContinuationParameter> parameter;  // default: the run's (a curve run: its first parameter)
+  std::optional<double> p_min, p_max;
+  std::optional<Direction> direction;
+  std::optional<double> initial_step, max_step;
+  std::optional<std::size_t> max_points;
+  std::optional<int> label_every;
+  bool switch_at_bp = false;
+};
+
+// The spec that continues from label `label` of `run`: the run's kind, engine and orbit options, its
+// problem scene with the labelled point's parameter values (a curve point: both) and the point's state as
+// start_state (a curve point: the state of the problem the curve augments), the changes applied.
+// Throws InvalidArgument("label", ...) for a label the run does not have, and as BranchSpec::validate.
+BranchSpec restart_spec(const ContinuationRun& run, int label, const RestartChanges& changes = {});
+// continue_scene(restart_spec(...)): labels from 1.
+SceneBranch restart(const ContinuationRun& run, int label, const RestartChanges& changes = {});
+// The run's branch that holds the BP labelled `label` (its labels kept) with the branch bifurcating there
+// as its switched branch (labelled after the run's labels), continued with the run's options and the
+// changes. Throws InvalidArgument("switch_at", ...) unless the label is a BP of a one-parameter branch,
+// ("parameter", ...) for a parameter other than the branch's.
+SceneBranch switch_at_label(const ContinuationRun& run, int label, const RestartChanges& changes = {});
+// The curve of the special point labelled `label` (or of a point of a curve of the same type) in
+// (the run's parameter, curve.parameter2); curve.point is ignored. Throws InvalidArgument("label", ...)
+// for a point of another type, ("parameter", ...) for a parameter other than the run's, and as
+// CurveSpec::validate.
+SceneCurve restart_curve(const ContinuationRun& run, int label, const CurveSpec& curve,
+                         const RestartChanges& changes = {});
 
 // A branch that ends at a stop condition or on the edge of its parameter's domain has ended normally.
 bool ended_normally(ContinuationStatus status);

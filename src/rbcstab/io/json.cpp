@@ -33,9 +33,11 @@ nlohmann::json to_json(const Scene& s) {
           {"delta_l", dl}, {"rest_delta_l", rl}, {"L", s.L}, {"T", s.T}, {"dt", s.dt}, {"model", to_string(s.model)}};
 }
 
-void put_truncation(nlohmann::json& j, const SceneFile& file) {
-  j["L"] = file.scene.L;
-  j["L_reason"] = file.L_reason;
+void put_truncation(nlohmann::json& j, const SceneFile& file) { put_truncation(j, file.scene.L, file.L_reason); }
+
+void put_truncation(nlohmann::json& j, int L, const std::string& L_reason) {
+  j["L"] = L;
+  j["L_reason"] = L_reason;
 }
 
 nlohmann::json to_json(const SimulationResult& r) {

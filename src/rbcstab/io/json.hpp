@@ -16,6 +16,7 @@ nlohmann::json to_json(const SimulationResult& r);
 nlohmann::json by_mode(const std::vector<double>& values_from_l2);
 // "L" and "L_reason" (why that L: SceneFile::L_reason), which every JSON output of a scene carries.
 void put_truncation(nlohmann::json& j, const SceneFile& file);
+void put_truncation(nlohmann::json& j, int L, const std::string& L_reason);
 // A double, or null when not finite.
 nlohmann::json number_or_null(double v);
 
