@@ -31,6 +31,7 @@ struct ContinueOptions {
   bool json = false;
   std::string csv;
   bool switch_at_bp = false;
+  bool allow_unstable_start = false;
   // --curve: the two-parameter curve of the point-th special point of this type, in (parameter, parameter2).
   std::string curve;
   std::string parameter2;
@@ -51,10 +52,11 @@ void print(const ContinueOptions& o, const Result& r) {
 }
 
 int report(const ContinueOptions& o, const SceneBranch& r) {
-  if (!r.start.converged) {
+  if (!r.start.converged || r.start.refused) {
     std::cerr << "rbcstab: " << r.start.message << "\n";
     return kRunFailed;
   }
+  if (!r.start.message.empty()) std::cerr << "rbcstab: note: " << r.start.message << "\n";
   print(o, r);
   if (r.switched && !r.switched->switched) {
     std::cerr << "rbcstab: branch switching failed: " << r.switched->message << "\n";
@@ -120,6 +122,7 @@ int run(const ContinueOptions& o) {
   spec.relax_T = o.relax_T;
   spec.orbit = o.orbit;
   spec.switch_at_bp = o.switch_at_bp;
+  spec.allow_unstable_start = o.allow_unstable_start;
   if (curve) return report(o, continue_curve(spec, *curve));
   return report(o, continue_scene(spec));
 }
@@ -142,6 +145,9 @@ static Runner add_continue(CLI::App& app) {
   app.add_flag("--switch-at-bp", o->switch_at_bp,
                "equilibrium, modal, full: also continue the branch that bifurcates at the first BP (modal: the "
                "post-instability state); JSON key switched_branch, CSV rows with branch = switched");
+  app.add_flag("--allow-unstable-start", o->allow_unstable_start,
+               "orbit, modal-orbit: continue even when the orbit found at the start is unstable (by default that is "
+               "refused with exit 1: the scene does not relax to it)");
   app.add_option("--parameter", o->parameter,
                  "free parameter: lambda, Delta, Delta0, B, C, Lambda, S or beta (the rest shape's orientation, "
                  "[0, pi]; equilibria exist only at beta = 0 unless Delta0 = 0 or C = inf)")

@@ -43,6 +43,82 @@ std::string to_string(ContinuationStatus status) {
   return "?";
 }
 
+std::string to_string(Stability stability) {
+  switch (stability) {
+    case Stability::stable: return "stable";
+    case Stability::unstable: return "unstable";
+    case Stability::uncertain: return "uncertain";
+  }
+  return "?";
+}
+
+namespace {
+
+// How far a spectral value lies on the unstable side of the boundary: Re(lambda) or |mu| - 1.
+double unstable_side(std::complex<double> v, StabilityKind kind) {
+  return kind == StabilityKind::eigenvalues ? v.real() : std::abs(v) - 1;
+}
+
+// The margin of a spectrum's critical value (NaN when the spectrum is empty or not finite).
+double margin_of(const Eigen::VectorXcd& spectrum, StabilityKind kind) {
+  double a = -std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < spectrum.size(); ++i) a = std::max(a, unstable_side(spectrum[i], kind));
+  return spectrum.size() > 0 && spectrum.allFinite() ? -a : std::numeric_limits<double>::quiet_NaN();
+}
+
+Stability label(double margin, double margin_error) {
+  if (!(margin_error >= 0) || !(std::abs(margin) > margin_error)) return Stability::uncertain;
+  return margin > 0 ? Stability::stable : Stability::unstable;
+}
+
+// Widens c by how much the margin moves when the state takes one more Newton step (x_next, p_next): the
+// solution is the corrector's last iterate, known only about as well as that step says.
+void add_state_term(StabilityCertificate& c, const ContinuationProblem& problem, const Eigen::VectorXd& x_next,
+                    double p_next) {
+  if (!x_next.allFinite() || !std::isfinite(p_next)) return;  // a singular step (a fold start): no reading
+  double m = 0;
+  try {
+    m = margin_of(problem.spectrum(x_next, p_next), problem.stability_kind());
+  } catch (const InvalidArgument&) {
+    return;  // the step left the problem's domain
+  }
+  if (std::isfinite(m)) c.margin_error = std::max(c.margin_error, std::abs(m - c.margin));
+  c.stability = label(c.margin, c.margin_error);
+}
+
+}  // namespace
+
+StabilityCertificate certify(const CertifiedSpectrum& spectrum, StabilityKind kind) {
+  StabilityCertificate c;
+  const Eigen::VectorXcd& s = spectrum.values;
+  if (s.size() == 0 || spectrum.errors.size() != s.size()) return c;
+  const double inf = std::numeric_limits<double>::infinity();
+  double a = -inf, lo = -inf, hi = -inf;
+  bool known = true;
+  for (Eigen::Index i = 0; i < s.size(); ++i) {
+    const double ai = unstable_side(s[i], kind), e = spectrum.errors[i];
+    known = known && e >= 0;
+    a = std::max(a, ai);
+    lo = std::max(lo, ai - e);
+    hi = std::max(hi, ai + e);
+  }
+  c.margin = s.allFinite() ? -a : std::numeric_limits<double>::quiet_NaN();
+  c.margin_error = known && std::isfinite(c.margin) ? std::max(hi - a, a - lo) : std::numeric_limits<double>::quiet_NaN();
+  c.stability = label(c.margin, c.margin_error);
+  return c;
+}
+
+StabilityCertificate certify_solution(const ContinuationProblem& problem, const Eigen::VectorXd& x, double p) {
+  StabilityCertificate c = certify(problem.certified_spectrum(x, p, true), problem.stability_kind());
+  if (!std::isfinite(c.margin)) return c;
+  Eigen::VectorXd F;
+  Eigen::MatrixXd J;
+  problem.residual(x, p, F);
+  problem.jacobian(x, p, J);
+  add_state_term(c, problem, x + J.partialPivLu().solve(-F), p);
+  return c;
+}
+
 void ContinuationOptions::validate() const {
   require(std::isfinite(initial_step) && initial_step > 0, "initial_step", initial_step, "a finite number > 0");
   require(std::isfinite(min_step) && min_step > 0 && min_step <= initial_step, "min_step", min_step,
@@ -58,6 +134,7 @@ void ContinuationOptions::validate() const {
   require(location_tol > 0, "location_tol", location_tol, "a number > 0");
   require(max_location_iterations >= 1, "max_location_iterations", max_location_iterations, "an integer >= 1");
   require(stability_tol >= 0, "stability_tol", stability_tol, "a number >= 0");
+  require(certificate_refine_margin >= 0, "certificate_refine_margin", certificate_refine_margin, "a number >= 0 (or inf)");
   for (const auto& e : events) {
     if (!e.g) throw InvalidArgument("events", "event '" + e.name + "' has no function");
   }
@@ -208,6 +285,7 @@ class Engine {
     double s_lo = 0, s_hi = a.t.dot(b.X - a.X);
     double g_lo = test_value(a, slot, event), g_hi = test_value(b, slot, event);
     Eigen::VectorXd X_lo = a.X, X_hi = b.X;
+    double m_lo = margin(a), m_hi = margin(b);
     Pt best = std::abs(g_lo) < std::abs(g_hi) ? a : b;
     double g_best = std::min(std::abs(g_lo), std::abs(g_hi));
     int side = 0;
@@ -232,15 +310,16 @@ class Engine {
       }
       if (g == 0) {
         X_lo = X_hi = q.X;
+        m_lo = m_hi = margin(q);
         converged = true;
         break;
       }
       if ((g > 0) == (g_lo > 0)) {
-        s_lo = s, g_lo = g, X_lo = q.X;
+        s_lo = s, g_lo = g, X_lo = q.X, m_lo = margin(q);
         if (side == -1) g_hi *= 0.5;  // Illinois
         side = -1;
       } else {
-        s_hi = s, g_hi = g, X_hi = q.X;
+        s_hi = s, g_hi = g, X_hi = q.X, m_hi = margin(q);
         if (side == 1) g_lo *= 0.5;
         side = 1;
       }
@@ -273,6 +352,7 @@ class Engine {
       if (!(dist < 1e-4 * (1 + std::abs(s[k])))) return false;
       sp.eigenvalue = s[k];
     }
+    set_certificate(sp, best, m_lo, m_hi);
     return true;
   }
 
@@ -343,6 +423,7 @@ class Engine {
       sp.unstable_before = a.n_unstable;
       sp.unstable_after = b.n_unstable;
       sp.after_index = after;
+      set_certificate(sp, b, margin(a), margin(b));
       found.push_back(sp);
     }
     for (std::size_t e = 0; e < o_.events.size(); ++e) {
@@ -360,7 +441,36 @@ class Engine {
     out.insert(out.end(), found.begin(), found.end());
   }
 
-  BranchPoint to_branch_point(const Pt& q, double arclength) const {
+  // The certificate of corrected point q: the problem's cheap one; near the boundary (special points:
+  // always) the refined one, widened by the margin's change over one more corrector step.
+  StabilityCertificate certificate(const Pt& q, bool special) {
+    if (!o_.compute_stability) return {};
+    const Eigen::VectorXd x = q.X.head(n_);
+    const double p = q.X[n_];
+    const StabilityKind kind = pr_.stability_kind();
+    StabilityCertificate c = certify(pr_.certified_spectrum(x, p, false), kind);
+    if (!special && !(std::abs(c.margin) <= o_.certificate_refine_margin)) return c;
+    c = certify(pr_.certified_spectrum(x, p, true), kind);
+    if (!std::isfinite(c.margin)) return c;
+    assemble(q.X, q.t);  // the bordered system: the step keeps the point's arclength
+    Eigen::VectorXd R = Eigen::VectorXd::Zero(N_);
+    R.head(n_) = F_;
+    const Eigen::VectorXd X1 = q.X + Eigen::PartialPivLU<Eigen::MatrixXd>(A_).solve(-R);
+    add_state_term(c, pr_, X1.head(n_), X1[n_]);
+    return c;
+  }
+
+  // A special point located to within the bracket [lo, hi] (margins m_lo, m_hi at its ends) from q:
+  // its certificate, whose error also covers the margin's change across the bracket.
+  void set_certificate(SpecialPoint& sp, const Pt& q, double m_lo, double m_hi) {
+    const StabilityCertificate c = certificate(q, true);
+    sp.margin = c.margin;
+    sp.margin_error = c.margin_error + std::abs(m_hi - m_lo);
+    sp.stability = label(sp.margin, sp.margin_error);
+  }
+  double margin(const Pt& q) const { return margin_of(q.spectrum, pr_.stability_kind()); }
+
+  BranchPoint to_branch_point(const Pt& q, double arclength) {
     BranchPoint bp;
     bp.x = q.X.head(n_);
     bp.p = q.X[n_];
@@ -368,6 +478,10 @@ class Engine {
     bp.spectrum = q.spectrum;
     bp.n_unstable = q.n_unstable;
     bp.stable = q.n_unstable == 0;
+    const StabilityCertificate c = certificate(q, false);
+    bp.stability = c.stability;
+    bp.margin = c.margin;
+    bp.margin_error = c.margin_error;
     bp.arclength = arclength;
     bp.newton_iterations = q.iterations;
     return bp;
