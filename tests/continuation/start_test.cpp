@@ -114,7 +114,7 @@ TEST(OrbitStart, AnUnstableOrbitIsRefusedUnlessAllowed) {
   EXPECT_TRUE(s.refused);
   EXPECT_EQ(s.stability, Stability::unstable);
   EXPECT_FALSE(s.stable);
-  EXPECT_EQ(s.n_unstable, 2);  // the l = 3 multiplier and the v~ plane's? (counted by the engine's rule)
+  EXPECT_EQ(s.n_unstable, 2);  // the l = 3 and l = 4 multipliers
   EXPECT_NE(s.message.find("unstable periodic orbit"), std::string::npos) << s.message;
   EXPECT_NE(s.message.find("--allow-unstable-start"), std::string::npos) << s.message;
   const SceneBranch refused = continue_scene(spec);

@@ -71,8 +71,22 @@ Stability label(double margin, double margin_error) {
   return margin > 0 ? Stability::stable : Stability::unstable;
 }
 
-// Widens c by how much the margin moves when the state takes one more Newton step (x_next, p_next): the
-// solution is the corrector's last iterate, known only about as well as that step says.
+// How far a Newton solution may be off: the next Newton step, but at least the accuracy the corrector
+// accepts (tol: newton_tol (1 + |X|)), since a residual that rounds to 0 gives a zero step without an
+// exact state (e.g. a spectrum that cancels to 1e-32 at a degenerate point). Along a zero step the
+// direction is a fixed generic one.
+Eigen::VectorXd state_perturbation(const Eigen::VectorXd& step, double tol) {
+  if (!step.allFinite()) return step;
+  const double size = step.lpNorm<Eigen::Infinity>();
+  if (size >= tol) return step;
+  if (size > 0) return step * (tol / size);
+  Eigen::VectorXd d(step.size());
+  for (Eigen::Index i = 0; i < d.size(); ++i) d[i] = (i % 2 == 0 ? 1.0 : -1.0) * (1 + static_cast<double>(i) / static_cast<double>(d.size()));
+  return d * (tol / d.lpNorm<Eigen::Infinity>());
+}
+
+// Widens c by how much the margin moves when the state moves by its error (x_next, p_next: the state
+// perturbed by state_perturbation).
 void add_state_term(StabilityCertificate& c, const ContinuationProblem& problem, const Eigen::VectorXd& x_next,
                     double p_next) {
   if (!x_next.allFinite() || !std::isfinite(p_next)) return;  // a singular step (a fold start): no reading
@@ -108,14 +122,16 @@ StabilityCertificate certify(const CertifiedSpectrum& spectrum, StabilityKind ki
   return c;
 }
 
-StabilityCertificate certify_solution(const ContinuationProblem& problem, const Eigen::VectorXd& x, double p) {
+StabilityCertificate certify_solution(const ContinuationProblem& problem, const Eigen::VectorXd& x, double p,
+                                      double newton_tol) {
   StabilityCertificate c = certify(problem.certified_spectrum(x, p, true), problem.stability_kind());
   if (!std::isfinite(c.margin)) return c;
   Eigen::VectorXd F;
   Eigen::MatrixXd J;
   problem.residual(x, p, F);
   problem.jacobian(x, p, J);
-  add_state_term(c, problem, x + J.partialPivLu().solve(-F), p);
+  const Eigen::VectorXd step = J.partialPivLu().solve(-F);
+  add_state_term(c, problem, x + state_perturbation(step, newton_tol * (1 + x.lpNorm<Eigen::Infinity>())), p);
   return c;
 }
 
@@ -442,7 +458,8 @@ class Engine {
   }
 
   // The certificate of corrected point q: the problem's cheap one; near the boundary (special points:
-  // always) the refined one, widened by the margin's change over one more corrector step.
+  // always) the refined one, widened by the margin's change when the state moves by its error (one
+  // more corrector step, at least newton_tol: state_perturbation).
   StabilityCertificate certificate(const Pt& q, bool special) {
     if (!o_.compute_stability) return {};
     const Eigen::VectorXd x = q.X.head(n_);
@@ -455,7 +472,8 @@ class Engine {
     assemble(q.X, q.t);  // the bordered system: the step keeps the point's arclength
     Eigen::VectorXd R = Eigen::VectorXd::Zero(N_);
     R.head(n_) = F_;
-    const Eigen::VectorXd X1 = q.X + Eigen::PartialPivLU<Eigen::MatrixXd>(A_).solve(-R);
+    const Eigen::VectorXd step = Eigen::PartialPivLU<Eigen::MatrixXd>(A_).solve(-R);
+    const Eigen::VectorXd X1 = q.X + state_perturbation(step, o_.newton_tol * (1 + q.X.lpNorm<Eigen::Infinity>()));
     add_state_term(c, pr_, X1.head(n_), X1[n_]);
     return c;
   }

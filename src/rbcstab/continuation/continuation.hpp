@@ -51,9 +51,11 @@ struct StabilityCertificate {
 // distance of the margin from its ends. Uncertain when |margin| <= margin_error, an error is unknown
 // (NaN) or the spectrum is empty.
 StabilityCertificate certify(const CertifiedSpectrum& spectrum, StabilityKind kind);
-// The certificate of a solution x of F(x, p) = 0 (a start point): the problem's refined certified
-// spectrum, and the state's own error, read as the margin's change over one more Newton step.
-StabilityCertificate certify_solution(const ContinuationProblem& problem, const Eigen::VectorXd& x, double p);
+// The certificate of a solution x of F(x, p) = 0 found by Newton to newton_tol (a start point): the
+// problem's refined certified spectrum, widened by the margin's change when x moves by its error (the
+// next Newton step, at least newton_tol (1 + |x|) in size).
+StabilityCertificate certify_solution(const ContinuationProblem& problem, const Eigen::VectorXd& x, double p,
+                                      double newton_tol = 1e-12);
 
 // A zero of g(x, p) along the branch is reported as a UZ point named `name`.
 struct UserEvent {
@@ -80,8 +82,9 @@ struct ContinuationOptions {
   int max_location_iterations = 60;  // secant/bisection steps per special point
   double stability_tol = 1e-9;      // Re(lambda) or |mu| - 1 below this counts as neutral
   // Stability certificates: a point whose cheap certificate has |margin| below this also gets the
-  // problem's refinement check (orbits: ~2 shootings) and the state-error term (one more corrector
-  // step and spectrum); special points always do. 0: never (special points still do); inf: every point.
+  // problem's refinement check (orbits: ~2.4 shootings) and the state-error term (the margin at the
+  // state moved by its error: one more corrector step, at least newton_tol; one more spectrum); special
+  // points always do. 0: never (special points still do); inf: every point.
   double certificate_refine_margin = 1e-6;
   std::vector<UserEvent> events;    // user zero crossings -> UZ
   // Optional user stop: return true to end the branch after this point.

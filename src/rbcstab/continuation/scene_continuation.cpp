@@ -232,15 +232,20 @@ StartPoint assessed_start(const SceneProblem& sp, const BranchSpec& spec) {
   StartPoint s = sp.start(spec);
   if (!s.converged) return s;
   const ContinuationProblem& pr = sp.problem();
-  // Equilibria whose start the engine's Newton polishes: solved here for the reading only (x stays).
-  Eigen::VectorXd x = s.x;
-  if (!s.newton) {
-    const NewtonResult n = solve_fixed_parameter(pr, s.x, s.p, spec.engine.newton_tol);
-    if (!n.converged) return s;  // the engine reports the failure
-    x = n.x;
+  StabilityCertificate c;
+  try {
+    // Equilibria whose start the engine's Newton polishes: solved here for the reading only (x stays).
+    Eigen::VectorXd x = s.x;
+    if (!s.newton) {
+      const NewtonResult n = solve_fixed_parameter(pr, s.x, s.p, spec.engine.newton_tol);
+      if (!n.converged) return s;  // the engine reports the failure
+      x = n.x;
+    }
+    c = certify_solution(pr, x, s.p, spec.engine.newton_tol);
+    s.n_unstable = count_unstable(pr.spectrum(x, s.p), pr.stability_kind(), spec.engine.stability_tol);
+  } catch (const InvalidArgument&) {
+    return s;  // the start lies outside the problem's domain: the engine reports it (outside_domain)
   }
-  const StabilityCertificate c = certify_solution(pr, x, s.p);
-  s.n_unstable = count_unstable(pr.spectrum(x, s.p), pr.stability_kind(), spec.engine.stability_tol);
   s.stable = s.n_unstable == 0;
   s.stability = c.stability;
   s.margin = c.margin;
