@@ -175,7 +175,7 @@ class Orbit final : public SceneProblem {
  public:
   Orbit(const Scene& scene, ContinuationParameter q, const OrbitOptions& options) : sys_(scene, q), pr_(sys_, options) {}
   const ContinuationProblem& problem() const override { return pr_; }
-  // The scene relaxed for relax_T, then period by period to relax_tol (relax_start), then Newton.
+  // The scene relaxed for relax_T, then period by period to relax_tol (PeriodicOrbitProblem::relax), then Newton.
   StartPoint start(const BranchSpec& spec) const override {
     const double p0 = sys_.start_parameter();
     Eigen::VectorXd x0;
@@ -259,7 +259,7 @@ StartPoint assessed_start(const SceneProblem& sp, const BranchSpec& spec) {
       << (orbit ? "multipliers, max |mu| = " : "eigenvalues, max Re = ") << (orbit ? 1 - c.margin : -c.margin)
       << ", margin " << c.margin << " +- " << std::setprecision(2) << c.margin_error << ")";
   else
-    m << "a " << sp.solution_name() << " of uncertain stability (margin " << c.margin << " within its error "
+    m << "of uncertain stability (" << sp.solution_name() << ", margin " << c.margin << " within its error "
       << std::setprecision(2) << c.margin_error << ")";
   s.refused = orbit && c.stability == Stability::unstable && !spec.allow_unstable_start;
   if (s.refused)
