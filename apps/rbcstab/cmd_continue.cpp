@@ -37,6 +37,7 @@ struct ContinueOptions {
   bool json = false;
   std::string csv;
   bool switch_at_bp = false;
+  bool allow_unstable_start = false;
   // --curve: the two-parameter curve of the point-th special point of this type, in (parameter, parameter2).
   std::string curve;
   std::string parameter2;
@@ -88,10 +89,11 @@ void print(const ContinueOptions& o, const std::string& L_reason, const Result& 
 }
 
 int report(const ContinueOptions& o, const std::string& L_reason, const SceneBranch& r) {
-  if (!r.start.converged) {
+  if (!r.start.converged || r.start.refused) {
     std::cerr << "rbcstab: " << r.start.message << "\n";
     return kRunFailed;
   }
+  if (!r.start.message.empty()) std::cerr << "rbcstab: note: " << r.start.message << "\n";
   print(o, L_reason, r);
   if (r.switched && !r.switched->switched) {
     std::cerr << "rbcstab: branch switching failed: " << r.switched->message << "\n";
@@ -193,6 +195,7 @@ int run(const ContinueOptions& o) {
   spec.orbit = o.orbit;
   spec.switch_at_bp = o.switch_at_bp;
   spec.label_every = o.label_every;
+  spec.allow_unstable_start = o.allow_unstable_start;
   if (!curve) table_options(o).validate(measure_names(spec.kind, spec.scene.L));
   if (curve) return report(o, sf.L_reason, continue_curve(spec, *curve));
   return report(o, sf.L_reason, continue_scene(spec));
@@ -219,6 +222,9 @@ static Runner add_continue(CLI::App& app) {
                "from the start in the continuation direction (--direction both: the BP nearest the start in "
                "arclength; modal: the post-instability state); JSON key switched_branch, CSV rows with branch = "
                "switched");
+  app.add_flag("--allow-unstable-start", o->allow_unstable_start,
+               "orbit, modal-orbit: continue even when the orbit found at the start is unstable (by default that is "
+               "refused with exit 1: the scene does not relax to it)");
   o->o_parameter = app.add_option("--parameter", o->parameter,
                  "free parameter: lambda, Delta, Delta0, B, C, Lambda, S or beta (the rest shape's orientation, "
                  "[0, pi]; equilibria exist only at beta = 0 unless Delta0 = 0 or C = inf)")

@@ -24,6 +24,7 @@
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "continuation/fig2_fixture.hpp"
+#include "continuation/periodic_quadrature.hpp"
 
 namespace rbcstab {
 namespace {
@@ -329,20 +330,9 @@ TEST(Beta, ReducedMultipliersAreAConformalPairWithModulusExpOfTheMeanGrowthRate)
       ASSERT_EQ(mu.size(), 2);
       EXPECT_NEAR(std::abs(mu[0]), std::abs(mu[1]), 1e-9 * std::abs(mu[0]));
       const ReducedModel& m = sys.model(beta);
-      const int n = 512;
-      std::vector<double> grid;
-      for (int k = 1; k <= n; ++k) grid.push_back(kTwoPi * k / n);
-      IntegratorOptions io;
-      io.rtol = 1e-13;
-      io.atol = 1e-14;
-      double integral = 0;
       const Eigen::Vector3d y0 = nr.x.head<3>();
-      integral += m.mu(0.0, std::span<const double>(y0.data(), 3));
-      int k = 0;
-      integrate(m, std::span<const double>(y0.data(), 3), 0.0, grid, io, [&](double t, std::span<const double> y) {
-        if (++k < n) integral += m.mu(t, y);
-      });
-      integral *= kTwoPi / n;
+      const double integral = test::period_integral(m, std::span<const double>(y0.data(), 3),
+                                                    [&](double t, std::span<const double> y) { return m.mu(t, y); });
       EXPECT_NEAR(std::abs(mu[0]), std::exp(integral), 1e-9 * std::exp(integral)) << "beta " << beta << " C " << C;
       EXPECT_LT(integral, 0.0);
       std::printf("beta = %.3f, C = %.2f: |k| = %.12e, exp(int mu dt) = %.12e\n", beta, C, std::abs(mu[0]), std::exp(integral));

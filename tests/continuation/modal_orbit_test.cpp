@@ -11,6 +11,7 @@
 #include <random>
 #include <vector>
 
+#include "continuation/periodic_quadrature.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/orbit.hpp"
@@ -120,19 +121,10 @@ TEST(ModalOrbit, JacobianAndParameterDerivativeMatchDifferences) {
 }
 
 // sigma(t) over one period of the reduced orbit through y0 (independent of the modal code: the
-// ReducedModel's multiplier mu and sigma_from_mu), sampled uniformly: the periodic trapezoid rule is
-// spectrally accurate for the smooth periodic sigma, so 512 samples give its integral to ~1e-12.
+// ReducedModel's multiplier mu and sigma_from_mu), by the periodic trapezoid rule (periodic_quadrature.hpp).
 double reduced_sigma_integral(const ReducedModel& m, const Eigen::Vector3d& y0) {
-  const int n = 512;
-  std::vector<double> grid;
-  for (int k = 1; k <= n; ++k) grid.push_back(kTwoPi * k / n);
-  IntegratorOptions o;
-  o.rtol = 1e-13;
-  o.atol = 1e-14;
-  double sum = 0;
-  integrate(m, std::span<const double>(y0.data(), 3), 0.0, grid, o,
-            [&](double t, std::span<const double> y) { sum += m.sigma_from_mu(m.mu(t, y)); });
-  return sum * kTwoPi / n;
+  return test::period_integral(m, std::span<const double>(y0.data(), 3),
+                               [&](double t, std::span<const double> y) { return m.sigma_from_mu(m.mu(t, y)); });
 }
 
 // The ellipsoidal orbit (a_l = 0, v~ = 0) of the in-plane modal problem is the reduced in-plane orbit

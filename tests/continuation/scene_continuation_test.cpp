@@ -140,7 +140,8 @@ TEST(SceneContinuation, OrbitIsTheDirectBranchWithTheTransitionEventAndOrbitMeas
   const SceneBranch r = continue_scene(spec);
   const ReducedForcedSystem sys(spec.scene, P::Delta);
   const PeriodicOrbitProblem pr(sys, spec.orbit);
-  const NewtonResult start = solve_fixed_parameter(pr, pr.shooting_guess(sys.relaxed_state(200), 0.3), 0.3);
+  const OrbitRelaxation relaxed = pr.relax(sys.relaxed_state(200), 0.3, spec.relax_tol, spec.relax_max_periods);
+  const NewtonResult start = solve_fixed_parameter(pr, pr.shooting_guess(relaxed.x, 0.3), 0.3);
   ASSERT_TRUE(start.converged);
   ContinuationOptions engine = spec.engine;
   engine.events.push_back(pr.transition_event());
@@ -183,7 +184,8 @@ TEST(SceneContinuation, ModalOrbitRunsOnTheTotalAreaSceneFromTheRelaxedModalStat
   EXPECT_EQ(r.problem_scene.parameters.Delta, total.parameters.Delta);
   const ModalForcedSystem sys(total, P::lambda);
   const PeriodicOrbitProblem pr(sys, spec.orbit);
-  const NewtonResult start = solve_fixed_parameter(pr, pr.shooting_guess(sys.relaxed_state(s, 600), 5.0), 5.0);
+  const OrbitRelaxation relaxed = pr.relax(sys.relaxed_state(s, 600), 5.0, spec.relax_tol, spec.relax_max_periods);
+  const NewtonResult start = solve_fixed_parameter(pr, pr.shooting_guess(relaxed.x, 5.0), 5.0);
   ASSERT_TRUE(start.converged);
   ContinuationOptions engine = spec.engine;
   engine.events.push_back(pr.transition_event());

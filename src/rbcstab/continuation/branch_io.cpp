@@ -25,6 +25,14 @@ void put_value(std::ostream& os, const MeasureValue& v) {
 
 nlohmann::json complex_json(std::complex<double> z) { return {number_or_null(z.real()), number_or_null(z.imag())}; }
 
+// The certified stability keys of a point, special point or start.
+template <class Point>
+void put_stability(nlohmann::json& j, const Point& pt) {
+  j["stability"] = to_string(pt.stability);
+  j["margin"] = number_or_null(pt.margin);
+  j["margin_error"] = number_or_null(pt.margin_error);
+}
+
 // The parameters by name and the measures by name of one point (its row k).
 nlohmann::json point_json(const MeasuredBranch& m, const std::vector<double>& parameters,
                           const std::vector<MeasureValue>& measures) {
@@ -203,6 +211,7 @@ nlohmann::json to_json(const MeasuredBranch& m) {
     j["type"] = m.point_type(k);
     j["stable"] = pt.stable;
     j["n_unstable"] = pt.n_unstable;
+    put_stability(j, pt);
     nlohmann::json ev = nlohmann::json::array();
     for (Eigen::Index i = 0; i < pt.spectrum.size(); ++i) ev.push_back(complex_json(pt.spectrum[i]));
     j[spectrum_key] = ev;
@@ -222,6 +231,7 @@ nlohmann::json to_json(const MeasuredBranch& m) {
     j["status"] = to_string(sp.status);
     j["unstable_before"] = sp.unstable_before;
     j["unstable_after"] = sp.unstable_after;
+    put_stability(j, sp);
     sps.push_back(j);
   }
   const ContinuationCounters& c = b.counters;
@@ -241,6 +251,17 @@ nlohmann::json to_json(const MeasuredBranch& m) {
 nlohmann::json to_json(const SceneBranch& r) {
   nlohmann::json j = to_json(r.branch);
   put_header(j, r.spec);
+  const StartPoint& s = r.start;
+  nlohmann::json start{{"method", to_string(s.method)}, {"p", number_or_null(s.p)}, {"converged", s.converged},
+                       {"stable", s.stable}, {"n_unstable", s.n_unstable}, {"refused", s.refused}, {"message", s.message}};
+  put_stability(start, s);
+  if (is_orbit(r.spec.kind)) {
+    start["relaxation_periods"] = s.relaxation_periods;
+    start["periodicity_defect"] = number_or_null(s.periodicity_defect);
+    start["periodicity_tol"] = number_or_null(s.periodicity_tol);
+    start["relaxed"] = s.relaxed;
+  }
+  j["start"] = start;
   if (r.switched) {
     nlohmann::json sw = to_json(r.switched->branch);
     sw["switched"] = r.switched->switched;

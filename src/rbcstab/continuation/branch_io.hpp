@@ -5,15 +5,17 @@
 //
 // JSON of a branch: {"branch": [points], "special_points": [...], "status", "message", "counters"}; each
 // point holds its parameter(s) by name, its measures by name (measure_names), "label" (an integer, null
-// for an unlabelled point), "type" ("EP" at the two ends, "" otherwise), "stable", "n_unstable" and its
-// spectrum as [re, im] pairs ("eigenvalues" or "multipliers"); each special point "type", "name",
-// "label", its parameter(s) and measures, "critical" (HB, PD, NS: the crossing eigenvalue or multiplier),
-// "bracket", "precision", "status", "unstable_before", "unstable_after". A scene's branch adds "kind",
-// "level", "free_parameter", "parameters" (the scene's), "beta", "segments" (orbits) and
-// "switched_branch" (the same schema plus "switched" and "bp_label", the label of the BP it switched at);
-// a curve adds "curve": {"type", "parameters", "start", "one_parameter_points", "system"},
-// "one_parameter_branch" (the branch schema: the branch the curve started from, labelled first) and its
-// "free_parameter" is the second parameter.
+// for an unlabelled point), "type" ("EP" at the two ends, "" otherwise), "stable", "n_unstable", the certified
+// "stability" ("stable", "unstable" or "uncertain"), "margin", "margin_error" and its spectrum as [re, im]
+// pairs ("eigenvalues" or "multipliers"); each special point "type", "name", "label", its parameter(s) and
+// measures, "critical" (HB, PD, NS: the crossing eigenvalue or multiplier), "bracket", "precision", "status",
+// "unstable_before", "unstable_after", "stability", "margin", "margin_error". A scene's branch adds "kind",
+// "level", "free_parameter", "parameters" (the scene's), "beta", "segments" (orbits), "start" (StartPoint:
+// "method", "p", "converged", "stable", "n_unstable", "refused", "message", the stability keys and for orbits
+// "relaxation_periods", "periodicity_defect", "periodicity_tol", "relaxed") and "switched_branch" (the same
+// schema plus "switched" and "bp_label", the label of the BP it switched at); a curve adds "curve": {"type",
+// "parameters", "start", "one_parameter_points", "system"}, "one_parameter_branch" (the branch schema: the
+// branch the curve started from, labelled first) and its "free_parameter" is the second parameter.
 //
 // CSV: the parameter(s), "branch" (primary / switched: kinds that can switch), the CSV measures
 // (is_csv_measure), "stable", "n_unstable", for one-parameter branches "max_Re_eig" or

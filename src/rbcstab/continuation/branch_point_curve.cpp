@@ -47,4 +47,9 @@ Eigen::VectorXcd BranchPointCurveProblem::spectrum(const Eigen::VectorXd& X, dou
   return base_.spectrum(X.head(n), X[n], p2);
 }
 
+CertifiedSpectrum BranchPointCurveProblem::certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const {
+  const Eigen::Index n = base_.dimension();
+  return base_.certified_spectrum(X.head(n), X[n], p2, refine);
+}
+
 }  // namespace rbcstab

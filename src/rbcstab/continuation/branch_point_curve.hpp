@@ -23,6 +23,7 @@ class BranchPointCurveProblem final : public ContinuationProblem {
   Eigen::Index dimension() const override { return 2 * base_.dimension() + 2; }
   void residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const override;
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p2) const override;  // the base problem's
+  CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const override;
   // The base problem's kind: eigenvalues, or Floquet multipliers for a BP curve of cycles.
   StabilityKind stability_kind() const override { return base_.stability_kind(); }
   std::string parameter_name() const override { return base_.name2(); }

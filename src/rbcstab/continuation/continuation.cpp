@@ -32,6 +32,7 @@ void ContinuationOptions::validate() const {
   require(location_tol > 0, "location_tol", location_tol, "a number > 0");
   require(max_location_iterations >= 1, "max_location_iterations", max_location_iterations, "an integer >= 1");
   require(stability_tol >= 0, "stability_tol", stability_tol, "a number >= 0");
+  require(certificate_refine_margin >= 0, "certificate_refine_margin", certificate_refine_margin, "a number >= 0 (or inf)");
   for (const auto& e : events) {
     if (!e.g) throw InvalidArgument("events", "event '" + e.name + "' has no function");
   }
@@ -182,6 +183,7 @@ class Engine {
     double s_lo = 0, s_hi = a.t.dot(b.X - a.X);
     double g_lo = test_value(a, slot, event), g_hi = test_value(b, slot, event);
     Eigen::VectorXd X_lo = a.X, X_hi = b.X;
+    double m_lo = margin(a), m_hi = margin(b);
     Pt best = std::abs(g_lo) < std::abs(g_hi) ? a : b;
     double g_best = std::min(std::abs(g_lo), std::abs(g_hi));
     int side = 0;
@@ -206,15 +208,16 @@ class Engine {
       }
       if (g == 0) {
         X_lo = X_hi = q.X;
+        m_lo = m_hi = margin(q);
         converged = true;
         break;
       }
       if ((g > 0) == (g_lo > 0)) {
-        s_lo = s, g_lo = g, X_lo = q.X;
+        s_lo = s, g_lo = g, X_lo = q.X, m_lo = margin(q);
         if (side == -1) g_hi *= 0.5;  // Illinois
         side = -1;
       } else {
-        s_hi = s, g_hi = g, X_hi = q.X;
+        s_hi = s, g_hi = g, X_hi = q.X, m_hi = margin(q);
         if (side == 1) g_lo *= 0.5;
         side = 1;
       }
@@ -247,6 +250,7 @@ class Engine {
       if (!(dist < 1e-4 * (1 + std::abs(s[k])))) return false;
       sp.eigenvalue = s[k];
     }
+    set_certificate(sp, best, m_lo, m_hi);
     return true;
   }
 
@@ -317,6 +321,7 @@ class Engine {
       sp.unstable_before = a.n_unstable;
       sp.unstable_after = b.n_unstable;
       sp.after_index = after;
+      set_certificate(sp, b, margin(a), margin(b));
       found.push_back(sp);
     }
     for (std::size_t e = 0; e < o_.events.size(); ++e) {
@@ -334,7 +339,38 @@ class Engine {
     out.insert(out.end(), found.begin(), found.end());
   }
 
-  BranchPoint to_branch_point(const Pt& q, double arclength) const {
+  // The certificate of corrected point q: the problem's cheap one; near the boundary (special points:
+  // always) the refined one, widened by the margin's change when the state moves by its error (one
+  // more corrector step, at least newton_tol: state_perturbation).
+  StabilityCertificate certificate(const Pt& q, bool special) {
+    if (!o_.compute_stability) return {};
+    const Eigen::VectorXd x = q.X.head(n_);
+    const double p = q.X[n_];
+    const StabilityKind kind = pr_.stability_kind();
+    StabilityCertificate c = certify(pr_.certified_spectrum(x, p, false), kind);
+    if (!special && !(std::abs(c.margin) <= o_.certificate_refine_margin)) return c;
+    c = certify(pr_.certified_spectrum(x, p, true), kind);
+    if (!std::isfinite(c.margin)) return c;
+    assemble(q.X, q.t);  // the bordered system: the step keeps the point's arclength
+    Eigen::VectorXd R = Eigen::VectorXd::Zero(N_);
+    R.head(n_) = F_;
+    const Eigen::VectorXd step = Eigen::PartialPivLU<Eigen::MatrixXd>(A_).solve(-R);
+    const Eigen::VectorXd X1 = q.X + state_perturbation(step, o_.newton_tol * (1 + q.X.lpNorm<Eigen::Infinity>()));
+    add_state_term(c, pr_, X1.head(n_), X1[n_]);
+    return c;
+  }
+
+  // A special point located to within the bracket [lo, hi] (margins m_lo, m_hi at its ends) from q:
+  // its certificate, whose error also covers the margin's change across the bracket.
+  void set_certificate(SpecialPoint& sp, const Pt& q, double m_lo, double m_hi) {
+    const StabilityCertificate c = certificate(q, true);
+    sp.margin = c.margin;
+    sp.margin_error = c.margin_error + std::abs(m_hi - m_lo);
+    sp.stability = label(sp.margin, sp.margin_error);
+  }
+  double margin(const Pt& q) const { return margin_of(q.spectrum, pr_.stability_kind()); }
+
+  BranchPoint to_branch_point(const Pt& q, double arclength) {
     BranchPoint bp;
     bp.x = q.X.head(n_);
     bp.p = q.X[n_];
@@ -342,6 +378,10 @@ class Engine {
     bp.spectrum = q.spectrum;
     bp.n_unstable = q.n_unstable;
     bp.stable = q.n_unstable == 0;
+    const StabilityCertificate c = certificate(q, false);
+    bp.stability = c.stability;
+    bp.margin = c.margin;
+    bp.margin_error = c.margin_error;
     bp.arclength = arclength;
     bp.newton_iterations = q.iterations;
     return bp;

@@ -54,6 +54,34 @@ struct EnumTable<Direction> {
       {Direction::forward, "forward"}, {Direction::backward, "backward"}, {Direction::both, "both"}};
 };
 
+// A stability label with a certificate: uncertain when the critical eigenvalue (multiplier) is not
+// farther from the stability boundary than its error estimate.
+enum class Stability { stable, unstable, uncertain };
+template <>
+struct EnumTable<Stability> {
+  static constexpr EnumName<Stability> entries[] = {
+      {Stability::stable, "stable"}, {Stability::unstable, "unstable"}, {Stability::uncertain, "uncertain"}};
+};
+
+// margin: the signed distance of the critical spectral value from the stability boundary, > 0 on the
+// stable side: -max Re(lambda) for eigenvalues, 1 - max |mu| over the nontrivial Floquet multipliers.
+// margin_error: an estimate of its error (docs/continuation.md, "Stability certificates").
+struct StabilityCertificate {
+  Stability stability = Stability::uncertain;
+  double margin = std::numeric_limits<double>::quiet_NaN();
+  double margin_error = std::numeric_limits<double>::quiet_NaN();
+};
+// From a certified spectrum: the margin and the range of the critical value the errors allow,
+// [max(a_i - e_i), max(a_i + e_i)] with a_i = Re(lambda_i) or |mu_i| - 1, so margin_error is the larger
+// distance of the margin from its ends. Uncertain when |margin| <= margin_error, an error is unknown
+// (NaN) or the spectrum is empty.
+StabilityCertificate certify(const CertifiedSpectrum& spectrum, StabilityKind kind);
+// The certificate of a solution x of F(x, p) = 0 found by Newton to newton_tol (a start point): the
+// problem's refined certified spectrum, widened by the margin's change when x moves by its error (the
+// next Newton step, at least newton_tol (1 + |x|) in size).
+StabilityCertificate certify_solution(const ContinuationProblem& problem, const Eigen::VectorXd& x, double p,
+                                      double newton_tol = 1e-12);
+
 // A zero of g(x, p) along the branch is reported as a UZ point named `name`.
 struct UserEvent {
   std::string name;
@@ -78,6 +106,11 @@ struct ContinuationOptions {
   double location_tol = 1e-11;      // stop locating when the bracket spans < this in (x, p) (max norm)
   int max_location_iterations = 60;  // secant/bisection steps per special point
   double stability_tol = 1e-9;      // Re(lambda) or |mu| - 1 below this counts as neutral
+  // Stability certificates: a point whose cheap certificate has |margin| below this also gets the
+  // problem's refinement check (orbits: ~2.4 shootings) and the state-error term (the margin at the
+  // state moved by its error: one more corrector step, at least newton_tol; one more spectrum); special
+  // points always do. 0: never (special points still do); inf: every point.
+  double certificate_refine_margin = 1e-6;
   std::vector<UserEvent> events;    // user zero crossings -> UZ
   // Optional user stop: return true to end the branch after this point.
   std::function<bool(const Eigen::VectorXd& x, double p)> stop;
@@ -91,7 +124,10 @@ struct BranchPoint {
   std::vector<double> parameters;  // problem.parameter_values(x, p)
   Eigen::VectorXcd spectrum;       // eigenvalues or Floquet multipliers
   int n_unstable = 0;
-  bool stable = true;
+  bool stable = true;              // n_unstable == 0 (values within stability_tol of the boundary count as stable)
+  Stability stability = Stability::uncertain;  // the certified label (certify); margin and its error:
+  double margin = std::numeric_limits<double>::quiet_NaN();
+  double margin_error = std::numeric_limits<double>::quiet_NaN();
   double arclength = 0;            // signed arclength from the start point
   int newton_iterations = 0;
 };
@@ -109,6 +145,11 @@ struct SpecialPoint {
   double test_value = 0;           // the test function at the reported point
   std::size_t after_index = 0;     // lies between branch points after_index and after_index + 1
   std::complex<double> eigenvalue; // HB: the crossing pair (+ i omega); NS/PD: the critical multiplier
+  // The point's certified stability; margin_error also covers the margin's change across the final
+  // bracket (the point is located only to within it).
+  Stability stability = Stability::uncertain;
+  double margin = std::numeric_limits<double>::quiet_NaN();
+  double margin_error = std::numeric_limits<double>::quiet_NaN();
 };
 
 struct ContinuationCounters {

@@ -71,12 +71,16 @@ void ReducedEquilibriumProblem::jacobian(const Eigen::VectorXd& y, double p, Eig
 }
 
 Eigen::VectorXcd ReducedEquilibriumProblem::spectrum(const Eigen::VectorXd& y, double p) const {
+  return certified_spectrum(y, p, false).values;
+}
+
+CertifiedSpectrum ReducedEquilibriumProblem::certified_spectrum(const Eigen::VectorXd& y, double p, bool) const {
   StructuredJacobian sj;
   double dfdt[3];
   model(p).jacobian(0, std::span<const double>(y.data(), 3), sj, dfdt);
   Eigen::Matrix<double, 3, 3, Eigen::RowMajor> D;
   sj.to_dense(std::span<double>(D.data(), 9));
-  return detail::tangent_spectrum(Eigen::MatrixXd(D), y);
+  return detail::certified_tangent_spectrum(Eigen::MatrixXd(D), y, assembly_accuracy(3));
 }
 
 Eigen::VectorXd ReducedEquilibriumProblem::scene_state() const {

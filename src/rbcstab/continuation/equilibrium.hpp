@@ -32,6 +32,8 @@ class ReducedEquilibriumProblem final : public ContinuationProblem {
   void residual(const Eigen::VectorXd& y, double p, Eigen::VectorXd& G) const override;
   void jacobian(const Eigen::VectorXd& y, double p, Eigen::MatrixXd& J) const override;
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& y, double p) const override;
+  // The tangent-plane spectrum of the analytic Jacobian with first-order error bounds.
+  CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& y, double p, bool refine) const override;
   // Central differences, except for beta: exact (the equilibrium's domain in beta is one point when
   // the rest shape pulls, where a difference would step outside; see equilibrium.cpp).
   void parameter_derivative(const Eigen::VectorXd& y, double p, Eigen::VectorXd& Fp) const override;

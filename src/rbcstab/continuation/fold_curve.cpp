@@ -47,6 +47,11 @@ void SingularityCurveProblem::start_at(const SpecialPoint& point, double p2) {
   start_ << point.x, point.p;
 }
 
+CertifiedSpectrum SingularityCurveProblem::certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const {
+  const Eigen::Index n = base_.dimension();
+  return base_.certified_spectrum(X.head(n), X[n], p2, refine);
+}
+
 double SingularityCurveProblem::test_function(const Eigen::VectorXd& x, double p1, double p2) const {
   Eigen::MatrixXd A;
   singular_matrix(x, p1, p2, A);
@@ -67,6 +72,12 @@ Eigen::VectorXcd TwoParameterProblem::spectrum(const Eigen::VectorXd& x, double 
   Eigen::MatrixXd J;
   jacobian(x, p1, p2, J);
   return Eigen::EigenSolver<Eigen::MatrixXd>(J, false).eigenvalues();
+}
+
+CertifiedSpectrum TwoParameterProblem::certified_spectrum(const Eigen::VectorXd& x, double p1, double p2, bool) const {
+  Eigen::MatrixXd J;
+  jacobian(x, p1, p2, J);
+  return bound_by_eigenvalues(spectrum(x, p1, p2), J, kFiniteDifferenceAccuracy);
 }
 
 FoldCurveProblem::FoldCurveProblem(const TwoParameterProblem& base, const SpecialPoint& lp, double p2)

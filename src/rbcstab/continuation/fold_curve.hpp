@@ -26,6 +26,9 @@ class TwoParameterProblem {
   // of their underlying points with it. Default: eigenvalues of jacobian (problems whose Newton system
   // differs from the dynamics, e.g. the sphere-regularised equilibria, override it).
   virtual Eigen::VectorXcd spectrum(const Eigen::VectorXd& x, double p1, double p2) const;
+  // The same with an error estimate per value (ContinuationProblem::certified_spectrum). Default: the
+  // bounds of jacobian()'s eigenvalues where they are the values (bound_by_eigenvalues), else NaN.
+  virtual CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& x, double p1, double p2, bool refine) const;
   virtual StabilityKind stability_kind() const { return StabilityKind::eigenvalues; }
 };
 
@@ -60,6 +63,8 @@ class SingularityCurveProblem : public ContinuationProblem {
     return {X[X.size() - 1], p2};
   }
   const Eigen::VectorXd& start() const { return start_; }  // (x, p1) at the special point
+  // The base problem's certified spectrum at (x, p1) (fold and PD curves report the base's spectrum).
+  CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const override;
   double test_function(const Eigen::VectorXd& x, double p1, double p2) const;  // g
 
  protected:

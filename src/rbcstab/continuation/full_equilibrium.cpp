@@ -158,6 +158,10 @@ void FullEquilibriumProblem::jacobian(const Eigen::VectorXd& x, double p, Eigen:
 }
 
 Eigen::VectorXcd FullEquilibriumProblem::spectrum(const Eigen::VectorXd& x, double p) const {
+  return certified_spectrum(x, p, false).values;
+}
+
+CertifiedSpectrum FullEquilibriumProblem::certified_spectrum(const Eigen::VectorXd& x, double p, bool) const {
   Eigen::MatrixXd DF;
   dynamics_jacobian(x, p, DF);
   // Block structure: DF = D + u grad(sigma)^T with D block diagonal (1x1 for m = 0, the 2x2 rotation
@@ -168,6 +172,12 @@ Eigen::VectorXcd FullEquilibriumProblem::spectrum(const Eigen::VectorXd& x, doub
   // On the symmetric branches almost every l >= 3 block is inactive: the dense part is ~6 x 6.
   std::vector<Eigen::Index> active;
   std::vector<std::complex<double>> values;
+  std::vector<double> errors;
+  const double eta = assembly_accuracy(DF.rows());
+  auto append = [&](const CertifiedSpectrum& c) {
+    values.insert(values.end(), c.values.data(), c.values.data() + c.values.size());
+    errors.insert(errors.end(), c.errors.data(), c.errors.data() + c.errors.size());
+  };
   for (int l = 2; l <= L_; ++l)
     for (int m = 0; m <= l; ++m) {
       const Eigen::Index i = index(l, m), k = m == 0 ? 1 : 2;
@@ -175,9 +185,7 @@ Eigen::VectorXcd FullEquilibriumProblem::spectrum(const Eigen::VectorXd& x, doub
         for (Eigen::Index j = 0; j < k; ++j) active.push_back(i + j);
         continue;
       }
-      const Eigen::MatrixXd block = DF.block(i, i, k, k);
-      const Eigen::VectorXcd ev = Eigen::EigenSolver<Eigen::MatrixXd>(block, false).eigenvalues();
-      values.insert(values.end(), ev.data(), ev.data() + ev.size());
+      append(certified_eigenvalues(DF.block(i, i, k, k), eta));
     }
   const Eigen::Index na = static_cast<Eigen::Index>(active.size());
   Eigen::MatrixXd DFa(na, na);
@@ -186,9 +194,9 @@ Eigen::VectorXcd FullEquilibriumProblem::spectrum(const Eigen::VectorXd& x, doub
     xa[a] = x[active[at(a)]];
     for (Eigen::Index b = 0; b < na; ++b) DFa(a, b) = DF(active[at(a)], active[at(b)]);
   }
-  const Eigen::VectorXcd ev = detail::tangent_spectrum(DFa, xa);
-  values.insert(values.end(), ev.data(), ev.data() + ev.size());
-  return Eigen::Map<const Eigen::VectorXcd>(values.data(), static_cast<Eigen::Index>(values.size()));
+  append(detail::certified_tangent_spectrum(DFa, xa, eta));
+  const auto size = static_cast<Eigen::Index>(values.size());
+  return {Eigen::Map<const Eigen::VectorXcd>(values.data(), size), Eigen::Map<const Eigen::VectorXd>(errors.data(), size)};
 }
 
 void FullEquilibriumProblem::parameter_derivative(const Eigen::VectorXd& x, double p, Eigen::VectorXd& Fp) const {

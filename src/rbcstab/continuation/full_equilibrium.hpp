@@ -58,6 +58,8 @@ class FullEquilibriumProblem final : public ContinuationProblem {
   void residual(const Eigen::VectorXd& x, double p, Eigen::VectorXd& G) const override;
   void jacobian(const Eigen::VectorXd& x, double p, Eigen::MatrixXd& J) const override;
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& x, double p) const override;
+  // The same values with first-order error bounds (inactive blocks and the dense active part alike).
+  CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& x, double p, bool refine) const override;
   // Central differences, except for beta: zero wherever the problem is defined (see the .cpp).
   void parameter_derivative(const Eigen::VectorXd& x, double p, Eigen::VectorXd& Fp) const override;
   std::string parameter_name() const override { return to_string(free_); }

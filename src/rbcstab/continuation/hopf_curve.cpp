@@ -57,6 +57,11 @@ Eigen::VectorXcd HopfCurveProblem::spectrum(const Eigen::VectorXd& X, double p2)
   return base_.spectrum(X.head(n), X[n], p2);
 }
 
+CertifiedSpectrum HopfCurveProblem::certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const {
+  const Eigen::Index n = base_.dimension();
+  return base_.certified_spectrum(X.head(n), X[n], p2, refine);
+}
+
 double HopfCurveProblem::omega(const Eigen::VectorXd& X) const {
   const double kappa = X[base_.dimension() + 1];
   return kappa > 0 ? std::sqrt(kappa) : 0.0;

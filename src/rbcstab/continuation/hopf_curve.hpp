@@ -23,6 +23,7 @@ class HopfCurveProblem final : public ContinuationProblem {
   void residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const override;
   // The base Jacobian's eigenvalues (the pair +- i omega is on the imaginary axis along the curve).
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p2) const override;
+  CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const override;
   std::string parameter_name() const override { return base_.name2(); }
   std::vector<std::string> parameter_names() const override { return {base_.name1(), base_.name2()}; }
   std::vector<double> parameter_values(const Eigen::VectorXd& X, double p2) const override {

@@ -190,9 +190,13 @@ void ModalEquilibriumProblem::jacobian(const Eigen::VectorXd& x, double p, Eigen
 }
 
 Eigen::VectorXcd ModalEquilibriumProblem::spectrum(const Eigen::VectorXd& x, double p) const {
+  return certified_spectrum(x, p, false).values;
+}
+
+CertifiedSpectrum ModalEquilibriumProblem::certified_spectrum(const Eigen::VectorXd& x, double p, bool) const {
   Eigen::MatrixXd DF;
   dynamics_jacobian(coefficients(p), x, DF);
-  return detail::tangent_spectrum(DF, x);
+  return detail::certified_tangent_spectrum(DF, x, assembly_accuracy(DF.rows()));
 }
 
 Eigen::VectorXd ModalEquilibriumProblem::ellipsoidal_state(double p) const {
@@ -273,12 +277,16 @@ void ModalBranchPointCurve::residual(const Eigen::VectorXd& X, double p2, Eigen:
 }
 
 Eigen::VectorXcd ModalBranchPointCurve::spectrum(const Eigen::VectorXd& X, double p2) const {
+  return certified_spectrum(X, p2, false).values;
+}
+
+CertifiedSpectrum ModalBranchPointCurve::certified_spectrum(const Eigen::VectorXd& X, double p2, bool) const {
   Eigen::VectorXd x = Eigen::VectorXd::Zero(base_.dimension());
   x.head(5) = X.head(5);
   const ModalCoefficients c = base_.coefficients_at(parameters(X[5], p2));
   Eigen::MatrixXd DF;
   ModalEquilibriumProblem::dynamics_jacobian(c, x, DF);
-  return detail::tangent_spectrum(DF, x);
+  return detail::certified_tangent_spectrum(DF, x, assembly_accuracy(DF.rows()));
 }
 
 Eigen::VectorXd ModalBranchPointCurve::start(const Eigen::VectorXd& x_bp, double p1_bp) const {

@@ -86,6 +86,8 @@ class ModalEquilibriumProblem final : public ContinuationProblem {
   void residual(const Eigen::VectorXd& x, double p, Eigen::VectorXd& G) const override;
   void jacobian(const Eigen::VectorXd& x, double p, Eigen::MatrixXd& J) const override;
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& x, double p) const override;
+  // The tangent-plane spectrum of the analytic Jacobian with first-order error bounds.
+  CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& x, double p, bool refine) const override;
   // Central differences, except for beta: zero wherever the problem is defined (kappa = 0, or the
   // one-point domain beta = 0 of a pulling rest shape, where a difference would step outside).
   void parameter_derivative(const Eigen::VectorXd& x, double p, Eigen::VectorXd& Fp) const override;
@@ -141,6 +143,7 @@ class ModalBranchPointCurve final : public ContinuationProblem {
   Eigen::Index dimension() const override { return 6; }
   void residual(const Eigen::VectorXd& X, double p2, Eigen::VectorXd& R) const override;
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p2) const override;
+  CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const override;
   std::string parameter_name() const override { return to_string(p2_); }
   std::vector<std::string> parameter_names() const override { return {to_string(p1_), to_string(p2_)}; }
   std::vector<double> parameter_values(const Eigen::VectorXd& X, double p2) const override { return {X[5], p2}; }

@@ -125,6 +125,24 @@ Eigen::VectorXcd ModalOrbitBranchPointCurve::spectrum(const Eigen::VectorXd& X, 
   return out;
 }
 
+CertifiedSpectrum ModalOrbitBranchPointCurve::certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const {
+  const double p1 = X[n_];
+  const CertifiedSpectrum red = base_.certified_spectrum(X.head(n_), p1, p2, refine);
+  CertifiedSpectrum c;
+  c.values = spectrum(X, p2);
+  c.errors.resize(c.values.size());
+  c.errors.head(red.errors.size()) = red.errors;
+  const double sb = sigma_bar(X.head(n_), p1, p2);
+  const Parameters q = parameters(p1, p2);
+  const double d_sigma = options_.rtol * (1 + std::abs(sb));
+  for (Eigen::Index k = red.errors.size(); k < c.values.size(); ++k) {
+    const int l = k < red.errors.size() + 2 ? 2 : static_cast<int>(k - red.errors.size()) + 1;  // v~ plane: l = 2
+    const double slope = Upsilon(q, l, sb + 1) - Upsilon(q, l, sb);  // Upsilon_l is affine in sigma
+    c.errors[k] = kTwoPi * std::abs(c.values[k]) * (std::abs(slope) * d_sigma + 4 * std::numeric_limits<double>::epsilon());
+  }
+  return c;
+}
+
 Eigen::VectorXd ModalOrbitBranchPointCurve::start_from_modal(const Eigen::VectorXd& X_modal, double p1_bp) const {
   const Eigen::Index nm = 5 + (scene_.L - 2);
   const int N = options_.segments;

@@ -46,6 +46,9 @@ class ModalOrbitBranchPointCurve final : public ContinuationProblem {
   // The modal ellipsoidal orbit's multipliers: the reduced orbit's two, exp(2 pi mean Upsilon_2) twice
   // (the v~ plane) and exp(2 pi Upsilon_k(sigma_bar)) for k = 3..L (k = l is 1 on the curve).
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p2) const override;
+  // The reduced orbit's certified multipliers; a closed-form one exp(2 pi Upsilon_k(sigma_bar)) is off
+  // by 2 pi |mu| |dUpsilon_k/dsigma| times sigma_bar's error, estimated as rtol (1 + |sigma_bar|).
+  CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const override;
   std::string parameter_name() const override { return to_string(p2_); }
   std::vector<std::string> parameter_names() const override { return {to_string(p1_), to_string(p2_)}; }
   std::vector<double> parameter_values(const Eigen::VectorXd& X, double p2) const override { return {X[n_], p2}; }

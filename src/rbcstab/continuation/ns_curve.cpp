@@ -91,6 +91,11 @@ Eigen::VectorXcd NeimarkSackerCurveProblem::spectrum(const Eigen::VectorXd& X, d
   return floquet(X.head(m_), X[m_], p2).multipliers;
 }
 
+CertifiedSpectrum NeimarkSackerCurveProblem::certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const {
+  at(p2);
+  return orbit_.certified_spectrum(X.head(m_), X[m_], refine);
+}
+
 NeimarkSackerKind NeimarkSackerCurveProblem::classify(const Eigen::VectorXd& X) const {
   require(X.size() == m_ + 2, "X", static_cast<double>(X.size()), "(shooting unknowns, p1, kappa)");
   NeimarkSackerKind k;

@@ -53,6 +53,7 @@ class NeimarkSackerCurveProblem final : public ContinuationProblem {
   // The orbit's (nontrivial) multipliers; the pair e^{+-i theta} sits on the unit circle along the
   // curve (neutral to the engine, so no spurious NS points are reported).
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p2) const override;
+  CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const override;
   std::string parameter_name() const override { return system_.name2(); }
   std::vector<std::string> parameter_names() const override { return {system_.name1(), system_.name2()}; }
   std::vector<double> parameter_values(const Eigen::VectorXd& X, double p2) const override {

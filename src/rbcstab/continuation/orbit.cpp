@@ -1,9 +1,12 @@
 #include "rbcstab/continuation/orbit.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <span>
 #include <stdexcept>
 #include <utility>
+#include <vector>
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
@@ -365,6 +368,28 @@ Eigen::VectorXcd PeriodicOrbitProblem::spectrum(const Eigen::VectorXd& X, double
   return floquet(X, p).multipliers;
 }
 
+CertifiedSpectrum PeriodicOrbitProblem::certified_spectrum(const Eigen::VectorXd& X, double p, bool refine) const {
+  const Floquet fl = floquet(X, p);
+  const double eta = std::max(fl.trivial ? std::abs(*fl.trivial - 1) : 0.0, o_.rtol);
+  CertifiedSpectrum c = sys_.conserves_norm() ? detail::certified_tangent_spectrum(fl.monodromy, X.head(n_), eta)
+                                              : certified_eigenvalues(fl.monodromy, eta);
+  c.values = fl.multipliers;  // the same numbers (one eigensolver); an integration failure: NaN
+  if (!refine || !c.values.allFinite()) return c;
+  OrbitOptions fine = o_;
+  fine.segments = std::min(2 * N_, 1000);
+  fine.rtol = std::max(o_.rtol / 100, 1e-15);
+  fine.atol = o_.atol / 100;
+  const PeriodicOrbitProblem refined(sys_, fine);
+  const Eigen::VectorXcd mu = refined.spectrum(refined.shooting_guess(X.head(n_), p), p);
+  integrations_ += refined.integrations();
+  for (Eigen::Index i = 0; i < c.values.size(); ++i) {
+    double d = std::numeric_limits<double>::infinity();
+    for (Eigen::Index k = 0; k < mu.size(); ++k) d = std::min(d, std::abs(c.values[i] - mu[k]));
+    c.errors[i] = std::max(c.errors[i], d);
+  }
+  return c;
+}
+
 Eigen::VectorXd PeriodicOrbitProblem::shooting_guess(const Eigen::VectorXd& x0, double p) const {
   require(x0.size() == n_, "x0", static_cast<double>(x0.size()), "a state of the system's dimension");
   Eigen::VectorXd X(n_ * N_);
@@ -381,6 +406,45 @@ Eigen::VectorXd PeriodicOrbitProblem::shooting_guess(const Eigen::VectorXd& x0, 
             });
   ++integrations_;
   return X;
+}
+
+OrbitRelaxation PeriodicOrbitProblem::relax(const Eigen::VectorXd& x0, double p, double tol, int max_periods,
+                                            int chunk) const {
+  require(x0.size() == n_, "x0", static_cast<double>(x0.size()), "a state of the system's dimension");
+  require(std::isfinite(tol) && tol > 0, "tol", tol, "a finite number > 0");
+  require(max_periods >= 1, "max_periods", max_periods, "an integer >= 1");
+  require(chunk >= 1, "chunk", chunk, "an integer >= 1");
+  OrbitRelaxation r;
+  r.x = x0;
+  const Augmented plain(sys_, p, Augmented::Mode::plain);
+  const IntegratorOptions io = integrator_options(o_);
+  Eigen::VectorXd prev = x0;
+  while (r.periods < max_periods && !r.converged) {
+    // The system is 2 pi-periodic in t: every chunk starts again at t = 0.
+    const int k = std::min(chunk, max_periods - r.periods);
+    std::vector<double> grid;
+    for (int j = 1; j <= k; ++j) grid.push_back(kTwoPi * j);
+    int done = 0;
+    const IntegrationResult res =
+        integrate(plain, std::span<const double>(r.x.data(), static_cast<std::size_t>(n_)), 0.0, grid, io,
+                  [&](double, std::span<const double> y) {
+                    if (r.converged) return;  // the rest of the chunk only relaxes further
+                    const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(y.data(), n_);
+                    r.defect = (x - prev).norm();
+                    r.converged = r.defect < tol;
+                    prev = x;
+                    ++done;
+                  });
+    ++integrations_;
+    r.periods += done;
+    r.x = prev;
+    if (res.status != IntegrationStatus::success) {
+      r.converged = false;
+      r.failure = res.reason;
+      break;
+    }
+  }
+  return r;
 }
 
 OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p) const {
@@ -549,6 +613,12 @@ void OrbitTwoParameterProblem::antiperiodic_jacobian(const Eigen::VectorXd& X, d
 Eigen::VectorXcd OrbitTwoParameterProblem::multipliers(const Eigen::VectorXd& X, double p1, double p2) const {
   at(p2);
   return orbit_.spectrum(X, p1);
+}
+
+CertifiedSpectrum OrbitTwoParameterProblem::certified_spectrum(const Eigen::VectorXd& X, double p1, double p2,
+                                                               bool refine) const {
+  at(p2);
+  return orbit_.certified_spectrum(X, p1, refine);
 }
 
 PeriodDoublingCurveProblem::PeriodDoublingCurveProblem(const OrbitTwoParameterProblem& base, const SpecialPoint& pd,

@@ -12,6 +12,7 @@
 // number is a property of the solution, computed afterwards (orbit_summary).
 #include <Eigen/Dense>
 #include <cstddef>
+#include <limits>
 #include <map>
 #include <memory>
 #include <optional>
@@ -115,6 +116,15 @@ struct OrbitSummary {
                                     // spectrally accurate for a smooth periodic orbit)
 };
 
+// Whole forcing periods of x' = f(t, x, p) from a state at t = 0 (mod 2 pi): how far a relaxation got.
+struct OrbitRelaxation {
+  Eigen::VectorXd x;       // the state after `periods` periods (t = 0 mod 2 pi)
+  int periods = 0;         // forcing periods integrated
+  double defect = std::numeric_limits<double>::quiet_NaN();  // |x(2 pi k) - x(2 pi (k - 1))|_2 of the last period
+  bool converged = false;  // defect < tol before max_periods
+  std::string failure;     // non-empty: the integration failed (x is the last state reached)
+};
+
 // F(X, p) = 0 for X = (x_0, ..., x_{N-1}), x_j the state at t_j = 2 pi j / N:
 //   E_j = phi(t_{j+1}, t_j, x_j) - x_{j+1}  (x_N = x_0), and for conserves_norm systems
 //   E_0 = |x_0|^2 phi(t_1, t_0, x_0) - x_1, which forces |x_0| = 1 at a zero and makes the Jacobian
@@ -129,6 +139,11 @@ class PeriodicOrbitProblem final : public ContinuationProblem {
   void parameter_derivative(const Eigen::VectorXd& X, double p, Eigen::VectorXd& Fp) const override;
   StabilityKind stability_kind() const override { return StabilityKind::multipliers; }
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p) const override;
+  // The multipliers with first-order bounds (certified_eigenvalues of the monodromy on x0^perp) for a
+  // monodromy off by |trivial multiplier - 1| relative (the integration error it shows along x0; at
+  // least rtol); refine: each also at least its distance to the multipliers recomputed with twice the
+  // segments at rtol / 100 (about twice a shooting's cost).
+  CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& X, double p, bool refine) const override;
   std::string parameter_name() const override { return sys_.parameter_name(); }
 
   int segments() const { return N_; }
@@ -136,6 +151,11 @@ class PeriodicOrbitProblem final : public ContinuationProblem {
   // The shooting unknowns of the trajectory through x0 at t = 0 (a start for Newton).
   Eigen::VectorXd shooting_guess(const Eigen::VectorXd& x0, double p) const;
   Eigen::VectorXd state_at_zero(const Eigen::VectorXd& X) const { return X.head(n_); }
+  // Relaxes x' = f(t, x, p) from x0 (at t = 0 mod 2 pi) in chunks of `chunk` periods until the
+  // periodicity defect of the last period is below tol or max_periods have run (the shooting's
+  // integrator options). Near an attracting orbit with leading multiplier rho the defect shrinks by
+  // |rho| per period and the distance to the orbit is ~ defect / (1 - |rho|).
+  OrbitRelaxation relax(const Eigen::VectorXd& x0, double p, double tol, int max_periods, int chunk = 10) const;
   Floquet floquet(const Eigen::VectorXd& X, double p) const;
   // Integrates the orbit densely from the segments' states (winding via the integrated angle of z).
   OrbitSummary summary(const Eigen::VectorXd& X, double p) const;
@@ -221,6 +241,7 @@ class OrbitTwoParameterProblem final : public TwoParameterProblem {
   Eigen::VectorXcd multipliers(const Eigen::VectorXd& X, double p1, double p2) const;
   // Curves over this problem (LPC) report the orbits' Floquet multipliers.
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p1, double p2) const override { return multipliers(X, p1, p2); }
+  CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& X, double p1, double p2, bool refine) const override;
   StabilityKind stability_kind() const override { return StabilityKind::multipliers; }
 
  private:

@@ -1,9 +1,12 @@
 #include "rbcstab/continuation/problem.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/LU>
 
 #include "rbcstab/core/error.hpp"
 
@@ -52,6 +55,57 @@ Eigen::VectorXcd ContinuationProblem::spectrum(const Eigen::VectorXd& x, double 
   jacobian(x, p, J);
   Eigen::EigenSolver<Eigen::MatrixXd> es(J, false);
   return es.eigenvalues();
+}
+
+CertifiedSpectrum certified_eigenvalues(const Eigen::MatrixXd& A, double eta) {
+  const Eigen::Index n = A.rows();
+  CertifiedSpectrum c;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  c.values.setConstant(n, {nan, nan});
+  c.errors.setConstant(n, nan);
+  if (n == 0 || !A.allFinite()) return c;
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(A, true);
+  if (es.info() != Eigen::Success) return c;
+  c.values = es.eigenvalues();
+  c.errors.setConstant(n, std::numeric_limits<double>::infinity());
+  const Eigen::MatrixXcd V = es.eigenvectors();
+  const Eigen::FullPivLU<Eigen::MatrixXcd> lu(V);
+  if (!lu.isInvertible()) return c;  // defective to working precision: no first-order bound
+  const Eigen::MatrixXcd U = lu.inverse();  // rows: left eigenvectors with u_i^H v_i = 1
+  const Eigen::MatrixXcd Ac = A.cast<std::complex<double>>();
+  const double matrix_error = eta * A.norm();
+  for (Eigen::Index i = 0; i < n; ++i) {
+    const double v = V.col(i).norm();
+    const double residual = (Ac * V.col(i) - c.values[i] * V.col(i)).norm() / v;
+    const double kappa = U.row(i).norm() * v;
+    c.errors[i] = std::isfinite(kappa) ? kappa * (residual + matrix_error) : std::numeric_limits<double>::infinity();
+  }
+  return c;
+}
+
+double assembly_accuracy(Eigen::Index n) {
+  return 8.0 * static_cast<double>(std::max<Eigen::Index>(n, 1)) * std::numeric_limits<double>::epsilon();
+}
+
+CertifiedSpectrum bound_by_eigenvalues(const Eigen::VectorXcd& values, const Eigen::MatrixXd& J, double eta) {
+  CertifiedSpectrum c;
+  c.values = values;
+  c.errors.setConstant(c.values.size(), std::numeric_limits<double>::quiet_NaN());
+  const CertifiedSpectrum j = certified_eigenvalues(J, eta);
+  for (Eigen::Index i = 0; i < c.values.size(); ++i) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for (Eigen::Index k = 0; k < j.values.size(); ++k) {
+      const double d = std::abs(c.values[i] - j.values[k]);
+      if (d <= j.errors[k] && d < nearest) nearest = d, c.errors[i] = j.errors[k];
+    }
+  }
+  return c;
+}
+
+CertifiedSpectrum ContinuationProblem::certified_spectrum(const Eigen::VectorXd& x, double p, bool) const {
+  Eigen::MatrixXd J;
+  jacobian(x, p, J);
+  return bound_by_eigenvalues(spectrum(x, p), J, kFiniteDifferenceAccuracy);
 }
 
 int count_unstable(const Eigen::VectorXcd& spectrum, StabilityKind kind, double tol) {

@@ -138,6 +138,7 @@ class SceneProblem {
   virtual StartPoint start(const BranchSpec& spec) const = 0;
   virtual Values measures(const Eigen::VectorXd& x, double p) const = 0;
   virtual std::vector<UserEvent> events() const { return {}; }
+  virtual const char* solution_name() const { return "equilibrium"; }
 };
 
 // The start of each level's equilibria (StartMethod in the header says why).
@@ -176,17 +177,35 @@ class Orbit final : public SceneProblem {
  public:
   Orbit(const Scene& scene, ContinuationParameter q, const OrbitOptions& options) : sys_(scene, q), pr_(sys_, options) {}
   const ContinuationProblem& problem() const override { return pr_; }
+  // The scene relaxed for relax_T, then period by period to relax_tol (PeriodicOrbitProblem::relax), then Newton.
   StartPoint start(const BranchSpec& spec) const override {
     const double p0 = sys_.start_parameter();
+    Eigen::VectorXd x0;
     if constexpr (std::is_same_v<System, ModalForcedSystem>)
-      return newton_start(pr_, StartMethod::relaxed, pr_.shooting_guess(sys_.relaxed_state(spec.scene, spec.relax_T), p0),
-                          p0, "periodic orbit near the relaxed modal state");
+      x0 = sys_.relaxed_state(spec.scene, spec.relax_T);
     else
-      return newton_start(pr_, StartMethod::relaxed, pr_.shooting_guess(sys_.relaxed_state(spec.relax_T), p0), p0,
-                          "periodic orbit near the relaxed state");
+      x0 = sys_.relaxed_state(spec.relax_T);
+    const OrbitRelaxation r = pr_.relax(x0, p0, spec.relax_tol, spec.relax_max_periods);
+    StartPoint s = newton_start(pr_, StartMethod::relaxed, pr_.shooting_guess(r.x, p0), p0,
+                                std::is_same_v<System, ModalForcedSystem> ? "periodic orbit near the relaxed modal state"
+                                                                          : "periodic orbit near the relaxed state");
+    s.relaxation_periods = static_cast<int>(std::ceil(spec.relax_T / (2 * M_PI))) + r.periods;
+    s.periodicity_defect = r.defect;
+    s.periodicity_tol = spec.relax_tol;
+    s.relaxed = r.converged;
+    std::ostringstream m;
+    m << std::setprecision(4);
+    if (!r.failure.empty())
+      m << "the relaxation failed after " << s.relaxation_periods << " periods (" << r.failure << ")";
+    else if (!r.converged)
+      m << "the relaxation reached its bound of " << spec.relax_max_periods << " periods after relax_T with periodicity defect "
+        << r.defect << " > " << spec.relax_tol << " (a slow transient, or an attractor that is not periodic)";
+    if (!m.str().empty()) s.message = s.message.empty() ? m.str() : s.message + "; " + m.str();
+    return s;
   }
   Values measures(const Eigen::VectorXd& X, double p) const override { return orbit_values(pr_, sys_, X, p); }
   std::vector<UserEvent> events() const override { return {pr_.transition_event()}; }
+  const char* solution_name() const override { return "periodic orbit"; }
 
  private:
   System sys_;  // before pr_, which refers to it
@@ -232,6 +251,53 @@ int label_branch(MeasuredBranch& m, int label_every, int next) {
   }
   for (; j < sps.size(); ++j) m.special_labels[j] = next++;
   return next;
+}
+
+// The start with its certified stability; an orbit certified unstable is refused unless allowed.
+// A restart from a labelled state is the user's explicit choice: reported, never refused.
+StartPoint assessed_start(const SceneProblem& sp, const BranchSpec& spec, const Scene& scene) {
+  StartPoint s = start_of(sp, spec, scene);
+  if (!s.converged) return s;
+  const ContinuationProblem& pr = sp.problem();
+  StabilityCertificate c;
+  try {
+    // Equilibria whose start the engine's Newton polishes: solved here for the reading only (x stays).
+    Eigen::VectorXd x = s.x;
+    if (!s.newton) {
+      const NewtonResult n = solve_fixed_parameter(pr, s.x, s.p, spec.engine.newton_tol);
+      if (!n.converged) return s;  // the engine reports the failure
+      x = n.x;
+    }
+    c = certify_solution(pr, x, s.p, spec.engine.newton_tol);
+    s.n_unstable = count_unstable(pr.spectrum(x, s.p), pr.stability_kind(), spec.engine.stability_tol);
+  } catch (const InvalidArgument&) {
+    return s;  // the start lies outside the problem's domain: the engine reports it (outside_domain)
+  }
+  s.stable = s.n_unstable == 0;
+  s.stability = c.stability;
+  s.margin = c.margin;
+  s.margin_error = c.margin_error;
+  if (c.stability == Stability::stable) return s;
+  const bool orbit = is_orbit(spec.kind);
+  std::ostringstream m;
+  m << std::setprecision(6) << "the start at " << to_string(spec.parameter) << " = " << s.p << " is ";
+  if (c.stability == Stability::unstable)
+    m << "an unstable " << sp.solution_name() << " (" << s.n_unstable << " unstable "
+      << (orbit ? "multipliers, max |mu| = " : "eigenvalues, max Re = ") << (orbit ? 1 - c.margin : -c.margin)
+      << ", margin " << c.margin << " +- " << std::setprecision(2) << c.margin_error << ")";
+  else
+    m << "of uncertain stability (" << sp.solution_name() << ", margin " << c.margin << " within its error "
+      << std::setprecision(2) << c.margin_error << ")";
+  s.refused = orbit && c.stability == Stability::unstable && !spec.allow_unstable_start && !spec.start_state;
+  if (s.refused)
+    m << std::setprecision(3) << " (Newton from the scene's state after " << s.relaxation_periods
+      << " periods, periodicity defect " << s.periodicity_defect
+      << "): perturbations leave it, so a simulation does not show it. Pass --allow-unstable-start to continue "
+         "from it, or relax longer (--relax-T) to start on an attracting orbit";
+  else if (c.stability == Stability::unstable)
+    m << (orbit ? ": continued from it (allowed)" : ": continued from it");
+  s.message = s.message.empty() ? m.str() : m.str() + "; " + s.message;
+  return s;
 }
 
 MeasuredBranch measure_branch(const SceneProblem& sp, const SceneBranch& r, Branch b) {
@@ -708,6 +774,10 @@ void BranchSpec::validate() const {
                                        to_string(kind) + ": must be " + to_string(level) + " (or auto)");
   require(std::isfinite(relax_T) && relax_T >= 0, "relax_T", relax_T, "a finite number >= 0");
   require(label_every >= 0, "label_every", label_every, "an integer >= 0 (0: label only the ends and special points)");
+  require(std::isfinite(relax_tol) && relax_tol > 0 && relax_tol <= 1, "relax_tol", relax_tol,
+          "(0, 1] (the periodicity defect of a unit-norm state)");
+  require(relax_max_periods >= 1 && relax_max_periods <= 10000000, "relax_max_periods", relax_max_periods,
+          "an integer in [1, 1e7]");
   ContinuationOptions e = engine;
   set_domain_bounds(e, parameter, engine.p_min, engine.p_max);
   // Every branch starts at the scene's value (modal_orbit: its total excess area's scene).
@@ -745,7 +815,7 @@ Scene problem_scene_of(const BranchSpec& spec) {
 StartPoint find_start(const BranchSpec& spec) {
   spec.validate();
   const Scene scene = problem_scene_of(spec);
-  return start_of(*make_problem(spec, scene), spec, scene);
+  return assessed_start(*make_problem(spec, scene), spec, scene);
 }
 
 int first_bp_met(const Branch& b, Direction direction) {
@@ -774,9 +844,9 @@ SceneBranch continue_scene(const BranchSpec& spec) {
   set_domain_bounds(r.spec.engine, spec.parameter, spec.engine.p_min, spec.engine.p_max);
   r.problem_scene = problem_scene_of(spec);
   const auto sp = make_problem(r.spec, r.problem_scene);
-  r.start = start_of(*sp, r.spec, r.problem_scene);
+  r.start = assessed_start(*sp, r.spec, r.problem_scene);
   Branch b;
-  if (r.start.converged) {
+  if (r.start.converged && !r.start.refused) {
     ContinuationOptions engine = r.spec.engine;
     for (UserEvent& e : sp->events()) engine.events.push_back(std::move(e));
     b = continue_branch(sp->problem(), r.start.x, r.start.p, engine);
@@ -832,7 +902,7 @@ SceneCurve continue_curve(const SceneBranch& one, const CurveSpec& spec) {
   branch.switch_at_bp = false;  // a branch already run with its switched branch still has curves
   spec.validate(branch);
   SceneCurve r = curve_header(one, spec);
-  if (!one.start.converged) {
+  if (!one.start.converged || one.start.refused) {
     r.message = one.start.message;
     return r;
   }

@@ -119,6 +119,17 @@ struct BranchSpec {
     return o;
   }();
   double relax_T = 200;       // relaxation that gives the start state (orbits: rounded up to a multiple of 2 pi)
+  // Orbits: after relax_T, whole forcing periods are relaxed in chunks until the periodicity defect
+  // |x(2 pi k) - x(2 pi (k - 1))|_2 (a unit-norm state) is below relax_tol or relax_max_periods more
+  // have run; Newton then solves the orbit from there. Near an attracting orbit with leading multiplier
+  // rho the distance to it is ~ defect / (1 - |rho|): 4e-5 at the default for |rho| = 0.977 (the
+  // in-plane orbit at Lambda = 1.2, S = 200), 4e-4 for 0.9976 (S = 2000), well inside Newton's reach.
+  double relax_tol = 1e-6;
+  int relax_max_periods = 20000;
+  // An orbit start certified unstable (not what the scene relaxes to) is refused (StartPoint::refused:
+  // the branch is not continued) unless this is set. An unstable equilibrium start is reported only
+  // (the modal and full kinds start on the symmetric branch by design, stable or not).
+  bool allow_unstable_start = false;
   OrbitOptions orbit;         // orbit, modal_orbit: the shooting
   // Also follow the branch bifurcating at the first BP met from the start in the continuation direction
   // (direction both: the BP nearest the start in arclength, first_bp_met).
@@ -129,7 +140,8 @@ struct BranchSpec {
   // total excess area, which it already is).
   std::optional<Eigen::VectorXd> start_state;
   // Throws InvalidArgument naming the field: switch_at_bp for kinds that cannot switch, the orbit
-  // options, the scene's model level against the kind (model), relax_T, label_every, the engine options,
+  // options, the scene's model level against the kind (model), relax_T, relax_tol, relax_max_periods,
+  // label_every, the engine options,
   // and a start value (the scene's parameter) outside the bounds (min).
   void validate() const;
 };
@@ -153,6 +165,21 @@ struct StartPoint {
   bool converged = true;    // false: no solution near the start state; message says which
   int iterations = 0;
   double residual_norm = 0;
+  // Orbits: the relaxation before Newton (BranchSpec::relax_tol).
+  int relaxation_periods = 0;  // forcing periods relaxed in all (relax_T's and the adaptive ones)
+  double periodicity_defect = std::numeric_limits<double>::quiet_NaN();  // of the last period relaxed
+  double periodicity_tol = std::numeric_limits<double>::quiet_NaN();     // spec.relax_tol
+  bool relaxed = false;        // the defect fell below the tolerance within relax_max_periods
+  // The solution's stability at the start (equilibria: after Newton at fixed p from x), certified as
+  // every branch point is (certify_solution); stable and n_unstable as BranchPoint's.
+  bool stable = true;
+  int n_unstable = 0;
+  Stability stability = Stability::uncertain;
+  double margin = std::numeric_limits<double>::quiet_NaN();
+  double margin_error = std::numeric_limits<double>::quiet_NaN();
+  bool refused = false;  // an orbit certified unstable without spec.allow_unstable_start: not continued
+  // Why it failed or was refused; else a note (an unstable or uncertain start, a relaxation that
+  // reached its bound), or empty.
   std::string message;
 };
 StartPoint find_start(const BranchSpec& spec);  // validates spec

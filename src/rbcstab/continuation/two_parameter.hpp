@@ -68,6 +68,9 @@ class SceneTwoParameterProblem final : public TwoParameterProblem {
   }
   // The dynamics' spectrum on the sphere's tangent plane (not the Newton system's Jacobian).
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& x, double p1, double p2) const override { return at(p2).spectrum(x, p1); }
+  CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& x, double p1, double p2, bool refine) const override {
+    return at(p2).certified_spectrum(x, p1, refine);
+  }
   std::string name1() const override { return to_string(by_.p1()); }
   std::string name2() const override { return to_string(by_.p2()); }
   double start_parameter2() const { return get_parameter(by_.scene(), by_.p2()); }

@@ -8,6 +8,8 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
+#include "rbcstab/continuation/problem.hpp"
+
 namespace rbcstab::detail {
 
 // G = F + (|x|^2 - 1) x, in place.
@@ -30,6 +32,13 @@ inline Eigen::MatrixXd tangent_basis(const Eigen::VectorXd& x) {
 inline Eigen::VectorXcd tangent_spectrum(const Eigen::MatrixXd& DF, const Eigen::VectorXd& x) {
   const Eigen::MatrixXd T = tangent_basis(x);
   return Eigen::EigenSolver<Eigen::MatrixXd>(T.transpose() * DF * T, false).eigenvalues();
+}
+
+// The same values with first-order error bounds (certified_eigenvalues of T^T DF T); eta: DF's relative
+// accuracy, to which the product's own rounding is added.
+inline CertifiedSpectrum certified_tangent_spectrum(const Eigen::MatrixXd& DF, const Eigen::VectorXd& x, double eta) {
+  const Eigen::MatrixXd T = tangent_basis(x);
+  return certified_eigenvalues(T.transpose() * DF * T, eta + assembly_accuracy(x.size()));
 }
 
 }  // namespace rbcstab::detail
