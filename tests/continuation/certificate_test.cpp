@@ -170,7 +170,7 @@ TEST(Certificate, ModalEquilibriumAgainstTheModalSpectrum) {
     const Parameters q = with_parameter(spec.scene.parameters, P::C, pt.p);
     const OutOfPlaneEquilibrium eq = out_of_plane_equilibrium(q);
     double top = std::max({eq.eigenvalues[0].real(), eq.eigenvalues[1].real(), eq.mu});
-    for (int l = 3; l <= 6; ++l) top = std::max(top, Upsilon(q, l, eq.sigma_R));
+    for (int l = 3; l <= 6; ++l) top = std::max(top, Upsilon_l(q, l, eq.sigma_R));
     const double oracle_error = 16 * kEps * (1 + std::abs(top));
     EXPECT_LE(std::abs(pt.margin + top), pt.margin_error + oracle_error) << "C = " << pt.p;
     EXPECT_LT(pt.margin_error, 1e-11) << "C = " << pt.p;
@@ -259,7 +259,7 @@ TEST(Certificate, EllipsoidalModalOrbitAgainstTheClosedFormMultipliers) {
                                return m.sigma_from_mu(m.mu(t, y));
                              }) / kTwoPi;
     double top = 0;  // the largest closed-form multiplier
-    for (int l = 2; l <= 4; ++l) top = std::max(top, std::exp(kTwoPi * Upsilon(at.parameters, l, sigma_bar)));
+    for (int l = 2; l <= 4; ++l) top = std::max(top, std::exp(kTwoPi * Upsilon_l(at.parameters, l, sigma_bar)));
     const PeriodicOrbitProblem rp(red);
     const double reduced_top = rp.spectrum(rp.shooting_guess(y0, pt.p), pt.p).cwiseAbs().maxCoeff();
     if (top < reduced_top + 1e-3) continue;  // the critical multiplier is the reduced orbit's own

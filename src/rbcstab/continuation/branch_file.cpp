@@ -68,7 +68,8 @@ json engine_json(const ContinuationOptions& e) {
           {"compute_stability", e.compute_stability},
           {"location_tol", e.location_tol},
           {"max_location_iterations", e.max_location_iterations},
-          {"stability_tol", e.stability_tol}};
+          {"stability_tol", e.stability_tol},
+          {"certificate_refine_margin", e.certificate_refine_margin}};
 }
 
 json spec_json(const BranchSpec& s) {
@@ -79,6 +80,9 @@ json spec_json(const BranchSpec& s) {
           {"parameter", to_string(s.parameter)},
           {"engine", engine_json(s.engine)},
           {"relax_T", s.relax_T},
+          {"relax_tol", s.relax_tol},
+          {"relax_max_periods", s.relax_max_periods},
+          {"allow_unstable_start", s.allow_unstable_start},
           {"orbit",
            {{"segments", s.orbit.segments},
             {"rtol", s.orbit.rtol},
@@ -89,11 +93,6 @@ json spec_json(const BranchSpec& s) {
           {"start_state", s.start_state ? vector_json(*s.start_state) : json(nullptr)}};
 }
 
-json start_json(const StartPoint& s) {
-  return {{"method", to_string(s.method)}, {"p", number_or_null(s.p)},      {"newton", s.newton},
-          {"converged", s.converged},      {"iterations", s.iterations}, {"residual_norm", number_or_null(s.residual_norm)},
-          {"message", s.message}};
-}
 
 json special_point_json(const SpecialPoint& sp) {
   return {{"type", to_string(sp.type)},
@@ -283,6 +282,15 @@ SpecialPoint read_special_point(const Reader& rd, const json& o, const std::stri
   return sp;
 }
 
+// The certified stability keys of a point or special point (branch_io's put_stability).
+template <class Point>
+void read_stability(const Reader& rd, const json& o, const std::string& at, Point& pt) {
+  pt.stability = rd.checked(Reader::join(at, "stability"),
+                            [&] { return from_string<Stability>(rd.string(o, "stability", at), "stability"); });
+  pt.margin = rd.number(o, "margin", at, true);
+  pt.margin_error = rd.number(o, "margin_error", at, true);
+}
+
 // A branch object back into a MeasuredBranch: parameter and measure names as the run's, states of
 // `dimension` unknowns (0: any, the same for every point).
 MeasuredBranch read_branch(const Reader& rd, const json& j, const std::string& path, std::vector<std::string> parameter_names,
@@ -315,6 +323,7 @@ MeasuredBranch read_branch(const Reader& rd, const json& j, const std::string& p
       pt.spectrum[static_cast<Eigen::Index>(i)] = rd.complex(spectrum_values[i], Reader::item(Reader::join(at, spectrum), i));
     pt.n_unstable = rd.small_int(o, "n_unstable", at);
     pt.stable = rd.boolean(o, "stable", at);
+    read_stability(rd, o, at, pt);
     pt.arclength = rd.number(o, "arclength", at);
     pt.newton_iterations = rd.small_int(o, "newton_iterations", at);
     m.branch.points.push_back(std::move(pt));
@@ -333,6 +342,7 @@ MeasuredBranch read_branch(const Reader& rd, const json& j, const std::string& p
     const std::string at = Reader::item(Reader::join(path, "special_points"), k);
     const json& o = sps[k];
     SpecialPoint sp = read_special_point(rd, o, at, &m.branch.parameter_names);
+    read_stability(rd, o, at, sp);
     check_size(sp.x, Reader::join(at, "x"));
     if (sp.after_index + 1 >= pts.size())
       rd.fail(Reader::join(at, "after_index") + " = " + std::to_string(sp.after_index) + " must be below the last "
@@ -375,6 +385,7 @@ ContinuationOptions read_engine(const Reader& rd, const json& j, const std::stri
   e.location_tol = rd.number(j, "location_tol", path);
   e.max_location_iterations = rd.small_int(j, "max_location_iterations", path);
   e.stability_tol = rd.number(j, "stability_tol", path);
+  e.certificate_refine_margin = rd.number(j, "certificate_refine_margin", path);
   rd.checked(path, [&] { e.validate(); });
   return e;
 }
@@ -388,6 +399,9 @@ BranchSpec read_spec(const Reader& rd, const json& j) {
   s.parameter = rd.checked("spec.parameter", [&] { return continuation_parameter_from_string(rd.string(j, "parameter", path)); });
   s.engine = read_engine(rd, rd.at(j, "engine", path), "spec.engine");
   s.relax_T = rd.number(j, "relax_T", path);
+  s.relax_tol = rd.number(j, "relax_tol", path);
+  s.relax_max_periods = rd.small_int(j, "relax_max_periods", path);
+  s.allow_unstable_start = rd.boolean(j, "allow_unstable_start", path);
   const json& o = rd.at(j, "orbit", path);
   s.orbit.segments = rd.small_int(o, "segments", "spec.orbit");
   s.orbit.rtol = rd.number(o, "rtol", "spec.orbit");
@@ -410,6 +424,16 @@ StartPoint read_start(const Reader& rd, const json& j) {
   s.iterations = rd.small_int(j, "iterations", "start");
   s.residual_norm = rd.number(j, "residual_norm", "start", true);
   s.message = rd.string(j, "message", "start");
+  s.stable = rd.boolean(j, "stable", "start");
+  s.n_unstable = rd.small_int(j, "n_unstable", "start");
+  s.refused = rd.boolean(j, "refused", "start");
+  read_stability(rd, j, "start", s);
+  if (j.contains("relaxation_periods")) {  // orbits
+    s.relaxation_periods = rd.small_int(j, "relaxation_periods", "start");
+    s.periodicity_defect = rd.number(j, "periodicity_defect", "start", true);
+    s.periodicity_tol = rd.number(j, "periodicity_tol", "start", true);
+    s.relaxed = rd.boolean(j, "relaxed", "start");
+  }
   return s;
 }
 
@@ -456,13 +480,13 @@ json branch_file_json(const ContinuationRun& run) {
       j["switched_branch"]["message"] = r->switched->message;
     }
     j["spec"] = spec_json(r->spec);
-    j["start"] = start_json(r->start);
+    j["start"] = to_json(r->start, is_orbit(r->spec.kind));
   } else {
     const SceneCurve& c = std::get<SceneCurve>(run);
     add_states(j, c.curve);
     add_states(j["one_parameter_branch"], c.one.branch);
     j["spec"] = spec_json(c.one.spec);
-    j["start"] = start_json(c.one.start);
+    j["start"] = to_json(c.one.start, is_orbit(c.one.spec.kind));
     j["curve_spec"] = {{"type", to_string(c.spec.type)},
                        {"parameter2", to_string(*c.spec.parameter2)},
                        {"p2_min", number_or_null(c.spec.p2_min)},

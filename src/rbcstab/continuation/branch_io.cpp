@@ -248,20 +248,26 @@ nlohmann::json to_json(const MeasuredBranch& m) {
             {"location_iterations", c.location_iterations}}}};
 }
 
-nlohmann::json to_json(const SceneBranch& r) {
-  nlohmann::json j = to_json(r.branch);
-  put_header(j, r.spec);
-  const StartPoint& s = r.start;
-  nlohmann::json start{{"method", to_string(s.method)}, {"p", number_or_null(s.p)}, {"converged", s.converged},
-                       {"stable", s.stable}, {"n_unstable", s.n_unstable}, {"refused", s.refused}, {"message", s.message}};
+nlohmann::json to_json(const StartPoint& s, bool orbit) {
+  nlohmann::json start{{"method", to_string(s.method)}, {"p", number_or_null(s.p)},
+                       {"newton", s.newton},            {"converged", s.converged},
+                       {"iterations", s.iterations},    {"residual_norm", number_or_null(s.residual_norm)},
+                       {"stable", s.stable},            {"n_unstable", s.n_unstable},
+                       {"refused", s.refused},          {"message", s.message}};
   put_stability(start, s);
-  if (is_orbit(r.spec.kind)) {
+  if (orbit) {
     start["relaxation_periods"] = s.relaxation_periods;
     start["periodicity_defect"] = number_or_null(s.periodicity_defect);
     start["periodicity_tol"] = number_or_null(s.periodicity_tol);
     start["relaxed"] = s.relaxed;
   }
-  j["start"] = start;
+  return start;
+}
+
+nlohmann::json to_json(const SceneBranch& r) {
+  nlohmann::json j = to_json(r.branch);
+  put_header(j, r.spec);
+  j["start"] = to_json(r.start, is_orbit(r.spec.kind));
   if (r.switched) {
     nlohmann::json sw = to_json(r.switched->branch);
     sw["switched"] = r.switched->switched;

@@ -36,6 +36,8 @@
 namespace rbcstab {
 
 nlohmann::json to_json(const MeasuredBranch& branch);
+// How a branch started (every StartPoint field; the relaxation keys for orbits only).
+nlohmann::json to_json(const StartPoint& start, bool orbit);
 nlohmann::json to_json(const SceneBranch& result);
 nlohmann::json to_json(const SceneCurve& result);
 nlohmann::json to_json(const ContinuationRun& run);

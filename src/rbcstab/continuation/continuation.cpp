@@ -17,6 +17,90 @@ const SpecialPoint* find_special_point(const Branch& b, SpecialPointType type, i
   return nullptr;
 }
 
+namespace {
+
+// How far a spectral value lies on the unstable side of the boundary: Re(lambda) or |mu| - 1.
+double unstable_side(std::complex<double> v, StabilityKind kind) {
+  return kind == StabilityKind::eigenvalues ? v.real() : std::abs(v) - 1;
+}
+
+// The margin of a spectrum's critical value (NaN when the spectrum is empty or not finite).
+double margin_of(const Eigen::VectorXcd& spectrum, StabilityKind kind) {
+  double a = -std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < spectrum.size(); ++i) a = std::max(a, unstable_side(spectrum[i], kind));
+  return spectrum.size() > 0 && spectrum.allFinite() ? -a : std::numeric_limits<double>::quiet_NaN();
+}
+
+Stability label(double margin, double margin_error) {
+  if (!(margin_error >= 0) || !(std::abs(margin) > margin_error)) return Stability::uncertain;
+  return margin > 0 ? Stability::stable : Stability::unstable;
+}
+
+// How far a Newton solution may be off: the next Newton step, but at least the accuracy the corrector
+// accepts (tol: newton_tol (1 + |X|)), since a residual that rounds to 0 gives a zero step without an
+// exact state (e.g. a spectrum that cancels to 1e-32 at a degenerate point). Along a zero step the
+// direction is a fixed generic one.
+Eigen::VectorXd state_perturbation(const Eigen::VectorXd& step, double tol) {
+  if (!step.allFinite()) return step;
+  const double size = step.lpNorm<Eigen::Infinity>();
+  if (size >= tol) return step;
+  if (size > 0) return step * (tol / size);
+  Eigen::VectorXd d(step.size());
+  for (Eigen::Index i = 0; i < d.size(); ++i) d[i] = (i % 2 == 0 ? 1.0 : -1.0) * (1 + static_cast<double>(i) / static_cast<double>(d.size()));
+  return d * (tol / d.lpNorm<Eigen::Infinity>());
+}
+
+// Widens c by how much the margin moves when the state moves by its error (x_next, p_next: the state
+// perturbed by state_perturbation).
+void add_state_term(StabilityCertificate& c, const ContinuationProblem& problem, const Eigen::VectorXd& x_next,
+                    double p_next) {
+  if (!x_next.allFinite() || !std::isfinite(p_next)) return;  // a singular step (a fold start): no reading
+  double m = 0;
+  try {
+    m = margin_of(problem.spectrum(x_next, p_next), problem.stability_kind());
+  } catch (const InvalidArgument&) {
+    return;  // the step left the problem's domain
+  }
+  if (std::isfinite(m)) c.margin_error = std::max(c.margin_error, std::abs(m - c.margin));
+  c.stability = label(c.margin, c.margin_error);
+}
+
+}  // namespace
+
+StabilityCertificate certify(const CertifiedSpectrum& spectrum, StabilityKind kind) {
+  StabilityCertificate c;
+  const Eigen::VectorXcd& s = spectrum.values;
+  if (s.size() == 0 || spectrum.errors.size() != s.size()) return c;
+  const double inf = std::numeric_limits<double>::infinity();
+  double a = -inf, lo = -inf, hi = -inf;
+  bool known = true;
+  for (Eigen::Index i = 0; i < s.size(); ++i) {
+    const double ai = unstable_side(s[i], kind), e = spectrum.errors[i];
+    known = known && e >= 0;
+    a = std::max(a, ai);
+    lo = std::max(lo, ai - e);
+    hi = std::max(hi, ai + e);
+  }
+  c.margin = s.allFinite() ? -a : std::numeric_limits<double>::quiet_NaN();
+  c.margin_error = known && std::isfinite(c.margin) ? std::max(hi - a, a - lo) : std::numeric_limits<double>::quiet_NaN();
+  c.stability = label(c.margin, c.margin_error);
+  return c;
+}
+
+StabilityCertificate certify_solution(const ContinuationProblem& problem, const Eigen::VectorXd& x, double p,
+                                      double newton_tol) {
+  StabilityCertificate c = certify(problem.certified_spectrum(x, p, true), problem.stability_kind());
+  if (!std::isfinite(c.margin)) return c;
+  Eigen::VectorXd F;
+  Eigen::MatrixXd J;
+  problem.residual(x, p, F);
+  problem.jacobian(x, p, J);
+  const Eigen::VectorXd step = J.partialPivLu().solve(-F);
+  add_state_term(c, problem, x + state_perturbation(step, newton_tol * (1 + x.lpNorm<Eigen::Infinity>())), p);
+  return c;
+}
+
+
 void ContinuationOptions::validate() const {
   require(std::isfinite(initial_step) && initial_step > 0, "initial_step", initial_step, "a finite number > 0");
   require(std::isfinite(min_step) && min_step > 0 && min_step <= initial_step, "min_step", min_step,

@@ -137,7 +137,7 @@ CertifiedSpectrum ModalOrbitBranchPointCurve::certified_spectrum(const Eigen::Ve
   const double d_sigma = options_.rtol * (1 + std::abs(sb));
   for (Eigen::Index k = red.errors.size(); k < c.values.size(); ++k) {
     const int l = k < red.errors.size() + 2 ? 2 : static_cast<int>(k - red.errors.size()) + 1;  // v~ plane: l = 2
-    const double slope = Upsilon(q, l, sb + 1) - Upsilon(q, l, sb);  // Upsilon_l is affine in sigma
+    const double slope = Upsilon_l(q, l).slope;  // dUpsilon_l/dsigma
     c.errors[k] = kTwoPi * std::abs(c.values[k]) * (std::abs(slope) * d_sigma + 4 * std::numeric_limits<double>::epsilon());
   }
   return c;
