@@ -17,6 +17,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "rbcstab/continuation/continuation.hpp"
@@ -96,18 +97,31 @@ struct Floquet {
 };
 
 enum class OrbitKind { swinging, tumbling };
+// The name of the swinging <-> tumbling UZ event on orbit branches (transition_event's default).
+inline constexpr std::string_view kTransitionEventName = "swing_tumble";
 std::string to_string(OrbitKind kind);
 
 // What an orbit looks like over one period (reduced system: r, Psi of z = r e^{-i Psi}).
 struct OrbitSummary {
   double r0 = 0, Psi0 = 0;          // at t = 0 (Psi0 in (-pi, pi])
   double r_min = 0, r_max = 0;      // r_min refined to the integration tolerance; r_max over the samples
+  double t_r_min = 0;               // the time of r_min in [0, 2 pi)
   double Psi_min = 0, Psi_max = 0;  // of the continuous Psi(t) started at Psi0, over the samples
   int winding = 0;                  // turns of z around 0 per period (counter-clockwise); Psi advances -2 pi winding
   OrbitKind kind = OrbitKind::swinging;
   double transition_function = 0;   // +r_min when swinging, -r_min when tumbling: continuous, 0 at the transition
   Eigen::VectorXd mean;             // period average of x (periodic trapezoid rule on the uniform samples:
                                     // spectrally accurate for a smooth periodic orbit)
+};
+
+// The orbit's state at a time t and its first derivatives (PeriodicOrbitProblem::point_at).
+struct OrbitPoint {
+  bool ok = false;       // false: the integration failed (the other fields are then empty)
+  int segment = 0;       // j: t (mod 2 pi) lies in [t_j, t_{j+1}), the state is phi(t, t_j, x_j)
+  Eigen::VectorXd x;     // the state
+  Eigen::MatrixXd dx;    // d x / d x_j (the segment's variational matrix up to t)
+  Eigen::VectorXd dt;    // d x / d t = f(t, x, p)
+  Eigen::VectorXd dp;    // d x / d p (the parameter sensitivity from t_j)
 };
 
 // F(X, p) = 0 for X = (x_0, ..., x_{N-1}), x_j the state at t_j = 2 pi j / N:
@@ -134,8 +148,13 @@ class PeriodicOrbitProblem final : public ContinuationProblem {
   Floquet floquet(const Eigen::VectorXd& X, double p) const;
   // Integrates the orbit densely from the segments' states (winding via the integrated angle of z).
   OrbitSummary summary(const Eigen::VectorXd& X, double p) const;
-  // The swinging <-> tumbling transition as a UZ event: summary().transition_function.
-  UserEvent transition_event(const std::string& name = "swing_tumble") const;
+  // The swinging <-> tumbling transition as a UZ event: summary().transition_function. Located along a
+  // branch; its curve in two parameters uses the smooth form OrbitPassageEvent (event_curve.hpp).
+  UserEvent transition_event(const std::string& name = std::string(kTransitionEventName)) const;
+  // The state at time t (any real; taken mod 2 pi) integrated from its segment's start, with its
+  // derivatives by that start, by t and by p: smooth in (X, t, p) within a segment, and continuous
+  // across segment ends at a solution (where the segments join).
+  OrbitPoint point_at(const Eigen::VectorXd& X, double p, double t) const;
   // Counters of the integrations done so far (work measure for benchmarks).
   std::size_t integrations() const { return integrations_; }
   // The shooting Jacobian of the anti-periodic problem x_N = -x_0 (closing block +I, no norm term):
@@ -214,6 +233,8 @@ class OrbitTwoParameterProblem final : public TwoParameterProblem {
   std::string name2() const override { return system_.name2(); }
   void antiperiodic_jacobian(const Eigen::VectorXd& X, double p1, double p2, Eigen::MatrixXd& J) const;
   Eigen::VectorXcd multipliers(const Eigen::VectorXd& X, double p1, double p2) const;
+  OrbitSummary summary(const Eigen::VectorXd& X, double p1, double p2) const;
+  OrbitPoint point_at(const Eigen::VectorXd& X, double p1, double p2, double t) const;
   // Curves over this problem (LPC) report the orbits' Floquet multipliers.
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p1, double p2) const override { return multipliers(X, p1, p2); }
   StabilityKind stability_kind() const override { return StabilityKind::multipliers; }
