@@ -271,10 +271,20 @@ TEST(TransitionCurve, IsTheEventSystemWithOrbitMeasures) {
   ASSERT_GE(pts.size(), 10u);
   EXPECT_EQ(pts.front().p, 2.5);
   EXPECT_EQ(pts.back().p, 6.0);
+  // The reduced system depends on (lambda, Delta) only through Lambda (S does not involve them): the
+  // transition curve is the level set Lambda(lambda, Delta) = Lambda*, every point the same orbit.
+  const auto Lambda_at = [&](std::size_t k) {
+    return get_parameter(with_parameter(with_parameter(c.one.problem_scene, P::lambda, pts[k].p), P::Delta,
+                                        pts[k].parameters[0]),
+                         P::Lambda);
+  };
   for (std::size_t k = 0; k < pts.size(); ++k) {
     EXPECT_TRUE(pts[k].stable) << k;
     const double t = c.curve.number(k, "t_passage");
     EXPECT_TRUE(t > -kTwoPi && t < 2 * kTwoPi) << t;
+    EXPECT_NEAR(Lambda_at(k), Lambda_at(0), 1e-11) << k;  // measured 1e-15
+    EXPECT_NEAR(t, c.curve.number(0, "t_passage"), 1e-9) << k;
+    EXPECT_NEAR(c.curve.number(k, "r"), c.curve.number(0, "r"), 1e-9) << k;
     if (k > 0) {
       EXPECT_LT(pts[k].parameters[0], pts[k - 1].parameters[0]);  // Delta*(lambda) decreasing
     }

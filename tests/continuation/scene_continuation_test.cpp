@@ -329,7 +329,7 @@ TEST(SceneContinuation, KindAndCurveNamesRoundTrip) {
             std::string::npos) << m;
   for (CurveKind c : {CurveKind::LP, CurveKind::BP, CurveKind::HB, CurveKind::LPC, CurveKind::PD, CurveKind::NS})
     EXPECT_EQ(curve_kind_from_string(to_string(c)), c);
-  EXPECT_EQ(invalid_parameter([] { (void)curve_kind_from_string("UZ"); }), "curve");
+  EXPECT_EQ(invalid_parameter([] { (void)curve_kind_from_string("EP"); }), "curve");
   EXPECT_EQ(model_level(ProblemKind::modal_orbit), ModelLevel::modal);
   EXPECT_EQ(default_beta(ProblemKind::orbit), M_PI / 2);
   EXPECT_EQ(default_beta(ProblemKind::full), 0.0);
