@@ -411,6 +411,30 @@ TEST(TransitionCurve, InBetaMeetsTheBetaContinuationsTransitionAtDeltaOne) {
   EXPECT_NEAR(at1->p, 0.647737957609, 1e-9);
 }
 
+// The boundary Lambda*(S) itself (both composites: Lambda moved through Delta, S through C): the curve
+// from the Lambda branch of Fig. 2's cell at Delta = 1 (UZ at Lambda* = 1.17408) in S over [1.9, 3],
+// against the UZ of a one-parameter branch in Lambda at S = 3 (the curve's end, exact): 1e-10.
+TEST(TransitionCurve, LambdaStarOfSMatchesTheUZOfABranchInLambdaAtFixedS) {
+  BranchSpec spec = test::spec_of(test::fig2_in_plane(1.0), ProblemKind::orbit, P::Lambda, 1, 2, Direction::backward);
+  spec.orbit.segments = 4;
+  const SceneCurve c = continue_curve(spec, test::curve_of(CurveKind::UZ, P::S, 1.9, 3));
+  ASSERT_TRUE(c.started) << c.message;
+  EXPECT_NEAR(c.start.p, 1.174082827, 1e-8);
+  const Branch& b = c.curve.branch;
+  ASSERT_EQ(b.status, ContinuationStatus::completed) << b.message;
+  EXPECT_EQ(b.parameter_names, (std::vector<std::string>{"Lambda", "S"}));
+  ASSERT_EQ(b.points.back().p, 3.0);
+  const double Lambda_c = b.points.back().parameters[0];
+  BranchSpec at3 = spec;
+  at3.scene = with_parameter(spec.scene, P::S, 3.0);
+  at3.engine.max_step = 0.05;
+  const SceneBranch one = continue_scene(at3);
+  const SpecialPoint* uz = find_special_point(one.branch.branch, SpecialPointType::UZ);
+  ASSERT_NE(uz, nullptr);
+  std::printf("S = 3: curve Lambda* = %.13f, one-parameter UZ %.13f\n", Lambda_c, uz->p);
+  EXPECT_NEAR(uz->p, Lambda_c, 1e-10);
+}
+
 TEST(TransitionCurve, NoUZOnTheBranchIsAReasonAndEquilibriaHaveNoEvents) {
   BranchSpec spec = test::orbit_spec();
   spec.engine.p_max = 0.35;  // swinging throughout
