@@ -8,35 +8,6 @@ include(${CMAKE_CURRENT_LIST_DIR}/cli_common.cmake)
 # Fig. 2's in-plane scene at Delta = 1 (tumbling at beta = pi/2), the reduced level.
 set(FIG2 --lambda 5 --Delta 1 --Delta0 0.01 --B 2 --C 0.04 --L 2)
 
-# A plain decimal in [0, 1e6) as an integer in units of 1e-12 (truncated; CMake has no floating-point
-# arithmetic, and its integers are 64-bit).
-function(e12 value out)
-  if(NOT value MATCHES "^([0-9]+)(\\.([0-9]+))?$")
-    fail("not a plain decimal: ${value}")
-  endif()
-  set(int "${CMAKE_MATCH_1}")
-  string(SUBSTRING "${CMAKE_MATCH_3}000000000000" 0 12 digits)
-  string(REGEX REPLACE "^0+" "" digits "${digits}")
-  if(digits STREQUAL "")
-    set(digits 0)
-  endif()
-  math(EXPR v "${int} * 1000000000000 + ${digits}")
-  set(${out} ${v} PARENT_SCOPE)
-endfunction()
-
-# |a - b| <= tol_e12 * 1e-12 for plain decimals.
-function(expect_close what a b tol_e12)
-  e12("${a}" ia)
-  e12("${b}" ib)
-  math(EXPR d "${ia} - ${ib}")
-  if(d LESS 0)
-    math(EXPR d "-${d}")
-  endif()
-  if(d GREATER ${tol_e12})
-    fail("${what}: ${a} vs ${b} differ by ${d}e-12 > ${tol_e12}e-12")
-  endif()
-endfunction()
-
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 if(CASE STREQUAL "beta_orbit_json")

@@ -24,16 +24,6 @@ macro(uz_delta)
   endif()
 endmacro()
 
-# |a - b| <= tol_pico * 1e-12 for two JSON numbers of the form 0.ddd.
-function(expect_close a b tol_pico what)
-  to_pico(${a} pa)
-  to_pico(${b} pb)
-  math(EXPR d "${pa} - ${pb}")
-  if(d LESS -${tol_pico} OR d GREATER ${tol_pico})
-    fail("${what}: ${a} vs ${b} differ by ${d}e-12 (allowed ${tol_pico}e-12)")
-  endif()
-endfunction()
-
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 if(CASE STREQUAL "curve_uz_orbit")
@@ -72,7 +62,7 @@ if(CASE STREQUAL "curve_uz_orbit")
   # The independent computation: the transition of the branch in Delta at lambda = 6 (its own start,
   # the UZ function +-r_min located by the secant). Both converged to 1e-12 and located to 1e-11: 1e-10.
   uz_delta(--kind orbit --min 0.25 --max 0.32 --Delta 0.25 --lambda 6 --C 0.04 --L 2)
-  expect_close(${Dlast} ${UZ_DELTA} 100 "curve at lambda = 6 vs the one-parameter UZ")
+  expect_close("curve at lambda = 6 vs the one-parameter UZ" "${Dlast}" "${UZ_DELTA}" 100)
 elseif(CASE STREQUAL "curve_uz_modal_orbit")
   # C = 0.1: the l = 3 mode decays, so the modal orbit is the ellipsoidal one, on which the reduced system
   # is exact: the modal-orbit transition curve (L = 3) is the reduced one.
@@ -104,7 +94,7 @@ elseif(CASE STREQUAL "curve_uz_modal_orbit")
     fail("modal-orbit curve (${system}) ends at lambda = ${lm}, reduced at ${lr}; expected event curves to lambda = 6")
   endif()
   # Two curves of two systems (4 and 24 shooting unknowns), each converged to 1e-12: 1e-10 (measured 1e-15).
-  expect_close(${Dm} ${Dr} 100 "modal-orbit vs reduced transition at lambda = 6")
+  expect_close("modal-orbit vs reduced transition at lambda = 6" "${Dm}" "${Dr}" 100)
 elseif(CASE STREQUAL "curve_uz_none")
   # Swinging throughout: no UZ to start from. A failed run (exit 1) with the reason, and no file.
   execute_process(COMMAND ${CLI} continue --kind orbit --parameter Delta --min 0.3 --max 0.35 --direction forward

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "continuation/fig2_fixture.hpp"
+#include "continuation/invalid_argument_fixture.hpp"
 #include "continuation/scene_spec_fixture.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/event_curve.hpp"
@@ -27,18 +28,8 @@ namespace rbcstab {
 namespace {
 
 using P = ContinuationParameter;
+using test::invalid_parameter;
 constexpr double kTwoPi = 2 * M_PI;
-
-std::string invalid_parameter(const std::function<void()>& f, std::string* message = nullptr) {
-  try {
-    f();
-  } catch (const InvalidArgument& e) {
-    if (message) *message = e.what();
-    return e.parameter();
-  }
-  ADD_FAILURE() << "expected InvalidArgument";
-  return "";
-}
 
 // ---- the generic mechanism on a closed form
 

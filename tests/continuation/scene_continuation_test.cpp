@@ -9,6 +9,7 @@
 
 #include "continuation/ellipsoidal_orbit_bp_fixture.hpp"
 #include "continuation/fig2_fixture.hpp"
+#include "continuation/invalid_argument_fixture.hpp"
 #include "continuation/full_fixtures.hpp"
 #include "continuation/modal_fixtures.hpp"
 #include "continuation/scene_spec_fixture.hpp"
@@ -27,6 +28,7 @@ namespace {
 
 using P = ContinuationParameter;
 using test::curve_of;
+using test::invalid_parameter;
 using test::modal_spec;
 using test::orbit_spec;
 using test::spec_of;
@@ -49,17 +51,6 @@ void expect_same_branch(const Branch& a, const Branch& b) {
   }
   EXPECT_EQ(a.status, b.status);
   EXPECT_EQ(a.message, b.message);
-}
-
-std::string invalid_parameter(const std::function<void()>& f, std::string* message = nullptr) {
-  try {
-    f();
-  } catch (const InvalidArgument& e) {
-    if (message) *message = e.what();
-    return e.parameter();
-  }
-  ADD_FAILURE() << "expected InvalidArgument";
-  return "";
 }
 
 TEST(SceneContinuation, EquilibriumIsTheDirectBranchWithPolarMeasures) {
