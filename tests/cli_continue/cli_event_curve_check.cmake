@@ -95,6 +95,34 @@ elseif(CASE STREQUAL "curve_uz_modal_orbit")
   endif()
   # Two curves of two systems (4 and 24 shooting unknowns), each converged to 1e-12: 1e-10 (measured 1e-15).
   expect_close("modal-orbit vs reduced transition at lambda = 6" "${Dm}" "${Dr}" 100)
+elseif(CASE STREQUAL "curve_uz_point")
+  # --point K: the branch in beta at Delta = 1 has two UZs, at beta* and pi - beta* (the reduced system is
+  # the same at beta and pi - beta); their curves in (beta, Delta) are mirror images: beta_1 + beta_2 = pi
+  # at the start and at Delta = 0.5, the curves' first points (each converged to 1e-12: 1e-9).
+  foreach(K 1 2)
+    execute_process(COMMAND ${CLI} continue --kind orbit --parameter beta --lambda 5 --Delta 1 --C 0.04 --L 2 ${SCENE}
+                    --curve UZ --parameter2 Delta --min2 0.5 --max2 1.5 --point ${K} --json
+                    RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+    if(NOT rc EQUAL 0)
+      fail("--point ${K}: exit ${rc}: ${err}")
+    endif()
+    string(JSON start${K} GET "${out}" curve start beta)
+    string(JSON D${K} GET "${out}" branch 0 Delta)
+    string(JSON first${K} GET "${out}" branch 0 beta)
+  endforeach()
+  if(NOT D1 EQUAL 0.5 OR NOT D2 EQUAL 0.5)
+    fail("first points at Delta = ${D1}, ${D2}; expected 0.5")
+  endif()
+  foreach(pair "start1;start2" "first1;first2")
+    list(GET pair 0 a)
+    list(GET pair 1 b)
+    e12("${${a}}" ia)
+    e12("${${b}}" ib)
+    math(EXPR d "${ia} + ${ib} - 3141592653590")  # pi in units of 1e-12
+    if(d LESS -1000 OR d GREATER 1000)
+      fail("${a} + ${b} = ${${a}} + ${${b}} differs from pi by ${d}e-12")
+    endif()
+  endforeach()
 elseif(CASE STREQUAL "curve_uz_none")
   # Swinging throughout: no UZ to start from. A failed run (exit 1) with the reason, and no file.
   execute_process(COMMAND ${CLI} continue --kind orbit --parameter Delta --min 0.3 --max 0.35 --direction forward

@@ -67,7 +67,8 @@ using MeasureValue = std::variant<double, int, std::string>;
 std::vector<std::string> measure_names(ProblemKind kind, int L);
 // The measures of a point of a curve continued by `system` from a branch of `kind`: an equilibrium's
 // measures (plus omega on a Hopf curve); for orbits r, Psi at t = 0 (plus sigma_bar, mode on the
-// ellipsoidal-orbit BP curve; t_passage, the time of the passage through z = 0, on the event curve).
+// ellipsoidal-orbit BP curve; t_passage on the event curve: the time of the passage through z = 0,
+// continuous along the curve, not reduced mod 2 pi).
 std::vector<std::string> curve_measure_names(ProblemKind kind, CurveSystem system, int L);
 // Whether a measure is a CSV column: not trivial_multiplier, a check of the shooting (1 up to rounding)
 // rather than a property of the orbit, which JSON carries.
