@@ -9,8 +9,8 @@
 
 #include "continuation/ellipsoidal_orbit_bp_fixture.hpp"
 #include "continuation/fig2_fixture.hpp"
-#include "continuation/invalid_argument_fixture.hpp"
 #include "continuation/full_fixtures.hpp"
+#include "continuation/invalid_argument_fixture.hpp"
 #include "continuation/modal_fixtures.hpp"
 #include "continuation/scene_spec_fixture.hpp"
 #include "rbcstab/continuation/branch_point_curve.hpp"
