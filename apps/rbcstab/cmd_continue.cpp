@@ -176,7 +176,7 @@ int run(const ContinueOptions& o) {
     curve->p2_max = o.p2_max;
     curve->point = o.point;
   } else if (!o.parameter2.empty()) {
-    throw InvalidArgument("parameter2", "--parameter2 needs --curve LP|BP|HB|LPC|PD|NS");
+    throw InvalidArgument("parameter2", "--parameter2 needs --curve LP|BP|HB|LPC|PD|NS|UZ");
   }
   if (!o.restart.empty()) return run_restart(o, curve);
   if (o.o_label->count() > 0 || o.o_switch_at->count() > 0)
@@ -247,8 +247,9 @@ static Runner add_continue(CLI::App& app) {
                  "continue the curve of a special point of the one-parameter branch in (--parameter, --parameter2): "
                  "LP, BP, HB (equilibrium, modal, full; modal BP: the symmetry-breaking curve Upsilon_l(sigma) = 0) or LPC, "
                  "PD, NS, BP (orbit, modal-orbit; BP: the generic BP system over the shooting problem, e.g. the "
-                 "modal orbit's symmetry-breaking BPs); default: none (one-parameter run)")
-      ->check(CLI::IsMember({"LP", "BP", "HB", "LPC", "PD", "NS"}));
+                 "modal orbit's symmetry-breaking BPs) or UZ (orbit, modal-orbit: the swinging <-> tumbling "
+                 "transition, the orbit passing through r = 0, as a curve); default: none (one-parameter run)")
+      ->check(CLI::IsMember({"LP", "BP", "HB", "LPC", "PD", "NS", "UZ"}));
   app.add_option("--parameter2", o->parameter2,
                  "--curve: second free parameter (lambda, Delta, Delta0, B, C, Lambda, S or beta; independent of "
                  "--parameter: not Lambda with Delta or lambda, not S with C or Delta0)");

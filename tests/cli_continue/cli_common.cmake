@@ -38,16 +38,43 @@ function(expect_bad_input fragment)
   endif()
 endfunction()
 
+# A plain decimal in [0, 1e6) as an integer in units of 1e-12 (truncated; CMake has no floating-point
+# arithmetic, and its integers are 64-bit).
+function(e12 value out)
+  if(NOT value MATCHES "^([0-9]+)(\\.([0-9]+))?$")
+    fail("not a plain decimal: ${value}")
+  endif()
+  set(int "${CMAKE_MATCH_1}")
+  string(SUBSTRING "${CMAKE_MATCH_3}000000000000" 0 12 digits)
+  string(REGEX REPLACE "^0+" "" digits "${digits}")
+  if(digits STREQUAL "")
+    set(digits 0)
+  endif()
+  math(EXPR v "${int} * 1000000000000 + ${digits}")
+  set(${out} ${v} PARENT_SCOPE)
+endfunction()
+
 # A JSON number in [0, 1) written as 0.ddd... (no exponent) -> integer units of 1e-12 (truncated), so
 # that two runs' values can be subtracted with math(EXPR) (CMake has no floating-point arithmetic).
 function(to_pico value out)
-  if(NOT value MATCHES "^0\\.([0-9]+)$")
+  if(NOT value MATCHES "^0\\.[0-9]+$")
     fail("to_pico: ${value} is not of the form 0.ddd")
   endif()
-  set(digits "${CMAKE_MATCH_1}000000000000")
-  string(SUBSTRING "${digits}" 0 12 digits)
-  string(REGEX REPLACE "^0+([0-9])" "\\1" digits "${digits}")
-  set(${out} ${digits} PARENT_SCOPE)
+  e12("${value}" v)
+  set(${out} ${v} PARENT_SCOPE)
+endfunction()
+
+# |a - b| <= tol_e12 * 1e-12 for plain decimals.
+function(expect_close what a b tol_e12)
+  e12("${a}" ia)
+  e12("${b}" ib)
+  math(EXPR d "${ia} - ${ib}")
+  if(d LESS 0)
+    math(EXPR d "-${d}")
+  endif()
+  if(d GREATER ${tol_e12})
+    fail("${what}: ${a} vs ${b} differ by ${d}e-12 > ${tol_e12}e-12")
+  endif()
 endfunction()
 
 # A plain decimal in (-1e6, 1e6) as an integer in units of 1e-12 (truncated; CMake has no floating-point

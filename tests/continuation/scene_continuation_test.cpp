@@ -10,6 +10,7 @@
 #include "continuation/ellipsoidal_orbit_bp_fixture.hpp"
 #include "continuation/fig2_fixture.hpp"
 #include "continuation/full_fixtures.hpp"
+#include "continuation/invalid_argument_fixture.hpp"
 #include "continuation/modal_fixtures.hpp"
 #include "continuation/scene_spec_fixture.hpp"
 #include "rbcstab/continuation/branch_point_curve.hpp"
@@ -27,6 +28,7 @@ namespace {
 
 using P = ContinuationParameter;
 using test::curve_of;
+using test::invalid_parameter;
 using test::modal_spec;
 using test::orbit_spec;
 using test::spec_of;
@@ -322,7 +324,7 @@ TEST(SceneContinuation, KindAndCurveNamesRoundTrip) {
             std::string::npos) << m;
   for (CurveKind c : {CurveKind::LP, CurveKind::BP, CurveKind::HB, CurveKind::LPC, CurveKind::PD, CurveKind::NS})
     EXPECT_EQ(curve_kind_from_string(to_string(c)), c);
-  EXPECT_EQ(invalid_parameter([] { (void)curve_kind_from_string("UZ"); }), "curve");
+  EXPECT_EQ(invalid_parameter([] { (void)curve_kind_from_string("EP"); }), "curve");
   EXPECT_EQ(model_level(ProblemKind::modal_orbit), ModelLevel::modal);
   EXPECT_EQ(default_beta(ProblemKind::orbit), M_PI / 2);
   EXPECT_EQ(default_beta(ProblemKind::full), 0.0);

@@ -9,6 +9,7 @@
 
 #include "continuation/fig2_fixture.hpp"
 #include "continuation/modal_fixtures.hpp"
+#include "continuation/invalid_argument_fixture.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
 #include "rbcstab/core/error.hpp"
 
@@ -50,16 +51,5 @@ inline BranchSpec orbit_spec() {
   return s;
 }
 
-// The parameter an InvalidArgument from f names (its message in *message); a failure if f throws none.
-inline std::string invalid_parameter(const std::function<void()>& f, std::string* message = nullptr) {
-  try {
-    f();
-  } catch (const InvalidArgument& e) {
-    if (message) *message = e.what();
-    return e.parameter();
-  }
-  ADD_FAILURE() << "expected InvalidArgument";
-  return "";
-}
 
 }  // namespace rbcstab::test

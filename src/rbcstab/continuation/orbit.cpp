@@ -514,7 +514,7 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p) c
   std::size_t kmin = 0;
   for (std::size_t k = 0; k < xs.size(); ++k) {
     const double r = r_of(xs[k]);
-    if (r < o.r_min) o.r_min = r, kmin = k;
+    if (r < o.r_min) o.r_min = r, kmin = k, o.t_r_min = static_cast<double>(k) * h;
     o.r_max = std::max(o.r_max, r);
     const double Psi = o.Psi0 - (theta[k] - theta0);
     o.Psi_min = std::min(o.Psi_min, Psi);
@@ -557,7 +557,7 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p) c
       double t = a - ga * (b - a) / (gb - ga);
       if (!(t > a && t < b) || it % 4 == 3) t = 0.5 * (a + b);
       if (!state_at(t, x)) break;
-      o.r_min = std::min(o.r_min, r_of(x));
+      if (r_of(x) < o.r_min) o.r_min = r_of(x), o.t_r_min = std::fmod(t + kTwoPi, kTwoPi);
       const double g = g_at(t, x);
       if (g == 0) break;
       if (g < 0) {
@@ -572,6 +572,35 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p) c
     }
   }
   o.transition_function = o.winding == 0 ? o.r_min : -o.r_min;
+  return o;
+}
+
+OrbitPoint PeriodicOrbitProblem::point_at(const Eigen::VectorXd& X, double p, double t) const {
+  const auto n = static_cast<std::size_t>(n_);
+  double tw = std::fmod(t, kTwoPi);
+  if (tw < 0) tw += kTwoPi;
+  OrbitPoint o;
+  o.segment = std::min(N_ - 1, static_cast<int>(std::floor(tw * N_ / kTwoPi)));
+  const double tj = kTwoPi * o.segment / N_;
+  std::vector<double> y(n + n * n + n, 0.0);  // (x, Phi = I, s = 0) at t_j
+  for (std::size_t i = 0; i < n; ++i) {
+    y[i] = X[static_cast<Eigen::Index>(static_cast<std::size_t>(o.segment) * n + i)];
+    y[n + i * n + i] = 1;
+  }
+  if (tw > tj) {
+    const double grid[1] = {tw};
+    const IntegrationResult r =
+        integrate(Augmented(sys_, p, Augmented::Mode::variational), y, tj, grid, integrator_options(o_), {});
+    ++integrations_;
+    if (r.status != IntegrationStatus::success) return o;
+    y = r.y;
+  }
+  o.x = Eigen::Map<const Eigen::VectorXd>(y.data(), n_);
+  o.dx = Eigen::Map<const Eigen::MatrixXd>(y.data() + n, n_, n_);
+  o.dp = Eigen::Map<const Eigen::VectorXd>(y.data() + n + n * n, n_);
+  o.dt.resize(n_);
+  sys_.rhs(tw, std::span<const double>(o.x.data(), n), p, std::span<double>(o.dt.data(), n));
+  o.ok = true;
   return o;
 }
 
@@ -619,6 +648,16 @@ CertifiedSpectrum OrbitTwoParameterProblem::certified_spectrum(const Eigen::Vect
                                                                bool refine) const {
   at(p2);
   return orbit_.certified_spectrum(X, p1, refine);
+}
+
+OrbitSummary OrbitTwoParameterProblem::summary(const Eigen::VectorXd& X, double p1, double p2) const {
+  at(p2);
+  return orbit_.summary(X, p1);
+}
+
+OrbitPoint OrbitTwoParameterProblem::point_at(const Eigen::VectorXd& X, double p1, double p2, double t) const {
+  at(p2);
+  return orbit_.point_at(X, p1, t);
 }
 
 PeriodDoublingCurveProblem::PeriodDoublingCurveProblem(const OrbitTwoParameterProblem& base, const SpecialPoint& pd,

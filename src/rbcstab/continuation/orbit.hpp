@@ -18,6 +18,7 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "rbcstab/continuation/continuation.hpp"
@@ -103,11 +104,14 @@ struct EnumTable<OrbitKind> {
   static constexpr EnumName<OrbitKind> entries[] = {
       {OrbitKind::swinging, "swinging"}, {OrbitKind::tumbling, "tumbling"}};
 };
+// The name of the swinging <-> tumbling UZ event on orbit branches (transition_event's default).
+inline constexpr std::string_view kTransitionEventName = "swing_tumble";
 
 // What an orbit looks like over one period (reduced system: r, Psi of z = r e^{-i Psi}).
 struct OrbitSummary {
   double r0 = 0, Psi0 = 0;          // at t = 0 (Psi0 in (-pi, pi])
   double r_min = 0, r_max = 0;      // r_min refined to the integration tolerance; r_max over the samples
+  double t_r_min = 0;               // the time of r_min in [0, 2 pi)
   double Psi_min = 0, Psi_max = 0;  // of the continuous Psi(t) started at Psi0, over the samples
   int winding = 0;                  // turns of z around 0 per period (counter-clockwise); Psi advances -2 pi winding
   OrbitKind kind = OrbitKind::swinging;
@@ -123,6 +127,16 @@ struct OrbitRelaxation {
   double defect = std::numeric_limits<double>::quiet_NaN();  // |x(2 pi k) - x(2 pi (k - 1))|_2 of the last period
   bool converged = false;  // defect < tol before max_periods
   std::string failure;     // non-empty: the integration failed (x is the last state reached)
+};
+
+// The orbit's state at a time t and its first derivatives (PeriodicOrbitProblem::point_at).
+struct OrbitPoint {
+  bool ok = false;       // false: the integration failed (the other fields are then empty)
+  int segment = 0;       // j: t (mod 2 pi) lies in [t_j, t_{j+1}), the state is phi(t, t_j, x_j)
+  Eigen::VectorXd x;     // the state
+  Eigen::MatrixXd dx;    // d x / d x_j (the segment's variational matrix up to t)
+  Eigen::VectorXd dt;    // d x / d t = f(t, x, p)
+  Eigen::VectorXd dp;    // d x / d p (the parameter sensitivity from t_j)
 };
 
 // F(X, p) = 0 for X = (x_0, ..., x_{N-1}), x_j the state at t_j = 2 pi j / N:
@@ -159,8 +173,13 @@ class PeriodicOrbitProblem final : public ContinuationProblem {
   Floquet floquet(const Eigen::VectorXd& X, double p) const;
   // Integrates the orbit densely from the segments' states (winding via the integrated angle of z).
   OrbitSummary summary(const Eigen::VectorXd& X, double p) const;
-  // The swinging <-> tumbling transition as a UZ event: summary().transition_function.
-  UserEvent transition_event(const std::string& name = "swing_tumble") const;
+  // The swinging <-> tumbling transition as a UZ event: summary().transition_function. Located along a
+  // branch; its curve in two parameters uses the smooth form OrbitPassageEvent (event_curve.hpp).
+  UserEvent transition_event(const std::string& name = std::string(kTransitionEventName)) const;
+  // The state at time t (any real; taken mod 2 pi) integrated from its segment's start, with its
+  // derivatives by that start, by t and by p: smooth in (X, t, p) within a segment, and continuous
+  // across segment ends at a solution (where the segments join).
+  OrbitPoint point_at(const Eigen::VectorXd& X, double p, double t) const;
   // Counters of the integrations done so far (work measure for benchmarks).
   std::size_t integrations() const { return integrations_; }
   // The shooting Jacobian of the anti-periodic problem x_N = -x_0 (closing block +I, no norm term):
@@ -239,6 +258,8 @@ class OrbitTwoParameterProblem final : public TwoParameterProblem {
   std::string name2() const override { return system_.name2(); }
   void antiperiodic_jacobian(const Eigen::VectorXd& X, double p1, double p2, Eigen::MatrixXd& J) const;
   Eigen::VectorXcd multipliers(const Eigen::VectorXd& X, double p1, double p2) const;
+  OrbitSummary summary(const Eigen::VectorXd& X, double p1, double p2) const;
+  OrbitPoint point_at(const Eigen::VectorXd& X, double p1, double p2, double t) const;
   // Curves over this problem (LPC) report the orbits' Floquet multipliers.
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p1, double p2) const override { return multipliers(X, p1, p2); }
   CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& X, double p1, double p2, bool refine) const override;

@@ -13,6 +13,7 @@
 
 #include "rbcstab/continuation/branch_point_curve.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"
+#include "rbcstab/continuation/event_curve.hpp"
 #include "rbcstab/continuation/fold_curve.hpp"
 #include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/continuation/hopf_curve.hpp"
@@ -33,14 +34,13 @@ constexpr std::array<std::pair<ProblemKind, const char*>, 5> kKinds{{{ProblemKin
                                                                      {ProblemKind::modal, "modal"},
                                                                      {ProblemKind::modal_orbit, "modal-orbit"},
                                                                      {ProblemKind::full, "full"}}};
-constexpr std::array<std::pair<Direction, const char*>, 3> kDirections{
-    {{Direction::forward, "forward"}, {Direction::backward, "backward"}, {Direction::both, "both"}}};
-constexpr std::array<std::pair<CurveKind, SpecialPointType>, 6> kCurves{{{CurveKind::LP, SpecialPointType::LP},
+constexpr std::array<std::pair<CurveKind, SpecialPointType>, 7> kCurves{{{CurveKind::LP, SpecialPointType::LP},
                                                                          {CurveKind::BP, SpecialPointType::BP},
                                                                          {CurveKind::HB, SpecialPointType::HB},
                                                                          {CurveKind::LPC, SpecialPointType::LPC},
                                                                          {CurveKind::PD, SpecialPointType::PD},
-                                                                         {CurveKind::NS, SpecialPointType::NS}}};
+                                                                         {CurveKind::NS, SpecialPointType::NS},
+                                                                         {CurveKind::UZ, SpecialPointType::UZ}}};
 
 using Values = std::vector<MeasureValue>;
 using Measure = std::function<Values(const Eigen::VectorXd& x, double p)>;
@@ -416,6 +416,18 @@ MeasuredBranch cycle_curve(const CurveRun& run, CurveSystem system, const Forced
       const NeimarkSackerCurveProblem curve(forced, options, run.sp, run.p2_0);
       return run.trace(curve, curve.start(), values);
     }
+    case CurveSystem::event: {
+      // The only event of orbit branches is the swinging <-> tumbling transition (Orbit::events).
+      if (run.sp.name != kTransitionEventName)
+        throw InvalidArgument("curve", "--curve UZ: the UZ point '" + run.sp.name + "' has no smooth event form");
+      const OrbitPassageEvent event(base, run.sp.name);
+      const EventCurveProblem curve(base, event, run.sp, run.p2_0);
+      return run.trace(curve, curve.start(), [](const Eigen::VectorXd& X, double, double) {
+        Values v = polar_values(X);
+        v.emplace_back(X[X.size() - 1]);  // t_passage, the event's auxiliary unknown
+        return v;
+      });
+    }
     default: {
       const PeriodDoublingCurveProblem curve(base, run.sp, run.p2_0);
       return run.trace(curve, curve.start(), values);
@@ -667,7 +679,7 @@ std::string to_string(CurveKind kind) { return to_string(special_point_type(kind
 CurveKind curve_kind_from_string(const std::string& name) {
   for (const auto& [k, type] : kCurves)
     if (name == to_string(type)) return k;
-  throw InvalidArgument("curve", "curve = '" + name + "' is not a curve: must be LP, BP, HB, LPC, PD or NS");
+  throw InvalidArgument("curve", "curve = '" + name + "' is not a curve: must be LP, BP, HB, LPC, PD, NS or UZ");
 }
 
 SpecialPointType special_point_type(CurveKind kind) {
@@ -685,6 +697,7 @@ std::string to_string(CurveSystem system) {
     case CurveSystem::branch_point: return "branch_point";
     case CurveSystem::modal_branch_point: return "modal_branch_point";
     case CurveSystem::ellipsoidal_orbit_branch_point: return "ellipsoidal_orbit_branch_point";
+    case CurveSystem::event: return "event";
   }
   return "?";
 }
@@ -706,6 +719,7 @@ std::vector<std::string> curve_measure_names(ProblemKind kind, CurveSystem syste
   if (is_orbit(kind)) {
     std::vector<std::string> names{"r", "Psi"};
     if (system == CurveSystem::ellipsoidal_orbit_branch_point) names.insert(names.end(), {"sigma_bar", "mode"});
+    if (system == CurveSystem::event) names.emplace_back("t_passage");
     return names;
   }
   std::vector<std::string> names = measure_names(kind, L);
@@ -745,17 +759,7 @@ int MeasuredBranch::last_label() const {
   return m;
 }
 
-std::string to_string(Direction direction) {
-  for (const auto& [d, name] : kDirections)
-    if (d == direction) return name;
-  return "?";
-}
-
-Direction direction_from_string(const std::string& name) {
-  for (const auto& [d, n] : kDirections)
-    if (name == n) return d;
-  throw InvalidArgument("direction", "direction = '" + name + "' is not a direction: must be forward, backward or both");
-}
+Direction direction_from_string(const std::string& name) { return from_string<Direction>(name, "direction"); }
 
 // ---- specs ----
 
@@ -793,10 +797,11 @@ void BranchSpec::validate() const {
 
 void CurveSpec::validate(const BranchSpec& branch) const {
   const bool orbit = is_orbit(branch.kind);
-  const bool cycle_curve = type == CurveKind::LPC || type == CurveKind::PD || type == CurveKind::NS;
+  // UZ: the events of a branch are those of its kind; only orbit branches carry one (swing_tumble).
+  const bool cycle_curve = type == CurveKind::LPC || type == CurveKind::PD || type == CurveKind::NS || type == CurveKind::UZ;
   if (orbit != cycle_curve && !(orbit && type == CurveKind::BP))
     throw InvalidArgument("curve", "curve = " + to_string(type) + " is not available for --kind " + to_string(branch.kind) +
-                                       ": must be " + (orbit ? "LPC, PD, NS or BP" : "LP, BP or HB"));
+                                       ": must be " + (orbit ? "LPC, PD, NS, BP or UZ" : "LP, BP or HB"));
   if (!parameter2) throw InvalidArgument("parameter2", "--curve needs --parameter2 (the second free parameter)");
   if (branch.switch_at_bp) throw InvalidArgument("switch_at_bp", "--switch-at-bp and --curve cannot be combined");
   require_independent(branch.parameter, *parameter2, "parameter2");
@@ -878,6 +883,7 @@ CurveSystem curve_system(ProblemKind kind, CurveKind type, const Scene& scene, C
     case CurveKind::HB: return CurveSystem::hopf;
     case CurveKind::PD: return CurveSystem::period_doubling;
     case CurveKind::NS: return CurveSystem::neimark_sacker;
+    case CurveKind::UZ: return CurveSystem::event;
     case CurveKind::BP: break;
   }
   if (kind == ProblemKind::modal) return CurveSystem::modal_branch_point;

@@ -40,12 +40,12 @@ TruncationUse truncation_use(ProblemKind kind);
 // system (rest shape out of plane, 0), periodic orbits a forced one (in plane, pi/2).
 double default_beta(ProblemKind kind);
 
-// "forward", "backward", "both"; direction_from_string throws InvalidArgument("direction", ...).
-std::string to_string(Direction direction);
+// direction_from_string throws InvalidArgument("direction", ...) naming the allowed directions.
 Direction direction_from_string(const std::string& name);
 
-// The curve of a special point in two parameters: LP, BP, HB of equilibria; LPC, PD, NS, BP of orbits.
-enum class CurveKind { LP, BP, HB, LPC, PD, NS };
+// The curve of a special point in two parameters: LP, BP, HB of equilibria; LPC, PD, NS, BP of orbits;
+// UZ: a user event's zero set (orbits: the swinging <-> tumbling transition, event_curve.hpp).
+enum class CurveKind { LP, BP, HB, LPC, PD, NS, UZ };
 std::string to_string(CurveKind kind);
 CurveKind curve_kind_from_string(const std::string& name);  // throws InvalidArgument("curve", ...)
 SpecialPointType special_point_type(CurveKind kind);
@@ -53,7 +53,7 @@ SpecialPointType special_point_type(CurveKind kind);
 // The system that continues a curve: the fold (LP, LPC), Hopf and period-doubling minimal augmentations,
 // the Neimark-Sacker system, the generic 2n + 2 branch-point system, and the two symmetry-reduced BP
 // systems: ModalBranchPointCurve (modal equilibria) and ModalOrbitBranchPointCurve (Z2-reduced, the
-// in-plane ellipsoidal modal orbit).
+// in-plane ellipsoidal modal orbit); event: F = 0 plus the event's smooth form (EventCurveProblem).
 enum class CurveSystem {
   fold,
   hopf,
@@ -61,7 +61,8 @@ enum class CurveSystem {
   neimark_sacker,
   branch_point,
   modal_branch_point,
-  ellipsoidal_orbit_branch_point
+  ellipsoidal_orbit_branch_point,
+  event
 };
 std::string to_string(CurveSystem system);
 
@@ -75,7 +76,8 @@ using MeasureValue = std::variant<double, int, std::string>;
 std::vector<std::string> measure_names(ProblemKind kind, int L);
 // The measures of a point of a curve continued by `system` from a branch of `kind`: an equilibrium's
 // measures (plus omega on a Hopf curve); for orbits r, Psi at t = 0 (plus sigma_bar, mode on the
-// ellipsoidal-orbit BP curve).
+// ellipsoidal-orbit BP curve; t_passage on the event curve: the time of the passage through z = 0,
+// continuous along the curve, not reduced mod 2 pi).
 std::vector<std::string> curve_measure_names(ProblemKind kind, CurveSystem system, int L);
 // Whether a measure is a CSV column: not trivial_multiplier, a check of the shooting (1 up to rounding)
 // rather than a property of the orbit, which JSON carries.
