@@ -22,7 +22,7 @@
 #include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
-#include "rbcstab/model/levels.hpp"
+#include "rbcstab/model/reduced_model.hpp"
 
 namespace rbcstab {
 namespace {
