@@ -531,13 +531,23 @@ def plot_bifurcation(spec_json, out, size_px=(900, 675)):
         ax.plot([p["x"]], [p["y"]], ls="none", color=c, mec=c, zorder=4, **marker.get(p["marker"], marker["special"]))
     ax.margins(x=0.04, y=0.06)
     x0, x1 = ax.get_xlim()
-    for p in shown:
-        if p["text"]:
-            # Texts beside their markers, turned inwards in the last eighth of the width so they stay inside.
-            right = (p["x"] - x0) > 0.875 * (x1 - x0)
-            ax.annotate(p["text"], (p["x"], p["y"]), xytext=(-7 if right else 7, 7), textcoords="offset points",
-                        ha="right" if right else "left", zorder=5, fontsize=11 if p["marker"] == "special" else 9,
-                        color=colour(p["series"]), bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
+    renderer = fig.canvas.get_renderer()
+    placed = []
+    # Special points' texts first; each goes to the first of a few spots around its marker that overlaps
+    # no text placed before it (turned inwards in the last eighth of the width, so it stays inside).
+    for p in sorted((p for p in shown if p["text"]), key=lambda p: p["marker"] != "special"):
+        inward = -1 if (p["x"] - x0) > 0.875 * (x1 - x0) else 1
+        spots = [(7 * inward, 7), (7 * inward, -16), (-7 * inward, 7), (-7 * inward, -16), (7 * inward, 20)]
+        for k, (dx, dy) in enumerate(spots):
+            ann = ax.annotate(p["text"], (p["x"], p["y"]), xytext=(dx, dy), textcoords="offset points",
+                              ha="left" if dx > 0 else "right", zorder=5,
+                              fontsize=11 if p["marker"] == "special" else 9, color=colour(p["series"]),
+                              bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
+            box = ann.get_window_extent(renderer)
+            if k == len(spots) - 1 or not any(box.overlaps(q) for q in placed):
+                placed.append(box)
+                break
+            ann.remove()
     ax.set_xlabel(s["x"]["label"])
     ax.set_ylabel(s["y"]["label"])
     if handles:
