@@ -110,6 +110,22 @@ TEST(PlotSpec, StabilitySegmentsSplitWhereStabilityChanges) {
   EXPECT_EQ(def.title, "$\\Delta = 1$, $\\Delta_0 = 0.01$, $\\mathcal{B} = 2$, $\\mathcal{C} = \\infty$, $\\beta = 0$");
 }
 
+// A switched branch is a series when switching succeeded ("switched", or points without the key) and a
+// note when it failed.
+TEST(PlotSpec, SwitchedBranchIsDrawnOrNoted) {
+  json j = hand_branch();
+  j["switched_branch"] = {{"branch", json::array({hand_branch()["branch"][0]})}, {"special_points", json::array()}};
+  const PlotSpec drawn = plot_spec({plot_input(j, "s.json")});
+  ASSERT_EQ(drawn.series.size(), 2u);
+  EXPECT_EQ(drawn.series[1].role, "switched");
+  EXPECT_TRUE(drawn.notes.empty());
+  j["switched_branch"] = {{"switched", false}, {"message", "no BP located"}, {"branch", json::array()}};
+  const PlotSpec noted = plot_spec({plot_input(j, "s.json")});
+  EXPECT_EQ(noted.series.size(), 1u);
+  ASSERT_EQ(noted.notes.size(), 1u);
+  EXPECT_EQ(noted.notes[0], "s.json: the switched branch is not drawn: no BP located");
+}
+
 TEST(PlotSpec, BadInputNamesTheAxisTheValueAndTheChoices) {
   const PlotInput in = plot_input(hand_branch(), "hand.json");
   PlotOptions o;

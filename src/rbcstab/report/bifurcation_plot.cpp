@@ -153,6 +153,12 @@ std::string type_of(const json& p) {
   return it != p.end() && it->is_string() ? it->get<std::string>() : "";
 }
 
+// A switched branch is drawn when switching succeeded ("switched"; without the key: when it has points).
+bool switched(const json& sw) {
+  const bool has_points = sw.contains("branch") && sw["branch"].is_array() && !sw["branch"].empty();
+  return sw.value("switched", has_points);
+}
+
 std::string join(const std::vector<std::string>& v) {
   std::string s;
   for (const auto& x : v) s += (s.empty() ? "" : ", ") + x;
@@ -472,9 +478,9 @@ PlotInput plot_input(json j, const std::string& source) {
   check_part(j, "");
   if (j.contains("switched_branch")) {
     const json& sw = j["switched_branch"];
-    if (!sw.is_object() || (sw.value("switched", false) && !(sw.contains("branch") && sw["branch"].is_array())))
+    if (!sw.is_object() || (switched(sw) && !(sw.contains("branch") && sw["branch"].is_array())))
       throw refuse("\"switched_branch\" has no \"branch\" array");
-    if (sw.value("switched", false)) check_part(sw, "switched branch: ");
+    if (switched(sw)) check_part(sw, "switched branch: ");
   }
   return {source, std::move(j)};
 }
@@ -538,7 +544,7 @@ PlotSpec plot_spec(const std::vector<PlotInput>& inputs, const PlotOptions& o) {
     sources.push_back({&in, &in.branch, "primary"});
     if (in.branch.contains("switched_branch")) {
       const json& sw = in.branch["switched_branch"];
-      if (sw.value("switched", false))
+      if (switched(sw))
         sources.push_back({&in, &sw, "switched"});
       else
         spec.notes.push_back(in.source + ": the switched branch is not drawn: " +

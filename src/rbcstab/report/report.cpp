@@ -355,6 +355,9 @@ void ReportOptions::validate() const {
   require(frames >= 2 && frames <= 2000, "frames", frames, "an integer in [2, 2000]");
   require(std::isfinite(frame_window) && frame_window >= 0, "frame_window", frame_window, "finite and >= 0 (0: auto)");
   if (python.empty()) throw InvalidArgument("python", "python: an interpreter path is required");
+  for (const auto& [name, axis] : {std::pair{"bifurcation_x", &bifurcation_x}, std::pair{"bifurcation_y", &bifurcation_y}})
+    if (!axis->empty() && bifurcation.empty())
+      throw InvalidArgument(name, std::string(name) + " = '" + *axis + "' needs a bifurcation file to draw");
 }
 
 std::string find_script_dir(const std::string& executable_path) {
