@@ -11,13 +11,7 @@ function(fail msg)
   message(FATAL_ERROR "cli.plot.${CASE}: ${msg}")
 endfunction()
 
-function(run_cli)
-  execute_process(COMMAND "${CLI}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
-                  WORKING_DIRECTORY "${WORK}" TIMEOUT 100)
-  set(rc "${rc}" PARENT_SCOPE)
-  set(out "${out}" PARENT_SCOPE)
-  set(err "${err}" PARENT_SCOPE)
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
 
 # `rbcstab continue <args> --json > WORK/<name>.json`
 function(continue_json name)
