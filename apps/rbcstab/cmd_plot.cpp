@@ -62,8 +62,8 @@ static Runner add_plot(CLI::App& app) {
                  "curve: its first parameter)");
   app.add_option("--y", o->plot.y,
                  "y axis: a parameter or measure of every file, e.g. r, Psi, sigma, Delta_3, r_min, r_max, period, "
-                 "max_abs_multiplier, max_Re_eig, norm_Delta, norm_x (default: r; orbits r_max; a two-parameter "
-                 "curve: its second parameter)");
+                 "max_abs_multiplier, max_Re_eig, norm_Delta, norm_x (default: Psi for reduced-system equilibria, "
+                 "r_max for orbits, r otherwise; a two-parameter curve: its second parameter)");
   app.add_option("--title", o->plot.title, "title above the diagram (default: the parameters held fixed)");
   app.add_flag("--all-labels", o->plot.all_labels,
                "also mark the labelled regular points (every N-th point of a branch file), not only special points");

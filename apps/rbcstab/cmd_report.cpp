@@ -168,7 +168,8 @@ static Runner add_report(CLI::App& app) {
   app.add_option("--bifurcation-x", r.bifurcation_x,
                  "--bifurcation: the x axis, a parameter or measure (default: the free parameter; curves: p1)");
   app.add_option("--bifurcation-y", r.bifurcation_y,
-                 "--bifurcation: the y axis, a parameter or measure (default: r, r_max for orbits; curves: p2)");
+                 "--bifurcation: the y axis, a parameter or measure (default: Psi for reduced-system equilibria, "
+                 "r_max for orbits, r otherwise; curves: p2)");
   app.add_option("--data-dir", r.script_dir,
                  "folder holding rbcstab_report.py (default: $RBCSTAB_DATA_DIR, <prefix>/share/rbcstab/python)");
   app.add_option("--threads", o->panel.threads,
