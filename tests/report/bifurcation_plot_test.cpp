@@ -110,6 +110,22 @@ TEST(PlotSpec, StabilitySegmentsSplitWhereStabilityChanges) {
   EXPECT_EQ(def.title, "$\\Delta = 1$, $\\Delta_0 = 0.01$, $\\mathcal{B} = 2$, $\\mathcal{C} = \\infty$, $\\beta = 0$");
 }
 
+// Coinciding special points share one text, each type and label once ("BP 1" is not part of "BP 12").
+TEST(PlotSpec, CoincidingPointsShareOneText) {
+  json j = hand_branch();
+  json sps = json::array();
+  for (auto [type, label] : {std::pair{"BP", 12}, std::pair{"LP", 2}, std::pair{"BP", 1}, std::pair{"LP", 2}})
+    sps.push_back({{"type", type}, {"lambda", 1.5}, {"r", 1.5}, {"Psi", 0.15}, {"label", label}});
+  j["special_points"] = sps;
+  PlotOptions o;
+  o.y = "r";
+  const PlotSpec spec = plot_spec({plot_input(j, "c.json")}, o);
+  ASSERT_EQ(spec.points.size(), 5u);  // four special points and the EP
+  EXPECT_EQ(spec.points[0].text, "BP 12, LP 2, BP 1");
+  for (std::size_t k = 1; k < 4; ++k) EXPECT_EQ(spec.points[k].text, "") << k;
+  EXPECT_EQ(spec.points[4].text, "EP 7");
+}
+
 // A switched branch is a series when switching succeeded ("switched", or points without the key) and a
 // note when it failed.
 TEST(PlotSpec, SwitchedBranchIsDrawnOrNoted) {

@@ -67,7 +67,7 @@ double derived(const json& p, const std::string& name) {
   auto max_over = [&](const char* key, auto&& f) {
     const auto it = p.find(key);
     if (it == p.end() || !it->is_array() || it->empty()) return kNaN;
-    double m = -std::numeric_limits<double>::infinity();
+    double m = -kInf;
     for (const json& z : *it) {
       if (!z.is_array() || z.size() != 2) return kNaN;
       const double v = f(num(z[0]), num(z[1]));
@@ -389,6 +389,16 @@ PlotSeries make_series(const SeriesSource& src, const Axes& axes, std::size_t in
   return s;
 }
 
+// Whether the text list "a, b, c" holds t as one of its items.
+bool lists(const std::string& list, const std::string& t) {
+  for (std::size_t from = 0; from <= list.size();) {
+    const std::size_t end = std::min(list.find(", ", from), list.size());
+    if (list.compare(from, end - from, t) == 0) return true;
+    from = end + 2;
+  }
+  return false;
+}
+
 // Points close together share one text at the first of them ("LP 2, BP 3").
 void merge_texts(PlotSpec& spec) {
   double xlo = kInf, xhi = -kInf, ylo = kInf, yhi = -kInf;
@@ -402,7 +412,7 @@ void merge_texts(PlotSpec& spec) {
     for (std::size_t k = 0; k < i && !p.text.empty(); ++k) {
       PlotPoint& q = spec.points[k];
       if (q.text.empty() || !(std::abs(p.x - q.x) <= dx && std::abs(p.y - q.y) <= dy)) continue;
-      if (q.text.find(p.text) == std::string::npos) q.text += ", " + p.text;
+      if (!lists(q.text, p.text)) q.text += ", " + p.text;
       p.text.clear();
     }
   }
@@ -415,33 +425,18 @@ std::string number_text(double v) {
   return ss.str();
 }
 
-// The parameters every input shares and none varies (Lambda moves Delta, S moves C: parameters.hpp).
+// The parameters every input holds fixed at the same value (fixed_parameters), except the axes.
 std::string default_title(const std::vector<PlotInput>& inputs, const Axes& axes) {
-  std::set<std::string> varied{axes.x, axes.y};
-  for (const PlotInput& in : inputs)
-    for (const std::string& p : free_parameters(in.branch)) {
-      varied.insert(p);
-      if (p == "Lambda") varied.insert("Delta");
-      if (p == "S") varied.insert("C");
-    }
+  std::vector<Fixed> fixed;
+  for (const PlotInput& in : inputs) fixed.push_back(fixed_parameters(in.branch));
   std::vector<std::string> parts;
   for (const char* name : {"lambda", "Delta", "Delta0", "B", "C", "beta"}) {
-    if (varied.count(name)) continue;
-    std::optional<double> shared;
-    bool same = true;
-    for (const PlotInput& in : inputs) {
-      const json& j = in.branch;
-      const json* v = nullptr;
-      if (std::string(name) == "beta") v = j.contains("beta") ? &j["beta"] : nullptr;
-      else if (j.contains("parameters") && j["parameters"].is_object() && j["parameters"].contains(name))
-        v = &j["parameters"][name];
-      // Infinite values (C = inf) are written as null.
-      const double x = v ? (v->is_null() ? kInf : num(*v)) : kNaN;
-      if (std::isnan(x) || (shared && *shared != x)) same = false;
-      shared = x;
+    if (name == axes.x || name == axes.y || !fixed[0].count(name)) continue;
+    const double v = fixed[0].at(name);
+    if (std::all_of(fixed.begin(), fixed.end(), [&](const Fixed& f) { return f.count(name) && f.at(name) == v; })) {
+      const std::string symbol = tex_symbol(name);  // "$...$"
+      parts.push_back(symbol.substr(0, symbol.size() - 1) + " = " + number_text(v) + "$");
     }
-    if (same && shared) parts.push_back(tex_symbol(name).substr(0, tex_symbol(name).size() - 1) + " = " +
-                                        number_text(*shared) + "$");
   }
   return join(parts);
 }
