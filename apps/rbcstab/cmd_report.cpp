@@ -1,13 +1,13 @@
 // rbcstab report: run a scene and write a self-contained report folder (figures, data, shapes).
 #include <atomic>
 #include <csignal>
-#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <memory>
 
 #include "checks.hpp"
 #include "commands.hpp"
+#include "executable_path.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"
@@ -97,12 +97,6 @@ int run_panel(ReportCliOptions& o, const SceneFile& sf, ReportOptions& ro) {
   return kOk;
 }
 
-std::string executable_path() {
-  std::error_code ec;
-  const auto p = std::filesystem::read_symlink("/proc/self/exe", ec);
-  return ec ? std::string() : p.string();
-}
-
 int run(ReportCliOptions& o) {
   SceneFile sf = o.scene.read();
   const PanelKind kind = panel_kind(sf);
@@ -165,7 +159,14 @@ static Runner add_report(CLI::App& app) {
                  "also draw this phase-diagram CSV (x, y, l_Delta; overlay curves from the .json beside it)");
   app.add_option("--delta2-comparison", r.delta2_comparison,
                  "also draw this CSV of Delta2_theory, Delta2_simulation[, alpha, lambda] (Fig. 6e)");
-  app.add_option("--bifurcation", r.bifurcation, "also draw this bifurcation-diagram JSON (branches, stability, points)");
+  app.add_option("--bifurcation", r.bifurcation,
+                 "also draw this branch JSON (`rbcstab continue --json` or a --save branch file) as a bifurcation "
+                 "diagram, as `rbcstab plot` does (docs/plot.md)");
+  app.add_option("--bifurcation-x", r.bifurcation_x,
+                 "--bifurcation: the x axis, a parameter or measure (default: the free parameter; curves: p1)");
+  app.add_option("--bifurcation-y", r.bifurcation_y,
+                 "--bifurcation: the y axis, a parameter or measure (default: Psi for reduced-system equilibria, "
+                 "r_max for orbits, r otherwise; curves: p2)");
   app.add_option("--data-dir", r.script_dir,
                  "folder holding rbcstab_report.py (default: $RBCSTAB_DATA_DIR, <prefix>/share/rbcstab/python)");
   app.add_option("--threads", o->panel.threads,

@@ -396,6 +396,7 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
     const Branch& b = r.branch.branch;
     const std::string name = to_string(c.parameter);
     ro.bifurcation = staging.put("bifurcation.json", bifurcation_json(r, c.measure).dump(1) + "\n");
+    ro.bifurcation_y = c.measure;  // drawn by plot_spec, as `rbcstab plot --y`
     res.status = to_string(b.status);
     res.failed = !ended_normally(b.status);
     std::string specials;

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <random>
 #include <sstream>
 
@@ -19,7 +20,9 @@
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/report/bifurcation_plot.hpp"
 #include "rbcstab/report/detail/report_pages.hpp"
+#include "rbcstab/report/detail/staging.hpp"
 
 #ifndef RBCSTAB_REPORT_SOURCE_PYTHON_DIR
 #define RBCSTAB_REPORT_SOURCE_PYTHON_DIR ""
@@ -37,14 +40,6 @@ constexpr const char* kScript = "rbcstab_report.py";
 bool has_script(const fs::path& dir) {
   std::error_code ec;
   return !dir.empty() && fs::is_regular_file(dir / kScript, ec);
-}
-
-std::string tail_of(const std::string& path, std::size_t n) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  const std::string s = ss.str();
-  return s.size() > n ? "..." + s.substr(s.size() - n) : s;
 }
 
 std::string csv_number(double v) {
@@ -115,6 +110,24 @@ int run_process(const std::vector<std::string>& args, const std::string& log_pat
 
 
 namespace detail {
+std::string log_tail(const std::string& path, std::size_t n) {
+  std::ifstream in(path);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  const std::string s = ss.str();
+  return s.size() > n ? "..." + s.substr(s.size() - n) : s;
+}
+
+// Built by append: GCC 12 warns falsely on chained literal + string.
+std::string hidden_sibling_name(const fs::path& target, const char* tag) {
+  std::random_device rd;
+  std::ostringstream suffix;
+  suffix << std::hex << rd() << rd();
+  std::string name(".");
+  name.append(target.filename().string()).append(tag).append(suffix.str());
+  return name;
+}
+
 double oscillation_period(const std::vector<double>& t, const std::vector<double>& x) {
   const std::size_t n = t.size();
   if (n < 5 || x.size() != n) return 0;
@@ -173,20 +186,6 @@ std::string animation_json(const Frames& f) {
   return j.dump();
 }
 
-std::string unique_suffix() {
-  std::random_device rd;
-  std::ostringstream ss;
-  ss << std::hex << rd() << rd();
-  return ss.str();
-}
-
-// ".<name><tag><random>" (built by append: GCC 12 warns falsely on chained literal + string).
-std::string hidden_sibling_name(const fs::path& target, const char* tag) {
-  std::string name(".");
-  name.append(target.filename().string()).append(tag).append(unique_suffix());
-  return name;
-}
-
 nlohmann::json figure(const std::string& kind, const std::string& png, int w, int h, std::vector<std::string> data,
                       const std::string& caption) {
   return {{"kind", kind}, {"png", png}, {"size_px", {w, h}}, {"data", data}, {"caption", caption}};
@@ -199,9 +198,24 @@ std::string import_hook(const std::string& src, const fs::path& dir, const std::
   return name;
 }
 
+// The bifurcation hook's diagram, decided before anything runs (bad input names the report's flags).
+std::optional<PlotSpec> bifurcation_plot(const ReportOptions& o) {
+  if (o.bifurcation.empty()) return std::nullopt;
+  PlotOptions po;
+  po.x = o.bifurcation_x;
+  po.y = o.bifurcation_y;
+  po.title = o.figure_title;
+  try {
+    return plot_spec({read_plot_input(o.bifurcation)}, po);
+  } catch (const InvalidArgument& e) {
+    if (e.parameter() != "x" && e.parameter() != "y") throw;
+    throw InvalidArgument("bifurcation_" + e.parameter(), std::string("bifurcation_") + e.what());
+  }
+}
+
 // The figures of the hooks (phase diagram, Fig. 6e, bifurcation), their data copied into `dir`.
-void add_hook_figures(const ReportOptions& o, const fs::path& dir, std::vector<std::string>& files,
-                      nlohmann::json& figs) {
+void add_hook_figures(const ReportOptions& o, const std::optional<PlotSpec>& bifurcation, const fs::path& dir,
+                      std::vector<std::string>& files, nlohmann::json& figs) {
   std::error_code ec;
   auto titled = [&](nlohmann::json f) {
     if (!o.figure_title.empty()) f["title"] = o.figure_title;
@@ -221,11 +235,14 @@ void add_hook_figures(const ReportOptions& o, const fs::path& dir, std::vector<s
       figs.push_back(titled(figure("delta2_comparison", "fig_delta2_theory.png", 750, 750, {d},
                             "Fig. 6e-type: post-instability Delta~_2 from theory against the simulated mean")));
     }
-    if (!o.bifurcation.empty()) {
+    if (bifurcation) {
       const std::string d = import_hook(o.bifurcation, dir, "bifurcation.json");
-      files.push_back(d);
-      figs.push_back(titled(figure("bifurcation", "fig_bifurcation.png", 900, 675, {d},
-                            "Bifurcation diagram: stable branches solid, unstable dashed, special points labelled")));
+      write_file_atomic((dir / "bifurcation_plot.json").string(), to_json(*bifurcation).dump(1) + "\n");
+      files.insert(files.end(), {d, "bifurcation_plot.json"});
+      figs.push_back(titled(figure("bifurcation", "fig_bifurcation.png", 900, 675, {"bifurcation_plot.json", d},
+                                   "Bifurcation diagram: " + bifurcation->y.name + " against " + bifurcation->x.name +
+                                       "; stable solid, unstable dashed, uncertain dotted; special points marked "
+                                       "with their type and label (bifurcation_plot.json: what was drawn)")));
     }
 
   for (const std::string& a : o.attachments) files.push_back(import_hook(a, dir, fs::path(a).filename().string()));
@@ -239,7 +256,7 @@ void draw_and_publish(const ReportOptions& o, const nlohmann::json& manifest, co
   const std::string log = (tmp / "plot.log").string();
   const int rc = run_process({o.python, (fs::path(o.script_dir) / kScript).string(), "report", tmp.string()}, log);
   if (rc != 0)
-    throw ReportError("the plotting script failed (exit " + std::to_string(rc) + "): " + tail_of(log, 1500));
+    throw ReportError("the plotting script failed (exit " + std::to_string(rc) + "): " + detail::log_tail(log, 1500));
   files.push_back("plot.log");
   const nlohmann::json drawn = nlohmann::json::parse(read_file((tmp / "figures.json").string()));
   for (const auto& f : drawn) files.push_back(f.at("file").get<std::string>());
@@ -250,7 +267,7 @@ void draw_and_publish(const ReportOptions& o, const nlohmann::json& manifest, co
     files.push_back(name);
   }
   if (fs::exists(target, ec)) {  // --overwrite: swap, then remove the old folder
-    const fs::path old = target.parent_path() / hidden_sibling_name(target, ".old-");
+    const fs::path old = target.parent_path() / detail::hidden_sibling_name(target, ".old-");
     fs::rename(target, old);
     fs::rename(tmp, target);
     fs::remove_all(old, ec);
@@ -264,7 +281,7 @@ void draw_and_publish(const ReportOptions& o, const nlohmann::json& manifest, co
 template <class Body>
 void in_staging_folder(const fs::path& target, Body&& body) {
   std::error_code ec;
-  const fs::path tmp = target.parent_path() / hidden_sibling_name(target, ".tmp-");
+  const fs::path tmp = target.parent_path() / detail::hidden_sibling_name(target, ".tmp-");
   fs::create_directory(tmp, ec);
   if (ec) throw ReportError("output: cannot create " + tmp.string() + ": " + ec.message());
   try {
@@ -279,8 +296,8 @@ void in_staging_folder(const fs::path& target, Body&& body) {
 }
 
 // A figure-panel report: the scene as given, the hooks' data and figures, the attachments.
-ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, const fs::path& target,
-                                std::chrono::steady_clock::time_point start) {
+ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, const std::optional<PlotSpec>& bifurcation,
+                                const fs::path& target, std::chrono::steady_clock::time_point start) {
   if (o.phase_diagram.empty() && o.delta2_comparison.empty() && o.bifurcation.empty())
     throw InvalidArgument("run_scene", "run_scene = false (a figure panel) needs a phase diagram, a Fig. 6e table "
                                        "or a bifurcation to draw");
@@ -289,7 +306,7 @@ ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, con
     write_file_atomic((tmp / "scene.toml").string(), o.scene_toml.empty() ? to_toml(sf) : o.scene_toml);
     res.files.push_back("scene.toml");
     nlohmann::json figs = nlohmann::json::array();
-    add_hook_figures(o, tmp, res.files, figs);
+    add_hook_figures(o, bifurcation, tmp, res.files, figs);
     nlohmann::json manifest;
     manifest["scene"] = to_json(sf.scene);
     put_truncation(manifest, sf);
@@ -339,6 +356,9 @@ void ReportOptions::validate() const {
   require(frames >= 2 && frames <= 2000, "frames", frames, "an integer in [2, 2000]");
   require(std::isfinite(frame_window) && frame_window >= 0, "frame_window", frame_window, "finite and >= 0 (0: auto)");
   if (python.empty()) throw InvalidArgument("python", "python: an interpreter path is required");
+  for (const auto& [name, axis] : {std::pair{"bifurcation_x", &bifurcation_x}, std::pair{"bifurcation_y", &bifurcation_y}})
+    if (!axis->empty() && bifurcation.empty())
+      throw InvalidArgument(name, std::string(name) + " = '" + *axis + "' needs a bifurcation file to draw");
 }
 
 std::string find_script_dir(const std::string& executable_path) {
@@ -390,7 +410,8 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
       throw InvalidArgument("file", "data file '" + *hook + "' not found");
   for (const std::string& a : o.attachments)
     if (!fs::is_regular_file(a, ec)) throw InvalidArgument("file", "data file '" + a + "' not found");
-  if (!o.run_scene) return build_panel_folder(sf, o, target, start);
+  const std::optional<PlotSpec> bifurcation = bifurcation_plot(o);
+  if (!o.run_scene) return build_panel_folder(sf, o, bifurcation, target, start);
 
   ReportResult res;
   res.run = simulate(sf.scene, sf.options);
@@ -478,7 +499,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     anim["gif"] = "animation.gif";
     anim["gif_size_px"] = {400, 400};
     figs.push_back(anim);
-    add_hook_figures(o, tmp, res.files, figs);
+    add_hook_figures(o, bifurcation, tmp, res.files, figs);
     nlohmann::json manifest;
     manifest["scene"] = to_json(sf.scene);
     put_truncation(manifest, sf);

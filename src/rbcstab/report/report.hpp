@@ -32,7 +32,8 @@ struct ReportOptions {
   // Hooks for data other modules produce; drawn when given (formats in docs/report.md).
   std::string phase_diagram;           // CSV with columns x, y, l_Delta (+ optional overlay JSON beside it)
   std::string delta2_comparison;       // CSV with columns Delta2_theory, Delta2_simulation[, alpha]
-  std::string bifurcation;             // JSON: the Branch JSON (continuation/branch_io.hpp) or {"branches", "points"}
+  std::string bifurcation;             // a branch JSON (continuation/branch_io.hpp), drawn by plot_spec (bifurcation_plot.hpp)
+  std::string bifurcation_x, bifurcation_y;  // its axes ("": plot_spec's defaults)
   // Figure panels (phase diagram, Fig. 6e, bifurcation; report/panels.hpp): no run of the scene itself,
   // whose time-dependent figures would mean nothing there; only the hooks are drawn (at least one is needed).
   bool run_scene = true;

@@ -4,6 +4,8 @@
     rbcstab_report.py report DIR      draw every figure listed in DIR/report.json, write DIR/figures.json
     rbcstab_report.py selftest DIR    draw the hook figures (phase diagram, Delta2 theory, bifurcation)
                                       from small synthetic data into DIR
+    rbcstab_report.py plot SPEC.json OUT.png [WIDTH HEIGHT]
+                                      draw the bifurcation diagram a plot spec describes (`rbcstab plot`)
 
 Every plotting function takes the paths of its data files (CSV/JSON beside the figure) and the output
 PNG path and pixel size, so other tools can call them directly.  Styles are readable in greyscale:
@@ -488,76 +490,70 @@ def plot_delta2_comparison(csv_path, out, size_px=(750, 750), title=None):
     return save(fig, out, size_px)
 
 
-def from_continue_json(j):
-    """The Branch JSON (`rbcstab continue --json`, the report's [continuation] panel: "branch", "special_points",
-    "free_parameter", "kind", optional "switched_branch", and "measure", the y axis, default r) as the
-    {"parameter", "measure", "branches", "points"} layout plot_bifurcation draws; other input unchanged."""
-    if "branch" not in j:
-        return j
-    par, measure = j["free_parameter"], j.get("measure", "r")
-    num = lambda v: float("nan") if v is None else v  # noqa: E731  (null: not finite)
-    label = f"{j['curve']['type']} curve" if "curve" in j else \
-        "periodic orbits" if j.get("kind") in ("orbit", "modal-orbit") else "equilibria"
-    parts = [(label, j)]
-    if j.get("switched_branch", {}).get("switched"):
-        parts.append(("switched branch", j["switched_branch"]))
-    branches, points = [], []
-    for lab, b in parts:
-        pts = b["branch"]
-        branches.append({"label": lab, "x": [num(p.get(par)) for p in pts], "y": [num(p.get(measure)) for p in pts],
-                         "stable": [bool(p.get("stable", True)) for p in pts]})
-        points += [{"x": num(sp.get(par)), "y": num(sp.get(measure)), "label": sp.get("type", sp.get("name", ""))}
-                   for sp in b.get("special_points", [])]
-    return {"parameter": par, "measure": measure, "branches": branches, "points": points}
+# Okabe-Ito colours (distinct for colour-blind readers), black first; stability is the line style.
+SERIES_COLOURS = ["black", "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00", "#56B4E9"]
+LINE_STYLES = {"solid": "-", "dashed": (0, (6, 3)), "dotted": (0, (1, 2))}
+STABILITY_TEXT = {"stable": "stable", "unstable": "unstable", "uncertain": "uncertain (margin within its error)"}
 
 
-def plot_bifurcation(json_path, out, size_px=(900, 675), title=None):
-    """Branches against a parameter: stable parts solid, unstable dashed, special points labelled.
+def _nan(values):
+    return [float("nan") if v is None else v for v in values]
 
-    JSON: {"parameter": "ln_C", "measure": "r", "branches": [{"label", "x": [...], "y": [...],
-    "stable": [bool per point]}], "points": [{"x", "y", "label"}]}, or the Branch JSON (from_continue_json)."""
-    b = from_continue_json(read_json(json_path))
+
+def plot_bifurcation(spec_json, out, size_px=(900, 675)):
+    """Renders the diagram a PlotSpec describes (`rbcstab plot`'s JSON, format "rbcstab-plot", decided by
+    report/bifurcation_plot.cpp): each series in its colour, its segments in their line styles (stable solid,
+    unstable dashed, uncertain dotted), the points' markers and texts ("BP 3"), the axes' labels and the
+    title. Nothing is decided here."""
+    from matplotlib.lines import Line2D
+
+    s = read_json(spec_json)
+    if s.get("format") != "rbcstab-plot":
+        raise ValueError(f"{spec_json}: not a plot spec (format {s.get('format')!r}, expected 'rbcstab-plot')")
     fig, ax = new_figure(size_px)
-    cols = greys(max(2, len(b.get("branches", []))), 0.0, 0.7)
-    for n, br in enumerate(b.get("branches", [])):
-        x, y = br["x"], br["y"]
-        st = br.get("stable", [True] * len(x))
-        labelled = set()
-        k = 0
-        while k < len(x) - 1:
-            j = k
-            while j < len(x) - 1 and st[j + 1] == st[k]:
-                j += 1
-            seg_end = min(j + 1, len(x) - 1)  # join to the next point so the curve stays connected
-            kind = "stable" if st[k] else "unstable"
-            lab = f"{br.get('label', 'branch')} ({kind})" if kind not in labelled else None
-            labelled.add(kind)
-            ax.plot(x[k:seg_end + 1], y[k:seg_end + 1], color=cols[n], ls="-" if st[k] else "--",
-                    lw=2.0 if st[k] else 1.4, label=lab)
-            k = seg_end if seg_end > k else k + 1
-    # Special points at the same place (e.g. LP and BP where two branches meet) share one marker and label.
-    merged = []
-    for p in b.get("points", []):
-        if p["x"] is None or p["y"] is None:
-            continue
-        for q in merged:
-            if math.isclose(q["x"], p["x"], rel_tol=1e-6, abs_tol=1e-9) and \
-                    math.isclose(q["y"], p["y"], rel_tol=1e-6, abs_tol=1e-6):
-                if p.get("label") and p["label"] not in q["labels"]:
-                    q["labels"].append(p["label"])
+    handles = []
+    colour = lambda n: SERIES_COLOURS[n % len(SERIES_COLOURS)]  # noqa: E731
+    for n, sr in enumerate(s["series"]):
+        for seg in sr["segments"]:
+            solid = seg["style"] == "solid"
+            ax.plot(_nan(seg["x"]), _nan(seg["y"]), color=colour(n), ls=LINE_STYLES[seg["style"]],
+                    lw=2.0 if solid else 1.6, zorder=2)
+        handles.append(Line2D([], [], color=colour(n), lw=2.2, label=sr["name"]))
+    for st in s.get("styles", []):
+        handles.append(Line2D([], [], color="0.4", ls=LINE_STYLES[st["style"]], lw=1.6,
+                              label=STABILITY_TEXT.get(st["stability"], st["stability"])))
+    marker = {"special": dict(marker="o", ms=7, mfc="white", mew=1.6),
+              "end": dict(marker="s", ms=5, mew=1.2, mfc="white"),
+              "regular": dict(marker=".", ms=6)}
+    shown = [p for p in s["points"] if p["x"] is not None and p["y"] is not None]
+    for p in shown:
+        c = colour(p["series"])
+        ax.plot([p["x"]], [p["y"]], ls="none", color=c, mec=c, zorder=4, **marker.get(p["marker"], marker["special"]))
+    ax.margins(x=0.04, y=0.06)
+    x0, x1 = ax.get_xlim()
+    renderer = fig.canvas.get_renderer()
+    placed = []
+    # Special points' texts first; each goes to the first of a few spots around its marker that overlaps
+    # no text placed before it (turned inwards in the last eighth of the width, so it stays inside).
+    for p in sorted((p for p in shown if p["text"]), key=lambda p: p["marker"] != "special"):
+        inward = -1 if (p["x"] - x0) > 0.875 * (x1 - x0) else 1
+        spots = [(7 * inward, 7), (7 * inward, -16), (-7 * inward, 7), (-7 * inward, -16), (7 * inward, 20)]
+        for k, (dx, dy) in enumerate(spots):
+            ann = ax.annotate(p["text"], (p["x"], p["y"]), xytext=(dx, dy), textcoords="offset points",
+                              ha="left" if dx > 0 else "right", zorder=5,
+                              fontsize=11 if p["marker"] == "special" else 9, color=colour(p["series"]),
+                              bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
+            box = ann.get_window_extent(renderer)
+            if k == len(spots) - 1 or not any(box.overlaps(q) for q in placed):
+                placed.append(box)
                 break
-        else:
-            merged.append({"x": p["x"], "y": p["y"], "labels": [p.get("label", "")]})
-    for p in merged:
-        ax.plot(p["x"], p["y"], "o", color="black", ms=7, mfc="white", zorder=4)
-        ax.annotate(", ".join(l for l in p["labels"] if l), (p["x"], p["y"]), xytext=(6, 6),
-                    textcoords="offset points", fontsize=11, zorder=5,
-                    bbox=dict(boxstyle="round,pad=0.15", fc="white", ec="none", alpha=0.8))
-    ax.set_xlabel(symbol(b.get("parameter", "parameter")))
-    ax.set_ylabel(symbol(b.get("measure", "measure")))
-    ax.legend(loc="best")
-    if title:
-        ax.set_title(title, fontsize=11)
+            ann.remove()
+    ax.set_xlabel(s["x"]["label"])
+    ax.set_ylabel(s["y"]["label"])
+    if handles:
+        ax.legend(handles=handles, loc="best", framealpha=0.9, fontsize=10)
+    if s.get("title"):
+        ax.set_title(s["title"], fontsize=11)
     return save(fig, out, size_px)
 
 
@@ -600,7 +596,7 @@ def draw_report(folder):
         elif kind == "delta2_comparison":
             drawn.append(plot_delta2_comparison(path(data[0]), out, size, title=f.get("title")))
         elif kind == "bifurcation":
-            drawn.append(plot_bifurcation(path(data[0]), out, size, title=f.get("title")))
+            drawn.append(plot_bifurcation(path(data[0]), out, size))
         else:
             raise ValueError(f"unknown figure kind {kind!r}")
     with open(path("figures.json"), "w") as f:
@@ -633,34 +629,45 @@ def selftest(folder):
             t = s * (1 + 0.3 / math.log(a))
             f.write(f"{1 if k % 2 else 5},1,{1 / a},{a},{math.log(a)},3,3,{t},{s},{t / s}\n")
         f.write("5,1,1,1,0,3,2,n/a,n/a,n/a\n")
-    with open(p("bifurcation.json"), "w") as f:
-        xs = [0.1 * k for k in range(21)]
-        json.dump({"parameter": "ln_C", "measure": "r",
-                   "branches": [{"label": "ellipsoid", "x": xs, "y": [0.5 + 0.1 * x for x in xs],
-                                 "stable": [x < 1.0 for x in xs]},
-                                {"label": "mode 3", "x": xs[10:], "y": [0.6 + 0.3 * math.sqrt(x - 1.0) for x in xs[10:]],
-                                 "stable": [True] * 11}],
-                   "points": [{"x": 1.0, "y": 0.6, "label": "BP"}]}, f)
-    with open(p("continue.json"), "w") as f:  # the Branch JSON of `rbcstab continue --json`
-        xs = [0.1 * k for k in range(21)]
-        sw = [1.2 + 0.05 * k for k in range(11)]
-        json.dump({"kind": "modal", "free_parameter": "C",
-                   "branch": [{"C": x, "r": 0.5 + 0.2 * x, "Psi": 0.3, "stable": x < 1.2, "n_unstable": int(x >= 1.2)}
-                              for x in xs],
-                   "special_points": [{"type": "BP", "name": "BP", "C": 1.2, "r": 0.74, "Psi": 0.3}],
-                   "status": "completed",
-                   "switched_branch": {"switched": True, "status": "completed", "special_points": [],
-                                       "branch": [{"C": x, "r": 0.74 + 0.4 * math.sqrt(x - 1.2), "Psi": 0.3,
-                                                   "stable": True, "n_unstable": 0} for x in sw]}}, f)
-    out = [plot_bifurcation(p("continue.json"), p("fig_bifurcation_continue.png")),
+    xs = [0.1 * k for k in range(21)]
+    sw = [1.2 + 0.05 * k for k in range(11)]
+    seg = lambda st, style, x, y: {"stability": st, "style": style, "x": x, "y": y}  # noqa: E731
+    with open(p("bifurcation_plot.json"), "w") as f:  # a PlotSpec: a branch, its switched branch, a BP
+        y0 = [0.5 + 0.2 * x for x in xs]
+        y1 = [0.74 + 0.4 * math.sqrt(x - 1.2) for x in sw]
+        json.dump({"format": "rbcstab-plot", "version": 1, "title": r"$\lambda = 1$, $\mathcal{B} = 1$",
+                   "x": {"name": "C", "label": r"$\mathcal{C}$"}, "y": {"name": "r", "label": "$r$"},
+                   "series": [{"name": "equilibria (modal model)", "kind": "equilibrium",
+                               "segments": [seg("stable", "solid", xs[:13] + [1.2], y0[:13] + [0.74]),
+                                            seg("unstable", "dashed", [1.2] + xs[13:], [0.74] + y0[13:])]},
+                              {"name": "equilibria (modal model), switched branch", "kind": "equilibrium",
+                               "segments": [seg("stable", "solid", sw[:8], y1[:8]),
+                                            seg("uncertain", "dotted", sw[7:], y1[7:])]}],
+                   "points": [{"x": 1.2, "y": 0.74, "type": "BP", "label": 3, "series": 0, "marker": "special",
+                               "text": "BP 3"},
+                              {"x": 2.0, "y": 0.9, "type": "EP", "label": 4, "series": 0, "marker": "end",
+                               "text": "EP 4"}],
+                   "styles": [{"stability": "stable", "style": "solid"}, {"stability": "unstable", "style": "dashed"},
+                              {"stability": "uncertain", "style": "dotted"}]}, f)
+    with open(p("curve_plot.json"), "w") as f:  # a PlotSpec: a two-parameter curve in its plane
+        json.dump({"format": "rbcstab-plot", "version": 1, "title": "",
+                   "x": {"name": "C", "label": r"$\mathcal{C}$"}, "y": {"name": "B", "label": r"$\mathcal{B}$"},
+                   "series": [{"name": "BP curve (modal model)", "kind": "curve",
+                               "segments": [seg("curve", "solid", xs, [0.5 + x * x for x in xs])]}],
+                   "points": [], "styles": []}, f)
+    out = [plot_bifurcation(p("curve_plot.json"), p("fig_bifurcation_continue.png")),
            plot_phase_diagram(p("phase_diagram.csv"), p("fig_phase_diagram.png"), p("phase_diagram_overlay.json")),
            plot_delta2_comparison(p("delta2_comparison.csv"), p("fig_delta2_theory.png")),
-           plot_bifurcation(p("bifurcation.json"), p("fig_bifurcation.png"))]
+           plot_bifurcation(p("bifurcation_plot.json"), p("fig_bifurcation.png"))]
     with open(p("figures.json"), "w") as f:
         json.dump(out, f, indent=2)
 
 
 def main(argv):
+    if len(argv) in (4, 6) and argv[1] == "plot":  # plot SPEC.json OUT.png [WIDTH HEIGHT]
+        size = (int(argv[4]), int(argv[5])) if len(argv) == 6 else (900, 675)
+        plot_bifurcation(argv[2], argv[3], size)
+        return 0
     if len(argv) != 3 or argv[1] not in ("report", "selftest"):
         sys.stderr.write(__doc__)
         return 2

@@ -1,0 +1,9 @@
+# run_cli(<args>): runs the CLI in WORK; sets rc, out (stdout) and err (stderr) in the caller.
+# Shared by the CMake -P drivers of this folder.
+function(run_cli)
+  execute_process(COMMAND "${CLI}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
+                  WORKING_DIRECTORY "${WORK}" TIMEOUT 100)
+  set(rc "${rc}" PARENT_SCOPE)
+  set(out "${out}" PARENT_SCOPE)
+  set(err "${err}" PARENT_SCOPE)
+endfunction()
