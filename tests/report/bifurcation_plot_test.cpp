@@ -4,6 +4,8 @@
 // label/type keys, the derived measures against closed forms, bad input, and draw_plot's files.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -209,9 +211,12 @@ TEST(PlotSpec, OrbitBranchAgainstItsFreeParameter) {
     EXPECT_EQ(s.y[k], pts[k].at("r_max").get<double>());
   }
   // The swinging -> tumbling UZ point (the orbit through r = 0: docs/continuation.md) sits on the line.
-  ASSERT_EQ(spec.points.size(), 1u);
-  EXPECT_EQ(spec.points[0].type, "UZ");
-  EXPECT_EQ(spec.points[0].x, in.branch.at("special_points")[0].at("lambda").get<double>());
+  // Marked: the UZ point and the branch's two labelled ends (EP).
+  ASSERT_EQ(spec.points.size(), 3u);
+  const auto uz = std::find_if(spec.points.begin(), spec.points.end(), [](const auto& q) { return q.type == "UZ"; });
+  ASSERT_NE(uz, spec.points.end());
+  EXPECT_EQ(uz->x, in.branch.at("special_points")[0].at("lambda").get<double>());
+  EXPECT_EQ(std::count_if(spec.points.begin(), spec.points.end(), [](const auto& q) { return q.type == "EP"; }), 2);
   // Derived measures: the forcing period 2 pi; max |mu| < 1 exactly where the engine says stable.
   for (const char* m : {"period", "max_abs_multiplier", "r_min", "r_max", "Psi", "B"}) EXPECT_EQ(count(spec.measures, m), 1u) << m;
   PlotOptions o;
