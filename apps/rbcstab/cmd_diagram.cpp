@@ -20,6 +20,7 @@
 #include "rbcstab/sweep/diagram_file.hpp"
 #include "rbcstab/sweep/diagram_output.hpp"
 #include "rbcstab/sweep/mpi.hpp"
+#include "rbcstab/sweep/sweep_io.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -109,31 +110,13 @@ int run(const DiagramCliOptions& o) {
     std::cerr << "rbcstab: error: " << e.what() << "\n";
     return kOutputError;
   }
-  std::size_t failed = 0, unstable = 0;
-  for (const auto& p : r.points) {
-    failed += p.verdict == Verdict::failed;
-    unstable += p.verdict == Verdict::unstable;
-  }
-  if (o.json) {
-    nlohmann::json j{{"csv", prefix + ".csv"},
-                     {"json", prefix + ".json"},
-                     {"points", r.points.size()},
-                     {"computed", r.computed},
-                     {"resumed", r.resumed},
-                     {"stable", r.points.size() - unstable - failed},
-                     {"unstable", unstable},
-                     {"failed", failed},
-                     {"complete", r.complete},
-                     {"config_hash", r.config_hash},
-                     {"seconds", r.seconds}};
-    put_truncation(j, sf);
-    std::cout << j.dump(2) << "\n";
-  }
+  const VerdictCounts counts = count_verdicts(r.points);
+  if (o.json) std::cout << diagram_brief_json(sf, r, prefix).dump(2) << "\n";
   if (show)
     std::cerr << "rbcstab: diagram done: " << r.points.size() << " points (" << r.computed << " computed, " << r.resumed
-              << " resumed) in " << duration(r.seconds) << "; " << unstable << " unstable, " << failed
+              << " resumed) in " << duration(r.seconds) << "; " << counts.unstable << " unstable, " << counts.failed
               << " failed; wrote " << prefix << ".csv and " << prefix << ".json\n";
-  return failed ? kRunFailed : kOk;
+  return counts.failed ? kRunFailed : kOk;
 }
 }  // namespace
 

@@ -4,13 +4,12 @@
 // The scene's --T, --dt, --stepper, --rtol and --atol do not apply: the relaxation (rk8pd, rtol 1e-11)
 // and the variational integration use their own tight tolerances (docs/continuation.md).
 #include <cmath>
-#include <iomanip>
 #include <iostream>
 #include <memory>
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
-#include "rbcstab/continuation/monodromy.hpp"
+#include "rbcstab/continuation/floquet_io.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"
 #include "scene_options.hpp"
@@ -30,38 +29,12 @@ int run(const FloquetOptions& o) {
           o.floquet.arpack.tol, "[0, 1)");
   const SceneFile sf = o.scene.resolve(TruncationUse::analysis);
   const SceneFloquetResult r = scene_floquet_multipliers(sf.scene, o.floquet);
-  const Eigen::VectorXcd& mu = r.floquet.arpack.eigenvalues;
   if (o.json) {
-    nlohmann::json j;
-    j["status"] = to_string(r.status);
-    if (!r.message.empty()) j["message"] = r.message;
-    j["parameters"] = to_json(sf.scene.parameters);
-    j["beta"] = sf.scene.beta;
+    nlohmann::json j = floquet_json(sf.scene, o.floquet, r);
     put_truncation(j, sf);
-    j["n"] = r.dimension;
-    j["relax_level"] = to_string(r.relax_level);
-    j["relax_periods"] = o.floquet.relax_periods;
-    j["t0"] = r.t0;
-    j["period"] = r.period;
-    j["periodicity_defect"] = number_or_null(r.periodicity_defect);
-    j["stepper"] = to_string(r.stepper);
-    j["integrations"] = r.floquet.integrations;
-    j["steps"] = r.floquet.counters.steps;
-    nlohmann::json list = nlohmann::json::array();
-    for (Eigen::Index i = 0; i < mu.size(); ++i)
-      list.push_back({{"re", number_or_null(mu(i).real())},
-                      {"im", number_or_null(mu(i).imag())},
-                      {"abs", number_or_null(std::abs(mu(i)))}});
-    j["multipliers"] = list;
     std::cout << j.dump(2) << "\n";
   } else {
-    std::cout << std::setprecision(8) << "full model L = " << sf.scene.L << " (n = " << r.dimension << "), relaxed "
-              << o.floquet.relax_periods << " periods at the " << to_string(r.relax_level) << " level, period "
-              << r.period << ", periodicity defect " << r.periodicity_defect << ", " << to_string(r.stepper) << ", "
-              << r.floquet.integrations << " actions: " << to_string(r.status) << "\n";
-    for (Eigen::Index i = 0; i < mu.size(); ++i)
-      std::cout << "  mu = " << mu(i).real() << (mu(i).imag() < 0 ? " - " : " + ") << std::abs(mu(i).imag())
-                << "i  |mu| = " << std::abs(mu(i)) << "\n";
+    std::cout << floquet_text(sf.scene, o.floquet, r);
   }
   if (r.status != SceneFloquetStatus::converged) {
     std::cerr << "rbcstab: " << to_string(r.status) << ": " << r.message << "\n";

@@ -8,7 +8,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/scene_file.hpp"
-#include "rbcstab/sweep/diagram_output.hpp"
+#include "rbcstab/sweep/sweep_io.hpp"
 
 namespace rbcstab::cli {
 
@@ -47,15 +47,7 @@ int run(const MergeOptions& o) {
   }
   std::cerr << "rbcstab: merged " << docs.size() << " files, " << m.points.size() << " points into " << o.out
             << ".csv and " << o.out << ".json\n";
-  if (o.json)
-    std::cout << nlohmann::json{{"csv", o.out + ".csv"},
-                                {"json", o.out + ".json"},
-                                {"inputs", docs.size()},
-                                {"points", m.points.size()},
-                                {"missing", m.missing.size()},
-                                {"complete", m.missing.empty()}}
-                     .dump(2)
-              << "\n";
+  if (o.json) std::cout << merge_brief_json(m, docs.size(), o.out).dump(2) << "\n";
   return m.missing.empty() ? kOk : kRunFailed;
 }
 }  // namespace

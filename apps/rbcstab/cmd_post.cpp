@@ -1,18 +1,13 @@
 // rbcstab post: the post-instability state (paper Sec. V): Delta~2 from Eq. ss with the continuous l_* and with
 // the integer surviving mode, against the simulated long-time Delta-bar_2; optionally the Fig. 6e table.
-#include <cmath>
-#include <iomanip>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
-#include "analysis_json.hpp"
 #include "checks.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
-#include "rbcstab/analysis/post_instability.hpp"
-#include "rbcstab/sweep/fig6e.hpp"
-#include "rbcstab/core/error.hpp"
+#include "rbcstab/analysis/analysis_io.hpp"
+#include "rbcstab/sweep/sweep_io.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "scene_options.hpp"
 
@@ -26,23 +21,6 @@ struct PostOptions {
   std::vector<double> fig6e_lambda, fig6e_B, fig6e_C;
 };
 
-nlohmann::json to_json(const Delta2Prediction& d) {
-  nlohmann::json j;
-  j["variant"] = d.variant;
-  j["l"] = d.l;
-  j["sigma_s"] = d.sigma_s;
-  j["mu_tilde"] = d.mu_tilde;
-  put(j, "Delta2_tilde", d.Delta2_tilde);
-  put(j, "r_tilde", d.r_tilde);
-  put(j, "Psi_tilde", d.Psi_tilde);
-  j["K1"] = d.K1;
-  j["K2"] = d.K2;
-  j["c"] = d.c;
-  j["roots"] = {d.roots[0], d.roots[1]};
-  j["selection"] = d.selection;
-  return j;
-}
-
 int run_fig6e(const PostOptions& o) {
   // The scene gives Delta, Delta0, beta, delta, L, T and the integrator (and a [fig6e] table its grid), as a
   // Fig. 6e panel report; the flags choose the grid.
@@ -53,20 +31,7 @@ int run_fig6e(const PostOptions& o) {
   if (!o.fig6e_C.empty()) f.C = o.fig6e_C;
   const std::vector<Fig6eRow> rows = fig6e_table(f);
   if (o.json) {
-    nlohmann::json j;
-    put_truncation(j, sf);
-    j["rows"] = nlohmann::json::array();
-    for (const Fig6eRow& r : rows) {
-      nlohmann::json e{{"lambda", r.lambda}, {"B", r.B}, {"C", r.C}, {"alpha", r.alpha}, {"ln_alpha", r.ln_alpha},
-                       {"surviving_mode", r.surviving_mode}, {"l_Delta", r.l_Delta}};
-      put(e, "Delta2_tilde", r.Delta2_tilde);
-      put(e, "Delta2_tilde_integer_mode", r.Delta2_tilde_integer);
-      put(e, "Delta2_simulated", r.Delta2_bar);
-      put(e, "ratio", r.ratio);
-      put(e, "ratio_integer_mode", r.ratio_integer);
-      j["rows"].push_back(e);
-    }
-    std::cout << j.dump(2) << "\n";
+    std::cout << fig6e_json(sf, rows).dump(2) << "\n";
     return kOk;
   }
   std::cout << fig6e_csv(f, rows);  // the same CSV a Fig. 6e panel report draws (report/panels.hpp)
@@ -76,56 +41,15 @@ int run_fig6e(const PostOptions& o) {
 int run(const PostOptions& o) {
   if (o.fig6e) return run_fig6e(o);
   const SceneFile sf = o.scene.resolve(TruncationUse::simulation);
-  const Scene& s = sf.scene;
-  const Parameters& p = s.parameters;
   // Out-of-plane g (r0 = 0): the paper's case; for in-plane scenes docs/theory.md gives the measured error.
-  const PostInstability post = post_instability(p, s.L, 0.0);
+  const PostInstability post = post_instability(sf.scene.parameters, sf.scene.L, 0.0);
   SimulationOptions so = sf.options;
   so.record_trajectory = false;
-  const SimulationResult r = simulate(s, so);
-  Quantity simulated;
-  if (r.status != IntegrationStatus::success)
-    simulated = Quantity::outside("simulation stopped at t = " + std::to_string(r.t_reached) + ": " + r.reason);
-  else if (r.l_Delta == 2)
-    simulated = Quantity::outside("the simulation stayed stable (l_Delta = 2): no post-instability state");
+  const SimulationResult r = simulate(sf.scene, so);
+  if (o.json)
+    std::cout << post_json(sf, post, r).dump(2) << "\n";
   else
-    simulated = Quantity::of(r.Delta_tail_mean[0]);
-
-  if (o.json) {
-    nlohmann::json j;
-    j["parameters"] = rbcstab::to_json(p);
-    put_truncation(j, sf);
-    j["alpha"] = p.alpha();
-    j["surviving_mode"] = post.surviving_mode;
-    put(j, "Delta2_tilde", post.continuous.Delta2_tilde);
-    put(j, "Delta2_tilde_integer_mode", post.integer_mode.Delta2_tilde);
-    put(j, "r_tilde", post.continuous.r_tilde);
-    put(j, "Psi_tilde", post.continuous.Psi_tilde);
-    put(j, "r_tilde_integer_mode", post.integer_mode.r_tilde);
-    put(j, "Psi_tilde_integer_mode", post.integer_mode.Psi_tilde);
-    put(j, "Delta2_simulated", simulated);
-    j["continuous"] = to_json(post.continuous);
-    j["integer_mode"] = to_json(post.integer_mode);
-    j["l_Delta_simulated"] = r.l_Delta;
-    j["sigma_tail_mean_simulated"] = number_or_null(r.sigma_tail_mean);
-    j["T"] = s.T;
-    j["tail_window"] = so.tail_window;
-    std::cout << j.dump(2) << "\n";
-    return r.status == IntegrationStatus::success ? kOk : kRunFailed;
-  }
-  std::ostream& out = std::cout;
-  out << std::setprecision(6);
-  out << "Scene '" << s.name << "': lambda = " << p.lambda << ", Delta = " << p.Delta << ", Delta0 = " << p.Delta0
-      << ", B = " << p.B << ", C = " << p.C << ", alpha = " << p.alpha() << "\n";
-  out << "Truncation: " << sf.L_reason << "\n";
-  for (const Delta2Prediction* d : {&post.continuous, &post.integer_mode}) {
-    out << (d->variant == "continuous" ? "Continuous l_* = " : "Integer surviving mode l_s = ") << d->l
-        << ", sigma = " << d->sigma_s << ": Delta~2 = " << show(d->Delta2_tilde) << ", r~ = " << show(d->r_tilde)
-        << ", Psi~ = " << show(d->Psi_tilde) << "\n";
-  }
-  out << "Simulated Delta-bar_2 (tail mean over the last " << so.tail_window << " of T = " << s.T
-      << ") = " << show(simulated) << ", l_Delta = " << r.l_Delta << ", sigma tail mean = " << r.sigma_tail_mean
-      << "\n";
+    std::cout << post_text(sf, post, r);
   return r.status == IntegrationStatus::success ? kOk : kRunFailed;
 }
 }  // namespace

@@ -5,7 +5,6 @@
 // with the simulations.
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "checks.hpp"
 #include "commands.hpp"
@@ -13,12 +12,10 @@
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
-#include "rbcstab/io/json.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
-#include "rbcstab/sweep/diagram_output.hpp"
 #include "rbcstab/sweep/point_io.hpp"
-#include "rbcstab/sweep/trace.hpp"
+#include "rbcstab/sweep/sweep_io.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -43,50 +40,7 @@ int run(const TraceCliOptions& o) {
   to.criterion = trace_criterion_from_string(o.criterion);
   const TraceResult t = trace_boundary(sf.scene, spec, to);
 
-  std::ostringstream csv;
-  csv << "curve,l," << to_string(spec.x.axis) << ',' << to_string(spec.y.axis) << ",sigma_R,sigma_c,mu\n";
-  nlohmann::json curves = nlohmann::json::array();
-  for (std::size_t c = 0; c < t.curves.size(); ++c) {
-    const TraceCurve& tc = t.curves[c];
-    nlohmann::json xs = nlohmann::json::array(), ys = nlohmann::json::array(), mus = nlohmann::json::array();
-    for (const TracePoint& p : tc.points) {
-      csv << c << ',' << tc.l << ',' << exact(p.x) << ',' << exact(p.y) << ',' << exact(p.sigma_R) << ','
-          << exact(p.sigma_c) << ',' << exact(p.mu) << '\n';
-      xs.push_back(p.x);
-      ys.push_back(p.y);
-      mus.push_back(p.mu);
-    }
-    curves.push_back({{"curve", c}, {"chain", tc.chain}, {"l", tc.l}, {"criterion", tc.criterion}, {"x", xs}, {"y", ys},
-                      {"mu", mus}});
-  }
-  nlohmann::json corners = nlohmann::json::array();
-  for (const auto& k : t.corners) corners.push_back({{"x", k.x}, {"y", k.y}, {"l_from", k.l_from}, {"l_to", k.l_to}});
-  nlohmann::json overlays = nlohmann::json::array();
-  for (const Overlay& ov : analytic_overlays(sf.scene, spec, 200))
-    overlays.push_back({{"name", ov.name}, {"x", ov.x}, {"y", ov.y}});
-  nlohmann::json doc{{"format", "rbcstab-trace"},
-                     {"version", 1},
-                     {"scene", to_json(sf.scene)},
-                     {"plane", {{"x", to_string(spec.x.axis)}, {"x_range", {spec.x.min, spec.x.max}},
-                                {"y", to_string(spec.y.axis)}, {"y_range", {spec.y.min, spec.y.max}},
-                                {"alpha", spec.alpha}}},
-                     {"criterion", to_string(to.criterion)},
-                     {"options", {{"criterion", to_string(to.criterion)}, {"T", to.T > 0 ? to.T : sf.scene.T},
-                                  {"lines", to.lines}, {"samples", to.samples}, {"bisections", to.bisections},
-                                  {"max_step", to.max_step}}},
-                     {"curves", curves},
-                     {"corners", corners},
-                     {"analytic_lines", overlays},
-                     {"evaluations", t.evaluations},
-                     {"chains", t.chains},
-                     {"starts", t.starts},
-                     {"turning_points", t.turning_points},
-                     {"continuation", {{"steps", t.counters.steps}, {"rejected_steps", t.counters.rejected_steps},
-                                       {"newton_iterations", t.counters.newton_iterations},
-                                       {"location_iterations", t.counters.location_iterations}}},
-                     {"notes", t.notes},
-                     {"seconds", t.seconds}};
-  put_truncation(doc, sf);
+  nlohmann::json doc = trace_json(sf, spec, to, t);
   if (!o.diagram.empty()) {
     nlohmann::json dj;
     try {
@@ -106,7 +60,7 @@ int run(const TraceCliOptions& o) {
     doc["agreement"] = agreement_json(dsf.scene, ds, points_from_json(dj, ds), ao);
   }
   try {
-    write_file_atomic(o.out + ".csv", csv.str());
+    write_file_atomic(o.out + ".csv", trace_csv(spec, t));
     write_file_atomic(o.out + ".json", doc.dump(1) + "\n");
   } catch (const std::runtime_error& e) {
     std::cerr << "rbcstab: error: " << e.what() << "\n";
@@ -121,15 +75,7 @@ int run(const TraceCliOptions& o) {
       std::cerr << "rbcstab: agreement of " << a["predictor"].get<std::string>() << ": verdict " << a["verdict_fraction"]
                 << ", mode " << a["mode_fraction"] << " over " << a["points"] << " points, disagreements beyond one grid step "
                 << a["beyond_one_grid_step"] << "\n";
-  if (o.json) {
-    nlohmann::json j{{"csv", o.out + ".csv"},          {"json", o.out + ".json"},
-                     {"pieces", t.curves.size()},       {"corners", corners},
-                     {"evaluations", t.evaluations},    {"seconds", t.seconds},
-                     {"analytic_lines", overlays.size()}};
-    if (doc.contains("agreement")) j["agreement"] = doc["agreement"];
-    put_truncation(j, sf);
-    std::cout << j.dump(2) << "\n";
-  }
+  if (o.json) std::cout << trace_brief_json(doc, o.out).dump(2) << "\n";
   return kOk;
 }
 }  // namespace

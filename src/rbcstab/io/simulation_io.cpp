@@ -1,0 +1,44 @@
+#include "rbcstab/io/simulation_io.hpp"
+
+#include <iomanip>
+#include <sstream>
+
+#include "rbcstab/io/json.hpp"
+
+namespace rbcstab {
+
+nlohmann::json simulation_json(const SceneFile& file, const SimulationResult& r) {
+  nlohmann::json j = to_json(r);
+  j["parameters"] = to_json(file.scene.parameters);
+  j["stepper"] = to_string(file.options.integrator.stepper);
+  j["rtol"] = file.options.integrator.rtol;
+  j["atol"] = file.options.integrator.atol;
+  put_truncation(j, file);
+  return j;
+}
+
+std::string simulation_text(const SceneFile& file, const SimulationResult& r) {
+  std::ostringstream out;
+  out << std::setprecision(6) << "model " << to_string(r.level.level) << ", status " << to_string(r.status)
+      << ", l_Delta = " << r.l_Delta << ", sigma(T) = " << r.sigma_final << ", drift = " << r.excess_area_drift
+      << ", steps = " << r.counters.steps << "\n"
+      << file.L_reason << "\n";
+  return out.str();
+}
+
+std::string trajectory_csv(const SimulationResult& r) {
+  std::ostringstream ss;
+  ss << std::setprecision(17);
+  ss << "t";
+  for (int l = 2; l <= r.L; ++l) ss << ",Delta_" << l;
+  ss << ",sigma,r,Psi\n";
+  const Trajectory& tr = r.trajectory;
+  for (std::size_t k = 0; k < tr.t.size(); ++k) {
+    ss << tr.t[k];
+    for (double d : tr.Delta_l[k]) ss << ',' << d;
+    ss << ',' << tr.sigma[k] << ',' << tr.r[k] << ',' << tr.Psi[k] << '\n';
+  }
+  return ss.str();
+}
+
+}  // namespace rbcstab

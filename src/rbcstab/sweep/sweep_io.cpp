@@ -1,0 +1,132 @@
+#include "rbcstab/sweep/sweep_io.hpp"
+
+#include <sstream>
+
+#include "rbcstab/analysis/analysis_io.hpp"
+#include "rbcstab/io/json.hpp"
+#include "rbcstab/sweep/point_io.hpp"
+
+namespace rbcstab {
+
+nlohmann::json fig6e_json(const SceneFile& file, const std::vector<Fig6eRow>& rows) {
+  nlohmann::json j;
+  put_truncation(j, file);
+  j["rows"] = nlohmann::json::array();
+  for (const Fig6eRow& r : rows) {
+    nlohmann::json e{{"lambda", r.lambda}, {"B", r.B}, {"C", r.C}, {"alpha", r.alpha}, {"ln_alpha", r.ln_alpha},
+                     {"surviving_mode", r.surviving_mode}, {"l_Delta", r.l_Delta}};
+    put(e, "Delta2_tilde", r.Delta2_tilde);
+    put(e, "Delta2_tilde_integer_mode", r.Delta2_tilde_integer);
+    put(e, "Delta2_simulated", r.Delta2_bar);
+    put(e, "ratio", r.ratio);
+    put(e, "ratio_integer_mode", r.ratio_integer);
+    j["rows"].push_back(e);
+  }
+  return j;
+}
+
+std::string trace_csv(const DiagramSpec& plane, const TraceResult& t) {
+  std::ostringstream csv;
+  csv << "curve,l," << to_string(plane.x.axis) << ',' << to_string(plane.y.axis) << ",sigma_R,sigma_c,mu\n";
+  for (std::size_t c = 0; c < t.curves.size(); ++c)
+    for (const TracePoint& p : t.curves[c].points)
+      csv << c << ',' << t.curves[c].l << ',' << exact(p.x) << ',' << exact(p.y) << ',' << exact(p.sigma_R) << ','
+          << exact(p.sigma_c) << ',' << exact(p.mu) << '\n';
+  return csv.str();
+}
+
+nlohmann::json trace_json(const SceneFile& file, const DiagramSpec& plane, const TraceOptions& to, const TraceResult& t) {
+  nlohmann::json curves = nlohmann::json::array();
+  for (std::size_t c = 0; c < t.curves.size(); ++c) {
+    const TraceCurve& tc = t.curves[c];
+    nlohmann::json xs = nlohmann::json::array(), ys = nlohmann::json::array(), mus = nlohmann::json::array();
+    for (const TracePoint& p : tc.points) {
+      xs.push_back(p.x);
+      ys.push_back(p.y);
+      mus.push_back(p.mu);
+    }
+    curves.push_back({{"curve", c}, {"chain", tc.chain}, {"l", tc.l}, {"criterion", tc.criterion}, {"x", xs}, {"y", ys},
+                      {"mu", mus}});
+  }
+  nlohmann::json corners = nlohmann::json::array();
+  for (const auto& k : t.corners) corners.push_back({{"x", k.x}, {"y", k.y}, {"l_from", k.l_from}, {"l_to", k.l_to}});
+  nlohmann::json overlays = nlohmann::json::array();
+  for (const Overlay& ov : analytic_overlays(file.scene, plane, 200))
+    overlays.push_back({{"name", ov.name}, {"x", ov.x}, {"y", ov.y}});
+  nlohmann::json doc{{"format", "rbcstab-trace"},
+                     {"version", 1},
+                     {"scene", to_json(file.scene)},
+                     {"plane", {{"x", to_string(plane.x.axis)}, {"x_range", {plane.x.min, plane.x.max}},
+                                {"y", to_string(plane.y.axis)}, {"y_range", {plane.y.min, plane.y.max}},
+                                {"alpha", plane.alpha}}},
+                     {"criterion", to_string(to.criterion)},
+                     {"options", {{"criterion", to_string(to.criterion)}, {"T", to.T > 0 ? to.T : file.scene.T},
+                                  {"lines", to.lines}, {"samples", to.samples}, {"bisections", to.bisections},
+                                  {"max_step", to.max_step}}},
+                     {"curves", curves},
+                     {"corners", corners},
+                     {"analytic_lines", overlays},
+                     {"evaluations", t.evaluations},
+                     {"chains", t.chains},
+                     {"starts", t.starts},
+                     {"turning_points", t.turning_points},
+                     {"continuation", {{"steps", t.counters.steps}, {"rejected_steps", t.counters.rejected_steps},
+                                       {"newton_iterations", t.counters.newton_iterations},
+                                       {"location_iterations", t.counters.location_iterations}}},
+                     {"notes", t.notes},
+                     {"seconds", t.seconds}};
+  put_truncation(doc, file);
+  return doc;
+}
+
+nlohmann::json trace_brief_json(const nlohmann::json& doc, const std::string& prefix) {
+  nlohmann::json j{{"csv", prefix + ".csv"},
+                   {"json", prefix + ".json"},
+                   {"pieces", doc.at("curves").size()},
+                   {"corners", doc.at("corners")},
+                   {"evaluations", doc.at("evaluations")},
+                   {"seconds", doc.at("seconds")},
+                   {"analytic_lines", doc.at("analytic_lines").size()},
+                   {"L", doc.at("L")},
+                   {"L_reason", doc.at("L_reason")}};
+  if (doc.contains("agreement")) j["agreement"] = doc["agreement"];
+  return j;
+}
+
+VerdictCounts count_verdicts(const std::vector<PointResult>& points) {
+  VerdictCounts c;
+  for (const PointResult& p : points) {
+    c.failed += p.verdict == Verdict::failed;
+    c.unstable += p.verdict == Verdict::unstable;
+    c.stable += p.verdict == Verdict::stable;
+  }
+  return c;
+}
+
+nlohmann::json diagram_brief_json(const SceneFile& file, const DiagramRun& r, const std::string& prefix) {
+  const VerdictCounts c = count_verdicts(r.points);
+  nlohmann::json j{{"csv", prefix + ".csv"},
+                   {"json", prefix + ".json"},
+                   {"points", r.points.size()},
+                   {"computed", r.computed},
+                   {"resumed", r.resumed},
+                   {"stable", c.stable},
+                   {"unstable", c.unstable},
+                   {"failed", c.failed},
+                   {"complete", r.complete},
+                   {"config_hash", r.config_hash},
+                   {"seconds", r.seconds}};
+  put_truncation(j, file);
+  return j;
+}
+
+nlohmann::json merge_brief_json(const MergeResult& m, std::size_t inputs, const std::string& prefix) {
+  return {{"csv", prefix + ".csv"},
+          {"json", prefix + ".json"},
+          {"inputs", inputs},
+          {"points", m.points.size()},
+          {"missing", m.missing.size()},
+          {"complete", m.missing.empty()}};
+}
+
+}  // namespace rbcstab

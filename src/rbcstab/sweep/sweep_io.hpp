@@ -1,0 +1,38 @@
+#pragma once
+// JSON, CSV and text views of the sweep results (Fig. 6e table, traced boundaries, diagram runs and merges),
+// shared by the command line, the report and any other front end.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/sweep/diagram.hpp"
+#include "rbcstab/sweep/diagram_output.hpp"
+#include "rbcstab/sweep/fig6e.hpp"
+#include "rbcstab/sweep/trace.hpp"
+
+namespace rbcstab {
+
+// {"rows": [...], "L", "L_reason"}: a quantity outside its domain is null with "<key>_reason" beside it.
+nlohmann::json fig6e_json(const SceneFile& file, const std::vector<Fig6eRow>& rows);
+
+// One row per traced point: curve, l, x, y, sigma_R, sigma_c, mu (round-trip digits).
+std::string trace_csv(const DiagramSpec& plane, const TraceResult& t);
+// The trace document (format "rbcstab-trace"): scene, plane, the options as used (criterion resolved, T: the
+// scene's when options.T is 0), curves, corners, the paper's analytic lines on the plane, counters.
+nlohmann::json trace_json(const SceneFile& file, const DiagramSpec& plane, const TraceOptions& options,
+                          const TraceResult& t);
+// What a trace wrote, from its document: files PREFIX.csv and PREFIX.json, pieces, corners, counts, agreement.
+nlohmann::json trace_brief_json(const nlohmann::json& trace_doc, const std::string& prefix);
+
+// The points of a diagram by verdict.
+struct VerdictCounts {
+  std::size_t stable = 0, unstable = 0, failed = 0;
+};
+VerdictCounts count_verdicts(const std::vector<PointResult>& points);
+// What a diagram run wrote: files PREFIX.csv and PREFIX.json, point counts by verdict, hash, seconds, truncation.
+nlohmann::json diagram_brief_json(const SceneFile& file, const DiagramRun& r, const std::string& prefix);
+// What a merge of `inputs` shard files wrote.
+nlohmann::json merge_brief_json(const MergeResult& m, std::size_t inputs, const std::string& prefix);
+
+}  // namespace rbcstab

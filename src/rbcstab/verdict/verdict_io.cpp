@@ -1,0 +1,265 @@
+#include "rbcstab/verdict/verdict_io.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "rbcstab/analysis/analysis_io.hpp"
+#include "rbcstab/analysis/post_instability.hpp"
+#include "rbcstab/analysis/predictors.hpp"
+#include "rbcstab/analysis/thresholds.hpp"
+#include "rbcstab/io/json.hpp"
+#include "rbcstab/model/coefficients.hpp"
+
+namespace rbcstab {
+
+nlohmann::json to_json(const ModePrediction& m) {
+  nlohmann::json j;
+  j["unstable_modes"] = m.unstable;
+  j["l_Delta"] = m.l_Delta;
+  j["rate"] = by_mode(m.rate);
+  j["status"] = to_string(m.status);
+  if (!m.reason.empty()) j["reason"] = m.reason;
+  return j;
+}
+
+namespace {
+
+bool has_post_instability_state(const SimulationResult& r) {
+  return r.l_Delta >= 3 && r.status == IntegrationStatus::success;
+}
+
+// The analysis part of the summary: regime, thresholds, the three predictors and Delta~2 predicted vs simulated.
+void analysis_text(std::ostream& out, const SceneFile& file, const SimulationResult& r, const ScenePrediction& pr) {
+  const Scene& s = file.scene;
+  const Parameters& p = s.parameters;
+  const double alpha = p.alpha();
+  out << "\nAnalysis (docs/theory.md)\n";
+  out << "Regime       " << to_string(pr.regime.regime) << " -- " << pr.regime.reason << " (reduced dynamics)\n";
+  out << "Thresholds   sigma_* = " << sigma_star(alpha) << ", l_* = " << l_star(alpha)
+      << (l_star_criterion(alpha) ? " (>= 2.5: an integer mode l >= 3 can be excited)" : " (< 2.5: no l >= 3 band)")
+      << ", alpha_*^init = " << to_text(alpha_init(p)) << "\n";
+  if (s.L >= 3) out << "             surviving integer mode (largest sigma_l^c) l_s = " << surviving_mode(alpha, s.L) << "\n";
+  out << "Predictors   (a) asymptotic     <sigma_R> = " << to_text(pr.sigma_R_asymptotic) << " ("
+      << pr.asymptotic_source << "): unstable " << mode_list(pr.asymptotic.unstable) << ", l_Delta = " << pr.asymptotic.l_Delta
+      << "\n";
+  out << "             (b) finite horizon <sigma_R>_T = " << pr.horizon.mean_sigma_R << " over [0, " << pr.horizon.T
+      << "]: unstable " << mode_list(pr.finite_horizon.unstable) << ", l_Delta = " << pr.finite_horizon.l_Delta
+      << " (linear growth exp(2 G_l))\n";
+  out << "             (c) simulation     unstable " << mode_list(pr.simulation.unstable) << ", l_Delta = " << pr.simulation.l_Delta
+      << "\n";
+  if (s.L >= 3) {
+    const PostInstability post = post_instability(p, s.L, 0.0);
+    out << "Delta~2      predicted: continuous l_* " << to_text(post.continuous.Delta2_tilde) << ", integer l_s = "
+        << post.surviving_mode << " " << to_text(post.integer_mode.Delta2_tilde) << "\n";
+    if (has_post_instability_state(r))
+      out << "             simulated Delta-bar_2 = " << r.Delta_tail_mean[0] << " (tail mean over the last "
+          << file.options.tail_window << ")\n";
+    else
+      out << "             simulated: no post-instability state (l_Delta = " << r.l_Delta << ")\n";
+  }
+}
+
+}  // namespace
+
+nlohmann::json summary_json(const SceneFile& file, const SimulationResult& r, const ScenePrediction& pr) {
+  const Scene& s = file.scene;
+  const Parameters& p = s.parameters;
+  const double alpha = p.alpha();
+  nlohmann::json j = to_json(r);
+  j.erase("trajectory");
+  j["scene"] = s.name;
+  j["regime"] = to_string(pr.regime.regime);
+  j["regime_reason"] = pr.regime.reason;
+  j["alpha"] = number_or_null(alpha);
+  j["sigma_star"] = number_or_null(sigma_star(alpha));
+  j["l_star"] = number_or_null(l_star(alpha));
+  j["l_star_criterion"] = l_star_criterion(alpha);
+  put(j, "alpha_init", alpha_init(p));
+  if (s.L >= 3) j["surviving_mode"] = surviving_mode(alpha, s.L);
+  put(j, "sigma_R_asymptotic", pr.sigma_R_asymptotic);
+  j["sigma_R_asymptotic_source"] = pr.asymptotic_source;
+  j["asymptotic"] = to_json(pr.asymptotic);
+  j["finite_horizon"] = to_json(pr.finite_horizon);
+  j["finite_horizon"]["T"] = pr.horizon.T;
+  j["finite_horizon"]["mean_sigma_R"] = number_or_null(pr.horizon.mean_sigma_R);
+  j["simulation"] = to_json(pr.simulation);
+  if (s.L >= 3) {
+    const PostInstability post = post_instability(p, s.L, 0.0);
+    put(j, "Delta2_tilde", post.continuous.Delta2_tilde);
+    put(j, "Delta2_tilde_integer_mode", post.integer_mode.Delta2_tilde);
+    if (has_post_instability_state(r))
+      j["Delta2_simulated"] = number_or_null(r.Delta_tail_mean[0]);
+    else {
+      j["Delta2_simulated"] = nullptr;
+      j["Delta2_simulated_reason"] = "no post-instability state (l_Delta = " + std::to_string(r.l_Delta) + ")";
+    }
+  }
+  j["tail_window"] = file.options.tail_window;
+  put_truncation(j, file);
+  return j;
+}
+
+std::string summary_text(const SceneFile& file, const SimulationResult& r, const ScenePrediction& pr) {
+  const Scene& s = file.scene;
+  const Parameters& p = s.parameters;
+  std::ostringstream out;
+  out << std::setprecision(6);
+  out << "rbcstab " << RBCSTAB_VERSION << " -- scene '" << s.name << "'\n\n";
+  out << "Parameters   lambda = " << p.lambda << ", Delta = " << p.Delta << ", Delta0 = " << p.Delta0 << ", B = " << p.B
+      << ", C = " << p.C << "\n";
+  out << "             beta = " << s.beta << ", delta = " << s.delta << ", L = " << s.L << ", T = " << s.T << "\n";
+  out << "Derived      Lambda = " << p.Lambda() << ", S = " << p.S() << ", alpha = B/C = " << p.alpha() << "\n";
+  out << "Truncation   " << file.L_reason << "\n";
+  out << "Model level  " << to_string(r.level.level) << " -- " << r.level.reason << "\n";
+  for (const auto& w : r.warnings) out << "Warning      " << w << "\n";
+  out << "\nExcess area by mode (Delta_l):\n";
+  out << "    l      Delta_l(0)      Delta_l(T)   tail mean       change   sigma_l^c\n";
+  for (int l = 2; l <= r.L; ++l) {
+    const std::size_t k = std::size_t(l - 2);
+    const double d0 = r.Delta_initial[k], d1 = r.Delta_final[k];
+    out << std::setw(5) << l << std::setw(16) << d0 << std::setw(16) << d1 << std::setw(12) << r.Delta_tail_mean[k]
+        << std::setw(13) << (d1 - d0);
+    if (l >= 3) out << std::setw(12) << sigma_c(l, p.alpha());
+    out << "\n";
+  }
+  out << "\nl_Delta = " << r.l_Delta;
+  if (r.l_Delta == 2)
+    out << ": the ellipsoid is stable, the higher modes gave their area back to l = 2\n";
+  else
+    out << ": mode l = " << r.l_Delta << " took the most excess area from the ellipsoid ("
+        << (r.oscillating ? "from the tail mean over the last " : "at T; tail window ") << file.options.tail_window
+        << " time units)\n";
+  out << "sigma(T) = " << r.sigma_final << " (tail mean " << r.sigma_tail_mean << "), sigma(0) = " << r.sigma_initial
+      << "\n";
+  out << "r(T) = " << r.r_final << ", Psi(T) = " << r.Psi_final << "\n";
+  out << "Excess-area drift max_t |Delta(t) - Delta(0)| = " << r.excess_area_drift << "\n";
+  analysis_text(out, file, r, pr);
+  out << "Cost: " << r.counters.steps << " steps (" << r.counters.failed_steps << " rejected), "
+      << r.counters.rhs_evaluations << " RHS and " << r.counters.jacobian_evaluations << " Jacobian evaluations, "
+      << r.seconds << " s with " << to_string(file.options.integrator.stepper) << " at rtol "
+      << file.options.integrator.rtol << "\n";
+  if (r.status != IntegrationStatus::success)
+    out << "Status: " << to_string(r.status) << " at t = " << r.t_reached << ": " << r.reason << "\n";
+  else
+    out << "Status: success\n";
+  return out.str();
+}
+
+ThresholdReport threshold_report(const Scene& scene, bool exact_C_star_roots) {
+  const Parameters& p = scene.parameters;
+  const double alpha = p.alpha();
+  ThresholdReport t;
+  t.r0 = stress_free_r0(scene);
+  t.criterion = out_of_plane_criterion(p, scene.L);
+  t.prediction = predict(scene, nullptr);
+  t.lambda_star_minus = std::isfinite(p.C) && alpha > 0 ? lambda_star_minus(alpha, p.C, p.Delta)
+                                                        : Quantity::outside("needs finite C (alpha > 0)");
+  t.has_exact_C_star = exact_C_star_roots;
+  if (exact_C_star_roots) t.exact_C_star = exact_C_star(p, std::exp(-5.5), std::exp(2.0));
+  return t;
+}
+
+nlohmann::json thresholds_json(const SceneFile& file, const ThresholdReport& t) {
+  const Scene& s = file.scene;
+  const Parameters& p = s.parameters;
+  const double alpha = p.alpha();
+  const ScenePrediction& pr = t.prediction;
+  nlohmann::json j;
+  j["parameters"] = to_json(p);
+  put_truncation(j, file);
+  j["Lambda"] = p.Lambda();
+  j["S"] = number_or_null(p.S());
+  j["alpha"] = alpha;
+  j["r0"] = t.r0;
+  j["l_star"] = l_star(alpha);
+  j["sigma_star"] = sigma_star(alpha);
+  j["l_star_criterion"] = l_star_criterion(alpha);
+  j["alpha_l_star_2_5"] = alpha_for_l_star(2.5);
+  j["surviving_mode"] = s.L >= 3 ? surviving_mode(alpha, s.L) : 2;
+  nlohmann::json change = nlohmann::json::object();
+  for (int l = 2; l < s.L; ++l) change[std::to_string(l) + "->" + std::to_string(l + 1)] = alpha_mode_change(l);
+  j["alpha_mode_change"] = change;
+  std::vector<double> sc;
+  for (int l = 2; l <= s.L; ++l) sc.push_back(sigma_c(l, alpha));
+  j["sigma_critical"] = by_mode(sc);
+  j["sigma_R_initial"] = sigma_R_initial(p);
+  put(j, "alpha_init", alpha_init(p));
+  put(j, "mean_sigma_R_minus", mean_sigma_R_minus(p));
+  put(j, "mean_sigma_R_plus", mean_sigma_R_plus(p, t.r0));
+  put(j, "C_star_minus", C_star_minus(p));
+  put(j, "C_star_plus", C_star_plus(p, t.r0));
+  put(j, "C_star_plus_printed", C_star_plus_printed(p, t.r0));
+  put(j, "lambda_star_minus", t.lambda_star_minus);
+  const OutOfPlaneEquilibrium& eq = t.criterion.equilibrium;
+  j["sigma_R_equilibrium"] = eq.sigma_R;
+  j["equilibrium"] = {{"r", eq.r},
+                      {"Psi", eq.Psi},
+                      {"mu", eq.mu},
+                      {"stable", eq.stable},
+                      {"eigenvalues", {to_json(eq.eigenvalues[0]), to_json(eq.eigenvalues[1])}},
+                      {"residual", eq.residual},
+                      {"r_large_S", eq.r_large_S},
+                      {"Psi_large_S", eq.Psi_large_S}};
+  put(j["equilibrium"], "sigma_R_large_S", eq.sigma_R_large_S);
+  j["unstable_modes_exact_equilibrium"] = t.criterion.unstable_exact;
+  j["unstable_modes_large_S"] = t.criterion.unstable_large_S;
+  put(j, "sigma_R_asymptotic", pr.sigma_R_asymptotic);
+  j["sigma_R_asymptotic_source"] = pr.asymptotic_source;
+  j["unstable_modes_asymptotic"] = pr.asymptotic.unstable;
+  j["unstable_modes_finite_horizon"] = pr.finite_horizon.unstable;
+  j["asymptotic"] = to_json(pr.asymptotic);
+  j["finite_horizon"] = to_json(pr.finite_horizon);
+  j["finite_horizon"]["T"] = pr.horizon.T;
+  j["finite_horizon"]["mean_sigma_R"] = pr.horizon.mean_sigma_R;
+  j["regime"] = to_string(pr.regime.regime);
+  j["regime_reason"] = pr.regime.reason;
+  if (t.has_exact_C_star) j["C_star_exact_out_of_plane"] = t.exact_C_star;
+  return j;
+}
+
+std::string thresholds_text(const SceneFile& file, const ThresholdReport& t) {
+  const Scene& s = file.scene;
+  const Parameters& p = s.parameters;
+  const double alpha = p.alpha();
+  const ScenePrediction& pr = t.prediction;
+  const OutOfPlaneCriterion& crit = t.criterion;
+  std::ostringstream out;
+  out << std::setprecision(6);
+  out << "Scene '" << s.name << "': lambda = " << p.lambda << ", Delta = " << p.Delta << ", Delta0 = " << p.Delta0
+      << ", B = " << p.B << ", C = " << p.C << ", beta = " << s.beta << "\n";
+  out << "Lambda = " << p.Lambda() << ", S = " << p.S() << ", alpha = " << alpha << ", r0 = " << t.r0 << "\n";
+  out << "Truncation: " << file.L_reason << "\n\n";
+  out << "Continuous band (Eq. inst): l_* = " << l_star(alpha) << ", sigma_* = " << sigma_star(alpha)
+      << "; l_* >= 2.5 <=> alpha >= (35/8)^2 = " << alpha_for_l_star(2.5) << ": "
+      << (l_star_criterion(alpha) ? "met" : "not met") << "\n";
+  if (s.L >= 3) out << "Surviving integer mode (largest sigma_l^c): l = " << surviving_mode(alpha, s.L) << "\n";
+  out << "alpha_*^init = " << to_text(alpha_init(p)) << " (sigma_R(0) = " << sigma_R_initial(p) << ")\n";
+  out << "<sigma_R^-> = " << to_text(mean_sigma_R_minus(p)) << ", <sigma_R^+> = " << to_text(mean_sigma_R_plus(p, t.r0))
+      << "  (Eq. ss_st_red, S >> 1)\n";
+  out << "C_*^- = " << to_text(C_star_minus(p)) << ", C_*^+ = " << to_text(C_star_plus(p, t.r0))
+      << " (printed A^+: " << to_text(C_star_plus_printed(p, t.r0)) << ")\n";
+  out << "lambda_*^- = " << to_text(t.lambda_star_minus) << "\n";
+  if (t.has_exact_C_star) {
+    out << "Exact out-of-plane C_* (sigma_R^eq = sigma_*, C in [e^-5.5, e^2]):";
+    for (double c : t.exact_C_star) out << " " << c;
+    out << (t.exact_C_star.empty() ? " none\n" : "\n");
+  }
+  const OutOfPlaneEquilibrium& eq = crit.equilibrium;
+  out << "\nExact out-of-plane equilibrium (every S): r = " << eq.r << ", Psi = " << eq.Psi
+      << ", sigma_R = " << eq.sigma_R << ", " << (eq.stable ? "stable" : "unstable") << " (eigenvalues "
+      << eq.eigenvalues[0] << ", " << eq.eigenvalues[1] << ")\n";
+  out << "  S >> 1 (Eq. ss_red): r = " << eq.r_large_S << ", Psi = " << eq.Psi_large_S
+      << ", <sigma_R> = " << to_text(eq.sigma_R_large_S) << "\n";
+  out << "  unstable modes: exact " << mode_list(crit.unstable_exact) << "; S >> 1 " << mode_list(crit.unstable_large_S)
+      << "\n";
+  out << "\nReduced regime: " << to_string(pr.regime.regime) << " (" << pr.regime.reason << ")\n";
+  out << "Asymptotic predictor: <sigma_R> = " << to_text(pr.sigma_R_asymptotic) << " from " << pr.asymptotic_source
+      << "\n  unstable modes " << mode_list(pr.asymptotic.unstable) << ", l_Delta = " << pr.asymptotic.l_Delta << "\n";
+  out << "Finite-horizon predictor (T = " << pr.horizon.T << ", <sigma_R>_T = " << pr.horizon.mean_sigma_R
+      << "): unstable modes " << mode_list(pr.finite_horizon.unstable) << ", l_Delta = " << pr.finite_horizon.l_Delta
+      << "\n";
+  return out.str();
+}
+
+}  // namespace rbcstab

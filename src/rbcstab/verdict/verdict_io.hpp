@@ -1,0 +1,36 @@
+#pragma once
+// JSON and text views of a scene's verdicts: the summary (a run and its analysis) and the threshold report
+// (no run), shared by the command line, the report and any other front end.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "rbcstab/analysis/steady_states.hpp"
+#include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/verdict/predict.hpp"
+
+namespace rbcstab {
+
+nlohmann::json to_json(const ModePrediction& m);
+
+// The summary of a scene file's run r and its prediction (predict(scene, transient, &r)): the keys of
+// to_json(SimulationResult) (without the trajectory), the truncation, then the analysis.
+nlohmann::json summary_json(const SceneFile& file, const SimulationResult& r, const ScenePrediction& prediction);
+// The same as readable text, from the "rbcstab <version> -- scene" line to "Status:".
+std::string summary_text(const SceneFile& file, const SimulationResult& r, const ScenePrediction& prediction);
+
+// The paper's thresholds for a scene, each with its domain, beside the exact finite-S out-of-plane criterion and
+// the asymptotic and finite-horizon predictions (no modal simulation).
+struct ThresholdReport {
+  double r0 = 0;  // stress_free_r0
+  OutOfPlaneCriterion criterion;
+  ScenePrediction prediction;
+  Quantity lambda_star_minus;  // outside its domain unless C is finite and alpha > 0
+  bool has_exact_C_star = false;
+  std::vector<double> exact_C_star;  // the roots on the paper's range [e^-5.5, e^2] when has_exact_C_star
+};
+ThresholdReport threshold_report(const Scene& scene, bool exact_C_star);
+nlohmann::json thresholds_json(const SceneFile& file, const ThresholdReport& t);
+std::string thresholds_text(const SceneFile& file, const ThresholdReport& t);
+
+}  // namespace rbcstab
