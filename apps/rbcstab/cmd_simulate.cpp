@@ -37,7 +37,7 @@ std::string trajectory_csv(const SimulationResult& r) {
 int run(const SimulateOptions& o) {
   const SceneFile sf = o.scene.resolve(TruncationUse::simulation);
   const SimulationResult r = simulate(sf.scene, sf.options);
-  if (!o.trajectory.empty()) write_file_atomic(o.trajectory, trajectory_csv(r));
+  if (!o.trajectory.empty()) write_file_atomic(o.trajectory, trajectory_csv(r), "--trajectory");
   for (const auto& w : r.warnings) std::cerr << "rbcstab: warning: " << w << "\n";
   if (o.json) {
     nlohmann::json j = to_json(r);
