@@ -218,3 +218,14 @@ TEST(Output, TemporariesOfDeadProcessesAreRemovedOthersKept) {
   EXPECT_TRUE(fs::exists(other));  // another output's temporaries are left to that output's next write
   EXPECT_EQ(staging_prefix("r.csv", ".tmp-"), ".r.csv.tmp-" + std::to_string(::getpid()) + "-");
 }
+
+TEST(Output, AnAppendedFileMustBeARegularFile) {
+  Scratch s;
+  require_file_output(s / "new.journal", "--journal");
+  const std::string pipe = s / "pipe";
+  ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
+  for (const std::string& p : {pipe, std::string("-"), s.dir.string()}) {
+    const std::string msg = message_of<InvalidArgument>([&] { require_file_output(p, "--journal"); });
+    EXPECT_NE(msg.find("--journal: cannot write '" + p + "'"), std::string::npos) << msg;
+  }
+}

@@ -204,6 +204,11 @@ void remove_stale_staging(const std::string& folder, const std::string& target_n
   }
 }
 
+void require_file_output(const std::string& path, const std::string& flag) {
+  const Target t = resolve(path, flag);
+  if (t.kind != Kind::replace) bad_path(t, "it must be a regular file (it is read back and appended to)");
+}
+
 void write_files_atomic(const std::vector<OutputFile>& files) {
   std::vector<Target> targets;
   for (const OutputFile& f : files) targets.push_back(resolve(f.path, f.flag));

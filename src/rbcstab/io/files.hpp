@@ -38,6 +38,10 @@ void write_file_atomic(const std::string& path, const std::string& content, cons
 // untouched and removes every temporary.
 void write_files_atomic(const std::vector<OutputFile>& files);
 
+// Throws InvalidArgument(flag) unless path can be a regular file that is read back and appended to
+// (a journal): not "-", a FIFO, a device, a directory, or a path in a missing or unwritable folder.
+void require_file_output(const std::string& path, const std::string& flag);
+
 // The hidden sibling name ".NAME<tag>PID-" that staging files and folders of this process start with.
 std::string staging_prefix(const std::string& target_name, const std::string& tag);
 // Removes (recursively) the entries of folder whose names are staging_prefix(target_name, tag) of a

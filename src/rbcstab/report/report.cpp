@@ -180,11 +180,9 @@ std::string unique_suffix() {
   return ss.str();
 }
 
-// ".<name><tag><random>" (built by append: GCC 12 warns falsely on chained literal + string).
+// ".<name><tag><pid>-<random>": the pid lets a later run remove the folders of a killed one.
 std::string hidden_sibling_name(const fs::path& target, const char* tag) {
-  std::string name(".");
-  name.append(target.filename().string()).append(tag).append(unique_suffix());
-  return name;
+  return staging_prefix(target.filename().string(), tag).append(unique_suffix());
 }
 
 nlohmann::json figure(const std::string& kind, const std::string& png, int w, int h, std::vector<std::string> data,
@@ -264,6 +262,8 @@ void draw_and_publish(const ReportOptions& o, const nlohmann::json& manifest, co
 template <class Body>
 void in_staging_folder(const fs::path& target, Body&& body) {
   std::error_code ec;
+  for (const char* tag : {".tmp-", ".old-"})
+    remove_stale_staging(target.parent_path().string(), target.filename().string(), tag);
   const fs::path tmp = target.parent_path() / hidden_sibling_name(target, ".tmp-");
   fs::create_directory(tmp, ec);
   if (ec) throw ReportError("output: cannot create " + tmp.string() + ": " + ec.message());
