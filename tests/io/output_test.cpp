@@ -162,20 +162,20 @@ TEST(Output, SymbolicLinkToADeviceWritesThrough) {
   EXPECT_EQ(kind_of(dev), mode_t(S_IFCHR));
 }
 
-TEST(Output, DirectoryAndMissingFolderAreInvalidArgumentsNamingFlagAndPath) {
+TEST(Output, DirectoryAndMissingFolderAreOutputErrorsNamingFlagAndPath) {
   Scratch s;
   const std::string dir = s / "dd";
   fs::create_directories(dir);
-  std::string msg = message_of<InvalidArgument>([&] { write_file_atomic(dir, "x", "--csv"); });
+  std::string msg = message_of<OutputError>([&] { write_file_atomic(dir, "x", "--csv"); });
   EXPECT_NE(msg.find("--csv"), std::string::npos) << msg;
   EXPECT_NE(msg.find("'" + dir + "'"), std::string::npos) << msg;
   EXPECT_NE(msg.find("is a directory"), std::string::npos) << msg;
   const std::string missing = s / "no/such/folder/x.csv";
-  msg = message_of<InvalidArgument>([&] { write_file_atomic(missing, "x", "--trajectory"); });
+  msg = message_of<OutputError>([&] { write_file_atomic(missing, "x", "--trajectory"); });
   EXPECT_NE(msg.find("--trajectory"), std::string::npos) << msg;
   EXPECT_NE(msg.find(missing), std::string::npos) << msg;
   EXPECT_NE(msg.find("does not exist"), std::string::npos) << msg;
-  msg = message_of<InvalidArgument>([&] { write_file_atomic("", "x", ""); });
+  msg = message_of<OutputError>([&] { write_file_atomic("", "x", ""); });
   EXPECT_NE(msg.find("output"), std::string::npos) << msg;
   EXPECT_TRUE(fs::is_empty(dir));
   EXPECT_TRUE(s.strays().empty());
@@ -188,7 +188,7 @@ TEST(Output, ASetIsWrittenTogetherOrNotAtAll) {
   EXPECT_EQ(slurp(csv), "c1\n");
   EXPECT_EQ(slurp(json), "j1\n");
   // A bad second path: found before anything is written.
-  EXPECT_THROW(write_files_atomic({{csv, "c2\n", "--out"}, {s / "no/p.json", "j2\n", "--out"}}), InvalidArgument);
+  EXPECT_THROW(write_files_atomic({{csv, "c2\n", "--out"}, {s / "no/p.json", "j2\n", "--out"}}), OutputError);
   EXPECT_EQ(slurp(csv), "c1\n");
   // A write that fails after the first file was staged: the first stays as it was, its temporary is gone.
   const std::string full = s / "full";
@@ -225,7 +225,7 @@ TEST(Output, AnAppendedFileMustBeARegularFile) {
   const std::string pipe = s / "pipe";
   ASSERT_EQ(::mkfifo(pipe.c_str(), 0600), 0);
   for (const std::string& p : {pipe, std::string("-"), s.dir.string()}) {
-    const std::string msg = message_of<InvalidArgument>([&] { require_file_output(p, "--journal"); });
+    const std::string msg = message_of<OutputError>([&] { require_file_output(p, "--journal"); });
     EXPECT_NE(msg.find("--journal: cannot write '" + p + "'"), std::string::npos) << msg;
   }
 }

@@ -41,26 +41,22 @@ std::string quoted(const Target& t) {
   return s;
 }
 
-[[noreturn]] void bad_path(const Target& t, const std::string& why) {
-  std::string parameter = t.flag;
-  parameter.erase(0, parameter.find_first_not_of('-'));
-  throw InvalidArgument(parameter, t.flag + ": cannot write " + quoted(t) + ": " + why);
-}
-
+// A path that cannot be an output is found only when the output is due (after the computation), so it
+// is an OutputError like a failed write (exit 3), never an input error.
 [[noreturn]] void failed(const Target& t, const std::string& why) {
   throw OutputError(t.flag + ": cannot write " + quoted(t) + ": " + why);
 }
 
 std::string folder_of(const fs::path& p) { return p.has_parent_path() ? p.parent_path().string() : "."; }
 
-// Classifies an output path, following symbolic links to their final target; throws InvalidArgument
-// for a path that cannot be an output.
+// Classifies an output path, following symbolic links to their final target; throws OutputError for a
+// path that cannot be an output.
 Target resolve(const std::string& path, const std::string& flag) {
   Target t;
   t.flag = flag.empty() ? "output" : flag;
   t.shown = path;
   t.path = path;
-  if (path.empty()) bad_path(t, "the path is empty");
+  if (path.empty()) failed(t, "the path is empty");
   if (path == "-") {
     t.kind = Kind::standard_output;
     return t;
@@ -68,32 +64,32 @@ Target resolve(const std::string& path, const std::string& flag) {
   struct stat st {};
   for (int hops = 0;; ++hops) {
     if (::lstat(t.path.c_str(), &st) != 0) {
-      if (errno != ENOENT) bad_path(t, std::strerror(errno));
+      if (errno != ENOENT) failed(t, std::strerror(errno));
       break;
     }
     t.exists = true;
     if (!S_ISLNK(st.st_mode)) break;
-    if (hops == 40) bad_path(t, "too many levels of symbolic links");
+    if (hops == 40) failed(t, "too many levels of symbolic links");
     std::error_code ec;
     const fs::path link = fs::read_symlink(t.path, ec);
-    if (ec) bad_path(t, ec.message());
+    if (ec) failed(t, ec.message());
     t.path = link.is_absolute() ? link : t.path.parent_path() / link;
     t.exists = false;
   }
   if (t.exists) {
     t.mode = st.st_mode;
-    if (S_ISDIR(st.st_mode)) bad_path(t, "it is a directory");
+    if (S_ISDIR(st.st_mode)) failed(t, "it is a directory");
     if (S_ISFIFO(st.st_mode) || S_ISCHR(st.st_mode)) {
       t.kind = Kind::write_through;
       return t;
     }
-    if (!S_ISREG(st.st_mode)) bad_path(t, "it is a block device or a socket");
+    if (!S_ISREG(st.st_mode)) failed(t, "it is a block device or a socket");
   }
   const std::string folder = folder_of(t.path);
   struct stat dir {};
-  if (::stat(folder.c_str(), &dir) != 0) bad_path(t, "the folder '" + folder + "' does not exist");
-  if (!S_ISDIR(dir.st_mode)) bad_path(t, "'" + folder + "' is not a folder");
-  if (::access(folder.c_str(), W_OK | X_OK) != 0) bad_path(t, "the folder '" + folder + "' is not writable");
+  if (::stat(folder.c_str(), &dir) != 0) failed(t, "the folder '" + folder + "' does not exist");
+  if (!S_ISDIR(dir.st_mode)) failed(t, "'" + folder + "' is not a folder");
+  if (::access(folder.c_str(), W_OK | X_OK) != 0) failed(t, "the folder '" + folder + "' is not writable");
   return t;
 }
 
@@ -125,7 +121,7 @@ std::string stage(const Target& t, const std::string& content) {
     if (fd < 0) {
       if (errno == EEXIST && attempt < 8) continue;
       if (errno == EACCES || errno == EPERM || errno == EROFS)
-        bad_path(t, "the folder '" + folder.string() + "' is not writable");
+        failed(t, "the folder '" + folder.string() + "' is not writable");
       failed(t, std::strerror(errno));
     }
     try {
@@ -206,7 +202,7 @@ void remove_stale_staging(const std::string& folder, const std::string& target_n
 
 void require_file_output(const std::string& path, const std::string& flag) {
   const Target t = resolve(path, flag);
-  if (t.kind != Kind::replace) bad_path(t, "it must be a regular file (it is read back and appended to)");
+  if (t.kind != Kind::replace) failed(t, "it must be a regular file (it is read back and appended to)");
 }
 
 void write_files_atomic(const std::vector<OutputFile>& files) {

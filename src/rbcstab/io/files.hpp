@@ -6,8 +6,8 @@
 //                           OutputError);
 //   a symbolic link         followed: its final target is treated as below, the link itself is kept;
 //   a regular file, or none replaced atomically: written to a hidden temporary sibling, fsync'd, renamed;
-//   a directory, a block device, a socket, a missing or unwritable parent folder: InvalidArgument naming
-//                           the flag and the path, nothing written.
+//   a directory, a block device, a socket, a missing or unwritable parent folder: refused, nothing written.
+// Every failure is an OutputError (the CLI's exit 3) naming the flag and the path.
 // Temporary siblings are named ".NAME.tmp-PID-XXXXXX"; a write removes those of processes that no longer
 // exist (a process killed by SIGKILL cannot remove its own).
 #include <stdexcept>
@@ -16,7 +16,7 @@
 
 namespace rbcstab {
 
-// An output could not be written (disk full, device full, I/O error): the CLI's exit 3.
+// An output could not be written (bad path, disk full, device full, I/O error): the CLI's exit 3.
 class OutputError : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
@@ -28,8 +28,7 @@ struct OutputFile {
   std::string flag;  // the flag (or key) that named the path, for messages; "" reads as "output"
 };
 
-// Writes one output (see above). Throws InvalidArgument(flag) for a path that cannot be an output and
-// OutputError when writing fails; either way nothing partial and no temporary file is left.
+// Writes one output (see above). On failure throws OutputError; nothing partial and no temporary file is left.
 void write_file_atomic(const std::string& path, const std::string& content, const std::string& flag = "");
 
 // Writes several outputs as a set: every target is checked first, every regular file is fully written
@@ -38,7 +37,7 @@ void write_file_atomic(const std::string& path, const std::string& content, cons
 // untouched and removes every temporary.
 void write_files_atomic(const std::vector<OutputFile>& files);
 
-// Throws InvalidArgument(flag) unless path can be a regular file that is read back and appended to
+// Throws OutputError unless path can be a regular file that is read back and appended to
 // (a journal): not "-", a FIFO, a device, a directory, or a path in a missing or unwritable folder.
 void require_file_output(const std::string& path, const std::string& flag);
 
