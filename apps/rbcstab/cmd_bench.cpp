@@ -57,7 +57,6 @@ int run_work_precision(const BenchOptions& o, const SceneFile& sf) {
   const WorkPrecisionTable t = work_precision(sf.scene, wp);
   std::filesystem::create_directories(o.output);
   const std::string base = o.output + "/" + sf.scene.name + "_work_precision";
-  write_file_atomic(base + ".csv", work_precision_csv(t));
   nlohmann::json j{{"scene", to_json(sf.scene)},
                    {"reference", {{"level", "full"}, {"stepper", "rk8pd"}, {"rtol", wp.reference_rtol},
                                   {"Delta_final", by_mode(t.reference_Delta)}, {"sigma_final", t.reference_sigma},
@@ -71,7 +70,7 @@ int run_work_precision(const BenchOptions& o, const SceneFile& sf) {
                          {"error_Delta", r.error_Delta}, {"error_sigma", r.error_sigma}, {"l_Delta", r.l_Delta},
                          {"verdict_changed", r.verdict_changed}});
   put_truncation(j, sf);
-  write_file_atomic(base + ".json", j.dump(2) + "\n");
+  write_files_atomic({{base + ".csv", work_precision_csv(t), "--output"}, {base + ".json", j.dump(2) + "\n", "--output"}});
   if (o.plot) {
     check_python("/usr/bin/python3");
     const std::string dir = find_script_dir("");
@@ -134,10 +133,9 @@ int run_truncation(const BenchOptions& o, const SceneFile& sf) {
   }
   std::filesystem::create_directories(o.output);
   const std::string base = o.output + "/" + sf.scene.name + "_truncation";
-  write_file_atomic(base + ".csv", csv.str());
   nlohmann::json j{{"scene", to_json(sf.scene)}, {"reference_L", o.Ls.back()}, {"rows", rows}};
   put_truncation(j, sf);
-  write_file_atomic(base + ".json", j.dump(2) + "\n");
+  write_files_atomic({{base + ".csv", csv.str(), "--output"}, {base + ".json", j.dump(2) + "\n", "--output"}});
   std::cout << (o.json ? j.dump(2) + "\n" : csv.str());
   return kOk;
 }
@@ -178,11 +176,10 @@ int run_threshold(const BenchOptions& o, const SceneFile& sf) {
                     {"rtol", r.predictor == "asymptotic" ? 0.0 : tp.reference_rtol}});
   std::filesystem::create_directories(o.output);
   const std::string base = o.output + "/" + sf.scene.name + "_threshold";
-  write_file_atomic(base + ".csv", csv.str());
   nlohmann::json j{{"scene", to_json(sf.scene)}, {"B", t.B}, {"ln_C_range", o.ln_C_range},
                    {"references", refs}, {"rows", rows}};
   put_truncation(j, sf);
-  write_file_atomic(base + ".json", j.dump(2) + "\n");
+  write_files_atomic({{base + ".csv", csv.str(), "--output"}, {base + ".json", j.dump(2) + "\n", "--output"}});
   std::ostringstream title;
   title << "critical C at B = " << t.B << ": " << sf.scene.name;
   plot(o, "threshold_precision.py", base, title.str());

@@ -83,8 +83,10 @@ void print(const ContinueOptions& o, const std::string& L_reason, const Result& 
   } else {
     out = to_text(r, table_options(o));
   }
-  if (!o.csv.empty()) write_file_atomic(o.csv, csv);
-  if (!o.save.empty()) write_file_atomic(o.save, file);
+  std::vector<OutputFile> files;
+  if (!o.csv.empty()) files.push_back({o.csv, csv, "--csv"});
+  if (!o.save.empty()) files.push_back({o.save, file, "--save"});
+  write_files_atomic(files);
   std::cout << out;
 }
 

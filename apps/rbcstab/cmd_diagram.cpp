@@ -97,7 +97,7 @@ int run(const DiagramCliOptions& o) {
   const DiagramOutputOptions oo{!o.no_seconds};
   const Shard out_shard = mpi.size() > 1 ? Shard{} : ro.shard;
   try {
-    write_file_atomic(prefix + ".csv", diagram_csv(spec, r.points, oo));
+    const std::string csv = diagram_csv(spec, r.points, oo);
     nlohmann::json header = diagram_header(sf.scene, sf.options, spec);
     put_truncation(header, sf);
     nlohmann::json doc = diagram_json(header, spec, r.points, out_shard, oo);
@@ -105,7 +105,7 @@ int run(const DiagramCliOptions& o) {
     ao.threads = o.threads;
     ao.finite_horizon = !o.no_finite_horizon_agreement;
     if (out_shard.n == 1) doc["agreement"] = agreement_json(sf.scene, spec, r.points, ao);
-    write_file_atomic(prefix + ".json", doc.dump(1) + "\n");
+    write_files_atomic({{prefix + ".csv", csv, "--out"}, {prefix + ".json", doc.dump(1) + "\n", "--out"}});
   } catch (const std::runtime_error& e) {
     std::cerr << "rbcstab: error: " << e.what() << "\n";
     return kOutputError;

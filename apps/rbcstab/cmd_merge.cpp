@@ -37,10 +37,10 @@ int run(const MergeOptions& o) {
   }
   const DiagramOutputOptions oo{m.seconds_present};
   try {
-    write_file_atomic(o.out + ".csv", diagram_csv(m.spec, m.points, oo));
+    const std::string csv = diagram_csv(m.spec, m.points, oo);
     nlohmann::json doc = diagram_json(m.header, m.spec, m.points, {}, oo);
     if (m.missing.empty()) doc["agreement"] = agreement_json(parse_scene(m.header.at("scene_toml").get<std::string>()).scene, m.spec, m.points);
-    write_file_atomic(o.out + ".json", doc.dump(1) + "\n");
+    write_files_atomic({{o.out + ".csv", csv, "--out"}, {o.out + ".json", doc.dump(1) + "\n", "--out"}});
   } catch (const std::runtime_error& e) {
     std::cerr << "rbcstab: error: " << e.what() << "\n";
     return kOutputError;

@@ -44,6 +44,7 @@ int run(const ShapeCliOptions& o) {
   grid_options.validate();
   const AmplitudeSeries series = amplitudes_at(sf, times);
   nlohmann::json files = nlohmann::json::array();
+  std::vector<OutputFile> outputs;
   for (std::size_t k = 0; k < series.t.size(); ++k) {
     const ShapeGrid g = shape_on_grid(series.f[k], grid_options);
     const SurfaceMesh mesh = surface_mesh(g);
@@ -53,13 +54,15 @@ int run(const ShapeCliOptions& o) {
     const std::string title = "rbcstab shape of scene " + sf.scene.name + " at t = " + format_value(series.t[k]);
     for (const auto& f : o.formats) {
       const std::string path = stem.str() + "." + f;
-      if (f == "vtk") write_vtk_legacy(path, mesh, title);
-      if (f == "vtp") write_vtk_xml(path, mesh);
-      if (f == "ply") write_ply(path, mesh, title);
-      if (f == "csv") write_file_atomic(path, grid_csv(g));
+      const std::string text = f == "vtk"   ? to_vtk_legacy(mesh, title)
+                               : f == "vtp" ? to_vtk_xml(mesh)
+                               : f == "ply" ? to_ply(mesh, title)
+                                            : grid_csv(g);
+      outputs.push_back({path, text, "--output"});
       files.push_back({{"t", series.t[k]}, {"file", path}, {"rho_min", g.rho_min}, {"rho_max", g.rho_max}});
     }
   }
+  write_files_atomic(outputs);
   if (o.json) {
     nlohmann::json j{{"model", to_string(series.level.level)}, {"status", to_string(series.status)},
                      {"reason", series.reason}, {"files", files}};

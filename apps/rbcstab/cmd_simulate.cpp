@@ -20,7 +20,7 @@ struct SimulateOptions {
 int run(const SimulateOptions& o) {
   const SceneFile sf = o.scene.resolve(TruncationUse::simulation);
   const SimulationResult r = simulate(sf.scene, sf.options);
-  if (!o.trajectory.empty()) write_file_atomic(o.trajectory, trajectory_csv(r));
+  if (!o.trajectory.empty()) write_file_atomic(o.trajectory, trajectory_csv(r), "--trajectory");
   for (const auto& w : r.warnings) std::cerr << "rbcstab: warning: " << w << "\n";
   if (o.json)
     std::cout << simulation_json(sf, r).dump(2) << "\n";

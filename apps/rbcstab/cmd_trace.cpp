@@ -60,8 +60,7 @@ int run(const TraceCliOptions& o) {
     doc["agreement"] = agreement_json(dsf.scene, ds, points_from_json(dj, ds), ao);
   }
   try {
-    write_file_atomic(o.out + ".csv", trace_csv(spec, t));
-    write_file_atomic(o.out + ".json", doc.dump(1) + "\n");
+    write_files_atomic({{o.out + ".csv", trace_csv(spec, t), "--out"}, {o.out + ".json", doc.dump(1) + "\n", "--out"}});
   } catch (const std::runtime_error& e) {
     std::cerr << "rbcstab: error: " << e.what() << "\n";
     return kOutputError;

@@ -47,9 +47,10 @@ struct Staging {
   explicit Staging(const std::string& output) {
     const fs::path out = fs::absolute(output).lexically_normal();
     const fs::path target = out.has_filename() ? out : out.parent_path();
+    remove_stale_staging(target.parent_path().string(), target.filename().string(), ".panel-");
     std::random_device rd;
     std::ostringstream name;
-    name << "." << target.filename().string() << ".panel-" << std::hex << rd() << rd();
+    name << staging_prefix(target.filename().string(), ".panel-") << std::hex << rd() << rd();
     dir = target.parent_path() / name.str();
     std::error_code ec;
     fs::create_directory(dir, ec);

@@ -119,13 +119,12 @@ std::string log_tail(const std::string& path, std::size_t n) {
 }
 
 // Built by append: GCC 12 warns falsely on chained literal + string.
+// ".<name><tag><pid>-<random>": the pid lets a later run remove the folders of a killed one.
 std::string hidden_sibling_name(const fs::path& target, const char* tag) {
   std::random_device rd;
   std::ostringstream suffix;
   suffix << std::hex << rd() << rd();
-  std::string name(".");
-  name.append(target.filename().string()).append(tag).append(suffix.str());
-  return name;
+  return staging_prefix(target.filename().string(), tag).append(suffix.str());
 }
 
 double oscillation_period(const std::vector<double>& t, const std::vector<double>& x) {
@@ -281,6 +280,8 @@ void draw_and_publish(const ReportOptions& o, const nlohmann::json& manifest, co
 template <class Body>
 void in_staging_folder(const fs::path& target, Body&& body) {
   std::error_code ec;
+  for (const char* tag : {".tmp-", ".old-"})
+    remove_stale_staging(target.parent_path().string(), target.filename().string(), tag);
   const fs::path tmp = target.parent_path() / detail::hidden_sibling_name(target, ".tmp-");
   fs::create_directory(tmp, ec);
   if (ec) throw ReportError("output: cannot create " + tmp.string() + ": " + ec.message());

@@ -7,7 +7,8 @@
 
 namespace rbcstab::detail {
 
-// ".<name of target><tag><random hex>", to be created beside target and renamed onto it.
+// ".<name of target><tag><pid>-<random hex>" (io staging_prefix), created beside target and renamed onto it;
+// the pid lets a later run remove the staging of a killed one (remove_stale_staging).
 std::string hidden_sibling_name(const std::filesystem::path& target, const char* tag);
 
 // The last n characters of the file at path ("..." in front when cut; "" when unreadable).

@@ -2,6 +2,7 @@
 """Threshold-precision figure: error of the located critical ln C against cost (verdict evaluations and
 wall time), one line per (predictor, method, rtol). Usage: threshold_precision.py TABLE.csv OUT.png [TITLE]"""
 import csv
+import os
 import sys
 
 import matplotlib
@@ -37,7 +38,14 @@ def main():
         ax.grid(True, which="both", alpha=0.3)
     axes[0].legend(fontsize=7, ncol=2)
     fig.suptitle(title)
-    fig.savefig(out, dpi=100)
+    # Drawn to a hidden sibling, then renamed: a reader never sees half a PNG.
+    tmp = os.path.join(os.path.dirname(out) or ".", ".%s.tmp-%d-py" % (os.path.basename(out), os.getpid()))
+    try:
+        fig.savefig(tmp, dpi=100, format="png")
+        os.replace(tmp, out)
+    finally:
+        if os.path.exists(tmp):
+            os.remove(tmp)
 
 
 if __name__ == "__main__":

@@ -11,6 +11,7 @@
 #include <stdexcept>
 
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/io/files.hpp"
 #include "rbcstab/sweep/point_io.hpp"
 
 namespace rbcstab::detail {
@@ -39,6 +40,7 @@ void write_all(int fd, const std::string& text, const std::string& path) {
 Journal::Journal(const std::string& path, const std::string& config_hash, const DiagramSpec& spec,
                  double sync_interval)
     : path_(path), hash_(config_hash), sync_interval_(sync_interval) {
+  require_file_output(path, "--journal");
   std::string content;
   {
     std::ifstream in(path, std::ios::binary);
