@@ -25,6 +25,8 @@ AxisRange axis_from_json(const nlohmann::json& j) {
   return a;
 }
 double number(const nlohmann::json& j) { return j.is_null() ? std::nan("") : j.get<double>(); }
+// A failed point's non-finite value is an empty field (its status column says why), never "nan".
+std::string csv_number(double v) { return std::isfinite(v) ? exact(v) : ""; }
 }  // namespace
 
 nlohmann::json diagram_header(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec) {
@@ -51,10 +53,10 @@ std::string diagram_csv(const DiagramSpec& spec, const std::vector<PointResult>&
   ss << '\n';
   for (const PointResult& p : points) {
     ss << p.index << ',' << p.i << ',' << p.j << ',' << exact(p.x) << ',' << exact(p.y) << ',' << to_string(p.verdict)
-       << ',' << p.l_Delta << ',' << exact(p.growth) << ',' << int(p.oscillating) << ',' << exact(p.sigma_final) << ','
-       << to_string(p.status) << ',' << exact(p.t_reached) << ',' << p.steps << ',' << p.failed_steps << ','
+       << ',' << p.l_Delta << ',' << csv_number(p.growth) << ',' << int(p.oscillating) << ','
+       << csv_number(p.sigma_final) << ',' << to_string(p.status) << ',' << csv_number(p.t_reached) << ',' << p.steps << ',' << p.failed_steps << ','
        << p.rhs_evaluations;
-    if (o.include_seconds) ss << ',' << exact(p.seconds);
+    if (o.include_seconds) ss << ',' << csv_number(p.seconds);
     ss << '\n';
   }
   return ss.str();
