@@ -62,22 +62,25 @@ std::string point_to_line(const PointResult& p, const std::string& config_hash) 
   return body + std::string(kChecksumMark) + fnv1a_hex(body) + '\n';
 }
 
-std::string point_value_error(const PointResult& p, const DiagramSpec& spec, int L) {
+FieldError point_value_error(const PointResult& p, const DiagramSpec& spec, int L) {
   if (p.index >= spec.size())
-    return "index " + std::to_string(p.index) + " is outside the grid (0.." + std::to_string(spec.size() - 1) + ")";
+    return {"index", "index " + std::to_string(p.index) + " is outside the grid (0.." + std::to_string(spec.size() - 1) + ")"};
   if (p.l_Delta < 2 || p.l_Delta > L)
-    return "l_Delta " + std::to_string(p.l_Delta) + " is outside [2, " + std::to_string(L) + "]";
+    return {"l_Delta", "l_Delta " + std::to_string(p.l_Delta) + " is outside [2, " + std::to_string(L) + "]"};
   const Verdict v = verdict_of(p.status, p.l_Delta);
   if (p.verdict != v)
-    return "verdict " + to_string(p.verdict) + " contradicts status " + to_string(p.status) + " and l_Delta " +
-           std::to_string(p.l_Delta) + " (which give " + to_string(v) + ")";
+    return {"verdict", "verdict " + to_string(p.verdict) + " contradicts status " + to_string(p.status) +
+                           " and l_Delta " + std::to_string(p.l_Delta) + " (which give " + to_string(v) + ")"};
   if (p.verdict != Verdict::failed) {
-    if (!std::isfinite(p.growth)) return "growth " + exact(p.growth) + " of a " + to_string(p.verdict) + " point is not finite";
+    if (!std::isfinite(p.growth))
+      return {"growth", "growth " + exact(p.growth) + " of a " + to_string(p.verdict) + " point is not finite"};
     if (!std::isfinite(p.sigma_final))
-      return "sigma_final " + exact(p.sigma_final) + " of a " + to_string(p.verdict) + " point is not finite";
+      return {"sigma_final", "sigma_final " + exact(p.sigma_final) + " of a " + to_string(p.verdict) + " point is not finite"};
   }
-  if (!(std::isfinite(p.t_reached) && p.t_reached >= 0)) return "t_reached " + exact(p.t_reached) + " is not finite and >= 0";
-  if (!(std::isfinite(p.seconds) && p.seconds >= 0)) return "seconds " + exact(p.seconds) + " is not finite and >= 0";
+  if (!(std::isfinite(p.t_reached) && p.t_reached >= 0))
+    return {"t_reached", "t_reached " + exact(p.t_reached) + " is not finite and >= 0"};
+  if (!(std::isfinite(p.seconds) && p.seconds >= 0))
+    return {"seconds", "seconds " + exact(p.seconds) + " is not finite and >= 0"};
   return {};
 }
 
@@ -121,7 +124,7 @@ ParsedPoint parse_point_line(const std::string& line, const std::string& config_
   }
   p.oscillating = osc != 0;
   p.reason = body.substr(bar + 2);
-  if (std::string why = point_value_error(p, spec, L); !why.empty()) return {std::nullopt, why};
+  if (FieldError e = point_value_error(p, spec, L); !e.empty()) return {std::nullopt, e.why};
   p.i = int(p.index % std::size_t(spec.x.count));
   p.j = int(p.index / std::size_t(spec.x.count));
   p.x = spec.x.value(p.i);

@@ -33,7 +33,11 @@ std::optional<PointResult> point_from_line(const std::string& line, const std::s
 // grid, l_Delta outside [2, L],
 // a verdict that disagrees with verdict_of(status, l_Delta), a non-finite growth or sigma_final of a
 // point that was not failed, a t_reached or seconds that is not finite and >= 0.
-std::string point_value_error(const PointResult& p, const DiagramSpec& spec, int L);
+struct FieldError {
+  std::string field, why;  // the PointResult member at fault ("l_Delta") and the message
+  bool empty() const { return why.empty(); }
+};
+FieldError point_value_error(const PointResult& p, const DiagramSpec& spec, int L);
 
 // Shortest round-trip text of a double ("inf", "-inf", "nan" for non-finite values).
 std::string exact(double v);
