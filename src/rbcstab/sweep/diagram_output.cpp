@@ -376,7 +376,7 @@ MergeResult merge_diagrams(const std::vector<MergeInput>& inputs) {
     }
     where.push_back([&in](std::size_t k, const std::string& field) {
       const std::size_t line = point_line(in.text, k, field);
-      return in.name + ":" + (line ? std::to_string(line) : "?") + ": point " + std::to_string(k) + ", " + field;
+      return in.name + ":" + (line ? std::to_string(line) : "?") + ": points[" + std::to_string(k) + "]." + field;
     });
   }
   return merge(docs, where);
