@@ -87,6 +87,7 @@ int run(const DiagramCliOptions& o) {
   std::signal(SIGTERM, on_signal);
 
   DiagramRun r = run_diagram(sf.scene, sf.options, spec, ro);
+  for (const std::string& why : r.rejected) std::cerr << "rbcstab: warning: " << why << "\n";
   if (mpi.size() > 1) r = mpi.gather(r, spec);
   if (mpi.rank() != 0) return r.complete ? kOk : kRunFailed;
   if (!r.complete) {

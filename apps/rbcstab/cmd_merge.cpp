@@ -21,15 +21,9 @@ struct MergeOptions {
 };
 
 int run(const MergeOptions& o) {
-  std::vector<nlohmann::json> docs;
-  for (const auto& path : o.inputs) {
-    try {
-      docs.push_back(nlohmann::json::parse(read_file(path)));
-    } catch (const nlohmann::json::exception& e) {
-      throw InvalidArgument("merge", "'" + path + "' is not JSON: " + e.what());
-    }
-  }
-  const MergeResult m = merge_diagrams(docs);
+  std::vector<MergeInput> inputs;
+  for (const auto& path : o.inputs) inputs.push_back({path, read_file(path)});
+  const MergeResult m = merge_diagrams(inputs);
   if (!m.missing.empty()) {
     std::cerr << "rbcstab: merge: " << m.missing.size() << " of " << m.spec.size()
               << " points are missing (first: index " << m.missing.front() << ")\n";
@@ -45,9 +39,9 @@ int run(const MergeOptions& o) {
     std::cerr << "rbcstab: error: " << e.what() << "\n";
     return kOutputError;
   }
-  std::cerr << "rbcstab: merged " << docs.size() << " files, " << m.points.size() << " points into " << o.out
+  std::cerr << "rbcstab: merged " << inputs.size() << " files, " << m.points.size() << " points into " << o.out
             << ".csv and " << o.out << ".json\n";
-  if (o.json) std::cout << merge_brief_json(m, docs.size(), o.out).dump(2) << "\n";
+  if (o.json) std::cout << merge_brief_json(m, inputs.size(), o.out).dump(2) << "\n";
   return m.missing.empty() ? kOk : kRunFailed;
 }
 }  // namespace

@@ -2,10 +2,13 @@
 // resume, merge, and the [diagram] scene table.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <future>
 #include <sstream>
+#include <thread>
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
@@ -14,6 +17,7 @@
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
 #include "rbcstab/sweep/diagram_output.hpp"
+#include "rbcstab/sweep/point_io.hpp"
 
 namespace rbcstab {
 namespace {
@@ -221,6 +225,186 @@ classifier = "tail"
   EXPECT_EQ(diagram_spec(parse_scene("name = 'x'\n")).size(), DiagramSpec{}.size());
 }
 
+
+std::vector<std::string> lines_of(const std::string& path) {
+  std::ifstream in(path);
+  std::vector<std::string> v;
+  for (std::string line; std::getline(in, line);) v.push_back(line);
+  return v;
+}
+void write_lines(const std::string& path, const std::vector<std::string>& lines, const std::string& tail = "") {
+  std::ofstream out(path, std::ios::trunc);
+  for (const auto& l : lines) out << l << '\n';
+  out << tail;
+}
+// Sets the n-th space-separated field of a journal record (keeping its old checksum, as a hand edit would).
+void set_field(std::string& line, int n, const std::string& value) {
+  std::size_t begin = 0;
+  for (int k = 0; k < n; ++k) begin = line.find(' ', begin) + 1;
+  line.replace(begin, line.find(' ', begin) - begin, value);
+}
+std::string field(const std::string& line, int n) {
+  std::istringstream f(line);
+  std::string w;
+  for (int k = 0; k <= n; ++k) f >> w;
+  return w;
+}
+
+TEST(Journal, SecondWriterIsRefusedNamingTheHolder) {
+  const Scene base = small_scene();
+  const DiagramSpec spec = small_spec();
+  const std::string journal = temp_path("locked.journal");
+  fs::remove(journal);
+  std::promise<void> holding, tried;
+  std::shared_future<void> release = tried.get_future().share();
+  bool told = false;
+  DiagramOptions first;
+  first.journal = journal;
+  first.progress_interval = 0.01;
+  first.on_progress = [&](const Progress&) {
+    if (told) return;
+    told = true;
+    holding.set_value();  // the journal is open and locked until run_diagram returns
+    release.wait();
+  };
+  std::thread writer([&] { run_diagram(base, {}, spec, first); });
+  holding.get_future().wait();
+  DiagramOptions second;
+  second.journal = journal;
+  try {
+    run_diagram(base, {}, spec, second);
+    ADD_FAILURE() << "a second writer of " << journal << " was not refused";
+  } catch (const InvalidArgument& e) {
+    const std::string what = e.what();
+    EXPECT_EQ(e.parameter(), "journal");
+    EXPECT_NE(what.find(journal), std::string::npos) << what;
+    EXPECT_NE(what.find("pid " + std::to_string(::getpid())), std::string::npos) << what;
+  }
+  tried.set_value();
+  writer.join();
+  // Once the holder is done the journal is free again, and complete.
+  const DiagramRun again = run_diagram(base, {}, spec, second);
+  EXPECT_EQ(again.resumed, spec.size());
+  EXPECT_TRUE(again.rejected.empty());
+}
+
+TEST(Journal, EditedRecordsAreReportedWithLineAndRecomputed) {
+  const Scene base = small_scene();
+  const DiagramSpec spec = small_spec();
+  const nlohmann::json header = diagram_header(base, {}, spec);
+  const std::string clean = diagram_json(header, spec, run_diagram(base, {}, spec, {}).points, {}, {false}).dump();
+  const std::string journal = temp_path("edited.journal");
+  fs::remove(journal);
+  DiagramOptions o;
+  o.journal = journal;
+  run_diagram(base, {}, spec, o);
+  std::vector<std::string> l = lines_of(journal);
+  ASSERT_EQ(l.size(), 1 + spec.size());
+  // Line k + 2 holds index k (one thread: index order); record fields: P hash index verdict l_Delta growth ...
+  set_field(l[2], 3, field(l[2], 3) == "stable" ? "unstable" : "stable");  // verdict flipped
+  set_field(l[3], 4, field(l[3], 4) == "3" ? "4" : "3");                     // l_Delta changed
+  set_field(l[4], 5, "nan");                                                 // growth
+  set_field(l[5], 2, "5");                                                   // index 4 swapped for 5
+  // A record with a valid checksum but an impossible value (l_Delta above L) is refused too.
+  PointResult forged = run_diagram(base, {}, spec, {}).points[6];
+  forged.l_Delta = base.L + 3;
+  l[8] = point_to_line(forged, config_hash(base, {}, spec));
+  l[8].pop_back();
+  l.pop_back();  // index 11 was being written when the process died: its record is torn
+  write_lines(journal, l, "P " + config_hash(base, {}, spec) + " 11 stab");
+  const DiagramRun r = run_diagram(base, {}, spec, o);
+  ASSERT_EQ(r.rejected.size(), 6u) << ::testing::PrintToString(r.rejected);
+  for (int line : {3, 4, 5, 6, 9, 13})
+    EXPECT_TRUE(std::any_of(r.rejected.begin(), r.rejected.end(), [&](const std::string& why) {
+      return why.rfind(journal + ":" + std::to_string(line) + ": ", 0) == 0;
+    })) << "line " << line << " not reported";
+  EXPECT_NE(r.rejected[0].find("checksum"), std::string::npos) << r.rejected[0];
+  EXPECT_NE(r.rejected[4].find("l_Delta " + std::to_string(base.L + 3)), std::string::npos) << r.rejected[4];
+  EXPECT_NE(r.rejected[5].find("torn"), std::string::npos) << r.rejected[5];
+  EXPECT_EQ(r.computed, 6u);  // indices 1, 2, 3, 4, 6 and the torn 11 (never merged)
+  EXPECT_EQ(diagram_json(header, spec, r.points, {}, {false}).dump(), clean);
+  // The rejected records are gone from the file: the next run resumes everything silently.
+  const DiagramRun again = run_diagram(base, {}, spec, o);
+  EXPECT_TRUE(again.rejected.empty());
+  EXPECT_EQ(again.resumed, spec.size());
+  EXPECT_EQ(lines_of(journal).size(), 1 + spec.size());
+}
+
+TEST(Journal, OlderFormatWithoutChecksumsIsRefused) {
+  const std::string journal = temp_path("v1.journal");
+  const Scene base = small_scene();
+  const DiagramSpec spec = small_spec();
+  write_lines(journal, {"# rbcstab diagram journal v1 " + config_hash(base, {}, spec)});
+  DiagramOptions o;
+  o.journal = journal;
+  try {
+    run_diagram(base, {}, spec, o);
+    ADD_FAILURE() << "a v1 journal was accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("older format v1"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Merge, RefusesOutOfDomainValuesNamingFileLineAndValue) {
+  const Scene base = small_scene();
+  const DiagramSpec spec = small_spec();
+  const std::string good =
+      diagram_json(diagram_header(base, {}, spec), spec, run_diagram(base, {}, spec, {}).points, {}, {false}).dump(1);
+  auto line_of = [](const std::string& text, const std::string& needle) {
+    const auto at = text.find(needle);
+    return 1 + std::count(text.begin(), text.begin() + std::ptrdiff_t(at), '\n');
+  };
+  struct Case {
+    std::size_t point;
+    std::string key, from, to, message;
+  };
+  for (const Case& c : {Case{2, "l_Delta", "", "-7", "l_Delta -7 is outside [2, 5]"},
+                        Case{5, "verdict", "", "\"banana\"", "'banana' is not one of: stable, unstable, failed"},
+                        Case{7, "status", "", "\"sideways\"", "'sideways'"},
+                        Case{3, "growth", "", "\"x\"", "growth = \"x\""}}) {
+    nlohmann::json doc = nlohmann::json::parse(good);
+    doc["points"][c.point][c.key] = nlohmann::json::parse(c.to);
+    const std::string text = doc.dump(1);
+    const std::string needle = "\"" + c.key + "\": " + c.to;
+    try {
+      merge_diagrams(std::vector<MergeInput>{{"shard.json", text}});
+      ADD_FAILURE() << c.key << " = " << c.to << " was merged";
+    } catch (const InvalidArgument& e) {
+      const std::string what = e.what();
+      EXPECT_NE(what.find("shard.json:" + std::to_string(line_of(text, needle)) + ":"), std::string::npos) << what;
+      EXPECT_NE(what.find(c.message), std::string::npos) << what;
+    }
+  }
+  EXPECT_EQ(merge_diagrams(std::vector<MergeInput>{{"shard.json", good}}).points.size(), spec.size());
+}
+
+TEST(PointIo, FailedPointWritesNoNanText) {
+  const DiagramSpec spec = small_spec();
+  PointResult p;
+  p.index = 3;
+  p.status = IntegrationStatus::non_finite_state;
+  p.verdict = Verdict::failed;
+  p.l_Delta = 4;
+  p.growth = std::nan("");
+  p.sigma_final = std::nan("");
+  p.t_reached = 1.5;
+  p.reason = "state became non-finite";
+  const std::string line = point_to_line(p, "0123456789abcdef");
+  EXPECT_EQ(line.find("nan"), std::string::npos) << line;
+  const auto back = parse_point_line(line, "0123456789abcdef", spec, 5);
+  ASSERT_TRUE(back.point) << back.error;
+  EXPECT_TRUE(std::isnan(back.point->sigma_final));
+  EXPECT_EQ(point_to_line(*back.point, "0123456789abcdef"), line);
+  const std::string csv = diagram_csv(spec, {*back.point}, {true});
+  EXPECT_EQ(csv.find("nan"), std::string::npos) << csv;
+  EXPECT_NE(csv.find(",4,,0,,non_finite_state,1.5,"), std::string::npos) << csv;
+  // A real failed run (a step limit) too.
+  SimulationOptions so;
+  so.integrator.max_steps = 3;
+  const DiagramRun r = run_diagram(small_scene(), so, spec, {});
+  ASSERT_EQ(r.points.front().verdict, Verdict::failed);
+  EXPECT_EQ(diagram_csv(spec, r.points, {false}).find("nan"), std::string::npos);
+}
 }  // namespace
 }  // namespace rbcstab
 

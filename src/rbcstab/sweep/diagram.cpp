@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
-#include <cstdint>
 #include <exception>
 #include <map>
 #include <memory>
@@ -125,6 +124,11 @@ std::pair<int, double> argmax_growth(const std::vector<double>& X, const std::ve
 }
 }  // namespace
 
+Verdict verdict_of(IntegrationStatus status, int l_Delta) {
+  if (status != IntegrationStatus::success) return Verdict::failed;
+  return l_Delta >= 3 ? Verdict::unstable : Verdict::stable;
+}
+
 PointResult run_point(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec,
                       std::size_t index) {
   const Scene scene = point_scene(base, spec, index);
@@ -149,9 +153,7 @@ PointResult run_point(const Scene& base, const SimulationOptions& options, const
   p.failed_steps = r.counters.failed_steps;
   p.rhs_evaluations = r.counters.rhs_evaluations;
   p.seconds = r.seconds;
-  p.verdict = r.status != IntegrationStatus::success ? Verdict::failed
-              : p.l_Delta >= 3                         ? Verdict::unstable
-                                                       : Verdict::stable;
+  p.verdict = verdict_of(p.status, p.l_Delta);
   return p;
 }
 
@@ -163,16 +165,7 @@ std::string config_hash(const Scene& base, const SimulationOptions& options, con
   text << to_toml(f) << "x " << to_string(spec.x.axis) << ' ' << exact(spec.x.min) << ' ' << exact(spec.x.max) << ' '
        << spec.x.count << "\ny " << to_string(spec.y.axis) << ' ' << exact(spec.y.min) << ' ' << exact(spec.y.max)
        << ' ' << spec.y.count << "\nclassifier " << to_string(spec.classifier) << "\nalpha " << exact(spec.alpha) << "\n";
-  std::uint64_t h = 1469598103934665603ull;  // FNV-1a 64
-  for (unsigned char c : text.str()) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  char buf[17];
-  static const char* hex = "0123456789abcdef";
-  for (int k = 15; k >= 0; --k, h >>= 4) buf[k] = hex[h & 15];
-  buf[16] = 0;
-  return buf;
+  return fnv1a_hex(text.str());
 }
 
 DiagramRun run_diagram(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec,
@@ -199,8 +192,11 @@ DiagramRun run_diagram(const Scene& base, const SimulationOptions& options, cons
   DiagramRun run;
   run.config_hash = config_hash(base, options, spec);
   std::unique_ptr<detail::Journal> journal;
-  if (!run_options.journal.empty())
-    journal = std::make_unique<detail::Journal>(run_options.journal, run.config_hash, spec, run_options.sync_interval);
+  if (!run_options.journal.empty()) {
+    journal = std::make_unique<detail::Journal>(run_options.journal, run.config_hash, spec, base.L,
+                                                run_options.sync_interval);
+    run.rejected = journal->rejected();
+  }
 
   std::map<std::size_t, PointResult> results;
   std::vector<std::size_t> pending;

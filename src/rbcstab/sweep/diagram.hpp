@@ -66,6 +66,9 @@ struct EnumTable<Verdict> {
       {Verdict::stable, "stable"}, {Verdict::unstable, "unstable"}, {Verdict::failed, "failed"}};
 };
 
+// A point's verdict: failed unless the integrator reached T, else unstable iff l_Delta >= 3.
+Verdict verdict_of(IntegrationStatus status, int l_Delta);
+
 struct PointResult {
   std::size_t index = 0;
   int i = 0, j = 0;               // grid position (x, y)
@@ -106,7 +109,7 @@ struct DiagramOptions {
   int threads = 1;                 // worker threads; 0 = std::thread::hardware_concurrency()
   bool dynamic_schedule = true;    // dynamic: next free point; static: worker w takes every threads-th point
   Shard shard;                     // the slice of the grid this job owns
-  std::string journal;             // append-only checkpoint file; empty = none (no resume)
+  std::string journal;             // append-only checkpoint file, locked for the run; empty = none (no resume)
   double sync_interval = 1.0;      // fdatasync the journal at most this often [s]; every line is write()n at once,
                                    // so a killed process loses nothing, only a power cut could lose <= this much
   double progress_interval = 1.0;  // seconds between on_progress calls
@@ -119,6 +122,7 @@ struct DiagramRun {
   std::vector<PointResult> points;  // this job's points in index order (all of them unless interrupted)
   std::size_t computed = 0;         // simulated in this run
   std::size_t resumed = 0;          // read back from the journal
+  std::vector<std::string> rejected;  // "journal:line: why" of each journal record dropped and recomputed
   bool complete = false;            // every point of the job is in `points`
   std::string config_hash;          // hash of everything that determines the points
   double seconds = 0;
@@ -129,7 +133,9 @@ struct DiagramRun {
 std::string config_hash(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec);
 
 // Runs (or resumes) this job's points with a thread pool. A journal written for another
-// configuration is refused (InvalidArgument("journal", ...)).
+// configuration, by an older format, or being written by another process (it names that process)
+// is refused (InvalidArgument("journal", ...)); a corrupt, foreign or duplicated record in it is
+// listed in DiagramRun::rejected and its point recomputed.
 DiagramRun run_diagram(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec,
                        const DiagramOptions& run_options);
 

@@ -1,6 +1,10 @@
 #include "rbcstab/sweep/diagram_output.hpp"
 
+#include <algorithm>
+#include <climits>
 #include <cmath>
+#include <functional>
+#include <iterator>
 #include <map>
 #include <sstream>
 
@@ -25,6 +29,8 @@ AxisRange axis_from_json(const nlohmann::json& j) {
   return a;
 }
 double number(const nlohmann::json& j) { return j.is_null() ? std::nan("") : j.get<double>(); }
+// A failed point's non-finite value is an empty field (its status column says why), never "nan".
+std::string csv_number(double v) { return std::isfinite(v) ? exact(v) : ""; }
 }  // namespace
 
 nlohmann::json diagram_header(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec) {
@@ -51,10 +57,10 @@ std::string diagram_csv(const DiagramSpec& spec, const std::vector<PointResult>&
   ss << '\n';
   for (const PointResult& p : points) {
     ss << p.index << ',' << p.i << ',' << p.j << ',' << exact(p.x) << ',' << exact(p.y) << ',' << to_string(p.verdict)
-       << ',' << p.l_Delta << ',' << exact(p.growth) << ',' << int(p.oscillating) << ',' << exact(p.sigma_final) << ','
-       << to_string(p.status) << ',' << exact(p.t_reached) << ',' << p.steps << ',' << p.failed_steps << ','
+       << ',' << p.l_Delta << ',' << csv_number(p.growth) << ',' << int(p.oscillating) << ','
+       << csv_number(p.sigma_final) << ',' << to_string(p.status) << ',' << csv_number(p.t_reached) << ',' << p.steps << ',' << p.failed_steps << ','
        << p.rhs_evaluations;
-    if (o.include_seconds) ss << ',' << exact(p.seconds);
+    if (o.include_seconds) ss << ',' << csv_number(p.seconds);
     ss << '\n';
   }
   return ss.str();
@@ -169,38 +175,153 @@ DiagramSpec spec_from_json(const nlohmann::json& doc) {
   }
 }
 
-std::vector<PointResult> points_from_json(const nlohmann::json& doc, const DiagramSpec& spec) {
-  std::vector<PointResult> out;
+namespace {
+// Where a point's field sits, for error messages: (point position k in "points", field name).
+using Where = std::function<std::string(std::size_t k, const std::string& field)>;
+
+// The modes l = 2..L of the document's scene (no bound when it carries no scene).
+int modes_of(const nlohmann::json& doc) {
+  if (!doc.contains("scene_toml")) return INT_MAX;
   try {
-    for (const auto& r : doc.at("points")) {
-      PointResult p;
-      p.index = r.at("index").get<std::size_t>();
-      if (p.index >= spec.size()) throw InvalidArgument("merge", "point index " + std::to_string(p.index) + " is outside the grid");
-      p.i = int(p.index % std::size_t(spec.x.count));
-      p.j = int(p.index / std::size_t(spec.x.count));
-      p.x = spec.x.value(p.i);
-      p.y = spec.y.value(p.j);
-      p.verdict = try_from_string<Verdict>(r.at("verdict").get<std::string>()).value_or(Verdict::failed);
-      p.l_Delta = r.at("l_Delta").get<int>();
-      p.growth = number(r.at("growth"));
-      p.oscillating = r.at("oscillating").get<bool>();
-      p.sigma_final = number(r.at("sigma_final"));
-      if (const auto st = try_from_string<IntegrationStatus>(r.at("status").get<std::string>())) p.status = *st;
-      p.reason = r.at("reason").get<std::string>();
-      p.t_reached = number(r.at("t_reached"));
-      p.steps = r.at("steps").get<std::size_t>();
-      p.failed_steps = r.at("failed_steps").get<std::size_t>();
-      p.rhs_evaluations = r.at("rhs_evaluations").get<std::size_t>();
-      p.seconds = r.contains("seconds") ? r.at("seconds").get<double>() : 0.0;
-      out.push_back(std::move(p));
-    }
-  } catch (const nlohmann::json::exception& e) {
-    throw InvalidArgument("merge", std::string("malformed diagram points: ") + e.what());
+    return parse_scene(doc.at("scene_toml").get<std::string>()).scene.L;
+  } catch (const std::exception& e) {
+    throw InvalidArgument("merge", std::string("the scene_toml of the diagram JSON is invalid: ") + e.what());
+  }
+}
+
+// Every value is checked (names in the enum tables, point_value_error), never defaulted: a merge must
+// not turn an unreadable value into a plausible one.
+std::vector<PointResult> read_points(const nlohmann::json& doc, const DiagramSpec& spec, const Where& where) {
+  const int L = modes_of(doc);
+  std::vector<PointResult> out;
+  if (!doc.contains("points") || !doc.at("points").is_array())
+    throw InvalidArgument("merge", "malformed diagram JSON: no \"points\" array");
+  std::size_t k = 0;
+  for (const auto& r : doc.at("points")) {
+    auto field = [&](const std::string& key, auto&& read) {
+      try {
+        read(r.at(key));
+      } catch (const nlohmann::json::exception& e) {
+        const std::string value = r.is_object() && r.contains(key) ? r.at(key).dump() : "missing";
+        throw InvalidArgument("merge", where(k, key) + ": " + key + " = " + value + " is not valid (" + e.what() + ")");
+      } catch (const InvalidArgument& e) {
+        throw InvalidArgument("merge", where(k, key) + ": " + e.what());
+      }
+    };
+    PointResult p;
+    field("index", [&](const nlohmann::json& v) { p.index = v.get<std::size_t>(); });
+    field("verdict", [&](const nlohmann::json& v) { p.verdict = from_string<Verdict>(v.get<std::string>(), "verdict"); });
+    field("status", [&](const nlohmann::json& v) { p.status = from_string<IntegrationStatus>(v.get<std::string>(), "status"); });
+    field("l_Delta", [&](const nlohmann::json& v) { p.l_Delta = v.get<int>(); });
+    field("growth", [&](const nlohmann::json& v) { p.growth = number(v); });
+    field("oscillating", [&](const nlohmann::json& v) { p.oscillating = v.get<bool>(); });
+    field("sigma_final", [&](const nlohmann::json& v) { p.sigma_final = number(v); });
+    field("reason", [&](const nlohmann::json& v) { p.reason = v.get<std::string>(); });
+    field("t_reached", [&](const nlohmann::json& v) { p.t_reached = number(v); });
+    field("steps", [&](const nlohmann::json& v) { p.steps = v.get<std::size_t>(); });
+    field("failed_steps", [&](const nlohmann::json& v) { p.failed_steps = v.get<std::size_t>(); });
+    field("rhs_evaluations", [&](const nlohmann::json& v) { p.rhs_evaluations = v.get<std::size_t>(); });
+    if (r.contains("seconds")) field("seconds", [&](const nlohmann::json& v) { p.seconds = v.get<double>(); });
+    if (const FieldError e = point_value_error(p, spec, L); !e.empty())
+      throw InvalidArgument("merge", where(k, e.field) + ": " + e.why);
+    p.i = int(p.index % std::size_t(spec.x.count));
+    p.j = int(p.index / std::size_t(spec.x.count));
+    p.x = spec.x.value(p.i);
+    p.y = spec.y.value(p.j);
+    out.push_back(std::move(p));
+    ++k;
   }
   return out;
 }
 
-MergeResult merge_diagrams(const std::vector<nlohmann::json>& docs) {
+// The line of field `key` of element k of the top-level "points" array in text (the line of the
+// element when the key is missing; 0 when not found). nlohmann::json keeps no positions, so the
+// text is parsed again with a SAX handler over an iterator that counts the characters read.
+class PointLineFinder : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  PointLineFinder(const std::string& text, const std::size_t& consumed, std::size_t k, std::string key)
+      : text_(text), consumed_(consumed), k_(k), key_(std::move(key)) {}
+  std::size_t line() const { return line_; }
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override {
+    ++depth_;
+    if (depth_ == 3 && in_points_ && element_++ == k_) line_ = here();
+    return true;
+  }
+  bool key(string_t& name) override {
+    if (depth_ == 1) in_points_ = name == "points";
+    if (depth_ == 3) key_here_ = name;
+    return true;
+  }
+  bool end_object() override {
+    if (depth_ == 1) in_points_ = false;
+    --depth_;
+    return true;
+  }
+  bool start_array(std::size_t) override { return ++depth_, true; }
+  bool end_array() override {
+    if (depth_ == 2) in_points_ = false;
+    return --depth_, true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override { return false; }
+
+ private:
+  const std::string& text_;
+  const std::size_t& consumed_;
+  std::size_t k_;
+  std::string key_, key_here_;
+  int depth_ = 0;
+  bool in_points_ = false;
+  std::size_t element_ = 0, line_ = 0;
+  // The lexer reads one character past a number before it reports it: count lines before that one.
+  std::size_t here() const {
+    const std::size_t end = std::min(text_.size(), consumed_ > 0 ? consumed_ - 1 : 0);
+    return 1 + std::size_t(std::count(text_.begin(), text_.begin() + std::ptrdiff_t(end), '\n'));
+  }
+  bool value() {
+    if (depth_ == 3 && in_points_ && element_ == k_ + 1 && key_here_ == key_) line_ = here();
+    return true;
+  }
+};
+
+struct CountingIterator {
+  using iterator_category = std::input_iterator_tag;
+  using value_type = char;
+  using difference_type = std::ptrdiff_t;
+  using pointer = const char*;
+  using reference = const char&;
+  const char* p;
+  std::size_t* consumed;
+  reference operator*() const { return *p; }
+  CountingIterator& operator++() {
+    ++p;
+    ++*consumed;
+    return *this;
+  }
+  CountingIterator operator++(int) {
+    CountingIterator old = *this;
+    ++*this;
+    return old;
+  }
+  bool operator==(const CountingIterator& o) const { return p == o.p; }
+};
+
+std::size_t point_line(const std::string& text, std::size_t k, const std::string& key) {
+  std::size_t consumed = 0;
+  PointLineFinder finder(text, consumed, k, key);
+  nlohmann::json::sax_parse(CountingIterator{text.data(), &consumed}, CountingIterator{text.data() + text.size(), &consumed},
+                            &finder);
+  return finder.line();
+}
+
+MergeResult merge(const std::vector<nlohmann::json>& docs, const std::vector<Where>& where) {
   if (docs.empty()) throw InvalidArgument("merge", "nothing to merge: give at least one diagram JSON");
   MergeResult m;
   m.spec = spec_from_json(docs.front());
@@ -214,7 +335,7 @@ MergeResult merge_diagrams(const std::vector<nlohmann::json>& docs) {
                                          docs[d].value("config_hash", "") + "', input 1 has '" + hash +
                                          "': they are not shards of one diagram");
     m.seconds_present = m.seconds_present && docs[d].value("seconds_included", false);
-    for (PointResult& p : points_from_json(docs[d], m.spec)) {
+    for (PointResult& p : read_points(docs[d], m.spec, where[d])) {
       auto [it, inserted] = all.emplace(p.index, p);
       if (!inserted && (it->second.l_Delta != p.l_Delta || it->second.verdict != p.verdict ||
                         it->second.rhs_evaluations != p.rhs_evaluations))
@@ -225,6 +346,40 @@ MergeResult merge_diagrams(const std::vector<nlohmann::json>& docs) {
     if (!all.count(idx)) m.missing.push_back(idx);
   for (auto& [idx, p] : all) m.points.push_back(std::move(p));
   return m;
+}
+
+Where position_in(const std::string& input) {
+  return [input](std::size_t k, const std::string& field) {
+    return input + " points[" + std::to_string(k) + "]." + field;
+  };
+}
+}  // namespace
+
+std::vector<PointResult> points_from_json(const nlohmann::json& doc, const DiagramSpec& spec) {
+  return read_points(doc, spec, position_in("diagram JSON"));
+}
+
+MergeResult merge_diagrams(const std::vector<nlohmann::json>& docs) {
+  std::vector<Where> where;
+  for (std::size_t d = 0; d < docs.size(); ++d) where.push_back(position_in("input " + std::to_string(d + 1)));
+  return merge(docs, where);
+}
+
+MergeResult merge_diagrams(const std::vector<MergeInput>& inputs) {
+  std::vector<nlohmann::json> docs;
+  std::vector<Where> where;
+  for (const MergeInput& in : inputs) {
+    try {
+      docs.push_back(nlohmann::json::parse(in.text));
+    } catch (const nlohmann::json::exception& e) {
+      throw InvalidArgument("merge", "'" + in.name + "' is not JSON: " + e.what());
+    }
+    where.push_back([&in](std::size_t k, const std::string& field) {
+      const std::size_t line = point_line(in.text, k, field);
+      return in.name + ":" + (line ? std::to_string(line) : "?") + ": points[" + std::to_string(k) + "]." + field;
+    });
+  }
+  return merge(docs, where);
 }
 
 }  // namespace rbcstab

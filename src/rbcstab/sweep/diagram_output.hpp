@@ -31,7 +31,9 @@ nlohmann::json diagram_json(const nlohmann::json& header, const DiagramSpec& spe
 nlohmann::json agreement_json(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points,
                               const AgreementOptions& options = {});
 
-// The spec and points back from a diagram_json document (throws InvalidArgument("merge", ...)).
+// The spec and points back from a diagram_json document (throws InvalidArgument("merge", ...) naming
+// the point and field of any value that is not a verdict/status name, a number where one is due, or
+// that point_value_error refuses, e.g. l_Delta outside [2, L]).
 DiagramSpec spec_from_json(const nlohmann::json& doc);
 std::vector<PointResult> points_from_json(const nlohmann::json& doc, const DiagramSpec& spec);
 
@@ -45,5 +47,11 @@ struct MergeResult {
 // Merges shard outputs of one diagram: they must share the config hash; a point held twice must
 // agree (deterministic runs) or it throws InvalidArgument("merge", ...).
 MergeResult merge_diagrams(const std::vector<nlohmann::json>& docs);
+// The same from files' text: errors name the file and the line of the offending value ("cc.json:57: ...").
+struct MergeInput {
+  std::string name;  // the file name, for messages
+  std::string text;  // its content
+};
+MergeResult merge_diagrams(const std::vector<MergeInput>& inputs);
 
 }  // namespace rbcstab

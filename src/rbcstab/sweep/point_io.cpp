@@ -2,8 +2,11 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdint>
 #include <sstream>
 #include <vector>
+
+#include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
 
@@ -15,13 +18,29 @@ std::string exact(double v) {
   return std::string(buf, r.ptr);
 }
 
+std::string fnv1a_hex(std::string_view text) {
+  std::uint64_t h = 1469598103934665603ull;
+  for (unsigned char c : text) {
+    h ^= c;
+    h *= 1099511628211ull;
+  }
+  char buf[16];
+  static const char* hex = "0123456789abcdef";
+  for (int k = 15; k >= 0; --k, h >>= 4) buf[k] = hex[h & 15];
+  return std::string(buf, 16);
+}
+
 namespace {
+constexpr std::size_t kFields = 14;
+constexpr std::string_view kChecksumMark = " *";
+constexpr std::size_t kChecksumDigits = 16;
+
+// A non-finite value (a failed point's growth or sigma_final) is "-": the journal never holds "nan".
+std::string number_text(double v) { return std::isfinite(v) ? exact(v) : "-"; }
 bool parse_double(const std::string& s, double& out) {
-  if (s == "nan") return out = std::nan(""), true;
-  if (s == "inf") return out = INFINITY, true;
-  if (s == "-inf") return out = -INFINITY, true;
+  if (s == "-") return out = std::nan(""), true;
   const auto r = std::from_chars(s.data(), s.data() + s.size(), out);
-  return r.ec == std::errc() && r.ptr == s.data() + s.size();
+  return r.ec == std::errc() && r.ptr == s.data() + s.size() && std::isfinite(out);
 }
 template <class Int>
 bool parse_int(const std::string& s, Int& out) {
@@ -36,40 +55,86 @@ std::string point_to_line(const PointResult& p, const std::string& config_hash) 
     if (c == '\n' || c == '\r') c = ' ';
   std::ostringstream ss;
   ss << "P " << config_hash << ' ' << p.index << ' ' << to_string(p.verdict) << ' ' << p.l_Delta << ' '
-     << exact(p.growth) << ' ' << int(p.oscillating) << ' ' << exact(p.sigma_final) << ' ' << to_string(p.status)
-     << ' ' << exact(p.t_reached) << ' ' << p.steps << ' ' << p.failed_steps << ' ' << p.rhs_evaluations << ' '
-     << exact(p.seconds) << " |" << reason << '\n';
-  return ss.str();
+     << number_text(p.growth) << ' ' << int(p.oscillating) << ' ' << number_text(p.sigma_final) << ' '
+     << to_string(p.status) << ' ' << number_text(p.t_reached) << ' ' << p.steps << ' ' << p.failed_steps << ' '
+     << p.rhs_evaluations << ' ' << number_text(p.seconds) << " |" << reason;
+  const std::string body = ss.str();
+  return body + std::string(kChecksumMark) + fnv1a_hex(body) + '\n';
 }
 
-std::optional<PointResult> point_from_line(const std::string& line, const std::string& config_hash,
-                                           const DiagramSpec& spec) {
-  const auto bar = line.find(" |");
-  if (bar == std::string::npos) return std::nullopt;
-  std::istringstream ss(line.substr(0, bar));
+FieldError point_value_error(const PointResult& p, const DiagramSpec& spec, int L) {
+  if (p.index >= spec.size())
+    return {"index", "index " + std::to_string(p.index) + " is outside the grid (0.." + std::to_string(spec.size() - 1) + ")"};
+  if (p.l_Delta < 2 || p.l_Delta > L)
+    return {"l_Delta", "l_Delta " + std::to_string(p.l_Delta) + " is outside [2, " + std::to_string(L) + "]"};
+  const Verdict v = verdict_of(p.status, p.l_Delta);
+  if (p.verdict != v)
+    return {"verdict", "verdict " + to_string(p.verdict) + " contradicts status " + to_string(p.status) +
+                           " and l_Delta " + std::to_string(p.l_Delta) + " (which give " + to_string(v) + ")"};
+  if (p.verdict != Verdict::failed) {
+    if (!std::isfinite(p.growth))
+      return {"growth", "growth " + exact(p.growth) + " of a " + to_string(p.verdict) + " point is not finite"};
+    if (!std::isfinite(p.sigma_final))
+      return {"sigma_final", "sigma_final " + exact(p.sigma_final) + " of a " + to_string(p.verdict) + " point is not finite"};
+  }
+  if (!(std::isfinite(p.t_reached) && p.t_reached >= 0))
+    return {"t_reached", "t_reached " + exact(p.t_reached) + " is not finite and >= 0"};
+  if (!(std::isfinite(p.seconds) && p.seconds >= 0))
+    return {"seconds", "seconds " + exact(p.seconds) + " is not finite and >= 0"};
+  return {};
+}
+
+ParsedPoint parse_point_line(const std::string& line, const std::string& config_hash, const DiagramSpec& spec, int L) {
+  std::string text = line;
+  if (text.empty() || text.back() != '\n') return {std::nullopt, "incomplete record (no end of line)"};
+  text.pop_back();
+  const std::size_t tail = kChecksumMark.size() + kChecksumDigits;
+  if (text.size() < tail || text.compare(text.size() - tail, kChecksumMark.size(), kChecksumMark) != 0)
+    return {std::nullopt, "no checksum at the end of the record"};
+  const std::string body = text.substr(0, text.size() - tail);
+  const std::string sum = text.substr(text.size() - kChecksumDigits);
+  if (fnv1a_hex(body) != sum)
+    return {std::nullopt, "checksum " + sum + " does not match the record (it was edited or corrupted)"};
+  const auto bar = body.find(" |");
+  if (bar == std::string::npos) return {std::nullopt, "malformed record (no ' |' before the reason)"};
+  std::istringstream ss(body.substr(0, bar));
   std::vector<std::string> f;
   for (std::string w; ss >> w;) f.push_back(w);
-  if (f.size() != 14 || f[0] != "P" || f[1] != config_hash) return std::nullopt;
+  if (f.size() != kFields || f[0] != "P")
+    return {std::nullopt, "malformed record (" + std::to_string(f.size()) + " fields, expected 'P' and " +
+                              std::to_string(kFields - 1) + ")"};
+  if (f[1] != config_hash)
+    return {std::nullopt, "record of another configuration (hash " + f[1] + ", this run's is " + config_hash + ")"};
   PointResult p;
   int osc = 0;
-  bool ok = parse_int(f[2], p.index) && p.index < spec.size() && parse_int(f[4], p.l_Delta) &&
-            parse_double(f[5], p.growth) && parse_int(f[6], osc) && parse_double(f[7], p.sigma_final) &&
-            parse_double(f[9], p.t_reached) && parse_int(f[10], p.steps) && parse_int(f[11], p.failed_steps) &&
-            parse_int(f[12], p.rhs_evaluations) && parse_double(f[13], p.seconds);
-  if (!ok) return std::nullopt;
-  const auto verdict = try_from_string<Verdict>(f[3]);
-  const auto status = try_from_string<IntegrationStatus>(f[8]);
-  if (!verdict || !status) return std::nullopt;
-  p.verdict = *verdict;
-  p.status = *status;
+  const std::pair<const char*, bool> checks[] = {
+      {"index", parse_int(f[2], p.index)},        {"l_Delta", parse_int(f[4], p.l_Delta)},
+      {"growth", parse_double(f[5], p.growth)},    {"oscillating", parse_int(f[6], osc) && (osc == 0 || osc == 1)},
+      {"sigma_final", parse_double(f[7], p.sigma_final)}, {"t_reached", parse_double(f[9], p.t_reached)},
+      {"steps", parse_int(f[10], p.steps)},        {"failed_steps", parse_int(f[11], p.failed_steps)},
+      {"rhs_evaluations", parse_int(f[12], p.rhs_evaluations)}, {"seconds", parse_double(f[13], p.seconds)}};
+  static const std::size_t field_of[] = {2, 4, 5, 6, 7, 9, 10, 11, 12, 13};
+  for (std::size_t k = 0; k < std::size(checks); ++k)
+    if (!checks[k].second) return {std::nullopt, std::string(checks[k].first) + " '" + f[field_of[k]] + "' is not valid"};
+  try {
+    p.verdict = from_string<Verdict>(f[3], "verdict");
+    p.status = from_string<IntegrationStatus>(f[8], "status");
+  } catch (const InvalidArgument& e) {
+    return {std::nullopt, e.what()};
+  }
   p.oscillating = osc != 0;
-  p.reason = line.substr(bar + 2);
-  while (!p.reason.empty() && (p.reason.back() == '\n' || p.reason.back() == '\r')) p.reason.pop_back();
+  p.reason = body.substr(bar + 2);
+  if (FieldError e = point_value_error(p, spec, L); !e.empty()) return {std::nullopt, e.why};
   p.i = int(p.index % std::size_t(spec.x.count));
   p.j = int(p.index / std::size_t(spec.x.count));
   p.x = spec.x.value(p.i);
   p.y = spec.y.value(p.j);
-  return p;
+  return {p, {}};
+}
+
+std::optional<PointResult> point_from_line(const std::string& line, const std::string& config_hash,
+                                           const DiagramSpec& spec) {
+  return parse_point_line(line, config_hash, spec).point;
 }
 
 }  // namespace rbcstab
