@@ -1,15 +1,10 @@
-// rbcstab continue: an equilibrium branch (reduced system, modal or full model) or a periodic-orbit branch
-// (reduced or modal) in one parameter, or a special point's curve in two, with its special points
-// (AUTO-07p labels), as CSV and/or one JSON object and/or a branch file; or a restart from a labelled
-// point of a branch file. The library decides (continuation/scene_continuation.hpp), renders
-// (continuation/branch_io.hpp) and saves and loads (continuation/branch_file.hpp); this file maps flags to
-// a BranchSpec or RestartChanges and prints.
+// rbcstab continue: maps flags to a BranchSpec, CurveSpec or RestartRequest; the library decides
+// (continuation/scene_continuation.hpp), renders (branch_io.hpp) and saves and loads (branch_file.hpp).
 #include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <variant>
-#include <sstream>
 
 #include "checks.hpp"
 #include "commands.hpp"
@@ -54,21 +49,6 @@ struct ContinueOptions {
       *o_max_points{}, *o_label_every{}, *o_segments{}, *o_relax_T{}, *o_label{}, *o_switch_at{};
 };
 
-TableOptions table_options(const ContinueOptions& o) {
-  TableOptions t;
-  std::istringstream ss(o.measures);
-  for (std::string name; std::getline(ss, name, ',');)
-    if (!name.empty()) t.measures.push_back(name);
-  return t;
-}
-
-// The truncation of a run's scene (a curve: the scene of the branch it starts from).
-int truncation_L(const SceneBranch& r) { return r.spec.scene.L; }
-int truncation_L(const SceneCurve& r) { return r.one.spec.scene.L; }
-int truncation_L(const ContinuationRun& run) {
-  return std::visit([](const auto& r) { return truncation_L(r); }, run);
-}
-
 // The same for a branch and a curve: every output rendered first (a rendering error writes nothing),
 // then the CSV and branch files, then JSON or text.
 template <class Result>
@@ -78,10 +58,10 @@ void print(const ContinueOptions& o, const std::string& L_reason, const Result& 
   std::string out;
   if (o.json) {
     nlohmann::json j = to_json(r);
-    put_truncation(j, truncation_L(r), L_reason);
+    put_truncation(j, run_L(r), L_reason);
     out = j.dump(2) + "\n";
   } else {
-    out = to_text(r, table_options(o));
+    out = to_text(r, TableOptions::from_list(o.measures));
   }
   std::vector<OutputFile> files;
   if (!o.csv.empty()) files.push_back({o.csv, csv, "--csv"});
@@ -90,37 +70,21 @@ void print(const ContinueOptions& o, const std::string& L_reason, const Result& 
   std::cout << out;
 }
 
-int report(const ContinueOptions& o, const std::string& L_reason, const SceneBranch& r) {
-  if (!r.start.converged || r.start.refused) {
-    std::cerr << "rbcstab: " << r.start.message << "\n";
-    return kRunFailed;
-  }
-  if (!r.start.message.empty()) std::cerr << "rbcstab: note: " << r.start.message << "\n";
-  print(o, L_reason, r);
-  if (r.switched && !r.switched->switched) {
-    std::cerr << "rbcstab: branch switching failed: " << r.switched->message << "\n";
-    return kRunFailed;
-  }
-  const Branch& b = r.branch.branch;
-  if (!ended_normally(b.status)) {
-    std::cerr << "rbcstab: continuation stopped: " << to_string(b.status) << ": " << b.message << "\n";
-    return kRunFailed;
-  }
-  return kOk;
+template <class Result>
+int report(const ContinueOptions& o, const std::string& L_reason, const Result& r) {
+  const RunOutcome out = outcome(r);
+  if (!out.note.empty()) std::cerr << "rbcstab: note: " << out.note << "\n";
+  if (out.has_output) print(o, L_reason, r);
+  if (out.failure.empty()) return kOk;
+  std::cerr << "rbcstab: " << out.failure << "\n";
+  return kRunFailed;
 }
 
-int report(const ContinueOptions& o, const std::string& L_reason, const SceneCurve& r) {
-  if (!r.started) {
-    std::cerr << "rbcstab: " << r.message << "\n";
-    return kRunFailed;
-  }
-  print(o, L_reason, r);
-  const Branch& c = r.curve.branch;
-  if (!ended_normally(c.status)) {
-    std::cerr << "rbcstab: curve continuation stopped: " << to_string(c.status) << ": " << c.message << "\n";
-    return kRunFailed;
-  }
-  return kOk;
+// The continuation parameters' names, from the parameter table.
+std::string parameter_names() {
+  std::string names;
+  for (const auto& n : continuation_parameter_names()) names += (names.empty() ? "" : ", ") + n;
+  return names;
 }
 
 // --parameter2 by name (the message names the flag).
@@ -128,19 +92,16 @@ ContinuationParameter parameter2(const std::string& name) {
   try {
     return continuation_parameter_from_string(name);
   } catch (const InvalidArgument&) {
-    std::string names;
-    for (const auto& n : continuation_parameter_names()) names += (names.empty() ? "" : ", ") + n;
-    throw InvalidArgument("parameter2", "parameter2 = '" + name + "' is not a continuation parameter: must be one of " + names);
+    throw InvalidArgument("parameter2", "parameter2 = '" + name + "' is not a continuation parameter: must be one of " +
+                                            parameter_names());
   }
 }
 
 // --restart FILE: from --label N (a branch in --parameter, or with --curve that point's curve) or
 // --switch-at N. The scene, kind and segments are the file's.
 int run_restart(const ContinueOptions& o, const std::optional<CurveSpec>& curve) {
-  if (o.label > 0 && o.switch_at > 0) throw InvalidArgument("switch_at", "--switch-at and --label cannot be combined");
-  if (o.label == 0 && o.switch_at == 0)
-    throw InvalidArgument("label", "--restart needs --label N (the labelled point to start from) or --switch-at N (a BP's label)");
-  if (o.switch_at > 0 && curve) throw InvalidArgument("switch_at", "--switch-at and --curve cannot be combined");
+  RestartRequest q{o.label, o.switch_at, curve, {}};
+  q.validate();
   const std::string from_file = "--restart takes the scene from the branch file: ";
   if (!o.scene.scene_path.empty()) throw InvalidArgument("restart", from_file + "--scene cannot change it");
   for (const std::string& flag : o.scene.given_flags())
@@ -149,7 +110,7 @@ int run_restart(const ContinueOptions& o, const std::optional<CurveSpec>& curve)
     if (f->count() > 0)
       throw InvalidArgument("restart", "--restart continues the file's states: " + f->get_name() + " cannot change");
   const ContinuationRun run = load_branch(o.restart);
-  RestartChanges ch;
+  RestartChanges& ch = q.changes;
   if (o.o_kind->count() > 0) ch.kind = problem_kind_from_string(o.kind);
   if (o.o_parameter->count() > 0) ch.parameter = continuation_parameter_from_string(o.parameter);
   if (o.o_min->count() > 0) ch.p_min = o.p_min;
@@ -160,10 +121,8 @@ int run_restart(const ContinueOptions& o, const std::optional<CurveSpec>& curve)
   if (o.o_max_points->count() > 0) ch.max_points = o.engine.max_points;
   if (o.o_label_every->count() > 0) ch.label_every = o.label_every;
   ch.switch_at_bp = o.switch_at_bp;
-  const std::string L_reason = "L = " + std::to_string(truncation_L(run)) + ": the branch file's scene (--restart)";
-  if (o.switch_at > 0) return report(o, L_reason, switch_at_label(run, o.switch_at, ch));
-  if (curve) return report(o, L_reason, restart_curve(run, o.label, *curve, ch));
-  return report(o, L_reason, restart(run, o.label, ch));
+  const std::string L_reason = "L = " + std::to_string(run_L(run)) + ": the branch file's scene (--restart)";
+  return std::visit([&](const auto& r) { return report(o, L_reason, r); }, restart(run, q));
 }
 
 int run(const ContinueOptions& o) {
@@ -198,7 +157,7 @@ int run(const ContinueOptions& o) {
   spec.switch_at_bp = o.switch_at_bp;
   spec.label_every = o.label_every;
   spec.allow_unstable_start = o.allow_unstable_start;
-  if (!curve) table_options(o).validate(measure_names(spec.kind, spec.scene.L));
+  if (!curve) TableOptions::from_list(o.measures).validate(measure_names(spec.kind, spec.scene.L));
   if (curve) return report(o, sf.L_reason, continue_curve(spec, *curve));
   return report(o, sf.L_reason, continue_scene(spec));
 }
@@ -208,15 +167,9 @@ static Runner add_continue(CLI::App& app) {
   auto o = std::make_shared<ContinueOptions>();
   o->scene.add_to(app);
   o->o_kind = app.add_option("--kind", o->kind,
-                 "what to continue: equilibrium (reduced system, out-of-plane rest shape), modal (modal-model "
-                 "equilibria with every Delta_l, out-of-plane rest shape: the ellipsoidal branch and its BPs where "
-                 "Upsilon_l(sigma) = 0) or orbit (periodic orbits "
-                 "of the forced in-plane reduced system: swinging/tumbling, Floquet multipliers, LPC/PD/NS, UZ "
-                 "swing_tumble) or modal-orbit (periodic orbits of the forced modal model relaxed from the scene, "
-                 "e.g. the in-plane post-instability state, with every Delta_l) or full (full-model equilibria, "
-                 "L <= 16, for stress-free shapes with l >= 3 content, initial.rest_delta_l in a scene file; "
-                 "beta = 0 or C = inf)")
-      ->capture_default_str();
+                              "what to continue: equilibrium (reduced system), modal, full (L <= 16: stress-free l >= 3 "
+                              "content), orbit (in-plane reduced orbits) or modal-orbit (docs/continuation.md)")
+                  ->capture_default_str();
   o->o_segments =
       app.add_option("--segments", o->orbit.segments, "orbit: number of multiple-shooting segments")->capture_default_str();
   app.add_flag("--switch-at-bp", o->switch_at_bp,
@@ -227,10 +180,9 @@ static Runner add_continue(CLI::App& app) {
   app.add_flag("--allow-unstable-start", o->allow_unstable_start,
                "orbit, modal-orbit: continue even when the orbit found at the start is unstable (by default that is "
                "refused with exit 1: the scene does not relax to it)");
-  o->o_parameter = app.add_option("--parameter", o->parameter,
-                 "free parameter: lambda, Delta, Delta0, B, C, Lambda, S or beta (the rest shape's orientation, "
-                 "[0, pi]; equilibria exist only at beta = 0 unless Delta0 = 0 or C = inf)")
-      ->capture_default_str();
+  o->o_parameter = app.add_option("--parameter", o->parameter, "free parameter: " + parameter_names() +
+                                                                    " (beta: the rest shape's orientation, [0, pi])")
+                      ->capture_default_str();
   o->o_min = app.add_option("--min", o->p_min,
                  "lower bound of the free parameter (the branch ends there exactly; default: none, 0 for lambda and beta)");
   o->o_max = app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly; default: none, pi for beta)");
@@ -253,8 +205,7 @@ static Runner add_continue(CLI::App& app) {
                  "transition, the orbit passing through r = 0, as a curve); default: none (one-parameter run)")
       ->check(CLI::IsMember({"LP", "BP", "HB", "LPC", "PD", "NS", "UZ"}));
   app.add_option("--parameter2", o->parameter2,
-                 "--curve: second free parameter (lambda, Delta, Delta0, B, C, Lambda, S or beta; independent of "
-                 "--parameter: not Lambda with Delta or lambda, not S with C or Delta0)");
+                 "--curve: second free parameter (" + parameter_names() + "), independent of --parameter");
   app.add_option("--min2", o->p2_min, "--curve: lower bound of --parameter2 (the curve ends there exactly; default: none)");
   app.add_option("--max2", o->p2_max, "--curve: upper bound of --parameter2 (the curve ends there exactly; default: none)");
   app.add_option("--point", o->point, "--curve: start from the K-th located special point of that type, integer >= 1")

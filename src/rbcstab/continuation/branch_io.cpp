@@ -325,6 +325,14 @@ std::string to_csv(const ContinuationRun& run) {
   return std::visit([](const auto& r) { return to_csv(r); }, run);
 }
 
+TableOptions TableOptions::from_list(const std::string& comma_separated) {
+  TableOptions t;
+  std::istringstream ss(comma_separated);
+  for (std::string name; std::getline(ss, name, ',');)
+    if (!name.empty()) t.measures.push_back(name);
+  return t;
+}
+
 void TableOptions::validate(const std::vector<std::string>& available) const {
   for (const std::string& name : measures)
     if (std::find(available.begin(), available.end(), name) == available.end()) {

@@ -52,6 +52,8 @@ struct TableOptions {
   std::vector<std::string> measures;
   // Throws InvalidArgument("measures", ...) for a name not in `available`.
   void validate(const std::vector<std::string>& available) const;
+  // The measures of a comma-separated list ("r,Psi,sigma"; empty names skipped).
+  static TableOptions from_list(const std::string& comma_separated);
 };
 
 std::string to_text(const SceneBranch& result, const TableOptions& table = {});

@@ -932,6 +932,46 @@ bool ended_normally(ContinuationStatus status) {
   return status == ContinuationStatus::completed || status == ContinuationStatus::outside_domain;
 }
 
+void RestartRequest::validate() const {
+  if (label > 0 && switch_at > 0) throw InvalidArgument("switch_at", "--switch-at and --label cannot be combined");
+  if (label <= 0 && switch_at <= 0)
+    throw InvalidArgument("label", "--restart needs --label N (the labelled point to start from) or --switch-at N (a BP's label)");
+  if (switch_at > 0 && curve) throw InvalidArgument("switch_at", "--switch-at and --curve cannot be combined");
+}
+
+ContinuationRun restart(const ContinuationRun& run, const RestartRequest& q) {
+  q.validate();
+  if (q.switch_at > 0) return switch_at_label(run, q.switch_at, q.changes);
+  if (q.curve) return restart_curve(run, q.label, *q.curve, q.changes);
+  return restart(run, q.label, q.changes);
+}
+
+RunOutcome outcome(const SceneBranch& r) {
+  RunOutcome o;
+  if (!r.start.converged || r.start.refused) return {false, "", r.start.message};
+  o.note = r.start.message;
+  const Branch& b = r.branch.branch;
+  if (r.switched && !r.switched->switched)
+    o.failure = "branch switching failed: " + r.switched->message;
+  else if (!ended_normally(b.status))
+    o.failure = "continuation stopped: " + to_string(b.status) + ": " + b.message;
+  return o;
+}
+
+RunOutcome outcome(const SceneCurve& r) {
+  RunOutcome o;
+  if (!r.started) return {false, "", r.message};
+  const Branch& c = r.curve.branch;
+  if (!ended_normally(c.status)) o.failure = "curve continuation stopped: " + to_string(c.status) + ": " + c.message;
+  return o;
+}
+
+int run_L(const SceneBranch& r) { return r.spec.scene.L; }
+int run_L(const SceneCurve& r) { return r.one.spec.scene.L; }
+int run_L(const ContinuationRun& run) {
+  return std::visit([](const auto& r) { return run_L(r); }, run);
+}
+
 // ---- restart ----
 
 std::vector<LabelledPoint> labelled_points(const ContinuationRun& run) {

@@ -317,8 +317,32 @@ SceneBranch switch_at_label(const ContinuationRun& run, int label, const Restart
 // CurveSpec::validate.
 SceneCurve restart_curve(const ContinuationRun& run, int label, const CurveSpec& curve,
                          const RestartChanges& changes = {});
+// One restart request, as `rbcstab continue --restart` takes it: from label (a branch, or with curve that
+// point's curve) or a switch at the BP labelled switch_at. validate() names the flags of a bad combination.
+struct RestartRequest {
+  int label = 0, switch_at = 0;
+  std::optional<CurveSpec> curve;
+  RestartChanges changes;
+  void validate() const;
+};
+ContinuationRun restart(const ContinuationRun& run, const RestartRequest& request);
 
 // A branch that ends at a stop condition or on the edge of its parameter's domain has ended normally.
 bool ended_normally(ContinuationStatus status);
+
+// How a run ended, for a front end: whether it has output to show (a start that failed or was refused has
+// none), a note (an unstable equilibrium start), and why it failed ("" when it did not): a failed start, a
+// failed switch, or a branch or curve that stopped before a normal end.
+struct RunOutcome {
+  bool has_output = true;
+  std::string note;
+  std::string failure;
+};
+RunOutcome outcome(const SceneBranch& run);
+RunOutcome outcome(const SceneCurve& run);
+// The truncation L of a run's scene (a curve: that of the branch it starts from).
+int run_L(const SceneBranch& run);
+int run_L(const SceneCurve& run);
+int run_L(const ContinuationRun& run);
 
 }  // namespace rbcstab
