@@ -5,20 +5,7 @@ file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
 set(traj "${WORK}/trajectory.csv")
 
-function(run_cli)
-  execute_process(COMMAND "${CLI}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
-                  WORKING_DIRECTORY "${WORK}" TIMEOUT 50)
-  set(rc "${rc}" PARENT_SCOPE)
-  set(out "${out}" PARENT_SCOPE)
-  set(err "${err}" PARENT_SCOPE)
-endfunction()
-
-function(expect_contains text fragment what)
-  string(FIND "${text}" "${fragment}" pos)
-  if(pos EQUAL -1)
-    message(FATAL_ERROR "${what}: expected '${fragment}' in:\n${text}")
-  endif()
-endfunction()
+include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
 
 # Bad input: exit code 2, the message names the flag/key and the allowed range, no trajectory file.
 function(expect_refused)

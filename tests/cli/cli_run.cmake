@@ -1,4 +1,5 @@
 # run_cli(<args>): runs the CLI in WORK; sets rc, out (stdout) and err (stderr) in the caller.
+# expect_contains(text fragment what): fails unless text contains fragment.
 # Shared by the CMake -P drivers of this folder.
 function(run_cli)
   execute_process(COMMAND "${CLI}" ${ARGN} RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err
@@ -6,4 +7,11 @@ function(run_cli)
   set(rc "${rc}" PARENT_SCOPE)
   set(out "${out}" PARENT_SCOPE)
   set(err "${err}" PARENT_SCOPE)
+endfunction()
+
+function(expect_contains text fragment what)
+  string(FIND "${text}" "${fragment}" pos)
+  if(pos EQUAL -1)
+    message(FATAL_ERROR "${what}: expected '${fragment}' in:\n${text}")
+  endif()
 endfunction()
