@@ -192,7 +192,11 @@ void b_table(std::ostream& os, const std::vector<const MeasuredBranch*>& branche
         else os << "unstable " << sp.unstable_before << " -> " << sp.unstable_after << '\n';
       } else {
         const BranchPoint& q = m.branch.points[k];
-        os << "  " << (q.stable ? "stable" : stability_word(q.n_unstable)) << '\n';
+        // The certified label: a margin within its error reads "uncertain", whatever the count says.
+        if (q.stability == Stability::uncertain)
+          os << "  uncertain (" << stability_word(q.n_unstable) << ")\n";
+        else
+          os << "  " << (q.stable ? "stable" : stability_word(q.n_unstable)) << '\n';
       }
     });
   }
