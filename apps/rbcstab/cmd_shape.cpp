@@ -1,6 +1,5 @@
 // rbcstab shape: the cell's 3-D shape at chosen times as VTK / VTP / PLY / CSV (no python needed).
 #include <cmath>
-#include <iomanip>
 #include <iostream>
 #include <memory>
 #include <set>
@@ -26,15 +25,6 @@ struct ShapeCliOptions {
   bool json = false;
 };
 
-std::string grid_csv(const ShapeGrid& g) {
-  std::ostringstream ss;
-  ss << std::setprecision(17) << "i,j,theta,phi,rho\n";
-  for (int i = 0; i <= g.n_theta; ++i)
-    for (int j = 0; j <= g.n_phi; ++j)
-      ss << i << ',' << j << ',' << g.theta[std::size_t(i)] << ',' << g.phi[std::size_t(j)] << ',' << g.at(i, j) << '\n';
-  return ss.str();
-}
-
 int run(const ShapeCliOptions& o) {
   const SceneFile sf = o.scene.resolve(TruncationUse::simulation);
   std::vector<double> times = o.at.empty() ? std::vector<double>{sf.scene.T} : o.at;
@@ -43,7 +33,7 @@ int run(const ShapeCliOptions& o) {
   const ShapeGridOptions grid_options{o.n_theta, 2 * o.n_theta};
   grid_options.validate();
   const AmplitudeSeries series = amplitudes_at(sf, times);
-  nlohmann::json files = nlohmann::json::array();
+  ShapeExport result{series.level.level, series.status, series.reason, {}};
   std::vector<OutputFile> outputs;
   for (std::size_t k = 0; k < series.t.size(); ++k) {
     const ShapeGrid g = shape_on_grid(series.f[k], grid_options);
@@ -57,21 +47,18 @@ int run(const ShapeCliOptions& o) {
       const std::string text = f == "vtk"   ? to_vtk_legacy(mesh, title)
                                : f == "vtp" ? to_vtk_xml(mesh)
                                : f == "ply" ? to_ply(mesh, title)
-                                            : grid_csv(g);
+                                            : to_csv(g);
       outputs.push_back({path, text, "--output"});
-      files.push_back({{"t", series.t[k]}, {"file", path}, {"rho_min", g.rho_min}, {"rho_max", g.rho_max}});
+      result.files.push_back({series.t[k], path, g.rho_min, g.rho_max});
     }
   }
   write_files_atomic(outputs);
   if (o.json) {
-    nlohmann::json j{{"model", to_string(series.level.level)}, {"status", to_string(series.status)},
-                     {"reason", series.reason}, {"files", files}};
+    nlohmann::json j = to_json(result);
     put_truncation(j, sf);
     std::cout << j.dump(2) << "\n";
   } else {
-    for (const auto& f : files)
-      std::cout << f.at("file").get<std::string>() << "  t = " << f.at("t").get<double>() << ", rho in ["
-                << f.at("rho_min").get<double>() << ", " << f.at("rho_max").get<double>() << "]\n";
+    std::cout << to_text(result);
   }
   if (series.status != IntegrationStatus::success) {
     std::cerr << "rbcstab: run stopped: " << series.reason << " (shapes written up to that time)\n";

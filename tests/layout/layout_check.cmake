@@ -1,11 +1,5 @@
 # Usage: cmake -DROOT=<source dir> -DCASE=detail_includes|citations -P layout_check.cmake
-cmake_minimum_required(VERSION 3.20)  # if(IN_LIST)
-
-# Cross-module detail includes tolerated for now, as "<file> <included header>" (paths from ROOT).
-# Removed when scene parsing is unified.
-set(DETAIL_INCLUDE_ALLOWLIST
-  "src/rbcstab/report/panels.cpp rbcstab/io/detail/scene_toml.hpp"
-  "src/rbcstab/sweep/diagram_file.cpp rbcstab/io/detail/scene_toml.hpp")
+cmake_minimum_required(VERSION 3.20)
 
 set(violations "")
 
@@ -26,11 +20,7 @@ if(CASE STREQUAL "detail_includes")
     foreach(line IN LISTS includes)
       string(REGEX MATCH "rbcstab/([a-z_]+)/detail/[^\">]+" header "${line}")
       if(NOT CMAKE_MATCH_1 STREQUAL owner)
-        if("${f} ${header}" IN_LIST DETAIL_INCLUDE_ALLOWLIST)
-          message(STATUS "allowlisted: ${f} includes ${header}")
-        else()
-          list(APPEND violations "${f} includes ${header} (private to module ${CMAKE_MATCH_1})")
-        endif()
+        list(APPEND violations "${f} includes ${header} (private to module ${CMAKE_MATCH_1})")
       endif()
     endforeach()
   endforeach()

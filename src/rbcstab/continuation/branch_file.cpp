@@ -199,28 +199,12 @@ class Reader {
   std::string name_, source_;
 };
 
-// A name back to its enum value: the value whose to_string is the name.
-template <class E, std::size_t N>
-E enum_named(const Reader& rd, const std::string& name, const std::array<E, N>& values, const std::string& path) {
-  for (E v : values)
-    if (to_string(v) == name) return v;
+// A name back to its enum value, from the enum's name table.
+template <TabledEnum E>
+E enum_named(const Reader& rd, const std::string& name, const std::string& path) {
+  if (const auto v = try_from_string<E>(name)) return *v;
   rd.fail(path + " = '" + name + "' is not a known value");
 }
-
-constexpr std::array<SpecialPointType, 8> kSpecialTypes{SpecialPointType::LP,  SpecialPointType::BP, SpecialPointType::HB,
-                                                        SpecialPointType::LPC, SpecialPointType::PD, SpecialPointType::NS,
-                                                        SpecialPointType::UZ,  SpecialPointType::EP};
-constexpr std::array<ContinuationStatus, 4> kStatuses{ContinuationStatus::completed, ContinuationStatus::step_too_small,
-                                                      ContinuationStatus::outside_domain, ContinuationStatus::start_failed};
-constexpr std::array<LocationStatus, 2> kLocations{LocationStatus::located, LocationStatus::guess};
-constexpr std::array<StartMethod, 3> kStartMethods{StartMethod::relaxed, StartMethod::ellipsoidal, StartMethod::restart};
-constexpr std::array<CurveSystem, 7> kSystems{CurveSystem::fold,
-                                              CurveSystem::hopf,
-                                              CurveSystem::period_doubling,
-                                              CurveSystem::neimark_sacker,
-                                              CurveSystem::branch_point,
-                                              CurveSystem::modal_branch_point,
-                                              CurveSystem::ellipsoidal_orbit_branch_point};
 
 // A measure value of the JSON: an integer, a number (null: NaN) or a label.
 MeasureValue measure_value(const Reader& rd, const json& v, const std::string& path) {
@@ -257,7 +241,7 @@ std::vector<MeasureValue> measures_of(const Reader& rd, const json& o, const std
 SpecialPoint read_special_point(const Reader& rd, const json& o, const std::string& at,
                                 const std::vector<std::string>* names = nullptr) {
   SpecialPoint sp;
-  sp.type = enum_named(rd, rd.string(o, "type", at), kSpecialTypes, Reader::join(at, "type"));
+  sp.type = enum_named<SpecialPointType>(rd, rd.string(o, "type", at), Reader::join(at, "type"));
   sp.name = rd.string(o, "name", at);
   sp.x = rd.vector(rd.at(o, "x", at), Reader::join(at, "x"));
   sp.p = rd.number(o, "p", at);
@@ -273,7 +257,7 @@ SpecialPoint read_special_point(const Reader& rd, const json& o, const std::stri
   sp.p_lo = rd.value(bracket[0], Reader::join(at, "bracket[0]"), true);
   sp.p_hi = rd.value(bracket[1], Reader::join(at, "bracket[1]"), true);
   sp.precision = rd.number(o, "precision", at, true);
-  sp.status = enum_named(rd, rd.string(o, "status", at), kLocations, Reader::join(at, "status"));
+  sp.status = enum_named<LocationStatus>(rd, rd.string(o, "status", at), Reader::join(at, "status"));
   sp.unstable_before = rd.small_int(o, "unstable_before", at);
   sp.unstable_after = rd.small_int(o, "unstable_after", at);
   sp.test_value = rd.number(o, "test_value", at, true);
@@ -351,7 +335,7 @@ MeasuredBranch read_branch(const Reader& rd, const json& j, const std::string& p
     m.special_measures.push_back(measures_of(rd, o, m.measure_names, at));
     m.special_labels.push_back(label_of(rd, o, at));
   }
-  m.branch.status = enum_named(rd, rd.string(j, "status", path), kStatuses, Reader::join(path, "status"));
+  m.branch.status = enum_named<ContinuationStatus>(rd, rd.string(j, "status", path), Reader::join(path, "status"));
   m.branch.message = rd.string(j, "message", path);
   const json& c = rd.at(j, "counters", path);
   const std::string cp = Reader::join(path, "counters");
@@ -417,7 +401,7 @@ BranchSpec read_spec(const Reader& rd, const json& j) {
 
 StartPoint read_start(const Reader& rd, const json& j) {
   StartPoint s;
-  s.method = enum_named(rd, rd.string(j, "method", "start"), kStartMethods, "start.method");
+  s.method = enum_named<StartMethod>(rd, rd.string(j, "method", "start"), "start.method");
   s.p = rd.number(j, "p", "start", true);
   s.newton = rd.boolean(j, "newton", "start");
   s.converged = rd.boolean(j, "converged", "start");
@@ -541,7 +525,7 @@ ContinuationRun parse_branch_file(const std::string& text, const std::string& so
   c.start = read_special_point(rd, rd.at(j, "curve_start", ""), "curve_start");
   c.start_p2 = rd.number(j, "start_p2", "", true);
   const json& curve = rd.at(j, "curve", "");
-  c.system = enum_named(rd, rd.string(curve, "system", "curve"), kSystems, "curve.system");
+  c.system = enum_named<CurveSystem>(rd, rd.string(curve, "system", "curve"), "curve.system");
   const std::vector<std::string> names{to_string(c.one.spec.parameter), to_string(*c.spec.parameter2)};
   c.curve = read_branch(rd, j, "", names, curve_measure_names(c.one.spec.kind, c.system, c.one.problem_scene.L), 0);
   if (!c.curve.branch.points.empty())  // the curve's unknowns hold the state of the problem it augments

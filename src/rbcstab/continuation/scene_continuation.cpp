@@ -28,12 +28,6 @@ namespace rbcstab {
 
 namespace {
 
-// Strings of the kinds, in the order the messages list them.
-constexpr std::array<std::pair<ProblemKind, const char*>, 5> kKinds{{{ProblemKind::equilibrium, "equilibrium"},
-                                                                     {ProblemKind::orbit, "orbit"},
-                                                                     {ProblemKind::modal, "modal"},
-                                                                     {ProblemKind::modal_orbit, "modal-orbit"},
-                                                                     {ProblemKind::full, "full"}}};
 constexpr std::array<std::pair<CurveKind, SpecialPointType>, 7> kCurves{{{CurveKind::LP, SpecialPointType::LP},
                                                                          {CurveKind::BP, SpecialPointType::BP},
                                                                          {CurveKind::HB, SpecialPointType::HB},
@@ -645,16 +639,13 @@ void trace_curve(SceneCurve& r, const SpecialPoint& sp, int first_label) {
 
 // ---- kinds and names ----
 
-std::string to_string(ProblemKind kind) {
-  for (const auto& [k, name] : kKinds)
-    if (k == kind) return name;
-  return "?";
-}
-
 ProblemKind problem_kind_from_string(const std::string& name) {
-  for (const auto& [k, n] : kKinds)
-    if (name == n) return k;
-  throw InvalidArgument("kind", "kind = '" + name + "' is not available: must be equilibrium, orbit, modal, modal-orbit or full");
+  if (const auto kind = try_from_string<ProblemKind>(name)) return *kind;
+  const std::vector<std::string>& names = enum_names<ProblemKind>();
+  std::string allowed;
+  for (std::size_t i = 0; i < names.size(); ++i)
+    allowed += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + names[i];
+  throw InvalidArgument("kind", "kind = '" + name + "' is not available: must be " + allowed);
 }
 
 ModelLevel model_level(ProblemKind kind) {
@@ -687,22 +678,6 @@ SpecialPointType special_point_type(CurveKind kind) {
     if (k == kind) return type;
   throw std::logic_error("unknown curve kind");
 }
-
-std::string to_string(CurveSystem system) {
-  switch (system) {
-    case CurveSystem::fold: return "fold";
-    case CurveSystem::hopf: return "hopf";
-    case CurveSystem::period_doubling: return "period_doubling";
-    case CurveSystem::neimark_sacker: return "neimark_sacker";
-    case CurveSystem::branch_point: return "branch_point";
-    case CurveSystem::modal_branch_point: return "modal_branch_point";
-    case CurveSystem::ellipsoidal_orbit_branch_point: return "ellipsoidal_orbit_branch_point";
-    case CurveSystem::event: return "event";
-  }
-  return "?";
-}
-
-std::string to_string(StartMethod method) { return method == StartMethod::relaxed ? "relaxed" : "ellipsoidal"; }
 
 std::vector<std::string> measure_names(ProblemKind kind, int L) {
   std::vector<std::string> names{"r", "Psi"};

@@ -21,6 +21,7 @@
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/model/scene.hpp"
 #include "rbcstab/model/system.hpp"
 
@@ -29,7 +30,14 @@ namespace rbcstab {
 // What is continued: equilibria of the reduced system, of the modal model or of the full model, or
 // periodic orbits of the forced in-plane reduced system or modal model.
 enum class ProblemKind { equilibrium, modal, full, orbit, modal_orbit };
-std::string to_string(ProblemKind kind);  // "equilibrium", "modal", "full", "orbit", "modal-orbit"
+template <>
+struct EnumTable<ProblemKind> {  // in the order messages list the kinds
+  static constexpr EnumName<ProblemKind> entries[] = {{ProblemKind::equilibrium, "equilibrium"},
+                                                      {ProblemKind::orbit, "orbit"},
+                                                      {ProblemKind::modal, "modal"},
+                                                      {ProblemKind::modal_orbit, "modal-orbit"},
+                                                      {ProblemKind::full, "full"}};
+};
 ProblemKind problem_kind_from_string(const std::string& name);  // throws InvalidArgument("kind", ...)
 ModelLevel model_level(ProblemKind kind);                       // reduced, modal or full
 bool is_orbit(ProblemKind kind);
@@ -64,7 +72,18 @@ enum class CurveSystem {
   ellipsoidal_orbit_branch_point,
   event
 };
-std::string to_string(CurveSystem system);
+template <>
+struct EnumTable<CurveSystem> {
+  static constexpr EnumName<CurveSystem> entries[] = {
+      {CurveSystem::fold, "fold"},
+      {CurveSystem::hopf, "hopf"},
+      {CurveSystem::period_doubling, "period_doubling"},
+      {CurveSystem::neimark_sacker, "neimark_sacker"},
+      {CurveSystem::branch_point, "branch_point"},
+      {CurveSystem::modal_branch_point, "modal_branch_point"},
+      {CurveSystem::ellipsoidal_orbit_branch_point, "ellipsoidal_orbit_branch_point"},
+      {CurveSystem::event, "event"}};
+};
 
 // A named measure of a point: a number, an integer (winding, mode) or a label (orbit kind).
 using MeasureValue = std::variant<double, int, std::string>;
@@ -158,7 +177,11 @@ void set_domain_bounds(ContinuationOptions& engine, ContinuationParameter q, dou
 // on an unstable member of the unfolded pitchfork); orbits: the relaxed state's shooting guess. Full and
 // orbits are then solved by Newton at fixed parameter; the other kinds leave that to the engine's start.
 enum class StartMethod { relaxed, ellipsoidal, restart };  // restart: BranchSpec::start_state
-std::string to_string(StartMethod method);
+template <>
+struct EnumTable<StartMethod> {
+  static constexpr EnumName<StartMethod> entries[] = {
+      {StartMethod::relaxed, "relaxed"}, {StartMethod::ellipsoidal, "ellipsoidal"}, {StartMethod::restart, "restart"}};
+};
 struct StartPoint {
   StartMethod method = StartMethod::relaxed;
   Eigen::VectorXd x;  // the problem's unknowns (orbits: the shooting vector)

@@ -95,15 +95,6 @@ UseWords words(ParameterUse use) {
 }
 }  // namespace
 
-std::string to_string(Origin origin) {
-  switch (origin) {
-    case Origin::default_value: return "default";
-    case Origin::file: return "file";
-    case Origin::flag: return "flag";
-  }
-  return "default";
-}
-
 bool Domain::contains(double v) const {
   if (std::isnan(v) || v < lo || v > hi) return false;
   return (v != lo || lo_closed) && (v != hi || hi_closed);

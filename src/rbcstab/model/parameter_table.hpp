@@ -10,6 +10,7 @@
 #include <string_view>
 #include <vector>
 
+#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/model/parameters.hpp"
 #include "rbcstab/model/scene.hpp"
 
@@ -21,7 +22,11 @@ enum class SceneParameter { lambda, Delta, Delta0, B, C, Lambda, S, alpha, lnB, 
 
 // Where a scene value came from.
 enum class Origin { default_value, file, flag };
-std::string to_string(Origin origin);  // "default", "file", "flag"
+template <>
+struct EnumTable<Origin> {
+  static constexpr EnumName<Origin> entries[] = {
+      {Origin::default_value, "default"}, {Origin::file, "file"}, {Origin::flag, "flag"}};
+};
 
 enum class AxisScale { linear, log };
 

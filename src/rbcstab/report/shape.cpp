@@ -170,4 +170,27 @@ void write_ply(const std::string& path, const SurfaceMesh& mesh, const std::stri
   write_file_atomic(path, to_ply(mesh, comment));
 }
 
+std::string to_csv(const ShapeGrid& g) {
+  std::ostringstream ss;
+  ss << std::setprecision(17) << "i,j,theta,phi,rho\n";
+  for (int i = 0; i <= g.n_theta; ++i)
+    for (int j = 0; j <= g.n_phi; ++j)
+      ss << i << ',' << j << ',' << g.theta[std::size_t(i)] << ',' << g.phi[std::size_t(j)] << ',' << g.at(i, j) << '\n';
+  return ss.str();
+}
+
+nlohmann::json to_json(const ShapeExport& e) {
+  nlohmann::json files = nlohmann::json::array();
+  for (const ShapeFile& f : e.files)
+    files.push_back({{"t", f.t}, {"file", f.path}, {"rho_min", f.rho_min}, {"rho_max", f.rho_max}});
+  return {{"model", to_string(e.model)}, {"status", to_string(e.status)}, {"reason", e.reason}, {"files", files}};
+}
+
+std::string to_text(const ShapeExport& e) {
+  std::ostringstream ss;
+  for (const ShapeFile& f : e.files)
+    ss << f.path << "  t = " << f.t << ", rho in [" << f.rho_min << ", " << f.rho_max << "]\n";
+  return ss.str();
+}
+
 }  // namespace rbcstab

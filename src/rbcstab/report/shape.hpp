@@ -7,7 +7,11 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
+#include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/amplitudes.hpp"
+#include "rbcstab/model/system.hpp"
 
 namespace rbcstab {
 
@@ -54,5 +58,24 @@ std::string to_ply(const SurfaceMesh& mesh, const std::string& comment);
 void write_vtk_legacy(const std::string& path, const SurfaceMesh& mesh, const std::string& title);
 void write_vtk_xml(const std::string& path, const SurfaceMesh& mesh);
 void write_ply(const std::string& path, const SurfaceMesh& mesh, const std::string& comment);
+
+// The grid as CSV, one row per node "i,j,theta,phi,rho" (17 significant digits).
+std::string to_csv(const ShapeGrid& grid);
+
+// What `rbcstab shape` wrote: per file its time, path and the grid's rho range; with the run's model,
+// status and reason (a failed run writes shapes up to where it stopped).
+struct ShapeFile {
+  double t = 0;
+  std::string path;
+  double rho_min = 0, rho_max = 0;
+};
+struct ShapeExport {
+  ModelLevel model = ModelLevel::reduced;
+  IntegrationStatus status = IntegrationStatus::success;
+  std::string reason;
+  std::vector<ShapeFile> files;
+};
+nlohmann::json to_json(const ShapeExport& e);  // {"model", "status", "reason", "files": [{"t", "file", "rho_min", "rho_max"}]}
+std::string to_text(const ShapeExport& e);     // one line per file: path, t and rho range
 
 }  // namespace rbcstab
