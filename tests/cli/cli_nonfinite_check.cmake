@@ -81,3 +81,10 @@ expect_contains("${reason}" "C = inf" "thresholds --C inf S_reason")
 run_cli(simulate --lambda 1e308 --json)
 string(JSON reason GET "${out}" reason)
 expect_contains("${reason}" "lambda = 1e+308" "simulate --lambda 1e308 reason")
+
+# A computation that fails on a valid input is a failed run (exit 1) with the reason, not bad input (exit 2).
+run_cli(bench threshold --lambda 1e308 --output bench)
+if(NOT rc EQUAL 1)
+  message(FATAL_ERROR "bench threshold --lambda 1e308: exit ${rc}, expected 1\n${err}")
+endif()
+expect_contains("${err}" "reference failed" "bench threshold --lambda 1e308 stderr")
