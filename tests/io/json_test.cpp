@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "rbcstab/io/json.hpp"
 
@@ -41,6 +42,13 @@ TEST(Json, EveryNullGetsAReasonNamingTheInput) {
   p.C = INFINITY;
   EXPECT_NE(S_reason(p).find("C = inf"), std::string::npos) << S_reason(p);
   EXPECT_EQ(to_json(p)["S_reason"], S_reason(p));
+}
+
+TEST(Json, CsvNumberIsExactOrEmptyNeverNan) {
+  EXPECT_EQ(csv_number(NAN), "");
+  EXPECT_EQ(csv_number(-INFINITY), "");
+  EXPECT_EQ(std::stod(csv_number(0.1 + 0.2)), 0.1 + 0.2);  // round trip
+  EXPECT_EQ(csv_number(1.5), "1.5");
 }
 
 TEST(Json, ByModeIsKeyedFromTwo) {

@@ -1,5 +1,6 @@
 #include "rbcstab/io/json.hpp"
 
+#include <charconv>
 #include <cmath>
 
 #include "rbcstab/core/error.hpp"
@@ -9,6 +10,13 @@
 namespace rbcstab {
 
 nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+std::string csv_number(double v) {
+  if (!std::isfinite(v)) return "";
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
 
 void put_number(nlohmann::json& j, const std::string& key, double v, const std::string& reason) {
   j[key] = number_or_null(v);

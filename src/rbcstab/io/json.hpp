@@ -23,6 +23,9 @@ void put_truncation(nlohmann::json& j, const SceneFile& file);
 void put_truncation(nlohmann::json& j, int L, const std::string& L_reason);
 // A double, or null when not finite.
 nlohmann::json number_or_null(double v);
+// The CSV counterpart: the shortest text that reads back exactly, or an empty field when not finite -- never "nan";
+// the row's or the file's status says why.
+std::string csv_number(double v);
 // j[key] = v, or null plus j[key + "_reason"] = reason when v is not finite.
 void put_number(nlohmann::json& j, const std::string& key, double v, const std::string& reason);
 // Why a number computed from p is not finite, naming the inputs that caused it: those that are infinite or

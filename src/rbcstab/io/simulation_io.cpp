@@ -30,15 +30,14 @@ std::string simulation_text(const SceneFile& file, const SimulationResult& r) {
 
 std::string trajectory_csv(const SimulationResult& r) {
   std::ostringstream ss;
-  ss << std::setprecision(17);
   ss << "t";
   for (int l = 2; l <= r.L; ++l) ss << ",Delta_" << l;
   ss << ",sigma,r,Psi\n";
   const Trajectory& tr = r.trajectory;
   for (std::size_t k = 0; k < tr.t.size(); ++k) {
-    ss << tr.t[k];
-    for (double d : tr.Delta_l[k]) ss << ',' << d;
-    ss << ',' << tr.sigma[k] << ',' << tr.r[k] << ',' << tr.Psi[k] << '\n';
+    ss << csv_number(tr.t[k]);
+    for (double d : tr.Delta_l[k]) ss << ',' << csv_number(d);
+    ss << ',' << csv_number(tr.sigma[k]) << ',' << csv_number(tr.r[k]) << ',' << csv_number(tr.Psi[k]) << '\n';
   }
   return ss.str();
 }
