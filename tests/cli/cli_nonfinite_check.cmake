@@ -8,6 +8,15 @@ file(MAKE_DIRECTORY "${WORK}")
 
 include(${CMAKE_CURRENT_LIST_DIR}/cli_run.cmake)
 
+# Runs the CLI with ${ARGN}; fails unless it exits with `code` and stderr holds `fragment`.
+function(expect_exit code fragment)
+  run_cli(${ARGN})
+  if(NOT rc EQUAL ${code})
+    message(FATAL_ERROR "${ARGN}: exit ${rc}, expected ${code}\n${err}")
+  endif()
+  expect_contains("${err}" "${fragment}" "${ARGN}")
+endfunction()
+
 # Sets `found` in the caller when the JSON value at path ${ARGN} of `doc` is null or an array holding one.
 function(holds_null doc)
   string(JSON type TYPE "${doc}" ${ARGN})
@@ -83,27 +92,11 @@ string(JSON reason GET "${out}" reason)
 expect_contains("${reason}" "lambda = 1e+308" "simulate --lambda 1e308 reason")
 
 # A computation that fails on a valid input is a failed run (exit 1) with the reason, not bad input (exit 2).
-run_cli(bench threshold --lambda 1e308 --output bench)
-if(NOT rc EQUAL 1)
-  message(FATAL_ERROR "bench threshold --lambda 1e308: exit ${rc}, expected 1\n${err}")
-endif()
-expect_contains("${err}" "reference failed" "bench threshold --lambda 1e308 stderr")
+expect_exit(1 "reference failed" bench threshold --lambda 1e308 --output bench)
 
 # Bounds: a device as a scene, an oversized scene and an oversized grid are refused up front, naming the bound.
-run_cli(simulate --scene /dev/zero)
-if(NOT rc EQUAL 2)
-  message(FATAL_ERROR "simulate --scene /dev/zero: exit ${rc}, expected 2\n${err}")
-endif()
-expect_contains("${err}" "/dev/zero" "simulate --scene /dev/zero")
+expect_exit(2 "/dev/zero" simulate --scene /dev/zero)
 string(REPEAT "#" 1100000 big)
 file(WRITE "${WORK}/big.toml" "${big}")
-run_cli(simulate --scene big.toml)
-if(NOT rc EQUAL 2)
-  message(FATAL_ERROR "simulate --scene big.toml: exit ${rc}, expected 2\n${err}")
-endif()
-expect_contains("${err}" "1048576 bytes" "simulate --scene big.toml")
-run_cli(diagram --counts 1000000,1000000 --out grid)
-if(NOT rc EQUAL 2)
-  message(FATAL_ERROR "diagram --counts 1000000,1000000: exit ${rc}, expected 2\n${err}")
-endif()
-expect_contains("${err}" "16777216 points" "diagram --counts 1000000,1000000")
+expect_exit(2 "1048576 bytes" simulate --scene big.toml)
+expect_exit(2 "16777216 points" diagram --counts 1000000,1000000 --out grid)
