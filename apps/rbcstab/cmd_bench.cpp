@@ -183,9 +183,16 @@ int run_threshold(const BenchOptions& o, const SceneFile& sf) {
   std::ostringstream title;
   title << "critical C at B = " << t.B << ": " << sf.scene.name;
   plot(o, "threshold_precision.py", base, title.str());
+  // A reference that could not be computed makes every error meaningless: the run failed (exit 1), not the input.
+  int rc = kOk;
+  for (const auto& r : t.references)
+    if (r.status != "ok") {
+      std::cerr << "rbcstab: " << r.predictor << " reference failed: " << r.status << "\n";
+      rc = kRunFailed;
+    }
   if (o.json) {
     std::cout << j.dump(2) << "\n";
-    return kOk;
+    return rc;
   }
   std::cout << std::setprecision(12) << "critical ln C at B = " << t.B << " (scene " << sf.scene.name << ")\n";
   for (const auto& r : t.references)
@@ -199,7 +206,7 @@ int run_threshold(const BenchOptions& o, const SceneFile& sf) {
               << r.budget << std::setw(12) << r.error << std::setw(8) << r.evaluations << std::setw(12)
               << r.rhs_evaluations << std::setw(11) << r.seconds << (r.status == "ok" ? "" : "  " + r.status) << "\n";
   std::cout << "wrote " << base << ".csv, .json" << (o.plot ? ", .png" : "") << "\n";
-  return kOk;
+  return rc;
 }
 
 int run(const BenchOptions& o) {

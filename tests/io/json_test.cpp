@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 #include "rbcstab/io/json.hpp"
 
@@ -19,6 +20,35 @@ TEST(Json, NonFiniteBecomesNull) {
   EXPECT_TRUE(j["S"].is_null());
   EXPECT_TRUE(j.contains("C_note"));
   EXPECT_EQ(j["alpha"].get<double>(), 0.0);
+}
+
+TEST(Json, EveryNullGetsAReasonNamingTheInput) {
+  nlohmann::json j = {{"a", INFINITY}, {"b", 1.0}, {"m", {{1.0, NAN}}}, {"o", {{"c", nullptr}, {"c_reason", "known"}}},
+                      {"list", {{{"d", NAN}}}}};
+  EXPECT_EQ(unexplained_nulls(j).size(), 3u);  // a, m and list/0/d: o/c has its reason
+  explain_nulls(j, "why");
+  EXPECT_TRUE(unexplained_nulls(j).empty());
+  EXPECT_TRUE(j["a"].is_null());
+  EXPECT_EQ(j["a_reason"], "why");
+  EXPECT_EQ(j["m_reason"], "why");
+  EXPECT_FALSE(j.contains("b_reason"));
+  EXPECT_EQ(j["o"]["c_reason"], "known");
+  EXPECT_EQ(j["list"][0]["d_reason"], "why");
+  Parameters p;
+  p.lambda = 1e308;
+  EXPECT_NE(nonfinite_reason(p).find("lambda = 1e+308"), std::string::npos) << nonfinite_reason(p);
+  EXPECT_TRUE(unexplained_nulls(to_json(p)).empty());
+  p = Parameters{};
+  p.C = INFINITY;
+  EXPECT_NE(S_reason(p).find("C = inf"), std::string::npos) << S_reason(p);
+  EXPECT_EQ(to_json(p)["S_reason"], S_reason(p));
+}
+
+TEST(Json, CsvNumberIsExactOrEmptyNeverNan) {
+  EXPECT_EQ(csv_number(NAN), "");
+  EXPECT_EQ(csv_number(-INFINITY), "");
+  EXPECT_EQ(std::stod(csv_number(0.1 + 0.2)), 0.1 + 0.2);  // round trip
+  EXPECT_EQ(csv_number(1.5), "1.5");
 }
 
 TEST(Json, ByModeIsKeyedFromTwo) {

@@ -75,6 +75,7 @@ nlohmann::json post_json(const SceneFile& file, const PostInstability& post, con
   j["sigma_tail_mean_simulated"] = number_or_null(r.sigma_tail_mean);
   j["T"] = file.scene.T;
   j["tail_window"] = file.options.tail_window;
+  explain_nulls(j, nonfinite_reason(p));
   return j;
 }
 

@@ -226,12 +226,26 @@ void write_file_atomic(const std::string& path, const std::string& content, cons
   write_files_atomic({OutputFile{path, content, flag}});
 }
 
-std::string read_file(const std::string& path) {
+std::string read_file(const std::string& path, const std::string& parameter, std::size_t max_bytes) {
+  const std::string named = parameter + " = '" + path + "'";
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0)
+    throw InvalidArgument(parameter, named + ": cannot read: " + std::strerror(errno));
+  if (!S_ISREG(st.st_mode) && !S_ISFIFO(st.st_mode))
+    throw InvalidArgument(parameter, named + " is " + (S_ISDIR(st.st_mode) ? "a directory" : "a device or socket") +
+                                         ": must be a regular file or a pipe");
+  const std::string bound = std::to_string(max_bytes) + " bytes";
+  if (S_ISREG(st.st_mode) && std::uintmax_t(st.st_size) > max_bytes)
+    throw InvalidArgument(parameter, named + " has " + std::to_string(st.st_size) + " bytes: must be at most " + bound);
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw InvalidArgument("file", "cannot read '" + path + "': no such file or not readable");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  if (!in) throw InvalidArgument(parameter, named + ": cannot read: no such file or not readable");
+  std::string text;
+  char chunk[1 << 16];
+  while (text.size() <= max_bytes && in.read(chunk, sizeof chunk).gcount() > 0)
+    text.append(chunk, std::size_t(in.gcount()));
+  if (text.size() > max_bytes)
+    throw InvalidArgument(parameter, named + " holds more than " + bound + ": must be at most " + bound);
+  return text;
 }
 
 }  // namespace rbcstab

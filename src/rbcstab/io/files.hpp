@@ -10,6 +10,7 @@
 // Every failure is an OutputError (the CLI's exit 3) naming the flag and the path.
 // Temporary siblings are named ".NAME.tmp-PID-XXXXXX"; a write removes those of processes that no longer
 // exist (a process killed by SIGKILL cannot remove its own).
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -47,6 +48,13 @@ std::string staging_prefix(const std::string& target_name, const std::string& ta
 // process that no longer exists: the leftovers of killed runs.
 void remove_stale_staging(const std::string& folder, const std::string& target_name, const std::string& tag);
 
-std::string read_file(const std::string& path);  // throws InvalidArgument("file", ...) if unreadable
+// Input files are bounded so that a device or a runaway file cannot hang a run or exhaust memory.
+constexpr std::size_t kMaxSceneBytes = std::size_t(1) << 20;       // a scene file: 1 MiB
+constexpr std::size_t kMaxDataFileBytes = std::size_t(1) << 30;    // a diagram, journal or branch file: 1 GiB
+// The whole of a regular file or a pipe (process substitution) of at most max_bytes. Throws
+// InvalidArgument(parameter, "<parameter> = '<path>' ...") if it is missing, unreadable, a directory or a device,
+// or longer than the bound (reading stops at the bound: /dev/zero through a pipe ends too).
+std::string read_file(const std::string& path, const std::string& parameter = "file",
+                      std::size_t max_bytes = kMaxDataFileBytes);
 
 }  // namespace rbcstab

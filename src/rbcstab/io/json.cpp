@@ -1,6 +1,9 @@
 #include "rbcstab/io/json.hpp"
 
+#include <charconv>
 #include <cmath>
+
+#include "rbcstab/core/error.hpp"
 
 #include "rbcstab/model/parameter_table.hpp"
 
@@ -8,10 +11,99 @@ namespace rbcstab {
 
 nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
+std::string csv_number(double v) {
+  if (!std::isfinite(v)) return "";
+  char buf[64];
+  const auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+void put_number(nlohmann::json& j, const std::string& key, double v, const std::string& reason) {
+  j[key] = number_or_null(v);
+  if (!std::isfinite(v)) j[key + "_reason"] = reason;
+}
+
+std::string nonfinite_reason(const Parameters& p) {
+  // Beyond sqrt(DBL_MAX) ~ 1.3e154 a product of two such inputs overflows; 1e150 leaves room for the factors.
+  constexpr double huge = 1e150;
+  Scene s;
+  s.parameters = p;
+  std::string culprits;
+  for (const ParameterRow& r : parameter_table()) {
+    if (!is_material(r.id) || r.scale != AxisScale::linear || r.table == nullptr) continue;
+    const double v = get_parameter(s, r.id);
+    if (std::isfinite(v) && std::abs(v) <= huge) continue;
+    culprits += (culprits.empty() ? "" : ", ") + std::string(r.name) + " = " + format_value(v);
+  }
+  if (culprits.empty()) return "not finite: the computation overflowed or was undefined at these parameters";
+  if (culprits == "C = inf") return "not finite: C = inf (the vesicle limit)";
+  return "not finite: overflow from " + culprits;
+}
+
+std::string run_reason(const SimulationResult& r, const Parameters& p) {
+  if (r.status != IntegrationStatus::non_finite_state) return r.reason;
+  return r.reason + " (" + nonfinite_reason(p) + ")";
+}
+
+namespace {
+
+bool holds_null(const nlohmann::json& v) {
+  if (v.is_null()) return true;
+  if (v.is_number_float()) return !std::isfinite(v.get<double>());
+  if (v.is_array())
+    for (const auto& e : v)
+      if (holds_null(e)) return true;
+  return false;
+}
+
+// Non-finite numbers become null; objects (also inside arrays) are explained in turn.
+void nullify(nlohmann::json& v, const std::string& reason) {
+  if (v.is_number_float() && !std::isfinite(v.get<double>())) v = nullptr;
+  if (v.is_object()) explain_nulls(v, reason);
+  if (v.is_array())
+    for (auto& e : v) nullify(e, reason);
+}
+
+void collect_unexplained(const nlohmann::json& j, const std::string& path, std::vector<std::string>& out) {
+  if (j.is_array()) {
+    for (std::size_t k = 0; k < j.size(); ++k) collect_unexplained(j[k], path + "/" + std::to_string(k), out);
+    return;
+  }
+  if (!j.is_object()) return;
+  for (const auto& [key, v] : j.items()) {
+    if (holds_null(v) && !j.contains(key + "_reason")) out.push_back(path + "/" + key);
+    collect_unexplained(v, path + "/" + key, out);
+  }
+}
+
+}  // namespace
+
+void explain_nulls(nlohmann::json& j, const std::string& reason) {
+  if (!j.is_object()) return nullify(j, reason);
+  std::vector<std::string> unexplained;
+  for (auto& [key, v] : j.items()) {
+    if (holds_null(v) && !j.contains(key + "_reason")) unexplained.push_back(key);
+    nullify(v, reason);
+  }
+  for (const std::string& key : unexplained) j[key + "_reason"] = reason;
+}
+
+std::vector<std::string> unexplained_nulls(const nlohmann::json& j) {
+  std::vector<std::string> out;
+  collect_unexplained(j, "", out);
+  return out;
+}
+
 nlohmann::json by_mode(const std::vector<double>& values) {
   nlohmann::json j = nlohmann::json::object();
   for (std::size_t k = 0; k < values.size(); ++k) j[std::to_string(k + 2)] = number_or_null(values[k]);
   return j;
+}
+
+std::string S_reason(const Parameters& p) {
+  if (p.Delta0 == 0) return "S = inf: Delta0 = 0 (the vesicle limit)";
+  if (!std::isfinite(p.C)) return "S = inf: C = inf (the vesicle limit)";
+  return nonfinite_reason(p);
 }
 
 nlohmann::json to_json(const Parameters& p) {
@@ -20,8 +112,9 @@ nlohmann::json to_json(const Parameters& p) {
   nlohmann::json j = nlohmann::json::object();
   for (const ParameterRow& r : parameter_table())
     if (is_material(r.id) && r.scale == AxisScale::linear) j[r.name] = number_or_null(get_parameter(s, r.id));
-  if (!std::isfinite(p.C)) j["C_note"] = "infinite: the vesicle limit";
-  if (!std::isfinite(p.S())) j["S_note"] = "infinite: the vesicle limit (Delta0 = 0 or C = inf)";
+  if (!std::isfinite(p.C)) j["C_reason"] = j["C_note"] = "infinite: the vesicle limit";
+  if (!std::isfinite(p.S())) j["S_reason"] = j["S_note"] = S_reason(p);
+  explain_nulls(j, nonfinite_reason(p));
   return j;
 }
 

@@ -14,10 +14,28 @@ nlohmann::json to_json(const Scene& s);
 nlohmann::json to_json(const SimulationResult& r);
 // {"2": v[0], "3": v[1], ...}
 nlohmann::json by_mode(const std::vector<double>& values_from_l2);
+// Why S is infinite (Delta0 = 0 or C = inf: the vesicle limit) or else not finite.
+std::string S_reason(const Parameters& p);
+// r.reason, and for a run whose state became non-finite, the inputs that made it overflow (nonfinite_reason).
+std::string run_reason(const SimulationResult& r, const Parameters& p);
 // "L" and "L_reason" (why that L: SceneFile::L_reason), which every JSON output of a scene carries.
 void put_truncation(nlohmann::json& j, const SceneFile& file);
 void put_truncation(nlohmann::json& j, int L, const std::string& L_reason);
 // A double, or null when not finite.
 nlohmann::json number_or_null(double v);
+// The CSV counterpart: the shortest text that reads back exactly, or an empty field when not finite -- never "nan";
+// the row's or the file's status says why.
+std::string csv_number(double v);
+// j[key] = v, or null plus j[key + "_reason"] = reason when v is not finite.
+void put_number(nlohmann::json& j, const std::string& key, double v, const std::string& reason);
+// Why a number computed from p is not finite, naming the inputs that caused it: those that are infinite or
+// so large that a square overflows (|v| > 1e150); "C = inf" is the vesicle limit.
+std::string nonfinite_reason(const Parameters& p);
+// Every null or non-finite number in j (recursively), and every array holding one, gets the sibling
+// "<key>_reason" = reason unless it already has one: no output hides a non-finite value without saying why.
+// Non-finite numbers become null (nlohmann writes them as null anyway).
+void explain_nulls(nlohmann::json& j, const std::string& reason);
+// The paths ("a/b/c") of nulls with no "<key>_reason" sibling: empty for every document explain_nulls saw.
+std::vector<std::string> unexplained_nulls(const nlohmann::json& j);
 
 }  // namespace rbcstab

@@ -267,7 +267,7 @@ SceneFile parse_scene(const std::string& toml_text, const std::string& source_na
   return f;
 }
 
-SceneFile load_scene(const std::string& path) { return parse_scene(read_file(path), path); }
+SceneFile load_scene(const std::string& path) { return parse_scene(read_file(path, "scene", kMaxSceneBytes), path); }
 
 std::string to_toml(const SceneFile& file) {
   toml::table root;

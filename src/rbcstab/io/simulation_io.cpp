@@ -10,10 +10,12 @@ namespace rbcstab {
 nlohmann::json simulation_json(const SceneFile& file, const SimulationResult& r) {
   nlohmann::json j = to_json(r);
   j["parameters"] = to_json(file.scene.parameters);
+  j["reason"] = run_reason(r, file.scene.parameters);
   j["stepper"] = to_string(file.options.integrator.stepper);
   j["rtol"] = file.options.integrator.rtol;
   j["atol"] = file.options.integrator.atol;
   put_truncation(j, file);
+  explain_nulls(j, nonfinite_reason(file.scene.parameters));
   return j;
 }
 
@@ -28,15 +30,14 @@ std::string simulation_text(const SceneFile& file, const SimulationResult& r) {
 
 std::string trajectory_csv(const SimulationResult& r) {
   std::ostringstream ss;
-  ss << std::setprecision(17);
   ss << "t";
   for (int l = 2; l <= r.L; ++l) ss << ",Delta_" << l;
   ss << ",sigma,r,Psi\n";
   const Trajectory& tr = r.trajectory;
   for (std::size_t k = 0; k < tr.t.size(); ++k) {
-    ss << tr.t[k];
-    for (double d : tr.Delta_l[k]) ss << ',' << d;
-    ss << ',' << tr.sigma[k] << ',' << tr.r[k] << ',' << tr.Psi[k] << '\n';
+    ss << csv_number(tr.t[k]);
+    for (double d : tr.Delta_l[k]) ss << ',' << csv_number(d);
+    ss << ',' << csv_number(tr.sigma[k]) << ',' << csv_number(tr.r[k]) << ',' << csv_number(tr.Psi[k]) << '\n';
   }
   return ss.str();
 }

@@ -19,6 +19,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
+#include "rbcstab/io/simulation_io.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/report/bifurcation_plot.hpp"
 #include "rbcstab/report/detail/report_pages.hpp"
@@ -40,27 +41,6 @@ constexpr const char* kScript = "rbcstab_report.py";
 bool has_script(const fs::path& dir) {
   std::error_code ec;
   return !dir.empty() && fs::is_regular_file(dir / kScript, ec);
-}
-
-std::string csv_number(double v) {
-  if (!std::isfinite(v)) return "nan";
-  std::ostringstream ss;
-  ss << std::setprecision(17) << v;
-  return ss.str();
-}
-
-std::string trajectory_csv(const SimulationResult& r) {
-  std::ostringstream ss;
-  ss << "t";
-  for (int l = 2; l <= r.L; ++l) ss << ",Delta_" << l;
-  ss << ",sigma,r,Psi\n";
-  const Trajectory& tr = r.trajectory;
-  for (std::size_t k = 0; k < tr.t.size(); ++k) {
-    ss << csv_number(tr.t[k]);
-    for (double d : tr.Delta_l[k]) ss << ',' << csv_number(d);
-    ss << ',' << csv_number(tr.sigma[k]) << ',' << csv_number(tr.r[k]) << ',' << csv_number(tr.Psi[k]) << '\n';
-  }
-  return ss.str();
 }
 
 std::string grid_csv(const ShapeGrid& g) {

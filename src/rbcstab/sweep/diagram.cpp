@@ -5,6 +5,7 @@
 #include <cmath>
 #include <condition_variable>
 #include <exception>
+#include <iomanip>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -45,7 +46,16 @@ void DiagramSpec::validate() const {
                                                 list + ")");
     }
   }
-  require(std::isfinite(alpha) && alpha >= 0, "diagram.alpha", alpha, "finite and >= 0 (0: alpha not held fixed)");
+  const long long points = 1LL * x.count * y.count;
+  if (points > kMaxDiagramPoints) {
+    const double gb = double(points) * double(sizeof(PointResult)) / 1e9;
+    std::ostringstream m;
+    m << std::setprecision(3) << "diagram.counts = " << x.count << "," << y.count << " is " << points
+      << " points (about " << gb << " GB of results, before any work): must be at most " << kMaxDiagramPoints
+      << " points (4096 x 4096)";
+    throw InvalidArgument("diagram.counts", m.str());
+  }
+    require(std::isfinite(alpha) && alpha >= 0, "diagram.alpha", alpha, "finite and >= 0 (0: alpha not held fixed)");
   if (alpha > 0 && (x.axis == Axis::alpha || y.axis == Axis::alpha))
     throw InvalidArgument("diagram.alpha", "diagram.alpha cannot be held fixed while alpha is an axis");
   if (x.axis == y.axis)

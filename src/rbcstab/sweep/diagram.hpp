@@ -43,12 +43,17 @@ struct EnumTable<Classifier> {
 // Throws InvalidArgument("classifier", ...) naming the allowed classifiers.
 inline Classifier classifier_from_string(std::string_view name) { return from_string<Classifier>(name, "classifier"); }
 
+// The largest grid (4096 x 4096): every point's result is held in memory (sizeof(PointResult) = 144 bytes,
+// about 2.4 GB at the bound) and journaled, so a larger grid is refused before any work starts.
+constexpr long long kMaxDiagramPoints = 4096LL * 4096LL;
+
 struct DiagramSpec {
   AxisRange x{Axis::lnB, -1, 6, 64};    // fastest-varying axis: index = j * x.count + i
   AxisRange y{Axis::lnC, -5.5, 2, 64};  // Fig. 4: ln C in [-5.5, 2]
   Classifier classifier = Classifier::automatic;  // see Classifier
   double alpha = 0;  // > 0: hold alpha = B/C fixed over the plane (Fig. 5: ln C - lambda at alpha = 40, 100, 500)
-  void validate() const;                 // distinct axes, finite ranges, counts in [1, 10^6], alpha >= 0
+  // Distinct axes, finite ranges, counts in [1, 10^6] with at most kMaxDiagramPoints points, alpha >= 0.
+  void validate() const;
   std::size_t size() const { return std::size_t(x.count) * std::size_t(y.count); }
 };
 

@@ -29,8 +29,6 @@ AxisRange axis_from_json(const nlohmann::json& j) {
   return a;
 }
 double number(const nlohmann::json& j) { return j.is_null() ? std::nan("") : j.get<double>(); }
-// A failed point's non-finite value is an empty field (its status column says why), never "nan".
-std::string csv_number(double v) { return std::isfinite(v) ? exact(v) : ""; }
 }  // namespace
 
 nlohmann::json diagram_header(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec) {

@@ -50,7 +50,13 @@ Scene at(const Scene& base, double ln_C) {
   return s;
 }
 
-Eval asymptotic(const Scene& base, double ln_C, double) { return {asymptotic_verdict(at(base, ln_C)).unstable, true, 0, {}}; }
+// A <sigma_R> outside its domain is a failed evaluation (a status), as a failed run is for the others.
+Eval asymptotic(const Scene& base, double ln_C, double) {
+  const Scene s = at(base, ln_C);
+  const AsymptoticSigma a = asymptotic_sigma_R(s);
+  if (!a.valid()) return {false, false, 0, a.reason};
+  return {asymptotic_verdict(s, a.sigma_R).unstable, true, 0, {}};
+}
 
 Eval finite_horizon(const Scene& base, double ln_C, double rtol) {
   const Scene s = at(base, ln_C);

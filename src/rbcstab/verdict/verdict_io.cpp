@@ -68,6 +68,7 @@ nlohmann::json summary_json(const SceneFile& file, const SimulationResult& r, co
   const double alpha = p.alpha();
   nlohmann::json j = to_json(r);
   j.erase("trajectory");
+  j["reason"] = run_reason(r, p);
   j["scene"] = s.name;
   j["regime"] = to_string(pr.regime.regime);
   j["regime_reason"] = pr.regime.reason;
@@ -97,6 +98,7 @@ nlohmann::json summary_json(const SceneFile& file, const SimulationResult& r, co
   }
   j["tail_window"] = file.options.tail_window;
   put_truncation(j, file);
+  explain_nulls(j, nonfinite_reason(p));
   return j;
 }
 
@@ -169,7 +171,7 @@ nlohmann::json thresholds_json(const SceneFile& file, const ThresholdReport& t) 
   j["parameters"] = to_json(p);
   put_truncation(j, file);
   j["Lambda"] = p.Lambda();
-  j["S"] = number_or_null(p.S());
+  put_number(j, "S", p.S(), S_reason(p));
   j["alpha"] = alpha;
   j["r0"] = t.r0;
   j["l_star"] = l_star(alpha);
@@ -215,6 +217,7 @@ nlohmann::json thresholds_json(const SceneFile& file, const ThresholdReport& t) 
   j["regime"] = to_string(pr.regime.regime);
   j["regime_reason"] = pr.regime.reason;
   if (t.has_exact_C_star) j["C_star_exact_out_of_plane"] = t.exact_C_star;
+  explain_nulls(j, nonfinite_reason(p));
   return j;
 }
 
