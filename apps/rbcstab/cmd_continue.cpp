@@ -184,8 +184,10 @@ static Runner add_continue(CLI::App& app) {
                                                                     " (beta: the rest shape's orientation, [0, pi])")
                       ->capture_default_str();
   o->o_min = app.add_option("--min", o->p_min,
-                 "lower bound of the free parameter (the branch ends there exactly; default: none, 0 for lambda and beta)");
-  o->o_max = app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly; default: none, pi for beta)");
+                 "lower bound of the free parameter (the branch ends there exactly; default: none, 0 for lambda and beta)")
+                 ->check(number_text("within the parameter's domain"));
+  o->o_max = app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly; default: none, pi for beta)")
+                 ->check(number_text("within the parameter's domain"));
   o->o_direction = app.add_option("--direction", o->direction, "forward (parameter increasing), backward or both")
       ->check(CLI::IsMember({"forward", "backward", "both"}))
       ->capture_default_str();
@@ -206,8 +208,10 @@ static Runner add_continue(CLI::App& app) {
       ->check(CLI::IsMember({"LP", "BP", "HB", "LPC", "PD", "NS", "UZ"}));
   app.add_option("--parameter2", o->parameter2,
                  "--curve: second free parameter (" + parameter_names() + "), independent of --parameter");
-  app.add_option("--min2", o->p2_min, "--curve: lower bound of --parameter2 (the curve ends there exactly; default: none)");
-  app.add_option("--max2", o->p2_max, "--curve: upper bound of --parameter2 (the curve ends there exactly; default: none)");
+  app.add_option("--min2", o->p2_min, "--curve: lower bound of --parameter2 (the curve ends there exactly; default: none)")
+      ->check(number_text("within --parameter2's domain"));
+  app.add_option("--max2", o->p2_max, "--curve: upper bound of --parameter2 (the curve ends there exactly; default: none)")
+      ->check(number_text("within --parameter2's domain"));
   app.add_option("--point", o->point, "--curve: start from the K-th located special point of that type, integer >= 1")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();
