@@ -135,6 +135,7 @@ int run(const ContinueOptions& o) {
     if (!o.parameter2.empty()) curve->parameter2 = parameter2(o.parameter2);
     curve->p2_min = o.p2_min;
     curve->p2_max = o.p2_max;
+    if (curve->parameter2) require_bounds_in_domain(*curve->parameter2, o.p2_min, o.p2_max, "--min2", "--max2");
     curve->point = o.point;
   } else if (!o.parameter2.empty()) {
     throw InvalidArgument("parameter2", "--parameter2 needs --curve LP|BP|HB|LPC|PD|NS|UZ");
@@ -151,6 +152,7 @@ int run(const ContinueOptions& o) {
   spec.engine = o.engine;
   spec.engine.p_min = o.p_min;
   spec.engine.p_max = o.p_max;
+  require_bounds_in_domain(spec.parameter, o.p_min, o.p_max, "--min", "--max");
   spec.engine.direction = direction_from_string(o.direction);
   spec.relax_T = o.relax_T;
   spec.orbit = o.orbit;

@@ -590,7 +590,7 @@ SceneCurve curve_header(const SceneBranch& one, const CurveSpec& spec) {
   r.spec = spec;
   r.one = one;
   ContinuationOptions bounds;
-  set_domain_bounds(bounds, *spec.parameter2, spec.p2_min, spec.p2_max, "--min2", "--max2");
+  set_domain_bounds(bounds, *spec.parameter2, spec.p2_min, spec.p2_max);
   r.spec.p2_min = bounds.p_min;
   r.spec.p2_max = bounds.p_max;
   return r;
@@ -763,21 +763,29 @@ Direction direction_from_string(const std::string& name) { return from_string<Di
 
 // ---- specs ----
 
-void set_domain_bounds(ContinuationOptions& engine, ContinuationParameter q, double lo, double hi,
-                       const std::string& lo_name, const std::string& hi_name) {
-  const bool beta = q == ContinuationParameter::beta;
-  const double edge_lo = (q == ContinuationParameter::lambda || beta) ? 0.0 : -std::numeric_limits<double>::infinity();
-  const double edge_hi = beta ? M_PI : std::numeric_limits<double>::infinity();
-  const std::string domain = beta ? "[0, pi]" : edge_lo == 0 ? "[0, inf)" : "(-inf, inf)";
-  // An unbounded request (the default) stops at the edge; a finite one beyond it is a mistake, not a wish.
-  const std::string range = "within " + to_string(q) + "'s continuation domain " + domain;
-  auto check = [&](double v, const std::string& name) {
-    require(std::isinf(v) || (v >= edge_lo && v <= edge_hi), name, v, range);
-  };
-  check(lo, lo_name);
-  check(hi, hi_name);
-  engine.p_min = std::max(lo, edge_lo);
-  engine.p_max = std::min(hi, edge_hi);
+namespace {
+// lambda >= 0 and beta in [0, pi] are closed edges a branch lands on; other domains are open.
+bool has_closed_edges(ContinuationParameter q) {
+  return q == ContinuationParameter::lambda || q == ContinuationParameter::beta;
+}
+}  // namespace
+
+void set_domain_bounds(ContinuationOptions& engine, ContinuationParameter q, double lo, double hi) {
+  engine.p_min = lo;
+  engine.p_max = hi;
+  if (!has_closed_edges(q)) return;
+  const Domain d = continuation_domain(q, Parameters{});  // neither domain depends on the other parameters
+  engine.p_min = std::max(lo, d.lo);
+  engine.p_max = std::min(hi, d.hi);
+}
+
+void require_bounds_in_domain(ContinuationParameter q, double lo, double hi, const std::string& lo_name,
+                              const std::string& hi_name) {
+  if (!has_closed_edges(q)) return;
+  const Domain d = continuation_domain(q, Parameters{});
+  const std::string range = d.text() + ", " + to_string(q) + "'s continuation domain";
+  require(std::isinf(lo) || d.contains(lo), lo_name, lo, range);
+  require(std::isinf(hi) || d.contains(hi), hi_name, hi, range);
 }
 
 void BranchSpec::validate() const {
