@@ -7,15 +7,23 @@
 
 namespace rbcstab::cli {
 
-// The whole text as a number: false for an empty text or trailing characters ("", "0.1abc").
-inline bool parse_number(const std::string& text, double& v) {
+// The whole text converted by `convert` (std::stod, std::stoll): false for an empty text or trailing
+// characters ("", "0.1abc", "3.5" as an integer).
+template <class T, class Convert>
+bool parse_whole(const std::string& text, T& v, Convert convert) {
   std::size_t pos = 0;
   try {
-    v = std::stod(text, &pos);
+    v = convert(text, &pos);
   } catch (const std::exception&) {
     return false;
   }
   return pos != 0 && pos == text.size();
+}
+inline bool parse_number(const std::string& text, double& v) {
+  return parse_whole(text, v, [](const std::string& t, std::size_t* pos) { return std::stod(t, pos); });
+}
+inline bool parse_integer(const std::string& text, long long& v) {
+  return parse_whole(text, v, [](const std::string& t, std::size_t* pos) { return std::stoll(t, pos); });
 }
 
 // Any number given in full, so that CLI11's own conversion (which reads "" as 0) never sees bad text;
@@ -28,17 +36,6 @@ inline CLI::Validator number_text(const std::string& range) {
         return {};
       },
       "", "NUMBER");
-}
-
-// The whole text as an integer (no sign-only, decimal or trailing text).
-inline bool parse_integer(const std::string& text, long long& v) {
-  std::size_t pos = 0;
-  try {
-    v = std::stoll(text, &pos);
-  } catch (const std::exception&) {
-    return false;
-  }
-  return pos != 0 && pos == text.size();
 }
 
 // An integer given in full; `range` says what the flag accepts (checked by the library).

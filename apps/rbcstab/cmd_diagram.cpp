@@ -130,7 +130,8 @@ static Runner add_diagram(CLI::App& app) {
   app.add_option("--y-range", o->y_range, "min,max of the y axis (inclusive, finite; default: the scene's [diagram] or -5.5,2)")->delimiter(',')->allow_extra_args(false);
   app.add_option("--counts", o->counts, "grid values nx,ny, integers in [1, 1000000] (default: the scene's [diagram] or 64,64)")
       ->delimiter(',')
-      ->check(integer_in(1, 1000000));
+      ->check(integer_text("integers in [1, 1000000]"))
+      ->check(CLI::Range(1, 1000000));
   app.add_option("--classifier", o->classifier,
                  "l_Delta rule: auto (tail mean if oscillating), final (Fig. 4), tail (App. E) (default: the scene's [diagram] or auto)")
       ->check(CLI::IsMember(enum_names<Classifier>()));

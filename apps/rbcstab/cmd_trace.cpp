@@ -93,13 +93,13 @@ static Runner add_trace(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--lines", o->trace.lines,
                  "interior lines (x fixed) searched for starting points besides the edges, integer in [0, 10000]")
-      ->check(integer_in(0, 10000))
+      ->check(integer_text("an integer in [0, 10000]"))
+      ->check(CLI::Range(0, 10000))
       ->capture_default_str();
   app.add_option("--samples", o->trace.samples, "brackets per edge or line when searching for starts, integer in [2, 1000000]")
       ->check(integer_in(2, 1000000))
       ->capture_default_str();
   app.add_option("--max-step", o->trace.max_step, "continuation step cap in the unit square (curve resolution), > 0")
-      ->check(positive())
       ->capture_default_str();
   app.add_option("--threads", o->threads, "threads for the per-point predictor verdicts of --diagram, integer in [0, 4096] (0: all cores)")
       ->check(integer_in(0, 4096))
