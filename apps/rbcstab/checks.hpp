@@ -7,25 +7,84 @@
 
 namespace rbcstab::cli {
 
+// The whole text converted by `convert` (std::stod, std::stoll): false for an empty text or trailing
+// characters ("", "0.1abc", "3.5" as an integer).
+template <class T, class Convert>
+bool parse_whole(const std::string& text, T& v, Convert convert) {
+  std::size_t pos = 0;
+  try {
+    v = convert(text, &pos);
+  } catch (const std::exception&) {
+    return false;
+  }
+  return pos != 0 && pos == text.size();
+}
+inline bool parse_number(const std::string& text, double& v) {
+  return parse_whole(text, v, [](const std::string& t, std::size_t* pos) { return std::stod(t, pos); });
+}
+inline bool parse_integer(const std::string& text, long long& v) {
+  return parse_whole(text, v, [](const std::string& t, std::size_t* pos) { return std::stoll(t, pos); });
+}
+
+// Any number given in full, so that CLI11's own conversion (which reads "" as 0) never sees bad text;
+// `range` says what the flag accepts (the library checks it after the scene is assembled).
+inline CLI::Validator number_text(const std::string& range) {
+  return CLI::Validator(
+      [range](std::string& text) -> std::string {
+        double v = 0;
+        if (!parse_number(text, v)) return "'" + text + "' is not a number (" + range + ")";
+        return {};
+      },
+      "", "NUMBER");
+}
+
+// An integer given in full; `range` says what the flag accepts (checked by the library).
+inline CLI::Validator integer_text(const std::string& range) {
+  return CLI::Validator(
+      [range](std::string& text) -> std::string {
+        long long v = 0;
+        if (!parse_integer(text, v)) return "'" + text + "' is not an integer (" + range + ")";
+        return {};
+      },
+      "", "INT");
+}
+
+// An integer given in full, within [lo, hi].
+inline CLI::Validator integer_in(long long lo, long long hi) {
+  const std::string range = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  return CLI::Validator(
+      [lo, hi, range](std::string& text) -> std::string {
+        long long v = 0;
+        if (!parse_integer(text, v)) return "'" + text + "' is not an integer (must be " + range + ")";
+        if (v < lo || v > hi) return text + " is out of range: must be " + range;
+        return {};
+      },
+      range, "INT");
+}
+
 // Finite numbers above `bound` (strict) or at least `bound`.
 inline CLI::Validator number_above(double bound, bool strict) {
   const std::string range = (strict ? "> " : ">= ") + CLI::detail::to_string(bound);
   return CLI::Validator(
       [bound, strict, range](std::string& text) -> std::string {
         double v = 0;
-        std::size_t pos = 0;
-        try {
-          v = std::stod(text, &pos);
-        } catch (const std::exception&) {
-          pos = 0;
-        }
-        if (pos == 0 || pos != text.size()) return text + " is not a number (must be " + range + ")";
+        if (!parse_number(text, v)) return "'" + text + "' is not a number (must be " + range + ")";
         if (!std::isfinite(v) || (strict ? !(v > bound) : !(v >= bound)))
           return text + " is out of range: must be finite and " + range;
         return {};
       },
       range, "RANGE");
 }
+// A file name or prefix: an empty one would write hidden files named only by their suffix (".csv").
+inline CLI::Validator output_name() {
+  return CLI::Validator(
+      [](std::string& text) -> std::string {
+        if (text.empty()) return "'' is empty: must be a file name or prefix";
+        return {};
+      },
+      "", "PATH");
+}
+
 inline CLI::Validator positive() { return number_above(0, true); }
 inline CLI::Validator non_negative() { return number_above(0, false); }
 

@@ -135,6 +135,7 @@ int run(const ContinueOptions& o) {
     if (!o.parameter2.empty()) curve->parameter2 = parameter2(o.parameter2);
     curve->p2_min = o.p2_min;
     curve->p2_max = o.p2_max;
+    if (curve->parameter2) require_bounds_in_domain(*curve->parameter2, o.p2_min, o.p2_max, "--min2", "--max2");
     curve->point = o.point;
   } else if (!o.parameter2.empty()) {
     throw InvalidArgument("parameter2", "--parameter2 needs --curve LP|BP|HB|LPC|PD|NS|UZ");
@@ -151,6 +152,7 @@ int run(const ContinueOptions& o) {
   spec.engine = o.engine;
   spec.engine.p_min = o.p_min;
   spec.engine.p_max = o.p_max;
+  require_bounds_in_domain(spec.parameter, o.p_min, o.p_max, "--min", "--max");
   spec.engine.direction = direction_from_string(o.direction);
   spec.relax_T = o.relax_T;
   spec.orbit = o.orbit;
@@ -184,8 +186,10 @@ static Runner add_continue(CLI::App& app) {
                                                                     " (beta: the rest shape's orientation, [0, pi])")
                       ->capture_default_str();
   o->o_min = app.add_option("--min", o->p_min,
-                 "lower bound of the free parameter (the branch ends there exactly; default: none, 0 for lambda and beta)");
-  o->o_max = app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly; default: none, pi for beta)");
+                 "lower bound of the free parameter (the branch ends there exactly; default: none, 0 for lambda and beta)")
+                 ->check(number_text("within the parameter's domain"));
+  o->o_max = app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly; default: none, pi for beta)")
+                 ->check(number_text("within the parameter's domain"));
   o->o_direction = app.add_option("--direction", o->direction, "forward (parameter increasing), backward or both")
       ->check(CLI::IsMember({"forward", "backward", "both"}))
       ->capture_default_str();
@@ -206,8 +210,10 @@ static Runner add_continue(CLI::App& app) {
       ->check(CLI::IsMember({"LP", "BP", "HB", "LPC", "PD", "NS", "UZ"}));
   app.add_option("--parameter2", o->parameter2,
                  "--curve: second free parameter (" + parameter_names() + "), independent of --parameter");
-  app.add_option("--min2", o->p2_min, "--curve: lower bound of --parameter2 (the curve ends there exactly; default: none)");
-  app.add_option("--max2", o->p2_max, "--curve: upper bound of --parameter2 (the curve ends there exactly; default: none)");
+  app.add_option("--min2", o->p2_min, "--curve: lower bound of --parameter2 (the curve ends there exactly; default: none)")
+      ->check(number_text("within --parameter2's domain"));
+  app.add_option("--max2", o->p2_max, "--curve: upper bound of --parameter2 (the curve ends there exactly; default: none)")
+      ->check(number_text("within --parameter2's domain"));
   app.add_option("--point", o->point, "--curve: start from the K-th located special point of that type, integer >= 1")
       ->check(CLI::Range(1, 1000000))
       ->capture_default_str();

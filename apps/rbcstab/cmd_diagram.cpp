@@ -130,20 +130,26 @@ static Runner add_diagram(CLI::App& app) {
   app.add_option("--y-range", o->y_range, "min,max of the y axis (inclusive, finite; default: the scene's [diagram] or -5.5,2)")->delimiter(',')->allow_extra_args(false);
   app.add_option("--counts", o->counts, "grid values nx,ny, integers in [1, 1000000] (default: the scene's [diagram] or 64,64)")
       ->delimiter(',')
+      ->check(integer_text("integers in [1, 1000000]"))
       ->check(CLI::Range(1, 1000000));
   app.add_option("--classifier", o->classifier,
                  "l_Delta rule: auto (tail mean if oscillating), final (Fig. 4), tail (App. E) (default: the scene's [diagram] or auto)")
       ->check(CLI::IsMember(enum_names<Classifier>()));
   app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C at this value over the plane, >= 0 (0: off; Fig. 5; default: the scene's [diagram] or off)")
       ->check(non_negative());
-  app.add_option("--threads", o->threads, "worker threads, integer in [0, 4096] (0: all cores)")->capture_default_str();
+  app.add_option("--threads", o->threads, "worker threads, integer in [0, 4096] (0: all cores)")
+      ->check(integer_in(0, 4096))
+      ->capture_default_str();
   app.add_option("--schedule", o->schedule, "point scheduling over threads")
       ->check(CLI::IsMember({"dynamic", "static"}))
       ->capture_default_str();
   app.add_option("--shard", o->shard, "k/n with 0 <= k < n: compute only the points with index % n == k (job arrays; then rbcstab merge)")
       ->capture_default_str();
-  app.add_option("--out", o->out, "output prefix: PREFIX.csv, PREFIX.json (shards: PREFIX.shardKofN.*)")->capture_default_str();
-  app.add_option("--journal", o->journal, "checkpoint journal prefix (default: the output prefix; file PREFIX.journal)");
+  app.add_option("--out", o->out, "output prefix: PREFIX.csv, PREFIX.json (shards: PREFIX.shardKofN.*)")
+      ->check(output_name())
+      ->capture_default_str();
+  app.add_option("--journal", o->journal, "checkpoint journal prefix (default: the output prefix; file PREFIX.journal)")
+      ->check(output_name());
   app.add_flag("--no-journal", o->no_journal, "no checkpoint journal (no resume)");
   app.add_option("--sync-interval", o->sync_interval, "fdatasync the journal at most this often [s], >= 0")->capture_default_str();
   app.add_flag("--no-seconds", o->no_seconds, "omit per-point wall-clock seconds: outputs identical byte for byte across runs");

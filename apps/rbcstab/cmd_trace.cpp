@@ -88,20 +88,25 @@ static Runner add_trace(CLI::App& app) {
   app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C fixed over the plane, >= 0 (0: off; default: the scene's [diagram] or off)")
       ->check(non_negative());
   app.add_option("--criterion", o->criterion, "asymptotic | finite-horizon")->capture_default_str();
-  app.add_option("--horizon", o->trace.T, "finite-horizon T, >= 0 (0: the scene's T)")->capture_default_str();
+  app.add_option("--horizon", o->trace.T, "finite-horizon T, >= 0 (0: the scene's T)")
+      ->check(non_negative())
+      ->capture_default_str();
   app.add_option("--lines", o->trace.lines,
                  "interior lines (x fixed) searched for starting points besides the edges, integer in [0, 10000]")
+      ->check(integer_text("an integer in [0, 10000]"))
       ->check(CLI::Range(0, 10000))
       ->capture_default_str();
   app.add_option("--samples", o->trace.samples, "brackets per edge or line when searching for starts, integer in [2, 1000000]")
+      ->check(integer_in(2, 1000000))
       ->capture_default_str();
   app.add_option("--max-step", o->trace.max_step, "continuation step cap in the unit square (curve resolution), > 0")
       ->capture_default_str();
   app.add_option("--threads", o->threads, "threads for the per-point predictor verdicts of --diagram, integer in [0, 4096] (0: all cores)")
+      ->check(integer_in(0, 4096))
       ->capture_default_str();
   app.add_option("--diagram", o->diagram, "diagram JSON of the same plane: measure the criterion's agreement")
       ->check(CLI::ExistingFile);
-  app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")->capture_default_str();
+  app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")->check(output_name())->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object on stdout (output files, pieces, corners, agreement)");
   return [o] { return run(*o); };
 }

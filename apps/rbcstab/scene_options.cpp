@@ -1,5 +1,7 @@
 #include "scene_options.hpp"
 
+#include "checks.hpp"
+
 namespace rbcstab::cli {
 
 void SceneOptions::add_to(CLI::App& app) {
@@ -12,10 +14,14 @@ void SceneOptions::add_to(CLI::App& app) {
     CLI::Option* o = nullptr;
     switch (k->kind) {
       case ValueKind::number:
-        o = app.add_option(k->flag, numbers_[path], k->help)->default_val(std::get<double>(d));
+        o = app.add_option(k->flag, numbers_[path], k->help)
+                ->check(number_text(k->help))
+                ->default_val(std::get<double>(d));
         break;
       case ValueKind::integer:
-        o = app.add_option(k->flag, integers_[path], k->help)->default_val(std::get<long long>(d));
+        o = app.add_option(k->flag, integers_[path], k->help)
+                ->check(integer_text(k->help))
+                ->default_val(std::get<long long>(d));
         break;
       case ValueKind::name:
       case ValueKind::text:

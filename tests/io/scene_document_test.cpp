@@ -107,6 +107,12 @@ TEST(SceneDocument, RecordsWhereEachValueCameFrom) {
   EXPECT_EQ(to_string(Origin::default_value), "default");
   EXPECT_EQ(to_string(Origin::flag), "flag");
   EXPECT_THROW(parse_modes({"3:1e-3"}, "--delta-l"), InvalidArgument);
+  // A comma list sets every mode it names; every piece must parse in full and each mode appear once.
+  EXPECT_EQ(parse_modes({"3=0.05,4=0.07", "5=1e-3"}, "--delta-l"),
+            (std::map<int, double>{{3, 0.05}, {4, 0.07}, {5, 1e-3}}));
+  for (const char* bad : {"", "3=", "=1", "3=0.1abc", "3=0.1=2", "3.5=0.1", "3=0.1,", ",3=0.1", "3=0.1,3=0.2"})
+    EXPECT_THROW(parse_modes({bad}, "--delta-l"), InvalidArgument) << bad;
+  EXPECT_THROW(parse_modes({"3=0.1", "3=0.2"}, "--delta-l"), InvalidArgument);
   // Panel tables are read once but interpreted by their owners: a wrong type is named when read.
   try {
     (void)parse_scene("[fig6e]\nB = \"x\"\n").fig6e->numbers("B", 0, "a non-empty array of numbers");

@@ -738,10 +738,29 @@ Direction direction_from_string(const std::string& name) { return from_string<Di
 
 // ---- specs ----
 
+namespace {
+// lambda >= 0 and beta in [0, pi] are closed edges a branch lands on; other domains are open.
+bool has_closed_edges(ContinuationParameter q) {
+  return q == ContinuationParameter::lambda || q == ContinuationParameter::beta;
+}
+}  // namespace
+
 void set_domain_bounds(ContinuationOptions& engine, ContinuationParameter q, double lo, double hi) {
-  const bool beta = q == ContinuationParameter::beta;
-  engine.p_min = ((q == ContinuationParameter::lambda || beta) && lo < 0) ? 0.0 : lo;
-  engine.p_max = (beta && hi > M_PI) ? M_PI : hi;
+  engine.p_min = lo;
+  engine.p_max = hi;
+  if (!has_closed_edges(q)) return;
+  const Domain d = continuation_domain(q, Parameters{});  // neither domain depends on the other parameters
+  engine.p_min = std::max(lo, d.lo);
+  engine.p_max = std::min(hi, d.hi);
+}
+
+void require_bounds_in_domain(ContinuationParameter q, double lo, double hi, const std::string& lo_name,
+                              const std::string& hi_name) {
+  if (!has_closed_edges(q)) return;
+  const Domain d = continuation_domain(q, Parameters{});
+  const std::string range = d.text() + ", " + to_string(q) + "'s continuation domain";
+  require(std::isinf(lo) || d.contains(lo), lo_name, lo, range);
+  require(std::isinf(hi) || d.contains(hi), hi_name, hi, range);
 }
 
 void BranchSpec::validate() const {

@@ -170,6 +170,10 @@ struct BranchSpec {
 // The bounds the engine uses for parameter q from the requested [lo, hi]: lambda >= 0 and beta in
 // [0, pi] are closed domain edges, landed on exactly instead of failing beyond them.
 void set_domain_bounds(ContinuationOptions& engine, ContinuationParameter q, double lo, double hi);
+// A requested bound (lo_name, hi_name: the flags or keys that gave them) beyond a closed edge is a mistake, not
+// a wish to stop there: InvalidArgument naming it, its value and the domain. An infinite bound (none) passes.
+void require_bounds_in_domain(ContinuationParameter q, double lo, double hi, const std::string& lo_name,
+                              const std::string& hi_name);
 
 // How a branch starts from its scene. equilibrium: the scene relaxed for relax_T (on the stable branch
 // when one attracts it); modal: the ellipsoidal equilibrium's closed form; full: the closed form without

@@ -1,6 +1,7 @@
 #include "rbcstab/io/scene_file.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <set>
 #include <sstream>
@@ -43,11 +44,14 @@ std::vector<SceneKey> make_scene_keys() {
                  [q](const SceneFile& f) { return SceneValue{get_parameter(f.scene, q)}; },
                  [q](SceneFile& f, const SceneValue& v) { set_parameter(f.scene, q, number_of(v)); }});
   }
-  k.push_back({"initial", "delta_l", ValueKind::modes, "--delta-l", "per-mode perturbation override, l=value (repeatable)",
+  k.push_back({"initial", "delta_l", ValueKind::modes, "--delta-l",
+               "per-mode perturbation override, l=value or a comma list 3=1e-3,4=2e-3 (repeatable; each mode once)",
                {}, [](const SceneFile& f) { return SceneValue{f.scene.delta_l}; },
                [](SceneFile& f, const SceneValue& v) { merge_modes(f.scene.delta_l, v); }});
   k.push_back({"initial", "rest_delta_l", ValueKind::modes, "--rest-delta-l",
-               "stress-free l >= 3 content Delta0_l, l=value (repeatable; only the full level holds it)", {},
+               "stress-free l >= 3 content Delta0_l, l=value or a comma list (repeatable; each mode once; only the full "
+               "level holds it)",
+               {},
                [](const SceneFile& f) { return SceneValue{f.scene.rest_delta_l}; },
                [](SceneFile& f, const SceneValue& v) { merge_modes(f.scene.rest_delta_l, v); }});
   k.push_back({"run", "L", ValueKind::integer, "--L",
@@ -195,24 +199,70 @@ void apply_flag(SceneFile& file, const SceneKey& key, const SceneValue& value) {
 }
 
 std::map<int, double> parse_modes(const std::vector<std::string>& items, const std::string& flag) {
+  const std::string form =
+      " must be l=value with an integer mode l >= 3 and a number, e.g. 3=1e-3 (several: 3=1e-3,4=2e-3)";
   std::map<int, double> out;
   for (const auto& item : items) {
-    const auto eq = item.find('=');
-    try {
-      if (eq == std::string::npos) throw std::invalid_argument(item);
-      std::size_t pos = 0;
-      const int l = std::stoi(item.substr(0, eq), &pos);
-      out[l] = std::stod(item.substr(eq + 1));
-    } catch (const std::exception&) {
-      throw InvalidArgument(flag, flag + " = '" + item + "' must have the form l=value, e.g. 3=1e-3");
-    }
+    std::size_t start = 0;
+    do {  // a comma list gives several modes at once; an empty piece ("3=1e-3,") is an error
+      const std::size_t comma = item.find(',', start);
+      const std::string pair = item.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+      start = comma == std::string::npos ? std::string::npos : comma + 1;
+      const auto eq = pair.find('=');
+      std::size_t lpos = 0, vpos = 0;
+      int l = 0;
+      double v = 0;
+      try {
+        if (eq == std::string::npos || eq == 0) throw std::invalid_argument(pair);
+        l = std::stoi(pair.substr(0, eq), &lpos);
+        v = std::stod(pair.substr(eq + 1), &vpos);
+      } catch (const std::exception&) {
+        lpos = vpos = 0;
+      }
+      if (eq == std::string::npos || lpos != eq || vpos == 0 || eq + 1 + vpos != pair.size())
+        throw InvalidArgument(flag, flag + " = '" + item + "'" + form);
+      if (!out.emplace(l, v).second)
+        throw InvalidArgument(flag, flag + " = '" + item + "' repeats mode l = " + std::to_string(l) +
+                                        ": give each mode once");
+    } while (start != std::string::npos);
   }
   return out;
 }
 
+namespace {
+bool names_word(const std::string& text, const std::string& word) {
+  auto part = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; };
+  for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1))
+    if ((at == 0 || !part(text[at - 1])) && (at + word.size() == text.size() || !part(text[at + word.size()])))
+      return true;
+  return false;
+}
+
+// Where each value a message names came from ("run.dt from the scene file s.toml; run.T from --T"): a range
+// that depends on another value (dt <= T) is fixed in either place.
+std::string origins_named(const SceneFile& file, const std::string& message) {
+  std::string out;
+  for (const SceneKey& k : scene_keys()) {
+    if (k.table.empty() || !names_word(message, k.key)) continue;
+    const Origin o = file.origin(k.path());
+    const std::string from = o == Origin::flag   ? k.flag
+                             : o == Origin::file ? "the scene file " + file.source
+                                                 : "the default";
+    out += (out.empty() ? "" : "; ") + k.path() + " from " + from;
+  }
+  return out;
+}
+}  // namespace
+
 void validate_scene_file(const SceneFile& file) {
-  file.scene.validate();
-  file.options.validate();
+  try {
+    file.scene.validate();
+    file.options.validate();
+  } catch (const InvalidArgument& e) {
+    const std::string from = origins_named(file, e.what());
+    if (from.empty()) throw;
+    throw InvalidArgument(e.parameter(), std::string(e.what()) + " (" + from + ")");
+  }
 }
 
 SceneFile parse_scene(const std::string& toml_text, const std::string& source_name) {

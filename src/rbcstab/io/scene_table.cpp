@@ -14,17 +14,34 @@ const double* as_number(const SceneTable::Item& item, double& scratch) {
   return nullptr;
 }
 
+// An item as the file gave it, for messages ("abc" quoted, so that a string reads as one).
+std::string shown(const SceneTable::Item& item) {
+  if (const bool* b = std::get_if<bool>(&item)) return *b ? "true" : "false";
+  if (const long long* i = std::get_if<long long>(&item)) return std::to_string(*i);
+  if (const double* d = std::get_if<double>(&item)) return format_value(*d);
+  return "\"" + std::get<std::string>(item) + "\"";
+}
+std::string shown(const SceneTable::Value& v) {
+  using Shape = SceneTable::Value::Shape;
+  if (v.shape == Shape::scalar) return shown(v.items[0]);
+  std::string out;
+  for (std::size_t k = 0; k < v.items.size(); ++k)
+    out += (k ? ", " : "") + (v.shape == Shape::table ? v.keys[k] + " = " : "") + shown(v.items[k]);
+  return v.shape == Shape::table ? "{ " + out + " }" : "[" + out + "]";
+}
+
 // The items of an array of `count` items (0: any non-empty) each convertible by `get`, or InvalidArgument.
 template <class T, class Get>
 std::vector<T> array_of(const SceneTable& t, const SceneTable::Value& v, const std::string& key, std::size_t count,
                         const std::string& what, Get get) {
   const std::string path = t.path(key);
   const bool size_ok = count == 0 ? !v.items.empty() : v.items.size() == count;
-  if (v.shape != SceneTable::Value::Shape::array || !size_ok) throw InvalidArgument(path, path + " must be " + what);
+  if (v.shape != SceneTable::Value::Shape::array || !size_ok)
+    throw InvalidArgument(path, path + " = " + shown(v) + " must be " + what);
   std::vector<T> out;
   for (const SceneTable::Item& item : v.items) {
     T x{};
-    if (!get(item, x)) throw InvalidArgument(path, path + " must be " + what);
+    if (!get(item, x)) throw InvalidArgument(path, path + " = " + shown(v) + " must be " + what);
     out.push_back(x);
   }
   return out;
@@ -52,21 +69,21 @@ double SceneTable::number(const std::string& key) const {
   const Value& v = at(key);
   double scratch = 0;
   const double* d = v.shape == Value::Shape::scalar ? as_number(v.items[0], scratch) : nullptr;
-  if (!d) throw InvalidArgument(path(key), path(key) + " must be a number");
+  if (!d) throw InvalidArgument(path(key), path(key) + " = " + shown(v) + " must be a number");
   return *d;
 }
 
 long long SceneTable::integer(const std::string& key) const {
   const Value& v = at(key);
   const long long* i = v.shape == Value::Shape::scalar ? std::get_if<long long>(&v.items[0]) : nullptr;
-  if (!i) throw InvalidArgument(path(key), path(key) + " must be an integer");
+  if (!i) throw InvalidArgument(path(key), path(key) + " = " + shown(v) + " must be an integer");
   return *i;
 }
 
 std::string SceneTable::text(const std::string& key) const {
   const Value& v = at(key);
   const std::string* s = v.shape == Value::Shape::scalar ? std::get_if<std::string>(&v.items[0]) : nullptr;
-  if (!s) throw InvalidArgument(path(key), path(key) + " must be a string");
+  if (!s) throw InvalidArgument(path(key), path(key) + " = " + shown(v) + " must be a string");
   return *s;
 }
 
@@ -98,7 +115,8 @@ std::vector<std::string> SceneTable::texts(const std::string& key, std::size_t c
 std::map<int, double> SceneTable::modes(const std::string& key) const {
   const Value& v = at(key);
   const std::string p = path(key);
-  if (v.shape != Value::Shape::table) throw InvalidArgument(p, p + " must be a table of mode = value, e.g. { 3 = 1e-3 }");
+  if (v.shape != Value::Shape::table)
+    throw InvalidArgument(p, p + " = " + shown(v) + " must be a table of mode = value, e.g. { 3 = 1e-3 }");
   std::map<int, double> out;
   for (std::size_t k = 0; k < v.items.size(); ++k) {
     const std::string& ks = v.keys[k];
@@ -112,7 +130,7 @@ std::map<int, double> SceneTable::modes(const std::string& key) const {
     }
     double scratch = 0;
     const double* d = as_number(v.items[k], scratch);
-    if (!d) throw InvalidArgument(p + "." + ks, p + "." + ks + " must be a number");
+    if (!d) throw InvalidArgument(p + "." + ks, p + "." + ks + " = " + shown(v.items[k]) + " must be a number");
     out[l] = *d;
   }
   return out;
