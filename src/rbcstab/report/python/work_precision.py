@@ -2,13 +2,13 @@
 """Work-precision figure: achieved error against cost (RHS evaluations and wall time), one line per
 (level, stepper). Usage: work_precision.py TABLE.csv OUT.png [TITLE]"""
 import csv
-import os
 import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from png_output import save_png  # noqa: E402
 
 
 def main():
@@ -40,14 +40,7 @@ def main():
         ax.grid(True, which="both", alpha=0.3)
     axes[0].legend(fontsize=8, title="level / stepper (circled: $l_\\Delta$ changed)", title_fontsize=8)
     fig.suptitle(title)
-    # Drawn to a hidden sibling, then renamed: a reader never sees half a PNG.
-    tmp = os.path.join(os.path.dirname(out) or ".", ".%s.tmp-%d-py" % (os.path.basename(out), os.getpid()))
-    try:
-        fig.savefig(tmp, dpi=110, format="png")
-        os.replace(tmp, out)
-    finally:
-        if os.path.exists(tmp):
-            os.remove(tmp)
+    save_png(fig, out, 110)
 
 
 if __name__ == "__main__":
