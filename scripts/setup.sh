@@ -17,7 +17,9 @@ jobs="${RBCSTAB_JOBS:-$(nproc)}"
 packages=(build-essential cmake ninja-build pkg-config
   libeigen3-dev libgsl-dev coinor-libipopt-dev libarpack2-dev
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
-  libopenmpi-dev openmpi-bin python3-matplotlib)
+  libopenmpi-dev openmpi-bin python3-matplotlib
+  pybind11-dev python3-pybind11 python3-dev python3-numpy python3-scipy python3-pytest
+  python3-nbclient python3-nbformat python3-ipykernel)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
@@ -35,6 +37,19 @@ fi
 
 cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRBCSTAB_WERROR=ON >/dev/null
 cmake --build "$build" -j "$jobs"
+
+# `import rbcstab` from any directory with Debian's python3: a .pth file in its site directory names the build's
+# package folder (as root the system site directory, otherwise the user's).
+if [ -d "$build/python/rbcstab" ]; then
+  if [ "$(id -u)" -eq 0 ]; then
+    site="$(/usr/bin/python3 -c 'import site; print(site.getsitepackages()[0])')"
+  else
+    site="$(/usr/bin/python3 -m site --user-site)"
+  fi
+  mkdir -p "$site"
+  printf '%s\n' "$build/python" > "$site/rbcstab.pth.tmp.$$"
+  mv -f "$site/rbcstab.pth.tmp.$$" "$site/rbcstab.pth"
+fi
 
 case "$mode" in
   run)

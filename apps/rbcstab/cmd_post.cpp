@@ -40,17 +40,12 @@ int run_fig6e(const PostOptions& o) {
 
 int run(const PostOptions& o) {
   if (o.fig6e) return run_fig6e(o);
-  const SceneFile sf = o.scene.resolve(TruncationUse::simulation);
-  // Out-of-plane g (r0 = 0): the paper's case; for in-plane scenes docs/theory.md gives the measured error.
-  const PostInstability post = post_instability(sf.scene.parameters, sf.scene.L, 0.0);
-  SimulationOptions so = sf.options;
-  so.record_trajectory = false;
-  const SimulationResult r = simulate(sf.scene, so);
+  const PostRun p = run_post(o.scene.read());
   if (o.json)
-    std::cout << post_json(sf, post, r).dump(2) << "\n";
+    std::cout << post_json(p.file, p.post, p.run).dump(2) << "\n";
   else
-    std::cout << post_text(sf, post, r);
-  return r.status == IntegrationStatus::success ? kOk : kRunFailed;
+    std::cout << post_text(p.file, p.post, p.run);
+  return p.run.status == IntegrationStatus::success ? kOk : kRunFailed;
 }
 }  // namespace
 

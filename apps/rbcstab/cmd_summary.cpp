@@ -4,7 +4,6 @@
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
-#include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/verdict/verdict_io.hpp"
 #include "scene_options.hpp"
 
@@ -17,16 +16,12 @@ struct SummaryOptions {
 };
 
 int run(const SummaryOptions& o) {
-  const SceneOptions& so = o.scene;
-  ReducedTransient transient;  // integrated once: the truncation rule and the finite-horizon predictor read it
-  const SceneFile sf = so.resolve(TruncationUse::simulation, &transient);
-  const SimulationResult r = simulate(sf.scene, sf.options);
-  const ScenePrediction prediction = predict(sf.scene, transient, &r);
+  const SummaryRun s = run_summary(o.scene.read());
   if (o.json)
-    std::cout << summary_json(sf, r, prediction).dump(2) << "\n";
+    std::cout << summary_json(s.file, s.run, s.prediction).dump(2) << "\n";
   else
-    std::cout << summary_text(sf, r, prediction);
-  return r.status == IntegrationStatus::success ? kOk : kRunFailed;
+    std::cout << summary_text(s.file, s.run, s.prediction);
+  return s.run.status == IntegrationStatus::success ? kOk : kRunFailed;
 }
 }  // namespace
 

@@ -53,13 +53,6 @@ SceneFile SceneOptions::read() const {
   return f;
 }
 
-void SceneOptions::apply_truncation(SceneFile& file, TruncationUse use, const ReducedTransient* transient) {
-  const TruncationDecision d = resolve_truncation(file.scene, file.origin("run.L"), use, {}, transient);
-  file.scene.L = d.L;
-  file.L_reason = d.reason;
-  file.scene.validate();
-}
-
 std::vector<std::string> SceneOptions::given_flags() const {
   std::vector<std::string> given;
   for (const Flag& f : flags_)
@@ -67,10 +60,9 @@ std::vector<std::string> SceneOptions::given_flags() const {
   return given;
 }
 
-SceneFile SceneOptions::resolve(TruncationUse use, ReducedTransient* transient) const {
+SceneFile SceneOptions::resolve(TruncationUse use) const {
   SceneFile f = read();
-  if (transient) *transient = truncation_transient(f.scene);
-  apply_truncation(f, use, transient);
+  apply_truncation(f, use);
   return f;
 }
 

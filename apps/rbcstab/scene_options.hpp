@@ -10,10 +10,6 @@
 #include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/io/scene_file.hpp"
 
-namespace rbcstab {
-struct ReducedTransient;  // analysis/predictors.hpp
-}  // namespace rbcstab
-
 namespace rbcstab::cli {
 
 struct SceneOptions {
@@ -23,12 +19,8 @@ struct SceneOptions {
   // The default scene (paper Fig. 3, out of plane), then the scene file, then the flags; SceneFile::origins
   // records which. L as they give it.
   SceneFile read() const;
-  // read(), then the truncation policy for this use (resolve_truncation): scene.L and L_reason.
-  // transient (optional): receives the scene's truncation_transient, which the automatic choice then reads, so
-  // that the finite-horizon predictor can share the run.
-  SceneFile resolve(TruncationUse use, ReducedTransient* transient = nullptr) const;
-  // The truncation policy applied to a read() scene (for commands whose use depends on the scene's content).
-  static void apply_truncation(SceneFile& file, TruncationUse use, const ReducedTransient* transient = nullptr);
+  // read(), then the truncation policy for this use (apply_truncation): scene.L and L_reason.
+  SceneFile resolve(TruncationUse use) const;
   // The scene flags given on the command line, by name (e.g. "--lambda").
   std::vector<std::string> given_flags() const;
 

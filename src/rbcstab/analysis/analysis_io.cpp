@@ -3,6 +3,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/io/json.hpp"
 
 namespace rbcstab {
@@ -96,6 +97,16 @@ std::string post_text(const SceneFile& file, const PostInstability& post, const 
       << ") = " << to_text(simulated_Delta2(r)) << ", l_Delta = " << r.l_Delta << ", sigma tail mean = "
       << r.sigma_tail_mean << "\n";
   return out.str();
+}
+
+PostRun run_post(SceneFile file) {
+  apply_truncation(file, TruncationUse::simulation);
+  PostRun out{std::move(file), {}, {}};
+  out.post = post_instability(out.file.scene.parameters, out.file.scene.L, 0.0);
+  SimulationOptions options = out.file.options;
+  options.record_trajectory = false;
+  out.run = simulate(out.file.scene, options);
+  return out;
 }
 
 }  // namespace rbcstab

@@ -33,4 +33,13 @@ Quantity simulated_Delta2(const SimulationResult& r);
 nlohmann::json post_json(const SceneFile& file, const PostInstability& post, const SimulationResult& r);
 std::string post_text(const SceneFile& file, const PostInstability& post, const SimulationResult& r);
 
+// The post command's computation on a scene file (L as it gives it): the truncation for a simulation, the
+// out-of-plane Delta~2 (r0 = 0: the paper's case) and the run without its trajectory. Every front end calls this.
+struct PostRun {
+  SceneFile file;
+  PostInstability post;
+  SimulationResult run;
+};
+PostRun run_post(SceneFile file);
+
 }  // namespace rbcstab

@@ -154,4 +154,11 @@ TruncationDecision resolve_truncation(const Scene& scene, Origin L_origin, Trunc
   return d;
 }
 
+void apply_truncation(SceneFile& file, TruncationUse use, const ReducedTransient* transient) {
+  const TruncationDecision d = resolve_truncation(file.scene, file.origin("run.L"), use, {}, transient);
+  file.scene.L = d.L;
+  file.L_reason = d.reason;
+  file.scene.validate();
+}
+
 }  // namespace rbcstab

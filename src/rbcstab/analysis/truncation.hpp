@@ -14,6 +14,7 @@
 
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/quantity.hpp"
+#include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/model/parameter_table.hpp"
 #include "rbcstab/model/scene.hpp"
 
@@ -69,5 +70,9 @@ struct TruncationDecision {
 // own, so that the finite-horizon predictor can share it.
 TruncationDecision resolve_truncation(const Scene& scene, Origin L_origin, TruncationUse use,
                                       const TruncationOptions& options = {}, const ReducedTransient* transient = nullptr);
+
+// resolve_truncation applied to a scene file (its L's origin): sets scene.L and L_reason, then validates the scene.
+// Every front end (the command line, the Python module) calls this once per scene it runs.
+void apply_truncation(SceneFile& file, TruncationUse use, const ReducedTransient* transient = nullptr);
 
 }  // namespace rbcstab

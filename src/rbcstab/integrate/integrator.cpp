@@ -170,6 +170,7 @@ IntegrationResult integrate(const System& system, std::span<const double> y0, do
              "reached max_steps = " + std::to_string(options.max_steps) + " at t = " + format_value(t));
         break;
       }
+      if (options.poll && (result.counters.steps & 7) == 0) options.poll();
       if (options.max_seconds > 0 && (result.counters.steps & 63) == 0 &&
           std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > options.max_seconds) {
         fail(IntegrationStatus::time_limit,

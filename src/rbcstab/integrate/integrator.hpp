@@ -42,6 +42,9 @@ struct IntegratorOptions {
   double h_min = 1e-13;              // a step below this ends the run as step_size_underflow
   std::size_t max_steps = 20'000'000;  // bounds the work: a run never hangs
   double max_seconds = 0;            // wall-clock budget; 0 = none
+  // Called every few accepted steps so that a front end can abandon a run (the Python module raises
+  // KeyboardInterrupt through it): it may throw, and the exception leaves the integrator. Empty: never.
+  std::function<void()> poll{};
   void validate() const;             // throws InvalidArgument naming the field
 };
 

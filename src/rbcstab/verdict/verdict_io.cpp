@@ -8,6 +8,7 @@
 #include "rbcstab/analysis/post_instability.hpp"
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
+#include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/model/coefficients.hpp"
 
@@ -263,6 +264,15 @@ std::string thresholds_text(const SceneFile& file, const ThresholdReport& t) {
       << "): unstable modes " << mode_list(pr.finite_horizon.unstable) << ", l_Delta = " << pr.finite_horizon.l_Delta
       << "\n";
   return out.str();
+}
+
+SummaryRun run_summary(SceneFile file) {
+  const ReducedTransient transient = truncation_transient(file.scene);
+  apply_truncation(file, TruncationUse::simulation, &transient);
+  SummaryRun out{std::move(file), {}, {}};
+  out.run = simulate(out.file.scene, out.file.options);
+  out.prediction = predict(out.file.scene, transient, &out.run);
+  return out;
 }
 
 }  // namespace rbcstab

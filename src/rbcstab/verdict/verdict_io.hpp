@@ -33,4 +33,13 @@ ThresholdReport threshold_report(const Scene& scene, bool exact_C_star);
 nlohmann::json thresholds_json(const SceneFile& file, const ThresholdReport& t);
 std::string thresholds_text(const SceneFile& file, const ThresholdReport& t);
 
+// The summary's computation on a scene file (L as it gives it): the truncation for a simulation and the
+// finite-horizon predictor share one reduced transient; then the run and its prediction. Every front end calls this.
+struct SummaryRun {
+  SceneFile file;
+  SimulationResult run;
+  ScenePrediction prediction;
+};
+SummaryRun run_summary(SceneFile file);
+
 }  // namespace rbcstab

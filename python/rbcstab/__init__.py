@@ -1,0 +1,20 @@
+"""rbcstab: shape dynamics and shape instabilities of a quasi-spherical red blood cell in shear flow.
+
+The perturbative model of Moriel, Stone and Mendez, from Python: every function here calls rbcstab's C++
+library (the same calls as the ``rbcstab`` command line), so a result's ``to_dict()`` equals the CLI's
+``--json`` output on the same scene. See docs/python.md.
+
+    >>> import rbcstab
+    >>> scene = rbcstab.Scene(lambda_=5, B=2, C=0.04)       # the paper's Fig. 3 case
+    >>> run = rbcstab.simulate(scene)
+    >>> run.l_Delta, run.Delta[-1], run.sigma[-1]
+"""
+from ._rbcstab import __version__, Scene, scene_keys
+from .runs import Report, Simulation, simulate, thresholds, post, summary
+from .model import *  # noqa: F401,F403 (initial_state, rhs, jacobian)
+from .continuation import *  # noqa: F401,F403 (continuation, Branch, load_branch)
+from .sweep import *  # noqa: F401,F403 (diagram, trace)
+from . import model as _model, continuation as _continuation, sweep as _sweep
+
+__all__ = (["__version__", "Scene", "scene_keys", "Report", "Simulation", "simulate", "thresholds", "post",
+            "summary"] + _model.__all__ + _continuation.__all__ + _sweep.__all__)

@@ -1,0 +1,124 @@
+"""One scene's runs: simulate, thresholds, post, summary (the CLI subcommands of the same names)."""
+import html
+
+from . import _rbcstab
+from ._rbcstab import Scene
+
+_UNSET = object()
+
+
+def _scene_with(scene, **overrides):
+    """The scene with the non-None overrides applied (TypeError if scene is not a Scene)."""
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene must be a rbcstab.Scene, got {type(scene).__name__}")
+    changes = {k: v for k, v in overrides.items() if v is not None}
+    return scene.replace(**changes) if changes else scene
+
+
+class Report(dict):
+    """A result as the CLI's --json object (a dict: equal to json.loads of the CLI's output), with the CLI's
+    text in ``.text``; prints as one line and renders in Jupyter as the text."""
+
+    def __init__(self, kind, data, text):
+        super().__init__(data)
+        self.kind = kind
+        self.text = text
+
+    def to_dict(self):
+        return dict(self)
+
+    def __repr__(self):
+        keys = [k for k in ("l_Delta", "model", "status", "l_star", "sigma_star", "regime") if k in self]
+        fields = ", ".join(f"{k}={self[k]!r}" for k in keys)
+        return f"<rbcstab {self.kind} of scene {self.get('scene', '?')!r}" + (f": {fields}>" if fields else ">")
+
+    def _repr_html_(self):
+        return "<pre>" + html.escape(self.text) + "</pre>"
+
+
+class Simulation:
+    """One run (rbcstab simulate): numpy arrays ``t``, ``Delta`` (shape (len(t), L - 1), column l - 2),
+    ``sigma``, ``r``, ``Psi`` on the sampling grid, and every scalar of ``rbcstab simulate --json`` as an
+    attribute (``model``, ``status``, ``l_Delta``, ``excess_area_drift``, ``rhs_evaluations``, ``seconds``, ...)."""
+
+    def __init__(self, data, arrays, text):
+        self._data = data
+        self.t = arrays["t"]
+        self.Delta = arrays["Delta"]
+        self.sigma = arrays["sigma"]
+        self.r = arrays["r"]
+        self.Psi = arrays["Psi"]
+        self.y_final = arrays["y_final"]
+        self.text = text
+
+    def __getattr__(self, name):
+        data = self.__dict__.get("_data", {})
+        if name in data:
+            return data[name]
+        raise AttributeError(f"Simulation has no attribute {name!r}")
+
+    def __dir__(self):
+        return sorted(set(super().__dir__()) | set(self._data))
+
+    def to_dict(self):
+        """Exactly the CLI's ``rbcstab simulate --json`` object."""
+        return dict(self._data)
+
+    @property
+    def ls(self):
+        """The modes l = 2..L of the columns of Delta."""
+        return list(range(2, self.Delta.shape[1] + 2))
+
+    def __repr__(self):
+        d = self._data
+        return (f"<rbcstab Simulation of {d['scene']!r}: {d['model']} L={d['L']}, {d['status']}, "
+                f"l_Delta={d['l_Delta']}, sigma(T)={d['sigma_final']:.6g}, {d['rhs_evaluations']} rhs evaluations, "
+                f"{d['seconds'] * 1e3:.3g} ms>")
+
+    def _repr_html_(self):
+        return "<pre>" + html.escape(self.text) + "</pre>"
+
+    def plot(self, ax=None, modes=None, sigma=False):
+        """Delta_l(t) for the given modes (default all), log scale; sigma=True draws sigma(t) instead."""
+        import matplotlib.pyplot as plt
+        ax = ax if ax is not None else plt.gca()
+        if sigma:
+            ax.plot(self.t, self.sigma, label=r"$\sigma$")
+            ax.set_ylabel(r"$\sigma$")
+        else:
+            for l in modes if modes is not None else self.ls:
+                ax.semilogy(self.t, self.Delta[:, l - 2], label=rf"$\Delta_{{{l}}}$")
+            ax.set_ylabel(r"$\Delta_l$")
+        ax.set_xlabel(r"$t\dot\gamma$")
+        ax.set_title(self._data["scene"])
+        ax.legend()
+        return ax
+
+
+def simulate(scene, model=None, stepper=None, rtol=None, atol=None):
+    """Integrates the scene (rbcstab simulate). model ('auto', 'full', 'modal', 'reduced'), stepper, rtol and
+    atol override the scene's (whose defaults are 'auto', 'rk8pd', 1e-8, 1e-12). Ctrl-C stops it
+    (KeyboardInterrupt); the GIL is released while it runs."""
+    scene = _scene_with(scene, model=model, stepper=stepper, rtol=rtol, atol=atol)
+    data, arrays, text = _rbcstab.simulate(scene)
+    return Simulation(data, arrays, text)
+
+
+def thresholds(scene, exact_C_star=False):
+    """The paper's instability thresholds and the predicted unstable modes, no simulation (rbcstab thresholds)."""
+    if not isinstance(exact_C_star, bool):
+        raise TypeError(f"exact_C_star must be a bool, got {type(exact_C_star).__name__}")
+    data, text = _rbcstab.thresholds(_scene_with(scene), exact_C_star)
+    return Report("thresholds", data, text)
+
+
+def post(scene):
+    """The post-instability excess area Delta~2, predicted against simulated (rbcstab post)."""
+    data, text = _rbcstab.post(_scene_with(scene))
+    return Report("post", data, text)
+
+
+def summary(scene):
+    """The main job: the run and its analysis (rbcstab summary)."""
+    data, text = _rbcstab.summary(_scene_with(scene))
+    return Report("summary", data, text)

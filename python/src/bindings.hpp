@@ -1,0 +1,34 @@
+#pragma once
+// Shared pieces of the Python module _rbcstab: JSON to Python objects, the Ctrl-C poll, and one bind_* function
+// per source file. The module holds no logic of its own: every call is a library call (rbcstab/*).
+#include <pybind11/pybind11.h>
+
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "rbcstab/io/scene_file.hpp"
+
+namespace rbcstab::python {
+
+namespace py = pybind11;
+
+// null -> None, numbers -> int/float, arrays -> list, objects -> dict (key order kept): json.loads of the CLI's
+// --json output gives the same object.
+py::object to_python(const nlohmann::json& j);
+
+// A poll for the library's long loops (IntegratorOptions::poll, the continuation stop): at most every 0.1 s it
+// takes the GIL and runs Python's signal handlers, so that Ctrl-C raises KeyboardInterrupt out of the C++ call.
+// Call it only on the thread that released the GIL.
+std::function<void()> signal_poll();
+
+// The SceneFile behind a rbcstab.Scene (TypeError for anything else).
+const SceneFile& scene_file(const py::handle& scene);
+
+void bind_scene(py::module_& m);
+void bind_runs(py::module_& m);
+void bind_model(py::module_& m);
+void bind_continuation(py::module_& m);
+void bind_sweep(py::module_& m);
+
+}  // namespace rbcstab::python

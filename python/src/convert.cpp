@@ -1,0 +1,45 @@
+#include <chrono>
+#include <memory>
+
+#include "bindings.hpp"
+
+namespace rbcstab::python {
+
+py::object to_python(const nlohmann::json& j) {
+  using value_t = nlohmann::json::value_t;
+  switch (j.type()) {
+    case value_t::null:
+    case value_t::discarded: return py::none();
+    case value_t::boolean: return py::bool_(j.get<bool>());
+    case value_t::number_integer: return py::int_(j.get<long long>());
+    case value_t::number_unsigned: return py::int_(j.get<unsigned long long>());
+    case value_t::number_float: return py::float_(j.get<double>());
+    case value_t::string: return py::str(j.get_ref<const std::string&>());
+    case value_t::array: {
+      py::list out;
+      for (const auto& v : j) out.append(to_python(v));
+      return out;
+    }
+    case value_t::object: {
+      py::dict out;
+      for (auto it = j.begin(); it != j.end(); ++it) out[py::str(it.key())] = to_python(it.value());
+      return out;
+    }
+    case value_t::binary: break;
+  }
+  throw std::logic_error("to_python: a binary JSON value");
+}
+
+std::function<void()> signal_poll() {
+  using clock = std::chrono::steady_clock;
+  auto last = std::make_shared<clock::time_point>(clock::now());
+  return [last] {
+    const clock::time_point now = clock::now();
+    if (now - *last < std::chrono::milliseconds(100)) return;
+    *last = now;
+    py::gil_scoped_acquire gil;
+    if (PyErr_CheckSignals() != 0) throw py::error_already_set();
+  };
+}
+
+}  // namespace rbcstab::python
