@@ -1,11 +1,13 @@
 #pragma once
 // Shared pieces of the Python module _rbcstab: JSON to Python objects, the Ctrl-C poll, and one bind_* function
 // per source file. The module holds no logic of its own: every call is a library call (rbcstab/*).
+#include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "rbcstab/io/scene_file.hpp"
 
@@ -16,6 +18,9 @@ namespace py = pybind11;
 // null -> None, numbers -> int/float, arrays -> list, objects -> dict (key order kept): json.loads of the CLI's
 // --json output gives the same object.
 py::object to_python(const nlohmann::json& j);
+
+// A 1-D numpy array that owns v's buffer (moved into a capsule): no copy.
+py::array_t<double> own(std::vector<double>&& v);
 
 // A poll for the library's long loops (IntegratorOptions::poll, the continuation stop): at most every 0.1 s it
 // takes the GIL and runs Python's signal handlers, so that Ctrl-C raises KeyboardInterrupt out of the C++ call.

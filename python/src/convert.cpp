@@ -30,6 +30,12 @@ py::object to_python(const nlohmann::json& j) {
   throw std::logic_error("to_python: a binary JSON value");
 }
 
+py::array_t<double> own(std::vector<double>&& v) {
+  auto* heap = new std::vector<double>(std::move(v));
+  py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<double>*>(p); });
+  return py::array_t<double>({py::ssize_t(heap->size())}, {py::ssize_t(sizeof(double))}, heap->data(), owner);
+}
+
 std::function<void()> signal_poll() {
   using clock = std::chrono::steady_clock;
   auto last = std::make_shared<clock::time_point>(clock::now());

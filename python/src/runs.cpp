@@ -14,13 +14,6 @@ namespace rbcstab::python {
 
 namespace {
 
-// A numpy view of a vector the array owns (moved into a capsule): no copy.
-py::array_t<double> own(std::vector<double>&& v) {
-  auto* heap = new std::vector<double>(std::move(v));
-  py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<double>*>(p); });
-  return py::array_t<double>({py::ssize_t(heap->size())}, {py::ssize_t(sizeof(double))}, heap->data(), owner);
-}
-
 // Delta_l(t) as a (samples, L - 1) array, column l - 2 (the trajectory keeps one row per sample).
 py::array_t<double> Delta_matrix(const Trajectory& tr, int L) {
   const py::ssize_t rows = py::ssize_t(tr.t.size()), cols = L - 1;
