@@ -1,7 +1,9 @@
 // One scene's runs, as the CLI's simulate, thresholds, post and summary: the same library calls, the same JSON
 // serialisers (so a Python dict equals json.loads of the CLI's --json), the GIL released while they compute.
 #include <pybind11/numpy.h>
+#include <pybind11/stl.h>
 
+#include <chrono>
 #include <memory>
 
 #include "bindings.hpp"
@@ -82,6 +84,25 @@ py::tuple summary_scene(const py::handle& scene) {
                         summary_text(s.file, s.run, s.prediction));
 }
 
+// The same work as simulate_scene without Python: the truncation, the run and its JSON, timed in C++ (seconds per
+// repeat). benchmarks/python_overhead.py compares it with the Python call in one process.
+std::vector<double> time_simulate_cpp(const py::handle& scene, int repeats) {
+  if (repeats < 1) throw py::value_error("repeats = " + std::to_string(repeats) + " is out of range: must be >= 1");
+  const SceneFile base = scene_file(scene);
+  std::vector<double> seconds;
+  py::gil_scoped_release release;
+  for (int i = 0; i < repeats; ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    SceneFile f = base;
+    apply_truncation(f, TruncationUse::simulation);
+    const SimulationResult r = simulate(f.scene, f.options);
+    const nlohmann::json j = simulation_json(f, r);
+    seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    if (j.empty()) throw std::logic_error("empty JSON");
+  }
+  return seconds;
+}
+
 }  // namespace
 
 void bind_runs(py::module_& m) {
@@ -90,6 +111,8 @@ void bind_runs(py::module_& m) {
   m.def("thresholds", &thresholds_scene, py::arg("scene"), py::arg("exact_C_star") = false,
         "(json dict, text): rbcstab thresholds [--exact-C-star] --json and its text.");
   m.def("post", &post_scene, py::arg("scene"), "(json dict, text): rbcstab post --json and its text.");
+  m.def("_time_simulate_cpp", &time_simulate_cpp, py::arg("scene"), py::arg("repeats"),
+        "Seconds per repeat of simulate's C++ work (truncation, run, JSON), for the overhead benchmark.");
   m.def("summary", &summary_scene, py::arg("scene"), "(json dict, text): rbcstab summary --json and its text.");
 }
 
