@@ -10,6 +10,7 @@ import importlib.util
 import json
 import numbers
 import os
+import sys
 
 import numpy as np
 
@@ -103,24 +104,21 @@ def _path(name, value):
 
 
 # ------------------------------------------------------------------------------------------- drawing
-_report = None
-
-
-def report_drawing():
-    """The report's drawing code (rbcstab_report.py beside the library's report module, found as the report
-    finds it: $RBCSTAB_DATA_DIR, the installed share folder, the source tree), imported once."""
-    global _report
-    if _report is None:
+def phase_draw():
+    """phase_draw, the report's phase-diagram drawing code (beside rbcstab_report.py: $RBCSTAB_DATA_DIR, the
+    installed share folder or the source tree, found as the report finds it), imported once."""
+    module = sys.modules.get("rbcstab._phase_draw")
+    if module is None:
         folder = _rbcstab.report_script_dir()
-        path = os.path.join(folder, "rbcstab_report.py") if folder else ""
+        path = os.path.join(folder, "phase_draw.py") if folder else ""
         if not path or not os.path.isfile(path):
-            raise OSError("rbcstab_report.py (the report's drawing code) not found; set RBCSTAB_DATA_DIR to the folder "
-                          "holding it")
-        spec = importlib.util.spec_from_file_location("rbcstab._report_drawing", path)
+            raise OSError("phase_draw.py (the report's phase-diagram drawing code) not found; set RBCSTAB_DATA_DIR to "
+                          "the folder holding rbcstab_report.py")
+        spec = importlib.util.spec_from_file_location("rbcstab._phase_draw", path)
         module = importlib.util.module_from_spec(spec)
         spec.loader.exec_module(module)
-        _report = module
-    return _report
+        sys.modules["rbcstab._phase_draw"] = module
+    return module
 
 
 def _axes(ax):
@@ -277,7 +275,7 @@ class Diagram:
         else:
             curves = self._overlay()["curves"] if analytic_lines else []
         xs, ys = np.meshgrid(self.x, self.y)
-        report_drawing().draw_phase_diagram(ax, xs.ravel().tolist(), ys.ravel().tolist(),
+        phase_draw().draw_phase_diagram(ax, xs.ravel().tolist(), ys.ravel().tolist(),
                                             self.l_Delta.ravel().tolist(), self.axes[0], self.axes[1], curves,
                                             title=title)
         return ax
@@ -417,7 +415,7 @@ class Trace:
         curves = self._overlay["curves"]
         if not analytic_lines:
             curves = [c for c in curves if c.get("color") == "black"]
-        report_drawing().draw_phase_diagram(ax, [], [], [], self.axes[0], self.axes[1], curves,
+        phase_draw().draw_phase_diagram(ax, [], [], [], self.axes[0], self.axes[1], curves,
                                             limits=(self.x_range, self.y_range),
                                             title=title or f"boundary ({self.criterion} criterion)")
         if corners and len(self.corners["x"]):

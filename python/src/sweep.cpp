@@ -415,7 +415,7 @@ void bind_sweep(py::module_& m) {
         "(json dict, columns dict, csv text): rbcstab post --fig6e --json, its columns, and the CSV of post --fig6e.");
 
   m.def("report_script_dir", [] { return find_script_dir(""); },
-        "The folder of the report's drawing code (rbcstab_report.py); '' when it cannot be found.");
+        "The folder of the report's drawing code (rbcstab_report.py, phase_draw.py); '' when it cannot be found.");
 }
 
 }  // namespace rbcstab::python

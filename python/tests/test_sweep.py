@@ -127,8 +127,11 @@ def test_trace_equals_the_cli(tmp_path):
 
 def test_trace_agreement_with_a_diagram_equals_the_cli(diagram_8x8, tmp_path):
     diagram_8x8.save(tmp_path / "d")
-    t = rbcstab.trace(rbcstab.Scene(**SCENE), diagram=diagram_8x8, **PLANE)
-    run_cli("trace", *PLANE_FLAGS, "--out", tmp_path / "cli", "--diagram", tmp_path / "d.json")
+    # coarse tracing options: the finite-horizon boundary is traced too (one reduced run per evaluation)
+    coarse = dict(lines=0, samples=16, max_step=0.1)
+    t = rbcstab.trace(rbcstab.Scene(**SCENE), diagram=diagram_8x8, **coarse, **PLANE)
+    run_cli("trace", *PLANE_FLAGS, "--out", tmp_path / "cli", "--diagram", tmp_path / "d.json", "--lines", 0,
+            "--samples", 16, "--max-step", 0.1)
     assert without_timing(t.to_dict()) == without_timing(json.loads(read(tmp_path / "cli.json")))
     assert t.agreement["predictor"] == "asymptotic"
     with pytest.raises(ValueError, match="plane"):
@@ -177,8 +180,8 @@ def test_progress_callable_and_tqdm(capsys):
 
 def test_ctrl_c_stops_a_diagram_within_a_second_and_the_journal_resumes(tmp_path):
     journal = tmp_path / "big.journal"
-    # 24 x 24 points at L = 8 over T = 500: a few seconds of work (~8 ms a point on one core)
-    big = dict(axes=("lnB", "lnC"), counts=(24, 24), threads=2, journal=journal, finite_horizon_agreement=False)
+    # 16 x 16 points at L = 8 over T = 500: about two seconds of work (~8 ms a point on one core)
+    big = dict(axes=("lnB", "lnC"), counts=(16, 16), threads=2, journal=journal, finite_horizon_agreement=False)
     scene = rbcstab.Scene(L=8, T=500.0)
     sent = []
 
@@ -195,10 +198,22 @@ def test_ctrl_c_stops_a_diagram_within_a_second_and_the_journal_resumes(tmp_path
     # every record in the journal is whole: the same call resumes from them and computes only the rest
     d = rbcstab.diagram(scene, progress=False, **big)
     assert d.complete and d.rejected == []
-    assert 20 <= d.resumed < 576 and d.resumed + d.computed == 576
+    assert 20 <= d.resumed < 256 and d.resumed + d.computed == 256
     # a journal of another configuration is refused, not misread
     with pytest.raises(ValueError, match="journal"):
         rbcstab.diagram(scene.replace(T=100.0), progress=False, **big)
+
+
+def test_ctrl_c_stops_a_finite_horizon_trace_within_a_second():
+    # one reduced run per criterion evaluation, thousands of them: seconds of work unless interrupted
+    timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
+    start = time.monotonic()
+    timer.start()
+    with pytest.raises(KeyboardInterrupt):
+        rbcstab.trace(rbcstab.Scene(**SCENE), criterion="finite-horizon", **PLANE)
+    elapsed = time.monotonic() - start
+    timer.join()
+    assert elapsed < 0.5 + 1.0, elapsed
 
 
 def test_the_gil_is_released_while_a_diagram_runs():
