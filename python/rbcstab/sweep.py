@@ -239,7 +239,8 @@ class Diagram:
         s = self.summary
         v = s["verdicts"]
         modes = ", ".join(f"l_Delta={k}: {n}" for k, n in sorted(s["l_Delta"].items(), key=lambda kv: int(kv[0])))
-        part = "" if self.complete else ", partial (shard)"
+        shard = self._doc.get("shard")
+        part = f", shard {shard['k']}/{shard['n']}" if shard else ""
         return (f"<rbcstab Diagram {self.axes[0]} x {self.axes[1]}: {len(self.x)} x {len(self.y)} points{part}, "
                 f"{v.get('stable', 0)} stable, {v.get('unstable', 0)} unstable, {v.get('failed', 0)} failed"
                 f"{' (' + modes + ')' if modes else ''}>")

@@ -56,6 +56,17 @@ def test_diagram_equals_the_cli_files(diagram_8x8, tmp_path):
     assert "seconds" not in quiet.__dir__() and not hasattr(quiet, "seconds")
 
 
+def test_a_shard_equals_the_cli_shard_file(tmp_path):
+    d = rbcstab.diagram(rbcstab.Scene(**SCENE), counts=(3, 2), shard=(1, 2), progress=False, **PLANE)
+    run_cli("diagram", *PLANE_FLAGS, "--counts", "3,2", "--shard", "1/2", "--out", tmp_path / "cli", "--no-journal",
+            "--quiet")
+    assert without_timing(d.to_dict()) == without_timing(json.loads(read(tmp_path / "cli.shard1of2.json")))
+    assert d.agreement is None and "shard 1/2" in repr(d)
+    # the other shard's points are -1 / '' / NaN
+    assert d.l_Delta.ravel().tolist()[0::2] == [-1, -1, -1] and min(d.l_Delta.ravel()[1::2]) >= 2
+    assert d.verdict[0, 0] == "" and math.isnan(d.growth[0, 0])
+
+
 def test_diagram_is_the_same_on_one_and_two_threads(diagram_8x8):
     one = rbcstab.diagram(rbcstab.Scene(**SCENE), counts=(8, 8), threads=1, progress=False, schedule="static",
                           **PLANE)
@@ -172,6 +183,8 @@ def test_progress_callable_and_tqdm(capsys):
     seen = []
     rbcstab.diagram(rbcstab.Scene(**SCENE), counts=(3, 2), progress=lambda *a: seen.append(a), **PLANE)
     assert seen and seen[-1][:2] == (6, 6) and all(total == 6 for _, total, _ in seen)
+    with pytest.raises(ZeroDivisionError):  # what the callable raises stops the run and comes out of it
+        rbcstab.diagram(rbcstab.Scene(**SCENE), counts=(3, 2), progress=lambda *a: 1 / 0, **PLANE)
     pytest.importorskip("tqdm")
     rbcstab.diagram(rbcstab.Scene(**SCENE), counts=(3, 2), progress=True, **PLANE)
     err = capsys.readouterr().err
