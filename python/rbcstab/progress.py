@@ -20,7 +20,21 @@ def _duration(seconds):
     return f"{seconds:.1f} s"
 
 
-class TextProgress:
+class _Bar:
+    """A bar as a context manager: leaving the block closes it."""
+
+    def close(self):
+        pass
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+        return False
+
+
+class TextProgress(_Bar):
     """Plain-text progress on a stream (default stderr): one line per `interval` seconds and a final line."""
 
     def __init__(self, description="rbcstab", unit="points", interval=1.0, stream=None):
@@ -56,15 +70,8 @@ class TextProgress:
         if self._state is not None and self._printed != self._state:
             self._print()
 
-    def __enter__(self):
-        return self
 
-    def __exit__(self, *exc):
-        self.close()
-        return False
-
-
-class _TqdmProgress:
+class _TqdmProgress(_Bar):
     """A tqdm bar driven by (done, total, eta); tqdm estimates the rate itself."""
 
     def __init__(self, tqdm, description, unit):
@@ -83,15 +90,8 @@ class _TqdmProgress:
         if self._bar is not None:
             self._bar.close()
 
-    def __enter__(self):
-        return self
 
-    def __exit__(self, *exc):
-        self.close()
-        return False
-
-
-class _Passive:
+class _Passive(_Bar):
     """A user's callable: used as it is, nothing to close."""
 
     def __init__(self, function):
@@ -99,15 +99,6 @@ class _Passive:
 
     def __call__(self, done, total, eta):
         self._function(done, total, eta)
-
-    def close(self):
-        pass
-
-    def __enter__(self):
-        return self
-
-    def __exit__(self, *exc):
-        return False
 
 
 def _tqdm():

@@ -132,8 +132,25 @@ def _numbers_repr(values):
     return "[" + ", ".join(f"{v:.6g}" for v in values) + "]"
 
 
+# ------------------------------------------------------------------------------------------- results
+class _Document:
+    """A result whose document (self._doc) and files (self._data: the compiled result) are the CLI's."""
+
+    def to_dict(self):
+        """Exactly the JSON the CLI writes to PREFIX.json for the same call."""
+        return json.loads(json.dumps(self._doc))
+
+    def to_csv(self):
+        """The CLI's PREFIX.csv text."""
+        return self._data.csv()
+
+    def save(self, prefix):
+        """Writes PREFIX.csv and PREFIX.json as the CLI's ``--out PREFIX`` does (both or neither)."""
+        self._data.save(_path("prefix", prefix))
+
+
 # ------------------------------------------------------------------------------------------- diagram
-class Diagram:
+class Diagram(_Document):
     """A phase diagram by direct simulation (``rbcstab diagram``).
 
     ``axes`` names the grid's two axes (x, y); ``x`` and ``y`` are their values (also as attributes named by
@@ -213,18 +230,6 @@ class Diagram:
     def rejected(self):
         """Journal records dropped and recomputed ('journal:line: why')."""
         return list(self._data.rejected)
-
-    def to_dict(self):
-        """Exactly the JSON the CLI writes to PREFIX.json for the same diagram."""
-        return json.loads(json.dumps(self._doc))
-
-    def to_csv(self):
-        """The CLI's PREFIX.csv text."""
-        return self._data.csv()
-
-    def save(self, prefix):
-        """Writes PREFIX.csv and PREFIX.json as ``rbcstab diagram --out PREFIX`` does (both or neither)."""
-        self._data.save(_path("prefix", prefix))
 
     def point_scene(self, i, j):
         """The scene of grid point (x[i], y[j]) as the diagram ran it (its L and integrator included):
@@ -347,7 +352,7 @@ class TraceCurve:
         return f"<TraceCurve l={self.l} chain={self.chain}: {len(self.x)} points>"
 
 
-class Trace:
+class Trace(_Document):
     """A stability boundary traced by continuation (``rbcstab trace``): ``curves`` (TraceCurve pieces with numpy
     arrays x, y, mu, sigma_R, sigma_c), ``corners`` (numpy arrays x, y, l_from, l_to: where the active mode
     changes), ``analytic_lines`` (the paper's lines on the plane). ``to_dict()`` is the CLI's PREFIX.json."""
@@ -380,17 +385,6 @@ class Trace:
     def agreement(self):
         """The predictors' agreement with a diagram (given diagram=...), else None."""
         return self._doc.get("agreement")
-
-    def to_dict(self):
-        """Exactly the JSON the CLI writes to PREFIX.json for the same trace."""
-        return json.loads(json.dumps(self._doc))
-
-    def to_csv(self):
-        return self._data.csv()
-
-    def save(self, prefix):
-        """Writes PREFIX.csv and PREFIX.json as ``rbcstab trace --out PREFIX`` does (both or neither)."""
-        self._data.save(_path("prefix", prefix))
 
     def __repr__(self):
         modes = sorted({c.l for c in self.curves})

@@ -64,6 +64,12 @@ std::vector<double> axis_values(const AxisRange& a) {
   return v;
 }
 
+// PREFIX.csv and PREFIX.json, as the CLI's --out PREFIX writes them: both or neither.
+void save_files(const std::string& prefix, const std::string& csv, const std::string& json) {
+  if (prefix.empty()) throw InvalidArgument("prefix", "prefix '' is empty: must be a file name or prefix");
+  write_files_atomic({{prefix + ".csv", csv, "prefix"}, {prefix + ".json", json, "prefix"}});
+}
+
 // Raised through the integrator's poll to abandon the points in flight once the run is stopped.
 struct Stopped : std::exception {
   const char* what() const noexcept override { return "diagram stopped"; }
@@ -92,22 +98,18 @@ struct DiagramData {
     a["oscillating"] = grid_array<bool>(spec, pts, false, [](const PointResult& p) { return p.oscillating; });
     a["sigma_final"] = grid_array<double>(spec, pts, std::nan(""), [](const PointResult& p) { return p.sigma_final; });
     a["t_reached"] = grid_array<double>(spec, pts, std::nan(""), [](const PointResult& p) { return p.t_reached; });
-    a["steps"] = grid_array<long long>(spec, pts, -1, [](const PointResult& p) { return static_cast<long long>(p.steps); });
-    a["failed_steps"] =
-        grid_array<long long>(spec, pts, -1, [](const PointResult& p) { return static_cast<long long>(p.failed_steps); });
+    auto count = [](std::size_t n) { return static_cast<long long>(n); };
+    a["steps"] = grid_array<long long>(spec, pts, -1, [&](const PointResult& p) { return count(p.steps); });
+    a["failed_steps"] = grid_array<long long>(spec, pts, -1, [&](const PointResult& p) { return count(p.failed_steps); });
     a["rhs_evaluations"] =
-        grid_array<long long>(spec, pts, -1, [](const PointResult& p) { return static_cast<long long>(p.rhs_evaluations); });
+        grid_array<long long>(spec, pts, -1, [&](const PointResult& p) { return count(p.rhs_evaluations); });
     if (output.include_seconds)
       a["seconds"] = grid_array<double>(spec, pts, std::nan(""), [](const PointResult& p) { return p.seconds; });
     return a;
   }
   std::string csv() const { return diagram_csv(spec, run.points, output); }
   std::string json_text() const { return document.dump(1) + "\n"; }
-  // PREFIX.csv and PREFIX.json, as the CLI writes them: both or neither.
-  void save(const std::string& prefix) const {
-    if (prefix.empty()) throw InvalidArgument("prefix", "prefix '' is empty: must be a file name or prefix");
-    write_files_atomic({{prefix + ".csv", csv(), "prefix"}, {prefix + ".json", json_text(), "prefix"}});
-  }
+  void save(const std::string& prefix) const { save_files(prefix, csv(), json_text()); }
 };
 
 struct DiagramArgs {
@@ -183,10 +185,7 @@ struct TraceData {
 
   std::string csv() const { return trace_csv(plane, result); }
   std::string json_text() const { return document.dump(1) + "\n"; }
-  void save(const std::string& prefix) const {
-    if (prefix.empty()) throw InvalidArgument("prefix", "prefix '' is empty: must be a file name or prefix");
-    write_files_atomic({{prefix + ".csv", csv(), "prefix"}, {prefix + ".json", json_text(), "prefix"}});
-  }
+  void save(const std::string& prefix) const { save_files(prefix, csv(), json_text()); }
   py::list curves() const {
     py::list out;
     for (const TraceCurve& c : result.curves) {

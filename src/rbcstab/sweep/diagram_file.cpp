@@ -52,7 +52,8 @@ DiagramSpec plane_spec(const SceneFile& scene, const PlaneChoice& c) {
     spec.x.axis = axis_from_string(c.axes[0]);
     spec.y.axis = axis_from_string(c.axes[1]);
   }
-  for (auto [field, range, axis] : {std::tuple{"x_range", &c.x_range, &spec.x}, std::tuple{"y_range", &c.y_range, &spec.y}}) {
+  for (auto [field, range, axis] :
+       {std::tuple{"x_range", &c.x_range, &spec.x}, std::tuple{"y_range", &c.y_range, &spec.y}}) {
     if (range->empty()) continue;
     require_pair(*range, field, "two numbers min,max");
     for (double v : *range) require(std::isfinite(v), field, v, "finite");
@@ -67,7 +68,8 @@ DiagramSpec plane_spec(const SceneFile& scene, const PlaneChoice& c) {
   }
   if (!c.classifier.empty()) spec.classifier = classifier_from_string(c.classifier);
   if (c.alpha_fixed) {
-    require(std::isfinite(*c.alpha_fixed) && *c.alpha_fixed >= 0, "alpha_fixed", *c.alpha_fixed, "finite and >= 0 (0: off)");
+    require(std::isfinite(*c.alpha_fixed) && *c.alpha_fixed >= 0, "alpha_fixed", *c.alpha_fixed,
+            "finite and >= 0 (0: off)");
     spec.alpha = *c.alpha_fixed;
   }
   spec.validate();
