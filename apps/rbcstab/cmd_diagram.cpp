@@ -52,13 +52,9 @@ std::string duration(double s) {
 
 int run(const DiagramCliOptions& o) {
   const SceneFile sf = o.scene.resolve(TruncationUse::grid);
-  DiagramSpec spec = plane_spec(sf, o.axes, o.x_range, o.y_range, o.alpha_fixed);
-  if (!o.counts.empty()) {
-    if (o.counts.size() != 2) throw InvalidArgument("--counts", "--counts takes two integers: nx,ny");
-    spec.x.count = o.counts[0], spec.y.count = o.counts[1];
-  }
-  if (!o.classifier.empty()) spec.classifier = classifier_from_string(o.classifier);
-  spec.validate();
+  PlaneChoice plane{o.axes, o.x_range, o.y_range, {o.counts.begin(), o.counts.end()}, o.classifier, {}};
+  if (o.alpha_fixed >= 0) plane.alpha_fixed = o.alpha_fixed;
+  const DiagramSpec spec = plane_spec(sf, plane);
 
   MpiSession mpi;  // a no-op unless started by mpirun (and built with MPI)
   DiagramOptions ro;
@@ -99,13 +95,10 @@ int run(const DiagramCliOptions& o) {
   const Shard out_shard = mpi.size() > 1 ? Shard{} : ro.shard;
   try {
     const std::string csv = diagram_csv(spec, r.points, oo);
-    nlohmann::json header = diagram_header(sf.scene, sf.options, spec);
-    put_truncation(header, sf);
-    nlohmann::json doc = diagram_json(header, spec, r.points, out_shard, oo);
     AgreementOptions ao;
     ao.threads = o.threads;
     ao.finite_horizon = !o.no_finite_horizon_agreement;
-    if (out_shard.n == 1) doc["agreement"] = agreement_json(sf.scene, spec, r.points, ao);
+    const nlohmann::json doc = diagram_document(sf, spec, r.points, out_shard, oo, ao);
     write_files_atomic({{prefix + ".csv", csv, "--out"}, {prefix + ".json", doc.dump(1) + "\n", "--out"}});
   } catch (const std::runtime_error& e) {
     std::cerr << "rbcstab: error: " << e.what() << "\n";

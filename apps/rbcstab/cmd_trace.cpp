@@ -12,9 +12,7 @@
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
-#include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
-#include "rbcstab/sweep/point_io.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
 #include "scene_options.hpp"
 
@@ -34,8 +32,9 @@ struct TraceCliOptions {
 
 int run(const TraceCliOptions& o) {
   const SceneFile sf = o.scene.resolve(TruncationUse::grid);
-  DiagramSpec spec = plane_spec(sf, o.axes, o.x_range, o.y_range, o.alpha_fixed);
-  spec.validate();
+  PlaneChoice plane{o.axes, o.x_range, o.y_range, {}, {}, {}};
+  if (o.alpha_fixed >= 0) plane.alpha_fixed = o.alpha_fixed;
+  const DiagramSpec spec = plane_spec(sf, plane);
   TraceOptions to = o.trace;
   to.criterion = trace_criterion_from_string(o.criterion);
   const TraceResult t = trace_boundary(sf.scene, spec, to);
@@ -48,16 +47,7 @@ int run(const TraceCliOptions& o) {
     } catch (const nlohmann::json::exception& e) {
       throw InvalidArgument("--diagram", "'" + o.diagram + "' is not JSON: " + e.what());
     }
-    const DiagramSpec ds = spec_from_json(dj);
-    if (ds.x.axis != spec.x.axis || ds.y.axis != spec.y.axis || ds.alpha != spec.alpha)
-      throw InvalidArgument("--diagram", "the diagram's plane differs from the traced plane");
-    const SceneFile dsf = parse_scene(dj.at("scene_toml").get<std::string>(), o.diagram);
-    AgreementOptions ao;
-    ao.threads = o.threads;
-    ao.trace_options = to;
-    ao.trace_finite_horizon = true;
-    ao.trace_in_plane = true;
-    doc["agreement"] = agreement_json(dsf.scene, ds, points_from_json(dj, ds), ao);
+    doc["agreement"] = trace_agreement_json(dj, o.diagram, spec, to, o.threads);
   }
   try {
     write_files_atomic({{o.out + ".csv", trace_csv(spec, t), "--out"}, {o.out + ".json", doc.dump(1) + "\n", "--out"}});

@@ -225,6 +225,43 @@ classifier = "tail"
   EXPECT_EQ(diagram_spec(parse_scene("name = 'x'\n")).size(), DiagramSpec{}.size());
 }
 
+// The front ends' plane (CLI flags, Python keywords) on top of the table: given fields replace it, empty ones
+// keep it, and every refusal names the field.
+TEST(DiagramFile, PlaneChoiceOverridesTheTableAndNamesBadFields) {
+  const SceneFile table = parse_scene("[diagram]\naxes = [\"lnC\", \"lambda\"]\ny_range = [0.5, 6]\ncounts = [8, 5]\n");
+  PlaneChoice c;
+  c.x_range = {-4, 1};
+  c.counts = {3, 2};
+  c.alpha_fixed = 100;
+  const DiagramSpec d = plane_spec(table, c);
+  EXPECT_EQ(d.x.axis, Axis::lnC);
+  EXPECT_EQ(d.y.axis, Axis::lambda);
+  EXPECT_EQ(d.x.min, -4.0);
+  EXPECT_EQ(d.y.max, 6.0);
+  EXPECT_EQ(d.x.count, 3);
+  EXPECT_EQ(d.y.count, 2);
+  EXPECT_EQ(d.alpha, 100.0);
+  EXPECT_EQ(plane_spec(table, {}).size(), 40u);
+  auto field_of = [&](const PlaneChoice& bad) {
+    try {
+      plane_spec(SceneFile{}, bad);
+    } catch (const InvalidArgument& e) {
+      return e.parameter();
+    }
+    return std::string("accepted");
+  };
+  EXPECT_EQ(field_of({{"lnB"}, {}, {}, {}, {}, {}}), "axes");
+  EXPECT_EQ(field_of({{"lnB", "lnD"}, {}, {}, {}, {}, {}}), "axis");
+  EXPECT_EQ(field_of({{}, {0, 1, 2}, {}, {}, {}, {}}), "x_range");
+  EXPECT_EQ(field_of({{}, {}, {std::nan(""), 1}, {}, {}, {}}), "y_range");
+  EXPECT_EQ(field_of({{}, {}, {}, {4}, {}, {}}), "counts");
+  EXPECT_EQ(field_of({{}, {}, {}, {4, 0}, {}, {}}), "counts");
+  EXPECT_EQ(field_of({{}, {}, {}, {4, 1'000'001}, {}, {}}), "counts");
+  EXPECT_EQ(field_of({{}, {}, {}, {}, "mean", {}}), "classifier");
+  EXPECT_EQ(field_of({{}, {}, {}, {}, {}, -1.0}), "alpha_fixed");
+  EXPECT_EQ(field_of({{"lnB", "lnC"}, {-1, 6}, {-5.5, 2}, {64, 64}, "auto", 0.0}), "accepted");
+}
+
 
 std::vector<std::string> lines_of(const std::string& path) {
   std::ifstream in(path);

@@ -1,5 +1,8 @@
 #include "rbcstab/sweep/diagram_file.hpp"
 
+#include <cmath>
+#include <tuple>
+
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
@@ -30,6 +33,47 @@ DiagramSpec diagram_spec(const SceneFile& scene) {
   if (t.has("alpha")) s.alpha = t.number("alpha");
   s.validate();
   return s;
+}
+
+namespace {
+// A field of two values: min, max (or nx, ny); the message shows what was given.
+template <class T>
+void require_pair(const std::vector<T>& v, const std::string& field, const std::string& what) {
+  if (v.size() == 2) return;
+  throw InvalidArgument(field, field + " takes " + what + ", got " + std::to_string(v.size()) +
+                                   (v.size() == 1 ? " value" : " values"));
+}
+}  // namespace
+
+DiagramSpec plane_spec(const SceneFile& scene, const PlaneChoice& c) {
+  DiagramSpec spec = diagram_spec(scene);
+  if (!c.axes.empty()) {
+    require_pair(c.axes, "axes", "two axis names x,y (e.g. lnB,lnC)");
+    spec.x.axis = axis_from_string(c.axes[0]);
+    spec.y.axis = axis_from_string(c.axes[1]);
+  }
+  for (auto [field, range, axis] :
+       {std::tuple{"x_range", &c.x_range, &spec.x}, std::tuple{"y_range", &c.y_range, &spec.y}}) {
+    if (range->empty()) continue;
+    require_pair(*range, field, "two numbers min,max");
+    for (double v : *range) require(std::isfinite(v), field, v, "finite");
+    axis->min = (*range)[0];
+    axis->max = (*range)[1];
+  }
+  if (!c.counts.empty()) {
+    require_pair(c.counts, "counts", "two integers nx,ny");
+    for (long long n : c.counts) require(n >= 1 && n <= 1'000'000, "counts", double(n), "integers in [1, 1000000]");
+    spec.x.count = int(c.counts[0]);
+    spec.y.count = int(c.counts[1]);
+  }
+  if (!c.classifier.empty()) spec.classifier = classifier_from_string(c.classifier);
+  if (c.alpha_fixed) {
+    require(std::isfinite(*c.alpha_fixed) && *c.alpha_fixed >= 0, "alpha_fixed", *c.alpha_fixed,
+            "finite and >= 0 (0: off)");
+    spec.alpha = *c.alpha_fixed;
+  }
+  spec.validate();
+  return spec;
 }
 
 }  // namespace rbcstab

@@ -7,6 +7,10 @@
 //   counts = [64, 64]
 //   classifier = "final"         # auto | final | tail
 //   alpha = 100                  # optional: hold alpha = B/C fixed (Fig. 5)
+#include <optional>
+#include <string>
+#include <vector>
+
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 
@@ -15,5 +19,17 @@ namespace rbcstab {
 // The spec from the scene's [diagram] table (defaults for absent keys; a scene without the table gives the
 // default spec). Unknown keys and bad values throw InvalidArgument naming "diagram.<key>".
 DiagramSpec diagram_spec(const SceneFile& scene);
+
+// A plane (and its grid) as a front end gives it on top of the scene's [diagram] table; an empty field keeps the
+// table's value (or the default spec's). Field names are the command line's flags (--x-range: x_range).
+struct PlaneChoice {
+  std::vector<std::string> axes;         // two axis names: x (fastest-varying), y
+  std::vector<double> x_range, y_range;  // two finite numbers each: min, max (inclusive)
+  std::vector<long long> counts;         // two integers nx, ny in [1, 1000000] (a diagram's grid)
+  std::string classifier;                // auto | final | tail (a diagram's l_Delta rule)
+  std::optional<double> alpha_fixed;     // >= 0: hold alpha = B/C at this value over the plane (0: off)
+};
+// diagram_spec(scene) with the choices applied, validated; InvalidArgument names the field (axes, x_range, ...).
+DiagramSpec plane_spec(const SceneFile& scene, const PlaneChoice& choice);
 
 }  // namespace rbcstab

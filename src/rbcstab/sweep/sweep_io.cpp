@@ -3,7 +3,9 @@
 #include <sstream>
 
 #include "rbcstab/analysis/analysis_io.hpp"
+#include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"
+#include "rbcstab/sweep/diagram_output.hpp"
 #include "rbcstab/sweep/point_io.hpp"
 
 namespace rbcstab {
@@ -79,6 +81,35 @@ nlohmann::json trace_json(const SceneFile& file, const DiagramSpec& plane, const
   return doc;
 }
 
+nlohmann::json trace_agreement_json(const nlohmann::json& dj, const std::string& source, const DiagramSpec& plane,
+                                    const TraceOptions& options, int threads) {
+  auto not_a_diagram = [&](const nlohmann::json::exception& e) {
+    return InvalidArgument("diagram", "'" + source + "' is not a diagram document: " + e.what());
+  };
+  DiagramSpec ds;
+  try {
+    ds = spec_from_json(dj);
+  } catch (const nlohmann::json::exception& e) {
+    throw not_a_diagram(e);
+  }
+  if (ds.x.axis != plane.x.axis || ds.y.axis != plane.y.axis || ds.alpha != plane.alpha)
+    throw InvalidArgument("diagram", "the diagram's plane differs from the traced plane");
+  SceneFile dsf;
+  std::vector<PointResult> points;
+  try {
+    dsf = parse_scene(dj.at("scene_toml").get<std::string>(), source);
+    points = points_from_json(dj, ds);
+  } catch (const nlohmann::json::exception& e) {
+    throw not_a_diagram(e);
+  }
+  AgreementOptions ao;
+  ao.threads = threads;
+  ao.trace_options = options;
+  ao.trace_finite_horizon = true;
+  ao.trace_in_plane = true;
+  return agreement_json(dsf.scene, ds, points, ao);
+}
+
 nlohmann::json trace_brief_json(const nlohmann::json& doc, const std::string& prefix) {
   nlohmann::json j{{"csv", prefix + ".csv"},
                    {"json", prefix + ".json"},
@@ -101,6 +132,16 @@ VerdictCounts count_verdicts(const std::vector<PointResult>& points) {
     c.stable += p.verdict == Verdict::stable;
   }
   return c;
+}
+
+nlohmann::json diagram_document(const SceneFile& file, const DiagramSpec& spec, const std::vector<PointResult>& points,
+                                const Shard& shard, const DiagramOutputOptions& output,
+                                const AgreementOptions& agreement) {
+  nlohmann::json header = diagram_header(file.scene, file.options, spec);
+  put_truncation(header, file);
+  nlohmann::json doc = diagram_json(header, spec, points, shard, output);
+  if (shard.n == 1) doc["agreement"] = agreement_json(file.scene, spec, points, agreement);
+  return doc;
 }
 
 nlohmann::json diagram_brief_json(const SceneFile& file, const DiagramRun& r, const std::string& prefix) {

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/diagram_output.hpp"
 #include "rbcstab/sweep/fig6e.hpp"
@@ -22,6 +23,11 @@ std::string trace_csv(const DiagramSpec& plane, const TraceResult& t);
 // scene's when options.T is 0), curves, corners, the paper's analytic lines on the plane, counters.
 nlohmann::json trace_json(const SceneFile& file, const DiagramSpec& plane, const TraceOptions& options,
                           const TraceResult& t);
+// The agreement block of `rbcstab trace --diagram FILE`: every predictor against the simulated points of a
+// diagram document (diagram_document) of the same plane, the boundaries traced with `options`; `source` names
+// the document in messages. A document of another plane or not a diagram throws InvalidArgument("diagram", ...).
+nlohmann::json trace_agreement_json(const nlohmann::json& diagram_doc, const std::string& source,
+                                    const DiagramSpec& plane, const TraceOptions& options, int threads);
 // What a trace wrote, from its document: files PREFIX.csv and PREFIX.json, pieces, corners, counts, agreement.
 nlohmann::json trace_brief_json(const nlohmann::json& trace_doc, const std::string& prefix);
 
@@ -30,6 +36,12 @@ struct VerdictCounts {
   std::size_t stable = 0, unstable = 0, failed = 0;
 };
 VerdictCounts count_verdicts(const std::vector<PointResult>& points);
+// The document `rbcstab diagram` writes to PREFIX.json: the header with the scene's truncation, the points and
+// their summary (diagram_json) and, when the job holds the whole grid (shard.n == 1), every predictor's agreement
+// with the points (agreement_json).
+nlohmann::json diagram_document(const SceneFile& file, const DiagramSpec& spec, const std::vector<PointResult>& points,
+                                const Shard& shard, const DiagramOutputOptions& output = {},
+                                const AgreementOptions& agreement = {});
 // What a diagram run wrote: files PREFIX.csv and PREFIX.json, point counts by verdict, hash, seconds, truncation.
 nlohmann::json diagram_brief_json(const SceneFile& file, const DiagramRun& r, const std::string& prefix);
 // What a merge of `inputs` shard files wrote.

@@ -22,6 +22,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib import colors as mcolors  # noqa: E402
+from phase_draw import draw_phase_diagram, greys  # noqa: E402 (beside this script, on sys.path)
 
 DPI = 100
 LINESTYLES = ["-", "--", "-.", ":", (0, (5, 1, 1, 1, 1, 1)), (0, (8, 2)), (0, (1, 1)), (0, (3, 1, 1, 1))]
@@ -72,12 +73,6 @@ def save(fig, out, size_px):
 
 def positive(values):
     return [v if v > 0 else float("nan") for v in values]
-
-
-def greys(n, lo=0.0, hi=0.75):
-    """n colours of decreasing darkness-contrast from a lightness-monotonic map (viridis, dark end first)."""
-    cmap = plt.get_cmap("viridis")
-    return [cmap(lo + (hi - lo) * k / max(1, n - 1)) for k in range(n)]
 
 
 # ------------------------------------------------------------------------------ Fig. 2: r(t), Psi(t)
@@ -359,17 +354,6 @@ def _pick(cols, names, fallback_index=None):
     return keys[fallback_index] if fallback_index is not None and fallback_index < len(keys) else None
 
 
-SYMBOLS = {"ln_B": r"$\ln\mathcal{B}$", "ln_C": r"$\ln\mathcal{C}$", "lnB": r"$\ln\mathcal{B}$",
-           "lnC": r"$\ln\mathcal{C}$", "Lambda": r"$\Lambda$", "S": "$S$", "lambda": r"$\lambda$", "Delta": r"$\Delta$",
-           "Delta0": r"$\Delta_0$", "alpha": r"$\alpha$", "beta": r"$\beta$", "ln_alpha": r"$\ln\alpha$",
-           "B": r"$\mathcal{B}$", "C": r"$\mathcal{C}$", "r": "$r$", "Psi": r"$\Psi$", "Delta2": r"$\Delta_2$",
-           "sigma": r"$\sigma$"}
-
-
-def symbol(name):
-    return SYMBOLS.get(name, name)
-
-
 def plot_phase_diagram(csv_path, out, overlay_json=None, size_px=(900, 750), x=None, y=None, title=None):
     """Points (x, y) coloured by l_Delta (l_Delta = 2, stable, left white), with curves overlaid.
 
@@ -384,66 +368,9 @@ def plot_phase_diagram(csv_path, out, overlay_json=None, size_px=(900, 750), x=N
     x = x or _pick(d, ["ln_B", "x"], 0)
     y = y or _pick(d, ["ln_C", "y"], 1)
     ld = [int(v) if math.isfinite(v) else 0 for v in d["l_Delta"]]
-    xs, ys = d[x], d[y]
-    levels = sorted({v for v in ld if v >= 3})
     fig, ax = new_figure(size_px)
-    ux, uy = sorted(set(xs)), sorted(set(ys))
-    # Light-to-mid colours only, so the black and red overlay lines stay visible on every class.
-    cols = greys(len(levels), 0.35, 0.95) if levels else []
-    colour_of = {lv: cols[k] for k, lv in enumerate(levels)}
-    if len(ux) * len(uy) == len(xs) and len(ux) > 1 and len(uy) > 1:
-        # A full grid: cells centred on the points, white where stable (l_Delta = 2), as the paper draws it.
-        import numpy as np
-
-        ix = {v: k for k, v in enumerate(ux)}
-        iy = {v: k for k, v in enumerate(uy)}
-        rgba = np.ones((len(uy), len(ux), 4))
-        for a_, b_, lv in zip(xs, ys, ld):
-            if lv in colour_of:
-                rgba[iy[b_], ix[a_]] = colour_of[lv]
-
-        def edges(u):
-            u = np.asarray(u)
-            mid = (u[1:] + u[:-1]) / 2
-            return np.concatenate([[u[0] - (mid[0] - u[0])], mid, [u[-1] + (u[-1] - mid[-1])]])
-
-        ax.imshow(rgba, origin="lower", aspect="auto", interpolation="nearest",
-                  extent=(edges(ux)[0], edges(ux)[-1], edges(uy)[0], edges(uy)[-1]), zorder=0)
-        from matplotlib.patches import Patch
-
-        ax.legend_handles_extra = ([Patch(facecolor="white", edgecolor="0.5", label=r"$l_\Delta = 2$ (stable)")] +
-                                   [Patch(color=colour_of[lv], label=rf"$l_\Delta = {lv}$") for lv in levels])
-        x_lim, y_lim = (edges(ux)[0], edges(ux)[-1]), (edges(uy)[0], edges(uy)[-1])
-    else:
-        for lv in levels:
-            px = [a_ for a_, b_ in zip(xs, ld) if b_ == lv]
-            py = [a_ for a_, b_ in zip(ys, ld) if b_ == lv]
-            ax.scatter(px, py, s=16, marker="s", color=colour_of[lv], edgecolors="none", label=rf"$l_\Delta = {lv}$",
-                       zorder=1)
-        x_lim, y_lim = (min(xs), max(xs)), (min(ys), max(ys))
-    if overlay_json:
-        for c in read_json(overlay_json).get("curves", []):
-            if not c["x"]:
-                continue
-            ls = {"solid": "-", "dashed": "--", "dotted": ":", "dashdot": "-."}.get(c.get("style", "solid"), "-")
-            on_line = c.get("label_on_line", False)
-            ax.plot(c["x"], c["y"], ls=ls, color=c.get("color", "black"), lw=c.get("width", 1.6),
-                    label=None if on_line else c.get("label"), zorder=3)
-            if on_line and c.get("label"):
-                # Families of parallel lines (l_* = 2.5, 3.5, ...): labelled at their upper end, not in the legend.
-                ax.annotate(c["label"], (c["x"][-1], c["y"][-1]), xytext=(-2, -2), textcoords="offset points",
-                            ha="right", va="top", fontsize=8, color=c.get("color", "black"), zorder=4,
-                            bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.7))
-    ax.set_xlim(*x_lim)
-    ax.set_ylim(*y_lim)
-    ax.set_xlabel(symbol(x))
-    ax.set_ylabel(symbol(y))
-    ax.grid(False)
-    handles, labels = ax.get_legend_handles_labels()
-    extra = getattr(ax, "legend_handles_extra", [])
-    ax.legend(extra + handles, [h.get_label() for h in extra] + labels, loc="center left",
-              bbox_to_anchor=(1.01, 0.5), fontsize=9)
-    ax.set_title(title or r"$l_\Delta$ (white: stable, $l_\Delta = 2$)", fontsize=11)
+    draw_phase_diagram(ax, d[x], d[y], ld, x, y, read_json(overlay_json).get("curves", []) if overlay_json else [],
+                       title=title)
     return save(fig, out, size_px)
 
 

@@ -1,0 +1,89 @@
+"""Draws a phase diagram into a matplotlib Axes: grid points coloured by l_Delta (white: stable) with the overlay
+curves (traced boundaries, the paper's analytic lines) that report/panels.cpp's phase_overlay_json styles. Shared
+by rbcstab_report.py (the report's phase-diagram figure) and the Python package (Diagram.plot, Trace.plot), so
+both draw by the same rules. No backend or rcParams are set here: the caller owns the figure."""
+import matplotlib.pyplot as plt
+import numpy as np
+from matplotlib.patches import Patch
+
+SYMBOLS = {"ln_B": r"$\ln\mathcal{B}$", "ln_C": r"$\ln\mathcal{C}$", "lnB": r"$\ln\mathcal{B}$",
+           "lnC": r"$\ln\mathcal{C}$", "Lambda": r"$\Lambda$", "S": "$S$", "lambda": r"$\lambda$", "Delta": r"$\Delta$",
+           "Delta0": r"$\Delta_0$", "alpha": r"$\alpha$", "beta": r"$\beta$", "ln_alpha": r"$\ln\alpha$",
+           "B": r"$\mathcal{B}$", "C": r"$\mathcal{C}$", "r": "$r$", "Psi": r"$\Psi$", "Delta2": r"$\Delta_2$",
+           "sigma": r"$\sigma$"}
+LINE_STYLES = {"solid": "-", "dashed": "--", "dotted": ":", "dashdot": "-."}
+
+
+def symbol(name):
+    return SYMBOLS.get(name, name)
+
+
+def greys(n, lo=0.0, hi=0.75):
+    """n colours of decreasing darkness-contrast from a lightness-monotonic map (viridis, dark end first)."""
+    cmap = plt.get_cmap("viridis")
+    return [cmap(lo + (hi - lo) * k / max(1, n - 1)) for k in range(n)]
+
+
+def _edges(u):
+    """Cell edges centred on the sorted values u."""
+    u = np.asarray(u)
+    mid = (u[1:] + u[:-1]) / 2
+    return np.concatenate([[u[0] - (mid[0] - u[0])], mid, [u[-1] + (u[-1] - mid[-1])]])
+
+
+def draw_phase_diagram(ax, xs, ys, ld, x, y, curves=(), limits=None, title=None):
+    """Points (xs[k], ys[k]) coloured by their l_Delta ld[k] (l_Delta = 2, stable, left white; a full grid as
+    cells centred on the points), then the overlay curves ({"label", "x", "y", "style", "color", "width",
+    "label_on_line"}); x and y name the axes. Without points, limits ((x_min, x_max), (y_min, y_max)) frame
+    the curves. Returns ax."""
+    xs, ys, ld = list(xs), list(ys), list(ld)
+    levels = sorted({v for v in ld if v >= 3})
+    ux, uy = sorted(set(xs)), sorted(set(ys))
+    # Light-to-mid colours only, so the black and red overlay lines stay visible on every class.
+    cols = greys(len(levels), 0.35, 0.95) if levels else []
+    colour_of = {lv: cols[k] for k, lv in enumerate(levels)}
+    extra = []
+    if len(ux) * len(uy) == len(xs) and len(ux) > 1 and len(uy) > 1:
+        # A full grid: cells centred on the points, white where stable (l_Delta = 2), as the paper draws it.
+        ix = {v: k for k, v in enumerate(ux)}
+        iy = {v: k for k, v in enumerate(uy)}
+        rgba = np.ones((len(uy), len(ux), 4))
+        for a_, b_, lv in zip(xs, ys, ld):
+            if lv in colour_of:
+                rgba[iy[b_], ix[a_]] = colour_of[lv]
+        ex, ey = _edges(ux), _edges(uy)
+        ax.imshow(rgba, origin="lower", aspect="auto", interpolation="nearest", extent=(ex[0], ex[-1], ey[0], ey[-1]),
+                  zorder=0)
+        extra = ([Patch(facecolor="white", edgecolor="0.5", label=r"$l_\Delta = 2$ (stable)")] +
+                 [Patch(color=colour_of[lv], label=rf"$l_\Delta = {lv}$") for lv in levels])
+        x_lim, y_lim = (ex[0], ex[-1]), (ey[0], ey[-1])
+    elif xs:
+        for lv in levels:
+            px = [a_ for a_, b_ in zip(xs, ld) if b_ == lv]
+            py = [a_ for a_, b_ in zip(ys, ld) if b_ == lv]
+            ax.scatter(px, py, s=16, marker="s", color=colour_of[lv], edgecolors="none", label=rf"$l_\Delta = {lv}$",
+                       zorder=1)
+        x_lim, y_lim = (min(xs), max(xs)), (min(ys), max(ys))
+    else:
+        x_lim, y_lim = limits
+    for c in curves:
+        if not len(c["x"]):
+            continue
+        on_line = c.get("label_on_line", False)
+        ax.plot(c["x"], c["y"], ls=LINE_STYLES.get(c.get("style", "solid"), "-"), color=c.get("color", "black"),
+                lw=c.get("width", 1.6), label=None if on_line else c.get("label"), zorder=3)
+        if on_line and c.get("label"):
+            # Families of parallel lines (l_* = 2.5, 3.5, ...): labelled at their upper end, not in the legend.
+            ax.annotate(c["label"], (c["x"][-1], c["y"][-1]), xytext=(-2, -2), textcoords="offset points",
+                        ha="right", va="top", fontsize=8, color=c.get("color", "black"), zorder=4,
+                        bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.7))
+    ax.set_xlim(*x_lim)
+    ax.set_ylim(*y_lim)
+    ax.set_xlabel(symbol(x))
+    ax.set_ylabel(symbol(y))
+    ax.grid(False)
+    handles, labels = ax.get_legend_handles_labels()
+    ax.legend(extra + handles, [h.get_label() for h in extra] + labels, loc="center left",
+              bbox_to_anchor=(1.01, 0.5), fontsize=9)
+    ax.set_title(title or r"$l_\Delta$ (white: stable, $l_\Delta = 2$)", fontsize=11)
+    return ax
