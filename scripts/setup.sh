@@ -19,7 +19,7 @@ packages=(build-essential cmake ninja-build pkg-config
   libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev libtomlplusplus-dev nlohmann-json3-dev
   libopenmpi-dev openmpi-bin python3-matplotlib
   pybind11-dev python3-pybind11 python3-dev python3-numpy python3-scipy python3-pytest
-  python3-nbclient python3-nbformat python3-ipykernel)
+  python3-nbclient python3-nbformat python3-ipykernel python3-tqdm)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
