@@ -88,6 +88,7 @@ IntegratorOptions integrator_options(const OrbitOptions& o) {
   io.stepper = Stepper::rk8pd;
   io.rtol = o.rtol;
   io.atol = o.atol;
+  io.poll = o.poll;
   return io;
 }
 

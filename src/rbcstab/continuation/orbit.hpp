@@ -12,6 +12,7 @@
 // number is a property of the solution, computed afterwards (orbit_summary).
 #include <Eigen/Dense>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
@@ -85,6 +86,9 @@ struct OrbitOptions {
   double rtol = 1e-12;         // integration tolerance of each segment (with its variational equations)
   double atol = 1e-13;         // absolute tolerance (states are O(1))
   int samples_per_segment = 64;  // dense samples for r_min/max, Psi_min/max (the winding is integrated)
+  // Every integration's IntegratorOptions::poll (shootings, the relaxation to the orbit): a front end
+  // abandons a long run through it (it may throw). Not saved with a branch.
+  std::function<void()> poll{};
   void validate() const;       // throws InvalidArgument naming the field
 };
 
