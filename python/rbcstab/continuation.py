@@ -392,8 +392,10 @@ class Branch:
         return f"{j['kind']} {what}: {len(pts)} points{ends}, {part['status']}" + (f"; {specials}" if specials else "")
 
     def __repr__(self):
-        sw = self.switched
-        extra = f"; switched branch: {len(sw)} points, {sw.status}" if sw is not None else ""
+        sw, extra = self.switched, ""
+        if sw is not None:
+            extra = (f"; switched branch: {len(sw)} points, {sw.status}" if sw._part()["switched"]
+                     else "; the switch failed")
         return f"<rbcstab.{type(self).__name__} {self._summary()}{extra}>"
 
     def _repr_html_(self):

@@ -299,13 +299,15 @@ py::dict columns(const Run& r, const std::string& role) {
 
 // ---- plots ----
 
-// The JSON of what `rbcstab plot` draws for these runs (report/bifurcation_plot: plot_spec), each run known by
-// its source name (the legend tells overlaid runs of the same kind apart by it).
+// The JSON of what `rbcstab plot` draws for these runs saved as branch files (report/bifurcation_plot:
+// plot_spec; the file's states add norm_x to the measures), each run known by its source name (the legend tells
+// overlaid runs of the same kind apart by it).
 py::object plot_spec_py(const std::vector<const Run*>& runs, const std::vector<std::string>& sources,
                         const std::string& x, const std::string& y, const std::string& title, bool all_labels) {
   if (runs.size() != sources.size()) throw py::value_error("plot_spec: one source name per run");
   std::vector<PlotInput> inputs;
-  for (std::size_t k = 0; k < runs.size(); ++k) inputs.push_back(plot_input(to_json(runs[k]->run), sources[k]));
+  for (std::size_t k = 0; k < runs.size(); ++k)
+    inputs.push_back(plot_input(branch_file_json(runs[k]->run), sources[k]));
   PlotOptions o;
   o.x = x;
   o.y = y;

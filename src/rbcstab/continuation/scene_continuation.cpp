@@ -1117,9 +1117,9 @@ CurveSpec curve_spec(const std::string& type, const std::string& parameter2, dou
       throw InvalidArgument("parameter2", "parameter2" + message.substr(e.parameter().size()));
     }
   }
+  if (c.parameter2) require_bounds_in_domain(*c.parameter2, p2_min, p2_max, min2_name, max2_name);
   require(!std::isnan(p2_min), min2_name, p2_min, "a number (-inf: no bound)");
   require(!std::isnan(p2_max), max2_name, p2_max, "a number (inf: no bound)");
-  if (c.parameter2) require_bounds_in_domain(*c.parameter2, p2_min, p2_max, min2_name, max2_name);
   c.p2_min = p2_min;
   c.p2_max = p2_max;
   c.point = point;
@@ -1131,9 +1131,9 @@ SceneRun scene_run(SceneFile file, BranchSpec spec, std::optional<CurveSpec> cur
   apply_truncation(file, truncation_use(spec.kind));
   if (file.origin("initial.beta") == Origin::default_value) file.scene.beta = default_beta(spec.kind);
   spec.scene = file.scene;
+  require_bounds_in_domain(spec.parameter, spec.engine.p_min, spec.engine.p_max, min_name, max_name);
   require(!std::isnan(spec.engine.p_min), min_name, spec.engine.p_min, "a number (-inf: no bound)");
   require(!std::isnan(spec.engine.p_max), max_name, spec.engine.p_max, "a number (inf: no bound)");
-  require_bounds_in_domain(spec.parameter, spec.engine.p_min, spec.engine.p_max, min_name, max_name);
   return {std::move(spec), std::move(curve), file.L_reason};
 }
 
