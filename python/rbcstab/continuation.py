@@ -344,14 +344,9 @@ class Branch:
 
     def to_csv(self, path=None):
         """The run as ``continue --csv`` writes it; written to path (atomically replaced) when given."""
-        text = self._run.csv()
         if path is not None:
-            path = os.fspath(path)
-            tmp = f"{path}.tmp.{os.getpid()}"
-            with open(tmp, "w") as f:
-                f.write(text)
-            os.replace(tmp, path)
-        return text
+            self._run.save_csv(os.fspath(path))
+        return self._run.csv()
 
     def text(self, measures=None):
         """The CLI's text output: the summary and the table of labelled points (measures: its columns)."""

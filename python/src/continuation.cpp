@@ -21,6 +21,7 @@
 #include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/io/files.hpp"
 #include "rbcstab/report/bifurcation_plot.hpp"
 #include "rbcstab/report/report.hpp"
 
@@ -326,6 +327,9 @@ void bind_continuation(py::module_& m) {
           "The points of a part ('branch', 'switched', 'one_parameter') as named numpy columns.");
   run.def("has_part", [](const Run& r, const std::string& role) { return part_of(r.run, role) != nullptr; });
   run.def("csv", [](const Run& r) { return to_csv(r.run); }, "The run as `rbcstab continue --csv` writes it.");
+  run.def(
+      "save_csv", [](const Run& r, const std::string& path) { write_file_atomic(path, to_csv(r.run)); },
+      py::arg("path"), "Writes csv() to path, atomically (`rbcstab continue --csv`).");
   run.def(
       "text",
       [](const Run& r, const std::vector<std::string>& measures) { return to_text(r.run, TableOptions{measures}); },

@@ -147,11 +147,27 @@ def test_to_dict_equals_the_cli_json_for_scene_keywords_and_options(cli):
 
 def test_curve_from_continuation_equals_the_cli(cli, rest_scene):
     c = rbcstab.continuation(rest_scene, **dict(FULL_C, min=0.014), curve="BP", parameter2="B", min2=0.9,
-                             max2=1.1, max_step=0.05)
+                             max2=1.1, point=1, max_step=0.05)
     expected = cli("continue", *FULL_C_FLAGS[:-6], "--min", 0.014, "--max", 0.08, "--direction", "backward",
-                   "--curve", "BP", "--parameter2", "B", "--min2", 0.9, "--max2", 1.1, "--max-step", 0.05)
+                   "--curve", "BP", "--parameter2", "B", "--min2", 0.9, "--max2", 1.1, "--point", 1, "--max-step", 0.05)
     assert isinstance(c, rbcstab.Curve)
     assert without_timing(c.to_dict()) == without_timing(expected)
+
+
+def test_orbit_options_equal_the_cli(cli):
+    # every option a fresh orbit run maps (segments, relax_T, allow_unstable_start, max_points, label_every)
+    scene = rbcstab.Scene(lambda_=5.0, Delta=0.3, Delta0=0.01, B=2.0, C=0.04, L=2)
+    b = rbcstab.continuation(scene, kind="orbit", parameter="Delta", min=0.3, max=0.4, segments=4, relax_T=100.0,
+                             allow_unstable_start=True, max_points=4, label_every=2, direction="forward")
+    expected = cli("continue", "--kind", "orbit", "--lambda", 5, "--Delta", 0.3, "--Delta0", 0.01, "--B", 2,
+                   "--C", 0.04, "--L", 2, "--parameter", "Delta", "--min", 0.3, "--max", 0.4, "--segments", 4,
+                   "--relax-T", 100, "--allow-unstable-start", "--max-points", 4, "--label-every", 2,
+                   "--direction", "forward")
+    assert without_timing(b.to_dict()) == without_timing(expected)
+    assert b.to_dict()["segments"] == 4 and len(b) == 4
+    for name in ("r_min", "r_max", "winding", "kind", "max_abs_multiplier", "multipliers"):
+        assert name in b.columns, name
+    assert b["kind"].dtype.kind == "U" and b["winding"].dtype.kind == "i"
 
 
 # ------------------------------------------------------------------------------------- closed forms
@@ -255,7 +271,13 @@ def test_python_save_restarts_from_the_cli_and_cli_save_loads_in_python(full_bra
     assert without_timing(rbcstab.load_branch(py_file).restart(label, max_points=5).to_dict()) == \
         without_timing(expected)
     # the CLI's file loads in Python: the same run
-    cli_run("continue", *FULL_C_FLAGS, "--save", cli_file)
+    cli_run("continue", *FULL_C_FLAGS, "--save", cli_file, "--csv", tmp_path / "cli.csv")
+    full_branch.to_csv(tmp_path / "py.csv")
+    assert (tmp_path / "py.csv").read_bytes() == (tmp_path / "cli.csv").read_bytes()
+    with pytest.raises(OSError):
+        full_branch.save(tmp_path / "no_such_folder" / "b.json")
+    with pytest.raises(OSError):
+        full_branch.to_csv(tmp_path / "no_such_folder" / "b.csv")
     loaded = rbcstab.load_branch(cli_file)
     mine = without_timing(full_branch.to_dict())
     theirs = without_timing(loaded.to_dict())
