@@ -401,16 +401,20 @@ def test_a_run_without_output_raises_and_an_early_end_warns():
 
 
 # ------------------------------------------------------------------------------------- Ctrl-C, GIL
-def test_ctrl_c_stops_a_long_orbit_continuation_within_a_second():
-    # In-plane orbits with a tiny step and no bound: minutes of shootings unless interrupted. The timer thread
-    # runs only if the GIL is released.
+@pytest.mark.parametrize("options", [
+    # shootings: in-plane orbits with a tiny step and no bound, minutes of work unless interrupted
+    dict(step=1e-5, max_step=1e-5, max_points=10**7, direction="forward"),
+    # the start's relaxation over 1e8 time units (the integrator's poll)
+    dict(relax_T=1e8),
+], ids=["shootings", "relaxation"])
+def test_ctrl_c_stops_a_long_orbit_continuation_within_a_second(options):
+    # The timer thread runs only if the GIL is released.
     scene = rbcstab.Scene(lambda_=5.0, beta=math.pi / 2)
     timer = threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT))
     start = time.monotonic()
     timer.start()
     with pytest.raises(KeyboardInterrupt):
-        rbcstab.continuation(scene, kind="orbit", parameter="lambda", step=1e-5, max_step=1e-5,
-                             max_points=10**7, direction="forward")
+        rbcstab.continuation(scene, kind="orbit", parameter="lambda", **options)
     elapsed = time.monotonic() - start
     timer.join()
     assert elapsed < 1.0 + 1.0, elapsed

@@ -176,9 +176,9 @@ class Orbit final : public SceneProblem {
     const double p0 = sys_.start_parameter();
     Eigen::VectorXd x0;
     if constexpr (std::is_same_v<System, ModalForcedSystem>)
-      x0 = sys_.relaxed_state(spec.scene, spec.relax_T);
+      x0 = sys_.relaxed_state(spec.scene, spec.relax_T, spec.orbit.poll);
     else
-      x0 = sys_.relaxed_state(spec.relax_T);
+      x0 = sys_.relaxed_state(spec.relax_T, spec.orbit.poll);
     const OrbitRelaxation r = pr_.relax(x0, p0, spec.relax_tol, spec.relax_max_periods);
     StartPoint s = newton_start(pr_, StartMethod::relaxed, pr_.shooting_guess(r.x, p0), p0,
                                 std::is_same_v<System, ModalForcedSystem> ? "periodic orbit near the relaxed modal state"
