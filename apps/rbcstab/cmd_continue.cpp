@@ -1,10 +1,11 @@
 // rbcstab continue: maps flags to a BranchSpec, CurveSpec or RestartRequest; the library decides
-// (continuation/scene_continuation.hpp), renders (branch_io.hpp) and saves and loads (branch_file.hpp).
+// (continuation/scene_continuation.hpp: scene_run, continue_run, restart), renders (branch_io.hpp) and saves and
+// loads (branch_file.hpp).
 #include <cmath>
 #include <iostream>
 #include <memory>
 #include <optional>
-#include <variant>
+#include <utility>
 
 #include "checks.hpp"
 #include "commands.hpp"
@@ -13,7 +14,6 @@
 #include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
 #include "rbcstab/core/error.hpp"
-#include "rbcstab/io/json.hpp"
 #include "rbcstab/io/files.hpp"
 #include "scene_options.hpp"
 
@@ -49,37 +49,6 @@ struct ContinueOptions {
       *o_max_points{}, *o_label_every{}, *o_segments{}, *o_relax_T{}, *o_label{}, *o_switch_at{};
 };
 
-// The same for a branch and a curve: every output rendered first (a rendering error writes nothing),
-// then the CSV and branch files, then JSON or text.
-template <class Result>
-void print(const ContinueOptions& o, const std::string& L_reason, const Result& r) {
-  const std::string csv = o.csv.empty() ? "" : to_csv(r);
-  const std::string file = o.save.empty() ? "" : branch_file_json(ContinuationRun(r)).dump(1) + "\n";
-  std::string out;
-  if (o.json) {
-    nlohmann::json j = to_json(r);
-    put_truncation(j, run_L(r), L_reason);
-    out = j.dump(2) + "\n";
-  } else {
-    out = to_text(r, TableOptions::from_list(o.measures));
-  }
-  std::vector<OutputFile> files;
-  if (!o.csv.empty()) files.push_back({o.csv, csv, "--csv"});
-  if (!o.save.empty()) files.push_back({o.save, file, "--save"});
-  write_files_atomic(files);
-  std::cout << out;
-}
-
-template <class Result>
-int report(const ContinueOptions& o, const std::string& L_reason, const Result& r) {
-  const RunOutcome out = outcome(r);
-  if (!out.note.empty()) std::cerr << "rbcstab: note: " << out.note << "\n";
-  if (out.has_output) print(o, L_reason, r);
-  if (out.failure.empty()) return kOk;
-  std::cerr << "rbcstab: " << out.failure << "\n";
-  return kRunFailed;
-}
-
 // The continuation parameters' names, from the parameter table.
 std::string parameter_names() {
   std::string names;
@@ -87,14 +56,26 @@ std::string parameter_names() {
   return names;
 }
 
-// --parameter2 by name (the message names the flag).
-ContinuationParameter parameter2(const std::string& name) {
-  try {
-    return continuation_parameter_from_string(name);
-  } catch (const InvalidArgument&) {
-    throw InvalidArgument("parameter2", "parameter2 = '" + name + "' is not a continuation parameter: must be one of " +
-                                            parameter_names());
-  }
+// Every output rendered first (a rendering error writes nothing), then the CSV and branch files, then JSON
+// or text.
+void print(const ContinueOptions& o, const std::string& L_reason, const ContinuationRun& r) {
+  const std::string csv = o.csv.empty() ? "" : to_csv(r);
+  const std::string file = o.save.empty() ? "" : branch_file_json(r).dump(1) + "\n";
+  const std::string out = o.json ? to_json(r, L_reason).dump(2) + "\n" : to_text(r, TableOptions::from_list(o.measures));
+  std::vector<OutputFile> files;
+  if (!o.csv.empty()) files.push_back({o.csv, csv, "--csv"});
+  if (!o.save.empty()) files.push_back({o.save, file, "--save"});
+  write_files_atomic(files);
+  std::cout << out;
+}
+
+int report(const ContinueOptions& o, const std::string& L_reason, const ContinuationRun& r) {
+  const RunOutcome out = outcome(r);
+  if (!out.note.empty()) std::cerr << "rbcstab: note: " << out.note << "\n";
+  if (out.has_output) print(o, L_reason, r);
+  if (out.failure.empty()) return kOk;
+  std::cerr << "rbcstab: " << out.failure << "\n";
+  return kRunFailed;
 }
 
 // --restart FILE: from --label N (a branch in --parameter, or with --curve that point's curve) or
@@ -121,47 +102,36 @@ int run_restart(const ContinueOptions& o, const std::optional<CurveSpec>& curve)
   if (o.o_max_points->count() > 0) ch.max_points = o.engine.max_points;
   if (o.o_label_every->count() > 0) ch.label_every = o.label_every;
   ch.switch_at_bp = o.switch_at_bp;
-  const std::string L_reason = "L = " + std::to_string(run_L(run)) + ": the branch file's scene (--restart)";
-  return std::visit([&](const auto& r) { return report(o, L_reason, r); }, restart(run, q));
+  return report(o, saved_run_L_reason(run), restart(run, q));
 }
 
 int run(const ContinueOptions& o) {
-  BranchSpec spec;
-  spec.kind = problem_kind_from_string(o.kind);
   std::optional<CurveSpec> curve;
-  if (!o.curve.empty()) {
-    curve.emplace();
-    curve->type = curve_kind_from_string(o.curve);
-    if (!o.parameter2.empty()) curve->parameter2 = parameter2(o.parameter2);
-    curve->p2_min = o.p2_min;
-    curve->p2_max = o.p2_max;
-    if (curve->parameter2) require_bounds_in_domain(*curve->parameter2, o.p2_min, o.p2_max, "--min2", "--max2");
-    curve->point = o.point;
-  } else if (!o.parameter2.empty()) {
+  if (!o.curve.empty())
+    curve = curve_spec(o.curve, o.parameter2, o.p2_min, o.p2_max, o.point, "--min2", "--max2");
+  else if (!o.parameter2.empty())
     throw InvalidArgument("parameter2", "--parameter2 needs --curve LP|BP|HB|LPC|PD|NS|UZ");
-  }
   if (!o.restart.empty()) return run_restart(o, curve);
   if (o.o_label->count() > 0 || o.o_switch_at->count() > 0)
     throw InvalidArgument(o.o_label->count() > 0 ? "label" : "switch_at",
                           std::string(o.o_label->count() > 0 ? "--label" : "--switch-at") +
                               " needs --restart FILE (the branch file that holds the label)");
-  SceneFile sf = o.scene.resolve(truncation_use(spec.kind));
-  if (sf.origin("initial.beta") == Origin::default_value) sf.scene.beta = default_beta(spec.kind);
-  spec.scene = sf.scene;
+  BranchSpec spec;
+  spec.kind = problem_kind_from_string(o.kind);
+  SceneFile file = o.scene.read();
   spec.parameter = continuation_parameter_from_string(o.parameter);
   spec.engine = o.engine;
   spec.engine.p_min = o.p_min;
   spec.engine.p_max = o.p_max;
-  require_bounds_in_domain(spec.parameter, o.p_min, o.p_max, "--min", "--max");
   spec.engine.direction = direction_from_string(o.direction);
   spec.relax_T = o.relax_T;
   spec.orbit = o.orbit;
   spec.switch_at_bp = o.switch_at_bp;
   spec.label_every = o.label_every;
   spec.allow_unstable_start = o.allow_unstable_start;
-  if (!curve) TableOptions::from_list(o.measures).validate(measure_names(spec.kind, spec.scene.L));
-  if (curve) return report(o, sf.L_reason, continue_curve(spec, *curve));
-  return report(o, sf.L_reason, continue_scene(spec));
+  const SceneRun sr = scene_run(std::move(file), spec, curve, "--min", "--max");
+  if (!curve) TableOptions::from_list(o.measures).validate(measure_names(sr.spec.kind, sr.spec.scene.L));
+  return report(o, sr.L_reason, continue_run(sr));
 }
 }  // namespace
 

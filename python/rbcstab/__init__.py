@@ -13,8 +13,9 @@ from ._rbcstab import __version__, Scene, scene_keys
 from .runs import Report, Simulation, simulate, thresholds, post, summary
 from .model import *  # noqa: F401,F403 (initial_state, rhs, jacobian)
 from .continuation import *  # noqa: F401,F403 (continuation, Branch, load_branch)
+from .continuation import __all__ as _continuation_all  # rbcstab.continuation is the function, not the module
 from .sweep import *  # noqa: F401,F403 (diagram, trace)
-from . import model as _model, continuation as _continuation, sweep as _sweep
+from . import model as _model, sweep as _sweep
 
 __all__ = (["__version__", "Scene", "scene_keys", "Report", "Simulation", "simulate", "thresholds", "post",
-            "summary"] + _model.__all__ + _continuation.__all__ + _sweep.__all__)
+            "summary"] + _model.__all__ + _continuation_all + _sweep.__all__)

@@ -1,1 +1,426 @@
-__all__ = []
+"""Continuation: branches of equilibria and periodic orbits in one parameter, their special points (LP, BP, HB,
+LPC, PD, NS, UZ), switched branches and two-parameter curves -- ``rbcstab continue`` from Python.
+
+Every call is the CLI's library call, so ``Branch.to_dict()`` equals ``rbcstab continue ... --json`` on the same
+arguments, ``Branch.save(path)`` writes the CLI's branch file (``--save``; ``--restart`` reads it, as
+:func:`load_branch` reads the CLI's) and ``Branch.plot()`` draws by the rules of ``rbcstab plot``.
+
+    >>> scene = rbcstab.Scene.from_toml("scenes/rest_l3_op.toml")
+    >>> b = rbcstab.continuation(scene, kind="full", parameter="C", min=0.012, max=0.08, direction="backward")
+    >>> b["C"], b["sigma"], b.stable, b.special_points[0]["type"]
+    >>> s = b.switch(b.labels("BP")[0])                    # the branch bifurcating at the BP
+    >>> c = b.curve(b.labels("BP")[0], parameter2="B", min2=0.8, max2=1.25)   # the BP in (C, B)
+    >>> b.plot()
+"""
+import html
+import importlib.util
+import numbers
+import os
+import sys
+import time
+import warnings
+
+import numpy as np
+
+from . import _rbcstab
+from ._rbcstab import Scene
+
+__all__ = ["continuation", "load_branch", "plot_branches", "Branch", "Curve", "ContinuationError",
+           "ContinuationWarning"]
+
+
+class ContinuationError(RuntimeError):
+    """A run that produced nothing: its start failed (no solution near the start state) or was refused (an
+    orbit certified unstable without allow_unstable_start). The CLI exits 1 there."""
+
+
+class ContinuationWarning(UserWarning):
+    """A run that ended early (a branch or curve stopped before a normal end, a switch that failed: the CLI's
+    exit 1 with output) or a note on its start (an unstable or uncertain start)."""
+
+
+# ------------------------------------------------------------------------------------------- arguments
+def _number(name, value):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name} must be a number, got {type(value).__name__} {value!r}")
+    return float(value)
+
+
+def _integer(name, value):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name} must be an integer, got {type(value).__name__} {value!r}")
+    return int(value)
+
+
+def _flag(name, value):
+    if not isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name} must be True or False, got {type(value).__name__} {value!r}")
+    return bool(value)
+
+
+def _name(name, value):
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be a string, got {type(value).__name__} {value!r}")
+    return value
+
+
+_KINDS = {"min": _number, "max": _number, "step": _number, "max_step": _number, "relax_T": _number,
+          "min2": _number, "max2": _number, "max_points": _integer, "segments": _integer, "label_every": _integer,
+          "point": _integer, "switch_at_bp": _flag, "allow_unstable_start": _flag, "direction": _name,
+          "curve": _name, "parameter2": _name, "kind": _name, "parameter": _name}
+
+
+def _options(**given):
+    """The given options (None: not given, the library's default) checked for their types, as a dict."""
+    return {k: _KINDS[k](k, v) for k, v in given.items() if v is not None}
+
+
+class _Progress:
+    """progress=True: a tqdm bar of the points computed (python3-tqdm), else a line on stderr every second."""
+
+    def __init__(self, what):
+        self.what = what
+        self.points = 0
+        self._last = time.monotonic()
+        try:
+            from tqdm.auto import tqdm
+        except ImportError:
+            self._bar = None
+        else:
+            self._bar = tqdm(desc=what, unit=" points")
+
+    def __call__(self, points, p):
+        self.points = points
+        if self._bar is not None:
+            self._bar.update(points - self._bar.n)
+            self._bar.set_postfix_str(f"at {p:.6g}", refresh=False)
+        elif time.monotonic() - self._last >= 1.0:
+            self._last = time.monotonic()
+            sys.stderr.write(f"{self.what}: {points} points, at {p:.6g}\n")
+            sys.stderr.flush()
+
+    def close(self):
+        if self._bar is not None:
+            self._bar.close()
+
+
+def _run(call, what, progress, *args):
+    """call(*args, progress=callable or None) with the bar shown and closed, and the run's outcome applied: a
+    run without output raises ContinuationError, a note or an early end is a ContinuationWarning."""
+    bar = _Progress(what) if _flag("progress", progress) else None
+    try:
+        run = call(*args, progress=bar)
+    finally:
+        if bar is not None:
+            bar.close()
+    has_output, note, failure = run.outcome()
+    if not has_output:
+        raise ContinuationError(failure)
+    for message in (note, failure):
+        if message:
+            warnings.warn(message, ContinuationWarning, stacklevel=3)
+    return _wrap(run)
+
+
+def _wrap(run):
+    return Curve(run) if run.has_part("one_parameter") else Branch(run)
+
+
+# ------------------------------------------------------------------------------------------- entry points
+def continuation(scene, kind="equilibrium", parameter="lambda", min=None, max=None, *, direction=None, step=None,
+                 max_step=None, max_points=None, relax_T=None, segments=None, switch_at_bp=False,
+                 allow_unstable_start=False, label_every=None, curve=None, parameter2=None, min2=None, max2=None,
+                 point=None, progress=False):
+    """Continues a branch from the scene's state (``rbcstab continue``; each keyword is the CLI's flag of the
+    same name in snake_case, None its default; docs/continuation.md).
+
+    kind: 'equilibrium' (reduced system), 'modal', 'full', 'orbit' or 'modal-orbit'; parameter: the free
+    parameter ('lambda', 'Delta', 'Delta0', 'B', 'C', 'Lambda', 'S', 'beta'); min, max: its bounds (the branch
+    ends there exactly); direction: 'forward', 'backward' or 'both' (default); step, max_step: the first and
+    largest arclength steps; max_points: points per direction; relax_T: the relaxation giving the start state;
+    segments: orbits' shooting segments; switch_at_bp: also continue the branch bifurcating at the first BP met;
+    allow_unstable_start: orbits, continue from an unstable start; label_every: label every N-th point.
+    curve ('LP', 'BP', 'HB', 'LPC', 'PD', 'NS', 'UZ') with parameter2, min2, max2 and point: the curve of the
+    point-th special point of that type in (parameter, parameter2) instead (a :class:`Curve`).
+    progress=True shows the points computed. Ctrl-C stops it (KeyboardInterrupt); the GIL is released.
+
+    Returns a :class:`Branch` (or a :class:`Curve`). Raises ValueError for bad input (naming the parameter, its
+    value and the allowed range), TypeError for a value of the wrong type, ContinuationError when the start
+    fails; a run that ends early is returned with a ContinuationWarning."""
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene must be a rbcstab.Scene, got {type(scene).__name__}")
+    options = _options(min=min, max=max, direction=direction, step=step, max_step=max_step, max_points=max_points,
+                       relax_T=relax_T, segments=segments, switch_at_bp=switch_at_bp,
+                       allow_unstable_start=allow_unstable_start, label_every=label_every, curve=curve,
+                       parameter2=parameter2, min2=min2, max2=max2, point=point)
+    what = f"continuation in {parameter}" if isinstance(parameter, str) else "continuation"
+    return _run(_rbcstab.continue_scene, what, progress, scene, _name("kind", kind), _name("parameter", parameter),
+                options)
+
+
+def load_branch(path):
+    """The run a branch file holds (``rbcstab continue --save``, :meth:`Branch.save`), checked key by key."""
+    return _wrap(_rbcstab.load_branch(os.fspath(path)))
+
+
+def _drawing():
+    """bifurcation_draw, the drawing code of ``rbcstab plot`` (beside rbcstab_report.py: $RBCSTAB_DATA_DIR, the
+    installed share folder or the source tree, as the CLI finds it), imported once."""
+    module = sys.modules.get("rbcstab._bifurcation_draw")
+    if module is None:
+        folder = _rbcstab.report_script_dir()
+        path = os.path.join(folder, "bifurcation_draw.py") if folder else ""
+        if not path or not os.path.isfile(path):
+            raise OSError("bifurcation_draw.py (the drawing code of `rbcstab plot`) not found; set RBCSTAB_DATA_DIR "
+                          "to the folder holding it")
+        spec = importlib.util.spec_from_file_location("rbcstab._bifurcation_draw", path)
+        module = importlib.util.module_from_spec(spec)
+        spec.loader.exec_module(module)
+        sys.modules["rbcstab._bifurcation_draw"] = module
+    return module
+
+
+def _text(name, value):
+    return "" if value is None else _name(name, value)
+
+
+def plot_branches(branches, ax=None, x=None, y=None, title=None, all_labels=False, names=None):
+    """Draws branches overlaid (``rbcstab plot F1.json F2.json ...``): stable parts solid, unstable dashed,
+    uncertain dotted, special points marked and labelled ("BP 3"), a branch's switched branch as its own series.
+    x, y: a parameter or measure (default: the free parameter; y: Psi for reduced equilibria, r_max for orbits,
+    r otherwise; a curve: its plane); names: the legend's names of the runs when several of the same kind are
+    drawn. Returns the Axes (a new figure's when ax is None)."""
+    branches = list(branches)
+    for b in branches:
+        if not isinstance(b, Branch):
+            raise TypeError(f"branches must be rbcstab.Branch objects, got {type(b).__name__}")
+    names = [f"branch {k + 1}" for k in range(len(branches))] if names is None else [_name("names", n) for n in names]
+    spec = _rbcstab.plot_spec([b._run for b in branches], names, _text("x", x), _text("y", y), _text("title", title),
+                              _flag("all_labels", all_labels))
+    drawing = _drawing()  # before the figure: a missing file leaves no empty figure behind
+    if ax is None:
+        import matplotlib.pyplot as plt
+        ax = plt.figure(layout="constrained").add_subplot()
+    for note in spec["notes"]:
+        warnings.warn(note, ContinuationWarning, stacklevel=2)
+    return drawing.draw_bifurcation(ax, spec)
+
+
+# ------------------------------------------------------------------------------------------- results
+class Branch:
+    """A continuation run: a one-parameter branch (with its switched branch, if any), as ``rbcstab continue``.
+
+    ``branch[name]`` is a numpy column over the branch's points: the free parameter and every measure of the
+    CLI's JSON and CSV (r, Psi, sigma, Delta_2, ..., r_min, winding, kind, ...), stable, n_unstable, stability,
+    margin, margin_error, label (0: unlabelled), type ('EP' at the ends), arclength, max_Re_eig (or
+    max_abs_multiplier) and eigenvalues (or multipliers; points x dimension, complex). ``columns`` lists the
+    names, ``len(branch)`` counts the points, ``special_points`` are the JSON's special points (type, label,
+    parameters, precision, stability certificate, ...). ``switched`` is the switched branch (a Branch over the
+    same run) or None. restart, switch, curve and save act on the whole run (labels are unique over a run)."""
+
+    _role = "branch"
+
+    def __init__(self, run, role=None):
+        self._run = run
+        if role is not None:
+            self._role = role
+        self._columns = run.columns(self._role)
+        self._json = None
+
+    # ---- the run's JSON and the part of it this object shows
+    def _run_json(self):
+        if self._json is None:
+            self._json = self._run.json()
+        return self._json
+
+    def _part(self):
+        j = self._run_json()
+        return {"branch": j, "switched": j.get("switched_branch"), "one_parameter": j.get("one_parameter_branch")}[
+            self._role]
+
+    def to_dict(self):
+        """The run as ``rbcstab continue ... --json`` prints it (a part -- switched, one_parameter_branch -- its
+        object in that JSON)."""
+        import copy
+        return copy.deepcopy(self._part())
+
+    # ---- columns
+    @property
+    def columns(self):
+        return list(self._columns)
+
+    def __getitem__(self, name):
+        try:
+            return self._columns[name]
+        except KeyError:
+            raise KeyError(f"{name!r} is not a column of this branch: must be one of {', '.join(self._columns)}") \
+                from None
+
+    def __contains__(self, name):
+        return name in self._columns
+
+    def __len__(self):
+        return len(self._part()["branch"])
+
+    @property
+    def stable(self):
+        """Per point: no unstable eigenvalue (multiplier)."""
+        return self._columns["stable"]
+
+    @property
+    def special_points(self):
+        """The special points along the branch, as dicts of the CLI's JSON (type, name, label, the parameters,
+        the measures, precision, status, unstable_before/after, stability, margin, margin_error, ...)."""
+        import copy
+        return copy.deepcopy(self._part()["special_points"])
+
+    def labels(self, type=None):
+        """The labels of the special points (of one type: 'BP', 'LP', ...), in order along the branch."""
+        return [sp["label"] for sp in self._part()["special_points"]
+                if sp["label"] is not None and (type is None or sp["type"] == type)]
+
+    @property
+    def status(self):
+        return self._part()["status"]
+
+    @property
+    def message(self):
+        return self._part()["message"]
+
+    @property
+    def free_parameter(self):
+        """The parameter the points were continued in (a curve's: its second, as in the CLI's JSON)."""
+        j = self._run_json()
+        return j["curve"]["parameters"][0] if self._role == "one_parameter" else j["free_parameter"]
+
+    @property
+    def kind(self):
+        return self._run_json()["kind"]
+
+    @property
+    def switched(self):
+        """The branch bifurcating at the BP it switched at (switch_at_bp, :meth:`switch`), or None."""
+        if self._role != "branch" or not self._run.has_part("switched"):
+            return None
+        return Branch(self._run, "switched")
+
+    # ---- more runs from labelled points
+    def restart(self, label, parameter=None, *, kind=None, min=None, max=None, direction=None, step=None,
+                max_step=None, max_points=None, label_every=None, switch_at_bp=False, progress=False):
+        """Continues again from the point labelled `label` (``continue --restart FILE --label N``): in
+        `parameter` (default: the run's) with the run's scene, kind and options, those given here changed (the
+        bounds: the run's when the parameter is the run's, none otherwise)."""
+        options = _options(parameter=parameter, kind=kind, min=min, max=max, direction=direction, step=step,
+                           max_step=max_step, max_points=max_points, label_every=label_every,
+                           switch_at_bp=switch_at_bp)
+        return _run(_rbcstab.restart, f"restart from label {label}", progress, self._run,
+                    _integer("label", label), options)
+
+    def switch(self, label, *, min=None, max=None, direction=None, step=None, max_step=None, max_points=None,
+               label_every=None, progress=False):
+        """Switches onto the branch bifurcating at the BP labelled `label` (``continue --restart FILE --switch-at
+        N``): the returned run holds this run's branch with the new branch as its ``switched``."""
+        options = _options(min=min, max=max, direction=direction, step=step, max_step=max_step,
+                           max_points=max_points, label_every=label_every)
+        return _run(_rbcstab.switch, f"switch at label {label}", progress, self._run, _integer("label", label),
+                    options)
+
+    def curve(self, label, parameter2, min2=None, max2=None, *, type=None, step=None, max_step=None,
+              max_points=None, label_every=None, progress=False):
+        """The curve of the special point labelled `label` (LP, BP, HB; LPC, PD, NS, BP, UZ of orbits) in (the
+        run's parameter, parameter2), bounded by [min2, max2] (``continue --restart FILE --label N --curve TYPE
+        --parameter2 P2``). type: the point's type, checked when given. Returns a :class:`Curve`."""
+        options = _options(step=step, max_step=max_step, max_points=max_points, label_every=label_every)
+        lo = -float("inf") if min2 is None else _number("min2", min2)
+        hi = float("inf") if max2 is None else _number("max2", max2)
+        return _run(_rbcstab.curve, f"curve from label {label}", progress, self._run, _integer("label", label),
+                    None if type is None else _name("type", type), _name("parameter2", parameter2), lo, hi, options)
+
+    # ---- files and text
+    def save(self, path):
+        """Writes the run as the CLI's branch file (``continue --save``), atomically: ``rbcstab continue
+        --restart path`` and :func:`load_branch` read it."""
+        self._run.save(os.fspath(path))
+
+    def to_csv(self, path=None):
+        """The run as ``continue --csv`` writes it; written to path (atomically replaced) when given."""
+        if path is not None:
+            self._run.save_csv(os.fspath(path))
+        return self._run.csv()
+
+    def text(self, measures=None):
+        """The CLI's text output: the summary and the table of labelled points (measures: its columns)."""
+        if isinstance(measures, str):
+            measures = [m for m in measures.split(",") if m]
+        return self._run.text([_name("measures", m) for m in (measures or [])])
+
+    def __str__(self):
+        return self.text()
+
+    # ---- plots
+    def plot_spec(self, x=None, y=None, title=None, all_labels=False):
+        """What :meth:`plot` draws (``rbcstab plot``'s JSON of what was drawn, format rbcstab-plot)."""
+        return _rbcstab.plot_spec([self._run], ["branch"], _text("x", x), _text("y", y), _text("title", title),
+                                  _flag("all_labels", all_labels))
+
+    def plot(self, ax=None, y=None, x=None, title=None, all_labels=False):
+        """Draws the run as ``rbcstab plot`` does (the whole run: a branch with its switched branch, a curve in
+        its plane); y, x: a parameter or measure (defaults as the CLI's). Returns the Axes."""
+        return plot_branches([self], ax=ax, x=x, y=y, title=title, all_labels=all_labels)
+
+    # ---- display
+    def _parameters(self):
+        """The parameter(s) of this part's points: a curve's two, else the free parameter."""
+        j = self._run_json()
+        if "curve" not in j:
+            return [j["free_parameter"]]
+        return list(j["curve"]["parameters"]) if self._role == "branch" else [j["curve"]["parameters"][0]]
+
+    def _summary(self):
+        j, part = self._run_json(), self._part()
+        pts = part["branch"]
+        what = {"branch": f"{j['curve']['type']} curve" if "curve" in j else "branch",
+                "switched": "switched branch", "one_parameter": "one-parameter branch"}[self._role]
+        ends = "".join(f", {n} {pts[0][n]:.6g} -> {pts[-1][n]:.6g}" for n in self._parameters()
+                       if pts and pts[0].get(n) is not None and pts[-1].get(n) is not None)
+        specials = ", ".join(f"{sp['type']} {sp['label']}" for sp in part["special_points"])
+        return f"{j['kind']} {what}: {len(pts)} points{ends}, {part['status']}" + (f"; {specials}" if specials else "")
+
+    def __repr__(self):
+        sw, extra = self.switched, ""
+        if sw is not None:
+            extra = (f"; switched branch: {len(sw)} points, {sw.status}" if sw._part()["switched"]
+                     else "; the switch failed")
+        return f"<rbcstab.{type(self).__name__} {self._summary()}{extra}>"
+
+    def _repr_html_(self):
+        """The summary and a table of the special points."""
+        names = self._parameters()
+        cell = lambda v: f"<td>{html.escape(f'{v:.10g}' if isinstance(v, float) else str(v))}</td>"  # noqa: E731
+        head = "".join(f"<th>{html.escape(h)}</th>" for h in ("type", "label", *names, "stability", "precision"))
+        rows = "".join("<tr>" + "".join(cell(sp.get(k)) for k in ("type", "label", *names, "stability", "precision"))
+                       + "</tr>" for sp in self._part()["special_points"])
+        table = f"<table><tr>{head}</tr>{rows}</table>" if rows else ""
+        return f"<p><b>rbcstab.{type(self).__name__}</b> {html.escape(self._summary())}</p>{table}"
+
+    def __reduce__(self):
+        return (_rebuild, (type(self), self._run, self._role))
+
+
+def _rebuild(cls, run, role):
+    return cls(run, role)
+
+
+class Curve(Branch):
+    """A two-parameter curve of a special point (``continue --curve``): columns over the curve's points (both
+    parameters and the measures), its own special points, and ``one_parameter_branch``, the branch it started
+    from (a Branch over the same run)."""
+
+    @property
+    def parameters(self):
+        """The curve's two parameters (the branch's, then parameter2)."""
+        return list(self._run_json()["curve"]["parameters"])
+
+    @property
+    def one_parameter_branch(self):
+        return Branch(self._run, "one_parameter")

@@ -53,14 +53,6 @@ void put_header(nlohmann::json& j, const BranchSpec& spec) {
   if (is_orbit(spec.kind)) j["segments"] = spec.orbit.segments;
 }
 
-// The most unstable spectral value: max Re(lambda), or max |mu| for multipliers.
-double most_unstable(const Eigen::VectorXcd& spectrum, StabilityKind kind) {
-  double m = kind == StabilityKind::eigenvalues ? -std::numeric_limits<double>::infinity() : 0.0;
-  for (Eigen::Index i = 0; i < spectrum.size(); ++i)
-    m = std::max(m, kind == StabilityKind::eigenvalues ? spectrum[i].real() : std::abs(spectrum[i]));
-  return m;
-}
-
 // Visits the points and special points of a branch in order along it: point k, then the special points
 // that lie between it and point k + 1. f(special, index).
 template <class F>
@@ -111,7 +103,7 @@ void csv_header(std::ostream& os, const std::vector<std::string>& parameters, bo
   for (const auto& n : m.measure_names)
     if (is_csv_measure(n)) os << ',' << n;
   os << ",stable,n_unstable";
-  if (with_max) os << (m.spectrum_kind == StabilityKind::eigenvalues ? ",max_Re_eig" : ",max_abs_multiplier");
+  if (with_max) os << ',' << most_unstable_key(m.spectrum_kind);
   os << ",label,type\n";
 }
 
@@ -204,9 +196,24 @@ void b_table(std::ostream& os, const std::vector<const MeasuredBranch*>& branche
 
 }  // namespace
 
+std::string spectrum_key(StabilityKind kind) {
+  return kind == StabilityKind::eigenvalues ? "eigenvalues" : "multipliers";
+}
+
+std::string most_unstable_key(StabilityKind kind) {
+  return kind == StabilityKind::eigenvalues ? "max_Re_eig" : "max_abs_multiplier";
+}
+
+double most_unstable(const Eigen::VectorXcd& spectrum, StabilityKind kind) {
+  double m = kind == StabilityKind::eigenvalues ? -std::numeric_limits<double>::infinity() : 0.0;
+  for (Eigen::Index i = 0; i < spectrum.size(); ++i)
+    m = std::max(m, kind == StabilityKind::eigenvalues ? spectrum[i].real() : std::abs(spectrum[i]));
+  return m;
+}
+
 nlohmann::json to_json(const MeasuredBranch& m) {
   const Branch& b = m.branch;
-  const char* spectrum_key = m.spectrum_kind == StabilityKind::eigenvalues ? "eigenvalues" : "multipliers";
+  const std::string spectrum = spectrum_key(m.spectrum_kind);
   nlohmann::json pts = nlohmann::json::array();
   for (std::size_t k = 0; k < b.points.size(); ++k) {
     const BranchPoint& pt = b.points[k];
@@ -218,7 +225,7 @@ nlohmann::json to_json(const MeasuredBranch& m) {
     put_stability(j, pt);
     nlohmann::json ev = nlohmann::json::array();
     for (Eigen::Index i = 0; i < pt.spectrum.size(); ++i) ev.push_back(complex_json(pt.spectrum[i]));
-    j[spectrum_key] = ev;
+    j[spectrum] = ev;
     pts.push_back(j);
   }
   nlohmann::json sps = nlohmann::json::array();
@@ -304,6 +311,12 @@ nlohmann::json to_json(const SceneCurve& r) {
 
 nlohmann::json to_json(const ContinuationRun& run) {
   return std::visit([](const auto& r) { return to_json(r); }, run);
+}
+
+nlohmann::json to_json(const ContinuationRun& run, const std::string& L_reason) {
+  nlohmann::json j = to_json(run);
+  put_truncation(j, run_L(run), L_reason);
+  return j;
 }
 
 std::string to_csv(const SceneBranch& r) {

@@ -35,12 +35,20 @@
 
 namespace rbcstab {
 
+// A point's spectrum under its JSON key ("eigenvalues" or "multipliers"), and its most unstable value,
+// max Re(lambda) or max |mu|, under its CSV column ("max_Re_eig" or "max_abs_multiplier").
+std::string spectrum_key(StabilityKind kind);
+std::string most_unstable_key(StabilityKind kind);
+double most_unstable(const Eigen::VectorXcd& spectrum, StabilityKind kind);
+
 nlohmann::json to_json(const MeasuredBranch& branch);
 // How a branch started (every StartPoint field; the relaxation keys for orbits only).
 nlohmann::json to_json(const StartPoint& start, bool orbit);
 nlohmann::json to_json(const SceneBranch& result);
 nlohmann::json to_json(const SceneCurve& result);
 nlohmann::json to_json(const ContinuationRun& run);
+// What `rbcstab continue --json` prints: to_json(run) with its truncation, "L" and "L_reason".
+nlohmann::json to_json(const ContinuationRun& run, const std::string& L_reason);
 
 std::string to_csv(const SceneBranch& result);
 std::string to_csv(const SceneCurve& result);

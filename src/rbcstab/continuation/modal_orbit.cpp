@@ -214,7 +214,8 @@ Eigen::VectorXd ModalForcedSystem::from_modal_model_state(const ModalModel& m, d
   return Eigen::Map<const Eigen::VectorXd>(x.data(), dimension());
 }
 
-Eigen::VectorXd ModalForcedSystem::relaxed_state(const Scene& simulated, double T, double rtol) const {
+Eigen::VectorXd ModalForcedSystem::relaxed_state(const Scene& simulated, double T, const std::function<void()>& poll,
+                                                 double rtol) const {
   require(std::isfinite(T) && T > 0, "T", T, "a finite number > 0");
   simulated.validate();
   const ModalModel m(simulated.parameters, initial_state(simulated));
@@ -223,6 +224,7 @@ Eigen::VectorXd ModalForcedSystem::relaxed_state(const Scene& simulated, double 
   IntegratorOptions o;
   o.rtol = rtol;
   o.atol = 1e-13;
+  o.poll = poll;
   const IntegrationResult r = integrate(m, y0, 0.0, grid, o, {});
   if (r.status != IntegrationStatus::success)
     throw InvalidArgument("T", "the relaxing simulation failed: " + r.reason);

@@ -18,6 +18,7 @@
 // Floquet multipliers: on an orbit with a_l = 0 the a_l direction decouples, da_l' = Y_l da_l, with
 // multiplier exp(int_0^{2 pi} Upsilon_l(sigma(t)) dt) (tested against the reduced orbit's sigma(t)).
 #include <Eigen/Dense>
+#include <functional>
 #include <map>
 #include <span>
 #include <string>
@@ -65,8 +66,10 @@ class ModalForcedSystem final : public ForcedSystem {
   Eigen::VectorXd from_modal_model_state(const ModalModel& m, double t, std::span<const double> y, double p) const;
 
   // The state at t = 2 pi k >= T of a ModalModel simulation of `simulated` (a start for the shooting
-  // Newton on an attracting orbit; use this system built from total_area_scene(simulated)).
-  Eigen::VectorXd relaxed_state(const Scene& simulated, double T, double rtol = 1e-11) const;
+  // Newton on an attracting orbit; use this system built from total_area_scene(simulated)). poll: the
+  // integration's IntegratorOptions::poll (OrbitOptions::poll).
+  Eigen::VectorXd relaxed_state(const Scene& simulated, double T, const std::function<void()>& poll = {},
+                                double rtol = 1e-11) const;
 
  private:
   struct Direction {

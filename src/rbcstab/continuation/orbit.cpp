@@ -88,6 +88,7 @@ IntegratorOptions integrator_options(const OrbitOptions& o) {
   io.stepper = Stepper::rk8pd;
   io.rtol = o.rtol;
   io.atol = o.atol;
+  io.poll = o.poll;
   return io;
 }
 
@@ -215,7 +216,7 @@ void ReducedForcedSystem::parameter_derivative(double t, std::span<const double>
   }
 }
 
-Eigen::VectorXd ReducedForcedSystem::relaxed_state(double T) const {
+Eigen::VectorXd ReducedForcedSystem::relaxed_state(double T, const std::function<void()>& poll) const {
   require(std::isfinite(T) && T > 0, "T", T, "a finite number > 0");
   const ReducedModel& m = model(start_parameter());
   const std::vector<double> y0 = m.initial_state();
@@ -223,6 +224,7 @@ Eigen::VectorXd ReducedForcedSystem::relaxed_state(double T) const {
   IntegratorOptions o;
   o.rtol = 1e-10;
   o.atol = 1e-12;
+  o.poll = poll;
   const IntegrationResult r = integrate(m, y0, 0.0, grid, o, {});
   return Eigen::Vector3d(r.y[0], r.y[1], r.y[2]);
 }

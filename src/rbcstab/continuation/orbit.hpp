@@ -12,6 +12,7 @@
 // number is a property of the solution, computed afterwards (orbit_summary).
 #include <Eigen/Dense>
 #include <cstddef>
+#include <functional>
 #include <limits>
 #include <map>
 #include <memory>
@@ -63,8 +64,9 @@ class ReducedForcedSystem final : public ForcedSystem {
 
   double start_parameter() const { return get_parameter(scene_, free_); }
   // The state after relaxing from the scene's initial shape for T rounded up to a multiple of 2 pi
-  // (so it is a state at t = 0 mod 2 pi, a start for the shooting Newton on an attracting orbit).
-  Eigen::VectorXd relaxed_state(double T) const;
+  // (so it is a state at t = 0 mod 2 pi, a start for the shooting Newton on an attracting orbit). poll:
+  // the integration's IntegratorOptions::poll (OrbitOptions::poll).
+  Eigen::VectorXd relaxed_state(double T, const std::function<void()>& poll = {}) const;
   const ReducedModel& model(double p) const;  // cached (a few parameter values: p and p +- h)
 
  private:
@@ -85,6 +87,9 @@ struct OrbitOptions {
   double rtol = 1e-12;         // integration tolerance of each segment (with its variational equations)
   double atol = 1e-13;         // absolute tolerance (states are O(1))
   int samples_per_segment = 64;  // dense samples for r_min/max, Psi_min/max (the winding is integrated)
+  // Every integration's IntegratorOptions::poll (the shootings; continue_scene: also the start's relaxation
+  // for relax_T and to the orbit): a front end abandons a long run through it (it may throw). Not saved.
+  std::function<void()> poll{};
   void validate() const;       // throws InvalidArgument naming the field
 };
 

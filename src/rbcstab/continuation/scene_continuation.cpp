@@ -176,9 +176,9 @@ class Orbit final : public SceneProblem {
     const double p0 = sys_.start_parameter();
     Eigen::VectorXd x0;
     if constexpr (std::is_same_v<System, ModalForcedSystem>)
-      x0 = sys_.relaxed_state(spec.scene, spec.relax_T);
+      x0 = sys_.relaxed_state(spec.scene, spec.relax_T, spec.orbit.poll);
     else
-      x0 = sys_.relaxed_state(spec.relax_T);
+      x0 = sys_.relaxed_state(spec.relax_T, spec.orbit.poll);
     const OrbitRelaxation r = pr_.relax(x0, p0, spec.relax_tol, spec.relax_max_periods);
     StartPoint s = newton_start(pr_, StartMethod::relaxed, pr_.shooting_guess(r.x, p0), p0,
                                 std::is_same_v<System, ModalForcedSystem> ? "periodic orbit near the relaxed modal state"
@@ -960,6 +960,10 @@ RunOutcome outcome(const SceneCurve& r) {
   return o;
 }
 
+RunOutcome outcome(const ContinuationRun& run) {
+  return std::visit([](const auto& r) { return outcome(r); }, run);
+}
+
 int run_L(const SceneBranch& r) { return r.spec.scene.L; }
 int run_L(const SceneCurve& r) { return r.one.spec.scene.L; }
 int run_L(const ContinuationRun& run) {
@@ -1096,6 +1100,50 @@ SceneCurve restart_curve(const ContinuationRun& run, int label, const CurveSpec&
   sp.x = one.start.x;
   trace_curve(r, sp, 1);
   return r;
+}
+
+// ---- a run as a front end asks for it ----
+
+CurveSpec curve_spec(const std::string& type, const std::string& parameter2, double p2_min, double p2_max, int point,
+                     const std::string& min2_name, const std::string& max2_name) {
+  CurveSpec c;
+  c.type = curve_kind_from_string(type);
+  if (!parameter2.empty()) {
+    try {
+      c.parameter2 = continuation_parameter_from_string(parameter2);
+    } catch (const InvalidArgument& e) {
+      // The table's message ("parameter = 'x' is not ...: must be one of ...") names the second parameter.
+      const std::string message = e.what();
+      throw InvalidArgument("parameter2", "parameter2" + message.substr(e.parameter().size()));
+    }
+  }
+  if (c.parameter2) require_bounds_in_domain(*c.parameter2, p2_min, p2_max, min2_name, max2_name);
+  require(!std::isnan(p2_min), min2_name, p2_min, "a number (-inf: no bound)");
+  require(!std::isnan(p2_max), max2_name, p2_max, "a number (inf: no bound)");
+  c.p2_min = p2_min;
+  c.p2_max = p2_max;
+  c.point = point;
+  return c;
+}
+
+SceneRun scene_run(SceneFile file, BranchSpec spec, std::optional<CurveSpec> curve, const std::string& min_name,
+                   const std::string& max_name) {
+  apply_truncation(file, truncation_use(spec.kind));
+  if (file.origin("initial.beta") == Origin::default_value) file.scene.beta = default_beta(spec.kind);
+  spec.scene = file.scene;
+  require_bounds_in_domain(spec.parameter, spec.engine.p_min, spec.engine.p_max, min_name, max_name);
+  require(!std::isnan(spec.engine.p_min), min_name, spec.engine.p_min, "a number (-inf: no bound)");
+  require(!std::isnan(spec.engine.p_max), max_name, spec.engine.p_max, "a number (inf: no bound)");
+  return {std::move(spec), std::move(curve), file.L_reason};
+}
+
+ContinuationRun continue_run(const SceneRun& run) {
+  if (run.curve) return continue_curve(run.spec, *run.curve);
+  return continue_scene(run.spec);
+}
+
+std::string saved_run_L_reason(const ContinuationRun& run) {
+  return "L = " + std::to_string(run_L(run)) + ": the branch file's scene (--restart)";
 }
 
 }  // namespace rbcstab
