@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <numeric>
 
 #include "rbcstab/core/error.hpp"
@@ -38,13 +37,12 @@ int argmax_growth(const std::vector<double>& X, const std::vector<double>& X0) {
 SimulationResult simulate(const Scene& scene, const SimulationOptions& options) {
   scene.validate();
   options.validate();
-  const InitialState init = initial_state(scene);
+  SceneSystem built = make_scene_system(scene);
   SimulationResult res;
   res.scene_name = scene.name;
-  res.level = choose_level(scene, init);
-  res.warnings = scene.parameters.warnings();
-  if (!res.level.exact) res.warnings.push_back("model level " + to_string(res.level.level) + " " + res.level.reason);
-  const auto system = make_system(scene.parameters, init, res.level.level);
+  res.level = built.level;
+  res.warnings = std::move(built.warnings);
+  const std::unique_ptr<System> system = std::move(built.system);
   res.L = scene.L;
   res.T = scene.T;
 
@@ -63,21 +61,9 @@ SimulationResult simulate(const Scene& scene, const SimulationOptions& options) 
   res.Delta_total_initial = std::accumulate(o0.Delta_l.begin(), o0.Delta_l.end(), 0.0);
   res.sigma_initial = o0.sigma;
 
-  // Psi = -arg f_{2,2} in (-pi, pi] at t = 0 (pi for the in-plane start, as the paper), then unwrapped.
-  auto wrapped_Psi = [](std::complex<double> f22) {
-    double psi = -std::arg(f22);
-    if (psi <= -std::numbers::pi) psi += 2 * std::numbers::pi;
-    return psi;
-  };
-  double Psi = wrapped_Psi(o0.f22);
-  auto unwrap = [&](std::complex<double> f22) {
-    const double raw = -std::arg(f22);
-    Psi = raw + 2 * std::numbers::pi * std::round((Psi - raw) / (2 * std::numbers::pi));
-    return Psi;
-  };
-  auto r_of = [](const Observation& o) {
-    return o.Delta2 > 0 ? std::min(1.0, std::abs(o.f22) * std::sqrt(4 / o.Delta2)) : 0.0;
-  };
+  // Psi in (-pi, pi] at t = 0, then unwrapped along the accepted steps.
+  double Psi = o0.Psi();
+  auto unwrap = [&](const Observation& o) { return Psi = o.Psi_near(Psi); };
 
   std::size_t user_index = 0;
   std::vector<double> tail_t;
@@ -88,19 +74,19 @@ SimulationResult simulate(const Scene& scene, const SimulationOptions& options) 
     const Observation o = system->observe(t, y);
     const double total = std::accumulate(o.Delta_l.begin(), o.Delta_l.end(), 0.0);
     res.excess_area_drift = std::max(res.excess_area_drift, std::abs(total - res.Delta_total_initial));
-    unwrap(o.f22);
+    unwrap(o);
   };
   auto on_sample = [&](double t, std::span<const double> y) {
     const Observation o = system->observe(t, y);
     last = o;
-    const double psi = t == 0 ? Psi : unwrap(o.f22);
+    const double psi = t == 0 ? Psi : unwrap(o);
     if (user_index < user_grid.size() && std::abs(user_grid[user_index] - t) <= 1e-12 * scene.T) {
       ++user_index;
       if (options.record_trajectory) {
         res.trajectory.t.push_back(t);
         res.trajectory.Delta_l.push_back(o.Delta_l);
         res.trajectory.sigma.push_back(o.sigma);
-        res.trajectory.r.push_back(r_of(o));
+        res.trajectory.r.push_back(o.r());
         res.trajectory.Psi.push_back(psi);
       }
     }
@@ -124,7 +110,7 @@ SimulationResult simulate(const Scene& scene, const SimulationOptions& options) 
   res.y_final = ir.y;
   res.Delta_final = last.Delta_l;
   res.sigma_final = last.sigma;
-  res.r_final = r_of(last);
+  res.r_final = last.r();
   res.Psi_final = Psi;
 
   // Time averages over the tail window by the trapezoid-corrected Simpson rule on its fine grid

@@ -118,4 +118,12 @@ std::unique_ptr<System> make_system(const Parameters& p, const InitialState& ini
   throw InvalidArgument("model", "make_system needs a concrete level (full, modal or reduced), not auto");
 }
 
+SceneSystem make_scene_system(const Scene& scene) {
+  SceneSystem s{initial_state(scene), {}, nullptr, scene.parameters.warnings()};
+  s.level = choose_level(scene, s.init);
+  if (!s.level.exact) s.warnings.push_back("model level " + to_string(s.level.level) + " " + s.level.reason);
+  s.system = make_system(scene.parameters, s.init, s.level.level);
+  return s;
+}
+
 }  // namespace rbcstab

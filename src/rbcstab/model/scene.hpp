@@ -59,4 +59,14 @@ LevelChoice choose_level(const Scene& scene, const InitialState& init);
 
 std::unique_ptr<System> make_system(const Parameters& p, const InitialState& init, ModelLevel level);
 
+// The system a scene runs on, as a simulation builds it (validates the scene): its initial amplitudes, the
+// level choice, the system, and the warnings a run reports (the parameters', and the level's if it approximates).
+struct SceneSystem {
+  InitialState init;
+  LevelChoice level;
+  std::unique_ptr<System> system;
+  std::vector<std::string> warnings;
+};
+SceneSystem make_scene_system(const Scene& scene);
+
 }  // namespace rbcstab

@@ -1,6 +1,23 @@
 #include "rbcstab/model/system.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
 namespace rbcstab {
+
+double Observation::r() const { return Delta2 > 0 ? std::min(1.0, std::abs(f22) * std::sqrt(4 / Delta2)) : 0.0; }
+
+double Observation::Psi() const {
+  double psi = -std::arg(f22);
+  if (psi <= -std::numbers::pi) psi += 2 * std::numbers::pi;
+  return psi;
+}
+
+double Observation::Psi_near(double previous) const {
+  const double raw = -std::arg(f22);
+  return raw + 2 * std::numbers::pi * std::round((previous - raw) / (2 * std::numbers::pi));
+}
 
 namespace {
 // J = M + v w^T from the system's own jacobian(): block-diagonal solves plus Sherman-Morrison.

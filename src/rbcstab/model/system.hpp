@@ -33,6 +33,13 @@ struct Observation {
   double sigma = 0;             // homogeneous membrane tension sigma(t)
   std::complex<double> f22;     // f_{2,2}: r and Psi are read from it
   double Delta2 = 0;            // excess area held by l = 2 (normalises r)
+
+  // The paper's (r, Psi) of the l = 2 ellipsoid: r = |f_{2,2}| sqrt(4 / Delta_2) in [0, 1] (0 when l = 2 holds
+  // no area), Psi = -arg f_{2,2} in (-pi, pi] (pi for the in-plane start, as the paper).
+  double r() const;
+  double Psi() const;
+  // -arg f_{2,2} on the branch nearest to `previous`: Psi followed continuously along a trajectory.
+  double Psi_near(double previous) const;
 };
 
 // The linear algebra of a linearly implicit stepper at one point (t, y): solves (I - c J) x = b with
