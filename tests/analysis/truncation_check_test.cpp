@@ -10,8 +10,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "continuation/invalid_argument_fixture.hpp"
 #include "rbcstab/analysis/truncation.hpp"
-#include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/simulation_io.hpp"
@@ -219,18 +219,10 @@ TEST(TruncationCheck, ExplicitLAndBadCandidates) {
 
   Scene s;
   s.T = s.dt = 20;
-  auto parameter = [](auto&& fn) {
-    try {
-      fn();
-    } catch (const InvalidArgument& e) {
-      return e.parameter();
-    }
-    return std::string("no throw");
-  };
-  EXPECT_EQ(parameter([&] { (void)run_and_check(s, 10); }), "L_candidate");
+  EXPECT_EQ(test::invalid_parameter([&] { (void)run_and_check(s, 10); }), "L_candidate");
   s.delta_l = {{5, 1e-4}};
-  EXPECT_EQ(parameter([&] { (void)run_and_check(s, 4); }), "L_candidate");
-  EXPECT_EQ(parameter([&] { (void)run_and_check(s, 5); }), "no throw");
+  EXPECT_EQ(test::invalid_parameter([&] { (void)run_and_check(s, 4); }), "L_candidate");
+  EXPECT_NO_THROW((void)run_and_check(s, 5));
 }
 
 }  // namespace
