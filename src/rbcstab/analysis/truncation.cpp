@@ -252,7 +252,6 @@ TruncationCheck check_run(const Scene& scene, int Lc, const SimulationResult& ru
     double delta, u0;  // seed and its log (u0 unused when delta = 0)
     double u_max = -std::numeric_limits<double>::infinity();
     double t_max = 0;
-    double ub_prev = -std::numeric_limits<double>::infinity();  // bound on ln Delta_l over the previous interval
   };
   std::vector<Mode> modes;
   std::vector<int> rest;
@@ -275,75 +274,78 @@ TruncationCheck check_run(const Scene& scene, int Lc, const SimulationResult& ru
 
   // Interval k = [t_k, t_k+1]: sigma there lies in [lo, hi], the endpoints widened by their difference (the
   // integrator's step resolves sigma, so it does not move further than that inside a step) and by the curvature
-  // the step's mean shows.
-  // The mean of sigma over the step, (J_k+1 - J_k)/h, is known when both integrals are exact: a parabola
-  // through the endpoints with that mean leaves them by at most 1.5 |mean - (a + b)/2|, which widens the margin.
-  auto envelope = [&](std::size_t k) {
-    const StepRecord &r = steps[k], &n = steps[k + 1];
-    const double a = r.sigma, b = n.sigma, h = n.t - r.t;
-    double m = std::abs(b - a);
-    if (r.J_exact && n.J_exact && h > 0) m += 1.5 * std::abs((n.J - r.J) / h - 0.5 * (a + b));
-    return std::pair{std::min(a, b) - m, std::max(a, b) + m};
+  // the step's mean shows: with both integrals exact the mean is (J_k+1 - J_k)/h, and a parabola through the
+  // endpoints with that mean leaves them by at most 1.5 |mean - (a + b)/2|.
+  struct Interval {
+    double lo, hi;
+    std::vector<double> ub;  // per dropped mode: a bound on ln Delta_l over the interval (-inf without area)
   };
-  std::vector<double> ub(modes.size());
-  double lo_prev = std::numeric_limits<double>::infinity(), hi_prev = -std::numeric_limits<double>::infinity();
-  for (std::size_t k = 0; k < steps.size(); ++k) {
-    const bool has_next = k + 1 < steps.size();
-    double lo = lo_prev, hi = hi_prev;
-    if (has_next) {
-      const auto [a, b] = envelope(k);
-      const double h = steps[k + 1].t - steps[k].t;
-      for (std::size_t i = 0; i < modes.size(); ++i) {
-        Mode& m = modes[i];
-        if (m.delta <= 0) continue;  // no area: stays at zero exactly
-        const double uk = u_at(m, steps[k]), un = u_at(m, steps[k + 1]);
-        // d ln Delta_l/dt = 2 |slope| (sigma_c - sigma) lies in [-g, f]: f = 2 |slope| (sigma_c - a) and
-        // g = 2 |slope| (b - sigma_c), so u(t) <= min(uk + f tau, un + g (h - tau)), tau = t - t_k. That minimum
-        // is concave: its largest value is at tau = 0, h or where the two lines meet.
-        const double f = 2 * std::abs(m.U.slope) * (m.U.sigma_c - a), g = 2 * std::abs(m.U.slope) * (b - m.U.sigma_c);
-        auto line_min = [&](double tau) { return std::min(uk + f * tau, un + g * (h - tau)); };
-        double bound = std::max({line_min(0), line_min(h), uk, un});
-        if (f + g > 0) bound = std::max(bound, line_min(std::clamp((un - uk + g * h) / (f + g), 0.0, h)));
-        ub[i] = bound;
-        if (bound > m.u_max) {
-          m.u_max = bound;
-          m.t_max = uk >= un ? steps[k].t : steps[k + 1].t;
-        }
-      }
-      lo = std::min(lo, a);
-      hi = std::max(hi, b);
-    }
-    // The tension the scene would have at this step: the run's kept shape, the dropped modes at their bounds
-    // over the adjacent intervals, and the area they released (or took), a, in l = 2 (f_2 scaled by s):
-    //   sigma' - sigma = -[sum_dropped Upsilon_l(sigma) Delta_l + Upsilon_2(sigma) a + (s - 1) W] / D',
-    // with |a| <= R = sum_dropped max(delta_l, Delta_l - delta_l), |s - 1| <= |a| / Delta_2 and
-    // |D'| >= |D| - |slope_2| R (every slope is negative).
-    if (std::isfinite(lo)) {
-      double direct = 0, R = 0;
-      for (std::size_t i = 0; i < modes.size(); ++i) {
-        Mode& m = modes[i];
-        if (m.delta <= 0) continue;
-        const double u = has_next ? std::max(m.ub_prev, ub[i]) : m.ub_prev;
-        const double Dl = std::exp(u);
-        direct += std::abs(m.U.slope) * std::max(std::abs(lo - m.U.sigma_c), std::abs(hi - m.U.sigma_c)) * Dl;
-        R += std::max(m.delta, Dl - m.delta);
-        m.ub_prev = has_next ? ub[i] : m.ub_prev;
-      }
-      const StepRecord& r = steps[k];
-      const double U2max = std::abs(U2.slope) * std::max(std::abs(lo - U2.sigma_c), std::abs(hi - U2.sigma_c));
-      const double den = std::abs(r.D) - std::abs(U2.slope) * R;
-      const double shift = den > 0 && R < r.Delta2 ? (direct + U2max * R + std::abs(r.W) * R / r.Delta2) / den
-                                                   : std::numeric_limits<double>::infinity();
-      if (!(shift <= c.sigma_shift)) {
-        c.sigma_shift = shift;
-        c.t_sigma_shift = r.t;
+  auto interval = [&](std::size_t k) {
+    const StepRecord &r = steps[k], &n = steps[k + 1];
+    const double h = n.t - r.t;
+    double margin = std::abs(n.sigma - r.sigma);
+    if (r.J_exact && n.J_exact && h > 0) margin += 1.5 * std::abs((n.J - r.J) / h - 0.5 * (r.sigma + n.sigma));
+    Interval in{std::min(r.sigma, n.sigma) - margin, std::max(r.sigma, n.sigma) + margin,
+                std::vector<double>(modes.size(), -std::numeric_limits<double>::infinity())};
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+      Mode& m = modes[i];
+      if (m.delta <= 0) continue;  // no area: stays at zero exactly
+      const double uk = u_at(m, r), un = u_at(m, n);
+      // d ln Delta_l/dt = 2 |slope| (sigma_c - sigma) lies in [-g, f]: f = 2 |slope| (sigma_c - lo) and
+      // g = 2 |slope| (hi - sigma_c), so u(t) <= min(uk + f tau, un + g (h - tau)), tau = t - t_k. That minimum
+      // is concave: its largest value is at tau = 0, h or where the two lines meet.
+      const double f = 2 * std::abs(m.U.slope) * (m.U.sigma_c - in.lo), g = 2 * std::abs(m.U.slope) * (in.hi - m.U.sigma_c);
+      auto line_min = [&](double tau) { return std::min(uk + f * tau, un + g * (h - tau)); };
+      double bound = std::max({line_min(0), line_min(h), uk, un});
+      if (f + g > 0) bound = std::max(bound, line_min(std::clamp((un - uk + g * h) / (f + g), 0.0, h)));
+      in.ub[i] = bound;
+      if (bound > m.u_max) {
+        m.u_max = bound;
+        m.t_max = uk >= un ? r.t : n.t;
       }
     }
-    if (has_next) {
-      const auto [a, b] = envelope(k);
-      lo_prev = a;
-      hi_prev = b;
+    return in;
+  };
+  // The tension the scene would have at step k: the run's kept shape, the dropped modes at their bounds over the
+  // adjacent intervals, and the area they released (or took), a, in l = 2 (f_2 scaled by s):
+  //   sigma' - sigma = -[sum_dropped Upsilon_l(sigma) Delta_l + Upsilon_2(sigma) a + (s - 1) W] / D',
+  // with |a| <= R = sum_dropped max(delta_l, Delta_l - delta_l), |s - 1| <= |a| / Delta_2 and
+  // |D'| >= |D| - |slope_2| R (every slope is negative); each |Upsilon_l| is bounded over the sigma range.
+  auto shift_at = [&](const StepRecord& r, const std::vector<const Interval*>& adjacent) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const Interval* in : adjacent) {
+      lo = std::min(lo, in->lo);
+      hi = std::max(hi, in->hi);
     }
+    auto rate_bound = [&](const GrowthRate& U) {
+      return std::abs(U.slope) * std::max(std::abs(lo - U.sigma_c), std::abs(hi - U.sigma_c));
+    };
+    double direct = 0, R = 0;
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+      if (modes[i].delta <= 0) continue;
+      double u = -std::numeric_limits<double>::infinity();
+      for (const Interval* in : adjacent) u = std::max(u, in->ub[i]);
+      const double Dl = std::exp(u);
+      direct += rate_bound(modes[i].U) * Dl;
+      R += std::max(modes[i].delta, Dl - modes[i].delta);
+    }
+    const double den = std::abs(r.D) - std::abs(U2.slope) * R;
+    if (!(den > 0 && R < r.Delta2)) return std::numeric_limits<double>::infinity();
+    return (direct + rate_bound(U2) * R + std::abs(r.W) * R / r.Delta2) / den;
+  };
+  std::optional<Interval> before;  // the interval ending at step k
+  for (std::size_t k = 0; steps.size() >= 2 && k < steps.size(); ++k) {
+    std::optional<Interval> after;
+    if (k + 1 < steps.size()) after = interval(k);
+    std::vector<const Interval*> adjacent;
+    if (before) adjacent.push_back(&*before);
+    if (after) adjacent.push_back(&*after);
+    const double shift = shift_at(steps[k], adjacent);
+    if (!(shift <= c.sigma_shift)) {
+      c.sigma_shift = shift;
+      c.t_sigma_shift = steps[k].t;
+    }
+    before = std::move(after);
   }
 
   int worst = -1;
