@@ -18,8 +18,8 @@ struct SimulateOptions {
 };
 
 int run(const SimulateOptions& o) {
-  const SceneFile sf = o.scene.resolve(TruncationUse::simulation);
-  const SimulationResult r = simulate(sf.scene, sf.options);
+  SceneFile sf = o.scene.read();
+  const SimulationResult r = simulate_truncated(sf, sf.options);
   if (!o.trajectory.empty()) write_file_atomic(o.trajectory, trajectory_csv(r), "--trajectory");
   for (const auto& w : r.warnings) std::cerr << "rbcstab: warning: " << w << "\n";
   if (o.json)

@@ -38,8 +38,7 @@ py::tuple simulate_scene(const py::handle& scene) {
   SimulationResult r;
   {
     py::gil_scoped_release release;
-    apply_truncation(f, TruncationUse::simulation);
-    r = simulate(f.scene, f.options);
+    r = simulate_truncated(f, f.options);
   }
   const nlohmann::json j = simulation_json(f, r);
   py::dict arrays;

@@ -131,7 +131,9 @@ TEST(SceneDocument, TruncationPolicyReadsTheProvenance) {
   EXPECT_EQ(file.reason, "L = 6: given by the scene file's run.L");
   EXPECT_EQ(resolve_truncation(given.scene, Origin::flag, TruncationUse::grid).reason, "L = 6: given by --L");
   const SceneFile none = parse_scene("[run]\nT = 20.0\n");
-  const TruncationChoice automatic = choose_truncation(none.scene);
+  TruncationOptions up_to_scene_L;  // the policy never goes above the scene's L
+  up_to_scene_L.L_max = none.scene.L;
+  const TruncationChoice automatic = choose_truncation(none.scene, up_to_scene_L);
   const TruncationDecision sim = resolve_truncation(none.scene, none.origin("run.L"), TruncationUse::simulation);
   EXPECT_EQ(sim.L, automatic.L);
   EXPECT_EQ(sim.reason, automatic.reason);

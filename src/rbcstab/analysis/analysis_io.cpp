@@ -100,12 +100,11 @@ std::string post_text(const SceneFile& file, const PostInstability& post, const 
 }
 
 PostRun run_post(SceneFile file) {
-  apply_truncation(file, TruncationUse::simulation);
   PostRun out{std::move(file), {}, {}};
-  out.post = post_instability(out.file.scene.parameters, out.file.scene.L, 0.0);
   SimulationOptions options = out.file.options;
   options.record_trajectory = false;
-  out.run = simulate(out.file.scene, options);
+  out.run = simulate_truncated(out.file, options);
+  out.post = post_instability(out.file.scene.parameters, out.file.scene.L, 0.0);
   return out;
 }
 

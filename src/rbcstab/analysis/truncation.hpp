@@ -1,19 +1,27 @@
 #pragma once
-// The truncation L a scene needs. Modes that start with zero area stay at zero exactly
-// (no l >= 3 source when the stress-free shape is ellipsoidal), so L only decides which seeded modes exist.
-// A dropped mode l > L affects the kept ones in two ways only:
-//  - its seeded area delta_l: a stable mode returns it to l = 2 (bookkeeping, not dynamics: an L run with
-//    Delta raised by the dropped seeded area reproduces the larger-L run; tests/analysis/truncation_test.cpp);
-//  - its area gain max_t [Delta_l(t) - delta_l], which it would take from the kept modes.
-// The rule bounds the second by the finite-horizon predictor: along the reduced transient,
-// Delta_l(t) = delta_l exp(2 G_l(t)) with G_l(t) = t Upsilon_l(<sigma_R>_t) (analysis/predictors.hpp), so the
-// chosen L is the smallest that keeps every mode with predicted gain delta_l (exp(2 max_t G_l(t)) - 1) above
-// tolerance * Delta (and every mode the scene sets explicitly).
+// The truncation L a simulation runs at. The scene's L (default 10, as the paper) fixes the physical scene: the
+// perturbation seeds every l = 3..L, and a larger L is another scene. A run may drop seeded modes (run at a
+// smaller L) only when a check after that run shows they did not matter; otherwise the scene's L is run.
+//
+// Modes that start with zero area stay at zero exactly (no l >= 3 source when the stress-free shape has no
+// l >= 3 content), and a seeded mode l obeys d ln Delta_l/dt = 2 Upsilon_l(sigma(t)) exactly. A dropped mode
+// acts on the kept ones only through the area it holds: sigma = -N/D sums Upsilon_l Delta_l over every mode
+// (model/tension.hpp).
+//  - A priori (choose_truncation): the candidate is the smallest L keeping every mode whose growth predicted
+//    along the reduced transient, Delta_l(t) = delta_l exp(2 G_l(t)) with G_l(t) = t Upsilon_l(<sigma_R>_t)
+//    (analysis/predictors.hpp), gains more than tolerance * Delta (and every mode the scene sets explicitly).
+//    It ignores the seeded modes' feedback on sigma and transients between its checkpoints.
+//  - A posteriori (run_and_check): from the candidate run's own sigma(t), read at every accepted step, each
+//    dropped mode's Delta_l(t) follows in closed form; it must stay below delta_l + tolerance * Delta at every t
+//    (bounded between steps), and the tension the scene would have with the dropped modes' area must differ from
+//    the run's by at most tolerance * max_t |sigma| at every step. Otherwise the scene's L is run instead
+//    (simulate_truncated).
 #include <string>
 #include <vector>
 
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/quantity.hpp"
+#include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/model/parameter_table.hpp"
 #include "rbcstab/model/scene.hpp"
@@ -21,9 +29,10 @@
 namespace rbcstab {
 
 struct TruncationOptions {
-  double tolerance = 1e-4;  // in (0, 1): area gain (relative to Delta) a dropped mode may take from the kept ones;
-                            // 1e-4 moves sigma(T) by ~4e-6 relative (measured: ~0.04 per unit area)
-  int L_max = 40;           // in [3, kMaxL]: largest L considered (the reference of the truncation study)
+  double tolerance = 1e-4;  // in (0, 1): area gain (relative to Delta) a dropped mode may take from the kept ones,
+                            // and the tension change (relative to max_t |sigma|) their area may cause
+  int L_max = 40;           // in [3, kMaxL]: largest L choose_truncation considers (the policy passes the
+                            // scene's L; 40: the reference of the truncation study)
   int checkpoints = 32;     // in [1, 10000]: times T k/K where G_l(t) is evaluated, so that a mode that grows
                             // and decays again before T still counts
   PredictorOptions predictor;  // the reduced run (its integrator tolerances)
@@ -35,7 +44,7 @@ struct TruncationChoice {
   std::string reason;             // one line for the user: the rule and what decided it
   std::vector<double> G_max;      // index l - 3 for l = 3..L_max: max over the checkpoints of G_l(t)
   std::vector<double> log_gain;   // index l - 3: ln(delta_l (exp(2 G_max) - 1) / Delta), -inf-free: -1e300 if no gain
-  double dropped_seeded_area = 0; // sum of delta_l for l = L+1..L_max: returned to l = 2 in an L_max run
+  double dropped_seeded_area = 0; // sum of delta_l for l = L+1..L_max: the area the candidate run does not hold
   DomainStatus status = DomainStatus::ok;  // outside_domain: the reduced run failed, L = L_max (conservative)
   IntegrationCounters counters;
 };
@@ -51,7 +60,8 @@ TruncationChoice choose_truncation(const Scene& scene, const ReducedTransient& t
 
 // How a computation uses L; it decides whether the automatic choice applies when no L was given.
 enum class TruncationUse {
-  simulation,   // one scene simulated over [0, T] (simulate, summary, report, post, shape): choose_truncation
+  simulation,   // one scene simulated over [0, T] (simulate, summary, report, post, shape): the candidate of
+                // choose_truncation, checked after its run (simulate_truncated)
   grid,         // many scenes at one L (diagram, trace, the Fig. 6e table): the automatic choice is per scene
   analysis,     // modes l = 2..L with no simulation horizon (thresholds, modal and full continuation, floquet)
   measurement,  // a benchmark measures at the L it is given
@@ -61,18 +71,39 @@ enum class TruncationUse {
 struct TruncationDecision {
   int L = 10;
   std::string reason;  // one line: "L = 4: ..." (the JSON key "L_reason")
+  bool check = false;  // L is a candidate below the scene's L: only a run and its check can confirm it
 };
 
-// The one truncation policy of every command that takes a scene. An L given by a flag or the scene file is kept
-// and the reason says which; otherwise a simulation gets the automatic choice and every other use keeps the
+// The one truncation policy of every command that takes a scene, before any run. An L given by a flag or the
+// scene file is kept and the reason says which; otherwise a simulation gets the candidate of choose_truncation
+// with L_max = scene.L (never above the scene's L; check = true when below it), and every other use keeps the
 // scene's L with the reason the automatic choice does not apply. The reduced use keeps L and says it is unused.
 // transient (optional): the scene's truncation_transient, read by the automatic choice instead of a run of its
 // own, so that the finite-horizon predictor can share it.
 TruncationDecision resolve_truncation(const Scene& scene, Origin L_origin, TruncationUse use,
                                       const TruncationOptions& options = {}, const ReducedTransient* transient = nullptr);
 
-// resolve_truncation applied to a scene file (its L's origin): sets scene.L and L_reason, then validates the scene.
-// Every front end (the command line, the Python module) calls this once per scene it runs.
+// The scene run at L_candidate in [2, scene.L) (the kept modes keep the scene's seeds) and the check of the
+// dropped modes l = L_candidate+1..scene.L against that run's sigma(t) (TruncationCheck, io/scene_file.hpp;
+// check.L_run = L_candidate when it passed, else scene.L: the caller reruns). The building block of
+// simulate_truncated, public so that tests can read the check of any candidate.
+struct CheckedRun {
+  SimulationResult run;  // at L_candidate
+  TruncationCheck check;
+};
+CheckedRun run_and_check(const Scene& scene, int L_candidate, const SimulationOptions& options = {},
+                         const TruncationOptions& truncation = {});
+
+// The policy for one scene simulated over [0, T], and its run: resolve_truncation; a candidate below the scene's
+// L is run and checked (run_and_check) and kept if it passes, else the scene's L is run. Sets file.scene.L to the
+// L run, file.L_reason, and file.truncation_check when a candidate was checked. Every front end that simulates
+// one scene calls this.
+SimulationResult simulate_truncated(SceneFile& file, const SimulationOptions& options,
+                                    const ReducedTransient* transient = nullptr);
+
+// The policy applied to a scene file (its L's origin) for a front end that integrates the scene itself: sets
+// scene.L, L_reason (and for a simulation, by simulate_truncated without a trajectory, truncation_check), then
+// validates the scene. A simulation's L is then the one whose run was checked.
 void apply_truncation(SceneFile& file, TruncationUse use, const ReducedTransient* transient = nullptr);
 
 }  // namespace rbcstab

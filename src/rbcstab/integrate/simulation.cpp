@@ -75,6 +75,7 @@ SimulationResult simulate(const Scene& scene, const SimulationOptions& options) 
     const double total = std::accumulate(o.Delta_l.begin(), o.Delta_l.end(), 0.0);
     res.excess_area_drift = std::max(res.excess_area_drift, std::abs(total - res.Delta_total_initial));
     unwrap(o);
+    if (options.on_step) options.on_step(t, o);
   };
   auto on_sample = [&](double t, std::span<const double> y) {
     const Observation o = system->observe(t, y);

@@ -1,6 +1,7 @@
 #pragma once
 // A scene run end to end: initial state, smallest exact level, integration, and the paper's
 // observables (Delta_l, sigma, r, Psi, l_Delta) on the output grid.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,9 @@ struct SimulationOptions {
   IntegratorOptions integrator;  // stepper, tolerances, limits
   double tail_window = 10;       // Delta_l averaged over [T - tail_window, T] (Appendix E)
   bool record_trajectory = true; // keep the samples on the output grid
+  // Called after every accepted step with the observables there (the truncation check reads sigma(t) from
+  // them); empty: not called.
+  std::function<void(double t, const Observation& o)> on_step{};
   void validate() const;
 };
 

@@ -126,7 +126,27 @@ nlohmann::json to_json(const Scene& s) {
           {"delta_l", dl}, {"rest_delta_l", rl}, {"L", s.L}, {"T", s.T}, {"dt", s.dt}, {"model", to_string(s.model)}};
 }
 
-void put_truncation(nlohmann::json& j, const SceneFile& file) { put_truncation(j, file.scene.L, file.L_reason); }
+void put_truncation(nlohmann::json& j, const SceneFile& file) {
+  put_truncation(j, file.scene.L, file.L_reason);
+  if (file.truncation_check) j["truncation_check"] = to_json(*file.truncation_check);
+}
+
+nlohmann::json to_json(const TruncationCheck& c) {
+  const std::string overflow = "the linear growth along the run's sigma(t) overflows a double";
+  nlohmann::json dropped = nlohmann::json::array();
+  for (const auto& d : c.dropped) {
+    nlohmann::json m = {{"l", d.l}, {"delta", d.delta}, {"bound", d.delta + c.threshold}, {"t_max", d.t_max}};
+    put_number(m, "Delta_max", d.Delta_max, overflow);
+    dropped.push_back(m);
+  }
+  nlohmann::json j = {{"L_scene", c.L_scene},   {"L_candidate", c.L_candidate},
+                      {"L_run", c.L_run},       {"dropped", dropped},
+                      {"threshold", c.threshold}, {"t_sigma_shift", c.t_sigma_shift},
+                      {"sigma_tolerance", c.sigma_tolerance}, {"samples", c.samples},
+                      {"passed", c.passed},     {"verdict", c.verdict}};
+  put_number(j, "sigma_shift", c.sigma_shift, "no bound: the dropped modes' area is not small against the kept modes'");
+  return j;
+}
 
 void put_truncation(nlohmann::json& j, int L, const std::string& L_reason) {
   j["L"] = L;

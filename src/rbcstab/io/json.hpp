@@ -18,8 +18,10 @@ nlohmann::json by_mode(const std::vector<double>& values_from_l2);
 std::string S_reason(const Parameters& p);
 // r.reason, and for a run whose state became non-finite, the inputs that made it overflow (nonfinite_reason).
 std::string run_reason(const SimulationResult& r, const Parameters& p);
-// "L" and "L_reason" (why that L: SceneFile::L_reason), which every JSON output of a scene carries.
+// "L" and "L_reason" (why that L: SceneFile::L_reason), which every JSON output of a scene carries, and
+// "truncation_check" when the file holds one.
 void put_truncation(nlohmann::json& j, const SceneFile& file);
+nlohmann::json to_json(const TruncationCheck& c);
 void put_truncation(nlohmann::json& j, int L, const std::string& L_reason);
 // A double, or null when not finite.
 nlohmann::json number_or_null(double v);

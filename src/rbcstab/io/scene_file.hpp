@@ -16,6 +16,29 @@
 
 namespace rbcstab {
 
+// The check after a run at an automatically reduced L (simulate_truncated, analysis/truncation.hpp): the modes
+// the run dropped, what the run's sigma(t) makes of them, and the verdict. JSON outputs carry it as
+// "truncation_check" (put_truncation, io/json.hpp; docs/cli.md lists the keys).
+struct TruncationCheck {
+  struct DroppedMode {
+    int l = 3;
+    double delta = 0;      // its seeded area delta_l
+    double Delta_max = 0;  // upper bound of max_t Delta_l(t) along the run's sigma(t)
+    double t_max = 0;      // where that bound is reached
+  };
+  int L_scene = 10;        // the scene's L: the seeded modes l = 3..L_scene
+  int L_candidate = 10;    // the L the a priori rule proposed and that was run first
+  int L_run = 10;          // the L of the run the outputs come from (L_candidate if passed, else L_scene)
+  std::vector<DroppedMode> dropped;  // l = L_candidate + 1..L_scene
+  double threshold = 0;    // a dropped mode must stay below delta_l + threshold (tolerance * Delta) at every t
+  double sigma_shift = 0;  // upper bound of |sigma_scene(t) - sigma_run(t)| from the dropped modes' area
+  double t_sigma_shift = 0;
+  double sigma_tolerance = 0;  // tolerance * max_t |sigma_run(t)|
+  std::size_t samples = 0;     // accepted steps of the run the check read
+  bool passed = false;
+  std::string verdict;     // one line: what passed or what failed
+};
+
 struct SceneFile {
   Scene scene;
   SimulationOptions options;  // run.tail_window and the [integrator] table
@@ -28,6 +51,8 @@ struct SceneFile {
   // Why scene.L: the truncation policy's reason (resolve_truncation, analysis/truncation.hpp), which every JSON
   // output carries beside "L" (put_truncation, io/json.hpp); empty until the policy is applied.
   std::string L_reason{};
+  // Set when an automatic L below the scene's was run and checked (simulate_truncated).
+  std::optional<TruncationCheck> truncation_check{};
   std::string source{};  // the file's name, "" without a file
   std::string text{};    // the file as read ("" without a file): a panel report keeps it verbatim
 

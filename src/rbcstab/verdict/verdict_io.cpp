@@ -268,9 +268,8 @@ std::string thresholds_text(const SceneFile& file, const ThresholdReport& t) {
 
 SummaryRun run_summary(SceneFile file) {
   const ReducedTransient transient = truncation_transient(file.scene);
-  apply_truncation(file, TruncationUse::simulation, &transient);
   SummaryRun out{std::move(file), {}, {}};
-  out.run = simulate(out.file.scene, out.file.options);
+  out.run = simulate_truncated(out.file, out.file.options, &transient);
   out.prediction = predict(out.file.scene, transient, &out.run);
   return out;
 }
