@@ -122,6 +122,16 @@ def test_state_names_follow_each_levels_layout():
             z = y["Re z"] + 1j * y["Im z"]
             assert abs(z) == pytest.approx(o["r"], rel=1e-14, abs=1e-15)
             assert abs(z) ** 2 + y["w"] ** 2 == pytest.approx(1.0, rel=1e-14)
+    # the l = 2 amplitudes by name are the same numbers at the full and modal levels, in the m order of each
+    tilted = rbcstab.Scene(L=3, beta=1.0)
+    full, modal = (dict(zip(m.state_names, m.y0)) for m in (quiet_model(tilted, lv) for lv in ("full", "modal")))
+    assert full["Re f[2,0]"] == modal["f[2,0]"] and full["Im f[2,0]"] == 0.0
+    for m in (1, 2):
+        for part in ("Re", "Im"):
+            assert full[f"{part} f[2,{m}]"] == modal[f"{part} f[2,{m}]"]
+        # reality: f_{2,-m} = (-1)^m conj f_{2,m}
+        assert full[f"Re f[2,{-m}]"] == (-1) ** m * full[f"Re f[2,{m}]"] != 0.0
+        assert full[f"Im f[2,{-m}]"] == -((-1) ** m) * full[f"Im f[2,{m}]"]
 
 
 def test_solve_ivp_radau_reproduces_simulate_on_the_fig3_scene():
