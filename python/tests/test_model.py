@@ -50,8 +50,9 @@ def test_jacobian_equals_central_differences_of_rhs(scene, level):
     # sums terms of size |J| |y| that cancel to |F|, so its rounding is ~eps (|J| |y| + |F|) and a difference
     # quotient's ~eps (|J| |y| + |F|) / h. With h = 1e-6 (relative, on states of order one) and |F'''| of order
     # |J| (F is rational in y with order-one denominators near y0) the sum is 1e-10..1e-9 |J| (|y| reaches 7 for
-    # ln Delta_l); the measured error is at most this estimate, and the test allows ten times it. A wrong entry of the analytic Jacobian is off by the
-    # order of the entries around it (the smallest, rank-one terms of the l >= 3 modes, are ~1e-3 |J|): far above.
+    # ln Delta_l); the measured error is at most this estimate, and the test allows ten times it. A wrong entry of
+    # the analytic Jacobian is off by the order of the entries around it (the smallest, rank-one terms of the
+    # l >= 3 modes, are ~1e-3 |J|): far above.
     model = quiet_model(scene, level)
     rng = np.random.default_rng(20240614)
     eps, h = np.finfo(float).eps, 1e-6
