@@ -34,7 +34,10 @@ std::string shape_text(const py::array& a) {
 // Only real numbers convert (integer or float dtypes, or sequences of them): strings, booleans, complex values and
 // other objects are a TypeError.
 Array real_array(const py::handle& x, const std::string& name) {
-  if (py::isinstance<py::array_t<double>>(x)) return Array::ensure(x);  // a float64 array: a copy only if strided
+  if (py::isinstance<py::array_t<double>>(x)) {  // a float64 array: copied only if it is not C-contiguous
+    Array out = Array::ensure(x);
+    if (out) return out;
+  }
   if (py::isinstance<py::str>(x) || py::isinstance<py::bytes>(x) || x.is_none())
     throw py::type_error(name + " must be an array of real numbers, got " + type_name(x));
   py::array a = py::isinstance<py::array>(x) ? py::reinterpret_borrow<py::array>(x) : py::array::ensure(x);
@@ -44,7 +47,7 @@ Array real_array(const py::handle& x, const std::string& name) {
   if (kind != "f" && kind != "i" && kind != "u")
     throw py::type_error(name + " must be an array of real numbers, got dtype " + std::string(py::str(dtype)));
   Array out = Array::ensure(a);
-  if (!out) throw py::type_error(name + " cannot be converted to float64 (dtype " + std::string(py::str(a.dtype())) + ")");
+  if (!out) throw py::type_error(name + " cannot be converted to float64 (dtype " + std::string(py::str(dtype)) + ")");
   return out;
 }
 

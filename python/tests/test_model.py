@@ -50,8 +50,9 @@ def test_jacobian_equals_central_differences_of_rhs(scene, level):
     # sums terms of size |J| |y| that cancel to |F|, so its rounding is ~eps (|J| |y| + |F|) and a difference
     # quotient's ~eps (|J| |y| + |F|) / h. With h = 1e-6 (relative, on states of order one) and |F'''| of order
     # |J| (F is rational in y with order-one denominators near y0) the sum is 1e-10..1e-9 |J| (|y| reaches 7 for
-    # ln Delta_l); the measured error is at most this estimate, and the test allows ten times it. A wrong entry of the analytic Jacobian is off by the
-    # order of the entries around it (the smallest, rank-one terms of the l >= 3 modes, are ~1e-3 |J|): far above.
+    # ln Delta_l); the measured error is at most this estimate, and the test allows ten times it. A wrong entry of
+    # the analytic Jacobian is off by the order of the entries around it (the smallest, rank-one terms of the
+    # l >= 3 modes, are ~1e-3 |J|): far above.
     model = quiet_model(scene, level)
     rng = np.random.default_rng(20240614)
     eps, h = np.finfo(float).eps, 1e-6
@@ -122,6 +123,16 @@ def test_state_names_follow_each_levels_layout():
             z = y["Re z"] + 1j * y["Im z"]
             assert abs(z) == pytest.approx(o["r"], rel=1e-14, abs=1e-15)
             assert abs(z) ** 2 + y["w"] ** 2 == pytest.approx(1.0, rel=1e-14)
+    # the l = 2 amplitudes by name are the same numbers at the full and modal levels, in the m order of each
+    tilted = rbcstab.Scene(L=3, beta=1.0)
+    full, modal = (dict(zip(m.state_names, m.y0)) for m in (quiet_model(tilted, lv) for lv in ("full", "modal")))
+    assert full["Re f[2,0]"] == modal["f[2,0]"] and full["Im f[2,0]"] == 0.0
+    for m in (1, 2):
+        for part in ("Re", "Im"):
+            assert full[f"{part} f[2,{m}]"] == modal[f"{part} f[2,{m}]"]
+        # reality: f_{2,-m} = (-1)^m conj f_{2,m}
+        assert full[f"Re f[2,{-m}]"] == (-1) ** m * full[f"Re f[2,{m}]"] != 0.0
+        assert full[f"Im f[2,{-m}]"] == -((-1) ** m) * full[f"Im f[2,{m}]"]
 
 
 def test_solve_ivp_radau_reproduces_simulate_on_the_fig3_scene():
