@@ -84,7 +84,7 @@ py::tuple summary_scene(const py::handle& scene) {
 }
 
 // The same work as simulate_scene without Python: the truncation, the run and its JSON, timed in C++ (seconds per
-// repeat). benchmarks/python_overhead.py compares it with the Python call in one process.
+// repeat). benchmarks/python/python_overhead.py compares it with the Python call in one process.
 std::vector<double> time_simulate_cpp(const py::handle& scene, int repeats) {
   if (repeats < 1) throw py::value_error("repeats = " + std::to_string(repeats) + " is out of range: must be >= 1");
   const SceneFile base = scene_file(scene);
@@ -93,8 +93,7 @@ std::vector<double> time_simulate_cpp(const py::handle& scene, int repeats) {
   for (int i = 0; i < repeats; ++i) {
     const auto start = std::chrono::steady_clock::now();
     SceneFile f = base;
-    apply_truncation(f, TruncationUse::simulation);
-    const SimulationResult r = simulate(f.scene, f.options);
+    const SimulationResult r = simulate_truncated(f, f.options);
     const nlohmann::json j = simulation_json(f, r);
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     if (j.empty()) throw std::logic_error("empty JSON");
