@@ -13,16 +13,14 @@ arguments, ``Branch.save(path)`` writes the CLI's branch file (``--save``; ``--r
     >>> b.plot()
 """
 import html
-import importlib.util
-import numbers
 import os
 import sys
 import time
 import warnings
 
-import numpy as np
 
-from . import _rbcstab
+from . import _args, _rbcstab
+from ._drawing import drawing_module
 from ._rbcstab import Scene
 
 __all__ = ["continuation", "load_branch", "plot_branches", "Branch", "Curve", "ContinuationError",
@@ -40,28 +38,10 @@ class ContinuationWarning(UserWarning):
 
 
 # ------------------------------------------------------------------------------------------- arguments
-def _number(name, value):
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
-        raise TypeError(f"{name} must be a number, got {type(value).__name__} {value!r}")
-    return float(value)
-
-
-def _integer(name, value):
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
-        raise TypeError(f"{name} must be an integer, got {type(value).__name__} {value!r}")
-    return int(value)
-
-
-def _flag(name, value):
-    if not isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name} must be True or False, got {type(value).__name__} {value!r}")
-    return bool(value)
-
-
-def _name(name, value):
-    if not isinstance(value, str):
-        raise TypeError(f"{name} must be a string, got {type(value).__name__} {value!r}")
-    return value
+_number = _args.number
+_integer = _args.integer
+_flag = _args.flag
+_name = _args.text
 
 
 _KINDS = {"min": _number, "max": _number, "step": _number, "max_step": _number, "relax_T": _number,
@@ -164,20 +144,7 @@ def load_branch(path):
 
 
 def _drawing():
-    """bifurcation_draw, the drawing code of ``rbcstab plot`` (beside rbcstab_report.py: $RBCSTAB_DATA_DIR, the
-    installed share folder or the source tree, as the CLI finds it), imported once."""
-    module = sys.modules.get("rbcstab._bifurcation_draw")
-    if module is None:
-        folder = _rbcstab.report_script_dir()
-        path = os.path.join(folder, "bifurcation_draw.py") if folder else ""
-        if not path or not os.path.isfile(path):
-            raise OSError("bifurcation_draw.py (the drawing code of `rbcstab plot`) not found; set RBCSTAB_DATA_DIR "
-                          "to the folder holding it")
-        spec = importlib.util.spec_from_file_location("rbcstab._bifurcation_draw", path)
-        module = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(module)
-        sys.modules["rbcstab._bifurcation_draw"] = module
-    return module
+    return drawing_module("bifurcation_draw")
 
 
 def _text(name, value):

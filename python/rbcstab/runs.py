@@ -1,16 +1,14 @@
 """One scene's runs: simulate, thresholds, post, summary (the CLI subcommands of the same names)."""
 import html
 
-from . import _rbcstab
-from ._rbcstab import Scene
+from . import _args, _rbcstab
 
 _UNSET = object()
 
 
 def _scene_with(scene, **overrides):
     """The scene with the non-None overrides applied (TypeError if scene is not a Scene)."""
-    if not isinstance(scene, Scene):
-        raise TypeError(f"scene must be a rbcstab.Scene, got {type(scene).__name__}")
+    _args.scene(scene)
     changes = {k: v for k, v in overrides.items() if v is not None}
     return scene.replace(**changes) if changes else scene
 
@@ -106,9 +104,7 @@ def simulate(scene, model=None, stepper=None, rtol=None, atol=None):
 
 def thresholds(scene, exact_C_star=False):
     """The paper's instability thresholds and the predicted unstable modes, no simulation (rbcstab thresholds)."""
-    if not isinstance(exact_C_star, bool):
-        raise TypeError(f"exact_C_star must be a bool, got {type(exact_C_star).__name__}")
-    data, text = _rbcstab.thresholds(_scene_with(scene), exact_C_star)
+    data, text = _rbcstab.thresholds(_scene_with(scene), _args.flag("exact_C_star", exact_C_star))
     return Report("thresholds", data, text)
 
 

@@ -6,78 +6,32 @@ Each result's ``to_dict()`` is the document the CLI writes for the same call (``
 ``plot(ax=None)`` draws with the report's drawing code (the report's phase-diagram colouring and lines).
 """
 import html
-import importlib.util
 import json
-import numbers
 import os
-import sys
 
 import numpy as np
 
-from . import _rbcstab
-from ._rbcstab import Scene
+from . import _args, _rbcstab
+from ._drawing import drawing_module
 from .progress import progress_bar
 
 __all__ = ["Diagram", "Trace", "Fig6eTable", "diagram", "trace", "fig6e"]
 
 
 # ------------------------------------------------------------------------------------------- arguments
-def _scene(scene):
-    if not isinstance(scene, Scene):
-        raise TypeError(f"scene must be a rbcstab.Scene, got {type(scene).__name__}")
-    return scene
-
-
-def _integer(name, value):
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
-        raise TypeError(f"{name} must be an integer, got {type(value).__name__} {value!r}")
-    return int(value)
-
-
-def _number(name, value):
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
-        raise TypeError(f"{name} must be a number, got {type(value).__name__} {value!r}")
-    return float(value)
-
-
-def _flag(name, value):
-    if not isinstance(value, (bool, np.bool_)):
-        raise TypeError(f"{name} must be True or False, got {type(value).__name__} {value!r}")
-    return bool(value)
-
-
-def _sequence(name, value, what):
-    """A list from a sequence (not a string, whose characters would pass for names); None -> [] (the default).
-    Its length is the library's to check, so that the message says what the field takes."""
-    if value is None:
-        return []
-    if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or not hasattr(value, "__iter__"):
-        raise TypeError(f"{name} must be a sequence of {what}, got {type(value).__name__} {value!r}")
-    return list(value)
-
-
-def _names(name, value):
-    items = _sequence(name, value, "names")
-    for v in items:
-        if not isinstance(v, str):
-            raise TypeError(f"{name} must hold names (strings), got {type(v).__name__} {v!r}")
-    return items
-
-
-def _numbers(name, value):
-    return [_number(name, v) for v in _sequence(name, value, "numbers")]
-
-
-def _integers(name, value):
-    return [_integer(name, v) for v in _sequence(name, value, "integers")]
+_scene = _args.scene
+_integer = _args.integer
+_number = _args.number
+_flag = _args.flag
+_sequence = _args.sequence
+_names = _args.names
+_numbers = _args.numbers_
+_integers = _args.integers
+_path = _args.path
 
 
 def _text(name, value, default=""):
-    if value is None:
-        return default
-    if not isinstance(value, str):
-        raise TypeError(f"{name} must be a string, got {type(value).__name__} {value!r}")
-    return value
+    return _args.text(name, value, default)
 
 
 def _shard(shard):
@@ -92,33 +46,9 @@ def _shard(shard):
     return f"{k_n[0]}/{k_n[1]}"
 
 
-def _path(name, value):
-    if value is None:
-        return ""
-    if not isinstance(value, (str, os.PathLike)):
-        raise TypeError(f"{name} must be a path, got {type(value).__name__} {value!r}")
-    path = os.fspath(value)
-    if not path:
-        raise ValueError(f"{name} = '' is empty: must be a file name")
-    return path
-
-
 # ------------------------------------------------------------------------------------------- drawing
 def phase_draw():
-    """phase_draw, the report's phase-diagram drawing code (beside rbcstab_report.py: $RBCSTAB_DATA_DIR, the
-    installed share folder or the source tree, found as the report finds it), imported once."""
-    module = sys.modules.get("rbcstab._phase_draw")
-    if module is None:
-        folder = _rbcstab.report_script_dir()
-        path = os.path.join(folder, "phase_draw.py") if folder else ""
-        if not path or not os.path.isfile(path):
-            raise OSError("phase_draw.py (the report's phase-diagram drawing code) not found; set RBCSTAB_DATA_DIR to "
-                          "the folder holding rbcstab_report.py")
-        spec = importlib.util.spec_from_file_location("rbcstab._phase_draw", path)
-        module = importlib.util.module_from_spec(spec)
-        spec.loader.exec_module(module)
-        sys.modules["rbcstab._phase_draw"] = module
-    return module
+    return drawing_module("phase_draw")
 
 
 def _axes(ax):

@@ -363,8 +363,6 @@ void bind_continuation(py::module_& m) {
   m.def("plot_spec", &plot_spec_py, py::arg("runs"), py::arg("sources"), py::arg("x") = "", py::arg("y") = "",
         py::arg("title") = "", py::arg("all_labels") = false,
         "The JSON of what `rbcstab plot` draws for these runs (format rbcstab-plot).");
-  m.def("report_script_dir", [] { return find_script_dir(""); },
-        "The folder of the plotting code `rbcstab plot` runs (bifurcation_draw.py), '' if not found.");
 }
 
 }  // namespace rbcstab::python

@@ -412,9 +412,6 @@ void bind_sweep(py::module_& m) {
 
   m.def("fig6e", &fig6e_scene, py::arg("scene"), py::arg("lambdas"), py::arg("B"), py::arg("C"),
         "(json dict, columns dict, csv text): rbcstab post --fig6e --json, its columns, and the CSV of post --fig6e.");
-
-  m.def("report_script_dir", [] { return find_script_dir(""); },
-        "The folder of the report's drawing code (rbcstab_report.py, phase_draw.py); '' when it cannot be found.");
 }
 
 }  // namespace rbcstab::python

@@ -1,0 +1,75 @@
+"""Argument checks shared by the package's functions: a wrong type is a TypeError naming the argument, its type
+and value (values are the library's to range-check: ValueError with the allowed range)."""
+import numbers
+import os
+
+import numpy as np
+
+from ._rbcstab import Scene
+
+
+def scene(value):
+    if not isinstance(value, Scene):
+        raise TypeError(f"scene must be a rbcstab.Scene, got {type(value).__name__}")
+    return value
+
+
+def number(name, value):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
+        raise TypeError(f"{name} must be a number, got {type(value).__name__} {value!r}")
+    return float(value)
+
+
+def integer(name, value):
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Integral):
+        raise TypeError(f"{name} must be an integer, got {type(value).__name__} {value!r}")
+    return int(value)
+
+
+def flag(name, value):
+    if not isinstance(value, (bool, np.bool_)):
+        raise TypeError(f"{name} must be True or False, got {type(value).__name__} {value!r}")
+    return bool(value)
+
+
+def text(name, value, default=None):
+    """A string; None gives `default` when one is given."""
+    if value is None and default is not None:
+        return default
+    if not isinstance(value, str):
+        raise TypeError(f"{name} must be a string, got {type(value).__name__} {value!r}")
+    return value
+
+
+def sequence(name, value, what):
+    """A list from a sequence (not a string, whose characters would pass for names); None -> [] (the default).
+    Its length is the library's to check, so that the message says what the field takes."""
+    if value is None:
+        return []
+    if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or not hasattr(value, "__iter__"):
+        raise TypeError(f"{name} must be a sequence of {what}, got {type(value).__name__} {value!r}")
+    return list(value)
+
+
+def names(name, value):
+    return [text(name, v) for v in sequence(name, value, "names")]
+
+
+def numbers_(name, value):
+    return [number(name, v) for v in sequence(name, value, "numbers")]
+
+
+def integers(name, value):
+    return [integer(name, v) for v in sequence(name, value, "integers")]
+
+
+def path(name, value):
+    """A file name (str or path-like); None -> '' (none)."""
+    if value is None:
+        return ""
+    if not isinstance(value, (str, os.PathLike)):
+        raise TypeError(f"{name} must be a path, got {type(value).__name__} {value!r}")
+    p = os.fspath(value)
+    if not p:
+        raise ValueError(f"{name} = '' is empty: must be a file name")
+    return p
