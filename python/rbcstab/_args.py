@@ -73,3 +73,19 @@ def path(name, value):
     if not p:
         raise ValueError(f"{name} = '' is empty: must be a file name")
     return p
+
+
+class Columns:
+    """Named numpy columns in self._columns: table["name"], table.columns; self._what names the table."""
+    _what = "this table"
+
+    @property
+    def columns(self):
+        return list(self._columns)
+
+    def __getitem__(self, name):
+        try:
+            return self._columns[name]
+        except KeyError:
+            raise KeyError(f"{name!r} is not a column of {self._what}: must be one of {', '.join(self._columns)}") \
+                from None

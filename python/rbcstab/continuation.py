@@ -174,7 +174,7 @@ def plot_branches(branches, ax=None, x=None, y=None, title=None, all_labels=Fals
 
 
 # ------------------------------------------------------------------------------------------- results
-class Branch:
+class Branch(_args.Columns):
     """A continuation run: a one-parameter branch (with its switched branch, if any), as ``rbcstab continue``.
 
     ``branch[name]`` is a numpy column over the branch's points: the free parameter and every measure of the
@@ -186,6 +186,7 @@ class Branch:
     same run) or None. restart, switch, curve and save act on the whole run (labels are unique over a run)."""
 
     _role = "branch"
+    _what = "this branch"
 
     def __init__(self, run, role=None):
         self._run = run
@@ -211,17 +212,7 @@ class Branch:
         import copy
         return copy.deepcopy(self._part())
 
-    # ---- columns
-    @property
-    def columns(self):
-        return list(self._columns)
-
-    def __getitem__(self, name):
-        try:
-            return self._columns[name]
-        except KeyError:
-            raise KeyError(f"{name!r} is not a column of this branch: must be one of {', '.join(self._columns)}") \
-                from None
+    # ---- columns: Columns gives columns and branch["name"]
 
     def __contains__(self, name):
         return name in self._columns

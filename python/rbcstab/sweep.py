@@ -386,12 +386,14 @@ def trace(scene, criterion="asymptotic", *, axes=None, x_range=None, y_range=Non
 
 
 # ------------------------------------------------------------------------------------------- Fig. 6e
-class Fig6eTable:
+class Fig6eTable(_args.Columns):
     """The Fig. 6e table (``rbcstab post --fig6e``): one row per (lambda, B, C), numpy columns by name
     (``table["Delta2_tilde"]``; NaN where a quantity is outside its domain, e.g. a stable run):
     lambda, B, C, alpha, ln_alpha, surviving_mode, l_Delta, Delta2_tilde, Delta2_tilde_integer_mode,
     Delta2_simulated, ratio, ratio_integer_mode. ``to_dict()`` is ``post --fig6e --json``; ``to_csv()`` the
     CSV ``post --fig6e`` prints."""
+
+    _what = "the Fig. 6e table"
 
     def __init__(self, data, columns, csv):
         self._data = data
@@ -400,15 +402,6 @@ class Fig6eTable:
         for a in columns.values():
             a.flags.writeable = False
 
-    @property
-    def columns(self):
-        return list(self._columns)
-
-    def __getitem__(self, name):
-        try:
-            return self._columns[name]
-        except KeyError:
-            raise KeyError(f"Fig6eTable has no column {name!r}; columns: {', '.join(self._columns)}") from None
 
     def __len__(self):
         return len(self._columns["lambda"])
