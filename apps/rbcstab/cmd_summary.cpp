@@ -6,6 +6,7 @@
 #include "exit_codes.hpp"
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/verdict/verdict_io.hpp"
+#include "progress.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -14,12 +15,14 @@ namespace {
 struct SummaryOptions {
   SceneOptions scene;
   bool json = false;
+  ProgressOutput progress;
 };
 
 int run(const SummaryOptions& o) {
   const SceneOptions& so = o.scene;
   ReducedTransient transient;  // integrated once: the truncation rule and the finite-horizon predictor read it
-  const SceneFile sf = so.resolve(TruncationUse::simulation, &transient);
+  SceneFile sf = so.resolve(TruncationUse::simulation, &transient);
+  sf.options.on_progress = o.progress.callback("summary: t =", "");
   const SimulationResult r = simulate(sf.scene, sf.options);
   const ScenePrediction prediction = predict(sf.scene, transient, &r);
   if (o.json)
@@ -34,6 +37,7 @@ static Runner add_summary(CLI::App& app) {
   auto o = std::make_shared<SummaryOptions>();
   o->scene.add_to(app);
   app.add_flag("--json", o->json, "print one JSON object on stdout (the keys of simulate --json, then the analysis)");
+  o->progress.add_flags(app);
   return [o] { return run(*o); };
 }
 

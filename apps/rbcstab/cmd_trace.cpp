@@ -9,6 +9,7 @@
 #include "checks.hpp"
 #include "commands.hpp"
 #include "plane_options.hpp"
+#include "progress.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
@@ -30,6 +31,7 @@ struct TraceCliOptions {
   std::string out = "trace", diagram, criterion = "asymptotic";
   int threads = 1;
   bool json = false;
+  ProgressOutput progress;
 };
 
 int run(const TraceCliOptions& o) {
@@ -38,6 +40,7 @@ int run(const TraceCliOptions& o) {
   spec.validate();
   TraceOptions to = o.trace;
   to.criterion = trace_criterion_from_string(o.criterion);
+  to.on_progress = o.progress.callback("trace:", "criterion evaluations");
   const TraceResult t = trace_boundary(sf.scene, spec, to);
 
   nlohmann::json doc = trace_json(sf, spec, to, t);
@@ -55,6 +58,7 @@ int run(const TraceCliOptions& o) {
     AgreementOptions ao;
     ao.threads = o.threads;
     ao.trace_options = to;
+    ao.trace_options.on_progress = nullptr;  // the agreement traces run on worker threads
     ao.trace_finite_horizon = true;
     ao.trace_in_plane = true;
     doc["agreement"] = agreement_json(dsf.scene, ds, points_from_json(dj, ds), ao);
@@ -108,6 +112,7 @@ static Runner add_trace(CLI::App& app) {
       ->check(CLI::ExistingFile);
   app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")->check(output_name())->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object on stdout (output files, pieces, corners, agreement)");
+  o->progress.add_flags(app);
   return [o] { return run(*o); };
 }
 
