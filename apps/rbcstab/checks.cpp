@@ -27,10 +27,11 @@ std::vector<CLI::App*> subcommands(CLI::App& app) {
   return app.get_subcommands([](CLI::App*) { return true; });
 }
 
-// The option named `name` (as CLI11's messages name it) of app or a subcommand; nullptr if none.
+// The option named `name` (as CLI11's messages name it) that received values: of app or of the subcommand
+// being parsed (other subcommands have options of the same name); nullptr if none.
 CLI::Option* find_option(CLI::App& app, const std::string& name) {
   for (CLI::Option* o : app.get_options())
-    if (o->get_name() == name) return o;
+    if (o->get_name() == name && !o->results().empty()) return o;
   for (CLI::App* sub : subcommands(app))
     if (CLI::Option* o = find_option(*sub, name)) return o;
   return nullptr;

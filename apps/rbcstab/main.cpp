@@ -56,9 +56,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
+    if (e.get_exit_code() == 0) return app.exit(e) == 0 ? kOk : kInvalidInput;  // --help, --version
     const std::string ours = parse_error_message(app, e);
-    if (ours.empty()) return app.exit(e) == 0 ? kOk : kInvalidInput;
-    std::cerr << "rbcstab: error: " << ours << "\nRun with --help for more information.\n";
+    std::cerr << "rbcstab: error: " << (ours.empty() ? e.what() : ours) << "\nRun with --help for more information.\n";
     return kInvalidInput;
   }
   try {

@@ -258,7 +258,9 @@ nlohmann::json phase_overlay_json(const std::vector<TraceCurve>& boundary, const
     }
     curves.push_back(j);
   }
-  return {{"curves", curves}};
+  nlohmann::json doc{{"curves", curves}};
+  explain_nulls(doc, "undefined there: the line's formula is outside its domain (drawn as a gap)");
+  return doc;
 }
 
 void PanelOptions::validate() const {

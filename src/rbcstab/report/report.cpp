@@ -535,10 +535,10 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     manifest["scene"] = to_json(sf.scene);
     put_truncation(manifest, sf);
     manifest["parameters"] = to_json(p);
-    manifest["summary"] = to_json(res.run);
+    manifest["summary"] = to_json(res.run, p);
     manifest["summary"].erase("trajectory");
     if (res.has_reduced) {
-      manifest["reduced_summary"] = to_json(res.reduced);
+      manifest["reduced_summary"] = to_json(res.reduced, p);
       manifest["reduced_summary"].erase("trajectory");
     }
     manifest["thresholds"] = thresholds;
@@ -547,6 +547,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     manifest["frames"] = {{"count", frames.t.size()}, {"status", to_string(frames.status)}, {"window", window}};
     manifest["warnings"] = res.warnings;
     manifest["figures"] = figs;
+    explain_nulls(manifest, res.run.status == IntegrationStatus::success ? nonfinite_reason(p) : run_reason(res.run, p));
     put("report.json", manifest.dump(2) + "\n");
     draw_and_publish(o, manifest, tmp, target, res.files);
   });
