@@ -62,7 +62,7 @@ const std::array<ParameterRow, 12> kTable{{
     {P::lnC, "lnC", "\\ln \\mathcal{C}", "ln C, a log axis of the capillary number", nullptr, AxisScale::log, P::C, P::C,
      bit(P::C), false, true, nullptr, nullptr, nullptr},
     {P::beta, "beta", "\\beta",
-     "rotation of the axisymmetric shapes about y (0: out of plane, pi/2 = 1.5707963267948966: in plane)", "initial",
+     "rotation of the axisymmetric shapes about y (pi/2 = 1.5707963267948966)", "initial",
      AxisScale::linear, P::beta, P::beta, bit(P::beta), true, true,
      [](const Parameters&) {
        return Domain{0, std::numbers::pi, true, true, "", "pi", "", "0: rest shape out of plane, pi/2: in plane"};
@@ -183,7 +183,11 @@ Domain parameter_domain(SceneParameter q, const Parameters& p) {
 Domain continuation_domain(SceneParameter q, const Parameters& p) { return parameter_domain(q, p); }
 
 void require_in(SceneParameter q, const Domain& domain, double value) {
-  require(domain.contains(value), parameter_row(q).name, value, domain.text());
+  if (domain.contains(value)) return;
+  // An infinite value says what it is not, also where the domain's text names only its bounds ("in [0, pi]").
+  std::string range = domain.text();
+  if (std::isinf(value) && range.find("finite") == std::string::npos) range = "finite and " + range;
+  require(false, parameter_row(q).name, value, range);
 }
 
 void validate_table(const Scene& s, std::string_view table) {

@@ -90,7 +90,8 @@ void set_parameter(Scene& s, SceneParameter q, double value);
 Domain parameter_domain(SceneParameter q, const Parameters& p);
 // The domain a continuation lands on at its closed edges: parameter_domain (one range for every use).
 Domain continuation_domain(SceneParameter q, const Parameters& p);
-// Throws InvalidArgument(name, "<name> = <value> is out of range: must be <domain text>") outside `domain`.
+// Throws InvalidArgument(name, "<name> = <value> is out of range: must be <domain text>") outside `domain`
+// ("finite and <domain text>" for an infinite value when the text does not say so).
 void require_in(SceneParameter q, const Domain& domain, double value);
 // The stored parameters of one scene-file table, each against its domain, in table order.
 void validate_table(const Scene& s, std::string_view table);
