@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <nlohmann/json.hpp>
 #include <regex>
 #include <sstream>
@@ -28,6 +29,10 @@ std::string slurp(const fs::path& path) {
   ss << in.rdbuf();
   return ss.str();
 }
+
+// The extremes: an input that overflows, the vesicle limit, and inputs whose inverse overflows.
+const std::vector<std::pair<std::string, std::string>> kExtremes = {
+    {"lambda = 1e308", "--lambda 1e308"}, {"C = inf", "--C inf"}, {"B tiny", "--B 1e-300"}, {"C tiny", "--C 1e-300"}};
 
 class JsonWalk : public ::testing::Test {
  protected:
@@ -78,56 +83,47 @@ class JsonWalk : public ::testing::Test {
     if (std::regex_search(text, m, bad)) ADD_FAILURE() << where << " holds a non-finite field: '" << m.str() << "'";
   }
 
+  // Each command line (without the scene flags) for every extreme scene.
+  void walk_extremes(std::initializer_list<std::string> commands) {
+    for (const auto& [name, scene] : kExtremes)
+      for (const std::string& c : commands) walk(name, c + " " + scene);
+  }
+  // A file the last walk wrote.
+  fs::path written(const std::string& name) const { return dir_ / std::to_string(runs_ - 1) / name; }
+
   fs::path dir_;
   int runs_ = 0;
 };
 
-// The extremes: an input that overflows, the vesicle limit, and inputs whose inverse overflows.
-const std::vector<std::pair<std::string, std::string>> kExtremes = {
-    {"lambda = 1e308", "--lambda 1e308"}, {"C = inf", "--C inf"}, {"B tiny", "--B 1e-300"}, {"C tiny", "--C 1e-300"}};
-
 TEST_F(JsonWalk, SceneCommands) {
-  for (const auto& [name, scene] : kExtremes) {
-    walk(name, "summary --T 5 --json " + scene);
-    walk(name, "simulate --T 5 --json --trajectory t.csv " + scene);
-    walk(name, "thresholds --json " + scene);
-    walk(name, "post --T 5 --json " + scene);
-    walk(name, "shape --T 5 --resolution 8 --format csv --output s --json " + scene);
-    walk(name, "floquet --T 5 --L 4 --relax-periods 1 --k 4 --json " + scene);
-  }
+  walk_extremes({"summary --T 5 --json", "simulate --T 5 --json --trajectory t.csv", "thresholds --json",
+                 "post --T 5 --json", "shape --T 5 --resolution 8 --format csv --output s --json",
+                 "floquet --T 5 --L 4 --relax-periods 1 --k 4 --json"});
 }
 
 TEST_F(JsonWalk, ContinuationAndPlot) {
-  for (const auto& [name, scene] : kExtremes) {
-    walk(name, "continue --max-points 12 --save b.json --csv b.csv --json " + scene);
-    walk(name, "continue --kind orbit --max-points 6 --json " + scene);
-  }
+  walk_extremes({"continue --max-points 12 --save b.json --csv b.csv --json", "continue --kind orbit --max-points 6 --json"});
   // A branch of the vesicle limit drawn by plot: the figure's JSON beside the PNG.
   walk("plot", "continue --max-points 12 --save b.json --C inf --json");
-  const fs::path branch = dir_ / std::to_string(runs_ - 1) / "b.json";
-  walk("plot", "plot " + branch.string() + " --output p.png --json");
+  walk("plot", "plot " + written("b.json").string() + " --output p.png --json");
 }
 
 TEST_F(JsonWalk, PlaneCommands) {
-  for (const auto& [name, scene] : kExtremes) {
-    walk(name, "diagram --counts 3,3 --T 5 --no-journal --quiet --out d --json " + scene);
-    walk(name, "trace --lines 2 --samples 8 --out t --json " + scene);
-  }
+  walk_extremes({"diagram --counts 3,3 --T 5 --no-journal --quiet --out d --json", "trace --lines 2 --samples 8 --out t --json"});
   // Two shards of a failing grid, merged.
-  walk("merge", "diagram --counts 2,2 --T 5 --lambda 1e308 --no-journal --quiet --shard 0/2 --out m --json");
-  const fs::path first = dir_ / std::to_string(runs_ - 1) / "m.shard0of2.json";
-  walk("merge", "diagram --counts 2,2 --T 5 --lambda 1e308 --no-journal --quiet --shard 1/2 --out m --json");
-  const fs::path second = dir_ / std::to_string(runs_ - 1) / "m.shard1of2.json";
-  walk("merge", "merge " + first.string() + " " + second.string() + " --out merged --json");
+  std::string shards;
+  for (const std::string k : {"0", "1"}) {
+    walk("merge", "diagram --counts 2,2 --T 5 --lambda 1e308 --no-journal --quiet --out m --json --shard " + k + "/2");
+    shards += ' ';
+    shards += written("m.shard" + k + "of2.json").string();
+  }
+  walk("merge", "merge" + shards + " --out merged --json");
 }
 
 TEST_F(JsonWalk, ReportAndBench) {
-  for (const auto& [name, scene] : kExtremes) {
-    walk(name, "report --T 5 --frames 2 --shape-resolution 8 --output r --json " + scene);
-    walk(name, "bench truncation --T 5 --Ls 3,4 --no-plot --output b --json " + scene);
-    walk(name, "bench work-precision --T 5 --levels modal --steppers rk8pd --rtols 1e-4 --no-plot --output b --json " +
-                   scene);
-  }
+  walk_extremes({"report --T 5 --frames 2 --shape-resolution 8 --output r --json",
+                 "bench truncation --T 5 --Ls 3,4 --no-plot --output b --json",
+                 "bench work-precision --T 5 --levels modal --steppers rk8pd --rtols 1e-4 --no-plot --output b --json"});
   walk("lambda = 1e308", "bench threshold --lambda 1e308 --no-plot --output b --json");
 }
 
