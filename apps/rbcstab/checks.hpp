@@ -88,4 +88,12 @@ inline CLI::Validator output_name() {
 inline CLI::Validator positive() { return number_above(0, true); }
 inline CLI::Validator non_negative() { return number_above(0, false); }
 
+// Every numeric option of `app` and its subcommands that has no check of its own reads its whole text
+// (number_text or integer_text, the option's description as the range): CLI11 alone reads "" as 0.
+void require_whole_numbers(CLI::App& app);
+// The standard message (flag, the values as given, what it accepts: the option's description) for CLI11's
+// conversion failures and wrong value counts (a single-value flag given twice); "" for other parse errors,
+// whose own messages already name the flag and value.
+std::string parse_error_message(CLI::App& app, const CLI::ParseError& e);
+
 }  // namespace rbcstab::cli

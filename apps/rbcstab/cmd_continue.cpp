@@ -15,6 +15,7 @@
 #include "rbcstab/continuation/scene_continuation.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
+#include "progress.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -45,6 +46,7 @@ struct ContinueOptions {
   std::string restart;
   int label = 0, switch_at = 0;
   // Flags a restart takes from the command line only when given (else from the file).
+  ProgressOutput progress;
   CLI::Option *o_kind{}, *o_parameter{}, *o_min{}, *o_max{}, *o_direction{}, *o_step{}, *o_max_step{},
       *o_max_points{}, *o_label_every{}, *o_segments{}, *o_relax_T{}, *o_label{}, *o_switch_at{};
 };
@@ -121,6 +123,7 @@ int run(const ContinueOptions& o) {
   SceneFile file = o.scene.read();
   spec.parameter = continuation_parameter_from_string(o.parameter);
   spec.engine = o.engine;
+  spec.engine.on_progress = o.progress.callback("continue:", "points (this direction)");
   spec.engine.p_min = o.p_min;
   spec.engine.p_max = o.p_max;
   spec.engine.direction = direction_from_string(o.direction);
@@ -143,7 +146,7 @@ static Runner add_continue(CLI::App& app) {
                               "content), orbit (in-plane reduced orbits) or modal-orbit (docs/continuation.md)")
                   ->capture_default_str();
   o->o_segments =
-      app.add_option("--segments", o->orbit.segments, "orbit: number of multiple-shooting segments")->capture_default_str();
+      app.add_option("--segments", o->orbit.segments, "orbit: number of multiple-shooting segments, an integer in [1, 1000]")->capture_default_str();
   app.add_flag("--switch-at-bp", o->switch_at_bp,
                "equilibrium, modal, full, modal-orbit: also continue the branch that bifurcates at the first BP met "
                "from the start in the continuation direction (--direction both: the BP nearest the start in "
@@ -165,7 +168,7 @@ static Runner add_continue(CLI::App& app) {
       ->capture_default_str();
   o->o_step = app.add_option("--step", o->engine.initial_step, "first arclength step, > 0")->check(positive())->capture_default_str();
   o->o_max_step = app.add_option("--max-step", o->engine.max_step, "largest arclength step, > 0")->check(positive())->capture_default_str();
-  o->o_max_points = app.add_option("--max-points", o->engine.max_points, "points per direction, integer >= 2")->check(CLI::Range(2, 100000000))->capture_default_str();
+  o->o_max_points = app.add_option("--max-points", o->engine.max_points, "points per direction, an integer in [2, 100000000]")->check(integer_text("an integer in [2, 100000000]"))->check(CLI::Range(2, 100000000))->capture_default_str();
   o->o_relax_T = app.add_option("--relax-T", o->relax_T,
                  "relaxation time that gives the start state from the scene's shape, > 0 (orbits: rounded up to a "
                  "multiple of 2 pi)")
@@ -184,17 +187,17 @@ static Runner add_continue(CLI::App& app) {
       ->check(number_text("within --parameter2's domain"));
   app.add_option("--max2", o->p2_max, "--curve: upper bound of --parameter2 (the curve ends there exactly; default: none)")
       ->check(number_text("within --parameter2's domain"));
-  app.add_option("--point", o->point, "--curve: start from the K-th located special point of that type, integer >= 1")
-      ->check(CLI::Range(1, 1000000))
+  app.add_option("--point", o->point, "--curve: start from the K-th located special point of that type, an integer in [1, 1000000]")
+      ->check(integer_text("an integer in [1, 1000000]"))->check(CLI::Range(1, 1000000))
       ->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object (branch, special_points) on stdout");
   app.add_option("--csv", o->csv, "write the branch as CSV to this file");
   app.add_option("--save", o->save,
                  "write a branch file (the JSON plus every point's state and what a restart needs) to this file");
   o->o_label_every = app.add_option("--label-every", o->label_every,
-                                    "label every N-th point of a branch (AUTO's NPR), integer >= 0; special points "
+                                    "label every N-th point of a branch (AUTO's NPR), an integer in [0, 100000000]; special points "
                                     "and the two ends are always labelled")
-                         ->check(CLI::Range(0, 100000000))
+                         ->check(integer_text("an integer in [0, 100000000]"))->check(CLI::Range(0, 100000000))
                          ->capture_default_str();
   app.add_option("--measures", o->measures,
                  "text output: the measures of the labelled-point table, comma-separated (e.g. r,Psi,sigma); "
@@ -202,18 +205,19 @@ static Runner add_continue(CLI::App& app) {
   app.add_option("--restart", o->restart,
                  "continue from a labelled point of this branch file (--save): with --label N in --parameter (default: "
                  "the file's) or, with --curve, that point's curve; or --switch-at N. Scene and kind are the file's");
-  o->o_label = app.add_option("--label", o->label, "--restart: the label to start from, integer >= 1")
-                   ->check(CLI::Range(1, 1000000000));
+  o->o_label = app.add_option("--label", o->label, "--restart: the label to start from, an integer in [1, 1000000000]")
+                   ->check(integer_text("an integer in [1, 1000000000]"))->check(CLI::Range(1, 1000000000));
   o->o_switch_at = app.add_option("--switch-at", o->switch_at,
                                   "--restart: switch onto the other branch at the BP with this label (equilibrium, "
-                                  "modal, full, modal-orbit)")
-                       ->check(CLI::Range(1, 1000000000));
+                                  "modal, full, modal-orbit), an integer in [1, 1000000000]")
+                       ->check(integer_text("an integer in [1, 1000000000]"))->check(CLI::Range(1, 1000000000));
+  o->progress.add_flags(app);
   return [o] { return run(*o); };
 }
 
 namespace {
 const RegisterCommand kRegister{"continue", "Continue an equilibrium or periodic-orbit branch in one parameter (LP/BP/HB, LPC/PD/NS), or a special point's curve in two",
-                                add_continue, 40};
+                                add_continue, 40, {{"initial_step", "--step"}, {"p_min", "--min"}, {"p_max", "--max"}}};
 }  // namespace
 
 }  // namespace rbcstab::cli

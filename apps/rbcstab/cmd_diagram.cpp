@@ -12,6 +12,7 @@
 #include "checks.hpp"
 #include "commands.hpp"
 #include "plane_options.hpp"
+#include "progress.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
@@ -40,15 +41,8 @@ struct DiagramCliOptions {
   bool no_finite_horizon_agreement = false;
   double sync_interval = 1.0;
   double alpha_fixed = -1;
+  ProgressOutput progress;
 };
-
-std::string duration(double s) {
-  std::ostringstream ss;
-  if (s >= 3600) ss << int(s / 3600) << "h" << std::setw(2) << std::setfill('0') << int(s / 60) % 60 << "m";
-  else if (s >= 60) ss << int(s / 60) << "m" << std::setw(2) << std::setfill('0') << int(s) % 60 << "s";
-  else ss << std::fixed << std::setprecision(1) << s << "s";
-  return ss.str();
-}
 
 int run(const DiagramCliOptions& o) {
   const SceneFile sf = o.scene.resolve(TruncationUse::grid);
@@ -71,7 +65,7 @@ int run(const DiagramCliOptions& o) {
   const std::string prefix = mpi.size() > 1 ? o.out : o.out + suffix;
   if (!o.no_journal) ro.journal = (o.journal.empty() ? o.out : o.journal) + suffix + ".journal";
   const bool show = !o.quiet && mpi.rank() == 0;
-  if (show)
+  if (show && o.progress.enabled())
     ro.on_progress = [&](const Progress& p) {
       std::cerr << "rbcstab: diagram " << p.done << "/" << p.total;
       if (p.resumed) std::cerr << " (" << p.resumed << " resumed)";
@@ -146,7 +140,8 @@ static Runner add_diagram(CLI::App& app) {
   app.add_flag("--no-journal", o->no_journal, "no checkpoint journal (no resume)");
   app.add_option("--sync-interval", o->sync_interval, "fdatasync the journal at most this often [s], >= 0")->capture_default_str();
   app.add_flag("--no-seconds", o->no_seconds, "omit per-point wall-clock seconds: outputs identical byte for byte across runs");
-  app.add_flag("--quiet", o->quiet, "no progress on stderr");
+  app.add_flag("--quiet", o->quiet, "no progress and no closing summary on stderr");
+  o->progress.add_flags(app, &o->quiet);
   app.add_flag("--no-finite-horizon-agreement", o->no_finite_horizon_agreement,
                "skip the finite-horizon predictor in the agreement block (one reduced run per point, ~1 ms each)");
   app.add_flag("--json", o->json, "print one JSON object on stdout (output files, point counts by verdict, seconds)");

@@ -13,6 +13,7 @@
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/report/report.hpp"
+#include "progress.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -27,6 +28,7 @@ struct ReportCliOptions {
   PanelOptions panel;
   std::string counts;  // "nx,ny" or "NxM"
   bool quiet = false;
+  ProgressOutput progress;
 };
 
 std::atomic<bool> g_stop{false};
@@ -56,11 +58,10 @@ int run_panel(ReportCliOptions& o, const SceneFile& sf, ReportOptions& ro) {
     if (!hook->empty())
       throw InvalidArgument("--phase-diagram", "--phase-diagram, --delta2-comparison and --bifurcation draw data from "
                                                "other commands into a scene report; a panel scene computes its own");
-  if (!o.quiet)
+  if (o.progress.enabled())
     o.panel.on_progress = [](const Progress& p) {
       std::cerr << "rbcstab: report: diagram " << p.done << "/" << p.total << ", " << std::fixed << std::setprecision(1)
-                << p.rate << " points/s, ETA " << (p.rate > 0 ? std::to_string(int(p.eta)) + " s" : std::string("?"))
-                << "\n";
+                << p.rate << " points/s, ETA " << (p.rate > 0 ? duration(p.eta) : std::string("?")) << "\n";
       std::cerr.unsetf(std::ios::floatfield);
     };
   o.panel.stop = &g_stop;
@@ -106,6 +107,9 @@ int run(ReportCliOptions& o) {
   ro.reduced_companion = !o.no_reduced;
   if (ro.script_dir.empty()) ro.script_dir = find_script_dir(executable_path());
   if (kind != PanelKind::none) return run_panel(o, sf, ro);
+  // The scene's runs only: a panel's points run on worker threads.
+  sf.options.on_progress = o.progress.callback("report: run at t =", "");
+  if (o.progress.enabled()) ro.on_step = [&o](const std::string& step) { o.progress.step("report: " + step); };
   if (!o.counts.empty() || o.panel.threads != 0)
     throw InvalidArgument("--counts", "--counts and --threads apply to a scene with a [diagram] table only");
   const ReportResult r = build_report(sf, ro);
@@ -114,8 +118,8 @@ int run(ReportCliOptions& o) {
     nlohmann::json j;
     j["output"] = ro.output;
     j["files"] = r.files;
-    j["summary"] = to_json(r.run);
-    if (r.has_reduced) j["reduced_summary"] = to_json(r.reduced);
+    j["summary"] = to_json(r.run, sf.scene.parameters);
+    if (r.has_reduced) j["reduced_summary"] = to_json(r.reduced, sf.scene.parameters);
     j["shape"] = {{"rho_min", r.shape.rho_min}, {"rho_max", r.shape.rho_max}};
     j["seconds"] = r.seconds;
     put_truncation(j, sf);
@@ -124,14 +128,15 @@ int run(ReportCliOptions& o) {
     std::cout << "report written to " << ro.output << " (" << r.files.size() << " files, open index.html); l_Delta = "
               << r.run.l_Delta << ", status " << to_string(r.run.status) << "\n";
   }
-  const bool failed = r.run.status != IntegrationStatus::success ||
-                      (r.has_reduced && r.reduced.status != IntegrationStatus::success);
-  if (failed) {
-    std::cerr << "rbcstab: a run stopped early (" << r.run.reason << (r.has_reduced ? " / " + r.reduced.reason : "")
-              << "); the report shows it up to t_reached\n";
-    return kRunFailed;
+  int rc = kOk;
+  for (const auto& [what, run] : {std::pair{"the run", &r.run}, std::pair{"the reduced companion run", &r.reduced}}) {
+    if (run == &r.reduced && !r.has_reduced) continue;
+    if (run->status == IntegrationStatus::success) continue;
+    std::cerr << "rbcstab: " << what << " stopped at t = " << run->t_reached << ": "
+              << run_reason(*run, sf.scene.parameters) << "; the report shows it up to that time\n";
+    rc = kRunFailed;
   }
-  return kOk;
+  return rc;
 }
 }  // namespace
 
@@ -144,7 +149,7 @@ static Runner add_report(CLI::App& app) {
   app.add_flag("--overwrite", r.overwrite, "replace an existing output folder (swapped in whole at the end)");
   app.add_option("--python", r.python, "python3 interpreter with matplotlib (Debian python3-matplotlib)")
       ->capture_default_str();
-  app.add_option("--frames", r.frames, "animation frames, integer in [2, 2000]")->check(CLI::Range(2, 2000))->capture_default_str();
+  app.add_option("--frames", r.frames, "animation frames, integer in [2, 2000]")->check(integer_text("an integer in [2, 2000]"))->check(CLI::Range(2, 2000))->capture_default_str();
   app.add_option("--frame-window", r.frame_window,
                  "animate the last W time units [T - W, T], >= 0; 0 = auto: one period of r(t) at the end if the run "
                  "oscillates (swinging, tumbling), else the whole run")
@@ -152,7 +157,7 @@ static Runner add_report(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--shape-resolution", o->n_theta,
                  "polar grid points n_theta of the exported and rendered shape (n_phi = 2 n_theta), in [2, 4096]")
-      ->check(CLI::Range(2, 4096))
+      ->check(integer_text("an integer in [2, 4096]"))->check(CLI::Range(2, 4096))
       ->capture_default_str();
   app.add_flag("--no-reduced", o->no_reduced, "skip the reduced-system companion run (Fig. 2 r, Psi from the l = 2 block only)");
   app.add_option("--phase-diagram", r.phase_diagram,
@@ -171,7 +176,7 @@ static Runner add_report(CLI::App& app) {
                  "folder holding rbcstab_report.py (default: $RBCSTAB_DATA_DIR, <prefix>/share/rbcstab/python)");
   app.add_option("--threads", o->panel.threads,
                  "[diagram] scenes: worker threads for the grid, integer in [0, 4096] (0: all cores)")
-      ->check(CLI::Range(0, 4096))
+      ->check(integer_text("an integer in [0, 4096]"))->check(CLI::Range(0, 4096))
       ->capture_default_str();
   app.add_option("--counts", o->counts,
                  "[diagram] scenes: override the grid's nx,ny (or NxM), integers in [1, 1000000], for a quick look "
@@ -179,9 +184,10 @@ static Runner add_report(CLI::App& app) {
   app.add_option("--trace-lines", o->panel.trace.lines,
                  "[diagram] scenes: interior lines (x fixed) searched for starts of the traced boundary besides the "
                  "plane's edges, integer in [0, 10000]")
-      ->check(CLI::Range(0, 10000))
+      ->check(integer_text("an integer in [0, 10000]"))->check(CLI::Range(0, 10000))
       ->capture_default_str();
-  app.add_flag("--quiet", o->quiet, "[diagram] scenes: no progress on stderr");
+  app.add_flag("--quiet", o->quiet, "no progress on stderr");
+  o->progress.add_flags(app, &o->quiet);
   app.add_flag("--json", o->json, "print one JSON object (files, summaries) on stdout");
   app.footer("Exit codes: 0 ok, 1 a run stopped early (report still written), 2 invalid input, 3 output error "
              "(python3/matplotlib missing, plotting failed, folder not writable: nothing is left behind).");

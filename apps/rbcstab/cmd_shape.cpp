@@ -5,6 +5,7 @@
 #include <set>
 #include <sstream>
 
+#include "checks.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
@@ -61,7 +62,8 @@ int run(const ShapeCliOptions& o) {
     std::cout << to_text(result);
   }
   if (series.status != IntegrationStatus::success) {
-    std::cerr << "rbcstab: run stopped: " << series.reason << " (shapes written up to that time)\n";
+    std::cerr << "rbcstab: run stopped: " << run_reason(series.status, series.reason, sf.scene.parameters)
+              << " (shapes written up to that time)\n";
     return kRunFailed;
   }
   return kOk;
@@ -79,7 +81,7 @@ static Runner add_shape(CLI::App& app) {
       ->check(CLI::IsMember({"vtk", "vtp", "ply", "csv"}))
       ->capture_default_str();
   app.add_option("--resolution", o->n_theta, "polar grid points n_theta (n_phi = 2 n_theta), integer in [2, 4096]")
-      ->check(CLI::Range(2, 4096))
+      ->check(integer_text("an integer in [2, 4096]"))->check(CLI::Range(2, 4096))
       ->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object (files, rho range, status) on stdout");
   return [o] { return run(*o); };

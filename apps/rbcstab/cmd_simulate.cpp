@@ -5,7 +5,9 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/io/files.hpp"
+#include "rbcstab/io/json.hpp"
 #include "rbcstab/io/simulation_io.hpp"
+#include "progress.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -15,10 +17,13 @@ struct SimulateOptions {
   SceneOptions scene;
   bool json = false;
   std::string trajectory;
+  ProgressOutput progress;
 };
 
 int run(const SimulateOptions& o) {
   SceneFile sf = o.scene.read();
+  sf.options.trajectory_text = !o.trajectory.empty();
+  sf.options.on_progress = o.progress.callback("simulate: t =", "");
   const SimulationResult r = simulate_truncated(sf, sf.options);
   if (!o.trajectory.empty()) write_file_atomic(o.trajectory, trajectory_csv(r), "--trajectory");
   for (const auto& w : r.warnings) std::cerr << "rbcstab: warning: " << w << "\n";
@@ -27,7 +32,7 @@ int run(const SimulateOptions& o) {
   else
     std::cout << simulation_text(sf, r);
   if (r.status != IntegrationStatus::success) {
-    std::cerr << "rbcstab: run stopped at t = " << r.t_reached << ": " << r.reason << "\n";
+    std::cerr << "rbcstab: run stopped at t = " << r.t_reached << ": " << run_reason(r, sf.scene.parameters) << "\n";
     return kRunFailed;
   }
   return kOk;
@@ -39,6 +44,7 @@ static Runner add_simulate(CLI::App& app) {
   o->scene.add_to(app);
   app.add_flag("--json", o->json, "print one JSON object on stdout");
   app.add_option("--trajectory", o->trajectory, "write t, Delta_2..Delta_L, sigma, r, Psi on the sampling grid to this CSV");
+  o->progress.add_flags(app);
   return [o] { return run(*o); };
 }
 

@@ -5,6 +5,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/verdict/verdict_io.hpp"
+#include "progress.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -13,10 +14,13 @@ namespace {
 struct SummaryOptions {
   SceneOptions scene;
   bool json = false;
+  ProgressOutput progress;
 };
 
 int run(const SummaryOptions& o) {
-  const SummaryRun s = run_summary(o.scene.read());
+  SceneFile sf = o.scene.read();
+  sf.options.on_progress = o.progress.callback("summary: t =", "");
+  const SummaryRun s = run_summary(std::move(sf));
   if (o.json)
     std::cout << summary_json(s.file, s.run, s.prediction).dump(2) << "\n";
   else
@@ -29,6 +33,7 @@ static Runner add_summary(CLI::App& app) {
   auto o = std::make_shared<SummaryOptions>();
   o->scene.add_to(app);
   app.add_flag("--json", o->json, "print one JSON object on stdout (the keys of simulate --json, then the analysis)");
+  o->progress.add_flags(app);
   return [o] { return run(*o); };
 }
 

@@ -9,6 +9,7 @@
 #include "checks.hpp"
 #include "commands.hpp"
 #include "plane_options.hpp"
+#include "progress.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
@@ -28,6 +29,7 @@ struct TraceCliOptions {
   std::string out = "trace", diagram, criterion = "asymptotic";
   int threads = 1;
   bool json = false;
+  ProgressOutput progress;
 };
 
 int run(const TraceCliOptions& o) {
@@ -37,6 +39,7 @@ int run(const TraceCliOptions& o) {
   const DiagramSpec spec = plane_spec(sf, plane);
   TraceOptions to = o.trace;
   to.criterion = trace_criterion_from_string(o.criterion);
+  to.on_progress = o.progress.callback("trace:", "criterion evaluations");
   const TraceResult t = trace_boundary(sf.scene, spec, to);
 
   nlohmann::json doc = trace_json(sf, spec, to, t);
@@ -98,6 +101,7 @@ static Runner add_trace(CLI::App& app) {
       ->check(CLI::ExistingFile);
   app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")->check(output_name())->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object on stdout (output files, pieces, corners, agreement)");
+  o->progress.add_flags(app);
   return [o] { return run(*o); };
 }
 

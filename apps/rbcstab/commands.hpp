@@ -3,6 +3,7 @@
 // to a CLI11 subcommand and returns the function that runs it.
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -15,13 +16,16 @@ struct Command {
   std::string name, help;
   CommandFactory make = nullptr;
   int order = 0;  // position in --help
+  // The flag setting a library parameter whose name differs ("initial_step" -> "--step"), for messages.
+  std::map<std::string, std::string> flag_of;
 };
 
 std::vector<Command>& command_registry();
 
 struct RegisterCommand {
-  RegisterCommand(const char* name, const char* help, CommandFactory make, int order) {
-    command_registry().push_back({name, help, make, order});
+  RegisterCommand(const char* name, const char* help, CommandFactory make, int order,
+                  std::map<std::string, std::string> flag_of = {}) {
+    command_registry().push_back({name, help, make, order, std::move(flag_of)});
   }
 };
 

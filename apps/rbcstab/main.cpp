@@ -4,6 +4,7 @@
 #include <iostream>
 #include <map>
 
+#include "checks.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
@@ -17,14 +18,18 @@ std::vector<Command>& command_registry() {
 
 namespace {
 // "--flag: " when the library named a parameter that the user gave as a flag of the running subcommand
-// (max_points -> --max-points), so every message names the flag; "" when the message already does or the
-// value came from a scene file or a default.
-std::string flag_hint(CLI::App& app, const rbcstab::InvalidArgument& e) {
-  std::string flag = "--" + e.parameter();
-  for (char& c : flag)
-    if (c == '_') c = '-';
-  if (std::string(e.what()).find(flag) != std::string::npos) return "";
+// (max_points -> --max-points, run.T -> --T, diagram.x_range -> --x-range, or the command's flag_of), so every
+// message names the flag; "" when the message already does or the value came from a scene file or a default.
+std::string flag_hint(CLI::App& app, const std::vector<rbcstab::cli::Command>& commands,
+                      const rbcstab::InvalidArgument& e) {
+  const std::string parameter = e.parameter();
   for (CLI::App* sub : app.get_subcommands()) {
+    std::string flag = "--" + parameter.substr(parameter.rfind('.') + 1);
+    for (char& c : flag)
+      if (c == '_') c = '-';
+    for (const auto& c : commands)
+      if (c.name == sub->get_name() && c.flag_of.count(parameter)) flag = c.flag_of.at(parameter);
+    if (std::string(e.what()).find(flag) != std::string::npos) return "";
     const CLI::Option* o = sub->get_option_no_throw(flag);
     if (o && o->count() > 0) return flag + ": ";
   }
@@ -47,11 +52,14 @@ int main(int argc, char** argv) {
     CLI::App* sub = app.add_subcommand(c.name, c.help);
     runners[sub] = c.make(*sub);
   }
+  require_whole_numbers(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int rc = app.exit(e);
-    return rc == 0 ? kOk : kInvalidInput;
+    if (e.get_exit_code() == 0) return app.exit(e) == 0 ? kOk : kInvalidInput;  // --help, --version
+    const std::string ours = parse_error_message(app, e);
+    std::cerr << "rbcstab: error: " << (ours.empty() ? e.what() : ours) << "\nRun with --help for more information.\n";
+    return kInvalidInput;
   }
   try {
     for (auto& [sub, run] : runners)
@@ -60,7 +68,7 @@ int main(int argc, char** argv) {
     summary->parse(std::vector<std::string>{});
     return runners[summary]();
   } catch (const rbcstab::InvalidArgument& e) {
-    std::cerr << "rbcstab: error: " << flag_hint(app, e) << e.what() << "\n";
+    std::cerr << "rbcstab: error: " << flag_hint(app, commands, e) << e.what() << "\n";
     return kInvalidInput;
   } catch (const CLI::ParseError& e) {
     return app.exit(e) == 0 ? kOk : kInvalidInput;

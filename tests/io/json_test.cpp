@@ -44,6 +44,20 @@ TEST(Json, EveryNullGetsAReasonNamingTheInput) {
   EXPECT_EQ(to_json(p)["S_reason"], S_reason(p));
 }
 
+// One reason per null (S_reason, no S_note copy); an input so small that its inverse overflows is named too.
+TEST(Json, OneReasonPerNullAndTinyInputsAreNamed) {
+  Parameters p;
+  p.C = INFINITY;
+  const auto j = to_json(p);
+  EXPECT_TRUE(j.contains("S_reason"));
+  EXPECT_FALSE(j.contains("S_note"));
+  p = Parameters{};
+  p.B = 1e-300;
+  EXPECT_NE(nonfinite_reason(p).find("B = 1e-300"), std::string::npos) << nonfinite_reason(p);
+  p.B = 1e-100;  // its square's inverse is 1e200: no overflow, not named
+  EXPECT_EQ(nonfinite_reason(p).find("B ="), std::string::npos) << nonfinite_reason(p);
+}
+
 TEST(Json, CsvNumberIsExactOrEmptyNeverNan) {
   EXPECT_EQ(csv_number(NAN), "");
   EXPECT_EQ(csv_number(-INFINITY), "");

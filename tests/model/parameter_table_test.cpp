@@ -47,7 +47,7 @@ TEST(ParameterTable, DomainsReadLikeTheirMessages) {
   EXPECT_EQ(parameter_domain(P::Delta0, p).text(false), "in [0, Delta]");
   EXPECT_EQ(parameter_domain(P::B, p).text(), "finite and > 0");
   EXPECT_EQ(parameter_domain(P::C, p).text(), "> 0 (inf allowed: the vesicle limit)");
-  EXPECT_EQ(parameter_domain(P::beta, p).text(), "finite");
+  EXPECT_EQ(parameter_domain(P::beta, p).text(), "in [0, pi] (0: rest shape out of plane, pi/2: in plane)");
   EXPECT_EQ(continuation_domain(P::beta, p).text(), "in [0, pi] (0: rest shape out of plane, pi/2: in plane)");
   EXPECT_EQ(continuation_domain(P::lambda, p).text(), parameter_domain(P::lambda, p).text());
   // ln of (0, inf) is every finite number; ln of (0, inf] adds +inf (C = inf).

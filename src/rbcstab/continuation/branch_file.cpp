@@ -51,8 +51,13 @@ void add_states(json& j, const MeasuredBranch& m) {
   }
 }
 
+// A continuation bound: infinite (null in JSON) means none.
+void put_bound(json& j, const std::string& key, double v) {
+  put_number(j, key, v, std::string("no bound (") + (v < 0 ? "-inf" : "inf") + "): the parameter is free on this side");
+}
+
 json engine_json(const ContinuationOptions& e) {
-  return {{"initial_step", e.initial_step},
+  json j{{"initial_step", e.initial_step},
           {"min_step", e.min_step},
           {"max_step", e.max_step},
           {"step_growth", e.step_growth},
@@ -60,8 +65,6 @@ json engine_json(const ContinuationOptions& e) {
           {"easy_iterations", e.easy_iterations},
           {"max_newton", e.max_newton},
           {"newton_tol", e.newton_tol},
-          {"p_min", number_or_null(e.p_min)},
-          {"p_max", number_or_null(e.p_max)},
           {"max_points", e.max_points},
           {"direction", to_string(e.direction)},
           {"detect_bifurcations", e.detect_bifurcations},
@@ -70,12 +73,15 @@ json engine_json(const ContinuationOptions& e) {
           {"max_location_iterations", e.max_location_iterations},
           {"stability_tol", e.stability_tol},
           {"certificate_refine_margin", e.certificate_refine_margin}};
+  put_bound(j, "p_min", e.p_min);
+  put_bound(j, "p_max", e.p_max);
+  return j;
 }
 
 json spec_json(const BranchSpec& s) {
   SceneFile sf;
   sf.scene = s.scene;
-  return {{"scene", to_toml(sf)},
+  json j{{"scene", to_toml(sf)},
           {"kind", to_string(s.kind)},
           {"parameter", to_string(s.parameter)},
           {"engine", engine_json(s.engine)},
@@ -91,6 +97,8 @@ json spec_json(const BranchSpec& s) {
           {"label_every", s.label_every},
           {"switch_at_bp", s.switch_at_bp},
           {"start_state", s.start_state ? vector_json(*s.start_state) : json(nullptr)}};
+  if (!s.start_state) j["start_state_reason"] = "none: the start is computed from the scene";
+  return j;
 }
 
 
@@ -473,10 +481,10 @@ json branch_file_json(const ContinuationRun& run) {
     j["start"] = to_json(c.one.start, is_orbit(c.one.spec.kind));
     j["curve_spec"] = {{"type", to_string(c.spec.type)},
                        {"parameter2", to_string(*c.spec.parameter2)},
-                       {"p2_min", number_or_null(c.spec.p2_min)},
-                       {"p2_max", number_or_null(c.spec.p2_max)},
                        {"point", c.spec.point},
                        {"symmetric_tol", c.spec.symmetric_tol}};
+    put_bound(j["curve_spec"], "p2_min", c.spec.p2_min);
+    put_bound(j["curve_spec"], "p2_max", c.spec.p2_max);
     j["curve_start"] = special_point_json(c.start);
     j["start_p2"] = number_or_null(c.start_p2);
     j["started"] = c.started;
@@ -484,6 +492,8 @@ json branch_file_json(const ContinuationRun& run) {
   }
   j["format"] = kBranchFileFormat;
   j["version"] = kBranchFileVersion;
+  const SceneBranch* branch = std::get_if<SceneBranch>(&run);
+  explain_nulls(j, nonfinite_reason((branch ? branch->spec : std::get<SceneCurve>(run).one.spec).scene.parameters));
   return j;
 }
 

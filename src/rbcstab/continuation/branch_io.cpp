@@ -23,6 +23,14 @@ void put_value(std::ostream& os, const MeasureValue& v) {
   std::visit([&](const auto& x) { os << x; }, v);
 }
 
+// A CSV field: numbers as csv_number (empty when not finite, never "nan").
+void put_csv_value(std::ostream& os, const MeasureValue& v) {
+  if (const double* d = std::get_if<double>(&v))
+    os << csv_number(*d);
+  else
+    put_value(os, v);
+}
+
 nlohmann::json complex_json(std::complex<double> z) { return {number_or_null(z.real()), number_or_null(z.imag())}; }
 
 // The certified stability keys of a point, special point or start.
@@ -66,7 +74,16 @@ void along(const MeasuredBranch& m, F f) {
   for (; j < sps.size(); ++j) f(true, j);
 }
 
-nlohmann::json label_json(int label) { return label > 0 ? nlohmann::json(label) : nlohmann::json(nullptr); }
+// j[key] = the label, or null with its reason: only the ends, the special points and every label_every-th
+// point carry one.
+void put_label(nlohmann::json& j, const std::string& key, int label) {
+  if (label > 0) {
+    j[key] = label;
+    return;
+  }
+  j[key] = nullptr;
+  j[key + "_reason"] = "unlabelled: labels go to the ends, the special points and every label_every-th point";
+}
 
 // CSV rows of a branch: its parameters, the branch name (if any), the CSV measures, stability and
 // (with_max) the most unstable spectral value, label and type; special points as rows in their place.
@@ -75,19 +92,19 @@ void csv_rows(std::ostream& os, const MeasuredBranch& m, const char* branch, boo
     const std::vector<double>& parameters =
         special ? m.branch.special_points[k].parameters : m.branch.points[k].parameters;
     const std::vector<MeasureValue>& values = special ? m.special_measures[k] : m.point_measures[k];
-    for (std::size_t i = 0; i < parameters.size(); ++i) os << (i ? "," : "") << parameters[i];
+    for (std::size_t i = 0; i < parameters.size(); ++i) os << (i ? "," : "") << csv_number(parameters[i]);
     if (branch) os << ',' << branch;
     for (std::size_t i = 0; i < m.measure_names.size(); ++i)
       if (is_csv_measure(m.measure_names[i])) {
         os << ',';
-        put_value(os, values[i]);
+        put_csv_value(os, values[i]);
       }
     if (special) {
       os << ",," << (with_max ? "," : "");
     } else {
       const BranchPoint& pt = m.branch.points[k];
       os << ',' << (pt.stable ? 1 : 0) << ',' << pt.n_unstable;
-      if (with_max) os << ',' << most_unstable(pt.spectrum, m.spectrum_kind);
+      if (with_max) os << ',' << csv_number(most_unstable(pt.spectrum, m.spectrum_kind));
     }
     const int label = special ? m.special_label(k) : m.point_label(k);
     os << ',';
@@ -218,7 +235,7 @@ nlohmann::json to_json(const MeasuredBranch& m) {
   for (std::size_t k = 0; k < b.points.size(); ++k) {
     const BranchPoint& pt = b.points[k];
     nlohmann::json j = point_json(m, pt.parameters, m.point_measures[k]);
-    j["label"] = label_json(m.point_label(k));
+    put_label(j, "label", m.point_label(k));
     j["type"] = m.point_type(k);
     j["stable"] = pt.stable;
     j["n_unstable"] = pt.n_unstable;
@@ -234,7 +251,7 @@ nlohmann::json to_json(const MeasuredBranch& m) {
     nlohmann::json j = point_json(m, sp.parameters, m.special_measures[k]);
     j["type"] = to_string(sp.type);
     j["name"] = sp.name;
-    j["label"] = label_json(m.special_label(k));
+    put_label(j, "label", m.special_label(k));
     if (sp.type == SpecialPointType::PD || sp.type == SpecialPointType::NS || sp.type == SpecialPointType::HB)
       j["critical"] = complex_json(sp.eigenvalue);
     j["bracket"] = {number_or_null(sp.p_lo), number_or_null(sp.p_hi)};
@@ -272,6 +289,7 @@ nlohmann::json to_json(const StartPoint& s, bool orbit) {
     start["periodicity_tol"] = number_or_null(s.periodicity_tol);
     start["relaxed"] = s.relaxed;
   }
+  explain_nulls(start, s.converged ? "not finite at the start point" : "not computed: the start failed (" + s.message + ")");
   return start;
 }
 
@@ -282,10 +300,11 @@ nlohmann::json to_json(const SceneBranch& r) {
   if (r.switched) {
     nlohmann::json sw = to_json(r.switched->branch);
     sw["switched"] = r.switched->switched;
-    sw["bp_label"] = label_json(r.switched->bp_label);
+    put_label(sw, "bp_label", r.switched->bp_label);
     if (!r.switched->switched) sw["message"] = r.switched->message;
     j["switched_branch"] = sw;
   }
+  explain_nulls(j, nonfinite_reason(r.spec.scene.parameters));
   return j;
 }
 
@@ -306,6 +325,7 @@ nlohmann::json to_json(const SceneCurve& r) {
                 {"one_parameter_points", r.one.branch.branch.points.size()},
                 {"system", to_string(r.system)}};
   j["one_parameter_branch"] = to_json(r.one.branch);
+  explain_nulls(j, nonfinite_reason(r.one.spec.scene.parameters));
   return j;
 }
 

@@ -102,10 +102,11 @@ StabilityCertificate certify_solution(const ContinuationProblem& problem, const 
 
 
 void ContinuationOptions::validate() const {
-  require(std::isfinite(initial_step) && initial_step > 0, "initial_step", initial_step, "a finite number > 0");
+  require(std::isfinite(max_step) && max_step > 0, "max_step", max_step, "a finite number > 0");
+  require(std::isfinite(initial_step) && initial_step > 0 && initial_step <= max_step, "initial_step", initial_step,
+          "in (0, max_step] with max_step = " + format_value(max_step));
   require(std::isfinite(min_step) && min_step > 0 && min_step <= initial_step, "min_step", min_step,
           "a number in (0, initial_step]");
-  require(std::isfinite(max_step) && max_step >= initial_step, "max_step", max_step, "a finite number >= initial_step");
   require(step_growth >= 1 && step_growth <= 10, "step_growth", step_growth, "[1, 10]");
   require(step_shrink > 0 && step_shrink < 1, "step_shrink", step_shrink, "(0, 1)");
   require(easy_iterations >= 1, "easy_iterations", easy_iterations, "an integer >= 1");
@@ -545,6 +546,7 @@ class Engine {
       }
       arclength += sign * std::abs(a.t.dot(b.X - a.X));
       br.points.push_back(to_branch_point(b, arclength));
+      if (o_.on_progress) o_.on_progress(double(br.points.size()), double(o_.max_points));
       const int iters = b.iterations;
       a = std::move(b);
       if (at_bound) {

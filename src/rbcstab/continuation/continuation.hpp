@@ -13,6 +13,7 @@
 
 #include "rbcstab/continuation/problem.hpp"
 #include "rbcstab/core/enum_table.hpp"
+#include "rbcstab/core/progress.hpp"
 
 namespace rbcstab {
 
@@ -114,6 +115,7 @@ struct ContinuationOptions {
   std::vector<UserEvent> events;    // user zero crossings -> UZ
   // Optional user stop: return true to end the branch after this point.
   std::function<bool(const Eigen::VectorXd& x, double p)> stop;
+  ProgressCallback on_progress;  // points of this direction so far, of max_points
 
   void validate() const;  // throws InvalidArgument naming the field
 };

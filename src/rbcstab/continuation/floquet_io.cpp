@@ -30,6 +30,8 @@ nlohmann::json floquet_json(const Scene& scene, const SceneFloquetOptions& optio
                     {"im", number_or_null(mu(i).imag())},
                     {"abs", number_or_null(std::abs(mu(i)))}});
   j["multipliers"] = list;
+  explain_nulls(j, r.message.empty() ? nonfinite_reason(scene.parameters)
+                                     : "not computed: " + to_string(r.status) + ": " + r.message);
   return j;
 }
 

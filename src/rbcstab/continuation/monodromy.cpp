@@ -7,6 +7,7 @@
 #include <stdexcept>
 
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/io/json.hpp"
 #include "rbcstab/model/full_model.hpp"
 
 namespace rbcstab {
@@ -239,7 +240,7 @@ SceneFloquetResult scene_floquet_multipliers(const Scene& scene, const SceneFloq
     if (r.status != IntegrationStatus::success) {
       out.status = SceneFloquetStatus::relaxation_failed;
       out.message = "relaxation at the " + to_string(out.relax_level) + " level failed at t = " +
-                    std::to_string(r.t_reached) + ": " + r.reason;
+                    std::to_string(r.t_reached) + ": " + run_reason(r.status, r.reason, scene.parameters);
       return out;
     }
     relaxed.f = relaxing->amplitudes(out.t0, r.y);
@@ -254,7 +255,8 @@ SceneFloquetResult scene_floquet_multipliers(const Scene& scene, const SceneFloq
   const IntegrationResult once = integrate(full, y0, out.t0, grid, mo.integrator_for(full), {});
   if (once.status != IntegrationStatus::success) {
     out.status = SceneFloquetStatus::relaxation_failed;
-    out.message = "one period of the full model failed at t = " + std::to_string(once.t_reached) + ": " + once.reason;
+    out.message = "one period of the full model failed at t = " + std::to_string(once.t_reached) + ": " +
+                  run_reason(once.status, once.reason, scene.parameters);
     return out;
   }
   double d = 0, n = 0;

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <cstdio>
 
 namespace rbcstab {
 
@@ -14,6 +15,15 @@ std::string format_value(double value) {
   char buf[64];
   auto res = std::to_chars(buf, buf + sizeof buf, value);
   return std::string(buf, res.ptr);
+}
+
+std::string format_bytes(double bytes) {
+  char buf[64];
+  if (bytes < 1e6)
+    std::snprintf(buf, sizeof buf, "%.3g bytes", bytes);
+  else
+    std::snprintf(buf, sizeof buf, "%.3g %s", bytes < 1e9 ? bytes / 1e6 : bytes / 1e9, bytes < 1e9 ? "MB" : "GB");
+  return buf;
 }
 
 void require(bool ok, std::string_view parameter, double value, std::string_view range) {

@@ -18,6 +18,8 @@ class InvalidArgument : public std::invalid_argument {
 
 // Formats a value the way messages show it (shortest round-trip form, "inf", "nan").
 std::string format_value(double value);
+// Formats a memory size for messages, three significant digits: "870 bytes", "6.66 GB".
+std::string format_bytes(double bytes);
 
 // Throws InvalidArgument("parameter = value is out of range: must be <range>") unless ok.
 void require(bool ok, std::string_view parameter, double value, std::string_view range);

@@ -80,6 +80,26 @@ bool is_implicit(Stepper s) {
   return false;
 }
 
+int dense_matrices(Stepper s) {
+  switch (s) {
+    case Stepper::msbdf:
+    case Stepper::bsimp: return 2;
+    case Stepper::rk4imp: return 5;
+    default: return 0;
+  }
+}
+
+void require_dense_dimension(Stepper s, std::size_t n, const std::string& system) {
+  const int k = dense_matrices(s);
+  if (k == 0 || n <= kMaxDenseDimension) return;
+  auto gb = [k](double dim) { return format_bytes(double(k) * dim * dim * 8); };
+  throw InvalidArgument("stepper", "stepper = " + to_string(s) + " on " + system + " keeps " + std::to_string(k) +
+                                       " dense " + std::to_string(n) + " x " + std::to_string(n) +
+                                       " matrices, about " + gb(double(n)) + ": it is allowed up to dimension " +
+                                       std::to_string(kMaxDenseDimension) + " (" + gb(double(kMaxDenseDimension)) +
+                                       "): use rosenbrock (O(n) structured solves), an explicit stepper, or the modal level");
+}
+
 void IntegratorOptions::validate() const {
   require(std::isfinite(rtol) && rtol >= 1e-15 && rtol <= 1e-1, "rtol", rtol, "in [1e-15, 0.1]");
   require(std::isfinite(atol) && atol >= 0 && atol <= 1, "atol", atol, "in [0, 1]");
@@ -96,14 +116,7 @@ IntegrationResult integrate(const System& system, std::span<const double> y0, do
   options.validate();
   const std::size_t n = system.dimension();
   require(y0.size() == n, "y0", double(y0.size()), "of the system's dimension " + std::to_string(n));
-  // GSL's implicit steppers keep several dense n x n matrices: refuse sizes that would take gigabytes
-  // rather than exhaust memory; the structured Rosenbrock stepper solves in O(n) at any size.
-  constexpr std::size_t kMaxDenseDimension = 3000;  // 72 MB per matrix
-  if (is_implicit(options.stepper) && options.stepper != Stepper::rosenbrock && n > kMaxDenseDimension)
-    throw InvalidArgument("stepper", "stepper = " + to_string(options.stepper) + " needs dense " + std::to_string(n) +
-                                         " x " + std::to_string(n) + " Jacobians; it is allowed up to dimension " +
-                                         std::to_string(kMaxDenseDimension) +
-                                         ": use rosenbrock (O(n) structured solves), an explicit stepper, or the modal level");
+  require_dense_dimension(options.stepper, n, "a system of dimension " + std::to_string(n));
   require_finite("t0", t0);
   for (std::size_t i = 0; i < grid.size(); ++i)
     require(std::isfinite(grid[i]) && grid[i] >= t0 && (i == 0 || grid[i] > grid[i - 1]), "grid", grid[i],

@@ -33,6 +33,14 @@ struct EnumTable<Stepper> {
 inline Stepper stepper_from_string(std::string_view name) { return from_string<Stepper>(name, "stepper"); }
 inline const std::vector<std::string>& stepper_names() { return enum_names<Stepper>(); }
 bool is_implicit(Stepper s);
+// The dense n x n matrices a stepper keeps (measured peak memory at n = 874: msbdf and bsimp 2, rk4imp 5, its
+// Newton matrix being 2n x 2n); 0 for the explicit steppers and rosenbrock (O(n) structured solves).
+int dense_matrices(Stepper s);
+// Dense steppers are allowed up to this dimension: 2 matrices of 72 MB (5 for rk4imp), and one LU factorisation
+// per step that stays within seconds. Throws InvalidArgument("stepper", ...) with the matrices' memory and the
+// limit for a larger system; `system` names it in the message ("the full level at L = 40").
+constexpr std::size_t kMaxDenseDimension = 3000;
+void require_dense_dimension(Stepper s, std::size_t n, const std::string& system);
 
 struct IntegratorOptions {
   Stepper stepper = Stepper::rk8pd;  // rk8pd: cheapest per digit for the modal level (docs/benchmarks.md)

@@ -23,7 +23,27 @@ std::vector<double> sampling_grid(double T, double dt) {
   return g;
 }
 
+double trajectory_bytes(const Scene& scene, const SimulationOptions& options) {
+  if (!options.record_trajectory) return 0;
+  const double samples = std::floor(scene.T / scene.dt) + 2, L = scene.L;
+  return samples * (8 * (L + 8) + (options.trajectory_text ? 25 * (L + 4) : 0));
+}
+
 namespace {
+// The memory bounds of simulate(), checked once the level and so the system's dimension are known.
+void require_memory(const Scene& scene, const SimulationOptions& options, ModelLevel level, std::size_t dimension) {
+  require_dense_dimension(options.integrator.stepper, dimension,
+                          "the " + to_string(level) + " level at L = " + std::to_string(scene.L));
+  const double bytes = trajectory_bytes(scene, options);
+  if (bytes <= kMaxTrajectoryBytes) return;
+  const double samples = std::floor(scene.T / scene.dt) + 2;
+  throw InvalidArgument("dt", "dt = " + format_value(scene.dt) + " gives T/dt = " + format_value(scene.T / scene.dt) +
+                                  " output samples of about " + format_bytes(bytes / samples) + " each at L = " +
+                                  std::to_string(scene.L) + (options.trajectory_text ? " with their CSV text" : "") +
+                                  ": about " + format_bytes(bytes) + " of trajectory, more than the limit " +
+                                  format_bytes(kMaxTrajectoryBytes) + ": raise dt, or lower T or L");
+}
+
 constexpr int kTailIntervals = 160;  // Simpson on the tail window: measured error ~1e-8 relative on the in-plane Fig. 3 scene
 
 int argmax_growth(const std::vector<double>& X, const std::vector<double>& X0) {
@@ -43,6 +63,7 @@ SimulationResult simulate(const Scene& scene, const SimulationOptions& options) 
   res.level = built.level;
   res.warnings = std::move(built.warnings);
   const std::unique_ptr<System> system = std::move(built.system);
+  require_memory(scene, options, res.level.level, system->dimension());
   res.L = scene.L;
   res.T = scene.T;
 
@@ -76,6 +97,7 @@ SimulationResult simulate(const Scene& scene, const SimulationOptions& options) 
     res.excess_area_drift = std::max(res.excess_area_drift, std::abs(total - res.Delta_total_initial));
     unwrap(o);
     if (options.on_step) options.on_step(t, o);
+    if (options.on_progress) options.on_progress(t, scene.T);
   };
   auto on_sample = [&](double t, std::span<const double> y) {
     const Observation o = system->observe(t, y);

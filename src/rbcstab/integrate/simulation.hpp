@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "rbcstab/core/progress.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/scene.hpp"
 
@@ -17,8 +18,16 @@ struct SimulationOptions {
   // Called after every accepted step with the observables there (the truncation check reads sigma(t) from
   // them); empty: not called.
   std::function<void(double t, const Observation& o)> on_step{};
+  bool trajectory_text = false;  // the caller also renders the samples as CSV text (counted by the memory bound)
+  ProgressCallback on_progress;  // t of T, after every accepted step
   void validate() const;
 };
+
+// The samples kept on the output grid are bounded before a run starts: measured 8 (L + 8) bytes each in memory
+// (Delta_2..Delta_L, t, sigma, r, Psi and the vectors' overhead), plus up to 25 (L + 4) bytes each as CSV text
+// (trajectory_text); a run whose samples would take more than kMaxTrajectoryBytes is refused.
+constexpr double kMaxTrajectoryBytes = 2.0 * 1024 * 1024 * 1024;
+double trajectory_bytes(const Scene& scene, const SimulationOptions& options);
 
 struct Trajectory {
   std::vector<double> t;
@@ -48,7 +57,8 @@ struct SimulationResult {
   std::vector<std::string> warnings;
 };
 
-// Runs the scene (validated first; throws InvalidArgument on bad input). Numerical failure is a
+// Runs the scene (validated first, with its memory bounds: the dense stepper's dimension, require_dense_dimension,
+// and the samples, kMaxTrajectoryBytes; throws InvalidArgument on bad input). Numerical failure is a
 // status in the result, with everything computed up to t_reached.
 SimulationResult simulate(const Scene& scene, const SimulationOptions& options = {});
 

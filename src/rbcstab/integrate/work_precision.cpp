@@ -42,15 +42,35 @@ double relative_error(const std::vector<double>& D, const std::vector<double>& r
 WorkPrecisionTable work_precision(const Scene& scene, const WorkPrecisionOptions& options) {
   options.validate();
   scene.validate();
+  // Every level x stepper within the dense steppers' bound before the first run (the references take longest).
+  const InitialState init = initial_state(scene);
+  for (ModelLevel level : options.levels)
+    for (Stepper stepper : options.steppers) {
+      if (dense_matrices(stepper) == 0) continue;
+      Scene s = scene;
+      s.model = level;
+      const LevelChoice c = choose_level(s, init);  // refuses a level that cannot hold the scene, as the run would
+      require_dense_dimension(stepper, make_system(scene.parameters, init, c.level)->dimension(),
+                              "the " + to_string(level) + " level at L = " + std::to_string(scene.L));
+    }
   WorkPrecisionTable table;
   table.scene_name = scene.name;
   const double ref_atol = options.reference_rtol * 1e-3;
   // Reference: the full level (a different formulation from the modal one); the modal level at the same
   // tolerance gives the spread that bounds the reference's own error.
   const SimulationResult ref = run(scene, ModelLevel::full, Stepper::rk8pd, options.reference_rtol, ref_atol, 600);
-  if (ref.status != IntegrationStatus::success)
-    throw InvalidArgument("scene", "the reference run failed (" + ref.reason + "): work-precision needs a scene that integrates");
+  table.reference_status = ref.status;
+  table.reference_reason = ref.reason;
+  // Without a reference no error can be measured: a failed computation, not bad input.
+  if (ref.status != IntegrationStatus::success) return table;
+  const double runs = 2.0 + double(options.levels.size() * options.steppers.size() * options.rtols.size());
+  double done = 1;
+  auto progress = [&] {
+    if (options.on_progress) options.on_progress(done++, runs);
+  };
+  progress();
   const SimulationResult alt = run(scene, ModelLevel::modal, Stepper::rk8pd, options.reference_rtol, ref_atol, 600);
+  progress();
   table.reference_Delta = ref.Delta_final;
   table.reference_sigma = ref.sigma_final;
   table.reference_l_Delta = ref.l_Delta;
@@ -63,7 +83,9 @@ WorkPrecisionTable work_precision(const Scene& scene, const WorkPrecisionOptions
                               r.counters.steps, r.seconds,
                               relative_error(r.Delta_final, ref.Delta_final, scene.parameters.Delta),
                               std::abs(r.sigma_final - ref.sigma_final) / std::max(1.0, std::abs(ref.sigma_final)),
-                              r.l_Delta, r.status == IntegrationStatus::success && r.l_Delta != ref.l_Delta});
+                              r.l_Delta, r.status == IntegrationStatus::success && r.l_Delta != ref.l_Delta,
+                              r.reason});
+        progress();
       }
   return table;
 }

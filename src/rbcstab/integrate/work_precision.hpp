@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "rbcstab/core/progress.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 
 namespace rbcstab {
@@ -15,6 +16,7 @@ struct WorkPrecisionOptions {
   double atol_ratio = 1e-4;    // atol = atol_ratio * rtol: the relative test dominates for O(1) states
   double max_seconds = 30;     // per run: an expensive combination ends as time_limit, not a stall
   double reference_rtol = 1e-13;
+  ProgressCallback on_progress;  // runs done of all (the two references, then every row)
   void validate() const;
 };
 
@@ -29,6 +31,7 @@ struct WorkPrecisionRow {
   double error_sigma = 0;  // |sigma(T) - ref| / max(1, |ref|)
   int l_Delta = 2;
   bool verdict_changed = false;  // l_Delta differs from the reference's (runs that reached T only: a stopped run has no verdict)
+  std::string reason;            // the integrator's message when status is not success
 };
 
 struct WorkPrecisionTable {
@@ -38,10 +41,14 @@ struct WorkPrecisionTable {
   int reference_l_Delta = 2;
   ModelLevel reference_level = ModelLevel::full;
   double reference_spread = 0;  // max relative difference of the two references (full vs modal)
+  // Not success: the reference run stopped (reference_reason says why) and the table has no rows.
+  IntegrationStatus reference_status = IntegrationStatus::success;
+  std::string reference_reason;
   std::vector<WorkPrecisionRow> rows;
 };
 
-// The scene must be one where two levels are exact (its stress-free shape ellipsoidal).
+// The scene must be one where two levels are exact (its stress-free shape ellipsoidal). A reference run that
+// fails is a status (reference_status), not an exception: the input was valid.
 WorkPrecisionTable work_precision(const Scene& scene, const WorkPrecisionOptions& options = {});
 
 }  // namespace rbcstab

@@ -25,14 +25,15 @@ void put_number(nlohmann::json& j, const std::string& key, double v, const std::
 
 std::string nonfinite_reason(const Parameters& p) {
   // Beyond sqrt(DBL_MAX) ~ 1.3e154 a product of two such inputs overflows; 1e150 leaves room for the factors.
-  constexpr double huge = 1e150;
+  // A tiny nonzero input (B = 1e-300) overflows the same way through its inverse.
+  constexpr double huge = 1e150, tiny = 1 / huge;
   Scene s;
   s.parameters = p;
   std::string culprits;
   for (const ParameterRow& r : parameter_table()) {
     if (!is_material(r.id) || r.scale != AxisScale::linear || r.table == nullptr) continue;
     const double v = get_parameter(s, r.id);
-    if (std::isfinite(v) && std::abs(v) <= huge) continue;
+    if (std::isfinite(v) && std::abs(v) <= huge && (v == 0 || std::abs(v) >= tiny)) continue;
     culprits += (culprits.empty() ? "" : ", ") + std::string(r.name) + " = " + format_value(v);
   }
   if (culprits.empty()) return "not finite: the computation overflowed or was undefined at these parameters";
@@ -40,10 +41,12 @@ std::string nonfinite_reason(const Parameters& p) {
   return "not finite: overflow from " + culprits;
 }
 
-std::string run_reason(const SimulationResult& r, const Parameters& p) {
-  if (r.status != IntegrationStatus::non_finite_state) return r.reason;
-  return r.reason + " (" + nonfinite_reason(p) + ")";
+std::string run_reason(IntegrationStatus status, const std::string& reason, const Parameters& p) {
+  if (status != IntegrationStatus::non_finite_state) return reason;
+  return reason + " (" + nonfinite_reason(p) + ")";
 }
+
+std::string run_reason(const SimulationResult& r, const Parameters& p) { return run_reason(r.status, r.reason, p); }
 
 namespace {
 
@@ -112,8 +115,9 @@ nlohmann::json to_json(const Parameters& p) {
   nlohmann::json j = nlohmann::json::object();
   for (const ParameterRow& r : parameter_table())
     if (is_material(r.id) && r.scale == AxisScale::linear) j[r.name] = number_or_null(get_parameter(s, r.id));
+  // C_note predates the <key>_reason convention and is kept for readers of it; S has only S_reason.
   if (!std::isfinite(p.C)) j["C_reason"] = j["C_note"] = "infinite: the vesicle limit";
-  if (!std::isfinite(p.S())) j["S_reason"] = j["S_note"] = S_reason(p);
+  if (!std::isfinite(p.S())) j["S_reason"] = S_reason(p);
   explain_nulls(j, nonfinite_reason(p));
   return j;
 }
@@ -182,6 +186,12 @@ nlohmann::json to_json(const SimulationResult& r) {
           {"jacobian_evaluations", r.counters.jacobian_evaluations},
           {"seconds", r.seconds},
           {"warnings", r.warnings}};
+}
+
+nlohmann::json to_json(const SimulationResult& r, const Parameters& p) {
+  nlohmann::json j = to_json(r);
+  explain_nulls(j, r.status == IntegrationStatus::success ? nonfinite_reason(p) : run_reason(r, p));
+  return j;
 }
 
 }  // namespace rbcstab

@@ -8,14 +8,13 @@
 namespace rbcstab {
 
 nlohmann::json simulation_json(const SceneFile& file, const SimulationResult& r) {
-  nlohmann::json j = to_json(r);
+  nlohmann::json j = to_json(r, file.scene.parameters);
   j["parameters"] = to_json(file.scene.parameters);
   j["reason"] = run_reason(r, file.scene.parameters);
   j["stepper"] = to_string(file.options.integrator.stepper);
   j["rtol"] = file.options.integrator.rtol;
   j["atol"] = file.options.integrator.atol;
   put_truncation(j, file);
-  explain_nulls(j, nonfinite_reason(file.scene.parameters));
   return j;
 }
 

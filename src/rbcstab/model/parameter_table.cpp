@@ -20,34 +20,34 @@ Domain up_to_Delta(const Parameters& p) {
 // One row per SceneParameter, in its order (tests/model/parameter_table_test.cpp checks it).
 const std::array<ParameterRow, 12> kTable{{
     {P::lambda, "lambda", "\\lambda", "viscosity ratio eta_in/eta_ex", "parameters", AxisScale::linear, P::lambda,
-     P::lambda, bit(P::lambda), true, true, [](const Parameters&) { return open_above(0, true); }, nullptr,
+     P::lambda, bit(P::lambda), true, true, [](const Parameters&) { return open_above(0, true); },
      [](const Scene& s) { return s.parameters.lambda; }, [](Scene& s, double v) { s.parameters.lambda = v; }},
     {P::Delta, "Delta", "\\Delta", "excess area of the current shape", "parameters", AxisScale::linear, P::Delta,
      P::Delta, bit(P::Delta), true, true,
-     [](const Parameters&) { return Domain{0, 4 * std::numbers::pi, false, false, "", "4 pi", "", ""}; }, nullptr,
+     [](const Parameters&) { return Domain{0, 4 * std::numbers::pi, false, false, "", "4 pi", "", ""}; },
      [](const Scene& s) { return s.parameters.Delta; }, [](Scene& s, double v) { s.parameters.Delta = v; }},
     {P::Delta0, "Delta0", "\\Delta_0", "excess area of the stress-free shape (0: the vesicle limit)", "parameters",
-     AxisScale::linear, P::Delta0, P::Delta0, bit(P::Delta0), true, true, up_to_Delta, nullptr,
+     AxisScale::linear, P::Delta0, P::Delta0, bit(P::Delta0), true, true, up_to_Delta,
      [](const Scene& s) { return s.parameters.Delta0; }, [](Scene& s, double v) { s.parameters.Delta0 = v; }},
     {P::B, "B", "\\mathcal{B}", "bending number eta gamma R^3 / kappa", "parameters", AxisScale::linear, P::B, P::B,
-     bit(P::B), true, false, [](const Parameters&) { return open_above(0, false); }, nullptr,
+     bit(P::B), true, false, [](const Parameters&) { return open_above(0, false); },
      [](const Scene& s) { return s.parameters.B; }, [](Scene& s, double v) { s.parameters.B = v; }},
     {P::C, "C", "\\mathcal{C}", "capillary number eta gamma R / mu", "parameters", AxisScale::linear, P::C, P::C,
      bit(P::C), true, false,
      [](const Parameters&) { return Domain{0, kInf, false, true, "", "", "", "inf allowed: the vesicle limit"}; },
-     nullptr, [](const Scene& s) { return s.parameters.C; }, [](Scene& s, double v) { s.parameters.C = v; }},
+     [](const Scene& s) { return s.parameters.C; }, [](Scene& s, double v) { s.parameters.C = v; }},
     // The composites of the reduced system (Eq. Lambda_S) each move one input, so they move alone: Lambda
     // ~ sqrt(Delta) at fixed lambda (S unchanged), S ~ C at fixed Delta0 (Lambda unchanged).
     {P::Lambda, "Lambda", "\\Lambda", "sqrt(Delta)(23 lambda + 32)/(8 sqrt(30 pi)) of the reduced system, set through Delta",
      nullptr, AxisScale::linear, P::Lambda, P::Delta, bit(P::Delta) | bit(P::lambda), true, false,
-     [](const Parameters&) { return open_above(0, false); }, nullptr,
+     [](const Parameters&) { return open_above(0, false); },
      [](const Scene& s) { return s.parameters.Lambda(); },
      [](Scene& s, double v) {
        const double ratio = v / s.parameters.Lambda();
        s.parameters.Delta *= ratio * ratio;
      }},
     {P::S, "S", "S", "C sqrt(15 pi/(2 Delta0)) of the reduced system, set through C", nullptr, AxisScale::linear, P::S,
-     P::C, bit(P::C) | bit(P::Delta0), true, false, [](const Parameters&) { return open_above(0, false); }, nullptr,
+     P::C, bit(P::C) | bit(P::Delta0), true, false, [](const Parameters&) { return open_above(0, false); },
      [](const Scene& s) { return s.parameters.S(); },
      [](Scene& s, double v) {
        const double S = s.parameters.S();
@@ -55,21 +55,21 @@ const std::array<ParameterRow, 12> kTable{{
        s.parameters.C *= v / S;
      }},
     {P::alpha, "alpha", "\\alpha", "B/C = mu R^2/kappa, set through B", nullptr, AxisScale::linear, P::alpha, P::B,
-     bit(P::B) | bit(P::C), false, true, [](const Parameters&) { return open_above(0, false); }, nullptr,
+     bit(P::B) | bit(P::C), false, true, [](const Parameters&) { return open_above(0, false); },
      [](const Scene& s) { return s.parameters.alpha(); }, [](Scene& s, double v) { s.parameters.B = v * s.parameters.C; }},
     {P::lnB, "lnB", "\\ln \\mathcal{B}", "ln B, a log axis of the bending number", nullptr, AxisScale::log, P::B, P::B,
-     bit(P::B), false, true, nullptr, nullptr, nullptr, nullptr},
+     bit(P::B), false, true, nullptr, nullptr, nullptr},
     {P::lnC, "lnC", "\\ln \\mathcal{C}", "ln C, a log axis of the capillary number", nullptr, AxisScale::log, P::C, P::C,
-     bit(P::C), false, true, nullptr, nullptr, nullptr, nullptr},
+     bit(P::C), false, true, nullptr, nullptr, nullptr},
     {P::beta, "beta", "\\beta",
-     "rotation of the axisymmetric shapes about y (0: out of plane, pi/2 = 1.5707963267948966: in plane)", "initial",
-     AxisScale::linear, P::beta, P::beta, bit(P::beta), true, true, [](const Parameters&) { return Domain{}; },
+     "rotation of the axisymmetric shapes about y (pi/2 = 1.5707963267948966)", "initial",
+     AxisScale::linear, P::beta, P::beta, bit(P::beta), true, true,
      [](const Parameters&) {
        return Domain{0, std::numbers::pi, true, true, "", "pi", "", "0: rest shape out of plane, pi/2: in plane"};
      },
      [](const Scene& s) { return s.beta; }, [](Scene& s, double v) { s.beta = v; }},
     {P::delta, "delta", "\\delta", "perturbation Delta_l(0) put in f_{l,0} for every l = 3..L", "initial",
-     AxisScale::linear, P::delta, P::delta, bit(P::delta), false, false, up_to_Delta, nullptr,
+     AxisScale::linear, P::delta, P::delta, bit(P::delta), false, false, up_to_Delta,
      [](const Scene& s) { return s.delta; }, [](Scene& s, double v) { s.delta = v; }},
 }};
 
@@ -180,14 +180,14 @@ Domain parameter_domain(SceneParameter q, const Parameters& p) {
   return r.scale == AxisScale::log ? log_of(parameter_domain(r.of, p)) : r.domain(p);
 }
 
-Domain continuation_domain(SceneParameter q, const Parameters& p) {
-  const ParameterRow& r = parameter_row(q);
-  if (r.scale == AxisScale::log) return log_of(continuation_domain(r.of, p));
-  return r.continuation_domain ? r.continuation_domain(p) : r.domain(p);
-}
+Domain continuation_domain(SceneParameter q, const Parameters& p) { return parameter_domain(q, p); }
 
 void require_in(SceneParameter q, const Domain& domain, double value) {
-  require(domain.contains(value), parameter_row(q).name, value, domain.text());
+  if (domain.contains(value)) return;
+  // An infinite value says what it is not, also where the domain's text names only its bounds ("in [0, pi]").
+  std::string range = domain.text();
+  if (std::isinf(value) && range.find("finite") == std::string::npos) range = "finite and " + range;
+  require(false, parameter_row(q).name, value, range);
 }
 
 void validate_table(const Scene& s, std::string_view table) {

@@ -63,10 +63,9 @@ struct ParameterRow {
   bool continuation;        // usable as a continuation parameter
   bool axis;                // usable as a diagram axis
   // Linear rows only (log rows take them from `of`):
-  Domain (*domain)(const Parameters& p);  // where the scene is valid
-  // Narrower than `domain` where a continuation must stop (beta in [0, pi]: pi - beta is its mirror image);
-  // nullptr: `domain`.
-  Domain (*continuation_domain)(const Parameters& p);
+  // Where the scene is valid: the range every scene key, flag, continuation bound and diagram axis enforces
+  // (beta in [0, pi]: pi - beta is the mirror image of beta).
+  Domain (*domain)(const Parameters& p);
   double (*get)(const Scene& s);
   // Sets the value without checking it; throws InvalidArgument only when the composite cannot be moved from
   // this scene (S from an infinite S).
@@ -89,8 +88,10 @@ double get_parameter(const Scene& s, SceneParameter q);
 // (continuation/parameters.hpp), which checks the value first.
 void set_parameter(Scene& s, SceneParameter q, double value);
 Domain parameter_domain(SceneParameter q, const Parameters& p);
+// The domain a continuation lands on at its closed edges: parameter_domain (one range for every use).
 Domain continuation_domain(SceneParameter q, const Parameters& p);
-// Throws InvalidArgument(name, "<name> = <value> is out of range: must be <domain text>") outside `domain`.
+// Throws InvalidArgument(name, "<name> = <value> is out of range: must be <domain text>") outside `domain`
+// ("finite and <domain text>" for an infinite value when the text does not say so).
 void require_in(SceneParameter q, const Domain& domain, double value);
 // The stored parameters of one scene-file table, each against its domain, in table order.
 void validate_table(const Scene& s, std::string_view table);

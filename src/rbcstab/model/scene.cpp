@@ -33,7 +33,9 @@ void Scene::validate() const {
   }
   require(std::isfinite(T) && T > 0 && T <= 1e7, "T", T, "in (0, 1e7]");
   require(std::isfinite(dt) && dt > 0 && dt <= T, "dt", dt, "in (0, T] with T = " + format_value(T));
-  require(T / dt <= 1e7, "dt", dt, "at least T/1e7 (at most 1e7 output samples)");
+  require(T / dt <= 1e7, "dt", dt,
+          "at least T/1e7 = " + format_value(T / 1e7) + " (T/dt = " + format_value(T / dt) +
+              " output samples: at most 1e7)");
 }
 
 double Scene::perturbation(int l) const {

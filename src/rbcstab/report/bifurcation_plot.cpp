@@ -10,6 +10,7 @@
 #include <numbers>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
@@ -555,6 +556,14 @@ PlotSpec plot_spec(const std::vector<PlotInput>& inputs, const PlotOptions& o) {
   for (PlotSeries& s : spec.series)
     if (count[s.name] > 1) s.name += ": " + stem_of(s.source);
   merge_texts(spec);
+  // matplotlib widens an axis by a margin and places ticks: beyond this magnitude that overflows to inf.
+  constexpr double kDrawable = 1e300;
+  for (const PlotSeries& ser : spec.series)
+    for (const auto& [axis, name, values] : {std::tuple{"x", axes.x, &ser.x}, std::tuple{"y", axes.y, &ser.y}})
+      for (double v : *values)
+        if (std::isfinite(v) && std::abs(v) > kDrawable)
+          throw InvalidArgument(axis, std::string(axis) + " = " + name + " reaches " + format_value(v) + " in " +
+                                          ser.source + ": values beyond 1e300 in magnitude cannot be drawn");
   return spec;
 }
 

@@ -258,7 +258,9 @@ nlohmann::json phase_overlay_json(const std::vector<TraceCurve>& boundary, const
     }
     curves.push_back(j);
   }
-  return {{"curves", curves}};
+  nlohmann::json doc{{"curves", curves}};
+  explain_nulls(doc, "undefined there: the line's formula is outside its domain (drawn as a gap)");
+  return doc;
 }
 
 void PanelOptions::validate() const {
@@ -349,6 +351,7 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
     ao.trace_options = panel.trace;
     ao.trace_in_plane = true;  // the orbit average: ~9 s CPU on App. E(a)
     doc["agreement"] = traceable ? agreement_json(sf.scene, spec, run.points, ao) : nlohmann::json(nullptr);
+    if (!traceable) doc["agreement_reason"] = trace_note;
     ro.attachments.push_back(staging.put("diagram.json", doc.dump(1) + "\n"));
     res.status = res.failed ? "failed runs" : "success";
     res.facts = {{"grid", std::to_string(spec.x.count) + " x " + std::to_string(spec.y.count) + " (" +
@@ -361,7 +364,7 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
                  {"diagram wall time [s]", fixed(diagram_seconds)},
                  {"traced boundary", trace_note},
                  {"analytic lines", std::to_string(lines.size())}};
-    if (doc["agreement"].is_object() && doc["agreement"].contains("verdict_fraction"))
+    if (doc["agreement"].is_object() && doc["agreement"].value("verdict_fraction", nlohmann::json()).is_number())
       res.facts.push_back({"asymptotic criterion agrees (verdict / mode)",
                            fixed(100 * doc["agreement"]["verdict_fraction"].get<double>()) + "% / " +
                                fixed(100 * doc["agreement"]["mode_fraction"].get<double>()) + "%"});

@@ -4,6 +4,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <fcntl.h>
@@ -177,6 +178,45 @@ std::string import_hook(const std::string& src, const fs::path& dir, const std::
   return name;
 }
 
+// A hook CSV the plotting script can draw: a header (the first line not starting with '#') holding, for each
+// entry of `columns`, one of its names, at least `min_columns` columns, and a data row. Checked before anything
+// runs, so a wrong file is bad input named by its flag rather than a failure inside the script.
+void require_hook_csv(const std::string& path, const std::string& name,
+                      const std::vector<std::vector<std::string>>& columns, std::size_t min_columns) {
+  std::istringstream in(read_file(path, name));
+  std::string line, header;
+  std::size_t rows = 0;
+  while (std::getline(in, line)) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty() || line[0] == '#') continue;
+    if (header.empty())
+      header = line;
+    else
+      ++rows;
+  }
+  std::vector<std::string> names;
+  std::istringstream h(header);
+  for (std::string c; std::getline(h, c, ',');) names.push_back(c);
+  std::string wanted;
+  bool ok = names.size() >= min_columns;
+  for (const auto& alternatives : columns) {
+    std::string any;
+    bool found = false;
+    for (const std::string& c : alternatives) {
+      any += (any.empty() ? "" : " or ") + c;
+      found = found || std::find(names.begin(), names.end(), c) != names.end();
+    }
+    wanted += (wanted.empty() ? "" : ", ") + any;
+    ok = ok && found;
+  }
+  const std::string shown = header.size() > 80 ? header.substr(0, 80) + "..." : header;
+  const std::string what = name + " = '" + path + "' ";
+  if (!ok)
+    throw InvalidArgument(name, what + "is not a CSV of at least " + std::to_string(min_columns) + " columns with " +
+                                    wanted + ": its header is '" + shown + "'");
+  if (rows == 0) throw InvalidArgument(name, what + "has a header but no data rows");
+}
+
 // The bifurcation hook's diagram, decided before anything runs (bad input names the report's flags).
 std::optional<PlotSpec> bifurcation_plot(const ReportOptions& o) {
   if (o.bifurcation.empty()) return std::nullopt;
@@ -233,6 +273,7 @@ void draw_and_publish(const ReportOptions& o, const nlohmann::json& manifest, co
                       const fs::path& target, std::vector<std::string>& files) {
   std::error_code ec;
   const std::string log = (tmp / "plot.log").string();
+  if (o.on_step) o.on_step("drawing the figures with " + o.python);
   const int rc = run_process({o.python, (fs::path(o.script_dir) / kScript).string(), "report", tmp.string()}, log);
   if (rc != 0)
     throw ReportError("the plotting script failed (exit " + std::to_string(rc) + "): " + detail::log_tail(log, 1500));
@@ -389,19 +430,26 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
   for (const std::string* hook : {&o.phase_diagram, &o.delta2_comparison, &o.bifurcation})
     if (!hook->empty() && !fs::is_regular_file(*hook, ec))
       throw InvalidArgument("file", "data file '" + *hook + "' not found");
+  // The script's readers (rbcstab_report.py: plot_phase_diagram, plot_delta2_comparison) take these columns.
+  if (!o.phase_diagram.empty()) require_hook_csv(o.phase_diagram, "phase_diagram", {{"l_Delta"}}, 3);
+  if (!o.delta2_comparison.empty())
+    require_hook_csv(o.delta2_comparison, "delta2_comparison",
+                     {{"Delta2_theory", "Delta2_tilde"}, {"Delta2_simulation", "Delta2_bar"}}, 2);
   for (const std::string& a : o.attachments)
     if (!fs::is_regular_file(a, ec)) throw InvalidArgument("file", "data file '" + a + "' not found");
   const std::optional<PlotSpec> bifurcation = bifurcation_plot(o);
   if (!o.run_scene) return build_panel_folder(sf, o, bifurcation, target, start);
 
   ReportResult res;
-  res.run = simulate(sf.scene, sf.options);
+  SimulationOptions run_options = sf.options;
+  run_options.trajectory_text = true;  // trajectory.csv: counted by simulate's memory bound
+  if (o.on_step) o.on_step("running the scene to T = " + format_value(sf.scene.T));
+  res.run = simulate(sf.scene, run_options);
   res.warnings = res.run.warnings;
   // The companion adds nothing when the scene itself runs at the reduced level.
   if (o.reduced_companion && res.run.level.level != ModelLevel::reduced) {
-    SceneFile rsf = sf;
-    rsf.scene = reduced_scene(sf.scene);
-    res.reduced = simulate(rsf.scene, rsf.options);
+    if (o.on_step) o.on_step("running the reduced companion");
+    res.reduced = simulate(reduced_scene(sf.scene), run_options);
     res.has_reduced = true;
   }
   // Animate one period of r(t) at the end when the run oscillates (swinging, tumbling: the GIF then
@@ -411,6 +459,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     const double period = detail::oscillation_period(res.run.trajectory.t, res.run.trajectory.r);
     window = period > 0 ? std::min(sf.scene.T, period) : sf.scene.T;
   }
+  if (o.on_step) o.on_step("computing " + std::to_string(o.frames) + " animation frames");
   const Frames frames = shape_frames(sf, o, window);
   {
     const InitialState init = initial_state(sf.scene);
@@ -437,6 +486,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     for (int l = 2; l <= sf.scene.L; ++l) sc[std::to_string(l)] = number_or_null(sigma_c(l, alpha));
     thresholds["sigma_c"] = sc;
     thresholds["note"] = "mode l grows iff sigma < sigma_c[l] = -(Pi + 4 alpha/Pi), Pi = l(l+1)";
+    explain_nulls(thresholds, nonfinite_reason(p));
 
     put("scene.toml", to_toml(sf));
     put("trajectory.csv", trajectory_csv(res.run));
@@ -485,10 +535,10 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     manifest["scene"] = to_json(sf.scene);
     put_truncation(manifest, sf);
     manifest["parameters"] = to_json(p);
-    manifest["summary"] = to_json(res.run);
+    manifest["summary"] = to_json(res.run, p);
     manifest["summary"].erase("trajectory");
     if (res.has_reduced) {
-      manifest["reduced_summary"] = to_json(res.reduced);
+      manifest["reduced_summary"] = to_json(res.reduced, p);
       manifest["reduced_summary"].erase("trajectory");
     }
     manifest["thresholds"] = thresholds;
@@ -497,6 +547,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     manifest["frames"] = {{"count", frames.t.size()}, {"status", to_string(frames.status)}, {"window", window}};
     manifest["warnings"] = res.warnings;
     manifest["figures"] = figs;
+    explain_nulls(manifest, res.run.status == IntegrationStatus::success ? nonfinite_reason(p) : run_reason(res.run, p));
     put("report.json", manifest.dump(2) + "\n");
     draw_and_publish(o, manifest, tmp, target, res.files);
   });

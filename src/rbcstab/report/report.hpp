@@ -2,6 +2,7 @@
 // A self-contained report folder for one scene: the run (and its reduced companion), the data
 // behind every figure (CSV/JSON), the shape at T (VTK, VTP, PLY), figures drawn by matplotlib
 // (python/rbcstab_report.py), index.html and README.md. The folder appears whole or not at all.
+#include <functional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -42,6 +43,9 @@ struct ReportOptions {
   std::vector<std::pair<std::string, std::string>> panel_facts;  // panel reports: rows of the "Panel" table
   std::string figure_title;              // panel reports: title drawn above the hook figures
   std::string scene_toml;                // panel reports: the scene file as read (its panel table kept) for scene.toml
+  // Each step as it starts ("running the scene", "drawing the figures"), for progress; the runs themselves
+  // report through the scene's SimulationOptions::on_progress.
+  std::function<void(const std::string& step)> on_step;
   void validate() const;               // throws InvalidArgument naming the field
 };
 

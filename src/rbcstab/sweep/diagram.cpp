@@ -38,6 +38,8 @@ void DiagramSpec::validate() const {
     const std::string n = a == &x ? "x" : "y";
     require(std::isfinite(a->min), "diagram." + n + "_range", a->min, "finite");
     require(std::isfinite(a->max), "diagram." + n + "_range", a->max, "finite");
+    require(std::isfinite(a->max - a->min), "diagram." + n + "_range", a->max,
+            "finite, with a finite width max - min (min = " + format_value(a->min) + ")");
     require(a->count >= 1 && a->count <= 1'000'000, "diagram.counts", a->count, "an integer in [1, 1000000]");
     if (!usable_as(a->axis, ParameterUse::axis)) {
       std::string list;
@@ -48,11 +50,10 @@ void DiagramSpec::validate() const {
   }
   const long long points = 1LL * x.count * y.count;
   if (points > kMaxDiagramPoints) {
-    const double gb = double(points) * double(sizeof(PointResult)) / 1e9;
     std::ostringstream m;
-    m << std::setprecision(3) << "diagram.counts = " << x.count << "," << y.count << " is " << points
-      << " points (about " << gb << " GB of results, before any work): must be at most " << kMaxDiagramPoints
-      << " points (4096 x 4096)";
+    m << "diagram.counts = " << x.count << "," << y.count << " is " << points << " points (about "
+      << format_bytes(double(points) * double(sizeof(PointResult))) << " of results, before any work): must be at most "
+      << kMaxDiagramPoints << " points (4096 x 4096)";
     throw InvalidArgument("diagram.counts", m.str());
   }
     require(std::isfinite(alpha) && alpha >= 0, "diagram.alpha", alpha, "finite and >= 0 (0: alpha not held fixed)");
@@ -111,6 +112,34 @@ Scene plane_scene(const Scene& base, const DiagramSpec& spec, double x, double y
       set_parameter(s, Axis::alpha, alpha);
   }
   return s;
+}
+
+void validate_plane(const Scene& base, const DiagramSpec& spec) {
+  spec.validate();
+  base.validate();
+  // Each axis alone at its ends with the other at its min, then the corners (held alpha couples the axes).
+  const std::pair<double, double> corners[] = {{spec.x.min, spec.y.min}, {spec.x.max, spec.y.min},
+                                               {spec.x.min, spec.y.max}, {spec.x.max, spec.y.max}};
+  for (const auto& [x, y] : corners) {
+    try {
+      plane_scene(base, spec, x, y).validate();
+    } catch (const InvalidArgument& e) {
+      // The axis that moves the parameter named, else the one away from its min.
+      auto moves = [](Axis a) {
+        const ParameterRow& r = parameter_row(a);
+        return to_string(r.scale == AxisScale::log ? r.of : r.moves);
+      };
+      const bool x_moved = x != spec.x.min, y_moved = y != spec.y.min;
+      const bool blame_y = e.parameter() == moves(spec.y.axis) ? e.parameter() != moves(spec.x.axis) || !x_moved
+                                                                : y_moved && !x_moved;
+      const AxisRange& a = blame_y ? spec.y : spec.x;
+      const std::string key = std::string("diagram.") + (blame_y ? "y" : "x") + "_range";
+      std::string at = to_string(a.axis) + " = " + format_value(blame_y ? y : x);
+      if (x_moved && y_moved) at += " with " + to_string(spec.y.axis) + " = " + format_value(y);
+      throw InvalidArgument(key, key + " = " + format_value(a.min) + "," + format_value(a.max) + ": at " + at + ", " +
+                                     e.what());
+    }
+  }
 }
 
 Scene point_scene(const Scene& base, const DiagramSpec& spec, std::size_t index) {
@@ -180,9 +209,8 @@ std::string config_hash(const Scene& base, const SimulationOptions& options, con
 
 DiagramRun run_diagram(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec,
                        const DiagramOptions& run_options) {
-  spec.validate();
+  validate_plane(base, spec);
   run_options.validate();
-  base.validate();
   options.validate();
   const auto t_start = std::chrono::steady_clock::now();
   auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t_start).count(); };

@@ -57,6 +57,12 @@ struct DiagramSpec {
   std::size_t size() const { return std::size_t(x.count) * std::size_t(y.count); }
 };
 
+// spec.validate(), base.validate(), and every corner of the plane a valid scene: each axis range's ends lie in
+// its axis's domain at the base scene (ln B = 800 gives B = inf), so every point between them does (the axes
+// map monotonically onto interval domains). Throws InvalidArgument("diagram.x_range" | "diagram.y_range", ...)
+// naming the axis, the end and the parameter that left its domain.
+void validate_plane(const Scene& base, const DiagramSpec& spec);
+
 // The scene of grid point `index`: base with the two axis values applied (set_parameter, unchecked: the
 // diagram validates every point's scene). alpha = B/C (an axis value, or spec.alpha > 0) is applied last and
 // keeps the other axis's B fixed when it moves B (ln B: C = B/alpha), otherwise keeps C (B = alpha C).

@@ -95,6 +95,10 @@ nlohmann::json diagram_json(const nlohmann::json& header, const DiagramSpec& spe
                      {"failed_steps", p.failed_steps},
                      {"rhs_evaluations", p.rhs_evaluations}};
     if (o.include_seconds) r["seconds"] = p.seconds;
+    explain_nulls(r, p.status == IntegrationStatus::success
+                         ? "not finite at this point's parameters"
+                         : "the run ended with " + to_string(p.status) + " at t = " + format_value(p.t_reached) + ": " +
+                               p.reason);
     arr.push_back(std::move(r));
     ++verdicts[to_string(p.verdict)];
     if (p.verdict != Verdict::failed) ++modes[std::to_string(p.l_Delta)];
@@ -136,6 +140,7 @@ nlohmann::json agreement_entry(const Agreement& a) {
                    {"boundary_corners", a.boundary_corners},
                    {"disagreements", d}};
   if (!a.note.empty()) j["note"] = a.note;
+  explain_nulls(j, "no point to compare: every point failed or was not classified");
   return j;
 }
 }  // namespace

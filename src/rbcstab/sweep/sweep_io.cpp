@@ -32,8 +32,8 @@ std::string trace_csv(const DiagramSpec& plane, const TraceResult& t) {
   csv << "curve,l," << to_string(plane.x.axis) << ',' << to_string(plane.y.axis) << ",sigma_R,sigma_c,mu\n";
   for (std::size_t c = 0; c < t.curves.size(); ++c)
     for (const TracePoint& p : t.curves[c].points)
-      csv << c << ',' << t.curves[c].l << ',' << exact(p.x) << ',' << exact(p.y) << ',' << exact(p.sigma_R) << ','
-          << exact(p.sigma_c) << ',' << exact(p.mu) << '\n';
+      csv << c << ',' << t.curves[c].l << ',' << csv_number(p.x) << ',' << csv_number(p.y) << ','
+          << csv_number(p.sigma_R) << ',' << csv_number(p.sigma_c) << ',' << csv_number(p.mu) << '\n';
   return csv.str();
 }
 
@@ -53,8 +53,11 @@ nlohmann::json trace_json(const SceneFile& file, const DiagramSpec& plane, const
   nlohmann::json corners = nlohmann::json::array();
   for (const auto& k : t.corners) corners.push_back({{"x", k.x}, {"y", k.y}, {"l_from", k.l_from}, {"l_to", k.l_to}});
   nlohmann::json overlays = nlohmann::json::array();
-  for (const Overlay& ov : analytic_overlays(file.scene, plane, 200))
-    overlays.push_back({{"name", ov.name}, {"x", ov.x}, {"y", ov.y}});
+  for (const Overlay& ov : analytic_overlays(file.scene, plane, 200)) {
+    nlohmann::json line{{"name", ov.name}, {"x", ov.x}, {"y", ov.y}};
+    explain_nulls(line, "undefined there: the line's formula is outside its domain");
+    overlays.push_back(line);
+  }
   nlohmann::json doc{{"format", "rbcstab-trace"},
                      {"version", 1},
                      {"scene", to_json(file.scene)},
@@ -78,6 +81,7 @@ nlohmann::json trace_json(const SceneFile& file, const DiagramSpec& plane, const
                      {"notes", t.notes},
                      {"seconds", t.seconds}};
   put_truncation(doc, file);
+  explain_nulls(doc, nonfinite_reason(file.scene.parameters));
   return doc;
 }
 
@@ -105,6 +109,7 @@ nlohmann::json trace_agreement_json(const nlohmann::json& dj, const std::string&
   AgreementOptions ao;
   ao.threads = threads;
   ao.trace_options = options;
+  ao.trace_options.on_progress = nullptr;  // the agreement traces run on worker threads
   ao.trace_finite_horizon = true;
   ao.trace_in_plane = true;
   return agreement_json(dsf.scene, ds, points, ao);

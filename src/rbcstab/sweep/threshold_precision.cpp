@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <functional>
 
 #include "rbcstab/analysis/predictors.hpp"
@@ -195,6 +196,10 @@ ThresholdPrecision threshold_precision(const Scene& base, const ThresholdPrecisi
       {"simulation", [&](double x, double r) { return simulation(base, x, r); }, true}};
   int kmax = 1;
   for (int k : options.bisections) kmax = std::max(kmax, k);
+  auto add = [&](const ThresholdRow& row) {
+    out.rows.push_back(row);
+    if (options.on_progress) options.on_progress(double(out.rows.size()), 0);
+  };
 
   for (const Predictor& p : predictors) {
     if (std::find(options.predictors.begin(), options.predictors.end(), p.name) == options.predictors.end()) continue;
@@ -206,7 +211,8 @@ ThresholdPrecision threshold_precision(const Scene& base, const ThresholdPrecisi
       r.bracket = ref.width.back();
     }
     out.references.push_back(r);
-    auto error_of = [&](double x) { return r.status == "ok" ? std::abs(x - r.ln_C) : 0.0; };
+    // Without a reference the error is unknown: NaN, which the outputs show as a missing value with its reason.
+    auto error_of = [&](double x) { return r.status == "ok" ? std::abs(x - r.ln_C) : std::numeric_limits<double>::quiet_NaN(); };
 
     const std::vector<double> rtols = p.integrates ? options.rtols : std::vector<double>{0.0};
     for (double rtol : rtols) {
@@ -221,20 +227,20 @@ ThresholdPrecision threshold_precision(const Scene& base, const ThresholdPrecisi
           row.rhs_evaluations = b.rhs[i];
           row.seconds = b.seconds[i];
         }
-        out.rows.push_back(row);
+        add(row);
       }
     }
     for (int n : options.grid_points) {
       ThresholdRow row = grid(p.name, p.f, lo, hi, p.integrates ? options.grid_rtol : 0.0, n);
       if (row.status == "ok") row.error = error_of(row.ln_C);
-      out.rows.push_back(row);
+      add(row);
     }
     if (p.name != "simulation")  // the simulated verdict has no smooth criterion to continue
       for (double h : options.trace_max_steps) {
         const TraceCriterion crit = p.name == "asymptotic" ? TraceCriterion::asymptotic : TraceCriterion::finite_horizon;
         ThresholdRow row = continuation(base, p.name, crit, lo, hi, options.trace_half_width, h);
         if (row.status == "ok") row.error = error_of(row.ln_C);
-        out.rows.push_back(row);
+        add(row);
       }
     if (p.name == "asymptotic") {
       // The paper's closed form (S >> 1): a model approximation of this predictor, not a numerical method.
@@ -249,7 +255,7 @@ ThresholdPrecision threshold_precision(const Scene& base, const ThresholdPrecisi
       } else {
         row.status = "closed form outside its domain: " + C.reason;
       }
-      out.rows.push_back(row);
+      add(row);
     }
   }
   return out;

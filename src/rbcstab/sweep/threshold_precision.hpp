@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "rbcstab/core/progress.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
@@ -29,6 +30,7 @@ struct ThresholdPrecisionOptions {
                                                                 // (0, 0.5]; empty: no continuation rows
   double trace_half_width = 0.5;   // in (0, 10]: the traced strip is ln B +- this
   std::vector<std::string> predictors{"asymptotic", "finite_horizon", "simulation"};  // which to measure
+  ProgressCallback on_progress;    // rows done (total not known in advance: 0)
   void validate() const;           // throws InvalidArgument naming the field
 };
 
@@ -38,7 +40,7 @@ struct ThresholdRow {
   double rtol = 0;         // integrator tolerance (0: no integration)
   int budget = 0;          // halvings (bisection), points per axis (grid), 1 / max_step (continuation)
   double ln_C = 0;         // located boundary
-  double error = 0;        // |ln_C - reference| of this predictor
+  double error = 0;        // |ln_C - reference| of this predictor; NaN when the reference failed
   std::size_t evaluations = 0;      // verdict evaluations
   std::size_t rhs_evaluations = 0;  // summed over the runs (0 for the asymptotic predictor and continuation)
   double seconds = 0;

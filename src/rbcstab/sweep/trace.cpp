@@ -81,11 +81,16 @@ ModeCriteria plane_criteria(const Scene& base, const DiagramSpec& plane, const T
 
 TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane_spec, const TraceOptions& options) {
   options.validate();
-  plane_spec.validate();
-  base.validate();
+  validate_plane(base, plane_spec);
   require_L(base.L, 3, kMaxL, "a boundary needs a mode l >= 3");
   const auto t0 = std::chrono::steady_clock::now();
-  const ModeCriteria criteria = plane_criteria(base, plane_spec, options);
+  ModeCriteria criteria = plane_criteria(base, plane_spec, options);
+  std::size_t evaluations = 0;  // the zero set is traced on this thread
+  if (options.on_progress)
+    criteria.at = [at = criteria.at, &evaluations, &options](double x, double y) {
+      options.on_progress(double(++evaluations), 0);
+      return at(x, y);
+    };
   const PlaneBox box{plane_spec.x.min, plane_spec.x.max, plane_spec.y.min, plane_spec.y.max};
   const ZeroSetResult z = trace_zero_set(criteria, box, options.zero_set());
   TraceResult res;

@@ -15,6 +15,7 @@
 
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/core/enum_table.hpp"
+#include "rbcstab/core/progress.hpp"
 #include "rbcstab/model/scene.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/zero_set.hpp"
@@ -47,6 +48,7 @@ struct TraceOptions {
   // selection leaves ~1e-10 jitter in G_l(T) = 500 Upsilon_l; measured); costs ~1.7x per evaluation.
   PredictorOptions predictor = tracing_predictor();
   OrbitAverageOptions orbit;  // in-plane asymptotic criterion: periodic-orbit average (time average as fallback)
+  ProgressCallback on_progress;  // criterion evaluations so far (total unknown: 0)
   void validate() const;
   static PredictorOptions tracing_predictor();
   ZeroSetOptions zero_set() const;

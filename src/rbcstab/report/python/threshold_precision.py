@@ -14,7 +14,8 @@ from png_output import save_png  # noqa: E402
 def main():
     path, out = sys.argv[1], sys.argv[2]
     title = sys.argv[3] if len(sys.argv) > 3 else "threshold precision"
-    rows = [r for r in csv.DictReader(open(path)) if r["status"] == "ok"]
+    # Rows without an error (an empty field: the predictor's reference failed) have nothing to draw.
+    rows = [r for r in csv.DictReader(open(path)) if r["status"] == "ok" and r["error"] != ""]
     series = {}
     for r in rows:
         rtol = float(r["rtol"])
