@@ -1,0 +1,32 @@
+// Branch files (continuation/branch_file.hpp): parse_branch_file on arbitrary text. For an accepted file
+//   - every value the run keeps is the one the file gave: branch_file_json of the run holds, at each place, the
+//     file's value (no number truncated to an int, no name defaulted, no label dropped);
+//   - writing is a fixed point: that JSON parses back (parse_branch_file accepts what save_branch writes) to a run
+//     with the very same JSON.
+#include "fuzz_check.hpp"
+#include "json_compare.hpp"
+#include "rbcstab/continuation/branch_file.hpp"
+#include "rbcstab/io/files.hpp"
+
+using namespace rbcstab;
+using namespace rbcstab::fuzz;
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  if (size > (std::size_t(1) << 20)) return 0;
+  const std::string text = text_of(data, size);
+  ContinuationRun run;
+  if (!accepted([&] { run = parse_branch_file(text, "fuzz.json"); })) return 0;
+  const nlohmann::json written = branch_file_json(run);
+  const std::string differs = first_difference(written, nlohmann::json::parse(text));
+  expect(differs.empty(), "a branch file value is read as another: " + differs);
+  const std::string dumped = written.dump(1);
+  ContinuationRun back;
+  expect(accepted([&] { back = parse_branch_file(dumped, "round-trip.json"); }),
+         "parse_branch_file refuses what branch_file_json wrote for a file it accepted");
+  const nlohmann::json again = branch_file_json(back);
+  if (again != written) {
+    const nlohmann::json diff = nlohmann::json::diff(written, again);
+    fail("a branch file does not round-trip: " + diff.dump().substr(0, 2000));
+  }
+  return 0;
+}
