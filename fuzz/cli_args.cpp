@@ -34,6 +34,7 @@ void check_numbers(const CLI::Option& o) {
       expect(cli::parse_integer(r, ours), o.get_name() + " accepted '" + r + "', which is not an integer in full");
       expect(CLI::detail::lexical_cast(r, theirs) && ours == theirs,
              o.get_name() + " stores another value than '" + r + "' means");
+      expect(type == "INT" || ours >= 0, o.get_name() + " accepted the negative '" + r + "' for an unsigned value");
     }
   }
 }
