@@ -341,8 +341,13 @@ std::string to_toml(const SceneFile& file) {
       }
     }
   }
+  // Strings in double quotes with escapes only: toml++ writes a name that starts with a newline as a multi-line
+  // string, whose first newline TOML drops on reading, and without multi-line strings a name with a newline as a
+  // literal string, which cannot hold one; either way the name would not read back.
   std::ostringstream ss;
-  ss << root << "\n";
+  ss << toml::toml_formatter{root, toml::toml_formatter::default_flags & ~toml::format_flags::allow_multi_line_strings &
+                                       ~toml::format_flags::allow_literal_strings}
+     << "\n";
   return ss.str();
 }
 
