@@ -48,14 +48,16 @@ std::vector<std::string> entries(const std::string& dir) {
   return out;
 }
 
+// Never destroyed, so that the exit handler removing the scratch folder can still read it (it runs after the
+// destructor of a static Config would).
 const Config& config() {
-  static const Config c = [] {
-    Config k;
-    k.file = load_scene(RBCSTAB_FUZZ_JOURNAL_SCENE);
-    k.spec = diagram_spec(k.file);
-    k.hash = config_hash(k.file.scene, k.file.options, k.spec);
-    k.dir = scratch_folder();
-    k.journal = k.dir + "/fuzz.journal";
+  static const Config& c = *[] {
+    Config* k = new Config;
+    k->file = load_scene(RBCSTAB_FUZZ_JOURNAL_SCENE);
+    k->spec = diagram_spec(k->file);
+    k->hash = config_hash(k->file.scene, k->file.options, k->spec);
+    k->dir = scratch_folder();
+    k->journal = k->dir + "/fuzz.journal";
     std::atexit([] {
       const Config& self = config();
       for (const std::string& e : entries(self.dir)) std::remove((self.dir + "/" + e).c_str());

@@ -33,7 +33,7 @@ SceneKey number_key(const char* table, const char* key, const char* flag, const 
 
 std::vector<SceneKey> make_scene_keys() {
   std::vector<SceneKey> k;
-  k.push_back({"", "name", ValueKind::text, "", "label carried into outputs", {},
+  k.push_back({"", "name", ValueKind::text, "", "label carried into outputs, one line of printable text", {},
                [](const SceneFile& f) { return SceneValue{f.scene.name}; },
                [](SceneFile& f, const SceneValue& v) { f.scene.name = text_of(v); }});
   for (const ParameterRow& r : parameter_table()) {
@@ -341,13 +341,8 @@ std::string to_toml(const SceneFile& file) {
       }
     }
   }
-  // Strings in double quotes with escapes only: toml++ writes a name that starts with a newline as a multi-line
-  // string, whose first newline TOML drops on reading, and without multi-line strings a name with a newline as a
-  // literal string, which cannot hold one; either way the name would not read back.
   std::ostringstream ss;
-  ss << toml::toml_formatter{root, toml::toml_formatter::default_flags & ~toml::format_flags::allow_multi_line_strings &
-                                       ~toml::format_flags::allow_literal_strings}
-     << "\n";
+  ss << root << "\n";
   return ss.str();
 }
 
