@@ -4,6 +4,7 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <string>
+#include <vector>
 
 namespace rbcstab::cli {
 
@@ -83,6 +84,45 @@ inline CLI::Validator output_name() {
         return {};
       },
       "", "PATH");
+}
+
+// The items of a comma list as given ("-1,6"; several arguments of one flag read as one list, "1" "2" as "1,2"),
+// empty items kept as "": CLI11's own splitting (->delimiter) drops them, which reads "1,,2" as "1,2".
+inline std::vector<std::string> list_items(const std::vector<std::string>& args) {
+  std::vector<std::string> items;
+  for (const std::string& a : args)
+    for (std::size_t start = 0;;) {
+      const std::size_t comma = a.find(',', start);
+      items.push_back(a.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+      if (comma == std::string::npos) break;
+      start = comma + 1;
+    }
+  return items;
+}
+// Each item of a comma-list argument checked by `checks` in turn (number_text, integer_in, ...; the first
+// message is reported); an empty item is refused.
+inline CLI::Validator each_item(const std::vector<CLI::Validator>& checks, const std::string& what) {
+  return CLI::Validator(
+      [checks, what](std::string& text) -> std::string {
+        for (std::string piece : list_items({text})) {
+          if (piece.empty()) return "'" + text + "' has an empty item: must be " + what;
+          for (const CLI::Validator& check : checks)
+            if (std::string m = check(piece); !m.empty()) return m;
+        }
+        return {};
+      },
+      "", "LIST");
+}
+// The values of comma-list arguments that each_item(number_text(...)) or each_item(integer_in(...)) accepted.
+inline std::vector<double> numbers_of(const std::vector<std::string>& args) {
+  std::vector<double> out;
+  for (const std::string& item : list_items(args)) out.push_back(std::stod(item));
+  return out;
+}
+inline std::vector<long long> integers_of(const std::vector<std::string>& args) {
+  std::vector<long long> out;
+  for (const std::string& item : list_items(args)) out.push_back(std::stoll(item));
+  return out;
 }
 
 inline CLI::Validator positive() { return number_above(0, true); }

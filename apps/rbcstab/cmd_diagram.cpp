@@ -32,9 +32,7 @@ extern "C" void on_signal(int) { g_stop.store(true); }
 
 struct DiagramCliOptions {
   SceneOptions scene;
-  std::vector<std::string> axes;
-  std::vector<double> x_range, y_range;
-  std::vector<int> counts;
+  std::vector<std::string> axes, x_range, y_range, counts;  // comma lists (checks.hpp list_items)
   std::string classifier, out = "diagram", journal, shard = "0/1", schedule = "dynamic";
   int threads = 0;
   bool no_seconds = false, quiet = false, no_journal = false, json = false;
@@ -46,7 +44,7 @@ struct DiagramCliOptions {
 
 int run(const DiagramCliOptions& o) {
   const SceneFile sf = o.scene.resolve(TruncationUse::grid);
-  PlaneChoice plane{o.axes, o.x_range, o.y_range, {o.counts.begin(), o.counts.end()}, o.classifier, {}};
+  PlaneChoice plane{list_items(o.axes), numbers_of(o.x_range), numbers_of(o.y_range), integers_of(o.counts), o.classifier, {}};
   if (o.alpha_fixed >= 0) plane.alpha_fixed = o.alpha_fixed;
   const DiagramSpec spec = plane_spec(sf, plane);
 
@@ -111,14 +109,15 @@ int run(const DiagramCliOptions& o) {
 static Runner add_diagram(CLI::App& app) {
   auto o = std::make_shared<DiagramCliOptions>();
   o->scene.add_to(app);
-  app.add_option("--axes", o->axes, axes_help("two axes"))
-      ->delimiter(',');
-  app.add_option("--x-range", o->x_range, "min,max of the x axis (inclusive, finite; default: the scene's [diagram] or -1,6)")->delimiter(',')->allow_extra_args(false);
-  app.add_option("--y-range", o->y_range, "min,max of the y axis (inclusive, finite; default: the scene's [diagram] or -5.5,2)")->delimiter(',')->allow_extra_args(false);
+  app.add_option("--axes", o->axes, axes_help("two axes"))->check(each_item({}, "two axis names x,y"));
+  app.add_option("--x-range", o->x_range, "min,max of the x axis (inclusive, finite; default: the scene's [diagram] or -1,6)")
+      ->check(each_item({number_text("min,max of the x axis, finite")}, "two numbers min,max"))
+      ->allow_extra_args(false);
+  app.add_option("--y-range", o->y_range, "min,max of the y axis (inclusive, finite; default: the scene's [diagram] or -5.5,2)")
+      ->check(each_item({number_text("min,max of the y axis, finite")}, "two numbers min,max"))
+      ->allow_extra_args(false);
   app.add_option("--counts", o->counts, "grid values nx,ny, integers in [1, 1000000] (default: the scene's [diagram] or 64,64)")
-      ->delimiter(',')
-      ->check(integer_text("integers in [1, 1000000]"))
-      ->check(CLI::Range(1, 1000000));
+      ->check(each_item({integer_text("integers in [1, 1000000]"), CLI::Range(1, 1000000)}, "two integers nx,ny"));
   app.add_option("--classifier", o->classifier,
                  "l_Delta rule: auto (tail mean if oscillating), final (Fig. 4), tail (App. E) (default: the scene's [diagram] or auto)")
       ->check(CLI::IsMember(enum_names<Classifier>()));

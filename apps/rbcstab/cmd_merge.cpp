@@ -33,7 +33,10 @@ int run(const MergeOptions& o) {
   try {
     const std::string csv = diagram_csv(m.spec, m.points, oo);
     nlohmann::json doc = diagram_json(m.header, m.spec, m.points, {}, oo);
-    if (m.missing.empty()) doc["agreement"] = agreement_json(parse_scene(m.header.at("scene_toml").get<std::string>()).scene, m.spec, m.points);
+    if (m.missing.empty()) {
+      const AgreementOptions defaults;  // named: GCC 12 warns (maybe-uninitialized) on the temporary default argument
+      doc["agreement"] = agreement_json(parse_scene(m.header.at("scene_toml").get<std::string>()).scene, m.spec, m.points, defaults);
+    }
     write_files_atomic({{o.out + ".csv", csv, "--out"}, {o.out + ".json", doc.dump(1) + "\n", "--out"}});
   } catch (const std::runtime_error& e) {
     std::cerr << "rbcstab: error: " << e.what() << "\n";

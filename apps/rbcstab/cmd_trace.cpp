@@ -22,8 +22,7 @@ namespace rbcstab::cli {
 namespace {
 struct TraceCliOptions {
   SceneOptions scene;
-  std::vector<std::string> axes;
-  std::vector<double> x_range, y_range;
+  std::vector<std::string> axes, x_range, y_range;  // comma lists (checks.hpp list_items)
   double alpha_fixed = -1;
   TraceOptions trace;
   std::string out = "trace", diagram, criterion = "asymptotic";
@@ -34,7 +33,7 @@ struct TraceCliOptions {
 
 int run(const TraceCliOptions& o) {
   const SceneFile sf = o.scene.resolve(TruncationUse::grid);
-  PlaneChoice plane{o.axes, o.x_range, o.y_range, {}, {}, {}};
+  PlaneChoice plane{list_items(o.axes), numbers_of(o.x_range), numbers_of(o.y_range), {}, {}, {}};
   if (o.alpha_fixed >= 0) plane.alpha_fixed = o.alpha_fixed;
   const DiagramSpec spec = plane_spec(sf, plane);
   TraceOptions to = o.trace;
@@ -75,9 +74,13 @@ int run(const TraceCliOptions& o) {
 static Runner add_trace(CLI::App& app) {
   auto o = std::make_shared<TraceCliOptions>();
   o->scene.add_to(app);
-  app.add_option("--axes", o->axes, axes_help("plane axes"))->delimiter(',');
-  app.add_option("--x-range", o->x_range, "min,max of x, finite (default: the scene's [diagram] or -1,6)")->delimiter(',')->expected(2);
-  app.add_option("--y-range", o->y_range, "min,max of y, finite (default: the scene's [diagram] or -5.5,2)")->delimiter(',')->expected(2);
+  app.add_option("--axes", o->axes, axes_help("plane axes"))->check(each_item({}, "two axis names x,y"));
+  app.add_option("--x-range", o->x_range, "min,max of x, finite (default: the scene's [diagram] or -1,6)")
+      ->check(each_item({number_text("min,max of x, finite")}, "two numbers min,max"))
+      ->expected(1, 2);
+  app.add_option("--y-range", o->y_range, "min,max of y, finite (default: the scene's [diagram] or -5.5,2)")
+      ->check(each_item({number_text("min,max of y, finite")}, "two numbers min,max"))
+      ->expected(1, 2);
   app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C fixed over the plane, >= 0 (0: off; default: the scene's [diagram] or off)")
       ->check(non_negative());
   app.add_option("--criterion", o->criterion, "asymptotic | finite-horizon")->capture_default_str();

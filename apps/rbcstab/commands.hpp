@@ -21,6 +21,9 @@ struct Command {
 };
 
 std::vector<Command>& command_registry();
+// Adds every registered subcommand to app, in --help order; the runner of each (the program and the
+// argument fuzzer build the same command line).
+std::map<CLI::App*, Runner> add_commands(CLI::App& app);
 
 struct RegisterCommand {
   RegisterCommand(const char* name, const char* help, CommandFactory make, int order,

@@ -1,6 +1,5 @@
 // rbcstab: the command-line tool. Only this program prints and chooses exit codes (docs/cli.md).
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <iostream>
 #include <map>
 
@@ -8,13 +7,6 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
-
-namespace rbcstab::cli {
-std::vector<Command>& command_registry() {
-  static std::vector<Command> registry;
-  return registry;
-}
-}  // namespace rbcstab::cli
 
 namespace {
 // "--flag: " when the library named a parameter that the user gave as a flag of the running subcommand
@@ -45,14 +37,8 @@ int main(int argc, char** argv) {
                "default scene."};
   app.set_version_flag("--version", "rbcstab " RBCSTAB_VERSION);
   app.require_subcommand(0, 1);
-  std::map<CLI::App*, Runner> runners;
-  auto commands = command_registry();
-  std::sort(commands.begin(), commands.end(), [](const Command& a, const Command& b) { return a.order < b.order; });
-  for (const Command& c : commands) {
-    CLI::App* sub = app.add_subcommand(c.name, c.help);
-    runners[sub] = c.make(*sub);
-  }
-  require_whole_numbers(app);
+  std::map<CLI::App*, Runner> runners = add_commands(app);
+  const std::vector<Command>& commands = command_registry();
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -221,6 +221,13 @@ elseif(CASE STREQUAL "truncation_report")
 elseif(CASE STREQUAL "bad_input")
   expect_refused(ARGS summary --L 1 NAMES "L = 1" "[2, 100]")
   expect_refused(ARGS diagram --counts 0,3 NAMES "--counts" "1 to 1000000")
+  # Found by fuzzing: CLI11 dropped the empty item of a comma list ("1,,2" read as "1,2") and read integers
+  # with a leading 0 as octal (--L 010 was L = 8).
+  expect_refused(ARGS diagram --x-range 1,,2 NAMES "--x-range" "empty item" "two numbers min,max")
+  expect_refused(ARGS diagram --counts 16,16, NAMES "--counts" "empty item")
+  expect_refused(ARGS trace --axes lnB,,lnC NAMES "--axes" "empty item")
+  expect_json(ARGS summary --L 010 --T 1 --dt 1 --json KEYS L)
+  expect_key(L 10)
   expect_refused(ARGS diagram --classifier median NAMES "--classifier" "auto,final,tail")
   expect_refused(ARGS diagram --alpha-fixed -5 NAMES "--alpha-fixed" ">= 0")
   expect_refused(ARGS diagram --sync-interval -1 --counts 1,1 --T 1 --dt 1 --no-journal NAMES "--sync-interval" ">= 0")

@@ -113,6 +113,9 @@ TEST(BranchFile, RefusesWhatIsNotABranchFileNamingTheKey) {
   EXPECT_NE(m.find("branch[0].type = '' must be 'EP'"), std::string::npos) << m;
   EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["spec"]["scene"] = "[parameters]\nC = -1\n"; })), &m), "restart");
   EXPECT_NE(m.find("spec.scene: "), std::string::npos) << m;
+  // An integer measure beyond int was truncated (a winding 2^32 + 1 read as 1; found by fuzzing).
+  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["branch"][0]["sigma"] = 4294967297LL; })), &m), "restart");
+  EXPECT_NE(m.find("branch[0].sigma = 4294967297 is out of range"), std::string::npos) << m;
   EXPECT_EQ(test::invalid_parameter([] { (void)load_branch("/nonexistent/b.json"); }, &m), "restart");
   EXPECT_NE(m.find("restart = '/nonexistent/b.json'"), std::string::npos) << m;
 }

@@ -230,6 +230,18 @@ TEST(BranchText, TableHasOneRowPerLabelledPoint) {
       << message;
 }
 
+// An empty name in the list was dropped, so "r,,Psi" read as "r,Psi" (found by fuzzing); the empty text is the
+// default table.
+TEST(BranchText, MeasureListRefusesEmptyNames) {
+  EXPECT_EQ(TableOptions::from_list("r,Psi").measures, (std::vector<std::string>{"r", "Psi"}));
+  EXPECT_TRUE(TableOptions::from_list("").measures.empty());
+  for (const std::string list : {"r,,Psi", "r,", ",r", ","}) {
+    std::string message;
+    EXPECT_EQ(test::invalid_parameter([&] { (void)TableOptions::from_list(list); }, &message), "measures") << list;
+    EXPECT_NE(message.find("measures = '" + list + "' has an empty name"), std::string::npos) << message;
+  }
+}
+
 TEST(CurveOutput, JsonCsvAndTextOfAModalBPCurve) {
   const SceneCurve c = continue_curve(test::modal_spec(4, 0.02), test::curve_of(CurveKind::BP, P::B, 0.8, 1.2));
   ASSERT_TRUE(c.started) << c.message;

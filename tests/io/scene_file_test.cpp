@@ -172,6 +172,27 @@ TEST(SceneFile, WrongTypesAreRefusedByName) {
   expect_refused("[initial]\ndelta_l = { 3 = 'a' }", "initial.delta_l.3", {"number"});
 }
 
+// A name is one line of printable text, and any such name reads back (found by fuzzing: a name starting with a
+// newline lost it through to_toml).
+TEST(SceneFile, NamesArePrintableAndRoundTripThroughToToml) {
+  for (const std::string name : {"it's \\ '''", "a \" b", "\u00e9 \u03bb", "", "''"}) {
+    SceneFile f;
+    f.scene.name = name;
+    const std::string text = to_toml(f);
+    EXPECT_EQ(parse_scene(text).scene.name, name) << text;
+  }
+  expect_refused("name = \"\\name\"", "name", {"U+000A at position 0", "one line of printable text"});
+  expect_refused("name = \"a\\tb\"", "name", {"U+0009 at position 1"});
+  expect_refused("name = \"a\\u007f\"", "name", {"U+007F"});
+}
+
+// Keys that name one mode ("3", "03", " 3", "+3") were merged, the last silently winning (found by fuzzing).
+TEST(SceneFile, ModeGivenTwiceIsRefused) {
+  expect_refused("[initial]\ndelta_l = { 3 = 1e-3, \"03\" = 2e-3 }", "initial.delta_l", {"'03' and '3'", "mode l = 3"});
+  expect_refused("[initial]\nrest_delta_l = { \"+4\" = 1e-4, 4 = 2e-4 }", "initial.rest_delta_l", {"give each mode once"});
+  EXPECT_EQ(parse_scene("[initial]\ndelta_l = { 3 = 1e-3, 4 = 2e-3 }").scene.delta_l.size(), 2u);
+}
+
 TEST(SceneFile, OutOfRangeValuesNameKeyValueAndRange) {
   expect_refused("[parameters]\nB = -1", "parameters.B", {"-1", "> 0"});
   expect_refused("[parameters]\nC = nan", "parameters.C", {"nan", "> 0"});

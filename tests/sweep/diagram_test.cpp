@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <future>
 #include <sstream>
 #include <thread>
@@ -413,6 +414,39 @@ TEST(Merge, RefusesOutOfDomainValuesNamingFileLineAndValue) {
     }
   }
   EXPECT_EQ(merge_diagrams(std::vector<MergeInput>{{"shard.json", good}}).points.size(), spec.size());
+}
+
+// Found by fuzzing: fractions and wide integers were truncated (index 0.5 read as 0), a non-string config_hash
+// escaped as a JSON exception, an edited header (its scene, or no scene_toml at all) was merged as the
+// configuration that computed the points, and a point held twice with another growth was merged silently.
+TEST(Merge, RefusesTruncatedIntegersEditedHeadersAndDisagreeingDuplicates) {
+  const Scene base = small_scene();
+  const DiagramSpec spec = small_spec();
+  const nlohmann::json good = diagram_json(diagram_header(base, {}, spec), spec, run_diagram(base, {}, spec, {}).points, {}, {false});
+  auto refused = [&](const std::function<void(nlohmann::json&)>& edit, const std::string& fragment, bool twice = false) {
+    nlohmann::json doc = good;
+    edit(doc);
+    std::vector<MergeInput> inputs{{"shard.json", doc.dump(1)}};
+    if (twice) inputs.insert(inputs.begin(), {"first.json", good.dump(1)});
+    try {
+      merge_diagrams(inputs);
+      ADD_FAILURE() << fragment << ": merged";
+    } catch (const InvalidArgument& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  refused([](nlohmann::json& d) { d["points"][1]["index"] = 0.5; }, "points[1].index: 0.5 is not an integer in [0, ");
+  refused([](nlohmann::json& d) { d["points"][1]["l_Delta"] = 4294967299LL; }, "points[1].l_Delta: 4294967299 is not an integer in [");
+  refused([](nlohmann::json& d) { d["points"][1]["steps"] = -1; }, "points[1].steps: -1 is not an integer in [0, ");
+  refused([](nlohmann::json& d) { d["diagram"]["x"]["count"] = 4294967298LL; }, "4294967298 is not an integer");
+  refused([](nlohmann::json& d) { d["config_hash"] = 12; }, "has no config_hash string (12)");
+  refused([](nlohmann::json& d) { d["seconds_included"] = "yes"; }, "seconds_included = \"yes\": must be true or false");
+  refused([](nlohmann::json& d) { d["scene"]["T"] = 99; }, "input 1 has scene = ");
+  refused([](nlohmann::json& d) { d["scene_toml"] = "[run]\nT = 99.0\n"; }, "hash to");
+  refused([](nlohmann::json& d) { d.erase("scene_toml"); }, "no scene_toml");
+  refused([](nlohmann::json& d) { d["points"][2]["growth"] = 0.125; }, "appears twice with different results", true);
+  EXPECT_EQ(merge_diagrams(std::vector<MergeInput>{{"a.json", good.dump(1)}, {"b.json", good.dump(1)}}).points.size(),
+            spec.size());
 }
 
 TEST(PointIo, FailedPointWritesNoNanText) {

@@ -1,6 +1,8 @@
 #include "rbcstab/continuation/branch_file.hpp"
 
 #include <algorithm>
+#include <climits>
+#include <cstdint>
 #include <cmath>
 #include <limits>
 #include <set>
@@ -216,7 +218,14 @@ E enum_named(const Reader& rd, const std::string& name, const std::string& path)
 
 // A measure value of the JSON: an integer, a number (null: NaN) or a label.
 MeasureValue measure_value(const Reader& rd, const json& v, const std::string& path) {
-  if (v.is_number_integer()) return v.get<int>();
+  if (v.is_number_integer()) {  // an int measure (a winding number): a wider integer is not one
+    const bool fits = v.is_number_unsigned() ? v.get<std::uint64_t>() <= std::uint64_t(INT_MAX)
+                                             : v.get<std::int64_t>() >= INT_MIN && v.get<std::int64_t>() <= INT_MAX;
+    if (!fits)
+      rd.fail(path + " = " + v.dump() + " is out of range: must be an integer in [" + std::to_string(INT_MIN) + ", " +
+              std::to_string(INT_MAX) + "]");
+    return v.get<int>();
+  }
   if (v.is_number_float() || v.is_null()) return rd.value(v, path, true);
   if (v.is_string()) return v.get<std::string>();
   rd.fail(path + " must be a number or a string, got " + v.dump());

@@ -364,10 +364,16 @@ std::string to_csv(const ContinuationRun& run) {
 
 TableOptions TableOptions::from_list(const std::string& comma_separated) {
   TableOptions t;
-  std::istringstream ss(comma_separated);
-  for (std::string name; std::getline(ss, name, ',');)
-    if (!name.empty()) t.measures.push_back(name);
-  return t;
+  if (comma_separated.empty()) return t;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = comma_separated.find(',', start);
+    t.measures.push_back(comma_separated.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (t.measures.back().empty())
+      throw InvalidArgument("measures", "measures = '" + comma_separated + "' has an empty name: give names separated "
+                                        "by single commas, e.g. r,Psi,sigma");
+    if (comma == std::string::npos) return t;
+    start = comma + 1;
+  }
 }
 
 void TableOptions::validate(const std::vector<std::string>& available) const {

@@ -60,7 +60,8 @@ struct TableOptions {
   std::vector<std::string> measures;
   // Throws InvalidArgument("measures", ...) for a name not in `available`.
   void validate(const std::vector<std::string>& available) const;
-  // The measures of a comma-separated list ("r,Psi,sigma"; empty names skipped).
+  // The measures of a comma-separated list ("r,Psi,sigma"; the empty text: none, the default table). An empty
+  // name ("r,,Psi", "r,") throws InvalidArgument("measures", ...).
   static TableOptions from_list(const std::string& comma_separated);
 };
 

@@ -33,7 +33,7 @@ SceneKey number_key(const char* table, const char* key, const char* flag, const 
 
 std::vector<SceneKey> make_scene_keys() {
   std::vector<SceneKey> k;
-  k.push_back({"", "name", ValueKind::text, "", "label carried into outputs", {},
+  k.push_back({"", "name", ValueKind::text, "", "label carried into outputs, one line of printable text", {},
                [](const SceneFile& f) { return SceneValue{f.scene.name}; },
                [](SceneFile& f, const SceneValue& v) { f.scene.name = text_of(v); }});
   for (const ParameterRow& r : parameter_table()) {

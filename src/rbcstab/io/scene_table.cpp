@@ -118,6 +118,7 @@ std::map<int, double> SceneTable::modes(const std::string& key) const {
   if (v.shape != Value::Shape::table)
     throw InvalidArgument(p, p + " = " + shown(v) + " must be a table of mode = value, e.g. { 3 = 1e-3 }");
   std::map<int, double> out;
+  std::map<int, std::string> key_of;  // the key that gave each mode: "3" and "03" name one mode
   for (std::size_t k = 0; k < v.items.size(); ++k) {
     const std::string& ks = v.keys[k];
     int l = 0;
@@ -131,6 +132,9 @@ std::map<int, double> SceneTable::modes(const std::string& key) const {
     double scratch = 0;
     const double* d = as_number(v.items[k], scratch);
     if (!d) throw InvalidArgument(p + "." + ks, p + "." + ks + " = " + shown(v.items[k]) + " must be a number");
+    if (const auto [it, fresh] = key_of.emplace(l, ks); !fresh)
+      throw InvalidArgument(p, p + " has keys '" + it->second + "' and '" + ks + "' for mode l = " + std::to_string(l) +
+                                   ": give each mode once");
     out[l] = *d;
   }
   return out;

@@ -1,6 +1,7 @@
 #include "rbcstab/model/scene.hpp"
 
 #include <cmath>
+#include <cstdio>
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
@@ -18,6 +19,16 @@ void require_L(long long L, int min_L, int max_L, std::string_view why, std::str
 }
 
 void Scene::validate() const {
+  // The name is a label in outputs (CSV comment lines, JSON, figure titles, scene files): one line of text.
+  for (std::size_t k = 0; k < name.size(); ++k) {
+    const unsigned char c = static_cast<unsigned char>(name[k]);
+    if (c < 0x20 || c == 0x7f) {
+      char code[8];
+      std::snprintf(code, sizeof code, "U+%04X", c);
+      throw InvalidArgument("name", "name holds the control character " + std::string(code) + " at position " +
+                                        std::to_string(k) + ": must be one line of printable text");
+    }
+  }
   parameters.validate();
   require_L(L);
   validate_table(*this, "initial");

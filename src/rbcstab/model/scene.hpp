@@ -23,7 +23,7 @@ void require_L(long long L, int min_L = kMinL, int max_L = kMaxL, std::string_vi
                std::string_view name = "L");
 
 struct Scene {
-  std::string name = "fig3_op";    // label carried into outputs
+  std::string name = "fig3_op";    // label carried into outputs: one line of printable text
   Parameters parameters;           // defaults: the paper's Fig. 3 case
   double beta = 0.001;             // rotation of the axisymmetric shapes about y (0: out of plane, pi/2: in plane)
   double delta = 1e-3;             // perturbation Delta_l(0) put in f_{l,0} for every l = 3..L

@@ -1,10 +1,11 @@
 #include "rbcstab/sweep/diagram_output.hpp"
 
 #include <algorithm>
-#include <climits>
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <sstream>
 
@@ -20,12 +21,29 @@ namespace {
 nlohmann::json axis_json(const AxisRange& a) {
   return {{"axis", to_string(a.axis)}, {"min", a.min}, {"max", a.max}, {"count", a.count}};
 }
+// An integer of type Int as the JSON gives it: a fraction or a wider integer is refused, never truncated.
+template <class Int>
+Int integer_of(const nlohmann::json& v) {
+  using Limits = std::numeric_limits<Int>;
+  bool fits = false;
+  if (v.is_number_unsigned()) {
+    fits = v.get<std::uint64_t>() <= std::uint64_t(Limits::max());
+  } else if (v.is_number_integer()) {
+    const std::int64_t x = v.get<std::int64_t>();
+    fits = Limits::is_signed ? x >= std::int64_t(Limits::min()) && x <= std::int64_t(Limits::max()) : x >= 0;
+  }
+  if (!fits)
+    throw InvalidArgument("merge", v.dump() + " is not an integer in [" + std::to_string(Limits::min()) + ", " +
+                                       std::to_string(Limits::max()) + "]");
+  return v.get<Int>();
+}
+
 AxisRange axis_from_json(const nlohmann::json& j) {
   AxisRange a;
   a.axis = axis_from_string(j.at("axis").get<std::string>());
   a.min = j.at("min").get<double>();
   a.max = j.at("max").get<double>();
-  a.count = j.at("count").get<int>();
+  a.count = integer_of<int>(j.at("count"));
   return a;
 }
 double number(const nlohmann::json& j) { return j.is_null() ? std::nan("") : j.get<double>(); }
@@ -182,11 +200,11 @@ namespace {
 // Where a point's field sits, for error messages: (point position k in "points", field name).
 using Where = std::function<std::string(std::size_t k, const std::string& field)>;
 
-// The modes l = 2..L of the document's scene (no bound when it carries no scene).
-int modes_of(const nlohmann::json& doc) {
-  if (!doc.contains("scene_toml")) return INT_MAX;
+// The document's scene and options: every diagram JSON carries them (diagram_header).
+SceneFile scene_of(const nlohmann::json& doc) {
+  if (!doc.contains("scene_toml")) throw InvalidArgument("merge", "the diagram JSON has no scene_toml");
   try {
-    return parse_scene(doc.at("scene_toml").get<std::string>()).scene.L;
+    return parse_scene(doc.at("scene_toml").get<std::string>());
   } catch (const std::exception& e) {
     throw InvalidArgument("merge", std::string("the scene_toml of the diagram JSON is invalid: ") + e.what());
   }
@@ -195,7 +213,7 @@ int modes_of(const nlohmann::json& doc) {
 // Every value is checked (names in the enum tables, point_value_error), never defaulted: a merge must
 // not turn an unreadable value into a plausible one.
 std::vector<PointResult> read_points(const nlohmann::json& doc, const DiagramSpec& spec, const Where& where) {
-  const int L = modes_of(doc);
+  const int L = scene_of(doc).scene.L;
   std::vector<PointResult> out;
   if (!doc.contains("points") || !doc.at("points").is_array())
     throw InvalidArgument("merge", "malformed diagram JSON: no \"points\" array");
@@ -212,18 +230,18 @@ std::vector<PointResult> read_points(const nlohmann::json& doc, const DiagramSpe
       }
     };
     PointResult p;
-    field("index", [&](const nlohmann::json& v) { p.index = v.get<std::size_t>(); });
+    field("index", [&](const nlohmann::json& v) { p.index = integer_of<std::size_t>(v); });
     field("verdict", [&](const nlohmann::json& v) { p.verdict = from_string<Verdict>(v.get<std::string>(), "verdict"); });
     field("status", [&](const nlohmann::json& v) { p.status = from_string<IntegrationStatus>(v.get<std::string>(), "status"); });
-    field("l_Delta", [&](const nlohmann::json& v) { p.l_Delta = v.get<int>(); });
+    field("l_Delta", [&](const nlohmann::json& v) { p.l_Delta = integer_of<int>(v); });
     field("growth", [&](const nlohmann::json& v) { p.growth = number(v); });
     field("oscillating", [&](const nlohmann::json& v) { p.oscillating = v.get<bool>(); });
     field("sigma_final", [&](const nlohmann::json& v) { p.sigma_final = number(v); });
     field("reason", [&](const nlohmann::json& v) { p.reason = v.get<std::string>(); });
     field("t_reached", [&](const nlohmann::json& v) { p.t_reached = number(v); });
-    field("steps", [&](const nlohmann::json& v) { p.steps = v.get<std::size_t>(); });
-    field("failed_steps", [&](const nlohmann::json& v) { p.failed_steps = v.get<std::size_t>(); });
-    field("rhs_evaluations", [&](const nlohmann::json& v) { p.rhs_evaluations = v.get<std::size_t>(); });
+    field("steps", [&](const nlohmann::json& v) { p.steps = integer_of<std::size_t>(v); });
+    field("failed_steps", [&](const nlohmann::json& v) { p.failed_steps = integer_of<std::size_t>(v); });
+    field("rhs_evaluations", [&](const nlohmann::json& v) { p.rhs_evaluations = integer_of<std::size_t>(v); });
     if (r.contains("seconds")) field("seconds", [&](const nlohmann::json& v) { p.seconds = v.get<double>(); });
     if (const FieldError e = point_value_error(p, spec, L); !e.empty())
       throw InvalidArgument("merge", where(k, e.field) + ": " + e.why);
@@ -324,24 +342,60 @@ std::size_t point_line(const std::string& text, std::size_t k, const std::string
   return finder.line();
 }
 
+// Input d's config_hash (a string) and seconds_included (a boolean; absent: false), refused when of another type.
+std::string hash_of(const nlohmann::json& doc, std::size_t d) {
+  const auto it = doc.find("config_hash");
+  if (it == doc.end() || !it->is_string())
+    throw InvalidArgument("merge", "input " + std::to_string(d + 1) + " has no config_hash string (" +
+                                       (it == doc.end() ? std::string("missing") : it->dump()) + ")");
+  return it->get<std::string>();
+}
+bool seconds_included(const nlohmann::json& doc, std::size_t d) {
+  const auto it = doc.find("seconds_included");
+  if (it == doc.end()) return false;
+  if (!it->is_boolean())
+    throw InvalidArgument("merge", "input " + std::to_string(d + 1) + " has seconds_included = " + it->dump() +
+                                       ": must be true or false");
+  return it->get<bool>();
+}
+
+// Every field of a point but the wall-clock seconds, as text (its journal record): equal for equal results.
+std::string deterministic_text(PointResult p) {
+  p.seconds = 0;
+  return point_to_line(p, "");
+}
+
 MergeResult merge(const std::vector<nlohmann::json>& docs, const std::vector<Where>& where) {
   if (docs.empty()) throw InvalidArgument("merge", "nothing to merge: give at least one diagram JSON");
   MergeResult m;
   m.spec = spec_from_json(docs.front());
   m.header = docs.front();
   for (const char* k : {"shard", "complete", "seconds_included", "summary", "points", "agreement"}) m.header.erase(k);
-  const std::string hash = docs.front().value("config_hash", "");
+  // The header must be that of its own configuration (scene_toml and diagram): an edited scene, grid or hash
+  // would otherwise be written out as the configuration that computed the points.
+  const std::string hash = hash_of(docs.front(), 0);
+  const SceneFile scene = scene_of(docs.front());
+  const nlohmann::json own = diagram_header(scene.scene, scene.options, m.spec);
+  if (own.at("config_hash") != hash)
+    throw InvalidArgument("merge", "input 1 has config_hash '" + hash + "', but its scene_toml and diagram hash to " +
+                                       own.at("config_hash").dump() + ": the file was edited after the run");
+  for (const auto& [key, value] : own.items()) {  // the views of the configuration (scene, integrator) agree with it
+    const auto it = m.header.find(key);
+    if (it == m.header.end() || *it != value)
+      throw InvalidArgument("merge", "input 1 has " + key + " = " +
+                                         (it == m.header.end() ? std::string("nothing") : it->dump().substr(0, 200)) +
+                                         ", which is not the configuration of its scene_toml and diagram: the file was "
+                                         "edited after the run");
+  }
   std::map<std::size_t, PointResult> all;
   for (std::size_t d = 0; d < docs.size(); ++d) {
-    if (docs[d].value("config_hash", "") != hash)
-      throw InvalidArgument("merge", "input " + std::to_string(d + 1) + " has config_hash '" +
-                                         docs[d].value("config_hash", "") + "', input 1 has '" + hash +
-                                         "': they are not shards of one diagram");
-    m.seconds_present = m.seconds_present && docs[d].value("seconds_included", false);
+    if (hash_of(docs[d], d) != hash)
+      throw InvalidArgument("merge", "input " + std::to_string(d + 1) + " has config_hash '" + hash_of(docs[d], d) +
+                                         "', input 1 has '" + hash + "': they are not shards of one diagram");
+    m.seconds_present = m.seconds_present && seconds_included(docs[d], d);
     for (PointResult& p : read_points(docs[d], m.spec, where[d])) {
       auto [it, inserted] = all.emplace(p.index, p);
-      if (!inserted && (it->second.l_Delta != p.l_Delta || it->second.verdict != p.verdict ||
-                        it->second.rhs_evaluations != p.rhs_evaluations))
+      if (!inserted && deterministic_text(it->second) != deterministic_text(p))
         throw InvalidArgument("merge", "point " + std::to_string(p.index) + " appears twice with different results");
     }
   }

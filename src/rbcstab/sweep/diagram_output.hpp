@@ -32,8 +32,9 @@ nlohmann::json agreement_json(const Scene& base, const DiagramSpec& spec, const 
                               const AgreementOptions& options = {});
 
 // The spec and points back from a diagram_json document (throws InvalidArgument("merge", ...) naming
-// the point and field of any value that is not a verdict/status name, a number where one is due, or
-// that point_value_error refuses, e.g. l_Delta outside [2, L]).
+// the point and field of any value that is not a verdict/status name, a number where one is due, an integer
+// where one is due (never truncated), or that point_value_error refuses, e.g. l_Delta outside [2, L]; a
+// document without a valid scene_toml is refused).
 DiagramSpec spec_from_json(const nlohmann::json& doc);
 std::vector<PointResult> points_from_json(const nlohmann::json& doc, const DiagramSpec& spec);
 
@@ -44,8 +45,9 @@ struct MergeResult {
   std::vector<std::size_t> missing; // grid indices no input held
   bool seconds_present = true;      // every input carried per-point seconds
 };
-// Merges shard outputs of one diagram: they must share the config hash; a point held twice must
-// agree (deterministic runs) or it throws InvalidArgument("merge", ...).
+// Merges shard outputs of one diagram: they must share the config hash, which must be the hash of the first
+// input's scene_toml and diagram (an edited header is refused); a point held twice must agree (deterministic
+// runs) or it throws InvalidArgument("merge", ...).
 MergeResult merge_diagrams(const std::vector<nlohmann::json>& docs);
 // The same from files' text: errors name the file and the line of the offending value ("cc.json:57: ...").
 struct MergeInput {
