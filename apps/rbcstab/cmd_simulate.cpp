@@ -6,6 +6,7 @@
 #include "exit_codes.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/simulation_io.hpp"
+#include "rbcstab/verdict/certified_run.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -19,7 +20,7 @@ struct SimulateOptions {
 
 int run(const SimulateOptions& o) {
   const SceneFile sf = o.scene.resolve(TruncationUse::simulation);
-  const SimulationResult r = simulate(sf.scene, sf.options);
+  const SimulationResult r = simulate_certified(sf.scene, sf.options);
   if (!o.trajectory.empty()) write_file_atomic(o.trajectory, trajectory_csv(r), "--trajectory");
   for (const auto& w : r.warnings) std::cerr << "rbcstab: warning: " << w << "\n";
   if (o.json)

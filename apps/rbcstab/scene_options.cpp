@@ -29,8 +29,9 @@ void SceneOptions::add_to(CLI::App& app) {
         if (!k->names.empty()) o->check(CLI::IsMember(k->names));
         break;
       case ValueKind::modes: o = app.add_option(k->flag, modes_[path], k->help); break;
+      case ValueKind::boolean: o = app.add_flag(k->flag, booleans_[path], k->help); break;
     }
-    if (k->kind != ValueKind::modes) o->capture_default_str();
+    if (k->kind != ValueKind::modes && k->kind != ValueKind::boolean) o->capture_default_str();
     flags_.push_back({k, o});
   }
 }
@@ -47,6 +48,7 @@ SceneFile SceneOptions::read() const {
       case ValueKind::name:
       case ValueKind::text: apply_flag(f, *flag.key, names_.at(path)); break;
       case ValueKind::modes: apply_flag(f, *flag.key, parse_modes(modes_.at(path), flag.key->flag)); break;
+      case ValueKind::boolean: apply_flag(f, *flag.key, booleans_.at(path)); break;
     }
   }
   validate_scene_file(f);

@@ -35,6 +35,7 @@ struct SceneOptions {
   std::map<std::string, long long> integers_;
   std::map<std::string, std::string> names_;
   std::map<std::string, std::vector<std::string>> modes_;
+  std::map<std::string, bool> booleans_;
 };
 
 }  // namespace rbcstab::cli

@@ -8,6 +8,7 @@
 #include "rbcstab/analysis/analysis_io.hpp"
 #include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/io/simulation_io.hpp"
+#include "rbcstab/verdict/certified_run.hpp"
 #include "rbcstab/verdict/verdict_io.hpp"
 
 namespace rbcstab::python {
@@ -37,7 +38,7 @@ py::tuple simulate_scene(const py::handle& scene) {
   {
     py::gil_scoped_release release;
     apply_truncation(f, TruncationUse::simulation);
-    r = simulate(f.scene, f.options);
+    r = simulate_certified(f.scene, f.options);
   }
   const nlohmann::json j = simulation_json(f, r);
   py::dict arrays;
