@@ -71,11 +71,18 @@ class SceneCertifier final : public AttractorCertifier {
     attempt_t_ = t;
     next_ = std::max(t + P, o_.attempt_growth * t);
     const int k = static_cast<int>(periods);
-    switch (system.level()) {
-      case ModelLevel::modal: return modal(static_cast<const ModalModel&>(system), t, y, k, jump, record);
-      case ModelLevel::reduced: return reduced(t, y, k, jump, record);
-      case ModelLevel::full:
-      case ModelLevel::automatic: break;
+    try {
+      switch (system.level()) {
+        case ModelLevel::modal: return modal(static_cast<const ModalModel&>(system), t, y, k, jump, record);
+        case ModelLevel::reduced: return reduced(t, y, k, jump, record);
+        case ModelLevel::full:
+        case ModelLevel::automatic: break;
+      }
+    } catch (const InvalidArgument& e) {
+      // The orbit problem refuses this scene (e.g. its total excess area outside Delta's domain): the run
+      // goes on without a certificate rather than failing.
+      next_ = kInf;
+      return fail(record, t, e.what());
     }
     record.note = "the " + to_string(system.level()) + " level has no attractor certificate: integrated to T";
     next_ = kInf;

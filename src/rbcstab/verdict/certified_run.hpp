@@ -20,6 +20,8 @@
 // of a decayed mode keeps its relative accuracy.
 // The full level is never certified (its runs go to T). Attempts follow a schedule that grows geometrically
 // after failures, guided by the periodicity defect of one cheap period.
+#include <numbers>
+
 #include "rbcstab/continuation/attractor.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/scene.hpp"
