@@ -34,6 +34,8 @@ void SceneOptions::add_to(CLI::App& app) {
     if (k->kind != ValueKind::modes && k->kind != ValueKind::boolean) o->capture_default_str();
     flags_.push_back({k, o});
   }
+  full_horizon_option_ = app.add_flag("--full-horizon", full_horizon_,
+                                      "integrate every run to T: no certified early termination (scene key run.full_horizon)");
 }
 
 SceneFile SceneOptions::read() const {
@@ -51,6 +53,9 @@ SceneFile SceneOptions::read() const {
       case ValueKind::boolean: apply_flag(f, *flag.key, booleans_.at(path)); break;
     }
   }
+  if (full_horizon_option_ && full_horizon_option_->count() > 0)
+    for (const SceneKey& k : scene_keys())
+      if (k.path() == "run.full_horizon") apply_flag(f, k, true);
   validate_scene_file(f);
   return f;
 }

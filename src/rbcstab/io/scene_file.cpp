@@ -75,7 +75,7 @@ std::vector<SceneKey> make_scene_keys() {
                [](SceneFile& f, const SceneValue& v) { f.scene.model = model_level_from_string(text_of(v)); }});
   k.push_back(number_key("run", "tail_window", "", "Delta_l are averaged over [T - tail_window, T], > 0",
                          [](auto& f) -> auto& { return f.options.tail_window; }));
-  k.push_back({"run", "full_horizon", ValueKind::boolean, "--full-horizon",
+  k.push_back({"run", "full_horizon", ValueKind::boolean, "",
                "integrate every run to T: no certified early termination on an attracting orbit", {},
                [](const SceneFile& f) { return SceneValue{f.options.full_horizon}; },
                [](SceneFile& f, const SceneValue& v) { f.options.full_horizon = boolean_of(v); }});
