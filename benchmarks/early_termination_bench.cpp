@@ -6,6 +6,7 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <string>
 
@@ -21,6 +22,8 @@ const char* const kPanels[] = {"fig4a_op", "fig4b_op", "fig4c_op", "appE_a_ip", 
 double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
+// CPU time of the whole process (every thread): less sensitive than wall time to other load on the machine.
+double cpu_since(std::clock_t start) { return double(std::clock() - start) / CLOCKS_PER_SEC; }
 
 // range(0): the panel (kPanels), range(1): points per axis, range(2): threads.
 void BM_PanelEarlyVsFull(benchmark::State& state) {
@@ -32,15 +35,19 @@ void BM_PanelEarlyVsFull(benchmark::State& state) {
   o.threads = int(state.range(2));
   rbcstab::SimulationOptions full_options = sf.options;
   full_options.full_horizon = true;
-  double full_s = 0, early_s = 0;
+  double full_s = 0, early_s = 0, full_cpu = 0, early_cpu = 0;
   std::size_t terminated = 0, differing = 0, full_rhs = 0, early_rhs = 0;
   for (auto _ : state) {
     auto start = std::chrono::steady_clock::now();
+    std::clock_t cpu = std::clock();
     const rbcstab::DiagramRun full = rbcstab::run_diagram(sf.scene, full_options, spec, o);
     full_s += seconds_since(start);
+    full_cpu += cpu_since(cpu);
     start = std::chrono::steady_clock::now();
+    cpu = std::clock();
     const rbcstab::DiagramRun early = rbcstab::run_diagram(sf.scene, sf.options, spec, o);
     early_s += seconds_since(start);
+    early_cpu += cpu_since(cpu);
     for (std::size_t k = 0; k < early.points.size(); ++k) {
       const rbcstab::PointResult& a = early.points[k];
       const rbcstab::PointResult& b = full.points[k];
@@ -54,6 +61,8 @@ void BM_PanelEarlyVsFull(benchmark::State& state) {
   state.counters["full_s"] = full_s;
   state.counters["early_s"] = early_s;
   state.counters["speedup"] = full_s / early_s;
+  state.counters["full_cpu_s"] = full_cpu;
+  state.counters["early_cpu_s"] = early_cpu;
   state.counters["terminated"] = double(terminated);
   state.counters["differing"] = double(differing);
   state.counters["rhs_ratio"] = double(full_rhs) / double(early_rhs);

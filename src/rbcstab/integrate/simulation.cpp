@@ -126,6 +126,8 @@ SimulationResult simulate(const Scene& scene, const SimulationOptions& options, 
       return tail_start > t && certifier->certify(*system, t, y, tail_start, jump, res.early);
     };
   IntegrationResult ir = integrate(*system, y0, 0.0, grid, options.integrator, on_sample, on_step, stop);
+  if (stop && !ir.stopped && res.early.note.empty())
+    res.early.note = "no certification attempt: none could skip a whole period before the tail window";
   if (ir.stopped) {
     res.early.terminated = true;
     res.early.note.clear();
