@@ -8,6 +8,7 @@
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/simulation_io.hpp"
 #include "progress.hpp"
+#include "rbcstab/verdict/certified_run.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -24,7 +25,7 @@ int run(const SimulateOptions& o) {
   SceneFile sf = o.scene.read();
   sf.options.trajectory_text = !o.trajectory.empty();
   sf.options.on_progress = o.progress.callback("simulate: t =", "");
-  const SimulationResult r = simulate_truncated(sf, sf.options);
+  const SimulationResult r = simulate_scene(sf, sf.options);
   if (!o.trajectory.empty()) write_file_atomic(o.trajectory, trajectory_csv(r), "--trajectory");
   for (const auto& w : r.warnings) std::cerr << "rbcstab: warning: " << w << "\n";
   if (o.json)

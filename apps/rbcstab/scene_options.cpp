@@ -29,10 +29,13 @@ void SceneOptions::add_to(CLI::App& app) {
         if (!k->names.empty()) o->check(CLI::IsMember(k->names));
         break;
       case ValueKind::modes: o = app.add_option(k->flag, modes_[path], k->help); break;
+      case ValueKind::boolean: o = app.add_flag(k->flag, booleans_[path], k->help); break;
     }
-    if (k->kind != ValueKind::modes) o->capture_default_str();
+    if (k->kind != ValueKind::modes && k->kind != ValueKind::boolean) o->capture_default_str();
     flags_.push_back({k, o});
   }
+  full_horizon_option_ = app.add_flag("--full-horizon", full_horizon_,
+                                      "integrate every run to T: no certified early termination (scene key run.full_horizon)");
 }
 
 SceneFile SceneOptions::read() const {
@@ -47,8 +50,12 @@ SceneFile SceneOptions::read() const {
       case ValueKind::name:
       case ValueKind::text: apply_flag(f, *flag.key, names_.at(path)); break;
       case ValueKind::modes: apply_flag(f, *flag.key, parse_modes(modes_.at(path), flag.key->flag)); break;
+      case ValueKind::boolean: apply_flag(f, *flag.key, booleans_.at(path)); break;
     }
   }
+  if (full_horizon_option_ && full_horizon_option_->count() > 0)
+    for (const SceneKey& k : scene_keys())
+      if (k.path() == "run.full_horizon") apply_flag(f, k, true);
   validate_scene_file(f);
   return f;
 }

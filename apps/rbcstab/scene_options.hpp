@@ -1,7 +1,7 @@
 #pragma once
 // Scene flags shared by every subcommand that runs a scene: --scene FILE plus one flag per scene key that has
 // one (io's scene_flags(): the parameter table's stored parameters, L, T, dt, model, stepper, rtol, atol and
-// the per-mode perturbations).
+// the per-mode perturbations), and --full-horizon, which sets the scene key run.full_horizon.
 #include <CLI/CLI.hpp>
 #include <map>
 #include <string>
@@ -35,6 +35,9 @@ struct SceneOptions {
   std::map<std::string, long long> integers_;
   std::map<std::string, std::string> names_;
   std::map<std::string, std::vector<std::string>> modes_;
+  std::map<std::string, bool> booleans_;
+  bool full_horizon_ = false;
+  CLI::Option* full_horizon_option_ = nullptr;
 };
 
 }  // namespace rbcstab::cli

@@ -95,8 +95,10 @@ class Simulation:
 
 def simulate(scene, model=None, stepper=None, rtol=None, atol=None):
     """Integrates the scene (rbcstab simulate). model ('auto', 'full', 'modal', 'reduced'), stepper, rtol and
-    atol override the scene's (whose defaults are 'auto', 'rk8pd', 1e-8, 1e-12). Ctrl-C stops it
-    (KeyboardInterrupt); the GIL is released while it runs."""
+    atol override the scene's (whose defaults are 'auto', 'rk8pd', 1e-8, 1e-12). The run may stop early on a
+    certified attractor (``terminated_at``, ``early_termination``; no samples in the skipped span);
+    ``Scene(full_horizon=True)`` integrates to T. Ctrl-C stops it (KeyboardInterrupt); the GIL is released
+    while it runs."""
     scene = _scene_with(scene, model=model, stepper=stepper, rtol=rtol, atol=atol)
     data, arrays, text = _rbcstab.simulate(scene)
     return Simulation(data, arrays, text)

@@ -10,6 +10,7 @@
 #include "rbcstab/analysis/analysis_io.hpp"
 #include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/io/simulation_io.hpp"
+#include "rbcstab/verdict/certified_run.hpp"
 #include "rbcstab/verdict/verdict_io.hpp"
 
 namespace rbcstab::python {
@@ -33,12 +34,12 @@ SceneFile interruptible(const py::handle& scene) {
   return f;
 }
 
-py::tuple simulate_scene(const py::handle& scene) {
+py::tuple simulate_file(const py::handle& scene) {
   SceneFile f = interruptible(scene);
   SimulationResult r;
   {
     py::gil_scoped_release release;
-    r = simulate_truncated(f, f.options);
+    r = simulate_scene(f, f.options);
   }
   const nlohmann::json j = simulation_json(f, r);
   py::dict arrays;
@@ -83,7 +84,7 @@ py::tuple summary_scene(const py::handle& scene) {
                         summary_text(s.file, s.run, s.prediction));
 }
 
-// The same work as simulate_scene without Python: the truncation, the run and its JSON, timed in C++ (seconds per
+// The same work as simulate_file without Python: the truncation, the run and its JSON, timed in C++ (seconds per
 // repeat). benchmarks/python/python_overhead.py compares it with the Python call in one process.
 std::vector<double> time_simulate_cpp(const py::handle& scene, int repeats) {
   if (repeats < 1) throw py::value_error("repeats = " + std::to_string(repeats) + " is out of range: must be >= 1");
@@ -93,7 +94,7 @@ std::vector<double> time_simulate_cpp(const py::handle& scene, int repeats) {
   for (int i = 0; i < repeats; ++i) {
     const auto start = std::chrono::steady_clock::now();
     SceneFile f = base;
-    const SimulationResult r = simulate_truncated(f, f.options);
+    const SimulationResult r = simulate_scene(f, f.options);
     const nlohmann::json j = simulation_json(f, r);
     seconds.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     if (j.empty()) throw std::logic_error("empty JSON");
@@ -104,7 +105,7 @@ std::vector<double> time_simulate_cpp(const py::handle& scene, int repeats) {
 }  // namespace
 
 void bind_runs(py::module_& m) {
-  m.def("simulate", &simulate_scene, py::arg("scene"),
+  m.def("simulate", &simulate_file, py::arg("scene"),
         "(json dict, arrays dict, text): rbcstab simulate --json, the trajectory, the CLI's text.");
   m.def("thresholds", &thresholds_scene, py::arg("scene"), py::arg("exact_C_star") = false,
         "(json dict, text): rbcstab thresholds [--exact-C-star] --json and its text.");

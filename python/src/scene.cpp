@@ -63,6 +63,9 @@ SceneValue value_of(const SceneKey& k, const std::string& keyword, const py::han
       }
       return s;
     }
+    case ValueKind::boolean:
+      if (!is_bool(v)) type_error(keyword, "True or False", v);
+      return v.cast<bool>();
     case ValueKind::modes: {
       if (!py::isinstance<py::dict>(v)) type_error(keyword, "a dict {l: value} of modes l >= 3", v);
       std::map<int, double> modes;

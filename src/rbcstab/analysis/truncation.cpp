@@ -449,9 +449,10 @@ CheckedRun run_and_check(const Scene& scene, int L_candidate, const SimulationOp
 }
 
 SimulationResult simulate_truncated(SceneFile& file, const SimulationOptions& options,
-                                    const ReducedTransient* transient) {
+                                    const ReducedTransient* transient, const SceneRunner& run_full) {
   std::optional<SimulationResult> run = decide_simulation(file, options, transient);
-  return run ? std::move(*run) : simulate(file.scene, options);
+  if (run) return std::move(*run);
+  return run_full ? run_full(file.scene, options) : simulate(file.scene, options);
 }
 
 void apply_truncation(SceneFile& file, TruncationUse use, const ReducedTransient* transient) {

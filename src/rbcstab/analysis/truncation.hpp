@@ -16,6 +16,7 @@
 //    (bounded between steps), and the tension the scene would have with the dropped modes' area must differ from
 //    the run's by at most tolerance * max_t |sigma| at every step. Otherwise the scene's L is run instead
 //    (simulate_truncated).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -97,9 +98,11 @@ CheckedRun run_and_check(const Scene& scene, int L_candidate, const SimulationOp
 // The policy for one scene simulated over [0, T], and its run: resolve_truncation; a candidate below the scene's
 // L is run and checked (run_and_check) and kept if it passes, else the scene's L is run. Sets file.scene.L to the
 // L run, file.L_reason, and file.truncation_check when a candidate was checked. Every front end that simulates
-// one scene calls this.
+// one scene calls this. The candidate runs to T with simulate (its check reads sigma(t) at every t); the run at
+// the scene's L is `run_full` (empty: simulate), which verdict's simulate_scene makes certified.
+using SceneRunner = std::function<SimulationResult(const Scene&, const SimulationOptions&)>;
 SimulationResult simulate_truncated(SceneFile& file, const SimulationOptions& options,
-                                    const ReducedTransient* transient = nullptr);
+                                    const ReducedTransient* transient = nullptr, const SceneRunner& run_full = {});
 
 // The policy applied to a scene file (its L's origin) for a front end that integrates the scene itself: sets
 // scene.L, L_reason (and for a simulation, by simulate_truncated without a trajectory, truncation_check), then

@@ -11,6 +11,7 @@
 #include <Eigen/Eigenvalues>
 #include <Eigen/QR>
 
+#include "rbcstab/continuation/detail/forced_flow.hpp"
 #include "rbcstab/continuation/detail/minimal_augmentation.hpp"
 #include "rbcstab/continuation/detail/rest_direction.hpp"
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"
@@ -27,61 +28,8 @@ constexpr double kTwoPi = 2 * M_PI;
 // Central-difference step in p: cube root of eps balances truncation against rounding.
 double fd_step(double v) { return std::cbrt(std::numeric_limits<double>::epsilon()) * (1 + std::abs(v)); }
 
-// A ForcedSystem at fixed p seen as a System for integrate(), optionally augmented with the
-// variational equations Phi' = J Phi (n x n, column-major) and s' = J s + f_p (the parameter sensitivity).
-// Only explicit steppers are used (rk8pd), which never ask for the Jacobian of the augmented system,
-// so jacobian/observe/amplitudes are not part of this adapter's contract and throw logic_error.
-class Augmented final : public System {
- public:
-  enum class Mode { plain, variational };
-  Augmented(const ForcedSystem& s, double p, Mode mode) : s_(s), p_(p), mode_(mode), n_(s.dimension()) {}
-  ModelLevel level() const override { return ModelLevel::automatic; }
-  std::size_t dimension() const override {
-    const auto n = static_cast<std::size_t>(n_);
-    return mode_ == Mode::plain ? n : n + n * n + n;
-  }
-  int L() const override { return 2; }
-  void rhs(double t, std::span<const double> y, std::span<double> dydt) const override {
-    const auto n = static_cast<std::size_t>(n_);
-    s_.rhs(t, y.first(n), p_, dydt.first(n));
-    if (mode_ == Mode::variational) {
-      s_.jacobian(t, y.first(n), p_, J_);
-      Eigen::Map<const Eigen::MatrixXd> Phi(y.data() + n, n_, n_);
-      Eigen::Map<Eigen::MatrixXd>(dydt.data() + n, n_, n_).noalias() = J_ * Phi;
-      fp_.resize(n_);
-      s_.parameter_derivative(t, y.first(n), p_, std::span<double>(fp_.data(), n));
-      Eigen::Map<const Eigen::VectorXd> sp(y.data() + n + n * n, n_);
-      Eigen::Map<Eigen::VectorXd>(dydt.data() + n + n * n, n_).noalias() = J_ * sp + fp_;
-    }
-  }
-  void jacobian(double, std::span<const double>, StructuredJacobian&, std::span<double>) const override {
-    throw std::logic_error("orbit shooting integrates with explicit steppers only");
-  }
-  Observation observe(double, std::span<const double>) const override {
-    throw std::logic_error("orbit shooting adapter has no observation");
-  }
-  std::vector<double> initial_state() const override { return {}; }
-  ModeAmplitudes amplitudes(double, std::span<const double>) const override {
-    throw std::logic_error("orbit shooting adapter has no amplitudes");
-  }
-
- private:
-  const ForcedSystem& s_;
-  double p_;
-  Mode mode_;
-  Eigen::Index n_;
-  mutable Eigen::MatrixXd J_;
-  mutable Eigen::VectorXd fp_;
-};
-
-// theta' = (x0 f1 - x1 f0) / (x0^2 + x1^2): the continuous argument of z = x0 + i x1.
-Quadrature winding_angle() {
-  Quadrature q;
-  q.rate = [](double, std::span<const double> x, std::span<const double> f, std::span<double> rate) {
-    rate[0] = (x[0] * f[1] - x[1] * f[0]) / (x[0] * x[0] + x[1] * x[1]);
-  };
-  return q;
-}
+using detail::ForcedFlow;
+using detail::winding_angle;
 
 IntegratorOptions integrator_options(const OrbitOptions& o) {
   IntegratorOptions io;
@@ -254,7 +202,7 @@ const PeriodicOrbitProblem::Shooting& PeriodicOrbitProblem::shoot(const Eigen::V
   cache_.p = p;
   cache_.ok = true;
   const auto n = static_cast<std::size_t>(n_);
-  const Augmented aug(sys_, p, Augmented::Mode::variational);
+  const ForcedFlow aug(sys_, p, ForcedFlow::Mode::variational);
   const IntegratorOptions io = integrator_options(o_);
   cache_.phi.assign(static_cast<std::size_t>(N_), Eigen::VectorXd());
   cache_.s.assign(static_cast<std::size_t>(N_), Eigen::VectorXd());
@@ -399,7 +347,7 @@ Eigen::VectorXd PeriodicOrbitProblem::shooting_guess(const Eigen::VectorXd& x0, 
   if (N_ == 1) return X;
   std::vector<double> grid;
   for (int j = 1; j < N_; ++j) grid.push_back(kTwoPi * j / N_);
-  const Augmented plain(sys_, p, Augmented::Mode::plain);
+  const ForcedFlow plain(sys_, p, ForcedFlow::Mode::plain);
   int k = 1;
   integrate(plain, std::span<const double>(x0.data(), static_cast<std::size_t>(n_)), 0.0, grid,
             integrator_options(o_), [&](double, std::span<const double> y) {
@@ -418,7 +366,7 @@ OrbitRelaxation PeriodicOrbitProblem::relax(const Eigen::VectorXd& x0, double p,
   require(chunk >= 1, "chunk", chunk, "an integer >= 1");
   OrbitRelaxation r;
   r.x = x0;
-  const Augmented plain(sys_, p, Augmented::Mode::plain);
+  const ForcedFlow plain(sys_, p, ForcedFlow::Mode::plain);
   const IntegratorOptions io = integrator_options(o_);
   Eigen::VectorXd prev = x0;
   while (r.periods < max_periods && !r.converged) {
@@ -453,7 +401,7 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p) c
   const auto n = static_cast<std::size_t>(n_);
   const int S = o_.samples_per_segment;
   const double h = kTwoPi / (N_ * S);
-  const Augmented plain(sys_, p, Augmented::Mode::plain);
+  const ForcedFlow plain(sys_, p, ForcedFlow::Mode::plain);
   const WithQuadratures with_angle(plain, winding_angle());
   const IntegratorOptions io = integrator_options(o_);
   const bool norm = sys_.conserves_norm();
@@ -592,7 +540,7 @@ OrbitPoint PeriodicOrbitProblem::point_at(const Eigen::VectorXd& X, double p, do
   if (tw > tj) {
     const double grid[1] = {tw};
     const IntegrationResult r =
-        integrate(Augmented(sys_, p, Augmented::Mode::variational), y, tj, grid, integrator_options(o_), {});
+        integrate(ForcedFlow(sys_, p, ForcedFlow::Mode::variational), y, tj, grid, integrator_options(o_), {});
     ++integrations_;
     if (r.status != IntegrationStatus::success) return o;
     y = r.y;

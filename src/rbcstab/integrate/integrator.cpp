@@ -112,7 +112,8 @@ void IntegratorOptions::validate() const {
 
 IntegrationResult integrate(const System& system, std::span<const double> y0, double t0,
                             std::span<const double> grid, const IntegratorOptions& options,
-                            const StateObserver& on_sample, const StateObserver& on_step) {
+                            const StateObserver& on_sample, const StateObserver& on_step,
+                            const StopCondition& stop) {
   options.validate();
   const std::size_t n = system.dimension();
   require(y0.size() == n, "y0", double(y0.size()), "of the system's dimension " + std::to_string(n));
@@ -168,6 +169,10 @@ IntegrationResult integrate(const System& system, std::span<const double> y0, do
         break;
       }
       if (on_step) on_step(t, y);
+      if (stop && stop(t, y)) {
+        result.stopped = true;
+        break;
+      }
       if (t < target && std::abs(h) < options.h_min && ctx.nonfinite_rhs > nonfinite_before) {
         fail(IntegrationStatus::non_finite_state, "the right-hand side is non-finite just beyond t = " + format_value(t) +
                                                       " (the step size fell to " + format_value(h) + ")");
@@ -192,7 +197,9 @@ IntegrationResult integrate(const System& system, std::span<const double> y0, do
       }
     }
     if (result.status != IntegrationStatus::success) break;
-    if (on_sample) on_sample(t, y);
+    // A stop on a grid time still delivers that sample.
+    if (on_sample && (!result.stopped || t >= target)) on_sample(t, y);
+    if (result.stopped) break;
   }
   result.counters.failed_steps = driver->e->failed_steps;
   result.t_reached = t;

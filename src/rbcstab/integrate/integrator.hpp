@@ -70,23 +70,35 @@ struct IntegrationCounters {
   std::size_t failed_steps = 0;      // rejected trial steps
   std::size_t rhs_evaluations = 0;
   std::size_t jacobian_evaluations = 0;
+  IntegrationCounters& operator+=(const IntegrationCounters& o) {
+    steps += o.steps;
+    failed_steps += o.failed_steps;
+    rhs_evaluations += o.rhs_evaluations;
+    jacobian_evaluations += o.jacobian_evaluations;
+    return *this;
+  }
 };
 
 struct IntegrationResult {
   IntegrationStatus status = IntegrationStatus::success;
   std::string reason;                // empty on success
   double t_reached = 0;
+  bool stopped = false;              // the stop condition ended the run at t_reached (status success)
   std::vector<double> y;             // state at t_reached
   IntegrationCounters counters;
   double seconds = 0;
 };
 
 using StateObserver = std::function<void(double t, std::span<const double> y)>;
+// Asked after each accepted step (after on_step): true ends the run there, with status success.
+using StopCondition = std::function<bool(double t, std::span<const double> y)>;
 
 // Integrates y' = F(t, y) from (t0, y0) through the increasing times in grid (each > t0 or equal
-// to it), calling on_sample at each grid time and on_step after each accepted step.
+// to it), calling on_sample at each grid time and on_step after each accepted step, until the last
+// grid time or until stop says so (IntegrationResult::stopped).
 IntegrationResult integrate(const System& system, std::span<const double> y0, double t0,
                             std::span<const double> grid, const IntegratorOptions& options,
-                            const StateObserver& on_sample, const StateObserver& on_step = {});
+                            const StateObserver& on_sample, const StateObserver& on_step = {},
+                            const StopCondition& stop = {});
 
 }  // namespace rbcstab

@@ -2,6 +2,8 @@
 // A scene run end to end: initial state, smallest exact level, integration, and the paper's
 // observables (Delta_l, sigma, r, Psi, l_Delta) on the output grid.
 #include <functional>
+#include <limits>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -20,6 +22,9 @@ struct SimulationOptions {
   std::function<void(double t, const Observation& o)> on_step{};
   bool trajectory_text = false;  // the caller also renders the samples as CSV text (counted by the memory bound)
   ProgressCallback on_progress;  // t of T, after every accepted step
+  // true: integrate every run to T. false: a run given an attractor certifier (simulate_certified,
+  // verdict/certified_run.hpp) may skip whole forcing periods once its attractor is certified.
+  bool full_horizon = false;
   void validate() const;
 };
 
@@ -33,6 +38,45 @@ struct Trajectory {
   std::vector<double> t;
   std::vector<std::vector<double>> Delta_l;  // [sample][l - 2]
   std::vector<double> sigma, r, Psi;         // Psi unwrapped along the accepted steps
+};
+
+// Certified early termination: the run stopped integrating at terminated_at, where its state was certified
+// to lie within the linearisation radius of an attracting periodic orbit (an equilibrium is one of any period),
+// and resumed on that orbit whole periods later at resumed_at <= T - tail_window, so that the tail window and
+// T are integrated as in a full run. The margins say how attracting the orbit is.
+struct EarlyTermination {
+  static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  bool terminated = false;
+  double terminated_at = nan, resumed_at = nan;
+  std::string note;                  // why the run was integrated to T (empty when it terminated early)
+  std::string kind;                  // "periodic_orbit" or "equilibrium" (time-independent forcing)
+  double period = nan;               // of the forcing (the orbit's period or a multiple of it)
+  double margin = nan;               // 1 - max |mu| over the nontrivial Floquet multipliers
+  double margin_error = nan;         // its error bound (certify, continuation.hpp)
+  double rate = nan;                 // -ln(max |mu|) / period: the slowest decay rate
+  double residual = nan;             // periodicity defect |phi(x*) - x*| of the refined state x*
+  double distance = nan;             // |x(terminated_at) - x*| in the level's regular coordinates (|x| = 1)
+  double decay_bound = nan;          // linear bound on |x - x*| at resumed_at (the error the skip makes)
+  int attempts = 0;                  // certification attempts, failed ones included
+  IntegrationCounters work;          // the attempts' integrations (not in SimulationResult::counters)
+};
+
+// Where the run resumes after a certified attractor, and how the unwrapped Psi moved meanwhile.
+struct AttractorJump {
+  double t = 0;
+  std::vector<double> y;
+  double Psi_advance = 0;  // -2 pi per turn of f_{2,2} about 0 over the skipped periods
+};
+
+// Decides early termination from above the integrate module (it needs the orbit machinery of continuation):
+// simulate asks it at every accepted step before T - tail_window.
+class AttractorCertifier {
+ public:
+  virtual ~AttractorCertifier() = default;
+  // True when the state (t, y) of `system` is certified and the run may resume at jump.t in (t, t_max]: fills
+  // jump and the certificate in `record`. It keeps its own attempt schedule and records every attempt.
+  virtual bool certify(const System& system, double t, std::span<const double> y, double t_max, AttractorJump& jump,
+                       EarlyTermination& record) = 0;
 };
 
 struct SimulationResult {
@@ -51,6 +95,7 @@ struct SimulationResult {
   double r_final = 0, Psi_final = 0;
   double excess_area_drift = 0;    // max over accepted steps of |sum_l Delta_l(t) - sum_l Delta_l(0)|
   Trajectory trajectory;
+  EarlyTermination early;          // empty unless an attractor certifier was given
   IntegrationCounters counters;
   double seconds = 0;
   std::vector<double> y_final;
@@ -59,8 +104,11 @@ struct SimulationResult {
 
 // Runs the scene (validated first, with its memory bounds: the dense stepper's dimension, require_dense_dimension,
 // and the samples, kMaxTrajectoryBytes; throws InvalidArgument on bad input). Numerical failure is a
-// status in the result, with everything computed up to t_reached.
-SimulationResult simulate(const Scene& scene, const SimulationOptions& options = {});
+// status in the result, with everything computed up to t_reached. With a certifier (and not
+// options.full_horizon) the run may skip whole periods on a certified attractor (SimulationResult::early): the
+// trajectory then holds no samples strictly between terminated_at and resumed_at.
+SimulationResult simulate(const Scene& scene, const SimulationOptions& options = {},
+                          AttractorCertifier* certifier = nullptr);
 
 // Regular-grid helper: 0, dt, 2 dt, ..., T (T always included).
 std::vector<double> sampling_grid(double T, double dt);

@@ -157,8 +157,27 @@ void put_truncation(nlohmann::json& j, int L, const std::string& L_reason) {
   j["L_reason"] = L_reason;
 }
 
+nlohmann::json to_json(const EarlyTermination& e) {
+  nlohmann::json j{{"attempts", e.attempts}, {"rhs_evaluations", e.work.rhs_evaluations}};
+  if (!e.terminated) {
+    j["note"] = e.note;
+    return j;
+  }
+  j["terminated_at"] = e.terminated_at;
+  j["resumed_at"] = e.resumed_at;
+  j["kind"] = e.kind;
+  j["period"] = e.period;
+  j["margin"] = e.margin;
+  j["margin_error"] = e.margin_error;
+  j["rate"] = e.rate;
+  j["residual"] = e.residual;
+  j["distance"] = e.distance;
+  j["decay_bound"] = e.decay_bound;
+  return j;
+}
+
 nlohmann::json to_json(const SimulationResult& r) {
-  return {{"scene", r.scene_name},
+  nlohmann::json j = {{"scene", r.scene_name},
           {"model", to_string(r.level.level)},
           {"model_exact", r.level.exact},
           {"model_reason", r.level.reason},
@@ -186,6 +205,11 @@ nlohmann::json to_json(const SimulationResult& r) {
           {"jacobian_evaluations", r.counters.jacobian_evaluations},
           {"seconds", r.seconds},
           {"warnings", r.warnings}};
+  j["terminated_at"] = number_or_null(r.early.terminated_at);
+  if (!r.early.terminated)
+    j["terminated_at_reason"] = r.early.note.empty() ? "integrated to T (no early termination asked for)" : r.early.note;
+  j["early_termination"] = to_json(r.early);
+  return j;
 }
 
 nlohmann::json to_json(const SimulationResult& r, const Parameters& p) {

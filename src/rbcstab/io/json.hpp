@@ -11,10 +11,15 @@ namespace rbcstab {
 
 nlohmann::json to_json(const Parameters& p);  // the parameter table's material rows: inputs, then Lambda, S, alpha
 nlohmann::json to_json(const Scene& s);
+// The run's keys, then "terminated_at" (null with "terminated_at_reason" when the run was integrated to T) and
+// "early_termination" (to_json(EarlyTermination)).
 nlohmann::json to_json(const SimulationResult& r);
 // to_json(r) with every null explained (explain_nulls): by run_reason when the run stopped, else by the inputs
 // that overflowed (nonfinite_reason).
 nlohmann::json to_json(const SimulationResult& r, const Parameters& p);
+// attempts and rhs_evaluations of the certification, then the certificate (terminated_at, resumed_at, kind,
+// period, margin, margin_error, rate, residual, distance, decay_bound) or the note saying why there is none.
+nlohmann::json to_json(const EarlyTermination& e);
 // {"2": v[0], "3": v[1], ...}
 nlohmann::json by_mode(const std::vector<double>& values_from_l2);
 // Why S is infinite (Delta0 = 0 or C = inf: the vesicle limit) or else not finite.

@@ -18,6 +18,7 @@ constexpr const char* kPanelTables[] = {"diagram", "fig6e", "continuation"};
 double number_of(const SceneValue& v) { return std::get<double>(v); }
 long long integer_of(const SceneValue& v) { return std::get<long long>(v); }
 const std::string& text_of(const SceneValue& v) { return std::get<std::string>(v); }
+bool boolean_of(const SceneValue& v) { return std::get<bool>(v); }
 
 void merge_modes(std::map<int, double>& into, const SceneValue& v) {
   for (const auto& [l, d] : std::get<std::map<int, double>>(v)) into[l] = d;
@@ -74,6 +75,10 @@ std::vector<SceneKey> make_scene_keys() {
                [](SceneFile& f, const SceneValue& v) { f.scene.model = model_level_from_string(text_of(v)); }});
   k.push_back(number_key("run", "tail_window", "", "Delta_l are averaged over [T - tail_window, T], > 0",
                          [](auto& f) -> auto& { return f.options.tail_window; }));
+  k.push_back({"run", "full_horizon", ValueKind::boolean, "",
+               "integrate every run to T: no certified early termination on an attracting orbit", {},
+               [](const SceneFile& f) { return SceneValue{f.options.full_horizon}; },
+               [](SceneFile& f, const SceneValue& v) { f.options.full_horizon = boolean_of(v); }});
   k.push_back({"integrator", "stepper", ValueKind::name, "--stepper", "time stepper", stepper_names(),
                [](const SceneFile& f) { return SceneValue{to_string(f.options.integrator.stepper)}; },
                [](SceneFile& f, const SceneValue& v) { f.options.integrator.stepper = stepper_from_string(text_of(v)); }});
@@ -171,6 +176,7 @@ SceneValue read(const SceneTable& t, const SceneKey& k) {
     case ValueKind::name:
     case ValueKind::text: return t.text(k.key);
     case ValueKind::modes: return t.modes(k.key);
+    case ValueKind::boolean: return t.boolean(k.key);
   }
   return {};
 }
@@ -333,6 +339,7 @@ std::string to_toml(const SceneFile& file) {
       case ValueKind::integer: t->insert(k.key, static_cast<int64_t>(integer_of(v))); break;
       case ValueKind::name:
       case ValueKind::text: t->insert(k.key, text_of(v)); break;
+      case ValueKind::boolean: t->insert(k.key, boolean_of(v)); break;
       case ValueKind::modes: {
         toml::table m;
         for (const auto& [l, d] : std::get<std::map<int, double>>(v)) m.insert(std::to_string(l), d);

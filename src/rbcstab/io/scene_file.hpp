@@ -60,8 +60,8 @@ struct SceneFile {
 };
 
 // A scene value as a file or a flag gives it.
-enum class ValueKind { number, integer, name, text, modes };  // name: one of SceneKey::names
-using SceneValue = std::variant<double, long long, std::string, std::map<int, double>>;
+enum class ValueKind { number, integer, name, text, modes, boolean };  // name: one of SceneKey::names
+using SceneValue = std::variant<double, long long, std::string, std::map<int, double>, bool>;
 
 // Every key of a scene file outside the panel tables, one row each: the parameter table's stored rows
 // (model/parameter_table.hpp), then the run and integrator options. The parser, to_toml, the provenance and the
@@ -69,7 +69,7 @@ using SceneValue = std::variant<double, long long, std::string, std::map<int, do
 struct SceneKey {
   std::string table, key;          // "parameters", "B"; table "" for the root's "name"
   ValueKind kind = ValueKind::number;
-  std::string flag;                // "--B", "--delta-l"; "" when only a file sets it
+  std::string flag;                // "--B", "--delta-l"; "" when only a file sets it (a boolean's flag sets it true)
   std::string help;                // one line for --help: meaning and range
   std::vector<std::string> names;  // ValueKind::name: the allowed values
   std::function<SceneValue(const SceneFile&)> get;

@@ -87,6 +87,13 @@ std::string SceneTable::text(const std::string& key) const {
   return *s;
 }
 
+bool SceneTable::boolean(const std::string& key) const {
+  const Value& v = at(key);
+  const bool* b = v.shape == Value::Shape::scalar ? std::get_if<bool>(&v.items[0]) : nullptr;
+  if (!b) throw InvalidArgument(path(key), path(key) + " = " + shown(v) + " must be true or false");
+  return *b;
+}
+
 std::vector<double> SceneTable::numbers(const std::string& key, std::size_t count, const std::string& what) const {
   return array_of<double>(*this, at(key), key, count, what, [](const Item& item, double& x) {
     double scratch = 0;

@@ -37,6 +37,7 @@ class SceneTable {
   double number(const std::string& key) const;  // an integer is accepted
   long long integer(const std::string& key) const;
   std::string text(const std::string& key) const;
+  bool boolean(const std::string& key) const;  // true or false
   // Arrays of exactly `count` items (0: any non-empty number); otherwise "<path> must be <what>".
   std::vector<double> numbers(const std::string& key, std::size_t count, const std::string& what) const;
   std::vector<long long> integers(const std::string& key, std::size_t count, const std::string& what) const;

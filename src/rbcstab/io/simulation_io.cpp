@@ -24,6 +24,9 @@ std::string simulation_text(const SceneFile& file, const SimulationResult& r) {
       << ", l_Delta = " << r.l_Delta << ", sigma(T) = " << r.sigma_final << ", drift = " << r.excess_area_drift
       << ", steps = " << r.counters.steps << "\n"
       << file.L_reason << "\n";
+  if (r.early.terminated)
+    out << "terminated early at t = " << r.early.terminated_at << " on a certified " << r.early.kind
+        << " (margin 1 - max |mu| = " << r.early.margin << "), resumed at t = " << r.early.resumed_at << "\n";
   return out.str();
 }
 

@@ -10,7 +10,8 @@ namespace rbcstab {
 
 // to_json(r) with the scene's parameters, the integrator (stepper, rtol, atol) and the truncation (L, L_reason).
 nlohmann::json simulation_json(const SceneFile& file, const SimulationResult& r);
-// One line (model, status, l_Delta, sigma(T), drift, steps), then the truncation reason.
+// One line (model, status, l_Delta, sigma(T), drift, steps), then the truncation reason, then the early
+// termination when the run stopped early.
 std::string simulation_text(const SceneFile& file, const SimulationResult& r);
 // t, Delta_2..Delta_L, sigma, r, Psi on the sampling grid, round-trip digits.
 std::string trajectory_csv(const SimulationResult& r);

@@ -17,6 +17,7 @@
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/detail/journal.hpp"
 #include "rbcstab/sweep/point_io.hpp"
+#include "rbcstab/verdict/certified_run.hpp"
 
 namespace rbcstab {
 
@@ -173,7 +174,7 @@ PointResult run_point(const Scene& base, const SimulationOptions& options, const
   const Scene scene = point_scene(base, spec, index);
   SimulationOptions o = options;
   o.record_trajectory = false;
-  const SimulationResult r = simulate(scene, o);
+  const SimulationResult r = simulate_certified(scene, o);
   PointResult p;
   p.index = index;
   p.i = int(index % std::size_t(spec.x.count));
@@ -192,6 +193,10 @@ PointResult run_point(const Scene& base, const SimulationOptions& options, const
   p.failed_steps = r.counters.failed_steps;
   p.rhs_evaluations = r.counters.rhs_evaluations;
   p.seconds = r.seconds;
+  if (r.early.terminated) {
+    p.terminated_at = r.early.terminated_at;
+    p.margin = r.early.margin;
+  }
   p.verdict = verdict_of(p.status, p.l_Delta);
   return p;
 }

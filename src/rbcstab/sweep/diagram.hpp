@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -43,8 +44,8 @@ struct EnumTable<Classifier> {
 // Throws InvalidArgument("classifier", ...) naming the allowed classifiers.
 inline Classifier classifier_from_string(std::string_view name) { return from_string<Classifier>(name, "classifier"); }
 
-// The largest grid (4096 x 4096): every point's result is held in memory (sizeof(PointResult) = 144 bytes,
-// about 2.4 GB at the bound) and journaled, so a larger grid is refused before any work starts.
+// The largest grid (4096 x 4096): every point's result is held in memory (sizeof(PointResult) = 160 bytes,
+// about 2.7 GB at the bound) and journaled, so a larger grid is refused before any work starts.
 constexpr long long kMaxDiagramPoints = 4096LL * 4096LL;
 
 struct DiagramSpec {
@@ -94,6 +95,10 @@ struct PointResult {
   double t_reached = 0;
   std::size_t steps = 0, failed_steps = 0, rhs_evaluations = 0;  // cost (deterministic)
   double seconds = 0;             // cost (wall clock; the only non-deterministic field)
+  // Certified early termination (SimulationResult::early): where the run stopped integrating and its
+  // certificate's margin 1 - max |mu|; NaN when the run was integrated to T.
+  double terminated_at = std::numeric_limits<double>::quiet_NaN();
+  double margin = std::numeric_limits<double>::quiet_NaN();
 };
 
 // One grid point (throws InvalidArgument if the point's scene is invalid).

@@ -68,14 +68,15 @@ nlohmann::json diagram_header(const Scene& base, const SimulationOptions& option
 std::string diagram_csv(const DiagramSpec& spec, const std::vector<PointResult>& points, const DiagramOutputOptions& o) {
   std::ostringstream ss;
   ss << "index,i,j," << to_string(spec.x.axis) << ',' << to_string(spec.y.axis)
-     << ",verdict,l_Delta,growth,oscillating,sigma_final,status,t_reached,steps,failed_steps,rhs_evaluations";
+     << ",verdict,l_Delta,growth,oscillating,sigma_final,status,t_reached,steps,failed_steps,rhs_evaluations"
+     << ",terminated_at,margin";
   if (o.include_seconds) ss << ",seconds";
   ss << '\n';
   for (const PointResult& p : points) {
     ss << p.index << ',' << p.i << ',' << p.j << ',' << exact(p.x) << ',' << exact(p.y) << ',' << to_string(p.verdict)
        << ',' << p.l_Delta << ',' << csv_number(p.growth) << ',' << int(p.oscillating) << ','
        << csv_number(p.sigma_final) << ',' << to_string(p.status) << ',' << csv_number(p.t_reached) << ',' << p.steps << ',' << p.failed_steps << ','
-       << p.rhs_evaluations;
+       << p.rhs_evaluations << ',' << csv_number(p.terminated_at) << ',' << csv_number(p.margin);
     if (o.include_seconds) ss << ',' << csv_number(p.seconds);
     ss << '\n';
   }
@@ -92,7 +93,7 @@ nlohmann::json diagram_json(const nlohmann::json& header, const DiagramSpec& spe
   doc["seconds_included"] = o.include_seconds;
   nlohmann::json arr = nlohmann::json::array();
   std::map<std::string, std::size_t> verdicts, modes;
-  std::size_t rhs = 0, steps = 0;
+  std::size_t rhs = 0, steps = 0, terminated = 0;
   double seconds = 0;
   nlohmann::json failed = nlohmann::json::array();
   for (const PointResult& p : points) {
@@ -111,7 +112,9 @@ nlohmann::json diagram_json(const nlohmann::json& header, const DiagramSpec& spe
                      {"t_reached", number_or_null(p.t_reached)},
                      {"steps", p.steps},
                      {"failed_steps", p.failed_steps},
-                     {"rhs_evaluations", p.rhs_evaluations}};
+                     {"rhs_evaluations", p.rhs_evaluations},
+                     {"terminated_at", number_or_null(p.terminated_at)},
+                     {"margin", number_or_null(p.margin)}};
     if (o.include_seconds) r["seconds"] = p.seconds;
     explain_nulls(r, p.status == IntegrationStatus::success
                          ? "not finite at this point's parameters"
@@ -124,9 +127,11 @@ nlohmann::json diagram_json(const nlohmann::json& header, const DiagramSpec& spe
     rhs += p.rhs_evaluations;
     steps += p.steps;
     seconds += p.seconds;
+    terminated += std::isfinite(p.terminated_at) ? 1 : 0;
   }
   nlohmann::json summary{{"points", points.size()}, {"verdicts", verdicts}, {"l_Delta", modes},
-                         {"failed_indices", failed}, {"rhs_evaluations", rhs}, {"steps", steps}};
+                         {"failed_indices", failed}, {"rhs_evaluations", rhs}, {"steps", steps},
+                         {"terminated_early", terminated}};
   if (o.include_seconds) summary["seconds"] = seconds;
   doc["summary"] = summary;
   doc["points"] = std::move(arr);
@@ -242,6 +247,8 @@ std::vector<PointResult> read_points(const nlohmann::json& doc, const DiagramSpe
     field("steps", [&](const nlohmann::json& v) { p.steps = integer_of<std::size_t>(v); });
     field("failed_steps", [&](const nlohmann::json& v) { p.failed_steps = integer_of<std::size_t>(v); });
     field("rhs_evaluations", [&](const nlohmann::json& v) { p.rhs_evaluations = integer_of<std::size_t>(v); });
+    field("terminated_at", [&](const nlohmann::json& v) { p.terminated_at = number(v); });
+    field("margin", [&](const nlohmann::json& v) { p.margin = number(v); });
     if (r.contains("seconds")) field("seconds", [&](const nlohmann::json& v) { p.seconds = v.get<double>(); });
     if (const FieldError e = point_value_error(p, spec, L); !e.empty())
       throw InvalidArgument("merge", where(k, e.field) + ": " + e.why);

@@ -5,6 +5,7 @@
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/scene.hpp"
+#include "rbcstab/verdict/certified_run.hpp"
 
 namespace rbcstab {
 
@@ -45,7 +46,7 @@ std::vector<Fig6eRow> fig6e_table(const Fig6eOptions& options) {
         row.Delta2_tilde_integer = post.integer_mode.Delta2_tilde;
         SimulationOptions so = options.simulation;
         so.record_trajectory = false;
-        const SimulationResult r = simulate(s, so);
+        const SimulationResult r = simulate_certified(s, so);
         row.l_Delta = r.l_Delta;
         if (r.status != IntegrationStatus::success)
           row.Delta2_bar = Quantity::outside("simulation stopped: " + r.reason);

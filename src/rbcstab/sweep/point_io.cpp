@@ -31,7 +31,7 @@ std::string fnv1a_hex(std::string_view text) {
 }
 
 namespace {
-constexpr std::size_t kFields = 14;
+constexpr std::size_t kFields = 16;
 constexpr std::string_view kChecksumMark = " *";
 constexpr std::size_t kChecksumDigits = 16;
 
@@ -57,7 +57,8 @@ std::string point_to_line(const PointResult& p, const std::string& config_hash) 
   ss << "P " << config_hash << ' ' << p.index << ' ' << to_string(p.verdict) << ' ' << p.l_Delta << ' '
      << number_text(p.growth) << ' ' << int(p.oscillating) << ' ' << number_text(p.sigma_final) << ' '
      << to_string(p.status) << ' ' << number_text(p.t_reached) << ' ' << p.steps << ' ' << p.failed_steps << ' '
-     << p.rhs_evaluations << ' ' << number_text(p.seconds) << " |" << reason;
+     << p.rhs_evaluations << ' ' << number_text(p.seconds) << ' ' << number_text(p.terminated_at) << ' '
+     << number_text(p.margin) << " |" << reason;
   const std::string body = ss.str();
   return body + std::string(kChecksumMark) + fnv1a_hex(body) + '\n';
 }
@@ -112,8 +113,9 @@ ParsedPoint parse_point_line(const std::string& line, const std::string& config_
       {"growth", parse_double(f[5], p.growth)},    {"oscillating", parse_int(f[6], osc) && (osc == 0 || osc == 1)},
       {"sigma_final", parse_double(f[7], p.sigma_final)}, {"t_reached", parse_double(f[9], p.t_reached)},
       {"steps", parse_int(f[10], p.steps)},        {"failed_steps", parse_int(f[11], p.failed_steps)},
-      {"rhs_evaluations", parse_int(f[12], p.rhs_evaluations)}, {"seconds", parse_double(f[13], p.seconds)}};
-  static const std::size_t field_of[] = {2, 4, 5, 6, 7, 9, 10, 11, 12, 13};
+      {"rhs_evaluations", parse_int(f[12], p.rhs_evaluations)}, {"seconds", parse_double(f[13], p.seconds)},
+      {"terminated_at", parse_double(f[14], p.terminated_at)}, {"margin", parse_double(f[15], p.margin)}};
+  static const std::size_t field_of[] = {2, 4, 5, 6, 7, 9, 10, 11, 12, 13, 14, 15};
   for (std::size_t k = 0; k < std::size(checks); ++k)
     if (!checks[k].second) return {std::nullopt, std::string(checks[k].first) + " '" + f[field_of[k]] + "' is not valid"};
   try {

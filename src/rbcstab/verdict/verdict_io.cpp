@@ -11,6 +11,7 @@
 #include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/verdict/certified_run.hpp"
 
 namespace rbcstab {
 
@@ -142,6 +143,12 @@ std::string summary_text(const SceneFile& file, const SimulationResult& r, const
       << r.counters.rhs_evaluations << " RHS and " << r.counters.jacobian_evaluations << " Jacobian evaluations, "
       << r.seconds << " s with " << to_string(file.options.integrator.stepper) << " at rtol "
       << file.options.integrator.rtol << "\n";
+  if (r.early.terminated)
+    out << "Early stop: at t = " << r.early.terminated_at << " the state was certified on an attracting " << r.early.kind
+        << " (margin 1 - max |mu| = " << r.early.margin << " +- " << r.early.margin_error << ", distance "
+        << r.early.distance << "); the run resumed on it at t = " << r.early.resumed_at << "\n";
+  else if (!r.early.note.empty())
+    out << "Full horizon: " << r.early.note << "\n";
   if (r.status != IntegrationStatus::success)
     out << "Status: " << to_string(r.status) << " at t = " << r.t_reached << ": " << r.reason << "\n";
   else
@@ -269,7 +276,9 @@ std::string thresholds_text(const SceneFile& file, const ThresholdReport& t) {
 SummaryRun run_summary(SceneFile file) {
   const ReducedTransient transient = truncation_transient(file.scene);
   SummaryRun out{std::move(file), {}, {}};
-  out.run = simulate_truncated(out.file, out.file.options, &transient);
+  SimulationOptions options = out.file.options;
+  options.record_trajectory = false;  // the summary reports the run at T and its tail, not its samples
+  out.run = simulate_scene(out.file, options, &transient);
   out.prediction = predict(out.file.scene, transient, &out.run);
   return out;
 }

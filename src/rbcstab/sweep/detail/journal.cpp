@@ -23,9 +23,10 @@ namespace {
 double now() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
-// v2: records carry checksums. A v1 journal (no checksums) is refused rather than trusted.
+// v2: records carry checksums; v3: and the early termination (terminated_at, margin). Older journals are
+// refused rather than trusted.
 constexpr const char* kMagic = "# rbcstab diagram journal ";
-std::string header(const std::string& hash) { return std::string(kMagic) + "v2 " + hash + "\n"; }
+std::string header(const std::string& hash) { return std::string(kMagic) + "v3 " + hash + "\n"; }
 std::string lock_path(const std::string& path) { return path + ".lock"; }
 
 void write_all(int fd, const std::string& text, const std::string& path) {
@@ -107,10 +108,12 @@ void Journal::load(const DiagramSpec& spec, int L) {
       rewrite = true;  // torn header: start again
     } else {
       const std::string first = content.substr(0, eol);
-      const bool old = first.rfind(std::string(kMagic) + "v1 ", 0) == 0;
+      const bool v1 = first.rfind(std::string(kMagic) + "v1 ", 0) == 0;
+      const bool v2 = first.rfind(std::string(kMagic) + "v2 ", 0) == 0;
       throw InvalidArgument("journal", "journal '" + path_ + "' " +
-                                           (old ? "has the older format v1 (records without checksums)"
-                                                : "belongs to another configuration") +
+                                           (v1   ? "has the older format v1 (records without checksums)"
+                                            : v2 ? "has the older format v2 (records without the early termination)"
+                                                 : "belongs to another configuration") +
                                            " (its first line is '" + first + "', this run needs '" +
                                            h.substr(0, h.size() - 1) + "'): remove it or choose another --journal");
     }

@@ -1,0 +1,101 @@
+// Certified early termination (verdict/certified_run.hpp) against the full-horizon runs, in the same process:
+// the paper's panels at 64 x 64 (scenes/*.toml, 2 threads: run_diagram with and without run.full_horizon) and
+// one run of the default scene. Counters: both wall times, their ratio, points stopped early, verdicts or
+// l_Delta that differ (must be 0), and the work (RHS evaluations of the runs and of the certification).
+// docs/benchmarks.md records the numbers.
+#include <benchmark/benchmark.h>
+
+#include <chrono>
+#include <ctime>
+#include <cmath>
+#include <string>
+
+#include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/sweep/diagram.hpp"
+#include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/verdict/certified_run.hpp"
+
+namespace {
+
+const char* const kPanels[] = {"fig4a_op", "fig4b_op", "fig4c_op", "appE_a_ip", "appE_b_ip", "appE_c_ip"};
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+// CPU time of the whole process (every thread): less sensitive than wall time to other load on the machine.
+double cpu_since(std::clock_t start) { return double(std::clock() - start) / CLOCKS_PER_SEC; }
+
+// range(0): the panel (kPanels), range(1): points per axis, range(2): threads.
+void BM_PanelEarlyVsFull(benchmark::State& state) {
+  const rbcstab::SceneFile sf = rbcstab::load_scene(std::string(RBCSTAB_SCENES_DIR) + "/" +
+                                                    kPanels[state.range(0)] + ".toml");
+  rbcstab::DiagramSpec spec = rbcstab::diagram_spec(sf);
+  spec.x.count = spec.y.count = int(state.range(1));
+  rbcstab::DiagramOptions o;
+  o.threads = int(state.range(2));
+  rbcstab::SimulationOptions full_options = sf.options;
+  full_options.full_horizon = true;
+  double full_s = 0, early_s = 0, full_cpu = 0, early_cpu = 0;
+  std::size_t terminated = 0, differing = 0, full_rhs = 0, early_rhs = 0;
+  for (auto _ : state) {
+    auto start = std::chrono::steady_clock::now();
+    std::clock_t cpu = std::clock();
+    const rbcstab::DiagramRun full = rbcstab::run_diagram(sf.scene, full_options, spec, o);
+    full_s += seconds_since(start);
+    full_cpu += cpu_since(cpu);
+    start = std::chrono::steady_clock::now();
+    cpu = std::clock();
+    const rbcstab::DiagramRun early = rbcstab::run_diagram(sf.scene, sf.options, spec, o);
+    early_s += seconds_since(start);
+    early_cpu += cpu_since(cpu);
+    for (std::size_t k = 0; k < early.points.size(); ++k) {
+      const rbcstab::PointResult& a = early.points[k];
+      const rbcstab::PointResult& b = full.points[k];
+      terminated += std::isfinite(a.terminated_at) ? 1 : 0;
+      differing += a.verdict != b.verdict || a.l_Delta != b.l_Delta ? 1 : 0;
+      early_rhs += a.rhs_evaluations;
+      full_rhs += b.rhs_evaluations;
+    }
+  }
+  state.SetLabel(kPanels[state.range(0)]);
+  state.counters["full_s"] = full_s;
+  state.counters["early_s"] = early_s;
+  state.counters["speedup"] = full_s / early_s;
+  state.counters["full_cpu_s"] = full_cpu;
+  state.counters["early_cpu_s"] = early_cpu;
+  state.counters["terminated"] = double(terminated);
+  state.counters["differing"] = double(differing);
+  state.counters["rhs_ratio"] = double(full_rhs) / double(early_rhs);
+}
+BENCHMARK(BM_PanelEarlyVsFull)
+    ->ArgsProduct({{0, 1, 2, 3, 4, 5}, {64}, {2}})
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(1);
+
+// One run of the default scene (Fig. 3, out of plane, L = 10, rtol 1e-8) as `rbcstab simulate` makes it:
+// range(0) = 1 early termination, 0 full horizon. Counters: the run's integration time (what the JSON's
+// "seconds" reports), its RHS evaluations and the certification's.
+void BM_DefaultScene(benchmark::State& state) {
+  rbcstab::SimulationOptions o;
+  o.full_horizon = state.range(0) == 0;
+  double seconds = 0;
+  std::size_t runs = 0, rhs = 0, certification = 0;
+  for (auto _ : state) {
+    const rbcstab::SimulationResult r = rbcstab::simulate_certified(rbcstab::Scene{}, o);
+    benchmark::DoNotOptimize(r.sigma_final);
+    seconds += r.seconds;
+    rhs += r.counters.rhs_evaluations;
+    certification += r.early.work.rhs_evaluations;
+    ++runs;
+  }
+  state.SetLabel(state.range(0) ? "early" : "full horizon");
+  state.counters["integration_ms"] = 1e3 * seconds / double(runs);
+  state.counters["rhs"] = double(rhs) / double(runs);
+  state.counters["certification_rhs"] = double(certification) / double(runs);
+}
+BENCHMARK(BM_DefaultScene)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

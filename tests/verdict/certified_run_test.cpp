@@ -1,0 +1,391 @@
+// Certified early termination (verdict/certified_run.hpp). Oracle: the full-horizon run of the same scene
+// (simulate without a certifier), point by point over 16 x 16 grids of the paper's panels; near-threshold and
+// non-attracting scenes that must not stop early; the certificate in every output.
+//
+// Tolerances. Verdicts, l_Delta and the oscillation flag must be equal. Delta_l(T), the tail means, sigma(T) and
+// its tail mean differ by the full run's own integration error: at rtol 1e-8 it reaches 4.3e-8 (Delta) and 7e-5
+// (sigma, App. E(c)) against rtol 1e-12 references, while the early runs, integrated over the last periods only,
+// stay closer to the references (measured 4.5e-9 and 2.8e-6 there). So each value must agree to 1e-6 (Delta_total,
+// max(1, |sigma|)); where it does not, an rtol 1e-12 reference of that point must find the early value at least as
+// accurate as the full one (to 1e-8), and no difference may exceed 1e-4. A decayed mode's Delta_l(T) (ln Delta_l
+// advanced over the skipped periods to first order) matched to 1.3e-5 in ln Delta_l: 1e-4.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "rbcstab/analysis/steady_states.hpp"
+#include "rbcstab/analysis/thresholds.hpp"
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/io/json.hpp"
+#include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/sweep/diagram.hpp"
+#include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/sweep/diagram_output.hpp"
+#include "rbcstab/sweep/point_io.hpp"
+#include "rbcstab/verdict/certified_run.hpp"
+#include "rbcstab/verdict/verdict_io.hpp"
+
+namespace rbcstab {
+namespace {
+
+constexpr double kTwoPi = 2 * std::numbers::pi;
+
+SceneFile panel(const std::string& name) { return load_scene(std::string(RBCSTAB_SCENES_DIR) + "/" + name + ".toml"); }
+
+// The diagram classifier's l: argmax_l [X_l - Delta_l(0)] with X per the panel's rule.
+int classified_mode(const SimulationResult& r, Classifier c) {
+  const bool tail = c == Classifier::tail_mean || (c == Classifier::automatic && r.oscillating);
+  const std::vector<double>& X = tail ? r.Delta_tail_mean : r.Delta_final;
+  std::size_t best = 0;
+  for (std::size_t k = 1; k < X.size(); ++k)
+    if (X[k] - r.Delta_initial[k] > X[best] - r.Delta_initial[best]) best = k;
+  return int(best) + 2;
+}
+
+// What every certificate must say (EarlyTerminationOptions defaults, the run's rtol 1e-8).
+void expect_certificate(const SimulationResult& r, const SimulationOptions& o, const std::string& where) {
+  const EarlyTermination& e = r.early;
+  EXPECT_EQ(e.kind, "periodic_orbit") << where;
+  EXPECT_EQ(e.period, kTwoPi) << where;
+  EXPECT_GE(e.margin - e.margin_error, 1 - std::exp(-kTwoPi * 1e-3)) << where;
+  EXPECT_GE(e.rate, 1e-3) << where;
+  EXPECT_LE(e.distance, 1e-3) << where;
+  EXPECT_LE(e.residual, 1e-9) << where;
+  EXPECT_LE(e.decay_bound, o.integrator.rtol / 10) << where;
+  EXPECT_LE(e.resumed_at, r.T - o.tail_window) << where;
+  const double periods = (e.resumed_at - e.terminated_at) / kTwoPi;
+  EXPECT_NEAR(periods, std::round(periods), 1e-9) << where;
+  EXPECT_GE(periods, 1) << where;
+  EXPECT_GE(e.attempts, 1) << where;
+  EXPECT_GT(e.work.rhs_evaluations, 0u) << where;
+}
+
+// The values a run reports at T, each with its scale: Delta_l(T) and the tail means (Delta_total), sigma(T) and
+// its tail mean (max(1, |sigma|)), r(T) (1).
+std::vector<std::pair<double, double>> reported(const SimulationResult& r) {
+  std::vector<std::pair<double, double>> v;
+  for (std::size_t k = 0; k < r.Delta_final.size(); ++k) {
+    v.emplace_back(r.Delta_final[k], r.Delta_total_initial);
+    v.emplace_back(r.Delta_tail_mean[k], r.Delta_total_initial);
+  }
+  v.emplace_back(r.sigma_final, std::max(1.0, std::abs(r.sigma_final)));
+  v.emplace_back(r.sigma_tail_mean, std::max(1.0, std::abs(r.sigma_tail_mean)));
+  v.emplace_back(r.r_final, 1.0);
+  return v;
+}
+
+void expect_values_agree(const Scene& s, const SimulationOptions& o, const SimulationResult& early,
+                         const SimulationResult& full, const std::string& where) {
+  const auto a = reported(early), b = reported(full);
+  bool close = true;
+  for (std::size_t k = 0; k < a.size(); ++k) {
+    EXPECT_NEAR(a[k].first, b[k].first, 1e-4 * b[k].second) << where << " value " << k;
+    close = close && std::abs(a[k].first - b[k].first) <= 1e-6 * b[k].second;
+  }
+  if (close) return;
+  SimulationOptions tight = o;
+  tight.integrator.rtol = 1e-12;
+  tight.integrator.atol = 1e-15;
+  const auto ref = reported(simulate(s, tight));
+  for (std::size_t k = 0; k < a.size(); ++k)
+    EXPECT_LE(std::abs(a[k].first - ref[k].first), std::abs(b[k].first - ref[k].first) + 1e-8 * b[k].second)
+        << where << " value " << k << ": early " << a[k].first << ", full " << b[k].first << ", reference "
+        << ref[k].first;
+}
+
+// Every point of a 16 x 16 grid of the panel, early against full horizon. Also counts the points stopped early
+// (at least min_terminated: measured 134 for Fig. 4(b) and App. E(b), >= 252 for the others).
+void compare_panel(const std::string& name, int min_terminated) {
+  const SceneFile sf = panel(name);
+  DiagramSpec spec = diagram_spec(sf);
+  spec.x.count = spec.y.count = 16;
+  SimulationOptions o = sf.options;
+  o.record_trajectory = false;
+  int terminated = 0;
+  for (std::size_t idx = 0; idx < spec.size(); ++idx) {
+    const Scene s = point_scene(sf.scene, spec, idx);
+    const std::string where = name + " point " + std::to_string(idx);
+    const SimulationResult full = simulate(s, o);
+    const SimulationResult early = simulate_certified(s, o);
+    ASSERT_EQ(full.status, IntegrationStatus::success) << where;
+    ASSERT_EQ(early.status, IntegrationStatus::success) << where;
+    EXPECT_EQ(classified_mode(early, spec.classifier), classified_mode(full, spec.classifier)) << where;
+    EXPECT_EQ(early.l_Delta, full.l_Delta) << where;
+    EXPECT_EQ(early.l_Delta_final, full.l_Delta_final) << where;
+    EXPECT_EQ(early.oscillating, full.oscillating) << where;
+    for (std::size_t k = 0; k < full.Delta_final.size(); ++k)
+      if (full.Delta_final[k] > 1e-290 && early.Delta_final[k] > 1e-290) {
+        EXPECT_NEAR(std::log(early.Delta_final[k]), std::log(full.Delta_final[k]), 1e-4) << where << " l = " << k + 2;
+      }
+    expect_values_agree(s, o, early, full, where);
+    if (early.early.terminated) {
+      ++terminated;
+      expect_certificate(early, o, where);
+      EXPECT_LT(early.counters.steps, full.counters.steps) << where;
+    } else {
+      // No certificate: the same integration as the full run, bit for bit, and a note saying why.
+      EXPECT_EQ(early.Delta_final, full.Delta_final) << where;
+      EXPECT_EQ(early.counters.steps, full.counters.steps) << where;
+      EXPECT_FALSE(early.early.note.empty()) << where;
+    }
+  }
+  EXPECT_GE(terminated, min_terminated) << name;
+}
+
+TEST(CertifiedRun, Fig4aPanelEqualsFullHorizon) { compare_panel("fig4a_op", 200); }
+TEST(CertifiedRun, Fig4bPanelEqualsFullHorizon) { compare_panel("fig4b_op", 100); }
+TEST(CertifiedRun, Fig4cPanelEqualsFullHorizon) { compare_panel("fig4c_op", 200); }
+TEST(CertifiedRun, AppEaPanelEqualsFullHorizon) { compare_panel("appE_a_ip", 200); }
+TEST(CertifiedRun, AppEbPanelEqualsFullHorizon) { compare_panel("appE_b_ip", 100); }
+TEST(CertifiedRun, AppEcPanelEqualsFullHorizon) { compare_panel("appE_c_ip", 200); }
+
+// The Fig. 4(b) out-of-plane scene (beta = 0: the ellipsoid is an equilibrium) at ln B = lnB and the ln C where
+// the slowest mode l >= 3 grows at exactly `rate` at the exact equilibrium, found by bisection on
+// max_l Upsilon_l(sigma_R^eq) (continuous in C; sigma_R^eq from analysis/steady_states).
+Scene at_growth_rate(double lnB, double rate, double delta) {
+  Scene s = panel("fig4b_op").scene;
+  s.beta = 0;
+  s.delta = delta;
+  s.T = 500;
+  s.dt = 500;
+  s.parameters.B = std::exp(lnB);
+  auto top = [&](double lnC) {
+    Parameters p = s.parameters;
+    p.C = std::exp(lnC);
+    const double sigma = out_of_plane_equilibrium(p).sigma_R;
+    double best = -INFINITY;
+    for (int l = 3; l <= s.L; ++l) best = std::max(best, Upsilon_l(p, l, sigma));
+    return best - rate;
+  };
+  double lo = -5.5, hi = 2.0;
+  EXPECT_LT(top(lo) * top(hi), 0);  // a crossing in the panel
+  for (int it = 0; it < 200 && hi - lo > 1e-14; ++it) {
+    const double mid = 0.5 * (lo + hi);
+    (top(mid) * top(lo) > 0 ? lo : hi) = mid;
+  }
+  s.parameters.C = std::exp(0.5 * (lo + hi));
+  return s;
+}
+
+// |Upsilon_l| = 1e-4 (slow decay and slow growth), with the paper's perturbation delta = 1e-3 (the slow mode
+// keeps its amplitude: no refinement converges near it) and with delta = 1e-14 (the slow mode is among the
+// decayed ones: its multiplier exp(+-2 pi 1e-4) fails the margin, min_rate 1e-3): no certificate, and the run is
+// the full-horizon run bit for bit. A clearly decaying mode (-3e-2) in the same plane does stop early, with the
+// same settings.
+TEST(CertifiedRun, NearThresholdSceneIsNotTerminatedEarly) {
+  SimulationOptions o;
+  o.record_trajectory = false;
+  for (double delta : {1e-3, 1e-14})
+    for (double rate : {-1e-4, 1e-4}) {
+      const std::string what = "rate " + std::to_string(rate) + ", delta " + std::to_string(delta);
+      const Scene s = at_growth_rate(0.0, rate, delta);
+      const SimulationResult full = simulate(s, o);
+      const SimulationResult early = simulate_certified(s, o);
+      EXPECT_FALSE(early.early.terminated) << what;
+      EXPECT_GE(early.early.attempts, 1) << what;
+      EXPECT_FALSE(early.early.note.empty()) << what;
+      if (delta < 1e-10) {
+        EXPECT_NE(early.early.note.find("not attracting"), std::string::npos) << what << ": " << early.early.note;
+      }
+      EXPECT_EQ(early.Delta_final, full.Delta_final) << what;
+      EXPECT_EQ(early.l_Delta, full.l_Delta) << what;
+    }
+  const Scene clear = at_growth_rate(0.0, -3e-2, 1e-3);
+  const SimulationResult full = simulate(clear, o);
+  const SimulationResult early = simulate_certified(clear, o);
+  ASSERT_TRUE(early.early.terminated) << early.early.note;
+  EXPECT_EQ(early.early.kind, "equilibrium");  // beta = 0: the forcing is constant in the co-rotating frame
+  EXPECT_LE(early.early.rate, 3.1e-2);         // the slowest direction is the slow mode
+  EXPECT_EQ(early.l_Delta, full.l_Delta);
+  expect_values_agree(clear, o, early, full, "clearly decaying");
+}
+
+// A growing mode too small ever to leave the linearisation radius (delta = 1e-14, Upsilon_l = +1e-2: its
+// amplitude stays below 1e-4 until T): the ellipsoidal state is periodic to every tolerance but not attracting.
+// No certificate; the run is the full run bit for bit, and that run sees the growth (l_Delta = the mode).
+TEST(CertifiedRun, NonAttractingOrbitIsNotTerminatedEarly) {
+  SimulationOptions o;
+  o.record_trajectory = false;
+  const Scene s = at_growth_rate(2.0, 1e-2, 1e-14);
+  const SimulationResult full = simulate(s, o);
+  const SimulationResult early = simulate_certified(s, o);
+  EXPECT_FALSE(early.early.terminated);
+  EXPECT_NE(early.early.note.find("not attracting"), std::string::npos) << early.early.note;
+  EXPECT_EQ(early.Delta_final, full.Delta_final);
+  EXPECT_GE(full.l_Delta, 3);
+  EXPECT_EQ(early.l_Delta, full.l_Delta);
+}
+
+// The margins in the simulate and summary JSON; full_horizon turns the termination off and says so.
+TEST(CertifiedRun, CertificateIsReportedInTheJson) {
+  const Scene s;  // the default scene (Fig. 3, out of plane)
+  const SimulationResult r = simulate_certified(s);
+  ASSERT_TRUE(r.early.terminated) << r.early.note;
+  expect_certificate(r, {}, "default scene");
+  const nlohmann::json j = to_json(r);
+  EXPECT_EQ(j.at("terminated_at").get<double>(), r.early.terminated_at);
+  const nlohmann::json& e = j.at("early_termination");
+  for (const char* key : {"terminated_at", "resumed_at", "kind", "period", "margin", "margin_error", "rate", "residual",
+                          "distance", "decay_bound", "attempts", "rhs_evaluations"})
+    EXPECT_TRUE(e.contains(key)) << key;
+  EXPECT_EQ(e.at("margin").get<double>(), r.early.margin);
+  EXPECT_TRUE(unexplained_nulls(j).empty());
+
+  SimulationOptions full;
+  full.full_horizon = true;
+  const SimulationResult f = simulate_certified(s, full);
+  EXPECT_FALSE(f.early.terminated);
+  EXPECT_EQ(f.early.attempts, 0);
+  const nlohmann::json jf = to_json(f);
+  EXPECT_TRUE(jf.at("terminated_at").is_null());
+  EXPECT_EQ(jf.at("terminated_at_reason"), "full horizon requested");
+  EXPECT_TRUE(unexplained_nulls(jf).empty());
+
+  SceneFile sf;
+  const SummaryRun sum = run_summary(sf);
+  const nlohmann::json js = summary_json(sum.file, sum.run, sum.prediction);
+  EXPECT_TRUE(js.at("terminated_at").is_number());
+  EXPECT_TRUE(js.at("early_termination").contains("margin"));
+  EXPECT_NE(summary_text(sum.file, sum.run, sum.prediction).find("Early stop: at t = "), std::string::npos);
+}
+
+// run.full_horizon is a scene key (TOML true/false, round trip through to_toml) that the diagram honours; the
+// diagram's points carry terminated_at and margin through the JSON and the journal records.
+TEST(CertifiedRun, FullHorizonSceneKeyAndDiagramPoints) {
+  const SceneFile on = parse_scene("[run]\nfull_horizon = true\n");
+  EXPECT_TRUE(on.options.full_horizon);
+  EXPECT_TRUE(parse_scene(to_toml(on)).options.full_horizon);
+  EXPECT_FALSE(parse_scene(to_toml(SceneFile{})).options.full_horizon);
+  EXPECT_THROW(parse_scene("[run]\nfull_horizon = 1\n"), InvalidArgument);
+
+  const SceneFile sf = panel("fig4a_op");
+  DiagramSpec spec = diagram_spec(sf);
+  spec.x.count = spec.y.count = 3;
+  const DiagramRun early = run_diagram(sf.scene, sf.options, spec, {});
+  SimulationOptions full_options = sf.options;
+  full_options.full_horizon = true;
+  const DiagramRun full = run_diagram(sf.scene, full_options, spec, {});
+  EXPECT_NE(config_hash(sf.scene, sf.options, spec), config_hash(sf.scene, full_options, spec));
+  ASSERT_EQ(early.points.size(), full.points.size());
+  int terminated = 0;
+  const std::string hash = config_hash(sf.scene, sf.options, spec);
+  for (std::size_t k = 0; k < early.points.size(); ++k) {
+    const PointResult& a = early.points[k];
+    const PointResult& b = full.points[k];
+    EXPECT_EQ(a.verdict, b.verdict) << k;
+    EXPECT_EQ(a.l_Delta, b.l_Delta) << k;
+    EXPECT_TRUE(std::isnan(b.terminated_at) && std::isnan(b.margin)) << k;
+    if (std::isfinite(a.terminated_at)) {
+      ++terminated;
+      EXPECT_GT(a.margin, 0) << k;
+    }
+    const std::optional<PointResult> back = point_from_line(point_to_line(a, hash), hash, spec);
+    ASSERT_TRUE(back) << k;
+    EXPECT_EQ(std::isnan(back->terminated_at), std::isnan(a.terminated_at)) << k;
+    if (std::isfinite(a.terminated_at)) {
+      EXPECT_EQ(back->terminated_at, a.terminated_at) << k;
+    }
+  }
+  EXPECT_GT(terminated, 0);
+  const nlohmann::json doc = diagram_json(diagram_header(sf.scene, sf.options, spec), spec, early.points, {}, {false});
+  EXPECT_EQ(doc.at("summary").at("terminated_early").get<int>(), terminated);
+  const std::vector<PointResult> read = points_from_json(doc, spec);
+  for (std::size_t k = 0; k < read.size(); ++k)
+    if (std::isfinite(early.points[k].margin)) {
+      EXPECT_EQ(read[k].margin, early.points[k].margin) << k;
+    }
+}
+
+// A recorded trajectory holds every sample up to terminated_at and from resumed_at on, none in between.
+TEST(CertifiedRun, TrajectoryHasNoSamplesInTheSkippedSpan) {
+  Scene s;
+  s.dt = 0.5;
+  const SimulationResult r = simulate_certified(s);
+  ASSERT_TRUE(r.early.terminated);
+  const std::vector<double> grid = sampling_grid(s.T, s.dt);
+  std::size_t expected = 0;
+  for (double t : grid) expected += t <= r.early.terminated_at || t >= r.early.resumed_at ? 1 : 0;
+  EXPECT_EQ(r.trajectory.t.size(), expected);
+  for (double t : r.trajectory.t) EXPECT_TRUE(t <= r.early.terminated_at || t >= r.early.resumed_at) << t;
+  EXPECT_EQ(r.trajectory.t.back(), s.T);
+  EXPECT_EQ(r.trajectory.Delta_l.back(), r.Delta_final);
+}
+
+// The reduced level (in plane, no perturbation) and the modal level at L = 2 (out of plane: m = 1 content)
+// stop early and match; the full level (stress-free l >= 3 content) never does and says why.
+TEST(CertifiedRun, EveryLevel) {
+  SimulationOptions o;
+  o.record_trajectory = false;
+  Scene reduced;
+  reduced.beta = std::numbers::pi / 2;
+  reduced.L = 2;
+  reduced.delta = 0;
+  Scene modal2;
+  modal2.L = 2;
+  for (const Scene& s : {reduced, modal2}) {
+    const SimulationResult full = simulate(s, o);
+    const SimulationResult early = simulate_certified(s, o);
+    const std::string level = to_string(early.level.level);
+    EXPECT_TRUE(early.early.terminated) << level << ": " << early.early.note;
+    EXPECT_EQ(early.l_Delta, full.l_Delta) << level;
+    EXPECT_NEAR(early.sigma_final, full.sigma_final, 1e-6 * std::max(1.0, std::abs(full.sigma_final))) << level;
+    EXPECT_NEAR(early.Delta_final[0], full.Delta_final[0], 1e-6 * full.Delta_total_initial) << level;
+    EXPECT_NEAR(early.Psi_final, full.Psi_final, 1e-6) << level;
+  }
+  EXPECT_EQ(simulate_certified(reduced, o).level.level, ModelLevel::reduced);
+  EXPECT_EQ(simulate_certified(modal2, o).level.level, ModelLevel::modal);
+  Scene full_level;
+  full_level.L = 4;
+  full_level.T = 60;
+  full_level.dt = 60;
+  full_level.rest_delta_l = {{3, 1e-4}};
+  const SimulationResult f = simulate_certified(full_level, o);
+  EXPECT_EQ(f.level.level, ModelLevel::full);
+  EXPECT_FALSE(f.early.terminated);
+  EXPECT_NE(f.early.note.find("full level"), std::string::npos) << f.early.note;
+}
+
+TEST(CertifiedRun, OptionsAreValidated) {
+  EXPECT_NO_THROW(EarlyTerminationOptions{}.validate());
+  EarlyTerminationOptions o;
+  o.min_rate = 0;
+  EXPECT_THROW(simulate_certified(Scene{}, {}, o), InvalidArgument);
+  o = {};
+  o.max_distance = 2;
+  EXPECT_THROW(o.validate(), InvalidArgument);
+  o = {};
+  o.attempt_growth = 0.5;
+  EXPECT_THROW(o.validate(), InvalidArgument);
+}
+
+#ifdef RBCSTAB_CLI
+// --full-horizon on the command line.
+TEST(CertifiedRun, FullHorizonFlag) {
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("rbcstab_early_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  auto run = [&](const std::string& flags) {
+    const std::string out = (dir / "out.json").string();
+    EXPECT_EQ(std::system((std::string(RBCSTAB_CLI) + " simulate --json " + flags + " > " + out).c_str()), 0);
+    std::ifstream in(out);
+    return nlohmann::json::parse(in);
+  };
+  EXPECT_TRUE(run("").at("terminated_at").is_number());
+  const nlohmann::json full = run("--full-horizon");
+  EXPECT_TRUE(full.at("terminated_at").is_null());
+  EXPECT_EQ(full.at("terminated_at_reason"), "full horizon requested");
+  std::filesystem::remove_all(dir);
+}
+#endif
+
+}  // namespace
+}  // namespace rbcstab
