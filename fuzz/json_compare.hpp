@@ -19,6 +19,15 @@ inline std::string pattern_of(const std::string& path) {
   return out;
 }
 
+// "<key>_reason" beside a null "<key>": the writer's explanation of the null (explain_nulls, io/json.hpp), which
+// no reader takes back.
+inline bool explains_null(const nlohmann::json& object, const std::string& key) {
+  const std::string suffix = "_reason";
+  if (key.size() <= suffix.size() || key.compare(key.size() - suffix.size(), suffix.size(), suffix) != 0) return false;
+  const auto it = object.find(key.substr(0, key.size() - suffix.size()));
+  return it != object.end() && it->is_null();
+}
+
 // The path of the first value of `written` that `given` does not hold at the same place ("" if none): objects
 // compare by the keys of `written`, arrays element by element and by length, numbers by value (1 == 1.0). The
 // values a writer derives and a reader ignores are skipped: `derived` holds their paths without array indices
@@ -30,6 +39,7 @@ inline std::string first_difference(const nlohmann::json& written, const nlohman
     for (const auto& [key, value] : written.items()) {
       const std::string at = path.empty() ? key : path + "." + key;
       if (derived.count(pattern_of(at)) || derived.count("." + key)) continue;
+      if (explains_null(written, key)) continue;
       const auto it = given.find(key);
       if (it == given.end()) return at + " (missing in the input)";
       if (std::string d = first_difference(value, *it, derived, at); !d.empty()) return d;

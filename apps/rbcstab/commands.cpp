@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 
 #include "checks.hpp"
 
@@ -22,9 +23,12 @@ CLI::Validator whole_number(const std::string& type) {
         if (type == "FLOAT") {
           double v = 0;
           if (!parse_number(text, v)) return "'" + text + "' is not a number";
-          char hex[64];
-          std::snprintf(hex, sizeof hex, "%a", v);
-          text = hex;
+          // Rewritten only when CLI11's reading would differ, so that messages quote the value as given.
+          if (static_cast<double>(std::strtold(text.c_str(), nullptr)) != v) {
+            char hex[64];
+            std::snprintf(hex, sizeof hex, "%a", v);
+            text = hex;
+          }
           return {};
         }
         long long v = 0;

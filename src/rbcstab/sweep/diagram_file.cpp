@@ -1,6 +1,8 @@
 #include "rbcstab/sweep/diagram_file.hpp"
 
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 #include <tuple>
 
 #include "rbcstab/core/error.hpp"
@@ -40,8 +42,11 @@ namespace {
 template <class T>
 void require_pair(const std::vector<T>& v, const std::string& field, const std::string& what) {
   if (v.size() == 2) return;
+  std::ostringstream given;
+  given << std::setprecision(17);
+  for (std::size_t k = 0; k < v.size(); ++k) given << (k ? ", " : "") << v[k];
   throw InvalidArgument(field, field + " takes " + what + ", got " + std::to_string(v.size()) +
-                                   (v.size() == 1 ? " value" : " values"));
+                                   (v.size() == 1 ? " value" : " values") + " (" + given.str() + ")");
 }
 }  // namespace
 
