@@ -4,11 +4,14 @@
 #   run  : runs the main job (summary and report of the default scene, or of the scene flags given after 'run')
 #   test : runs the default test suite (ctest, every label except 'slow')
 #   build: only installs and builds
-# Environment: RBCSTAB_BUILD_DIR (default build/release), RBCSTAB_JOBS (default: number of cores).
+#   sanitize: instead builds the 'asan' preset (AddressSanitizer + UndefinedBehaviorSanitizer, every
+#             finding fatal) and runs the same default suite in it (docs/reliability.md "Sanitizers")
+# Environment: RBCSTAB_BUILD_DIR (default build/release), RBCSTAB_ASAN_BUILD_DIR (default build/asan),
+# RBCSTAB_JOBS (default: number of cores).
 set -euo pipefail
 mode="${1:-run}"
 shift || true
-case "$mode" in run|test|build) ;; *) echo "usage: $0 {run|test|build} [extra args for the main job]" >&2; exit 2;; esac
+case "$mode" in run|test|build|sanitize) ;; *) echo "usage: $0 {run|test|build|sanitize} [extra args for the main job]" >&2; exit 2;; esac
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 build="${RBCSTAB_BUILD_DIR:-$root/build/release}"
@@ -35,7 +38,13 @@ if ((${#missing[@]})); then
   DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 fi
 
-cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRBCSTAB_WERROR=ON >/dev/null
+if [ "$mode" = sanitize ]; then
+  # The sanitizer flags live in the preset only.
+  build="${RBCSTAB_ASAN_BUILD_DIR:-$root/build/asan}"
+  (cd "$root" && cmake --preset asan -B "$build" >/dev/null)
+else
+  cmake -S "$root" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DRBCSTAB_WERROR=ON >/dev/null
+fi
 cmake --build "$build" -j "$jobs"
 
 # `import rbcstab` from any directory with Debian's python3: a .pth file in its site directory names the build's
@@ -63,6 +72,13 @@ case "$mode" in
   test)
     # OpenMPI refuses to run as root unless told; CI runs as root.
     export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+    ctest --test-dir "$build" -LE slow --output-on-failure -j "$jobs" --timeout 900
+    ;;
+  sanitize)
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+    # Stop at the first finding with a stack trace; options given by the caller come last and win.
+    export ASAN_OPTIONS="halt_on_error=1:detect_leaks=1:check_initialization_order=1:strict_init_order=1${ASAN_OPTIONS:+:$ASAN_OPTIONS}"
+    export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1${UBSAN_OPTIONS:+:$UBSAN_OPTIONS}"
     ctest --test-dir "$build" -LE slow --output-on-failure -j "$jobs" --timeout 900
     ;;
   build) ;;

@@ -1,4 +1,5 @@
-# cmake -DBUILD_DIR=... -DCONSUMER_SOURCE=... -DWORK=... -DGENERATOR=... -DCXX=... -P package_check.cmake
+# cmake -DBUILD_DIR=... -DCONSUMER_SOURCE=... -DWORK=... -DGENERATOR=... -DCXX=... [-DBUILD_TYPE=...]
+#       [-DCXX_FLAGS=... -DEXE_LINKER_FLAGS=...] -P package_check.cmake
 cmake_minimum_required(VERSION 3.22)
 file(REMOVE_RECURSE "${WORK}")
 set(prefix "${WORK}/prefix")
@@ -26,7 +27,8 @@ if(NOT BUILD_TYPE)
   set(BUILD_TYPE Release)
 endif()
 step("consumer configure" "${CMAKE_COMMAND}" -S "${CONSUMER_SOURCE}" -B "${WORK}/consumer" -G "${GENERATOR}"
-     "-DCMAKE_CXX_COMPILER=${CXX}" "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}")
+     "-DCMAKE_CXX_COMPILER=${CXX}" "-DCMAKE_PREFIX_PATH=${prefix}" "-DCMAKE_BUILD_TYPE=${BUILD_TYPE}"
+     "-DCMAKE_CXX_FLAGS=${CXX_FLAGS}" "-DCMAKE_EXE_LINKER_FLAGS=${EXE_LINKER_FLAGS}")
 step("consumer build" "${CMAKE_COMMAND}" --build "${WORK}/consumer")
 step("consumer run" "${WORK}/consumer/rbcstab_consumer")
 string(FIND "${out}" "rbcstab consumer ok" pos)
