@@ -115,8 +115,7 @@ nlohmann::json to_json(const Parameters& p) {
   nlohmann::json j = nlohmann::json::object();
   for (const ParameterRow& r : parameter_table())
     if (is_material(r.id) && r.scale == AxisScale::linear) j[r.name] = number_or_null(get_parameter(s, r.id));
-  // C_note predates the <key>_reason convention and is kept for readers of it; S has only S_reason.
-  if (!std::isfinite(p.C)) j["C_reason"] = j["C_note"] = "infinite: the vesicle limit";
+  if (!std::isfinite(p.C)) j["C_reason"] = "infinite: the vesicle limit";
   if (!std::isfinite(p.S())) j["S_reason"] = S_reason(p);
   explain_nulls(j, nonfinite_reason(p));
   return j;
