@@ -9,6 +9,7 @@
 #include "rbcstab/analysis/analysis_io.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
 #include "rbcstab/report/panels.hpp"
+#include "progress.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -19,6 +20,7 @@ struct PostOptions {
   bool json = false;
   bool fig6e = false;
   std::vector<double> fig6e_lambda, fig6e_B, fig6e_C;
+  ProgressOutput progress;
 };
 
 int run_fig6e(const PostOptions& o) {
@@ -29,6 +31,7 @@ int run_fig6e(const PostOptions& o) {
   if (!o.fig6e_lambda.empty()) f.lambdas = o.fig6e_lambda;
   if (!o.fig6e_B.empty()) f.B = o.fig6e_B;
   if (!o.fig6e_C.empty()) f.C = o.fig6e_C;
+  f.on_progress = o.progress.callback("post --fig6e:", "runs");
   const std::vector<Fig6eRow> rows = fig6e_table(f);
   if (o.json) {
     std::cout << fig6e_json(sf, rows).dump(2) << "\n";
@@ -40,7 +43,9 @@ int run_fig6e(const PostOptions& o) {
 
 int run(const PostOptions& o) {
   if (o.fig6e) return run_fig6e(o);
-  const PostRun p = run_post(o.scene.read());
+  SceneFile sf = o.scene.read();
+  sf.options.on_progress = o.progress.callback("post: t =", "");
+  const PostRun p = run_post(std::move(sf));
   if (o.json)
     std::cout << post_json(p.file, p.post, p.run).dump(2) << "\n";
   else
@@ -53,6 +58,7 @@ static Runner add_post(CLI::App& app) {
   auto o = std::make_shared<PostOptions>();
   o->scene.add_to(app);
   app.add_flag("--json", o->json, "print one JSON object on stdout");
+  o->progress.add_flags(app);
   app.add_flag("--fig6e", o->fig6e,
                "print the Fig. 6e table instead (Delta~2 vs simulated Delta-bar_2 over lambda, B, C; ~80 runs; Delta, "
                "Delta0, beta, delta, L, T from the scene)");

@@ -62,6 +62,9 @@ std::vector<Fig6eRow> fig6e_table(const Fig6eOptions& options) {
         row.ratio = ratio(row.Delta2_tilde);
         row.ratio_integer = ratio(row.Delta2_tilde_integer);
         rows.push_back(row);
+        if (options.on_progress)
+          options.on_progress(double(rows.size()),
+                              double(options.lambdas.size() * options.B.size() * options.C.size()));
       }
   return rows;
 }

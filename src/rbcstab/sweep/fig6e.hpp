@@ -5,6 +5,7 @@
 
 #include "rbcstab/analysis/post_instability.hpp"
 #include "rbcstab/analysis/quantity.hpp"
+#include "rbcstab/core/progress.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 
 namespace rbcstab {
@@ -18,6 +19,7 @@ struct Fig6eOptions {
   int L = 10;
   double T = 500;                                                 // the paper's horizon
   SimulationOptions simulation;                                   // tail_window = 10: the paper's average
+  ProgressCallback on_progress;                                   // runs done of the grid's, after each run
   void validate() const;
 };
 struct Fig6eRow {
