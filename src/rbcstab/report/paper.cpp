@@ -374,11 +374,28 @@ void fig3(Composer& c, int k, int n) {
   // (a): the formulas at alpha = B/C of the scene.
   const SceneFile a = c.scene("fig3a_criterion");
   const Parameters& p = a.scene.parameters;
-  const double alpha = p.alpha(), s_star = sigma_star(alpha), s_below = 1.25 * s_star;
+  const double alpha = p.alpha(), s_star = sigma_star(alpha);
   auto crit = [&](double l, double s) {
     const double Pi = l * (l + 1);
     return -Pi * Pi - s * Pi - 4 * alpha;
   };
+  // The paper does not print its sigma below sigma_*: the first sigma in (3 sigma_*, sigma_*) (steps of 0.01 sigma_*)
+  // at which l_c rounds to another mode than the fastest-growing one, as its panel illustrates; 1.25 sigma_* if none.
+  auto fastest_mode = [&](double s) {
+    int best_mode = 2;
+    for (int l = 3; l <= 40; ++l)
+      if (Upsilon_l(p, l, s) > Upsilon_l(p, best_mode, s)) best_mode = l;
+    return best_mode;
+  };
+  double s_below = 1.25 * s_star;
+  for (int i = 1; i <= 200; ++i) {
+    const double s = s_star * (1 + 0.01 * i);
+    if (int(std::lround(unstable_band(s, alpha).l_c.value)) != fastest_mode(s)) {
+      s_below = s;
+      break;
+    }
+  }
+  const std::string s_text = "sigma = " + num(s_below / s_star, 3) + " sigma_*";
   std::ostringstream ca, cb;
   ca << "l,criterion_sigma_star,criterion_below\n";
   double best = -1e300, best_l = 0;
@@ -393,12 +410,12 @@ void fig3(Composer& c, int k, int n) {
     if (crit(l, s_star) > best) best = crit(l, s_star), best_l = l;
   }
   cb << "l,B_Upsilon\n";
-  int mismatches = 0, fastest = 2;
+  int mismatches = 0;
+  const int fastest = fastest_mode(s_below);
   for (int l = 2; l <= 8; ++l) {
     const double rate = p.B * Upsilon_l(p, l, s_below);
     cb << l << ',' << csv_number(rate) << '\n';
     mismatches += (rate > 0) != (crit(l, s_below) > 0);
-    if (rate > p.B * Upsilon_l(p, fastest, s_below)) fastest = l;
   }
   for (int l = 9; l <= 40; ++l) mismatches += (Upsilon_l(p, l, s_below) > 0) != (crit(l, s_below) > 0);
   const std::string fa = c.put("criterion.csv", ca.str()), fb = c.put("growth_rates.csv", cb.str());
@@ -415,7 +432,7 @@ void fig3(Composer& c, int k, int n) {
              {"series",
               {{{"data", fa}, {"x", "l"}, {"y", "criterion_sigma_star"}, {"label", "$\\sigma=\\sigma_*$"},
                 {"color", "black"}, {"ls", "--"}, {"lw", 1.5}},
-               {{"data", fa}, {"x", "l"}, {"y", "criterion_below"}, {"label", "$\\sigma=1.25\\,\\sigma_*$"},
+               {{"data", fa}, {"x", "l"}, {"y", "criterion_below"}, {"label", "$\\sigma=" + num(s_below / s_star, 3) + "\\,\\sigma_*$"},
                 {"color", "black"}, {"ls", "-"}, {"lw", 1.8}},
                {{"data", fb}, {"x", "l"}, {"y", "B_Upsilon"}, {"label", "$\\mathcal{B}\\Upsilon_l$ (right axis)"},
                 {"color", "tab:green"}, {"ls", "-"}, {"lw", 1.2}, {"marker", "o"}, {"right", true}}}},
@@ -431,11 +448,12 @@ void fig3(Composer& c, int k, int n) {
           "alpha = B/C = " + num(alpha) + " from fig3a_criterion.toml");
   c.claim("(a) The roots of B Upsilon_l are those of the simplified criterion (same sign at every l)",
           std::to_string(mismatches) + " sign mismatches over l = 2..40", "0", mismatches == 0,
-          "sigma = 1.25 sigma_* (the paper does not print its value below sigma_*)");
+          s_text + " (the paper does not print its value below sigma_*)");
   c.claim("(a) l_c can differ from the fastest-growing mode",
           "l_c = " + num(band.l_c.value) + ", fastest-growing integer mode " + std::to_string(fastest),
-          "round(l_c) != fastest mode (the paper's illustration)", int(std::lround(band.l_c.value)) != fastest,
-          "sigma = 1.25 sigma_*; integer l only (Upsilon_l is defined at integer l)");
+          "round(l_c) != fastest mode at some sigma < sigma_*", int(std::lround(band.l_c.value)) != fastest,
+          s_text + ": the first sigma below sigma_* (steps of 0.01 sigma_*, down to 3 sigma_*) where they differ; "
+          "integer l only (Upsilon_l is defined at integer l)");
 
   // (b)-(e): OP and IP runs with their reduced companions (sigma_R).
   const std::vector<Line> runs = c.lines({"fig3_b_op", "fig3_c_ip"}, true);
@@ -793,9 +811,12 @@ void app_vesicle(Composer& c, bool ip, int k, int n) {
       worst = std::max(worst, std::abs(tail_mean(at(1, cs).t(), at(1, cs).run.trajectory.Psi, w) - std::numbers::pi / 2));
       worst_r = std::max(worst_r, tail_range(at(1, cs).t(), at(1, cs).run.trajectory.r, w));
     }
+    const double Lambda = at(1, 0).file.scene.parameters.Lambda();
     c.claim("lambda = 1: all three converge to tank-treading along Psi = pi/2",
             "max |<Psi> - pi/2| = " + num(worst, 3) + ", max tail range of r = " + num(worst_r, 3),
-            "< 0.05 and < 1e-3", worst < 0.05 && worst_r < 1e-3, how);
+            "< 0.05 and < 1e-3", worst < 0.05 && worst_r < 1e-3,
+            how + "; the reduced equations' tank-treading state at S >> 1 has cos Psi = Lambda r, i.e. Psi = arccos(" +
+                num(Lambda, 3) + ") = " + num(std::acos(std::min(1.0, Lambda)), 3) + " at r = 1, not pi/2");
     for (int lam : {3, 5})
       c.claim("lambda = " + std::to_string(lam) + ": the vesicle-like RBC tumbles",
               "Psi(T) - Psi(0) = " + num(turn(at(lam, 0))), "< -2 pi", turn(at(lam, 0)) < -2 * std::numbers::pi, how);
@@ -835,9 +856,9 @@ void app_vesicle(Composer& c, bool ip, int k, int n) {
   for (auto& p : bottom) panels.push_back(p);
   c.end(panels, 2, 3, 1800, 900,
         std::string("Unperturbed reduced dynamics, ") + (ip ? "in plane" : "out of plane") +
-            ": vesicle-like (C = 1e6, dashed green), unstressed (Delta = Delta0, C = 1, dash-dot) and enucleated RBC "
-            "(solid) at lambda = 1, 3, 5; top r(t), bottom Psi(t). Delta = 1 and the enucleated C = 0.04 are this "
-            "repository's choice (not printed in the paper).");
+            ": vesicle-like (C = 1e6, dashed green), unstressed (Delta = Delta0 = 1, C = 1, dash-dot) and enucleated RBC "
+            "(Delta = 1, Delta0 = 0.01, C = 1, solid) at lambda = 1, 3, 5; top r(t), bottom Psi(t). Delta = 1 and "
+            "Delta0 = 0.01 are this repository's choice (not printed in the paper).");
 }
 
 void app_suppressed(Composer& c, int k, int n) {
