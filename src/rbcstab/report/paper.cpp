@@ -289,19 +289,32 @@ json lines_panel(const std::string& title, const std::string& ylabel, json s, co
 }
 
 // The time axis: logarithmic from t = 1 when every drawn curve settles (to 1% of its swing) before T/5, so the
-// fast transient is visible; linear over the run otherwise (oscillating runs keep their cycles readable).
+// fast transient is visible; when a curve still oscillates at the end, linear over the transient and a few cycles
+// ([0, 4 t_band], t_band: when every curve has entered the band it oscillates in over the last 10% of the run), so
+// the cycles stay readable (the CSV holds the whole run); linear over the run otherwise.
 std::string time_axis(const std::vector<const std::vector<double>*>& curves, const std::vector<double>& t,
                       std::pair<double, double>& xlim) {
-  double settle = 0;
+  const double T = t.back();
+  double settle = 0, band = 0;
+  bool oscillates = false;
   for (const auto* x : curves) {
     const auto [lo, hi] = std::minmax_element(x->begin(), x->end());
-    settle = std::max(settle, settle_time(t, *x, 0.01 * std::max(*hi - *lo, 1e-300)));
+    const double swing = std::max(*hi - *lo, 1e-300);
+    settle = std::max(settle, settle_time(t, *x, 0.01 * swing));
+    const std::size_t k0 = std::size_t(std::lower_bound(t.begin(), t.end(), 0.9 * T) - t.begin());
+    const auto [tlo, thi] = std::minmax_element(x->begin() + std::ptrdiff_t(k0), x->end());
+    if (*thi - *tlo > 0.01 * swing) oscillates = true;
+    for (std::size_t k = k0; k-- > 0;)
+      if ((*x)[k] < *tlo - 0.01 * swing || (*x)[k] > *thi + 0.01 * swing) {
+        band = std::max(band, t[k]);
+        break;
+      }
   }
-  if (settle < t.back() / 5 && t.back() > 20) {
-    xlim = {1.0, t.back()};
+  if (!oscillates && settle < T / 5 && T > 20) {
+    xlim = {1.0, T};
     return "log";
   }
-  xlim = {0.0, t.back()};
+  xlim = {0.0, oscillates ? std::min(T, std::max(4 * band, 20.0)) : T};
   return "linear";
 }
 
@@ -327,9 +340,12 @@ void fig2(Composer& c, int k, int n) {
     sp.push_back(series(runs[i].csv, "Psi", labels[i], colors[i], styles[i]));
   }
   const double T = runs[0].t().back(), w = T / 5;
-  std::pair<double, double> xlim{0, T};
-  json panels = {lines_panel("(a) $r(t)$", "$r$", sr, "linear", xlim),
-                 lines_panel("(b) $\\Psi(t)$", "$\\Psi$ (rad)", sp, "linear", xlim)};
+  std::pair<double, double> xlim;
+  std::vector<const std::vector<double>*> rs;
+  for (const Line& l : runs) rs.push_back(&l.run.trajectory.r);
+  const std::string xs = time_axis(rs, runs[0].t(), xlim);
+  json panels = {lines_panel("(a) $r(t)$", "$r$", sr, xs, xlim),
+                 lines_panel("(b) $\\Psi(t)$", "$\\Psi$ (rad)", sp, xs, xlim)};
   const std::string how = "tail: t in [" + num(T - w) + ", " + num(T) + "]";
   for (int op = 0; op < 2; ++op) {
     const Line& small = runs[std::size_t(2 * op)];
@@ -428,7 +444,7 @@ void fig3(Composer& c, int k, int n) {
              {"xscale", "linear"},
              {"yscale", "linear"},
              {"xlim", {1, 8}},
-             {"ylim", {-4 * alpha, 0.5 * std::abs(crit(band.l_c.value, s_below)) + 10}},
+             {"ylim", {-4 * alpha, 1.2 * std::max(crit(band.l_c.value, s_below), 0.0) + 10}},
              {"series",
               {{{"data", fa}, {"x", "l"}, {"y", "criterion_sigma_star"}, {"label", "$\\sigma=\\sigma_*$"},
                 {"color", "black"}, {"ls", "--"}, {"lw", 1.5}},
@@ -798,9 +814,13 @@ void app_vesicle(Composer& c, bool ip, int k, int n) {
       sp.push_back(series(l.csv, "Psi", cases[i], colors[i], styles[i], i == 2 ? 1.8 : 1.4));
     }
     const std::string lam = std::to_string(2 * j + 1);
-    top.push_back(lines_panel(std::string("(") + letters[j] + ") $r(t)$, $\\lambda=" + lam + "$", "$r$", sr, "linear", {0, T}));
+    std::pair<double, double> xlim;
+    std::vector<const std::vector<double>*> rs;
+    for (int i = 0; i < 3; ++i) rs.push_back(&runs[std::size_t(3 * j + i)].run.trajectory.r);
+    const std::string xs = time_axis(rs, runs[std::size_t(3 * j)].t(), xlim);
+    top.push_back(lines_panel(std::string("(") + letters[j] + ") $r(t)$, $\\lambda=" + lam + "$", "$r$", sr, xs, xlim));
     bottom.push_back(
-        lines_panel(std::string("(") + letters[j + 3] + ") $\\Psi(t)$, $\\lambda=" + lam + "$", "$\\Psi$ (rad)", sp, "linear", {0, T}));
+        lines_panel(std::string("(") + letters[j + 3] + ") $\\Psi(t)$, $\\lambda=" + lam + "$", "$\\Psi$ (rad)", sp, xs, xlim));
   }
   auto at = [&](int lam, int cs) -> const Line& { return runs[std::size_t(3 * (lam / 2) + cs)]; };
   auto turn = [](const Line& l) { return l.run.trajectory.Psi.back() - l.run.trajectory.Psi.front(); };

@@ -23,6 +23,7 @@ LS = {"solid": "-", "dashed": "--", "dotted": ":", "dashdot": "-."}
 
 def draw_lines(ax, p, folder):
     right = None
+    top = []  # largest drawn value on the main axis: a log axis spans 10 decades below it
     for s in p["series"]:
         d = read_csv(os.path.join(folder, s["data"]))
         target = ax
@@ -32,6 +33,7 @@ def draw_lines(ax, p, folder):
         y = d[s["y"]]
         if p.get("yscale") == "log" and not s.get("right"):
             y = [v if v > 0 else float("nan") for v in y]
+            top += [v for v in y if math.isfinite(v)]
         target.plot(d[s["x"]], y, color=s["color"], ls=s["ls"], lw=s["lw"], marker=s.get("marker"), ms=4,
                     label=s["label"] or None)
     for h in p["hlines"]:
@@ -43,8 +45,9 @@ def draw_lines(ax, p, folder):
     ax.set_xlim(*p["xlim"])
     if p.get("yscale") == "log":
         ax.set_yscale("log")
-        lo, hi = ax.get_ylim()
-        ax.set_ylim(max(lo, hi * 1e-14), hi)  # decayed modes fall by hundreds of decades
+        top += [h["y"] for h in p["hlines"] if h["y"] > 0]
+        if top:  # decayed modes fall by hundreds of decades: keep 10 below the largest value
+            ax.set_ylim(max(top) * 1e-10, max(top) * 3)
     if p.get("ylim"):
         ax.set_ylim(*p["ylim"])
     ax.set_xlabel(p["xlabel"])
