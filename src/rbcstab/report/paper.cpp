@@ -993,13 +993,7 @@ PaperResult build_paper(const PaperOptions& options) {
   if (!has_file(o.scene_dir, "fig3_b_op.toml"))
     throw InvalidArgument("scene_dir", "scene_dir = '" + o.scene_dir + "' holds no paper scenes (fig3_b_op.toml, ...)");
   check_python(o.python);
-  const fs::path out = fs::absolute(o.output).lexically_normal();
-  const fs::path target = out.has_filename() ? out : out.parent_path();
-  std::error_code ec;
-  if (fs::exists(target, ec) && !o.overwrite)
-    throw InvalidArgument("output", "output: " + target.string() + " exists; pass --overwrite to replace it");
-  if (!fs::is_directory(target.parent_path(), ec))
-    throw ReportError("output: parent folder " + target.parent_path().string() + " does not exist");
+  const fs::path target = detail::output_target(o.output, o.overwrite);
 
   PaperResult res;
   try {

@@ -98,6 +98,17 @@ std::string hidden_sibling_name(const fs::path& target, const char* tag) {
   return staging_prefix(target.filename().string(), tag).append(suffix.str());
 }
 
+fs::path output_target(const std::string& output, bool overwrite) {
+  const fs::path out = fs::absolute(output).lexically_normal();
+  const fs::path target = out.has_filename() ? out : out.parent_path();
+  std::error_code ec;
+  if (fs::exists(target, ec) && !overwrite)
+    throw InvalidArgument("output", "output: " + target.string() + " exists; pass --overwrite to replace it");
+  if (!fs::is_directory(target.parent_path(), ec))
+    throw ReportError("output: parent folder " + target.parent_path().string() + " does not exist");
+  return target;
+}
+
 void publish_folder(const fs::path& tmp, const fs::path& target) {
   std::error_code ec;
   if (fs::exists(target, ec)) {  // --overwrite: swap, then remove the old folder
@@ -404,13 +415,8 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
                       "', $RBCSTAB_DATA_DIR, <prefix>/share/rbcstab/python); set RBCSTAB_DATA_DIR");
   check_python(o.python);
 
-  const fs::path out = fs::absolute(o.output).lexically_normal();
-  const fs::path target = out.has_filename() ? out : out.parent_path();
+  const fs::path target = detail::output_target(o.output, o.overwrite);
   std::error_code ec;
-  if (fs::exists(target, ec) && !o.overwrite)
-    throw InvalidArgument("output", "output: " + target.string() + " exists; pass --overwrite to replace it");
-  if (!fs::is_directory(target.parent_path(), ec))
-    throw ReportError("output: parent folder " + target.parent_path().string() + " does not exist");
   for (const std::string* hook : {&o.phase_diagram, &o.delta2_comparison, &o.bifurcation})
     if (!hook->empty() && !fs::is_regular_file(*hook, ec))
       throw InvalidArgument("file", "data file '" + *hook + "' not found");

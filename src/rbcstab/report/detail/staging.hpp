@@ -17,6 +17,10 @@ std::string hidden_sibling_name(const std::filesystem::path& target, const char*
 // The last n characters of the file at path ("..." in front when cut; "" when unreadable).
 std::string log_tail(const std::string& path, std::size_t n);
 
+// The folder an output path names, checked before anything is computed: an existing one without overwrite is
+// refused (InvalidArgument("output")), a missing parent is a ReportError.
+std::filesystem::path output_target(const std::string& output, bool overwrite);
+
 // Renames the finished folder tmp onto target; an existing target (overwrite) is swapped out whole, then removed.
 void publish_folder(const std::filesystem::path& tmp, const std::filesystem::path& target);
 
