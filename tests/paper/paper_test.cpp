@@ -54,6 +54,18 @@ TEST(PaperMeasure, GrowsThenDecays) {
   EXPECT_FALSE(grows_then_decays(growth, 0.5));  // maximum at the end
 }
 
+TEST(PaperMeasure, NetTurnIgnoresTheHalfTurnJumpsOfRThroughZero) {
+  // A sawtooth: Psi falls from pi/2 to -pi/2 over 100 samples, then jumps back by pi (r through 0), 5 times:
+  // a turn of -5 pi. A continuous fall by 7 (no jumps) is -7; a swing of amplitude 0.4 turns by 0 net.
+  std::vector<double> saw, fall, swing;
+  for (int cycle = 0; cycle < 5; ++cycle)
+    for (int k = 0; k < 100; ++k) saw.push_back(std::numbers::pi / 2 - std::numbers::pi * (k + 0.5) / 100);
+  for (int k = 0; k <= 700; ++k) fall.push_back(-0.01 * k), swing.push_back(0.4 * std::sin(0.05 * k));
+  EXPECT_NEAR(net_turn(saw), -5 * std::numbers::pi + std::numbers::pi / 100, 1e-12);
+  EXPECT_NEAR(net_turn(fall), -7, 1e-12);
+  EXPECT_NEAR(net_turn(swing), 0.4 * std::sin(35.0), 1e-12);
+}
+
 TEST(PaperMeasure, MaxRelativeGapUpToATime) {
   const std::vector<double> t{0, 1, 2, 3};
   const std::vector<double> y{1, 2, 4, 8}, x{1.1, 2, 4, 16};

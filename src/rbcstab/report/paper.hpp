@@ -79,6 +79,10 @@ double settle_time(const std::vector<double>& t, const std::vector<double>& x, d
 // The maximum of x is at an interior sample and x at the end has fallen below `drop` times that maximum,
 // which exceeds x at the start: "first grows, then decays".
 bool grows_then_decays(const std::vector<double>& x, double drop);
+// The net turn of Psi over the run with each step taken modulo pi (into (-pi/2, pi/2]): r -> -r, Psi -> Psi + pi
+// is the same shape (f_{2,2} ~ r e^{-i Psi}), so the jump by pi when r passes through 0 (a vesicle tumbling
+// through a nearly axisymmetric shape) is no turn. A tumbling cell turns Psi by -2 pi per tumble.
+double net_turn(const std::vector<double>& Psi);
 // Largest |x(t) - y(t)| / |y(t)| over t <= t_max for two series on the same samples.
 double max_relative_gap(const std::vector<double>& t, const std::vector<double>& x, const std::vector<double>& y,
                         double t_max);
