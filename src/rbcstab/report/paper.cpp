@@ -355,7 +355,7 @@ void fig2(Composer& c, int k, int n) {
   const std::string xs = time_axis(rs, runs[0].t(), xlim);
   json panels = {lines_panel("(a) $r(t)$", "$r$", sr, xs, xlim),
                  lines_panel("(b) $\\Psi(t)$", "$\\Psi$ (rad)", sp, xs, xlim)};
-  const std::string how = "tail: t in [" + num(T - w) + ", " + num(T) + "]";
+  const std::string how = "tail: the last " + num(w) + " time units of each run";
   for (int op = 0; op < 2; ++op) {
     const Line& small = runs[std::size_t(2 * op)];
     const Line& large = runs[std::size_t(2 * op + 1)];
