@@ -1,5 +1,7 @@
 #include "rbcstab/report/panels.hpp"
 
+#include "rbcstab/report/detail/staging.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -281,15 +283,7 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
     throw InvalidArgument("scene", sf.source + " holds no panel table ([diagram], [fig6e] or [continuation])");
   // Refuse what build_report would refuse before computing anything (a grid can take hours).
   check_python(options.python);
-  {
-    const fs::path out = fs::absolute(options.output).lexically_normal();
-    const fs::path target = out.has_filename() ? out : out.parent_path();
-    std::error_code ec;
-    if (fs::exists(target, ec) && !options.overwrite)
-      throw InvalidArgument("output", "output: " + target.string() + " exists; pass --overwrite to replace it");
-    if (!fs::is_directory(target.parent_path(), ec))
-      throw ReportError("output: parent folder " + target.parent_path().string() + " does not exist");
-  }
+  detail::output_target(options.output, options.overwrite);
   ReportOptions ro = options;
   ro.run_scene = false;
   ro.scene_toml = sf.text;

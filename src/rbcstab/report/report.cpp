@@ -57,16 +57,6 @@ std::string grid_csv(const ShapeGrid& g) {
   return ss.str();
 }
 
-// The reduced companion: same material and orientation, only the l = 2 block (Sec. III).
-Scene reduced_scene(const Scene& s) {
-  Scene r = s;
-  r.name = s.name + "_reduced";
-  r.model = ModelLevel::reduced;
-  r.L = 2;
-  r.delta_l.clear();
-  r.rest_delta_l.clear();
-  return r;
-}
 
 }  // namespace
 
@@ -106,6 +96,29 @@ std::string hidden_sibling_name(const fs::path& target, const char* tag) {
   std::ostringstream suffix;
   suffix << std::hex << rd() << rd();
   return staging_prefix(target.filename().string(), tag).append(suffix.str());
+}
+
+fs::path output_target(const std::string& output, bool overwrite) {
+  const fs::path out = fs::absolute(output).lexically_normal();
+  const fs::path target = out.has_filename() ? out : out.parent_path();
+  std::error_code ec;
+  if (fs::exists(target, ec) && !overwrite)
+    throw InvalidArgument("output", "output: " + target.string() + " exists; pass --overwrite to replace it");
+  if (!fs::is_directory(target.parent_path(), ec))
+    throw ReportError("output: parent folder " + target.parent_path().string() + " does not exist");
+  return target;
+}
+
+void publish_folder(const fs::path& tmp, const fs::path& target) {
+  std::error_code ec;
+  if (fs::exists(target, ec)) {  // --overwrite: swap, then remove the old folder
+    const fs::path old = target.parent_path() / hidden_sibling_name(target, ".old-");
+    fs::rename(target, old);
+    fs::rename(tmp, target);
+    fs::remove_all(old, ec);
+  } else {
+    fs::rename(tmp, target);
+  }
 }
 
 double oscillation_period(const std::vector<double>& t, const std::vector<double>& x) {
@@ -286,35 +299,7 @@ void draw_and_publish(const ReportOptions& o, const nlohmann::json& manifest, co
     write_file_atomic((tmp / name).string(), text);
     files.push_back(name);
   }
-  if (fs::exists(target, ec)) {  // --overwrite: swap, then remove the old folder
-    const fs::path old = target.parent_path() / detail::hidden_sibling_name(target, ".old-");
-    fs::rename(target, old);
-    fs::rename(tmp, target);
-    fs::remove_all(old, ec);
-  } else {
-    fs::rename(tmp, target);
-  }
-}
-
-// Runs body(tmp) on a fresh hidden sibling folder of target (body publishes it by renaming); on any
-// failure the folder is removed, so nothing half-written is left behind.
-template <class Body>
-void in_staging_folder(const fs::path& target, Body&& body) {
-  std::error_code ec;
-  for (const char* tag : {".tmp-", ".old-"})
-    remove_stale_staging(target.parent_path().string(), target.filename().string(), tag);
-  const fs::path tmp = target.parent_path() / detail::hidden_sibling_name(target, ".tmp-");
-  fs::create_directory(tmp, ec);
-  if (ec) throw ReportError("output: cannot create " + tmp.string() + ": " + ec.message());
-  try {
-    body(tmp);
-  } catch (const fs::filesystem_error& e) {
-    fs::remove_all(tmp, ec);
-    throw ReportError(std::string("output: ") + e.what());
-  } catch (...) {
-    fs::remove_all(tmp, ec);
-    throw;
-  }
+  detail::publish_folder(tmp, target);
 }
 
 // A figure-panel report: the scene as given, the hooks' data and figures, the attachments.
@@ -324,7 +309,7 @@ ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, con
     throw InvalidArgument("run_scene", "run_scene = false (a figure panel) needs a phase diagram, a Fig. 6e table "
                                        "or a bifurcation to draw");
   ReportResult res;
-  in_staging_folder(target, [&](const fs::path& tmp) {
+  detail::in_staging_folder(target, [&](const fs::path& tmp) {
     write_file_atomic((tmp / "scene.toml").string(), o.scene_toml.empty() ? to_toml(sf) : o.scene_toml);
     res.files.push_back("scene.toml");
     nlohmann::json figs = nlohmann::json::array();
@@ -348,6 +333,16 @@ ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, con
   return res;
 }
 }  // namespace
+
+Scene reduced_scene(const Scene& s) {
+  Scene r = s;
+  r.name = s.name + "_reduced";
+  r.model = ModelLevel::reduced;
+  r.L = 2;
+  r.delta_l.clear();
+  r.rest_delta_l.clear();
+  return r;
+}
 
 AmplitudeSeries amplitudes_at(const SceneFile& sf, const std::vector<double>& times) {
   const Scene& s = sf.scene;
@@ -420,13 +415,8 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
                       "', $RBCSTAB_DATA_DIR, <prefix>/share/rbcstab/python); set RBCSTAB_DATA_DIR");
   check_python(o.python);
 
-  const fs::path out = fs::absolute(o.output).lexically_normal();
-  const fs::path target = out.has_filename() ? out : out.parent_path();
+  const fs::path target = detail::output_target(o.output, o.overwrite);
   std::error_code ec;
-  if (fs::exists(target, ec) && !o.overwrite)
-    throw InvalidArgument("output", "output: " + target.string() + " exists; pass --overwrite to replace it");
-  if (!fs::is_directory(target.parent_path(), ec))
-    throw ReportError("output: parent folder " + target.parent_path().string() + " does not exist");
   for (const std::string* hook : {&o.phase_diagram, &o.delta2_comparison, &o.bifurcation})
     if (!hook->empty() && !fs::is_regular_file(*hook, ec))
       throw InvalidArgument("file", "data file '" + *hook + "' not found");
@@ -471,7 +461,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
                            "): Delta is beyond the quasi-spherical expansion; the mesh folds over itself");
 
   // Everything is written into a hidden sibling folder, renamed into place at the end.
-  in_staging_folder(target, [&](const fs::path& tmp) {
+  detail::in_staging_folder(target, [&](const fs::path& tmp) {
     auto put = [&](const std::string& name, const std::string& text) {
       write_file_atomic((tmp / name).string(), text);
       res.files.push_back(name);

@@ -1,0 +1,74 @@
+// `rbcstab paper --quick` as the library composes it: every figure drawn, every claim evaluated (a claim that fails
+// is reported with its measured value, not hidden), the page lists them all, the data behind every figure exists.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "rbcstab/report/paper.hpp"
+
+namespace rbcstab {
+namespace {
+namespace fs = std::filesystem;
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string html_escaped(const std::string& s) {
+  std::string o;
+  for (char c : s) o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
+  return o;
+}
+
+TEST(PaperQuick, EveryFigureDrawnEveryClaimEvaluated) {
+  const fs::path parent = fs::temp_directory_path() / ("rbcstab_paper_quick_" + std::to_string(::getpid()));
+  fs::remove_all(parent);
+  fs::create_directories(parent);
+  PaperOptions o;
+  o.output = (parent / "paper").string();
+  o.quick = true;
+  o.threads = 2;
+  const PaperResult r = build_paper(o);
+  ASSERT_TRUE(r.complete);
+  EXPECT_EQ(r.failed_runs, 0u);
+  // Figs. 2, 3, 4, 5, 6, app3, app4, app1, app2.
+  ASSERT_EQ(r.figures.size(), 9u);
+  EXPECT_EQ(r.passed + r.failed, r.claims.size());
+  EXPECT_GE(r.claims.size(), 60u);
+  const std::string html = slurp(parent / "paper" / "index.html");
+  const nlohmann::json claims = nlohmann::json::parse(slurp(parent / "paper" / "claims.json"));
+  ASSERT_EQ(claims.size(), r.claims.size());
+  std::size_t failed_rows = 0;
+  for (std::size_t k = 0; k < r.claims.size(); ++k) {
+    const ClaimCheck& c = r.claims[k];
+    EXPECT_FALSE(c.measured.empty()) << c.claim;
+    EXPECT_FALSE(c.expected.empty()) << c.claim;
+    EXPECT_NE(html.find(html_escaped(c.claim)), std::string::npos) << c.claim;
+    EXPECT_EQ(claims[k]["passed"].get<bool>(), c.passed);
+    failed_rows += !c.passed;
+  }
+  // Each failed claim is shown as failed on the page.
+  std::size_t shown = 0;
+  for (std::size_t at = html.find("<b>FAILED</b>"); at != std::string::npos; at = html.find("<b>FAILED</b>", at + 1)) ++shown;
+  EXPECT_EQ(shown, failed_rows);
+  for (const PaperFigure& f : r.figures) {
+    EXPECT_TRUE(fs::is_regular_file(parent / "paper" / (f.id + ".png"))) << f.id;
+    EXPECT_GT(fs::file_size(parent / "paper" / (f.id + ".png")), 10000u) << f.id;
+    EXPECT_FALSE(f.data.empty()) << f.id;
+    for (const std::string& d : f.data) EXPECT_TRUE(fs::is_regular_file(parent / "paper" / d)) << d;
+  }
+  // Nothing but the folder was left beside it (no staging leftovers).
+  std::size_t entries = 0;
+  for ([[maybe_unused]] const auto& e : fs::directory_iterator(parent)) ++entries;
+  EXPECT_EQ(entries, 1u);
+  fs::remove_all(parent);
+}
+
+}  // namespace
+}  // namespace rbcstab
