@@ -144,16 +144,14 @@ RegimeResult reduced_regime(const Scene& scene, const PredictorOptions& options)
   return regime_from(run_reduced(scene, options), initial_r(scene) < options.out_of_plane_r0);
 }
 
-bool ReducedTransient::of(const Scene& scene) const {
-  const Parameters& p = scene.parameters;
-  return p.lambda == parameters.lambda && p.Delta == parameters.Delta && p.Delta0 == parameters.Delta0 &&
-         p.B == parameters.B && p.C == parameters.C && scene.beta == beta;
+bool ReducedTransient::of(const Scene& scene) const { return of_flow(scene) && scene.parameters.B == parameters.B; }
+
+std::array<double, 5> ReducedTransient::flow(const Parameters& p, double beta) {
+  return {p.lambda, p.Delta, p.Delta0, p.C, beta};
 }
 
 bool ReducedTransient::of_flow(const Scene& scene) const {
-  Scene same_B = scene;
-  same_B.parameters.B = parameters.B;
-  return of(same_B);
+  return flow(scene.parameters, scene.beta) == flow(parameters, beta);
 }
 
 ReducedTransient transient_at_B(const ReducedTransient& transient, const Scene& scene) {

@@ -6,6 +6,7 @@
 //    finite-horizon predictor G_l(T) = int_0^T Upsilon_l(sigma_R(t)) dt (the linear prediction
 //    Delta_l(T)/Delta_l(0) = exp(2 G_l(T))) and the truncation rule (analysis/truncation.hpp);
 //  - the regime of the reduced (ellipsoidal) dynamics: rolling, tank-treading, swinging or tumbling.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -52,7 +53,9 @@ struct ReducedTransient {
   std::string reason;
   IntegrationCounters counters;
   bool of(const Scene& scene) const;    // integrated for this scene's parameters and beta (any T, L, seeds)
-  bool of_flow(const Scene& scene) const;  // the same up to B (see at_B)
+  bool of_flow(const Scene& scene) const;  // the same up to B (see transient_at_B)
+  // What the reduced flow depends on: lambda, Delta, Delta0, C and beta (not B, T, L or the seeds).
+  static std::array<double, 5> flow(const Parameters& p, double beta);
 };
 // checkpoints in [1, 10000]; options: its integrator.
 ReducedTransient reduced_transient(const Scene& scene, double T, int checkpoints = 1,

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
+#include <optional>
 #include <thread>
 
 #include "rbcstab/analysis/thresholds.hpp"
@@ -129,38 +131,30 @@ class FlowTransients {
     for (const PointResult& p : points) {
       if (p.verdict == Verdict::failed) continue;
       Scene s = point_scene(base, spec, p.index);
-      if (find(s) != transients_.size()) continue;
+      if (!index_.emplace(ReducedTransient::flow(s.parameters, s.beta), flows.size()).second) continue;
       s.parameters.B = base.parameters.B;
-      ReducedTransient key;  // filled by the run below; its parameters and beta identify the flow meanwhile
-      key.parameters = s.parameters;
-      key.beta = s.beta;
-      transients_.push_back(std::move(key));
       flows.push_back(std::move(s));
     }
-    ran_.assign(flows.size(), 0);
+    transients_.resize(flows.size());
     parallel_for(flows.size(), threads, [&](std::size_t k) {
       try {
         transients_[k] = reduced_transient(flows[k], flows[k].T, 1, options);
-        ran_[k] = 1;
       } catch (const InvalidArgument&) {
+        transients_[k].reset();
       }
     });
   }
   // The transient of the point scene s: throws InvalidArgument where its flow has none.
   ReducedTransient at(const Scene& s) const {
-    const std::size_t k = find(s);
-    if (k == transients_.size() || !ran_[k]) throw InvalidArgument("transient", "no reduced transient of this flow");
-    return transient_at_B(transients_[k], s);
+    const auto it = index_.find(ReducedTransient::flow(s.parameters, s.beta));
+    if (it == index_.end() || !transients_[it->second])
+      throw InvalidArgument("transient", "no reduced transient of this flow");
+    return transient_at_B(*transients_[it->second], s);
   }
 
  private:
-  std::size_t find(const Scene& s) const {
-    return std::size_t(std::find_if(transients_.begin(), transients_.end(),
-                                    [&](const ReducedTransient& t) { return t.of_flow(s); }) -
-                       transients_.begin());
-  }
-  std::vector<ReducedTransient> transients_;
-  std::vector<char> ran_;  // not vector<bool>: written from several threads
+  std::map<std::array<double, 5>, std::size_t> index_;
+  std::vector<std::optional<ReducedTransient>> transients_;
 };
 
 Agreement compare(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points,
