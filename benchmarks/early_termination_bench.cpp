@@ -1,7 +1,9 @@
-// Certified early termination (verdict/certified_run.hpp) against the full-horizon runs, in the same process:
-// the paper's panels at 64 x 64 (scenes/*.toml, 2 threads: run_diagram with and without run.full_horizon) and
-// one run of the default scene. Counters: both wall times, their ratio, points stopped early, verdicts or
-// l_Delta that differ (must be 0), and the work (RHS evaluations of the runs and of the certification).
+// The diagram's exact savings (certified early termination, verdict/certified_run.hpp; no tail-window samples
+// under the final classifier; reduced transients shared across B) against the full-horizon runs, in the same
+// process: the paper's panels at 64 x 64 (scenes/*.toml, 2 threads: run_diagram with and without
+// run.full_horizon), the finite-horizon predictor of their agreement, and one run of the default scene.
+// Counters: wall and CPU times, their ratio, points stopped early, verdicts or l_Delta that differ (must be 0),
+// oscillation flags that differ, and the work (RHS evaluations of the runs and of the certification).
 // docs/benchmarks.md records the numbers.
 #include <benchmark/benchmark.h>
 
@@ -9,8 +11,12 @@
 #include <ctime>
 #include <cmath>
 #include <string>
+#include <thread>
+#include <vector>
 
+#include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
@@ -36,7 +42,7 @@ void BM_PanelEarlyVsFull(benchmark::State& state) {
   rbcstab::SimulationOptions full_options = sf.options;
   full_options.full_horizon = true;
   double full_s = 0, early_s = 0, full_cpu = 0, early_cpu = 0;
-  std::size_t terminated = 0, differing = 0, full_rhs = 0, early_rhs = 0;
+  std::size_t terminated = 0, differing = 0, oscillation = 0, full_rhs = 0, early_rhs = 0;
   for (auto _ : state) {
     auto start = std::chrono::steady_clock::now();
     std::clock_t cpu = std::clock();
@@ -53,6 +59,7 @@ void BM_PanelEarlyVsFull(benchmark::State& state) {
       const rbcstab::PointResult& b = full.points[k];
       terminated += std::isfinite(a.terminated_at) ? 1 : 0;
       differing += a.verdict != b.verdict || a.l_Delta != b.l_Delta ? 1 : 0;
+      oscillation += a.oscillating != b.oscillating ? 1 : 0;
       early_rhs += a.rhs_evaluations;
       full_rhs += b.rhs_evaluations;
     }
@@ -65,10 +72,65 @@ void BM_PanelEarlyVsFull(benchmark::State& state) {
   state.counters["early_cpu_s"] = early_cpu;
   state.counters["terminated"] = double(terminated);
   state.counters["differing"] = double(differing);
+  state.counters["oscillation_differing"] = double(oscillation);
   state.counters["rhs_ratio"] = double(full_rhs) / double(early_rhs);
 }
 BENCHMARK(BM_PanelEarlyVsFull)
     ->ArgsProduct({{0, 1, 2, 3, 4, 5}, {64}, {2}})
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(1);
+
+// The finite-horizon predictor of a panel's agreement (what `rbcstab diagram` writes beside the points): one
+// reduced run per point, as before, against the reduced transients shared across B (predictor_agreements, which
+// integrates one per flow), both on 2 threads. Counters: both wall and process CPU times and their ratios.
+void BM_FiniteHorizonAgreement(benchmark::State& state) {
+  const rbcstab::SceneFile sf = rbcstab::load_scene(std::string(RBCSTAB_SCENES_DIR) + "/" +
+                                                    kPanels[state.range(0)] + ".toml");
+  rbcstab::DiagramSpec spec = rbcstab::diagram_spec(sf);
+  spec.x.count = spec.y.count = int(state.range(1));
+  std::vector<rbcstab::PointResult> points(spec.size());
+  for (std::size_t i = 0; i < points.size(); ++i) points[i].index = i;
+  rbcstab::AgreementOptions with, without;
+  with.threads = without.threads = 2;
+  with.trace = without.trace = false;
+  without.finite_horizon = false;
+  double per_point_s = 0, shared_s = 0, per_point_cpu = 0, shared_cpu = 0;
+  for (auto _ : state) {
+    auto start = std::chrono::steady_clock::now();
+    std::clock_t cpu = std::clock();
+    std::vector<std::thread> pool;
+    for (std::size_t w = 0; w < 2; ++w)
+      pool.emplace_back([&, w] {
+        for (std::size_t i = w; i < points.size(); i += 2) {
+          const rbcstab::Scene s = rbcstab::point_scene(sf.scene, spec, i);
+          benchmark::DoNotOptimize(rbcstab::finite_horizon_growth(s, s.T).G);
+        }
+      });
+    for (std::thread& t : pool) t.join();
+    per_point_s += seconds_since(start);
+    per_point_cpu += cpu_since(cpu);
+    // The predictor's share of predictor_agreements: with it minus without it.
+    start = std::chrono::steady_clock::now();
+    cpu = std::clock();
+    benchmark::DoNotOptimize(rbcstab::predictor_agreements(sf.scene, spec, points, with));
+    shared_s += seconds_since(start);
+    shared_cpu += cpu_since(cpu);
+    start = std::chrono::steady_clock::now();
+    cpu = std::clock();
+    benchmark::DoNotOptimize(rbcstab::predictor_agreements(sf.scene, spec, points, without));
+    shared_s -= seconds_since(start);
+    shared_cpu -= cpu_since(cpu);
+  }
+  state.SetLabel(kPanels[state.range(0)]);
+  state.counters["per_point_s"] = per_point_s;
+  state.counters["shared_s"] = shared_s;
+  state.counters["per_point_cpu_s"] = per_point_cpu;
+  state.counters["shared_cpu_s"] = shared_cpu;
+  state.counters["cpu_ratio"] = per_point_cpu / shared_cpu;
+}
+BENCHMARK(BM_FiniteHorizonAgreement)
+    ->ArgsProduct({{1, 4}, {64}})
     ->Unit(benchmark::kSecond)
     ->UseRealTime()
     ->Iterations(1);

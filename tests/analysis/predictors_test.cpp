@@ -71,6 +71,35 @@ TEST(FiniteHorizon, ConvergesWithTolerance) {
   for (std::size_t k = 0; k < a.G.size(); ++k) EXPECT_NEAR(a.G[k], b.G[k], 1e-7 * (1 + std::abs(b.G[k])));
 }
 
+// A transient serves every B of its flow (transient_at_B): G_l(T) from a run at B = 2 mapped to another B equals
+// that of a direct run there to their integration error (rtol 1e-10 of int sigma_R: 1e-7 relative leaves a
+// factor ~1000; the mapping itself is exact to rounding). Flows of both orientations, small to large B and C.
+TEST(FiniteHorizon, TransientMapsAcrossB) {
+  for (double beta : {0.001, kHalfPi})
+    for (double C : {0.01, 0.5, 7.4}) {
+      Scene s = fig3(5, beta);
+      s.parameters.C = C;
+      const ReducedTransient source = reduced_transient(s, s.T);
+      ASSERT_EQ(source.status, IntegrationStatus::success);
+      for (double B : {0.37, 2.0, 40.0, 400.0}) {
+        Scene t = s;
+        t.parameters.B = B;
+        const FiniteHorizon mapped = finite_horizon_growth(t, transient_at_B(source, t));
+        const FiniteHorizon direct = finite_horizon_growth(t, t.T);
+        EXPECT_NEAR(mapped.mean_sigma_R, direct.mean_sigma_R, 1e-7 * (1 + std::abs(direct.mean_sigma_R)))
+            << "beta " << beta << " C " << C << " B " << B;
+        for (std::size_t k = 0; k < direct.G.size(); ++k)
+          EXPECT_NEAR(mapped.G[k], direct.G[k], 1e-7 * (1 + std::abs(direct.G[k])))
+              << "beta " << beta << " C " << C << " B " << B << " l " << k + 2;
+      }
+      // The same B: the transient itself.
+      EXPECT_EQ(transient_at_B(source, s).integral_end, source.integral_end);
+      Scene other = s;
+      other.parameters.C = 2 * C;
+      EXPECT_THROW((void)transient_at_B(source, other), InvalidArgument);
+    }
+}
+
 // Out of plane the attractor is the exact equilibrium: the converged time average equals its sigma_R.
 TEST(AsymptoticPredictor, TimeAverageEqualsEquilibriumOutOfPlane) {
   for (double lambda : {1.0, 5.0}) {

@@ -13,6 +13,7 @@
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/trace.hpp"
+#include "rbcstab/verdict/predict.hpp"
 
 namespace rbcstab {
 namespace {
@@ -271,6 +272,39 @@ TEST(Trace, BoundarySeparatesSimulatedVerdictsOnASmallGrid) {
 
 namespace rbcstab {
 namespace {
+// The finite-horizon agreement integrates one reduced transient per flow and maps it across B (transient_at_B):
+// on 16 x 16 grids of the Fig. 4(b) plane, out of plane and in plane, its verdict and mode at every point equal
+// those of a direct reduced run there. With every point simulated stable, the disagreements list exactly the
+// points predicted unstable, with their mode.
+TEST(Trace, FiniteHorizonAgreementReusesTransientsAcrossB) {
+  for (double beta : {0.001, 1.5707963267948966}) {
+    Scene base = op_scene(5.0, 1.0);
+    base.beta = beta;
+    DiagramSpec spec = fig4_plane();
+    spec.x.count = spec.y.count = 16;
+    std::vector<PointResult> points(spec.size());
+    for (std::size_t i = 0; i < points.size(); ++i) points[i].index = i;
+    AgreementOptions ao;
+    ao.threads = 2;
+    ao.trace = false;
+    const std::vector<Agreement> all = predictor_agreements(base, spec, points, ao);
+    ASSERT_EQ(all[1].predictor, "finite_horizon");
+    std::vector<int> reused(points.size(), 2), direct(points.size(), 2);  // 2: stable, else the mode
+    for (const Disagreement& d : all[1].verdict_disagreements) reused[d.index] = d.l_predicted;
+    std::size_t unstable = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      const Scene s = point_scene(base, spec, i);
+      const ModePrediction m = finite_horizon_prediction(s, finite_horizon_growth(s, s.T));
+      ASSERT_EQ(m.status, DomainStatus::ok) << i;
+      direct[i] = m.unstable.empty() ? 2 : m.l_Delta;
+      unstable += !m.unstable.empty();
+    }
+    EXPECT_EQ(reused, direct) << "beta " << beta;
+    EXPECT_GT(unstable, 0u);
+    EXPECT_LT(unstable, points.size());
+  }
+}
+
 // The overlay alpha lines are where l_* (analysis::l_star, the forward formula) takes its value.
 TEST(Trace, AnalyticOverlaysLieOnTheirDefiningLines) {
   const Scene base = op_scene(1.0, 1.0);

@@ -149,6 +149,48 @@ TEST(CertifiedRun, AppEaPanelEqualsFullHorizon) { compare_panel("appE_a_ip", 200
 TEST(CertifiedRun, AppEbPanelEqualsFullHorizon) { compare_panel("appE_b_ip", 100); }
 TEST(CertifiedRun, AppEcPanelEqualsFullHorizon) { compare_panel("appE_c_ip", 200); }
 
+// The diagram's savings together (certified early termination, and no tail-window samples under the final
+// classifier, which reads Delta_l(T) only), point by point against the full-horizon panel (every run to T, tail
+// sampled) on 16 x 16 grids of the Fig. 4 panels: verdict and l_Delta equal; the growth and sigma(T) within 1e-5
+// (Delta_total, max(1, |sigma|): the hard bound of compare_panel is 1e-4, its typical 1e-6; the values are printed).
+// The oscillation flag is then judged on the accepted steps (~0.5 apart) instead of the 161-point grid: it may
+// miss an oscillation shorter than a step (8 of 4096 points on the 64 x 64 Fig. 4(b) panel): at most 2 %.
+void compare_diagram(const std::string& name) {
+  const SceneFile sf = panel(name);
+  DiagramSpec spec = diagram_spec(sf);
+  ASSERT_EQ(spec.classifier, Classifier::final);
+  spec.x.count = spec.y.count = 16;
+  DiagramOptions ro;
+  ro.threads = 2;
+  SimulationOptions full_options = sf.options;
+  full_options.full_horizon = true;
+  const DiagramRun full = run_diagram(sf.scene, full_options, spec, ro);
+  const DiagramRun fast = run_diagram(sf.scene, sf.options, spec, ro);
+  ASSERT_EQ(full.points.size(), fast.points.size());
+  double growth = 0, sigma = 0;
+  std::size_t oscillation = 0, work_full = 0, work_fast = 0;
+  for (std::size_t k = 0; k < full.points.size(); ++k) {
+    const PointResult &a = fast.points[k], &b = full.points[k];
+    EXPECT_EQ(a.verdict, b.verdict) << name << " point " << k;
+    EXPECT_EQ(a.l_Delta, b.l_Delta) << name << " point " << k;
+    growth = std::max(growth, std::abs(a.growth - b.growth));
+    sigma = std::max(sigma, std::abs(a.sigma_final - b.sigma_final) / std::max(1.0, std::abs(b.sigma_final)));
+    oscillation += a.oscillating != b.oscillating;
+    work_fast += a.rhs_evaluations;
+    work_full += b.rhs_evaluations;
+  }
+  std::printf("%s: max |growth difference| %.3g, max sigma(T) difference %.3g, oscillation flags differing %zu, "
+              "RHS evaluations %zu -> %zu\n", name.c_str(), growth, sigma, oscillation, work_full, work_fast);
+  EXPECT_LE(growth, 1e-5 * sf.scene.parameters.Delta) << name;
+  EXPECT_LE(sigma, 1e-5) << name;
+  EXPECT_LE(oscillation, spec.size() / 50) << name;
+  EXPECT_LT(work_fast, work_full) << name;
+}
+
+TEST(CertifiedRun, Fig4aDiagramEqualsFullHorizon) { compare_diagram("fig4a_op"); }
+TEST(CertifiedRun, Fig4bDiagramEqualsFullHorizon) { compare_diagram("fig4b_op"); }
+TEST(CertifiedRun, Fig4cDiagramEqualsFullHorizon) { compare_diagram("fig4c_op"); }
+
 // The Fig. 4(b) out-of-plane scene (beta = 0: the ellipsoid is an equilibrium) at ln B = lnB and the ln C where
 // the slowest mode l >= 3 grows at exactly `rate` at the exact equilibrium, found by bisection on
 // max_l Upsilon_l(sigma_R^eq) (continuous in C; sigma_R^eq from analysis/steady_states).

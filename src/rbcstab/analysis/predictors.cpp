@@ -144,10 +144,30 @@ RegimeResult reduced_regime(const Scene& scene, const PredictorOptions& options)
   return regime_from(run_reduced(scene, options), initial_r(scene) < options.out_of_plane_r0);
 }
 
-bool ReducedTransient::of(const Scene& scene) const {
-  const Parameters& p = scene.parameters;
-  return p.lambda == parameters.lambda && p.Delta == parameters.Delta && p.Delta0 == parameters.Delta0 &&
-         p.B == parameters.B && p.C == parameters.C && scene.beta == beta;
+bool ReducedTransient::of(const Scene& scene) const { return of_flow(scene) && scene.parameters.B == parameters.B; }
+
+std::array<double, 5> ReducedTransient::flow(const Parameters& p, double beta) {
+  return {p.lambda, p.Delta, p.Delta0, p.C, beta};
+}
+
+bool ReducedTransient::of_flow(const Scene& scene) const {
+  return flow(scene.parameters, scene.beta) == flow(parameters, beta);
+}
+
+ReducedTransient transient_at_B(const ReducedTransient& transient, const Scene& scene) {
+  if (!transient.of_flow(scene))
+    throw InvalidArgument("transient", "the reduced transient was integrated for another flow (parameters other "
+                                       "than B, or beta)");
+  if (transient.of(scene)) return transient;
+  const GrowthRate from = Upsilon_l(transient.parameters, 2), to = Upsilon_l(scene.parameters, 2);
+  // int_0^t mu = from.slope (I - from.sigma_c t), then int_0^t sigma_R = int mu / to.slope + to.sigma_c t.
+  const double ratio = from.slope / to.slope;
+  auto map = [&](double t, double integral) { return ratio * (integral - from.sigma_c * t) + to.sigma_c * t; };
+  ReducedTransient tr = transient;
+  tr.parameters = scene.parameters;
+  for (std::size_t k = 0; k < tr.t.size(); ++k) tr.integral[k] = map(tr.t[k], tr.integral[k]);
+  tr.integral_end = map(tr.t_end, tr.integral_end);
+  return tr;
 }
 
 ReducedTransient reduced_transient(const Scene& scene, double T, int checkpoints, const PredictorOptions& options) {

@@ -6,6 +6,7 @@
 //    finite-horizon predictor G_l(T) = int_0^T Upsilon_l(sigma_R(t)) dt (the linear prediction
 //    Delta_l(T)/Delta_l(0) = exp(2 G_l(T))) and the truncation rule (analysis/truncation.hpp);
 //  - the regime of the reduced (ellipsoidal) dynamics: rolling, tank-treading, swinging or tumbling.
+#include <array>
 #include <string>
 #include <vector>
 
@@ -52,10 +53,20 @@ struct ReducedTransient {
   std::string reason;
   IntegrationCounters counters;
   bool of(const Scene& scene) const;    // integrated for this scene's parameters and beta (any T, L, seeds)
+  bool of_flow(const Scene& scene) const;  // the same up to B (see transient_at_B)
+  // What the reduced flow depends on: lambda, Delta, Delta0, C and beta (not B, T, L or the seeds).
+  static std::array<double, 5> flow(const Parameters& p, double beta);
 };
 // checkpoints in [1, 10000]; options: its integrator.
 ReducedTransient reduced_transient(const Scene& scene, double T, int checkpoints = 1,
                                    const PredictorOptions& options = {});
+
+// The transient of a scene that differs from the transient's only in B, without a run: the reduced flow holds no B
+// (mu = Upsilon_2(sigma_R) is fixed by the area balance of the l = 2 mode, whose other coefficients hold none), and
+// sigma_R = Upsilon_2^{-1}(mu) is affine in mu, so int sigma_R dt maps through the two affine laws exactly (to
+// rounding). A diagram with B on an axis integrates one transient per value of the other axis. Throws
+// InvalidArgument("transient", ...) if the flow differs (of_flow).
+ReducedTransient transient_at_B(const ReducedTransient& transient, const Scene& scene);
 
 // G_l(T) for l = 2..L (index l - 2) along the reduced transient over [0, T]; also the mean sigma_R over [0, T].
 struct FiniteHorizon {

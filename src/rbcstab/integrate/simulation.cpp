@@ -46,6 +46,21 @@ void require_memory(const Scene& scene, const SimulationOptions& options, ModelL
 
 constexpr int kTailIntervals = 160;  // Simpson on the tail window: measured error ~1e-8 relative on the in-plane Fig. 3 scene
 
+// Delta_2 rises and falls over its samples by more than rounding.
+bool oscillates(const std::vector<double>& Delta2, double Delta) {
+  if (Delta2.size() < 2) return false;
+  bool up = false, down = false;
+  double lo = Delta2[0], hi = lo;
+  for (std::size_t k = 1; k < Delta2.size(); ++k) {
+    const double d = Delta2[k] - Delta2[k - 1];
+    up = up || d > 0;
+    down = down || d < 0;
+    lo = std::min(lo, Delta2[k]);
+    hi = std::max(hi, Delta2[k]);
+  }
+  return up && down && (hi - lo) > 1e-9 * Delta;
+}
+
 int argmax_growth(const std::vector<double>& X, const std::vector<double>& X0) {
   int best = 0;
   for (std::size_t j = 1; j < X.size(); ++j)
@@ -72,7 +87,8 @@ SimulationResult simulate(const Scene& scene, const SimulationOptions& options, 
   const std::vector<double> user_grid = sampling_grid(scene.T, scene.dt);
   const double tail_start = std::max(0.0, scene.T - options.tail_window);
   std::vector<double> grid = options.record_trajectory ? user_grid : std::vector<double>{scene.T};
-  for (int k = 0; k <= kTailIntervals; ++k) grid.push_back(tail_start + (scene.T - tail_start) * k / kTailIntervals);
+  if (options.tail_samples)
+    for (int k = 0; k <= kTailIntervals; ++k) grid.push_back(tail_start + (scene.T - tail_start) * k / kTailIntervals);
   std::sort(grid.begin(), grid.end());
   grid.erase(std::unique(grid.begin(), grid.end(), [&](double a, double b) { return b - a <= 1e-12 * scene.T; }),
              grid.end());
@@ -91,12 +107,14 @@ SimulationResult simulate(const Scene& scene, const SimulationOptions& options, 
   std::vector<double> tail_t;
   std::vector<std::vector<double>> tail_D;
   std::vector<double> tail_sigma;
+  std::vector<double> step_Delta2;  // without tail samples: Delta_2 at the accepted steps in the window
   Observation last = o0;
   auto on_step = [&](double t, std::span<const double> y) {
     const Observation o = system->observe(t, y);
     const double total = std::accumulate(o.Delta_l.begin(), o.Delta_l.end(), 0.0);
     res.excess_area_drift = std::max(res.excess_area_drift, std::abs(total - res.Delta_total_initial));
     unwrap(o);
+    if (!options.tail_samples && t >= tail_start - 1e-12 * scene.T) step_Delta2.push_back(o.Delta_l[0]);
     if (options.on_step) options.on_step(t, o);
     if (options.on_progress) options.on_progress(t, scene.T);
   };
@@ -118,7 +136,7 @@ SimulationResult simulate(const Scene& scene, const SimulationOptions& options, 
     // multiple of the tail spacing) would break Simpson's rule and drop it to the trapezoid rule.
     const double tail_h = (scene.T - tail_start) / kTailIntervals;
     const double tail_k = tail_h > 0 ? (t - tail_start) / tail_h : 0.0;
-    if (t >= tail_start - 1e-12 * scene.T && std::abs(tail_k - std::round(tail_k)) <= 1e-6) {
+    if (options.tail_samples && t >= tail_start - 1e-12 * scene.T && std::abs(tail_k - std::round(tail_k)) <= 1e-6) {
       tail_t.push_back(t);
       tail_D.push_back(o.Delta_l);
       tail_sigma.push_back(o.sigma);
@@ -196,18 +214,11 @@ SimulationResult simulate(const Scene& scene, const SimulationOptions& options, 
         res.sigma_tail_mean += weights[k] * tail_sigma[k] / span;
       }
     }
-    // Oscillating: Delta_2 rises and falls within the tail by more than rounding.
-    bool up = false, down = false;
-    double lo = tail_D[0][0], hi = lo;
-    for (std::size_t k = 1; k < nt; ++k) {
-      const double d = tail_D[k][0] - tail_D[k - 1][0];
-      up = up || d > 0;
-      down = down || d < 0;
-      lo = std::min(lo, tail_D[k][0]);
-      hi = std::max(hi, tail_D[k][0]);
-    }
-    res.oscillating = up && down && (hi - lo) > 1e-9 * scene.parameters.Delta;
+    std::vector<double> Delta2(nt);
+    for (std::size_t k = 0; k < nt; ++k) Delta2[k] = tail_D[k][0];
+    res.oscillating = oscillates(Delta2, scene.parameters.Delta);
   }
+  if (!options.tail_samples) res.oscillating = oscillates(step_Delta2, scene.parameters.Delta);
   res.l_Delta_final = argmax_growth(res.Delta_final, res.Delta_initial);
   res.l_Delta = res.oscillating ? argmax_growth(res.Delta_tail_mean, res.Delta_initial) : res.l_Delta_final;
   return res;

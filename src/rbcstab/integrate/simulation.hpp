@@ -25,6 +25,10 @@ struct SimulationOptions {
   // true: integrate every run to T. false: a run given an attractor certifier (simulate_certified,
   // verdict/certified_run.hpp) may skip whole forcing periods once its attractor is certified.
   bool full_horizon = false;
+  // false: the tail window is not sampled on its fine grid (whose ~160 points each end a step): the tail means are
+  // the values at T, and oscillating is judged on the accepted steps in the window. For callers that read
+  // neither (a diagram classified by Delta_l(T)).
+  bool tail_samples = true;
   void validate() const;
 };
 

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <map>
+#include <optional>
 #include <thread>
 
 #include "rbcstab/analysis/thresholds.hpp"
@@ -88,30 +90,72 @@ std::vector<Polyline> polylines(const std::vector<Overlay>& overlays, const std:
 
 int nearest_mode(double alpha, int L) { return std::clamp(int(std::lround(l_star(alpha))), 3, L); }
 
-// Per-point verdicts of one predictor, in parallel over the points (each independent: deterministic).
+// work(i) for i in [0, n), in parallel (each independent: deterministic).
+void parallel_for(std::size_t n, int threads, const std::function<void(std::size_t)>& work) {
+  const std::size_t k = std::max<std::size_t>(1, std::min<std::size_t>(n, std::size_t(threads)));
+  auto strided = [&](std::size_t first) {
+    for (std::size_t i = first; i < n; i += k) work(i);
+  };
+  if (k <= 1) {
+    strided(0);
+    return;
+  }
+  std::vector<std::thread> pool;
+  for (std::size_t t = 0; t < k; ++t) pool.emplace_back(strided, t);
+  for (std::thread& t : pool) t.join();
+}
+
+// Per-point verdicts of one predictor, in parallel over the points.
 std::vector<PointVerdict> verdicts(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points,
                                    int threads, const std::function<PointVerdict(const Scene&)>& f) {
   std::vector<PointVerdict> out(points.size());
-  auto work = [&](std::size_t first, std::size_t stride) {
-    for (std::size_t i = first; i < points.size(); i += stride) {
-      if (points[i].verdict == Verdict::failed) continue;
-      try {
-        out[i] = f(point_scene(base, spec, points[i].index));
-      } catch (const InvalidArgument&) {
-        out[i] = {};  // outside the predictor's domain: not classified
-      }
+  parallel_for(points.size(), threads, [&](std::size_t i) {
+    if (points[i].verdict == Verdict::failed) return;
+    try {
+      out[i] = f(point_scene(base, spec, points[i].index));
+    } catch (const InvalidArgument&) {
+      out[i] = {};  // outside the predictor's domain: not classified
     }
-  };
-  const std::size_t n = std::max<std::size_t>(1, std::min<std::size_t>(points.size(), std::size_t(threads)));
-  if (n <= 1) {
-    work(0, 1);
-    return out;
-  }
-  std::vector<std::thread> pool;
-  for (std::size_t t = 0; t < n; ++t) pool.emplace_back(work, t, n);
-  for (std::thread& t : pool) t.join();
+  });
   return out;
 }
+
+// The reduced transients of the points' flows (transient_at_B), each integrated once at the base scene's B, so
+// that a point's transient does not depend on which other points the diagram (or its shard) holds. A flow whose
+// run refuses its scene has none.
+class FlowTransients {
+ public:
+  FlowTransients(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points, int threads,
+                 const PredictorOptions& options) {
+    std::vector<Scene> flows;
+    for (const PointResult& p : points) {
+      if (p.verdict == Verdict::failed) continue;
+      Scene s = point_scene(base, spec, p.index);
+      if (!index_.emplace(ReducedTransient::flow(s.parameters, s.beta), flows.size()).second) continue;
+      s.parameters.B = base.parameters.B;
+      flows.push_back(std::move(s));
+    }
+    transients_.resize(flows.size());
+    parallel_for(flows.size(), threads, [&](std::size_t k) {
+      try {
+        transients_[k] = reduced_transient(flows[k], flows[k].T, 1, options);
+      } catch (const InvalidArgument&) {
+        transients_[k].reset();
+      }
+    });
+  }
+  // The transient of the point scene s: throws InvalidArgument where its flow has none.
+  ReducedTransient at(const Scene& s) const {
+    const auto it = index_.find(ReducedTransient::flow(s.parameters, s.beta));
+    if (it == index_.end() || !transients_[it->second])
+      throw InvalidArgument("transient", "no reduced transient of this flow");
+    return transient_at_B(*transients_[it->second], s);
+  }
+
+ private:
+  std::map<std::array<double, 5>, std::size_t> index_;
+  std::vector<std::optional<ReducedTransient>> transients_;
+};
 
 Agreement compare(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points,
                   const std::vector<PointVerdict>& v, const BoundaryDistance& distance) {
@@ -217,8 +261,9 @@ std::vector<Agreement> predictor_agreements(const Scene& base, const DiagramSpec
          "argmax_l sigma_l^c");
   }
   if (options.finite_horizon) {
+    const FlowTransients transients(base, spec, points, threads, po);
     const auto v = verdicts(base, spec, points, threads, [&](const Scene& s) {
-      const ModePrediction m = finite_horizon_prediction(s, finite_horizon_growth(s, s.T, po));
+      const ModePrediction m = finite_horizon_prediction(s, finite_horizon_growth(s, transients.at(s)));
       if (m.status != DomainStatus::ok) return PointVerdict{};
       return PointVerdict{true, !m.unstable.empty(), m.unstable.empty() ? 2 : m.l_Delta};
     });

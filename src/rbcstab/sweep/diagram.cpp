@@ -174,6 +174,9 @@ PointResult run_point(const Scene& base, const SimulationOptions& options, const
   const Scene scene = point_scene(base, spec, index);
   SimulationOptions o = options;
   o.record_trajectory = false;
+  // The tail window's fine grid feeds only the tail means, which the final classifier does not read; the
+  // full-horizon reference keeps it.
+  o.tail_samples = options.tail_samples && (options.full_horizon || spec.classifier != Classifier::final);
   const SimulationResult r = simulate_certified(scene, o);
   PointResult p;
   p.index = index;
