@@ -1,6 +1,7 @@
 #include "scene_options.hpp"
 
 #include "checks.hpp"
+#include "rbcstab/core/error.hpp"
 
 namespace rbcstab::cli {
 
@@ -30,8 +31,10 @@ void SceneOptions::add_to(CLI::App& app) {
         break;
       case ValueKind::modes: o = app.add_option(k->flag, modes_[path], k->help); break;
       case ValueKind::boolean: o = app.add_flag(k->flag, booleans_[path], k->help); break;
+      case ValueKind::quantity: o = app.add_option(k->flag, names_[path], k->help)->type_name("QUANTITY"); break;
     }
-    if (k->kind != ValueKind::modes && k->kind != ValueKind::boolean) o->capture_default_str();
+    if (k->kind != ValueKind::modes && k->kind != ValueKind::boolean && k->kind != ValueKind::quantity)
+      o->capture_default_str();
     flags_.push_back({k, o});
   }
   full_horizon_option_ = app.add_flag("--full-horizon", full_horizon_,
@@ -51,11 +54,23 @@ SceneFile SceneOptions::read() const {
       case ValueKind::text: apply_flag(f, *flag.key, names_.at(path)); break;
       case ValueKind::modes: apply_flag(f, *flag.key, parse_modes(modes_.at(path), flag.key->flag)); break;
       case ValueKind::boolean: apply_flag(f, *flag.key, booleans_.at(path)); break;
+      case ValueKind::quantity:
+        try {
+          apply_flag(f, *flag.key, names_.at(path));
+        } catch (const InvalidArgument& e) {
+          // The library names the key ("shear_rate = 'x' ..."); the command line names the flag.
+          const std::string m = e.what();
+          throw InvalidArgument(flag.key->flag, m.rfind(flag.key->key, 0) == 0
+                                                    ? flag.key->flag + m.substr(flag.key->key.size())
+                                                    : flag.key->flag + ": " + m);
+        }
+        break;
     }
   }
   if (full_horizon_option_ && full_horizon_option_->count() > 0)
     for (const SceneKey& k : scene_keys())
       if (k.path() == "run.full_horizon") apply_flag(f, k, true);
+  resolve_physical(f);
   validate_scene_file(f);
   return f;
 }
