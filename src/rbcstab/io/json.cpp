@@ -130,13 +130,18 @@ nlohmann::json to_json(const Scene& s) {
           {"delta_l", dl}, {"rest_delta_l", rl}, {"L", s.L}, {"T", s.T}, {"dt", s.dt}, {"model", to_string(s.model)}};
 }
 
-void put_physical(nlohmann::json& j, const Scene& s) {
-  if (!s.physical) return;
-  nlohmann::json o = nlohmann::json::object();
+nlohmann::json to_json(const PhysicalCell& c) {
   SceneFile f;
-  f.scene = s;
+  f.scene.physical = c;
+  nlohmann::json o = nlohmann::json::object();
   for (const SceneKey& k : scene_keys())
     if (k.kind == ValueKind::quantity && !std::isnan(std::get<double>(k.get(f)))) o[k.key] = std::get<double>(k.get(f));
+  return o;
+}
+
+void put_physical(nlohmann::json& j, const Scene& s) {
+  if (!s.physical) return;
+  nlohmann::json o = to_json(*s.physical);
   const CellNumbers n = cell_numbers(*s.physical);
   o["R_m"] = n.R;
   o["time_unit_s"] = n.time_unit;
