@@ -28,7 +28,8 @@ int run(const UnitsOptions& o) {
       apply_flag(f, k, o.physical.at(k.path()));
     } catch (const InvalidArgument& e) {
       const std::string m = e.what();
-      throw InvalidArgument(k.flag, m.rfind(k.key, 0) == 0 ? k.flag + m.substr(k.key.size()) : k.flag + ": " + m);
+      const std::string& flag = k.unit_flag;
+      throw InvalidArgument(flag, m.rfind(k.key, 0) == 0 ? flag + m.substr(k.key.size()) : flag + ": " + m);
     }
   }
   UnitsQuery q;
@@ -52,7 +53,7 @@ static Runner add_units(CLI::App& app) {
   auto o = std::make_shared<UnitsOptions>();
   for (const SceneKey& k : scene_keys())
     if (k.kind == ValueKind::quantity)
-      o->physical_options[k.path()] = app.add_option(k.flag, o->physical[k.path()], k.help)->type_name("QUANTITY");
+      o->physical_options[k.path()] = app.add_option(k.unit_flag, o->physical[k.path()], k.help)->type_name("QUANTITY");
   const std::string fix = " (dimensionless; completes the physical value it fixes: see docs/units.md)";
   app.add_option("--B", o->B, "bending number B = eta gamma R^3/kappa: gives the shear rate" + fix);
   app.add_option("--C", o->C, "capillary number C = eta gamma R/mu: gives the shear rate, or mu with --B" + fix);

@@ -9,7 +9,10 @@ void SceneOptions::add_to(CLI::App& app) {
   app.add_option("--scene", scene_path, "Scene file (TOML, keys in docs/scenes.md); flags below override it")
       ->check(CLI::ExistingFile);
   const SceneFile defaults;
-  for (const SceneKey* k : scene_flags()) {
+  std::vector<const SceneKey*> keys = scene_flags();
+  for (const SceneKey& k : scene_keys())
+    if (!k.unit_flag.empty()) keys.push_back(&k);
+  for (const SceneKey* k : keys) {
     const std::string path = k->path();
     const SceneValue d = k->get(defaults);
     CLI::Option* o = nullptr;
@@ -31,7 +34,7 @@ void SceneOptions::add_to(CLI::App& app) {
         break;
       case ValueKind::modes: o = app.add_option(k->flag, modes_[path], k->help); break;
       case ValueKind::boolean: o = app.add_flag(k->flag, booleans_[path], k->help); break;
-      case ValueKind::quantity: o = app.add_option(k->flag, names_[path], k->help)->type_name("QUANTITY"); break;
+      case ValueKind::quantity: o = app.add_option(k->unit_flag, names_[path], k->help)->type_name("QUANTITY"); break;
     }
     if (k->kind != ValueKind::modes && k->kind != ValueKind::boolean && k->kind != ValueKind::quantity)
       o->capture_default_str();
@@ -60,9 +63,9 @@ SceneFile SceneOptions::read() const {
         } catch (const InvalidArgument& e) {
           // The library names the key ("shear_rate = 'x' ..."); the command line names the flag.
           const std::string m = e.what();
-          throw InvalidArgument(flag.key->flag, m.rfind(flag.key->key, 0) == 0
-                                                    ? flag.key->flag + m.substr(flag.key->key.size())
-                                                    : flag.key->flag + ": " + m);
+          const std::string& name = flag.key->unit_flag;
+          throw InvalidArgument(name, m.rfind(flag.key->key, 0) == 0 ? name + m.substr(flag.key->key.size())
+                                                                    : name + ": " + m);
         }
         break;
     }

@@ -1,7 +1,8 @@
 #pragma once
 // Scene flags shared by every subcommand that runs a scene: --scene FILE plus one flag per scene key that has
 // one (io's scene_flags(): the parameter table's stored parameters, L, T, dt, model, stepper, rtol, atol and
-// the per-mode perturbations), and --full-horizon, which sets the scene key run.full_horizon.
+// the per-mode perturbations), the [physical] keys' unit flags (--shear-rate, ...), and --full-horizon, which sets
+// the scene key run.full_horizon.
 #include <CLI/CLI.hpp>
 #include <map>
 #include <string>

@@ -68,7 +68,7 @@ void add_physical_keys(std::vector<SceneKey>& k) {
     double PhysicalCell::*const field = r.field;
     const PhysicalUnit unit = r.unit;
     const std::string key = r.key;
-    k.push_back({"physical", r.key, ValueKind::quantity, r.flag,
+    k.push_back({"physical", r.key, ValueKind::quantity, "",
                  std::string(r.help) + "; a number in " + si_unit(unit) + " or with a unit (" + accepted_units(unit) +
                      ")",
                  {},
@@ -87,7 +87,8 @@ void add_physical_keys(std::vector<SceneKey>& k) {
                    require(std::isfinite(x) && x > 0, key, x, "finite and > 0 (" + si_unit(unit) + ")");
                    if (!f.scene.physical) f.scene.physical.emplace();
                    (*f.scene.physical).*field = x;
-                 }});
+                 },
+                 r.flag});
   }
 }
 
@@ -97,7 +98,7 @@ std::vector<SceneKey> make_scene_keys() {
                [](const SceneFile& f) { return SceneValue{f.scene.name}; },
                [](SceneFile& f, const SceneValue& v) { f.scene.name = text_of(v); }});
   for (const ParameterRow& r : parameter_table()) {
-    if (!r.table || std::string_view(r.table) == "physical") continue;  // physical keys take units: below
+    if (!r.table) continue;
     const SceneParameter q = r.id;
     k.push_back({r.table, r.name, ValueKind::number, std::string("--") + r.name,
                  std::string(r.description) + ", " + parameter_domain(q, Parameters{}).text(false), {},
@@ -315,7 +316,7 @@ std::string origins_named(const SceneFile& file, const std::string& message) {
   for (const SceneKey& k : scene_keys()) {
     if (k.table.empty() || !names_word(message, k.key)) continue;
     const Origin o = file.origin(k.path());
-    const std::string from = o == Origin::flag   ? k.flag
+    const std::string from = o == Origin::flag   ? k.any_flag()
                              : o == Origin::file ? "the scene file " + file.source
                                                  : "the default";
     out += (out.empty() ? "" : "; ") + k.path() + " from " + from;
@@ -338,7 +339,7 @@ void validate_scene_file(const SceneFile& file) {
 namespace {
 // How a message names where a key's value came from: its flag when a flag gave it, else its path.
 std::string given_as(const SceneFile& file, const SceneKey& k) {
-  return file.origin(k.path()) == Origin::flag && !k.flag.empty() ? k.flag : k.path();
+  return file.origin(k.path()) == Origin::flag && !k.any_flag().empty() ? k.any_flag() : k.path();
 }
 const SceneKey& key_at(const std::string& table, const std::string& key) {
   for (const SceneKey& k : scene_keys())

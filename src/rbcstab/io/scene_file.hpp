@@ -77,7 +77,11 @@ struct SceneKey {
   // Unchecked but for what a narrowing needs (L and max_steps in range, a known name): the scene and options
   // are validated after every key is set. ValueKind::modes merges (a flag overrides single modes).
   std::function<void(SceneFile&, const SceneValue&)> set;
+  // A flag that front ends add themselves, beside scene_flags(): the [physical] keys ("--shear-rate"), whose
+  // values take units.
+  std::string unit_flag{};
   std::string path() const { return table.empty() ? key : table + "." + key; }
+  std::string any_flag() const { return flag.empty() ? unit_flag : flag; }
 };
 const std::vector<SceneKey>& scene_keys();
 // The rows with a flag, in --help order.

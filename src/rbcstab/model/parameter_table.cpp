@@ -18,7 +18,7 @@ Domain up_to_Delta(const Parameters& p) {
 }
 
 // One row per SceneParameter, in its order (tests/model/parameter_table_test.cpp checks it).
-const std::array<ParameterRow, 13> kTable{{
+const std::array<ParameterRow, 12> kTable{{
     {P::lambda, "lambda", "\\lambda", "viscosity ratio eta_in/eta_ex", "parameters", AxisScale::linear, P::lambda,
      P::lambda, bit(P::lambda), true, true, [](const Parameters&) { return open_above(0, true); },
      [](const Scene& s) { return s.parameters.lambda; }, [](Scene& s, double v) { s.parameters.lambda = v; }},
@@ -71,21 +71,6 @@ const std::array<ParameterRow, 13> kTable{{
     {P::delta, "delta", "\\delta", "perturbation Delta_l(0) put in f_{l,0} for every l = 3..L", "initial",
      AxisScale::linear, P::delta, P::delta, bit(P::delta), false, false, up_to_Delta,
      [](const Scene& s) { return s.delta; }, [](Scene& s, double v) { s.delta = v; }},
-    // At a fixed cell and fluid B and C are both proportional to the shear rate: moving it moves the scene along
-    // a line of slope 1 in the (ln B, ln C) plane at fixed alpha. Only a physical scene has one (NaN otherwise).
-    // Its scene key lives in [physical] with the cell's other inputs, which take units (io/scene_file.cpp).
-    {P::shear_rate, "shear_rate", "\\dot{\\gamma}", "shear rate gamma [1/s] of a physical scene, moving B and C at fixed alpha",
-     "physical", AxisScale::linear, P::shear_rate, P::B, bit(P::B) | bit(P::C) | bit(P::shear_rate), true, true,
-     [](const Parameters&) { return open_above(0, false); },
-     [](const Scene& s) { return s.physical ? s.physical->shear_rate : kNotGiven; },
-     [](Scene& s, double v) {
-       require(s.physical.has_value(), "shear_rate", v,
-               "a parameter of a physical scene only (one with a [physical] table or --shear-rate)");
-       const double ratio = v / s.physical->shear_rate;
-       s.physical->shear_rate = v;
-       s.parameters.B *= ratio;
-       s.parameters.C *= ratio;
-     }},
 }};
 
 // A log row's domain: its base's, mapped by ln (ln 0 = -inf).

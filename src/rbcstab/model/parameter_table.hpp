@@ -16,9 +16,9 @@
 
 namespace rbcstab {
 
-// Table order: the five material numbers, the composites of the reduced system, the log axes, the
-// scene's shape parameters, then the physical path parameter. Lists of names (messages, --help) follow it.
-enum class SceneParameter { lambda, Delta, Delta0, B, C, Lambda, S, alpha, lnB, lnC, beta, delta, shear_rate };
+// Table order: the five material numbers, the composites of the reduced system, the log axes, then the
+// scene's shape parameters. Lists of names (messages, --help) follow it.
+enum class SceneParameter { lambda, Delta, Delta0, B, C, Lambda, S, alpha, lnB, lnC, beta, delta };
 
 // Where a scene value came from.
 enum class Origin { default_value, file, flag };
@@ -55,7 +55,7 @@ struct ParameterRow {
   const char* name;         // the scene key, the flag --name, the continuation and axis name
   const char* symbol;       // TeX, for figure labels
   const char* description;  // one line for --help and docs/scenes.md
-  const char* table;        // the scene file's table holding it ("parameters", "initial", "physical"); nullptr: derived
+  const char* table;        // the scene file's table holding it ("parameters", "initial"); nullptr: derived
   AxisScale scale;          // log: the value is ln of `of`'s (lnB = ln B); get, set and domain follow from `of`
   SceneParameter of;        // log rows: the parameter taken the log of; otherwise the row itself
   SceneParameter moves;     // the stored parameter that set() changes (a composite moves one input)

@@ -234,6 +234,14 @@ Parameters physical_parameters(const PhysicalCell& c, Parameters p) {
   return p;
 }
 
+Parameters at_shear_rate(const PhysicalCell& cell, Parameters p, double rate) {
+  require(std::isfinite(rate) && rate > 0, "shear_rate", rate, "finite and > 0 (1/s)");
+  const double ratio = rate / cell.shear_rate;
+  p.B *= ratio;
+  p.C *= ratio;
+  return p;
+}
+
 const std::vector<NumberFormula>& number_formulas() {
   static const std::vector<NumberFormula> f = {
       {"R", "(3 V/(4 pi))^(1/3) [m]", "Sec. II, Fig. 1"},

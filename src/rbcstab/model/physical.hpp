@@ -70,6 +70,10 @@ struct CellNumbers {
 CellNumbers cell_numbers(const PhysicalCell& cell);
 // `p` with every number the cell determines replaced (validate_complete first).
 Parameters physical_parameters(const PhysicalCell& cell, Parameters p);
+// The shear rate as a path parameter: at a fixed cell and fluid B = b gamma and C = c gamma, so moving from the
+// cell's shear rate to `rate` scales B and C together and keeps alpha (a line of slope 1 in the (ln B, ln C) plane).
+// `p` holds the cell's numbers at cell.shear_rate; the cell's shear_rate is the caller's to update.
+Parameters at_shear_rate(const PhysicalCell& cell, Parameters p, double rate);
 // The parameter keys (Parameters field names) the cell determines, in table order: B, C, then lambda, Delta,
 // Delta0 when their inputs are given; each with the physical keys it is made from.
 struct DerivedParameter {

@@ -37,9 +37,8 @@ struct ShearRateThreshold {
   int evaluations = 0;      // asymptotic verdicts evaluated
 };
 
-// The scene's shear rate moved along [min_rate, max_rate] (set_parameter(shear_rate): B and C together at fixed
-// alpha), with beta set to the orientation's; throws InvalidArgument("shear_rate", ...) for a scene that is
-// not physical.
+// The scene's shear rate moved along [min_rate, max_rate] (at_shear_rate: B and C together at fixed alpha), with
+// beta set to the orientation's; throws InvalidArgument("shear_rate", ...) for a scene that is not physical.
 ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const ShearRateSearchOptions& options = {});
 // Out of plane, then in plane.
 std::vector<ShearRateThreshold> shear_rate_thresholds(const Scene& scene, const ShearRateSearchOptions& options = {});

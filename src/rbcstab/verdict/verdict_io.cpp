@@ -245,6 +245,19 @@ nlohmann::json thresholds_json(const SceneFile& file, const ThresholdReport& t) 
   put(j, "C_star_minus", C_star_minus(p));
   put(j, "C_star_plus", C_star_plus(p, t.r0));
   put(j, "C_star_plus_printed", C_star_plus_printed(p, t.r0));
+  if (s.physical) {
+    // C = c gamma at this cell: the shear rate [1/s] at which C reaches each C threshold (the reduced system's
+    // thresholds depend on C through S alone, not on B).
+    put_physical(j, s);
+    const double per_C = s.physical->shear_rate / p.C;
+    for (const auto& [key, q] : {std::pair{"C_star_minus", C_star_minus(p)}, {"C_star_plus", C_star_plus(p, t.r0)}})
+      if (q.valid()) j[std::string(key) + "_shear_rate"] = q.value * per_C;
+    if (t.has_exact_C_star) {
+      std::vector<double> rates;
+      for (double c : t.exact_C_star) rates.push_back(c * per_C);
+      j["C_star_exact_out_of_plane_shear_rate"] = rates;
+    }
+  }
   put(j, "lambda_star_minus", t.lambda_star_minus);
   const OutOfPlaneEquilibrium& eq = t.criterion.equilibrium;
   j["sigma_R_equilibrium"] = eq.sigma_R;
