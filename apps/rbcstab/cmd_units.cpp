@@ -6,9 +6,9 @@
 
 #include "commands.hpp"
 #include "exit_codes.hpp"
-#include "rbcstab/core/error.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/io/units_io.hpp"
+#include "scene_options.hpp"
 
 namespace rbcstab::cli {
 
@@ -16,30 +16,17 @@ namespace {
 struct UnitsOptions {
   std::map<std::string, std::string> physical;  // by scene key path, as given
   std::map<std::string, CLI::Option*> physical_options;
-  double B = kNotGiven, C = kNotGiven, lambda = kNotGiven, alpha = kNotGiven, Delta = kNotGiven, Delta0 = kNotGiven;
+  UnitsQuery query;  // the dimensionless inputs (the cell is read from `physical` when run)
   bool json = false;
 };
 
 int run(const UnitsOptions& o) {
   SceneFile f;
-  for (const SceneKey& k : scene_keys()) {  // scene_keys order: the temperature before a value in kBT
-    if (k.kind != ValueKind::quantity || o.physical_options.at(k.path())->count() == 0) continue;
-    try {
-      apply_flag(f, k, o.physical.at(k.path()));
-    } catch (const InvalidArgument& e) {
-      const std::string m = e.what();
-      const std::string& flag = k.unit_flag;
-      throw InvalidArgument(flag, m.rfind(k.key, 0) == 0 ? flag + m.substr(k.key.size()) : flag + ": " + m);
-    }
-  }
-  UnitsQuery q;
+  for (const SceneKey& k : scene_keys())  // scene_keys order: the temperature before a value in kBT
+    if (k.kind == ValueKind::quantity && o.physical_options.at(k.path())->count() > 0)
+      apply_unit_flag(f, k, o.physical.at(k.path()));
+  UnitsQuery q = o.query;
   if (f.scene.physical) q.cell = *f.scene.physical;
-  q.B = o.B;
-  q.C = o.C;
-  q.lambda = o.lambda;
-  q.alpha = o.alpha;
-  q.Delta = o.Delta;
-  q.Delta0 = o.Delta0;
   const UnitsAnswer a = convert_units(q);
   if (o.json)
     std::cout << units_json(a).dump(2) << "\n";
@@ -55,12 +42,12 @@ static Runner add_units(CLI::App& app) {
     if (k.kind == ValueKind::quantity)
       o->physical_options[k.path()] = app.add_option(k.unit_flag, o->physical[k.path()], k.help)->type_name("QUANTITY");
   const std::string fix = " (dimensionless; completes the physical value it fixes: see docs/units.md)";
-  app.add_option("--B", o->B, "bending number B = eta gamma R^3/kappa: gives the shear rate" + fix);
-  app.add_option("--C", o->C, "capillary number C = eta gamma R/mu: gives the shear rate, or mu with --B" + fix);
-  app.add_option("--lambda", o->lambda, "viscosity ratio eta_in/eta_ex: gives the inner viscosity" + fix);
-  app.add_option("--alpha", o->alpha, "alpha = mu R^2/kappa: gives the shear modulus" + fix);
-  app.add_option("--Delta", o->Delta, "excess area A/R^2 - 4 pi: gives the area" + fix);
-  app.add_option("--Delta0", o->Delta0, "stress-free excess area A/R0^2 - 4 pi: gives the stress-free volume" + fix);
+  app.add_option("--B", o->query.B, "bending number B = eta gamma R^3/kappa: gives the shear rate" + fix);
+  app.add_option("--C", o->query.C, "capillary number C = eta gamma R/mu: gives the shear rate, or mu with --B" + fix);
+  app.add_option("--lambda", o->query.lambda, "viscosity ratio eta_in/eta_ex: gives the inner viscosity" + fix);
+  app.add_option("--alpha", o->query.alpha, "alpha = mu R^2/kappa: gives the shear modulus" + fix);
+  app.add_option("--Delta", o->query.Delta, "excess area A/R^2 - 4 pi: gives the area" + fix);
+  app.add_option("--Delta0", o->query.Delta0, "stress-free excess area A/R0^2 - 4 pi: gives the stress-free volume" + fix);
   app.add_flag("--json", o->json, "print one JSON object on stdout");
   return [o] { return run(*o); };
 }

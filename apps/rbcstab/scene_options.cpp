@@ -5,6 +5,16 @@
 
 namespace rbcstab::cli {
 
+void apply_unit_flag(SceneFile& file, const SceneKey& key, const std::string& text) {
+  try {
+    apply_flag(file, key, text);
+  } catch (const InvalidArgument& e) {
+    const std::string m = e.what();
+    const std::string& name = key.unit_flag;
+    throw InvalidArgument(name, m.rfind(key.key, 0) == 0 ? name + m.substr(key.key.size()) : name + ": " + m);
+  }
+}
+
 void SceneOptions::add_to(CLI::App& app) {
   app.add_option("--scene", scene_path, "Scene file (TOML, keys in docs/scenes.md); flags below override it")
       ->check(CLI::ExistingFile);
@@ -57,17 +67,7 @@ SceneFile SceneOptions::read() const {
       case ValueKind::text: apply_flag(f, *flag.key, names_.at(path)); break;
       case ValueKind::modes: apply_flag(f, *flag.key, parse_modes(modes_.at(path), flag.key->flag)); break;
       case ValueKind::boolean: apply_flag(f, *flag.key, booleans_.at(path)); break;
-      case ValueKind::quantity:
-        try {
-          apply_flag(f, *flag.key, names_.at(path));
-        } catch (const InvalidArgument& e) {
-          // The library names the key ("shear_rate = 'x' ..."); the command line names the flag.
-          const std::string m = e.what();
-          const std::string& name = flag.key->unit_flag;
-          throw InvalidArgument(name, m.rfind(flag.key->key, 0) == 0 ? name + m.substr(flag.key->key.size())
-                                                                    : name + ": " + m);
-        }
-        break;
+      case ValueKind::quantity: apply_unit_flag(f, *flag.key, names_.at(path)); break;
     }
   }
   if (full_horizon_option_ && full_horizon_option_->count() > 0)

@@ -13,6 +13,10 @@
 
 namespace rbcstab::cli {
 
+// Applies a [physical] key's text ("3.9um") as its unit flag gives it; the library's message names the key
+// ("radius = ..."), the rethrown one the flag ("--radius = ...").
+void apply_unit_flag(SceneFile& file, const SceneKey& key, const std::string& text);
+
 struct SceneOptions {
   std::string scene_path;
 
