@@ -1,14 +1,28 @@
 #include "scene_options.hpp"
 
 #include "checks.hpp"
+#include "rbcstab/core/error.hpp"
 
 namespace rbcstab::cli {
+
+void apply_unit_flag(SceneFile& file, const SceneKey& key, const std::string& text) {
+  try {
+    apply_flag(file, key, text);
+  } catch (const InvalidArgument& e) {
+    const std::string m = e.what();
+    const std::string& name = key.unit_flag;
+    throw InvalidArgument(name, m.rfind(key.key, 0) == 0 ? name + m.substr(key.key.size()) : name + ": " + m);
+  }
+}
 
 void SceneOptions::add_to(CLI::App& app) {
   app.add_option("--scene", scene_path, "Scene file (TOML, keys in docs/scenes.md); flags below override it")
       ->check(CLI::ExistingFile);
   const SceneFile defaults;
-  for (const SceneKey* k : scene_flags()) {
+  std::vector<const SceneKey*> keys = scene_flags();
+  for (const SceneKey& k : scene_keys())
+    if (!k.unit_flag.empty()) keys.push_back(&k);
+  for (const SceneKey* k : keys) {
     const std::string path = k->path();
     const SceneValue d = k->get(defaults);
     CLI::Option* o = nullptr;
@@ -30,8 +44,10 @@ void SceneOptions::add_to(CLI::App& app) {
         break;
       case ValueKind::modes: o = app.add_option(k->flag, modes_[path], k->help); break;
       case ValueKind::boolean: o = app.add_flag(k->flag, booleans_[path], k->help); break;
+      case ValueKind::quantity: o = app.add_option(k->unit_flag, names_[path], k->help)->type_name("QUANTITY"); break;
     }
-    if (k->kind != ValueKind::modes && k->kind != ValueKind::boolean) o->capture_default_str();
+    if (k->kind != ValueKind::modes && k->kind != ValueKind::boolean && k->kind != ValueKind::quantity)
+      o->capture_default_str();
     flags_.push_back({k, o});
   }
   full_horizon_option_ = app.add_flag("--full-horizon", full_horizon_,
@@ -51,11 +67,13 @@ SceneFile SceneOptions::read() const {
       case ValueKind::text: apply_flag(f, *flag.key, names_.at(path)); break;
       case ValueKind::modes: apply_flag(f, *flag.key, parse_modes(modes_.at(path), flag.key->flag)); break;
       case ValueKind::boolean: apply_flag(f, *flag.key, booleans_.at(path)); break;
+      case ValueKind::quantity: apply_unit_flag(f, *flag.key, names_.at(path)); break;
     }
   }
   if (full_horizon_option_ && full_horizon_option_->count() > 0)
     for (const SceneKey& k : scene_keys())
       if (k.path() == "run.full_horizon") apply_flag(f, k, true);
+  resolve_physical(f);
   validate_scene_file(f);
   return f;
 }

@@ -1,7 +1,8 @@
 #pragma once
 // Scene flags shared by every subcommand that runs a scene: --scene FILE plus one flag per scene key that has
 // one (io's scene_flags(): the parameter table's stored parameters, L, T, dt, model, stepper, rtol, atol and
-// the per-mode perturbations), and --full-horizon, which sets the scene key run.full_horizon.
+// the per-mode perturbations), the [physical] keys' unit flags (--shear-rate, ...), and --full-horizon, which sets
+// the scene key run.full_horizon.
 #include <CLI/CLI.hpp>
 #include <map>
 #include <string>
@@ -11,6 +12,10 @@
 #include "rbcstab/io/scene_file.hpp"
 
 namespace rbcstab::cli {
+
+// Applies a [physical] key's text ("3.9um") as its unit flag gives it; the library's message names the key
+// ("radius = ..."), the rethrown one the flag ("--radius = ...").
+void apply_unit_flag(SceneFile& file, const SceneKey& key, const std::string& text);
 
 struct SceneOptions {
   std::string scene_path;

@@ -51,6 +51,9 @@ long long integer_of(const std::string& keyword, const py::handle& v) {
 SceneValue value_of(const SceneKey& k, const std::string& keyword, const py::handle& v) {
   switch (k.kind) {
     case ValueKind::number: return number_of(keyword, v);
+    case ValueKind::quantity:  // SI number, or text with a unit ("3.9um")
+      if (py::isinstance<py::str>(v)) return v.cast<std::string>();
+      return number_of(keyword, v);
     case ValueKind::integer: return integer_of(keyword, v);
     case ValueKind::name:
     case ValueKind::text: {
@@ -101,6 +104,7 @@ SceneFile with_keywords(SceneFile file, const py::kwargs& kwargs) {
     }
   }
   try {
+    resolve_physical(file);
     file.scene.validate();
     file.options.validate();
   } catch (const InvalidArgument& e) {
@@ -116,6 +120,7 @@ SceneFile with_keywords(SceneFile file, const py::kwargs& kwargs) {
 py::dict to_dict(const SceneFile& f) {
   py::dict out;
   for (const SceneKey& k : scene_keys()) {
+    if (derived_from_physical(f, k)) continue;  // Scene(**d) derives it again from the physical keys
     if (k.path() == "run.L" && f.origin("run.L") == Origin::default_value)
       out[py::str(k.key)] = py::none();
     else

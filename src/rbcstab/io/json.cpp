@@ -129,6 +129,26 @@ nlohmann::json to_json(const Scene& s) {
           {"delta_l", dl}, {"rest_delta_l", rl}, {"L", s.L}, {"T", s.T}, {"dt", s.dt}, {"model", to_string(s.model)}};
 }
 
+nlohmann::json to_json(const PhysicalCell& c) {
+  SceneFile f;
+  f.scene.physical = c;
+  nlohmann::json o = nlohmann::json::object();
+  for (const SceneKey& k : scene_keys())
+    if (k.kind == ValueKind::quantity && !std::isnan(std::get<double>(k.get(f)))) o[k.key] = std::get<double>(k.get(f));
+  return o;
+}
+
+void put_physical(nlohmann::json& j, const Scene& s) {
+  if (!s.physical) return;
+  nlohmann::json o = to_json(*s.physical);
+  const CellNumbers n = cell_numbers(*s.physical);
+  o["R_m"] = n.R;
+  o["time_unit_s"] = n.time_unit;
+  o["T_s"] = s.T * n.time_unit;
+  o["dt_s"] = s.dt * n.time_unit;
+  j["physical"] = o;
+}
+
 void put_truncation(nlohmann::json& j, const SceneFile& file) {
   put_truncation(j, file.scene.L, file.L_reason);
   if (file.truncation_check) j["truncation_check"] = to_json(*file.truncation_check);

@@ -32,6 +32,11 @@ std::string run_reason(IntegrationStatus status, const std::string& reason, cons
 // "truncation_check" when the file holds one.
 void put_truncation(nlohmann::json& j, const SceneFile& file);
 nlohmann::json to_json(const TruncationCheck& c);
+// A physical scene's "physical" object: its given inputs (SI, by their [physical] keys), R [m], and its times in
+// seconds (the model's time unit 1/gamma: time_unit_s, T_s, dt_s). Nothing for a dimensionless scene.
+void put_physical(nlohmann::json& j, const Scene& s);
+// The given inputs of a cell (SI), by their [physical] keys.
+nlohmann::json to_json(const PhysicalCell& c);
 void put_truncation(nlohmann::json& j, int L, const std::string& L_reason);
 // A double, or null when not finite.
 nlohmann::json number_or_null(double v);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdint>
 #include <set>
 #include <sstream>
@@ -32,6 +33,65 @@ SceneKey number_key(const char* table, const char* key, const char* flag, const 
           [field](SceneFile& f, const SceneValue& v) { field(f) = number_of(v); }};
 }
 
+// The [physical] table: one key per PhysicalCell field, each a quantity with a unit. A key set on a scene
+// without a cell creates it; NaN (Python's to_dict of an absent value) leaves the field unset.
+void add_physical_keys(std::vector<SceneKey>& k) {
+  struct Row {
+    const char* key;
+    const char* flag;
+    PhysicalUnit unit;
+    double PhysicalCell::*field;
+    const char* help;
+  };
+  const Row rows[] = {
+      {"temperature", "--temperature", PhysicalUnit::kelvin, &PhysicalCell::temperature,
+       "temperature [K] at which energies in kBT are read"},
+      {"shear_rate", "--shear-rate", PhysicalUnit::per_second, &PhysicalCell::shear_rate,
+       "shear rate gamma [1/s]; B and C follow (a physical scene; time unit 1/gamma)"},
+      {"viscosity", "--viscosity", PhysicalUnit::pascal_second, &PhysicalCell::viscosity,
+       "external (plasma) viscosity eta_ex [Pa s]"},
+      {"inner_viscosity", "--inner-viscosity", PhysicalUnit::pascal_second, &PhysicalCell::inner_viscosity,
+       "internal (cytoplasm) viscosity eta_in [Pa s]: lambda = eta_in/eta_ex (else --lambda)"},
+      {"radius", "--radius", PhysicalUnit::metre, &PhysicalCell::radius,
+       "radius R [m] (or --area with --volume)"},
+      {"area", "--area", PhysicalUnit::square_metre, &PhysicalCell::area,
+       "membrane area A [m^2], with --volume: R = (3V/4 pi)^(1/3), Delta = A/R^2 - 4 pi"},
+      {"volume", "--volume", PhysicalUnit::cubic_metre, &PhysicalCell::volume, "cell volume V [m^3], with --area"},
+      {"stress_free_volume", "--stress-free-volume", PhysicalUnit::cubic_metre, &PhysicalCell::stress_free_volume,
+       "stress-free volume V0 [m^3], with --area: Delta0 = A/R0^2 - 4 pi, R0 = (3 V0/4 pi)^(1/3)"},
+      {"bending_modulus", "--bending-modulus", PhysicalUnit::joule, &PhysicalCell::bending_modulus,
+       "bending modulus kappa [J]"},
+      {"shear_modulus", "--shear-modulus", PhysicalUnit::newton_per_metre, &PhysicalCell::shear_modulus,
+       "(2D) shear modulus mu [N/m]"},
+  };
+  for (const Row& r : rows) {
+    double PhysicalCell::*const field = r.field;
+    const PhysicalUnit unit = r.unit;
+    const std::string key = r.key;
+    k.push_back({"physical", r.key, ValueKind::quantity, "",
+                 std::string(r.help) + "; a number in " + si_unit(unit) + " or with a unit (" + accepted_units(unit) +
+                     ")",
+                 {},
+                 [field](const SceneFile& f) { return SceneValue{f.scene.physical ? (*f.scene.physical).*field : kNotGiven}; },
+                 [field, unit, key](SceneFile& f, const SceneValue& v) {
+                   double x = kNotGiven;
+                   if (const auto* text = std::get_if<std::string>(&v))
+                     x = parse_quantity(*text, unit, key,
+                                        f.scene.physical ? f.scene.physical->temperature : kNotGiven);
+                   else
+                     x = number_of(v);
+                   if (std::isnan(x)) {
+                     if (f.scene.physical) (*f.scene.physical).*field = x;
+                     return;
+                   }
+                   require(std::isfinite(x) && x > 0, key, x, "finite and > 0 (" + si_unit(unit) + ")");
+                   if (!f.scene.physical) f.scene.physical.emplace();
+                   (*f.scene.physical).*field = x;
+                 },
+                 r.flag});
+  }
+}
+
 std::vector<SceneKey> make_scene_keys() {
   std::vector<SceneKey> k;
   k.push_back({"", "name", ValueKind::text, "", "label carried into outputs, one line of printable text", {},
@@ -55,6 +115,7 @@ std::vector<SceneKey> make_scene_keys() {
                {},
                [](const SceneFile& f) { return SceneValue{f.scene.rest_delta_l}; },
                [](SceneFile& f, const SceneValue& v) { merge_modes(f.scene.rest_delta_l, v); }});
+  add_physical_keys(k);
   k.push_back({"run", "L", ValueKind::integer, "--L",
                "truncation: modes l = 2..L, an integer in [" + std::to_string(kMinL) + ", " + std::to_string(kMaxL) +
                    "]; without --L or run.L each command states its choice (simulate, summary, report, post, "
@@ -177,6 +238,10 @@ SceneValue read(const SceneTable& t, const SceneKey& k) {
     case ValueKind::text: return t.text(k.key);
     case ValueKind::modes: return t.modes(k.key);
     case ValueKind::boolean: return t.boolean(k.key);
+    case ValueKind::quantity:
+      if (const auto& items = t.values().at(k.key).items; items.size() == 1 && std::holds_alternative<std::string>(items[0]))
+        return t.text(k.key);
+      return t.number(k.key);
   }
   return {};
 }
@@ -251,7 +316,7 @@ std::string origins_named(const SceneFile& file, const std::string& message) {
   for (const SceneKey& k : scene_keys()) {
     if (k.table.empty() || !names_word(message, k.key)) continue;
     const Origin o = file.origin(k.path());
-    const std::string from = o == Origin::flag   ? k.flag
+    const std::string from = o == Origin::flag   ? k.any_flag()
                              : o == Origin::file ? "the scene file " + file.source
                                                  : "the default";
     out += (out.empty() ? "" : "; ") + k.path() + " from " + from;
@@ -269,6 +334,51 @@ void validate_scene_file(const SceneFile& file) {
     if (from.empty()) throw;
     throw InvalidArgument(e.parameter(), std::string(e.what()) + " (" + from + ")");
   }
+}
+
+namespace {
+// How a message names where a key's value came from: its flag when a flag gave it, else its path.
+std::string given_as(const SceneFile& file, const SceneKey& k) {
+  return file.origin(k.path()) == Origin::flag && !k.any_flag().empty() ? k.any_flag() : k.path();
+}
+const SceneKey& key_at(const std::string& table, const std::string& key) {
+  for (const SceneKey& k : scene_keys())
+    if (k.table == table && k.key == key) return k;
+  throw std::logic_error("no scene key " + table + "." + key);
+}
+}  // namespace
+
+bool derived_from_physical(const SceneFile& file, const SceneKey& key) {
+  if (!file.scene.physical || key.table != "parameters") return false;
+  for (const DerivedParameter& d : derived_parameters(*file.scene.physical))
+    if (d.parameter == key.key) return true;
+  return false;
+}
+
+void resolve_physical(SceneFile& file) {
+  if (!file.scene.physical) return;
+  const PhysicalCell& cell = *file.scene.physical;
+  // The physical key named in a message: the first given one among a parameter's inputs.
+  for (const DerivedParameter& d : derived_parameters(cell)) {
+    const SceneKey& parameter = key_at("parameters", d.parameter);
+    if (file.origin(parameter.path()) == Origin::default_value) continue;
+    for (const std::string& input : d.physical) {
+      const SceneKey& physical = key_at("physical", input);
+      if (file.origin(physical.path()) == Origin::default_value) continue;
+      throw InvalidArgument(parameter.path(), given_as(file, parameter) + " and " + given_as(file, physical) +
+                                             " both given: " + d.parameter +
+                                             " follows from the physical values; give one of them");
+    }
+  }
+  try {
+    cell.validate_complete();
+  } catch (const InvalidArgument& e) {
+    const SceneKey& k = key_at("physical", e.parameter());
+    std::string message = e.what();
+    if (message.rfind(e.parameter(), 0) == 0) message = given_as(file, k) + message.substr(e.parameter().size());
+    throw InvalidArgument(k.path(), message);
+  }
+  file.scene.parameters = physical_parameters(cell, file.scene.parameters);
 }
 
 SceneFile parse_scene(const std::string& toml_text, const std::string& source_name) {
@@ -319,6 +429,7 @@ SceneFile parse_scene(const std::string& toml_text, const std::string& source_na
     with_scene_keys([&] { k.set(f, v); });
     f.origins[k.path()] = Origin::file;
   }
+  with_scene_keys([&] { resolve_physical(f); });
   with_scene_keys([&] { validate_scene_file(f); });
   return f;
 }
@@ -328,6 +439,8 @@ SceneFile load_scene(const std::string& path) { return parse_scene(read_file(pat
 std::string to_toml(const SceneFile& file) {
   toml::table root;
   for (const SceneKey& k : scene_keys()) {
+    if (derived_from_physical(file, k)) continue;
+    if (k.kind == ValueKind::quantity && std::isnan(number_of(k.get(file)))) continue;
     toml::table* t = &root;
     if (!k.table.empty()) {
       if (!root.contains(k.table)) root.insert(k.table, toml::table{});
@@ -336,6 +449,9 @@ std::string to_toml(const SceneFile& file) {
     const SceneValue v = k.get(file);
     switch (k.kind) {
       case ValueKind::number: t->insert(k.key, number_of(v)); break;
+      case ValueKind::quantity:
+        if (!std::isnan(number_of(v))) t->insert(k.key, number_of(v));
+        break;
       case ValueKind::integer: t->insert(k.key, static_cast<int64_t>(integer_of(v))); break;
       case ValueKind::name:
       case ValueKind::text: t->insert(k.key, text_of(v)); break;

@@ -60,7 +60,8 @@ struct SceneFile {
 };
 
 // A scene value as a file or a flag gives it.
-enum class ValueKind { number, integer, name, text, modes, boolean };  // name: one of SceneKey::names
+// name: one of SceneKey::names; quantity: a physical value, a number in SI units or a text with a unit ("3.9um")
+enum class ValueKind { number, integer, name, text, modes, boolean, quantity };
 using SceneValue = std::variant<double, long long, std::string, std::map<int, double>, bool>;
 
 // Every key of a scene file outside the panel tables, one row each: the parameter table's stored rows
@@ -76,7 +77,11 @@ struct SceneKey {
   // Unchecked but for what a narrowing needs (L and max_steps in range, a known name): the scene and options
   // are validated after every key is set. ValueKind::modes merges (a flag overrides single modes).
   std::function<void(SceneFile&, const SceneValue&)> set;
+  // A flag that front ends add themselves, beside scene_flags(): the [physical] keys ("--shear-rate"), whose
+  // values take units.
+  std::string unit_flag{};
   std::string path() const { return table.empty() ? key : table + "." + key; }
+  std::string any_flag() const { return flag.empty() ? unit_flag : flag; }
 };
 const std::vector<SceneKey>& scene_keys();
 // The rows with a flag, in --help order.
@@ -88,6 +93,14 @@ void apply_flag(SceneFile& file, const SceneKey& key, const SceneValue& value);
 // the whole text must parse and each mode appear once, else InvalidArgument(flag, ...).
 std::map<int, double> parse_modes(const std::vector<std::string>& items, const std::string& flag);
 void validate_scene_file(const SceneFile& file);  // the scene and the simulation options
+
+// A physical scene ([physical] keys or their flags): derives the parameters its cell determines
+// (physical_parameters, model/physical.hpp) after the last key or flag is set. A parameter given too (in the file
+// or by a flag) is refused: InvalidArgument("<parameter>", "<--B or parameters.B> and <--shear-rate or
+// physical.shear_rate> both given: ..."). Without physical keys it does nothing.
+void resolve_physical(SceneFile& file);
+// The [parameters] keys a physical scene derives (written only in [physical] by to_toml).
+bool derived_from_physical(const SceneFile& file, const SceneKey& key);
 
 // Parses TOML text; unknown keys, wrong types and out-of-range values throw InvalidArgument naming the key
 // (as "table.key") and the allowed range. The panel tables are kept, not interpreted.

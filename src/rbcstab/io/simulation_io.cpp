@@ -15,6 +15,7 @@ nlohmann::json simulation_json(const SceneFile& file, const SimulationResult& r)
   j["rtol"] = file.options.integrator.rtol;
   j["atol"] = file.options.integrator.atol;
   put_truncation(j, file);
+  put_physical(j, file.scene);
   return j;
 }
 
@@ -24,6 +25,9 @@ std::string simulation_text(const SceneFile& file, const SimulationResult& r) {
       << ", l_Delta = " << r.l_Delta << ", sigma(T) = " << r.sigma_final << ", drift = " << r.excess_area_drift
       << ", steps = " << r.counters.steps << "\n"
       << file.L_reason << "\n";
+  if (file.scene.physical)
+    out << "time unit 1/gamma = " << 1 / file.scene.physical->shear_rate << " s: T = " << file.scene.T << " is "
+        << file.scene.T / file.scene.physical->shear_rate << " s\n";
   if (r.early.terminated)
     out << "terminated early at t = " << r.early.terminated_at << " on a certified " << r.early.kind
         << " (margin 1 - max |mu| = " << r.early.margin << "), resumed at t = " << r.early.resumed_at << "\n";

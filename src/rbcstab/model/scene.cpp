@@ -30,6 +30,7 @@ void Scene::validate() const {
     }
   }
   parameters.validate();
+  if (physical) physical->validate_complete();
   require_L(L);
   validate_table(*this, "initial");
   for (const auto& [l, d] : delta_l) {

@@ -4,12 +4,14 @@
 // model level that is exact for it.
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
 #include "rbcstab/model/amplitudes.hpp"
 #include "rbcstab/model/parameters.hpp"
+#include "rbcstab/model/physical.hpp"
 #include "rbcstab/model/system.hpp"
 
 namespace rbcstab {
@@ -33,6 +35,9 @@ struct Scene {
   double T = 500;                  // horizon
   double dt = 1;                   // output sampling interval
   ModelLevel model = ModelLevel::automatic;  // forced level, or automatic
+  // A physical scene's inputs (SI): B, C and the numbers their inputs give were derived from them
+  // (physical_parameters); times are in units of 1/shear_rate.
+  std::optional<PhysicalCell> physical;
 
   void validate() const;  // throws InvalidArgument naming the key (parameter domains: parameter_table.hpp)
   double perturbation(int l) const;  // delta_l with overrides applied

@@ -15,6 +15,7 @@
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/scene.hpp"
 #include "rbcstab/verdict/asymptotic.hpp"
+#include "rbcstab/verdict/shear_rate.hpp"
 
 namespace rbcstab {
 
@@ -46,6 +47,8 @@ struct ScenePrediction {
   FiniteHorizon horizon;
   ModePrediction asymptotic, finite_horizon, simulation;
   RegimeResult regime;
+  // A physical scene's first unstable shear rate out of plane and in plane (filled by run_summary; empty else).
+  std::vector<ShearRateThreshold> shear_rate_thresholds;
 };
 
 // (a), (b) and (c) for the scene: (b) from the scene's reduced transient over [0, T] (one checkpoint; the

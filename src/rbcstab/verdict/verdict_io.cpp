@@ -100,8 +100,46 @@ nlohmann::json summary_json(const SceneFile& file, const SimulationResult& r, co
   }
   j["tail_window"] = file.options.tail_window;
   put_truncation(j, file);
+  put_physical(j, s);
+  if (s.physical) j["shear_rate_thresholds"] = to_json(pr.shear_rate_thresholds);
   explain_nulls(j, nonfinite_reason(p));
   return j;
+}
+
+nlohmann::json to_json(const std::vector<ShearRateThreshold>& thresholds) {
+  nlohmann::json a = nlohmann::json::array();
+  for (const ShearRateThreshold& t : thresholds) {
+    nlohmann::json o = {{"orientation", t.orientation}, {"beta", t.beta}, {"found", t.found}, {"alpha", t.alpha},
+                        {"evaluations", t.evaluations}};
+    if (t.found) {
+      o["shear_rate"] = t.shear_rate;
+      o["bracket"] = {t.lo, t.hi};
+      o["B"] = t.B;
+      o["C"] = t.C;
+    } else {
+      o["reason"] = t.reason;
+    }
+    if (t.l >= 3) {
+      o["l"] = t.l;
+      o["shape"] = t.shape;
+    }
+    a.push_back(o);
+  }
+  return a;
+}
+
+std::string shear_rate_text(const std::vector<ShearRateThreshold>& thresholds) {
+  std::ostringstream out;
+  out << std::setprecision(6);
+  for (const ShearRateThreshold& t : thresholds) {
+    out << "             " << (t.orientation == "out_of_plane" ? "out of plane: " : "in plane:     ");
+    if (t.found)
+      out << "unstable from " << t.shear_rate << " 1/s (B = " << t.B << ", C = " << t.C << "), mode l = " << t.l
+          << " -> " << t.shape << "\n";
+    else
+      out << t.reason << (t.l >= 3 ? " (mode l = " + std::to_string(t.l) + " -> " + t.shape + ")" : "") << "\n";
+  }
+  return out.str();
 }
 
 std::string summary_text(const SceneFile& file, const SimulationResult& r, const ScenePrediction& pr) {
@@ -114,6 +152,13 @@ std::string summary_text(const SceneFile& file, const SimulationResult& r, const
       << ", C = " << p.C << "\n";
   out << "             beta = " << s.beta << ", delta = " << s.delta << ", L = " << s.L << ", T = " << s.T << "\n";
   out << "Derived      Lambda = " << p.Lambda() << ", S = " << p.S() << ", alpha = B/C = " << p.alpha() << "\n";
+  if (s.physical) {
+    const double unit = 1 / s.physical->shear_rate;
+    out << "Physical     shear rate " << s.physical->shear_rate << " 1/s: time unit 1/gamma = " << unit
+        << " s, T = " << s.T * unit << " s\n";
+    out << "Threshold    first unstable shear rate along B/C = alpha fixed (asymptotic verdict):\n"
+        << shear_rate_text(pr.shear_rate_thresholds);
+  }
   out << "Truncation   " << file.L_reason << "\n";
   out << "Model level  " << to_string(r.level.level) << " -- " << r.level.reason << "\n";
   for (const auto& w : r.warnings) out << "Warning      " << w << "\n";
@@ -200,6 +245,19 @@ nlohmann::json thresholds_json(const SceneFile& file, const ThresholdReport& t) 
   put(j, "C_star_minus", C_star_minus(p));
   put(j, "C_star_plus", C_star_plus(p, t.r0));
   put(j, "C_star_plus_printed", C_star_plus_printed(p, t.r0));
+  if (s.physical) {
+    // C = c gamma at this cell: the shear rate [1/s] at which C reaches each C threshold (the reduced system's
+    // thresholds depend on C through S alone, not on B).
+    put_physical(j, s);
+    const double per_C = s.physical->shear_rate / p.C;
+    for (const auto& [key, q] : {std::pair{"C_star_minus", C_star_minus(p)}, {"C_star_plus", C_star_plus(p, t.r0)}})
+      if (q.valid()) j[std::string(key) + "_shear_rate"] = q.value * per_C;
+    if (t.has_exact_C_star) {
+      std::vector<double> rates;
+      for (double c : t.exact_C_star) rates.push_back(c * per_C);
+      j["C_star_exact_out_of_plane_shear_rate"] = rates;
+    }
+  }
   put(j, "lambda_star_minus", t.lambda_star_minus);
   const OutOfPlaneEquilibrium& eq = t.criterion.equilibrium;
   j["sigma_R_equilibrium"] = eq.sigma_R;
@@ -280,6 +338,7 @@ SummaryRun run_summary(SceneFile file) {
   options.record_trajectory = false;  // the summary reports the run at T and its tail, not its samples
   out.run = simulate_scene(out.file, options, &transient);
   out.prediction = predict(out.file.scene, transient, &out.run);
+  if (out.file.scene.physical) out.prediction.shear_rate_thresholds = shear_rate_thresholds(out.file.scene);
   return out;
 }
 

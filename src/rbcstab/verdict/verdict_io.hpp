@@ -12,6 +12,9 @@
 namespace rbcstab {
 
 nlohmann::json to_json(const ModePrediction& m);
+// Each orientation's first unstable shear rate: orientation, beta, found, alpha, evaluations, then shear_rate
+// [1/s], bracket, B, C when found (else reason), and l, shape when a mode is named.
+nlohmann::json to_json(const std::vector<ShearRateThreshold>& thresholds);
 
 // The summary of a scene file's run r and its prediction (predict(scene, transient, &r)): the keys of
 // to_json(SimulationResult) (without the trajectory), the truncation, then the analysis.

@@ -1,0 +1,110 @@
+#include "rbcstab/verdict/shear_rate.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "rbcstab/core/error.hpp"
+
+namespace rbcstab {
+
+namespace {
+constexpr double kOutOfPlaneBeta = 1e-3;  // the paper's OP start (Sec. IV): beta = 0 is singular for the reduced system
+}  // namespace
+
+void ShearRateSearchOptions::validate() const {
+  require(std::isfinite(min_rate) && min_rate > 0, "min_rate", min_rate, "finite and > 0 (1/s)");
+  require(std::isfinite(max_rate) && max_rate > min_rate, "max_rate", max_rate,
+          "finite and > min_rate = " + format_value(min_rate));
+  require(samples >= 2 && samples <= 10000, "samples", samples, "an integer in [2, 10000]");
+  require(std::isfinite(rtol) && rtol >= 1e-14 && rtol <= 0.1, "rtol", rtol, "in [1e-14, 0.1]");
+  orbit.validate();
+}
+
+std::string shape_of_mode(int l, bool out_of_plane) {
+  const std::string mode = "l = " + std::to_string(l);
+  if (out_of_plane) return (l == 3 ? "stomatocyte (" : "axisymmetric cup (") + mode + ", out of plane)";
+  return l == 3 ? "trilobe (" + mode + ", in plane)" : "multilobe (" + mode + ", in plane)";
+}
+
+ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const ShearRateSearchOptions& options) {
+  options.validate();
+  if (!scene.physical)
+    throw InvalidArgument("shear_rate", "the shear-rate threshold needs a physical scene (a [physical] table or --shear-rate)");
+  ShearRateThreshold t;
+  t.beta = beta;
+  t.orientation = beta == kOutOfPlaneBeta ? "out_of_plane" : "in_plane";
+  t.alpha = scene.parameters.alpha();
+  Scene base = scene, s;
+  base.beta = beta;
+  // The verdict at one rate; nullopt where <sigma_R> has no value (the time average did not converge). Each
+  // rate is set from the base scene, so B and C carry one rounding however long the search.
+  auto verdict = [&](double rate, std::string& why) -> std::optional<AsymptoticVerdict> {
+    s = base;
+    s.parameters = at_shear_rate(*base.physical, base.parameters, rate);
+    s.physical->shear_rate = rate;
+    ++t.evaluations;
+    try {
+      return asymptotic_verdict(s, options.predictor, options.orbit);
+    } catch (const InvalidArgument& e) {
+      why = "asymptotic verdict undefined at shear_rate = " + format_value(rate) + " 1/s: " + e.what();
+      return std::nullopt;
+    }
+  };
+  const double a = std::log(options.min_rate), b = std::log(options.max_rate);
+  std::string why;
+  double lo = options.min_rate;
+  for (int k = 0; k < options.samples; ++k) {
+    const double rate = k + 1 == options.samples ? options.max_rate : std::exp(a + (b - a) * k / (options.samples - 1));
+    const auto v = verdict(rate, why);
+    if (!v) {
+      t.reason = why;
+      return t;
+    }
+    if (!v->unstable) {
+      lo = rate;
+      continue;
+    }
+    if (k == 0) {
+      t.reason = "unstable already at min_rate = " + format_value(options.min_rate) + " 1/s";
+      t.l = v->l;
+      t.shape = shape_of_mode(v->l, t.orientation == "out_of_plane");
+      return t;
+    }
+    double hi = rate;
+    AsymptoticVerdict at_hi = *v;
+    while (hi / lo - 1 > options.rtol) {
+      const double mid = std::sqrt(lo * hi);
+      const auto m = verdict(mid, why);
+      if (!m) {
+        t.reason = why;
+        return t;
+      }
+      if (m->unstable) {
+        hi = mid;
+        at_hi = *m;
+      } else {
+        lo = mid;
+      }
+    }
+    s = base;
+    s.parameters = at_shear_rate(*base.physical, base.parameters, hi);
+    t.found = true;
+    t.lo = lo;
+    t.hi = t.shear_rate = hi;
+    t.B = s.parameters.B;
+    t.C = s.parameters.C;
+    t.l = at_hi.l;
+    t.shape = shape_of_mode(t.l, t.orientation == "out_of_plane");
+    return t;
+  }
+  t.reason = "stable up to max_rate = " + format_value(options.max_rate) + " 1/s";
+  return t;
+}
+
+std::vector<ShearRateThreshold> shear_rate_thresholds(const Scene& scene, const ShearRateSearchOptions& options) {
+  return {shear_rate_threshold(scene, kOutOfPlaneBeta, options),
+          shear_rate_threshold(scene, std::numbers::pi / 2, options)};
+}
+
+}  // namespace rbcstab

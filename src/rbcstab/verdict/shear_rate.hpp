@@ -1,0 +1,48 @@
+#pragma once
+// The shear rate at which a physical cell first becomes unstable. At a fixed cell and fluid B = b gamma and
+// C = c gamma (b = eta R^3/kappa, c = eta R/mu), so raising the shear rate moves the scene along the line
+// ln B - ln C = ln alpha of the (ln B, ln C) plane; the threshold is where that line first enters the unstable
+// region of the asymptotic verdict (verdict/asymptotic.hpp), for each rest orientation of the paper.
+#include <string>
+#include <vector>
+
+#include "rbcstab/analysis/predictors.hpp"
+#include "rbcstab/model/scene.hpp"
+#include "rbcstab/verdict/asymptotic.hpp"
+
+namespace rbcstab {
+
+struct ShearRateSearchOptions {
+  double min_rate = 1;    // 1/s: the search's lower end
+  double max_rate = 1e6;  // 1/s: the upper end (far above the microcirculation's ~1e3/s)
+  int samples = 36;       // log-spaced brackets over [min_rate, max_rate] (6 per decade): an unstable window
+                          // narrower than one bracket can be missed
+  double rtol = 1e-6;     // bisection in ln gamma until hi/lo - 1 <= rtol
+  PredictorOptions predictor;
+  OrbitAverageOptions orbit;
+  void validate() const;  // throws InvalidArgument naming the field
+};
+
+struct ShearRateThreshold {
+  std::string orientation;  // "out_of_plane" (beta = 1e-3, the paper's OP) or "in_plane" (beta = pi/2)
+  double beta = 0;
+  bool found = false;       // a stable-to-unstable crossing within [min_rate, max_rate]
+  std::string reason;       // why not found (unstable already at min_rate, stable up to max_rate, verdict failed)
+  double shear_rate = 0;    // 1/s: the crossing (the bracket's upper end: the first rate found unstable)
+  double lo = 0, hi = 0;    // the final bracket: stable at lo, unstable at hi (hi/lo - 1 <= rtol)
+  double B = 0, C = 0;      // at shear_rate
+  double alpha = 0;         // B/C, fixed along the path
+  int l = 0;                // the surviving mode just above the threshold (asymptotic_verdict)
+  std::string shape;        // the shape the paper associates with it (Sec. V, Fig. 6)
+  int evaluations = 0;      // asymptotic verdicts evaluated
+};
+
+// The scene's shear rate moved along [min_rate, max_rate] (at_shear_rate: B and C together at fixed alpha), with
+// beta set to the orientation's; throws InvalidArgument("shear_rate", ...) for a scene that is not physical.
+ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const ShearRateSearchOptions& options = {});
+// Out of plane, then in plane.
+std::vector<ShearRateThreshold> shear_rate_thresholds(const Scene& scene, const ShearRateSearchOptions& options = {});
+// "stomatocyte (l = 3, out of plane)", "trilobe (l = 3, in plane)", "multilobe (l = 5 lobes, in plane)".
+std::string shape_of_mode(int l, bool out_of_plane);
+
+}  // namespace rbcstab

@@ -1,0 +1,94 @@
+// The shear rate at which a physical cell first becomes unstable (verdict/shear_rate.hpp), against the
+// (ln B, ln C) boundary traced the usual way (sweep/trace.hpp): raising the shear rate at a fixed cell moves
+// the scene along ln B - ln C = ln alpha, so the threshold is where that line meets the traced boundary.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+#include <optional>
+
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/model/physical.hpp"
+#include "rbcstab/sweep/trace.hpp"
+#include "rbcstab/verdict/shear_rate.hpp"
+
+namespace rbcstab {
+namespace {
+
+constexpr double kInPlane = std::numbers::pi / 2;
+
+// R = 3 um, kappa = 2e-19 J, mu = 2.5 uN/m, eta = 1 mPa s (the paper's Sec. VI estimate), lambda = 5,
+// Delta = 1, Delta0 = 0.5: in plane it turns unstable near 600/s (measured), out of plane it stays stable.
+Scene physical_scene() {
+  Scene s;
+  PhysicalCell c;
+  c.shear_rate = 1000;
+  c.viscosity = 1e-3;
+  c.radius = 3e-6;
+  c.bending_modulus = 2e-19;
+  c.shear_modulus = 2.5e-6;
+  s.physical = c;
+  s.parameters.Delta = 1;
+  s.parameters.Delta0 = 0.5;
+  s.parameters = physical_parameters(c, s.parameters);
+  s.T = 200;
+  return s;
+}
+
+TEST(ShearRate, PathMovesBAndCAtFixedAlpha) {
+  const Scene s = physical_scene();
+  const Parameters p = at_shear_rate(*s.physical, s.parameters, 250);
+  EXPECT_NEAR(p.B, s.parameters.B / 4, 1e-15 * s.parameters.B);
+  EXPECT_NEAR(p.C, s.parameters.C / 4, 1e-15 * s.parameters.C);
+  EXPECT_NEAR(p.alpha(), s.parameters.alpha(), 1e-14 * s.parameters.alpha());
+  // The same as the cell at 250/s converted afresh.
+  PhysicalCell c = *s.physical;
+  c.shear_rate = 250;
+  EXPECT_NEAR(p.B, physical_parameters(c, s.parameters).B, 1e-14 * p.B);
+  EXPECT_THROW(shear_rate_threshold(Scene{}, kInPlane), InvalidArgument);
+}
+
+// The traced boundary's polyline crosses ln B - ln C = ln alpha at x*; the threshold's B must be e^x*.
+// Tolerance 1e-4 relative in gamma: the traced points solve the criterion to ~1e-10 and are at most
+// max_step = 0.02 of the unit square apart (0.012 in ln B here), so the chord between them is off the curve by
+// ~h^2/8 ~ 2e-5 in ln units for an O(1) curvature; the bisection's bracket is 1e-6.
+TEST(ShearRate, ThresholdIsWhereTheTracedBoundaryMeetsTheAlphaLine) {
+  const Scene s = physical_scene();
+  const ShearRateThreshold t = shear_rate_threshold(s, kInPlane);
+  ASSERT_TRUE(t.found) << t.reason;
+  EXPECT_LE(t.hi / t.lo - 1, 1e-6);
+  EXPECT_GE(t.l, 3);
+  // Independently of the search: the verdict flips across the bracket.
+  Scene lo = s, hi = s;
+  lo.beta = hi.beta = kInPlane;
+  lo.parameters = at_shear_rate(*s.physical, s.parameters, t.lo);
+  hi.parameters = at_shear_rate(*s.physical, s.parameters, t.hi);
+  EXPECT_FALSE(asymptotic_verdict(lo).unstable);
+  EXPECT_TRUE(asymptotic_verdict(hi).unstable);
+
+  Scene base = s;
+  base.beta = kInPlane;
+  DiagramSpec plane;
+  plane.x = {Axis::lnB, std::log(t.B) - 0.3, std::log(t.B) + 0.3, 16};
+  plane.y = {Axis::lnC, std::log(t.C) - 0.3, std::log(t.C) + 0.3, 16};
+  TraceOptions o;
+  o.lines = 2;
+  o.samples = 16;
+  const TraceResult r = trace_boundary(base, plane, o);
+  ASSERT_FALSE(r.curves.empty());
+  const double ln_alpha = std::log(t.alpha);
+  std::optional<double> x_cross;
+  for (const TraceCurve& c : r.curves)
+    for (std::size_t k = 1; k < c.points.size(); ++k) {
+      const TracePoint &p = c.points[k - 1], &q = c.points[k];
+      const double fp = p.x - p.y - ln_alpha, fq = q.x - q.y - ln_alpha;
+      if ((fp <= 0) != (fq <= 0) && !x_cross) x_cross = p.x + (q.x - p.x) * fp / (fp - fq);
+    }
+  ASSERT_TRUE(x_cross.has_value()) << "the traced boundary does not cross the alpha line";
+  const double b = s.parameters.B / s.physical->shear_rate;  // B = b gamma
+  const double gamma_traced = std::exp(*x_cross) / b;
+  EXPECT_NEAR(gamma_traced / t.shear_rate, 1, 1e-4) << "traced " << gamma_traced << ", searched " << t.shear_rate;
+}
+
+}  // namespace
+}  // namespace rbcstab
