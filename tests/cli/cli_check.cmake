@@ -303,10 +303,10 @@ elseif(CASE STREQUAL "progress")
   if(NOT status STREQUAL "success")
     message(FATAL_ERROR "simulate --progress: status ${status}")
   endif()
-  # post --fig6e counts its runs (ten runs of a long horizon: about 2 s).
-  run_cli(post --fig6e --fig6e-lambda 1 --fig6e-C 0.04 --T 20000 --full-horizon --progress)
+  # post --fig6e counts its runs (40 runs of a long horizon: about 4 s, so that a line a second shows).
+  run_cli(post --fig6e --fig6e-lambda 1 --T 20000 --full-horizon --progress)
   expect_contains("${err}" "rbcstab: post --fig6e: " "post --fig6e --progress")
-  expect_contains("${err}" " of 10 runs" "post --fig6e --progress")
+  expect_contains("${err}" " of 40 runs" "post --fig6e --progress")
 else()
   message(FATAL_ERROR "unknown case ${CASE}")
 endif()
