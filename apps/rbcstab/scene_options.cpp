@@ -15,6 +15,15 @@ void apply_unit_flag(SceneFile& file, const SceneKey& key, const std::string& te
   }
 }
 
+namespace {
+// Every flag's value is read in full and an empty one is refused, a text flag's (--name '') too.
+CLI::Validator non_empty_text(const std::string& accepts) {
+  return CLI::Validator(
+      [accepts](std::string& text) -> std::string { return text.empty() ? "'' is empty (" + accepts + ")" : ""; }, "",
+      "TEXT");
+}
+}  // namespace
+
 void SceneOptions::add_to(CLI::App& app) {
   app.add_option("--scene", scene_path, "Scene file (TOML, keys in docs/scenes.md); flags below override it")
       ->check(CLI::ExistingFile);
@@ -41,6 +50,7 @@ void SceneOptions::add_to(CLI::App& app) {
       case ValueKind::text:
         o = app.add_option(k->flag, names_[path], k->help)->default_val(std::get<std::string>(d));
         if (!k->names.empty()) o->check(CLI::IsMember(k->names));
+        if (k->kind == ValueKind::text) o->check(non_empty_text(k->help));
         break;
       case ValueKind::modes: o = app.add_option(k->flag, modes_[path], k->help); break;
       case ValueKind::boolean: o = app.add_flag(k->flag, booleans_[path], k->help); break;

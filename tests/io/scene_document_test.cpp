@@ -52,7 +52,7 @@ TEST(SceneDocument, EveryStoredRowRoundTripsFromItsKey) {
 
 // The flags are the table's stored rows (--name) and the run options' rows; the oracle lists the latter.
 TEST(SceneDocument, FlagsContinuationParametersAndAxesAreTheTables) {
-  std::vector<std::string> expected;
+  std::vector<std::string> expected{"--name"};
   for (const ParameterRow& r : parameter_table())
     if (r.table) expected.push_back("--" + std::string(r.name));
   for (const char* f : {"--delta-l", "--rest-delta-l", "--L", "--T", "--dt", "--model", "--stepper", "--rtol", "--atol"})

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <set>
 #include <sstream>
+#include <nlohmann/json.hpp>
 #include <toml++/toml.h>
 
 #include "rbcstab/core/error.hpp"
@@ -94,8 +95,10 @@ void add_physical_keys(std::vector<SceneKey>& k) {
 
 std::vector<SceneKey> make_scene_keys() {
   std::vector<SceneKey> k;
-  k.push_back({"", "name", ValueKind::text, "", "label carried into outputs, one line of printable text", {},
-               [](const SceneFile& f) { return SceneValue{f.scene.name}; },
+  k.push_back({"", "name", ValueKind::text, "--name",
+               "label carried into outputs (JSON \"scene\", plot titles, report headings): one line of printable "
+               "text",
+               {}, [](const SceneFile& f) { return SceneValue{f.scene.name}; },
                [](SceneFile& f, const SceneValue& v) { f.scene.name = text_of(v); }});
   for (const ParameterRow& r : parameter_table()) {
     if (!r.table) continue;
@@ -309,6 +312,11 @@ bool names_word(const std::string& text, const std::string& word) {
   return false;
 }
 
+// A name as a message quotes it: JSON-escaped, so a control character stays visible and the message one line.
+std::string quoted_name(const std::string& name) {
+  return nlohmann::json(name).dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
 // Where each value a message names came from ("run.dt from the scene file s.toml; run.T from --T"): a range
 // that depends on another value (dt <= T) is fixed in either place.
 std::string origins_named(const SceneFile& file, const std::string& message) {
@@ -330,6 +338,13 @@ void validate_scene_file(const SceneFile& file) {
     file.scene.validate();
     file.options.validate();
   } catch (const InvalidArgument& e) {
+    if (e.parameter() == "name") {  // the word "name" is in many messages: matched by parameter, not by text
+      const std::string from = file.origin("name") == Origin::flag   ? "--name"
+                               : file.origin("name") == Origin::file ? "the scene file " + file.source
+                                                                     : "the default";
+      throw InvalidArgument("name", std::string(e.what()) + " (name = " + quoted_name(file.scene.name) + " from " +
+                                        from + ")");
+    }
     const std::string from = origins_named(file, e.what());
     if (from.empty()) throw;
     throw InvalidArgument(e.parameter(), std::string(e.what()) + " (" + from + ")");
