@@ -23,6 +23,7 @@
 #include "rbcstab/report/detail/staging.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/report/report.hpp"
+#include "rbcstab/report/shape.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
 #include "rbcstab/sweep/diagram_output.hpp"
@@ -85,6 +86,18 @@ double net_turn(const std::vector<double>& Psi) {
   return turn;
 }
 
+std::vector<double> azimuthal_shares(const ModeAmplitudes& f, int l) {
+  std::vector<double> share(std::size_t(l + 1), 0.0);
+  double total = 0;
+  for (int m = -l; m <= l; ++m) {
+    const double a = std::norm(f.at(l, m));
+    share[std::size_t(std::abs(m))] += a;
+    total += a;
+  }
+  for (double& s : share) s = total > 0 ? s / total : 0.0;
+  return share;
+}
+
 double max_relative_gap(const std::vector<double>& t, const std::vector<double>& x, const std::vector<double>& y,
                         double t_max) {
   double gap = 0;
@@ -137,6 +150,11 @@ struct Line {
     std::vector<double> v;
     for (const auto& d : run.trajectory.Delta_l) v.push_back(l - 2 < int(d.size()) ? d[std::size_t(l - 2)] : 0.0);
     return v;
+  }
+  // f_{l,m}(T): the shape the run ends in, rebuilt from its final state on the level it ran.
+  ModeAmplitudes final_amplitudes() const {
+    return make_system(file.scene.parameters, initial_state(file.scene), run.level.level)
+        ->amplitudes(run.t_reached, run.y_final);
   }
   std::vector<double> Delta_above2() const {  // sum of Delta_l, l >= 3
     std::vector<double> v;
@@ -675,6 +693,58 @@ void fig5(Composer& c, int k, int n) {
         "dashed: lambda_*^-(C) of Eq. ss_lambda_red for each alpha.");
 }
 
+std::string shares_text(const std::vector<double>& share) {
+  std::string out;
+  for (std::size_t m = 0; m < share.size(); ++m) out += (m ? ", " : "") + std::string("|m| = ") + std::to_string(m) + ": " + pct(share[m]);
+  return out;
+}
+
+// The Fig. 6 insets: the shapes the OP and IP runs end in (Sec. V: "an initially OP RBC evolves into a stomatocyte
+// ..., while an IP RBC evolves into a multi-lobed shape"), written on a (theta, phi) grid and drawn by the report's
+// shape renderer, with a check of each shape's mode pattern from the final amplitudes.
+json shape_insets(Composer& c, const std::vector<const Line*>& runs, const std::string& tag) {
+  json insets = json::array();
+  ShapeGridOptions grid;
+  grid.n_theta = 48;  // an inset is ~200 px wide: finer facets are not seen
+  grid.n_phi = 96;
+  for (std::size_t i = 0; i < runs.size(); ++i) {
+    const Line& l = *runs[i];
+    const bool ip = i == 1;
+    const ModeAmplitudes f = l.final_amplitudes();
+    const std::string csv = c.put(l.file.scene.name + "_shape_T.csv", to_csv(shape_on_grid(f, grid)));
+    insets.push_back({{"data", csv},
+                      {"in_plane", ip},
+                      {"label", std::string(ip ? "IP, from above" : "OP, from below") + ", $t=" + num(l.run.t_reached) + "$"},
+                      {"bounds", {0.6, ip ? 0.02 : 0.4, 0.4, 0.36}}});
+    // Sec. V: "the long-time structures inherit their symmetry from their initial state and their orientation
+    // with respect to the flow": the dominant mode's azimuthal pattern at T is its pattern at t = 0.
+    int top = 3;
+    for (int m = 4; m <= f.L; ++m)
+      if (f.excess_area(m) > f.excess_area(top)) top = m;
+    const std::vector<double> end = azimuthal_shares(f, top);
+    const std::vector<double> start = azimuthal_shares(initial_state(l.file.scene).f, top);
+    double moved = 0;
+    for (std::size_t m = 0; m < end.size(); ++m) moved = std::max(moved, std::abs(end[m] - start[m]));
+    const std::size_t largest = std::size_t(std::max_element(end.begin(), end.end()) - end.begin());
+    const std::string measured = "dominant l >= 3 mode at T: l = " + std::to_string(top) + " (Delta_l = " +
+                                 num(f.excess_area(top), 3) + "); shares at T: " + shares_text(end) +
+                                 "; largest change from t = 0: " + num(100 * moved, 3) + " points";
+    const std::string how = "final amplitudes f_{l,m}(T) of the delta = 1e-3 run; m about the vorticity axis z";
+    if (!ip)
+      c.claim(tag + ", OP: the cell evolves into a stomatocyte: its dominant l >= 3 mode is odd (a cup) and "
+                    "axisymmetric about the vorticity axis, the symmetry it started with",
+              measured, "odd l, |m| = 0 share >= 99%, shares within 1 point of t = 0",
+              top % 2 == 1 && end[0] >= 0.99 && moved < 0.01, how);
+    else
+      c.claim(tag + ", IP: the cell evolves into a multi-lobed shape: its dominant l >= 3 mode has no axisymmetric "
+                    "part about the vorticity axis and most area at |m| = l (l lobes in the shear plane), the pattern "
+                    "it started with",
+              measured, "|m| = 0 share < 1%, |m| = l the largest share, shares within 1 point of t = 0",
+              end[0] < 0.01 && largest == std::size_t(top) && moved < 0.01, how);
+  }
+  return insets;
+}
+
 void fig6(Composer& c, int k, int n) {
   c.begin("fig6", "Fig. 6: post-instability dynamics", "Fig. 6", k, n);
   json panels = json::array();
@@ -701,21 +771,23 @@ void fig6(Composer& c, int k, int n) {
     json sd = json::array(), ss = json::array();
     for (std::size_t i = 0; i < runs.size(); ++i) {
       for (int m = 2; m <= 4; ++m)
-        sd.push_back(series(runs[i].csv, "Delta_" + std::to_string(m), m == 2 ? rlabel[i] : "", rcolor[i], lstyle[m - 2],
-                            1.3));
+        sd.push_back(series(runs[i].csv, "Delta_" + std::to_string(m), "", rcolor[i], lstyle[m - 2], 1.3));
       ss.push_back(series(runs[i].csv, "sigma", rlabel[i], rcolor[i], "-", 1.2));
     }
     const std::string a = lam == 5 ? "(a)" : "(c)", b = lam == 5 ? "(b)" : "(d)";
-    json pd = lines_panel(a + " $\\Delta_l(t)$, $\\lambda=" + std::to_string(lam) + "$ (solid $l=2$, dashed 3, dash-dot 4)",
+    json pd = lines_panel(a + " $\\Delta_l(t)$, $\\lambda=" + std::to_string(lam) + "$ (solid $l=2$, dashed 3, dash-dot 4; runs as in " + b + ")",
                           "$\\Delta_l$", sd, "log", {1, T}, "log");
     pd["hlines"] = {hline(tilde, "$\\tilde\\Delta_2$ (theory)", "black", "-", 3),
                     hline(mean_bar, "$\\bar\\Delta_2$ (simulations)", "tab:green", "--", 2)};
+    // The runs' legend is (b)'s and (d)'s, as in the paper; the right half below the curves holds the shapes.
+    pd["legend_loc"] = "center left";
     json ps = lines_panel(b + " $\\sigma(t)$, $\\lambda=" + std::to_string(lam) + "$", "$\\sigma$", ss, "log", {1, T});
     ps["hlines"] = {hline(s_star, "$\\sigma_*$", "black", "-", 3)};
-    panels.push_back(pd);
-    panels.push_back(ps);
     const std::string how = "means over t in [" + num(T - w) + ", " + num(T) + "]";
     const std::string tag = "lambda = " + std::to_string(lam);
+    pd["insets"] = shape_insets(c, {&runs[0], &runs[2]}, tag);
+    panels.push_back(pd);
+    panels.push_back(ps);
     for (int ip = 0; ip < 2; ++ip) {
       const double d1 = bar2[std::size_t(2 * ip)], d2 = bar2[std::size_t(2 * ip + 1)];
       const double s1 = bar_sigma[std::size_t(2 * ip)], s2 = bar_sigma[std::size_t(2 * ip + 1)];
@@ -792,10 +864,12 @@ void fig6(Composer& c, int k, int n) {
             "mean |ratio - 1| at the lower half of ln alpha = " + pct(lo) + ", upper half = " + pct(hi),
             "lower half > upper half", v.size() >= 2 && lo > hi, std::to_string(v.size()) + " unstable rows");
   }
-  c.end(panels, 3, 2, 1300, 1500,
+  c.end(panels, 3, 2, 1300, 1750,
         "(a)-(d) Delta_l(t), l = 2..4, and sigma(t) for B = 2, C = 0.04, Delta = 1, Delta0 = 0.01, lambda = 5 (a, b) "
         "and 1 (c, d), delta = 1e-3, 1e-10, OP and IP; black: Delta~_2 and sigma_*; green: the simulations' "
-        "Delta-bar_2. (e) Delta~_2 against Delta-bar_2 over lambda = 1, 5, B, C; inset: the ratio against ln alpha.");
+        "Delta-bar_2. Insets of (a), (c): the shapes the delta = 1e-3 runs end in at T, OP (a stomatocyte, seen obliquely "
+        "from below) and IP (a multi-lobed shape, seen from above the shear plane), coloured by the distance from the "
+        "origin. (e) Delta~_2 against Delta-bar_2 over lambda = 1, 5, B, C; inset: the ratio against ln alpha.");
 }
 
 // App. C: unperturbed reduced dynamics of the three cells at lambda = 1, 3, 5 (OP: Fig. app3, IP: Fig. app4).

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "rbcstab/model/amplitudes.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 
 namespace rbcstab {
@@ -83,6 +84,10 @@ bool grows_then_decays(const std::vector<double>& x, double drop);
 // is the same shape (f_{2,2} ~ r e^{-i Psi}), so the jump by pi when r passes through 0 (a vesicle tumbling
 // through a nearly axisymmetric shape) is no turn. A tumbling cell turns Psi by -2 pi per tumble.
 double net_turn(const std::vector<double>& Psi);
+// The share of each |m| = 0..l in sum_m |f_{l,m}|^2 (m about the vorticity axis z): where mode l's area lies
+// azimuthally. m = 0 alone is a shape axisymmetric about z; |m| = l puts l lobes around z, in the shear plane.
+// All zeros when the mode is empty.
+std::vector<double> azimuthal_shares(const ModeAmplitudes& f, int l);
 // Largest |x(t) - y(t)| / |y(t)| over t <= t_max for two series on the same samples.
 double max_relative_gap(const std::vector<double>& t, const std::vector<double>& x, const std::vector<double>& y,
                         double t_max);

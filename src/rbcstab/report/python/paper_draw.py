@@ -5,7 +5,7 @@ line; this script only renders DIR/paper.json with matplotlib, Agg backend).
     paper_draw.py DIR     draw every figure of DIR/paper.json into DIR/<id>.png
 
 Panel kinds: "lines" (series of CSV columns against t or l, horizontal and vertical reference lines, an optional
-right axis), "phase" (a phase diagram: phase_draw.draw_phase_diagram with its overlay), "markers" (the unstable
+right axis, optional 3-D shape insets), "phase" (a phase diagram: phase_draw.draw_phase_diagram with its overlay), "markers" (the unstable
 points of several diagrams on one plane, Fig. 5) and "fig6e" (Delta~2 against Delta-bar2 with the ratio inset)."""
 import math
 import os
@@ -16,7 +16,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from phase_draw import draw_phase_diagram  # noqa: E402 (beside this script, on sys.path)
-from rbcstab_report import DPI, MARKERS, read_csv, read_json  # noqa: E402
+from rbcstab_report import DPI, MARKERS, draw_shape, read_csv, read_json, shape_view  # noqa: E402
 
 LS = {"solid": "-", "dashed": "--", "dotted": ":", "dashdot": "-."}
 
@@ -58,7 +58,18 @@ def draw_lines(ax, p, folder):
         h2, l2 = right.get_legend_handles_labels()
         handles, labels = handles + h2, labels + l2
     if handles:
-        ax.legend(handles, labels, loc="best", fontsize=8)
+        ax.legend(handles, labels, loc=p.get("legend_loc", "best"), fontsize=8)
+    for inset in p.get("insets", []):
+        draw_inset_shape(ax, inset, folder)
+
+
+def draw_inset_shape(ax, inset, folder):
+    """A shape (report's renderer, the report's view for its orientation) in a 3-D inset at inset["bounds"]."""
+    ins = ax.inset_axes(inset["bounds"], projection="3d")
+    ins.patch.set_alpha(0)
+    elev, azim = shape_view(inset["in_plane"])
+    k = draw_shape(ins, os.path.join(folder, inset["data"]), elev, azim, axes_labels=False)[0]
+    ins.set_title(inset["label"] + (rf" (deformation $\times{k:g}$)" if k != 1 else ""), fontsize=8, pad=0)
 
 
 def draw_phase(ax, p, folder):

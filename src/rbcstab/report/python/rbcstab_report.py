@@ -270,8 +270,15 @@ def draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim, axes_labels=True, lim=N
         ax.set_axis_off()
 
 
-def plot_shape(shape_csv, out, size_px=(750, 750), title=None, elev=25.0, azim=-60.0):
-    """The 3-D shape rho(theta, phi) coloured by the distance from the origin (Fig. 6 insets)."""
+def shape_view(in_plane):
+    """(elev, azim) of the Fig. 6 insets: the out-of-plane start becomes a stomatocyte whose cup opens along -z,
+    seen obliquely from below; the in-plane start a trilobe lying in the shear plane, seen from above."""
+    return (70.0, -90.0) if in_plane else (-35.0, -60.0)
+
+
+def draw_shape(ax, shape_csv, elev, azim, axes_labels=True):
+    """The shape of a grid CSV (i, j, theta, phi, rho) on a 3-D axes, coloured by rho; returns (k, norm, cmap)
+    (k: the exaggeration of the drawn deformation)."""
     d = read_csv(shape_csv)
     ni, nj = int(max(d["i"])) + 1, int(max(d["j"])) + 1
     theta = [d["theta"][i * nj] for i in range(ni)]
@@ -281,10 +288,16 @@ def plot_shape(shape_csv, out, size_px=(750, 750), title=None, elev=25.0, azim=-
     flat = d["rho"]
     norm = mcolors.Normalize(vmin=min(flat), vmax=max(flat))
     cmap = plt.get_cmap("viridis")
+    draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim, axes_labels=axes_labels)
+    return k, norm, cmap
+
+
+def plot_shape(shape_csv, out, size_px=(750, 750), title=None, elev=25.0, azim=-60.0):
+    """The 3-D shape rho(theta, phi) coloured by the distance from the origin (Fig. 6 insets)."""
     w, h = size_px
     fig = plt.figure(figsize=(w / DPI, h / DPI), dpi=DPI)
     ax = fig.add_axes([0.0, 0.04, 0.84, 0.9], projection="3d")
-    draw_surface(ax, X, Y, Z, R, norm, cmap, elev, azim)
+    k, norm, cmap = draw_shape(ax, shape_csv, elev, azim)
     cax = fig.add_axes([0.86, 0.2, 0.03, 0.6])
     cax.grid(False)
     sm = plt.cm.ScalarMappable(norm=norm, cmap=cmap)
@@ -451,10 +464,7 @@ def draw_report(folder):
             red = path("reduced_trajectory.csv") if "reduced_trajectory.csv" in data else None
             drawn.append(plot_tension(path(data[0]), path(data[1]), out, red, size, title=tag))
         elif kind == "shape":
-            in_plane = m["shape"].get("in_plane", False)
-            # Fig. 6 insets: the out-of-plane start becomes a stomatocyte whose cup opens along -z, seen
-            # obliquely from below; the in-plane start a trilobe lying in the shear plane, seen from above.
-            elev, azim = (70.0, -90.0) if in_plane else (-35.0, -60.0)
+            elev, azim = shape_view(m["shape"].get("in_plane", False))
             drawn.append(plot_shape(path(data[0]), out, size, title=f"{scene['name']}: shape at $t = {f['t']:.4g}$",
                                     elev=elev, azim=azim))
         elif kind == "animation":
