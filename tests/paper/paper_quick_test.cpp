@@ -2,6 +2,7 @@
 // is reported with its measured value, not hidden), the page lists them all, the data behind every figure exists.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -63,6 +64,26 @@ TEST(PaperQuick, EveryFigureDrawnEveryClaimEvaluated) {
     EXPECT_FALSE(f.data.empty()) << f.id;
     for (const std::string& d : f.data) EXPECT_TRUE(fs::is_regular_file(parent / "paper" / d)) << d;
   }
+  // Fig. 6 (a) and (c) carry the final shapes of the OP and IP delta = 1e-3 runs as insets, their grids among the
+  // figure's data.
+  const nlohmann::json spec = nlohmann::json::parse(slurp(parent / "paper" / "paper.json"));
+  bool fig6 = false;
+  for (const auto& f : spec["figures"]) {
+    if (f["id"] != "fig6") continue;
+    fig6 = true;
+    for (int panel : {0, 2}) {
+      const auto& insets = f["panels"][panel]["insets"];
+      ASSERT_EQ(insets.size(), 2u) << panel;
+      EXPECT_FALSE(insets[0]["in_plane"].get<bool>());
+      EXPECT_TRUE(insets[1]["in_plane"].get<bool>());
+      for (const auto& inset : insets) {
+        const std::string data = inset["data"];
+        EXPECT_NE(std::find(f["data"].begin(), f["data"].end(), data), f["data"].end()) << data;
+        EXPECT_TRUE(fs::is_regular_file(parent / "paper" / data)) << data;
+      }
+    }
+  }
+  EXPECT_TRUE(fig6);
   // Nothing but the folder was left beside it (no staging leftovers).
   std::size_t entries = 0;
   for ([[maybe_unused]] const auto& e : fs::directory_iterator(parent)) ++entries;

@@ -73,6 +73,32 @@ TEST(PaperMeasure, MaxRelativeGapUpToATime) {
   EXPECT_NEAR(max_relative_gap(t, x, y, 3), 1.0, 1e-12);
 }
 
+// Oracle: the in-plane start puts Delta_3 into f_{3,m} ~ d^3_{m,0}(pi/2), and |d^3_{m,0}(pi/2)|^2 =
+// (l-m)!/(l+m)! P_3^m(0)^2 by hand: P_3^1(0) = -3/2, P_3^3(0) = -15, P_3^0(0) = P_3^2(0) = 0, so |m| = 1 holds
+// 2 (1/12)(9/4) = 3/8 and |m| = 3 holds 2 (1/720)(225) = 5/8. The out-of-plane start (beta = 0) is all m = 0.
+TEST(PaperMeasure, AzimuthalSharesOfTheInPlaneAndOutOfPlaneStarts) {
+  Scene s;
+  s.L = 4;
+  s.beta = std::numbers::pi / 2;
+  const std::vector<double> ip = azimuthal_shares(initial_state(s).f, 3);
+  ASSERT_EQ(ip.size(), 4u);
+  EXPECT_NEAR(ip[0], 0, 1e-14);
+  EXPECT_NEAR(ip[1], 3.0 / 8, 1e-12);
+  EXPECT_NEAR(ip[2], 0, 1e-14);
+  EXPECT_NEAR(ip[3], 5.0 / 8, 1e-12);
+  s.beta = 0;
+  const std::vector<double> op = azimuthal_shares(initial_state(s).f, 4);
+  ASSERT_EQ(op.size(), 5u);
+  EXPECT_NEAR(op[0], 1, 1e-14);
+  // Hand-set amplitudes: |f_{3,-2}|^2 = 1 and |f_{3,2}|^2 = 4 both count as |m| = 2; an empty mode has no shares.
+  ModeAmplitudes f(3);
+  f.at(3, -2) = {0, 1};
+  f.at(3, 2) = {2, 0};
+  f.at(3, 0) = {-5, 0};
+  EXPECT_EQ(azimuthal_shares(f, 3), (std::vector<double>{25.0 / 30, 0, 5.0 / 30, 0}));
+  EXPECT_EQ(azimuthal_shares(ModeAmplitudes(3), 3), (std::vector<double>{0, 0, 0, 0}));
+}
+
 TEST(PaperScenes, NewScenesHoldTheCaptionsParameters) {
   EXPECT_EQ(find_scene_dir(""), std::string(RBCSTAB_SCENES_DIR));
   const auto dir = fs::path(RBCSTAB_SCENES_DIR);
