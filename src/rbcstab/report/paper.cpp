@@ -305,6 +305,16 @@ json series(const std::string& csv, const std::string& y, const std::string& lab
             const std::string& ls = "-", double lw = 1.5) {
   return {{"data", csv}, {"x", "t"}, {"y", y}, {"label", label}, {"color", color}, {"ls", ls}, {"lw", lw}};
 }
+// Psi(t) as a series. A tumbling run's Psi falls without bound and flattens every other curve of its panel: it is
+// drawn modulo pi in (-pi/2, pi/2] (Psi and Psi + pi are one orientation of the l = 2 shape), its line broken at
+// each wrap; the claims read the unwrapped Psi (net_turn).
+json psi_series(const Line& l, const std::string& label, const std::string& color, const std::string& ls,
+                double lw = 1.5) {
+  const bool tumbles = std::abs(net_turn(l.run.trajectory.Psi)) > std::numbers::pi;
+  json s = series(l.csv, "Psi", tumbles ? label + " (mod $\\pi$)" : label, color, ls, lw);
+  if (tumbles) s["wrap"] = std::numbers::pi;
+  return s;
+}
 json hline(double y, const std::string& label, const std::string& color, const std::string& ls, double lw = 1.2) {
   return {{"y", y}, {"label", label}, {"color", color}, {"ls", ls}, {"lw", lw}};
 }
@@ -315,24 +325,33 @@ json lines_panel(const std::string& title, const std::string& ylabel, json s, co
           {"vlines", json::array()}};
 }
 
+// One drawn curve x(t) on its run's samples (runs of one panel may have different grids and horizons).
+struct Curve {
+  const std::vector<double>* t;
+  const std::vector<double>* x;
+};
+
 // The time axis: logarithmic from t = 1 when every drawn curve settles (to 1% of its swing) before T/5, so the
 // fast transient is visible; when a curve still oscillates at the end, linear over the transient and a few cycles
-// ([0, 4 t_band], t_band: when every curve has entered the band it oscillates in over the last 10% of the run), so
-// the cycles stay readable (the CSV holds the whole run); linear over the run otherwise.
-std::string time_axis(const std::vector<const std::vector<double>*>& curves, const std::vector<double>& t,
-                      std::pair<double, double>& xlim) {
-  const double T = t.back();
+// ([0, 4 t_band], t_band: when every curve has entered the band it oscillates in over the last 10% of its run), so
+// the cycles stay readable (the CSV holds the whole run); linear over the run otherwise. T is the shortest run's
+// horizon: no curve stops inside the drawn window.
+std::string time_axis(const std::vector<Curve>& curves, std::pair<double, double>& xlim) {
+  double T = std::numeric_limits<double>::infinity();
+  for (const Curve& c : curves) T = std::min(T, c.t->back());
   double settle = 0, band = 0;
   bool oscillates = false;
-  for (const auto* x : curves) {
-    const auto [lo, hi] = std::minmax_element(x->begin(), x->end());
+  for (const Curve& c : curves) {
+    const std::vector<double>& t = *c.t;
+    const std::vector<double>& x = *c.x;
+    const auto [lo, hi] = std::minmax_element(x.begin(), x.end());
     const double swing = std::max(*hi - *lo, 1e-300);
-    settle = std::max(settle, settle_time(t, *x, 0.01 * swing));
-    const std::size_t k0 = std::size_t(std::lower_bound(t.begin(), t.end(), 0.9 * T) - t.begin());
-    const auto [tlo, thi] = std::minmax_element(x->begin() + std::ptrdiff_t(k0), x->end());
+    settle = std::max(settle, settle_time(t, x, 0.01 * swing));
+    const std::size_t k0 = std::size_t(std::lower_bound(t.begin(), t.end(), 0.9 * t.back()) - t.begin());
+    const auto [tlo, thi] = std::minmax_element(x.begin() + std::ptrdiff_t(k0), x.end());
     if (*thi - *tlo > 0.01 * swing) oscillates = true;
     for (std::size_t k = k0; k-- > 0;)
-      if ((*x)[k] < *tlo - 0.01 * swing || (*x)[k] > *thi + 0.01 * swing) {
+      if (x[k] < *tlo - 0.01 * swing || x[k] > *thi + 0.01 * swing) {
         band = std::max(band, t[k]);
         break;
       }
@@ -364,13 +383,13 @@ void fig2(Composer& c, int k, int n) {
   json sr = json::array(), sp = json::array();
   for (std::size_t i = 0; i < runs.size(); ++i) {
     sr.push_back(series(runs[i].csv, "r", labels[i], colors[i], styles[i]));
-    sp.push_back(series(runs[i].csv, "Psi", labels[i], colors[i], styles[i]));
+    sp.push_back(psi_series(runs[i], labels[i], colors[i], styles[i]));
   }
   const double T = runs[0].t().back(), w = T / 5;
   std::pair<double, double> xlim;
-  std::vector<const std::vector<double>*> rs;
-  for (const Line& l : runs) rs.push_back(&l.run.trajectory.r);
-  const std::string xs = time_axis(rs, runs[0].t(), xlim);
+  std::vector<Curve> rs;
+  for (const Line& l : runs) rs.push_back({&l.t(), &l.run.trajectory.r});
+  const std::string xs = time_axis(rs, xlim);
   json panels = {lines_panel("(a) $r(t)$", "$r$", sr, xs, xlim),
                  lines_panel("(b) $\\Psi(t)$", "$\\Psi$ (rad)", sp, xs, xlim)};
   const std::string how = "tail: the last " + num(w) + " time units of each run";
@@ -512,7 +531,8 @@ void fig3(Composer& c, int k, int n) {
     std::vector<std::vector<double>> D;
     for (int m = 2; m <= 4; ++m) D.push_back(l.Delta(m));
     std::pair<double, double> xlim;
-    const std::string xs = time_axis({&D[0], &D[1], &D[2], &l.run.trajectory.sigma}, l.t(), xlim);
+    const std::string xs =
+        time_axis({{&l.t(), &D[0]}, {&l.t(), &D[1]}, {&l.t(), &D[2]}, {&l.t(), &l.run.trajectory.sigma}}, xlim);
     json s = json::array();
     for (int m = 2; m <= 4; ++m)
       s.push_back(series(l.csv, "Delta_" + std::to_string(m), "$\\Delta_" + std::to_string(m) + "$",
@@ -894,13 +914,16 @@ void app_vesicle(Composer& c, bool ip, int k, int n) {
     for (int i = 0; i < 3; ++i) {
       const Line& l = runs[std::size_t(3 * j + i)];
       sr.push_back(series(l.csv, "r", cases[i], colors[i], styles[i], i == 2 ? 1.8 : 1.4));
-      sp.push_back(series(l.csv, "Psi", cases[i], colors[i], styles[i], i == 2 ? 1.8 : 1.4));
+      sp.push_back(psi_series(l, cases[i], colors[i], styles[i], i == 2 ? 1.8 : 1.4));
     }
     const std::string lam = std::to_string(2 * j + 1);
     std::pair<double, double> xlim;
-    std::vector<const std::vector<double>*> rs;
-    for (int i = 0; i < 3; ++i) rs.push_back(&runs[std::size_t(3 * j + i)].run.trajectory.r);
-    const std::string xs = time_axis(rs, runs[std::size_t(3 * j)].t(), xlim);
+    std::vector<Curve> rs;
+    for (int i = 0; i < 3; ++i) {
+      const Line& l = runs[std::size_t(3 * j + i)];
+      rs.push_back({&l.t(), &l.run.trajectory.r});
+    }
+    const std::string xs = time_axis(rs, xlim);
     top.push_back(lines_panel(std::string("(") + letters[j] + ") $r(t)$, $\\lambda=" + lam + "$", "$r$", sr, xs, xlim));
     bottom.push_back(
         lines_panel(std::string("(") + letters[j + 3] + ") $\\Psi(t)$, $\\lambda=" + lam + "$", "$\\Psi$ (rad)", sp, xs, xlim));

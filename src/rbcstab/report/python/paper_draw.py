@@ -21,20 +21,41 @@ from rbcstab_report import DPI, MARKERS, draw_shape, read_csv, read_json, shape_
 LS = {"solid": "-", "dashed": "--", "dotted": ":", "dashdot": "-."}
 
 
+def wrapped(x, y, period):
+    """(x, y) with y modulo period in (-period/2, period/2], a NaN inserted where it wraps (no vertical line across
+    the panel)."""
+    ox, oy, prev = [], [], None
+    for a, v in zip(x, y):
+        w = v - period * math.floor(v / period + 0.5) if math.isfinite(v) else v
+        if prev is not None and abs(w - prev) > period / 2:
+            ox.append(a)
+            oy.append(float("nan"))
+        ox.append(a)
+        oy.append(w)
+        prev = w
+    return ox, oy
+
+
 def draw_lines(ax, p, folder):
     right = None
     top = []  # largest drawn value on the main axis: a log axis spans 10 decades below it
+    seen = []  # main-axis values inside the drawn time window: a linear axis spans them only
+    lo_x, hi_x = p["xlim"]
     for s in p["series"]:
         d = read_csv(os.path.join(folder, s["data"]))
         target = ax
         if s.get("right"):
             right = right or ax.twinx()
             target = right
-        y = d[s["y"]]
+        x, y = d[s["x"]], d[s["y"]]
+        if s.get("wrap"):
+            x, y = wrapped(x, y, s["wrap"])
         if p.get("yscale") == "log" and not s.get("right"):
             y = [v if v > 0 else float("nan") for v in y]
             top += [v for v in y if math.isfinite(v)]
-        target.plot(d[s["x"]], y, color=s["color"], ls=s["ls"], lw=s["lw"], marker=s.get("marker"), ms=4,
+        if not s.get("right"):
+            seen += [v for a, v in zip(x, y) if lo_x <= a <= hi_x and math.isfinite(v)]
+        target.plot(x, y, color=s["color"], ls=s["ls"], lw=s["lw"], marker=s.get("marker"), ms=4,
                     label=s["label"] or None)
     for h in p["hlines"]:
         ax.axhline(h["y"], color=h["color"], ls=h["ls"], lw=h["lw"], label=h["label"] or None, zorder=1)
@@ -48,6 +69,10 @@ def draw_lines(ax, p, folder):
         top += [h["y"] for h in p["hlines"] if h["y"] > 0]
         if top:  # decayed modes fall by hundreds of decades: keep 10 below the largest value
             ax.set_ylim(max(top) * 1e-10, max(top) * 3)
+    elif seen and p["xlabel"] == "$t$":  # a time window: the samples before it do not stretch the axis
+        span = max(seen) - min(seen)
+        pad = 0.05 * span if span > 0 else 0.05 * max(abs(max(seen)), 1e-12)
+        ax.set_ylim(min(seen) - pad, max(seen) + pad)
     if p.get("ylim"):
         ax.set_ylim(*p["ylim"])
     ax.set_xlabel(p["xlabel"])
