@@ -195,14 +195,26 @@ Agreement compare(const Scene& base, const DiagramSpec& spec, const std::vector<
   return a;
 }
 
-PointVerdict asymptotic_point(const AsymptoticVerdict& v) { return {true, v.unstable, v.l}; }
+// The asymptotic verdicts. In plane one periodic orbit per flow (it holds no B), mapped to each point's B
+// (bit-identical to solving it there: verdict/asymptotic.hpp).
+std::vector<PointVerdict> asymptotic_verdicts(const Scene& base, const DiagramSpec& spec,
+                                              const std::vector<PointResult>& points, int threads,
+                                              const PredictorOptions& po, const OrbitAverageOptions& oo) {
+  const FlowValues<OrbitSigmaAverage> orbits(
+      base, spec, points, threads, [&](const Scene& s) { return oo.enabled && !is_out_of_plane(s, po); },
+      [&](const Scene& s) { return orbit_sigma_average(s, oo); });
+  return verdicts(base, spec, points, threads, [&](const Scene& s) {
+    const OrbitSigmaAverage* orbit = orbits.find(s);
+    const AsymptoticVerdict v = orbit ? asymptotic_verdict(s, *orbit, po, oo) : asymptotic_verdict(s, po, oo);
+    return PointVerdict{true, v.unstable, v.l};
+  });
+}
 
 }  // namespace
 
 Agreement asymptotic_agreement(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points,
                                const TraceResult& boundary) {
-  const std::vector<PointVerdict> v =
-      verdicts(base, spec, points, 1, [](const Scene& s) { return asymptotic_point(asymptotic_verdict(s)); });
+  const std::vector<PointVerdict> v = asymptotic_verdicts(base, spec, points, 1, {}, {});
   Agreement a = compare(base, spec, points, v, BoundaryDistance(spec, polylines(boundary)));
   a.predictor = "asymptotic";
   a.boundary = "the given traced boundary";
@@ -252,16 +264,7 @@ std::vector<Agreement> predictor_agreements(const Scene& base, const DiagramSpec
   Agreement asymptotic_boundary;
   const BoundaryDistance asymptotic_distance = traced(TraceCriterion::asymptotic, asymptotic_boundary);
   {  // asymptotic
-    // In plane: one periodic orbit per flow (it holds no B), mapped to each point's B (bit-identical to solving it
-    // there: verdict/asymptotic.hpp).
-    const OrbitAverageOptions& oo = options.trace_options.orbit;
-    const FlowValues<OrbitSigmaAverage> orbits(
-        base, spec, points, threads, [&](const Scene& s) { return oo.enabled && !is_out_of_plane(s, po); },
-        [&](const Scene& s) { return orbit_sigma_average(s, oo); });
-    const auto v = verdicts(base, spec, points, threads, [&](const Scene& s) {
-      const OrbitSigmaAverage* orbit = orbits.find(s);
-      return asymptotic_point(orbit ? asymptotic_verdict(s, *orbit, po, oo) : asymptotic_verdict(s, po, oo));
-    });
+    const auto v = asymptotic_verdicts(base, spec, points, threads, po, options.trace_options.orbit);
     push(compare(base, spec, points, v, asymptotic_distance), asymptotic_boundary, "asymptotic",
          "unstable iff mu_l = Upsilon_l(<sigma_R>) > 0 for some l in [3, L] (exact equilibrium out of "
          "plane, periodic-orbit average in plane, time average where no orbit attracts); mode: the surviving mode "

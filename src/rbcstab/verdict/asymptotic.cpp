@@ -153,6 +153,21 @@ AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const OrbitSigmaAverage& 
   return asymptotic_sigma(scene, options, orbit, &flow_orbit);
 }
 
+AsymptoticSigmaMemo::AsymptoticSigmaMemo(const PredictorOptions& options, const OrbitAverageOptions& orbit)
+    : options_(options), orbit_(orbit) {
+  options_.validate();
+  orbit_.validate();
+}
+
+AsymptoticSigma AsymptoticSigmaMemo::operator()(const Scene& scene) {
+  scene.validate();
+  if (!orbit_.enabled || is_out_of_plane(scene, options_)) return asymptotic_sigma_R(scene, options_, orbit_);
+  const auto flow = ReducedTransient::flow(scene.parameters, scene.beta);
+  auto it = orbits_.find(flow);
+  if (it == orbits_.end()) it = orbits_.emplace(flow, orbit_sigma_average(scene, orbit_)).first;
+  return asymptotic_sigma_R(scene, it->second, options_, orbit_);
+}
+
 AsymptoticVerdict asymptotic_verdict(const Scene& scene, double sigma_R) {
   AsymptoticVerdict v;
   v.sigma_R = sigma_R;

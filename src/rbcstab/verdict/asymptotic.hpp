@@ -14,6 +14,7 @@
 // starts), so traces are bit-identical for any thread count.
 #include <Eigen/Dense>
 #include <array>
+#include <map>
 #include <string>
 
 #include "rbcstab/analysis/predictors.hpp"
@@ -95,6 +96,21 @@ OrbitSigmaAverage orbit_sigma_average_at_B(const OrbitSigmaAverage& solved, cons
 // mapped by orbit_sigma_average_at_B instead of solved again, so the result is bit-identical.
 AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const OrbitSigmaAverage& flow_orbit,
                                    const PredictorOptions& options = {}, const OrbitAverageOptions& orbit = {});
+
+// asymptotic_sigma_R over scenes whose flows repeat (e.g. a line of constant C on a lnB x lnC plane): each in-plane
+// flow's orbit is solved once and mapped to the other B (bit-identical to asymptotic_sigma_R, so the order of the
+// calls does not matter). Not thread-safe: one per thread.
+class AsymptoticSigmaMemo {
+ public:
+  explicit AsymptoticSigmaMemo(const PredictorOptions& options = {}, const OrbitAverageOptions& orbit = {});
+  AsymptoticSigma operator()(const Scene& scene);
+  std::size_t orbits_solved() const { return orbits_.size(); }
+
+ private:
+  PredictorOptions options_;
+  OrbitAverageOptions orbit_;
+  std::map<std::array<double, 5>, OrbitSigmaAverage> orbits_;
+};
 
 struct AsymptoticVerdict {
   bool unstable = false;
