@@ -1,9 +1,10 @@
 // The diagram's exact savings (certified early termination, verdict/certified_run.hpp; no tail-window samples
-// under the final classifier; reduced transients shared across B) against the full-horizon runs, in the same
-// process: the paper's panels at 64 x 64 (scenes/*.toml, 2 threads: run_diagram with and without
-// run.full_horizon), the finite-horizon predictor of their agreement, and one run of the default scene.
-// Counters: wall and CPU times, their ratio, points stopped early, verdicts or l_Delta that differ (must be 0),
-// oscillation flags that differ, and the work (RHS evaluations of the runs and of the certification).
+// under the final classifier; reduced transients and in-plane periodic orbits shared across B) against the
+// full-horizon runs, in the same process: the paper's panels at 64 x 64 (scenes/*.toml, 2 threads: run_diagram
+// with and without run.full_horizon), the finite-horizon and asymptotic predictors of their agreement, and one
+// run of the default scene. Counters: wall and CPU times, their ratio, points stopped early, verdicts or l_Delta
+// that differ (must be 0), oscillation flags that differ, and the work (RHS evaluations of the runs and of the
+// certification).
 // docs/benchmarks.md records the numbers.
 #include <benchmark/benchmark.h>
 
@@ -15,10 +16,12 @@
 #include <vector>
 
 #include "rbcstab/analysis/predictors.hpp"
+#include "rbcstab/core/error.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/verdict/asymptotic.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
 
 namespace {
@@ -131,6 +134,69 @@ void BM_FiniteHorizonAgreement(benchmark::State& state) {
 }
 BENCHMARK(BM_FiniteHorizonAgreement)
     ->ArgsProduct({{1, 4}, {64}})
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(1);
+
+// The asymptotic predictor of a panel's agreement: asymptotic_verdict per point (in plane: a periodic-orbit solve
+// each), against predictor_agreements without the finite-horizon predictor and the trace (one orbit per flow,
+// mapped across B; the analytic predictors it also evaluates are closed forms), both on 2 threads. Counters:
+// wall and process CPU times, their ratio, and the points whose verdict or mode differ (must be 0).
+void BM_AsymptoticAgreement(benchmark::State& state) {
+  const rbcstab::SceneFile sf = rbcstab::load_scene(std::string(RBCSTAB_SCENES_DIR) + "/" +
+                                                    kPanels[state.range(0)] + ".toml");
+  rbcstab::DiagramSpec spec = rbcstab::diagram_spec(sf);
+  spec.x.count = spec.y.count = int(state.range(1));
+  std::vector<rbcstab::PointResult> points(spec.size());  // all simulated stable: disagreements = predicted unstable
+  for (std::size_t i = 0; i < points.size(); ++i) points[i].index = i;
+  rbcstab::AgreementOptions o;
+  o.threads = 2;
+  o.trace = false;
+  o.finite_horizon = false;
+  double per_point_s = 0, shared_s = 0, per_point_cpu = 0, shared_cpu = 0;
+  std::size_t differing = 0;
+  for (auto _ : state) {
+    std::vector<int> direct(points.size(), 2), shared(points.size(), 2);  // 2: stable, -1: not classified
+    auto start = std::chrono::steady_clock::now();
+    std::clock_t cpu = std::clock();
+    std::vector<std::thread> pool;
+    for (std::size_t w = 0; w < 2; ++w)
+      pool.emplace_back([&, w] {
+        for (std::size_t i = w; i < points.size(); i += 2) {
+          try {
+            const rbcstab::AsymptoticVerdict v = rbcstab::asymptotic_verdict(rbcstab::point_scene(sf.scene, spec, i));
+            direct[i] = v.unstable ? v.l : 2;
+          } catch (const rbcstab::InvalidArgument&) {
+            direct[i] = -1;
+          }
+        }
+      });
+    for (std::thread& t : pool) t.join();
+    per_point_s += seconds_since(start);
+    per_point_cpu += cpu_since(cpu);
+    start = std::chrono::steady_clock::now();
+    cpu = std::clock();
+    const std::vector<rbcstab::Agreement> a = rbcstab::predictor_agreements(sf.scene, spec, points, o);
+    shared_s += seconds_since(start);
+    shared_cpu += cpu_since(cpu);
+    for (const rbcstab::Disagreement& d : a[0].verdict_disagreements) shared[d.index] = d.l_predicted;
+    std::size_t not_classified = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+      not_classified += direct[i] == -1;
+      differing += direct[i] != -1 && direct[i] != shared[i];
+    }
+    differing += not_classified != a[0].not_classified;
+  }
+  state.SetLabel(kPanels[state.range(0)]);
+  state.counters["per_point_s"] = per_point_s;
+  state.counters["shared_s"] = shared_s;
+  state.counters["per_point_cpu_s"] = per_point_cpu;
+  state.counters["shared_cpu_s"] = shared_cpu;
+  state.counters["cpu_ratio"] = per_point_cpu / shared_cpu;
+  state.counters["differing"] = double(differing);
+}
+BENCHMARK(BM_AsymptoticAgreement)
+    ->ArgsProduct({{3, 4, 5}, {64}})
     ->Unit(benchmark::kSecond)
     ->UseRealTime()
     ->Iterations(1);
