@@ -60,10 +60,8 @@ ModeCriteria plane_criteria(const Scene& base, const DiagramSpec& plane, const T
                                                                                                           double y) {
       const Scene s = plane_scene(base, plane, x, y);
       s.validate();
-      const AsymptoticSigma a = (*memo)(s);
-      if (!a.valid()) throw InvalidArgument("criterion", a.reason);
       CriterionSample out;
-      out.sigma_R = a.sigma_R;
+      out.sigma_R = memo->verdict(s).sigma_R;
       out.alpha = s.parameters.alpha();
       for (int l = 3; l <= s.L; ++l) out.g.push_back(Upsilon_l(s.parameters, l, out.sigma_R));
       return out;

@@ -153,21 +153,6 @@ AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const OrbitSigmaAverage& 
   return asymptotic_sigma(scene, options, orbit, &flow_orbit);
 }
 
-AsymptoticSigmaMemo::AsymptoticSigmaMemo(const PredictorOptions& options, const OrbitAverageOptions& orbit)
-    : options_(options), orbit_(orbit) {
-  options_.validate();
-  orbit_.validate();
-}
-
-AsymptoticSigma AsymptoticSigmaMemo::operator()(const Scene& scene) {
-  scene.validate();
-  if (!orbit_.enabled || is_out_of_plane(scene, options_)) return asymptotic_sigma_R(scene, options_, orbit_);
-  const auto flow = ReducedTransient::flow(scene.parameters, scene.beta);
-  auto it = orbits_.find(flow);
-  if (it == orbits_.end()) it = orbits_.emplace(flow, orbit_sigma_average(scene, orbit_)).first;
-  return asymptotic_sigma_R(scene, it->second, options_, orbit_);
-}
-
 AsymptoticVerdict asymptotic_verdict(const Scene& scene, double sigma_R) {
   AsymptoticVerdict v;
   v.sigma_R = sigma_R;
@@ -190,6 +175,38 @@ AsymptoticVerdict verdict_of(const Scene& scene, const AsymptoticSigma& a) {
   return asymptotic_verdict(scene, a.sigma_R);
 }
 }  // namespace
+
+AsymptoticSigmaMemo::AsymptoticSigmaMemo(const PredictorOptions& options, const OrbitAverageOptions& orbit)
+    : options_(options), orbit_(orbit) {
+  options_.validate();
+  orbit_.validate();
+}
+
+AsymptoticSigma AsymptoticSigmaMemo::operator()(const Scene& scene) {
+  scene.validate();
+  if (!orbit_.enabled || is_out_of_plane(scene, options_)) return asymptotic_sigma_R(scene, options_, orbit_);
+  const auto flow = ReducedTransient::flow(scene.parameters, scene.beta);
+  const OrbitSigmaAverage* known = nullptr;
+  {
+    const std::lock_guard lock(mutex_);
+    const auto it = orbits_.find(flow);
+    if (it != orbits_.end()) known = &it->second;
+  }
+  if (known) return asymptotic_sigma_R(scene, *known, options_, orbit_);
+  const OrbitSigmaAverage solved = orbit_sigma_average(scene, orbit_);  // outside the lock: the slow part
+  {
+    const std::lock_guard lock(mutex_);
+    orbits_.emplace(flow, solved);
+  }
+  return asymptotic_sigma_R(scene, solved, options_, orbit_);
+}
+
+std::size_t AsymptoticSigmaMemo::orbits_solved() const {
+  const std::lock_guard lock(mutex_);
+  return orbits_.size();
+}
+
+AsymptoticVerdict AsymptoticSigmaMemo::verdict(const Scene& scene) { return verdict_of(scene, (*this)(scene)); }
 
 AsymptoticVerdict asymptotic_verdict(const Scene& scene, const PredictorOptions& options,
                                      const OrbitAverageOptions& orbit) {

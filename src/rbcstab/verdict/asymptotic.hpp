@@ -15,6 +15,7 @@
 #include <Eigen/Dense>
 #include <array>
 #include <map>
+#include <mutex>
 #include <string>
 
 #include "rbcstab/analysis/predictors.hpp"
@@ -97,18 +98,23 @@ OrbitSigmaAverage orbit_sigma_average_at_B(const OrbitSigmaAverage& solved, cons
 AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const OrbitSigmaAverage& flow_orbit,
                                    const PredictorOptions& options = {}, const OrbitAverageOptions& orbit = {});
 
+struct AsymptoticVerdict;
+
 // asymptotic_sigma_R over scenes whose flows repeat (e.g. a line of constant C on a lnB x lnC plane): each in-plane
-// flow's orbit is solved once and mapped to the other B (bit-identical to asymptotic_sigma_R, so the order of the
-// calls does not matter). Not thread-safe: one per thread.
+// flow's orbit is solved once and mapped to the other B (bit-identical to asymptotic_sigma_R, so neither the order of
+// the calls nor their threads matter; concurrent callers may both solve a new flow, with the same result).
 class AsymptoticSigmaMemo {
  public:
   explicit AsymptoticSigmaMemo(const PredictorOptions& options = {}, const OrbitAverageOptions& orbit = {});
   AsymptoticSigma operator()(const Scene& scene);
-  std::size_t orbits_solved() const { return orbits_.size(); }
+  // asymptotic_verdict's (throws InvalidArgument("criterion", ...) outside the domain likewise).
+  AsymptoticVerdict verdict(const Scene& scene);
+  std::size_t orbits_solved() const;  // flows held
 
  private:
   PredictorOptions options_;
   OrbitAverageOptions orbit_;
+  mutable std::mutex mutex_;  // guards orbits_ (its nodes stay put: a found entry is read unlocked)
   std::map<std::array<double, 5>, OrbitSigmaAverage> orbits_;
 };
 
