@@ -1,24 +1,28 @@
 // The diagram's exact savings (certified early termination, verdict/certified_run.hpp; no tail-window samples
-// under the final classifier; reduced transients shared across B) against the full-horizon runs, in the same
-// process: the paper's panels at 64 x 64 (scenes/*.toml, 2 threads: run_diagram with and without
-// run.full_horizon), the finite-horizon predictor of their agreement, and one run of the default scene.
-// Counters: wall and CPU times, their ratio, points stopped early, verdicts or l_Delta that differ (must be 0),
-// oscillation flags that differ, and the work (RHS evaluations of the runs and of the certification).
+// under the final classifier; reduced transients and in-plane periodic orbits shared across B) against the
+// full-horizon runs, in the same process: the paper's panels at 64 x 64 (scenes/*.toml, 2 threads: run_diagram
+// with and without run.full_horizon), the finite-horizon and asymptotic predictors of their agreement, and one
+// run of the default scene. Counters: wall and CPU times, their ratio, points stopped early, verdicts or l_Delta
+// that differ (must be 0), oscillation flags that differ, and the work (RHS evaluations of the runs and of the
+// certification).
 // docs/benchmarks.md records the numbers.
 #include <benchmark/benchmark.h>
 
 #include <chrono>
 #include <ctime>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <thread>
 #include <vector>
 
 #include "rbcstab/analysis/predictors.hpp"
+#include "rbcstab/core/error.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/verdict/asymptotic.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
 
 namespace {
@@ -81,47 +85,37 @@ BENCHMARK(BM_PanelEarlyVsFull)
     ->UseRealTime()
     ->Iterations(1);
 
-// The finite-horizon predictor of a panel's agreement (what `rbcstab diagram` writes beside the points): one
-// reduced run per point, as before, against the reduced transients shared across B (predictor_agreements, which
-// integrates one per flow), both on 2 threads. Counters: both wall and process CPU times and their ratios.
-void BM_FiniteHorizonAgreement(benchmark::State& state) {
-  const rbcstab::SceneFile sf = rbcstab::load_scene(std::string(RBCSTAB_SCENES_DIR) + "/" +
-                                                    kPanels[state.range(0)] + ".toml");
-  rbcstab::DiagramSpec spec = rbcstab::diagram_spec(sf);
-  spec.x.count = spec.y.count = int(state.range(1));
-  std::vector<rbcstab::PointResult> points(spec.size());
-  for (std::size_t i = 0; i < points.size(); ++i) points[i].index = i;
-  rbcstab::AgreementOptions with, without;
-  with.threads = without.threads = 2;
-  with.trace = without.trace = false;
-  without.finite_horizon = false;
-  double per_point_s = 0, shared_s = 0, per_point_cpu = 0, shared_cpu = 0;
-  for (auto _ : state) {
-    auto start = std::chrono::steady_clock::now();
-    std::clock_t cpu = std::clock();
-    std::vector<std::thread> pool;
-    for (std::size_t w = 0; w < 2; ++w)
-      pool.emplace_back([&, w] {
-        for (std::size_t i = w; i < points.size(); i += 2) {
-          const rbcstab::Scene s = rbcstab::point_scene(sf.scene, spec, i);
-          benchmark::DoNotOptimize(rbcstab::finite_horizon_growth(s, s.T).G);
-        }
-      });
-    for (std::thread& t : pool) t.join();
-    per_point_s += seconds_since(start);
-    per_point_cpu += cpu_since(cpu);
-    // The predictor's share of predictor_agreements: with it minus without it.
-    start = std::chrono::steady_clock::now();
-    cpu = std::clock();
-    benchmark::DoNotOptimize(rbcstab::predictor_agreements(sf.scene, spec, points, with));
-    shared_s += seconds_since(start);
-    shared_cpu += cpu_since(cpu);
-    start = std::chrono::steady_clock::now();
-    cpu = std::clock();
-    benchmark::DoNotOptimize(rbcstab::predictor_agreements(sf.scene, spec, points, without));
-    shared_s -= seconds_since(start);
-    shared_cpu -= cpu_since(cpu);
-  }
+// A panel's grid with every point simulated stable (the agreement's disagreements are then the points predicted
+// unstable); range(0): the panel (kPanels), range(1): points per axis.
+struct AgreementPanel {
+  rbcstab::SceneFile sf;
+  rbcstab::DiagramSpec spec;
+  std::vector<rbcstab::PointResult> points;
+};
+AgreementPanel agreement_panel(const benchmark::State& state) {
+  AgreementPanel p{rbcstab::load_scene(std::string(RBCSTAB_SCENES_DIR) + "/" + kPanels[state.range(0)] + ".toml"), {},
+                   {}};
+  p.spec = rbcstab::diagram_spec(p.sf);
+  p.spec.x.count = p.spec.y.count = int(state.range(1));
+  p.points.resize(p.spec.size());
+  for (std::size_t i = 0; i < p.points.size(); ++i) p.points[i].index = i;
+  return p;
+}
+// f(i) for every point on two threads (strided), adding its wall and process CPU seconds.
+void per_point_on_two_threads(std::size_t n, const std::function<void(std::size_t)>& f, double& wall, double& cpu) {
+  const auto start = std::chrono::steady_clock::now();
+  const std::clock_t cpu_start = std::clock();
+  std::vector<std::thread> pool;
+  for (std::size_t w = 0; w < 2; ++w)
+    pool.emplace_back([&, w] {
+      for (std::size_t i = w; i < n; i += 2) f(i);
+    });
+  for (std::thread& t : pool) t.join();
+  wall += seconds_since(start);
+  cpu += cpu_since(cpu_start);
+}
+void comparison_counters(benchmark::State& state, double per_point_s, double shared_s, double per_point_cpu,
+                         double shared_cpu) {
   state.SetLabel(kPanels[state.range(0)]);
   state.counters["per_point_s"] = per_point_s;
   state.counters["shared_s"] = shared_s;
@@ -129,8 +123,89 @@ void BM_FiniteHorizonAgreement(benchmark::State& state) {
   state.counters["shared_cpu_s"] = shared_cpu;
   state.counters["cpu_ratio"] = per_point_cpu / shared_cpu;
 }
+
+// The finite-horizon predictor of a panel's agreement (what `rbcstab diagram` writes beside the points): one
+// reduced run per point, as before, against the reduced transients shared across B (predictor_agreements, which
+// integrates one per flow), both on 2 threads. Counters: both wall and process CPU times and their ratios.
+void BM_FiniteHorizonAgreement(benchmark::State& state) {
+  const AgreementPanel p = agreement_panel(state);
+  rbcstab::AgreementOptions with, without;
+  with.threads = without.threads = 2;
+  with.trace = without.trace = false;
+  without.finite_horizon = false;
+  double per_point_s = 0, shared_s = 0, per_point_cpu = 0, shared_cpu = 0;
+  for (auto _ : state) {
+    per_point_on_two_threads(
+        p.points.size(),
+        [&](std::size_t i) {
+          const rbcstab::Scene s = rbcstab::point_scene(p.sf.scene, p.spec, i);
+          benchmark::DoNotOptimize(rbcstab::finite_horizon_growth(s, s.T).G);
+        },
+        per_point_s, per_point_cpu);
+    // The predictor's share of predictor_agreements: with it minus without it.
+    auto start = std::chrono::steady_clock::now();
+    std::clock_t cpu = std::clock();
+    benchmark::DoNotOptimize(rbcstab::predictor_agreements(p.sf.scene, p.spec, p.points, with));
+    shared_s += seconds_since(start);
+    shared_cpu += cpu_since(cpu);
+    start = std::chrono::steady_clock::now();
+    cpu = std::clock();
+    benchmark::DoNotOptimize(rbcstab::predictor_agreements(p.sf.scene, p.spec, p.points, without));
+    shared_s -= seconds_since(start);
+    shared_cpu -= cpu_since(cpu);
+  }
+  comparison_counters(state, per_point_s, shared_s, per_point_cpu, shared_cpu);
+}
 BENCHMARK(BM_FiniteHorizonAgreement)
     ->ArgsProduct({{1, 4}, {64}})
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(1);
+
+// The asymptotic predictor of a panel's agreement: asymptotic_verdict per point (in plane: a periodic-orbit solve
+// each), against predictor_agreements without the finite-horizon predictor and the trace (one orbit per flow,
+// mapped across B; the analytic predictors it also evaluates are closed forms), both on 2 threads. Counters:
+// wall and process CPU times, their ratio, and the points whose verdict or mode differ (must be 0).
+void BM_AsymptoticAgreement(benchmark::State& state) {
+  const AgreementPanel p = agreement_panel(state);
+  rbcstab::AgreementOptions o;
+  o.threads = 2;
+  o.trace = false;
+  o.finite_horizon = false;
+  double per_point_s = 0, shared_s = 0, per_point_cpu = 0, shared_cpu = 0;
+  std::size_t differing = 0;
+  for (auto _ : state) {
+    std::vector<int> direct(p.points.size(), 2), shared(p.points.size(), 2);  // 2: stable, -1: not classified
+    per_point_on_two_threads(
+        p.points.size(),
+        [&](std::size_t i) {
+          try {
+            const rbcstab::AsymptoticVerdict v =
+                rbcstab::asymptotic_verdict(rbcstab::point_scene(p.sf.scene, p.spec, i));
+            direct[i] = v.unstable ? v.l : 2;
+          } catch (const rbcstab::InvalidArgument&) {
+            direct[i] = -1;
+          }
+        },
+        per_point_s, per_point_cpu);
+    const auto start = std::chrono::steady_clock::now();
+    const std::clock_t cpu = std::clock();
+    const std::vector<rbcstab::Agreement> a = rbcstab::predictor_agreements(p.sf.scene, p.spec, p.points, o);
+    shared_s += seconds_since(start);
+    shared_cpu += cpu_since(cpu);
+    for (const rbcstab::Disagreement& d : a[0].verdict_disagreements) shared[d.index] = d.l_predicted;
+    std::size_t not_classified = 0;
+    for (std::size_t i = 0; i < p.points.size(); ++i) {
+      not_classified += direct[i] == -1;
+      differing += direct[i] != -1 && direct[i] != shared[i];
+    }
+    differing += not_classified != a[0].not_classified;
+  }
+  comparison_counters(state, per_point_s, shared_s, per_point_cpu, shared_cpu);
+  state.counters["differing"] = double(differing);
+}
+BENCHMARK(BM_AsymptoticAgreement)
+    ->ArgsProduct({{3, 4, 5}, {64}})
     ->Unit(benchmark::kSecond)
     ->UseRealTime()
     ->Iterations(1);

@@ -1,6 +1,7 @@
 #include "rbcstab/sweep/agreement.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
@@ -10,6 +11,7 @@
 
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/verdict/asymptotic.hpp"
 #include "rbcstab/verdict/predict.hpp"
 
 namespace rbcstab {
@@ -120,41 +122,41 @@ std::vector<PointVerdict> verdicts(const Scene& base, const DiagramSpec& spec, c
   return out;
 }
 
-// The reduced transients of the points' flows (transient_at_B), each integrated once at the base scene's B, so
-// that a point's transient does not depend on which other points the diagram (or its shard) holds. A flow whose
-// run refuses its scene has none.
-class FlowTransients {
+// One value per reduced flow (ReducedTransient::flow) of the points, each computed once at the base scene's B, so
+// that a point's value does not depend on which other points the diagram (or its shard) holds; the points map it
+// to their B (transient_at_B, orbit_sigma_average_at_B). A flow whose computation refuses its scene has none.
+template <class T>
+class FlowValues {
  public:
-  FlowTransients(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points, int threads,
-                 const PredictorOptions& options) {
+  // compute(s) for one scene of each flow with B = the base's; wanted(s): the point needs its flow's value.
+  FlowValues(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points, int threads,
+             const std::function<bool(const Scene&)>& wanted, const std::function<T(const Scene&)>& compute) {
     std::vector<Scene> flows;
     for (const PointResult& p : points) {
       if (p.verdict == Verdict::failed) continue;
       Scene s = point_scene(base, spec, p.index);
-      if (!index_.emplace(ReducedTransient::flow(s.parameters, s.beta), flows.size()).second) continue;
+      if (!wanted(s) || !index_.emplace(ReducedTransient::flow(s.parameters, s.beta), flows.size()).second) continue;
       s.parameters.B = base.parameters.B;
       flows.push_back(std::move(s));
     }
-    transients_.resize(flows.size());
+    values_.resize(flows.size());
     parallel_for(flows.size(), threads, [&](std::size_t k) {
       try {
-        transients_[k] = reduced_transient(flows[k], flows[k].T, 1, options);
+        values_[k] = compute(flows[k]);
       } catch (const InvalidArgument&) {
-        transients_[k].reset();
+        values_[k].reset();
       }
     });
   }
-  // The transient of the point scene s: throws InvalidArgument where its flow has none.
-  ReducedTransient at(const Scene& s) const {
+  // The value of the point scene s's flow; nullptr where it has none.
+  const T* find(const Scene& s) const {
     const auto it = index_.find(ReducedTransient::flow(s.parameters, s.beta));
-    if (it == index_.end() || !transients_[it->second])
-      throw InvalidArgument("transient", "no reduced transient of this flow");
-    return transient_at_B(*transients_[it->second], s);
+    return it == index_.end() || !values_[it->second] ? nullptr : &*values_[it->second];
   }
 
  private:
   std::map<std::array<double, 5>, std::size_t> index_;
-  std::vector<std::optional<ReducedTransient>> transients_;
+  std::vector<std::optional<T>> values_;
 };
 
 Agreement compare(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points,
@@ -193,17 +195,26 @@ Agreement compare(const Scene& base, const DiagramSpec& spec, const std::vector<
   return a;
 }
 
-PointVerdict asymptotic_point(const Scene& s, const PredictorOptions& o, const OrbitAverageOptions& orbit) {
-  const AsymptoticVerdict v = asymptotic_verdict(s, o, orbit);
-  return {true, v.unstable, v.l};
+// The asymptotic verdicts. In plane one periodic orbit per flow (it holds no B), mapped to each point's B
+// (bit-identical to solving it there: verdict/asymptotic.hpp).
+std::vector<PointVerdict> asymptotic_verdicts(const Scene& base, const DiagramSpec& spec,
+                                              const std::vector<PointResult>& points, int threads,
+                                              const PredictorOptions& po, const OrbitAverageOptions& oo) {
+  const FlowValues<OrbitSigmaAverage> orbits(
+      base, spec, points, threads, [&](const Scene& s) { return oo.enabled && !is_out_of_plane(s, po); },
+      [&](const Scene& s) { return orbit_sigma_average(s, oo); });
+  return verdicts(base, spec, points, threads, [&](const Scene& s) {
+    const OrbitSigmaAverage* orbit = orbits.find(s);
+    const AsymptoticVerdict v = orbit ? asymptotic_verdict(s, *orbit, po, oo) : asymptotic_verdict(s, po, oo);
+    return PointVerdict{true, v.unstable, v.l};
+  });
 }
 
 }  // namespace
 
 Agreement asymptotic_agreement(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points,
                                const TraceResult& boundary) {
-  const std::vector<PointVerdict> v =
-      verdicts(base, spec, points, 1, [](const Scene& s) { return asymptotic_point(s, PredictorOptions{}, {}); });
+  const std::vector<PointVerdict> v = asymptotic_verdicts(base, spec, points, 1, {}, {});
   Agreement a = compare(base, spec, points, v, BoundaryDistance(spec, polylines(boundary)));
   a.predictor = "asymptotic";
   a.boundary = "the given traced boundary";
@@ -253,17 +264,20 @@ std::vector<Agreement> predictor_agreements(const Scene& base, const DiagramSpec
   Agreement asymptotic_boundary;
   const BoundaryDistance asymptotic_distance = traced(TraceCriterion::asymptotic, asymptotic_boundary);
   {  // asymptotic
-    const auto v = verdicts(base, spec, points, threads,
-                            [&](const Scene& s) { return asymptotic_point(s, po, options.trace_options.orbit); });
+    const auto v = asymptotic_verdicts(base, spec, points, threads, po, options.trace_options.orbit);
     push(compare(base, spec, points, v, asymptotic_distance), asymptotic_boundary, "asymptotic",
          "unstable iff mu_l = Upsilon_l(<sigma_R>) > 0 for some l in [3, L] (exact equilibrium out of "
          "plane, periodic-orbit average in plane, time average where no orbit attracts); mode: the surviving mode "
          "argmax_l sigma_l^c");
   }
   if (options.finite_horizon) {
-    const FlowTransients transients(base, spec, points, threads, po);
+    const FlowValues<ReducedTransient> transients(
+        base, spec, points, threads, [](const Scene&) { return true; },
+        [&](const Scene& s) { return reduced_transient(s, s.T, 1, po); });
     const auto v = verdicts(base, spec, points, threads, [&](const Scene& s) {
-      const ModePrediction m = finite_horizon_prediction(s, finite_horizon_growth(s, transients.at(s)));
+      const ReducedTransient* tr = transients.find(s);
+      if (!tr) return PointVerdict{};  // the flow's run refused its scene: not classified
+      const ModePrediction m = finite_horizon_prediction(s, finite_horizon_growth(s, transient_at_B(*tr, s)));
       if (m.status != DomainStatus::ok) return PointVerdict{};
       return PointVerdict{true, !m.unstable.empty(), m.unstable.empty() ? 2 : m.l_Delta};
     });

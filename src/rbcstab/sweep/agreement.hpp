@@ -47,13 +47,14 @@ struct Agreement {
 struct AgreementOptions {
   bool finite_horizon = true;   // one reduced run over [0, T] per point (~0.1-1 ms each)
   bool trace = true;            // trace the asymptotic boundary for the distances (~10 ms out of plane)
-  bool trace_in_plane = true;   // trace in-plane scenes too (periodic-orbit averages: ~9 s CPU on the App. E(a)
-                                // plane; ~100 s with the former time averages)
+  bool trace_in_plane = true;   // trace in-plane scenes too (periodic-orbit averages, one per value of C among the
+                                // tracer's evaluations: ~2.6 s CPU on the App. E(a) plane; ~100 s with time averages)
   bool trace_finite_horizon = false;  // also trace the finite-horizon boundary (~1-3 s on a Fig. 4 plane: one
                                       // reduced run per evaluation); else its distances are to the asymptotic one
   int threads = 1;              // per-point predictor verdicts in parallel (results do not depend on it)
   TraceOptions trace_options;   // for the traced boundaries (criterion is set per predictor); its orbit options
-                                // also serve the per-point asymptotic verdicts
+                                // also serve the per-point asymptotic verdicts (in plane: one orbit per flow,
+                                // solved at the base scene's B and mapped to each point's B)
   PredictorOptions predictor;   // per-point verdicts (analysis defaults: verdicts need no 1e-12 smoothness)
   void validate() const;
 };

@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <memory>
 
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/verdict/asymptotic.hpp"
 #include "rbcstab/verdict/predict.hpp"
 #include "rbcstab/model/scene.hpp"
 
@@ -53,11 +55,13 @@ ModeCriteria plane_criteria(const Scene& base, const DiagramSpec& plane, const T
     c.description = is_out_of_plane(base, options.predictor) ? kAsymptoticExact
                     : options.orbit.enabled                   ? kAsymptoticOrbit
                                                               : kAsymptoticAverage;
-    c.at = [&base, &plane, po = options.predictor, oo = options.orbit](double x, double y) {
+    // Evaluations that share a flow (e.g. along a line of constant C) share its in-plane orbit.
+    c.at = [&base, &plane, memo = std::make_shared<AsymptoticSigmaMemo>(options.predictor, options.orbit)](double x,
+                                                                                                          double y) {
       const Scene s = plane_scene(base, plane, x, y);
       s.validate();
       CriterionSample out;
-      out.sigma_R = asymptotic_verdict(s, po, oo).sigma_R;
+      out.sigma_R = memo->verdict(s).sigma_R;
       out.alpha = s.parameters.alpha();
       for (int l = 3; l <= s.L; ++l) out.g.push_back(Upsilon_l(s.parameters, l, out.sigma_R));
       return out;

@@ -28,6 +28,7 @@ OrbitSigmaAverage orbit_sigma_average(const Scene& scene, const OrbitAverageOpti
   scene.validate();
   constexpr double kTwoPi = 2 * std::numbers::pi;
   OrbitSigmaAverage a;
+  a.flow = ReducedTransient::flow(scene.parameters, scene.beta);
   // The free parameter is irrelevant at fixed p; B is defined for every valid scene.
   const ReducedForcedSystem sys(scene, ContinuationParameter::B);
   const PeriodicOrbitProblem orbit(sys, o.shooting);
@@ -62,26 +63,34 @@ OrbitSigmaAverage orbit_sigma_average(const Scene& scene, const OrbitAverageOpti
                format_value(a.max_multiplier) + ")";
     return a;
   }
-  // Periodic trapezoid rule on t_k = 2 pi k / K: sigma_R(t) from the model's own observation.
+  // Periodic trapezoid rule on t_k = 2 pi k / K of mu(t) (B-free; sigma_R follows at the end, affine in mu).
   const int K = o.samples;
   std::vector<double> grid;
   grid.reserve(static_cast<std::size_t>(K));
   for (int k = 1; k < K; ++k) grid.push_back(kTwoPi * k / K);
-  double sum = model.observe(0.0, std::span<const double>(a.x0.data(), 3)).sigma;
+  double sum = model.mu(0.0, std::span<const double>(a.x0.data(), 3));
   IntegratorOptions io;
   io.stepper = Stepper::rk8pd;
   io.rtol = o.shooting.rtol;
   io.atol = o.shooting.atol;
   const IntegrationResult r = integrate(model, std::span<const double>(a.x0.data(), 3), 0.0, grid, io,
-                                        [&](double t, std::span<const double> y) { sum += model.observe(t, y).sigma; });
+                                        [&](double t, std::span<const double> y) { sum += model.mu(t, y); });
   a.integrations = orbit.integrations() + 1;
   if (r.status != IntegrationStatus::success) {
     a.reason = "one-period run failed: " + r.reason;
     return a;
   }
-  a.sigma_R = sum / K;
-  a.ok = std::isfinite(a.sigma_R);
+  a.mean_mu = sum / K;
+  a.ok = std::isfinite(a.mean_mu);
   if (!a.ok) a.reason = "non-finite period average";
+  return orbit_sigma_average_at_B(a, scene);
+}
+
+OrbitSigmaAverage orbit_sigma_average_at_B(const OrbitSigmaAverage& solved, const Scene& scene) {
+  if (ReducedTransient::flow(scene.parameters, scene.beta) != solved.flow)
+    throw InvalidArgument("orbit", "the periodic orbit was solved for another flow (parameters other than B, or beta)");
+  OrbitSigmaAverage a = solved;
+  a.sigma_R = a.ok ? Upsilon_l(scene.parameters, 2).sigma_at(a.mean_mu) : 0.0;
   return a;
 }
 
@@ -89,7 +98,10 @@ bool is_out_of_plane(const Scene& scene, const PredictorOptions& options) {
   return stress_free_r0(scene) < options.out_of_plane_r0;
 }
 
-AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const PredictorOptions& options, const OrbitAverageOptions& orbit) {
+namespace {
+// flow_orbit: the orbit of the scene's flow if already solved (else solved here when needed).
+AsymptoticSigma asymptotic_sigma(const Scene& scene, const PredictorOptions& options, const OrbitAverageOptions& orbit,
+                                 const OrbitSigmaAverage* flow_orbit) {
   scene.validate();
   options.validate();
   orbit.validate();
@@ -106,7 +118,8 @@ AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const PredictorOptions& o
     out.note = "the out-of-plane equilibrium is not stable";
   } else if (orbit.enabled) {
     // In plane the attractor is (mostly) a 2 pi-periodic orbit of the forced reduced system.
-    const OrbitSigmaAverage a = orbit_sigma_average(scene, orbit);
+    const OrbitSigmaAverage a =
+        flow_orbit ? orbit_sigma_average_at_B(*flow_orbit, scene) : orbit_sigma_average(scene, orbit);
     out.max_multiplier = a.max_multiplier;
     out.newton_iterations = a.newton_iterations;
     if (a.ok) {
@@ -129,6 +142,16 @@ AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const PredictorOptions& o
   out.sigma_R = avg.mean.value;
   return out;
 }
+}  // namespace
+
+AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const PredictorOptions& options, const OrbitAverageOptions& orbit) {
+  return asymptotic_sigma(scene, options, orbit, nullptr);
+}
+
+AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const OrbitSigmaAverage& flow_orbit,
+                                   const PredictorOptions& options, const OrbitAverageOptions& orbit) {
+  return asymptotic_sigma(scene, options, orbit, &flow_orbit);
+}
 
 AsymptoticVerdict asymptotic_verdict(const Scene& scene, double sigma_R) {
   AsymptoticVerdict v;
@@ -146,11 +169,53 @@ AsymptoticVerdict asymptotic_verdict(const Scene& scene, double sigma_R) {
   return v;
 }
 
-AsymptoticVerdict asymptotic_verdict(const Scene& scene, const PredictorOptions& options,
-                                     const OrbitAverageOptions& orbit) {
-  const AsymptoticSigma a = asymptotic_sigma_R(scene, options, orbit);
+namespace {
+AsymptoticVerdict verdict_of(const Scene& scene, const AsymptoticSigma& a) {
   if (!a.valid()) throw InvalidArgument("criterion", a.reason);
   return asymptotic_verdict(scene, a.sigma_R);
+}
+}  // namespace
+
+AsymptoticSigmaMemo::AsymptoticSigmaMemo(const PredictorOptions& options, const OrbitAverageOptions& orbit)
+    : options_(options), orbit_(orbit) {
+  options_.validate();
+  orbit_.validate();
+}
+
+AsymptoticSigma AsymptoticSigmaMemo::operator()(const Scene& scene) {
+  scene.validate();
+  if (!orbit_.enabled || is_out_of_plane(scene, options_)) return asymptotic_sigma_R(scene, options_, orbit_);
+  const auto flow = ReducedTransient::flow(scene.parameters, scene.beta);
+  const OrbitSigmaAverage* known = nullptr;
+  {
+    const std::lock_guard lock(mutex_);
+    const auto it = orbits_.find(flow);
+    if (it != orbits_.end()) known = &it->second;
+  }
+  if (known) return asymptotic_sigma_R(scene, *known, options_, orbit_);
+  const OrbitSigmaAverage solved = orbit_sigma_average(scene, orbit_);  // outside the lock: the slow part
+  {
+    const std::lock_guard lock(mutex_);
+    orbits_.emplace(flow, solved);
+  }
+  return asymptotic_sigma_R(scene, solved, options_, orbit_);
+}
+
+std::size_t AsymptoticSigmaMemo::orbits_solved() const {
+  const std::lock_guard lock(mutex_);
+  return orbits_.size();
+}
+
+AsymptoticVerdict AsymptoticSigmaMemo::verdict(const Scene& scene) { return verdict_of(scene, (*this)(scene)); }
+
+AsymptoticVerdict asymptotic_verdict(const Scene& scene, const PredictorOptions& options,
+                                     const OrbitAverageOptions& orbit) {
+  return verdict_of(scene, asymptotic_sigma_R(scene, options, orbit));
+}
+
+AsymptoticVerdict asymptotic_verdict(const Scene& scene, const OrbitSigmaAverage& flow_orbit,
+                                     const PredictorOptions& options, const OrbitAverageOptions& orbit) {
+  return verdict_of(scene, asymptotic_sigma_R(scene, flow_orbit, options, orbit));
 }
 
 }  // namespace rbcstab

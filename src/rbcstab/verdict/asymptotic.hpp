@@ -13,6 +13,9 @@
 // diagram agreement (sweep). Deterministic: every evaluation starts from the scene's own state (no warm
 // starts), so traces are bit-identical for any thread count.
 #include <Eigen/Dense>
+#include <array>
+#include <map>
+#include <mutex>
 #include <string>
 
 #include "rbcstab/analysis/predictors.hpp"
@@ -68,11 +71,17 @@ struct AsymptoticSigma {
 AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const PredictorOptions& options = {},
                                    const OrbitAverageOptions& orbit = {});
 
-// The periodic-orbit average alone (no fallback): status in the result. Exposed for tests and benchmarks.
+// The periodic-orbit average alone (no fallback): status in the result.
+// The orbit holds no B: the reduced flow depends on lambda, Delta, Delta0, C and beta only (ReducedTransient::flow;
+// mu = Upsilon_2(sigma_R) comes from the area balance, whose other terms hold no B), and B enters only through
+// sigma_R = Upsilon_2^{-1}(mu), affine in mu. So the orbit, its multipliers and the period average of mu are the
+// same bits at every B, and <sigma_R> = Upsilon_2^{-1}(<mu>) at the scene's B.
 struct OrbitSigmaAverage {
   bool ok = false;
-  std::string reason;          // why not ok
-  double sigma_R = 0;          // period average of sigma_R (trapezoid, `samples` points)
+  std::string reason;          // why not ok (never depends on B)
+  std::array<double, 5> flow{};  // ReducedTransient::flow of the scene it was solved for
+  double mean_mu = 0;          // period average of mu = Upsilon_2(sigma_R) (trapezoid, `samples` points): B-free
+  double sigma_R = 0;          // period average of sigma_R = Upsilon_2^{-1}(mean_mu) at the scene's B
   double max_multiplier = 0;   // largest nontrivial |Floquet multiplier|
   int newton_iterations = 0;
   double newton_residual = 0;
@@ -80,6 +89,34 @@ struct OrbitSigmaAverage {
   std::size_t integrations = 0;  // shooting + quadrature runs (work)
 };
 OrbitSigmaAverage orbit_sigma_average(const Scene& scene, const OrbitAverageOptions& orbit = {});
+// The average of a scene that differs from the solved one at most in B, without solving: bit-identical to
+// orbit_sigma_average(scene) (see above). A diagram with B on an axis solves one orbit per value of the other
+// axis. Throws InvalidArgument("orbit", ...) if the flow differs.
+OrbitSigmaAverage orbit_sigma_average_at_B(const OrbitSigmaAverage& solved, const Scene& scene);
+// asymptotic_sigma_R with the orbit of the scene's flow already solved (at any B, with the same orbit options):
+// mapped by orbit_sigma_average_at_B instead of solved again, so the result is bit-identical.
+AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const OrbitSigmaAverage& flow_orbit,
+                                   const PredictorOptions& options = {}, const OrbitAverageOptions& orbit = {});
+
+struct AsymptoticVerdict;
+
+// asymptotic_sigma_R over scenes whose flows repeat (e.g. a line of constant C on a lnB x lnC plane): each in-plane
+// flow's orbit is solved once and mapped to the other B (bit-identical to asymptotic_sigma_R, so neither the order of
+// the calls nor their threads matter; concurrent callers may both solve a new flow, with the same result).
+class AsymptoticSigmaMemo {
+ public:
+  explicit AsymptoticSigmaMemo(const PredictorOptions& options = {}, const OrbitAverageOptions& orbit = {});
+  AsymptoticSigma operator()(const Scene& scene);
+  // asymptotic_verdict's (throws InvalidArgument("criterion", ...) outside the domain likewise).
+  AsymptoticVerdict verdict(const Scene& scene);
+  std::size_t orbits_solved() const;  // flows held
+
+ private:
+  PredictorOptions options_;
+  OrbitAverageOptions orbit_;
+  mutable std::mutex mutex_;  // guards orbits_ (its nodes stay put: a found entry is read unlocked)
+  std::map<std::array<double, 5>, OrbitSigmaAverage> orbits_;
+};
 
 struct AsymptoticVerdict {
   bool unstable = false;
@@ -94,5 +131,8 @@ AsymptoticVerdict asymptotic_verdict(const Scene& scene, double sigma_R);
 // criterion evaluation has no value there: the tracer and the agreement count the point as not classified).
 AsymptoticVerdict asymptotic_verdict(const Scene& scene, const PredictorOptions& options = {},
                                      const OrbitAverageOptions& orbit = {});
+// The same with the orbit of the scene's flow already solved (asymptotic_sigma_R above).
+AsymptoticVerdict asymptotic_verdict(const Scene& scene, const OrbitSigmaAverage& flow_orbit,
+                                     const PredictorOptions& options = {}, const OrbitAverageOptions& orbit = {});
 
 }  // namespace rbcstab
