@@ -2,6 +2,7 @@
 // simulated diagrams.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 #include <vector>
@@ -258,10 +259,18 @@ TEST(Trace, BoundarySeparatesSimulatedVerdictsOnASmallGrid) {
   EXPECT_EQ(all[0].mode_matches, a.mode_matches);
   EXPECT_EQ(all[0].beyond_one_step, a.beyond_one_step);
   EXPECT_EQ(all[1].boundary_pieces, all[0].boundary_pieces);  // distances to the asymptotic boundary by default
-  std::size_t lstar_matches = 0;
-  for (const PointResult& p : run.points)
-    lstar_matches += (std::exp(p.x - p.y) >= 35.0 * 35.0 / 64.0) == (p.verdict == Verdict::unstable);
+  std::size_t lstar_matches = 0, lstar_unstable = 0, lstar_unstable_mode = 0;
+  for (const PointResult& p : run.points) {
+    const double alpha = std::exp(p.x - p.y);
+    const bool u = alpha >= 35.0 * 35.0 / 64.0, unstable = p.verdict == Verdict::unstable;
+    lstar_matches += u == unstable;
+    lstar_unstable += u && unstable;
+    lstar_unstable_mode += u && unstable && std::clamp(int(std::lround(l_star(alpha))), 3, sim.L) == p.l_Delta;
+  }
   EXPECT_EQ(all[2].verdict_matches, lstar_matches);
+  EXPECT_EQ(all[2].unstable_matches, lstar_unstable);
+  EXPECT_EQ(all[2].unstable_mode_matches, lstar_unstable_mode);
+  for (const Agreement& g : all) EXPECT_LE(g.unstable_mode_matches, g.unstable_matches);
   // The finite-horizon predictor integrates the same reduced transient over the same T as the simulation
   // starts from: on this grid it misses at most the points the asymptotic one misses plus one.
   EXPECT_GE(all[1].verdict_matches + 1, all[0].verdict_matches);

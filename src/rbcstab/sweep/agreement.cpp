@@ -174,6 +174,10 @@ Agreement compare(const Scene& base, const DiagramSpec& spec, const std::vector<
     if (sim_unstable == v[i].unstable) {
       ++a.verdict_matches;
       if (!v[i].unstable || v[i].l == p.l_Delta) ++a.mode_matches;
+      if (v[i].unstable) {
+        ++a.unstable_matches;
+        if (v[i].l == p.l_Delta) ++a.unstable_mode_matches;
+      }
       continue;
     }
     const Scene s = point_scene(base, spec, p.index);

@@ -36,6 +36,8 @@ struct Agreement {
   std::size_t not_classified = 0;   // finished points outside the predictor's domain
   std::size_t verdict_matches = 0;  // stable/unstable agree
   std::size_t mode_matches = 0;     // verdict agrees and, if unstable, l agrees
+  std::size_t unstable_matches = 0;       // both call the point unstable
+  std::size_t unstable_mode_matches = 0;  // both unstable with the same l (the mode the predictor names)
   std::vector<Disagreement> verdict_disagreements;
   std::size_t beyond_one_step = 0;  // verdict disagreements farther than one grid step from the boundary
   std::size_t small_S = 0;          // verdict disagreements with S < 10 (outside the S >> 1 regime)

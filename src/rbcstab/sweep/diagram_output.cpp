@@ -154,6 +154,10 @@ nlohmann::json agreement_entry(const Agreement& a) {
                    {"not_classified", a.not_classified},
                    {"verdict_fraction", a.points ? nlohmann::json(double(a.verdict_matches) / n) : nlohmann::json()},
                    {"mode_fraction", a.points ? nlohmann::json(double(a.mode_matches) / n) : nlohmann::json()},
+                   {"unstable_points", a.unstable_matches},
+                   {"unstable_mode_fraction", a.unstable_matches ? nlohmann::json(double(a.unstable_mode_matches) /
+                                                                                  double(a.unstable_matches))
+                                                                 : nlohmann::json()},
                    {"verdict_disagreements", a.verdict_disagreements.size()},
                    {"within_one_grid_step", a.verdict_disagreements.size() - a.beyond_one_step},
                    {"beyond_one_grid_step", a.beyond_one_step},
@@ -163,6 +167,8 @@ nlohmann::json agreement_entry(const Agreement& a) {
                    {"boundary_corners", a.boundary_corners},
                    {"disagreements", d}};
   if (!a.note.empty()) j["note"] = a.note;
+  if (a.points && !a.unstable_matches)
+    j["unstable_mode_fraction_reason"] = "no point that the simulation and the predictor both call unstable";
   explain_nulls(j, "no point to compare: every point failed or was not classified");
   return j;
 }
