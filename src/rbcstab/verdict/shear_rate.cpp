@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/model/parameter_table.hpp"
 
 namespace rbcstab {
 
@@ -29,8 +30,7 @@ std::string shape_of_mode(int l, bool out_of_plane) {
 
 ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const ShearRateSearchOptions& options) {
   options.validate();
-  if (!scene.physical)
-    throw InvalidArgument("shear_rate", "the shear-rate threshold needs a physical scene (a [physical] table or --shear-rate)");
+  require_usable(SceneParameter::shear_rate, scene);
   ShearRateThreshold t;
   t.beta = beta;
   t.orientation = beta == kOutOfPlaneBeta ? "out_of_plane" : "in_plane";
@@ -41,8 +41,7 @@ ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const S
   // rate is set from the base scene, so B and C carry one rounding however long the search.
   auto verdict = [&](double rate, std::string& why) -> std::optional<AsymptoticVerdict> {
     s = base;
-    s.parameters = at_shear_rate(*base.physical, base.parameters, rate);
-    s.physical->shear_rate = rate;
+    set_parameter(s, SceneParameter::shear_rate, rate);
     ++t.evaluations;
     try {
       return asymptotic_verdict(s, options.predictor, options.orbit);
@@ -88,7 +87,7 @@ ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const S
       }
     }
     s = base;
-    s.parameters = at_shear_rate(*base.physical, base.parameters, hi);
+    set_parameter(s, SceneParameter::shear_rate, hi);
     t.found = true;
     t.lo = lo;
     t.hi = t.shear_rate = hi;
