@@ -33,7 +33,7 @@ double AxisRange::value(int i) const {
   if (i == count - 1) return max;
   const double u = double(i) / double(count - 1);
   // A geometric axis (shear_rate) spans decades: even steps in ln. Its range is checked > 0 (validate_plane).
-  if (parameter_row(axis).scale == AxisScale::geometric) return std::exp(std::log(min) + (std::log(max) - std::log(min)) * u);
+  if (parameter_row(axis).scale == AxisScale::geometric) return min * std::pow(max / min, u);
   return min + (max - min) * u;
 }
 
