@@ -22,6 +22,25 @@ void ShearRateSearchOptions::validate() const {
   orbit.validate();
 }
 
+void set_search_range(ShearRateSearchOptions& options, std::string_view text, const std::string& name) {
+  const std::string form = name + " = '" + std::string(text) + "' must be LO,HI: two shear rates 0 < LO < HI in 1/s";
+  const std::size_t comma = text.find(',');
+  if (comma == std::string_view::npos || text.find(',', comma + 1) != std::string_view::npos)
+    throw InvalidArgument(name, form);
+  double range[2] = {0, 0};
+  for (int k = 0; k < 2; ++k) {
+    const std::string_view part = k == 0 ? text.substr(0, comma) : text.substr(comma + 1);
+    try {
+      range[k] = parse_quantity(part, PhysicalUnit::per_second, name);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(name, form + " (" + e.what() + ")");
+    }
+  }
+  if (!(range[0] < range[1])) throw InvalidArgument(name, form + " (LO >= HI)");
+  options.min_rate = range[0];
+  options.max_rate = range[1];
+}
+
 std::string shape_of_mode(int l, bool out_of_plane) {
   const std::string mode = "l = " + std::to_string(l);
   if (out_of_plane) return (l == 3 ? "stomatocyte (" : "axisymmetric cup (") + mode + ", out of plane)";
