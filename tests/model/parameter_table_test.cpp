@@ -134,12 +134,8 @@ TEST(ParameterTable, IndependenceIsSharingNoInput) {
 // equals the cell converted afresh at gamma'. Oracle: physical_parameters (B = eta gamma R^3/kappa, C = eta gamma
 // R/mu); 1e-14: one multiplication and one division apart.
 TEST(ParameterTable, ShearRateMovesBAndCOnAPhysicalScene) {
-  PhysicalCell c;
-  c.shear_rate = 1000;
-  c.viscosity = 1e-3;
-  c.radius = 3e-6;
-  c.bending_modulus = 2e-19;
-  c.shear_modulus = 2.5e-6;
+  PhysicalCell c{.shear_rate = 1000, .viscosity = 1.2e-3, .radius = 3.9e-6, .bending_modulus = 2.1e-19,
+                 .shear_modulus = 6e-6};
   Scene s;
   s.physical = c;
   s.parameters = physical_parameters(c, s.parameters);
