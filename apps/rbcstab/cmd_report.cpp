@@ -13,6 +13,7 @@
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/report/report.hpp"
+#include "rbcstab/verdict/verdict_io.hpp"
 #include "progress.hpp"
 #include "scene_options.hpp"
 
@@ -27,6 +28,7 @@ struct ReportCliOptions {
   bool json = false;
   PanelOptions panel;
   std::string counts;  // "nx,ny" or "NxM"
+  std::string shear_rate_range;  // LO,HI (1/s): the threshold search of a physical scene
   bool quiet = false;
   ProgressOutput progress;
 };
@@ -112,6 +114,7 @@ int run(ReportCliOptions& o) {
   if (o.progress.enabled()) ro.on_step = [&o](const std::string& step) { o.progress.step("report: " + step); };
   if (!o.counts.empty() || o.panel.threads != 0)
     throw InvalidArgument("--counts", "--counts and --threads apply to a scene with a [diagram] table only");
+  ro.shear_rate_search = shear_rate_search(sf.scene, o.shear_rate_range);
   const ReportResult r = build_report(sf, ro);
   for (const auto& w : r.warnings) std::cerr << "rbcstab: warning: " << w << "\n";
   if (o.json) {
@@ -123,6 +126,8 @@ int run(ReportCliOptions& o) {
     j["shape"] = {{"rho_min", r.shape.rho_min}, {"rho_max", r.shape.rho_max}};
     j["seconds"] = r.seconds;
     put_truncation(j, sf);
+    put_physical(j, sf.scene);
+    if (sf.scene.physical) j["shear_rate_thresholds"] = to_json(r.shear_rate_thresholds);
     std::cout << j.dump(2) << "\n";
   } else {
     std::cout << "report written to " << ro.output << " (" << r.files.size() << " files, open index.html); l_Delta = "
@@ -147,6 +152,7 @@ static Runner add_report(CLI::App& app) {
   app.add_option("--output,-o", r.output, "report folder to create (index.html, README.md, figures, data); its parent must exist")
       ->required();
   app.add_flag("--overwrite", r.overwrite, "replace an existing output folder (swapped in whole at the end)");
+  add_shear_rate_range(app, o->shear_rate_range);
   app.add_option("--python", r.python, "python3 interpreter with matplotlib (Debian python3-matplotlib)")
       ->capture_default_str();
   app.add_option("--frames", r.frames, "animation frames, integer in [2, 2000]")->check(integer_text("an integer in [2, 2000]"))->check(CLI::Range(2, 2000))->capture_default_str();

@@ -14,13 +14,15 @@ namespace {
 struct SummaryOptions {
   SceneOptions scene;
   bool json = false;
+  std::string shear_rate_range;  // LO,HI (1/s): the threshold search of a physical scene
   ProgressOutput progress;
 };
 
 int run(const SummaryOptions& o) {
   SceneFile sf = o.scene.read();
   sf.options.on_progress = o.progress.callback("summary: t =", "");
-  const SummaryRun s = run_summary(std::move(sf));
+  const ShearRateSearchOptions search = shear_rate_search(sf.scene, o.shear_rate_range);
+  const SummaryRun s = run_summary(std::move(sf), search);
   if (o.json)
     std::cout << summary_json(s.file, s.run, s.prediction).dump(2) << "\n";
   else
@@ -33,6 +35,7 @@ static Runner add_summary(CLI::App& app) {
   auto o = std::make_shared<SummaryOptions>();
   o->scene.add_to(app);
   app.add_flag("--json", o->json, "print one JSON object on stdout (the keys of simulate --json, then the analysis)");
+  add_shear_rate_range(app, o->shear_rate_range);
   o->progress.add_flags(app);
   return [o] { return run(*o); };
 }

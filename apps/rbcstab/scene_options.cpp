@@ -101,4 +101,20 @@ SceneFile SceneOptions::resolve(TruncationUse use) const {
   return f;
 }
 
+void add_shear_rate_range(CLI::App& app, std::string& text) {
+  const ShearRateSearchOptions defaults;
+  app.add_option("--shear-rate-range", text,
+                 "LO,HI: the shear rates [1/s] searched for the thresholds of a physical scene (units as for "
+                 "--shear-rate; default " + format_value(defaults.min_rate) + "," + format_value(defaults.max_rate) + ")");
+}
+
+ShearRateSearchOptions shear_rate_search(const Scene& scene, const std::string& text) {
+  ShearRateSearchOptions search;
+  if (text.empty()) return search;
+  (void)physical_cell(scene, "--shear-rate-range");
+  set_search_range(search, text, "--shear-rate-range");
+  search.validate();
+  return search;
+}
+
 }  // namespace rbcstab::cli

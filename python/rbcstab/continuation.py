@@ -115,7 +115,7 @@ def continuation(scene, kind="equilibrium", parameter="lambda", min=None, max=No
     same name in snake_case, None its default; docs/continuation.md).
 
     kind: 'equilibrium' (reduced system), 'modal', 'full', 'orbit' or 'modal-orbit'; parameter: the free
-    parameter ('lambda', 'Delta', 'Delta0', 'B', 'C', 'Lambda', 'S', 'beta'); min, max: its bounds (the branch
+    parameter ('lambda', 'Delta', 'Delta0', 'B', 'C', 'Lambda', 'S', 'beta', 'shear_rate' on a physical scene); min, max: its bounds (the branch
     ends there exactly); direction: 'forward', 'backward' or 'both' (default); step, max_step: the first and
     largest arclength steps; max_points: points per direction; relax_T: the relaxation giving the start state;
     segments: orbits' shooting segments; switch_at_bp: also continue the branch bifurcating at the first BP met;

@@ -228,7 +228,7 @@ def diagram(scene, axes=None, counts=None, threads=0, progress=True, *, x_range=
     """A phase diagram by direct simulation over two parameter axes (``rbcstab diagram``): every grid point is
     one modal-level run of the scene classified by l_Delta.
 
-    axes      two axis names (x, y) from the parameter table (lambda, Delta, Delta0, alpha, lnB, lnC, beta);
+    axes      two axis names (x, y) from the parameter table (lambda, Delta, Delta0, alpha, lnB, lnC, beta, shear_rate);
               default: the scene's [diagram] table, else ("lnB", "lnC")
     counts    grid values (nx, ny), integers in [1, 1000000]; default: the table's, else (64, 64)
     threads   worker threads, an integer in [0, 4096] (0: all cores); the result does not depend on it

@@ -446,3 +446,22 @@ def test_plot_draws_the_cli_plot_spec_on_agg(full_branch, tmp_path):
     c = full_branch.curve(full_branch.labels("BP")[0], parameter2="B", min2=0.9, max2=1.1)
     assert c.plot(ax=ax2) is ax2 and ax2.get_xlabel()
     plt.close(fig)
+
+
+# ------------------------------------------------------------------------------------- shear_rate as a parameter
+def test_shear_rate_continuation_needs_a_physical_scene_and_matches_the_converted_scene():
+    """shear_rate comes from the parameter table: on a physical scene the branch runs in 1/s and each point is
+    the closed-form equilibrium at the converted (B, C) (C = eta gamma R/mu); a plain scene is refused naming it."""
+    with pytest.raises(ValueError, match="shear_rate.*physical scene"):
+        rbcstab.continuation(rbcstab.Scene(beta=0.0), parameter="shear_rate", min=10, max=100)
+    cell = dict(shear_rate=100, viscosity=1e-3, radius=3e-6, bending_modulus=2e-19, shear_modulus=2.5e-6)
+    scene = rbcstab.Scene(**{"Delta": 1.0, "Delta0": 0.01, "lambda": 5.0, "beta": 0.0, **cell})
+    b = rbcstab.continuation(scene, parameter="shear_rate", min=10, max=1000, max_step=20)
+    rates = np.asarray(b["shear_rate"])
+    assert rates.min() == 10 and rates.max() == 1000
+    Lam = math.sqrt(1.0) * (23 * 5 + 32) / (8 * math.sqrt(30 * math.pi))
+    for g, r in zip(rates, np.asarray(b["r"])):
+        S = (1e-3 * g * 3e-6 / 2.5e-6) * math.sqrt(15 * math.pi / (2 * 0.01))
+        bq = 1 + Lam**2 + S**-2
+        u = 2 / (bq + math.sqrt(bq * bq - 4 * Lam**2))
+        assert r == pytest.approx(math.sqrt(u), abs=1e-10)

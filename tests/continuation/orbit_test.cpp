@@ -381,7 +381,9 @@ Scene fig2_ip(double Delta) { return test::fig2_in_plane(Delta); }
 TEST(ReducedOrbit, ParameterDerivativeMatchesDifferences) {
   for (const std::string& name : continuation_parameter_names()) {
     const ContinuationParameter q = continuation_parameter_from_string(name);
-    const ReducedForcedSystem sys(fig2_ip(0.3), q);
+    Scene s = fig2_ip(0.3);
+    s.physical = unit_cell(s.parameters);  // shear_rate, a table row, needs a cell
+    const ReducedForcedSystem sys(s, q);
     const double p = sys.start_parameter();
     for (double t : {0.0, 1.3, 4.0}) {
       for (const Eigen::Vector3d& y : {Eigen::Vector3d(0.3, -0.5, 0.81), Eigen::Vector3d(0.9, 0.2, -0.3)}) {

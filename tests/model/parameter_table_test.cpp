@@ -10,6 +10,7 @@
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/parameter_table.hpp"
+#include "rbcstab/model/physical.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
@@ -74,6 +75,7 @@ TEST(ParameterTable, DomainsReadLikeTheirMessages) {
 // input, so each moves alone).
 TEST(ParameterTable, SetThenGetMovesOnlyTheRowsInput) {
   for (const ParameterRow& r : parameter_table()) {
+    if (r.id == P::shear_rate) continue;  // valid only on a physical scene: ShearRateMovesBAndCOnAPhysicalScene
     Scene s;
     s.parameters.Delta0 = 0.02;
     const Domain d = continuation_domain(r.id, s.parameters);
@@ -93,10 +95,10 @@ TEST(ParameterTable, SetThenGetMovesOnlyTheRowsInput) {
 // The uses select the rows marked for them; the historical lists are the oracle.
 TEST(ParameterTable, NamesPerUseAreTheMarkedRows) {
   EXPECT_EQ(parameter_names(ParameterUse::continuation),
-            (std::vector<std::string>{"lambda", "Delta", "Delta0", "B", "C", "Lambda", "S", "beta"}));
+            (std::vector<std::string>{"lambda", "Delta", "Delta0", "B", "C", "Lambda", "S", "beta", "shear_rate"}));
   const std::vector<std::string> axes = parameter_names(ParameterUse::axis);
   EXPECT_EQ(std::set<std::string>(axes.begin(), axes.end()),
-            (std::set<std::string>{"lnB", "lnC", "lambda", "Delta", "Delta0", "alpha", "beta"}));
+            (std::set<std::string>{"lnB", "lnC", "lambda", "Delta", "Delta0", "alpha", "beta", "shear_rate"}));
   EXPECT_EQ(parameter_names(ParameterUse::scene_key),
             (std::vector<std::string>{"lambda", "Delta", "Delta0", "B", "C", "beta", "delta"}));
   try {
@@ -126,6 +128,57 @@ TEST(ParameterTable, IndependenceIsSharingNoInput) {
   EXPECT_TRUE(is_material(P::S));
   EXPECT_FALSE(is_material(P::beta));
   EXPECT_FALSE(is_material(P::delta));
+}
+
+// shear_rate (gamma) lives in the physical cell: set moves B and C by gamma'/gamma (alpha kept), and the result
+// equals the cell converted afresh at gamma'. Oracle: physical_parameters (B = eta gamma R^3/kappa, C = eta gamma
+// R/mu); 1e-14: one multiplication and one division apart.
+TEST(ParameterTable, ShearRateMovesBAndCOnAPhysicalScene) {
+  PhysicalCell c{.shear_rate = 1000, .viscosity = 1.2e-3, .radius = 3.9e-6, .bending_modulus = 2.1e-19,
+                 .shear_modulus = 6e-6};
+  Scene s;
+  s.physical = c;
+  s.parameters = physical_parameters(c, s.parameters);
+  EXPECT_EQ(get_parameter(s, P::shear_rate), 1000);
+  Scene t = s;
+  set_parameter(t, P::shear_rate, 250);
+  EXPECT_EQ(get_parameter(t, P::shear_rate), 250);
+  c.shear_rate = 250;
+  const Parameters fresh = physical_parameters(c, s.parameters);
+  EXPECT_NEAR(t.parameters.B, fresh.B, 1e-14 * fresh.B);
+  EXPECT_NEAR(t.parameters.C, fresh.C, 1e-14 * fresh.C);
+  EXPECT_NEAR(t.parameters.alpha(), s.parameters.alpha(), 1e-14 * s.parameters.alpha());
+  for (P q : {P::lambda, P::Delta, P::Delta0, P::beta, P::delta}) {
+    EXPECT_EQ(get_parameter(t, q), get_parameter(s, q)) << to_string(q);
+  }
+  EXPECT_EQ(parameter_domain(P::shear_rate, s.parameters).text(), "finite and > 0 (1/s)");
+  EXPECT_EQ(parameter_row(P::shear_rate).scale, AxisScale::geometric);
+  EXPECT_FALSE(is_material(P::shear_rate));  // not a function of Parameters: the material overloads refuse it
+  // Moves B and C, keeps alpha: dependent on B, C, their logs and S (~ C); independent of alpha and the rest.
+  for (P q : {P::B, P::C, P::lnB, P::lnC, P::S, P::shear_rate}) EXPECT_FALSE(independent(P::shear_rate, q)) << to_string(q);
+  for (P q : {P::alpha, P::lambda, P::Delta, P::Delta0, P::Lambda, P::beta}) {
+    EXPECT_TRUE(independent(P::shear_rate, q)) << to_string(q);
+    EXPECT_TRUE(independent(q, P::shear_rate)) << to_string(q);
+  }
+  // Without a complete physical cell: InvalidArgument naming shear_rate and what makes a physical scene.
+  for (bool partial : {false, true}) {
+    Scene plain;
+    if (partial) plain.physical = PhysicalCell{};
+    for (auto use : {0, 1, 2}) {
+      try {
+        if (use == 0) (void)get_parameter(plain, P::shear_rate);
+        if (use == 1) set_parameter(plain, P::shear_rate, 10);
+        if (use == 2) require_usable(P::shear_rate, plain);
+        ADD_FAILURE() << "no throw, use " << use;
+      } catch (const InvalidArgument& e) {
+        EXPECT_EQ(e.parameter(), "shear_rate");
+        EXPECT_NE(std::string(e.what()).find("needs a physical scene"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("--shear-rate"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("[physical]"), std::string::npos) << e.what();
+      }
+    }
+  }
+  EXPECT_NO_THROW(require_usable(P::lnB, Scene{}));
 }
 
 TEST(ParameterTable, OneTruncationRuleWithTheCallersReason) {

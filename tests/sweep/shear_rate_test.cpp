@@ -9,6 +9,7 @@
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/physical.hpp"
+#include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/trace.hpp"
 #include "rbcstab/verdict/shear_rate.hpp"
 
@@ -88,6 +89,53 @@ TEST(ShearRate, ThresholdIsWhereTheTracedBoundaryMeetsTheAlphaLine) {
   const double b = s.parameters.B / s.physical->shear_rate;  // B = b gamma
   const double gamma_traced = std::exp(*x_cross) / b;
   EXPECT_NEAR(gamma_traced / t.shear_rate, 1, 1e-4) << "traced " << gamma_traced << ", searched " << t.shear_rate;
+}
+
+// A diagram with a shear_rate axis: its grid is geometric, and every point's result is that of the plain scene
+// (no cell) at the cell converted afresh at the point's rate (physical_parameters), run as its own one-point
+// diagram. Equal to 1e-12 relative: both runs integrate the same system from the same state, the parameters a
+// few ulps apart; the verdict and l_Delta exactly.
+TEST(ShearRate, DiagramAxisPointsAreThePlainSceneAtTheConvertedRate) {
+  Scene base = physical_scene();
+  base.L = 5;
+  base.T = 40;
+  base.dt = 40;
+  DiagramSpec spec;
+  spec.x = {SceneParameter::shear_rate, 10, 1000, 3};
+  spec.y = {SceneParameter::lambda, 1, 5, 2};
+  validate_plane(base, spec);
+  EXPECT_EQ(spec.x.value(0), 10);
+  EXPECT_NEAR(spec.x.value(1), 100, 1e-12 * 100);
+  EXPECT_EQ(spec.x.value(2), 1000);
+  SimulationOptions options;
+  options.record_trajectory = false;
+  for (std::size_t k = 0; k < spec.size(); ++k) {
+    const PointResult on_path = run_point(base, options, spec, k);
+    Scene plain = point_scene(base, spec, k);
+    PhysicalCell c = *base.physical;
+    c.shear_rate = on_path.x;
+    plain.physical.reset();
+    plain.parameters = physical_parameters(c, plain.parameters);
+    DiagramSpec one;
+    one.x = {SceneParameter::lambda, plain.parameters.lambda, plain.parameters.lambda, 1};
+    one.y = {SceneParameter::Delta, plain.parameters.Delta, plain.parameters.Delta, 1};
+    const PointResult direct = run_point(plain, options, one, 0);
+    EXPECT_EQ(on_path.verdict, direct.verdict) << k;
+    EXPECT_EQ(on_path.l_Delta, direct.l_Delta) << k;
+    EXPECT_NEAR(on_path.growth, direct.growth, 1e-12 * (1 + std::abs(direct.growth))) << k;
+    EXPECT_NEAR(on_path.sigma_final, direct.sigma_final, 1e-9 * (1 + std::abs(direct.sigma_final))) << k;
+  }
+  // Axes that move each other are refused: shear_rate moves B and C.
+  spec.y = {SceneParameter::lnC, -2, 0, 2};
+  EXPECT_THROW(validate_plane(base, spec), InvalidArgument);
+  // A plain scene cannot take the axis.
+  spec.y = {SceneParameter::lambda, 1, 5, 2};
+  try {
+    validate_plane(Scene{}, spec);
+    FAIL();
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "shear_rate");
+  }
 }
 
 }  // namespace

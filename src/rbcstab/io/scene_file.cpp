@@ -35,7 +35,9 @@ SceneKey number_key(const char* table, const char* key, const char* flag, const 
 }
 
 // The [physical] table: one key per PhysicalCell field, each a quantity with a unit. A key set on a scene
-// without a cell creates it; NaN (Python's to_dict of an absent value) leaves the field unset.
+// without a cell creates it; NaN (Python's to_dict of an absent value) leaves the field unset. A key that is also
+// a parameter-table row (shear_rate, a continuation parameter and axis) takes its description and range from the
+// row, so the two cannot disagree.
 void add_physical_keys(std::vector<SceneKey>& k) {
   struct Row {
     const char* key;
@@ -47,8 +49,8 @@ void add_physical_keys(std::vector<SceneKey>& k) {
   const Row rows[] = {
       {"temperature", "--temperature", PhysicalUnit::kelvin, &PhysicalCell::temperature,
        "temperature [K] at which energies in kBT are read"},
-      {"shear_rate", "--shear-rate", PhysicalUnit::per_second, &PhysicalCell::shear_rate,
-       "shear rate gamma [1/s]; B and C follow (a physical scene; time unit 1/gamma)"},
+      {parameter_row(SceneParameter::shear_rate).name, "--shear-rate", PhysicalUnit::per_second,
+       &PhysicalCell::shear_rate, nullptr},
       {"viscosity", "--viscosity", PhysicalUnit::pascal_second, &PhysicalCell::viscosity,
        "external (plasma) viscosity eta_ex [Pa s]"},
       {"inner_viscosity", "--inner-viscosity", PhysicalUnit::pascal_second, &PhysicalCell::inner_viscosity,
@@ -69,12 +71,15 @@ void add_physical_keys(std::vector<SceneKey>& k) {
     double PhysicalCell::*const field = r.field;
     const PhysicalUnit unit = r.unit;
     const std::string key = r.key;
+    const ParameterRow* parameter = nullptr;
+    for (const ParameterRow& p : parameter_table())
+      if (key == p.name) parameter = &p;
+    const std::string help = parameter ? parameter->description : r.help;
     k.push_back({"physical", r.key, ValueKind::quantity, "",
-                 std::string(r.help) + "; a number in " + si_unit(unit) + " or with a unit (" + accepted_units(unit) +
-                     ")",
+                 help + "; a number in " + si_unit(unit) + " or with a unit (" + accepted_units(unit) + ")",
                  {},
                  [field](const SceneFile& f) { return SceneValue{f.scene.physical ? (*f.scene.physical).*field : kNotGiven}; },
-                 [field, unit, key](SceneFile& f, const SceneValue& v) {
+                 [field, unit, key, parameter](SceneFile& f, const SceneValue& v) {
                    double x = kNotGiven;
                    if (const auto* text = std::get_if<std::string>(&v))
                      x = parse_quantity(*text, unit, key,
@@ -85,7 +90,10 @@ void add_physical_keys(std::vector<SceneKey>& k) {
                      if (f.scene.physical) (*f.scene.physical).*field = x;
                      return;
                    }
-                   require(std::isfinite(x) && x > 0, key, x, "finite and > 0 (" + si_unit(unit) + ")");
+                   if (parameter)
+                     require_in(parameter->id, parameter_domain(parameter->id, f.scene.parameters), x);
+                   else
+                     require(std::isfinite(x) && x > 0, key, x, "finite and > 0 (" + si_unit(unit) + ")");
                    if (!f.scene.physical) f.scene.physical.emplace();
                    (*f.scene.physical).*field = x;
                  },

@@ -13,12 +13,19 @@ constexpr std::uint32_t bit(P q) { return 1u << static_cast<unsigned>(q); }
 constexpr double kInf = INFINITY;
 
 Domain open_above(double lo, bool closed) { return Domain{lo, kInf, closed, false, "", "", "", ""}; }
+// The cell's shear rate, moved along its line B = b gamma, C = c gamma (at_shear_rate): alpha stays.
+double get_shear_rate(const Scene& s) { return physical_cell(s, "shear_rate").shear_rate; }
+void set_shear_rate(Scene& s, double v) {
+  s.parameters = at_shear_rate(physical_cell(s, "shear_rate"), s.parameters, v);
+  s.physical->shear_rate = v;
+}
+
 Domain up_to_Delta(const Parameters& p) {
   return Domain{0, p.Delta, true, true, "", "Delta", "Delta = " + format_value(p.Delta), ""};
 }
 
 // One row per SceneParameter, in its order (tests/model/parameter_table_test.cpp checks it).
-const std::array<ParameterRow, 12> kTable{{
+const std::array<ParameterRow, 13> kTable{{
     {P::lambda, "lambda", "\\lambda", "viscosity ratio eta_in/eta_ex", "parameters", AxisScale::linear, P::lambda,
      P::lambda, bit(P::lambda), true, true, [](const Parameters&) { return open_above(0, true); },
      [](const Scene& s) { return s.parameters.lambda; }, [](Scene& s, double v) { s.parameters.lambda = v; }},
@@ -71,6 +78,13 @@ const std::array<ParameterRow, 12> kTable{{
     {P::delta, "delta", "\\delta", "perturbation Delta_l(0) put in f_{l,0} for every l = 3..L", "initial",
      AxisScale::linear, P::delta, P::delta, bit(P::delta), false, false, up_to_Delta,
      [](const Scene& s) { return s.delta; }, [](Scene& s, double v) { s.delta = v; }},
+    // Stored in the physical cell, whose table ([physical], io/scene_file.hpp) declares its key and flag
+    // (--shear-rate) with the cell's other quantities from this row's name, description and domain.
+    {P::shear_rate, "shear_rate", "\\dot\\gamma",
+     "shear rate gamma [1/s]; B and C follow at fixed alpha (a physical scene; time unit 1/gamma)", nullptr,
+     AxisScale::geometric, P::shear_rate, P::shear_rate, bit(P::shear_rate) | bit(P::B) | bit(P::C), true, true,
+     [](const Parameters&) { return Domain{0, kInf, false, false, "", "", "", "1/s"}; }, get_shear_rate,
+     set_shear_rate},
 }};
 
 // A log row's domain: its base's, mapped by ln (ln 0 = -inf).
@@ -141,7 +155,7 @@ bool usable_as(SceneParameter q, ParameterUse use) {
 
 bool is_material(SceneParameter q) {
   for (const ParameterRow& r : kTable)
-    if ((parameter_row(q).inputs & bit(r.id)) && r.table && std::string_view(r.table) != "parameters") return false;
+    if ((parameter_row(q).inputs & bit(r.id)) && (!r.table || std::string_view(r.table) != "parameters")) return false;
   return true;
 }
 
@@ -196,7 +210,29 @@ void validate_table(const Scene& s, std::string_view table) {
 }
 
 bool independent(SceneParameter a, SceneParameter b) {
-  return a != b && (parameter_row(a).inputs & parameter_row(b).inputs) == 0;
+  // shear_rate scales B and C by one factor, so alpha = B/C stays; setting alpha (through B) leaves the cell's
+  // shear rate. They share inputs but neither moves the other.
+  const bool ratio_kept = (a == P::shear_rate && b == P::alpha) || (a == P::alpha && b == P::shear_rate);
+  return a != b && (ratio_kept || (parameter_row(a).inputs & parameter_row(b).inputs) == 0);
+}
+
+const PhysicalCell& physical_cell(const Scene& s, const std::string& name) {
+  const std::string needs = name +
+                            " needs a physical scene: a [physical] table with shear_rate, viscosity, radius (or area "
+                            "and volume), bending_modulus and shear_modulus, or their flags --shear-rate, --viscosity, "
+                            "--radius (or --area with --volume), --bending-modulus, --shear-modulus";
+  if (!s.physical) throw InvalidArgument(name, needs + " (this scene has none)");
+  try {
+    s.physical->validate_complete();
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(name, needs + " (" + e.what() + ")");
+  }
+  return *s.physical;
+}
+
+void require_usable(SceneParameter q, const Scene& s) {
+  const ParameterRow& r = parameter_row(q);
+  if (r.inputs & bit(P::shear_rate)) (void)physical_cell(s, r.name);
 }
 
 }  // namespace rbcstab

@@ -1,6 +1,7 @@
 #pragma once
 // The scene's parameters, one row each: name, symbol, description, domain with its message, get/set on a
-// Scene, where a scene file keeps it and how an axis spaces it. Scene files and command-line flags (io),
+// Scene, where a scene file keeps it and how an axis spaces it. shear_rate (gamma, 1/s) is the one row valid
+// only on a physical scene (Scene::physical): its get and set throw InvalidArgument("shear_rate", ...) elsewhere. Scene files and command-line flags (io),
 // continuation parameters (continuation/parameters.hpp) and diagram axes (sweep/diagram.hpp) all take their
 // names and checks from this table, so adding a parameter is one enumerator and one row.
 #include <cmath>
@@ -16,9 +17,9 @@
 
 namespace rbcstab {
 
-// Table order: the five material numbers, the composites of the reduced system, the log axes, then the
-// scene's shape parameters. Lists of names (messages, --help) follow it.
-enum class SceneParameter { lambda, Delta, Delta0, B, C, Lambda, S, alpha, lnB, lnC, beta, delta };
+// Table order: the five material numbers, the composites of the reduced system, the log axes, the scene's
+// shape parameters, then the physical path parameter. Lists of names (messages, --help) follow it.
+enum class SceneParameter { lambda, Delta, Delta0, B, C, Lambda, S, alpha, lnB, lnC, beta, delta, shear_rate };
 
 // Where a scene value came from.
 enum class Origin { default_value, file, flag };
@@ -28,7 +29,9 @@ struct EnumTable<Origin> {
       {Origin::default_value, "default"}, {Origin::file, "file"}, {Origin::flag, "flag"}};
 };
 
-enum class AxisScale { linear, log };
+// How a row is valued and how an axis spaces it. log: the value is ln of another row's (lnB), spaced evenly;
+// geometric: the value itself, its grid spaced evenly in ln (a rate over decades: 10, 100, 1000 1/s).
+enum class AxisScale { linear, log, geometric };
 
 // The values a parameter may take. An infinite end is a value only when closed (C = inf: the vesicle limit).
 struct Domain {
@@ -59,7 +62,9 @@ struct ParameterRow {
   AxisScale scale;          // log: the value is ln of `of`'s (lnB = ln B); get, set and domain follow from `of`
   SceneParameter of;        // log rows: the parameter taken the log of; otherwise the row itself
   SceneParameter moves;     // the stored parameter that set() changes (a composite moves one input)
-  std::uint32_t inputs;     // bit set (1u << stored parameter) of the stored parameters the value depends on
+  // Bit set (1u << parameter) of the stored parameters the value depends on. shear_rate, stored in the scene's
+  // physical cell, lists B and C too: they are proportional to it there, so it moves them with it.
+  std::uint32_t inputs;
   bool continuation;        // usable as a continuation parameter
   bool axis;                // usable as a diagram axis
   // Linear rows only (log rows take them from `of`):
@@ -95,7 +100,14 @@ Domain continuation_domain(SceneParameter q, const Parameters& p);
 void require_in(SceneParameter q, const Domain& domain, double value);
 // The stored parameters of one scene-file table, each against its domain, in table order.
 void validate_table(const Scene& s, std::string_view table);
-// False when setting one would move the other (equal, or sharing an input: Lambda with Delta or lambda).
+// False when setting one would move the other (equal, or sharing an input: Lambda with Delta or lambda). One
+// exception: shear_rate scales B and C together, so it leaves alpha = B/C alone and is independent of it.
 bool independent(SceneParameter a, SceneParameter b);
+// The scene's physical cell, complete; else InvalidArgument(name, "<name> needs a physical scene: ...") naming
+// the [physical] keys and flags that make one. Where a row valid only on a physical scene is first used
+// (continuation start, diagram and trace axes) this gives the message before any work.
+const PhysicalCell& physical_cell(const Scene& s, const std::string& name);
+// Throws that message when q cannot be used on s (shear_rate without a physical cell); else nothing.
+void require_usable(SceneParameter q, const Scene& s);
 
 }  // namespace rbcstab

@@ -242,6 +242,14 @@ Parameters at_shear_rate(const PhysicalCell& cell, Parameters p, double rate) {
   return p;
 }
 
+PhysicalCell unit_cell(const Parameters& p) {
+  PhysicalCell c;
+  c.shear_rate = c.viscosity = c.radius = 1;
+  c.bending_modulus = 1 / p.B;
+  c.shear_modulus = 1 / p.C;
+  return c;
+}
+
 const std::vector<NumberFormula>& number_formulas() {
   static const std::vector<NumberFormula> f = {
       {"R", "(3 V/(4 pi))^(1/3) [m]", "Sec. II, Fig. 1"},

@@ -74,6 +74,9 @@ Parameters physical_parameters(const PhysicalCell& cell, Parameters p);
 // cell's shear rate to `rate` scales B and C together and keeps alpha (a line of slope 1 in the (ln B, ln C) plane).
 // `p` holds the cell's numbers at cell.shear_rate; the cell's shear_rate is the caller's to update.
 Parameters at_shear_rate(const PhysicalCell& cell, Parameters p, double rate);
+// A dimensionless scene's cell in units where gamma = eta_ex = R = 1 (kappa = 1/B, mu = 1/C): its numbers are
+// p's B and C, so the scene can move along shear_rate (B and C scaled by the rate) without physical inputs.
+PhysicalCell unit_cell(const Parameters& p);
 // The parameter keys (Parameters field names) the cell determines, in table order: B, C, then lambda, Delta,
 // Delta0 when their inputs are given; each with the physical keys it is made from.
 struct DerivedParameter {

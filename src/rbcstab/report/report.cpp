@@ -25,6 +25,7 @@
 #include "rbcstab/report/bifurcation_plot.hpp"
 #include "rbcstab/report/detail/report_pages.hpp"
 #include "rbcstab/report/detail/staging.hpp"
+#include "rbcstab/verdict/verdict_io.hpp"
 
 #ifndef RBCSTAB_REPORT_SOURCE_PYTHON_DIR
 #define RBCSTAB_REPORT_SOURCE_PYTHON_DIR ""
@@ -449,6 +450,11 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     const double period = detail::oscillation_period(res.run.trajectory.t, res.run.trajectory.r);
     window = period > 0 ? std::min(sf.scene.T, period) : sf.scene.T;
   }
+  // A physical scene: the shear rates at which the cell first turns unstable, per orientation (as summary).
+  if (sf.scene.physical) {
+    if (o.on_step) o.on_step("searching the shear-rate thresholds");
+    res.shear_rate_thresholds = shear_rate_thresholds(sf.scene, o.shear_rate_search);
+  }
   if (o.on_step) o.on_step("computing " + std::to_string(o.frames) + " animation frames");
   const Frames frames = shape_frames(sf, o, window);
   {
@@ -491,21 +497,26 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     put("animation.json", animation_json(frames));
 
     const bool in_plane = std::abs(std::cos(sf.scene.beta)) < 0.5;
+    // Times stay in model units; a physical scene's captions say what that unit is in seconds.
+    const std::string t_unit = sf.scene.physical ? " (t in units of 1/gamma = " +
+                                                       format_value(1 / sf.scene.physical->shear_rate) + " s)"
+                                                 : "";
     nlohmann::json figs = nlohmann::json::array();
     figs.push_back(figure("reduced_dynamics", "fig_reduced_r_Psi.png", 1200, 450,
                           res.has_reduced ? std::vector<std::string>{"reduced_trajectory.csv", "trajectory.csv"}
                                           : std::vector<std::string>{"trajectory.csv"},
-                          res.has_reduced ? "Fig. 2-type: ellipsoidal amplitude r(t) and angle Psi(t), reduced system "
+                          std::string(res.has_reduced
+                                          ? "Fig. 2-type: ellipsoidal amplitude r(t) and angle Psi(t), reduced system "
                                             "(l = 2 only, perturbations dropped) and the l = 2 block of this run"
                                           : "Fig. 2-type: ellipsoidal amplitude r(t) and angle Psi(t) of this run "
-                                            "(reduced level)"));
+                                            "(reduced level)") + t_unit));
     figs.push_back(figure("excess_areas", "fig_excess_areas.png", 900, 600, {"trajectory.csv"},
-                          "Fig. 3b/c-type: excess area per mode Delta_l(t), l = 2..L (log scale)"));
+                          "Fig. 3b/c-type: excess area per mode Delta_l(t), l = 2..L (log scale)" + t_unit));
     figs.push_back(figure("tension", "fig_tension.png", 900, 600,
                           res.has_reduced ? std::vector<std::string>{"trajectory.csv", "thresholds.json", "reduced_trajectory.csv"}
                                           : std::vector<std::string>{"trajectory.csv", "thresholds.json"},
                           "Fig. 3d/e-type: membrane tension sigma(t), the reduced system's sigma_R(t), and the "
-                          "critical tensions sigma_l^c of the modes that can grow"));
+                          "critical tensions sigma_l^c of the modes that can grow" + t_unit));
     nlohmann::json shape_fig = figure("shape", "fig_shape_T.png", 750, 750, {"shape_T.csv"},
                                       std::string("Fig. 6-inset-type: the shape at t = ") + format_value(res.run.t_reached) +
                                           ", coloured by the distance from the origin rho (" +
@@ -516,7 +527,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
                                  "Shape over t in [" + format_value(sf.scene.T - window) + ", " +
                                      format_value(sf.scene.T) + "] (frames of animation.gif" +
                                      (window < sf.scene.T ? ": one period of r(t), so the GIF loops" : "") +
-                                     "), seen from above the shear plane (flow along x, gradient along y)");
+                                     "), seen from above the shear plane (flow along x, gradient along y)" + t_unit);
     anim["gif"] = "animation.gif";
     anim["gif_size_px"] = {400, 400};
     figs.push_back(anim);
@@ -532,6 +543,8 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
       manifest["reduced_summary"].erase("trajectory");
     }
     manifest["thresholds"] = thresholds;
+    put_physical(manifest, sf.scene);
+    if (sf.scene.physical) manifest["shear_rate_thresholds"] = to_json(res.shear_rate_thresholds);
     manifest["shape"] = {{"t", res.run.t_reached}, {"rho_min", res.shape.rho_min}, {"rho_max", res.shape.rho_max},
                          {"n_theta", res.shape.n_theta}, {"n_phi", res.shape.n_phi}, {"in_plane", in_plane}};
     manifest["frames"] = {{"count", frames.t.size()}, {"status", to_string(frames.status)}, {"window", window}};

@@ -10,6 +10,7 @@
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/report/shape.hpp"
+#include "rbcstab/verdict/shear_rate.hpp"
 
 namespace rbcstab {
 
@@ -30,6 +31,7 @@ struct ReportOptions {
   int frames = 60;                     // animation frames (GIF), uniform in [T - frame_window, T]
   double frame_window = 0;             // 0: auto (one period of r(t) at the end if the run oscillates, else [0, T])
   bool reduced_companion = true;       // also run the reduced level (Fig. 2 r, Psi; Fig. 3 sigma_R)
+  ShearRateSearchOptions shear_rate_search;  // a physical scene: the thresholds' search (summary's)
   // Hooks for data other modules produce; drawn when given (formats in docs/report.md).
   std::string phase_diagram;           // CSV with columns x, y, l_Delta (+ optional overlay JSON beside it)
   std::string delta2_comparison;       // CSV with columns Delta2_theory, Delta2_simulation[, alpha]
@@ -56,6 +58,7 @@ struct ReportResult {
   std::vector<std::string> files;      // relative to the output folder
   std::vector<std::string> warnings;
   ShapeGrid shape;                     // rho at the end of the run
+  std::vector<ShearRateThreshold> shear_rate_thresholds;  // a physical scene: per orientation (else empty)
   double seconds = 0;
 };
 

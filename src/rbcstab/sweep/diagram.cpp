@@ -31,7 +31,10 @@ Axis axis_from_string(const std::string& name) { return parameter_from_string(na
 double AxisRange::value(int i) const {
   if (count <= 1) return min;
   if (i == count - 1) return max;
-  return min + (max - min) * double(i) / double(count - 1);
+  const double u = double(i) / double(count - 1);
+  // A geometric axis (shear_rate) spans decades: even steps in ln. Its range is checked > 0 (validate_plane).
+  if (parameter_row(axis).scale == AxisScale::geometric) return min * std::pow(max / min, u);
+  return min + (max - min) * u;
 }
 
 void DiagramSpec::validate() const {
@@ -62,6 +65,11 @@ void DiagramSpec::validate() const {
     throw InvalidArgument("diagram.alpha", "diagram.alpha cannot be held fixed while alpha is an axis");
   if (x.axis == y.axis)
     throw InvalidArgument("diagram.axes", "diagram.axes must name two different axes (both are '" + to_string(x.axis) + "')");
+  // alpha is applied last and keeps the other axis's move (plane_scene); any other pair must not move each other.
+  if (x.axis != Axis::alpha && y.axis != Axis::alpha && !independent(x.axis, y.axis))
+    throw InvalidArgument("diagram.axes", "diagram.axes = " + to_string(x.axis) + "," + to_string(y.axis) +
+                                              ": setting one moves the other (they share an input; shear_rate moves "
+                                              "B and C): choose two independent axes");
 }
 
 void Shard::validate() const {
@@ -118,6 +126,7 @@ Scene plane_scene(const Scene& base, const DiagramSpec& spec, double x, double y
 void validate_plane(const Scene& base, const DiagramSpec& spec) {
   spec.validate();
   base.validate();
+  for (Axis a : {spec.x.axis, spec.y.axis}) require_usable(a, base);
   // Each axis alone at its ends with the other at its min, then the corners (held alpha couples the axes).
   const std::pair<double, double> corners[] = {{spec.x.min, spec.y.min}, {spec.x.max, spec.y.min},
                                                {spec.x.min, spec.y.max}, {spec.x.max, spec.y.max}};

@@ -1,6 +1,7 @@
 #pragma once
 // Phase diagrams by direct simulation (paper Fig. 4, Fig. 5, Appendix E): a regular grid over two
-// axes (the parameter table's, model/parameter_table.hpp: lambda, Delta, Delta0, alpha, ln B, ln C, beta); every point is one modal-level `simulate`
+// axes (the parameter table's, model/parameter_table.hpp: lambda, Delta, Delta0, alpha, ln B, ln C, beta, and
+// shear_rate on a physical scene); every point is one modal-level `simulate`
 // classified by l_Delta. Points are independent and deterministic, so the result does not depend
 // on the thread count, the scheduling, the shard split, MPI ranks or on resuming from a journal.
 #include <atomic>
@@ -27,7 +28,9 @@ struct AxisRange {
   Axis axis = Axis::lnB;
   double min = -1, max = 6;  // inclusive ends (Fig. 4: ln B in [-1, 6])
   int count = 64;            // grid values; 1 gives the single value min
-  double value(int i) const;  // min + (max - min) i / (count - 1), exactly max at the end
+  // min + (max - min) i / (count - 1), exactly max at the end; a geometric axis (shear_rate) steps evenly in
+  // ln: min (max/min)^(i/(count - 1)).
+  double value(int i) const;
 };
 
 // How l_Delta = argmax_l [X_l - Delta_l(0)] picks X_l.
@@ -53,12 +56,14 @@ struct DiagramSpec {
   AxisRange y{Axis::lnC, -5.5, 2, 64};  // Fig. 4: ln C in [-5.5, 2]
   Classifier classifier = Classifier::automatic;  // see Classifier
   double alpha = 0;  // > 0: hold alpha = B/C fixed over the plane (Fig. 5: ln C - lambda at alpha = 40, 100, 500)
-  // Distinct axes, finite ranges, counts in [1, 10^6] with at most kMaxDiagramPoints points, alpha >= 0.
+  // Distinct axes that do not move each other (independent(); alpha is applied last), finite ranges, counts in
+  // [1, 10^6] with at most kMaxDiagramPoints points, alpha >= 0.
   void validate() const;
   std::size_t size() const { return std::size_t(x.count) * std::size_t(y.count); }
 };
 
-// spec.validate(), base.validate(), and every corner of the plane a valid scene: each axis range's ends lie in
+// spec.validate(), base.validate(), each axis usable on base (require_usable: shear_rate needs a physical scene,
+// InvalidArgument("shear_rate", ...)), and every corner of the plane a valid scene: each axis range's ends lie in
 // its axis's domain at the base scene (ln B = 800 gives B = inf), so every point between them does (the axes
 // map monotonically onto interval domains). Throws InvalidArgument("diagram.x_range" | "diagram.y_range", ...)
 // naming the axis, the end and the parameter that left its domain.

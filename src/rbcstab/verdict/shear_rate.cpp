@@ -5,6 +5,7 @@
 #include <optional>
 
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/model/parameter_table.hpp"
 
 namespace rbcstab {
 
@@ -21,6 +22,25 @@ void ShearRateSearchOptions::validate() const {
   orbit.validate();
 }
 
+void set_search_range(ShearRateSearchOptions& options, std::string_view text, const std::string& name) {
+  const std::string form = name + " = '" + std::string(text) + "' must be LO,HI: two shear rates 0 < LO < HI in 1/s";
+  const std::size_t comma = text.find(',');
+  if (comma == std::string_view::npos || text.find(',', comma + 1) != std::string_view::npos)
+    throw InvalidArgument(name, form);
+  double range[2] = {0, 0};
+  for (int k = 0; k < 2; ++k) {
+    const std::string_view part = k == 0 ? text.substr(0, comma) : text.substr(comma + 1);
+    try {
+      range[k] = parse_quantity(part, PhysicalUnit::per_second, name);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(name, form + " (" + e.what() + ")");
+    }
+  }
+  if (!(range[0] < range[1])) throw InvalidArgument(name, form + " (LO >= HI)");
+  options.min_rate = range[0];
+  options.max_rate = range[1];
+}
+
 std::string shape_of_mode(int l, bool out_of_plane) {
   const std::string mode = "l = " + std::to_string(l);
   if (out_of_plane) return (l == 3 ? "stomatocyte (" : "axisymmetric cup (") + mode + ", out of plane)";
@@ -29,8 +49,7 @@ std::string shape_of_mode(int l, bool out_of_plane) {
 
 ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const ShearRateSearchOptions& options) {
   options.validate();
-  if (!scene.physical)
-    throw InvalidArgument("shear_rate", "the shear-rate threshold needs a physical scene (a [physical] table or --shear-rate)");
+  require_usable(SceneParameter::shear_rate, scene);
   ShearRateThreshold t;
   t.beta = beta;
   t.orientation = beta == kOutOfPlaneBeta ? "out_of_plane" : "in_plane";
@@ -41,8 +60,7 @@ ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const S
   // rate is set from the base scene, so B and C carry one rounding however long the search.
   auto verdict = [&](double rate, std::string& why) -> std::optional<AsymptoticVerdict> {
     s = base;
-    s.parameters = at_shear_rate(*base.physical, base.parameters, rate);
-    s.physical->shear_rate = rate;
+    set_parameter(s, SceneParameter::shear_rate, rate);
     ++t.evaluations;
     try {
       return asymptotic_verdict(s, options.predictor, options.orbit);
@@ -88,7 +106,7 @@ ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const S
       }
     }
     s = base;
-    s.parameters = at_shear_rate(*base.physical, base.parameters, hi);
+    set_parameter(s, SceneParameter::shear_rate, hi);
     t.found = true;
     t.lo = lo;
     t.hi = t.shear_rate = hi;

@@ -4,6 +4,7 @@
 // ln B - ln C = ln alpha of the (ln B, ln C) plane; the threshold is where that line first enters the unstable
 // region of the asymptotic verdict (verdict/asymptotic.hpp), for each rest orientation of the paper.
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "rbcstab/analysis/predictors.hpp"
@@ -22,6 +23,9 @@ struct ShearRateSearchOptions {
   OrbitAverageOptions orbit;
   void validate() const;  // throws InvalidArgument naming the field
 };
+// "LO,HI" in 1/s, each with an optional unit as for the shear rate (parse_quantity: "10/s", "1e4Hz"), into
+// min_rate, max_rate. Throws InvalidArgument(name, "<name> = '<text>' ...") unless two quantities 0 < LO < HI.
+void set_search_range(ShearRateSearchOptions& options, std::string_view text, const std::string& name);
 
 struct ShearRateThreshold {
   std::string orientation;  // "out_of_plane" (beta = 1e-3, the paper's OP) or "in_plane" (beta = pi/2)

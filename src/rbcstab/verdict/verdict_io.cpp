@@ -331,14 +331,14 @@ std::string thresholds_text(const SceneFile& file, const ThresholdReport& t) {
   return out.str();
 }
 
-SummaryRun run_summary(SceneFile file) {
+SummaryRun run_summary(SceneFile file, const ShearRateSearchOptions& search) {
   const ReducedTransient transient = truncation_transient(file.scene);
   SummaryRun out{std::move(file), {}, {}};
   SimulationOptions options = out.file.options;
   options.record_trajectory = false;  // the summary reports the run at T and its tail, not its samples
   out.run = simulate_scene(out.file, options, &transient);
   out.prediction = predict(out.file.scene, transient, &out.run);
-  if (out.file.scene.physical) out.prediction.shear_rate_thresholds = shear_rate_thresholds(out.file.scene);
+  if (out.file.scene.physical) out.prediction.shear_rate_thresholds = shear_rate_thresholds(out.file.scene, search);
   return out;
 }
 

@@ -43,6 +43,7 @@ struct SummaryRun {
   SimulationResult run;
   ScenePrediction prediction;
 };
-SummaryRun run_summary(SceneFile file);
+// The run, the prediction and, on a physical scene, the shear-rate thresholds searched over `search`.
+SummaryRun run_summary(SceneFile file, const ShearRateSearchOptions& search = {});
 
 }  // namespace rbcstab

@@ -105,6 +105,22 @@ Page make_page(const nlohmann::json& m) {
   run.rows.push_back({"shape rho_min / rho_max at T", num(m.at("shape").at("rho_min")) + " / " +
                                                         num(m.at("shape").at("rho_max"))});
   p.tables.push_back({"Run", run});
+  if (m.contains("physical")) {
+    Table cell{{"quantity", "value"}, {}};
+    for (const auto& [k, v] : m.at("physical").items()) cell.rows.push_back({k, num(v)});
+    p.tables.push_back({"Physical cell (SI; model times are in units of 1/gamma = time_unit_s)", cell});
+  }
+  if (m.contains("shear_rate_thresholds")) {
+    Table rates{{"orientation", "first unstable shear rate [1/s]", "mode l", "shape", "B, C there"}, {}};
+    for (const auto& t : m.at("shear_rate_thresholds")) {
+      const bool found = t.value("found", false);
+      rates.rows.push_back({t.value("orientation", ""),
+                            found ? num(t.at("shear_rate")) : "not found: " + t.value("reason", ""),
+                            t.contains("l") ? num(t.at("l")) : "", t.value("shape", ""),
+                            found ? num(t.at("B")) + ", " + num(t.at("C")) : ""});
+    }
+    p.tables.push_back({"Shear-rate thresholds (asymptotic verdict along B, C proportional to gamma at fixed alpha)", rates});
+  }
   for (const auto& w : m.at("warnings")) p.warnings.push_back(w.get<std::string>());
   return p;
 }
