@@ -15,6 +15,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
+#include "rbcstab/model/parameter_table.hpp"
 #include "rbcstab/report/detail/staging.hpp"
 #include "rbcstab/report/report.hpp"
 
@@ -568,16 +569,10 @@ PlotSpec plot_spec(const std::vector<PlotInput>& inputs, const PlotOptions& o) {
 }
 
 std::string tex_symbol(const std::string& name) {
+  // A scene parameter's symbol is its row's (model/parameter_table.hpp); the map holds the branch quantities.
+  for (const ParameterRow& row : parameter_table())
+    if (name == row.name) return std::string("$") + row.symbol + "$" + (row.id == SceneParameter::shear_rate ? " [1/s]" : "");
   static const std::map<std::string, std::string> symbols{
-      {"lambda", R"($\lambda$)"},
-      {"Delta", R"($\Delta$)"},
-      {"Delta0", R"($\Delta_0$)"},
-      {"B", R"($\mathcal{B}$)"},
-      {"C", R"($\mathcal{C}$)"},
-      {"Lambda", R"($\Lambda$)"},
-      {"S", R"($S$)"},
-      {"beta", R"($\beta$)"},
-      {"alpha", R"($\alpha$)"},
       {"r", R"($r$)"},
       {"Psi", R"($\Psi$)"},
       {"sigma", R"($\sigma$)"},
