@@ -5,9 +5,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -138,6 +140,45 @@ TEST(AgreementInPlane, CliOutputsIdenticalForOneAndTwoThreads) {
   fs::remove_all(dir);
 }
 #endif
+
+}  // namespace
+}  // namespace rbcstab
+
+namespace rbcstab {
+namespace {
+
+// A boundary the caller traced already (a report draws it) serves the agreement's distances: identical to the
+// agreement tracing it itself, and really used (an empty boundary leaves every distance undefined).
+TEST(Agreement, GivenAsymptoticBoundaryEqualsTracingIt) {
+  Scene base;  // Fig. 3 out of plane: lambda = 5, Delta = 1 (the trace takes ~10 ms)
+  DiagramSpec spec;
+  spec.x.count = spec.y.count = 12;
+  std::vector<PointResult> points(spec.size());
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    points[i].index = i;
+    points[i].verdict = i % 3 ? Verdict::stable : Verdict::unstable;  // disagreements on both sides
+    points[i].l_Delta = i % 3 ? 2 : 4;
+  }
+  AgreementOptions ao;
+  ao.finite_horizon = false;
+  const std::vector<Agreement> own = predictor_agreements(base, spec, points, ao);
+  ao.asymptotic_boundary = std::make_shared<const TraceResult>(trace_boundary(base, spec, ao.trace_options));
+  ASSERT_FALSE(ao.asymptotic_boundary->curves.empty());
+  const std::vector<Agreement> given = predictor_agreements(base, spec, points, ao);
+  ASSERT_EQ(own.size(), given.size());
+  for (std::size_t k = 0; k < own.size(); ++k) {
+    EXPECT_EQ(own[k].boundary_pieces, given[k].boundary_pieces) << own[k].predictor;
+    EXPECT_EQ(own[k].beyond_one_step, given[k].beyond_one_step) << own[k].predictor;
+    ASSERT_EQ(own[k].verdict_disagreements.size(), given[k].verdict_disagreements.size());
+    for (std::size_t i = 0; i < own[k].verdict_disagreements.size(); ++i)
+      EXPECT_EQ(own[k].verdict_disagreements[i].distance_steps, given[k].verdict_disagreements[i].distance_steps);
+  }
+  ao.asymptotic_boundary = std::make_shared<const TraceResult>();
+  const std::vector<Agreement> empty = predictor_agreements(base, spec, points, ao);
+  EXPECT_EQ(empty[0].boundary_pieces, 0u);
+  ASSERT_FALSE(empty[0].verdict_disagreements.empty());
+  EXPECT_FALSE(std::isfinite(empty[0].verdict_disagreements[0].distance_steps));
+}
 
 }  // namespace
 }  // namespace rbcstab

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <memory>
 #include <random>
 #include <set>
 #include <sstream>
@@ -317,6 +318,7 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
     // Where the library cannot trace (e.g. an unconverged average) the panel shows the simulations and the
     // analytic lines, and says why.
     std::vector<TraceCurve> boundary;
+    std::shared_ptr<const TraceResult> traced;  // drawn, and the agreement's asymptotic boundary
     std::string trace_note;
     // With beta on an axis the plane crosses from out of plane to in plane (the criterion's source changes
     // along it): not traced. In plane the orbit average makes it affordable (App. E(a): ~9 s CPU, was ~100 s).
@@ -325,7 +327,8 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
       trace_note = "not traced: beta on an axis (the plane mixes in- and out-of-plane criteria; "
                    "try `rbcstab trace`)";
     else try {
-      const TraceResult tr = trace_boundary(sf.scene, spec, panel.trace);
+      traced = std::make_shared<const TraceResult>(trace_boundary(sf.scene, spec, panel.trace));
+      const TraceResult& tr = *traced;
       boundary = tr.curves;
       trace_note = std::to_string(tr.curves.size()) + " pieces, " + std::to_string(tr.corners.size()) +
                    " mode corners, " + std::to_string(tr.evaluations) + " criterion evaluations, " +
@@ -343,6 +346,7 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
     AgreementOptions ao;
     ao.threads = panel.threads;
     ao.trace_options = panel.trace;
+    if (panel.trace.criterion == TraceCriterion::asymptotic) ao.asymptotic_boundary = traced;
     ao.trace_in_plane = true;  // the orbit average: ~9 s CPU on App. E(a)
     doc["agreement"] = traceable ? agreement_json(sf.scene, spec, run.points, ao) : nlohmann::json(nullptr);
     if (!traceable) doc["agreement_reason"] = trace_note;

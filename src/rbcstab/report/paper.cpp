@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <map>
+#include <memory>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <numbers>
@@ -269,13 +270,14 @@ class Composer {
     for (const auto& p : d.points) res_.failed_runs += p.verdict == Verdict::failed;
     const bool in_plane = std::abs(std::cos(d.file.scene.beta)) < 0.5;
     std::vector<TraceCurve> boundary;
+    AgreementOptions ao;
     if (!(o_.quick && in_plane)) {
       try {
-        boundary = trace_boundary(d.file.scene, d.spec).curves;
+        ao.asymptotic_boundary = std::make_shared<const TraceResult>(trace_boundary(d.file.scene, d.spec, ao.trace_options));
+        boundary = ao.asymptotic_boundary->curves;
       } catch (const InvalidArgument&) {  // not traceable on this plane: the simulations and lines are drawn
       }
     }
-    AgreementOptions ao;
     ao.threads = threads_;
     ao.trace = !(o_.quick && in_plane);
     ao.trace_in_plane = !o_.quick;

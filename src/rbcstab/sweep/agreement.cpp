@@ -243,7 +243,8 @@ std::vector<Agreement> predictor_agreements(const Scene& base, const DiagramSpec
     TraceOptions to = options.trace_options;
     to.criterion = c;
     try {
-      const TraceResult t = trace_boundary(base, spec, to);
+      const bool given = c == TraceCriterion::asymptotic && options.asymptotic_boundary;
+      const TraceResult t = given ? *options.asymptotic_boundary : trace_boundary(base, spec, to);
       a.boundary_pieces = t.curves.size();
       a.boundary_corners = t.corners.size();
       a.boundary = "the " + to_string(c) + " boundary traced by continuation";

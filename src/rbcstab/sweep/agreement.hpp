@@ -9,6 +9,7 @@
 //   alpha_init      alpha > alpha_*^init (sigma_R(0) < sigma_*: unstable at the start); round(l_*)
 //   large_S         <sigma_R^-+> (S >> 1 closed forms) < sigma_* and l_* >= 2.5, i.e. C < C_*^-+ (or
 //                   lambda > lambda_*^-); round(l_*). Not classified where the closed form is outside its domain.
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,9 @@ struct AgreementOptions {
   TraceOptions trace_options;   // for the traced boundaries (criterion is set per predictor); its orbit options
                                 // also serve the per-point asymptotic verdicts (in plane: one orbit per flow,
                                 // solved at the base scene's B and mapped to each point's B)
+  // The asymptotic boundary of this plane when the caller has traced it already (trace_boundary with
+  // trace_options and TraceCriterion::asymptotic, as a report draws it): used instead of tracing it again.
+  std::shared_ptr<const TraceResult> asymptotic_boundary;
   PredictorOptions predictor;   // per-point verdicts (analysis defaults: verdicts need no 1e-12 smoothness)
   void validate() const;
 };
