@@ -31,10 +31,9 @@ Axis axis_from_string(const std::string& name) { return parameter_from_string(na
 double AxisRange::value(int i) const {
   if (count <= 1) return min;
   if (i == count - 1) return max;
-  const double u = double(i) / double(count - 1);
   // A geometric axis (shear_rate) spans decades: even steps in ln. Its range is checked > 0 (validate_plane).
-  if (parameter_row(axis).scale == AxisScale::geometric) return min * std::pow(max / min, u);
-  return min + (max - min) * u;
+  if (parameter_row(axis).scale == AxisScale::geometric) return min * std::pow(max / min, double(i) / double(count - 1));
+  return min + (max - min) * double(i) / double(count - 1);
 }
 
 void DiagramSpec::validate() const {
