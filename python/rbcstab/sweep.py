@@ -205,15 +205,16 @@ class Diagram(_Document):
                 raise TypeError(f"trace must be a rbcstab.Trace, got {type(trace).__name__}")
             if trace.axes != self.axes:
                 raise ValueError(f"trace is of the plane {trace.axes}, the diagram of {self.axes}")
-            curves = trace._overlay["curves"]
+            curves, labels = trace._overlay["curves"], trace._overlay.get("axes")
             if not analytic_lines:
                 curves = [c for c in curves if c.get("color") == "black"]  # the traced pieces alone
         else:
             curves = self._overlay()["curves"] if analytic_lines else []
+            labels = self._overlay().get("axes")
         xs, ys = np.meshgrid(self.x, self.y)
         phase_draw().draw_phase_diagram(ax, xs.ravel().tolist(), ys.ravel().tolist(),
                                             self.l_Delta.ravel().tolist(), self.axes[0], self.axes[1], curves,
-                                            title=title)
+                                            title=title, labels=labels)
         return ax
 
     def _overlay(self):
@@ -341,7 +342,7 @@ class Trace(_Document):
         if not analytic_lines:
             curves = [c for c in curves if c.get("color") == "black"]
         phase_draw().draw_phase_diagram(ax, [], [], [], self.axes[0], self.axes[1], curves,
-                                            limits=(self.x_range, self.y_range),
+                                            limits=(self.x_range, self.y_range), labels=self._overlay.get("axes"),
                                             title=title or f"boundary ({self.criterion} criterion)")
         if corners and len(self.corners["x"]):
             ax.plot(self.corners["x"], self.corners["y"], "o", color="black", mfc="white", ms=6, zorder=5,

@@ -168,7 +168,7 @@ std::shared_ptr<DiagramData> run_diagram_scene(const py::handle& scene, const Di
     if (!stop.load()) {
       d->shard = ro.shard;
       d->document = diagram_document(d->file, d->spec, d->run.points, d->shard, d->output, ao);
-      d->overlay = phase_overlay_json({}, analytic_overlays(d->file.scene, d->spec, 200));
+      d->overlay = phase_overlay_json(d->spec, {}, analytic_overlays(d->file.scene, d->spec, 200));
     }
   }
   if (pending) throw std::move(*pending);
@@ -262,7 +262,7 @@ std::shared_ptr<TraceData> trace_scene(const py::handle& scene, const TraceArgs&
     d->result = trace_boundary(f.scene, d->plane, polled);
     d->document = trace_json(f, d->plane, to, d->result);
     if (a.diagram) d->document["agreement"] = trace_agreement_json(dj, a.diagram_source, d->plane, polled, threads);
-    d->overlay = phase_overlay_json(d->result.curves, analytic_overlays(f.scene, d->plane, 200));
+    d->overlay = phase_overlay_json(d->plane, d->result.curves, analytic_overlays(f.scene, d->plane, 200));
   }
   return d;
 }

@@ -294,3 +294,27 @@ def test_bad_trace_and_fig6e_input_raises_naming_it():
         rbcstab.fig6e(scene, B=[-1.0])
     with pytest.raises(TypeError, match="lambdas"):
         rbcstab.fig6e(scene, lambdas=5.0)
+
+
+def test_phase_drawing_puts_a_geometric_axis_on_a_log_scale():
+    # A shear_rate axis is spaced evenly in ln: its cells are drawn on a log axis with edges at the geometric
+    # midpoints, so a point's cell contains it; an evenly spaced axis keeps the linear scale.
+    from rbcstab.sweep import phase_draw
+    pd = phase_draw()
+    xs_g = [10.0, 100.0, 1000.0]
+    ys = [1.0, 3.0]
+    X, Y = np.meshgrid(xs_g, ys)
+    ld = [2, 4, 4, 2, 2, 4]
+    fig, ax = plt.subplots()
+    pd.draw_phase_diagram(ax, X.ravel().tolist(), Y.ravel().tolist(), ld, "shear_rate", "lambda",
+                          labels={"x": r"$\dot\gamma$ [1/s]"})
+    assert ax.get_xscale() == "log" and ax.get_yscale() == "linear"
+    assert ax.get_xlabel() == r"$\dot\gamma$ [1/s]" and ax.get_ylabel() == r"$\lambda$"
+    lo, hi = ax.get_xlim()
+    assert lo == pytest.approx(10 / math.sqrt(10)) and hi == pytest.approx(1000 * math.sqrt(10))
+    plt.close(fig)
+    fig, ax = plt.subplots()
+    X, Y = np.meshgrid([1.0, 2.0, 3.0], ys)
+    pd.draw_phase_diagram(ax, X.ravel().tolist(), Y.ravel().tolist(), ld, "lnB", "lambda")
+    assert ax.get_xscale() == "linear" and ax.get_xlim() == pytest.approx((0.5, 3.5))
+    plt.close(fig)

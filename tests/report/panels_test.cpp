@@ -178,7 +178,12 @@ TEST(PhaseOverlay, HoldsTheTracedBoundaryAndTheAnalyticLines) {
   b.l = 4;
   b.points = {TracePoint{1, 2, 4, 0, 0, 0}, TracePoint{2, 2.5, 4, 0, 0, 0}};
   const std::vector<Overlay> lines{{"l_star=2.5", {0, 1}, {-3, -2}}, {"C_star_plus", {0, 2}, {1, 1}}, {"empty", {}, {}}};
-  const nlohmann::json o = phase_overlay_json({a, b}, lines);
+  DiagramSpec spec;  // ln B x ln C
+  const nlohmann::json o = phase_overlay_json(spec, {a, b}, lines);
+  EXPECT_EQ(o.at("axes").at("x"), "$\\ln \\mathcal{B}$");  // the parameter table's symbols
+  EXPECT_EQ(o.at("axes").at("y"), "$\\ln \\mathcal{C}$");
+  spec.x.axis = Axis::shear_rate;
+  EXPECT_EQ(phase_overlay_json(spec, {}, {}).at("axes").at("x"), "$\\dot\\gamma$ [1/s]");
   const auto& c = o.at("curves");
   ASSERT_EQ(c.size(), 4u);  // two boundary pieces, two non-empty lines
   EXPECT_EQ(c[0].at("x"), (std::vector<double>{0, 1}));

@@ -15,6 +15,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
+#include "rbcstab/report/bifurcation_plot.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
 #include "rbcstab/sweep/diagram_output.hpp"
 
@@ -217,7 +218,8 @@ nlohmann::json bifurcation_json(const SceneBranch& branch, const std::string& me
   return j;
 }
 
-nlohmann::json phase_overlay_json(const std::vector<TraceCurve>& boundary, const std::vector<Overlay>& lines) {
+nlohmann::json phase_overlay_json(const DiagramSpec& spec, const std::vector<TraceCurve>& boundary,
+                                  const std::vector<Overlay>& lines) {
   nlohmann::json curves = nlohmann::json::array();
   std::set<int> labelled;
   for (const TraceCurve& c : boundary) {
@@ -261,7 +263,8 @@ nlohmann::json phase_overlay_json(const std::vector<TraceCurve>& boundary, const
     }
     curves.push_back(j);
   }
-  nlohmann::json doc{{"curves", curves}};
+  nlohmann::json doc{{"axes", {{"x", tex_symbol(to_string(spec.x.axis))}, {"y", tex_symbol(to_string(spec.y.axis))}}},
+                     {"curves", curves}};
   explain_nulls(doc, "undefined there: the line's formula is outside its domain (drawn as a gap)");
   return doc;
 }
@@ -339,7 +342,7 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
     const std::vector<Overlay> lines = analytic_overlays(sf.scene, spec, 200);  // 200 samples per line: smooth at 900 px
     // Without the per-point wall-clock seconds: the data behind the figure is the same on every run.
     ro.phase_diagram = staging.put("phase_diagram.csv", diagram_csv(spec, run.points, DiagramOutputOptions{false}));
-    staging.put("phase_diagram.json", phase_overlay_json(boundary, lines).dump(1) + "\n");
+    staging.put("phase_diagram.json", phase_overlay_json(spec, boundary, lines).dump(1) + "\n");
     nlohmann::json header = diagram_header(sf.scene, sf.options, spec);
     put_truncation(header, sf);
     nlohmann::json doc = diagram_json(header, spec, run.points, Shard{});

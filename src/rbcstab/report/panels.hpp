@@ -65,9 +65,11 @@ BranchSpec branch_spec(const ContinuationPanel& panel, const Scene& scene);
 // rbcstab_report.py draws against the parameter.
 nlohmann::json bifurcation_json(const SceneBranch& branch, const std::string& measure);
 
-// The phase diagram's overlay {"curves": [{"label", "x", "y", "style", "color"}]}: the traced boundary
-// pieces (solid black, one legend entry per mode) and the analytic lines (dashed / dotted; C_*^± red).
-nlohmann::json phase_overlay_json(const std::vector<TraceCurve>& boundary, const std::vector<Overlay>& lines);
+// The phase diagram's overlay {"axes": {"x", "y"}, "curves": [{"label", "x", "y", "style", "color"}]}: the
+// axes' TeX labels (tex_symbol: the parameter table's symbols), the traced boundary pieces (solid black, one
+// legend entry per mode) and the analytic lines (dashed / dotted; C_*^± red).
+nlohmann::json phase_overlay_json(const DiagramSpec& spec, const std::vector<TraceCurve>& boundary,
+                                  const std::vector<Overlay>& lines);
 
 struct PanelOptions {
   int threads = 0;           // diagram worker threads; 0 = all cores (the points are independent)

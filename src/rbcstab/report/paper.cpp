@@ -284,7 +284,7 @@ class Composer {
     d.agreements = predictor_agreements(d.file.scene, d.spec, d.points, ao);
     d.csv = put(name + ".csv", diagram_csv(d.spec, d.points, DiagramOutputOptions{false}));
     d.overlay = put(name + "_overlay.json",
-                    phase_overlay_json(boundary, analytic_overlays(d.file.scene, d.spec, 200)).dump(1) + "\n");
+                    phase_overlay_json(d.spec, boundary, analytic_overlays(d.file.scene, d.spec, 200)).dump(1) + "\n");
     return d;
   }
 

@@ -102,8 +102,8 @@ def draw_phase(ax, p, folder):
     keys = list(d)
     x, y = keys[keys.index("j") + 1], keys[keys.index("j") + 2]
     ld = [int(v) if math.isfinite(v) else 0 for v in d["l_Delta"]]
-    curves = read_json(os.path.join(folder, p["overlay"])).get("curves", [])
-    draw_phase_diagram(ax, d[x], d[y], ld, x, y, curves, title=p["title"])
+    overlay = read_json(os.path.join(folder, p["overlay"]))
+    draw_phase_diagram(ax, d[x], d[y], ld, x, y, overlay.get("curves", []), title=p["title"], labels=overlay.get("axes"))
 
 
 def draw_markers(ax, p, folder):

@@ -31,7 +31,16 @@ def _edges(u):
     return np.concatenate([[u[0] - (mid[0] - u[0])], mid, [u[-1] + (u[-1] - mid[-1])]])
 
 
-def draw_phase_diagram(ax, xs, ys, ld, x, y, curves=(), limits=None, title=None):
+def _geometric(u):
+    """True for positive values evenly spaced in ln but not linearly (a geometric axis such as shear_rate)."""
+    u = np.asarray(u, dtype=float)
+    if len(u) < 3 or not (u > 0).all():
+        return False
+    d, q = np.diff(u), np.diff(np.log(u))
+    return not np.allclose(d, d[0], rtol=1e-9) and np.allclose(q, q[0], rtol=1e-9)
+
+
+def draw_phase_diagram(ax, xs, ys, ld, x, y, curves=(), limits=None, title=None, labels=None):
     """Points (xs[k], ys[k]) coloured by their l_Delta ld[k] (l_Delta = 2, stable, left white; a full grid as
     cells centred on the points), then the overlay curves ({"label", "x", "y", "style", "color", "width",
     "label_on_line"}); x and y name the axes. Without points, limits ((x_min, x_max), (y_min, y_max)) frame
@@ -51,9 +60,25 @@ def draw_phase_diagram(ax, xs, ys, ld, x, y, curves=(), limits=None, title=None)
         for a_, b_, lv in zip(xs, ys, ld):
             if lv in colour_of:
                 rgba[iy[b_], ix[a_]] = colour_of[lv]
-        ex, ey = _edges(ux), _edges(uy)
-        ax.imshow(rgba, origin="lower", aspect="auto", interpolation="nearest", extent=(ex[0], ex[-1], ey[0], ey[-1]),
-                  zorder=0)
+        gx, gy = _geometric(ux), _geometric(uy)
+        ex = np.exp(_edges(np.log(ux))) if gx else _edges(ux)
+        ey = np.exp(_edges(np.log(uy))) if gy else _edges(uy)
+        if gx or gy:
+            # Cells even in ln on a log axis: pcolormesh on the edges (imshow assumes an even grid).
+            from matplotlib.colors import ListedColormap
+            code = np.zeros((len(uy), len(ux)))
+            for a_, b_, lv in zip(xs, ys, ld):
+                if lv in colour_of:
+                    code[iy[b_], ix[a_]] = 1 + levels.index(lv)
+            ax.pcolormesh(ex, ey, code, cmap=ListedColormap([(1, 1, 1, 1)] + list(cols)), vmin=-0.5,
+                          vmax=len(levels) + 0.5, shading="flat", zorder=0)
+            if gx:
+                ax.set_xscale("log")
+            if gy:
+                ax.set_yscale("log")
+        else:
+            ax.imshow(rgba, origin="lower", aspect="auto", interpolation="nearest",
+                      extent=(ex[0], ex[-1], ey[0], ey[-1]), zorder=0)
         extra = ([Patch(facecolor="white", edgecolor="0.5", label=r"$l_\Delta = 2$ (stable)")] +
                  [Patch(color=colour_of[lv], label=rf"$l_\Delta = {lv}$") for lv in levels])
         x_lim, y_lim = (ex[0], ex[-1]), (ey[0], ey[-1])
@@ -79,8 +104,9 @@ def draw_phase_diagram(ax, xs, ys, ld, x, y, curves=(), limits=None, title=None)
                         bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.7))
     ax.set_xlim(*x_lim)
     ax.set_ylim(*y_lim)
-    ax.set_xlabel(symbol(x))
-    ax.set_ylabel(symbol(y))
+    labels = labels or {}  # the overlay's "axes" (the parameter table's symbols); else the column names' symbols
+    ax.set_xlabel(labels.get("x") or symbol(x))
+    ax.set_ylabel(labels.get("y") or symbol(y))
     ax.grid(False)
     handles, labels = ax.get_legend_handles_labels()
     ax.legend(extra + handles, [h.get_label() for h in extra] + labels, loc="center left",

@@ -382,8 +382,8 @@ def plot_phase_diagram(csv_path, out, overlay_json=None, size_px=(900, 750), x=N
     y = y or _pick(d, ["ln_C", "y"], 1)
     ld = [int(v) if math.isfinite(v) else 0 for v in d["l_Delta"]]
     fig, ax = new_figure(size_px)
-    draw_phase_diagram(ax, d[x], d[y], ld, x, y, read_json(overlay_json).get("curves", []) if overlay_json else [],
-                       title=title)
+    overlay = read_json(overlay_json) if overlay_json else {}
+    draw_phase_diagram(ax, d[x], d[y], ld, x, y, overlay.get("curves", []), title=title, labels=overlay.get("axes"))
     return save(fig, out, size_px)
 
 
