@@ -138,5 +138,44 @@ TEST(ShearRate, DiagramAxisPointsAreThePlainSceneAtTheConvertedRate) {
   }
 }
 
+// A shear_rate plane is traced in ln of the rate (the axis is geometric): successive points of a piece are at
+// most max_step apart in the unit square of (ln rate, lambda), i.e. their rates differ by at most a factor
+// (max/min)^max_step, also where the boundary runs at low rates; each point solves the criterion at the plain
+// scene converted from its rate (|mu_l| <= 1e-8: Newton's residual 1e-10 in the reduced units of the tracer).
+TEST(ShearRate, TracedInLnOfTheRate) {
+  Scene base = physical_scene();
+  base.parameters.Delta0 = 0.01;
+  base.parameters = physical_parameters(*base.physical, base.parameters);
+  base.beta = 0.001;
+  DiagramSpec plane;
+  plane.x = {SceneParameter::shear_rate, 10, 1e4, 2};
+  plane.y = {SceneParameter::lambda, 1, 5, 2};
+  TraceOptions o;
+  const TraceResult r = trace_boundary(base, plane, o);
+  ASSERT_FALSE(r.curves.empty());
+  const double factor = std::pow(1e3, o.max_step) * (1 + 1e-9);
+  std::size_t points = 0;
+  for (const TraceCurve& c : r.curves) {
+    for (std::size_t k = 0; k < c.points.size(); ++k) {
+      const TracePoint& q = c.points[k];
+      ASSERT_GE(q.x, 10 * (1 - 1e-12));
+      ASSERT_LE(q.x, 1e4 * (1 + 1e-12));
+      if (k > 0) {
+        const double ratio = q.x / c.points[k - 1].x;
+        EXPECT_LE(std::max(ratio, 1 / ratio), factor) << "at rate " << q.x;
+      }
+      PhysicalCell cell = *base.physical;
+      Scene plain = base;
+      plain.physical.reset();
+      plain.parameters.lambda = q.y;
+      plain.parameters = at_shear_rate(cell, plain.parameters, q.x);
+      const AsymptoticVerdict v = asymptotic_verdict(plain);
+      EXPECT_LE(std::abs(Upsilon_l(plain.parameters, q.l, v.sigma_R)), 1e-8) << q.x << ", " << q.y;
+      ++points;
+    }
+  }
+  EXPECT_GE(points, 10u);
+}
+
 }  // namespace
 }  // namespace rbcstab

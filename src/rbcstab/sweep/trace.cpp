@@ -10,6 +10,7 @@
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/model/parameter_table.hpp"
 #include "rbcstab/verdict/asymptotic.hpp"
 #include "rbcstab/verdict/predict.hpp"
 #include "rbcstab/model/scene.hpp"
@@ -95,7 +96,16 @@ TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane_spec, con
       options.on_progress(double(++evaluations), 0);
       return at(x, y);
     };
-  const PlaneBox box{plane_spec.x.min, plane_spec.x.max, plane_spec.y.min, plane_spec.y.max};
+  // A geometric axis (shear_rate, spanning decades) is traced in ln of its value, so the curve's resolution
+  // (max_step of the unit square) is even in ln, as the diagram's grid is.
+  const bool gx = parameter_row(plane_spec.x.axis).scale == AxisScale::geometric;
+  const bool gy = parameter_row(plane_spec.y.axis).scale == AxisScale::geometric;
+  auto traced = [](bool g, double v) { return g ? std::log(v) : v; };
+  auto value = [](bool g, double v) { return g ? std::exp(v) : v; };
+  if (gx || gy)
+    criteria.at = [at = criteria.at, gx, gy, value](double x, double y) { return at(value(gx, x), value(gy, y)); };
+  const PlaneBox box{traced(gx, plane_spec.x.min), traced(gx, plane_spec.x.max), traced(gy, plane_spec.y.min),
+                     traced(gy, plane_spec.y.max)};
   const ZeroSetResult z = trace_zero_set(criteria, box, options.zero_set());
   TraceResult res;
   res.criterion = options.criterion;
@@ -105,10 +115,10 @@ TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane_spec, con
     c.criterion = criteria.description;
     c.chain = p.chain;
     for (const ZeroSetPoint& q : p.points)
-      c.points.push_back({q.x, q.y, q.l, q.sigma_R, sigma_c(q.l, q.alpha), q.g});
+      c.points.push_back({value(gx, q.x), value(gy, q.y), q.l, q.sigma_R, sigma_c(q.l, q.alpha), q.g});
     res.curves.push_back(std::move(c));
   }
-  for (const ZeroSetCorner& k : z.corners) res.corners.push_back({k.x, k.y, k.l_from, k.l_to});
+  for (const ZeroSetCorner& k : z.corners) res.corners.push_back({value(gx, k.x), value(gy, k.y), k.l_from, k.l_to});
   res.evaluations = z.evaluations;
   res.chains = z.chains;
   res.starts = z.starts;
