@@ -146,3 +146,24 @@ TEST(SigmaFollowsReduced, WhilePerturbationsAreSmall) {
 
 }  // namespace
 }  // namespace rbcstab
+
+namespace rbcstab {
+namespace {
+// final_amplitudes rebuilds f_{l,m}(T) on the level the run chose (modal here): each block's excess area equals
+// the run's own Delta_l(T), which the simulation observes independently from the state (relative 1e-12: the
+// same numbers through two formulas).
+TEST(FinalAmplitudes, AreasEqualTheRunsDeltaAtT) {
+  Scene s = testing::fig3_scene(0.7);
+  s.L = 6;
+  s.T = 30;
+  SimulationOptions o;
+  o.full_horizon = true;
+  const SimulationResult r = simulate(s, o);
+  ASSERT_EQ(r.status, IntegrationStatus::success);
+  ASSERT_EQ(r.level.level, ModelLevel::modal);
+  const ModeAmplitudes f = final_amplitudes(s, r);
+  for (int l = 2; l <= s.L; ++l)
+    EXPECT_NEAR(f.excess_area(l), r.Delta_final[std::size_t(l - 2)], 1e-12 * r.Delta_final[std::size_t(l - 2)]) << l;
+}
+}  // namespace
+}  // namespace rbcstab

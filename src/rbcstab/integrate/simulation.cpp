@@ -13,6 +13,11 @@ void SimulationOptions::validate() const {
   require(std::isfinite(tail_window) && tail_window > 0, "tail_window", tail_window, "finite and > 0");
 }
 
+ModeAmplitudes final_amplitudes(const Scene& scene, const SimulationResult& result) {
+  return make_system(scene.parameters, initial_state(scene), result.level.level)
+      ->amplitudes(result.t_reached, result.y_final);
+}
+
 std::vector<double> sampling_grid(double T, double dt) {
   std::vector<double> g;
   const auto n = static_cast<std::size_t>(std::floor(T / dt * (1 + 1e-12)));

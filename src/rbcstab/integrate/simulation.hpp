@@ -114,6 +114,9 @@ struct SimulationResult {
 SimulationResult simulate(const Scene& scene, const SimulationOptions& options = {},
                           AttractorCertifier* certifier = nullptr);
 
+// f_{l,m}(t_reached): the shape a run of `scene` ends in, rebuilt from its final state on the level it ran.
+ModeAmplitudes final_amplitudes(const Scene& scene, const SimulationResult& result);
+
 // Regular-grid helper: 0, dt, 2 dt, ..., T (T always included).
 std::vector<double> sampling_grid(double T, double dt);
 

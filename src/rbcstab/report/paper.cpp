@@ -8,7 +8,6 @@
 #include <iomanip>
 #include <map>
 #include <memory>
-#include <mutex>
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
@@ -24,6 +23,7 @@
 #include "rbcstab/report/detail/staging.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/report/report.hpp"
+#include "rbcstab/core/parallel.hpp"
 #include "rbcstab/report/shape.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
@@ -118,29 +118,6 @@ std::string num(double v, int digits = 4) {
 }
 std::string pct(double v) { return num(100 * v, 3) + "%"; }
 
-// Runs f(k) for k in [0, n) on `threads` workers (each index once; the first exception is rethrown).
-template <class F>
-void parallel_for(std::size_t n, int threads, F&& f) {
-  std::atomic<std::size_t> next{0};
-  std::exception_ptr error;
-  std::mutex m;
-  auto work = [&] {
-    for (std::size_t k; (k = next++) < n;) {
-      try {
-        f(k);
-      } catch (...) {
-        std::lock_guard lock(m);
-        if (!error) error = std::current_exception();
-      }
-    }
-  };
-  std::vector<std::thread> pool;
-  for (int w = 1; w < std::min<int>(threads, int(n)); ++w) pool.emplace_back(work);
-  work();
-  for (auto& th : pool) th.join();
-  if (error) std::rethrow_exception(error);
-}
-
 // A run drawn as curves: integrated to T on the scene's output grid, its trajectory written as CSV.
 struct Line {
   SceneFile file;
@@ -151,11 +128,6 @@ struct Line {
     std::vector<double> v;
     for (const auto& d : run.trajectory.Delta_l) v.push_back(l - 2 < int(d.size()) ? d[std::size_t(l - 2)] : 0.0);
     return v;
-  }
-  // f_{l,m}(T): the shape the run ends in, rebuilt from its final state on the level it ran.
-  ModeAmplitudes final_amplitudes() const {
-    return make_system(file.scene.parameters, initial_state(file.scene), run.level.level)
-        ->amplitudes(run.t_reached, run.y_final);
   }
   std::vector<double> Delta_above2() const {  // sum of Delta_l, l >= 3
     std::vector<double> v;
@@ -756,7 +728,7 @@ json shape_insets(Composer& c, const std::vector<const Line*>& runs, const std::
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const Line& l = *runs[i];
     const bool ip = i == 1;
-    const ModeAmplitudes f = l.final_amplitudes();
+    const ModeAmplitudes f = final_amplitudes(l.file.scene, l.run);
     const std::string csv = c.put(l.file.scene.name + "_shape_T.csv", to_csv(shape_on_grid(f, grid)));
     insets.push_back({{"data", csv},
                       {"in_plane", ip},

@@ -457,11 +457,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
   }
   if (o.on_step) o.on_step("computing " + std::to_string(o.frames) + " animation frames");
   const Frames frames = shape_frames(sf, o, window);
-  {
-    const InitialState init = initial_state(sf.scene);
-    const auto system = make_system(sf.scene.parameters, init, res.run.level.level);
-    res.shape = shape_on_grid(system->amplitudes(res.run.t_reached, res.run.y_final), o.shape);
-  }
+  res.shape = shape_on_grid(final_amplitudes(sf.scene, res.run), o.shape);
   if (res.shape.rho_min <= 0)
     res.warnings.push_back("the shape is not star-shaped (min rho = " + format_value(res.shape.rho_min) +
                            "): Delta is beyond the quasi-spherical expansion; the mesh folds over itself");

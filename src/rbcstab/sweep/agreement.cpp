@@ -11,6 +11,7 @@
 
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/core/parallel.hpp"
 #include "rbcstab/verdict/asymptotic.hpp"
 #include "rbcstab/verdict/predict.hpp"
 
@@ -91,21 +92,6 @@ std::vector<Polyline> polylines(const std::vector<Overlay>& overlays, const std:
 }
 
 int nearest_mode(double alpha, int L) { return std::clamp(int(std::lround(l_star(alpha))), 3, L); }
-
-// work(i) for i in [0, n), in parallel (each independent: deterministic).
-void parallel_for(std::size_t n, int threads, const std::function<void(std::size_t)>& work) {
-  const std::size_t k = std::max<std::size_t>(1, std::min<std::size_t>(n, std::size_t(threads)));
-  auto strided = [&](std::size_t first) {
-    for (std::size_t i = first; i < n; i += k) work(i);
-  };
-  if (k <= 1) {
-    strided(0);
-    return;
-  }
-  std::vector<std::thread> pool;
-  for (std::size_t t = 0; t < k; ++t) pool.emplace_back(strided, t);
-  for (std::thread& t : pool) t.join();
-}
 
 // Per-point verdicts of one predictor, in parallel over the points.
 std::vector<PointVerdict> verdicts(const Scene& base, const DiagramSpec& spec, const std::vector<PointResult>& points,
