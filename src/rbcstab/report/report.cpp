@@ -495,7 +495,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     const bool in_plane = std::abs(std::cos(sf.scene.beta)) < 0.5;
     // Times stay in model units; a physical scene's captions say what that unit is in seconds.
     const std::string t_unit = sf.scene.physical ? " (t in units of 1/gamma = " +
-                                                       format_value(1 / sf.scene.physical->shear_rate) + " s)"
+                                                       format_value(cell_numbers(*sf.scene.physical).time_unit) + " s)"
                                                  : "";
     nlohmann::json figs = nlohmann::json::array();
     figs.push_back(figure("reduced_dynamics", "fig_reduced_r_Psi.png", 1200, 450,
