@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <memory>
+#include <optional>
 #include <random>
 #include <set>
 #include <sstream>
@@ -18,6 +19,7 @@
 #include "rbcstab/report/bifurcation_plot.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
 #include "rbcstab/sweep/diagram_output.hpp"
+#include "rbcstab/sweep/sweep_io.hpp"
 
 namespace rbcstab {
 
@@ -343,15 +345,13 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
     // Without the per-point wall-clock seconds: the data behind the figure is the same on every run.
     ro.phase_diagram = staging.put("phase_diagram.csv", diagram_csv(spec, run.points, DiagramOutputOptions{false}));
     staging.put("phase_diagram.json", phase_overlay_json(spec, boundary, lines).dump(1) + "\n");
-    nlohmann::json header = diagram_header(sf.scene, sf.options, spec);
-    put_truncation(header, sf);
-    nlohmann::json doc = diagram_json(header, spec, run.points, Shard{});
     AgreementOptions ao;
     ao.threads = panel.threads;
     ao.trace_options = panel.trace;
     if (panel.trace.criterion == TraceCriterion::asymptotic) ao.asymptotic_boundary = traced;
-    ao.trace_in_plane = true;  // the orbit average: ~9 s CPU on App. E(a)
-    doc["agreement"] = traceable ? agreement_json(sf.scene, spec, run.points, ao) : nlohmann::json(nullptr);
+    ao.trace_in_plane = true;
+    nlohmann::json doc = diagram_document(sf, spec, run.points, Shard{}, {},
+                                          traceable ? std::optional<AgreementOptions>(ao) : std::nullopt);
     if (!traceable) doc["agreement_reason"] = trace_note;
     ro.attachments.push_back(staging.put("diagram.json", doc.dump(1) + "\n"));
     res.status = res.failed ? "failed runs" : "success";

@@ -141,11 +141,12 @@ VerdictCounts count_verdicts(const std::vector<PointResult>& points) {
 
 nlohmann::json diagram_document(const SceneFile& file, const DiagramSpec& spec, const std::vector<PointResult>& points,
                                 const Shard& shard, const DiagramOutputOptions& output,
-                                const AgreementOptions& agreement) {
+                                const std::optional<AgreementOptions>& agreement) {
   nlohmann::json header = diagram_header(file.scene, file.options, spec);
   put_truncation(header, file);
   nlohmann::json doc = diagram_json(header, spec, points, shard, output);
-  if (shard.n == 1) doc["agreement"] = agreement_json(file.scene, spec, points, agreement);
+  if (shard.n == 1)
+    doc["agreement"] = agreement ? agreement_json(file.scene, spec, points, *agreement) : nlohmann::json(nullptr);
   return doc;
 }
 

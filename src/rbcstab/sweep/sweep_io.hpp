@@ -2,6 +2,7 @@
 // JSON, CSV and text views of the sweep results (Fig. 6e table, traced boundaries, diagram runs and merges),
 // shared by the command line, the report and any other front end.
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -38,10 +39,11 @@ struct VerdictCounts {
 VerdictCounts count_verdicts(const std::vector<PointResult>& points);
 // The document `rbcstab diagram` writes to PREFIX.json: the header with the scene's truncation, the points and
 // their summary (diagram_json) and, when the job holds the whole grid (shard.n == 1), every predictor's agreement
-// with the points (agreement_json).
+// with the points (agreement_json); without agreement options, "agreement" is null (a plane that cannot be
+// traced: the caller says why).
 nlohmann::json diagram_document(const SceneFile& file, const DiagramSpec& spec, const std::vector<PointResult>& points,
                                 const Shard& shard, const DiagramOutputOptions& output = {},
-                                const AgreementOptions& agreement = {});
+                                const std::optional<AgreementOptions>& agreement = AgreementOptions{});
 // What a diagram run wrote: files PREFIX.csv and PREFIX.json, point counts by verdict, hash, seconds, truncation.
 nlohmann::json diagram_brief_json(const SceneFile& file, const DiagramRun& r, const std::string& prefix);
 // What a merge of `inputs` shard files wrote.
