@@ -93,7 +93,8 @@ TEST(TraceInB, PointsAreOnTheDirectBoundary) {
     const TraceResult& t = P.exact;
     ASSERT_FALSE(t.curves.empty());
     ASSERT_FALSE(t.notes.empty());
-    EXPECT_EQ(t.notes.front(), "closed form in B at each ln C: one periodic orbit per value");
+    EXPECT_EQ(t.notes.back(), "closed form in B at each ln C: one periodic orbit per value");
+    EXPECT_EQ(t.method, "in closed form in B");
     const TraceOptions o = options(true);
     AsymptoticSigmaMemo memo(o.predictor, o.orbit);
     std::vector<std::pair<double, double>> corners;
@@ -175,7 +176,7 @@ TEST(TraceInB, LnBOnTheYAxisGivesTheTransposedBoundary) {
   std::swap(swapped.x, swapped.y);
   const TraceResult t = trace_boundary(P.scene, swapped, options(true));
   ASSERT_FALSE(t.notes.empty());
-  EXPECT_EQ(t.notes.front(), "closed form in B at each ln C: one periodic orbit per value");
+  EXPECT_EQ(t.notes.back(), "closed form in B at each ln C: one periodic orbit per value");
   EXPECT_EQ(t.evaluations, P.exact.evaluations);
   ASSERT_EQ(t.corners.size(), P.exact.corners.size());
   for (std::size_t i = 0; i < t.corners.size(); ++i) {
@@ -201,6 +202,7 @@ void expect_identical(const TraceResult& a, const TraceResult& b) {
   EXPECT_EQ(a.chains, b.chains);
   EXPECT_EQ(a.starts, b.starts);
   EXPECT_EQ(a.notes, b.notes);
+  EXPECT_EQ(a.method, b.method);
   ASSERT_EQ(a.curves.size(), b.curves.size());
   for (std::size_t i = 0; i < a.curves.size(); ++i) {
     EXPECT_EQ(a.curves[i].l, b.curves[i].l);
@@ -254,5 +256,42 @@ TEST(TraceInB, OtherPlanesAreTracedByContinuationUnchanged) {
   }
 }
 
+}  // namespace
+}  // namespace rbcstab
+
+namespace rbcstab {
+namespace {
+// A value whose orbit is not usable (here: one Newton iteration cannot converge the shooting) sends the whole
+// plane to continuation, whose criterion then takes the time average there: the continuation's result, with the
+// reason first in the notes and the failed orbit solve counted. Cheap time averages on a small plane, as in
+// Trace.InPlaneAsymptoticByTimeAverage.
+TEST(TraceInB, UnusableOrbitFallsBackToContinuation) {
+  Scene s = load_scene(std::string(RBCSTAB_SCENES_DIR) + "/appE_a_ip.toml").scene;
+  s.L = 5;
+  DiagramSpec plane;
+  plane.x = {Axis::lnB, 3.5, 4.5, 5};
+  plane.y = {Axis::lnC, -2, -1.5, 5};
+  TraceOptions o;
+  o.lines = 0;
+  o.samples = 4;
+  o.bisections = 30;
+  o.max_step = 0.25;
+  o.predictor.transient = 100;
+  o.predictor.window = 200;
+  o.predictor.average_tolerance = 1e-2;
+  o.orbit.max_iterations = 1;
+  TraceOptions off = o;
+  off.closed_form_in_B = false;
+  TraceResult a = trace_boundary(s, plane, o);
+  const TraceResult b = trace_boundary(s, plane, off);
+  ASSERT_FALSE(a.curves.empty());
+  ASSERT_FALSE(a.notes.empty());
+  EXPECT_EQ(a.notes.front().rfind("closed form in B not used (traced by continuation): no attracting periodic orbit at ln C = -2", 0), 0u)
+      << a.notes.front();
+  EXPECT_EQ(a.evaluations, b.evaluations + 1);
+  a.notes.erase(a.notes.begin());
+  a.evaluations = b.evaluations;
+  expect_identical(a, b);
+}
 }  // namespace
 }  // namespace rbcstab

@@ -88,7 +88,8 @@ struct TraceResult {
   TraceCriterion criterion = TraceCriterion::asymptotic;
   std::size_t chains = 0, starts = 0, turning_points = 0;
   ContinuationCounters counters;   // the engine's work
-  std::vector<std::string> notes;  // pieces that ended inside the plane, and why
+  std::vector<std::string> notes;  // pieces that ended inside the plane, and why; last, the closed form's method
+  std::string method = "by continuation";  // or "in closed form in B" (TraceOptions::closed_form_in_B)
 };
 
 TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane, const TraceOptions& options = {});

@@ -329,8 +329,9 @@ class InB {
     }
     res.starts = res.chains;
     res.evaluations = evaluations;
+    res.notes = notes_;
     res.notes.push_back("closed form in B at each " + parameter_label(u_axis_) + ": one periodic orbit per value");
-    res.notes.insert(res.notes.end(), notes_.begin(), notes_.end());
+    res.method = "in closed form in B";
     return res;
   }
 
