@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
@@ -80,6 +81,18 @@ double max_curvature(const TraceResult& t, const DiagramSpec& d) {
   return k;
 }
 
+// Corners: where the boundary's mode changes between l and l + 1 (either way along the chain), e_l = e_{l+1} = 0, so sigma_l^c = sigma_{l+1}^c:
+// alpha = Pi(l) Pi(l+1)/4 (alpha_mode_change, an independent closed form). The corner's u is Brent's root to
+// ~1e-14 of the axis and its ln B a Newton step: alpha to ~1e-13 relative; 1e-11 leaves margin.
+void expect_corners_on_mode_change_lines(const Scene& base, const DiagramSpec& plane, const TraceResult& t) {
+  for (const TraceCorner& k : t.corners) {
+    EXPECT_EQ(std::abs(k.l_to - k.l_from), 1);
+    const double alpha = plane_scene(base, plane, k.x, k.y).parameters.alpha();
+    EXPECT_NEAR(alpha / alpha_mode_change(std::min(k.l_from, k.l_to)), 1.0, 1e-11)
+        << "corner " << k.l_from << "->" << k.l_to;
+  }
+}
+
 // Every point against the direct verdict at its scene (a fresh periodic-orbit solve, not the tracer's
 // mapped one): the margin <sigma_R> - max_l sigma_l^c vanishes to roundoff, the active mode is the point's
 // (either mode at a corner), and ln B -+ 1e-6 (a margin change ~1e-6 |d margin/d ln B| = O(1e-6), far above
@@ -129,6 +142,7 @@ TEST(TraceInB, PointsAreOnTheDirectBoundary) {
     }
     EXPECT_GT(n, 30u);
     std::cout << "appE_" << p << ": " << n << " points, max |margin|/(1 + |sigma_c|) = " << worst << "\n";
+    expect_corners_on_mode_change_lines(P.scene, P.plane, t);
   }
 }
 
@@ -292,6 +306,45 @@ TEST(TraceInB, UnusableOrbitFallsBackToContinuation) {
   a.notes.erase(a.notes.begin());
   a.evaluations = b.evaluations;
   expect_identical(a, b);
+}
+}  // namespace
+}  // namespace rbcstab
+
+namespace rbcstab {
+namespace {
+// Another axis beside ln B (lambda: it moves the flow, not B), with ln B on y: the note names it, every point's
+// direct verdict has its margin at roundoff and flips across it, corners on the mode-change lines (the mode
+// falls with lambda here: the chain runs towards increasing lambda, so its corners read 5 -> 4 -> 3).
+TEST(TraceInB, LambdaAxis) {
+  Scene s = load_scene(std::string(RBCSTAB_SCENES_DIR) + "/appE_a_ip.toml").scene;
+  s.parameters.C = std::exp(-1.8);
+  DiagramSpec plane;
+  plane.x = {Axis::lambda, 0.5, 3, 8};
+  plane.y = {Axis::lnB, 2, 5, 8};
+  TraceOptions o = options(true);
+  o.samples = 16;
+  o.max_step = 0.1;
+  const TraceResult t = trace_boundary(s, plane, o);
+  ASSERT_FALSE(t.notes.empty());
+  EXPECT_EQ(t.notes.back(), "closed form in B at each lambda: one periodic orbit per value");
+  ASSERT_FALSE(t.curves.empty());
+  ASSERT_EQ(t.corners.size(), 2u);
+  EXPECT_EQ(t.corners[0].l_from, 5);
+  EXPECT_EQ(t.corners[1].l_to, 3);
+  std::size_t n = 0;
+  for (const TraceCurve& c : t.curves)
+    for (const TracePoint& q : c.points) {
+      const AsymptoticVerdict v = asymptotic_verdict(plane_scene(s, plane, q.x, q.y), o.predictor, o.orbit);
+      EXPECT_LE(std::abs(v.margin), 1e-13 * (1 + std::abs(q.sigma_c))) << q.x << ", " << q.y;
+      if (q.y - 1e-6 > plane.y.min && q.y + 1e-6 < plane.y.max) {
+        EXPECT_FALSE(asymptotic_verdict(plane_scene(s, plane, q.x, q.y - 1e-6), o.predictor, o.orbit).unstable);
+        EXPECT_TRUE(asymptotic_verdict(plane_scene(s, plane, q.x, q.y + 1e-6), o.predictor, o.orbit).unstable);
+      }
+      ++n;
+    }
+  expect_corners_on_mode_change_lines(s, plane, t);
+  std::cout << "lambda x ln B: " << n << " points, " << t.corners.size() << " corners, " << t.evaluations
+            << " orbits, " << t.seconds << " s\n";
 }
 }  // namespace
 }  // namespace rbcstab
