@@ -182,6 +182,24 @@ TEST(TraceInB, AgreesWithContinuation) {
   }
 }
 
+// A reversed axis: the same boundary (the same orbits and roots: bit for bit).
+TEST(TraceInB, ReversedAxesGiveTheSameBoundary) {
+  const Panel& P = panel('a');
+  for (int axis = 0; axis < 2; ++axis) {
+    DiagramSpec reversed = P.plane;
+    AxisRange& r = axis == 0 ? reversed.x : reversed.y;
+    std::swap(r.min, r.max);
+    const TraceResult t = trace_boundary(P.scene, reversed, options(true));
+    ASSERT_EQ(t.corners.size(), P.exact.corners.size());
+    for (std::size_t i = 0; i < t.corners.size(); ++i) {
+      EXPECT_EQ(t.corners[i].x, P.exact.corners[i].x);
+      EXPECT_EQ(t.corners[i].y, P.exact.corners[i].y);
+    }
+    ASSERT_EQ(t.curves.size(), P.exact.curves.size());
+    for (std::size_t i = 0; i < t.curves.size(); ++i) EXPECT_EQ(t.curves[i].points.size(), P.exact.curves[i].points.size());
+  }
+}
+
 // ln B on the y axis: the same boundary, transposed (the corners to roundoff: the same orbits and roots), and
 // each chain runs towards increasing x.
 TEST(TraceInB, LnBOnTheYAxisGivesTheTransposedBoundary) {

@@ -107,8 +107,8 @@ class InB {
       : base_(base), plane_(plane), o_(options), b_on_x_(plane.x.axis == Axis::lnB) {
     const AxisRange& U = b_on_x_ ? plane.y : plane.x;
     const AxisRange& V = b_on_x_ ? plane.x : plane.y;
-    u0_ = U.min;
-    u1_ = U.max;
+    u0_ = std::min(U.min, U.max);  // sampled upwards whatever the axis's orientation (chains are oriented in x)
+    u1_ = std::max(U.min, U.max);
     v_lo_ = std::min(V.min, V.max);
     v_hi_ = std::max(V.min, V.max);
     u_axis_ = U.axis;
