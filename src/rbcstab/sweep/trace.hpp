@@ -9,8 +9,8 @@
 // The boundary is the zero set of the envelope max_l g_l, traced by pseudo-arclength continuation of
 // g_l = 0 from automatically located starts, with the corners where another mode takes over located as
 // engine events (sweep/zero_set.hpp). In-plane asymptotic boundaries on a ln B plane are instead traced in
-// closed form in B (TraceOptions::closed_form_in_B): the same result with one periodic orbit per value of the
-// other axis.
+// closed form in B (TraceOptions::closed_form_in_B): the same boundary, with one periodic orbit per value of
+// the other axis.
 #include <string>
 #include <string_view>
 #include <vector>

@@ -2,7 +2,7 @@
 // The in-plane asymptotic boundary on a plane with a ln B axis, exactly: one periodic orbit per value u of the
 // other axis. The reduced flow holds no B (verdict/asymptotic.hpp), so at fixed u every quantity of the
 // criterion is affine in B: <sigma_R>(B) (orbit_sigma_average_at_B) and sigma_l^c(B/C), hence
-// e_l(B) = <sigma_R> - sigma_l^c = a_l + m_l B with a_l = e_l(0) = Pi_l - 6 > 0 (the l = 2 and l tensions at rest).
+// e_l(B) = <sigma_R> - sigma_l^c = a_l + m_l B with a_l = e_l(0) = sigma_2^c(0) - sigma_l^c(0) = Pi_l - 6 > 0.
 // Mode l grows (mu_l > 0, i.e. e_l < 0) iff m_l < 0 and B > B_l* = 1/r_l, r_l = -m_l/a_l: the unstable set at u is
 // the half-line B > B*(u) = 1/max_l r_l (none where every r_l <= 0), and the boundary is the graph
 // ln B = -ln max_l r_l(u), its mode the argmax, which is the argmax of sigma_l^c at B* (the verdict's active
