@@ -7,6 +7,7 @@
 #include <iostream>
 #include <map>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "rbcstab/analysis/thresholds.hpp"
@@ -229,31 +230,23 @@ TEST(TraceInB, LnBOnTheYAxisGivesTheTransposedBoundary) {
   }
 }
 
+// Every field, bit for bit (tuples of doubles compare exactly).
 void expect_identical(const TraceResult& a, const TraceResult& b) {
-  EXPECT_EQ(a.evaluations, b.evaluations);
-  EXPECT_EQ(a.chains, b.chains);
-  EXPECT_EQ(a.starts, b.starts);
-  EXPECT_EQ(a.notes, b.notes);
-  EXPECT_EQ(a.method, b.method);
-  ASSERT_EQ(a.curves.size(), b.curves.size());
+  const auto summary = [](const TraceResult& t) {
+    return std::tuple{t.evaluations, t.chains, t.starts, t.notes, t.method, t.curves.size(), t.corners.size()};
+  };
+  ASSERT_EQ(summary(a), summary(b));
   for (std::size_t i = 0; i < a.curves.size(); ++i) {
-    EXPECT_EQ(a.curves[i].l, b.curves[i].l);
-    EXPECT_EQ(a.curves[i].criterion, b.curves[i].criterion);
+    EXPECT_EQ(std::tie(a.curves[i].l, a.curves[i].criterion), std::tie(b.curves[i].l, b.curves[i].criterion));
     ASSERT_EQ(a.curves[i].points.size(), b.curves[i].points.size());
     for (std::size_t j = 0; j < a.curves[i].points.size(); ++j) {
       const TracePoint &p = a.curves[i].points[j], &q = b.curves[i].points[j];
-      EXPECT_EQ(p.x, q.x);
-      EXPECT_EQ(p.y, q.y);
-      EXPECT_EQ(p.l, q.l);
-      EXPECT_EQ(p.sigma_R, q.sigma_R);
-      EXPECT_EQ(p.sigma_c, q.sigma_c);
-      EXPECT_EQ(p.mu, q.mu);
+      EXPECT_EQ(std::tie(p.x, p.y, p.l, p.sigma_R, p.sigma_c, p.mu), std::tie(q.x, q.y, q.l, q.sigma_R, q.sigma_c, q.mu));
     }
   }
-  ASSERT_EQ(a.corners.size(), b.corners.size());
   for (std::size_t i = 0; i < a.corners.size(); ++i) {
-    EXPECT_EQ(a.corners[i].x, b.corners[i].x);
-    EXPECT_EQ(a.corners[i].y, b.corners[i].y);
+    const TraceCorner &p = a.corners[i], &q = b.corners[i];
+    EXPECT_EQ(std::tie(p.x, p.y, p.l_from, p.l_to), std::tie(q.x, q.y, q.l_from, q.l_to));
   }
 }
 
