@@ -233,7 +233,7 @@ std::vector<Agreement> predictor_agreements(const Scene& base, const DiagramSpec
       const TraceResult t = given ? *options.asymptotic_boundary : trace_boundary(base, spec, to);
       a.boundary_pieces = t.curves.size();
       a.boundary_corners = t.corners.size();
-      a.boundary = "the " + to_string(c) + " boundary traced by continuation";
+      a.boundary = "the " + to_string(c) + " boundary traced " + t.method;
       if (!t.notes.empty()) a.note = t.notes.front();
       return BoundaryDistance(spec, polylines(t));
     } catch (const InvalidArgument& e) {

@@ -14,6 +14,7 @@
 #include "rbcstab/verdict/asymptotic.hpp"
 #include "rbcstab/verdict/predict.hpp"
 #include "rbcstab/model/scene.hpp"
+#include "rbcstab/sweep/detail/trace_in_B.hpp"
 
 namespace rbcstab {
 
@@ -84,11 +85,9 @@ ModeCriteria plane_criteria(const Scene& base, const DiagramSpec& plane, const T
   return c;
 }
 
-TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane_spec, const TraceOptions& options) {
-  options.validate();
-  validate_plane(base, plane_spec);
-  require_L(base.L, 3, kMaxL, "a boundary needs a mode l >= 3");
-  const auto t0 = std::chrono::steady_clock::now();
+namespace {
+TraceResult trace_by_continuation(const Scene& base, const DiagramSpec& plane_spec, const TraceOptions& options,
+                                  std::chrono::steady_clock::time_point t0) {
   ModeCriteria criteria = plane_criteria(base, plane_spec, options);
   std::size_t evaluations = 0;  // the zero set is traced on this thread
   if (options.on_progress)
@@ -126,6 +125,27 @@ TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane_spec, con
   res.counters = z.counters;
   res.notes = z.notes;
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return res;
+}
+}  // namespace
+
+TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane_spec, const TraceOptions& options) {
+  options.validate();
+  validate_plane(base, plane_spec);
+  require_L(base.L, 3, kMaxL, "a boundary needs a mode l >= 3");
+  const auto t0 = std::chrono::steady_clock::now();
+  if (!detail::closed_form_in_B_applies(base, plane_spec, options))
+    return trace_by_continuation(base, plane_spec, options, t0);
+  detail::InBTrace exact = detail::trace_in_B(base, plane_spec, options, kAsymptoticOrbit);
+  if (exact.result) {
+    exact.result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return *exact.result;
+  }
+  TraceResult res = trace_by_continuation(base, plane_spec, options, t0);
+  res.evaluations += exact.evaluations;
+  std::vector<std::string> notes(1, "closed form in B not used (traced by continuation): " + exact.why);
+  notes.insert(notes.end(), res.notes.begin(), res.notes.end());
+  res.notes = std::move(notes);
   return res;
 }
 

@@ -8,7 +8,9 @@
 //    (analysis finite_horizon_growth, verdict finite_horizon_prediction).
 // The boundary is the zero set of the envelope max_l g_l, traced by pseudo-arclength continuation of
 // g_l = 0 from automatically located starts, with the corners where another mode takes over located as
-// engine events (sweep/zero_set.hpp).
+// engine events (sweep/zero_set.hpp). In-plane asymptotic boundaries on a ln B plane are instead traced in
+// closed form in B (TraceOptions::closed_form_in_B): the same boundary, with one periodic orbit per value of
+// the other axis.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -48,6 +50,11 @@ struct TraceOptions {
   // selection leaves ~1e-10 jitter in G_l(T) = 500 Upsilon_l; measured); costs ~1.7x per evaluation.
   PredictorOptions predictor = tracing_predictor();
   OrbitAverageOptions orbit;  // in-plane asymptotic criterion: periodic-orbit average (time average as fallback)
+  // In-plane asymptotic criterion on a plane with a ln B axis whose other axis leaves B (and no fixed alpha): the
+  // boundary in closed form in B, one periodic orbit per value of the other axis (the reduced flow holds no B),
+  // falling back to continuation if some value has no attracting orbit. false: continuation on every plane, for
+  // comparisons.
+  bool closed_form_in_B = true;
   ProgressCallback on_progress;  // criterion evaluations so far (total unknown: 0)
   void validate() const;
   static PredictorOptions tracing_predictor();
@@ -76,12 +83,13 @@ struct TraceCorner {
 struct TraceResult {
   std::vector<TraceCurve> curves;
   std::vector<TraceCorner> corners;
-  std::size_t evaluations = 0;  // criterion evaluations
+  std::size_t evaluations = 0;  // criterion evaluations (closed form in B: periodic orbits solved)
   double seconds = 0;
   TraceCriterion criterion = TraceCriterion::asymptotic;
   std::size_t chains = 0, starts = 0, turning_points = 0;
   ContinuationCounters counters;   // the engine's work
-  std::vector<std::string> notes;  // pieces that ended inside the plane, and why
+  std::vector<std::string> notes;  // pieces that ended inside the plane, and why; last, the closed form's method
+  std::string method = "by continuation";  // or "in closed form in B" (TraceOptions::closed_form_in_B)
 };
 
 TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane, const TraceOptions& options = {});
