@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <numbers>
 #include <optional>
@@ -10,6 +11,7 @@
 #include "rbcstab/continuation/detail/forced_flow.hpp"
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/core/phasor.hpp"
 
 namespace rbcstab {
 
@@ -164,7 +166,8 @@ ModalSubsystem::ModalSubsystem(const ModalForcedSystem& full, double p, std::vec
 }
 
 const Eigen::VectorXd& ModalSubsystem::forcing(double t) const {
-  h_.noalias() = h0_ + std::cos(t) * h_cos_ + std::sin(t) * h_sin_;
+  const std::complex<double> e = unit_phasor(t);
+  h_.noalias() = h0_ + e.real() * h_cos_ + e.imag() * h_sin_;
   return h_;
 }
 

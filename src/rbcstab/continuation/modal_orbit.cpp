@@ -6,6 +6,7 @@
 
 #include "rbcstab/continuation/detail/rest_direction.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/core/phasor.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/scene.hpp"
@@ -71,7 +72,7 @@ const ModalCoefficients& ModalForcedSystem::coefficients(double p) const {
 
 Eigen::VectorXd ModalForcedSystem::forcing_with(double t, double inv_Lambda, double k, const Direction& d) const {
   Eigen::VectorXd h = Eigen::VectorXd::Zero(dimension());
-  const std::complex<double> zt = d.z0 * std::polar(1.0, t);
+  const std::complex<double> zt = d.z0 * unit_phasor(t);
   h[0] = k * zt.real();
   h[1] = -inv_Lambda + k * zt.imag();
   h[2] = k * d.w0;
@@ -188,7 +189,7 @@ std::vector<double> ModalForcedSystem::to_modal_model_state(double t, const Eige
   const double Delta = coefficients(p).parameters.Delta;
   const double a2 = a_l(2);
   const double fz = std::sqrt(Delta / (2 * a2)), fw = -std::sqrt(Delta / a2);
-  const std::complex<double> v = std::complex<double>(x[3], x[4]) * std::polar(1.0, 0.5 * t);  // lab frame
+  const std::complex<double> v = std::complex<double>(x[3], x[4]) * unit_phasor(0.5 * t);  // lab frame
   std::vector<double> y = {fw * x[2], fz * v.real(), fz * v.imag(), fz * x[0], fz * x[1]};
   for (int l = 3; l <= L_; ++l) {
     const double al = x[ModalEquilibriumProblem::index_of_mode(l)];
@@ -203,7 +204,7 @@ Eigen::VectorXd ModalForcedSystem::from_modal_model_state(const ModalModel& m, d
   const double Delta = coefficients(p).parameters.Delta;
   const double a2 = a_l(2);
   const double fz = std::sqrt(Delta / (2 * a2)), fw = -std::sqrt(Delta / a2);
-  const std::complex<double> v = std::complex<double>(y[1], y[2]) * std::polar(1.0, -0.5 * t);  // co-rotating
+  const std::complex<double> v = std::complex<double>(y[1], y[2]) * unit_phasor(-0.5 * t);  // co-rotating
   // Built through a std::vector (GCC 12 flags element writes into a fresh dynamic Eigen vector).
   std::vector<double> x = {y[3] / fz, y[4] / fz, y[0] / fw, v.real() / fz, v.imag() / fz};
   x.resize(static_cast<std::size_t>(dimension()), 0.0);

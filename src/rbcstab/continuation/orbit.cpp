@@ -16,6 +16,7 @@
 #include "rbcstab/continuation/detail/rest_direction.hpp"
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/core/phasor.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/integrate/quadrature.hpp"
 
@@ -150,7 +151,7 @@ void ReducedForcedSystem::parameter_derivative(double t, std::span<const double>
   const double g[3] = {z0.real(), z0.imag(), m.w0()};
   double dg[3] = {0, 0, 0};
   if (beta) {
-    const std::complex<double> dz0 = d.dz0 * std::polar(1.0, t);
+    const std::complex<double> dz0 = d.dz0 * unit_phasor(t);
     dg[0] = dz0.real(), dg[1] = dz0.imag(), dg[2] = d.dw0;
   }
   const double Q = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "rbcstab/core/phasor.hpp"
+
 namespace rbcstab {
 
 FullModel::FullModel(const Parameters& p, const InitialState& init) : p_(p), L_(init.f.L) {
@@ -31,7 +33,7 @@ void FullModel::drive(double t, std::vector<std::complex<double>>& S) const {
     for (int m = -l; m <= l; ++m) {
       const std::size_t k = ModeAmplitudes::index(l, m);
       // g_{l,m}(t) = g_{l,m}(0) e^{i m t / 2}                              (Eq. eom_g)
-      const std::complex<double> g = g0_[k] == 0.0 ? 0.0 : g0_[k] * std::polar(1.0, 0.5 * m * t);
+      const std::complex<double> g = g0_[k] == 0.0 ? 0.0 : g0_[k] * unit_phasor(0.5 * m * t);
       S[k] = C_[k] - G3C * g;
     }
   }
@@ -102,7 +104,7 @@ void FullModel::jacobian(double t, std::span<const double> y, StructuredJacobian
       J.v[i + 1] = dups * im;
       J.w[i] = b.sigma_change(2 * md.a * re * ups0 + md.a * S[k].real(), 2 * md.a * re * dups);
       J.w[i + 1] = b.sigma_change(2 * md.a * im * ups0 + md.a * S[k].imag(), 2 * md.a * im * dups);
-      const std::complex<double> g = g0_[k] == 0.0 ? 0.0 : g0_[k] * std::polar(1.0, 0.5 * m * t);  // as in drive()
+      const std::complex<double> g = g0_[k] == 0.0 ? 0.0 : g0_[k] * unit_phasor(0.5 * m * t);  // as in drive()
       dS[k] = -md.G3C * std::complex<double>(0, om) * g;
       dW_dt += md.a * (dS[k].real() * re + dS[k].imag() * im);
     }

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/core/phasor.hpp"
 
 namespace rbcstab {
 
@@ -36,7 +37,7 @@ ModalModel::ModalModel(const Parameters& p, const InitialState& init) : p_(p), L
 
 void ModalModel::drive(double t, std::complex<double> S[3]) const {
   // g_{2,m}(t) = g_{2,m}(0) e^{i m t/2}: one sincos serves m = 1 and 2.
-  const std::complex<double> e1 = std::polar(1.0, 0.5 * t), e2 = e1 * e1;
+  const std::complex<double> e1 = unit_phasor(0.5 * t), e2 = e1 * e1;
   S[0] = -G3C2_ * g20_[0];
   S[1] = -G3C2_ * g20_[1] * e1;
   S[2] = -G3C2_ * g20_[2] * e2 + C22_;
@@ -109,7 +110,7 @@ void ModalModel::jacobian(double t, std::span<const double> y, StructuredJacobia
   }
   // Explicit time dependence through g_{2,m}(t): dS/dt = -Gamma3/C (i m/2) g(t).
   std::complex<double> dS[3];
-  for (int m = 0; m <= 2; ++m) dS[m] = -G3C2_ * std::complex<double>(0, 0.5 * m) * g20_[m] * std::polar(1.0, 0.5 * m * t);
+  for (int m = 0; m <= 2; ++m) dS[m] = -G3C2_ * std::complex<double>(0, 0.5 * m) * g20_[m] * unit_phasor(0.5 * m * t);
   const double dwork = dS[0].real() * y[0] + 2 * (dS[1].real() * y[1] + dS[1].imag() * y[2]) +
                        2 * (dS[2].real() * y[3] + dS[2].imag() * y[4]);
   const double dsigma_dt = b.sigma_change(a2 * dwork, 0.0);
@@ -139,7 +140,7 @@ ModeAmplitudes ModalModel::amplitudes(double t, std::span<const double> y) const
   for (std::size_t j = 0; j < active_.size(); ++j) {
     const int l = active_[j];
     const double scale = std::exp(0.5 * (y[5 + j] - y0_[5 + j]));
-    for (int m = -l; m <= l; ++m) f.at(l, m) = f0_.at(l, m) * std::polar(scale, 0.5 * m * t);
+    for (int m = -l; m <= l; ++m) f.at(l, m) = f0_.at(l, m) * scale * unit_phasor(0.5 * m * t);
   }
   return f;
 }

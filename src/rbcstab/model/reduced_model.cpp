@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "rbcstab/core/phasor.hpp"
 #include "rbcstab/model/tension.hpp"
 
 namespace rbcstab {
@@ -35,7 +36,7 @@ ReducedModel::ReducedModel(const Parameters& p, const InitialState& init)
   }
 }
 
-std::complex<double> ReducedModel::z0(double t) const { return z00_ * std::polar(1.0, t); }
+std::complex<double> ReducedModel::z0(double t) const { return z00_ * unit_phasor(t); }
 
 // The area balance of tension.hpp with the multiplier mu as the one rate (slope 1, zero 0):
 // (1/2) Q' = mu Q + y.h with h = (kappa z0, -1/Lambda, kappa w0) (the rotation does no work).
