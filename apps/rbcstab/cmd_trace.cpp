@@ -25,7 +25,7 @@ struct TraceCliOptions {
   std::vector<std::string> axes, x_range, y_range;  // comma lists (checks.hpp list_items)
   double alpha_fixed = -1;
   TraceOptions trace;
-  std::string out = "trace", diagram, criterion = "asymptotic";
+  std::string out = "trace", diagram, criterion = "asymptotic", method = "auto";
   int threads = 1;
   bool json = false;
   ProgressOutput progress;
@@ -38,6 +38,7 @@ int run(const TraceCliOptions& o) {
   const DiagramSpec spec = plane_spec(sf, plane);
   TraceOptions to = o.trace;
   to.criterion = trace_criterion_from_string(o.criterion);
+  to.method = trace_method_from_string(o.method);
   to.on_progress = o.progress.callback("trace:", "criterion evaluations");
   const TraceResult t = trace_boundary(sf.scene, spec, to);
 
@@ -84,6 +85,11 @@ static Runner add_trace(CLI::App& app) {
   app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C fixed over the plane, >= 0 (0: off; default: the scene's [diagram] or off)")
       ->check(non_negative());
   app.add_option("--criterion", o->criterion, "asymptotic | finite-horizon")->capture_default_str();
+  app.add_option("--method", o->method,
+                 "auto: in-plane asymptotic boundaries of ln B planes in closed form in B (one periodic orbit per value "
+                 "of the other axis), the rest by continuation; continuation: continuation on every plane")
+      ->check(CLI::IsMember(enum_names<TraceMethod>()))
+      ->capture_default_str();
   app.add_option("--horizon", o->trace.T, "finite-horizon T, >= 0 (0: the scene's T)")
       ->check(non_negative())
       ->capture_default_str();

@@ -284,9 +284,10 @@ class TraceCurve:
 
 
 class Trace(_Document):
-    """A stability boundary traced by continuation (``rbcstab trace``): ``curves`` (TraceCurve pieces with numpy
+    """A stability boundary traced as curves (``rbcstab trace``): ``curves`` (TraceCurve pieces with numpy
     arrays x, y, mu, sigma_R, sigma_c), ``corners`` (numpy arrays x, y, l_from, l_to: where the active mode
-    changes), ``analytic_lines`` (the paper's lines on the plane). ``to_dict()`` is the CLI's PREFIX.json."""
+    changes), ``analytic_lines`` (the paper's lines on the plane), ``method`` (how it was traced: "by
+    continuation" or "in closed form in B"). ``to_dict()`` is the CLI's PREFIX.json."""
 
     def __init__(self, data):
         self._data = data
@@ -309,6 +310,10 @@ class Trace(_Document):
         return self._doc["evaluations"]
 
     @property
+    def method(self):
+        return self._doc["method"]
+
+    @property
     def notes(self):
         return list(self._doc["notes"])
 
@@ -329,7 +334,7 @@ class Trace(_Document):
                 ("criterion", self.criterion), ("pieces", ", ".join(f"l={c.l}: {len(c)} points" for c in self.curves)),
                 ("corners", ", ".join(f"({x:.4g}, {y:.4g}) {a}->{b}" for x, y, a, b in
                                       zip(*(self.corners[k] for k in ("x", "y", "l_from", "l_to"))))),
-                ("evaluations", self.evaluations)] + [("note", n) for n in self.notes]
+                ("method", self.method), ("evaluations", self.evaluations)] + [("note", n) for n in self.notes]
         body = "".join(f"<tr><th style='text-align:left'>{html.escape(str(k))}</th>"
                        f"<td style='text-align:left'>{html.escape(str(v))}</td></tr>" for k, v in rows)
         return f"<b>rbcstab Trace</b><table>{body}</table>"
@@ -351,8 +356,8 @@ class Trace(_Document):
 
 
 def trace(scene, criterion="asymptotic", *, axes=None, x_range=None, y_range=None, alpha_fixed=None, horizon=0.0,
-          lines=4, samples=128, max_step=0.02, diagram=None, threads=1):
-    """The stability boundary of a parameter plane traced as curves by continuation (``rbcstab trace``).
+          lines=4, samples=128, max_step=0.02, method="auto", diagram=None, threads=1):
+    """The stability boundary of a parameter plane traced as curves (``rbcstab trace``).
 
     criterion  'asymptotic' (mu_l = Upsilon_l(<sigma_R>) = 0) or 'finite-horizon' (G_l(T) = 0)
     axes, x_range, y_range, alpha_fixed   the plane, as for diagram() (default: the scene's [diagram] table)
@@ -360,6 +365,9 @@ def trace(scene, criterion="asymptotic", *, axes=None, x_range=None, y_range=Non
     lines      interior lines searched for starting points, an integer in [0, 10000]
     samples    brackets per edge or line when searching for starts, an integer in [2, 1000000]
     max_step   continuation step cap in the unit square (the curve's resolution), > 0
+    method     'auto' (in-plane asymptotic boundaries of ln B planes in closed form in B, one periodic orbit per
+               value of the other axis; the rest by continuation) or 'continuation' (every plane); the result's
+               ``method`` says which was used
     diagram    a Diagram of the same plane (or its to_dict(), or the path of a diagram JSON file): measures
                every predictor's agreement with its simulations (the CLI's --diagram)
     threads    threads for the agreement's per-point verdicts, an integer in [0, 4096] (0: all cores)
@@ -380,7 +388,7 @@ def trace(scene, criterion="asymptotic", *, axes=None, x_range=None, y_range=Non
     data = _rbcstab.trace(
         scene, axes=_names("axes", axes), x_range=_numbers("x_range", x_range), y_range=_numbers("y_range", y_range),
         alpha_fixed=None if alpha_fixed is None else _number("alpha_fixed", alpha_fixed),
-        criterion=_text("criterion", criterion), horizon=_number("horizon", horizon), lines=_integer("lines", lines),
+        criterion=_text("criterion", criterion), method=_text("method", method), horizon=_number("horizon", horizon), lines=_integer("lines", lines),
         samples=_integer("samples", samples), max_step=_number("max_step", max_step),
         threads=_integer("threads", threads), diagram=text, diagram_source=source)
     return Trace(data)

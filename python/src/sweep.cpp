@@ -227,7 +227,7 @@ struct TraceData {
 
 struct TraceArgs {
   PlaneChoice plane;
-  std::string criterion = "asymptotic";
+  std::string criterion = "asymptotic", method = "auto";
   double horizon = 0, max_step = 0.02;
   long long lines = 4, samples = 128, threads = 1;
   std::optional<std::string> diagram;  // a diagram document's JSON text: measure the agreement
@@ -240,6 +240,7 @@ std::shared_ptr<TraceData> trace_scene(const py::handle& scene, const TraceArgs&
   d->plane = plane_spec(f, a.plane);
   TraceOptions to;
   to.criterion = trace_criterion_from_string(a.criterion);
+  to.method = trace_method_from_string(a.method);
   to.T = a.horizon;
   to.lines = narrow(a.lines, "lines");
   to.samples = narrow(a.samples, "samples");
@@ -390,12 +391,13 @@ void bind_sweep(py::module_& m) {
   m.def(
       "trace",
       [](const py::handle& scene, std::vector<std::string> axes, std::vector<double> x_range,
-         std::vector<double> y_range, std::optional<double> alpha_fixed, std::string criterion, double horizon,
-         long long lines, long long samples, double max_step, long long threads, std::optional<std::string> diagram,
+         std::vector<double> y_range, std::optional<double> alpha_fixed, std::string criterion, std::string method,
+         double horizon, long long lines, long long samples, double max_step, long long threads, std::optional<std::string> diagram,
          std::string diagram_source) {
         TraceArgs a;
         a.plane = plane_choice(std::move(axes), std::move(x_range), std::move(y_range), {}, {}, alpha_fixed);
         a.criterion = std::move(criterion);
+        a.method = std::move(method);
         a.horizon = horizon;
         a.lines = lines;
         a.samples = samples;
@@ -406,7 +408,7 @@ void bind_sweep(py::module_& m) {
         return trace_scene(scene, a);
       },
       py::arg("scene"), py::arg("axes"), py::arg("x_range"), py::arg("y_range"), py::arg("alpha_fixed"),
-      py::arg("criterion"), py::arg("horizon"), py::arg("lines"), py::arg("samples"), py::arg("max_step"),
+      py::arg("criterion"), py::arg("method"), py::arg("horizon"), py::arg("lines"), py::arg("samples"), py::arg("max_step"),
       py::arg("threads"), py::arg("diagram"), py::arg("diagram_source"),
       "rbcstab trace: the traced boundary as a _Trace (diagram: a diagram document's JSON text, for the agreement).");
 

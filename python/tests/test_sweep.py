@@ -136,6 +136,26 @@ def test_trace_equals_the_cli(tmp_path):
     plt.close(fig)
 
 
+def test_trace_method_in_plane_closed_form_and_continuation_agree(tmp_path):
+    # In plane (beta = pi/2) on a ln B x ln C plane, method="auto" traces in closed form in B; "continuation" traces
+    # the same zero set by continuation: same pieces and corners (both located to ~1e-11), and the CLI's --method
+    # gives the same document.
+    scene = rbcstab.Scene(**SCENE, beta=math.pi / 2)
+    opts = dict(PLANE, samples=32, max_step=0.05)
+    auto, cont = rbcstab.trace(scene, **opts), rbcstab.trace(scene, method="continuation", **opts)
+    assert auto.method == "in closed form in B" and cont.method == "by continuation"
+    assert auto.evaluations < cont.evaluations
+    assert [c.l for c in auto.curves] == [c.l for c in cont.curves] and len(auto.curves) > 0
+    assert auto.corners["l_to"].tolist() == cont.corners["l_to"].tolist()
+    np.testing.assert_allclose(auto.corners["x"], cont.corners["x"], atol=1e-8)
+    np.testing.assert_allclose(auto.corners["y"], cont.corners["y"], atol=1e-8)
+    run_cli("trace", *PLANE_FLAGS, "--beta", math.pi / 2, "--samples", 32, "--max-step", 0.05, "--method",
+            "continuation", "--out", tmp_path / "cli")
+    cli = json.loads(read(tmp_path / "cli.json"))
+    assert without_timing(cont.to_dict()) == without_timing(cli)
+    assert cli["method"] == "by continuation" and cli["options"]["method"] == "continuation"
+
+
 def test_trace_agreement_with_a_diagram_equals_the_cli(diagram_8x8, tmp_path):
     diagram_8x8.save(tmp_path / "d")
     # coarse tracing options: the finite-horizon boundary is traced too (one reduced run per evaluation)
@@ -284,6 +304,8 @@ def test_bad_trace_and_fig6e_input_raises_naming_it():
         rbcstab.trace(scene, criterion="eventual")
     with pytest.raises(ValueError, match="lines"):
         rbcstab.trace(scene, lines=-1)
+    with pytest.raises(ValueError, match="method"):
+        rbcstab.trace(scene, method="closed")
     with pytest.raises(TypeError, match="samples"):
         rbcstab.trace(scene, samples=2.5)
     with pytest.raises(ValueError, match="x_range"):

@@ -1,4 +1,4 @@
-// The in-plane asymptotic boundary in closed form in B (TraceOptions::closed_form_in_B) on the App. E planes,
+// The in-plane asymptotic boundary in closed form in B (TraceMethod::automatic) on the App. E planes,
 // against the direct verdict at every point and against the continuation tracer; its fallbacks.
 #include <gtest/gtest.h>
 
@@ -31,7 +31,7 @@ struct Panel {
 TraceOptions options(bool exact) {
   TraceOptions o;
   o.max_step = kMaxStep;
-  o.closed_form_in_B = exact;
+  o.method = exact ? TraceMethod::automatic : TraceMethod::continuation;
   return o;
 }
 
@@ -260,7 +260,7 @@ TEST(TraceInB, OtherPlanesAreTracedByContinuationUnchanged) {
   o.samples = 8;
   o.max_step = 0.1;
   TraceOptions off = o;
-  off.closed_form_in_B = false;
+  off.method = TraceMethod::continuation;
   Scene out_of_plane = P.scene;
   out_of_plane.beta = 0.001;
   DiagramSpec fixed_alpha;
@@ -306,7 +306,7 @@ TEST(TraceInB, UnusableOrbitFallsBackToContinuation) {
   o.predictor.average_tolerance = 1e-2;
   o.orbit.max_iterations = 1;
   TraceOptions off = o;
-  off.closed_form_in_B = false;
+  off.method = TraceMethod::continuation;
   TraceResult a = trace_boundary(s, plane, o);
   const TraceResult b = trace_boundary(s, plane, off);
   ASSERT_FALSE(a.curves.empty());

@@ -9,7 +9,7 @@
 // The boundary is the zero set of the envelope max_l g_l, traced by pseudo-arclength continuation of
 // g_l = 0 from automatically located starts, with the corners where another mode takes over located as
 // engine events (sweep/zero_set.hpp). In-plane asymptotic boundaries on a ln B plane are instead traced in
-// closed form in B (TraceOptions::closed_form_in_B): the same boundary, with one periodic orbit per value of
+// closed form in B (TraceMethod::automatic): the same boundary, with one periodic orbit per value of
 // the other axis.
 #include <string>
 #include <string_view>
@@ -38,6 +38,19 @@ inline TraceCriterion trace_criterion_from_string(std::string_view name) {
   return from_string<TraceCriterion>(name, "criterion");
 }
 
+// How a boundary is traced. automatic: in-plane asymptotic boundaries on a plane with a ln B axis whose other axis
+// leaves B (and no fixed alpha) in closed form in B, one periodic orbit per value of the other axis (the reduced
+// flow holds no B), falling back to continuation if some value has no attracting orbit; every other plane by
+// continuation. continuation: continuation on every plane (comparisons).
+enum class TraceMethod { automatic, continuation };
+template <>
+struct EnumTable<TraceMethod> {
+  static constexpr EnumName<TraceMethod> entries[] = {{TraceMethod::automatic, "auto"},
+                                                       {TraceMethod::continuation, "continuation"}};
+};
+// Throws InvalidArgument("method", ...) naming the allowed methods.
+inline TraceMethod trace_method_from_string(std::string_view name) { return from_string<TraceMethod>(name, "method"); }
+
 struct TraceOptions {
   TraceCriterion criterion = TraceCriterion::asymptotic;
   double T = 0;          // finite horizon; 0: the scene's T
@@ -50,11 +63,7 @@ struct TraceOptions {
   // selection leaves ~1e-10 jitter in G_l(T) = 500 Upsilon_l; measured); costs ~1.7x per evaluation.
   PredictorOptions predictor = tracing_predictor();
   OrbitAverageOptions orbit;  // in-plane asymptotic criterion: periodic-orbit average (time average as fallback)
-  // In-plane asymptotic criterion on a plane with a ln B axis whose other axis leaves B (and no fixed alpha): the
-  // boundary in closed form in B, one periodic orbit per value of the other axis (the reduced flow holds no B),
-  // falling back to continuation if some value has no attracting orbit. false: continuation on every plane, for
-  // comparisons.
-  bool closed_form_in_B = true;
+  TraceMethod method = TraceMethod::automatic;
   ProgressCallback on_progress;  // criterion evaluations so far (total unknown: 0)
   void validate() const;
   static PredictorOptions tracing_predictor();
@@ -89,7 +98,7 @@ struct TraceResult {
   std::size_t chains = 0, starts = 0, turning_points = 0;
   ContinuationCounters counters;   // the engine's work
   std::vector<std::string> notes;  // pieces that ended inside the plane, and why; last, the closed form's method
-  std::string method = "by continuation";  // or "in closed form in B" (TraceOptions::closed_form_in_B)
+  std::string method = "by continuation";  // or "in closed form in B" (TraceMethod::automatic)
 };
 
 TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane, const TraceOptions& options = {});

@@ -15,7 +15,7 @@
 namespace rbcstab::detail {
 
 bool closed_form_in_B_applies(const Scene& base, const DiagramSpec& plane, const TraceOptions& options) {
-  if (!options.closed_form_in_B || options.criterion != TraceCriterion::asymptotic || !options.orbit.enabled ||
+  if (options.method != TraceMethod::automatic || options.criterion != TraceCriterion::asymptotic || !options.orbit.enabled ||
       plane.alpha != 0 || is_out_of_plane(base, options.predictor))
     return false;
   const bool b_on_x = plane.x.axis == Axis::lnB;

@@ -19,7 +19,7 @@ namespace rbcstab::detail {
 
 // The plane and options allow it: asymptotic criterion by periodic orbits (orbit.enabled), a base scene in
 // plane, one axis ln B and the other one that does not move B (independent(): not alpha or shear_rate), no
-// fixed alpha, and closed_form_in_B.
+// fixed alpha, and TraceMethod::automatic.
 bool closed_form_in_B_applies(const Scene& base, const DiagramSpec& plane, const TraceOptions& options);
 
 struct InBTrace {
