@@ -211,36 +211,5 @@ TEST(TailMeans, Validation) {
   }
 }
 
-// The diagram under the tail classifier (quadrature means, certified early termination) against its full-horizon
-// reference (grid means, every run to T) on a 16 x 16 App. E(b) grid: verdicts and l_Delta equal, the growth within
-// 1e-6 Delta (CertifiedRun's bound on the means).
-TEST(TailMeans, AppEbDiagramEqualsFullHorizon) {
-  const SceneFile sf = panel("appE_b_ip");
-  DiagramSpec spec = diagram_spec(sf);
-  ASSERT_EQ(spec.classifier, Classifier::tail_mean);
-  spec.x.count = spec.y.count = 16;
-  DiagramOptions ro;
-  ro.threads = 2;
-  SimulationOptions full_options = sf.options;
-  full_options.full_horizon = true;
-  const DiagramRun full = run_diagram(sf.scene, full_options, spec, ro);
-  const DiagramRun fast = run_diagram(sf.scene, sf.options, spec, ro);
-  ASSERT_EQ(full.points.size(), fast.points.size());
-  double growth = 0;
-  std::size_t steps_full = 0, steps_fast = 0;
-  for (std::size_t k = 0; k < full.points.size(); ++k) {
-    const PointResult &a = fast.points[k], &b = full.points[k];
-    EXPECT_EQ(a.verdict, b.verdict) << "point " << k;
-    EXPECT_EQ(a.l_Delta, b.l_Delta) << "point " << k;
-    growth = std::max(growth, std::abs(a.growth - b.growth));
-    steps_fast += a.steps;
-    steps_full += b.steps;
-  }
-  std::printf("App. E(b) 16 x 16: max |growth difference| %.3g, accepted steps %zu -> %zu\n", growth, steps_full,
-              steps_fast);
-  EXPECT_LE(growth, 1e-6 * sf.scene.parameters.Delta);
-  EXPECT_LT(steps_fast, steps_full);
-}
-
 }  // namespace
 }  // namespace rbcstab
