@@ -150,15 +150,18 @@ TEST(CertifiedRun, AppEbPanelEqualsFullHorizon) { compare_panel("appE_b_ip", 100
 TEST(CertifiedRun, AppEcPanelEqualsFullHorizon) { compare_panel("appE_c_ip", 200); }
 
 // The diagram's savings together (certified early termination, and no tail-window samples under the final
-// classifier, which reads Delta_l(T) only), point by point against the full-horizon panel (every run to T, tail
-// sampled) on 16 x 16 grids of the Fig. 4 panels: verdict and l_Delta equal; the growth and sigma(T) within 1e-5
+// classifier, which reads Delta_l(T) only, or tail means by quadrature under the tail classifier), point by point
+// against the full-horizon panel (every run to T, tail sampled) on 16 x 16 grids of the Fig. 4 and App. E(b) panels: verdict and l_Delta equal; the growth and sigma(T) within 1e-5
 // (Delta_total, max(1, |sigma|): the hard bound of compare_panel is 1e-4, its typical 1e-6; the values are printed).
 // The oscillation flag is then judged on the accepted steps (~0.5 apart) instead of the 161-point grid: it may
-// miss an oscillation shorter than a step (8 of 4096 points on the 64 x 64 Fig. 4(b) panel): at most 2 %.
-void compare_diagram(const std::string& name) {
+// miss an oscillation shorter than a step (8 of 4096 points on the 64 x 64 Fig. 4(b) panel): at most 2 %. The tail
+// classifier does not read the flag; on App. E(b) it differs more often (61 of 4096 points on 64 x 64, 9 of 256 on
+// 16 x 16): at most 5 % there.
+void compare_diagram(const std::string& name, Classifier classifier = Classifier::final,
+                     double max_oscillation = 0.02) {
   const SceneFile sf = panel(name);
   DiagramSpec spec = diagram_spec(sf);
-  ASSERT_EQ(spec.classifier, Classifier::final);
+  ASSERT_EQ(spec.classifier, classifier);
   spec.x.count = spec.y.count = 16;
   DiagramOptions ro;
   ro.threads = 2;
@@ -183,13 +186,14 @@ void compare_diagram(const std::string& name) {
               "RHS evaluations %zu -> %zu\n", name.c_str(), growth, sigma, oscillation, work_full, work_fast);
   EXPECT_LE(growth, 1e-5 * sf.scene.parameters.Delta) << name;
   EXPECT_LE(sigma, 1e-5) << name;
-  EXPECT_LE(oscillation, spec.size() / 50) << name;
+  EXPECT_LE(double(oscillation), max_oscillation * double(spec.size())) << name;
   EXPECT_LT(work_fast, work_full) << name;
 }
 
 TEST(CertifiedRun, Fig4aDiagramEqualsFullHorizon) { compare_diagram("fig4a_op"); }
 TEST(CertifiedRun, Fig4bDiagramEqualsFullHorizon) { compare_diagram("fig4b_op"); }
 TEST(CertifiedRun, Fig4cDiagramEqualsFullHorizon) { compare_diagram("fig4c_op"); }
+TEST(CertifiedRun, AppEbDiagramEqualsFullHorizon) { compare_diagram("appE_b_ip", Classifier::tail_mean, 0.05); }
 
 // The Fig. 4(b) out-of-plane scene (beta = 0: the ellipsoid is an equilibrium) at ln B = lnB and the ln C where
 // the slowest mode l >= 3 grows at exactly `rate` at the exact equilibrium, found by bisection on

@@ -13,6 +13,27 @@
 
 namespace rbcstab {
 
+// How simulate() computes the means of Delta_l and sigma over the tail window [T - tail_window, T] and judges
+// oscillating (Delta_2 not monotonic there).
+enum class TailMeans {
+  // Simpson's rule on a 161-point grid the integrator must stop at (h <= tail_window / 160 in the window);
+  // oscillating on that grid.
+  grid,
+  // q' = (Delta_2..Delta_L, sigma), q = 0 at the window's start, integrated alongside the system from there to T
+  // under the integrator's own error control (no resampling error); mean = q(T) / (T - tail_start). The integrator
+  // stops once at the window's start and keeps its step size across it. oscillating on the accepted steps in the
+  // window, as for none. Explicit steppers only (the quadrature rows have no Jacobian).
+  quadrature,
+  // No means: they are the values at T; oscillating on the accepted steps in the window. For callers that read
+  // neither (a diagram classified by Delta_l(T)).
+  none,
+};
+template <>
+struct EnumTable<TailMeans> {
+  static constexpr EnumName<TailMeans> entries[] = {
+      {TailMeans::grid, "grid"}, {TailMeans::quadrature, "quadrature"}, {TailMeans::none, "none"}};
+};
+
 struct SimulationOptions {
   IntegratorOptions integrator;  // stepper, tolerances, limits
   double tail_window = 10;       // Delta_l averaged over [T - tail_window, T] (Appendix E)
@@ -25,10 +46,7 @@ struct SimulationOptions {
   // true: integrate every run to T. false: a run given an attractor certifier (simulate_certified,
   // verdict/certified_run.hpp) may skip whole forcing periods once its attractor is certified.
   bool full_horizon = false;
-  // false: the tail window is not sampled on its fine grid (whose ~160 points each end a step): the tail means are
-  // the values at T, and oscillating is judged on the accepted steps in the window. For callers that read
-  // neither (a diagram classified by Delta_l(T)).
-  bool tail_samples = true;
+  TailMeans tail_means = TailMeans::grid;  // how the tail means and oscillating are computed (see TailMeans)
   void validate() const;
 };
 

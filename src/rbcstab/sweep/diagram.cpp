@@ -182,9 +182,14 @@ PointResult run_point(const Scene& base, const SimulationOptions& options, const
   const Scene scene = point_scene(base, spec, index);
   SimulationOptions o = options;
   o.record_trajectory = false;
-  // The tail window's fine grid feeds only the tail means, which the final classifier does not read; the
-  // full-horizon reference keeps it.
-  o.tail_samples = options.tail_samples && (options.full_horizon || spec.classifier != Classifier::final);
+  // The final classifier reads no tail means; the tail classifier reads them, not oscillating, so quadratures
+  // give them without the fine grid. The auto classifier (its l_Delta depends on oscillating) and the
+  // full-horizon reference keep the grid.
+  if (options.tail_means == TailMeans::grid && !options.full_horizon) {
+    if (spec.classifier == Classifier::final) o.tail_means = TailMeans::none;
+    if (spec.classifier == Classifier::tail_mean && !is_implicit(options.integrator.stepper))
+      o.tail_means = TailMeans::quadrature;
+  }
   const SimulationResult r = simulate_certified(scene, o);
   PointResult p;
   p.index = index;

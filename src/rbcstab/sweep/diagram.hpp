@@ -93,8 +93,8 @@ struct PointResult {
   Verdict verdict = Verdict::stable;
   int l_Delta = 2;                // per the spec's classifier (2: stable)
   double growth = 0;              // X_{l_Delta} - Delta_{l_Delta}(0)
-  bool oscillating = false;       // Delta_2 not monotonic over the tail window (classifier final: on the
-                                  // run's accepted steps there, SimulationOptions::tail_samples)
+  bool oscillating = false;       // Delta_2 not monotonic over the tail window (classifiers final and tail: on
+                                  // the run's accepted steps there, SimulationOptions::tail_means)
   double sigma_final = 0;         // sigma(T)
   IntegrationStatus status = IntegrationStatus::success;
   std::string reason;             // integrator message when not success
