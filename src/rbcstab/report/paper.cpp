@@ -223,8 +223,8 @@ class Composer {
   }
 
   // A phase-diagram scene run as its `rbcstab report` panel runs it (quick: a 12 x 12 grid), with the traced
-  // boundary, the paper's analytic lines and every predictor's agreement. In-plane tracing costs ~10 s CPU a
-  // plane: quick mode leaves it out (the per-point verdicts are still compared).
+  // boundary, the paper's analytic lines and every predictor's agreement (each plane traced once: the agreement
+  // measures against the drawn boundary).
   Diagram diagram(const std::string& name, const std::string& step) {
     Diagram d{scene(name), {}, {}, {}, {}, {}};
     apply_truncation(d.file, truncation_use(PanelKind::diagram));
@@ -240,19 +240,14 @@ class Composer {
     d.points = std::move(run.points);
     if (!run.complete) return d;
     for (const auto& p : d.points) res_.failed_runs += p.verdict == Verdict::failed;
-    const bool in_plane = std::abs(std::cos(d.file.scene.beta)) < 0.5;
     std::vector<TraceCurve> boundary;
     AgreementOptions ao;
-    if (!(o_.quick && in_plane)) {
-      try {
-        ao.asymptotic_boundary = std::make_shared<const TraceResult>(trace_boundary(d.file.scene, d.spec, ao.trace_options));
-        boundary = ao.asymptotic_boundary->curves;
-      } catch (const InvalidArgument&) {  // not traceable on this plane: the simulations and lines are drawn
-      }
+    try {
+      ao.asymptotic_boundary = std::make_shared<const TraceResult>(trace_boundary(d.file.scene, d.spec, ao.trace_options));
+      boundary = ao.asymptotic_boundary->curves;
+    } catch (const InvalidArgument&) {  // not traceable on this plane: the simulations and lines are drawn
     }
     ao.threads = threads_;
-    ao.trace = !(o_.quick && in_plane);
-    ao.trace_in_plane = !o_.quick;
     d.agreements = predictor_agreements(d.file.scene, d.spec, d.points, ao);
     d.csv = put(name + ".csv", diagram_csv(d.spec, d.points, DiagramOutputOptions{false}));
     d.overlay = put(name + "_overlay.json",

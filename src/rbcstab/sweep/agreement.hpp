@@ -50,8 +50,8 @@ struct Agreement {
 struct AgreementOptions {
   bool finite_horizon = true;   // one reduced run over [0, T] per point (~0.1-1 ms each)
   bool trace = true;            // trace the asymptotic boundary for the distances (~10 ms out of plane)
-  bool trace_in_plane = true;   // trace in-plane scenes too (periodic-orbit averages, one per value of C among the
-                                // tracer's evaluations: ~2.6 s CPU on the App. E(a) plane; ~100 s with time averages)
+  bool trace_in_plane = true;   // trace in-plane scenes too (periodic-orbit averages: on the App. E ln B x ln C
+                                // planes in closed form in B, ~0.3-0.5 s; by continuation ~2-5 s)
   bool trace_finite_horizon = false;  // also trace the finite-horizon boundary (~1-3 s on a Fig. 4 plane: one
                                       // reduced run per evaluation); else its distances are to the asymptotic one
   int threads = 1;              // per-point predictor verdicts in parallel (results do not depend on it)
