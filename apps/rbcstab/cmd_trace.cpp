@@ -86,8 +86,9 @@ static Runner add_trace(CLI::App& app) {
       ->check(non_negative());
   app.add_option("--criterion", o->criterion, "asymptotic | finite-horizon")->capture_default_str();
   app.add_option("--method", o->method,
-                 "auto: in-plane asymptotic boundaries of ln B planes in closed form in B (one periodic orbit per value "
-                 "of the other axis), the rest by continuation; continuation: continuation on every plane")
+                 "auto: on ln B planes the finite-horizon and in-plane asymptotic boundaries in closed form in B (one "
+                 "reduced transient or periodic orbit per value of the other axis), the rest by continuation; "
+                 "continuation: continuation on every plane")
       ->check(CLI::IsMember(enum_names<TraceMethod>()))
       ->capture_default_str();
   app.add_option("--horizon", o->trace.T, "finite-horizon T, >= 0 (0: the scene's T)")

@@ -365,9 +365,9 @@ def trace(scene, criterion="asymptotic", *, axes=None, x_range=None, y_range=Non
     lines      interior lines searched for starting points, an integer in [0, 10000]
     samples    brackets per edge or line when searching for starts, an integer in [2, 1000000]
     max_step   continuation step cap in the unit square (the curve's resolution), > 0
-    method     'auto' (in-plane asymptotic boundaries of ln B planes in closed form in B, one periodic orbit per
-               value of the other axis; the rest by continuation) or 'continuation' (every plane); the result's
-               ``method`` says which was used
+    method     'auto' (on ln B planes the finite-horizon and in-plane asymptotic boundaries in closed form in B,
+               one reduced transient or periodic orbit per value of the other axis; the rest by continuation) or
+               'continuation' (every plane); the result's ``method`` says which was used
     diagram    a Diagram of the same plane (or its to_dict(), or the path of a diagram JSON file): measures
                every predictor's agreement with its simulations (the CLI's --diagram)
     threads    threads for the agreement's per-point verdicts, an integer in [0, 4096] (0: all cores)

@@ -239,13 +239,15 @@ def test_ctrl_c_stops_a_diagram_within_a_second_and_the_journal_resumes(tmp_path
 
 
 def test_ctrl_c_stops_a_finite_horizon_trace_within_a_second():
-    # one reduced run over T = 400 per criterion evaluation, thousands of them: about 3 s of work unless
-    # interrupted (at T = 40 an idle machine needs about 1 s, too close to the timer)
+    # by continuation, one reduced run over T = 400 per criterion evaluation, thousands of them: about 3 s of work
+    # unless interrupted (at T = 40 an idle machine needs about 1 s, too close to the timer; method="auto" traces
+    # this plane in closed form in B, one run per ln C, in well under the timer)
     timer = threading.Timer(0.5, lambda: os.kill(os.getpid(), signal.SIGINT))
     start = time.monotonic()
     timer.start()
     with pytest.raises(KeyboardInterrupt):
-        rbcstab.trace(rbcstab.Scene(**dict(SCENE, T=400.0, dt=400.0)), criterion="finite-horizon", **PLANE)
+        rbcstab.trace(rbcstab.Scene(**dict(SCENE, T=400.0, dt=400.0)), criterion="finite-horizon",
+                      method="continuation", **PLANE)
     elapsed = time.monotonic() - start
     timer.join()
     assert elapsed < 0.5 + 1.0, elapsed

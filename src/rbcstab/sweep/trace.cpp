@@ -136,7 +136,8 @@ TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane_spec, con
   const auto t0 = std::chrono::steady_clock::now();
   if (!detail::closed_form_in_B_applies(base, plane_spec, options))
     return trace_by_continuation(base, plane_spec, options, t0);
-  detail::InBTrace exact = detail::trace_in_B(base, plane_spec, options, kAsymptoticOrbit);
+  detail::InBTrace exact = detail::trace_in_B(
+      base, plane_spec, options, options.criterion == TraceCriterion::finite_horizon ? kFiniteHorizon : kAsymptoticOrbit);
   if (exact.result) {
     exact.result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return *exact.result;

@@ -1,5 +1,5 @@
 #pragma once
-// Stability boundaries traced as curves by continuation. Criteria, per mode l = 3..L
+// Stability boundaries traced as curves. Criteria, per mode l = 3..L
 // (g_l > 0: mode l grows), the verdicts of rbcstab::verdict:
 //  - asymptotic: mu_l = Upsilon_l(<sigma_R>) on the reduced attractor: the exact out-of-plane equilibrium
 //    for out-of-plane scenes; in plane the period average over the attracting 2 pi-periodic orbit, or a
@@ -8,9 +8,9 @@
 //    (analysis finite_horizon_growth, verdict finite_horizon_prediction).
 // The boundary is the zero set of the envelope max_l g_l, traced by pseudo-arclength continuation of
 // g_l = 0 from automatically located starts, with the corners where another mode takes over located as
-// engine events (sweep/zero_set.hpp). In-plane asymptotic boundaries on a ln B plane are instead traced in
-// closed form in B (TraceMethod::automatic): the same boundary, with one periodic orbit per value of
-// the other axis.
+// engine events (sweep/zero_set.hpp). On a ln B plane the finite-horizon and the in-plane asymptotic boundaries
+// are instead traced in closed form in B (TraceMethod::automatic): the same boundary, with one reduced transient
+// or periodic orbit per value of the other axis.
 #include <string>
 #include <string_view>
 #include <vector>
@@ -38,10 +38,10 @@ inline TraceCriterion trace_criterion_from_string(std::string_view name) {
   return from_string<TraceCriterion>(name, "criterion");
 }
 
-// How a boundary is traced. automatic: in-plane asymptotic boundaries on a plane with a ln B axis whose other axis
-// leaves B (and no fixed alpha) in closed form in B, one periodic orbit per value of the other axis (the reduced
-// flow holds no B), falling back to continuation if some value has no attracting orbit; every other plane by
-// continuation. continuation: continuation on every plane (comparisons).
+// How a boundary is traced. automatic: on a plane with a ln B axis whose other axis leaves B (and no fixed alpha), the
+// finite-horizon boundary and the in-plane asymptotic one in closed form in B, one reduced transient or periodic
+// orbit per value of the other axis (the reduced flow holds no B), falling back to continuation if some value has
+// none; every other plane by continuation. continuation: continuation on every plane (comparisons).
 enum class TraceMethod { automatic, continuation };
 template <>
 struct EnumTable<TraceMethod> {
@@ -97,8 +97,8 @@ struct TraceResult {
   TraceCriterion criterion = TraceCriterion::asymptotic;
   std::size_t chains = 0, starts = 0, turning_points = 0;
   ContinuationCounters counters;   // the engine's work
-  std::vector<std::string> notes;  // pieces that ended inside the plane, and why; last, the closed form's method
-  std::string method = "by continuation";  // or "in closed form in B" (TraceMethod::automatic)
+  std::vector<std::string> notes;  // pieces that ended inside the plane, and why; a fallback from the closed form
+  std::string method = "by continuation";  // or "in closed form in B" (TraceMethod::automatic where it applies)
 };
 
 TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane, const TraceOptions& options = {});

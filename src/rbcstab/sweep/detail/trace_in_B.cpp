@@ -7,16 +7,18 @@
 #include <map>
 #include <vector>
 
+#include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/parameter_table.hpp"
 #include "rbcstab/verdict/asymptotic.hpp"
+#include "rbcstab/verdict/predict.hpp"
 
 namespace rbcstab::detail {
 
 bool closed_form_in_B_applies(const Scene& base, const DiagramSpec& plane, const TraceOptions& options) {
-  if (options.method != TraceMethod::automatic || options.criterion != TraceCriterion::asymptotic || !options.orbit.enabled ||
-      plane.alpha != 0 || is_out_of_plane(base, options.predictor))
+  if (options.method != TraceMethod::automatic || plane.alpha != 0) return false;
+  if (options.criterion == TraceCriterion::asymptotic && (!options.orbit.enabled || is_out_of_plane(base, options.predictor)))
     return false;
   const bool b_on_x = plane.x.axis == Axis::lnB;
   if (b_on_x == (plane.y.axis == Axis::lnB)) return false;
@@ -85,9 +87,11 @@ struct Unusable {
   std::string why;
 };
 
-// One value u of the other axis: its orbit and, per mode, e_l(B) = a_l + m_l B and r_l = -m_l/a_l.
+// One value u of the other axis: its orbit (asymptotic) or transient (finite horizon) and, per mode,
+// e_l(B) = a_l + m_l B and r_l = -m_l/a_l.
 struct Flow {
   OrbitSigmaAverage orbit;
+  ReducedTransient transient;
   std::vector<double> slope, rate;  // m_l, r_l (index l - 3)
   std::size_t best = 0;             // argmax r_l (ties to the lower mode)
 };
@@ -104,7 +108,8 @@ struct Node {
 class InB {
  public:
   InB(const Scene& base, const DiagramSpec& plane, const TraceOptions& options)
-      : base_(base), plane_(plane), o_(options), b_on_x_(plane.x.axis == Axis::lnB) {
+      : base_(base), plane_(plane), o_(options), b_on_x_(plane.x.axis == Axis::lnB),
+        finite_(options.criterion == TraceCriterion::finite_horizon), T_(options.T > 0 ? options.T : base.T) {
     const AxisRange& U = b_on_x_ ? plane.y : plane.x;
     const AxisRange& V = b_on_x_ ? plane.x : plane.y;
     u0_ = std::min(U.min, U.max);  // sampled upwards whatever the axis's orientation (chains are oriented in x)
@@ -136,7 +141,11 @@ class InB {
   }
   double x(double u, double v) const { return b_on_x_ ? v : u; }
   double y(double u, double v) const { return b_on_x_ ? u : v; }
-  double sigma_R(const Flow& f, const Scene& s) const { return orbit_sigma_average_at_B(f.orbit, s).sigma_R; }
+  // <sigma_R> on the orbit, or <sigma_R>_T over the transient, at the scene's B.
+  double sigma_R(const Flow& f, const Scene& s) const {
+    return finite_ ? finite_horizon_growth(s, transient_at_B(f.transient, s)).mean_sigma_R
+                   : orbit_sigma_average_at_B(f.orbit, s).sigma_R;
+  }
   double excess(const Flow& f, double u, double v, std::size_t k) const {
     const Scene s = scene(u, v);
     return sigma_R(f, s) - sigma_c(int(k) + 3, s.parameters.alpha());
@@ -146,13 +155,21 @@ class InB {
     if (auto it = flows_.find(u); it != flows_.end()) return it->second;
     const Scene lo = scene(u, v_lo_), hi = scene(u, v_hi_);
     const std::string at = parameter_label(u_axis_) + " = " + format_value(u);
-    // Out of plane the verdict takes the equilibrium; checked at every sample (beta near 0 or pi only).
-    if (is_out_of_plane(lo, o_.predictor)) throw Unusable{"the scene at " + at + " is out of plane"};
     Flow f;
-    f.orbit = orbit_sigma_average(lo, o_.orbit);
-    ++evaluations;
-    if (o_.on_progress) o_.on_progress(double(evaluations), 0);
-    if (!f.orbit.ok) throw Unusable{"no attracting periodic orbit at " + at + ": " + f.orbit.reason};
+    if (finite_) {
+      f.transient = reduced_transient(lo, T_, 1, o_.predictor);
+      ++evaluations;
+      if (o_.on_progress) o_.on_progress(double(evaluations), 0);
+      const ModePrediction p = finite_horizon_prediction(lo, finite_horizon_growth(lo, f.transient));
+      if (p.status != DomainStatus::ok) throw Unusable{"no reduced transient to T at " + at + ": " + p.reason};
+    } else {
+      // Out of plane the verdict takes the equilibrium; checked at every sample (beta near 0 or pi only).
+      if (is_out_of_plane(lo, o_.predictor)) throw Unusable{"the scene at " + at + " is out of plane"};
+      f.orbit = orbit_sigma_average(lo, o_.orbit);
+      ++evaluations;
+      if (o_.on_progress) o_.on_progress(double(evaluations), 0);
+      if (!f.orbit.ok) throw Unusable{"no attracting periodic orbit at " + at + ": " + f.orbit.reason};
+    }
     // e_l at the two ends of the ln B range: slope and intercept of the affine law.
     const double B_lo = lo.parameters.B, B_hi = hi.parameters.B;
     for (int l = 3; l <= base_.L; ++l) {
@@ -302,13 +319,17 @@ class InB {
     const Flow& f = flow(u);
     const Scene s = scene(u, v);
     const int l = int(k) + 3;
+    if (finite_) {  // the residual G_l(T), as the continuation tracer's
+      const FiniteHorizon h = finite_horizon_growth(s, transient_at_B(f.transient, s));
+      return {x(u, v), y(u, v), l, h.mean_sigma_R, sigma_c(l, s.parameters.alpha()), h.G[std::size_t(l - 2)]};
+    }
     const double sigma = sigma_R(f, s);
     return {x(u, v), y(u, v), l, sigma, sigma_c(l, s.parameters.alpha()), Upsilon_l(s.parameters, l, sigma)};
   }
 
   TraceResult result(const std::string& criterion) {
     TraceResult res;
-    res.criterion = TraceCriterion::asymptotic;
+    res.criterion = o_.criterion;
     for (std::vector<Node>& nodes : chains_) {
       if (x(nodes.back().u, nodes.back().v) < x(nodes.front().u, nodes.front().v)) {
         std::reverse(nodes.begin(), nodes.end());
@@ -330,7 +351,6 @@ class InB {
     res.starts = res.chains;
     res.evaluations = evaluations;
     res.notes = notes_;
-    res.notes.push_back("closed form in B at each " + parameter_label(u_axis_) + ": one periodic orbit per value");
     res.method = "in closed form in B";
     return res;
   }
@@ -339,6 +359,8 @@ class InB {
   const DiagramSpec& plane_;
   const TraceOptions& o_;
   bool b_on_x_;
+  bool finite_;  // the finite-horizon criterion
+  double T_;     // its horizon
   double u0_ = 0, u1_ = 1, v_lo_ = 0, v_hi_ = 1;
   Axis u_axis_ = Axis::lnC;
   std::map<double, Flow> flows_;
