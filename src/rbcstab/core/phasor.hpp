@@ -1,11 +1,12 @@
 #pragma once
 // e^{ix} = (cos x, sin x) for the rotating stress-free shape and drive, which every right-hand side of the
 // modal, full and reduced levels evaluates once per call: libm's sincos was 20 % of a phase diagram's time
-// (perf, App. E(b)). This one is about twice as fast and within one ulp of the exact values for |x| <= 2^19 pi/2
-// (tested against long double): fdlibm's medium-size argument reduction (three-part pi/2, two rounds) and its
-// sin/cos kernels on [-pi/4, pi/4] with the reduction's tail; larger or non-finite x go to std::polar.
+// (perf, App. E(b)). This one is about twice as fast and, for |x| <= 2^19 pi/2, within one ulp of the exact values
+// (2^-53 absolute where they are below that; tested against long double): fdlibm's medium-size argument reduction
+// (pi/2 in three parts, two rounds) and its sin/cos kernels on [-pi/4, pi/4] with the reduction's tail; larger or
+// non-finite x go to std::polar.
 //
-// The reduction constants and kernel coefficients are fdlibm's (e_rem_pio2.c, k_sin.c, k_cos.c):
+// The reduction constants and kernel coefficients are fdlibm's (its rem_pio2 and its sin and cos kernels):
 // Copyright (C) 1993 by Sun Microsystems, Inc. All rights reserved. Developed at SunSoft, a Sun Microsystems,
 // Inc. business. Permission to use, copy, modify, and distribute this software is freely granted, provided
 // that this notice is preserved.
