@@ -213,10 +213,11 @@ def test_progress_callable_and_tqdm(capsys):
 
 def test_ctrl_c_stops_a_diagram_within_a_second_and_the_journal_resumes(tmp_path):
     journal = tmp_path / "big.journal"
-    # 16 x 16 points at L = 8 integrated to T = 500: about two seconds of work (~8 ms a point on one core); with
-    # early termination an idle machine finished the grid before the interrupt arrived
+    # 16 x 16 points at L = 8 integrated to T = 4000: about two seconds of work (~16 ms a point on one core). With
+    # early termination, or at T = 500 (0.27 s in all, measured), the grid can finish before the interrupt is seen:
+    # the signal is handled at the progress calls, 0.1 s apart
     big = dict(axes=("lnB", "lnC"), counts=(16, 16), threads=2, journal=journal, finite_horizon_agreement=False)
-    scene = rbcstab.Scene(L=8, T=500.0, full_horizon=True)
+    scene = rbcstab.Scene(L=8, T=4000.0, full_horizon=True)
     sent = []
 
     def interrupt_after_some_points(done, total, eta):
