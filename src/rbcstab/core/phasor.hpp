@@ -16,7 +16,7 @@
 namespace rbcstab {
 
 namespace phasor_detail {
-// sin(x + y) and cos(x + y) for |x + y| <= pi/4, y the tail of the reduced argument (k_sin.c, k_cos.c).
+// sin(x + y) and cos(x + y) for |x + y| <= pi/4, y the tail of the reduced argument (fdlibm's kernels).
 inline double kernel_sin(double x, double y) {
   constexpr double S1 = -1.66666666666666324348e-01, S2 = 8.33333333332248946124e-03,
                    S3 = -1.98412698298579493134e-04, S4 = 2.75573137070700676789e-06,

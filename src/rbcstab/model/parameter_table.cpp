@@ -26,26 +26,26 @@ Domain up_to_Delta(const Parameters& p) {
 
 // One row per SceneParameter, in its order (tests/model/parameter_table_test.cpp checks it).
 const std::array<ParameterRow, 13> kTable{{
-    {P::lambda, "lambda", "\\lambda", "viscosity ratio eta_in/eta_ex", "parameters", AxisScale::linear, P::lambda,
+    {P::lambda, "lambda", "\\lambda", "", "viscosity ratio eta_in/eta_ex", "parameters", AxisScale::linear, P::lambda,
      P::lambda, bit(P::lambda), true, true, [](const Parameters&) { return open_above(0, true); },
      [](const Scene& s) { return s.parameters.lambda; }, [](Scene& s, double v) { s.parameters.lambda = v; }},
-    {P::Delta, "Delta", "\\Delta", "excess area of the current shape", "parameters", AxisScale::linear, P::Delta,
+    {P::Delta, "Delta", "\\Delta", "", "excess area of the current shape", "parameters", AxisScale::linear, P::Delta,
      P::Delta, bit(P::Delta), true, true,
      [](const Parameters&) { return Domain{0, 4 * std::numbers::pi, false, false, "", "4 pi", "", ""}; },
      [](const Scene& s) { return s.parameters.Delta; }, [](Scene& s, double v) { s.parameters.Delta = v; }},
-    {P::Delta0, "Delta0", "\\Delta_0", "excess area of the stress-free shape (0: the vesicle limit)", "parameters",
+    {P::Delta0, "Delta0", "\\Delta_0", "", "excess area of the stress-free shape (0: the vesicle limit)", "parameters",
      AxisScale::linear, P::Delta0, P::Delta0, bit(P::Delta0), true, true, up_to_Delta,
      [](const Scene& s) { return s.parameters.Delta0; }, [](Scene& s, double v) { s.parameters.Delta0 = v; }},
-    {P::B, "B", "\\mathcal{B}", "bending number eta gamma R^3 / kappa", "parameters", AxisScale::linear, P::B, P::B,
+    {P::B, "B", "\\mathcal{B}", "", "bending number eta gamma R^3 / kappa", "parameters", AxisScale::linear, P::B, P::B,
      bit(P::B), true, false, [](const Parameters&) { return open_above(0, false); },
      [](const Scene& s) { return s.parameters.B; }, [](Scene& s, double v) { s.parameters.B = v; }},
-    {P::C, "C", "\\mathcal{C}", "capillary number eta gamma R / mu", "parameters", AxisScale::linear, P::C, P::C,
+    {P::C, "C", "\\mathcal{C}", "", "capillary number eta gamma R / mu", "parameters", AxisScale::linear, P::C, P::C,
      bit(P::C), true, false,
      [](const Parameters&) { return Domain{0, kInf, false, true, "", "", "", "inf allowed: the vesicle limit"}; },
      [](const Scene& s) { return s.parameters.C; }, [](Scene& s, double v) { s.parameters.C = v; }},
     // The composites of the reduced system (Eq. Lambda_S) each move one input, so they move alone: Lambda
     // ~ sqrt(Delta) at fixed lambda (S unchanged), S ~ C at fixed Delta0 (Lambda unchanged).
-    {P::Lambda, "Lambda", "\\Lambda", "sqrt(Delta)(23 lambda + 32)/(8 sqrt(30 pi)) of the reduced system, set through Delta",
+    {P::Lambda, "Lambda", "\\Lambda", "", "sqrt(Delta)(23 lambda + 32)/(8 sqrt(30 pi)) of the reduced system, set through Delta",
      nullptr, AxisScale::linear, P::Lambda, P::Delta, bit(P::Delta) | bit(P::lambda), true, false,
      [](const Parameters&) { return open_above(0, false); },
      [](const Scene& s) { return s.parameters.Lambda(); },
@@ -53,7 +53,7 @@ const std::array<ParameterRow, 13> kTable{{
        const double ratio = v / s.parameters.Lambda();
        s.parameters.Delta *= ratio * ratio;
      }},
-    {P::S, "S", "S", "C sqrt(15 pi/(2 Delta0)) of the reduced system, set through C", nullptr, AxisScale::linear, P::S,
+    {P::S, "S", "S", "", "C sqrt(15 pi/(2 Delta0)) of the reduced system, set through C", nullptr, AxisScale::linear, P::S,
      P::C, bit(P::C) | bit(P::Delta0), true, false, [](const Parameters&) { return open_above(0, false); },
      [](const Scene& s) { return s.parameters.S(); },
      [](Scene& s, double v) {
@@ -61,26 +61,26 @@ const std::array<ParameterRow, 13> kTable{{
        require(std::isfinite(S), "S", v, "continuable only from a finite S (Delta0 > 0 and C finite)");
        s.parameters.C *= v / S;
      }},
-    {P::alpha, "alpha", "\\alpha", "B/C = mu R^2/kappa, set through B", nullptr, AxisScale::linear, P::alpha, P::B,
+    {P::alpha, "alpha", "\\alpha", "", "B/C = mu R^2/kappa, set through B", nullptr, AxisScale::linear, P::alpha, P::B,
      bit(P::B) | bit(P::C), false, true, [](const Parameters&) { return open_above(0, false); },
      [](const Scene& s) { return s.parameters.alpha(); }, [](Scene& s, double v) { s.parameters.B = v * s.parameters.C; }},
-    {P::lnB, "lnB", "\\ln \\mathcal{B}", "ln B, a log axis of the bending number", nullptr, AxisScale::log, P::B, P::B,
+    {P::lnB, "lnB", "\\ln \\mathcal{B}", "", "ln B, a log axis of the bending number", nullptr, AxisScale::log, P::B, P::B,
      bit(P::B), false, true, nullptr, nullptr, nullptr},
-    {P::lnC, "lnC", "\\ln \\mathcal{C}", "ln C, a log axis of the capillary number", nullptr, AxisScale::log, P::C, P::C,
+    {P::lnC, "lnC", "\\ln \\mathcal{C}", "", "ln C, a log axis of the capillary number", nullptr, AxisScale::log, P::C, P::C,
      bit(P::C), false, true, nullptr, nullptr, nullptr},
-    {P::beta, "beta", "\\beta",
+    {P::beta, "beta", "\\beta", "",
      "rotation of the axisymmetric shapes about y (pi/2 = 1.5707963267948966)", "initial",
      AxisScale::linear, P::beta, P::beta, bit(P::beta), true, true,
      [](const Parameters&) {
        return Domain{0, std::numbers::pi, true, true, "", "pi", "", "0: rest shape out of plane, pi/2: in plane"};
      },
      [](const Scene& s) { return s.beta; }, [](Scene& s, double v) { s.beta = v; }},
-    {P::delta, "delta", "\\delta", "perturbation Delta_l(0) put in f_{l,0} for every l = 3..L", "initial",
+    {P::delta, "delta", "\\delta", "", "perturbation Delta_l(0) put in f_{l,0} for every l = 3..L", "initial",
      AxisScale::linear, P::delta, P::delta, bit(P::delta), false, false, up_to_Delta,
      [](const Scene& s) { return s.delta; }, [](Scene& s, double v) { s.delta = v; }},
     // Stored in the physical cell, whose table ([physical], io/scene_file.hpp) declares its key and flag
     // (--shear-rate) with the cell's other quantities from this row's name, description and domain.
-    {P::shear_rate, "shear_rate", "\\dot\\gamma",
+    {P::shear_rate, "shear_rate", "\\dot\\gamma", "1/s",
      "shear rate gamma [1/s]; B and C follow at fixed alpha (a physical scene; time unit 1/gamma)", nullptr,
      AxisScale::geometric, P::shear_rate, P::shear_rate, bit(P::shear_rate) | bit(P::B) | bit(P::C), true, true,
      [](const Parameters&) { return Domain{0, kInf, false, false, "", "", "", "1/s"}; }, get_shear_rate,

@@ -57,6 +57,7 @@ struct ParameterRow {
   SceneParameter id;
   const char* name;         // the scene key, the flag --name, the continuation and axis name
   const char* symbol;       // TeX, for figure labels
+  const char* unit;         // of a dimensional value, for labels ("1/s"); "" for the dimensionless numbers
   const char* description;  // one line for --help and docs/scenes.md
   const char* table;        // the scene file's table holding it ("parameters", "initial"); nullptr: derived
   AxisScale scale;          // log: the value is ln of `of`'s (lnB = ln B); get, set and domain follow from `of`

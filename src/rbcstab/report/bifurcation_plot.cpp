@@ -571,7 +571,7 @@ PlotSpec plot_spec(const std::vector<PlotInput>& inputs, const PlotOptions& o) {
 std::string tex_symbol(const std::string& name) {
   // A scene parameter's symbol is its row's (model/parameter_table.hpp); the map holds the branch quantities.
   for (const ParameterRow& row : parameter_table())
-    if (name == row.name) return std::string("$") + row.symbol + "$" + (row.id == SceneParameter::shear_rate ? " [1/s]" : "");
+    if (name == row.name) return std::string("$") + row.symbol + "$" + (*row.unit ? std::string(" [") + row.unit + "]" : "");
   static const std::map<std::string, std::string> symbols{
       {"r", R"($r$)"},
       {"Psi", R"($\Psi$)"},

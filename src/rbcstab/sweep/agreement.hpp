@@ -52,8 +52,9 @@ struct AgreementOptions {
   bool trace = true;            // trace the asymptotic boundary for the distances (~10 ms out of plane)
   bool trace_in_plane = true;   // trace in-plane scenes too (periodic-orbit averages: on the App. E ln B x ln C
                                 // planes in closed form in B, ~0.3-0.5 s; by continuation ~2-5 s)
-  bool trace_finite_horizon = false;  // also trace the finite-horizon boundary (~1-3 s on a Fig. 4 plane: one
-                                      // reduced run per evaluation); else its distances are to the asymptotic one
+  bool trace_finite_horizon = false;  // also trace the finite-horizon boundary (ln B planes in closed form in B, one
+                                      // reduced run per value of the other axis: ~0.05-1 s; by continuation one per
+                                      // evaluation, ~1-20 s); else its distances are to the asymptotic one
   int threads = 1;              // per-point predictor verdicts in parallel (results do not depend on it)
   TraceOptions trace_options;   // for the traced boundaries (criterion is set per predictor); its orbit options
                                 // also serve the per-point asymptotic verdicts (in plane: one orbit per flow,
