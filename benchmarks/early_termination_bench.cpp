@@ -233,6 +233,53 @@ void BM_DefaultScene(benchmark::State& state) {
 }
 BENCHMARK(BM_DefaultScene)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 
+// The floor of an uncertified run: one Fig. 4(b) point (ln B = 2, ln C = 1) whose T = 500 run reaches no
+// certificate (it is still ~0.05 from its periodic orbit at T), integrated to T as a diagram integrates it, against
+// the same number of right-hand sides evaluated alone at the run's accepted states. Counters: ns per RHS of the
+// run (stepper, control and the model) and of the model alone; their ratio bounds what any cheaper stepper
+// overhead could gain on such a run with the same steps.
+void BM_UncertifiedRunFloor(benchmark::State& state) {
+  rbcstab::SceneFile sf = rbcstab::load_scene(std::string(RBCSTAB_SCENES_DIR) + "/fig4b_op.toml");
+  sf.scene.parameters.B = std::exp(2.0);
+  sf.scene.parameters.C = std::exp(1.0);
+  sf.scene.dt = sf.scene.T;
+  const rbcstab::SceneSystem ss = rbcstab::make_scene_system(sf.scene);
+  const rbcstab::System& sys = *ss.system;
+  const std::vector<double> y0 = sys.initial_state();
+  const std::vector<double> grid = {sf.scene.T};
+  std::vector<double> times, states;
+  const rbcstab::IntegrationResult probe = rbcstab::integrate(
+      sys, y0, 0.0, grid, sf.options.integrator, {}, [&](double t, std::span<const double> y) {
+        times.push_back(t);
+        states.insert(states.end(), y.begin(), y.end());
+      });
+  const std::size_t n = sys.dimension(), rhs_per_run = probe.counters.rhs_evaluations;
+  std::vector<double> dydt(n);
+  double run_s = 0, rhs_s = 0, sink = 0;
+  std::size_t runs = 0;
+  for (auto _ : state) {
+    auto start = std::chrono::steady_clock::now();
+    const rbcstab::IntegrationResult r = rbcstab::integrate(sys, y0, 0.0, grid, sf.options.integrator, {});
+    run_s += seconds_since(start);
+    benchmark::DoNotOptimize(r.y.data());
+    start = std::chrono::steady_clock::now();
+    for (std::size_t k = 0; k < rhs_per_run; ++k) {
+      const std::size_t i = k % times.size();
+      sys.rhs(times[i], {states.data() + i * n, n}, dydt);
+      sink += dydt[0];
+    }
+    rhs_s += seconds_since(start);
+    ++runs;
+  }
+  benchmark::DoNotOptimize(sink);
+  state.counters["run_ms"] = 1e3 * run_s / double(runs);
+  state.counters["rhs"] = double(rhs_per_run);
+  state.counters["ns_per_rhs_run"] = 1e9 * run_s / double(runs * rhs_per_run);
+  state.counters["ns_per_rhs_alone"] = 1e9 * rhs_s / double(runs * rhs_per_run);
+  state.counters["run_over_rhs"] = run_s / rhs_s;
+}
+BENCHMARK(BM_UncertifiedRunFloor)->Unit(benchmark::kMillisecond);
+
 }  // namespace
 
 BENCHMARK_MAIN();

@@ -7,9 +7,11 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/detail/gsl_context.hpp"
+#include "rbcstab/integrate/detail/prince_dormand.hpp"
 
 namespace rbcstab {
 
@@ -28,15 +30,11 @@ const gsl_odeiv2_step_type* gsl_type(Stepper s) {
   return gsl_odeiv2_step_rk8pd;
 }
 
-int gsl_rhs(double t, const double y[], double dydt[], void* params) {
-  auto* ctx = static_cast<detail::GslContext*>(params);
-  ++ctx->counters->rhs_evaluations;
-  const std::size_t n = ctx->system->dimension();
-  ctx->system->rhs(t, {y, n}, {dydt, n});
-  // A non-finite F at a trial state (e.g. an implicit stepper's Newton iterate after an over-long
-  // step) rejects that trial: GSL_FAILURE makes gsl_odeiv2_evolve_apply halve the step and retry,
-  // whereas GSL_EBADFUNC would end the run at once. A state that stays non-finite as h shrinks ends
-  // the run as non_finite_state (see integrate()).
+// A non-finite F at a trial state (e.g. an implicit stepper's Newton iterate after an over-long
+// step) rejects that trial: GSL_FAILURE makes the step be halved and retried, whereas GSL_EBADFUNC
+// would end the run at once. A state that stays non-finite as h shrinks ends the run as
+// non_finite_state (see integrate()).
+int finite_or_reject(detail::GslContext* ctx, double t, const double dydt[], std::size_t n) {
   for (std::size_t i = 0; i < n; ++i)
     if (!std::isfinite(dydt[i])) {
       ++ctx->nonfinite_rhs;
@@ -44,6 +42,22 @@ int gsl_rhs(double t, const double y[], double dydt[], void* params) {
       return GSL_FAILURE;
     }
   return GSL_SUCCESS;
+}
+
+int gsl_rhs(double t, const double y[], double dydt[], void* params) {
+  auto* ctx = static_cast<detail::GslContext*>(params);
+  ++ctx->counters->rhs_evaluations;
+  const std::size_t n = ctx->system->dimension();
+  ctx->system->rhs(t, {y, n}, {dydt, n});
+  return finite_or_reject(ctx, t, dydt, n);
+}
+
+int compact_rhs(double t, const double x[], double dxdt[], void* params) {
+  auto* ctx = static_cast<detail::GslContext*>(params);
+  ++ctx->counters->rhs_evaluations;
+  const std::size_t n = ctx->form->x0.size();
+  ctx->system->compact_rhs(t, {x, n}, *ctx->form, {dxdt, n});
+  return finite_or_reject(ctx, t, dxdt, n);
 }
 
 int gsl_jac(double t, const double y[], double* dfdy, double dfdt[], void* params) {
@@ -57,6 +71,52 @@ int gsl_jac(double t, const double y[], double* dfdy, double dfdt[], void* param
 
 struct DriverDeleter {
   void operator()(gsl_odeiv2_driver* d) const { gsl_odeiv2_driver_free(d); }
+};
+
+// One accepted step towards a target with gsl_odeiv2_evolve_apply's contract and status codes.
+class Evolver {
+ public:
+  virtual ~Evolver() = default;
+  virtual int apply(double& t, double t1, double& h, std::vector<double>& y) = 0;
+  virtual std::size_t failed_steps() const = 0;
+};
+
+class GslEvolver final : public Evolver {
+ public:
+  GslEvolver(gsl_odeiv2_driver* driver, gsl_odeiv2_system* sys) : driver_(driver), sys_(sys) {}
+  int apply(double& t, double t1, double& h, std::vector<double>& y) override {
+    return gsl_odeiv2_evolve_apply(driver_->e, driver_->c, driver_->s, sys_, &t, t1, &h, y.data());
+  }
+  std::size_t failed_steps() const override { return driver_->e->failed_steps; }
+
+ private:
+  std::unique_ptr<gsl_odeiv2_driver, DriverDeleter> driver_;
+  gsl_odeiv2_system* sys_;
+};
+
+// rk8pd (detail/prince_dormand.hpp), on the system's compact form when it has one: y is rebuilt from x after
+// every step, so observers, stop conditions and the result see the system's own state.
+class PrinceDormandEvolver final : public Evolver {
+ public:
+  PrinceDormandEvolver(detail::GslContext& ctx, std::optional<CompactForm> form, const IntegratorOptions& o)
+      : form_(std::move(form)), x_(form_ ? form_->x0 : std::vector<double>{}),
+        stepper_(form_ ? x_.size() : ctx.system->dimension(), form_ ? compact_rhs : gsl_rhs, &ctx, o.atol, o.rtol,
+                 form_ ? &*form_ : nullptr) {
+    ctx.form = form_ ? &*form_ : nullptr;
+  }
+  int apply(double& t, double t1, double& h, std::vector<double>& y) override {
+    if (!form_) return stepper_.apply(t, t1, h, y);
+    const int rc = stepper_.apply(t, t1, h, x_);
+    if (rc == 0) form_->rebase(x_);
+    form_->expand(x_, y);
+    return rc;
+  }
+  std::size_t failed_steps() const override { return stepper_.failed_steps(); }
+
+ private:
+  std::optional<CompactForm> form_;
+  std::vector<double> x_;
+  detail::PrinceDormand87 stepper_;
 };
 
 // GSL's default error handler aborts; every GSL error here is a returned status instead.
@@ -126,14 +186,20 @@ IntegrationResult integrate(const System& system, std::span<const double> y0, do
   const auto start = std::chrono::steady_clock::now();
   const GslErrorHandlerOff handler_guard;
   IntegrationResult result;
-  detail::GslContext ctx{&system, &result.counters, {}};
+  detail::GslContext ctx{&system, nullptr, &result.counters, {}};
   gsl_odeiv2_system sys{gsl_rhs, gsl_jac, n, &ctx};
-  std::unique_ptr<gsl_odeiv2_driver, DriverDeleter> driver(gsl_odeiv2_driver_alloc_standard_new(
-      &sys, gsl_type(options.stepper), options.h_init, options.atol, options.rtol, 1.0, 0.0));
-  if (!driver) {
-    result.status = IntegrationStatus::solver_error;
-    result.reason = "GSL could not allocate the " + to_string(options.stepper) + " driver";
-    return result;
+  std::unique_ptr<Evolver> evolver;
+  if (options.stepper == Stepper::rk8pd) {
+    evolver = std::make_unique<PrinceDormandEvolver>(ctx, system.compact_form(y0), options);
+  } else {
+    gsl_odeiv2_driver* driver = gsl_odeiv2_driver_alloc_standard_new(&sys, gsl_type(options.stepper), options.h_init,
+                                                                     options.atol, options.rtol, 1.0, 0.0);
+    if (!driver) {
+      result.status = IntegrationStatus::solver_error;
+      result.reason = "GSL could not allocate the " + to_string(options.stepper) + " driver";
+      return result;
+    }
+    evolver = std::make_unique<GslEvolver>(driver, &sys);
   }
 
   std::vector<double> y(y0.begin(), y0.end());
@@ -149,7 +215,7 @@ IntegrationResult integrate(const System& system, std::span<const double> y0, do
     const double target = grid[k];
     while (t < target) {
       const std::size_t nonfinite_before = ctx.nonfinite_rhs;
-      const int rc = gsl_odeiv2_evolve_apply(driver->e, driver->c, driver->s, &sys, &t, target, &h, y.data());
+      const int rc = evolver->apply(t, target, h, y);
       if (rc == GSL_EBADFUNC || (rc != GSL_SUCCESS && ctx.nonfinite_rhs > nonfinite_before)) {
         fail(IntegrationStatus::non_finite_state,
              "the right-hand side became non-finite at t = " + format_value(ctx.nonfinite_t) +
@@ -159,7 +225,7 @@ IntegrationResult integrate(const System& system, std::span<const double> y0, do
       if (rc != GSL_SUCCESS) {
         const bool tiny = std::abs(h) < options.h_min;
         fail(tiny ? IntegrationStatus::step_size_underflow : IntegrationStatus::solver_error,
-             std::string("GSL ") + to_string(options.stepper) + " failed at t = " + format_value(t) + " (h = " +
+             to_string(options.stepper) + " failed at t = " + format_value(t) + " (h = " +
                  format_value(h) + "): " + gsl_strerror(rc));
         break;
       }
@@ -201,7 +267,7 @@ IntegrationResult integrate(const System& system, std::span<const double> y0, do
     if (on_sample && (!result.stopped || t >= target)) on_sample(t, y);
     if (result.stopped) break;
   }
-  result.counters.failed_steps = driver->e->failed_steps;
+  result.counters.failed_steps = evolver->failed_steps();
   result.t_reached = t;
   result.y = std::move(y);
   result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -55,6 +55,36 @@ void WithQuadratures::jacobian(double t, std::span<const double> y, StructuredJa
   }
 }
 
+std::optional<CompactForm> WithQuadratures::compact_form(std::span<const double> y0) const {
+  std::optional<CompactForm> form = base_.compact_form(y0.first(n_));
+  if (!form) return form;
+  const std::size_t nx = form->x0.size();
+  for (std::size_t k = 0; k < q_.count; ++k) {
+    form->x0.push_back(y0[n_ + k]);
+    form->integral.push_back(false);
+    form->reference.push_back(0.0);
+    form->source.push_back(nx + k);
+    form->scale.push_back(1.0);
+    form->offset.push_back(0.0);
+    form->pivot.push_back(0.0);
+  }
+  return form;
+}
+
+void WithQuadratures::compact_rhs(double t, std::span<const double> x, const CompactForm& form,
+                                  std::span<double> dxdt) const {
+  const std::size_t nx = x.size() - q_.count;
+  // The base's components come first in both x and y: the base reads its own from the same form.
+  base_.compact_rhs(t, x.first(nx), form, dxdt.first(nx));
+  scratch_.resize(2 * n_);
+  const std::span<double> y(scratch_.data(), n_), f(scratch_.data() + n_, n_);
+  for (std::size_t k = 0; k < n_; ++k) {
+    y[k] = form.y(k, x);
+    f[k] = form.rate(k, dxdt);
+  }
+  q_.rate(t, y, f, dxdt.subspan(nx, q_.count));
+}
+
 std::vector<double> WithQuadratures::initial_state() const {
   std::vector<double> y = base_.initial_state();
   y.resize(y.size() + q_.count, 0.0);

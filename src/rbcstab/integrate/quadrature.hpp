@@ -39,11 +39,18 @@ class WithQuadratures final : public System {
   ModeAmplitudes amplitudes(double t, std::span<const double> y) const override {
     return base_.amplitudes(t, y.first(n_));
   }
+  // The base's compact form with the quadratures kept as they are (after the base's components), if it has one.
+  std::optional<CompactForm> compact_form(std::span<const double> y0) const override;
+  // The base's x' then q' = g(t, y, F) at the base state y and rate F the form rebuilds. Uses a scratch of this
+  // object: one integration at a time (as every use here).
+  void compact_rhs(double t, std::span<const double> x, const CompactForm& form,
+                   std::span<double> dxdt) const override;
 
  private:
   const System& base_;
   std::size_t n_;
   Quadrature q_;
+  mutable std::vector<double> scratch_;  // the base's y and F for compact_rhs
 };
 
 // int_0^t sigma_R dt' for the reduced model: sigma_R = Upsilon_2^-1(mu) is affine in mu (b = 1/slope_2). Because

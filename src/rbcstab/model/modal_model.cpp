@@ -44,7 +44,8 @@ void ModalModel::drive(double t, std::complex<double> S[3]) const {
 }
 
 // Eq. st from the sums of tension.hpp.
-AreaBalance ModalModel::balance(std::span<const double> y, const std::complex<double> S[3]) const {
+template <class U>
+AreaBalance ModalModel::balance(std::span<const double> y, const std::complex<double> S[3], U u) const {
   const double a2 = 2;
   const double Delta2 = a2 * (y[0] * y[0] + 2 * (y[1] * y[1] + y[2] * y[2] + y[3] * y[3] + y[4] * y[4]));
   // Re sum_m S_{2,m} conj(f_{2,m}): the -m terms equal the +m ones by reality.
@@ -54,9 +55,15 @@ AreaBalance ModalModel::balance(std::span<const double> y, const std::complex<do
   b.add_mode(Upsilon_[0], Delta2);
   b.add_work(a2 * work);
   // Modes below the cut add nothing (area_of): skipping them keeps the hot loop free of work and calls.
-  for (std::size_t j = 0; j < active_.size(); ++j)
-    if (!(y[5 + j] < u_cut_)) b.add_mode(Upsilon_[j + 1], std::exp(y[5 + j]));
+  for (std::size_t j = 0; j < active_.size(); ++j) {
+    const double ul = u(j);
+    if (!(ul < u_cut_)) b.add_mode(Upsilon_[j + 1], std::exp(ul));
+  }
   return b;
+}
+
+AreaBalance ModalModel::balance(std::span<const double> y, const std::complex<double> S[3]) const {
+  return balance(y, S, [&](std::size_t j) { return y[5 + j]; });
 }
 
 double ModalModel::sigma(double t, std::span<const double> y) const {
@@ -65,17 +72,55 @@ double ModalModel::sigma(double t, std::span<const double> y) const {
   return balance(y, S).sigma();
 }
 
-void ModalModel::rhs(double t, std::span<const double> y, std::span<double> dydt) const {
-  std::complex<double> S[3];
-  drive(t, S);
-  const double sigma = balance(y, S).sigma();
+void ModalModel::l2_rhs(double sigma, std::span<const double> y, const std::complex<double> S[3],
+                        std::span<double> dydt) const {
   const double ups2 = Upsilon_[0](sigma);
   dydt[0] = ups2 * y[0] + S[0].real();
   dydt[1] = ups2 * y[1] - 0.5 * y[2] + S[1].real();
   dydt[2] = 0.5 * y[1] + ups2 * y[2] + S[1].imag();
   dydt[3] = ups2 * y[3] - y[4] + S[2].real();
   dydt[4] = y[3] + ups2 * y[4] + S[2].imag();
+}
+
+void ModalModel::rhs(double t, std::span<const double> y, std::span<double> dydt) const {
+  std::complex<double> S[3];
+  drive(t, S);
+  const double sigma = balance(y, S).sigma();
+  l2_rhs(sigma, y, S, dydt);
   for (std::size_t j = 0; j < active_.size(); ++j) dydt[5 + j] = 2 * Upsilon_[j + 1](sigma);
+}
+
+std::optional<CompactForm> ModalModel::compact_form(std::span<const double> y0) const {
+  if (active_.empty()) return std::nullopt;
+  CompactForm form;
+  form.x0 = {y0[0], y0[1], y0[2], y0[3], y0[4], 0.0, 0.0};  // the l = 2 block, s, tau
+  form.integral = {false, false, false, false, false, true, true};
+  form.reference.assign(7, 0.0);
+  form.clock = 6;
+  for (std::size_t k = 0; k < 5; ++k) {
+    form.source.push_back(k);
+    form.scale.push_back(1.0);
+    form.offset.push_back(0.0);
+    form.pivot.push_back(0.0);
+  }
+  for (std::size_t j = 0; j < active_.size(); ++j) {
+    const GrowthRate& Yl = Upsilon_[j + 1];
+    form.source.push_back(5);
+    form.scale.push_back(2 * Yl.slope);
+    form.offset.push_back(y0[5 + j]);
+    form.pivot.push_back(Yl.sigma_c);
+  }
+  return form;
+}
+
+void ModalModel::compact_rhs(double t, std::span<const double> x, const CompactForm& form,
+                             std::span<double> dxdt) const {
+  std::complex<double> S[3];
+  drive(t, S);
+  const double sigma = balance(x, S, [&](std::size_t j) { return form.y(5 + j, x); }).sigma();
+  l2_rhs(sigma, x, S, dxdt);
+  dxdt[5] = sigma - form.reference[5];
+  dxdt[6] = 1;
 }
 
 void ModalModel::jacobian(double t, std::span<const double> y, StructuredJacobian& J, std::span<double> dfdt) const {

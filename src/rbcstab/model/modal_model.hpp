@@ -24,12 +24,22 @@ class ModalModel final : public System {
   Observation observe(double t, std::span<const double> y) const override;
   std::vector<double> initial_state() const override { return y0_; }
   ModeAmplitudes amplitudes(double t, std::span<const double> y) const override;
+  // x = (the l = 2 block, s = int_t0^t sigma dt, tau = t - t0): u_l = u_l(t0) + 2 Upsilon_l'(s - sigma_l^c tau)
+  // exactly, since u_l' = 2 Upsilon_l(sigma) is affine in sigma. None without an active mode (x would be y).
+  std::optional<CompactForm> compact_form(std::span<const double> y0) const override;
+  void compact_rhs(double t, std::span<const double> x, const CompactForm& form,
+                   std::span<double> dxdt) const override;
   double sigma(double t, std::span<const double> y) const;
   const std::vector<int>& active_modes() const { return active_; }  // the l >= 3 carried as u_l
 
  private:
   void drive(double t, std::complex<double> S[3]) const;  // S_{2,0}, S_{2,1}, S_{2,2}
   AreaBalance balance(std::span<const double> y, const std::complex<double> S[3]) const;
+  // The sums with u_l of active mode j given by u(j).
+  template <class U>
+  AreaBalance balance(std::span<const double> f2, const std::complex<double> S[3], U u) const;
+  // The l = 2 block's derivative at tension sigma.
+  void l2_rhs(double sigma, std::span<const double> f2, const std::complex<double> S[3], std::span<double> d) const;
   Parameters p_;
   int L_;
   std::vector<int> active_;

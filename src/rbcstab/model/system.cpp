@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <stdexcept>
 
 namespace rbcstab {
 
@@ -37,6 +38,31 @@ class StructuredShiftedSolver final : public ShiftedSolver {
 
 std::unique_ptr<ShiftedSolver> System::make_shifted_solver() const {
   return std::make_unique<StructuredShiftedSolver>(*this);
+}
+
+void CompactForm::expand(std::span<const double> x, std::span<double> y_out) const {
+  for (std::size_t k = 0; k < source.size(); ++k) y_out[k] = y(k, x);
+}
+
+void CompactForm::rebase(std::span<double> x) {
+  for (std::size_t k = 0; k < source.size(); ++k)
+    if (integral[source[k]]) offset[k] = y(k, x);
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (integral[i]) x[i] = reference[i] = 0;
+}
+
+void CompactForm::center(std::span<double> rate) {
+  for (std::size_t i = 0; i < rate.size(); ++i)
+    if (integral[i] && i != clock) {
+      reference[i] += rate[i];
+      rate[i] = 0;
+    }
+}
+
+std::optional<CompactForm> System::compact_form(std::span<const double>) const { return std::nullopt; }
+
+void System::compact_rhs(double, std::span<const double>, const CompactForm&, std::span<double>) const {
+  throw std::logic_error("compact_rhs called on a system without a compact form");
 }
 
 }  // namespace rbcstab

@@ -6,6 +6,7 @@
 #include <complex>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -54,6 +55,43 @@ class ShiftedSolver {
   virtual bool solve(double c, std::span<const double> b, std::span<double> x) = 0;
 };
 
+// The same flow on fewer unknowns x: some components of the state y kept as they are, the others following
+// integrals, each y_k' = scale_k (g_i - pivot_k) for the integrand g_i of integral x_i = int (g_i - reference_i),
+//   y_k = offset_k + scale_k (x_i + (reference_i - pivot_k) tau),   i = source_k,
+// with tau = x[clock] the time since the integrals started (tau' = 1). A kept component has scale 1 and offset,
+// pivot and reference 0. A stepper may then step x and still control the error of each y_k,
+// e_{y,k} = scale_k e_{x,i} (integrate/integrator.hpp). The modal level's u_l = ln Delta_l, with
+// u_l' = 2 Upsilon_l' (sigma - sigma_l^c), all follow from one integral of sigma.
+//
+// Rounding: tau is stepped like every other component (the rounded t - t0 would add ulp(t) per step), and a
+// stepper restarts the integrals after every step (rebase) with each reference set to its integrand's value at
+// the step's start (center), so that an integral holds one step's worth of a small difference, reference - pivot
+// is exact near the pivot (as sigma - sigma_l^c is in y_k'), and the steps depend on the state alone (a run
+// restarted from a step's end takes the same steps as one that goes on).
+struct CompactForm {
+  std::vector<double> x0;            // x where the integrals start (each of them 0)
+  std::vector<bool> integral;        // per component of x: an integral (the clock included), restarted by rebase()
+  std::vector<double> reference;     // per component of x: subtracted from its integrand (0 unless an integral)
+  std::size_t clock = 0;             // the component of x that is tau
+  std::vector<std::size_t> source;   // per component of y
+  std::vector<double> scale, offset, pivot;
+  double y(std::size_t k, std::span<const double> x) const {
+    const std::size_t i = source[k];
+    return offset[k] + scale[k] * (x[i] + (reference[i] - pivot[k]) * x[clock]);
+  }
+  // y_k' given x' (dx).
+  double rate(std::size_t k, std::span<const double> dx) const {
+    const std::size_t i = source[k];
+    return scale[k] * (dx[i] + (reference[i] - pivot[k]) * dx[clock]);
+  }
+  void expand(std::span<const double> x, std::span<double> y) const;
+  // Restarts the integrals at 0, the offsets taking the values reached and the references back at 0.
+  void rebase(std::span<double> x);
+  // At a step's start, given x' there with references 0: each reference becomes its integrand's value and the
+  // integral's rate 0.
+  void center(std::span<double> rate);
+};
+
 class System {
  public:
   virtual ~System() = default;
@@ -71,6 +109,11 @@ class System {
   // The Rosenbrock stepper's linear solver. Default: jacobian() + StructuredJacobian::solve_shifted
   // (O(n)); systems without a structured Jacobian of their own (the variational system) override it.
   virtual std::unique_ptr<ShiftedSolver> make_shifted_solver() const;
+  // The compact form through y0 when the level has one smaller than y; none by default.
+  virtual std::optional<CompactForm> compact_form(std::span<const double> y0) const;
+  // x' at (t, x) for a form this system made (compact_form), the clock's 1 included. Throws std::logic_error for
+  // a system without one.
+  virtual void compact_rhs(double t, std::span<const double> x, const CompactForm& form, std::span<double> dxdt) const;
 };
 
 }  // namespace rbcstab
