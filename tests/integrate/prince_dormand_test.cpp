@@ -5,8 +5,6 @@
 // same method and control: the steps and states must be the same bit for bit); the modal level stepped on its full
 // state (the compact form is a change of unknowns: the same steps up to rounding, the same states to rounding);
 // the model's own right-hand side (the compact one must rebuild it).
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_odeiv2.h>
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -15,6 +13,7 @@
 #include <optional>
 #include <vector>
 
+#include "integrate/rk8pd_fixtures.hpp"
 #include "model/test_scenes.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/modal_model.hpp"
@@ -23,67 +22,11 @@
 namespace rbcstab {
 namespace {
 
+using testing::FullState;
 using testing::fig3_scene;
-
-// A system as it is, minus its compact form: integrate() then steps the full state.
-class FullState final : public System {
- public:
-  explicit FullState(const System& s) : s_(s) {}
-  ModelLevel level() const override { return s_.level(); }
-  std::size_t dimension() const override { return s_.dimension(); }
-  int L() const override { return s_.L(); }
-  void rhs(double t, std::span<const double> y, std::span<double> d) const override { s_.rhs(t, y, d); }
-  void jacobian(double t, std::span<const double> y, StructuredJacobian& J, std::span<double> d) const override {
-    s_.jacobian(t, y, J, d);
-  }
-  Observation observe(double t, std::span<const double> y) const override { return s_.observe(t, y); }
-  std::vector<double> initial_state() const override { return s_.initial_state(); }
-  ModeAmplitudes amplitudes(double t, std::span<const double> y) const override { return s_.amplitudes(t, y); }
-
- private:
-  const System& s_;
-};
-
-struct Steps {
-  std::vector<std::vector<double>> samples;  // y at each grid time
-  std::size_t steps = 0, failed = 0;
-};
-
-int gsl_f(double t, const double y[], double dydt[], void* params) {
-  const auto* s = static_cast<const System*>(params);
-  s->rhs(t, {y, s->dimension()}, {dydt, s->dimension()});
-  return GSL_SUCCESS;
-}
-
-// GSL's rk8pd with the standard control (a_y = 1, a_dydt = 0) through the grid, as integrate() drove it.
-Steps gsl_rk8pd(const System& s, const std::vector<double>& grid, const IntegratorOptions& o) {
-  gsl_odeiv2_system sys{gsl_f, nullptr, s.dimension(), const_cast<System*>(&s)};
-  gsl_odeiv2_driver* d =
-      gsl_odeiv2_driver_alloc_standard_new(&sys, gsl_odeiv2_step_rk8pd, o.h_init, o.atol, o.rtol, 1.0, 0.0);
-  Steps r;
-  std::vector<double> y = s.initial_state();
-  double t = 0, h = o.h_init;
-  for (double target : grid) {
-    while (t < target) {
-      EXPECT_EQ(gsl_odeiv2_evolve_apply(d->e, d->c, d->s, &sys, &t, target, &h, y.data()), GSL_SUCCESS);
-      ++r.steps;
-    }
-    r.samples.push_back(y);
-  }
-  r.failed = d->e->failed_steps;
-  gsl_odeiv2_driver_free(d);
-  return r;
-}
-
-Steps native(const System& s, const std::vector<double>& grid, const IntegratorOptions& o) {
-  Steps r;
-  const IntegrationResult ir = integrate(s, s.initial_state(), 0.0, grid, o,
-                                         [&](double, std::span<const double> y) { r.samples.emplace_back(y.begin(), y.end()); });
-  EXPECT_EQ(ir.status, IntegrationStatus::success) << ir.reason;
-  r.steps = ir.counters.steps;
-  r.failed = ir.counters.failed_steps;
-  return r;
-}
+using testing::gsl_rk8pd;
+using testing::native_rk8pd;
+using testing::Steps;
 
 IntegratorOptions rk8pd(double rtol, double atol) {
   IntegratorOptions o;
@@ -112,12 +55,13 @@ TEST(PrinceDormand, BitForBitWithGslsRk8pd) {
     const std::vector<double> grid = {0.37, 10, 55.5, 120};
     for (double rtol : {1e-6, 1e-10}) {
       const IntegratorOptions o = rk8pd(rtol, rtol * 1e-4);
-      const Steps a = native(plain, grid, o), b = gsl_rk8pd(plain, grid, o);
+      const Steps a = native_rk8pd(plain, grid, o), b = gsl_rk8pd(plain, grid, o);
       const std::string what = to_string(c.level) + " L = " + std::to_string(c.L) + " rtol " + std::to_string(rtol);
       EXPECT_EQ(a.steps, b.steps) << what;
       EXPECT_EQ(a.failed, b.failed) << what;
       EXPECT_GT(a.failed, 0u) << what;  // the rejection path is exercised
-      ASSERT_EQ(a.samples.size(), b.samples.size()) << what;
+      ASSERT_EQ(a.samples.size(), grid.size()) << what;
+      ASSERT_EQ(b.samples.size(), grid.size()) << what;
       for (std::size_t k = 0; k < a.samples.size(); ++k) EXPECT_EQ(a.samples[k], b.samples[k]) << what << " sample " << k;
     }
   }
@@ -178,9 +122,10 @@ TEST(PrinceDormand, CompactFormTakesTheSameStepsAsTheFullState) {
     for (double t = 50; t <= 500; t += 50) grid.push_back(t);
     for (double rtol : {1e-8, 1e-12}) {
       const IntegratorOptions o = rk8pd(rtol, 1e-16);
-      const Steps a = native(*ss.system, grid, o), b = native(plain, grid, o);
+      const Steps a = native_rk8pd(*ss.system, grid, o), b = native_rk8pd(plain, grid, o);
       EXPECT_NEAR(double(a.steps), double(b.steps), 0.005 * double(b.steps)) << beta << " " << rtol;
-      ASSERT_EQ(a.samples.size(), b.samples.size());
+      ASSERT_EQ(a.samples.size(), grid.size());
+      ASSERT_EQ(b.samples.size(), grid.size());
       for (std::size_t k = 0; k < a.samples.size(); ++k) {
         const Observation oa = ss.system->observe(grid[k], a.samples[k]), ob = ss.system->observe(grid[k], b.samples[k]);
         for (std::size_t l = 0; l < oa.Delta_l.size(); ++l)

@@ -1,5 +1,6 @@
 #pragma once
-// Time integration of a model level with GSL odeiv2 (adaptive steppers, user output grid, counters).
+// Time integration of a model level (adaptive steppers: rk8pd of its own, the others GSL odeiv2's; user output
+// grid, counters). rk8pd steps a system's compact form when it has one (System::compact_form).
 #include <cstddef>
 #include <functional>
 #include <span>
@@ -13,7 +14,7 @@
 namespace rbcstab {
 
 enum class Stepper {
-  rk8pd,       // explicit Prince-Dormand 8(9): the default for non-stiff levels (modal, reduced)
+  rk8pd,       // explicit Prince-Dormand 8(7) (detail/prince_dormand.hpp): the default for non-stiff levels
   rkck,        // explicit Cash-Karp 4(5)
   rkf45,       // explicit Runge-Kutta-Fehlberg 4(5)
   msadams,     // explicit/implicit Adams multistep (functional iteration)

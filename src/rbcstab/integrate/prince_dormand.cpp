@@ -61,17 +61,16 @@ constexpr Term s12[] = {{0, 403863854.0 / 491063109.0},      {3, -5068492393.0 /
                         {6, 11173962825.0 / 925320556.0},    {7, -13158990841.0 / 6184727034.0},
                         {8, 3936647629.0 / 1978049680.0},    {9, -160528059.0 / 685178525.0},
                         {10, 248638103.0 / 1413531060.0}};
-struct Stage {
-  const Term* terms;
-  int count;
-};
+// y + h sum_q a_q k_{j_q}, each component's sum in the order of j (as GSL's): the terms are compile-time
+// constants, so the sum of every component stays in registers.
 template <std::size_t N>
-constexpr Stage stage(const Term (&t)[N]) {
-  return {t, int(N)};
+inline void combine(const Term (&terms)[N], const double* k, std::size_t n, const double* y, double h, double* out) {
+  for (std::size_t i = 0; i < n; ++i) {
+    double sum = terms[0].a * k[std::size_t(terms[0].j) * n + i];
+    for (std::size_t q = 1; q < N; ++q) sum += terms[q].a * k[std::size_t(terms[q].j) * n + i];
+    out[i] = y[i] + h * sum;
+  }
 }
-// Stage 1 has the single term a_{1,0} = 1/18 (below); stages 2..12:
-constexpr Stage stages[13] = {{nullptr, 0}, {nullptr, 0}, stage(s2), stage(s3), stage(s4),  stage(s5), stage(s6),
-                              stage(s7),    stage(s8),    stage(s9), stage(s10), stage(s11), stage(s12)};
 constexpr double a10 = 1.0 / 18.0;
 constexpr Term b[] = {{0, 14005451.0 / 335480064.0},    {5, -59238493.0 / 1068277825.0},
                       {6, 181606767.0 / 758867731.0},   {7, 561292985.0 / 797845732.0},
@@ -121,21 +120,23 @@ int PrinceDormand87::apply(double& t, double t1, double& h, std::span<double> x)
     if (final_step) h0 = dt;
     int status = 0;
     for (int s = 1; s < 13 && status == 0; ++s) {
-      if (s == 1) {
-        const double ah = a10 * h0;
-        for (std::size_t i = 0; i < n_; ++i) ytmp[i] = y[i] + ah * k[i];
-      } else {
-        // Term by term over all components (it vectorises); each component's sum keeps the order of j.
-        const Stage& st = stages[s];
-        const double a0 = st.terms[0].a;
-        const double* k0 = k + std::size_t(st.terms[0].j) * n_;
-        for (std::size_t i = 0; i < n_; ++i) ytmp[i] = a0 * k0[i];
-        for (int q = 1; q < st.count; ++q) {
-          const double aq = st.terms[q].a;
-          const double* kq = k + std::size_t(st.terms[q].j) * n_;
-          for (std::size_t i = 0; i < n_; ++i) ytmp[i] += aq * kq[i];
+      switch (s) {
+        case 1: {
+          const double ah = a10 * h0;
+          for (std::size_t i = 0; i < n_; ++i) ytmp[i] = y[i] + ah * k[i];
+          break;
         }
-        for (std::size_t i = 0; i < n_; ++i) ytmp[i] = y[i] + h0 * ytmp[i];
+        case 2: combine(s2, k, n_, y, h0, ytmp); break;
+        case 3: combine(s3, k, n_, y, h0, ytmp); break;
+        case 4: combine(s4, k, n_, y, h0, ytmp); break;
+        case 5: combine(s5, k, n_, y, h0, ytmp); break;
+        case 6: combine(s6, k, n_, y, h0, ytmp); break;
+        case 7: combine(s7, k, n_, y, h0, ytmp); break;
+        case 8: combine(s8, k, n_, y, h0, ytmp); break;
+        case 9: combine(s9, k, n_, y, h0, ytmp); break;
+        case 10: combine(s10, k, n_, y, h0, ytmp); break;
+        case 11: combine(s11, k, n_, y, h0, ytmp); break;
+        default: combine(s12, k, n_, y, h0, ytmp); break;
       }
       // The last two nodes are 1: t0 + h0 exactly.
       status = rhs_(s >= 11 ? t0 + h0 : t0 + c[s] * h0, ytmp, k + std::size_t(s) * n_, params_);
@@ -152,23 +153,12 @@ int PrinceDormand87::apply(double& t, double t1, double& h, std::span<double> x)
       t = t0;
       return status;
     }
-    double* const s8 = ytmp;
-    double* const s7 = err_.data();
     for (std::size_t i = 0; i < n_; ++i) {
-      s8[i] = b[0].a * k[i];
-      s7[i] = bhat[0].a * k[i];
-    }
-    for (std::size_t q = 1; q < std::size(b); ++q) {
-      const double* kq = k + std::size_t(b[q].j) * n_;
-      for (std::size_t i = 0; i < n_; ++i) s8[i] += b[q].a * kq[i];
-    }
-    for (std::size_t q = 1; q < std::size(bhat); ++q) {
-      const double* kq = k + std::size_t(bhat[q].j) * n_;
-      for (std::size_t i = 0; i < n_; ++i) s7[i] += bhat[q].a * kq[i];
-    }
-    for (std::size_t i = 0; i < n_; ++i) {
-      y[i] += h0 * s8[i];
-      err_[i] = h0 * (s7[i] - s8[i]);
+      double s8 = b[0].a * k[i], s7 = bhat[0].a * k[i];
+      for (std::size_t q = 1; q < std::size(b); ++q) s8 += b[q].a * k[std::size_t(b[q].j) * n_ + i];
+      for (std::size_t q = 1; q < std::size(bhat); ++q) s7 += bhat[q].a * k[std::size_t(bhat[q].j) * n_ + i];
+      y[i] += h0 * s8;
+      err_[i] = h0 * (s7 - s8);
     }
     const double t_new = final_step ? t1 : t0 + h0;
     const double h_old = h0;
