@@ -88,7 +88,8 @@ def test_the_gil_is_released_while_simulating():
     t = threading.Thread(target=tick)
     t.start()
     start = time.monotonic()
-    rbcstab.simulate(rbcstab.Scene(L=12, model="full", T=200.0))
+    # ~0.35 s here: long against the 5 ms ticks and the 0.05 s floor below on any machine
+    rbcstab.simulate(rbcstab.Scene(L=12, model="full", T=1000.0))
     end = time.monotonic()
     stop.set()
     t.join()
