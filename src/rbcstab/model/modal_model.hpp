@@ -24,8 +24,9 @@ class ModalModel final : public System {
   Observation observe(double t, std::span<const double> y) const override;
   std::vector<double> initial_state() const override { return y0_; }
   ModeAmplitudes amplitudes(double t, std::span<const double> y) const override;
-  // x = (the l = 2 block, s = int_t0^t sigma dt, tau = t - t0): u_l = u_l(t0) + 2 Upsilon_l'(s - sigma_l^c tau)
-  // exactly, since u_l' = 2 Upsilon_l(sigma) is affine in sigma. None without an active mode (x would be y).
+  // x = (the l = 2 block, s = int_t0^t (sigma - sigma_ref) dt, tau = t - t0):
+  // u_l = u_l(t0) + 2 Upsilon_l' (s + (sigma_ref - sigma_l^c) tau) exactly, since u_l' = 2 Upsilon_l(sigma) is
+  // affine in sigma (CompactForm; the stepper sets sigma_ref). None without an active mode (x would be y).
   std::optional<CompactForm> compact_form(std::span<const double> y0) const override;
   void compact_rhs(double t, std::span<const double> x, const CompactForm& form,
                    std::span<double> dxdt) const override;
