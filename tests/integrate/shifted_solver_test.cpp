@@ -10,25 +10,16 @@
 #include <memory>
 #include <vector>
 
+#include "integrate/full_state.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
 namespace {
 
-class DenseLuSystem final : public System {
+class DenseLuSystem final : public testing::FullState {
  public:
-  explicit DenseLuSystem(const System& base) : base_(base) {}
-  ModelLevel level() const override { return base_.level(); }
-  std::size_t dimension() const override { return base_.dimension(); }
-  int L() const override { return base_.L(); }
-  void rhs(double t, std::span<const double> y, std::span<double> d) const override { base_.rhs(t, y, d); }
-  void jacobian(double t, std::span<const double> y, StructuredJacobian& J, std::span<double> dfdt) const override {
-    base_.jacobian(t, y, J, dfdt);
-  }
-  Observation observe(double t, std::span<const double> y) const override { return base_.observe(t, y); }
-  std::vector<double> initial_state() const override { return base_.initial_state(); }
-  ModeAmplitudes amplitudes(double t, std::span<const double> y) const override { return base_.amplitudes(t, y); }
+  explicit DenseLuSystem(const System& base) : FullState(base) {}
   std::unique_ptr<ShiftedSolver> make_shifted_solver() const override {
     ++solvers_made;
     return std::make_unique<Solver>(*this);
@@ -42,7 +33,7 @@ class DenseLuSystem final : public System {
     void linearize(double t, std::span<const double> y, std::span<double> dfdt) override {
       ++sys.linearizations;
       StructuredJacobian J;
-      sys.base_.jacobian(t, y, J, dfdt);
+      sys.base().jacobian(t, y, J, dfdt);
       const auto n = static_cast<Eigen::Index>(y.size());
       std::vector<double> d(y.size() * y.size());
       J.to_dense(d);
@@ -57,7 +48,6 @@ class DenseLuSystem final : public System {
     const DenseLuSystem& sys;
     Eigen::MatrixXd dense;
   };
-  const System& base_;
 };
 
 TEST(ShiftedSolverHook, RosenbrockUsesTheSystemsSolver) {

@@ -18,7 +18,7 @@ namespace rbcstab {
 namespace {
 const gsl_odeiv2_step_type* gsl_type(Stepper s) {
   switch (s) {
-    case Stepper::rk8pd: return gsl_odeiv2_step_rk8pd;
+    case Stepper::rk8pd: return gsl_odeiv2_step_rk8pd;  // not asked: integrate() steps rk8pd itself
     case Stepper::rkck: return gsl_odeiv2_step_rkck;
     case Stepper::rkf45: return gsl_odeiv2_step_rkf45;
     case Stepper::msadams: return gsl_odeiv2_step_msadams;

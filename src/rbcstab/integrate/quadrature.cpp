@@ -58,16 +58,7 @@ void WithQuadratures::jacobian(double t, std::span<const double> y, StructuredJa
 std::optional<CompactForm> WithQuadratures::compact_form(std::span<const double> y0) const {
   std::optional<CompactForm> form = base_.compact_form(y0.first(n_));
   if (!form) return form;
-  const std::size_t nx = form->x0.size();
-  for (std::size_t k = 0; k < q_.count; ++k) {
-    form->x0.push_back(y0[n_ + k]);
-    form->integral.push_back(false);
-    form->reference.push_back(0.0);
-    form->source.push_back(nx + k);
-    form->scale.push_back(1.0);
-    form->offset.push_back(0.0);
-    form->pivot.push_back(0.0);
-  }
+  for (std::size_t k = 0; k < q_.count; ++k) form->keep(y0[n_ + k]);
   return form;
 }
 

@@ -93,23 +93,11 @@ void ModalModel::rhs(double t, std::span<const double> y, std::span<double> dydt
 std::optional<CompactForm> ModalModel::compact_form(std::span<const double> y0) const {
   if (active_.empty()) return std::nullopt;
   CompactForm form;
-  form.x0 = {y0[0], y0[1], y0[2], y0[3], y0[4], 0.0, 0.0};  // the l = 2 block, s, tau
-  form.integral = {false, false, false, false, false, true, true};
-  form.reference.assign(7, 0.0);
-  form.clock = 6;
-  for (std::size_t k = 0; k < 5; ++k) {
-    form.source.push_back(k);
-    form.scale.push_back(1.0);
-    form.offset.push_back(0.0);
-    form.pivot.push_back(0.0);
-  }
-  for (std::size_t j = 0; j < active_.size(); ++j) {
-    const GrowthRate& Yl = Upsilon_[j + 1];
-    form.source.push_back(5);
-    form.scale.push_back(2 * Yl.slope);
-    form.offset.push_back(y0[5 + j]);
-    form.pivot.push_back(Yl.sigma_c);
-  }
+  for (std::size_t k = 0; k < 5; ++k) form.keep(y0[k]);  // the l = 2 block: x[0..4]
+  const std::size_t s = form.add_unknown(0.0, true);     // x[5]
+  form.clock = form.add_unknown(0.0, true);              // x[6]
+  for (std::size_t j = 0; j < active_.size(); ++j)
+    form.add_component(s, 2 * Upsilon_[j + 1].slope, y0[5 + j], Upsilon_[j + 1].sigma_c);
   return form;
 }
 
@@ -120,7 +108,7 @@ void ModalModel::compact_rhs(double t, std::span<const double> x, const CompactF
   const double sigma = balance(x, S, [&](std::size_t j) { return form.y(5 + j, x); }).sigma();
   l2_rhs(sigma, x, S, dxdt);
   dxdt[5] = sigma - form.reference[5];
-  dxdt[6] = 1;
+  dxdt[form.clock] = 1;
 }
 
 void ModalModel::jacobian(double t, std::span<const double> y, StructuredJacobian& J, std::span<double> dfdt) const {

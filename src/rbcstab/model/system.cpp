@@ -40,6 +40,20 @@ std::unique_ptr<ShiftedSolver> System::make_shifted_solver() const {
   return std::make_unique<StructuredShiftedSolver>(*this);
 }
 
+std::size_t CompactForm::add_unknown(double value, bool is_integral) {
+  x0.push_back(value);
+  integral.push_back(is_integral);
+  reference.push_back(0.0);
+  return x0.size() - 1;
+}
+
+void CompactForm::add_component(std::size_t source_index, double scale_k, double offset_k, double pivot_k) {
+  source.push_back(source_index);
+  scale.push_back(scale_k);
+  offset.push_back(offset_k);
+  pivot.push_back(pivot_k);
+}
+
 void CompactForm::expand(std::span<const double> x, std::span<double> y_out) const {
   for (std::size_t k = 0; k < source.size(); ++k) y_out[k] = y(k, x);
 }

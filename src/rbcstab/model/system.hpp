@@ -84,6 +84,11 @@ struct CompactForm {
     const std::size_t i = source[k];
     return scale[k] * (dx[i] + (reference[i] - pivot[k]) * dx[clock]);
   }
+  // Building a form: a new unknown of x (its index), a new component of y following x[source], and a component
+  // of y kept as it is (both appended).
+  std::size_t add_unknown(double value, bool is_integral);
+  void add_component(std::size_t source_index, double scale_k, double offset_k, double pivot_k);
+  void keep(double value) { add_component(add_unknown(value, false), 1.0, 0.0, 0.0); }
   void expand(std::span<const double> x, std::span<double> y) const;
   // Restarts the integrals at 0, the offsets taking the values reached and the references back at 0.
   void rebase(std::span<double> x);
