@@ -2,13 +2,18 @@
 // Range checks for numeric flags whose messages read like the library's ("--step: -1 must be > 0").
 // (CLI11's PositiveNumber prints its bound as the 300-digit DBL_MAX.)
 #include <CLI/CLI.hpp>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "rbcstab/core/text.hpp"
+
 namespace rbcstab::cli {
 
-// The whole text converted by `convert` (std::stod, std::stoll): false for an empty text or trailing
+// The whole text converted by `convert` (std::stoll): false for an empty text or trailing
 // characters ("", "0.1abc", "3.5" as an integer).
 template <class T, class Convert>
 bool parse_whole(const std::string& text, T& v, Convert convert) {
@@ -21,7 +26,17 @@ bool parse_whole(const std::string& text, T& v, Convert convert) {
   return pos != 0 && pos == text.size();
 }
 inline bool parse_number(const std::string& text, double& v) {
-  return parse_whole(text, v, [](const std::string& t, std::size_t* pos) { return std::stod(t, pos); });
+  const std::optional<double> x = read_number(text);
+  if (x) v = *x;
+  return x.has_value();
+}
+// Why text is no number: beyond the doubles' range (1e400) or not a number at all.
+inline std::string number_error(const std::string& text) {
+  char* end = nullptr;
+  errno = 0;
+  const double x = std::strtod(text.c_str(), &end);
+  if (errno == ERANGE && std::isinf(x) && end == text.c_str() + text.size()) return "'" + text + "' is out of range: beyond the largest double (1.8e308)";
+  return "'" + text + "' is not a number";
 }
 inline bool parse_integer(const std::string& text, long long& v) {
   return parse_whole(text, v, [](const std::string& t, std::size_t* pos) { return std::stoll(t, pos); });
@@ -33,7 +48,7 @@ inline CLI::Validator number_text(const std::string& range) {
   return CLI::Validator(
       [range](std::string& text) -> std::string {
         double v = 0;
-        if (!parse_number(text, v)) return "'" + text + "' is not a number (" + range + ")";
+        if (!parse_number(text, v)) return number_error(text) + " (" + range + ")";
         return {};
       },
       "", "NUMBER");
@@ -69,7 +84,7 @@ inline CLI::Validator number_above(double bound, bool strict) {
   return CLI::Validator(
       [bound, strict, range](std::string& text) -> std::string {
         double v = 0;
-        if (!parse_number(text, v)) return "'" + text + "' is not a number (must be " + range + ")";
+        if (!parse_number(text, v)) return number_error(text) + " (must be " + range + ")";
         if (!std::isfinite(v) || (strict ? !(v > bound) : !(v >= bound)))
           return text + " is out of range: must be finite and " + range;
         return {};
@@ -116,7 +131,7 @@ inline CLI::Validator each_item(const std::vector<CLI::Validator>& checks, const
 // The values of comma-list arguments that each_item(number_text(...)) or each_item(integer_in(...)) accepted.
 inline std::vector<double> numbers_of(const std::vector<std::string>& args) {
   std::vector<double> out;
-  for (const std::string& item : list_items(args)) out.push_back(std::stod(item));
+  for (const std::string& item : list_items(args)) out.push_back(read_number(item).value());
   return out;
 }
 inline std::vector<long long> integers_of(const std::vector<std::string>& args) {

@@ -22,7 +22,7 @@ CLI::Validator whole_number(const std::string& type) {
       [type](std::string& text) -> std::string {
         if (type == "FLOAT") {
           double v = 0;
-          if (!parse_number(text, v)) return "'" + text + "' is not a number";
+          if (!parse_number(text, v)) return number_error(text);
           // Rewritten only when CLI11's reading would differ, so that messages quote the value as given.
           if (static_cast<double>(std::strtold(text.c_str(), nullptr)) != v) {
             char hex[64];

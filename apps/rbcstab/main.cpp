@@ -7,6 +7,7 @@
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/core/text.hpp"
 
 namespace {
 // "--flag: " when the library named a parameter that the user gave as a flag of the running subcommand
@@ -31,6 +32,9 @@ std::string flag_hint(CLI::App& app, const std::vector<rbcstab::cli::Command>& c
 
 int main(int argc, char** argv) {
   using namespace rbcstab::cli;
+  // What the commands print directly (tables, progress) follows the renderers' rule: NaN reads "n/a".
+  std::cout.imbue(rbcstab::text_locale());
+  std::cerr.imbue(rbcstab::text_locale());
   CLI::App app{"rbcstab " RBCSTAB_VERSION
                ": shape dynamics and shape instabilities of a quasi-spherical red blood cell in shear flow\n"
                "(the perturbative model of Moriel, Stone and Mendez). Without a subcommand: the summary of the "

@@ -13,6 +13,11 @@ def _scene_with(scene, **overrides):
     return scene.replace(**changes) if changes else scene
 
 
+def _number(v, spec):
+    """v formatted with spec, or "n/a" for a value that is not a number (JSON null: the run says why)."""
+    return "n/a" if v is None or v != v else format(v, spec)
+
+
 class Report(dict):
     """A result as the CLI's --json object (a dict: equal to json.loads of the CLI's output), with the CLI's
     text in ``.text``; prints as one line and renders in Jupyter as the text."""
@@ -70,7 +75,7 @@ class Simulation:
     def __repr__(self):
         d = self._data
         return (f"<rbcstab Simulation of {d['scene']!r}: {d['model']} L={d['L']}, {d['status']}, "
-                f"l_Delta={d['l_Delta']}, sigma(T)={d['sigma_final']:.6g}, {d['rhs_evaluations']} rhs evaluations, "
+                f"l_Delta={d['l_Delta']}, sigma(T)={_number(d['sigma_final'], '.6g')}, {d['rhs_evaluations']} rhs evaluations, "
                 f"{d['seconds'] * 1e3:.3g} ms>")
 
     def _repr_html_(self):

@@ -51,6 +51,16 @@ def test_thresholds_post_summary_equal_the_cli(cli):
     assert s.text.startswith("rbcstab ") and "\n" not in repr(s)
 
 
+def test_an_overflowing_run_prints_without_nan():
+    # lambda = 1e308 is in range but overflows at t = 0: sigma(T) is null in the JSON, with its reason
+    run = rbcstab.simulate(rbcstab.Scene(T=5.0, **{"lambda": 1e308}))
+    assert run.status == "non_finite_state" and run.sigma_final is None and "lambda = 1e+308" in run.reason
+    assert "sigma(T)=n/a" in repr(run) and "nan" not in repr(run).lower() and "nan" not in run.text.lower()
+    for report in (rbcstab.thresholds, rbcstab.post, rbcstab.summary):
+        r = report(rbcstab.Scene(T=5.0, **{"lambda": 1e308}))
+        assert r["scene"] == "fig3_op" and "nan" not in r.text.lower() and "nan" not in repr(r).lower()
+
+
 def test_bad_arguments_raise():
     with pytest.raises(TypeError):
         rbcstab.simulate({"lambda": 5})

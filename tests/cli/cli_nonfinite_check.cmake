@@ -1,7 +1,8 @@
 # cmake -DCLI=<rbcstab> -DWORK=<scratch folder> -P cli_nonfinite_check.cmake
 # Non-finite values are never hidden: in every --json output of thresholds, simulate, summary and post for
 # an overflowing input (lambda = 1e308) and the vesicle limit (C = inf), each null -- or array holding a
-# null -- has a sibling "<key>_reason"; the reasons name the input that caused them.
+# null -- has a sibling "<key>_reason"; the reasons name the input that caused them. The text outputs of the
+# same commands never print "nan".
 cmake_minimum_required(VERSION 3.22)
 file(REMOVE_RECURSE "${WORK}")
 file(MAKE_DIRECTORY "${WORK}")
@@ -81,6 +82,26 @@ foreach(command IN ITEMS thresholds simulate summary post)
   endforeach()
 endforeach()
 
+# The text outputs never print "nan": a value that is not a number reads "n/a" (core/text.hpp), beside its reason.
+# lambda = 1e100 and C = 1e-100 are in range but overflow inside the exact equilibrium's Jacobian.
+foreach(command IN ITEMS thresholds simulate summary post)
+  foreach(input IN ITEMS "--lambda;1e308" "--lambda;1e100" "--C;1e-100" "--C;inf")
+    run_cli(${command} ${input} --T 50)
+    if(NOT rc MATCHES "^[01]$")
+      message(FATAL_ERROR "${command} ${input} (text): exit ${rc}\n${err}")
+    endif()
+    string(TOLOWER "${out}\n${err}" text)
+    if(text MATCHES "(^|[^a-z])nan([^a-z]|$)")
+      message(FATAL_ERROR "${command} ${input} (text) prints nan:\n${out}\n${err}")
+    endif()
+  endforeach()
+endforeach()
+run_cli(thresholds --lambda 1e100)
+expect_contains("${out}" "stability n/a (eigenvalues not finite" "thresholds --lambda 1e100")
+run_cli(thresholds --lambda 1e100 --json)
+string(JSON reason GET "${out}" equilibrium stable_reason)
+expect_contains("${reason}" "not finite" "thresholds --lambda 1e100 --json equilibrium.stable_reason")
+
 run_cli(thresholds --lambda 1e308 --json)
 string(JSON reason GET "${out}" Lambda_reason)
 expect_contains("${reason}" "lambda = 1e+308" "thresholds --lambda 1e308 Lambda_reason")
@@ -100,3 +121,20 @@ string(REPEAT "#" 1100000 big)
 file(WRITE "${WORK}/big.toml" "${big}")
 expect_exit(2 "1048576 bytes" simulate --scene big.toml)
 expect_exit(2 "16777216 points" diagram --counts 1000000,1000000 --out grid)
+
+# Numbers as typed: one beyond the largest double is refused as such; one below the smallest normal double is its
+# nearest double in every flag, list and l=value item (std::stod refused it, and a range list crashed on it).
+run_cli(simulate --B 1e400)
+expect_refusal("--B 1e400" "--B: '1e400' is out of range: beyond the largest double")
+run_cli(diagram --x-range 1e-320,2 --y-range -1,0 --counts 2,2 --out sub)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "diagram --x-range 1e-320,2: exit ${rc}\n${err}")
+endif()
+run_cli(simulate --delta-l 3=1e-320 --T 5 --json)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "simulate --delta-l 3=1e-320: exit ${rc}\n${err}")
+endif()
+string(JSON d3 GET "${out}" excess_area_initial 3)
+if(NOT d3 GREATER 0 OR NOT d3 LESS 1e-319)
+  message(FATAL_ERROR "simulate --delta-l 3=1e-320: Delta_3(0) = ${d3}")
+endif()

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "rbcstab/analysis/truncation.hpp"
+#include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"
 
 namespace rbcstab {
@@ -33,7 +34,7 @@ nlohmann::json to_json(const Delta2Prediction& d) {
 }
 
 std::string to_text(const Quantity& q) {
-  std::ostringstream s;
+  TextStream s;
   s << std::setprecision(6);
   if (q.valid())
     s << q.value;
@@ -59,6 +60,7 @@ Quantity simulated_Delta2(const SimulationResult& r) {
 nlohmann::json post_json(const SceneFile& file, const PostInstability& post, const SimulationResult& r) {
   const Parameters& p = file.scene.parameters;
   nlohmann::json j;
+  j["scene"] = file.scene.name;
   j["parameters"] = to_json(p);
   put_truncation(j, file);
   j["alpha"] = p.alpha();
@@ -83,7 +85,7 @@ nlohmann::json post_json(const SceneFile& file, const PostInstability& post, con
 std::string post_text(const SceneFile& file, const PostInstability& post, const SimulationResult& r) {
   const Scene& s = file.scene;
   const Parameters& p = s.parameters;
-  std::ostringstream out;
+  TextStream out;
   out << std::setprecision(6);
   out << "Scene '" << s.name << "': lambda = " << p.lambda << ", Delta = " << p.Delta << ", Delta0 = " << p.Delta0
       << ", B = " << p.B << ", C = " << p.C << ", alpha = " << p.alpha() << "\n";

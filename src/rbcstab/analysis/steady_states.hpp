@@ -3,6 +3,7 @@
 // its linear stability on the sphere, sigma_R at it, and the exact finite-S instability criterion,
 // beside the paper's S >> 1 forms (Eq. ss_red, Eq. ss_st_red).
 #include <array>
+#include <cmath>
 #include <complex>
 #include <string>
 #include <vector>
@@ -21,6 +22,9 @@ struct OutOfPlaneEquilibrium {
   double sigma_R = 0;           // Eq. st_red at the equilibrium
   std::array<std::complex<double>, 2> eigenvalues;  // of the reduced Jacobian on the sphere's tangent plane
   bool stable = false;          // both eigenvalues have negative real part
+  // False when the eigenvalues are not finite (inputs so extreme that the Jacobian overflows): `stable` then
+  // says nothing and the outputs write "n/a" / null with the reason.
+  bool stability_known() const { return std::isfinite(std::abs(eigenvalues[0])) && std::isfinite(std::abs(eigenvalues[1])); }
   double residual = 0;          // max |rhs| of ReducedModel at the equilibrium (an O(eps) check)
   // The paper's S >> 1 forms (Eq. ss_red): r_ss, Psi_ss, <sigma_R^-+> (Eq. ss_st_red).
   double r_large_S = 0, Psi_large_S = 0;

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"
 
 namespace rbcstab {
@@ -387,7 +388,7 @@ void TableOptions::validate(const std::vector<std::string>& available) const {
 
 std::string to_text(const SceneBranch& r, const TableOptions& table) {
   const std::string p = to_string(r.spec.parameter);
-  std::ostringstream ss;
+  TextStream ss;
   ss << std::setprecision(10);
   branch_line(ss, r.branch.branch, p);
   special_lines(ss, r.branch.branch, p, "");
@@ -408,7 +409,7 @@ std::string to_text(const SceneBranch& r, const TableOptions& table) {
 std::string to_text(const SceneCurve& r, const TableOptions& table) {
   const std::string p1 = to_string(r.one.spec.parameter), p2 = to_string(*r.spec.parameter2);
   const Branch& c = r.curve.branch;
-  std::ostringstream ss;
+  TextStream ss;
   ss << std::setprecision(10) << to_string(r.spec.type) << " curve from " << r.start.name << " (" << p1 << " = "
      << r.start.p << "): " << c.points.size() << " points in (" << p1 << ", " << p2 << ")";
   if (!c.points.empty()) ss << ", " << p2 << " from " << c.points.front().p << " to " << c.points.back().p;

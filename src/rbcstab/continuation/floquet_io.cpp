@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"
 
 namespace rbcstab {
@@ -37,7 +38,7 @@ nlohmann::json floquet_json(const Scene& scene, const SceneFloquetOptions& optio
 
 std::string floquet_text(const Scene& scene, const SceneFloquetOptions& options, const SceneFloquetResult& r) {
   const Eigen::VectorXcd& mu = r.floquet.arpack.eigenvalues;
-  std::ostringstream out;
+  TextStream out;
   out << std::setprecision(8) << "full model L = " << scene.L << " (n = " << r.dimension << "), relaxed "
       << options.relax_periods << " periods at the " << to_string(r.relax_level) << " level, period " << r.period
       << ", periodicity defect " << r.periodicity_defect << ", " << to_string(r.stepper) << ", "

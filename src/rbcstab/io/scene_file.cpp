@@ -10,6 +10,7 @@
 #include <toml++/toml.h>
 
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/core/text.hpp"
 #include "rbcstab/io/files.hpp"
 
 namespace rbcstab {
@@ -297,7 +298,10 @@ std::map<int, double> parse_modes(const std::vector<std::string>& items, const s
       try {
         if (eq == std::string::npos || eq == 0) throw std::invalid_argument(pair);
         l = std::stoi(pair.substr(0, eq), &lpos);
-        v = std::stod(pair.substr(eq + 1), &vpos);
+        const std::string value = pair.substr(eq + 1);
+        const std::optional<double> x = read_number(value);
+        v = x.value_or(0.0);
+        vpos = x ? value.size() : 0;
       } catch (const std::exception&) {
         lpos = vpos = 0;
       }

@@ -3,6 +3,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"
 
 namespace rbcstab {
@@ -20,7 +21,7 @@ nlohmann::json simulation_json(const SceneFile& file, const SimulationResult& r)
 }
 
 std::string simulation_text(const SceneFile& file, const SimulationResult& r) {
-  std::ostringstream out;
+  TextStream out;
   out << std::setprecision(6) << "model " << to_string(r.level.level) << ", status " << to_string(r.status)
       << ", l_Delta = " << r.l_Delta << ", sigma(T) = " << r.sigma_final << ", drift = " << r.excess_area_drift
       << ", steps = " << r.counters.steps << "\n"

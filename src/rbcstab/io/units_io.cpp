@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/scene_file.hpp"
 
@@ -51,7 +52,7 @@ nlohmann::json units_json(const UnitsAnswer& a) {
 }
 
 std::string units_text(const UnitsAnswer& a) {
-  std::ostringstream out;
+  TextStream out;
   out << std::setprecision(6);
   out << "Physical inputs (SI):\n";
   const nlohmann::json given = to_json(a.cell);  // a named object: iterating a temporary's items() dangles
@@ -64,7 +65,7 @@ std::string units_text(const UnitsAnswer& a) {
   out << "Dimensionless numbers (paper Sec. II):\n";
   for (const NumberFormula& f : number_formulas()) {
     const double v = number_of(a, f.key);
-    std::ostringstream value;
+    TextStream value;
     value << std::setprecision(6);
     if (std::isnan(v))
       value << "-";

@@ -115,7 +115,8 @@ AsymptoticSigma asymptotic_sigma(const Scene& scene, const PredictorOptions& opt
       out.source = SigmaSource::equilibrium;
       return out;
     }
-    out.note = "the out-of-plane equilibrium is not stable";
+    out.note = out.equilibrium.stability_known() ? "the out-of-plane equilibrium is not stable"
+                                                 : "the out-of-plane equilibrium's eigenvalues are not finite";
   } else if (orbit.enabled) {
     // In plane the attractor is (mostly) a 2 pi-periodic orbit of the forced reduced system.
     const OrbitSigmaAverage a =

@@ -9,6 +9,7 @@
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/analysis/truncation.hpp"
+#include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
@@ -129,7 +130,7 @@ nlohmann::json to_json(const std::vector<ShearRateThreshold>& thresholds) {
 }
 
 std::string shear_rate_text(const std::vector<ShearRateThreshold>& thresholds) {
-  std::ostringstream out;
+  TextStream out;
   out << std::setprecision(6);
   for (const ShearRateThreshold& t : thresholds) {
     out << "             " << (t.orientation == "out_of_plane" ? "out of plane: " : "in plane:     ");
@@ -145,7 +146,7 @@ std::string shear_rate_text(const std::vector<ShearRateThreshold>& thresholds) {
 std::string summary_text(const SceneFile& file, const SimulationResult& r, const ScenePrediction& pr) {
   const Scene& s = file.scene;
   const Parameters& p = s.parameters;
-  std::ostringstream out;
+  TextStream out;
   out << std::setprecision(6);
   out << "rbcstab " << RBCSTAB_VERSION << " -- scene '" << s.name << "'\n\n";
   out << "Parameters   lambda = " << p.lambda << ", Delta = " << p.Delta << ", Delta0 = " << p.Delta0 << ", B = " << p.B
@@ -221,6 +222,7 @@ nlohmann::json thresholds_json(const SceneFile& file, const ThresholdReport& t) 
   const double alpha = p.alpha();
   const ScenePrediction& pr = t.prediction;
   nlohmann::json j;
+  j["scene"] = s.name;
   j["parameters"] = to_json(p);
   put_truncation(j, file);
   j["Lambda"] = p.Lambda();
@@ -264,7 +266,7 @@ nlohmann::json thresholds_json(const SceneFile& file, const ThresholdReport& t) 
   j["equilibrium"] = {{"r", eq.r},
                       {"Psi", eq.Psi},
                       {"mu", eq.mu},
-                      {"stable", eq.stable},
+                      {"stable", eq.stability_known() ? nlohmann::json(eq.stable) : nlohmann::json(nullptr)},
                       {"eigenvalues", {to_json(eq.eigenvalues[0]), to_json(eq.eigenvalues[1])}},
                       {"residual", eq.residual},
                       {"r_large_S", eq.r_large_S},
@@ -293,7 +295,7 @@ std::string thresholds_text(const SceneFile& file, const ThresholdReport& t) {
   const double alpha = p.alpha();
   const ScenePrediction& pr = t.prediction;
   const OutOfPlaneCriterion& crit = t.criterion;
-  std::ostringstream out;
+  TextStream out;
   out << std::setprecision(6);
   out << "Scene '" << s.name << "': lambda = " << p.lambda << ", Delta = " << p.Delta << ", Delta0 = " << p.Delta0
       << ", B = " << p.B << ", C = " << p.C << ", beta = " << s.beta << "\n";
@@ -316,8 +318,12 @@ std::string thresholds_text(const SceneFile& file, const ThresholdReport& t) {
   }
   const OutOfPlaneEquilibrium& eq = crit.equilibrium;
   out << "\nExact out-of-plane equilibrium (every S): r = " << eq.r << ", Psi = " << eq.Psi
-      << ", sigma_R = " << eq.sigma_R << ", " << (eq.stable ? "stable" : "unstable") << " (eigenvalues "
-      << eq.eigenvalues[0] << ", " << eq.eigenvalues[1] << ")\n";
+      << ", sigma_R = " << eq.sigma_R << ", ";
+  if (eq.stability_known())
+    out << (eq.stable ? "stable" : "unstable") << " (eigenvalues " << eq.eigenvalues[0] << ", " << eq.eigenvalues[1]
+        << ")\n";
+  else
+    out << "stability n/a (eigenvalues " << nonfinite_reason(p) << ")\n";
   out << "  S >> 1 (Eq. ss_red): r = " << eq.r_large_S << ", Psi = " << eq.Psi_large_S
       << ", <sigma_R> = " << to_text(eq.sigma_R_large_S) << "\n";
   out << "  unstable modes: exact " << mode_list(crit.unstable_exact) << "; S >> 1 " << mode_list(crit.unstable_large_S)

@@ -1,0 +1,51 @@
+#include "rbcstab/core/text.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+namespace rbcstab {
+namespace {
+
+class NanAsNa : public std::num_put<char> {
+ protected:
+  iter_type do_put(iter_type out, std::ios_base& io, char_type fill, double v) const override {
+    return std::isnan(v) ? put_na(out, io, fill) : std::num_put<char>::do_put(out, io, fill, v);
+  }
+  iter_type do_put(iter_type out, std::ios_base& io, char_type fill, long double v) const override {
+    return std::isnan(v) ? put_na(out, io, fill) : std::num_put<char>::do_put(out, io, fill, v);
+  }
+
+ private:
+  static iter_type put_na(iter_type out, std::ios_base& io, char_type fill) {
+    static constexpr std::string_view na = "n/a";
+    const std::streamsize width = io.width(0);
+    const std::size_t pad = width > std::streamsize(na.size()) ? std::size_t(width) - na.size() : 0;
+    const bool left = (io.flags() & std::ios_base::adjustfield) == std::ios_base::left;
+    if (!left) out = std::fill_n(out, pad, fill);
+    out = std::copy(na.begin(), na.end(), out);
+    if (left) out = std::fill_n(out, pad, fill);
+    return out;
+  }
+};
+
+}  // namespace
+
+const std::locale& text_locale() {
+  static const std::locale locale(std::locale::classic(), new NanAsNa);
+  return locale;
+}
+
+std::optional<double> read_number(const std::string& text) {
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  errno = 0;
+  const double x = std::strtod(begin, &end);
+  if (end == begin || end != begin + text.size() || (errno == ERANGE && std::isinf(x))) return std::nullopt;
+  return x;
+}
+
+}  // namespace rbcstab

@@ -1,0 +1,27 @@
+#pragma once
+// Text outputs for people: a value that is not a number prints as "n/a", never "nan", so the text says
+// "no value" in words and the line that gives the value's reason (a run's status, an input that overflows)
+// can stand beside it; infinities stay "inf" (the vesicle limit's S = inf is a value). Machine outputs have
+// their own rules: JSON null plus "<key>_reason", an empty CSV field (io/json.hpp).
+#include <locale>
+#include <optional>
+#include <sstream>
+#include <string>
+
+namespace rbcstab {
+
+// The classic locale with NaN written as "n/a" (padded to the stream's width like any number).
+const std::locale& text_locale();
+
+// An output string stream in text_locale(): every *_text renderer writes into one.
+class TextStream : public std::ostringstream {
+ public:
+  TextStream() { imbue(text_locale()); }
+};
+
+// How every number typed by a user is read (flags, l=value lists): the whole text as strtod reads it (decimal,
+// hexadecimal, inf, nan); a value below the smallest normal double (1e-320) is its nearest double, as in a
+// TOML scene. Nothing for an empty text, trailing characters or a value beyond the largest double (1e400).
+std::optional<double> read_number(const std::string& text);
+
+}  // namespace rbcstab
