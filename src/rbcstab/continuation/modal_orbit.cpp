@@ -8,6 +8,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/core/phasor.hpp"
 #include "rbcstab/integrate/integrator.hpp"
+#include "rbcstab/io/json.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/scene.hpp"
 
@@ -216,7 +217,7 @@ Eigen::VectorXd ModalForcedSystem::from_modal_model_state(const ModalModel& m, d
 }
 
 Eigen::VectorXd ModalForcedSystem::relaxed_state(const Scene& simulated, double T, const std::function<void()>& poll,
-                                                 double rtol) const {
+                                                 double rtol, std::string* failure) const {
   require(std::isfinite(T) && T > 0, "T", T, "a finite number > 0");
   simulated.validate();
   const ModalModel m(simulated.parameters, initial_state(simulated));
@@ -227,8 +228,11 @@ Eigen::VectorXd ModalForcedSystem::relaxed_state(const Scene& simulated, double 
   o.atol = 1e-13;
   o.poll = poll;
   const IntegrationResult r = integrate(m, y0, 0.0, grid, o, {});
-  if (r.status != IntegrationStatus::success)
-    throw InvalidArgument("T", "the relaxing simulation failed: " + r.reason);
+  if (r.status != IntegrationStatus::success) {
+    if (!failure) throw InvalidArgument("T", "the relaxing simulation failed: " + r.reason);
+    *failure = run_reason(r.status, r.reason, simulated.parameters);
+    return Eigen::VectorXd::Constant(Eigen::Index(dimension()), std::numeric_limits<double>::quiet_NaN());
+  }
   return from_modal_model_state(m, grid[0], r.y, start_parameter());
 }
 

@@ -67,9 +67,10 @@ class ModalForcedSystem final : public ForcedSystem {
 
   // The state at t = 2 pi k >= T of a ModalModel simulation of `simulated` (a start for the shooting
   // Newton on an attracting orbit; use this system built from total_area_scene(simulated)). poll: the
-  // integration's IntegratorOptions::poll (OrbitOptions::poll).
+  // integration's IntegratorOptions::poll (OrbitOptions::poll). A simulation that fails (an input that overflows)
+  // throws InvalidArgument("T", ...), or with `failure` given sets *failure to its reason and returns NaNs.
   Eigen::VectorXd relaxed_state(const Scene& simulated, double T, const std::function<void()>& poll = {},
-                                double rtol = 1e-11) const;
+                                double rtol = 1e-11, std::string* failure = nullptr) const;
 
  private:
   struct Direction {

@@ -23,6 +23,7 @@
 #include "rbcstab/continuation/ns_curve.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/io/json.hpp"
 
 namespace rbcstab {
 
@@ -175,10 +176,18 @@ class Orbit final : public SceneProblem {
   StartPoint start(const BranchSpec& spec) const override {
     const double p0 = sys_.start_parameter();
     Eigen::VectorXd x0;
-    if constexpr (std::is_same_v<System, ModalForcedSystem>)
-      x0 = sys_.relaxed_state(spec.scene, spec.relax_T, spec.orbit.poll);
-    else
+    if constexpr (std::is_same_v<System, ModalForcedSystem>) {
+      std::string failure;
+      x0 = sys_.relaxed_state(spec.scene, spec.relax_T, spec.orbit.poll, 1e-11, &failure);
+      if (!failure.empty()) {
+        StartPoint s = given_start(StartMethod::relaxed, x0, p0);
+        s.converged = false;
+        s.message = "the relaxing simulation failed: " + failure;
+        return s;
+      }
+    } else {
       x0 = sys_.relaxed_state(spec.relax_T, spec.orbit.poll);
+    }
     const OrbitRelaxation r = pr_.relax(x0, p0, spec.relax_tol, spec.relax_max_periods);
     StartPoint s = newton_start(pr_, StartMethod::relaxed, pr_.shooting_guess(r.x, p0), p0,
                                 std::is_same_v<System, ModalForcedSystem> ? "periodic orbit near the relaxed modal state"
@@ -844,6 +853,14 @@ SceneBranch continue_scene(const BranchSpec& spec) {
   r.problem_scene = problem_scene_of(spec);
   const auto sp = make_problem(r.spec, r.problem_scene);
   r.start = assessed_start(*sp, r.spec, r.problem_scene);
+  // An in-range input so extreme that the start overflows (lambda = 1e308) is a failed start, not bad input.
+  const std::string overflow = "the start state is " + nonfinite_reason(r.problem_scene.parameters);
+  if (r.start.converged && !r.start.x.allFinite()) {
+    r.start.converged = false;
+    r.start.message = overflow;
+  } else if (r.start.newton && !std::isfinite(r.start.residual_norm)) {
+    r.start.message = overflow;
+  }
   Branch b;
   if (r.start.converged && !r.start.refused) {
     ContinuationOptions engine = r.spec.engine;
