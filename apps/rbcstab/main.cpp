@@ -16,6 +16,8 @@ namespace {
 std::string flag_hint(CLI::App& app, const std::vector<rbcstab::cli::Command>& commands,
                       const rbcstab::InvalidArgument& e) {
   const std::string parameter = e.parameter();
+  // The flag overrides the file's value, but the file's own value was refused: the message says it came from there.
+  if (std::string(e.what()).find(parameter + " from the scene file") != std::string::npos) return "";
   for (CLI::App* sub : app.get_subcommands()) {
     std::string flag = "--" + parameter.substr(parameter.rfind('.') + 1);
     for (char& c : flag)

@@ -178,12 +178,22 @@ elseif(CASE STREQUAL "strict_parse")
   # TOML type errors echo the value.
   file(WRITE "${WORK}/t.toml" "[parameters]\nlambda = \"abc\"\n")
   expect_refused(ARGS --scene "${WORK}/t.toml" NAMES "parameters.lambda = \"abc\" must be a number")
+  file(WRITE "${WORK}/f.toml" "[run]\nL = 3.0\n")
+  expect_refused(ARGS --scene "${WORK}/f.toml" NAMES "run.L = 3.0 must be an integer")
+  file(REMOVE "${WORK}/f.toml")
   file(WRITE "${WORK}/m.toml" "[initial]\ndelta_l = { 3 = \"x\" }\n")
   expect_refused(ARGS --scene "${WORK}/m.toml" NAMES "initial.delta_l.3 = \"x\" must be a number")
   # A range that depends on another value names where each came from.
   file(WRITE "${WORK}/dt.toml" "[run]\ndt = 500.0\n")
   expect_refused(ARGS --scene "${WORK}/dt.toml" NAMES "dt = 500" "run.dt from the scene file" "run.T from --T")
-  file(REMOVE "${WORK}/t.toml" "${WORK}/m.toml" "${WORK}/dt.toml")
+  # A file's value refused while a flag overrides it: the message names the file, not the flag.
+  file(WRITE "${WORK}/tinf.toml" "[run]\nT = inf\n")
+  expect_refused(ARGS --scene "${WORK}/tinf.toml" NAMES "run.T = inf" "run.T from the scene file")
+  string(FIND "${err}" "error: --T:" pos)
+  if(NOT pos EQUAL -1)
+    message(FATAL_ERROR "a scene file's refused T is blamed on --T:\n${err}")
+  endif()
+  file(REMOVE "${WORK}/t.toml" "${WORK}/m.toml" "${WORK}/dt.toml" "${WORK}/tinf.toml")
 elseif(CASE STREQUAL "strict_parse_commands")
   # An empty value is refused, never read as 0 (a quoted "" survives only in execute_process itself).
   foreach(flag lambda Delta0 beta delta atol T L)

@@ -18,7 +18,11 @@ const double* as_number(const SceneTable::Item& item, double& scratch) {
 std::string shown(const SceneTable::Item& item) {
   if (const bool* b = std::get_if<bool>(&item)) return *b ? "true" : "false";
   if (const long long* i = std::get_if<long long>(&item)) return std::to_string(*i);
-  if (const double* d = std::get_if<double>(&item)) return format_value(*d);
+  if (const double* d = std::get_if<double>(&item)) {
+    // As TOML wrote it: a float with an integral value keeps its ".0" (L = 3.0 is refused for being a float).
+    const std::string text = format_value(*d);
+    return text.find_first_of(".eEn") == std::string::npos ? text + ".0" : text;
+  }
   return "\"" + std::get<std::string>(item) + "\"";
 }
 std::string shown(const SceneTable::Value& v) {
