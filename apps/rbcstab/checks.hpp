@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <sys/stat.h>
 #include <string>
 #include <vector>
 
@@ -92,10 +93,16 @@ inline CLI::Validator number_above(double bound, bool strict) {
       range, "RANGE");
 }
 // A file name or prefix: an empty one would write hidden files named only by their suffix (".csv").
+// An output prefix (PREFIX.csv, PREFIX.json, ...) that names a device, FIFO or socket is refused: "--out
+// /dev/null" would create /dev/null.csv beside the device, not discard the output.
 inline CLI::Validator output_name() {
   return CLI::Validator(
       [](std::string& text) -> std::string {
         if (text.empty()) return "'' is empty: must be a file name or prefix";
+        struct stat st {};
+        if (::stat(text.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode))
+          return "'" + text + "' is a device, FIFO or socket, and this flag takes a prefix (its files would be '" +
+                 text + ".<suffix>'): give a file name prefix";
         return {};
       },
       "", "PATH");

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <memory>
 
+#include "checks.hpp"
 #include "commands.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
@@ -54,7 +55,7 @@ static Runner add_merge(CLI::App& app) {
   app.add_option("inputs", o->inputs, "diagram JSON files of the shards (PREFIX.shardKofN.json)")
       ->required()
       ->check(CLI::ExistingFile);
-  app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")->capture_default_str();
+  app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")->check(output_name())->capture_default_str();
   app.add_flag("--allow-incomplete", o->allow_incomplete, "write the merge even if points are missing (exit 1)");
   app.add_flag("--json", o->json, "print one JSON object on stdout (output files, points, missing)");
   return [o] { return run(*o); };

@@ -136,6 +136,13 @@ string(REPEAT "#" 1100000 big)
 file(WRITE "${WORK}/big.toml" "${big}")
 expect_exit(2 "1048576 bytes" simulate --scene big.toml)
 expect_exit(2 "16777216 points" diagram --counts 1000000,1000000 --out grid)
+# An output prefix that names a device would put PREFIX.csv beside the device (/dev/null.csv): refused.
+expect_exit(2 "--out: '/dev/null' is a device, FIFO or socket, and this flag takes a prefix" diagram --counts 2,2 --out /dev/null)
+expect_exit(2 "--journal: '/dev/null' is a device" diagram --counts 2,2 --out grid --journal /dev/null)
+expect_exit(2 "--out: '/dev/null' is a device" trace --out /dev/null)
+if(EXISTS "/dev/null.csv" OR EXISTS "/dev/null.json" OR EXISTS "/dev/null.journal")
+  message(FATAL_ERROR "a file was written beside /dev/null")
+endif()
 
 # Numbers as typed: one beyond the largest double is refused as such; one below the smallest normal double is its
 # nearest double in every flag, list and l=value item (std::stod refused it, and a range list crashed on it).
