@@ -36,7 +36,8 @@ inline std::string number_error(const std::string& text) {
   char* end = nullptr;
   errno = 0;
   const double x = std::strtod(text.c_str(), &end);
-  if (errno == ERANGE && std::isinf(x) && end == text.c_str() + text.size()) return "'" + text + "' is out of range: beyond the largest double (1.8e308)";
+  if (errno == ERANGE && std::isinf(x) && end == text.c_str() + text.size())
+    return "'" + text + "' is out of range: beyond the largest double (1.8e308)";
   return "'" + text + "' is not a number";
 }
 inline bool parse_integer(const std::string& text, long long& v) {

@@ -24,7 +24,9 @@ struct OutOfPlaneEquilibrium {
   bool stable = false;          // both eigenvalues have negative real part
   // False when the eigenvalues are not finite (inputs so extreme that the Jacobian overflows): `stable` then
   // says nothing and the outputs write "n/a" / null with the reason.
-  bool stability_known() const { return std::isfinite(std::abs(eigenvalues[0])) && std::isfinite(std::abs(eigenvalues[1])); }
+  bool stability_known() const {
+    return std::isfinite(std::abs(eigenvalues[0])) && std::isfinite(std::abs(eigenvalues[1]));
+  }
   double residual = 0;          // max |rhs| of ReducedModel at the equilibrium (an O(eps) check)
   // The paper's S >> 1 forms (Eq. ss_red): r_ss, Psi_ss, <sigma_R^-+> (Eq. ss_st_red).
   double r_large_S = 0, Psi_large_S = 0;

@@ -854,12 +854,10 @@ SceneBranch continue_scene(const BranchSpec& spec) {
   const auto sp = make_problem(r.spec, r.problem_scene);
   r.start = assessed_start(*sp, r.spec, r.problem_scene);
   // An in-range input so extreme that the start overflows (lambda = 1e308) is a failed start, not bad input.
-  const std::string overflow = "the start state is " + nonfinite_reason(r.problem_scene.parameters);
-  if (r.start.converged && !r.start.x.allFinite()) {
+  const bool nonfinite_guess = r.start.converged && !r.start.x.allFinite();
+  if (nonfinite_guess || (r.start.newton && !std::isfinite(r.start.residual_norm))) {
     r.start.converged = false;
-    r.start.message = overflow;
-  } else if (r.start.newton && !std::isfinite(r.start.residual_norm)) {
-    r.start.message = overflow;
+    r.start.message = "the start state is " + nonfinite_reason(r.problem_scene.parameters);
   }
   Branch b;
   if (r.start.converged && !r.start.refused) {
