@@ -2,9 +2,7 @@
 // Range checks for numeric flags whose messages read like the library's ("--step: -1 must be > 0").
 // (CLI11's PositiveNumber prints its bound as the 300-digit DBL_MAX.)
 #include <CLI/CLI.hpp>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
 #include <optional>
 #include <sys/stat.h>
 #include <string>
@@ -30,15 +28,6 @@ inline bool parse_number(const std::string& text, double& v) {
   const std::optional<double> x = read_number(text);
   if (x) v = *x;
   return x.has_value();
-}
-// Why text is no number: beyond the doubles' range (1e400) or not a number at all.
-inline std::string number_error(const std::string& text) {
-  char* end = nullptr;
-  errno = 0;
-  const double x = std::strtod(text.c_str(), &end);
-  if (errno == ERANGE && std::isinf(x) && end == text.c_str() + text.size())
-    return "'" + text + "' is out of range: beyond the largest double (1.8e308)";
-  return "'" + text + "' is not a number";
 }
 inline bool parse_integer(const std::string& text, long long& v) {
   return parse_whole(text, v, [](const std::string& t, std::size_t* pos) { return std::stoll(t, pos); });

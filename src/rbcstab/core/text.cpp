@@ -39,13 +39,27 @@ const std::locale& text_locale() {
   return locale;
 }
 
-std::optional<double> read_number(const std::string& text) {
+namespace {
+enum class Reading { number, not_a_number, beyond_range };
+Reading read(const std::string& text, double& x) {
   const char* begin = text.c_str();
   char* end = nullptr;
   errno = 0;
-  const double x = std::strtod(begin, &end);
-  if (end == begin || end != begin + text.size() || (errno == ERANGE && std::isinf(x))) return std::nullopt;
-  return x;
+  x = std::strtod(begin, &end);
+  if (end == begin || end != begin + text.size()) return Reading::not_a_number;
+  return errno == ERANGE && std::isinf(x) ? Reading::beyond_range : Reading::number;
+}
+}  // namespace
+
+std::optional<double> read_number(const std::string& text) {
+  double x = 0;
+  return read(text, x) == Reading::number ? std::optional<double>(x) : std::nullopt;
+}
+
+std::string number_error(const std::string& text) {
+  double x = 0;
+  return read(text, x) == Reading::beyond_range ? "'" + text + "' is out of range: beyond the largest double (1.8e308)"
+                                                : "'" + text + "' is not a number";
 }
 
 }  // namespace rbcstab

@@ -23,5 +23,8 @@ class TextStream : public std::ostringstream {
 // hexadecimal, inf, nan); a value below the smallest normal double (1e-320) is its nearest double, as in a
 // TOML scene. Nothing for an empty text, trailing characters or a value beyond the largest double (1e400).
 std::optional<double> read_number(const std::string& text);
+// Why read_number refused text: "'1e400' is out of range: beyond the largest double (1.8e308)" or "'abc' is not a
+// number".
+std::string number_error(const std::string& text);
 
 }  // namespace rbcstab

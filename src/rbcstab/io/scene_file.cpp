@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <nlohmann/json.hpp>
@@ -292,22 +293,18 @@ std::map<int, double> parse_modes(const std::vector<std::string>& items, const s
       const std::string pair = item.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
       start = comma == std::string::npos ? std::string::npos : comma + 1;
       const auto eq = pair.find('=');
-      std::size_t lpos = 0, vpos = 0;
+      std::size_t lpos = 0;
       int l = 0;
-      double v = 0;
+      std::optional<double> v;
       try {
         if (eq == std::string::npos || eq == 0) throw std::invalid_argument(pair);
         l = std::stoi(pair.substr(0, eq), &lpos);
-        const std::string value = pair.substr(eq + 1);
-        const std::optional<double> x = read_number(value);
-        v = x.value_or(0.0);
-        vpos = x ? value.size() : 0;
+        v = read_number(pair.substr(eq + 1));
       } catch (const std::exception&) {
-        lpos = vpos = 0;
+        lpos = 0;
       }
-      if (eq == std::string::npos || lpos != eq || vpos == 0 || eq + 1 + vpos != pair.size())
-        throw InvalidArgument(flag, flag + " = '" + item + "'" + form);
-      if (!out.emplace(l, v).second)
+      if (eq == std::string::npos || lpos != eq || !v) throw InvalidArgument(flag, flag + " = '" + item + "'" + form);
+      if (!out.emplace(l, *v).second)
         throw InvalidArgument(flag, flag + " = '" + item + "' repeats mode l = " + std::to_string(l) +
                                         ": give each mode once");
     } while (start != std::string::npos);
