@@ -302,7 +302,7 @@ static Runner add_bench(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"bench", "Speed against accuracy: work-precision, truncation in L, threshold precision",
+const RegisterCommand kRegisterBench{"bench", "Speed against accuracy: work-precision, truncation in L, threshold precision",
                                 add_bench, 80};
 }  // namespace
 

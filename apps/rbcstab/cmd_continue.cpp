@@ -216,7 +216,7 @@ static Runner add_continue(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"continue", "Continue an equilibrium or periodic-orbit branch in one parameter (LP/BP/HB, LPC/PD/NS), or a special point's curve in two",
+const RegisterCommand kRegisterContinue{"continue", "Continue an equilibrium or periodic-orbit branch in one parameter (LP/BP/HB, LPC/PD/NS), or a special point's curve in two",
                                 add_continue, 40, {{"initial_step", "--step"}, {"p_min", "--min"}, {"p_max", "--max"}}};
 }  // namespace
 

@@ -27,8 +27,8 @@
 namespace rbcstab::cli {
 
 namespace {
-std::atomic<bool> g_stop{false};
-extern "C" void on_signal(int) { g_stop.store(true); }
+std::atomic<bool> g_diagram_stop{false};
+extern "C" void on_signal(int) { g_diagram_stop.store(true); }
 
 struct DiagramCliOptions {
   SceneOptions scene;
@@ -58,7 +58,7 @@ int run(const DiagramCliOptions& o) {
     ro.shard = Shard{mpi.rank(), mpi.size()};
   }
   ro.sync_interval = o.sync_interval;
-  ro.stop = &g_stop;
+  ro.stop = &g_diagram_stop;
   const std::string suffix = ro.shard.n > 1 ? ".shard" + std::to_string(ro.shard.k) + "of" + std::to_string(ro.shard.n) : "";
   const std::string prefix = mpi.size() > 1 ? o.out : o.out + suffix;
   if (!o.no_journal) ro.journal = (o.journal.empty() ? o.out : o.journal) + suffix + ".journal";
@@ -148,7 +148,7 @@ static Runner add_diagram(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"diagram", "Phase diagram by direct simulation over two parameter axes", add_diagram, 40};
+const RegisterCommand kRegisterDiagram{"diagram", "Phase diagram by direct simulation over two parameter axes", add_diagram, 40};
 }  // namespace
 
 }  // namespace rbcstab::cli

@@ -61,7 +61,7 @@ static Runner add_floquet(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"floquet", "Leading Floquet multipliers of the full model along a scene's orbit",
+const RegisterCommand kRegisterFloquet{"floquet", "Leading Floquet multipliers of the full model along a scene's orbit",
                                 add_floquet, 33};
 }  // namespace
 

@@ -62,7 +62,7 @@ static Runner add_merge(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"merge", "Merge the shard outputs of one diagram", add_merge, 41};
+const RegisterCommand kRegisterMerge{"merge", "Merge the shard outputs of one diagram", add_merge, 41};
 }  // namespace
 
 }  // namespace rbcstab::cli

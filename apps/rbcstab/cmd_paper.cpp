@@ -23,8 +23,8 @@ struct PaperCliOptions {
   ProgressOutput progress;
 };
 
-std::atomic<bool> g_stop{false};
-extern "C" void on_paper_signal(int) { g_stop.store(true); }
+std::atomic<bool> g_paper_stop{false};
+extern "C" void on_paper_signal(int) { g_paper_stop.store(true); }
 
 int run(PaperCliOptions& o) {
   PaperOptions p = o.paper;
@@ -41,7 +41,7 @@ int run(PaperCliOptions& o) {
       std::cerr.unsetf(std::ios::floatfield);
     };
   }
-  p.stop = &g_stop;
+  p.stop = &g_paper_stop;
   std::signal(SIGINT, on_paper_signal);
   std::signal(SIGTERM, on_paper_signal);
   const PaperResult r = build_paper(p);
@@ -106,7 +106,7 @@ static Runner add_paper(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"paper", "Compute and draw every figure of the paper with its claims checked (one HTML page)",
+const RegisterCommand kRegisterPaper{"paper", "Compute and draw every figure of the paper with its claims checked (one HTML page)",
                                 add_paper, 61};
 }  // namespace
 

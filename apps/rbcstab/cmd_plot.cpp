@@ -81,7 +81,7 @@ static Runner add_plot(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"plot", "Draw a bifurcation diagram (PNG + JSON of what was drawn) from branch JSONs of `continue`",
+const RegisterCommand kRegisterPlot{"plot", "Draw a bifurcation diagram (PNG + JSON of what was drawn) from branch JSONs of `continue`",
                                 add_plot, 45};
 }  // namespace
 

@@ -71,7 +71,7 @@ static Runner add_post(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"post", "Post-instability excess area Delta~2: predicted (Eq. ss) vs simulated", add_post, 31};
+const RegisterCommand kRegisterPost{"post", "Post-instability excess area Delta~2: predicted (Eq. ss) vs simulated", add_post, 31};
 }  // namespace
 
 }  // namespace rbcstab::cli

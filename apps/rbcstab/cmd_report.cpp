@@ -33,8 +33,8 @@ struct ReportCliOptions {
   ProgressOutput progress;
 };
 
-std::atomic<bool> g_stop{false};
-extern "C" void on_report_signal(int) { g_stop.store(true); }
+std::atomic<bool> g_report_stop{false};
+extern "C" void on_report_signal(int) { g_report_stop.store(true); }
 
 // A scene file with a [diagram], [fig6e] or [continuation] table: compute the panel, then draw it.
 int run_panel(ReportCliOptions& o, const SceneFile& sf, ReportOptions& ro) {
@@ -66,7 +66,7 @@ int run_panel(ReportCliOptions& o, const SceneFile& sf, ReportOptions& ro) {
                 << p.rate << " points/s, ETA " << (p.rate > 0 ? duration(p.eta) : std::string("?")) << "\n";
       std::cerr.unsetf(std::ios::floatfield);
     };
-  o.panel.stop = &g_stop;
+  o.panel.stop = &g_report_stop;
   std::signal(SIGINT, on_report_signal);
   std::signal(SIGTERM, on_report_signal);
   const PanelReportResult r = build_panel_report(sf, o.panel, ro);
@@ -201,7 +201,7 @@ static Runner add_report(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"report", "Run a scene (or a figure panel: [diagram], [fig6e], [continuation]) and write a report folder",
+const RegisterCommand kRegisterReport{"report", "Run a scene (or a figure panel: [diagram], [fig6e], [continuation]) and write a report folder",
                                 add_report, 60};
 }  // namespace
 

@@ -88,7 +88,7 @@ static Runner add_shape(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"shape", "Write the cell's 3-D shape rho(theta, phi) at chosen times (VTK, VTP, PLY, CSV)",
+const RegisterCommand kRegisterShape{"shape", "Write the cell's 3-D shape rho(theta, phi) at chosen times (VTK, VTP, PLY, CSV)",
                                 add_shape, 61};
 }  // namespace
 

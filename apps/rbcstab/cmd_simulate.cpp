@@ -50,7 +50,7 @@ static Runner add_simulate(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"simulate", "Integrate a scene and report the excess-area redistribution", add_simulate, 20};
+const RegisterCommand kRegisterSimulate{"simulate", "Integrate a scene and report the excess-area redistribution", add_simulate, 20};
 }  // namespace
 
 }  // namespace rbcstab::cli

@@ -41,7 +41,7 @@ static Runner add_summary(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"summary", "The main job: a readable summary of a scene (default: the paper's Fig. 3 case)", add_summary, 10};
+const RegisterCommand kRegisterSummary{"summary", "The main job: a readable summary of a scene (default: the paper's Fig. 3 case)", add_summary, 10};
 }  // namespace
 
 }  // namespace rbcstab::cli

@@ -38,7 +38,7 @@ static Runner add_thresholds(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"thresholds", "Instability thresholds and predicted unstable modes of a scene (no simulation)",
+const RegisterCommand kRegisterThresholds{"thresholds", "Instability thresholds and predicted unstable modes of a scene (no simulation)",
                                 add_thresholds, 30};
 }  // namespace
 

@@ -116,7 +116,7 @@ static Runner add_trace(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"trace", "Trace the stability boundary of a parameter plane as curves", add_trace, 42};
+const RegisterCommand kRegisterTrace{"trace", "Trace the stability boundary of a parameter plane as curves", add_trace, 42};
 }  // namespace
 
 }  // namespace rbcstab::cli

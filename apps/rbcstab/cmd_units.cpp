@@ -53,7 +53,7 @@ static Runner add_units(CLI::App& app) {
 }
 
 namespace {
-const RegisterCommand kRegister{"units",
+const RegisterCommand kRegisterUnits{"units",
                                 "Physical units (shear rate, viscosities, moduli, size) to the paper's dimensionless "
                                 "numbers and back",
                                 add_units, 95};

@@ -27,6 +27,9 @@ py::array_t<double> own(std::vector<double>&& v);
 // Call it only on the thread that released the GIL.
 std::function<void()> signal_poll();
 
+// The Python type name of v ("float", "str"), for TypeError messages.
+std::string type_name(const py::handle& v);
+
 // The SceneFile behind a rbcstab.Scene (TypeError for anything else).
 const SceneFile& scene_file(const py::handle& scene);
 

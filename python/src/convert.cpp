@@ -30,6 +30,8 @@ py::object to_python(const nlohmann::json& j) {
   throw std::logic_error("to_python: a binary JSON value");
 }
 
+std::string type_name(const py::handle& v) { return py::str(py::type::handle_of(v).attr("__name__")); }
+
 py::array_t<double> own(std::vector<double>&& v) {
   auto* heap = new std::vector<double>(std::move(v));
   py::capsule owner(heap, [](void* p) { delete static_cast<std::vector<double>*>(p); });

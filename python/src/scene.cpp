@@ -29,7 +29,6 @@ std::string allowed_keywords() {
   return out;
 }
 
-std::string type_name(const py::handle& v) { return py::str(py::type::handle_of(v).attr("__name__")); }
 
 [[noreturn]] void type_error(const std::string& keyword, const std::string& want, const py::handle& v) {
   throw py::type_error("Scene: " + keyword + " must be " + want + ", got " + type_name(v) + " " +

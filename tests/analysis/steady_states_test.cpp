@@ -41,13 +41,13 @@ double sigma_R_printed(const Parameters& p, double r, double Psi) {
          2 * p.B * inv_C / 3 * std::sqrt(p.Delta0 / p.Delta) * (w - std::sqrt(p.Delta / p.Delta0));
 }
 
-struct Case {
+struct SteadyStateCase {
   double Lambda, S;
 };
-const Case kCases[] = {{0.19, 2}, {1.9, 2}, {0.7, 20}, {1, 5}, {3, 0.3}, {0.5, 1e3}, {1.5, 1e6}, {0.9, 0.05}};
+const SteadyStateCase kCases[] = {{0.19, 2}, {1.9, 2}, {0.7, 20}, {1, 5}, {3, 0.3}, {0.5, 1e3}, {1.5, 1e6}, {0.9, 0.05}};
 
 TEST(OutOfPlaneEquilibrium, SatisfiesQuadraticAndOde) {
-  for (const Case& c : kCases) {
+  for (const SteadyStateCase& c : kCases) {
     const Parameters p = with_Lambda_S(c.Lambda, c.S);
     ASSERT_NEAR(p.Lambda(), c.Lambda, 1e-12);
     const OutOfPlaneEquilibrium eq = out_of_plane_equilibrium(p);
@@ -63,7 +63,7 @@ TEST(OutOfPlaneEquilibrium, SatisfiesQuadraticAndOde) {
 }
 
 TEST(OutOfPlaneEquilibrium, IsTheLongTimeStateOfIntegration) {
-  for (const Case& c : kCases) {
+  for (const SteadyStateCase& c : kCases) {
     const Parameters p = with_Lambda_S(c.Lambda, c.S);
     const OutOfPlaneEquilibrium eq = out_of_plane_equilibrium(p);
     ASSERT_TRUE(eq.stable) << c.Lambda << " " << c.S;
@@ -97,7 +97,7 @@ TEST(OutOfPlaneEquilibrium, IsTheLongTimeStateOfIntegration) {
 
 // Eigenvalues on the tangent plane against a central-difference Jacobian of the rhs (no analytic Jacobian used).
 TEST(OutOfPlaneEquilibrium, StabilityMatchesFiniteDifferences) {
-  for (const Case& c : kCases) {
+  for (const SteadyStateCase& c : kCases) {
     const Parameters p = with_Lambda_S(c.Lambda, c.S);
     const OutOfPlaneEquilibrium eq = out_of_plane_equilibrium(p);
     Scene s;
@@ -183,7 +183,7 @@ TEST(OutOfPlaneEquilibrium, ExactVersusLargeSTension) {
 // Exact identity at any equilibrium: the f_{2,0} balance mu w = -kappa gives
 // sigma_R = -6 + (2 alpha/3)(sqrt(Delta0/Delta)/w - 1) (docs/theory.md), for every S.
 TEST(OutOfPlaneEquilibrium, TensionFromTheWBalance) {
-  for (const Case& c : kCases) {
+  for (const SteadyStateCase& c : kCases) {
     const Parameters p = with_Lambda_S(c.Lambda, c.S);
     if (std::isinf(c.S)) continue;
     const OutOfPlaneEquilibrium eq = out_of_plane_equilibrium(p);

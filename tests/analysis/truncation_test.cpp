@@ -46,12 +46,12 @@ SimulationResult run_at(Scene s, int L, double extra_area = 0) {
   return simulate(s, o);
 }
 
-struct Case {
+struct TruncationCase {
   const char* name;
   Scene scene;
 };
 
-class TruncationStudy : public ::testing::TestWithParam<Case> {};
+class TruncationStudy : public ::testing::TestWithParam<TruncationCase> {};
 
 TEST_P(TruncationStudy, ChosenLReproducesL40WithinTolerance) {
   const Scene& s = GetParam().scene;
@@ -91,13 +91,13 @@ TEST_P(TruncationStudy, ChosenLReproducesL40WithinTolerance) {
 
 INSTANTIATE_TEST_SUITE_P(
     Scenes, TruncationStudy,
-    ::testing::Values(Case{"fig3_op", base(5, 2, 0.04, 1e-3, 1e-3)},
-                      Case{"fig3_ip", base(5, 2, 0.04, std::numbers::pi / 2, 1e-3)},
-                      Case{"stiff", base(1, std::exp(-1.0), std::exp(-5.5), 1e-3, 1e-3)},
-                      Case{"fig6_lambda1_delta1em10", base(1, std::exp(2.0), std::exp(-4.0), 1e-3, 1e-10)},
-                      Case{"fig6_cd_lambda1", base(1, 2, 0.04, 1e-3, 1e-3)},
-                      Case{"alpha500", base(5, 2, 0.004, 1e-3, 1e-3)}),
-    [](const ::testing::TestParamInfo<Case>& i) { return std::string(i.param.name); });
+    ::testing::Values(TruncationCase{"fig3_op", base(5, 2, 0.04, 1e-3, 1e-3)},
+                      TruncationCase{"fig3_ip", base(5, 2, 0.04, std::numbers::pi / 2, 1e-3)},
+                      TruncationCase{"stiff", base(1, std::exp(-1.0), std::exp(-5.5), 1e-3, 1e-3)},
+                      TruncationCase{"fig6_lambda1_delta1em10", base(1, std::exp(2.0), std::exp(-4.0), 1e-3, 1e-10)},
+                      TruncationCase{"fig6_cd_lambda1", base(1, 2, 0.04, 1e-3, 1e-3)},
+                      TruncationCase{"alpha500", base(5, 2, 0.004, 1e-3, 1e-3)}),
+    [](const ::testing::TestParamInfo<TruncationCase>& i) { return std::string(i.param.name); });
 
 TEST(Truncation, StiffSceneNeedsItsSurvivingMode) {
   // Measured with `rbcstab bench truncation`: at L = 3 this scene's verdict is l_Delta = 3, at L >= 4 it is 4.

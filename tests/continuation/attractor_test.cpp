@@ -13,12 +13,12 @@
 #include "rbcstab/continuation/attractor.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
 namespace {
 
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 // x' = A x + Re(c e^{it}): the periodic orbit is x*(t) = Re((iI - A)^{-1} c e^{it}), the monodromy e^{2 pi A}.
 class LinearForced final : public ForcedSystem {

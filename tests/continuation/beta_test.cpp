@@ -20,6 +20,7 @@
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
@@ -29,7 +30,6 @@
 namespace rbcstab {
 namespace {
 
-constexpr double kTwoPi = 2 * M_PI;
 
 Scene fig2(double Delta, double beta = M_PI / 2) { return test::fig2_in_plane(Delta, beta); }
 

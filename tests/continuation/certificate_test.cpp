@@ -24,13 +24,13 @@
 #include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/model/coefficients.hpp"
 
 namespace rbcstab {
 namespace {
 
 using P = ContinuationParameter;
-constexpr double kTwoPi = 2 * M_PI;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 // Worst ratio of actual error to estimate over a run (printed for docs/continuation.md).

@@ -20,6 +20,7 @@
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/reduced_model.hpp"
@@ -29,7 +30,6 @@ namespace {
 
 using P = ContinuationParameter;
 using test::invalid_parameter;
-constexpr double kTwoPi = 2 * M_PI;
 
 // ---- the generic mechanism on a closed form
 

@@ -149,7 +149,7 @@ TEST(FloquetImplicit, ActionAtL30MatchesExactMonodromyAndConservesArea) {
   EXPECT_LT(rel_error(got_e, want), 1e-7);
   // Accuracy-bound, not stability-bound: fewer steps than |Upsilon_30| T ~ 1000 would allow rk8pd.
   EXPECT_LT(implicit_action.counters().steps, 4000u);
-  const double grid[1] = {o.t0 + test::kTwoPi};
+  const double grid[1] = {o.t0 + kTwoPi};
   IntegratorOptions io;
   io.rtol = 1e-12;
   io.atol = 1e-14;
@@ -206,8 +206,8 @@ TEST(SceneFloquet, InPlaneSceneMatchesExactMultipliers) {
   const Scene s = test::ellipsoidal_scene(L, std::numbers::pi / 2);
   const SceneFloquetResult r = scene_floquet_multipliers(s, {});
   ASSERT_EQ(r.status, SceneFloquetStatus::converged) << r.message;
-  EXPECT_DOUBLE_EQ(r.period, test::kTwoPi);  // in-plane rest shape: only even m
-  EXPECT_DOUBLE_EQ(r.t0, 30 * test::kTwoPi);
+  EXPECT_DOUBLE_EQ(r.period, kTwoPi);  // in-plane rest shape: only even m
+  EXPECT_DOUBLE_EQ(r.t0, 30 * kTwoPi);
   EXPECT_EQ(r.dimension, full_dimension(L));
   EXPECT_EQ(r.stepper, Stepper::rk8pd);
   EXPECT_LT(r.periodicity_defect, 1e-6);  // 30 periods relax onto the attracting orbit
@@ -229,7 +229,7 @@ TEST(SceneFloquet, OddMRestShapeDoublesThePeriodAndBadInputIsRefused) {
   o.max_periodicity_defect = std::numeric_limits<double>::infinity();
   const SceneFloquetResult r = scene_floquet_multipliers(s, o);
   ASSERT_EQ(r.status, SceneFloquetStatus::converged) << r.message;
-  EXPECT_DOUBLE_EQ(r.period, 2 * test::kTwoPi);
+  EXPECT_DOUBLE_EQ(r.period, 2 * kTwoPi);
   o.relax_periods = -1;
   EXPECT_THROW(scene_floquet_multipliers(s, o), InvalidArgument);
   o.relax_periods = 0;

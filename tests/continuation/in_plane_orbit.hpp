@@ -22,11 +22,11 @@
 
 #include "full_model_fixture.hpp"
 #include "rbcstab/continuation/monodromy.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 
 namespace rbcstab::test {
 
-inline constexpr double kTwoPi = 2 * std::numbers::pi;
 
 // An in-plane orbit state at t0 = 2 pi k: the reduced model (exact for ellipsoidal states) relaxed over
 // 30 forcing periods, embedded with f_{l>=3} = 0.

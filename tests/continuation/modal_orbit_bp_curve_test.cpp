@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "rbcstab/continuation/branch_point_curve.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
@@ -27,7 +28,6 @@
 namespace rbcstab {
 namespace {
 
-constexpr double kTwoPi = 2 * M_PI;
 
 using test::curve_point;
 

@@ -15,13 +15,13 @@
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
 
 namespace rbcstab {
 namespace {
 
-constexpr double kTwoPi = 2 * M_PI;
 
 // The paper's in-plane scenes (Fig. 2 / Fig. 6 parameters) at a tilt beta.
 Scene in_plane(double lambda, double beta, double delta, int L) {

@@ -8,6 +8,7 @@
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/ns_curve.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "continuation/ns_fixtures.hpp"
 
@@ -15,7 +16,6 @@ namespace rbcstab {
 namespace {
 using ns_fixtures::Forced3;
 
-constexpr double kTwoPi = 2 * M_PI;
 
 constexpr double kOmega = 0.3;
 

@@ -14,6 +14,7 @@
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "continuation/fig2_fixture.hpp"
@@ -21,7 +22,6 @@
 namespace rbcstab {
 namespace {
 
-constexpr double kTwoPi = 2 * M_PI;
 
 // Forced saddle-node: x1' = p - (x1 - sin t)^2 + cos t, x2' = -x2 + sin t. With u = x1 - sin t,
 // u' = p - u^2: orbits x1 = sin t +- sqrt(p), x2 = (sin t - cos t)/2, multipliers e^{-+4 pi sqrt(p)}

@@ -8,16 +8,17 @@
 #include "integrate/run_helpers.hpp"
 #include "model/test_scenes.hpp"
 
+#include "rbcstab/core/constants.hpp"
+
 namespace rbcstab {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 using testing::fig2_scene;
 using testing::fig3_scene;
 using testing::max_deviation;
 using testing::run;
 
-struct Case {
+struct ConservationCase {
   std::string name;
   ModelLevel level;
   Stepper stepper;
@@ -31,12 +32,12 @@ Scene scene_for(ModelLevel level) {
   return s;
 }
 
-void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
+void PrintTo(const ConservationCase& c, std::ostream* os) { *os << c.name; }
 
-class Conservation : public ::testing::TestWithParam<Case> {};
+class Conservation : public ::testing::TestWithParam<ConservationCase> {};
 
 TEST_P(Conservation, DriftIsSmallAgainstRtol) {
-  const Case& c = GetParam();
+  const ConservationCase& c = GetParam();
   const Scene s = scene_for(c.level);
   for (double rtol : {1e-6, 1e-9}) {
     const SimulationResult r = run(s, c.level, rtol, c.stepper);
@@ -53,7 +54,7 @@ TEST_P(Conservation, DriftIsSmallAgainstRtol) {
 }
 
 TEST_P(Conservation, ErrorDecreasesWithRtol) {
-  const Case& c = GetParam();
+  const ConservationCase& c = GetParam();
   const Scene s = scene_for(c.level);
   const SimulationResult ref = run(s, c.level, 1e-12, c.level == ModelLevel::full ? Stepper::rk8pd : c.stepper);
   ASSERT_EQ(ref.status, IntegrationStatus::success) << ref.reason;
@@ -82,18 +83,18 @@ TEST_P(Conservation, ErrorDecreasesWithRtol) {
 
 INSTANTIATE_TEST_SUITE_P(
     LevelsAndSteppers, Conservation,
-    ::testing::Values(Case{"full_rk8pd", ModelLevel::full, Stepper::rk8pd},
-                      Case{"full_rosenbrock", ModelLevel::full, Stepper::rosenbrock},
-                      Case{"full_msbdf", ModelLevel::full, Stepper::msbdf},
-                      Case{"modal_rk8pd", ModelLevel::modal, Stepper::rk8pd},
-                      Case{"modal_rkck", ModelLevel::modal, Stepper::rkck},
-                      Case{"modal_rosenbrock", ModelLevel::modal, Stepper::rosenbrock},
-                      Case{"modal_msbdf", ModelLevel::modal, Stepper::msbdf},
-                      Case{"modal_bsimp", ModelLevel::modal, Stepper::bsimp},
-                      Case{"reduced_rk8pd", ModelLevel::reduced, Stepper::rk8pd},
-                      Case{"reduced_rosenbrock", ModelLevel::reduced, Stepper::rosenbrock},
-                      Case{"reduced_msbdf", ModelLevel::reduced, Stepper::msbdf}),
-    [](const ::testing::TestParamInfo<Case>& param_info) { return param_info.param.name; });
+    ::testing::Values(ConservationCase{"full_rk8pd", ModelLevel::full, Stepper::rk8pd},
+                      ConservationCase{"full_rosenbrock", ModelLevel::full, Stepper::rosenbrock},
+                      ConservationCase{"full_msbdf", ModelLevel::full, Stepper::msbdf},
+                      ConservationCase{"modal_rk8pd", ModelLevel::modal, Stepper::rk8pd},
+                      ConservationCase{"modal_rkck", ModelLevel::modal, Stepper::rkck},
+                      ConservationCase{"modal_rosenbrock", ModelLevel::modal, Stepper::rosenbrock},
+                      ConservationCase{"modal_msbdf", ModelLevel::modal, Stepper::msbdf},
+                      ConservationCase{"modal_bsimp", ModelLevel::modal, Stepper::bsimp},
+                      ConservationCase{"reduced_rk8pd", ModelLevel::reduced, Stepper::rk8pd},
+                      ConservationCase{"reduced_rosenbrock", ModelLevel::reduced, Stepper::rosenbrock},
+                      ConservationCase{"reduced_msbdf", ModelLevel::reduced, Stepper::msbdf}),
+    [](const ::testing::TestParamInfo<ConservationCase>& param_info) { return param_info.param.name; });
 
 }  // namespace
 }  // namespace rbcstab

@@ -10,10 +10,11 @@
 #include "integrate/run_helpers.hpp"
 #include "model/test_scenes.hpp"
 
+#include "rbcstab/core/constants.hpp"
+
 namespace rbcstab {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 using testing::all_finite;
 using testing::fig2_scene;
 using testing::fig3_scene;

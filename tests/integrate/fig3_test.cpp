@@ -8,12 +8,12 @@
 
 #include "integrate/run_helpers.hpp"
 #include "model/test_scenes.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/model/coefficients.hpp"
 
 namespace rbcstab {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 using testing::fig3_scene;
 using testing::run;
 

@@ -12,6 +12,7 @@
 
 #include "integrate/run_helpers.hpp"
 #include "model/test_scenes.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/full_model.hpp"
@@ -20,7 +21,6 @@
 namespace rbcstab {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 constexpr double kRtol = 1e-10;
 constexpr double kGrowth = 1e3;  // global error / rtol allowed (see the header comment)
 using testing::fig2_scene;

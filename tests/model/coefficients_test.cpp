@@ -5,6 +5,7 @@
 #include <complex>
 #include <numbers>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/parameters.hpp"
@@ -12,7 +13,6 @@
 namespace rbcstab {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Each coefficient is a ratio of integer polynomials in l (< 1e13 for l <= 100) evaluated in
 // double: a handful of roundings, so identities hold to a few ulps. 1e-13 relative leaves margin.
 constexpr double kRel = 1e-13;

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "model/test_scenes.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/full_model.hpp"
@@ -18,7 +19,6 @@
 namespace rbcstab {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 using testing::fig2_scene;
 using testing::fig3_scene;
 using testing::generic_scene;

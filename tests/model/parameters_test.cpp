@@ -5,6 +5,7 @@
 #include <numbers>
 #include <string>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/parameters.hpp"
 #include "rbcstab/model/scene.hpp"
@@ -12,7 +13,6 @@
 namespace rbcstab {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 TEST(Parameters, DerivedQuantitiesMatchFig2Caption) {
   // Fig. 2: C = 0.04, lambda = 5, Delta0 = 0.01: S ~ 2, Lambda ~ 0.19 (Delta = 0.01) and 1.9 (Delta = 1).

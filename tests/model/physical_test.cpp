@@ -6,13 +6,13 @@
 #include <numbers>
 #include <string>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/physical.hpp"
 
 namespace rbcstab {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 std::string message_of(auto&& f) {
   try {

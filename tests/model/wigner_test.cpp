@@ -7,13 +7,13 @@
 #include <cmath>
 #include <numbers>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
 
 namespace rbcstab {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 // Required accuracy of the column for every l <= 100.
 constexpr double kTol = 1e-12;
 const double kBetas[] = {0.0, 1e-3, 0.3, 1.0, kPi / 2, 2.2, kPi - 1e-3, kPi};

@@ -24,6 +24,7 @@
 
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/scene_file.hpp"
@@ -38,7 +39,6 @@
 namespace rbcstab {
 namespace {
 
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 SceneFile panel(const std::string& name) { return load_scene(std::string(RBCSTAB_SCENES_DIR) + "/" + name + ".toml"); }
 

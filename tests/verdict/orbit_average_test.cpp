@@ -14,6 +14,7 @@
 
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/integrate/integrator.hpp"
@@ -24,7 +25,6 @@
 namespace rbcstab {
 namespace {
 
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 // Appendix E(a): in plane, lambda = 1, Delta = 1, beta = pi/2.
 Scene appE_a(double lnB, double lnC) {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/quadrature.hpp"
 #include "rbcstab/model/coefficients.hpp"
@@ -41,7 +42,6 @@ double stress_free_r0(const Scene& scene) {
 }
 
 namespace {
-constexpr double kTwoPi = 2 * std::numbers::pi;
 
 double initial_r(const Scene& scene) {
   const InitialState init = initial_state(scene);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/scene.hpp"
@@ -10,7 +11,6 @@
 namespace rbcstab {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 // l from Pi = l(l+1), Pi >= 0.
 double l_from_Pi(double Pi) { return 0.5 * (-1 + std::sqrt(1 + 4 * Pi)); }
 void require_alpha(double alpha) { require(std::isfinite(alpha) && alpha >= 0, "alpha", alpha, "finite and >= 0"); }

@@ -9,7 +9,7 @@
 // variational run at the start x0 gives the monodromy M = dphi/dx and the chord matrix DE; every further
 // iterate costs one plain run. The chord converges at the rate q ~ |M(x*) - M(x0)| / |DE| ~ |x0 - x*|, so a
 // measured q well below 1 says that x0 lies where the orbit's linearisation holds.
-#include <Eigen/Dense>
+#include "rbcstab/continuation/dense.hpp"
 #include <numbers>
 #include <string>
 #include <vector>

@@ -29,7 +29,6 @@ json vector_json(const Eigen::VectorXd& x) {
   return a;
 }
 
-json complex_json(std::complex<double> z) { return {number_or_null(z.real()), number_or_null(z.imag())}; }
 
 // The file keys of a branch object (to_json(MeasuredBranch) already holds the rest).
 void add_states(json& j, const MeasuredBranch& m) {

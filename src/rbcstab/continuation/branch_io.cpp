@@ -32,7 +32,6 @@ void put_csv_value(std::ostream& os, const MeasureValue& v) {
     put_value(os, v);
 }
 
-nlohmann::json complex_json(std::complex<double> z) { return {number_or_null(z.real()), number_or_null(z.imag())}; }
 
 // The certified stability keys of a point, special point or start.
 template <class Point>

@@ -1,7 +1,6 @@
 #include "rbcstab/continuation/branch_point_curve.hpp"
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/SVD>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/core/error.hpp"
 

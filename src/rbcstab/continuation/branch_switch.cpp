@@ -3,7 +3,7 @@
 #include <array>
 #include <cmath>
 
-#include <Eigen/SVD>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/core/error.hpp"
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <utility>
 
-#include <Eigen/LU>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/core/error.hpp"
 

@@ -3,7 +3,7 @@
 // bordered system [F; t.(X - X0) - ds], adaptive step, both directions, parameter bounds, stop
 // conditions, bifurcation test functions and user events located by a safeguarded secant
 // (Illinois) on the arclength. Results are plain data (docs/continuation.md).
-#include <Eigen/Dense>
+#include "rbcstab/continuation/dense.hpp"
 #include <complex>
 #include <cstddef>
 #include <functional>

@@ -8,7 +8,7 @@
 // semisimple multiple eigenvalue (the full model's (l, m) and (l, -m) modes give equal pairs);
 // rounding usually reveals the second copy (it did in every test here), but do not rely on counts.
 // ARPACK is not reentrant (Fortran SAVE state): calls from several threads are serialised inside.
-#include <Eigen/Dense>
+#include "rbcstab/continuation/dense.hpp"
 #include <complex>
 #include <cstddef>
 #include <functional>

@@ -3,8 +3,7 @@
 #include <cmath>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/QR>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/detail/rest_direction.hpp"
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"

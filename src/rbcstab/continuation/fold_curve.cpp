@@ -3,8 +3,7 @@
 #include <cmath>
 #include <limits>
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/SVD>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/detail/minimal_augmentation.hpp"
 #include "rbcstab/core/error.hpp"

@@ -3,8 +3,7 @@
 #include <cmath>
 #include <complex>
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/QR>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"

@@ -28,7 +28,7 @@
 #include <optional>
 #include <vector>
 
-#include <Eigen/Dense>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/continuation/problem.hpp"

@@ -4,7 +4,9 @@
 #include <complex>
 #include <limits>
 
+#include "rbcstab/continuation/detail/finite_difference.hpp"
 #include "rbcstab/continuation/detail/rest_direction.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/core/phasor.hpp"
 #include "rbcstab/integrate/integrator.hpp"
@@ -16,9 +18,8 @@ namespace rbcstab {
 
 namespace {
 
-constexpr double kTwoPi = 2 * M_PI;
 
-double fd_step(double v) { return std::cbrt(std::numeric_limits<double>::epsilon()) * (1 + std::abs(v)); }
+using detail::fd_step;
 
 // Mode l of entry i of x (2 for the l = 2 block).
 int mode_of(Eigen::Index i) { return i < 5 ? 2 : static_cast<int>(i) - 2; }

@@ -17,7 +17,7 @@
 //
 // Floquet multipliers: on an orbit with a_l = 0 the a_l direction decouples, da_l' = Y_l da_l, with
 // multiplier exp(int_0^{2 pi} Upsilon_l(sigma(t)) dt) (tested against the reduced orbit's sigma(t)).
-#include <Eigen/Dense>
+#include "rbcstab/continuation/dense.hpp"
 #include <functional>
 #include <map>
 #include <span>

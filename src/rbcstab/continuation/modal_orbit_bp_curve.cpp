@@ -3,6 +3,8 @@
 #include <cmath>
 #include <limits>
 
+#include "rbcstab/continuation/detail/finite_difference.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/integrate/quadrature.hpp"
@@ -12,9 +14,8 @@
 namespace rbcstab {
 namespace {
 
-constexpr double kTwoPi = 2 * M_PI;
 
-double fd_step(double v) { return std::cbrt(std::numeric_limits<double>::epsilon()) * (1 + std::abs(v)); }
+using detail::fd_step;
 
 }  // namespace
 

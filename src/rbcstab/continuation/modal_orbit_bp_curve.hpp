@@ -16,7 +16,7 @@
 // for Newton, whose converged point depends only on the residual); each x_j only moves segment j's
 // integral, so the row costs 2 segment integrations per column. Cost is independent of L (L enters only
 // through the admissible l <= L and the reported multipliers).
-#include <Eigen/Dense>
+#include "rbcstab/continuation/dense.hpp"
 #include <string>
 #include <vector>
 

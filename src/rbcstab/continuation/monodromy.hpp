@@ -4,7 +4,7 @@
 // structured Jacobian, applied in O(n)) together with y' = F(t, y) from the given orbit state, so no
 // n x n matrix is ever formed; ARPACK then finds the leading multipliers from a few dozen actions.
 // The orbit itself is an input (the periodic-orbit solver or a long simulation sampled at t0 + kT).
-#include <Eigen/Dense>
+#include "rbcstab/continuation/dense.hpp"
 #include <cstddef>
 #include <memory>
 #include <span>

@@ -8,13 +8,14 @@
 #include <utility>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/QR>
+#include "rbcstab/continuation/dense.hpp"
 
+#include "rbcstab/continuation/detail/finite_difference.hpp"
 #include "rbcstab/continuation/detail/forced_flow.hpp"
 #include "rbcstab/continuation/detail/minimal_augmentation.hpp"
 #include "rbcstab/continuation/detail/rest_direction.hpp"
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/core/phasor.hpp"
 #include "rbcstab/integrate/integrator.hpp"
@@ -24,10 +25,9 @@ namespace rbcstab {
 
 namespace {
 
-constexpr double kTwoPi = 2 * M_PI;
 
 // Central-difference step in p: cube root of eps balances truncation against rounding.
-double fd_step(double v) { return std::cbrt(std::numeric_limits<double>::epsilon()) * (1 + std::abs(v)); }
+using detail::fd_step;
 
 using detail::ForcedFlow;
 using detail::winding_angle;

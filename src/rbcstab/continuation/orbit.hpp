@@ -10,7 +10,7 @@
 // still closed in the regular coordinates y = (Re z, Im z, w), because Psi only enters through
 // z = r e^{-i Psi}. The unknowns therefore never carry an angle and need no unwrapping; the winding
 // number is a property of the solution, computed afterwards (orbit_summary).
-#include <Eigen/Dense>
+#include "rbcstab/continuation/dense.hpp"
 #include <cstddef>
 #include <functional>
 #include <limits>

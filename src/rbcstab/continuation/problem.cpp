@@ -5,16 +5,14 @@
 #include <complex>
 #include <limits>
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/LU>
-
+#include "rbcstab/continuation/dense.hpp"
+#include "rbcstab/continuation/detail/finite_difference.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
 
 namespace {
-// Central-difference step: cube root of eps balances truncation (h^2) against rounding (eps/h).
-double fd_step(double v) { return std::cbrt(std::numeric_limits<double>::epsilon()) * (1 + std::abs(v)); }
+using detail::fd_step;
 }  // namespace
 
 void ContinuationProblem::jacobian(const Eigen::VectorXd& x, double p, Eigen::MatrixXd& J) const {

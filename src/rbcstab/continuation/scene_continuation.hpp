@@ -7,7 +7,7 @@
 // may restart from carries a label (AUTO's LAB); restart, switch_at_label and restart_curve start again
 // from a labelled point of a run (branch_file.hpp saves and loads runs). Results are plain data;
 // branch_io.hpp renders them (JSON, CSV, text).
-#include <Eigen/Dense>
+#include "rbcstab/continuation/dense.hpp"
 #include <cstddef>
 #include <limits>
 #include <optional>

@@ -46,11 +46,11 @@ int ros_apply(void* vstate, std::size_t n, double t, double h, double y[], doubl
   ++ctx->counters->jacobian_evaluations;
   if (!s.solver) s.solver = ctx->system->make_shifted_solver();
   s.solver->linearize(t, {y, n}, s.dfdt);
-  const double c = GAM * h;
+  const double gamma_h = GAM * h;
   // A x = rhs with A = I/(gamma h) - J  <=>  (I - gamma h J) x = gamma h rhs.
   auto solve = [&](std::vector<double>& x) -> bool {
-    for (std::size_t i = 0; i < n; ++i) s.b[i] *= c;
-    return s.solver->solve(c, s.b, x);
+    for (std::size_t i = 0; i < n; ++i) s.b[i] *= gamma_h;
+    return s.solver->solve(gamma_h, s.b, x);
   };
   for (std::size_t i = 0; i < n; ++i) s.b[i] = s.f0[i] + h * C1X * s.dfdt[i];
   if (!solve(s.g1)) return GSL_FAILURE;

@@ -11,6 +11,8 @@ namespace rbcstab {
 
 nlohmann::json number_or_null(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
 
+nlohmann::json complex_json(std::complex<double> z) { return {number_or_null(z.real()), number_or_null(z.imag())}; }
+
 std::string csv_number(double v) {
   if (!std::isfinite(v)) return "";
   char buf[64];

@@ -1,5 +1,6 @@
 #pragma once
 // JSON views of results (nlohmann::json). Non-finite numbers become null with a note beside them.
+#include <complex>
 #include <nlohmann/json.hpp>
 
 #include "rbcstab/integrate/simulation.hpp"
@@ -40,6 +41,8 @@ nlohmann::json to_json(const PhysicalCell& c);
 void put_truncation(nlohmann::json& j, int L, const std::string& L_reason);
 // A double, or null when not finite.
 nlohmann::json number_or_null(double v);
+// A complex number as [re, im], each part as number_or_null writes it.
+nlohmann::json complex_json(std::complex<double> z);
 // The CSV counterpart: the shortest text that reads back exactly, or an empty field when not finite -- never "nan";
 // the row's or the file's status says why.
 std::string csv_number(double v);

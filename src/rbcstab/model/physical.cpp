@@ -5,12 +5,12 @@
 #include <utility>
 #include <numbers>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
 
 namespace {
-constexpr double kPi = std::numbers::pi;
 
 // Decimal prefixes a suffix may take ("u" and the micro signs are the same prefix).
 struct Prefix {

@@ -28,7 +28,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-constexpr const char* kScript = "rbcstab_report.py";
 // Coinciding special points share one text when they are this close in both axes (fraction of the span):
 // closer than about a character at the default size.
 constexpr double kCoincident = 0.01;
@@ -669,8 +668,8 @@ PlotFiles draw_plot(const PlotSpec& spec, const PlotDrawOptions& o) {
   o.validate();
   const std::string script_dir = o.script_dir.empty() ? find_script_dir("") : o.script_dir;
   std::error_code ec;
-  if (script_dir.empty() || !fs::is_regular_file(fs::path(script_dir) / kScript, ec))
-    throw ReportError("script_dir: " + std::string(kScript) + " not found (looked in '" + script_dir +
+  if (script_dir.empty() || !fs::is_regular_file(fs::path(script_dir) / kReportScript, ec))
+    throw ReportError("script_dir: " + std::string(kReportScript) + " not found (looked in '" + script_dir +
                       "', $RBCSTAB_DATA_DIR, <prefix>/share/rbcstab/python); set RBCSTAB_DATA_DIR");
   const fs::path png = fs::absolute(o.output).lexically_normal();
   const fs::path json_path = plot_json_path(png.string());
@@ -690,7 +689,7 @@ PlotFiles draw_plot(const PlotSpec& spec, const PlotDrawOptions& o) {
   };
   try {
     write_file_atomic(tmp_json.string(), to_json(spec).dump(1) + "\n");
-    const int rc = run_process({o.python, (fs::path(script_dir) / kScript).string(), "plot", tmp_json.string(),
+    const int rc = run_process({o.python, (fs::path(script_dir) / kReportScript).string(), "plot", tmp_json.string(),
                                 tmp_png.string(), std::to_string(o.width), std::to_string(o.height)},
                                log.string());
     if (rc != 0 || !fs::is_regular_file(tmp_png, ec))

@@ -38,11 +38,10 @@ namespace rbcstab {
 namespace fs = std::filesystem;
 
 namespace {
-constexpr const char* kScript = "rbcstab_report.py";
 
 bool has_script(const fs::path& dir) {
   std::error_code ec;
-  return !dir.empty() && fs::is_regular_file(dir / kScript, ec);
+  return !dir.empty() && fs::is_regular_file(dir / kReportScript, ec);
 }
 
 std::string grid_csv(const ShapeGrid& g) {
@@ -288,7 +287,7 @@ void draw_and_publish(const ReportOptions& o, const nlohmann::json& manifest, co
   std::error_code ec;
   const std::string log = (tmp / "plot.log").string();
   if (o.on_step) o.on_step("drawing the figures with " + o.python);
-  const int rc = run_process({o.python, (fs::path(o.script_dir) / kScript).string(), "report", tmp.string()}, log);
+  const int rc = run_process({o.python, (fs::path(o.script_dir) / kReportScript).string(), "report", tmp.string()}, log);
   if (rc != 0)
     throw ReportError("the plotting script failed (exit " + std::to_string(rc) + "): " + detail::log_tail(log, 1500));
   files.push_back("plot.log");
@@ -412,7 +411,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
   ReportOptions o = options;
   if (o.script_dir.empty()) o.script_dir = find_script_dir("");
   if (!has_script(o.script_dir))
-    throw ReportError("script_dir: " + std::string(kScript) + " not found (looked in '" + o.script_dir +
+    throw ReportError("script_dir: " + std::string(kReportScript) + " not found (looked in '" + o.script_dir +
                       "', $RBCSTAB_DATA_DIR, <prefix>/share/rbcstab/python); set RBCSTAB_DATA_DIR");
   check_python(o.python);
 

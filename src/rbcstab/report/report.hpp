@@ -83,6 +83,9 @@ namespace detail {
 double oscillation_period(const std::vector<double>& t, const std::vector<double>& x);
 }  // namespace detail
 
+// The drawing script of reports and bifurcation plots, in the folder find_script_dir gives.
+inline constexpr const char* kReportScript = "rbcstab_report.py";
+
 // Where rbcstab_report.py lives: $RBCSTAB_DATA_DIR[/python], then <exe>/../share/rbcstab/python
 // (installed), then the source tree this library was built from. Empty if none holds the script.
 std::string find_script_dir(const std::string& executable_path);

@@ -6,6 +6,7 @@
 
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
 
@@ -26,7 +27,6 @@ void OrbitAverageOptions::validate() const {
 OrbitSigmaAverage orbit_sigma_average(const Scene& scene, const OrbitAverageOptions& o) {
   o.validate();
   scene.validate();
-  constexpr double kTwoPi = 2 * std::numbers::pi;
   OrbitSigmaAverage a;
   a.flow = ReducedTransient::flow(scene.parameters, scene.beta);
   // The free parameter is irrelevant at fixed p; B is defined for every valid scene.

@@ -12,7 +12,7 @@
 // The one implementation behind the summary's predictor (verdict/predict.hpp), boundary tracing and the
 // diagram agreement (sweep). Deterministic: every evaluation starts from the scene's own state (no warm
 // starts), so traces are bit-identical for any thread count.
-#include <Eigen/Dense>
+#include "rbcstab/continuation/dense.hpp"
 #include <array>
 #include <map>
 #include <mutex>

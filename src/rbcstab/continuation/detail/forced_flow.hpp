@@ -3,7 +3,7 @@
 // equations Phi' = J Phi (n x n, column-major) and, for shooting in p, s' = J s + f_p (the parameter
 // sensitivity). Only explicit steppers are used (rk8pd), which never ask for the Jacobian of the augmented
 // system, so jacobian/observe/amplitudes are not part of this adapter's contract and throw logic_error.
-#include <Eigen/Dense>
+#include "rbcstab/continuation/dense.hpp"
 #include <span>
 #include <stdexcept>
 #include <vector>

@@ -4,9 +4,7 @@
 // G = F + (Q - 1) x instead (x.G = (Q - 1) Q forces Q = 1 at a zero; DG = DF + 2 x x^T at Q = 1 is
 // regular at a hyperbolic equilibrium because x is DF's left null vector), and stability is the
 // spectrum of DF on the tangent plane x^perp, which DF leaves invariant.
-#include <Eigen/Dense>
-#include <Eigen/Eigenvalues>
-#include <Eigen/QR>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/problem.hpp"
 
