@@ -13,8 +13,9 @@ if(RBCSTAB_UNITY)
 endif()
 
 # Precompiled headers: the third-party headers that most files
-# include (Eigen, nlohmann/json, the standard library; GoogleTest, CLI11, Google Benchmark, pybind11 by family)
-# are parsed once per family into a .gch that every target of the family reuses.
+# include (Eigen, nlohmann/json, the standard library; GoogleTest, CLI11 or Google Benchmark by family) are parsed
+# once per family into a .gch that every target of the family reuses. The Python module is one unity batch: a PCH
+# of its own would cost more than it saves.
 #
 # GCC refuses a PCH made with other -fpic/-fpie settings, or without __OPTIMIZE__ when the user has it: every
 # object is compiled -fPIC (static libraries need it for the Python module anyway), and a family's donor is
@@ -34,7 +35,7 @@ set(RBCSTAB_PCH_COMMON
   <limits> <map> <memory> <numbers> <optional> <set> <span> <sstream> <stdexcept> <string> <string_view>
   <utility> <vector> <Eigen/Dense> <nlohmann/json.hpp>)
 
-# rbcstab_precompile(TARGET FAMILY): TARGET reuses the PCH of FAMILY (lib, test, cli, bench, python).
+# rbcstab_precompile(TARGET FAMILY): TARGET reuses the PCH of FAMILY (lib, test, cli, bench).
 function(rbcstab_precompile target family)
   if(NOT RBCSTAB_PCH)
     return()
@@ -52,9 +53,6 @@ function(rbcstab_precompile target family)
     elseif(family STREQUAL "bench")
       list(APPEND headers <benchmark/benchmark.h>)
       list(APPEND deps benchmark::benchmark)
-    elseif(family STREQUAL "python")
-      list(APPEND headers <pybind11/pybind11.h> <pybind11/numpy.h> <pybind11/stl.h>)
-      list(APPEND deps pybind11::module)
     elseif(NOT family STREQUAL "lib")
       message(FATAL_ERROR "rbcstab_precompile: unknown family '${family}'")
     endif()
@@ -63,10 +61,6 @@ function(rbcstab_precompile target family)
     add_library(${donor} OBJECT ${source})
     target_link_libraries(${donor} PRIVATE ${deps} rbcstab_warnings)
     target_compile_features(${donor} PRIVATE cxx_std_20)
-    if(family STREQUAL "python")
-      # pybind11_add_module compiles the module with hidden visibility; the donor must match it.
-      set_target_properties(${donor} PROPERTIES CXX_VISIBILITY_PRESET hidden VISIBILITY_INLINES_HIDDEN ON)
-    endif()
     target_precompile_headers(${donor} PRIVATE ${headers})
   endif()
   target_precompile_headers(${target} REUSE_FROM ${donor})
