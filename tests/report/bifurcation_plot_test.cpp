@@ -19,18 +19,12 @@
 #include "rbcstab/report/bifurcation_plot.hpp"
 #include "rbcstab/report/report.hpp"
 #include "report/png_size.hpp"
+#include "test_files.hpp"
 
 namespace rbcstab {
 namespace {
 namespace fs = std::filesystem;
 using nlohmann::json;
-
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / ("rbcstab_plot_test_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
 
 std::string expect_invalid(const std::function<void()>& f, const std::string& parameter) {
   try {
@@ -170,7 +164,7 @@ TEST(PlotSpec, BadInputNamesTheAxisTheValueAndTheChoices) {
   m = expect_invalid([&] { (void)plot_spec({plot_input(wrong, "w.json")}); }, "file");
   EXPECT_NE(m.find("stability = 'wobbly'"), std::string::npos) << m;
 
-  const fs::path dir = fresh_dir("bad");
+  const fs::path dir = test::fresh_dir("plot_test", "bad");
   const std::string text = hand_branch().dump();
   write_file_atomic((dir / "cut.json").string(), text.substr(0, text.size() / 2));
   m = expect_invalid([&] { (void)read_plot_input((dir / "cut.json").string()); }, "file");
@@ -194,7 +188,7 @@ const std::string kModal = "--kind modal --parameter C --min 0.015 --max 0.08 --
 
 // The user's case: an orbit branch in lambda is drawn against lambda (not Psi_max) and called orbits.
 TEST(PlotSpec, OrbitBranchAgainstItsFreeParameter) {
-  const fs::path dir = fresh_dir("orbit");
+  const fs::path dir = test::fresh_dir("plot_test", "orbit");
   const PlotInput in = continue_json(dir, "o", "--kind orbit --parameter lambda --min 3 --max 7 --lambda 5 "
                                                "--Delta 0.3 --Delta0 0.01 --B 2 --C 0.04 --L 2");
   const PlotSpec spec = plot_spec({in});
@@ -235,7 +229,7 @@ TEST(PlotSpec, OrbitBranchAgainstItsFreeParameter) {
 // Modal equilibria in C with the branch switched at the first BP: two series, the primary stable until
 // the BP at C = 0.036169 (the l = 3 onset, closed form: tests/continuation) and unstable after it.
 TEST(PlotSpec, SwitchedBranchIsASecondSeriesAndSegmentsMeetAtTheBP) {
-  const fs::path dir = fresh_dir("switch");
+  const fs::path dir = test::fresh_dir("plot_test", "switch");
   const PlotInput in = continue_json(dir, "m", kModal + " --switch-at-bp");
   const PlotSpec spec = plot_spec({in});
   EXPECT_EQ(spec.x.name, "C");
@@ -275,7 +269,7 @@ TEST(PlotSpec, SwitchedBranchIsASecondSeriesAndSegmentsMeetAtTheBP) {
 // The BP curve in (C, B) is drawn in its plane; overlaid with its one-parameter branch (B fixed at 1),
 // the branch crosses the curve at the curve's start.
 TEST(PlotSpec, CurveIsDrawnInItsPlane) {
-  const fs::path dir = fresh_dir("curve");
+  const fs::path dir = test::fresh_dir("plot_test", "curve");
   const PlotInput curve = continue_json(dir, "c", kModal + " --curve BP --parameter2 B --min2 0.5 --max2 2");
   const PlotInput branch = continue_json(dir, "m", kModal);
   const PlotSpec spec = plot_spec({curve});
@@ -308,7 +302,7 @@ TEST(PlotSpec, CurveIsDrawnInItsPlane) {
 #endif
 
 TEST(DrawPlot, WritesThePngAndWhatWasDrawnOrNothing) {
-  const fs::path dir = fresh_dir("draw");
+  const fs::path dir = test::fresh_dir("plot_test", "draw");
   write_file_atomic((dir / "b.json").string(), hand_branch().dump());
   const PlotSpec spec = plot_spec({read_plot_input((dir / "b.json").string())});
   PlotDrawOptions o;

@@ -14,6 +14,7 @@
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
 #include "rbcstab/sweep/diagram_output.hpp"
+#include "test_files.hpp"
 
 namespace rbcstab {
 namespace {
@@ -194,19 +195,12 @@ TEST(PhaseOverlay, HoldsTheTracedBoundaryAndTheAnalyticLines) {
   EXPECT_EQ(c[3].at("label"), "$\\mathcal{C}_*^+$");
 }
 
-fs::path fresh_dir(const std::string& name) {
-  const fs::path d = fs::path(::testing::TempDir()) / ("rbcstab_panels_test_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
-}
-
 // A 4 x 3 diagram panel end to end; the data behind the figure equals an independent single-thread run.
 TEST(PanelReport, TinyDiagramBuildsAndItsDataEqualAnIndependentRun) {
   const std::string text = kBase + "[diagram]\naxes = [\"lnB\", \"lnC\"]\nx_range = [-1.0, 6.0]\n"
                                    "y_range = [-5.5, 2.0]\ncounts = [9, 9]\nclassifier = \"final\"\n";
   const SceneFile sf = parse_scene(text);
-  const fs::path parent = fresh_dir("diagram");
+  const fs::path parent = test::fresh_dir("panels_test", "diagram");
   ReportOptions ro;
   ro.output = (parent / "panel").string();
   PanelOptions po;
@@ -241,7 +235,7 @@ TEST(PanelReport, TinyDiagramBuildsAndItsDataEqualAnIndependentRun) {
 
 // The hook flags (--phase-diagram FILE) still draw another command's output into a scene report.
 TEST(PanelReport, HookFlagsStillDrawIntoASceneReport) {
-  const fs::path parent = fresh_dir("hooks");
+  const fs::path parent = test::fresh_dir("panels_test", "hooks");
   const fs::path csv = parent / "d.csv";
   {
     std::ofstream f(csv);
@@ -267,7 +261,7 @@ TEST(PanelReport, HookFlagsStillDrawIntoASceneReport) {
 TEST(PanelReport, SceneWithoutPanelTableIsRefused) {
   const SceneFile sf = parse_scene(kBase);
   ReportOptions ro;
-  ro.output = (fresh_dir("none") / "x").string();
+  ro.output = (test::fresh_dir("panels_test", "none") / "x").string();
   const std::string m = expect_invalid([&] { (void)build_panel_report(sf, {}, ro); });
   EXPECT_NE(m.find("no panel table"), std::string::npos) << m;
   PanelOptions bad;

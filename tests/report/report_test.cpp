@@ -16,6 +16,7 @@
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/report/report.hpp"
 #include "report/png_size.hpp"
+#include "test_files.hpp"
 
 namespace rbcstab {
 namespace {
@@ -62,14 +63,6 @@ ReportOptions small_options(const fs::path& out) {
   o.frame_shape = {8, 16};
   o.frames = 4;
   return o;
-}
-
-fs::path fresh_dir(const std::string& name) {
-  // Per process: ctest runs each test in its own process, possibly in parallel.
-  const fs::path d = fs::path(::testing::TempDir()) / ("rbcstab_report_test_" + name + "_" + std::to_string(getpid()));
-  fs::remove_all(d);
-  fs::create_directories(d);
-  return d;
 }
 
 // Removes a test folder when the test ends.
@@ -222,7 +215,7 @@ void check_shape_files(const Built& b) {
 
 TEST(ReportEndToEnd, SmallInPlaneSceneBuildsAndItsDataReproduceTheFigures) {
   Built b;
-  b.parent_ = fresh_dir("e2e");
+  b.parent_ = test::fresh_dir("report_test", "e2e");
   const Cleanup cleanup{b.parent_};
   b.scene_ = small_scene(1.5707963267948966);
   b.result_ = build_report(b.scene_, small_options(b.parent_ / "out"));
@@ -249,7 +242,7 @@ TEST(OscillationPeriod, FindsThePeriodOfASampledSignal) {
 }
 
 TEST(ReportFailures, MissingPythonFailsCleanly) {
-  const fs::path parent = fresh_dir("nopython");
+  const fs::path parent = test::fresh_dir("report_test", "nopython");
   const Cleanup cleanup{parent};
   ReportOptions o = small_options(parent / "out");
   o.python = (parent / "no-such-python3").string();
@@ -261,7 +254,7 @@ TEST(ReportFailures, MissingPythonFailsCleanly) {
 }
 
 TEST(ReportFailures, FailingPlotScriptLeavesNothing) {
-  const fs::path parent = fresh_dir("badscript");
+  const fs::path parent = test::fresh_dir("report_test", "badscript");
   const Cleanup cleanup{parent};
   const fs::path scripts = parent / "scripts";
   fs::create_directories(scripts);
@@ -281,7 +274,7 @@ TEST(ReportFailures, FailingPlotScriptLeavesNothing) {
 }
 
 TEST(ReportFailures, ExistingOutputNeedsOverwriteAndBadOptionsAreNamed) {
-  const fs::path parent = fresh_dir("exists");
+  const fs::path parent = test::fresh_dir("report_test", "exists");
   const Cleanup cleanup{parent};
   fs::create_directories(parent / "out");
   ReportOptions o = small_options(parent / "out");
@@ -302,7 +295,7 @@ TEST(ReportFailures, ExistingOutputNeedsOverwriteAndBadOptionsAreNamed) {
 
 // The hook figures (phase diagram, Fig. 6e, bifurcation) drawn from the script's synthetic data.
 TEST(ReportHooks, SelftestDrawsHookFiguresOfTheDeclaredSize) {
-  const fs::path dir = fresh_dir("hooks");
+  const fs::path dir = test::fresh_dir("report_test", "hooks");
   const Cleanup cleanup{dir};
   const std::string script = find_script_dir("") + "/rbcstab_report.py";
   const std::string cmd = "/usr/bin/python3 '" + script + "' selftest '" + dir.string() + "' > '" +
@@ -364,7 +357,7 @@ TEST(PaperScenes, Fig2Fig3Fig6ScenesLoadWithThePapersParameters) {
 #ifdef RBCSTAB_CLI
 // The CLI's exit codes: 3 when python/matplotlib is missing (nothing written), 2 for an existing folder.
 TEST(ReportCli, ExitCodes) {
-  const fs::path parent = fresh_dir("cli");
+  const fs::path parent = test::fresh_dir("report_test", "cli");
   const Cleanup cleanup{parent};
   const std::string base = std::string(RBCSTAB_CLI) + " report --T 2 --L 3 --frames 2 --shape-resolution 6 ";
   const std::string quiet = " > /dev/null 2>&1";
@@ -381,7 +374,7 @@ TEST(ReportCli, ExitCodes) {
 
 // rbcstab shape: the t = 0 VTK holds the scene's initial shape (closed form through shape_radius).
 TEST(ShapeCli, WritesTheInitialShapeAtTimeZero) {
-  const fs::path parent = fresh_dir("shapecli");
+  const fs::path parent = test::fresh_dir("report_test", "shapecli");
   const Cleanup cleanup{parent};
   const std::string stem = (parent / "cell").string();
   const int rc = std::system((std::string(RBCSTAB_CLI) + " shape --T 2 --L 3 --beta 0.7 --at 0 --at 2 --resolution 8 "

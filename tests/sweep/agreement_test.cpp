@@ -17,6 +17,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/verdict/asymptotic.hpp"
+#include "test_files.hpp"
 
 namespace rbcstab {
 namespace {
@@ -108,12 +109,7 @@ TEST(AgreementInPlane, IndependentOfThreadsAndShards) {
 }
 
 #ifdef RBCSTAB_CLI
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using rbcstab::test::slurp;
 
 // `rbcstab diagram` with --threads 1 and 2 writes byte-identical outputs (--no-seconds), agreement and traced
 // boundary included. A 6 x 6 App. E(a) window keeps it to ~2 s of CPU per run (mostly the trace).

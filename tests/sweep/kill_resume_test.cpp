@@ -14,6 +14,8 @@
 #include <thread>
 #include <vector>
 
+#include "test_files.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -56,12 +58,7 @@ int wait_exit(pid_t pid) {
   return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
 }
 
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using rbcstab::test::slurp;
 
 // 10 x 8 points of the Fig. 4(b) panel region integrated to T = 3000 (--full-horizon: early termination would
 // finish the grid before the kill): about 12 ms a point, 1 s on one thread, so that polling the journal every

@@ -9,6 +9,8 @@
 #include <sstream>
 #include <string>
 
+#include "test_files.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -17,12 +19,7 @@ int run(const std::string& args, const std::string& err) {
   const int s = std::system((std::string(RBCSTAB_CLI) + " trace " + args + " 2> " + err).c_str());
   return WIFEXITED(s) ? WEXITSTATUS(s) : -1;
 }
-std::string slurp(const std::string& path) {
-  std::ifstream in(path);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+using rbcstab::test::slurp;
 
 // Fig. 4(a) plane (lambda = 1): one chain of pieces l = 3, 4, ... with a corner between consecutive ones,
 // every point's residual mu below 1e-10 (the library tests check the criterion independently).

@@ -35,12 +35,13 @@
 #include "rbcstab/sweep/point_io.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
 #include "rbcstab/verdict/verdict_io.hpp"
+#include "verdict/panel_scene.hpp"
 
 namespace rbcstab {
 namespace {
 
 
-SceneFile panel(const std::string& name) { return load_scene(std::string(RBCSTAB_SCENES_DIR) + "/" + name + ".toml"); }
+using test::panel;
 
 // The diagram classifier's l: argmax_l [X_l - Delta_l(0)] with X per the panel's rule.
 int classified_mode(const SimulationResult& r, Classifier c) {

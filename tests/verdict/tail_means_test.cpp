@@ -21,11 +21,12 @@
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
+#include "verdict/panel_scene.hpp"
 
 namespace rbcstab {
 namespace {
 
-SceneFile panel(const std::string& name) { return load_scene(std::string(RBCSTAB_SCENES_DIR) + "/" + name + ".toml"); }
+using test::panel;
 
 SimulationOptions with(SimulationOptions o, TailMeans m, double rtol = 0) {
   o.tail_means = m;
