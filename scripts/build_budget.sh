@@ -18,12 +18,13 @@ commit="$(git -C "$root" rev-parse --short HEAD)"
 rm -rf "$work/run"
 t0=$SECONDS
 git clone -q "$root" "$work/run"
-first=""
+# Each line of standard output with its second since the clone began; the first that is not the build's
+# progress ("[k/n] ...") is the main job's first output.
 while IFS= read -r line; do
-  [ -n "$first" ] || first=$((SECONDS - t0))
-  printf '%s\n' "$line" >> "$work/run.log"
+  printf '%d %s\n' $((SECONDS - t0)) "$line" >> "$work/run.log"
 done < <(bash "$work/run/scripts/setup.sh" run 2> "$work/run.err")
 run_total=$((SECONDS - t0))
+first="$(awk '$2 !~ /^\[[0-9]+\/[0-9]+\]/ { print $1; exit }' "$work/run.log")"
 [ -f "$work/run/out/default/index.html" ] || { echo "build_budget: setup.sh run wrote no report" >&2; exit 1; }
 run_phases="$(sed -n '/phase times/,$p' "$work/run.err")"
 
@@ -42,7 +43,7 @@ incremental=$((SECONDS - t0))
 "$work/ci/build/release/bin/rbcstab" --version > /dev/null
 
 echo "Build budget of $commit ($(nproc) cores, $(date -u +%Y-%m-%d), cold, work in $work)"
-printf '  %-52s %6s s\n' "setup.sh run: clone to first output" "$first" "setup.sh run: clone to report written" "$run_total"
+printf '  %-52s %6s s\n' "setup.sh run: clone to the summary's first line" "$first" "setup.sh run: clone to report written" "$run_total"
 printf '  %-52s %6s s\n' "incremental: touch src/rbcstab/model/scene.cpp, CLI" "$incremental" ".ci/run total" "$ci_total"
 echo "setup.sh run phases:"
 printf '%s\n' "$run_phases"
