@@ -57,7 +57,7 @@ function(rbcstab_precompile target family)
       message(FATAL_ERROR "rbcstab_precompile: unknown family '${family}'")
     endif()
     set(source ${PROJECT_BINARY_DIR}/pch/${family}.cpp)
-    file(CONFIGURE OUTPUT ${source} CONTENT "// The donor of the '${family}' precompiled header (cmake/RbcstabPch.cmake).\n")
+    file(CONFIGURE OUTPUT ${source} CONTENT "// The donor of the '${family}' precompiled header (cmake/RbcstabCompileCost.cmake).\n")
     add_library(${donor} OBJECT ${source})
     target_link_libraries(${donor} PRIVATE ${deps} rbcstab_warnings)
     target_compile_features(${donor} PRIVATE cxx_std_20)
@@ -65,3 +65,12 @@ function(rbcstab_precompile target family)
   endif()
   target_precompile_headers(${target} REUSE_FROM ${donor})
 endfunction()
+
+# ccache when installed (CCACHE_DISABLE=1 for cold figures, as scripts/build_budget.sh measures); the sloppiness
+# lets it cache the objects that use a precompiled header.
+option(RBCSTAB_CCACHE "Compile through ccache when it is installed" ON)
+find_program(RBCSTAB_CCACHE_PROGRAM ccache)
+if(RBCSTAB_CCACHE AND RBCSTAB_CCACHE_PROGRAM AND NOT CMAKE_CXX_COMPILER_LAUNCHER)
+  set(CMAKE_CXX_COMPILER_LAUNCHER ${CMAKE_COMMAND} -E env
+      CCACHE_SLOPPINESS=pch_defines,time_macros,include_file_mtime,include_file_ctime ${RBCSTAB_CCACHE_PROGRAM})
+endif()
