@@ -8,6 +8,7 @@
 #include "exit_codes.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/io/units_io.hpp"
+#include "rbcstab/model/parameter_table.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -42,12 +43,10 @@ static Runner add_units(CLI::App& app) {
     if (k.kind == ValueKind::quantity)
       o->physical_options[k.path()] = app.add_option(k.unit_flag, o->physical[k.path()], k.help)->type_name("QUANTITY");
   const std::string fix = " (dimensionless; completes the physical value it fixes: see docs/units.md)";
-  app.add_option("--B", o->query.B, "bending number B = eta gamma R^3/kappa: gives the shear rate" + fix);
-  app.add_option("--C", o->query.C, "capillary number C = eta gamma R/mu: gives the shear rate, or mu with --B" + fix);
-  app.add_option("--lambda", o->query.lambda, "viscosity ratio eta_in/eta_ex: gives the inner viscosity" + fix);
-  app.add_option("--alpha", o->query.alpha, "alpha = mu R^2/kappa: gives the shear modulus" + fix);
-  app.add_option("--Delta", o->query.Delta, "excess area A/R^2 - 4 pi: gives the area" + fix);
-  app.add_option("--Delta0", o->query.Delta0, "stress-free excess area A/R0^2 - 4 pi: gives the stress-free volume" + fix);
+  for (const ParameterRow& r : parameter_table())
+    if (r.physical.input)
+      app.add_option(std::string("--") + r.name, o->query.*r.physical.input,
+                     std::string(r.description) + ": gives " + r.physical.completes + fix);
   app.add_flag("--json", o->json, "print one JSON object on stdout");
   return [o] { return run(*o); };
 }

@@ -4,9 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/parameter_table.hpp"
@@ -179,6 +181,66 @@ TEST(ParameterTable, ShearRateMovesBAndCOnAPhysicalScene) {
     }
   }
   EXPECT_NO_THROW(require_usable(P::lnB, Scene{}));
+}
+
+// Each row's `levels` bit against the systems themselves: a level moves when the right-hand side at a fixed
+// state or the initial state changes with the value. Oracle: make_system at two values; exact comparison, since
+// a level that does not read the parameter computes the same floating-point numbers.
+TEST(ParameterTable, LevelsAreThoseWhoseSystemsMove) {
+  Scene base;
+  base.parameters = Parameters{.lambda = 2, .Delta = 1, .Delta0 = 0.5, .B = 3, .C = 0.5};
+  base.beta = 0.4;
+  base.delta = 1e-3;
+  base.L = 4;
+  base.physical = unit_cell(base.parameters);
+  auto fingerprint = [](const Scene& s, ModelLevel level) {
+    const std::unique_ptr<System> sys = make_system(s.parameters, initial_state(s), level);
+    std::vector<double> y = sys->initial_state(), out = y;
+    std::vector<double> at(y.size());
+    for (std::size_t k = 0; k < y.size(); ++k) at[k] = y[k] + 1e-3 * double(k % 5 + 1);
+    std::vector<double> dy(y.size());
+    sys->rhs(0.37, at, dy);
+    out.insert(out.end(), dy.begin(), dy.end());
+    return out;
+  };
+  for (const ParameterRow& r : parameter_table()) {
+    const double v = get_parameter(base, r.id);
+    const double moved = r.scale == AxisScale::log ? v + 0.1 : v == 0 ? 0.1 : 1.1 * v;
+    Scene t = base;
+    set_parameter(t, r.id, moved);
+    for (ModelLevel level : {ModelLevel::reduced, ModelLevel::modal, ModelLevel::full}) {
+      const bool moves = fingerprint(base, level) != fingerprint(t, level);
+      EXPECT_EQ(moves, (r.levels & level_bit(level)) != 0) << r.name << " at the " << to_string(level) << " level";
+    }
+  }
+}
+
+// What a branch in some parameters leaves fixed: every stored parameter but the ones they are set through.
+TEST(ParameterTable, MovedStoredParametersFollowTheRows) {
+  const P lambda_[] = {P::Lambda}, S_[] = {P::S}, gamma_[] = {P::shear_rate}, lnB_[] = {P::lnB};
+  EXPECT_TRUE(moves_stored(lambda_, P::Delta));
+  EXPECT_FALSE(moves_stored(lambda_, P::lambda));
+  EXPECT_TRUE(moves_stored(S_, P::C));
+  EXPECT_FALSE(moves_stored(S_, P::Delta0));
+  EXPECT_TRUE(moves_stored(gamma_, P::B));
+  EXPECT_TRUE(moves_stored(gamma_, P::C));
+  EXPECT_FALSE(moves_stored(gamma_, P::lambda));
+  EXPECT_TRUE(moves_stored(lnB_, P::B));
+  EXPECT_EQ(moved_parameter(P::lnC), P::C);
+  EXPECT_EQ(moved_parameter(P::alpha), P::B);
+  // Every stored row is moved by itself and by nothing that does not list it as an input.
+  for (const ParameterRow& r : parameter_table()) {
+    if (!r.table) continue;
+    for (const ParameterRow& q : parameter_table()) {
+      const P free[] = {q.id};
+      const bool listed = (parameter_row(q.scale == AxisScale::log ? q.of : q.id).inputs >> unsigned(r.id)) & 1u;
+      if (!listed) {
+        EXPECT_FALSE(moves_stored(free, r.id)) << q.name << " " << r.name;
+      }
+    }
+    const P self[] = {r.id};
+    EXPECT_TRUE(moves_stored(self, r.id)) << r.name;
+  }
 }
 
 TEST(ParameterTable, OneTruncationRuleWithTheCallersReason) {

@@ -4,10 +4,12 @@
 
 #include <cmath>
 #include <numbers>
+#include <set>
 #include <string>
 
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/model/parameter_table.hpp"
 #include "rbcstab/model/physical.hpp"
 
 namespace rbcstab {
@@ -157,6 +159,33 @@ TEST(Physical, ConvertsBothWays) {
   UnitsQuery missing;
   missing.B = 100;
   EXPECT_EQ(message_of([&] { convert_units(missing); }), "B: B = 100 needs viscosity to give shear_rate");
+}
+
+// A given number is held to its parameter-table domain, with the message a scene key gives (one range per
+// parameter): Delta beyond 4 pi, Delta0 above the Delta it is given with, a negative lambda.
+TEST(Physical, UnitsInputsTakeTheTablesRanges) {
+  UnitsQuery big;
+  big.Delta = 13;
+  EXPECT_EQ(message_of([&] { convert_units(big); }), "Delta: Delta = 13 is out of range: must be in (0, 4 pi)");
+  UnitsQuery above;
+  above.Delta = 1;
+  above.Delta0 = 2;
+  EXPECT_EQ(message_of([&] { convert_units(above); }),
+            "Delta0: Delta0 = 2 is out of range: must be in [0, Delta] with Delta = 1");
+  UnitsQuery alone;  // no Delta known: only Delta0's lower end applies
+  alone.Delta0 = 2;
+  EXPECT_NO_THROW(convert_units(alone));
+  alone.Delta0 = -1;
+  EXPECT_EQ(message_of([&] { convert_units(alone); }), "Delta0: Delta0 = -1 is out of range: must be finite and >= 0");
+  // Every row with a units input is one of number_formulas' keys.
+  std::set<std::string> keys;
+  for (const NumberFormula& f : number_formulas()) keys.insert(f.key);
+  for (const ParameterRow& r : parameter_table()) {
+    EXPECT_EQ(keys.count(r.name), r.physical.formula ? 1u : 0u) << r.name;
+    if (r.physical.input) {
+      EXPECT_TRUE(r.physical.formula && r.physical.completes) << r.name;
+    }
+  }
 }
 
 }  // namespace

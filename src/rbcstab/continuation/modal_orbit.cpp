@@ -10,7 +10,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/core/phasor.hpp"
 #include "rbcstab/integrate/integrator.hpp"
-#include "rbcstab/io/json.hpp"
+#include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/scene.hpp"
 

@@ -7,7 +7,7 @@
 #include <stdexcept>
 
 #include "rbcstab/core/error.hpp"
-#include "rbcstab/io/json.hpp"
+#include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/full_model.hpp"
 
 namespace rbcstab {

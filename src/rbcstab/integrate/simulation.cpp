@@ -6,6 +6,7 @@
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/quadrature.hpp"
+#include "rbcstab/model/parameter_table.hpp"
 
 namespace rbcstab {
 
@@ -296,5 +297,12 @@ SimulationResult simulate(const Scene& scene, const SimulationOptions& options, 
   res.l_Delta = res.oscillating ? argmax_growth(res.Delta_tail_mean, res.Delta_initial) : res.l_Delta_final;
   return res;
 }
+
+std::string run_reason(IntegrationStatus status, const std::string& reason, const Parameters& p) {
+  if (status != IntegrationStatus::non_finite_state) return reason;
+  return reason + " (" + nonfinite_reason(p) + ")";
+}
+
+std::string run_reason(const SimulationResult& r, const Parameters& p) { return run_reason(r.status, r.reason, p); }
 
 }  // namespace rbcstab

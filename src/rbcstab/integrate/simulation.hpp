@@ -138,4 +138,10 @@ ModeAmplitudes final_amplitudes(const Scene& scene, const SimulationResult& resu
 // Regular-grid helper: 0, dt, 2 dt, ..., T (T always included).
 std::vector<double> sampling_grid(double T, double dt);
 
+
+// r.reason, and for a run whose state became non-finite, the inputs that made it overflow (nonfinite_reason).
+std::string run_reason(const SimulationResult& r, const Parameters& p);
+// The same for any run's status and message (a benchmark row, an amplitude series).
+std::string run_reason(IntegrationStatus status, const std::string& reason, const Parameters& p);
+
 }  // namespace rbcstab

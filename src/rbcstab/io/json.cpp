@@ -25,31 +25,6 @@ void put_number(nlohmann::json& j, const std::string& key, double v, const std::
   if (!std::isfinite(v)) j[key + "_reason"] = reason;
 }
 
-std::string nonfinite_reason(const Parameters& p) {
-  // Beyond sqrt(DBL_MAX) ~ 1.3e154 a product of two such inputs overflows; 1e150 leaves room for the factors.
-  // A tiny nonzero input (B = 1e-300) overflows the same way through its inverse.
-  constexpr double huge = 1e150, tiny = 1 / huge;
-  Scene s;
-  s.parameters = p;
-  std::string culprits;
-  for (const ParameterRow& r : parameter_table()) {
-    if (!is_material(r.id) || r.scale != AxisScale::linear || r.table == nullptr) continue;
-    const double v = get_parameter(s, r.id);
-    if (std::isfinite(v) && std::abs(v) <= huge && (v == 0 || std::abs(v) >= tiny)) continue;
-    culprits += (culprits.empty() ? "" : ", ") + std::string(r.name) + " = " + format_value(v);
-  }
-  if (culprits.empty()) return "not finite: the computation overflowed or was undefined at these parameters";
-  if (culprits == "C = inf") return "not finite: C = inf (the vesicle limit)";
-  return "not finite: overflow from " + culprits;
-}
-
-std::string run_reason(IntegrationStatus status, const std::string& reason, const Parameters& p) {
-  if (status != IntegrationStatus::non_finite_state) return reason;
-  return reason + " (" + nonfinite_reason(p) + ")";
-}
-
-std::string run_reason(const SimulationResult& r, const Parameters& p) { return run_reason(r.status, r.reason, p); }
-
 namespace {
 
 bool holds_null(const nlohmann::json& v) {
@@ -105,11 +80,6 @@ nlohmann::json by_mode(const std::vector<double>& values) {
   return j;
 }
 
-std::string S_reason(const Parameters& p) {
-  if (p.Delta0 == 0) return "S = inf: Delta0 = 0 (the vesicle limit)";
-  if (!std::isfinite(p.C)) return "S = inf: C = inf (the vesicle limit)";
-  return nonfinite_reason(p);
-}
 
 nlohmann::json to_json(const Parameters& p) {
   Scene s;

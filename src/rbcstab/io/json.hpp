@@ -5,6 +5,7 @@
 
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/model/parameter_table.hpp"
 #include "rbcstab/model/parameters.hpp"
 #include "rbcstab/model/scene.hpp"
 
@@ -23,12 +24,6 @@ nlohmann::json to_json(const SimulationResult& r, const Parameters& p);
 nlohmann::json to_json(const EarlyTermination& e);
 // {"2": v[0], "3": v[1], ...}
 nlohmann::json by_mode(const std::vector<double>& values_from_l2);
-// Why S is infinite (Delta0 = 0 or C = inf: the vesicle limit) or else not finite.
-std::string S_reason(const Parameters& p);
-// r.reason, and for a run whose state became non-finite, the inputs that made it overflow (nonfinite_reason).
-std::string run_reason(const SimulationResult& r, const Parameters& p);
-// The same for any run's status and message (a benchmark row, an amplitude series).
-std::string run_reason(IntegrationStatus status, const std::string& reason, const Parameters& p);
 // "L" and "L_reason" (why that L: SceneFile::L_reason), which every JSON output of a scene carries, and
 // "truncation_check" when the file holds one.
 void put_truncation(nlohmann::json& j, const SceneFile& file);
@@ -48,10 +43,6 @@ nlohmann::json complex_json(std::complex<double> z);
 std::string csv_number(double v);
 // j[key] = v, or null plus j[key + "_reason"] = reason when v is not finite.
 void put_number(nlohmann::json& j, const std::string& key, double v, const std::string& reason);
-// Why a number computed from p is not finite, naming the inputs that caused it: those that are infinite, so
-// large that a square overflows (|v| > 1e150) or so small that a square of the inverse does (0 < |v| < 1e-150);
-// "C = inf" is the vesicle limit.
-std::string nonfinite_reason(const Parameters& p);
 // Every null or non-finite number in j (recursively), and every array holding one, gets the sibling
 // "<key>_reason" = reason unless it already has one: no output hides a non-finite value without saying why.
 // Non-finite numbers become null (nlohmann writes them as null anyway).

@@ -11,28 +11,6 @@
 namespace rbcstab {
 
 namespace {
-// Every number of the answer by its JSON key, in number_formulas() order; NaN where an input is missing.
-double number_of(const UnitsAnswer& a, const std::string& key) {
-  const CellNumbers& n = a.numbers;
-  if (key == "R") return n.R;
-  if (key == "B") return n.B;
-  if (key == "C") return n.C;
-  if (key == "lambda") return n.lambda;
-  if (key == "alpha") return n.alpha;
-  if (key == "Delta") return n.Delta;
-  if (key == "Delta0") return n.Delta0;
-  // Lambda and S from whatever is known (NaN propagates where an input is missing).
-  Parameters p;
-  p.lambda = n.lambda;
-  p.Delta = n.Delta;
-  p.Delta0 = n.Delta0;
-  p.C = n.C;
-  if (key == "Lambda") return p.Lambda();
-  if (key == "S") return std::isnan(n.C) || std::isnan(n.Delta0) ? kNotGiven : p.S();
-  if (key == "time_unit_s") return n.time_unit;
-  return kNotGiven;
-}
-
 // The JSON key of a number: R and the time unit carry their unit.
 std::string json_key(const std::string& key) { return key == "R" ? "R_m" : key; }
 
@@ -42,7 +20,7 @@ nlohmann::json units_json(const UnitsAnswer& a) {
   nlohmann::json j = nlohmann::json::object(), formulas = nlohmann::json::object();
   for (const NumberFormula& f : number_formulas()) {
     const std::string key = json_key(f.key);
-    put_number(j, key, number_of(a, f.key), "not determined: an input of " + std::string(f.formula) + " is missing");
+    put_number(j, key, f.value(a.numbers), "not determined: an input of " + std::string(f.formula) + " is missing");
     formulas[key] = {{"formula", f.formula}, {"reference", f.reference}};
   }
   j["physical"] = to_json(a.cell);
@@ -64,7 +42,7 @@ std::string units_text(const UnitsAnswer& a) {
   }
   out << "Dimensionless numbers (paper Sec. II):\n";
   for (const NumberFormula& f : number_formulas()) {
-    const double v = number_of(a, f.key);
+    const double v = f.value(a.numbers);
     TextStream value;
     value << std::setprecision(6);
     if (std::isnan(v))

@@ -24,67 +24,141 @@ Domain up_to_Delta(const Parameters& p) {
   return Domain{0, p.Delta, true, true, "", "Delta", "Delta = " + format_value(p.Delta), ""};
 }
 
+// A number the cell determines, NaN where an input is missing (Lambda and S from the numbers that make them).
+Parameters cell_parameters(const CellNumbers& n) {
+  Parameters p;
+  p.lambda = n.lambda;
+  p.Delta = n.Delta;
+  p.Delta0 = n.Delta0;
+  p.B = n.B;
+  p.C = n.C;
+  return p;
+}
+
+constexpr unsigned kEvery = kEveryLevel, kAboveTwo = kModesAboveTwo;
+
 // One row per SceneParameter, in its order (tests/model/parameter_table_test.cpp checks it).
 const std::array<ParameterRow, 13> kTable{{
-    {P::lambda, "lambda", "\\lambda", "", "viscosity ratio eta_in/eta_ex", "parameters", AxisScale::linear, P::lambda,
-     P::lambda, bit(P::lambda), true, true, [](const Parameters&) { return open_above(0, true); },
-     [](const Scene& s) { return s.parameters.lambda; }, [](Scene& s, double v) { s.parameters.lambda = v; }},
-    {P::Delta, "Delta", "\\Delta", "", "excess area of the current shape", "parameters", AxisScale::linear, P::Delta,
-     P::Delta, bit(P::Delta), true, true,
-     [](const Parameters&) { return Domain{0, 4 * std::numbers::pi, false, false, "", "4 pi", "", ""}; },
-     [](const Scene& s) { return s.parameters.Delta; }, [](Scene& s, double v) { s.parameters.Delta = v; }},
-    {P::Delta0, "Delta0", "\\Delta_0", "", "excess area of the stress-free shape (0: the vesicle limit)", "parameters",
-     AxisScale::linear, P::Delta0, P::Delta0, bit(P::Delta0), true, true, up_to_Delta,
-     [](const Scene& s) { return s.parameters.Delta0; }, [](Scene& s, double v) { s.parameters.Delta0 = v; }},
-    {P::B, "B", "\\mathcal{B}", "", "bending number eta gamma R^3 / kappa", "parameters", AxisScale::linear, P::B, P::B,
-     bit(P::B), true, false, [](const Parameters&) { return open_above(0, false); },
-     [](const Scene& s) { return s.parameters.B; }, [](Scene& s, double v) { s.parameters.B = v; }},
-    {P::C, "C", "\\mathcal{C}", "", "capillary number eta gamma R / mu", "parameters", AxisScale::linear, P::C, P::C,
-     bit(P::C), true, false,
-     [](const Parameters&) { return Domain{0, kInf, false, true, "", "", "", "inf allowed: the vesicle limit"}; },
-     [](const Scene& s) { return s.parameters.C; }, [](Scene& s, double v) { s.parameters.C = v; }},
+    {.id = P::lambda, .name = "lambda", .symbol = "\\lambda", .unicode = "λ", .unit = "",
+     .description = "viscosity ratio eta_in/eta_ex", .table = "parameters", .scale = AxisScale::linear,
+     .of = P::lambda, .moves = P::lambda, .inputs = bit(P::lambda), .levels = kEvery, .continuation = true,
+     .axis = true, .definition = nullptr,
+     .physical = {"eta_in / eta_ex", "Sec. II", [](const CellNumbers& n) { return n.lambda; },
+                  "the inner viscosity", &UnitsQuery::lambda},
+     .domain = [](const Parameters&) { return open_above(0, true); },
+     .get = [](const Scene& s) { return s.parameters.lambda; },
+     .set = [](Scene& s, double v) { s.parameters.lambda = v; }},
+    {.id = P::Delta, .name = "Delta", .symbol = "\\Delta", .unicode = "Δ", .unit = "",
+     .description = "excess area of the current shape", .table = "parameters", .scale = AxisScale::linear,
+     .of = P::Delta, .moves = P::Delta, .inputs = bit(P::Delta), .levels = kEvery, .continuation = true,
+     .axis = true, .definition = nullptr,
+     .physical = {"A/R^2 - 4 pi", "Sec. II, Fig. 1", [](const CellNumbers& n) { return n.Delta; }, "the area",
+                  &UnitsQuery::Delta},
+     .domain = [](const Parameters&) { return Domain{0, 4 * std::numbers::pi, false, false, "", "4 pi", "", ""}; },
+     .get = [](const Scene& s) { return s.parameters.Delta; },
+     .set = [](Scene& s, double v) { s.parameters.Delta = v; }},
+    {.id = P::Delta0, .name = "Delta0", .symbol = "\\Delta_0", .unicode = "Δ₀", .unit = "",
+     .description = "excess area of the stress-free shape (0: the vesicle limit)", .table = "parameters",
+     .scale = AxisScale::linear, .of = P::Delta0, .moves = P::Delta0, .inputs = bit(P::Delta0), .levels = kEvery,
+     .continuation = true, .axis = true, .definition = nullptr,
+     .physical = {"A/R0^2 - 4 pi, R0 = (3 V0/(4 pi))^(1/3)", "Sec. II, Fig. 1",
+                  [](const CellNumbers& n) { return n.Delta0; }, "the stress-free volume", &UnitsQuery::Delta0},
+     .domain = up_to_Delta,
+     .get = [](const Scene& s) { return s.parameters.Delta0; },
+     .set = [](Scene& s, double v) { s.parameters.Delta0 = v; }},
+    {.id = P::B, .name = "B", .symbol = "\\mathcal{B}", .unicode = "B", .unit = "",
+     .description = "bending number eta gamma R^3 / kappa", .table = "parameters", .scale = AxisScale::linear,
+     .of = P::B, .moves = P::B, .inputs = bit(P::B), .levels = kAboveTwo, .continuation = true, .axis = false,
+     .definition = nullptr,
+     .physical = {"eta_ex gamma R^3 / kappa", "Eq. (dimless_nums)", [](const CellNumbers& n) { return n.B; },
+                  "the shear rate", &UnitsQuery::B},
+     .domain = [](const Parameters&) { return open_above(0, false); },
+     .get = [](const Scene& s) { return s.parameters.B; },
+     .set = [](Scene& s, double v) { s.parameters.B = v; }},
+    {.id = P::C, .name = "C", .symbol = "\\mathcal{C}", .unicode = "C", .unit = "",
+     .description = "capillary number eta gamma R / mu", .table = "parameters", .scale = AxisScale::linear,
+     .of = P::C, .moves = P::C, .inputs = bit(P::C), .levels = kEvery, .continuation = true, .axis = false,
+     .definition = nullptr,
+     .physical = {"eta_ex gamma R / mu", "Eq. (dimless_nums)", [](const CellNumbers& n) { return n.C; },
+                  "the shear rate, or the shear modulus when B is given too", &UnitsQuery::C},
+     .domain = [](const Parameters&) { return Domain{0, kInf, false, true, "", "", "", "inf allowed: the vesicle limit"}; },
+     .get = [](const Scene& s) { return s.parameters.C; },
+     .set = [](Scene& s, double v) { s.parameters.C = v; }},
     // The composites of the reduced system (Eq. Lambda_S) each move one input, so they move alone: Lambda
     // ~ sqrt(Delta) at fixed lambda (S unchanged), S ~ C at fixed Delta0 (Lambda unchanged).
-    {P::Lambda, "Lambda", "\\Lambda", "", "sqrt(Delta)(23 lambda + 32)/(8 sqrt(30 pi)) of the reduced system, set through Delta",
-     nullptr, AxisScale::linear, P::Lambda, P::Delta, bit(P::Delta) | bit(P::lambda), true, false,
-     [](const Parameters&) { return open_above(0, false); },
-     [](const Scene& s) { return s.parameters.Lambda(); },
-     [](Scene& s, double v) {
-       const double ratio = v / s.parameters.Lambda();
-       s.parameters.Delta *= ratio * ratio;
-     }},
-    {P::S, "S", "S", "", "C sqrt(15 pi/(2 Delta0)) of the reduced system, set through C", nullptr, AxisScale::linear, P::S,
-     P::C, bit(P::C) | bit(P::Delta0), true, false, [](const Parameters&) { return open_above(0, false); },
-     [](const Scene& s) { return s.parameters.S(); },
-     [](Scene& s, double v) {
-       const double S = s.parameters.S();
-       require(std::isfinite(S), "S", v, "continuable only from a finite S (Delta0 > 0 and C finite)");
-       s.parameters.C *= v / S;
-     }},
-    {P::alpha, "alpha", "\\alpha", "", "B/C = mu R^2/kappa, set through B", nullptr, AxisScale::linear, P::alpha, P::B,
-     bit(P::B) | bit(P::C), false, true, [](const Parameters&) { return open_above(0, false); },
-     [](const Scene& s) { return s.parameters.alpha(); }, [](Scene& s, double v) { s.parameters.B = v * s.parameters.C; }},
-    {P::lnB, "lnB", "\\ln \\mathcal{B}", "", "ln B, a log axis of the bending number", nullptr, AxisScale::log, P::B, P::B,
-     bit(P::B), false, true, nullptr, nullptr, nullptr},
-    {P::lnC, "lnC", "\\ln \\mathcal{C}", "", "ln C, a log axis of the capillary number", nullptr, AxisScale::log, P::C, P::C,
-     bit(P::C), false, true, nullptr, nullptr, nullptr},
-    {P::beta, "beta", "\\beta", "",
-     "rotation of the axisymmetric shapes about y (pi/2 = 1.5707963267948966)", "initial",
-     AxisScale::linear, P::beta, P::beta, bit(P::beta), true, true,
-     [](const Parameters&) {
-       return Domain{0, std::numbers::pi, true, true, "", "pi", "", "0: rest shape out of plane, pi/2: in plane"};
-     },
-     [](const Scene& s) { return s.beta; }, [](Scene& s, double v) { s.beta = v; }},
-    {P::delta, "delta", "\\delta", "", "perturbation Delta_l(0) put in f_{l,0} for every l = 3..L", "initial",
-     AxisScale::linear, P::delta, P::delta, bit(P::delta), false, false, up_to_Delta,
-     [](const Scene& s) { return s.delta; }, [](Scene& s, double v) { s.delta = v; }},
+    {.id = P::Lambda, .name = "Lambda", .symbol = "\\Lambda", .unicode = "Λ", .unit = "",
+     .description = "sqrt(Delta)(23 lambda + 32)/(8 sqrt(30 pi)) of the reduced system, set through Delta",
+     .table = nullptr, .scale = AxisScale::linear, .of = P::Lambda, .moves = P::Delta,
+     .inputs = bit(P::Delta) | bit(P::lambda), .levels = kEvery, .continuation = true, .axis = false,
+     .definition = "sqrt(Delta)(23 lambda + 32)/(8 sqrt(30 pi))",
+     .physical = {"sqrt(Delta) (23 lambda + 32) / (8 sqrt(30 pi))", "Eq. (Lambda_S)",
+                  [](const CellNumbers& n) { return cell_parameters(n).Lambda(); }},
+     .domain = [](const Parameters&) { return open_above(0, false); },
+     .get = [](const Scene& s) { return s.parameters.Lambda(); },
+     .set =
+         [](Scene& s, double v) {
+           const double ratio = v / s.parameters.Lambda();
+           s.parameters.Delta *= ratio * ratio;
+         }},
+    {.id = P::S, .name = "S", .symbol = "S", .unicode = "S", .unit = "",
+     .description = "C sqrt(15 pi/(2 Delta0)) of the reduced system, set through C", .table = nullptr,
+     .scale = AxisScale::linear, .of = P::S, .moves = P::C, .inputs = bit(P::C) | bit(P::Delta0), .levels = kEvery,
+     .continuation = true, .axis = false, .definition = "C sqrt(15 pi/(2 Delta0))",
+     .physical = {"C sqrt(15 pi / (2 Delta0))", "Eq. (Lambda_S)",
+                  [](const CellNumbers& n) {
+                    return std::isnan(n.C) || std::isnan(n.Delta0) ? kNotGiven : cell_parameters(n).S();
+                  }},
+     .domain = [](const Parameters&) { return open_above(0, false); },
+     .get = [](const Scene& s) { return s.parameters.S(); },
+     .set =
+         [](Scene& s, double v) {
+           const double S = s.parameters.S();
+           require(std::isfinite(S), "S", v, "continuable only from a finite S (Delta0 > 0 and C finite)");
+           s.parameters.C *= v / S;
+         }},
+    // alpha = mu R^2/kappa needs no flow: the cell gives it from its moduli and size alone.
+    {.id = P::alpha, .name = "alpha", .symbol = "\\alpha", .unicode = "α", .unit = "",
+     .description = "B/C = mu R^2/kappa, set through B", .table = nullptr, .scale = AxisScale::linear,
+     .of = P::alpha, .moves = P::B, .inputs = bit(P::B) | bit(P::C), .levels = kAboveTwo, .continuation = false,
+     .axis = true, .definition = "B/C",
+     .physical = {"B/C = mu R^2 / kappa", "after Eq. (inst)", [](const CellNumbers& n) { return n.alpha; },
+                  "the shear modulus", &UnitsQuery::alpha},
+     .domain = [](const Parameters&) { return open_above(0, false); },
+     .get = [](const Scene& s) { return s.parameters.alpha(); },
+     .set = [](Scene& s, double v) { s.parameters.B = v * s.parameters.C; }},
+    {.id = P::lnB, .name = "lnB", .symbol = "\\ln \\mathcal{B}", .unicode = "ln B", .unit = "",
+     .description = "ln B, a log axis of the bending number", .table = nullptr, .scale = AxisScale::log, .of = P::B,
+     .moves = P::B, .inputs = bit(P::B), .levels = kAboveTwo, .continuation = false, .axis = true,
+     .definition = nullptr, .physical = {}, .domain = nullptr, .get = nullptr, .set = nullptr},
+    {.id = P::lnC, .name = "lnC", .symbol = "\\ln \\mathcal{C}", .unicode = "ln C", .unit = "",
+     .description = "ln C, a log axis of the capillary number", .table = nullptr, .scale = AxisScale::log,
+     .of = P::C, .moves = P::C, .inputs = bit(P::C), .levels = kEvery, .continuation = false, .axis = true,
+     .definition = nullptr, .physical = {}, .domain = nullptr, .get = nullptr, .set = nullptr},
+    {.id = P::beta, .name = "beta", .symbol = "\\beta", .unicode = "β", .unit = "",
+     .description = "rotation of the axisymmetric shapes about y (pi/2 = 1.5707963267948966)", .table = "initial",
+     .scale = AxisScale::linear, .of = P::beta, .moves = P::beta, .inputs = bit(P::beta), .levels = kEvery,
+     .continuation = true, .axis = true, .definition = nullptr, .physical = {},
+     .domain =
+         [](const Parameters&) {
+           return Domain{0, std::numbers::pi, true, true, "", "pi", "", "0: rest shape out of plane, pi/2: in plane"};
+         },
+     .get = [](const Scene& s) { return s.beta; },
+     .set = [](Scene& s, double v) { s.beta = v; }},
+    {.id = P::delta, .name = "delta", .symbol = "\\delta", .unicode = "δ", .unit = "",
+     .description = "perturbation Delta_l(0) put in f_{l,0} for every l = 3..L", .table = "initial",
+     .scale = AxisScale::linear, .of = P::delta, .moves = P::delta, .inputs = bit(P::delta), .levels = kAboveTwo,
+     .continuation = false, .axis = false, .definition = nullptr, .physical = {}, .domain = up_to_Delta,
+     .get = [](const Scene& s) { return s.delta; },
+     .set = [](Scene& s, double v) { s.delta = v; }},
     // Stored in the physical cell, whose table ([physical], io/scene_file.hpp) declares its key and flag
     // (--shear-rate) with the cell's other quantities from this row's name, description and domain.
-    {P::shear_rate, "shear_rate", "\\dot\\gamma", "1/s",
-     "shear rate gamma [1/s]; B and C follow at fixed alpha (a physical scene; time unit 1/gamma)", nullptr,
-     AxisScale::geometric, P::shear_rate, P::shear_rate, bit(P::shear_rate) | bit(P::B) | bit(P::C), true, true,
-     [](const Parameters&) { return Domain{0, kInf, false, false, "", "", "", "1/s"}; }, get_shear_rate,
-     set_shear_rate},
+    {.id = P::shear_rate, .name = "shear_rate", .symbol = "\\dot\\gamma", .unicode = "γ̇", .unit = "1/s",
+     .description = "shear rate gamma [1/s]; B and C follow at fixed alpha (a physical scene; time unit 1/gamma)",
+     .table = nullptr, .scale = AxisScale::geometric, .of = P::shear_rate, .moves = P::shear_rate,
+     .inputs = bit(P::shear_rate) | bit(P::B) | bit(P::C), .levels = kEvery, .continuation = true, .axis = true,
+     .definition = nullptr, .physical = {},
+     .domain = [](const Parameters&) { return Domain{0, kInf, false, false, "", "", "", "1/s"}; },
+     .get = get_shear_rate, .set = set_shear_rate},
 }};
 
 // A log row's domain: its base's, mapped by ln (ln 0 = -inf).
@@ -108,6 +182,13 @@ UseWords words(ParameterUse use) {
   return {"parameter", "parameter"};
 }
 }  // namespace
+
+Domain Domain::known() const {
+  Domain d = *this;
+  if (std::isnan(d.lo)) d = Domain{-kInf, d.hi, false, d.hi_closed, "", d.hi_name, "", d.note};
+  if (std::isnan(d.hi)) d = Domain{d.lo, kInf, d.lo_closed, false, d.lo_name, "", "", d.note};
+  return d;
+}
 
 bool Domain::contains(double v) const {
   if (std::isnan(v) || v < lo || v > hi) return false;
@@ -141,6 +222,40 @@ std::string to_string(SceneParameter q) { return parameter_row(q).name; }
 std::string parameter_label(SceneParameter q) {
   const ParameterRow& r = parameter_row(q);
   return r.scale == AxisScale::log ? "ln " + std::string(parameter_row(r.of).name) : r.name;
+}
+
+SceneParameter moved_parameter(SceneParameter q) {
+  const ParameterRow& r = parameter_row(q);
+  return r.scale == AxisScale::log ? moved_parameter(r.of) : r.moves;
+}
+
+bool moves_stored(std::span<const SceneParameter> free, SceneParameter stored) {
+  for (SceneParameter q : free) {
+    // A composite moves the one input it is set through; a row that moves itself moves all its inputs with
+    // it (shear_rate: B and C on the cell's line).
+    const ParameterRow& r = parameter_row(q);
+    if (r.scale == AxisScale::log) {
+      const SceneParameter base[] = {r.of};
+      if (moves_stored(base, stored)) return true;
+    } else if (r.moves != r.id ? r.moves == stored : (r.inputs & bit(stored)) != 0) {
+      return true;
+    }
+  }
+  return false;
+}
+
+std::vector<SceneParameter> stored_parameters(std::string_view table) {
+  std::vector<SceneParameter> out;
+  for (const ParameterRow& r : kTable)
+    if (r.table && table == r.table) out.push_back(r.id);
+  return out;
+}
+
+std::vector<SceneParameter> composite_parameters() {
+  std::vector<SceneParameter> out;
+  for (const ParameterRow& r : kTable)
+    if (r.definition) out.push_back(r.id);
+  return out;
 }
 
 bool usable_as(SceneParameter q, ParameterUse use) {
@@ -233,6 +348,30 @@ const PhysicalCell& physical_cell(const Scene& s, const std::string& name) {
 void require_usable(SceneParameter q, const Scene& s) {
   const ParameterRow& r = parameter_row(q);
   if (r.inputs & bit(P::shear_rate)) (void)physical_cell(s, r.name);
+}
+
+std::string nonfinite_reason(const Parameters& p) {
+  // Beyond sqrt(DBL_MAX) ~ 1.3e154 a product of two such inputs overflows; 1e150 leaves room for the factors.
+  // A tiny nonzero input (B = 1e-300) overflows the same way through its inverse.
+  constexpr double huge = 1e150, tiny = 1 / huge;
+  Scene s;
+  s.parameters = p;
+  std::string culprits;
+  for (const ParameterRow& r : parameter_table()) {
+    if (!is_material(r.id) || r.scale != AxisScale::linear || r.table == nullptr) continue;
+    const double v = get_parameter(s, r.id);
+    if (std::isfinite(v) && std::abs(v) <= huge && (v == 0 || std::abs(v) >= tiny)) continue;
+    culprits += (culprits.empty() ? "" : ", ") + std::string(r.name) + " = " + format_value(v);
+  }
+  if (culprits.empty()) return "not finite: the computation overflowed or was undefined at these parameters";
+  if (culprits == "C = inf") return "not finite: C = inf (the vesicle limit)";
+  return "not finite: overflow from " + culprits;
+}
+
+std::string S_reason(const Parameters& p) {
+  if (p.Delta0 == 0) return "S = inf: Delta0 = 0 (the vesicle limit)";
+  if (!std::isfinite(p.C)) return "S = inf: C = inf (the vesicle limit)";
+  return nonfinite_reason(p);
 }
 
 }  // namespace rbcstab

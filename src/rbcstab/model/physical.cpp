@@ -7,6 +7,7 @@
 
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/model/parameter_table.hpp"
 
 namespace rbcstab {
 
@@ -251,26 +252,25 @@ PhysicalCell unit_cell(const Parameters& p) {
 }
 
 const std::vector<NumberFormula>& number_formulas() {
-  static const std::vector<NumberFormula> f = {
-      {"R", "(3 V/(4 pi))^(1/3) [m]", "Sec. II, Fig. 1"},
-      {"B", "eta_ex gamma R^3 / kappa", "Eq. (dimless_nums)"},
-      {"C", "eta_ex gamma R / mu", "Eq. (dimless_nums)"},
-      {"lambda", "eta_in / eta_ex", "Sec. II"},
-      {"alpha", "B/C = mu R^2 / kappa", "after Eq. (inst)"},
-      {"Delta", "A/R^2 - 4 pi", "Sec. II, Fig. 1"},
-      {"Delta0", "A/R0^2 - 4 pi, R0 = (3 V0/(4 pi))^(1/3)", "Sec. II, Fig. 1"},
-      {"Lambda", "sqrt(Delta) (23 lambda + 32) / (8 sqrt(30 pi))", "Eq. (Lambda_S)"},
-      {"S", "C sqrt(15 pi / (2 Delta0))", "Eq. (Lambda_S)"},
-      {"time_unit_s", "1/gamma [s]", "Sec. II (time in units of 1/gamma)"},
-  };
+  static const std::vector<NumberFormula> f = [] {
+    std::vector<NumberFormula> out{{"R", "(3 V/(4 pi))^(1/3) [m]", "Sec. II, Fig. 1", [](const CellNumbers& n) { return n.R; }}};
+    for (const ParameterRow& r : parameter_table())
+      if (r.physical.formula) out.push_back({r.name, r.physical.formula, r.physical.reference, r.physical.value});
+    out.push_back({"time_unit_s", "1/gamma [s]", "Sec. II (time in units of 1/gamma)",
+                   [](const CellNumbers& n) { return n.time_unit; }});
+    return out;
+  }();
   return f;
 }
 
 UnitsAnswer convert_units(const UnitsQuery& q) {
   require_positive(q.cell);  // the pairs (area with volume) are checked once completed
-  for (auto [name, v] : {std::pair{"B", q.B}, {"C", q.C}, {"lambda", q.lambda}, {"alpha", q.alpha}, {"Delta", q.Delta}})
-    if (given(v)) require(std::isfinite(v) && v > 0, name, v, "finite and > 0");
-  if (given(q.Delta0)) require(std::isfinite(q.Delta0) && q.Delta0 >= 0, "Delta0", q.Delta0, "finite and >= 0");
+  // Each given number in its row's domain, as a scene value; Delta0's upper end is Delta where one is known.
+  Parameters known;
+  known.Delta = given(q.Delta) ? q.Delta : excess_area(q.cell.area, q.cell.volume);
+  for (const ParameterRow& r : parameter_table())
+    if (r.physical.input && given(q.*r.physical.input))
+      require_in(r.id, parameter_domain(r.id, known).known(), q.*r.physical.input);
   UnitsAnswer a;
   a.cell = q.cell;
   PhysicalCell& c = a.cell;

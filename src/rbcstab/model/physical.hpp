@@ -85,18 +85,22 @@ struct DerivedParameter {
 };
 std::vector<DerivedParameter> derived_parameters(const PhysicalCell& cell);
 
-// How each number is made, for `rbcstab units` and docs/theory.md: key (the JSON key), formula, paper reference.
+// How each number is made, for `rbcstab units` and docs/theory.md: key (the JSON key), formula, paper reference
+// and its value. R, then the parameter table's rows with a physical formula (model/parameter_table.hpp), then
+// the time unit.
 struct NumberFormula {
   const char* key;
   const char* formula;
   const char* reference;
+  double (*value)(const CellNumbers& n);  // NaN where an input is missing
 };
 const std::vector<NumberFormula>& number_formulas();
 
 // Both ways: the physical cell completed from given dimensionless numbers, then every number it determines.
-// Each given number fixes one physical unknown: B (or C without B) the shear rate, C with B the shear modulus,
-// alpha the shear modulus, lambda the inner viscosity, Delta the area (from V or R), Delta0 the stress-free
-// volume (from A). Giving that unknown too is refused: InvalidArgument(number, "<number> and <key> both given
+// Each given number fixes one physical unknown (the row's PhysicalFormula::completes): B (or C without B) the
+// shear rate, C with B the shear modulus, alpha the shear modulus, lambda the inner viscosity, Delta the area
+// (from V or R), Delta0 the stress-free volume (from A). A given number outside its row's domain is refused as a
+// scene value is; giving its unknown too is refused: InvalidArgument(number, "<number> and <key> both given
 // ...: give one"); a number whose other inputs are missing is refused naming them.
 struct UnitsQuery {
   PhysicalCell cell;

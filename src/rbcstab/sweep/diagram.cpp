@@ -134,10 +134,7 @@ void validate_plane(const Scene& base, const DiagramSpec& spec) {
       plane_scene(base, spec, x, y).validate();
     } catch (const InvalidArgument& e) {
       // The axis that moves the parameter named, else the one away from its min.
-      auto moves = [](Axis a) {
-        const ParameterRow& r = parameter_row(a);
-        return to_string(r.scale == AxisScale::log ? r.of : r.moves);
-      };
+      auto moves = [](Axis a) { return to_string(moved_parameter(a)); };
       const bool x_moved = x != spec.x.min, y_moved = y != spec.y.min;
       const bool blame_y = e.parameter() == moves(spec.y.axis) ? e.parameter() != moves(spec.x.axis) || !x_moved
                                                                 : y_moved && !x_moved;

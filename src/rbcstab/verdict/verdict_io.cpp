@@ -12,6 +12,7 @@
 #include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/model/parameter_table.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
 
 namespace rbcstab {
@@ -149,10 +150,24 @@ std::string summary_text(const SceneFile& file, const SimulationResult& r, const
   TextStream out;
   out << std::setprecision(6);
   out << "rbcstab " << RBCSTAB_VERSION << " -- scene '" << s.name << "'\n\n";
-  out << "Parameters   lambda = " << p.lambda << ", Delta = " << p.Delta << ", Delta0 = " << p.Delta0 << ", B = " << p.B
-      << ", C = " << p.C << "\n";
-  out << "             beta = " << s.beta << ", delta = " << s.delta << ", L = " << s.L << ", T = " << s.T << "\n";
-  out << "Derived      Lambda = " << p.Lambda() << ", S = " << p.S() << ", alpha = B/C = " << p.alpha() << "\n";
+  // The rows of the parameter table: a scene file's two tables, then the composites (a short definition shown).
+  auto values = [&](const std::vector<SceneParameter>& rows) {
+    for (std::size_t k = 0; k < rows.size(); ++k) {
+      const ParameterRow& row = parameter_row(rows[k]);
+      out << (k ? ", " : "") << row.name << " = ";
+      if (row.definition && std::string_view(row.definition).find(' ') == std::string_view::npos)
+        out << row.definition << " = ";
+      out << get_parameter(s, rows[k]);
+    }
+  };
+  out << "Parameters   ";
+  values(stored_parameters("parameters"));
+  out << "\n             ";
+  values(stored_parameters("initial"));
+  out << ", L = " << s.L << ", T = " << s.T << "\n";
+  out << "Derived      ";
+  values(composite_parameters());
+  out << "\n";
   if (s.physical) {
     const double unit = 1 / s.physical->shear_rate;
     out << "Physical     shear rate " << s.physical->shear_rate << " 1/s: time unit 1/gamma = " << unit
