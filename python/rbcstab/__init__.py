@@ -9,7 +9,7 @@ library (the same calls as the ``rbcstab`` command line), so a result's ``to_dic
     >>> run = rbcstab.simulate(scene)
     >>> run.l_Delta, run.Delta[-1], run.sigma[-1]
 """
-from ._rbcstab import __version__, Scene, scene_keys
+from ._rbcstab import __version__, Scene, parameter_table, scene_keys
 from .runs import Report, Simulation, simulate, thresholds, post, summary
 from .model import *  # noqa: F401,F403 (initial_state, rhs, jacobian)
 from .continuation import *  # noqa: F401,F403 (continuation, Branch, load_branch)
@@ -17,5 +17,5 @@ from .continuation import __all__ as _continuation_all  # rbcstab.continuation i
 from .sweep import *  # noqa: F401,F403 (diagram, trace)
 from . import model as _model, sweep as _sweep
 
-__all__ = (["__version__", "Scene", "scene_keys", "Report", "Simulation", "simulate", "thresholds", "post",
+__all__ = (["__version__", "Scene", "parameter_table", "scene_keys", "Report", "Simulation", "simulate", "thresholds", "post",
             "summary"] + _model.__all__ + _continuation_all + _sweep.__all__)

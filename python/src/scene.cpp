@@ -9,6 +9,7 @@
 #include "bindings.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/parameter_table.hpp"
+#include "rbcstab/report/bifurcation_plot.hpp"
 
 namespace rbcstab::python {
 
@@ -188,7 +189,7 @@ Scenes are immutable: ``replace(**changes)`` returns a new one.)");
         },
         key->help.c_str());
   }
-  for (const SceneParameter q : {SceneParameter::Lambda, SceneParameter::S, SceneParameter::alpha}) {
+  for (const SceneParameter q : composite_parameters()) {
     const ParameterRow& row = parameter_row(q);
     cls.def_property_readonly(
         row.name, [q](const SceneFile& f) { return get_parameter(f.scene, q); }, row.description);
@@ -222,6 +223,42 @@ Scenes are immutable: ``replace(**changes)`` returns a new one.)");
         return out;
       },
       "Every scene key: keyword, TOML path, CLI flag, help (meaning and range), allowed names, default.");
+
+  m.def(
+      "parameter_table",
+      [] {
+        py::list out;
+        const Parameters defaults;
+        for (const ParameterRow& r : parameter_table()) {
+          py::dict d;
+          d["name"] = r.name;
+          d["keyword"] = std::string(r.name) == "lambda" ? "lambda_" : r.name;  // as Scene(...) takes it
+          d["symbol"] = r.symbol;
+          d["label"] = tex_symbol(r.name);
+          d["unicode"] = r.unicode;
+          d["unit"] = r.unit;
+          d["description"] = r.description;
+          d["table"] = r.table ? py::object(py::str(r.table)) : py::object(py::none());
+          d["scale"] = to_string(r.scale);
+          d["moves"] = to_string(moved_parameter(r.id));
+          d["definition"] = r.definition ? py::object(py::str(r.definition)) : py::object(py::none());
+          d["domain"] = parameter_domain(r.id, defaults).text(false);
+          py::list levels;
+          for (ModelLevel l : {ModelLevel::reduced, ModelLevel::modal, ModelLevel::full})
+            if (r.levels & level_bit(l)) levels.append(to_string(l));
+          d["levels"] = levels;
+          d["continuation"] = r.continuation;
+          d["axis"] = r.axis;
+          d["formula"] = r.physical.formula ? py::object(py::str(r.physical.formula)) : py::object(py::none());
+          d["reference"] = r.physical.reference ? py::object(py::str(r.physical.reference)) : py::object(py::none());
+          out.append(d);
+        }
+        return out;
+      },
+      "Every parameter, one dict per row of the library's parameter table: name, Scene keyword, TeX symbol and\n"
+      "figure label, Unicode symbol, unit, description, scene-file table (None: derived), axis scale, the stored\n"
+      "parameter it moves, definition of a composite, domain, model levels it moves, whether it can be a\n"
+      "continuation parameter or a diagram axis, and its formula from physical inputs (docs/units.md).");
 }
 
 }  // namespace rbcstab::python

@@ -28,6 +28,32 @@ def test_every_scene_key_is_a_keyword_and_an_attribute():
         assert hasattr(s, k["keyword"]), k
 
 
+def test_parameter_table_drives_every_python_interface():
+    # The library's table is the one list: Scene keywords and properties, continuation parameters, diagram axes
+    # and figure labels all follow it; the drawing code keeps no symbol table of its own.
+    rows = rbcstab.parameter_table()
+    keywords = {k["keyword"] for k in rbcstab.scene_keys() if k["table"] in ("parameters", "initial")}
+    s = rbcstab.Scene()
+    stored = [r for r in rows if r["table"] in ("parameters", "initial")]
+    assert {r["keyword"] for r in stored} == {k for k in keywords if k not in ("delta_l", "rest_delta_l")}
+    for r in rows:
+        if r["table"] or r["definition"]:
+            assert isinstance(getattr(s, r["keyword"]), float), r
+        unit = f" [{r['unit']}]" if r["unit"] else ""
+        assert r["label"] == f"${r['symbol']}${unit}", r
+        assert set(r["levels"]) <= {"reduced", "modal", "full"} and r["levels"], r
+    with pytest.raises(ValueError) as e:
+        rbcstab.continuation(s, parameter="kappa")
+    assert str(e.value).endswith("must be one of " + ", ".join(r["name"] for r in rows if r["continuation"]))
+    with pytest.raises(ValueError) as e:
+        rbcstab.diagram(s, axes=("kappa", "lambda"), counts=(2, 2), progress=False)
+    assert "must be one of " + ", ".join(r["name"] for r in rows if r["axis"]) in str(e.value)
+    from rbcstab.sweep import phase_draw
+    assert not hasattr(phase_draw(), "SYMBOLS")
+    # B never reaches the reduced (l = 2) system: Upsilon_l's B term is for l >= 3 (the levels' own test).
+    assert {r["name"]: r["levels"] for r in rows}["B"] == ["modal", "full"]
+
+
 def test_derived_numbers_follow_their_definitions():
     s = rbcstab.Scene(lambda_=5.0, Delta=1.0, Delta0=0.01, B=2.0, C=0.04)
     # Eq. Lambda_S: Lambda = sqrt(Delta)(23 lambda + 32)/(8 sqrt(30 pi)), S = C sqrt(15 pi/(2 Delta0)), alpha = B/C

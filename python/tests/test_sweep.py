@@ -331,8 +331,9 @@ def test_phase_drawing_puts_a_geometric_axis_on_a_log_scale():
     X, Y = np.meshgrid(xs_g, ys)
     ld = [2, 4, 4, 2, 2, 4]
     fig, ax = plt.subplots()
+    label = {r["name"]: r["label"] for r in rbcstab.parameter_table()}
     pd.draw_phase_diagram(ax, X.ravel().tolist(), Y.ravel().tolist(), ld, "shear_rate", "lambda",
-                          labels={"x": r"$\dot\gamma$ [1/s]"})
+                          labels={"x": label["shear_rate"], "y": label["lambda"]})
     assert ax.get_xscale() == "log" and ax.get_yscale() == "linear"
     assert ax.get_xlabel() == r"$\dot\gamma$ [1/s]" and ax.get_ylabel() == r"$\lambda$"
     lo, hi = ax.get_xlim()

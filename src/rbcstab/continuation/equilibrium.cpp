@@ -82,11 +82,6 @@ CertifiedSpectrum ReducedEquilibriumProblem::certified_spectrum(const Eigen::Vec
   return detail::certified_tangent_spectrum(Eigen::MatrixXd(D), y, assembly_accuracy(3));
 }
 
-Eigen::VectorXd ReducedEquilibriumProblem::scene_state() const {
-  const std::vector<double> y0 = model(start_parameter()).initial_state();
-  return Eigen::Vector3d(y0[0], y0[1], y0[2]);
-}
-
 Eigen::VectorXd ReducedEquilibriumProblem::relaxed_state(double T) const {
   require(std::isfinite(T) && T > 0, "T", T, "a finite number > 0");
   const ReducedModel& m = model(start_parameter());

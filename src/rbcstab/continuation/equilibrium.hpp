@@ -40,8 +40,6 @@ class ReducedEquilibriumProblem final : public ContinuationProblem {
   std::string parameter_name() const override { return to_string(free_); }
 
   double start_parameter() const { return get_parameter(scene_, free_); }
-  // The scene's own initial state (a start for Newton only if it is near an equilibrium).
-  Eigen::VectorXd scene_state() const;
   // The reduced state after relaxing for time T from the scene's initial state (a start on the
   // stable branch when one attracts it).
   Eigen::VectorXd relaxed_state(double T) const;

@@ -32,7 +32,6 @@ class HopfCurveProblem final : public ContinuationProblem {
   const Eigen::VectorXd& start() const { return start_; }  // (x, p1, kappa) at the HB point
   // omega = sqrt(kappa) of a curve point (kappa <= 0: a neutral saddle, omega reported as 0).
   double omega(const Eigen::VectorXd& X) const;
-  std::array<int, 4> chosen_entries() const { return entries_; }  // (i1, j1, i2, j2) of G
 
  private:
   Eigen::Matrix2d G(const Eigen::VectorXd& x, double p1, double kappa, double p2) const;

@@ -68,7 +68,6 @@ class NeimarkSackerCurveProblem final : public ContinuationProblem {
   // The 2 x 2 G of the bordered system (zero on the curve).
   Eigen::Matrix2d test_functions(const Eigen::VectorXd& X, double p1, double kappa, double p2) const;
   Floquet floquet(const Eigen::VectorXd& X, double p1, double p2) const;
-  std::array<int, 4> chosen_entries() const { return entries_; }  // (i1, j1, i2, j2) of G
   std::size_t integrations() const { return orbit_.integrations(); }
 
  private:

@@ -32,6 +32,11 @@ struct EnumTable<Origin> {
 // How a row is valued and how an axis spaces it. log: the value is ln of another row's (lnB), spaced evenly;
 // geometric: the value itself, its grid spaced evenly in ln (a rate over decades: 10, 100, 1000 1/s).
 enum class AxisScale { linear, log, geometric };
+template <>
+struct EnumTable<AxisScale> {
+  static constexpr EnumName<AxisScale> entries[] = {
+      {AxisScale::linear, "linear"}, {AxisScale::log, "log"}, {AxisScale::geometric, "geometric"}};
+};
 
 // The values a parameter may take. An infinite end is a value only when closed (C = inf: the vesicle limit).
 struct Domain {

@@ -15,14 +15,6 @@
 
 namespace rbcstab {
 
-bool MpiSession::compiled_in() {
-#ifdef RBCSTAB_WITH_MPI
-  return true;
-#else
-  return false;
-#endif
-}
-
 MpiSession::MpiSession() {
 #ifdef RBCSTAB_WITH_MPI
   const bool launched = std::getenv("OMPI_COMM_WORLD_SIZE") || std::getenv("PMI_SIZE") || std::getenv("PMIX_RANK");

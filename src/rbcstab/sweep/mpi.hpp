@@ -15,7 +15,6 @@ class MpiSession {
   MpiSession& operator=(const MpiSession&) = delete;
   int rank() const { return rank_; }
   int size() const { return size_; }
-  static bool compiled_in();
   // Rank 0 gets every rank's points in index order (complete iff every rank completed); other
   // ranks get their own run back, with `complete` as the global value.
   DiagramRun gather(const DiagramRun& mine, const DiagramSpec& spec) const;

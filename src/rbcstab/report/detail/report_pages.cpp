@@ -4,6 +4,8 @@
 #include <sstream>
 #include <vector>
 
+#include "rbcstab/model/parameter_table.hpp"
+
 namespace rbcstab::detail {
 
 namespace {
@@ -64,16 +66,12 @@ Page make_page(const nlohmann::json& m) {
   auto row = [&](const char* k, const nlohmann::json& v, const char* meaning) {
     params.rows.push_back({k, num(v, 10), meaning});
   };
-  row("lambda", par.at("lambda"), "viscosity ratio");
-  row("Delta", par.at("Delta"), "excess area of the current shape");
-  row("Delta0", par.at("Delta0"), "excess area of the stress-free shape");
-  row("B", par.at("B"), "bending number");
-  row("C", par.at("C"), "capillary number");
-  row("alpha", par.at("alpha"), "B / C");
-  row("Lambda", par.at("Lambda"), "reduced-system coupling (Eq. Lambda_S)");
-  row("S", par.at("S"), "reduced-system elasticity (Eq. Lambda_S)");
-  row("beta", sc.at("beta"), "initial orientation (0: out of plane, pi/2: in plane)");
-  row("delta", sc.at("delta"), "initial perturbation Delta_l(0), l >= 3");
+  // Every row of the parameter table the report's JSON holds: the material numbers and composites under
+  // "parameters", the initial shape's under "scene".
+  for (const ParameterRow& r : parameter_table()) {
+    const nlohmann::json* v = par.contains(r.name) ? &par.at(r.name) : sc.contains(r.name) ? &sc.at(r.name) : nullptr;
+    if (v && r.scale == AxisScale::linear) params.rows.push_back({r.unicode, num(*v, 10), r.description});
+  }
   row("L", sc.at("L"), "truncation");
   row("T", sc.at("T"), "horizon");
   p.tables.push_back({panel ? "Base scene (the panel varies some of these)" : "Parameters", params});

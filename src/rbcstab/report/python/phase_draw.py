@@ -6,16 +6,7 @@ import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.patches import Patch
 
-SYMBOLS = {"ln_B": r"$\ln\mathcal{B}$", "ln_C": r"$\ln\mathcal{C}$", "lnB": r"$\ln\mathcal{B}$",
-           "lnC": r"$\ln\mathcal{C}$", "Lambda": r"$\Lambda$", "S": "$S$", "lambda": r"$\lambda$", "Delta": r"$\Delta$",
-           "Delta0": r"$\Delta_0$", "alpha": r"$\alpha$", "beta": r"$\beta$", "ln_alpha": r"$\ln\alpha$",
-           "B": r"$\mathcal{B}$", "C": r"$\mathcal{C}$", "r": "$r$", "Psi": r"$\Psi$", "Delta2": r"$\Delta_2$",
-           "sigma": r"$\sigma$"}
 LINE_STYLES = {"solid": "-", "dashed": "--", "dotted": ":", "dashdot": "-."}
-
-
-def symbol(name):
-    return SYMBOLS.get(name, name)
 
 
 def greys(n, lo=0.0, hi=0.75):
@@ -104,9 +95,10 @@ def draw_phase_diagram(ax, xs, ys, ld, x, y, curves=(), limits=None, title=None,
                         bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.7))
     ax.set_xlim(*x_lim)
     ax.set_ylim(*y_lim)
-    labels = labels or {}  # the overlay's "axes" (the parameter table's symbols); else the column names' symbols
-    ax.set_xlabel(labels.get("x") or symbol(x))
-    ax.set_ylabel(labels.get("y") or symbol(y))
+    # The overlay's "axes": the library's labels (the parameter table's symbols); no table is kept here.
+    labels = labels or {}
+    ax.set_xlabel(labels.get("x") or x)
+    ax.set_ylabel(labels.get("y") or y)
     ax.grid(False)
     handles, labels = ax.get_legend_handles_labels()
     ax.legend(extra + handles, [h.get_label() for h in extra] + labels, loc="center left",
