@@ -51,6 +51,8 @@ packages=(build-essential cmake ninja-build pkg-config
   libopenmpi-dev openmpi-bin python3-matplotlib
   pybind11-dev python3-pybind11 python3-dev python3-numpy python3-scipy python3-pytest
   python3-nbclient python3-nbformat python3-ipykernel python3-tqdm)
+# The test suite also checks the source format (layout.format); the other modes do not need the formatter.
+[ "$mode" = test ] && packages+=(clang-format)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

@@ -1,4 +1,5 @@
-# Usage: cmake -DROOT=<source dir> -DCASE=detail_includes|citations|architecture_map -P layout_check.cmake
+# Usage: cmake -DROOT=<source dir> -DCASE=detail_includes|citations|architecture_map|format
+#        [-DCLANG_FORMAT=<clang-format>] -P layout_check.cmake
 cmake_minimum_required(VERSION 3.20)
 
 set(violations "")
@@ -77,6 +78,19 @@ elseif(CASE STREQUAL "architecture_map")
       list(APPEND violations "docs/architecture.md's map names ${n}, which src/rbcstab does not hold")
     endif()
   endforeach()
+elseif(CASE STREQUAL "format")
+  # clang-format (.clang-format: Google style, 120 columns) leaves every C++ source as it is.
+  file(GLOB_RECURSE files ${ROOT}/src/*.hpp ${ROOT}/src/*.cpp ${ROOT}/apps/*.hpp ${ROOT}/apps/*.cpp
+    ${ROOT}/python/src/*.hpp ${ROOT}/python/src/*.cpp ${ROOT}/tests/*.hpp ${ROOT}/tests/*.cpp
+    ${ROOT}/benchmarks/*.hpp ${ROOT}/benchmarks/*.cpp ${ROOT}/fuzz/*.cpp)
+  execute_process(COMMAND ${CLANG_FORMAT} --dry-run --Werror ${files} RESULT_VARIABLE rc ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    string(REGEX MATCHALL "[^\n]*warning: code should be clang-formatted[^\n]*" hits "${err}")
+    list(APPEND violations ${hits})
+    if(NOT hits)
+      list(APPEND violations "clang-format failed: ${err}")
+    endif()
+  endif()
 else()
   message(FATAL_ERROR "unknown case ${CASE}")
 endif()
