@@ -17,6 +17,7 @@
 #include "rbcstab/model/physical.hpp"
 #include "rbcstab/report/bifurcation_plot.hpp"
 #include "rbcstab/sweep/diagram.hpp"
+#include "test_files.hpp"
 
 namespace rbcstab {
 namespace {
@@ -127,6 +128,31 @@ TEST(ParameterWalk, SummaryLinesNameTheRows) {
   EXPECT_EQ(names_on("Parameters", "Derived"), stored) << out;
   EXPECT_EQ(names_on("Derived", "\n"), row_names([](const ParameterRow& r) { return r.definition != nullptr; }))
       << out;
+}
+
+// docs/scenes.md's parameter table is this table, row for row: a row added here and not there fails, with the
+// rows to paste in the message.
+TEST(ParameterWalk, ScenesDocumentListsTheRows) {
+  std::string expected;
+  for (const ParameterRow& r : parameter_table()) {
+    const std::string stored = r.table                        ? std::string("`[") + r.table + "]`"
+                               : r.definition                 ? "derived"
+                               : r.scale == AxisScale::log    ? "log axis"
+                                                              : "`[physical]`";
+    std::string levels;
+    for (ModelLevel l : {ModelLevel::reduced, ModelLevel::modal, ModelLevel::full})
+      if (r.levels & level_bit(l)) levels += (levels.empty() ? "" : ", ") + to_string(l);
+    expected += std::string("| ") + r.name + " | " + r.unicode + " | " + stored + " | " +
+                parameter_domain(r.id, Parameters{}).text(false) + " | " + (r.continuation ? "yes" : "no") + " | " +
+                (r.axis ? "yes" : "no") + " | " + to_string(moved_parameter(r.id)) + " | " + levels + " |\n";
+  }
+  const std::string doc = test::slurp(std::string(RBCSTAB_SOURCE_DIR) + "/docs/scenes.md");
+  const std::string header = "| name | symbol | stored in | domain | continuation | axis | set through | levels |\n";
+  const std::size_t at = doc.find(header);
+  ASSERT_NE(at, std::string::npos) << "docs/scenes.md has no parameter table starting " << header;
+  const std::size_t rows = doc.find('\n', at + header.size()) + 1;  // past the |---| line
+  const std::size_t end = doc.find("\n\n", rows);
+  EXPECT_EQ(doc.substr(rows, end + 1 - rows), expected) << "docs/scenes.md's rows should read:\n" << expected;
 }
 
 }  // namespace
