@@ -1,9 +1,12 @@
 // Failure statuses (never an exception for numerical trouble, never NaN) and option validation.
+#include <gsl/gsl_errno.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "integrate/run_helpers.hpp"
 #include "model/test_scenes.hpp"
@@ -31,6 +34,25 @@ TEST(Failure, TinyStepLimitEndsWithStatusAndFiniteResult) {
     EXPECT_TRUE(all_finite(r));
     EXPECT_EQ(r.Delta_final.size(), std::size_t(s.L - 1));
   }
+}
+
+// GSL's error handler is process-wide: integrations on several threads turn it off together and the last one
+// out restores the caller's, which is in place again afterwards (a per-call save/restore would not be).
+extern "C" void rbcstab_test_gsl_handler(const char*, const char*, int, int) {}
+TEST(Failure, ConcurrentIntegrationsRestoreTheCallersGslHandler) {
+  gsl_error_handler_t* const before = gsl_set_error_handler(&rbcstab_test_gsl_handler);
+  std::vector<std::thread> threads;
+  for (int k = 0; k < 4; ++k)
+    threads.emplace_back([k] {
+      Scene s = fig3_scene(0.3 * k);
+      s.T = 20;
+      s.model = ModelLevel::modal;
+      SimulationOptions o;
+      o.integrator.stepper = k % 2 ? Stepper::msbdf : Stepper::rkf45;  // GSL's own steppers
+      EXPECT_EQ(simulate(s, o).status, IntegrationStatus::success);
+    });
+  for (std::thread& t : threads) t.join();
+  EXPECT_EQ(gsl_set_error_handler(before), &rbcstab_test_gsl_handler);
 }
 
 TEST(Failure, WallClockLimitEndsWithTimeLimit) {

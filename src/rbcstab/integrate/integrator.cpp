@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <mutex>
 #include <memory>
 #include <optional>
 
@@ -119,10 +120,33 @@ class PrinceDormandEvolver final : public Evolver {
   detail::PrinceDormand87 stepper_;
 };
 
-// GSL's default error handler aborts; every GSL error here is a returned status instead.
-struct GslErrorHandlerOff {
-  gsl_error_handler_t* previous = gsl_set_error_handler_off();
-  ~GslErrorHandlerOff() { gsl_set_error_handler(previous); }
+// GSL's default error handler aborts; every GSL error here is a returned status instead. The handler is
+// process-wide, so concurrent integrations (threaded sweeps) share one switch: the first to enter turns it off,
+// the last to leave restores the caller's. A save/restore per call would let one thread put the aborting handler
+// back while another is still inside GSL.
+class GslErrorHandlerOff {
+ public:
+  GslErrorHandlerOff() {
+    const std::lock_guard<std::mutex> lock(state().mutex);
+    if (state().users++ == 0) state().previous = gsl_set_error_handler_off();
+  }
+  ~GslErrorHandlerOff() {
+    const std::lock_guard<std::mutex> lock(state().mutex);
+    if (--state().users == 0) gsl_set_error_handler(state().previous);
+  }
+  GslErrorHandlerOff(const GslErrorHandlerOff&) = delete;
+  GslErrorHandlerOff& operator=(const GslErrorHandlerOff&) = delete;
+
+ private:
+  struct State {
+    std::mutex mutex;
+    int users = 0;
+    gsl_error_handler_t* previous = nullptr;
+  };
+  static State& state() {
+    static State s;
+    return s;
+  }
 };
 }  // namespace
 
