@@ -1,164 +1,32 @@
+// What a bifurcation diagram draws (plot_spec): the axes, each input's series and their stability segments, the
+// special and labelled points placed on them, the legend names and the title; and the axis labels (tex_symbol).
 #include "rbcstab/report/bifurcation_plot.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
-#include <limits>
 #include <map>
-#include <numbers>
 #include <set>
 #include <sstream>
 #include <tuple>
 
 #include "rbcstab/core/error.hpp"
-#include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/model/parameter_table.hpp"
-#include "rbcstab/report/detail/staging.hpp"
-#include "rbcstab/report/report.hpp"
+#include "rbcstab/report/detail/plot_branch.hpp"
 
 namespace rbcstab {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
 
+namespace detail::plot {
 namespace {
 
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
 // Coinciding special points share one text when they are this close in both axes (fraction of the span):
 // closer than about a character at the default size.
 constexpr double kCoincident = 0.01;
-
-bool is_curve(const json& j) { return j.contains("curve"); }
-
-std::vector<std::string> free_parameters(const json& j) {
-  if (is_curve(j)) {
-    const json& p = j["curve"]["parameters"];
-    return {p[0].get<std::string>(), p[1].get<std::string>()};
-  }
-  return {j["free_parameter"].get<std::string>()};
-}
-
-// The input's problem kind; a bare branch without "kind" is an orbit when its points carry multipliers.
-std::string problem_of(const json& j) {
-  if (j.contains("kind") && j["kind"].is_string()) return j["kind"].get<std::string>();
-  const json& pts = j["branch"];
-  return !pts.empty() && pts[0].contains("multipliers") ? "orbit" : "equilibrium";
-}
-
-bool orbit_problem(const std::string& problem) { return problem == "orbit" || problem == "modal-orbit"; }
-
-std::string level_of(const json& j, const std::string& problem) {
-  if (j.contains("level") && j["level"].is_string()) return j["level"].get<std::string>();
-  return problem == "modal" || problem == "modal-orbit" ? "modal" : problem == "full" ? "full" : "reduced";
-}
-
-bool is_delta_l(const std::string& key) {
-  return key.size() > 6 && key.rfind("Delta_", 0) == 0 &&
-         std::all_of(key.begin() + 6, key.end(), [](unsigned char c) { return std::isdigit(c); });
-}
-
-double num(const json& v) { return v.is_number() ? v.get<double>() : kNaN; }
-
-// The measures computed here from what a point carries (see the header).
-double derived(const json& p, const std::string& name) {
-  auto max_over = [&](const char* key, auto&& f) {
-    const auto it = p.find(key);
-    if (it == p.end() || !it->is_array() || it->empty()) return kNaN;
-    double m = -kInf;
-    for (const json& z : *it) {
-      if (!z.is_array() || z.size() != 2) return kNaN;
-      const double v = f(num(z[0]), num(z[1]));
-      if (!std::isfinite(v)) return kNaN;
-      m = std::max(m, v);
-    }
-    return m;
-  };
-  if (name == "period") return 2 * std::numbers::pi;
-  if (name == "max_abs_multiplier") return max_over("multipliers", [](double re, double im) { return std::hypot(re, im); });
-  if (name == "max_Re_eig") return max_over("eigenvalues", [](double re, double) { return re; });
-  if (name == "norm_Delta" || name == "norm_x") {
-    double s = 0;
-    bool any = false;
-    if (name == "norm_Delta") {
-      for (const auto& [k, v] : p.items())
-        if (is_delta_l(k)) s += num(v) * num(v), any = true;
-    } else if (p.contains("x") && p["x"].is_array()) {
-      for (const json& v : p["x"]) s += num(v) * num(v), any = true;
-    }
-    return any ? std::sqrt(s) : kNaN;
-  }
-  return kNaN;
-}
-
-// The scene's parameters that stay fixed along an input: the material parameters and beta, except the
-// free ones and those a free composite moves (Lambda through Delta, S through C: parameters.hpp; Delta,
-// lambda move Lambda and C, Delta0 move S, which are therefore never fixed). Null (C = inf) is infinite.
-using Fixed = std::map<std::string, double>;
-Fixed fixed_parameters(const json& j) {
-  std::set<std::string> moved;
-  for (const std::string& q : free_parameters(j)) {
-    moved.insert(q);
-    if (q == "Lambda") moved.insert("Delta");
-    if (q == "S") moved.insert("C");
-  }
-  Fixed f;
-  const json* ps = j.contains("parameters") && j["parameters"].is_object() ? &j["parameters"] : nullptr;
-  for (const char* name : {"lambda", "Delta", "Delta0", "B", "C", "beta"}) {
-    if (moved.count(name)) continue;
-    const json* v = std::string(name) == "beta" ? (j.contains("beta") ? &j["beta"] : nullptr)
-                    : ps && ps->contains(name)  ? &(*ps)[name]
-                                                : nullptr;
-    if (v && (v->is_number() || v->is_null())) f[name] = v->is_null() ? kInf : v->get<double>();
-  }
-  return f;
-}
-
-// The quantity `name` of a point: its own key (null: undefined), else a derived measure, else a
-// parameter the input holds fixed.
-double value(const json& p, const std::string& name, const Fixed* fixed = nullptr) {
-  const auto it = p.find(name);
-  if (it != p.end()) return num(*it);
-  if (fixed)
-    if (const auto f = fixed->find(name); f != fixed->end()) return f->second;
-  return derived(p, name);
-}
-
-std::string stability_of(const json& p, const std::string& source, std::size_t k) {
-  if (const auto it = p.find("stability"); it != p.end() && !it->is_null()) {
-    const std::string s = it->is_string() ? it->get<std::string>() : it->dump();
-    if (s != "stable" && s != "unstable" && s != "uncertain")
-      throw InvalidArgument("file", source + ": point " + std::to_string(k) + " has stability = '" + s +
-                                        "' (must be stable, unstable or uncertain)");
-    return s;
-  }
-  if (const auto it = p.find("stable"); it != p.end() && it->is_boolean()) return it->get<bool>() ? "stable" : "unstable";
-  return "uncertain";
-}
-
-std::string style_of(const std::string& stability) {
-  return stability == "unstable" ? "dashed" : stability == "uncertain" ? "dotted" : "solid";
-}
-
-std::optional<int> label_of(const json& p) {
-  const auto it = p.find("label");
-  if (it == p.end() || !it->is_number_integer()) return std::nullopt;
-  return it->get<int>();
-}
-
-std::string type_of(const json& p) {
-  const auto it = p.find("type");
-  return it != p.end() && it->is_string() ? it->get<std::string>() : "";
-}
-
-// A switched branch is drawn when switching succeeded ("switched"; without the key: when it has points).
-bool switched(const json& sw) {
-  const bool has_points = sw.contains("branch") && sw["branch"].is_array() && !sw["branch"].empty();
-  return sw.value("switched", has_points);
-}
 
 std::string join(const std::vector<std::string>& v) {
   std::string s;
@@ -443,79 +311,10 @@ std::string default_title(const std::vector<PlotInput>& inputs, const Axes& axes
 }
 
 }  // namespace
-
-PlotInput plot_input(json j, const std::string& source) {
-  auto refuse = [&](const std::string& why) {
-    return InvalidArgument("file", source + " is not a branch JSON (the output of `rbcstab continue --json` or a "
-                                            "branch file of --save): " + why);
-  };
-  if (!j.is_object()) throw refuse("not a JSON object");
-  if (j.contains("format") && j["format"] != "rbcstab-branch")
-    throw refuse("format = " + j["format"].dump() + " (expected \"rbcstab-branch\")");
-  if (!j.contains("branch") || !j["branch"].is_array()) throw refuse("no \"branch\" array of points");
-  if (!j.contains("free_parameter") || !j["free_parameter"].is_string()) throw refuse("no \"free_parameter\"");
-  if (is_curve(j)) {
-    const json& c = j["curve"];
-    if (!c.is_object() || !c.contains("parameters") || !c["parameters"].is_array() || c["parameters"].size() != 2 ||
-        !c["parameters"][0].is_string() || !c["parameters"][1].is_string())
-      throw refuse("\"curve\" needs \"parameters\": [p1, p2]");
-  }
-  const std::vector<std::string> params = free_parameters(j);
-  auto check_part = [&](const json& part, const std::string& where) {
-    for (std::size_t k = 0; k < part["branch"].size(); ++k) {
-      const json& p = part["branch"][k];
-      if (!p.is_object()) throw refuse(where + "point " + std::to_string(k) + " is not an object");
-      for (const auto& q : params)
-        if (!p.contains(q)) throw refuse(where + "point " + std::to_string(k) + " has no \"" + q + "\"");
-    }
-    if (part.contains("special_points") && !part["special_points"].is_array())
-      throw refuse(where + "\"special_points\" is not an array");
-  };
-  check_part(j, "");
-  if (j.contains("switched_branch")) {
-    const json& sw = j["switched_branch"];
-    if (!sw.is_object() || (switched(sw) && !(sw.contains("branch") && sw["branch"].is_array())))
-      throw refuse("\"switched_branch\" has no \"branch\" array");
-    if (switched(sw)) check_part(sw, "switched branch: ");
-  }
-  return {source, std::move(j)};
-}
-
-PlotInput read_plot_input(const std::string& path) {
-  const std::string text = read_file(path);
-  json j;
-  try {
-    j = json::parse(text);
-  } catch (const json::parse_error& e) {
-    throw InvalidArgument("file", path + " is not valid JSON (truncated or not a branch file?): " + e.what());
-  }
-  return plot_input(std::move(j), path);
-}
-
-std::vector<std::string> plot_measures(const PlotInput& in) {
-  const json& j = in.branch;
-  std::vector<std::string> out = free_parameters(j);
-  const json& pts = j["branch"];
-  if (pts.empty()) return out;
-  const json& p = pts[0];
-  for (const auto& [k, v] : p.items())
-    if ((v.is_number() || v.is_null()) && k != "label" && std::find(out.begin(), out.end(), k) == out.end())
-      out.push_back(k);
-  auto add = [&](const std::string& name, bool applies) {
-    if (applies && std::find(out.begin(), out.end(), name) == out.end()) out.push_back(name);
-  };
-  add("period", orbit_problem(problem_of(j)) && !is_curve(j));
-  add("max_abs_multiplier", p.contains("multipliers"));
-  add("max_Re_eig", p.contains("eigenvalues"));
-  bool has_delta = false;
-  for (const auto& [k, v] : p.items()) has_delta = has_delta || is_delta_l(k);
-  add("norm_Delta", has_delta);
-  add("norm_x", p.contains("x") && p["x"].is_array());
-  for (const auto& [name, v] : fixed_parameters(j)) add(name, true);
-  return out;
-}
+}  // namespace detail::plot
 
 PlotSpec plot_spec(const std::vector<PlotInput>& inputs, const PlotOptions& o) {
+  using namespace detail::plot;  // the branch readers (detail/plot_branch.hpp)
   if (inputs.empty()) throw InvalidArgument("inputs", "inputs: at least one branch JSON is needed");
   PlotSpec spec;
   std::vector<std::vector<std::string>> available;
@@ -568,6 +367,7 @@ PlotSpec plot_spec(const std::vector<PlotInput>& inputs, const PlotOptions& o) {
 }
 
 std::string tex_symbol(const std::string& name) {
+  using namespace detail::plot;  // the branch readers (detail/plot_branch.hpp)
   // A scene parameter's symbol is its row's (model/parameter_table.hpp); the map holds the branch quantities.
   for (const ParameterRow& row : parameter_table())
     if (name == row.name) return std::string("$") + row.symbol + "$" + (*row.unit ? std::string(" [") + row.unit + "]" : "");
@@ -594,117 +394,6 @@ std::string tex_symbol(const std::string& name) {
   if (const auto it = symbols.find(name); it != symbols.end()) return it->second;
   if (is_delta_l(name)) return "$\\Delta_{" + name.substr(6) + "}$";
   return name;
-}
-
-json to_json(const PlotSpec& spec) {
-  auto numbers = [](const std::vector<double>& v) {
-    json a = json::array();
-    for (double x : v) a.push_back(number_or_null(x));
-    return a;
-  };
-  json series = json::array();
-  std::set<std::string> used;
-  for (const PlotSeries& s : spec.series) {
-    json segs = json::array();
-    for (const PlotSegment& g : s.segments) {
-      segs.push_back({{"stability", g.stability}, {"style", g.style}, {"x", numbers(g.x)}, {"y", numbers(g.y)}});
-      used.insert(g.stability);
-    }
-    series.push_back({{"name", s.name},
-                      {"kind", s.kind},
-                      {"problem", s.problem},
-                      {"level", s.level},
-                      {"role", s.role},
-                      {"source", s.source},
-                      {"x", numbers(s.x)},
-                      {"y", numbers(s.y)},
-                      {"stability", s.stability},
-                      {"segments", segs}});
-  }
-  json points = json::array();
-  for (const PlotPoint& p : spec.points)
-    points.push_back({{"x", number_or_null(p.x)},
-                      {"y", number_or_null(p.y)},
-                      {"type", p.type},
-                      {"label", p.label ? json(*p.label) : json(nullptr)},
-                      {"stability", p.stability},
-                      {"series", p.series},
-                      {"marker", p.marker},
-                      {"text", p.text}});
-  // The legend's line-style key: the stabilities drawn, in a fixed order.
-  json styles = json::array();
-  for (const char* s : {"stable", "unstable", "uncertain"})
-    if (used.count(s)) styles.push_back({{"stability", s}, {"style", style_of(s)}});
-  return {{"format", "rbcstab-plot"},
-          {"version", 1},
-          {"x", {{"name", spec.x.name}, {"label", spec.x.label}}},
-          {"y", {{"name", spec.y.name}, {"label", spec.y.label}}},
-          {"title", spec.title},
-          {"series", series},
-          {"points", points},
-          {"styles", styles},
-          {"measures", spec.measures},
-          {"notes", spec.notes}};
-}
-
-void PlotDrawOptions::validate() const {
-  std::string ext = fs::path(output).extension().string();
-  for (char& c : ext) c = char(std::tolower(static_cast<unsigned char>(c)));
-  if (output.empty() || ext != ".png")
-    throw InvalidArgument("output", "output = '" + output + "' must be a file name ending in .png");
-  std::error_code ec;
-  const fs::path parent = fs::absolute(output).lexically_normal().parent_path();
-  if (!fs::is_directory(parent, ec))
-    throw InvalidArgument("output", "output = '" + output + "': the folder " + parent.string() + " does not exist");
-  if (fs::is_directory(output, ec)) throw InvalidArgument("output", "output = '" + output + "' is a folder");
-  require(width >= 200 && width <= 4000, "width", width, "an integer in [200, 4000] (pixels)");
-  require(height >= 200 && height <= 4000, "height", height, "an integer in [200, 4000] (pixels)");
-  if (python.empty()) throw InvalidArgument("python", "python: an interpreter path is required");
-}
-
-std::string plot_json_path(const std::string& png) { return fs::path(png).replace_extension(".json").string(); }
-
-PlotFiles draw_plot(const PlotSpec& spec, const PlotDrawOptions& o) {
-  o.validate();
-  const std::string script_dir = o.script_dir.empty() ? find_script_dir("") : o.script_dir;
-  std::error_code ec;
-  if (script_dir.empty() || !fs::is_regular_file(fs::path(script_dir) / kReportScript, ec))
-    throw ReportError("script_dir: " + std::string(kReportScript) + " not found (looked in '" + script_dir +
-                      "', $RBCSTAB_DATA_DIR, <prefix>/share/rbcstab/python); set RBCSTAB_DATA_DIR");
-  const fs::path png = fs::absolute(o.output).lexically_normal();
-  const fs::path json_path = plot_json_path(png.string());
-  // `plot b.json --output b.png` would replace its own input by the JSON of what was drawn.
-  for (const PlotSeries& s : spec.series)
-    if (fs::equivalent(s.source, json_path, ec))
-      throw InvalidArgument("output", "output = '" + o.output + "' would write " + json_path.string() +
-                                          " over the input " + s.source + "; choose another name");
-  check_python(o.python);
-  // Drawn under hidden names beside the targets, renamed into place when both are complete.
-  const fs::path dir = png.parent_path();
-  const fs::path tmp_png = dir / (detail::hidden_sibling_name(png, ".tmp-") + ".png");
-  const fs::path tmp_json = dir / (detail::hidden_sibling_name(json_path, ".tmp-") + ".json");
-  const fs::path log = dir / (detail::hidden_sibling_name(png, ".log-") + ".txt");
-  auto cleanup = [&] {
-    for (const fs::path& p : {tmp_png, tmp_json, log}) fs::remove(p, ec);
-  };
-  try {
-    write_file_atomic(tmp_json.string(), to_json(spec).dump(1) + "\n");
-    const int rc = run_process({o.python, (fs::path(script_dir) / kReportScript).string(), "plot", tmp_json.string(),
-                                tmp_png.string(), std::to_string(o.width), std::to_string(o.height)},
-                               log.string());
-    if (rc != 0 || !fs::is_regular_file(tmp_png, ec))
-      throw ReportError("the plotting script failed (exit " + std::to_string(rc) + "): " + detail::log_tail(log.string(), 1500));
-    fs::rename(tmp_png, png);
-    fs::rename(tmp_json, json_path);
-  } catch (const fs::filesystem_error& e) {
-    cleanup();
-    throw ReportError(std::string("output: ") + e.what());
-  } catch (...) {
-    cleanup();
-    throw;
-  }
-  cleanup();
-  return {png.string(), json_path.string()};
 }
 
 }  // namespace rbcstab

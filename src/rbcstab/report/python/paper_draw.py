@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""The paper's figures as `rbcstab paper` composes them (report/paper.cpp decides every run, window, scale and
-line; this script only renders DIR/paper.json with matplotlib, Agg backend).
+"""The paper's figures as `rbcstab paper` composes them (report/paper*.cpp and report/detail/paper_* decide every
+run, window, scale and line; this script only renders DIR/paper.json with matplotlib, Agg backend).
 
     paper_draw.py DIR     draw every figure of DIR/paper.json into DIR/<id>.png
 
