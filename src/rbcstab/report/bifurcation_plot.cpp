@@ -299,7 +299,8 @@ std::string default_title(const std::vector<PlotInput>& inputs, const Axes& axes
   std::vector<Fixed> fixed;
   for (const PlotInput& in : inputs) fixed.push_back(fixed_parameters(in.branch));
   std::vector<std::string> parts;
-  for (const char* name : {"lambda", "Delta", "Delta0", "B", "C", "beta"}) {
+  for (const SceneParameter q : held_parameters()) {
+    const std::string name = to_string(q);
     if (name == axes.x || name == axes.y || !fixed[0].count(name)) continue;
     const double v = fixed[0].at(name);
     if (std::all_of(fixed.begin(), fixed.end(), [&](const Fixed& f) { return f.count(name) && f.at(name) == v; })) {

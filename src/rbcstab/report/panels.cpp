@@ -1,5 +1,6 @@
 #include "rbcstab/report/panels.hpp"
 
+#include "rbcstab/report/detail/parameter_labels.hpp"
 #include "rbcstab/report/detail/staging.hpp"
 
 #include <chrono>
@@ -76,35 +77,32 @@ struct Staging {
 };
 
 std::string parameters_text(const Scene& s, bool with_lambda, bool with_BC) {
-  std::ostringstream ss;
-  ss << std::setprecision(4);
-  const Parameters& p = s.parameters;
-  if (with_lambda) ss << "lambda = " << p.lambda << ", ";
-  ss << "Delta = " << p.Delta << ", Delta0 = " << p.Delta0;
-  if (with_BC) ss << ", B = " << p.B << ", C = " << p.C;
-  ss << ", beta = " << s.beta;
-  return ss.str();
+  using P = SceneParameter;
+  std::string text;
+  auto put = [&](P q) { text += (text.empty() ? "" : ", ") + detail::plain_value(q, get_parameter(s, q)); };
+  if (with_lambda) put(P::lambda);
+  put(P::Delta);
+  put(P::Delta0);
+  if (with_BC) {
+    put(P::B);
+    put(P::C);
+  }
+  put(P::beta);
+  return text;
 }
 
 // Title parts in the paper's symbols (mathtext), for the figures; `varied` names what the panel varies.
 std::string tex_parameters(const Scene& s, const std::set<std::string>& varied, bool with_BC, double alpha_fixed = 0) {
-  std::ostringstream ss;
-  ss << std::setprecision(4);
+  std::string text;
   auto put = [&](SceneParameter q, double v) {
-    const ParameterRow& r = parameter_row(q);
-    if (varied.count(r.name)) return;
-    ss << "$" << r.symbol << " = ";
-    if (std::isinf(v)) ss << "\\infty";
-    else ss << v;
-    ss << "$, ";
+    if (!varied.count(to_string(q))) text += detail::tex_value(q, v) + ", ";
   };
   for (SceneParameter q : {SceneParameter::lambda, SceneParameter::Delta, SceneParameter::Delta0})
     put(q, get_parameter(s, q));
   if (with_BC)
     for (SceneParameter q : {SceneParameter::B, SceneParameter::C}) put(q, get_parameter(s, q));
   if (alpha_fixed > 0) put(SceneParameter::alpha, alpha_fixed);
-  ss << (std::abs(std::cos(s.beta)) < 0.5 ? "in plane" : "out of plane");
-  return ss.str();
+  return text + (std::abs(std::cos(s.beta)) < 0.5 ? "in plane" : "out of plane");
 }
 }  // namespace
 

@@ -8,17 +8,17 @@
 
 #include "rbcstab/report/detail/paper_draw_spec.hpp"
 #include "rbcstab/report/detail/paper_figures.hpp"
+#include "rbcstab/report/detail/parameter_labels.hpp"
 
 namespace rbcstab::detail::paper {
 
 namespace {
 
 std::string tex_params(const Scene& s) {
-  const Parameters& p = s.parameters;
-  std::ostringstream ss;
-  ss << std::setprecision(4) << "$\\lambda=" << p.lambda << "$, $\\Delta=" << p.Delta << "$, $\\Delta_0=" << p.Delta0
-     << "$, $\\mathcal{B}=" << p.B << "$, $\\mathcal{C}=" << p.C << "$";
-  return ss.str();
+  std::string text;
+  for (SceneParameter q : stored_parameters("parameters"))
+    text += (text.empty() ? "" : ", ") + tex_value(q, get_parameter(s, q));
+  return text;
 }
 
 }  // namespace

@@ -6,8 +6,10 @@
 #include <cmath>
 #include <numbers>
 #include <set>
+#include <string_view>
 
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/model/parameter_table.hpp"
 
 namespace rbcstab::detail::plot {
 
@@ -77,22 +79,29 @@ bool is_delta_l(const std::string& key) {
 }
 
 Fixed fixed_parameters(const json& j) {
-  std::set<std::string> moved;
-  for (const std::string& q : free_parameters(j)) {
-    moved.insert(q);
-    if (q == "Lambda") moved.insert("Delta");
-    if (q == "S") moved.insert("C");
-  }
+  // The free parameters as table rows; a name no row has (a hand-edited file) moves nothing.
+  std::vector<SceneParameter> free;
+  for (const std::string& q : free_parameters(j))
+    for (const ParameterRow& r : parameter_table())
+      if (q == r.name) free.push_back(r.id);
   Fixed f;
   const json* ps = j.contains("parameters") && j["parameters"].is_object() ? &j["parameters"] : nullptr;
-  for (const char* name : {"lambda", "Delta", "Delta0", "B", "C", "beta"}) {
-    if (moved.count(name)) continue;
-    const json* v = std::string(name) == "beta" ? (j.contains("beta") ? &j["beta"] : nullptr)
-                    : ps && ps->contains(name)  ? &(*ps)[name]
-                                                : nullptr;
-    if (v && (v->is_number() || v->is_null())) f[name] = v->is_null() ? kInf : v->get<double>();
+  for (const SceneParameter q : held_parameters()) {
+    if (moves_stored(free, q)) continue;
+    const ParameterRow& r = parameter_row(q);
+    // A branch file keeps the [parameters] under "parameters" and the [initial] ones (beta) at the top.
+    const json* holder = std::string_view(r.table) == "parameters" ? ps : &j;
+    const json* v = holder && holder->contains(r.name) ? &(*holder)[r.name] : nullptr;
+    if (v && (v->is_number() || v->is_null())) f[r.name] = v->is_null() ? kInf : v->get<double>();
   }
   return f;
+}
+
+std::vector<SceneParameter> held_parameters() {
+  std::vector<SceneParameter> out;
+  for (const ParameterRow& r : parameter_table())
+    if (r.table && r.continuation) out.push_back(r.id);
+  return out;
 }
 
 double value(const json& p, const std::string& name, const Fixed* fixed) {

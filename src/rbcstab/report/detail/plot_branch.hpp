@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "rbcstab/model/parameter_table.hpp"
+
 namespace rbcstab::detail::plot {
 
 using nlohmann::json;
@@ -25,11 +27,13 @@ bool orbit_problem(const std::string& problem);
 std::string level_of(const json& j, const std::string& problem);
 bool is_delta_l(const std::string& key);
 
-// The scene's parameters that stay fixed along an input: the material parameters and beta, except the
-// free ones and those a free composite moves (Lambda through Delta, S through C: parameters.hpp; Delta,
-// lambda move Lambda and C, Delta0 move S, which are therefore never fixed). Null (C = inf) is infinite.
+// The scene's parameters that stay fixed along an input: held_parameters() except those a free parameter
+// moves (moves_stored: itself, Lambda through Delta, S through C, shear_rate B and C; the composites themselves
+// are never fixed). Null (C = inf) is infinite.
 using Fixed = std::map<std::string, double>;
 Fixed fixed_parameters(const json& j);
+// The stored parameters a branch can hold fixed: the continuation rows a scene file stores, in table order.
+std::vector<SceneParameter> held_parameters();
 
 // The quantity `name` of a point: its own key (null: undefined), else a derived measure, else a
 // parameter the input holds fixed.
