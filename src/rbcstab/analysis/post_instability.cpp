@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "rbcstab/analysis/thresholds.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/scene.hpp"
@@ -18,7 +19,7 @@ Delta2Prediction post_instability_Delta2(const Parameters& p, double sigma_s, do
   Delta2Prediction d;
   d.sigma_s = sigma_s;
   const double d2 = d_lambda_l(p.lambda, 2);
-  const double sqrt30pi = std::sqrt(30 * std::numbers::pi);
+  const double sqrt30pi = std::sqrt(30 * kPi);
   const double c_Lambda = d2 / (8 * sqrt30pi);  // Lambda~ = c_Lambda sqrt(Delta2)     (Eq. ssr)
   const double a2 = a_l(2);
   d.mu_tilde = Upsilon_l(p, 2, sigma_s);

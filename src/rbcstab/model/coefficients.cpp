@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/parameters.hpp"
 
@@ -48,7 +49,7 @@ double Pi_l(int l) {
 
 std::complex<double> shear_drive(double lambda, int l, int m) {
   if (l != 2 || (m != 2 && m != -2)) return {0.0, 0.0};
-  const double magnitude = 4 * std::sqrt(30 * std::numbers::pi) / d_lambda_l(lambda, 2);
+  const double magnitude = 4 * std::sqrt(30 * kPi) / d_lambda_l(lambda, 2);
   return {0.0, m > 0 ? -magnitude : magnitude};
 }
 

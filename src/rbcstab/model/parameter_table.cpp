@@ -3,6 +3,7 @@
 #include <array>
 #include <numbers>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
@@ -54,7 +55,7 @@ const std::array<ParameterRow, 13> kTable{{
      .axis = true, .definition = nullptr,
      .physical = {"A/R^2 - 4 pi", "Sec. II, Fig. 1", [](const CellNumbers& n) { return n.Delta; }, "the area",
                   &UnitsQuery::Delta},
-     .domain = [](const Parameters&) { return Domain{0, 4 * std::numbers::pi, false, false, "", "4 pi", "", ""}; },
+     .domain = [](const Parameters&) { return Domain{0, 4 * kPi, false, false, "", "4 pi", "", ""}; },
      .get = [](const Scene& s) { return s.parameters.Delta; },
      .set = [](Scene& s, double v) { s.parameters.Delta = v; }},
     {.id = P::Delta0, .name = "Delta0", .symbol = "\\Delta_0", .unicode = "Δ₀", .unit = "",
@@ -140,7 +141,7 @@ const std::array<ParameterRow, 13> kTable{{
      .continuation = true, .axis = true, .definition = nullptr, .physical = {},
      .domain =
          [](const Parameters&) {
-           return Domain{0, std::numbers::pi, true, true, "", "pi", "", "0: rest shape out of plane, pi/2: in plane"};
+           return Domain{0, kPi, true, true, "", "pi", "", "0: rest shape out of plane, pi/2: in plane"};
          },
      .get = [](const Scene& s) { return s.beta; },
      .set = [](Scene& s, double v) { s.beta = v; }},

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/parameter_table.hpp"
@@ -24,12 +25,12 @@ std::vector<std::string> Parameters::warnings() const {
 }
 
 double Parameters::Lambda() const {
-  return std::sqrt(Delta) * d_lambda_l(lambda, 2) / (8 * std::sqrt(30 * std::numbers::pi));
+  return std::sqrt(Delta) * d_lambda_l(lambda, 2) / (8 * std::sqrt(30 * kPi));
 }
 
 double Parameters::S() const {
   if (Delta0 == 0) return INFINITY;
-  return C * std::sqrt(15 * std::numbers::pi / (2 * Delta0));
+  return C * std::sqrt(15 * kPi / (2 * Delta0));
 }
 
 double Parameters::inv_Lambda_S() const { return 16 * std::sqrt(Delta0 / Delta) / (d_lambda_l(lambda, 2) * C); }

@@ -5,19 +5,21 @@
 #include <numbers>
 #include <stdexcept>
 
+#include "rbcstab/core/constants.hpp"
+
 namespace rbcstab {
 
 double Observation::r() const { return Delta2 > 0 ? std::min(1.0, std::abs(f22) * std::sqrt(4 / Delta2)) : 0.0; }
 
 double Observation::Psi() const {
   double psi = -std::arg(f22);
-  if (psi <= -std::numbers::pi) psi += 2 * std::numbers::pi;
+  if (psi <= -kPi) psi += 2 * kPi;
   return psi;
 }
 
 double Observation::Psi_near(double previous) const {
   const double raw = -std::arg(f22);
-  return raw + 2 * std::numbers::pi * std::round((previous - raw) / (2 * std::numbers::pi));
+  return raw + 2 * kPi * std::round((previous - raw) / (2 * kPi));
 }
 
 namespace {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rbcstab/report/detail/paper_draw_spec.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/report/detail/paper_figures.hpp"
 
 namespace rbcstab::detail::paper {
@@ -58,7 +59,7 @@ void app_vesicle(Composer& c, bool ip, int k, int n) {
   if (!ip) {
     double worst = 0, worst_r = 0;
     for (int cs = 0; cs < 3; ++cs) {
-      worst = std::max(worst, std::abs(tail_mean(at(1, cs).t(), at(1, cs).run.trajectory.Psi, w) - std::numbers::pi / 2));
+      worst = std::max(worst, std::abs(tail_mean(at(1, cs).t(), at(1, cs).run.trajectory.Psi, w) - kPi / 2));
       worst_r = std::max(worst_r, tail_range(at(1, cs).t(), at(1, cs).run.trajectory.r, w));
     }
     const double Lambda = at(1, 0).file.scene.parameters.Lambda();
@@ -88,7 +89,7 @@ void app_vesicle(Composer& c, bool ip, int k, int n) {
                 num(at(1, 1).file.scene.parameters.S(), 3) + ") is left out");
     for (int lam : {3, 5})
       c.claim("lambda = " + std::to_string(lam) + ": the vesicle-like RBC tumbles",
-              "net turn of Psi = " + num(turn(at(lam, 0))), "< -2 pi", turn(at(lam, 0)) < -2 * std::numbers::pi, how);
+              "net turn of Psi = " + num(turn(at(lam, 0))), "< -2 pi", turn(at(lam, 0)) < -2 * kPi, how);
     for (auto [lam, paper_t] : {std::pair{3, 20.0}, std::pair{5, 40.0}}) {
       const Line& u = at(lam, 1);
       const double ts = settle_time(u.t(), u.run.trajectory.r, 1e-3);
@@ -115,11 +116,11 @@ void app_vesicle(Composer& c, bool ip, int k, int n) {
             "vesicle net turn of Psi = " + num(turn(at(3, 0))) + "; unstressed Psi(T) minus its second-half mean = " +
                 num(drift_u, 3),
             "vesicle < -2 pi; |unstressed| < pi/2",
-            turn(at(3, 0)) < -2 * std::numbers::pi && std::abs(drift_u) < std::numbers::pi / 2, how);
+            turn(at(3, 0)) < -2 * kPi && std::abs(drift_u) < kPi / 2, how);
     double worst = -1e300;
     for (int cs = 0; cs < 3; ++cs) worst = std::max(worst, turn(at(5, cs)));
     c.claim("lambda = 5: all three RBCs perform deformed tumbling", "largest net turn of Psi of the three = " + num(worst),
-            "< -2 pi", worst < -2 * std::numbers::pi, how);
+            "< -2 pi", worst < -2 * kPi, how);
   }
   json panels = top;
   for (auto& p : bottom) panels.push_back(p);

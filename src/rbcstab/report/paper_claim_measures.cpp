@@ -9,6 +9,8 @@
 
 #include "rbcstab/report/paper.hpp"
 
+#include "rbcstab/core/constants.hpp"
+
 namespace rbcstab {
 
 namespace paper_measure {
@@ -52,7 +54,7 @@ double net_turn(const std::vector<double>& Psi) {
   double turn = 0;
   for (std::size_t k = 1; k < Psi.size(); ++k) {
     const double d = Psi[k] - Psi[k - 1];
-    turn += d - std::numbers::pi * std::round(d / std::numbers::pi);
+    turn += d - kPi * std::round(d / kPi);
   }
   return turn;
 }

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "rbcstab/report/detail/paper_draw_spec.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/report/detail/paper_figures.hpp"
 
 namespace rbcstab::detail::paper {
@@ -56,14 +57,14 @@ void fig2(Composer& c, int k, int n) {
     const double range = tail_range(l.t(), l.run.trajectory.Psi, w);
     c.claim("IP, Delta = 0.01: swinging, Psi oscillates about a fixed angle",
             "tail range of Psi = " + num(range, 3) + ", Psi(T) minus its mean over the second half = " + num(drift, 3),
-            "range > 1e-3 (oscillates) and |drift| < pi/2 (no rotation)", range > 1e-3 && std::abs(drift) < std::numbers::pi / 2,
+            "range > 1e-3 (oscillates) and |drift| < pi/2 (no rotation)", range > 1e-3 && std::abs(drift) < kPi / 2,
             how);
   }
   {
     const Line& l = runs[3];
     const double turn = net_turn(l.run.trajectory.Psi);
     c.claim("IP, Delta = 1: r oscillates with a continuous rotation (Psi decreases): the cell deforms and tumbles",
-            "net turn of Psi = " + num(turn), "< -2 pi (at least one tumble)", turn < -2 * std::numbers::pi,
+            "net turn of Psi = " + num(turn), "< -2 pi (at least one tumble)", turn < -2 * kPi,
             "Psi unwrapped along the run, steps modulo pi (r -> -r, Psi -> Psi + pi is the same shape)");
   }
   c.end(panels, 1, 2, 1300, 500,

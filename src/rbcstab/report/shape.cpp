@@ -6,6 +6,7 @@
 #include <numbers>
 #include <sstream>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/model/coefficients.hpp"
@@ -17,7 +18,7 @@ namespace {
 // holds exactly the normalised P_l^m (no Condon-Shortley phase) at entries l + m.
 std::vector<double> harmonic_theta_factors(int l, double theta) {
   const std::vector<double> col = wigner_column(l, theta);
-  const double norm = std::sqrt((2.0 * l + 1) / (4 * std::numbers::pi));
+  const double norm = std::sqrt((2.0 * l + 1) / (4 * kPi));
   std::vector<double> out(std::size_t(l) + 1);
   for (int m = 0; m <= l; ++m) out[std::size_t(m)] = norm * (m % 2 ? -1.0 : 1.0) * col[std::size_t(l + m)];
   return out;
@@ -71,8 +72,8 @@ ShapeGrid shape_on_grid(const ModeAmplitudes& f, const ShapeGridOptions& options
   ShapeGrid g;
   g.n_theta = options.n_theta;
   g.n_phi = options.n_phi;
-  for (int i = 0; i <= g.n_theta; ++i) g.theta.push_back(std::numbers::pi * i / g.n_theta);
-  for (int j = 0; j <= g.n_phi; ++j) g.phi.push_back(2 * std::numbers::pi * j / g.n_phi);
+  for (int i = 0; i <= g.n_theta; ++i) g.theta.push_back(kPi * i / g.n_theta);
+  for (int j = 0; j <= g.n_phi; ++j) g.phi.push_back(2 * kPi * j / g.n_phi);
   g.rho.reserve(g.theta.size() * g.phi.size());
   for (int i = 0; i <= g.n_theta; ++i) {
     const auto factors = all_factors(f.L, g.theta[std::size_t(i)]);
@@ -100,7 +101,7 @@ SurfaceMesh surface_mesh(const ShapeGrid& g) {
   add(0, 0, g.at(0, 0));  // north pole: 0
   for (int i = 1; i < g.n_theta; ++i)
     for (int j = 0; j < g.n_phi; ++j) add(g.theta[std::size_t(i)], g.phi[std::size_t(j)], g.at(i, j));
-  add(std::numbers::pi, 0, g.at(g.n_theta, 0));  // south pole: last
+  add(kPi, 0, g.at(g.n_theta, 0));  // south pole: last
   const int south = int(m.points.size()) - 1;
   auto ring = [&](int i, int j) { return 1 + (i - 1) * g.n_phi + (j % g.n_phi); };
   // Outward orientation: (d/dtheta) x (d/dphi) points outward, so a triangle (theta, phi) ->

@@ -8,6 +8,7 @@
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/modal_model.hpp"
 
@@ -57,7 +58,7 @@ class SceneCertifier final : public AttractorCertifier {
  public:
   SceneCertifier(const Scene& scene, const SimulationOptions& sim, const EarlyTerminationOptions& o)
       : scene_(scene), o_(o), next_(o.first_attempt) {
-    o_.refinement.period = 2 * std::numbers::pi;  // the forcing period of the modal and reduced levels
+    o_.refinement.period = 2 * kPi;  // the forcing period of the modal and reduced levels
     tolerance_ = o.state_tolerance > 0 ? o.state_tolerance : sim.integrator.rtol / 10;
   }
 
@@ -159,7 +160,7 @@ class SceneCertifier final : public AttractorCertifier {
       modal_.emplace(s, ContinuationParameter::B);
       p_ = modal_->start_parameter();
       total_ = s.parameters.Delta;
-      forced_ = modal_->forcing(0, p_) != modal_->forcing(std::numbers::pi / 2, p_);
+      forced_ = modal_->forcing(0, p_) != modal_->forcing(kPi / 2, p_);
     }
     const Eigen::VectorXd x = modal_->from_modal_model_state(m, t, y, p_);
     const std::vector<int>& active = m.active_modes();
@@ -239,7 +240,7 @@ class SceneCertifier final : public AttractorCertifier {
     for (std::size_t j = 0; j < active.size(); ++j)
       if (std::find(carried.begin(), carried.end(), active[j]) != carried.end())
         jump.y[5 + j] = lab[static_cast<std::size_t>(5 + active[j] - 3)];
-    jump.Psi_advance = -2 * std::numbers::pi * std::round(ref.integrals[0] / (2 * std::numbers::pi)) * k;
+    jump.Psi_advance = -2 * kPi * std::round(ref.integrals[0] / (2 * kPi)) * k;
     return true;
   }
 
@@ -247,7 +248,7 @@ class SceneCertifier final : public AttractorCertifier {
     if (!reduced_) {
       reduced_.emplace(scene_, ContinuationParameter::B);
       p_ = reduced_->start_parameter();
-      forced_ = reduced_->model(p_).z0(0) != reduced_->model(p_).z0(std::numbers::pi / 2);
+      forced_ = reduced_->model(p_).z0(0) != reduced_->model(p_).z0(kPi / 2);
     }
     const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(y.data(), 3);
     if (!screened(*reduced_, p_, t, x, record)) return false;
@@ -260,7 +261,7 @@ class SceneCertifier final : public AttractorCertifier {
     if (!accept(ref, ref.multipliers, 0.0, k, t, record)) return false;
     jump.t = t + k * o_.refinement.period;
     jump.y.assign(ref.x.data(), ref.x.data() + 3);
-    jump.Psi_advance = -2 * std::numbers::pi * std::round(ref.integrals[0] / (2 * std::numbers::pi)) * k;
+    jump.Psi_advance = -2 * kPi * std::round(ref.integrals[0] / (2 * kPi)) * k;
     return true;
   }
 

@@ -24,6 +24,7 @@
 
 #include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/continuation/attractor.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/scene.hpp"
@@ -36,7 +37,7 @@ struct EarlyTerminationOptions {
   double max_distance = 1e-3;    // linearisation radius |x - x*| (|x| = 1), decayed modes included
   double state_tolerance = 0;    // decay bound at the resume time; 0: the run's rtol / 10 (the factor 10
                                  // covers growth within a period, which the bound at whole periods misses)
-  double first_attempt = 4 * std::numbers::pi;  // no attempt before this time
+  double first_attempt = 4 * kPi;  // no attempt before this time
   double attempt_growth = 1.25;  // after a failed attempt at t, none before max(growth t, t + period)
   IntegratorOptions screen = {Stepper::rk8pd, 1e-6, 1e-9};  // the one-period defect before a refinement
   PeriodicRefinementOptions refinement;  // its period is replaced by 2 pi, the forcing period of both levels

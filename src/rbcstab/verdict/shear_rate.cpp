@@ -4,6 +4,7 @@
 #include <numbers>
 #include <optional>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/parameter_table.hpp"
 
@@ -122,7 +123,7 @@ ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const S
 
 std::vector<ShearRateThreshold> shear_rate_thresholds(const Scene& scene, const ShearRateSearchOptions& options) {
   return {shear_rate_threshold(scene, kOutOfPlaneBeta, options),
-          shear_rate_threshold(scene, std::numbers::pi / 2, options)};
+          shear_rate_threshold(scene, kPi / 2, options)};
 }
 
 }  // namespace rbcstab

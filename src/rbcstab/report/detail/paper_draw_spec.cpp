@@ -6,6 +6,7 @@
 #include <limits>
 #include <numbers>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/report/paper.hpp"
 
 namespace rbcstab::detail::paper {
@@ -18,9 +19,9 @@ json series(const std::string& csv, const std::string& y, const std::string& lab
 }
 json psi_series(const Line& l, const std::string& label, const std::string& color, const std::string& ls,
                 double lw) {
-  const bool tumbles = std::abs(net_turn(l.run.trajectory.Psi)) > std::numbers::pi;
+  const bool tumbles = std::abs(net_turn(l.run.trajectory.Psi)) > kPi;
   json s = series(l.csv, "Psi", tumbles ? label + " (mod $\\pi$)" : label, color, ls, lw);
-  if (tumbles) s["wrap"] = std::numbers::pi;
+  if (tumbles) s["wrap"] = kPi;
   return s;
 }
 json hline(double y, const std::string& label, const std::string& color, const std::string& ls, double lw) {

@@ -8,6 +8,7 @@
 #include <set>
 #include <string_view>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/parameter_table.hpp"
 
@@ -31,7 +32,7 @@ double derived(const json& p, const std::string& name) {
     }
     return m;
   };
-  if (name == "period") return 2 * std::numbers::pi;
+  if (name == "period") return 2 * kPi;
   if (name == "max_abs_multiplier") return max_over("multipliers", [](double re, double im) { return std::hypot(re, im); });
   if (name == "max_Re_eig") return max_over("eigenvalues", [](double re, double) { return re; });
   if (name == "norm_Delta" || name == "norm_x") {
