@@ -141,10 +141,6 @@ struct Pt {
 // z / (1 + |z|): keeps the argument (hence the sign of a real product) and avoids overflow.
 std::complex<double> squash(std::complex<double> z) { return z / (1 + std::abs(z)); }
 
-struct DomainError {
-  std::string message;
-};
-
 class Engine {
  public:
   Engine(const ContinuationProblem& problem, const ContinuationOptions& options)
