@@ -18,6 +18,7 @@
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/event_curve.hpp"
 #include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/continuation/orbit_two_parameter.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/core/constants.hpp"

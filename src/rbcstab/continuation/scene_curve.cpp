@@ -1,6 +1,7 @@
 // The curve of a special point of a scene branch in a second parameter: the system that continues it
 // (curve_system), its start and trace over each kind's two-parameter problem, and the state of the problem
 // it augments at a curve point (curve_point_state).
+#include "rbcstab/continuation/orbit_two_parameter.hpp"
 #include "rbcstab/continuation/scene_curve.hpp"
 
 #include <algorithm>
