@@ -13,6 +13,7 @@
 #include "rbcstab/continuation/branch_point_curve.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/modal_orbit_bp_curve.hpp"
+#include "rbcstab/continuation/orbit_two_parameter.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
 #include "continuation/ellipsoidal_orbit_bp_fixture.hpp"
 

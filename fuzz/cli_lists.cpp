@@ -11,7 +11,8 @@
 
 #include "fuzz_check.hpp"
 #include "rbcstab/continuation/branch_io.hpp"
-#include "rbcstab/continuation/scene_continuation.hpp"
+#include "rbcstab/continuation/scene_kinds.hpp"
+#include "rbcstab/continuation/scene_measures.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 
 using namespace rbcstab;

@@ -14,6 +14,7 @@
 #include "continuation/scene_spec_fixture.hpp"
 #include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/continuation/branch_io.hpp"
+#include "rbcstab/continuation/scene_restart.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {

@@ -21,9 +21,11 @@
 #include "continuation/scene_spec_fixture.hpp"
 #include "continuation/wrong_start_fixture.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
+#include "rbcstab/continuation/branch_spec.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/orbit.hpp"
-#include "rbcstab/continuation/scene_continuation.hpp"
+#include "rbcstab/continuation/scene_branch.hpp"
+#include "rbcstab/continuation/scene_kinds.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/model/coefficients.hpp"
 

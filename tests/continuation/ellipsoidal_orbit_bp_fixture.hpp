@@ -6,6 +6,7 @@
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/modal_orbit_bp_curve.hpp"
+#include "rbcstab/continuation/orbit_two_parameter.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
 
 namespace rbcstab::test {

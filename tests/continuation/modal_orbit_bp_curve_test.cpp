@@ -19,6 +19,7 @@
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/modal_orbit_bp_curve.hpp"
+#include "rbcstab/continuation/orbit_two_parameter.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"

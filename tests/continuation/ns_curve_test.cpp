@@ -8,6 +8,7 @@
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/ns_curve.hpp"
+#include "rbcstab/continuation/orbit_two_parameter.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "continuation/ns_fixtures.hpp"

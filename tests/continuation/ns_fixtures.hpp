@@ -6,6 +6,7 @@
 #include <span>
 
 #include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/continuation/orbit_two_parameter.hpp"
 
 namespace rbcstab::ns_fixtures {
 

@@ -10,7 +10,9 @@
 #include "continuation/fig2_fixture.hpp"
 #include "continuation/modal_fixtures.hpp"
 #include "continuation/invalid_argument_fixture.hpp"
-#include "rbcstab/continuation/scene_continuation.hpp"
+#include "rbcstab/continuation/branch_spec.hpp"
+#include "rbcstab/continuation/scene_curve.hpp"
+#include "rbcstab/continuation/scene_kinds.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab::test {

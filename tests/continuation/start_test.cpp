@@ -11,9 +11,12 @@
 #include "continuation/modal_fixtures.hpp"
 #include "continuation/scene_spec_fixture.hpp"
 #include "continuation/wrong_start_fixture.hpp"
+#include "rbcstab/continuation/branch_spec.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/orbit.hpp"
-#include "rbcstab/continuation/scene_continuation.hpp"
+#include "rbcstab/continuation/scene_branch.hpp"
+#include "rbcstab/continuation/scene_kinds.hpp"
+#include "rbcstab/continuation/scene_start.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {

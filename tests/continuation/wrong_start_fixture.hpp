@@ -7,7 +7,8 @@
 #include <cmath>
 
 #include "continuation/scene_spec_fixture.hpp"
-#include "rbcstab/continuation/scene_continuation.hpp"
+#include "rbcstab/continuation/branch_spec.hpp"
+#include "rbcstab/continuation/scene_kinds.hpp"
 
 namespace rbcstab::test {
 

@@ -19,7 +19,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "rbcstab/continuation/scene_continuation.hpp"
+#include "rbcstab/continuation/branch_labels.hpp"
 
 namespace rbcstab {
 

@@ -6,6 +6,7 @@
 #include <limits>
 #include <sstream>
 
+#include "rbcstab/continuation/scene_run.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"

@@ -31,7 +31,11 @@
 #include <string>
 #include <vector>
 
-#include "rbcstab/continuation/scene_continuation.hpp"
+#include "rbcstab/continuation/branch_labels.hpp"
+#include "rbcstab/continuation/scene_branch.hpp"
+#include "rbcstab/continuation/scene_curve.hpp"
+#include "rbcstab/continuation/scene_measures.hpp"
+#include "rbcstab/continuation/scene_start.hpp"
 
 namespace rbcstab {
 

@@ -25,6 +25,7 @@
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/fold_curve.hpp"
 #include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/continuation/orbit_two_parameter.hpp"
 
 namespace rbcstab {
 

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/continuation/orbit_two_parameter.hpp"
 #include "rbcstab/continuation/parameters.hpp"
 #include "rbcstab/continuation/problem.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/continuation/orbit_two_parameter.hpp"
 
 namespace rbcstab {
 

@@ -1,3 +1,5 @@
+// Periodic orbits by multiple shooting: the shooting problem, its Floquet data, the relaxation to an
+// orbit, an orbit's summary over one period and its state at any time.
 #include "rbcstab/continuation/orbit.hpp"
 
 #include <algorithm>
@@ -10,24 +12,16 @@
 
 #include "rbcstab/continuation/dense.hpp"
 
-#include "rbcstab/continuation/detail/finite_difference.hpp"
 #include "rbcstab/continuation/detail/forced_flow.hpp"
-#include "rbcstab/continuation/detail/minimal_augmentation.hpp"
-#include "rbcstab/continuation/detail/rest_direction.hpp"
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
-#include "rbcstab/core/phasor.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/integrate/quadrature.hpp"
 
 namespace rbcstab {
 
 namespace {
-
-
-// Central-difference step in p: cube root of eps balances truncation against rounding.
-using detail::fd_step;
 
 using detail::ForcedFlow;
 using detail::winding_angle;
@@ -42,141 +36,6 @@ IntegratorOptions integrator_options(const OrbitOptions& o) {
 }
 
 }  // namespace
-
-void ForcedSystem::parameter_derivative(double t, std::span<const double> x, double p, std::span<double> fp) const {
-  const double h = fd_step(p);
-  std::vector<double> fm(fp.size());
-  rhs(t, x, p + h, fp);
-  rhs(t, x, p - h, fm);
-  for (std::size_t i = 0; i < fp.size(); ++i) fp[i] = (fp[i] - fm[i]) / (2 * h);
-}
-
-void ForcedSystem2::parameter_derivative(double t, std::span<const double> x, double p1, double p2,
-                                         std::span<double> fp) const {
-  const double h = fd_step(p1);
-  std::vector<double> fm(fp.size());
-  rhs(t, x, p1 + h, p2, fp);
-  rhs(t, x, p1 - h, p2, fm);
-  for (std::size_t i = 0; i < fp.size(); ++i) fp[i] = (fp[i] - fm[i]) / (2 * h);
-}
-
-// ---------------------------------------------------------------- reduced in-plane system
-
-ReducedForcedSystem::ReducedForcedSystem(const Scene& scene, ContinuationParameter free) : scene_(scene), free_(free) {
-  scene_.validate();
-  init_ = oriented_initial_state(scene_);
-}
-
-const ReducedModel& ReducedForcedSystem::model(double p) const {
-  auto it = cache_.find(p);
-  if (it != cache_.end()) return it->second;
-  if (cache_.size() >= 8) cache_.clear();  // no reference is held across calls (see parameter_derivative)
-  const Scene at = with_parameter(scene_, free_, p);  // throws InvalidArgument outside p's domain
-  // beta turns the rest shape: its direction is rebuilt per value (cached with the model).
-  return cache_
-      .try_emplace(p, at.parameters, free_ == ContinuationParameter::beta ? oriented_initial_state(at) : init_)
-      .first->second;
-}
-
-void ReducedForcedSystem::rhs(double t, std::span<const double> x, double p, std::span<double> f) const {
-  model(p).rhs(t, x, f);
-}
-
-void ReducedForcedSystem::jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const {
-  StructuredJacobian sj;
-  double dfdt[3];
-  model(p).jacobian(t, x, sj, dfdt);
-  Eigen::Matrix<double, 3, 3, Eigen::RowMajor> D;
-  sj.to_dense(std::span<double>(D.data(), 9));
-  J = D;
-}
-
-ReducedForcedSystem::Slopes ReducedForcedSystem::coefficient_slopes(double p) const {
-  auto it = slopes_.find(p);
-  if (it != slopes_.end()) return it->second;
-  // d(1/Lambda)/dp and d kappa/dp by central differences of two scalar functions of the parameters
-  // (constants during an integration, so their rounding does not disturb the error control).
-  auto coefficients = [&](double q) {
-    const Parameters pq = with_parameter(scene_, free_, q).parameters;
-    return std::pair<double, double>(1 / pq.Lambda(), pq.inv_Lambda_S());
-  };
-  Slopes d;
-  if (free_ == ContinuationParameter::beta) {
-    // beta turns the rest shape only: 1/Lambda and kappa do not depend on it (and beta = 0, pi are
-    // both edges of its domain, where a difference would step outside); the direction's slope is exact.
-    d.kappa = coefficients(p).second;
-    const detail::RestDirection r = detail::rest_direction(p, false);
-    d.dz0 = r.dz0, d.dw0 = r.dw0;
-    if (slopes_.size() >= 8) slopes_.clear();
-    slopes_.emplace(p, d);
-    return d;
-  }
-  const double h = fd_step(p);
-  const auto c0 = coefficients(p), plus = coefficients(p + h);
-  d.kappa = c0.second;
-  try {
-    const auto minus = coefficients(p - h);
-    d.dinvL = (plus.first - minus.first) / (2 * h);
-    d.dkappa = (plus.second - minus.second) / (2 * h);
-  } catch (const InvalidArgument&) {
-    // p on the edge of its domain (lambda = 0): second-order one-sided difference.
-    const auto c2 = coefficients(p + 2 * h);
-    d.dinvL = (4 * plus.first - 3 * c0.first - c2.first) / (2 * h);
-    d.dkappa = (4 * plus.second - 3 * c0.second - c2.second) / (2 * h);
-  }
-  if (slopes_.size() >= 8) slopes_.clear();
-  slopes_.emplace(p, d);
-  return d;
-}
-
-void ReducedForcedSystem::parameter_derivative(double t, std::span<const double> x, double p,
-                                               std::span<double> fp) const {
-  // f depends on p only through 1/Lambda and kappa = 1/(Lambda S) (ReducedModel::rhs):
-  //   f = mu y + (-y1, y0, 0) - (0, 1/Lambda, 0) + kappa g(t),  mu = (y1/Lambda - kappa y.g) / |y|^2,
-  // with g = (Re z0(t), Im z0(t), w0) the rest shape's direction, so df/dp is exact in y and t:
-  //   df/d(1/Lambda) = (y1/Q) y - e_y,  df/dkappa = g - (y.g/Q) y.
-  // Central differences of f itself would put rounding noise (~eps |f| / h) into the sensitivity
-  // equation and force rk8pd at rtol 1e-12 into small steps (measured: ~6x slower shooting).
-  // beta enters only through the direction g (1/Lambda and kappa fixed): df/dbeta = kappa (g' - (y.g'/Q) y)
-  // with g' = (Re, Im of z0'(0) e^{it}, w0') exact (detail/rest_direction.hpp); zero when kappa = 0.
-  const bool beta = free_ == ContinuationParameter::beta;
-  const Slopes d = coefficient_slopes(p);
-  if (d.kappa == 0 && !beta) {
-    // kappa = 0: the model dropped the rest shape's direction; difference f in p instead.
-    ForcedSystem::parameter_derivative(t, x, p, fp);
-    return;
-  }
-  const ReducedModel& m = model(p);
-  const std::complex<double> z0 = m.z0(t);
-  const double g[3] = {z0.real(), z0.imag(), m.w0()};
-  double dg[3] = {0, 0, 0};
-  if (beta) {
-    const std::complex<double> dz0 = d.dz0 * unit_phasor(t);
-    dg[0] = dz0.real(), dg[1] = dz0.imag(), dg[2] = d.dw0;
-  }
-  const double Q = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
-  const double yg = x[0] * g[0] + x[1] * g[1] + x[2] * g[2];
-  const double ydg = x[0] * dg[0] + x[1] * dg[1] + x[2] * dg[2];
-  for (std::size_t i = 0; i < 3; ++i) {
-    const double dfdinvL = x[1] / Q * x[i] - (i == 1 ? 1.0 : 0.0);
-    const double dfdkappa = g[i] - yg / Q * x[i];
-    const double dfdg = d.kappa * (dg[i] - ydg / Q * x[i]);
-    fp[i] = d.dinvL * dfdinvL + d.dkappa * dfdkappa + dfdg;
-  }
-}
-
-Eigen::VectorXd ReducedForcedSystem::relaxed_state(double T, const std::function<void()>& poll) const {
-  require(std::isfinite(T) && T > 0, "T", T, "a finite number > 0");
-  const ReducedModel& m = model(start_parameter());
-  const std::vector<double> y0 = m.initial_state();
-  const double grid[1] = {kTwoPi * std::ceil(T / kTwoPi)};
-  IntegratorOptions o;
-  o.rtol = 1e-10;
-  o.atol = 1e-12;
-  o.poll = poll;
-  const IntegrationResult r = integrate(m, y0, 0.0, grid, o, {});
-  return Eigen::Vector3d(r.y[0], r.y[1], r.y[2]);
-}
 
 // ---------------------------------------------------------------- options, names
 
@@ -557,72 +416,6 @@ OrbitPoint PeriodicOrbitProblem::point_at(const Eigen::VectorXd& X, double p, do
 
 UserEvent PeriodicOrbitProblem::transition_event(const std::string& name) const {
   return UserEvent{name, [this](const Eigen::VectorXd& X, double p) { return summary(X, p).transition_function; }};
-}
-
-// ---------------------------------------------------------------- two parameters
-
-void OrbitTwoParameterProblem::at(double p2) const {
-  if (slice_.p2() != p2) {
-    slice_.set_p2(p2);
-    orbit_.clear_cache();
-  }
-}
-
-void OrbitTwoParameterProblem::residual(const Eigen::VectorXd& X, double p1, double p2, Eigen::VectorXd& F) const {
-  at(p2);
-  orbit_.residual(X, p1, F);
-}
-
-void OrbitTwoParameterProblem::jacobian(const Eigen::VectorXd& X, double p1, double p2, Eigen::MatrixXd& J) const {
-  at(p2);
-  orbit_.jacobian(X, p1, J);
-}
-
-void OrbitTwoParameterProblem::parameter_derivative(const Eigen::VectorXd& X, double p1, double p2,
-                                                    Eigen::VectorXd& Fp) const {
-  at(p2);
-  orbit_.parameter_derivative(X, p1, Fp);
-}
-
-void OrbitTwoParameterProblem::antiperiodic_jacobian(const Eigen::VectorXd& X, double p1, double p2,
-                                                     Eigen::MatrixXd& J) const {
-  at(p2);
-  orbit_.antiperiodic_jacobian(X, p1, J);
-}
-
-Eigen::VectorXcd OrbitTwoParameterProblem::multipliers(const Eigen::VectorXd& X, double p1, double p2) const {
-  at(p2);
-  return orbit_.spectrum(X, p1);
-}
-
-CertifiedSpectrum OrbitTwoParameterProblem::certified_spectrum(const Eigen::VectorXd& X, double p1, double p2,
-                                                               bool refine) const {
-  at(p2);
-  return orbit_.certified_spectrum(X, p1, refine);
-}
-
-OrbitSummary OrbitTwoParameterProblem::summary(const Eigen::VectorXd& X, double p1, double p2) const {
-  at(p2);
-  return orbit_.summary(X, p1);
-}
-
-OrbitPoint OrbitTwoParameterProblem::point_at(const Eigen::VectorXd& X, double p1, double p2, double t) const {
-  at(p2);
-  return orbit_.point_at(X, p1, t);
-}
-
-PeriodDoublingCurveProblem::PeriodDoublingCurveProblem(const OrbitTwoParameterProblem& base, const SpecialPoint& pd,
-                                                       double p2)
-    : SingularityCurveProblem(base), orbit_base_(base) {
-  if (pd.type != SpecialPointType::PD || pd.status != LocationStatus::located)
-    throw InvalidArgument("pd", "a PD curve starts from a located PD point (got " + to_string(pd.type) + ", " +
-                                    to_string(pd.status) + ")");
-  start_at(pd, p2);
-}
-
-Eigen::VectorXcd PeriodDoublingCurveProblem::spectrum(const Eigen::VectorXd& X, double p2) const {
-  const Eigen::Index n = orbit_base_.dimension();
-  return orbit_base_.multipliers(X.head(n), X[n], p2);
 }
 
 }  // namespace rbcstab

@@ -3,8 +3,9 @@
 // shooting with variational equations, as a ContinuationProblem with Floquet multipliers
 // (stability_kind = multipliers, so the engine's LPC / PD / NS test functions apply).
 //
-// One code path for every forced system: the in-plane reduced system (ReducedForcedSystem) and the
-// textbook normal forms of the tests implement the small ForcedSystem interface.
+// One code path for every forced system (forced_system.hpp): the in-plane reduced system
+// (ReducedForcedSystem) and the textbook normal forms of the tests implement the small ForcedSystem
+// interface. Two-parameter orbit problems and the PD curve: orbit_two_parameter.hpp.
 //
 // Angles modulo 2 pi: a tumbling orbit of the reduced system (Psi advances by -2 pi k per period) is
 // still closed in the regular coordinates y = (Re z, Im z, w), because Psi only enters through
@@ -24,63 +25,10 @@
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/core/enum_table.hpp"
-#include "rbcstab/continuation/fold_curve.hpp"
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/forced_system.hpp"
 #include "rbcstab/continuation/problem.hpp"
-#include "rbcstab/model/reduced_model.hpp"
-#include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
-
-// x' = f(t, x, p), 2 pi-periodic in t. Components 0 and 1 are the plane whose winding classifies
-// the orbit (Re z, Im z for the reduced system).
-class ForcedSystem {
- public:
-  virtual ~ForcedSystem() = default;
-  virtual Eigen::Index dimension() const = 0;
-  virtual void rhs(double t, std::span<const double> x, double p, std::span<double> f) const = 0;
-  // df/dx (n x n).
-  virtual void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const = 0;
-  // df/dp. Default: central differences of rhs in p. Prefer an analytic one: the rounding noise of
-  // the difference (~eps |f| / h) enters the sensitivity equation, whose error control at rtol 1e-12
-  // then forces small steps (measured: ~20x slower shooting on the test systems).
-  virtual void parameter_derivative(double t, std::span<const double> x, double p, std::span<double> fp) const;
-  // True when x . f(t, x, p) = 0 identically (Q = |x|^2 conserved, the reduced system's excess
-  // area): the monodromy then has a trivial multiplier 1 and the shooting system is regularised.
-  virtual bool conserves_norm() const { return false; }
-  virtual std::string parameter_name() const { return "p"; }
-};
-
-// The in-plane reduced system (ReducedModel, z0(t) = z0(0) e^{it}) with one free ContinuationParameter.
-class ReducedForcedSystem final : public ForcedSystem {
- public:
-  ReducedForcedSystem(const Scene& scene, ContinuationParameter free);
-  Eigen::Index dimension() const override { return 3; }
-  void rhs(double t, std::span<const double> x, double p, std::span<double> f) const override;
-  void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const override;
-  void parameter_derivative(double t, std::span<const double> x, double p, std::span<double> fp) const override;
-  bool conserves_norm() const override { return true; }
-  std::string parameter_name() const override { return to_string(free_); }
-
-  double start_parameter() const { return get_parameter(scene_, free_); }
-  // The state after relaxing from the scene's initial shape for T rounded up to a multiple of 2 pi
-  // (so it is a state at t = 0 mod 2 pi, a start for the shooting Newton on an attracting orbit). poll:
-  // the integration's IntegratorOptions::poll (OrbitOptions::poll).
-  Eigen::VectorXd relaxed_state(double T, const std::function<void()>& poll = {}) const;
-  const ReducedModel& model(double p) const;  // cached (a few parameter values: p and p +- h)
-
- private:
-  struct Slopes {
-    double dinvL = 0, dkappa = 0, kappa = 0;  // d(1/Lambda)/dp, d kappa/dp, kappa at p
-    double dz0 = 0, dw0 = 0;                  // beta only: the rest direction's slope (z0 at t = 0)
-  };
-  Slopes coefficient_slopes(double p) const;
-  Scene scene_;
-  ContinuationParameter free_;
-  InitialState init_;
-  mutable std::map<double, ReducedModel> cache_;
-  mutable std::map<double, Slopes> slopes_;
-};
 
 struct OrbitOptions {
   int segments = 8;            // shooting segments N: more = better conditioned Newton for unstable orbits
@@ -209,91 +157,6 @@ class PeriodicOrbitProblem final : public ContinuationProblem {
   int N_;
   mutable Shooting cache_;
   mutable std::size_t integrations_ = 0;
-};
-
-// Two-parameter forced systems and LPC curves. An LPC of a fixed-period orbit is a fold of the
-// shooting system F(X, p1) = 0 (its Jacobian is singular where a multiplier crosses 1), so the fold
-// curve machinery of fold_curve.hpp (minimal augmentation) continues it in (p1, p2) unchanged:
-// FoldCurveProblem(OrbitTwoParameterProblem(system, options), lpc, p2).
-class ForcedSystem2 {
- public:
-  virtual ~ForcedSystem2() = default;
-  virtual Eigen::Index dimension() const = 0;
-  virtual void rhs(double t, std::span<const double> x, double p1, double p2, std::span<double> f) const = 0;
-  virtual void jacobian(double t, std::span<const double> x, double p1, double p2, Eigen::MatrixXd& J) const = 0;
-  // df/dp1. Default: central differences (see ForcedSystem::parameter_derivative).
-  virtual void parameter_derivative(double t, std::span<const double> x, double p1, double p2, std::span<double> fp) const;
-  virtual bool conserves_norm() const { return false; }
-  virtual std::string name1() const { return "p1"; }
-  virtual std::string name2() const { return "p2"; }
-};
-
-// The two-parameter system as a one-parameter ForcedSystem in p1 at fixed p2.
-class ForcedSlice final : public ForcedSystem {
- public:
-  ForcedSlice(const ForcedSystem2& base, double p2) : base_(base), p2_(p2) {}
-  Eigen::Index dimension() const override { return base_.dimension(); }
-  void rhs(double t, std::span<const double> x, double p, std::span<double> f) const override { base_.rhs(t, x, p, p2_, f); }
-  void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const override {
-    base_.jacobian(t, x, p, p2_, J);
-  }
-  void parameter_derivative(double t, std::span<const double> x, double p, std::span<double> fp) const override {
-    base_.parameter_derivative(t, x, p, p2_, fp);
-  }
-  bool conserves_norm() const override { return base_.conserves_norm(); }
-  std::string parameter_name() const override { return base_.name1(); }
-  void set_p2(double p2) { p2_ = p2; }
-  double p2() const { return p2_; }
-
- private:
-  const ForcedSystem2& base_;
-  double p2_;
-};
-
-// The shooting system with both parameters free (base of FoldCurveProblem for LPC curves).
-class OrbitTwoParameterProblem final : public TwoParameterProblem {
- public:
-  OrbitTwoParameterProblem(const ForcedSystem2& system, const OrbitOptions& options = {})
-      : system_(system), slice_(system, 0.0), orbit_(slice_, options) {}
-  Eigen::Index dimension() const override { return orbit_.dimension(); }
-  void residual(const Eigen::VectorXd& X, double p1, double p2, Eigen::VectorXd& F) const override;
-  void jacobian(const Eigen::VectorXd& X, double p1, double p2, Eigen::MatrixXd& J) const override;
-  void parameter_derivative(const Eigen::VectorXd& X, double p1, double p2, Eigen::VectorXd& Fp) const override;
-  std::string name1() const override { return system_.name1(); }
-  std::string name2() const override { return system_.name2(); }
-  void antiperiodic_jacobian(const Eigen::VectorXd& X, double p1, double p2, Eigen::MatrixXd& J) const;
-  Eigen::VectorXcd multipliers(const Eigen::VectorXd& X, double p1, double p2) const;
-  OrbitSummary summary(const Eigen::VectorXd& X, double p1, double p2) const;
-  OrbitPoint point_at(const Eigen::VectorXd& X, double p1, double p2, double t) const;
-  // Curves over this problem (LPC) report the orbits' Floquet multipliers.
-  Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p1, double p2) const override { return multipliers(X, p1, p2); }
-  CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& X, double p1, double p2, bool refine) const override;
-  StabilityKind stability_kind() const override { return StabilityKind::multipliers; }
-
- private:
-  void at(double p2) const;
-  const ForcedSystem2& system_;
-  mutable ForcedSlice slice_;
-  PeriodicOrbitProblem orbit_;
-};
-
-// PD curve by minimal augmentation: unknowns (X, p1), free p2, equations F = 0 and g = 0 where
-// [J_PD b; c^T 0][v; g] = [0; 1] with J_PD the anti-periodic shooting Jacobian and b, c its left/right
-// singular vectors at the starting PD point. The spectrum is the orbit's multipliers (one is -1 along
-// the curve: the engine treats it as neutral, so no spurious PD points are reported).
-class PeriodDoublingCurveProblem final : public SingularityCurveProblem {
- public:
-  PeriodDoublingCurveProblem(const OrbitTwoParameterProblem& base, const SpecialPoint& pd, double p2);
-  StabilityKind stability_kind() const override { return StabilityKind::multipliers; }
-  Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p2) const override;
-
- protected:
-  void singular_matrix(const Eigen::VectorXd& X, double p1, double p2, Eigen::MatrixXd& A) const override {
-    orbit_base_.antiperiodic_jacobian(X, p1, p2, A);
-  }
-
- private:
-  const OrbitTwoParameterProblem& orbit_base_;
 };
 
 }  // namespace rbcstab

@@ -14,9 +14,10 @@
 
 #include "rbcstab/continuation/equilibrium.hpp"
 #include "rbcstab/continuation/fold_curve.hpp"
+#include "rbcstab/continuation/forced_system.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
-#include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/continuation/orbit_two_parameter.hpp"
 
 namespace rbcstab {
 

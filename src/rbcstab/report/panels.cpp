@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "rbcstab/continuation/branch_io.hpp"
+#include "rbcstab/continuation/scene_run.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"

@@ -13,11 +13,13 @@
 #include <utility>
 #include <vector>
 
+#include "rbcstab/continuation/branch_spec.hpp"
+#include "rbcstab/continuation/scene_branch.hpp"
+#include "rbcstab/continuation/scene_kinds.hpp"
 #include "rbcstab/sweep/fig6e.hpp"
 #include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/parameters.hpp"
-#include "rbcstab/continuation/scene_continuation.hpp"
 #include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/report/report.hpp"

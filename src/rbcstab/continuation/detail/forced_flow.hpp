@@ -8,7 +8,7 @@
 #include <stdexcept>
 #include <vector>
 
-#include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/continuation/forced_system.hpp"
 #include "rbcstab/integrate/quadrature.hpp"
 #include "rbcstab/model/system.hpp"
 

@@ -1,0 +1,41 @@
+#pragma once
+// Module-private: the problem behind a scene branch (SceneProblem, make_problem: scene_problem.cpp) and the
+// starts every kind shares (scene_start.cpp).
+#include "rbcstab/continuation/dense.hpp"
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "rbcstab/continuation/branch_spec.hpp"
+#include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/detail/scene_measures.hpp"
+#include "rbcstab/continuation/problem.hpp"
+#include "rbcstab/continuation/scene_branch.hpp"
+#include "rbcstab/continuation/scene_start.hpp"
+#include "rbcstab/model/scene.hpp"
+
+namespace rbcstab::detail {
+
+// A kind's problem with its own start and its measures (Equilibrium, Orbit in scene_problem.cpp).
+class SceneProblem {
+ public:
+  virtual ~SceneProblem() = default;
+  virtual const ContinuationProblem& problem() const = 0;
+  virtual StartPoint start(const BranchSpec& spec) const = 0;
+  virtual Values measures(const Eigen::VectorXd& x, double p) const = 0;
+  virtual std::vector<UserEvent> events() const { return {}; }
+  virtual const char* solution_name() const { return "equilibrium"; }
+};
+
+std::unique_ptr<SceneProblem> make_problem(const BranchSpec& spec, const Scene& scene);
+MeasuredBranch measure_branch(const SceneProblem& sp, const SceneBranch& r, Branch b);
+
+StartPoint given_start(StartMethod method, Eigen::VectorXd x, double p);
+// Newton at fixed p from `guess`; `what` names the solution sought in the failure message.
+StartPoint newton_start(const ContinuationProblem& problem, StartMethod method, const Eigen::VectorXd& guess, double p,
+                        const std::string& what, const std::string& hint = "try a longer --relax-T");
+// The start with its certified stability; an orbit certified unstable is refused unless allowed.
+// A restart from a labelled state is the user's explicit choice: reported, never refused.
+StartPoint assessed_start(const SceneProblem& sp, const BranchSpec& spec, const Scene& scene);
+
+}  // namespace rbcstab::detail

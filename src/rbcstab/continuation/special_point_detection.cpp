@@ -1,0 +1,203 @@
+// The engine's special points between two accepted points of a branch: sign changes of the test functions
+// (LP, BP, HB; LPC, PD, NS) and of the user events, located by a safeguarded secant on the arclength, and
+// the crossings the test functions cannot see.
+#include "rbcstab/continuation/detail/continuation_engine.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace rbcstab::detail {
+
+double Engine::test_value(const Pt& q, int slot, int event) const {
+  return event >= 0 ? q.events[static_cast<std::size_t>(event)] : q.tests[static_cast<std::size_t>(slot)];
+}
+
+// Whether the eigenvalue/multiplier that test slot k watches is within stability_tol of critical.
+bool Engine::neutral(const Pt& q, int slot) const {
+  const Eigen::VectorXcd& s = q.spectrum;
+  for (Eigen::Index i = 0; i < s.size(); ++i) {
+    double d = 0;
+    if (!cycles_) d = s[i].imag() != 0 ? std::abs(s[i].real()) : std::numeric_limits<double>::infinity();
+    else if (slot == 2) d = s[i].imag() != 0 ? std::abs(std::abs(s[i]) - 1) : std::numeric_limits<double>::infinity();
+    else d = std::abs(s[i] + 1.0);
+    if (d <= o_.stability_tol) return true;
+  }
+  return false;
+}
+
+SpecialPointType Engine::slot_type(int slot) const {
+  switch (slot) {
+    case 0: return cycles_ ? SpecialPointType::LPC : SpecialPointType::LP;
+    case 1: return SpecialPointType::BP;
+    case 2: return cycles_ ? SpecialPointType::NS : SpecialPointType::HB;
+    default: return SpecialPointType::PD;
+  }
+}
+
+// Illinois-safeguarded secant on the arclength between a (s = 0) and b (s = sb) for a zero of one
+// test function (slot) or user event (event >= 0).
+bool Engine::locate(const Pt& a, const Pt& b, int slot, int event, std::size_t after, SpecialPoint& sp) {
+  double s_lo = 0, s_hi = a.t.dot(b.X - a.X);
+  double g_lo = test_value(a, slot, event), g_hi = test_value(b, slot, event);
+  Eigen::VectorXd X_lo = a.X, X_hi = b.X;
+  double m_lo = margin(a), m_hi = margin(b);
+  Pt best = std::abs(g_lo) < std::abs(g_hi) ? a : b;
+  double g_best = std::min(std::abs(g_lo), std::abs(g_hi));
+  int side = 0;
+  bool converged = false;
+  for (int it = 0; it < o_.max_location_iterations; ++it) {
+    if ((X_hi - X_lo).lpNorm<Eigen::Infinity>() < o_.location_tol) {
+      converged = true;
+      break;
+    }
+    ++counters.location_iterations;
+    double s = s_lo - g_lo * (s_hi - s_lo) / (g_hi - g_lo);
+    const double w = s_hi - s_lo;
+    // Safeguard: stay inside the bracket and away from its ends; bisect every third step.
+    if (!std::isfinite(s) || std::abs(s - s_lo) < 1e-3 * std::abs(w) || std::abs(s_hi - s) < 1e-3 * std::abs(w) || it % 3 == 2)
+      s = 0.5 * (s_lo + s_hi);
+    Pt q;
+    if (!probe(a, s, q)) break;
+    const double g = test_value(q, slot, event);
+    if (std::abs(g) < g_best) {
+      g_best = std::abs(g);
+      best = q;
+    }
+    if (g == 0) {
+      X_lo = X_hi = q.X;
+      m_lo = m_hi = margin(q);
+      converged = true;
+      break;
+    }
+    if ((g > 0) == (g_lo > 0)) {
+      s_lo = s, g_lo = g, X_lo = q.X, m_lo = margin(q);
+      if (side == -1) g_hi *= 0.5;  // Illinois
+      side = -1;
+    } else {
+      s_hi = s, g_hi = g, X_hi = q.X, m_hi = margin(q);
+      if (side == 1) g_lo *= 0.5;
+      side = 1;
+    }
+  }
+  sp.type = event >= 0 ? SpecialPointType::UZ : slot_type(slot);
+  sp.name = event >= 0 ? o_.events[static_cast<std::size_t>(event)].name : to_string(sp.type);
+  sp.x = best.X.head(n_);
+  sp.p = best.X[n_];
+  sp.parameters = pr_.parameter_values(sp.x, sp.p);
+  sp.p_lo = std::min(X_lo[n_], X_hi[n_]);
+  sp.p_hi = std::max(X_lo[n_], X_hi[n_]);
+  sp.precision = (X_hi - X_lo).lpNorm<Eigen::Infinity>();
+  sp.status = converged ? LocationStatus::located : LocationStatus::guess;
+  sp.unstable_before = a.n_unstable;
+  sp.unstable_after = b.n_unstable;
+  sp.test_value = test_value(best, slot, event);
+  sp.after_index = after;
+  if (event < 0 && (slot == 2 || slot == 3) && best.spectrum.size() > 0) {
+    // The critical eigenvalue/multiplier; reject neutral saddles (a real pair summing to zero).
+    const Eigen::VectorXcd& s = best.spectrum;
+    Eigen::Index k = 0;
+    double dist = std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < s.size(); ++i) {
+      double d = 0;
+      if (!cycles_) d = std::abs(s[i].real()) + (s[i].imag() > 0 ? 0.0 : 1e300);
+      else if (slot == 2) d = std::abs(std::abs(s[i]) - 1) + (s[i].imag() > 0 ? 0.0 : 1e300);
+      else d = std::abs(s[i] + 1.0);
+      if (d < dist) dist = d, k = i;
+    }
+    if (!(dist < 1e-4 * (1 + std::abs(s[k])))) return false;
+    sp.eigenvalue = s[k];
+  }
+  set_certificate(sp, best, m_lo, m_hi);
+  return true;
+}
+
+// How many eigenvalues (multipliers) a special point moves across the stability boundary: a complex
+// pair for HB/NS, one real one otherwise.
+int Engine::crossings(SpecialPointType type) {
+  return type == SpecialPointType::HB || type == SpecialPointType::NS ? 2 : 1;
+}
+
+// Type of a crossing the test functions could not see (they cancel when two eigenvalues cross
+// together): from which part of the spectrum the change of the unstable count comes.
+SpecialPointType Engine::unresolved_type(const Pt& a, const Pt& b) const {
+  auto counts = [&](const Pt& q, bool want_complex, bool want_negative) {
+    int c = 0;
+    for (Eigen::Index i = 0; i < q.spectrum.size(); ++i) {
+      const std::complex<double> z = q.spectrum[i];
+      const bool unstable = cycles_ ? std::abs(z) > 1 + o_.stability_tol : z.real() > o_.stability_tol;
+      const bool is_complex = z.imag() != 0;
+      if (unstable && is_complex == want_complex && (!cycles_ || want_complex || (z.real() < 0) == want_negative)) ++c;
+    }
+    return c;
+  };
+  if (counts(a, true, false) != counts(b, true, false)) return cycles_ ? SpecialPointType::NS : SpecialPointType::HB;
+  if (cycles_ && counts(a, false, true) != counts(b, false, true)) return SpecialPointType::PD;
+  return SpecialPointType::BP;
+}
+
+// All special points between consecutive accepted points a, b. The test functions' sign changes are
+// located; when they do not account for the change of the unstable count (two crossings that cancel
+// in a product, or a located change rejected as a neutral saddle), the step is split until they do.
+// Crossings that coincide to within location_tol are reported as one located point of that bracket.
+void Engine::detect(const Pt& a, const Pt& b, std::size_t after, int depth, std::vector<SpecialPoint>& out) {
+  std::vector<SpecialPoint> found;
+  int explained = 0;
+  if (o_.detect_bifurcations) {
+    for (int k = 0; k < kSlots; ++k) {
+      const double ga = a.tests[static_cast<std::size_t>(k)], gb = b.tests[static_cast<std::size_t>(k)];
+      if (std::isnan(ga) || std::isnan(gb) || !(ga * gb < 0)) continue;
+      // A neutral spectrum on both sides (a centre, e.g. the conservative S = inf reduced system)
+      // makes the spectral products pure rounding noise: no crossing can be read from them.
+      if (k >= 2 && a.n_unstable == b.n_unstable && neutral(a, k) && neutral(b, k)) continue;
+      SpecialPoint sp;
+      if (locate(a, b, k, -1, after, sp)) {
+        explained += crossings(sp.type);
+        found.push_back(sp);
+      }
+    }
+  }
+  const int change = std::abs(a.n_unstable - b.n_unstable);
+  if (o_.detect_bifurcations && o_.compute_stability && change > explained) {
+    const double s = a.t.dot(b.X - a.X);
+    Pt m;
+    if (depth < 60 && std::abs(s) > o_.location_tol && probe(a, 0.5 * s, m)) {
+      detect(a, m, after, depth + 1, out);
+      detect(m, b, after, depth + 1, out);
+      return;  // the halves find the test-function zeros and the user events again
+    }
+    SpecialPoint sp;
+    sp.type = unresolved_type(a, b);
+    sp.name = to_string(sp.type);
+    sp.x = b.X.head(n_);
+    sp.p = b.X[n_];
+    sp.parameters = pr_.parameter_values(sp.x, sp.p);
+    sp.p_lo = std::min(a.X[n_], b.X[n_]);
+    sp.p_hi = std::max(a.X[n_], b.X[n_]);
+    sp.precision = (b.X - a.X).lpNorm<Eigen::Infinity>();
+    sp.status = sp.precision <= o_.location_tol ? LocationStatus::located : LocationStatus::guess;
+    sp.unstable_before = a.n_unstable;
+    sp.unstable_after = b.n_unstable;
+    sp.after_index = after;
+    set_certificate(sp, b, margin(a), margin(b));
+    found.push_back(sp);
+  }
+  for (std::size_t e = 0; e < o_.events.size(); ++e) {
+    if (!(a.events[e] * b.events[e] < 0) && !(b.events[e] == 0 && a.events[e] != 0)) continue;
+    SpecialPoint sp;
+    if (locate(a, b, -1, static_cast<int>(e), after, sp)) found.push_back(sp);
+  }
+  // Sort along the step by arclength rather than p (p may turn at an LP inside the step).
+  std::sort(found.begin(), found.end(), [&](const SpecialPoint& u, const SpecialPoint& v) {
+    Eigen::VectorXd Xu(N_), Xv(N_);
+    Xu << u.x, u.p;
+    Xv << v.x, v.p;
+    return a.t.dot(Xu - a.X) < a.t.dot(Xv - a.X);
+  });
+  out.insert(out.end(), found.begin(), found.end());
+}
+
+}  // namespace rbcstab::detail
