@@ -10,6 +10,7 @@
 
 #include "rbcstab/continuation/detail/forced_flow.hpp"
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/core/phasor.hpp"
 
@@ -157,8 +158,8 @@ ModalSubsystem::ModalSubsystem(const ModalForcedSystem& full, double p, std::vec
   c_.Upsilon = {c.rate(2)};
   for (int l : modes_) c_.Upsilon.push_back(c.rate(l));
   // Only the l = 2 block is forced (the rest shape has no l >= 3 content at the modal level).
-  const Eigen::VectorXd f0 = full.forcing(0, p).head(5), f1 = full.forcing(std::numbers::pi / 2, p).head(5),
-                        f2 = full.forcing(std::numbers::pi, p).head(5);
+  const Eigen::VectorXd f0 = full.forcing(0, p).head(5), f1 = full.forcing(kPi / 2, p).head(5),
+                        f2 = full.forcing(kPi, p).head(5);
   h0_ = h_cos_ = h_sin_ = h_ = Eigen::VectorXd::Zero(dimension());
   h0_.head(5) = (f0 + f2) / 2;
   h_cos_.head(5) = (f0 - f2) / 2;

@@ -18,13 +18,14 @@
 #include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/problem.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/integrate/quadrature.hpp"
 
 namespace rbcstab {
 
 struct PeriodicRefinementOptions {
-  double period = 2 * std::numbers::pi;  // of the forcing (every level's, in its own frame)
+  double period = 2 * kPi;  // of the forcing (every level's, in its own frame)
   // The period map at the iterates: its accuracy bounds the residual that can be reached.
   IntegratorOptions plain = {Stepper::rk8pd, 1e-10, 1e-13};
   // The monodromy at the start: it only steers the chord and gives the multipliers, whose error bound

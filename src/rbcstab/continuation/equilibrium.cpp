@@ -7,6 +7,7 @@
 
 #include "rbcstab/continuation/detail/rest_direction.hpp"
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 
@@ -99,7 +100,7 @@ PolarState polar(const Eigen::VectorXd& y) {
   const double q = y.norm();
   s.r = std::hypot(y[0], y[1]) / q;
   s.Psi = -std::atan2(y[1], y[0]);
-  if (s.Psi <= -M_PI) s.Psi += 2 * M_PI;
+  if (s.Psi <= -kPi) s.Psi += 2 * kPi;
   return s;
 }
 

@@ -6,6 +6,7 @@
 
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
@@ -250,7 +251,7 @@ FullEquilibriumState FullEquilibriumProblem::observe(const Eigen::VectorXd& x, d
   s.Delta_l = o.Delta_l;
   s.r = o.Delta2 > 0 ? std::min(1.0, std::abs(o.f22) * std::sqrt(2 * a_l(2) / o.Delta2)) : 0.0;
   s.Psi = -std::arg(o.f22);
-  if (s.Psi <= -M_PI) s.Psi += 2 * M_PI;
+  if (s.Psi <= -kPi) s.Psi += 2 * kPi;
   return s;
 }
 

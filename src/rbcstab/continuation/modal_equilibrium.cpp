@@ -7,6 +7,7 @@
 
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/scene.hpp"
@@ -215,7 +216,7 @@ ModalState ModalEquilibriumProblem::observe(const Eigen::VectorXd& x, double p) 
   const double q2 = std::hypot(std::hypot(x[0], x[1]), x[2]);
   s.r = q2 > 0 ? std::hypot(x[0], x[1]) / q2 : 0.0;  // no l = 2 area (never an equilibrium): r = 0
   s.Psi = -std::atan2(x[1], x[0]);
-  if (s.Psi <= -M_PI) s.Psi += 2 * M_PI;
+  if (s.Psi <= -kPi) s.Psi += 2 * kPi;
   s.Delta_l.assign(static_cast<std::size_t>(L_ - 1), 0.0);
   s.Delta_l[0] = Delta * x.head(5).squaredNorm();
   for (int l = 3; l <= L_; ++l) s.Delta_l[static_cast<std::size_t>(l - 2)] = Delta * x[index_of_mode(l)] * x[index_of_mode(l)];

@@ -177,7 +177,7 @@ ModalState ModalForcedSystem::observe(double t, const Eigen::VectorXd& x, double
   const double q2 = std::hypot(std::hypot(x[0], x[1]), x[2]);
   s.r = q2 > 0 ? std::hypot(x[0], x[1]) / q2 : 0.0;
   s.Psi = -std::atan2(x[1], x[0]);
-  if (s.Psi <= -M_PI) s.Psi += 2 * M_PI;
+  if (s.Psi <= -kPi) s.Psi += 2 * kPi;
   s.Delta_l.assign(static_cast<std::size_t>(L_ - 1), 0.0);
   s.Delta_l[0] = Delta * x.head(5).squaredNorm();
   for (int l = 3; l <= L_; ++l) {

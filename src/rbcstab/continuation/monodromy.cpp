@@ -6,6 +6,7 @@
 #include <memory>
 #include <stdexcept>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/full_model.hpp"
@@ -229,7 +230,7 @@ SceneFloquetResult scene_floquet_multipliers(const Scene& scene, const SceneFloq
       if (m % 2 != 0) g_odd = std::max(g_odd, std::abs(init.g.at(l, m)));
     }
   const bool odd_m = g_odd > 1e-12 * g_max;
-  out.period = (odd_m ? 2 : 1) * 2 * M_PI;
+  out.period = (odd_m ? 2 : 1) * 2 * kPi;
   out.t0 = options.relax_periods * out.period;
   out.relax_level = choose_level(scene, init).level;
   const auto relaxing = make_system(scene.parameters, init, out.relax_level);

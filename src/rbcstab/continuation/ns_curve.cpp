@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "rbcstab/continuation/detail/minimal_augmentation.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
@@ -24,7 +25,7 @@ NeimarkSackerCurveProblem::NeimarkSackerCurveProblem(const ForcedSystem2& system
   require(ns.x.size() == m_, "ns", static_cast<double>(ns.x.size()), "a point of the orbit problem's dimension");
   require(n_ >= 2, "dimension", static_cast<double>(n_), ">= 2 (an NS pair needs two multipliers)");
   const double theta = std::abs(std::arg(ns.eigenvalue));
-  require(theta > 0 && theta < M_PI, "ns.eigenvalue", theta,
+  require(theta > 0 && theta < kPi, "ns.eigenvalue", theta,
           "a multiplier e^{i theta} with 0 < theta < pi (theta = 0, pi are 1:1 / 1:2 resonances)");
   const double kappa = std::cos(theta);
   const Floquet fl = floquet(ns.x, ns.p, p2);
@@ -106,7 +107,7 @@ NeimarkSackerKind NeimarkSackerCurveProblem::classify(const Eigen::VectorXd& X) 
   }
   // mu + 1/mu = 2 kappa: mu = kappa + sign(kappa) sqrt(kappa^2 - 1), the root with |mu| > 1 (no cancellation).
   k.neutral_saddle = true;
-  k.theta = k.kappa > 0 ? 0.0 : M_PI;
+  k.theta = k.kappa > 0 ? 0.0 : kPi;
   k.real_multiplier = k.kappa + std::copysign(std::sqrt(k.kappa * k.kappa - 1), k.kappa);
   return k;
 }

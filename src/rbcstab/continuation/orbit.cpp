@@ -317,7 +317,7 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p) c
   o.kind = o.winding == 0 ? OrbitKind::swinging : OrbitKind::tumbling;
   o.r0 = r_of(X.head(n_));
   o.Psi0 = -theta0;
-  if (o.Psi0 <= -M_PI) o.Psi0 += kTwoPi;
+  if (o.Psi0 <= -kPi) o.Psi0 += kTwoPi;
   o.r_min = o.r_max = o.r0;
   o.Psi_min = o.Psi_max = o.Psi0;
   o.mean = Eigen::VectorXd::Zero(n_);

@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
@@ -43,7 +44,7 @@ ModelLevel model_level(ProblemKind kind) {
 
 bool is_orbit(ProblemKind kind) { return kind == ProblemKind::orbit || kind == ProblemKind::modal_orbit; }
 
-double default_beta(ProblemKind kind) { return is_orbit(kind) ? M_PI / 2 : 0.0; }
+double default_beta(ProblemKind kind) { return is_orbit(kind) ? kPi / 2 : 0.0; }
 
 TruncationUse truncation_use(ProblemKind kind) {
   return model_level(kind) == ModelLevel::reduced ? TruncationUse::reduced : TruncationUse::analysis;

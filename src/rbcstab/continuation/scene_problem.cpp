@@ -18,6 +18,7 @@
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/scene_branch.hpp"
 #include "rbcstab/continuation/scene_start.hpp"
+#include "rbcstab/core/constants.hpp"
 
 namespace rbcstab {
 
@@ -87,7 +88,7 @@ class Orbit final : public SceneProblem {
     StartPoint s = newton_start(pr_, StartMethod::relaxed, pr_.shooting_guess(r.x, p0), p0,
                                 std::is_same_v<System, ModalForcedSystem> ? "periodic orbit near the relaxed modal state"
                                                                           : "periodic orbit near the relaxed state");
-    s.relaxation_periods = static_cast<int>(std::ceil(spec.relax_T / (2 * M_PI))) + r.periods;
+    s.relaxation_periods = static_cast<int>(std::ceil(spec.relax_T / (2 * kPi))) + r.periods;
     s.periodicity_defect = r.defect;
     s.periodicity_tol = spec.relax_tol;
     s.relaxed = r.converged;
