@@ -22,7 +22,7 @@
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram.hpp"
-#include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/verdict/asymptotic.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
 

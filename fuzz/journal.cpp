@@ -18,8 +18,8 @@
 #include "fuzz_check.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/diagram.hpp"
-#include "rbcstab/sweep/diagram_file.hpp"
-#include "rbcstab/sweep/point_io.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
+#include "rbcstab/sweep/point_record.hpp"
 
 using namespace rbcstab;
 using namespace rbcstab::fuzz;

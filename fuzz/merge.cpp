@@ -1,4 +1,4 @@
-// Diagram outputs read back (sweep/diagram_output.hpp merge_diagrams: `rbcstab merge` of shard files). The input
+// Diagram outputs read back (sweep/diagram_document.hpp merge_diagrams: `rbcstab merge` of shard files). The input
 // is one or more diagram JSON documents separated by a line "----". An accepted merge must
 //   - hold a header with a valid scene_toml (what `rbcstab merge` reads for the agreement), a spec that validates and points in increasing index order, each inside the grid and passing
 //     point_value_error for the modes of the header's scene, with the grid's axis values;
@@ -12,8 +12,8 @@
 #include "fuzz_check.hpp"
 #include "json_compare.hpp"
 #include "rbcstab/io/scene_file.hpp"
-#include "rbcstab/sweep/diagram_output.hpp"
-#include "rbcstab/sweep/point_io.hpp"
+#include "rbcstab/sweep/diagram_document.hpp"
+#include "rbcstab/sweep/point_record.hpp"
 
 using namespace rbcstab;
 using namespace rbcstab::fuzz;

@@ -9,7 +9,7 @@
 
 #include "fuzz_check.hpp"
 #include "rbcstab/io/scene_file.hpp"
-#include "rbcstab/sweep/point_io.hpp"
+#include "rbcstab/sweep/point_record.hpp"
 
 using namespace rbcstab;
 using namespace rbcstab::fuzz;

@@ -11,7 +11,7 @@
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/report/panels.hpp"
-#include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
 
 using namespace rbcstab;
 using namespace rbcstab::fuzz;

@@ -13,7 +13,7 @@
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
-#include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
 #include "scene_options.hpp"
 

@@ -1,9 +1,9 @@
 #pragma once
 // The --help text of the parameter plane shared by `diagram` and `trace` (the plane itself: the library's
-// plane_spec, sweep/diagram_file.hpp).
+// plane_spec, sweep/diagram_table.hpp).
 #include <string>
 
-#include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
 
 namespace rbcstab::cli {
 

@@ -18,8 +18,8 @@
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/report/report.hpp"
-#include "rbcstab/sweep/diagram_file.hpp"
-#include "rbcstab/sweep/diagram_output.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
+#include "rbcstab/sweep/diagram_document.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
 
 namespace rbcstab::python {

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/model/parameter_table.hpp"
 #include "rbcstab/model/physical.hpp"

@@ -18,7 +18,7 @@
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/orbit.hpp"
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"

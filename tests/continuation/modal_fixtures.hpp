@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "rbcstab/analysis/steady_states.hpp"
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/scene.hpp"
 

@@ -10,7 +10,7 @@
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/physical.hpp"
 

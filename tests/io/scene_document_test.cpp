@@ -8,7 +8,7 @@
 #include <string>
 
 #include "rbcstab/analysis/truncation.hpp"
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/scene_file.hpp"

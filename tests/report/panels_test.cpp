@@ -12,8 +12,8 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/report/panels.hpp"
-#include "rbcstab/sweep/diagram_file.hpp"
-#include "rbcstab/sweep/diagram_output.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
+#include "rbcstab/sweep/diagram_document.hpp"
 #include "test_files.hpp"
 
 namespace rbcstab {

@@ -16,9 +16,9 @@
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/sweep/diagram.hpp"
-#include "rbcstab/sweep/diagram_file.hpp"
-#include "rbcstab/sweep/diagram_output.hpp"
-#include "rbcstab/sweep/point_io.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
+#include "rbcstab/sweep/diagram_document.hpp"
+#include "rbcstab/sweep/point_record.hpp"
 
 namespace rbcstab {
 namespace {

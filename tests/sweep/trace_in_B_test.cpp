@@ -14,7 +14,7 @@
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/trace.hpp"
 #include "rbcstab/verdict/asymptotic.hpp"
 

@@ -19,7 +19,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/diagram.hpp"
-#include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
 #include "verdict/panel_scene.hpp"
 

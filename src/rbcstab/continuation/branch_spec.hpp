@@ -7,7 +7,7 @@
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/orbit.hpp"
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/continuation/scene_kinds.hpp"
 #include "rbcstab/model/scene.hpp"
 

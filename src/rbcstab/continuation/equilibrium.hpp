@@ -14,7 +14,7 @@
 // is read from DF restricted to the sphere's tangent plane, which DF leaves invariant.
 #include <optional>
 
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/continuation/problem.hpp"
 #include "rbcstab/model/reduced_model.hpp"
 #include "rbcstab/model/scene.hpp"

@@ -8,7 +8,7 @@
 #include <span>
 #include <string>
 
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/model/reduced_model.hpp"
 #include "rbcstab/model/scene.hpp"
 

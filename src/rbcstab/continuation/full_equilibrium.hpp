@@ -33,7 +33,7 @@
 #include <span>
 #include <vector>
 
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/continuation/problem.hpp"
 #include "rbcstab/model/full_model.hpp"
 #include "rbcstab/model/scene.hpp"

@@ -30,7 +30,7 @@
 
 #include "rbcstab/continuation/dense.hpp"
 
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/continuation/problem.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/scene.hpp"

@@ -26,7 +26,7 @@
 
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/continuation/orbit.hpp"
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/model/modal_model.hpp"
 #include "rbcstab/model/scene.hpp"
 

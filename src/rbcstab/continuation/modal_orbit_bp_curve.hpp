@@ -22,7 +22,7 @@
 
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/orbit_two_parameter.hpp"
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/continuation/problem.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/model/scene.hpp"

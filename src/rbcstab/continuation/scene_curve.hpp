@@ -7,7 +7,7 @@
 #include <string>
 
 #include "rbcstab/continuation/continuation.hpp"
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/continuation/scene_branch.hpp"
 #include "rbcstab/continuation/scene_kinds.hpp"
 #include "rbcstab/continuation/scene_measures.hpp"

@@ -8,7 +8,7 @@
 #include "rbcstab/continuation/branch_labels.hpp"
 #include "rbcstab/continuation/branch_spec.hpp"
 #include "rbcstab/continuation/continuation.hpp"
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/continuation/scene_branch.hpp"
 #include "rbcstab/continuation/scene_curve.hpp"
 #include "rbcstab/continuation/scene_kinds.hpp"

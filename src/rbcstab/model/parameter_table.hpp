@@ -2,7 +2,7 @@
 // The scene's parameters, one row each: name, symbol, description, domain with its message, get/set on a
 // Scene, where a scene file keeps it and how an axis spaces it. shear_rate (gamma, 1/s) is the one row valid
 // only on a physical scene (Scene::physical): its get and set throw InvalidArgument("shear_rate", ...) elsewhere. Scene files and command-line flags (io),
-// continuation parameters (continuation/parameters.hpp) and diagram axes (sweep/diagram.hpp) all take their
+// continuation parameters (continuation/continuation_parameter.hpp) and diagram axes (sweep/diagram.hpp) all take their
 // names and checks from this table, so adding a parameter is one enumerator and one row.
 #include <cmath>
 #include <cstdint>
@@ -131,7 +131,7 @@ SceneParameter parameter_from_string(std::string_view name, ParameterUse use);
 
 double get_parameter(const Scene& s, SceneParameter q);
 // Unchecked (see ParameterRow::set): callers validate the scene afterwards, or use with_parameter
-// (continuation/parameters.hpp), which checks the value first.
+// (continuation/continuation_parameter.hpp), which checks the value first.
 void set_parameter(Scene& s, SceneParameter q, double value);
 Domain parameter_domain(SceneParameter q, const Parameters& p);
 // The domain a continuation lands on at its closed edges: parameter_domain (one range for every use).

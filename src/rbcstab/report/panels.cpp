@@ -19,8 +19,8 @@
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/report/bifurcation_plot.hpp"
-#include "rbcstab/sweep/diagram_file.hpp"
-#include "rbcstab/sweep/diagram_output.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
+#include "rbcstab/sweep/diagram_document.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
 
 namespace rbcstab {

@@ -1,6 +1,6 @@
 #pragma once
 // One command per paper figure panel. A scene file with a panel table is a figure panel:
-//   [diagram]       a phase diagram by simulation (sweep/diagram_file.hpp; Figs. 4, 5, Appendix E), drawn
+//   [diagram]       a phase diagram by simulation (sweep/diagram_table.hpp; Figs. 4, 5, Appendix E), drawn
 //                   with the traced boundary (out-of-plane scenes) and the paper's analytic lines on top;
 //   [fig6e]         the Fig. 6e table (sweep/fig6e.hpp): Delta~2 against the simulated mean;
 //   [continuation]  an equilibrium branch of the reduced system (continue_scene, as `rbcstab continue`), drawn
@@ -19,7 +19,7 @@
 #include "rbcstab/sweep/fig6e.hpp"
 #include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/continuation/continuation.hpp"
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/report/report.hpp"

@@ -16,7 +16,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/detail/journal.hpp"
-#include "rbcstab/sweep/point_io.hpp"
+#include "rbcstab/sweep/point_record.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
 
 namespace rbcstab {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "rbcstab/sweep/point_io.hpp"
+#include "rbcstab/sweep/point_record.hpp"
 
 #ifdef RBCSTAB_WITH_MPI
 #include <mpi.h>

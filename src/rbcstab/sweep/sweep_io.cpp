@@ -5,8 +5,8 @@
 #include "rbcstab/analysis/analysis_io.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"
-#include "rbcstab/sweep/diagram_output.hpp"
-#include "rbcstab/sweep/point_io.hpp"
+#include "rbcstab/sweep/diagram_document.hpp"
+#include "rbcstab/sweep/point_record.hpp"
 
 namespace rbcstab {
 

@@ -9,7 +9,7 @@
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram.hpp"
-#include "rbcstab/sweep/diagram_output.hpp"
+#include "rbcstab/sweep/diagram_document.hpp"
 #include "rbcstab/sweep/fig6e.hpp"
 #include "rbcstab/sweep/trace.hpp"
 

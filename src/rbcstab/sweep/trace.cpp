@@ -7,7 +7,7 @@
 
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/parameter_table.hpp"

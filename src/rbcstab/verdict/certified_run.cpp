@@ -7,7 +7,7 @@
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/modal_model.hpp"

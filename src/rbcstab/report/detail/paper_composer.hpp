@@ -25,8 +25,8 @@
 #include "rbcstab/report/report.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram.hpp"
-#include "rbcstab/sweep/diagram_file.hpp"
-#include "rbcstab/sweep/diagram_output.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
+#include "rbcstab/sweep/diagram_document.hpp"
 #include "rbcstab/sweep/trace.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
 

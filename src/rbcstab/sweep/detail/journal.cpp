@@ -15,7 +15,7 @@
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
-#include "rbcstab/sweep/point_io.hpp"
+#include "rbcstab/sweep/point_record.hpp"
 
 namespace rbcstab::detail {
 

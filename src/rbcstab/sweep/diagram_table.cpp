@@ -1,4 +1,4 @@
-#include "rbcstab/sweep/diagram_file.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
 
 #include <cmath>
 #include <iomanip>

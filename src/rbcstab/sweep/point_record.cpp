@@ -1,4 +1,4 @@
-#include "rbcstab/sweep/point_io.hpp"
+#include "rbcstab/sweep/point_record.hpp"
 
 #include <charconv>
 #include <cmath>

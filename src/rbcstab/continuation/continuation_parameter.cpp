@@ -1,4 +1,4 @@
-#include "rbcstab/continuation/parameters.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "rbcstab/sweep/diagram_output.hpp"
+#include "rbcstab/sweep/diagram_document.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -12,7 +12,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/scene_file.hpp"
-#include "rbcstab/sweep/point_io.hpp"
+#include "rbcstab/sweep/point_record.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 
 namespace rbcstab {
