@@ -168,7 +168,7 @@ static Runner add_continue(CLI::App& app) {
       ->capture_default_str();
   o->o_step = app.add_option("--step", o->engine.initial_step, "first arclength step, > 0")->check(positive())->capture_default_str();
   o->o_max_step = app.add_option("--max-step", o->engine.max_step, "largest arclength step, > 0")->check(positive())->capture_default_str();
-  o->o_max_points = app.add_option("--max-points", o->engine.max_points, "points per direction, an integer in [2, 100000000]")->check(integer_text("an integer in [2, 100000000]"))->check(CLI::Range(2, 100000000))->capture_default_str();
+  o->o_max_points = app.add_option("--max-points", o->engine.max_points, "points per direction, an integer in [2, 100000000]")->check(integer_in(2, 100000000))->capture_default_str();
   o->o_relax_T = app.add_option("--relax-T", o->relax_T,
                  "relaxation time that gives the start state from the scene's shape, > 0 (orbits: rounded up to a "
                  "multiple of 2 pi)")
@@ -188,7 +188,7 @@ static Runner add_continue(CLI::App& app) {
   app.add_option("--max2", o->p2_max, "--curve: upper bound of --parameter2 (the curve ends there exactly; default: none)")
       ->check(number_text("within --parameter2's domain"));
   app.add_option("--point", o->point, "--curve: start from the K-th located special point of that type, an integer in [1, 1000000]")
-      ->check(integer_text("an integer in [1, 1000000]"))->check(CLI::Range(1, 1000000))
+      ->check(integer_in(1, 1000000))
       ->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object (branch, special_points) on stdout");
   app.add_option("--csv", o->csv, "write the branch as CSV to this file");
@@ -197,7 +197,7 @@ static Runner add_continue(CLI::App& app) {
   o->o_label_every = app.add_option("--label-every", o->label_every,
                                     "label every N-th point of a branch (AUTO's NPR), an integer in [0, 100000000]; special points "
                                     "and the two ends are always labelled")
-                         ->check(integer_text("an integer in [0, 100000000]"))->check(CLI::Range(0, 100000000))
+                         ->check(integer_in(0, 100000000))
                          ->capture_default_str();
   app.add_option("--measures", o->measures,
                  "text output: the measures of the labelled-point table, comma-separated (e.g. r,Psi,sigma); "
@@ -206,11 +206,11 @@ static Runner add_continue(CLI::App& app) {
                  "continue from a labelled point of this branch file (--save): with --label N in --parameter (default: "
                  "the file's) or, with --curve, that point's curve; or --switch-at N. Scene and kind are the file's");
   o->o_label = app.add_option("--label", o->label, "--restart: the label to start from, an integer in [1, 1000000000]")
-                   ->check(integer_text("an integer in [1, 1000000000]"))->check(CLI::Range(1, 1000000000));
+                   ->check(integer_in(1, 1000000000));
   o->o_switch_at = app.add_option("--switch-at", o->switch_at,
                                   "--restart: switch onto the other branch at the BP with this label (equilibrium, "
                                   "modal, full, modal-orbit), an integer in [1, 1000000000]")
-                       ->check(integer_text("an integer in [1, 1000000000]"))->check(CLI::Range(1, 1000000000));
+                       ->check(integer_in(1, 1000000000));
   o->progress.add_flags(app);
   return [o] { return run(*o); };
 }

@@ -31,18 +31,14 @@ int run(const MergeOptions& o) {
     if (!o.allow_incomplete) return kRunFailed;
   }
   const DiagramOutputOptions oo{m.seconds_present};
-  try {
-    const std::string csv = diagram_csv(m.spec, m.points, oo);
-    nlohmann::json doc = diagram_json(m.header, m.spec, m.points, {}, oo);
-    if (m.missing.empty()) {
-      const AgreementOptions defaults;  // named: GCC 12 warns (maybe-uninitialized) on the temporary default argument
-      doc["agreement"] = agreement_json(parse_scene(m.header.at("scene_toml").get<std::string>()).scene, m.spec, m.points, defaults);
-    }
-    write_files_atomic({{o.out + ".csv", csv, "--out"}, {o.out + ".json", doc.dump(1) + "\n", "--out"}});
-  } catch (const std::runtime_error& e) {
-    std::cerr << "rbcstab: error: " << e.what() << "\n";
-    return kOutputError;
+  const std::string csv = diagram_csv(m.spec, m.points, oo);
+  nlohmann::json doc = diagram_json(m.header, m.spec, m.points, {}, oo);
+  if (m.missing.empty()) {
+    const AgreementOptions defaults;  // named: GCC 12 warns (maybe-uninitialized) on the temporary default argument
+    const Scene scene = parse_scene(m.header.at("scene_toml").get<std::string>()).scene;
+    doc["agreement"] = agreement_json(scene, m.spec, m.points, defaults);
   }
+  write_files_atomic({{o.out + ".csv", csv, "--out"}, {o.out + ".json", doc.dump(1) + "\n", "--out"}});
   std::cerr << "rbcstab: merged " << inputs.size() << " files, " << m.points.size() << " points into " << o.out
             << ".csv and " << o.out << ".json\n";
   if (o.json) std::cout << merge_brief_json(m, inputs.size(), o.out).dump(2) << "\n";

@@ -81,7 +81,7 @@ static Runner add_shape(CLI::App& app) {
       ->check(CLI::IsMember({"vtk", "vtp", "ply", "csv"}))
       ->capture_default_str();
   app.add_option("--resolution", o->n_theta, "polar grid points n_theta (n_phi = 2 n_theta), integer in [2, 4096]")
-      ->check(integer_text("an integer in [2, 4096]"))->check(CLI::Range(2, 4096))
+      ->check(integer_in(2, 4096))
       ->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object (files, rho range, status) on stdout");
   return [o] { return run(*o); };

@@ -50,6 +50,11 @@ std::string run_reason(IntegrationStatus status, const std::string& reason, cons
 
 std::string run_reason(const SimulationResult& r, const Parameters& p) { return run_reason(r.status, r.reason, p); }
 
+std::string row_reason(IntegrationStatus status, const std::string& reason, const Parameters& p) {
+  if (status == IntegrationStatus::success) return nonfinite_reason(p);
+  return "the run ended with " + to_string(status) + ": " + run_reason(status, reason, p);
+}
+
 namespace {
 
 bool holds_null(const nlohmann::json& v) {

@@ -29,6 +29,9 @@ std::string S_reason(const Parameters& p);
 std::string run_reason(const SimulationResult& r, const Parameters& p);
 // The same for any run's status and message (a benchmark row, an amplitude series).
 std::string run_reason(IntegrationStatus status, const std::string& reason, const Parameters& p);
+// Why a benchmark row's number is not finite: its run's status and message when it stopped, else the inputs that
+// overflowed (nonfinite_reason).
+std::string row_reason(IntegrationStatus status, const std::string& reason, const Parameters& p);
 // "L" and "L_reason" (why that L: SceneFile::L_reason), which every JSON output of a scene carries, and
 // "truncation_check" when the file holds one.
 void put_truncation(nlohmann::json& j, const SceneFile& file);

@@ -11,6 +11,7 @@
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/diagram_output.hpp"
 #include "rbcstab/sweep/fig6e.hpp"
+#include "rbcstab/sweep/threshold_precision.hpp"
 #include "rbcstab/sweep/trace.hpp"
 
 namespace rbcstab {
@@ -48,5 +49,19 @@ nlohmann::json diagram_document(const SceneFile& file, const DiagramSpec& spec, 
 nlohmann::json diagram_brief_json(const SceneFile& file, const DiagramRun& r, const std::string& prefix);
 // What a merge of `inputs` shard files wrote.
 nlohmann::json merge_brief_json(const MergeResult& m, std::size_t inputs, const std::string& prefix);
+
+// The threshold-precision study (sweep/threshold_precision.hpp): one CSV row per located boundary (predictor,
+// method, rtol, budget, ln_C, error, evaluations, rhs_evaluations, seconds, status); the document {scene, B,
+// ln_C_range, references, rows, L, L_reason}, a missing number null with its reason (the row's status); the text:
+// the references, then one aligned line per row.
+std::string threshold_precision_csv(const ThresholdPrecision& t);
+nlohmann::json threshold_precision_json(const SceneFile& file, const ThresholdPrecisionOptions& options,
+                                        const ThresholdPrecision& t);
+std::string threshold_precision_text(const SceneFile& file, const ThresholdPrecision& t);
+
+// A diagram's progress line (the command line's diagram, report and paper): "diagram 12/64, 3.2 points/s, ETA
+// 15.0s"; with detail also the resumed points and the elapsed time ("diagram 12/64 (4 resumed), 3.2 points/s,
+// elapsed 2.5s, ETA 15.0s").
+std::string progress_text(const Progress& p, bool detail);
 
 }  // namespace rbcstab
