@@ -134,9 +134,8 @@ int run(const BenchOptions& o) {
   if (o.kind == "threshold") return run_threshold(o, sf);
   return run_work_precision(o, sf);
 }
-}  // namespace
 
-static Runner add_bench(CLI::App& app) {
+Runner add_bench(CLI::App& app) {
   auto o = std::make_shared<BenchOptions>();
   app.add_option("kind", o->kind, "what to measure")
       ->check(CLI::IsMember({"work-precision", "truncation", "threshold"}))
@@ -163,7 +162,6 @@ static Runner add_bench(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterBench{"bench", "Speed against accuracy: work-precision, truncation in L, threshold precision",
                                 add_bench, 80};
 }  // namespace

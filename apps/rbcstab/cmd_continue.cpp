@@ -136,9 +136,8 @@ int run(const ContinueOptions& o) {
   if (!curve) TableOptions::from_list(o.measures).validate(measure_names(sr.spec.kind, sr.spec.scene.L));
   return report(o, sr.L_reason, continue_run(sr));
 }
-}  // namespace
 
-static Runner add_continue(CLI::App& app) {
+Runner add_continue(CLI::App& app) {
   auto o = std::make_shared<ContinueOptions>();
   o->scene.add_to(app);
   o->o_kind = app.add_option("--kind", o->kind,
@@ -215,7 +214,6 @@ static Runner add_continue(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterContinue{"continue", "Continue an equilibrium or periodic-orbit branch in one parameter (LP/BP/HB, LPC/PD/NS), or a special point's curve in two",
                                 add_continue, 40, {{"initial_step", "--step"}, {"p_min", "--min"}, {"p_max", "--max"}}};
 }  // namespace

@@ -80,9 +80,8 @@ int run(const DiagramCliOptions& o) {
               << counts.failed << " failed; wrote " << prefix << ".csv and " << prefix << ".json\n";
   return counts.failed ? kRunFailed : kOk;
 }
-}  // namespace
 
-static Runner add_diagram(CLI::App& app) {
+Runner add_diagram(CLI::App& app) {
   auto o = std::make_shared<DiagramCliOptions>();
   o->scene.add_to(app);
   o->plane.add_to(app, true);
@@ -110,7 +109,6 @@ static Runner add_diagram(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterDiagram{"diagram", "Phase diagram by direct simulation over two parameter axes", add_diagram, 40};
 }  // namespace
 

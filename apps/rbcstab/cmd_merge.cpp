@@ -44,9 +44,8 @@ int run(const MergeOptions& o) {
   if (o.json) std::cout << merge_brief_json(m, inputs.size(), o.out).dump(2) << "\n";
   return m.missing.empty() ? kOk : kRunFailed;
 }
-}  // namespace
 
-static Runner add_merge(CLI::App& app) {
+Runner add_merge(CLI::App& app) {
   auto o = std::make_shared<MergeOptions>();
   app.add_option("inputs", o->inputs, "diagram JSON files of the shards (PREFIX.shardKofN.json)")
       ->required()
@@ -57,7 +56,6 @@ static Runner add_merge(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterMerge{"merge", "Merge the shard outputs of one diagram", add_merge, 41};
 }  // namespace
 

@@ -4,7 +4,6 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "executable_path.hpp"
 #include "exit_codes.hpp"
 #include "progress.hpp"
 #include "rbcstab/report/paper.hpp"
@@ -45,9 +44,8 @@ int run(PaperCliOptions& o) {
   }
   return kOk;
 }
-}  // namespace
 
-static Runner add_paper(CLI::App& app) {
+Runner add_paper(CLI::App& app) {
   auto o = std::make_shared<PaperCliOptions>();
   PaperOptions& p = o->paper;
   app.add_option("--output,-o", p.output, "folder to create (index.html, the figures, their data); its parent must exist")
@@ -72,7 +70,6 @@ static Runner add_paper(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterPaper{"paper", "Compute and draw every figure of the paper with its claims checked (one HTML page)",
                                 add_paper, 61};
 }  // namespace

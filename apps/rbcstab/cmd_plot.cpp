@@ -4,7 +4,6 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "executable_path.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/report/bifurcation_plot.hpp"
 #include "rbcstab/report/report.hpp"
@@ -32,9 +31,8 @@ int run(const PlotCliOptions& o) {
   std::cout << (o.json ? plot_json(spec, files).dump(2) + "\n" : plot_text(spec, files));
   return kOk;
 }
-}  // namespace
 
-static Runner add_plot(CLI::App& app) {
+Runner add_plot(CLI::App& app) {
   auto o = std::make_shared<PlotCliOptions>();
   app.add_option("files", o->files,
                  "branch JSONs (`rbcstab continue --json > F.json` or a --save branch file), drawn overlaid; "
@@ -65,7 +63,6 @@ static Runner add_plot(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterPlot{"plot", "Draw a bifurcation diagram (PNG + JSON of what was drawn) from branch JSONs of `continue`",
                                 add_plot, 45};
 }  // namespace

@@ -4,7 +4,6 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "executable_path.hpp"
 #include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/report/panels.hpp"
@@ -70,23 +69,16 @@ int run(ReportCliOptions& o) {
   if (o.progress.enabled()) ro.on_step = [&o](const std::string& step) { o.progress.step("report: " + step); };
   if (!o.counts.empty() || o.panel.threads != 0)
     throw InvalidArgument("--counts", "--counts and --threads apply to a scene with a [diagram] table only");
-  ro.shear_rate_search = shear_rate_search(sf.scene, o.shear_rate_range);
+  ro.shear_rate_search = shear_rate_search(sf.scene, o.shear_rate_range, "--shear-rate-range");
   const ReportResult r = build_report(sf, ro);
   for (const auto& w : r.warnings) std::cerr << "rbcstab: warning: " << w << "\n";
   std::cout << (o.json ? report_json(sf, ro, r).dump(2) + "\n" : report_text(ro, r));
-  int rc = kOk;
-  for (const auto& [what, run] : {std::pair{"the run", &r.run}, std::pair{"the reduced companion run", &r.reduced}}) {
-    if (run == &r.reduced && !r.has_reduced) continue;
-    if (run->status == IntegrationStatus::success) continue;
-    std::cerr << "rbcstab: " << what << " stopped at t = " << run->t_reached << ": "
-              << run_reason(*run, sf.scene.parameters) << "; the report shows it up to that time\n";
-    rc = kRunFailed;
-  }
-  return rc;
+  const std::vector<std::string> failures = report_failures(sf, r);
+  for (const std::string& f : failures) std::cerr << "rbcstab: " << f << "\n";
+  return failures.empty() ? kOk : kRunFailed;
 }
-}  // namespace
 
-static Runner add_report(CLI::App& app) {
+Runner add_report(CLI::App& app) {
   auto o = std::make_shared<ReportCliOptions>();
   o->scene.add_to(app);
   ReportOptions& r = o->report;
@@ -141,7 +133,6 @@ static Runner add_report(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterReport{"report", "Run a scene (or a figure panel: [diagram], [fig6e], [continuation]) and write a report folder",
                                 add_report, 60};
 }  // namespace

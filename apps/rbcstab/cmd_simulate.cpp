@@ -38,9 +38,8 @@ int run(const SimulateOptions& o) {
   }
   return kOk;
 }
-}  // namespace
 
-static Runner add_simulate(CLI::App& app) {
+Runner add_simulate(CLI::App& app) {
   auto o = std::make_shared<SimulateOptions>();
   o->scene.add_to(app);
   app.add_flag("--json", o->json, "print one JSON object on stdout");
@@ -49,7 +48,6 @@ static Runner add_simulate(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterSimulate{"simulate", "Integrate a scene and report the excess-area redistribution", add_simulate, 20};
 }  // namespace
 

@@ -50,21 +50,12 @@ int run(const TraceCliOptions& o) {
     doc["agreement"] = trace_agreement_json(dj, o.diagram, spec, to, o.threads);
   }
   write_files_atomic({{o.out + ".csv", trace_csv(spec, t), "--out"}, {o.out + ".json", doc.dump(1) + "\n", "--out"}});
-  std::cerr << "rbcstab: traced " << t.curves.size() << " curve pieces, " << t.corners.size() << " corners, "
-            << t.evaluations << " criterion evaluations in " << t.seconds << " s; wrote " << o.out << ".csv and "
-            << o.out << ".json\n";
-  for (const std::string& n : t.notes) std::cerr << "rbcstab: note: " << n << "\n";
-  if (doc.contains("agreement") && doc["agreement"].contains("predictors"))
-    for (const auto& a : doc["agreement"]["predictors"])
-      std::cerr << "rbcstab: agreement of " << a["predictor"].get<std::string>() << ": verdict " << a["verdict_fraction"]
-                << ", mode " << a["mode_fraction"] << " over " << a["points"] << " points, disagreements beyond one grid step "
-                << a["beyond_one_grid_step"] << "\n";
+  for (const std::string& line : trace_summary_lines(t, doc, o.out)) std::cerr << "rbcstab: " << line << "\n";
   if (o.json) std::cout << trace_brief_json(doc, o.out).dump(2) << "\n";
   return kOk;
 }
-}  // namespace
 
-static Runner add_trace(CLI::App& app) {
+Runner add_trace(CLI::App& app) {
   auto o = std::make_shared<TraceCliOptions>();
   o->scene.add_to(app);
   o->plane.add_to(app, false);
@@ -98,7 +89,6 @@ static Runner add_trace(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterTrace{"trace", "Trace the stability boundary of a parameter plane as curves", add_trace, 42};
 }  // namespace
 

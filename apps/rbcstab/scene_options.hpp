@@ -14,15 +14,9 @@
 
 namespace rbcstab::cli {
 
-// Applies a [physical] key's text ("3.9um") as its unit flag gives it; the library's message names the key
-// ("radius = ..."), the rethrown one the flag ("--radius = ...").
-void apply_unit_flag(SceneFile& file, const SceneKey& key, const std::string& text);
-
-// --shear-rate-range LO,HI (summary, report): the shear-rate threshold search of a physical scene.
+// --shear-rate-range LO,HI (summary, report): the shear-rate threshold search of a physical scene
+// (shear_rate_search, verdict/shear_rate.hpp).
 void add_shear_rate_range(CLI::App& app, std::string& text);
-// The search options the flag's text gives ("" : the defaults); refused (InvalidArgument naming the flag) on a
-// scene that is not physical or for a malformed or empty range.
-ShearRateSearchOptions shear_rate_search(const Scene& scene, const std::string& text);
 
 struct SceneOptions {
   std::string scene_path;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rbcstab/integrate/simulation.hpp"
+#include "rbcstab/io/files.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/report/shape.hpp"
 #include "rbcstab/verdict/shear_rate.hpp"
@@ -83,8 +84,26 @@ namespace detail {
 double oscillation_period(const std::vector<double>& t, const std::vector<double>& x);
 }  // namespace detail
 
+// `rbcstab shape`: the scene's shape at each time (sorted, repeats dropped; none: T) on the grid, in each format
+// (vtk, vtp, ply, csv) as STEM.<format>, or STEM_t<time>.<format> for several times. The files are returned for
+// the caller to write as one set (write_files_atomic; `flag` names the stem in its messages) with what they hold.
+struct ShapeExportOptions {
+  std::string stem;
+  std::vector<double> times;
+  std::vector<std::string> formats{"vtk"};
+  ShapeGridOptions grid;
+};
+struct ShapeExportRun {
+  ShapeExport result;
+  std::vector<OutputFile> files;
+};
+ShapeExportRun export_shapes(const SceneFile& scene, const ShapeExportOptions& options, const std::string& flag = "");
+
 // The drawing script of reports and bifurcation plots, in the folder find_script_dir gives.
 inline constexpr const char* kReportScript = "rbcstab_report.py";
+
+// The running program's path (/proc/self/exe; "" if unknown): an installed tool finds its data beside it.
+std::string executable_path();
 
 // Where rbcstab_report.py lives: $RBCSTAB_DATA_DIR[/python], then <exe>/../share/rbcstab/python
 // (installed), then the source tree this library was built from. Empty if none holds the script.

@@ -1,5 +1,8 @@
 #include "rbcstab/report/report_io.hpp"
 
+#include <utility>
+#include <vector>
+
 #include "rbcstab/core/progress.hpp"
 #include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"
@@ -26,6 +29,18 @@ std::string report_text(const ReportOptions& options, const ReportResult& r) {
   s << "report written to " << options.output << " (" << r.files.size() << " files, open index.html); l_Delta = "
     << r.run.l_Delta << ", status " << to_string(r.run.status) << "\n";
   return s.str();
+}
+
+std::vector<std::string> report_failures(const SceneFile& file, const ReportResult& r) {
+  std::vector<std::string> out;
+  for (const auto& [what, run] : {std::pair{"the run", &r.run}, std::pair{"the reduced companion run", &r.reduced}}) {
+    if ((run == &r.reduced && !r.has_reduced) || run->status == IntegrationStatus::success) continue;
+    TextStream s;
+    s << what << " stopped at t = " << run->t_reached << ": " << run_reason(*run, file.scene.parameters)
+      << "; the report shows it up to that time";
+    out.push_back(s.str());
+  }
+  return out;
 }
 
 nlohmann::json panel_report_json(const SceneFile& file, const ReportOptions& options, const PanelReportResult& r) {

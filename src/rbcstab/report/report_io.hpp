@@ -3,6 +3,7 @@
 // paper, a bifurcation plot), shared by the command line and any other front end.
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/report/bifurcation_plot.hpp"
@@ -17,6 +18,9 @@ namespace rbcstab {
 // the run's status.
 nlohmann::json report_json(const SceneFile& file, const ReportOptions& options, const ReportResult& r);
 std::string report_text(const ReportOptions& options, const ReportResult& r);
+// Each of the report's runs (the scene's, its reduced companion) that stopped before T, one line each: why the
+// command exits 1 although the report was written.
+std::vector<std::string> report_failures(const SceneFile& file, const ReportResult& r);
 // A panel's report: output, panel, files, status, failed, facts, compute_seconds, seconds and the truncation.
 nlohmann::json panel_report_json(const SceneFile& file, const ReportOptions& options, const PanelReportResult& r);
 std::string panel_report_text(const ReportOptions& options, const PanelReportResult& r);

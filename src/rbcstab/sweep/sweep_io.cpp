@@ -250,4 +250,21 @@ std::string progress_text(const Progress& p, bool detail) {
   return s.str();
 }
 
+std::vector<std::string> trace_summary_lines(const TraceResult& t, const nlohmann::json& doc, const std::string& prefix) {
+  TextStream s;
+  s << "traced " << t.curves.size() << " curve pieces, " << t.corners.size() << " corners, " << t.evaluations
+    << " criterion evaluations in " << t.seconds << " s; wrote " << prefix << ".csv and " << prefix << ".json";
+  std::vector<std::string> lines{s.str()};
+  for (const std::string& n : t.notes) lines.push_back("note: " + n);
+  if (doc.contains("agreement") && doc["agreement"].contains("predictors"))
+    for (const auto& a : doc["agreement"]["predictors"]) {
+      TextStream l;
+      l << "agreement of " << a["predictor"].get<std::string>() << ": verdict " << a["verdict_fraction"] << ", mode "
+        << a["mode_fraction"] << " over " << a["points"] << " points, disagreements beyond one grid step "
+        << a["beyond_one_grid_step"];
+      lines.push_back(l.str());
+    }
+  return lines;
+}
+
 }  // namespace rbcstab

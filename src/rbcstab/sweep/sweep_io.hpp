@@ -30,6 +30,10 @@ nlohmann::json trace_json(const SceneFile& file, const DiagramSpec& plane, const
 // the document in messages. A document of another plane or not a diagram throws InvalidArgument("diagram", ...).
 nlohmann::json trace_agreement_json(const nlohmann::json& diagram_doc, const std::string& source,
                                     const DiagramSpec& plane, const TraceOptions& options, int threads);
+// What a trace says besides its files, one line each: the counts and seconds and the files written, its notes,
+// and every predictor's agreement when the document holds one.
+std::vector<std::string> trace_summary_lines(const TraceResult& t, const nlohmann::json& trace_doc,
+                                             const std::string& prefix);
 // What a trace wrote, from its document: files PREFIX.csv and PREFIX.json, pieces, corners, counts, agreement.
 nlohmann::json trace_brief_json(const nlohmann::json& trace_doc, const std::string& prefix);
 
