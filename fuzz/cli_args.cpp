@@ -36,7 +36,8 @@ void check_numbers(const CLI::Option& o) {
       expect(ours.has_value(), o.get_name() + " accepted '" + r + "', which is not an integer in full");
       expect(CLI::detail::lexical_cast(r, theirs) && ours == theirs,
              o.get_name() + " stores another value than '" + r + "' means");
-      expect(type == "INT" || ours.value_or(0) >= 0, o.get_name() + " accepted the negative '" + r + "' for an unsigned value");
+      expect(type == "INT" || ours.value_or(0) >= 0,
+             o.get_name() + " accepted the negative '" + r + "' for an unsigned value");
     }
   }
 }

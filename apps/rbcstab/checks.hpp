@@ -2,7 +2,6 @@
 // Range checks for numeric flags whose messages read like the library's ("--step: -1 must be > 0").
 // (CLI11's PositiveNumber prints its bound as the 300-digit DBL_MAX.)
 #include <CLI/CLI.hpp>
-#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
@@ -11,6 +10,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/core/text.hpp"
 #include "rbcstab/io/files.hpp"
+#include "rbcstab/sweep/diagram_file.hpp"
 
 namespace rbcstab::cli {
 
@@ -93,35 +93,12 @@ inline std::vector<double> numbers_of(const std::vector<std::string>& args) {
   return out;
 }
 
-// --counts (diagram, report): a grid's nx and ny as "nx,ny", "NxM" or two values, each an integer in [1, 1000000].
-inline const std::string kCountsForm = "two integers in [1, 1000000]: nx,ny or NxM";
-inline std::vector<std::string> count_items(std::string text) {
-  std::replace(text.begin(), text.end(), 'x', ',');
-  return comma_items(text);
-}
+// --counts (diagram, report): a grid's nx,ny as the library reads them (parse_counts: nx,ny, NxM or two values).
 inline void add_counts(CLI::App& app, std::vector<std::string>& counts, const std::string& help) {
-  app.add_option("--counts", counts, help)
-      ->check(CLI::Validator(
-          [](std::string& text) -> std::string {
-            for (const std::string& item : count_items(text))
-              if (const auto v = read_integer(item); !v || *v < 1 || *v > 1'000'000)
-                return "'" + text + "' must be " + kCountsForm;
-            return {};
-          },
-          "", "LIST"))
-      ->expected(1, 2);
+  app.add_option("--counts", counts, help)->expected(1, 2);
 }
-// The counts the --counts arguments give (none when not given); other than two throws InvalidArgument naming it.
 inline std::vector<long long> counts_of(const std::vector<std::string>& args) {
-  std::vector<long long> out;
-  std::string given;
-  for (const std::string& a : args) {
-    for (const std::string& item : count_items(a)) out.push_back(std::stoll(item));
-    given += (given.empty() ? "" : " ") + a;
-  }
-  if (!args.empty() && out.size() != 2)
-    throw InvalidArgument("counts", "--counts = '" + given + "' must be " + kCountsForm);
-  return out;
+  return args.empty() ? std::vector<long long>{} : parse_counts(args, "--counts");
 }
 
 inline CLI::Validator positive() { return number_above(0, true); }

@@ -2,7 +2,7 @@
 //   work-precision: every level x stepper x rtol against a ~1e-13 reference by another level
 //                   (integrate/work_precision.hpp, io/work_precision_io.hpp)
 //   truncation:     convergence of Delta_l(T), sigma(T) and l_Delta with the truncation L
-//                   (analysis/truncation_study.hpp, analysis/analysis_io.hpp)
+//                   (analysis/truncation_convergence.hpp, analysis/analysis_io.hpp)
 //   threshold:      error of the located critical C at fixed B against cost, per predictor and method
 //                   (sweep/threshold_precision.hpp, sweep/sweep_io.hpp)
 // Each writes OUTPUT/<scene>_<study>.csv and .json (and a PNG drawn from the CSV).
@@ -12,7 +12,6 @@
 #include <sstream>
 
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/analysis/analysis_io.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
@@ -32,7 +31,7 @@ struct BenchOptions {
   std::string output = "out/bench";
   std::vector<std::string> levels{"modal", "full"}, steppers{"rk8pd", "rkck", "rosenbrock", "msbdf"};
   WorkPrecisionOptions work_precision;  // --rtols, --max-seconds
-  TruncationStudyOptions truncation;    // --Ls
+  TruncationConvergenceOptions truncation;    // --Ls
   std::vector<double> ln_C_range{-5.5, 2.0};
   bool json = false;
   bool plot = true;
@@ -46,18 +45,6 @@ std::string write_study(const BenchOptions& o, const SceneFile& sf, const std::s
   const std::string base = o.output + "/" + sf.scene.name + "_" + study;
   write_files_atomic({{base + ".csv", csv, "--output"}, {base + ".json", j.dump(2) + "\n", "--output"}});
   return base;
-}
-
-// PREFIX.png from PREFIX.csv by the study's script, unless --no-plot.
-void plot(const BenchOptions& o, const std::string& script, const std::string& base, const std::string& title,
-          const std::string& figure) {
-  if (!o.plot) return;
-  check_python("/usr/bin/python3");
-  const std::string dir = find_script_dir("");
-  if (dir.empty()) throw std::runtime_error("cannot find the plotting scripts (set RBCSTAB_DATA_DIR)");
-  const std::string log = base + ".plot.log";
-  if (run_process({"/usr/bin/python3", dir + "/" + script, base + ".csv", base + ".png", title}, log) != 0)
-    throw std::runtime_error(figure + " failed: see " + log);
 }
 
 // The JSON, or the text and the files written.
@@ -82,17 +69,18 @@ int run_work_precision(const BenchOptions& o, const SceneFile& sf) {
               << ".csv, .json without rows\n";
     return kRunFailed;
   }
-  plot(o, "work_precision.py", base, "work-precision: " + sf.scene.name, "the work-precision figure");
+  if (o.plot)
+    draw_csv_figure("work_precision.py", base, "work-precision: " + sf.scene.name, "the work-precision figure");
   print(o, j, work_precision_text(t), base);
   return kOk;
 }
 
 int run_truncation(const BenchOptions& o, const SceneFile& sf) {
-  TruncationStudyOptions ts = o.truncation;
+  TruncationConvergenceOptions ts = o.truncation;
   ts.on_progress = o.progress.callback("bench truncation:", "runs");
-  const TruncationStudy t = truncation_study(sf.scene, sf.options, ts);
-  const std::string csv = truncation_study_csv(t);
-  const nlohmann::json j = truncation_study_json(sf, t);
+  const TruncationConvergence t = truncation_convergence(sf.scene, sf.options, ts);
+  const std::string csv = truncation_convergence_csv(t);
+  const nlohmann::json j = truncation_convergence_json(sf, t);
   write_study(o, sf, "truncation", csv, j);
   std::cout << (o.json ? j.dump(2) + "\n" : csv);
   if (t.reference_ok()) return kOk;
@@ -116,7 +104,7 @@ int run_threshold(const BenchOptions& o, const SceneFile& sf) {
   const std::string base = write_study(o, sf, "threshold", threshold_precision_csv(t), j);
   std::ostringstream title;
   title << "critical C at B = " << t.B << ": " << sf.scene.name;
-  plot(o, "threshold_precision.py", base, title.str(), "the figure");
+  if (o.plot) draw_csv_figure("threshold_precision.py", base, title.str(), "the figure");
   // A reference that could not be computed makes every error meaningless: the run failed (exit 1), not the input.
   int rc = kOk;
   for (const auto& r : t.references)

@@ -9,7 +9,6 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
@@ -167,7 +166,10 @@ Runner add_continue(CLI::App& app) {
       ->capture_default_str();
   o->o_step = app.add_option("--step", o->engine.initial_step, "first arclength step, > 0")->check(positive())->capture_default_str();
   o->o_max_step = app.add_option("--max-step", o->engine.max_step, "largest arclength step, > 0")->check(positive())->capture_default_str();
-  o->o_max_points = app.add_option("--max-points", o->engine.max_points, "points per direction, an integer in [2, 100000000]")->check(integer_in(2, 100000000))->capture_default_str();
+  o->o_max_points = app.add_option("--max-points", o->engine.max_points,
+                                   "points per direction, an integer in [2, 100000000]")
+                        ->check(integer_in(2, 100000000))
+                        ->capture_default_str();
   o->o_relax_T = app.add_option("--relax-T", o->relax_T,
                  "relaxation time that gives the start state from the scene's shape, > 0 (orbits: rounded up to a "
                  "multiple of 2 pi)")

@@ -6,12 +6,9 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "plane_options.hpp"
 #include "progress.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
-#include "rbcstab/io/json.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"
 #include "rbcstab/sweep/diagram_output.hpp"
@@ -60,8 +57,7 @@ int run(const DiagramCliOptions& o) {
   if (mpi.size() > 1) r = mpi.gather(r, spec);
   if (mpi.rank() != 0) return r.complete ? kOk : kRunFailed;
   if (!r.complete) {
-    std::cerr << "rbcstab: interrupted after " << r.points.size() << " points (" << r.computed
-              << " computed in this run); finished points are in the journal: rerun the same command to resume\n";
+    std::cerr << "rbcstab: " << diagram_run_text(r, prefix) << "\n";
     return kRunFailed;
   }
   const DiagramOutputOptions oo{!o.no_seconds};
@@ -72,13 +68,9 @@ int run(const DiagramCliOptions& o) {
   ao.finite_horizon = !o.no_finite_horizon_agreement;
   const nlohmann::json doc = diagram_document(sf, spec, r.points, out_shard, oo, ao);
   write_files_atomic({{prefix + ".csv", csv, "--out"}, {prefix + ".json", doc.dump(1) + "\n", "--out"}});
-  const VerdictCounts counts = count_verdicts(r.points);
   if (o.json) std::cout << diagram_brief_json(sf, r, prefix).dump(2) << "\n";
-  if (show)
-    std::cerr << "rbcstab: diagram done: " << r.points.size() << " points (" << r.computed << " computed, " << r.resumed
-              << " resumed) in " << duration_text(r.seconds) << "; " << counts.unstable << " unstable, "
-              << counts.failed << " failed; wrote " << prefix << ".csv and " << prefix << ".json\n";
-  return counts.failed ? kRunFailed : kOk;
+  if (show) std::cerr << "rbcstab: " << diagram_run_text(r, prefix) << "\n";
+  return count_verdicts(r.points).failed ? kRunFailed : kOk;
 }
 
 Runner add_diagram(CLI::App& app) {

@@ -8,7 +8,6 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/continuation/floquet_io.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"

@@ -5,8 +5,6 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
-#include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"

@@ -4,7 +4,6 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "progress.hpp"
 #include "rbcstab/report/paper.hpp"
 #include "rbcstab/report/report.hpp"

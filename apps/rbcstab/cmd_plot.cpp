@@ -4,7 +4,6 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/report/bifurcation_plot.hpp"
 #include "rbcstab/report/report.hpp"
 #include "rbcstab/report/report_io.hpp"

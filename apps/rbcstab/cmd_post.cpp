@@ -5,7 +5,6 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/analysis/analysis_io.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
 #include "rbcstab/report/panels.hpp"

@@ -4,7 +4,6 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/report/report.hpp"
@@ -34,10 +33,6 @@ int run_panel(ReportCliOptions& o, const SceneFile& sf, ReportOptions& ro) {
     o.panel.nx = int(counts[0]);
     o.panel.ny = int(counts[1]);
   }
-  for (const std::string* hook : {&ro.phase_diagram, &ro.delta2_comparison, &ro.bifurcation})
-    if (!hook->empty())
-      throw InvalidArgument("--phase-diagram", "--phase-diagram, --delta2-comparison and --bifurcation draw data from "
-                                               "other commands into a scene report; a panel scene computes its own");
   o.panel.on_progress = o.progress.grid("rbcstab: report: ");
   const StopOnSignal interrupt;
   o.panel.stop = interrupt.flag();
@@ -88,7 +83,9 @@ Runner add_report(CLI::App& app) {
   add_shear_rate_range(app, o->shear_rate_range);
   app.add_option("--python", r.python, "python3 interpreter with matplotlib (Debian python3-matplotlib)")
       ->capture_default_str();
-  app.add_option("--frames", r.frames, "animation frames, integer in [2, 2000]")->check(integer_in(2, 2000))->capture_default_str();
+  app.add_option("--frames", r.frames, "animation frames, integer in [2, 2000]")
+      ->check(integer_in(2, 2000))
+      ->capture_default_str();
   app.add_option("--frame-window", r.frame_window,
                  "animate the last W time units [T - W, T], >= 0; 0 = auto: one period of r(t) at the end if the run "
                  "oscillates (swinging, tumbling), else the whole run")

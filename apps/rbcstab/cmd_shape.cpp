@@ -4,8 +4,6 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
-#include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/report/report.hpp"

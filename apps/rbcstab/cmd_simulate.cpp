@@ -3,7 +3,6 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/simulation_io.hpp"

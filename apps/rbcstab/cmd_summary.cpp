@@ -3,7 +3,6 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/verdict/verdict_io.hpp"
 #include "progress.hpp"
 #include "scene_options.hpp"

@@ -4,7 +4,6 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/verdict/verdict_io.hpp"
 #include "scene_options.hpp"
 

@@ -8,9 +8,7 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "plane_options.hpp"
 #include "progress.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/sweep/diagram_file.hpp"

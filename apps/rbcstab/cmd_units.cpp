@@ -5,7 +5,6 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/io/units_io.hpp"
 #include "scene_options.hpp"

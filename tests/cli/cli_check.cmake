@@ -238,7 +238,9 @@ elseif(CASE STREQUAL "strict_parse_flags")
   # --counts is read one way by diagram and report: nx,ny, NxM or two values, each an integer in [1, 1000000].
   expect_refused_cmd(ARGS diagram --counts 3,a --no-journal NAMES "--counts" "'3,a'" "nx,ny or NxM")
   expect_refused_cmd(ARGS diagram --counts 3 --no-journal NAMES "--counts = '3'" "nx,ny or NxM")
-  expect_refused_cmd(ARGS report --output r --counts 0x2 NAMES "--counts" "'0x2'" "nx,ny or NxM")
+  file(WRITE "${WORK}/../counts_panel.toml" "[diagram]\ncounts = [2, 2]\n")
+  expect_refused_cmd(ARGS report --scene "${WORK}/../counts_panel.toml" --output r --counts 0x2
+                     NAMES "--counts = '0x2'" "nx,ny or NxM")
   expect_refused_cmd(ARGS report --output r --frames 1 NAMES "--frames" "1 is out of range" "[2, 2000]")
   expect_refused_cmd(ARGS trace --x-range 1 NAMES "--x-range" "got 1 value (1)")
   expect_refused_cmd(ARGS shape --at x --output s NAMES "--at" "'x' is not a number")

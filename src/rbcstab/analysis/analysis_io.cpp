@@ -110,21 +110,21 @@ PostRun run_post(SceneFile file) {
   return out;
 }
 
-std::string truncation_study_csv(const TruncationStudy& t) {
+std::string truncation_convergence_csv(const TruncationConvergence& t) {
   std::ostringstream csv;
   csv << std::setprecision(10) << "L,status,l_Delta,sigma_final,error_Delta,error_sigma,rhs_evaluations,seconds\n";
-  for (const TruncationStudyRow& r : t.rows)
+  for (const TruncationConvergenceRow& r : t.rows)
     csv << r.L << ',' << to_string(r.status) << ',' << r.l_Delta << ',' << csv_number(r.sigma_final) << ','
         << csv_number(r.error_Delta) << ',' << csv_number(r.error_sigma) << ',' << r.rhs_evaluations << ','
         << csv_number(r.seconds) << '\n';
   return csv.str();
 }
 
-nlohmann::json truncation_study_json(const SceneFile& file, const TruncationStudy& t) {
+nlohmann::json truncation_convergence_json(const SceneFile& file, const TruncationConvergence& t) {
   const Parameters& p = file.scene.parameters;
-  const TruncationStudyRow& ref = t.reference();
+  const TruncationConvergenceRow& ref = t.reference();
   nlohmann::json rows = nlohmann::json::array();
-  for (const TruncationStudyRow& r : t.rows) {
+  for (const TruncationConvergenceRow& r : t.rows) {
     nlohmann::json row{{"L", r.L}, {"status", to_string(r.status)}, {"reason", r.reason}, {"l_Delta", r.l_Delta},
                        {"rhs_evaluations", r.rhs_evaluations}, {"seconds", r.seconds}};
     const std::string why = row_reason(r.status, r.reason, p);

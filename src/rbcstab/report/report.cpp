@@ -586,4 +586,14 @@ ShapeExportRun export_shapes(const SceneFile& sf, const ShapeExportOptions& opti
   return out;
 }
 
+void draw_csv_figure(const std::string& script, const std::string& prefix, const std::string& title,
+                     const std::string& figure) {
+  check_python("/usr/bin/python3");
+  const std::string dir = find_script_dir("");
+  if (dir.empty()) throw ReportError("cannot find the plotting scripts (set RBCSTAB_DATA_DIR)");
+  const std::string log = prefix + ".plot.log";
+  if (run_process({"/usr/bin/python3", dir + "/" + script, prefix + ".csv", prefix + ".png", title}, log) != 0)
+    throw ReportError(figure + " failed: see " + log);
+}
+
 }  // namespace rbcstab

@@ -115,6 +115,10 @@ int run_process(const std::vector<std::string>& args, const std::string& log_pat
 
 // Throws ReportError with a remedy unless `python` runs and imports matplotlib (Agg backend).
 void check_python(const std::string& python);
+// A benchmark's figure PREFIX.png from PREFIX.csv by `script` (in the folder find_script_dir("") gives, run by
+// /usr/bin/python3, its output in PREFIX.plot.log). Throws ReportError ("<figure> failed: see <log>") when it fails.
+void draw_csv_figure(const std::string& script, const std::string& prefix, const std::string& title,
+                     const std::string& figure);
 
 // Runs the scene and writes the report. Bad input throws InvalidArgument; missing python,
 // failed plotting or unwritable output throw ReportError, leaving no partial folder. A failed

@@ -250,7 +250,8 @@ std::string progress_text(const Progress& p, bool detail) {
   return s.str();
 }
 
-std::vector<std::string> trace_summary_lines(const TraceResult& t, const nlohmann::json& doc, const std::string& prefix) {
+std::vector<std::string> trace_summary_lines(const TraceResult& t, const nlohmann::json& doc,
+                                             const std::string& prefix) {
   TextStream s;
   s << "traced " << t.curves.size() << " curve pieces, " << t.corners.size() << " corners, " << t.evaluations
     << " criterion evaluations in " << t.seconds << " s; wrote " << prefix << ".csv and " << prefix << ".json";
@@ -265,6 +266,20 @@ std::vector<std::string> trace_summary_lines(const TraceResult& t, const nlohman
       lines.push_back(l.str());
     }
   return lines;
+}
+
+std::string diagram_run_text(const DiagramRun& r, const std::string& prefix) {
+  TextStream s;
+  if (!r.complete) {
+    s << "interrupted after " << r.points.size() << " points (" << r.computed
+      << " computed in this run); finished points are in the journal: rerun the same command to resume";
+    return s.str();
+  }
+  const VerdictCounts counts = count_verdicts(r.points);
+  s << "diagram done: " << r.points.size() << " points (" << r.computed << " computed, " << r.resumed << " resumed) in "
+    << duration_text(r.seconds) << "; " << counts.unstable << " unstable, " << counts.failed << " failed; wrote "
+    << prefix << ".csv and " << prefix << ".json";
+  return s.str();
 }
 
 }  // namespace rbcstab

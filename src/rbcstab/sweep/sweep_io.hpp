@@ -51,6 +51,9 @@ nlohmann::json diagram_document(const SceneFile& file, const DiagramSpec& spec, 
                                 const std::optional<AgreementOptions>& agreement = AgreementOptions{});
 // What a diagram run wrote: files PREFIX.csv and PREFIX.json, point counts by verdict, hash, seconds, truncation.
 nlohmann::json diagram_brief_json(const SceneFile& file, const DiagramRun& r, const std::string& prefix);
+// The closing line of a diagram run: what it computed and wrote to PREFIX.csv and PREFIX.json, or when it was
+// stopped how far it got and how to resume.
+std::string diagram_run_text(const DiagramRun& r, const std::string& prefix);
 // What a merge of `inputs` shard files wrote.
 nlohmann::json merge_brief_json(const MergeResult& m, std::size_t inputs, const std::string& prefix);
 

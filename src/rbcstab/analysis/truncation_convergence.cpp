@@ -1,4 +1,4 @@
-#include "rbcstab/analysis/truncation_study.hpp"
+#include "rbcstab/analysis/truncation_convergence.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,13 +8,13 @@
 
 namespace rbcstab {
 
-void TruncationStudyOptions::validate() const {
+void TruncationConvergenceOptions::validate() const {
   if (Ls.empty()) throw InvalidArgument("Ls", "Ls is empty: must list at least one L (the last is the reference)");
   for (int L : Ls) require_L(L, kMinL, kMaxL, {}, "Ls");
 }
 
-TruncationStudy truncation_study(const Scene& scene, const SimulationOptions& options,
-                                 const TruncationStudyOptions& study) {
+TruncationConvergence truncation_convergence(const Scene& scene, const SimulationOptions& options,
+                                             const TruncationConvergenceOptions& study) {
   study.validate();
   std::vector<SimulationResult> runs;
   for (int L : study.Ls) {
@@ -30,7 +30,7 @@ TruncationStudy truncation_study(const Scene& scene, const SimulationOptions& op
   }
   const SimulationResult& ref = runs.back();
   const bool reference_ok = ref.status == IntegrationStatus::success;
-  TruncationStudy out;
+  TruncationConvergence out;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const SimulationResult& r = runs[i];
     // A mode one of the two runs does not hold counts at the other's value (an unsorted list may put a smaller L

@@ -11,13 +11,13 @@
 
 namespace rbcstab {
 
-struct TruncationStudyOptions {
+struct TruncationConvergenceOptions {
   std::vector<int> Ls{4, 6, 8, 10, 12, 16, 20, 24, 30, 40};  // each in [kMinL, kMaxL]; the last is the reference
   ProgressCallback on_progress;                              // runs done of Ls.size()
   void validate() const;                                     // throws InvalidArgument naming the field ("Ls")
 };
 
-struct TruncationStudyRow {
+struct TruncationConvergenceRow {
   int L = 0;
   IntegrationStatus status = IntegrationStatus::success;
   std::string reason;  // the run's message when status is not success
@@ -31,15 +31,15 @@ struct TruncationStudyRow {
   double seconds = 0;
 };
 
-struct TruncationStudy {
-  std::vector<TruncationStudyRow> rows;  // one per L of the options, in their order: the last is the reference
-  const TruncationStudyRow& reference() const { return rows.back(); }
+struct TruncationConvergence {
+  std::vector<TruncationConvergenceRow> rows;  // one per L of the options, in their order: the last is the reference
+  const TruncationConvergenceRow& reference() const { return rows.back(); }
   bool reference_ok() const { return reference().status == IntegrationStatus::success; }
 };
 
 // Every run simulates scene at one L with options' integrator, its tolerances capped at rtol 1e-10 and atol 1e-14,
 // sampled at T only (the final state is compared). A run that stops is a row's status, not an exception.
-TruncationStudy truncation_study(const Scene& scene, const SimulationOptions& options,
-                                 const TruncationStudyOptions& study = {});
+TruncationConvergence truncation_convergence(const Scene& scene, const SimulationOptions& options,
+                                             const TruncationConvergenceOptions& study = {});
 
 }  // namespace rbcstab

@@ -6,7 +6,7 @@
 #include <sstream>
 
 #include "rbcstab/analysis/analysis_io.hpp"
-#include "rbcstab/analysis/truncation_study.hpp"
+#include "rbcstab/analysis/truncation_convergence.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/scene_file.hpp"
@@ -28,24 +28,24 @@ SceneFile short_scene() {
   return sf;
 }
 
-TEST(TruncationStudy, ReproducesTheCommandsTable) {
+TEST(TruncationConvergence, ReproducesTheCommandsTable) {
   // `rbcstab bench truncation --Ls 3,4,5 --T 5 --no-plot` before the study moved into the library.
   const SceneFile sf = short_scene();
-  TruncationStudyOptions o;
+  TruncationConvergenceOptions o;
   o.Ls = {3, 4, 5};
-  const TruncationStudy t = truncation_study(sf.scene, sf.options, o);
-  EXPECT_EQ(without_seconds(truncation_study_csv(t)),
+  const TruncationConvergence t = truncation_convergence(sf.scene, sf.options, o);
+  EXPECT_EQ(without_seconds(truncation_convergence_csv(t)),
             "L,status,l_Delta,sigma_final,error_Delta,error_sigma,rhs_evaluations\n"
             "3,success,3,-30.3243241366255,0.24828679954395186,0.002111612658983439,2119\n"
             "4,success,3,-30.2620210342702,0.0005406250951386637,5.271558039968843e-05,2119\n"
             "5,success,3,-30.26042583835899,0,0,2119\n");
 }
 
-TEST(TruncationStudy, ErrorsAreTheDifferencesOfIndependentRuns) {
+TEST(TruncationConvergence, ErrorsAreTheDifferencesOfIndependentRuns) {
   const SceneFile sf = short_scene();
-  TruncationStudyOptions o;
+  TruncationConvergenceOptions o;
   o.Ls = {3, 6};
-  const TruncationStudy t = truncation_study(sf.scene, sf.options, o);
+  const TruncationConvergence t = truncation_convergence(sf.scene, sf.options, o);
   ASSERT_EQ(t.rows.size(), 2u);
   auto run = [&](int L) {
     Scene s = sf.scene;
@@ -73,25 +73,25 @@ TEST(TruncationStudy, ErrorsAreTheDifferencesOfIndependentRuns) {
   EXPECT_TRUE(t.reference_ok());
 }
 
-TEST(TruncationStudy, AnUnsortedListComparesWithTheLastL) {
+TEST(TruncationConvergence, AnUnsortedListComparesWithTheLastL) {
   // The reference may hold fewer modes than a row: the row's extra modes count at their own area.
   const SceneFile sf = short_scene();
-  TruncationStudyOptions o;
+  TruncationConvergenceOptions o;
   o.Ls = {5, 3};
-  const TruncationStudy t = truncation_study(sf.scene, sf.options, o);
+  const TruncationConvergence t = truncation_convergence(sf.scene, sf.options, o);
   EXPECT_TRUE(std::isfinite(t.rows[0].error_Delta));
   EXPECT_GT(t.rows[0].error_Delta, 0);
   EXPECT_LT(t.rows[0].error_Delta, 1);
   EXPECT_EQ(t.rows[1].error_Delta, 0);
 }
 
-TEST(TruncationStudy, RefusesAnEmptyOrOutOfRangeList) {
+TEST(TruncationConvergence, RefusesAnEmptyOrOutOfRangeList) {
   const SceneFile sf = short_scene();
   for (const std::vector<int>& Ls : {std::vector<int>{}, std::vector<int>{3, 1}, std::vector<int>{101}}) {
-    TruncationStudyOptions o;
+    TruncationConvergenceOptions o;
     o.Ls = Ls;
     try {
-      (void)truncation_study(sf.scene, sf.options, o);
+      (void)truncation_convergence(sf.scene, sf.options, o);
       ADD_FAILURE() << "accepted " << Ls.size() << " values";
     } catch (const InvalidArgument& e) {
       EXPECT_EQ(e.parameter(), "Ls");
@@ -99,18 +99,18 @@ TEST(TruncationStudy, RefusesAnEmptyOrOutOfRangeList) {
   }
 }
 
-TEST(TruncationStudy, AFailedReferenceLeavesEveryErrorExplained) {
+TEST(TruncationConvergence, AFailedReferenceLeavesEveryErrorExplained) {
   SceneFile sf = short_scene();
   sf.scene.parameters.lambda = 1e308;
-  TruncationStudyOptions o;
+  TruncationConvergenceOptions o;
   o.Ls = {3, 4};
-  const TruncationStudy t = truncation_study(sf.scene, sf.options, o);
+  const TruncationConvergence t = truncation_convergence(sf.scene, sf.options, o);
   ASSERT_FALSE(t.reference_ok());
-  for (const TruncationStudyRow& r : t.rows) {
+  for (const TruncationConvergenceRow& r : t.rows) {
     EXPECT_TRUE(std::isnan(r.error_Delta));
     EXPECT_TRUE(std::isnan(r.error_sigma));
   }
-  const nlohmann::json j = truncation_study_json(sf, t);
+  const nlohmann::json j = truncation_convergence_json(sf, t);
   EXPECT_TRUE(unexplained_nulls(j).empty());
   EXPECT_EQ(j["reference_L"], 4);
   EXPECT_NE(j["rows"][0]["error_Delta_reason"].get<std::string>().find("the reference (L = 4)"), std::string::npos);
