@@ -2,8 +2,8 @@
 // add_commands), with CLI11's splitting of comma lists (--x-range, --counts, --axes) and rbcstab's validators
 // (apps/rbcstab/checks.hpp). The input's lines are the arguments after "rbcstab"; nothing is run. A parse
 // error (CLI::ParseError) is a clean refusal. After an accepted parse
-//   - every value of a numeric option (CLI11 type FLOAT, INT, UINT) is a number given in full (parse_number,
-//     parse_integer: no empty text, no trailing text) and CLI11 stores the value that text means;
+//   - every value of a numeric option (CLI11 type FLOAT, INT, UINT) is a number given in full (read_number,
+//     read_integer: no empty text, no trailing text) and CLI11 stores the value that text means;
 //   - no comma-list value had an empty item ("1,,2", "1,2,"): CLI11 drops those, which would accept a list
 //     with a missing number as another list.
 #include <CLI/CLI.hpp>
@@ -25,16 +25,19 @@ void check_numbers(const CLI::Option& o) {
   const std::string type = type_of(o);
   for (const std::string& r : o.results()) {
     if (type == "FLOAT") {
-      double ours = 0, theirs = 0;
-      expect(cli::parse_number(r, ours), o.get_name() + " accepted '" + r + "', which is not a number in full");
-      expect(CLI::detail::lexical_cast(r, theirs) && same(ours, theirs),
+      const std::optional<double> ours = read_number(r);
+      double theirs = 0;
+      expect(ours.has_value(), o.get_name() + " accepted '" + r + "', which is not a number in full");
+      expect(CLI::detail::lexical_cast(r, theirs) && same(ours.value_or(0), theirs),
              o.get_name() + " stores another value than '" + r + "' means");
     } else if (type == "INT" || type == "UINT") {
-      long long ours = 0, theirs = 0;
-      expect(cli::parse_integer(r, ours), o.get_name() + " accepted '" + r + "', which is not an integer in full");
+      const std::optional<long long> ours = read_integer(r);
+      long long theirs = 0;
+      expect(ours.has_value(), o.get_name() + " accepted '" + r + "', which is not an integer in full");
       expect(CLI::detail::lexical_cast(r, theirs) && ours == theirs,
              o.get_name() + " stores another value than '" + r + "' means");
-      expect(type == "INT" || ours >= 0, o.get_name() + " accepted the negative '" + r + "' for an unsigned value");
+      expect(type == "INT" || ours.value_or(0) >= 0,
+             o.get_name() + " accepted the negative '" + r + "' for an unsigned value");
     }
   }
 }

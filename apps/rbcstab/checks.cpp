@@ -1,6 +1,8 @@
 #include "checks.hpp"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -44,17 +46,44 @@ std::string quoted_values(const std::vector<std::string>& values) {
 }
 
 std::string count_text(int n) { return n == 1 ? "one value" : std::to_string(n) + " values"; }
+
+// The text CLI11 converts for a numeric option, made from rbcstab's own reading of the whole text: CLI11 alone
+// reads "" as 0, "010" as octal 8, "0x10" as 16, "-1" for an unsigned option as 2^64 - 1, and a decimal through
+// long double (rounded twice). Integers become plain decimal, other numbers hexadecimal floats (read exactly).
+CLI::Validator whole_number(const std::string& type) {
+  return CLI::Validator(
+      [type](std::string& text) -> std::string {
+        if (type == "FLOAT") {
+          const std::optional<double> v = read_number(text);
+          if (!v) return number_error(text);
+          // Rewritten only when CLI11's reading would differ, so that messages quote the value as given.
+          if (static_cast<double>(std::strtold(text.c_str(), nullptr)) != *v) {
+            char hex[64];
+            std::snprintf(hex, sizeof hex, "%a", *v);
+            text = hex;
+          }
+          return {};
+        }
+        const std::optional<long long> v = read_integer(text);
+        if (!v) return "'" + text + "' is not an integer";
+        if (type == "UINT" && *v < 0) return text + " is out of range: must be an integer >= 0";
+        text = std::to_string(*v);
+        return {};
+      },
+      "", "");
+}
 }  // namespace
 
-void require_whole_numbers(CLI::App& app) {
+void read_numbers_whole(CLI::App& app) {
   for (CLI::Option* o : app.get_options()) {
     const std::string type = base_type(*o);
-    const bool integer = type == "INT" || type == "UINT", number = type == "FLOAT";
-    if (o->get_expected_max() == 0 || !(integer || number)) continue;
-    if (has_check(*o, "NUMBER") || has_check(*o, "INT") || has_check(*o, "RANGE")) continue;
-    o->check(integer ? integer_text(o->get_description()) : number_text(o->get_description()));
+    const bool integer = type == "INT" || type == "UINT";
+    if (!integer && type != "FLOAT") continue;
+    if (o->get_expected_max() != 0 && !has_check(*o, "NUMBER") && !has_check(*o, "INT") && !has_check(*o, "RANGE"))
+      o->check(integer ? integer_text(o->get_description()) : number_text(o->get_description()));
+    o->check(whole_number(type), "whole_number");
+    o->get_validator("whole_number")->non_modifying(false);  // check() adds a validator that cannot rewrite the text
   }
-  for (CLI::App* sub : subcommands(app)) require_whole_numbers(*sub);
 }
 
 std::string parse_error_message(CLI::App& app, const CLI::ParseError& e) {

@@ -4,43 +4,22 @@
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <optional>
-#include <sys/stat.h>
 #include <string>
 #include <vector>
 
+#include "rbcstab/core/error.hpp"
 #include "rbcstab/core/text.hpp"
+#include "rbcstab/io/files.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
 
 namespace rbcstab::cli {
-
-// The whole text converted by `convert` (std::stoll): false for an empty text or trailing
-// characters ("", "0.1abc", "3.5" as an integer).
-template <class T, class Convert>
-bool parse_whole(const std::string& text, T& v, Convert convert) {
-  std::size_t pos = 0;
-  try {
-    v = convert(text, &pos);
-  } catch (const std::exception&) {
-    return false;
-  }
-  return pos != 0 && pos == text.size();
-}
-inline bool parse_number(const std::string& text, double& v) {
-  const std::optional<double> x = read_number(text);
-  if (x) v = *x;
-  return x.has_value();
-}
-inline bool parse_integer(const std::string& text, long long& v) {
-  return parse_whole(text, v, [](const std::string& t, std::size_t* pos) { return std::stoll(t, pos); });
-}
 
 // Any number given in full, so that CLI11's own conversion (which reads "" as 0) never sees bad text;
 // `range` says what the flag accepts (the library checks it after the scene is assembled).
 inline CLI::Validator number_text(const std::string& range) {
   return CLI::Validator(
       [range](std::string& text) -> std::string {
-        double v = 0;
-        if (!parse_number(text, v)) return number_error(text) + " (" + range + ")";
-        return {};
+        return read_number(text) ? "" : number_error(text) + " (" + range + ")";
       },
       "", "NUMBER");
 }
@@ -49,9 +28,7 @@ inline CLI::Validator number_text(const std::string& range) {
 inline CLI::Validator integer_text(const std::string& range) {
   return CLI::Validator(
       [range](std::string& text) -> std::string {
-        long long v = 0;
-        if (!parse_integer(text, v)) return "'" + text + "' is not an integer (" + range + ")";
-        return {};
+        return read_integer(text) ? "" : "'" + text + "' is not an integer (" + range + ")";
       },
       "", "INT");
 }
@@ -61,9 +38,9 @@ inline CLI::Validator integer_in(long long lo, long long hi) {
   const std::string range = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
   return CLI::Validator(
       [lo, hi, range](std::string& text) -> std::string {
-        long long v = 0;
-        if (!parse_integer(text, v)) return "'" + text + "' is not an integer (must be " + range + ")";
-        if (v < lo || v > hi) return text + " is out of range: must be " + range;
+        const std::optional<long long> v = read_integer(text);
+        if (!v) return "'" + text + "' is not an integer (must be " + range + ")";
+        if (*v < lo || *v > hi) return text + " is out of range: must be " + range;
         return {};
       },
       range, "INT");
@@ -74,28 +51,17 @@ inline CLI::Validator number_above(double bound, bool strict) {
   const std::string range = (strict ? "> " : ">= ") + CLI::detail::to_string(bound);
   return CLI::Validator(
       [bound, strict, range](std::string& text) -> std::string {
-        double v = 0;
-        if (!parse_number(text, v)) return number_error(text) + " (must be " + range + ")";
-        if (!std::isfinite(v) || (strict ? !(v > bound) : !(v >= bound)))
+        const std::optional<double> v = read_number(text);
+        if (!v) return number_error(text) + " (must be " + range + ")";
+        if (!std::isfinite(*v) || (strict ? !(*v > bound) : !(*v >= bound)))
           return text + " is out of range: must be finite and " + range;
         return {};
       },
       range, "RANGE");
 }
-// A file name or prefix: an empty one would write hidden files named only by their suffix (".csv").
-// An output prefix (PREFIX.csv, PREFIX.json, ...) that names a device, FIFO or socket is refused: "--out
-// /dev/null" would create /dev/null.csv beside the device, not discard the output.
+// A file name or prefix (io/files.hpp output_prefix_problem).
 inline CLI::Validator output_name() {
-  return CLI::Validator(
-      [](std::string& text) -> std::string {
-        if (text.empty()) return "'' is empty: must be a file name or prefix";
-        struct stat st {};
-        if (::stat(text.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode))
-          return "'" + text + "' is a device, FIFO or socket, and this flag takes a prefix (its files would be '" +
-                 text + ".<suffix>'): give a file name prefix";
-        return {};
-      },
-      "", "PATH");
+  return CLI::Validator([](std::string& text) { return output_prefix_problem(text); }, "", "PATH");
 }
 
 // The items of a comma list as given ("-1,6"; several arguments of one flag read as one list, "1" "2" as "1,2"),
@@ -103,12 +69,7 @@ inline CLI::Validator output_name() {
 inline std::vector<std::string> list_items(const std::vector<std::string>& args) {
   std::vector<std::string> items;
   for (const std::string& a : args)
-    for (std::size_t start = 0;;) {
-      const std::size_t comma = a.find(',', start);
-      items.push_back(a.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
-      if (comma == std::string::npos) break;
-      start = comma + 1;
-    }
+    for (std::string& item : comma_items(a)) items.push_back(std::move(item));
   return items;
 }
 // Each item of a comma-list argument checked by `checks` in turn (number_text, integer_in, ...; the first
@@ -125,24 +86,28 @@ inline CLI::Validator each_item(const std::vector<CLI::Validator>& checks, const
       },
       "", "LIST");
 }
-// The values of comma-list arguments that each_item(number_text(...)) or each_item(integer_in(...)) accepted.
+// The values of comma-list arguments that each_item(number_text(...)) accepted.
 inline std::vector<double> numbers_of(const std::vector<std::string>& args) {
   std::vector<double> out;
   for (const std::string& item : list_items(args)) out.push_back(read_number(item).value());
   return out;
 }
-inline std::vector<long long> integers_of(const std::vector<std::string>& args) {
-  std::vector<long long> out;
-  for (const std::string& item : list_items(args)) out.push_back(std::stoll(item));
-  return out;
+
+// --counts (diagram, report): a grid's nx,ny as the library reads them (parse_counts: nx,ny, NxM or two values).
+inline void add_counts(CLI::App& app, std::vector<std::string>& counts, const std::string& help) {
+  app.add_option("--counts", counts, help)->expected(1, 2);
+}
+inline std::vector<long long> counts_of(const std::vector<std::string>& args) {
+  return args.empty() ? std::vector<long long>{} : parse_counts(args, "--counts");
 }
 
 inline CLI::Validator positive() { return number_above(0, true); }
 inline CLI::Validator non_negative() { return number_above(0, false); }
 
-// Every numeric option of `app` and its subcommands that has no check of its own reads its whole text
-// (number_text or integer_text, the option's description as the range): CLI11 alone reads "" as 0.
-void require_whole_numbers(CLI::App& app);
+// Every numeric option of `app` reads its whole text: a check naming its range first (its own, or number_text or
+// integer_text with the option's description: CLI11 alone reads "" as 0), then the text handed to CLI11 is one it
+// reads as rbcstab does ("010" is 10, not octal 8; a decimal is read once, not through long double).
+void read_numbers_whole(CLI::App& app);
 // The standard message (flag, the values as given, what it accepts: the option's description) for CLI11's
 // conversion failures and wrong value counts (a single-value flag given twice); "" for other parse errors,
 // whose own messages already name the flag and value.

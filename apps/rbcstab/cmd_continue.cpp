@@ -9,7 +9,6 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/continuation/branch_labels.hpp"
@@ -143,9 +142,8 @@ int run(const ContinueOptions& o) {
   if (!curve) TableOptions::from_list(o.measures).validate(measure_names(sr.spec.kind, sr.spec.scene.L));
   return report(o, sr.L_reason, continue_run(sr));
 }
-}  // namespace
 
-static Runner add_continue(CLI::App& app) {
+Runner add_continue(CLI::App& app) {
   auto o = std::make_shared<ContinueOptions>();
   o->scene.add_to(app);
   o->o_kind = app.add_option("--kind", o->kind,
@@ -175,7 +173,10 @@ static Runner add_continue(CLI::App& app) {
       ->capture_default_str();
   o->o_step = app.add_option("--step", o->engine.initial_step, "first arclength step, > 0")->check(positive())->capture_default_str();
   o->o_max_step = app.add_option("--max-step", o->engine.max_step, "largest arclength step, > 0")->check(positive())->capture_default_str();
-  o->o_max_points = app.add_option("--max-points", o->engine.max_points, "points per direction, an integer in [2, 100000000]")->check(integer_text("an integer in [2, 100000000]"))->check(CLI::Range(2, 100000000))->capture_default_str();
+  o->o_max_points = app.add_option("--max-points", o->engine.max_points,
+                                   "points per direction, an integer in [2, 100000000]")
+                        ->check(integer_in(2, 100000000))
+                        ->capture_default_str();
   o->o_relax_T = app.add_option("--relax-T", o->relax_T,
                  "relaxation time that gives the start state from the scene's shape, > 0 (orbits: rounded up to a "
                  "multiple of 2 pi)")
@@ -195,7 +196,7 @@ static Runner add_continue(CLI::App& app) {
   app.add_option("--max2", o->p2_max, "--curve: upper bound of --parameter2 (the curve ends there exactly; default: none)")
       ->check(number_text("within --parameter2's domain"));
   app.add_option("--point", o->point, "--curve: start from the K-th located special point of that type, an integer in [1, 1000000]")
-      ->check(integer_text("an integer in [1, 1000000]"))->check(CLI::Range(1, 1000000))
+      ->check(integer_in(1, 1000000))
       ->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object (branch, special_points) on stdout");
   app.add_option("--csv", o->csv, "write the branch as CSV to this file");
@@ -204,7 +205,7 @@ static Runner add_continue(CLI::App& app) {
   o->o_label_every = app.add_option("--label-every", o->label_every,
                                     "label every N-th point of a branch (AUTO's NPR), an integer in [0, 100000000]; special points "
                                     "and the two ends are always labelled")
-                         ->check(integer_text("an integer in [0, 100000000]"))->check(CLI::Range(0, 100000000))
+                         ->check(integer_in(0, 100000000))
                          ->capture_default_str();
   app.add_option("--measures", o->measures,
                  "text output: the measures of the labelled-point table, comma-separated (e.g. r,Psi,sigma); "
@@ -213,16 +214,15 @@ static Runner add_continue(CLI::App& app) {
                  "continue from a labelled point of this branch file (--save): with --label N in --parameter (default: "
                  "the file's) or, with --curve, that point's curve; or --switch-at N. Scene and kind are the file's");
   o->o_label = app.add_option("--label", o->label, "--restart: the label to start from, an integer in [1, 1000000000]")
-                   ->check(integer_text("an integer in [1, 1000000000]"))->check(CLI::Range(1, 1000000000));
+                   ->check(integer_in(1, 1000000000));
   o->o_switch_at = app.add_option("--switch-at", o->switch_at,
                                   "--restart: switch onto the other branch at the BP with this label (equilibrium, "
                                   "modal, full, modal-orbit), an integer in [1, 1000000000]")
-                       ->check(integer_text("an integer in [1, 1000000000]"))->check(CLI::Range(1, 1000000000));
+                       ->check(integer_in(1, 1000000000));
   o->progress.add_flags(app);
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterContinue{"continue", "Continue an equilibrium or periodic-orbit branch in one parameter (LP/BP/HB, LPC/PD/NS), or a special point's curve in two",
                                 add_continue, 40, {{"initial_step", "--step"}, {"p_min", "--min"}, {"p_max", "--max"}}};
 }  // namespace

@@ -1,22 +1,14 @@
 // rbcstab diagram: a phase diagram by direct simulation over two parameter axes (paper Fig. 4,
 // Fig. 5, Appendix E) with threads, shards, MPI ranks and a resumable journal; writes
 // PREFIX.csv and PREFIX.json atomically, progress with rate and ETA on stderr.
-#include <atomic>
-#include <csignal>
-#include <cstdio>
-#include <iomanip>
 #include <iostream>
 #include <memory>
-#include <sstream>
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "plane_options.hpp"
 #include "progress.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
-#include "rbcstab/io/json.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/diagram_document.hpp"
@@ -27,26 +19,20 @@
 namespace rbcstab::cli {
 
 namespace {
-std::atomic<bool> g_diagram_stop{false};
-extern "C" void on_signal(int) { g_diagram_stop.store(true); }
-
 struct DiagramCliOptions {
   SceneOptions scene;
-  std::vector<std::string> axes, x_range, y_range, counts;  // comma lists (checks.hpp list_items)
-  std::string classifier, out = "diagram", journal, shard = "0/1", schedule = "dynamic";
+  PlaneFlags plane;
+  std::string out = "diagram", journal, shard = "0/1", schedule = "dynamic";
   int threads = 0;
   bool no_seconds = false, quiet = false, no_journal = false, json = false;
   bool no_finite_horizon_agreement = false;
   double sync_interval = 1.0;
-  double alpha_fixed = -1;
   ProgressOutput progress;
 };
 
 int run(const DiagramCliOptions& o) {
   const SceneFile sf = o.scene.resolve(TruncationUse::grid);
-  PlaneChoice plane{list_items(o.axes), numbers_of(o.x_range), numbers_of(o.y_range), integers_of(o.counts), o.classifier, {}};
-  if (o.alpha_fixed >= 0) plane.alpha_fixed = o.alpha_fixed;
-  const DiagramSpec spec = plane_spec(sf, plane);
+  const DiagramSpec spec = plane_spec(sf, o.plane.choice());
 
   MpiSession mpi;  // a no-op unless started by mpirun (and built with MPI)
   DiagramOptions ro;
@@ -58,71 +44,39 @@ int run(const DiagramCliOptions& o) {
     ro.shard = Shard{mpi.rank(), mpi.size()};
   }
   ro.sync_interval = o.sync_interval;
-  ro.stop = &g_diagram_stop;
   const std::string suffix = ro.shard.n > 1 ? ".shard" + std::to_string(ro.shard.k) + "of" + std::to_string(ro.shard.n) : "";
   const std::string prefix = mpi.size() > 1 ? o.out : o.out + suffix;
   if (!o.no_journal) ro.journal = (o.journal.empty() ? o.out : o.journal) + suffix + ".journal";
   const bool show = !o.quiet && mpi.rank() == 0;
-  if (show && o.progress.enabled())
-    ro.on_progress = [&](const Progress& p) {
-      std::cerr << "rbcstab: diagram " << p.done << "/" << p.total;
-      if (p.resumed) std::cerr << " (" << p.resumed << " resumed)";
-      std::cerr << ", " << std::fixed << std::setprecision(1) << p.rate << " points/s, elapsed " << duration(p.elapsed)
-                << ", ETA " << (p.rate > 0 ? duration(p.eta) : std::string("?")) << "\n";
-      std::cerr.unsetf(std::ios::floatfield);
-    };
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
+  if (show) ro.on_progress = o.progress.grid("rbcstab: ", true);
+  const StopOnSignal interrupt;
+  ro.stop = interrupt.flag();
 
   DiagramRun r = run_diagram(sf.scene, sf.options, spec, ro);
   for (const std::string& why : r.rejected) std::cerr << "rbcstab: warning: " << why << "\n";
   if (mpi.size() > 1) r = mpi.gather(r, spec);
   if (mpi.rank() != 0) return r.complete ? kOk : kRunFailed;
   if (!r.complete) {
-    std::cerr << "rbcstab: interrupted after " << r.points.size() << " points (" << r.computed
-              << " computed in this run); finished points are in the journal: rerun the same command to resume\n";
+    std::cerr << "rbcstab: " << diagram_run_text(r, prefix) << "\n";
     return kRunFailed;
   }
   const DiagramOutputOptions oo{!o.no_seconds};
   const Shard out_shard = mpi.size() > 1 ? Shard{} : ro.shard;
-  try {
-    const std::string csv = diagram_csv(spec, r.points, oo);
-    AgreementOptions ao;
-    ao.threads = o.threads;
-    ao.finite_horizon = !o.no_finite_horizon_agreement;
-    const nlohmann::json doc = diagram_document(sf, spec, r.points, out_shard, oo, ao);
-    write_files_atomic({{prefix + ".csv", csv, "--out"}, {prefix + ".json", doc.dump(1) + "\n", "--out"}});
-  } catch (const std::runtime_error& e) {
-    std::cerr << "rbcstab: error: " << e.what() << "\n";
-    return kOutputError;
-  }
-  const VerdictCounts counts = count_verdicts(r.points);
+  const std::string csv = diagram_csv(spec, r.points, oo);
+  AgreementOptions ao;
+  ao.threads = o.threads;
+  ao.finite_horizon = !o.no_finite_horizon_agreement;
+  const nlohmann::json doc = diagram_document(sf, spec, r.points, out_shard, oo, ao);
+  write_files_atomic({{prefix + ".csv", csv, "--out"}, {prefix + ".json", doc.dump(1) + "\n", "--out"}});
   if (o.json) std::cout << diagram_brief_json(sf, r, prefix).dump(2) << "\n";
-  if (show)
-    std::cerr << "rbcstab: diagram done: " << r.points.size() << " points (" << r.computed << " computed, " << r.resumed
-              << " resumed) in " << duration(r.seconds) << "; " << counts.unstable << " unstable, " << counts.failed
-              << " failed; wrote " << prefix << ".csv and " << prefix << ".json\n";
-  return counts.failed ? kRunFailed : kOk;
+  if (show) std::cerr << "rbcstab: " << diagram_run_text(r, prefix) << "\n";
+  return count_verdicts(r.points).failed ? kRunFailed : kOk;
 }
-}  // namespace
 
-static Runner add_diagram(CLI::App& app) {
+Runner add_diagram(CLI::App& app) {
   auto o = std::make_shared<DiagramCliOptions>();
   o->scene.add_to(app);
-  app.add_option("--axes", o->axes, axes_help("two axes"))->check(each_item({}, "two axis names x,y"));
-  app.add_option("--x-range", o->x_range, "min,max of the x axis (inclusive, finite; default: the scene's [diagram] or -1,6)")
-      ->check(each_item({number_text("min,max of the x axis, finite")}, "two numbers min,max"))
-      ->allow_extra_args(false);
-  app.add_option("--y-range", o->y_range, "min,max of the y axis (inclusive, finite; default: the scene's [diagram] or -5.5,2)")
-      ->check(each_item({number_text("min,max of the y axis, finite")}, "two numbers min,max"))
-      ->allow_extra_args(false);
-  app.add_option("--counts", o->counts, "grid values nx,ny, integers in [1, 1000000] (default: the scene's [diagram] or 64,64)")
-      ->check(each_item({integer_text("integers in [1, 1000000]"), CLI::Range(1, 1000000)}, "two integers nx,ny"));
-  app.add_option("--classifier", o->classifier,
-                 "l_Delta rule: auto (tail mean if oscillating), final (Fig. 4), tail (App. E) (default: the scene's [diagram] or auto)")
-      ->check(CLI::IsMember(enum_names<Classifier>()));
-  app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C at this value over the plane, >= 0 (0: off; Fig. 5; default: the scene's [diagram] or off)")
-      ->check(non_negative());
+  o->plane.add_to(app, true);
   app.add_option("--threads", o->threads, "worker threads, integer in [0, 4096] (0: all cores)")
       ->check(integer_in(0, 4096))
       ->capture_default_str();
@@ -147,7 +101,6 @@ static Runner add_diagram(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterDiagram{"diagram", "Phase diagram by direct simulation over two parameter axes", add_diagram, 40};
 }  // namespace
 

@@ -8,7 +8,6 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/continuation/floquet_io.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"
@@ -42,9 +41,8 @@ int run(const FloquetOptions& o) {
   }
   return kOk;
 }
-}  // namespace
 
-static Runner add_floquet(CLI::App& app) {
+Runner add_floquet(CLI::App& app) {
   auto o = std::make_shared<FloquetOptions>();
   o->scene.add_to(app);
   app.add_option("--relax-periods", o->floquet.relax_periods,
@@ -60,7 +58,6 @@ static Runner add_floquet(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterFloquet{"floquet", "Leading Floquet multipliers of the full model along a scene's orbit",
                                 add_floquet, 33};
 }  // namespace

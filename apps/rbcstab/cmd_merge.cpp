@@ -5,8 +5,6 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
-#include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
@@ -31,26 +29,21 @@ int run(const MergeOptions& o) {
     if (!o.allow_incomplete) return kRunFailed;
   }
   const DiagramOutputOptions oo{m.seconds_present};
-  try {
-    const std::string csv = diagram_csv(m.spec, m.points, oo);
-    nlohmann::json doc = diagram_json(m.header, m.spec, m.points, {}, oo);
-    if (m.missing.empty()) {
-      const AgreementOptions defaults;  // named: GCC 12 warns (maybe-uninitialized) on the temporary default argument
-      doc["agreement"] = agreement_json(parse_scene(m.header.at("scene_toml").get<std::string>()).scene, m.spec, m.points, defaults);
-    }
-    write_files_atomic({{o.out + ".csv", csv, "--out"}, {o.out + ".json", doc.dump(1) + "\n", "--out"}});
-  } catch (const std::runtime_error& e) {
-    std::cerr << "rbcstab: error: " << e.what() << "\n";
-    return kOutputError;
+  const std::string csv = diagram_csv(m.spec, m.points, oo);
+  nlohmann::json doc = diagram_json(m.header, m.spec, m.points, {}, oo);
+  if (m.missing.empty()) {
+    const AgreementOptions defaults;  // named: GCC 12 warns (maybe-uninitialized) on the temporary default argument
+    const Scene scene = parse_scene(m.header.at("scene_toml").get<std::string>()).scene;
+    doc["agreement"] = agreement_json(scene, m.spec, m.points, defaults);
   }
+  write_files_atomic({{o.out + ".csv", csv, "--out"}, {o.out + ".json", doc.dump(1) + "\n", "--out"}});
   std::cerr << "rbcstab: merged " << inputs.size() << " files, " << m.points.size() << " points into " << o.out
             << ".csv and " << o.out << ".json\n";
   if (o.json) std::cout << merge_brief_json(m, inputs.size(), o.out).dump(2) << "\n";
   return m.missing.empty() ? kOk : kRunFailed;
 }
-}  // namespace
 
-static Runner add_merge(CLI::App& app) {
+Runner add_merge(CLI::App& app) {
   auto o = std::make_shared<MergeOptions>();
   app.add_option("inputs", o->inputs, "diagram JSON files of the shards (PREFIX.shardKofN.json)")
       ->required()
@@ -61,7 +54,6 @@ static Runner add_merge(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterMerge{"merge", "Merge the shard outputs of one diagram", add_merge, 41};
 }  // namespace
 

@@ -1,17 +1,13 @@
 // rbcstab paper: every figure of the paper, composed as the paper composes it, with its claims checked.
-#include <atomic>
-#include <csignal>
-#include <iomanip>
 #include <iostream>
 #include <memory>
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "executable_path.hpp"
-#include "exit_codes.hpp"
 #include "progress.hpp"
 #include "rbcstab/report/paper.hpp"
 #include "rbcstab/report/report.hpp"
+#include "rbcstab/report/report_io.hpp"
 
 namespace rbcstab::cli {
 
@@ -23,63 +19,32 @@ struct PaperCliOptions {
   ProgressOutput progress;
 };
 
-std::atomic<bool> g_paper_stop{false};
-extern "C" void on_paper_signal(int) { g_paper_stop.store(true); }
-
 int run(PaperCliOptions& o) {
   PaperOptions p = o.paper;
   if (p.script_dir.empty()) p.script_dir = find_script_dir(executable_path());
   if (p.scene_dir.empty()) p.scene_dir = find_scene_dir(executable_path());
-  if (o.progress.enabled()) {
+  if (o.progress.enabled())
     p.on_step = [](const std::string& step, int k, int n) {
       std::cerr << "rbcstab: paper: " << (k > 0 ? "[" + std::to_string(k) + "/" + std::to_string(n) + "] " : "  ")
                 << step << "\n";
     };
-    p.on_progress = [](const Progress& pr) {
-      std::cerr << "rbcstab: paper:   diagram " << pr.done << "/" << pr.total << ", " << std::fixed
-                << std::setprecision(1) << pr.rate << " points/s, ETA " << (pr.rate > 0 ? duration(pr.eta) : "?") << "\n";
-      std::cerr.unsetf(std::ios::floatfield);
-    };
-  }
-  p.stop = &g_paper_stop;
-  std::signal(SIGINT, on_paper_signal);
-  std::signal(SIGTERM, on_paper_signal);
+  p.on_progress = o.progress.grid("rbcstab: paper:   ");
+  const StopOnSignal interrupt;
+  p.stop = interrupt.flag();
   const PaperResult r = build_paper(p);
   if (!r.complete) {
     std::cerr << "rbcstab: interrupted: the paper was not finished and nothing was written\n";
     return kRunFailed;
   }
-  if (o.json) {
-    nlohmann::json j;
-    j["output"] = p.output;
-    j["figures"] = r.figures.size();
-    j["claims"] = r.claims.size();
-    j["passed"] = r.passed;
-    j["failed"] = r.failed;
-    j["failed_runs"] = r.failed_runs;
-    j["seconds"] = r.seconds;
-    nlohmann::json failed = nlohmann::json::array();
-    for (const auto& c : r.claims)
-      if (!c.passed) failed.push_back({{"figure", c.figure}, {"claim", c.claim}, {"measured", c.measured}, {"expected", c.expected}});
-    j["failed_claims"] = failed;
-    std::cout << j.dump(2) << "\n";
-  } else {
-    std::cout << "paper written to " << p.output << " (" << r.figures.size() << " figures, open index.html) in "
-              << duration(r.seconds) << "; claims: " << r.passed << " passed, " << r.failed << " failed\n";
-    for (const auto& c : r.claims)
-      if (!c.passed)
-        std::cout << "  FAILED " << c.figure << ": " << c.claim << "\n    measured " << c.measured << "; expected "
-                  << c.expected << "\n";
-  }
+  std::cout << (o.json ? paper_json(p, r).dump(2) + "\n" : paper_text(p, r));
   if (r.failed_runs) {
     std::cerr << "rbcstab: " << r.failed_runs << " run(s) did not reach T; the page shows them\n";
     return kRunFailed;
   }
   return kOk;
 }
-}  // namespace
 
-static Runner add_paper(CLI::App& app) {
+Runner add_paper(CLI::App& app) {
   auto o = std::make_shared<PaperCliOptions>();
   PaperOptions& p = o->paper;
   app.add_option("--output,-o", p.output, "folder to create (index.html, the figures, their data); its parent must exist")
@@ -87,8 +52,7 @@ static Runner add_paper(CLI::App& app) {
   app.add_flag("--overwrite", p.overwrite, "replace an existing output folder (swapped in whole at the end)");
   app.add_flag("--quick", p.quick, "coarse grids: 12 x 12 phase diagrams and a 3 x 2 Fig. 6e grid per lambda");
   app.add_option("--threads", p.threads, "worker threads for the runs and diagram points, integer in [0, 4096] (0: all cores)")
-      ->check(integer_text("an integer in [0, 4096]"))
-      ->check(CLI::Range(0, 4096))
+      ->check(integer_in(0, 4096))
       ->capture_default_str();
   app.add_option("--python", p.python, "python3 interpreter with matplotlib (Debian python3-matplotlib)")
       ->capture_default_str();
@@ -105,7 +69,6 @@ static Runner add_paper(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterPaper{"paper", "Compute and draw every figure of the paper with its claims checked (one HTML page)",
                                 add_paper, 61};
 }  // namespace

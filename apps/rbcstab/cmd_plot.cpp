@@ -4,10 +4,9 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "executable_path.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/report/bifurcation_plot.hpp"
 #include "rbcstab/report/report.hpp"
+#include "rbcstab/report/report_io.hpp"
 
 namespace rbcstab::cli {
 
@@ -28,28 +27,11 @@ int run(const PlotCliOptions& o) {
   if (draw.script_dir.empty()) draw.script_dir = find_script_dir(executable_path());
   const PlotFiles files = draw_plot(spec, draw);
   for (const std::string& note : spec.notes) std::cerr << "rbcstab: warning: " << note << "\n";
-  std::size_t marked = 0;
-  for (const PlotPoint& p : spec.points) marked += !p.text.empty();
-  if (o.json) {
-    nlohmann::json series = nlohmann::json::array();
-    for (const PlotSeries& s : spec.series) series.push_back({{"name", s.name}, {"kind", s.kind}, {"role", s.role}});
-    const nlohmann::json j{{"png", files.png},   {"json", files.json},     {"x", spec.x.name},
-                           {"y", spec.y.name},   {"series", series},       {"points", spec.points.size()},
-                           {"measures", spec.measures}, {"notes", spec.notes}};
-    std::cout << j.dump(2) << "\n";
-  } else {
-    std::cout << "plot written to " << files.png << " (what was drawn: " << files.json << "): " << spec.y.name
-              << " against " << spec.x.name << ", " << spec.series.size() << " series, " << spec.points.size()
-              << " marked points (" << marked << " texts)\n";
-    std::cout << "--x/--y accept:";
-    for (const auto& m : spec.measures) std::cout << ' ' << m;
-    std::cout << "\n";
-  }
+  std::cout << (o.json ? plot_json(spec, files).dump(2) + "\n" : plot_text(spec, files));
   return kOk;
 }
-}  // namespace
 
-static Runner add_plot(CLI::App& app) {
+Runner add_plot(CLI::App& app) {
   auto o = std::make_shared<PlotCliOptions>();
   app.add_option("files", o->files,
                  "branch JSONs (`rbcstab continue --json > F.json` or a --save branch file), drawn overlaid; "
@@ -80,7 +62,6 @@ static Runner add_plot(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterPlot{"plot", "Draw a bifurcation diagram (PNG + JSON of what was drawn) from branch JSONs of `continue`",
                                 add_plot, 45};
 }  // namespace

@@ -5,7 +5,6 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/analysis/analysis_io.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
 #include "rbcstab/report/panels.hpp"
@@ -52,9 +51,8 @@ int run(const PostOptions& o) {
     std::cout << post_text(p.file, p.post, p.run);
   return p.run.status == IntegrationStatus::success ? kOk : kRunFailed;
 }
-}  // namespace
 
-static Runner add_post(CLI::App& app) {
+Runner add_post(CLI::App& app) {
   auto o = std::make_shared<PostOptions>();
   o->scene.add_to(app);
   app.add_flag("--json", o->json, "print one JSON object on stdout");
@@ -70,7 +68,6 @@ static Runner add_post(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterPost{"post", "Post-instability excess area Delta~2: predicted (Eq. ss) vs simulated", add_post, 31};
 }  // namespace
 

@@ -1,19 +1,13 @@
 // rbcstab report: run a scene and write a self-contained report folder (figures, data, shapes).
-#include <atomic>
-#include <csignal>
-#include <iomanip>
 #include <iostream>
 #include <memory>
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "executable_path.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
-#include "rbcstab/io/json.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/report/report.hpp"
-#include "rbcstab/verdict/verdict_io.hpp"
+#include "rbcstab/report/report_io.hpp"
 #include "progress.hpp"
 #include "scene_options.hpp"
 
@@ -27,71 +21,27 @@ struct ReportCliOptions {
   bool no_reduced = false;
   bool json = false;
   PanelOptions panel;
-  std::string counts;  // "nx,ny" or "NxM"
+  std::vector<std::string> counts;  // checks.hpp counts_of
   std::string shear_rate_range;  // LO,HI (1/s): the threshold search of a physical scene
   bool quiet = false;
   ProgressOutput progress;
 };
 
-std::atomic<bool> g_report_stop{false};
-extern "C" void on_report_signal(int) { g_report_stop.store(true); }
-
 // A scene file with a [diagram], [fig6e] or [continuation] table: compute the panel, then draw it.
 int run_panel(ReportCliOptions& o, const SceneFile& sf, ReportOptions& ro) {
-  if (!o.counts.empty()) {
-    const std::size_t sep = o.counts.find_first_of(",x");
-    auto integer = [&](const std::string& t) {
-      std::size_t pos = 0;
-      int v = 0;
-      try {
-        v = std::stoi(t, &pos);
-      } catch (const std::exception&) {
-        pos = 0;
-      }
-      if (pos == 0 || pos != t.size() || v < 1 || v > 1'000'000)
-        throw InvalidArgument("--counts", "--counts = '" + o.counts + "' must be two integers in [1, 1000000]: nx,ny or NxM");
-      return v;
-    };
-    if (sep == std::string::npos) integer("");
-    o.panel.nx = integer(o.counts.substr(0, sep));
-    o.panel.ny = integer(o.counts.substr(sep + 1));
+  if (const std::vector<long long> counts = counts_of(o.counts); !counts.empty()) {
+    o.panel.nx = int(counts[0]);
+    o.panel.ny = int(counts[1]);
   }
-  for (const std::string* hook : {&ro.phase_diagram, &ro.delta2_comparison, &ro.bifurcation})
-    if (!hook->empty())
-      throw InvalidArgument("--phase-diagram", "--phase-diagram, --delta2-comparison and --bifurcation draw data from "
-                                               "other commands into a scene report; a panel scene computes its own");
-  if (o.progress.enabled())
-    o.panel.on_progress = [](const Progress& p) {
-      std::cerr << "rbcstab: report: diagram " << p.done << "/" << p.total << ", " << std::fixed << std::setprecision(1)
-                << p.rate << " points/s, ETA " << (p.rate > 0 ? duration(p.eta) : std::string("?")) << "\n";
-      std::cerr.unsetf(std::ios::floatfield);
-    };
-  o.panel.stop = &g_report_stop;
-  std::signal(SIGINT, on_report_signal);
-  std::signal(SIGTERM, on_report_signal);
+  o.panel.on_progress = o.progress.grid("rbcstab: report: ");
+  const StopOnSignal interrupt;
+  o.panel.stop = interrupt.flag();
   const PanelReportResult r = build_panel_report(sf, o.panel, ro);
   if (!r.complete) {
     std::cerr << "rbcstab: interrupted: the panel was not finished and no report was written\n";
     return kRunFailed;
   }
-  if (o.json) {
-    nlohmann::json j;
-    j["output"] = ro.output;
-    j["panel"] = to_string(r.kind);
-    j["files"] = r.report.files;
-    j["status"] = r.status;
-    j["failed"] = r.failed;
-    nlohmann::json facts = nlohmann::json::object();
-    for (const auto& [k, v] : r.facts) facts[k] = v;
-    j["facts"] = facts;
-    j["compute_seconds"] = r.compute_seconds;
-    j["seconds"] = r.report.seconds + r.compute_seconds;
-    put_truncation(j, sf);
-    std::cout << j.dump(2) << "\n";
-  } else {
-    std::cout << "report written to " << ro.output << " (" << to_string(r.kind) << " panel, " << r.report.files.size()
-              << " files, open index.html); status " << r.status << "\n";
-  }
+  std::cout << (o.json ? panel_report_json(sf, ro, r).dump(2) + "\n" : panel_report_text(ro, r));
   if (r.failed) {
     std::cerr << "rbcstab: " << r.failed << " run(s) of the panel did not finish (status " << r.status
               << "); the report shows them as failed\n";
@@ -114,38 +64,16 @@ int run(ReportCliOptions& o) {
   if (o.progress.enabled()) ro.on_step = [&o](const std::string& step) { o.progress.step("report: " + step); };
   if (!o.counts.empty() || o.panel.threads != 0)
     throw InvalidArgument("--counts", "--counts and --threads apply to a scene with a [diagram] table only");
-  ro.shear_rate_search = shear_rate_search(sf.scene, o.shear_rate_range);
+  ro.shear_rate_search = shear_rate_search(sf.scene, o.shear_rate_range, "--shear-rate-range");
   const ReportResult r = build_report(sf, ro);
   for (const auto& w : r.warnings) std::cerr << "rbcstab: warning: " << w << "\n";
-  if (o.json) {
-    nlohmann::json j;
-    j["output"] = ro.output;
-    j["files"] = r.files;
-    j["summary"] = to_json(r.run, sf.scene.parameters);
-    if (r.has_reduced) j["reduced_summary"] = to_json(r.reduced, sf.scene.parameters);
-    j["shape"] = {{"rho_min", r.shape.rho_min}, {"rho_max", r.shape.rho_max}};
-    j["seconds"] = r.seconds;
-    put_truncation(j, sf);
-    put_physical(j, sf.scene);
-    if (sf.scene.physical) j["shear_rate_thresholds"] = to_json(r.shear_rate_thresholds);
-    std::cout << j.dump(2) << "\n";
-  } else {
-    std::cout << "report written to " << ro.output << " (" << r.files.size() << " files, open index.html); l_Delta = "
-              << r.run.l_Delta << ", status " << to_string(r.run.status) << "\n";
-  }
-  int rc = kOk;
-  for (const auto& [what, run] : {std::pair{"the run", &r.run}, std::pair{"the reduced companion run", &r.reduced}}) {
-    if (run == &r.reduced && !r.has_reduced) continue;
-    if (run->status == IntegrationStatus::success) continue;
-    std::cerr << "rbcstab: " << what << " stopped at t = " << run->t_reached << ": "
-              << run_reason(*run, sf.scene.parameters) << "; the report shows it up to that time\n";
-    rc = kRunFailed;
-  }
-  return rc;
+  std::cout << (o.json ? report_json(sf, ro, r).dump(2) + "\n" : report_text(ro, r));
+  const std::vector<std::string> failures = report_failures(sf, r);
+  for (const std::string& f : failures) std::cerr << "rbcstab: " << f << "\n";
+  return failures.empty() ? kOk : kRunFailed;
 }
-}  // namespace
 
-static Runner add_report(CLI::App& app) {
+Runner add_report(CLI::App& app) {
   auto o = std::make_shared<ReportCliOptions>();
   o->scene.add_to(app);
   ReportOptions& r = o->report;
@@ -155,7 +83,9 @@ static Runner add_report(CLI::App& app) {
   add_shear_rate_range(app, o->shear_rate_range);
   app.add_option("--python", r.python, "python3 interpreter with matplotlib (Debian python3-matplotlib)")
       ->capture_default_str();
-  app.add_option("--frames", r.frames, "animation frames, integer in [2, 2000]")->check(integer_text("an integer in [2, 2000]"))->check(CLI::Range(2, 2000))->capture_default_str();
+  app.add_option("--frames", r.frames, "animation frames, integer in [2, 2000]")
+      ->check(integer_in(2, 2000))
+      ->capture_default_str();
   app.add_option("--frame-window", r.frame_window,
                  "animate the last W time units [T - W, T], >= 0; 0 = auto: one period of r(t) at the end if the run "
                  "oscillates (swinging, tumbling), else the whole run")
@@ -163,7 +93,7 @@ static Runner add_report(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--shape-resolution", o->n_theta,
                  "polar grid points n_theta of the exported and rendered shape (n_phi = 2 n_theta), in [2, 4096]")
-      ->check(integer_text("an integer in [2, 4096]"))->check(CLI::Range(2, 4096))
+      ->check(integer_in(2, 4096))
       ->capture_default_str();
   app.add_flag("--no-reduced", o->no_reduced, "skip the reduced-system companion run (Fig. 2 r, Psi from the l = 2 block only)");
   app.add_option("--phase-diagram", r.phase_diagram,
@@ -182,15 +112,15 @@ static Runner add_report(CLI::App& app) {
                  "folder holding rbcstab_report.py (default: $RBCSTAB_DATA_DIR, <prefix>/share/rbcstab/python)");
   app.add_option("--threads", o->panel.threads,
                  "[diagram] scenes: worker threads for the grid, integer in [0, 4096] (0: all cores)")
-      ->check(integer_text("an integer in [0, 4096]"))->check(CLI::Range(0, 4096))
+      ->check(integer_in(0, 4096))
       ->capture_default_str();
-  app.add_option("--counts", o->counts,
-                 "[diagram] scenes: override the grid's nx,ny (or NxM), integers in [1, 1000000], for a quick look "
-                 "(default: the scene's counts)");
+  add_counts(app, o->counts,
+             "[diagram] scenes: override the grid's nx,ny (or NxM), integers in [1, 1000000], for a quick look "
+             "(default: the scene's counts)");
   app.add_option("--trace-lines", o->panel.trace.lines,
                  "[diagram] scenes: interior lines (x fixed) searched for starts of the traced boundary besides the "
                  "plane's edges, integer in [0, 10000]")
-      ->check(integer_text("an integer in [0, 10000]"))->check(CLI::Range(0, 10000))
+      ->check(integer_in(0, 10000))
       ->capture_default_str();
   app.add_flag("--quiet", o->quiet, "no progress on stderr");
   o->progress.add_flags(app, &o->quiet);
@@ -200,7 +130,6 @@ static Runner add_report(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterReport{"report", "Run a scene (or a figure panel: [diagram], [fig6e], [continuation]) and write a report folder",
                                 add_report, 60};
 }  // namespace

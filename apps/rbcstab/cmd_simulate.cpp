@@ -3,7 +3,6 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/simulation_io.hpp"
@@ -38,9 +37,8 @@ int run(const SimulateOptions& o) {
   }
   return kOk;
 }
-}  // namespace
 
-static Runner add_simulate(CLI::App& app) {
+Runner add_simulate(CLI::App& app) {
   auto o = std::make_shared<SimulateOptions>();
   o->scene.add_to(app);
   app.add_flag("--json", o->json, "print one JSON object on stdout");
@@ -49,7 +47,6 @@ static Runner add_simulate(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterSimulate{"simulate", "Integrate a scene and report the excess-area redistribution", add_simulate, 20};
 }  // namespace
 

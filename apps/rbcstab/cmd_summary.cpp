@@ -3,7 +3,6 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/verdict/verdict_io.hpp"
 #include "progress.hpp"
 #include "scene_options.hpp"
@@ -21,7 +20,7 @@ struct SummaryOptions {
 int run(const SummaryOptions& o) {
   SceneFile sf = o.scene.read();
   sf.options.on_progress = o.progress.callback("summary: t =", "");
-  const ShearRateSearchOptions search = shear_rate_search(sf.scene, o.shear_rate_range);
+  const ShearRateSearchOptions search = shear_rate_search(sf.scene, o.shear_rate_range, "--shear-rate-range");
   const SummaryRun s = run_summary(std::move(sf), search);
   if (o.json)
     std::cout << summary_json(s.file, s.run, s.prediction).dump(2) << "\n";
@@ -29,9 +28,8 @@ int run(const SummaryOptions& o) {
     std::cout << summary_text(s.file, s.run, s.prediction);
   return s.run.status == IntegrationStatus::success ? kOk : kRunFailed;
 }
-}  // namespace
 
-static Runner add_summary(CLI::App& app) {
+Runner add_summary(CLI::App& app) {
   auto o = std::make_shared<SummaryOptions>();
   o->scene.add_to(app);
   app.add_flag("--json", o->json, "print one JSON object on stdout (the keys of simulate --json, then the analysis)");
@@ -40,7 +38,6 @@ static Runner add_summary(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterSummary{"summary", "The main job: a readable summary of a scene (default: the paper's Fig. 3 case)", add_summary, 10};
 }  // namespace
 

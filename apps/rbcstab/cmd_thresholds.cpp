@@ -4,7 +4,6 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/verdict/verdict_io.hpp"
 #include "scene_options.hpp"
 
@@ -26,9 +25,8 @@ int run(const ThresholdsOptions& o) {
     std::cout << thresholds_text(sf, t);
   return kOk;
 }
-}  // namespace
 
-static Runner add_thresholds(CLI::App& app) {
+Runner add_thresholds(CLI::App& app) {
   auto o = std::make_shared<ThresholdsOptions>();
   o->scene.add_to(app);
   app.add_flag("--json", o->json, "print one JSON object on stdout");
@@ -37,7 +35,6 @@ static Runner add_thresholds(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterThresholds{"thresholds", "Instability thresholds and predicted unstable modes of a scene (no simulation)",
                                 add_thresholds, 30};
 }  // namespace

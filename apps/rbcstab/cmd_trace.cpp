@@ -8,9 +8,7 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "plane_options.hpp"
 #include "progress.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/sweep/diagram_table.hpp"
@@ -22,8 +20,7 @@ namespace rbcstab::cli {
 namespace {
 struct TraceCliOptions {
   SceneOptions scene;
-  std::vector<std::string> axes, x_range, y_range;  // comma lists (checks.hpp list_items)
-  double alpha_fixed = -1;
+  PlaneFlags plane;
   TraceOptions trace;
   std::string out = "trace", diagram, criterion = "asymptotic", method = "auto";
   int threads = 1;
@@ -33,9 +30,7 @@ struct TraceCliOptions {
 
 int run(const TraceCliOptions& o) {
   const SceneFile sf = o.scene.resolve(TruncationUse::grid);
-  PlaneChoice plane{list_items(o.axes), numbers_of(o.x_range), numbers_of(o.y_range), {}, {}, {}};
-  if (o.alpha_fixed >= 0) plane.alpha_fixed = o.alpha_fixed;
-  const DiagramSpec spec = plane_spec(sf, plane);
+  const DiagramSpec spec = plane_spec(sf, o.plane.choice());
   TraceOptions to = o.trace;
   to.criterion = trace_criterion_from_string(o.criterion);
   to.method = trace_method_from_string(o.method);
@@ -52,38 +47,16 @@ int run(const TraceCliOptions& o) {
     }
     doc["agreement"] = trace_agreement_json(dj, o.diagram, spec, to, o.threads);
   }
-  try {
-    write_files_atomic({{o.out + ".csv", trace_csv(spec, t), "--out"}, {o.out + ".json", doc.dump(1) + "\n", "--out"}});
-  } catch (const std::runtime_error& e) {
-    std::cerr << "rbcstab: error: " << e.what() << "\n";
-    return kOutputError;
-  }
-  std::cerr << "rbcstab: traced " << t.curves.size() << " curve pieces, " << t.corners.size() << " corners, "
-            << t.evaluations << " criterion evaluations in " << t.seconds << " s; wrote " << o.out << ".csv and "
-            << o.out << ".json\n";
-  for (const std::string& n : t.notes) std::cerr << "rbcstab: note: " << n << "\n";
-  if (doc.contains("agreement") && doc["agreement"].contains("predictors"))
-    for (const auto& a : doc["agreement"]["predictors"])
-      std::cerr << "rbcstab: agreement of " << a["predictor"].get<std::string>() << ": verdict " << a["verdict_fraction"]
-                << ", mode " << a["mode_fraction"] << " over " << a["points"] << " points, disagreements beyond one grid step "
-                << a["beyond_one_grid_step"] << "\n";
+  write_files_atomic({{o.out + ".csv", trace_csv(spec, t), "--out"}, {o.out + ".json", doc.dump(1) + "\n", "--out"}});
+  for (const std::string& line : trace_summary_lines(t, doc, o.out)) std::cerr << "rbcstab: " << line << "\n";
   if (o.json) std::cout << trace_brief_json(doc, o.out).dump(2) << "\n";
   return kOk;
 }
-}  // namespace
 
-static Runner add_trace(CLI::App& app) {
+Runner add_trace(CLI::App& app) {
   auto o = std::make_shared<TraceCliOptions>();
   o->scene.add_to(app);
-  app.add_option("--axes", o->axes, axes_help("plane axes"))->check(each_item({}, "two axis names x,y"));
-  app.add_option("--x-range", o->x_range, "min,max of x, finite (default: the scene's [diagram] or -1,6)")
-      ->check(each_item({number_text("min,max of x, finite")}, "two numbers min,max"))
-      ->expected(1, 2);
-  app.add_option("--y-range", o->y_range, "min,max of y, finite (default: the scene's [diagram] or -5.5,2)")
-      ->check(each_item({number_text("min,max of y, finite")}, "two numbers min,max"))
-      ->expected(1, 2);
-  app.add_option("--alpha-fixed", o->alpha_fixed, "hold alpha = B/C fixed over the plane, >= 0 (0: off; default: the scene's [diagram] or off)")
-      ->check(non_negative());
+  o->plane.add_to(app, false);
   app.add_option("--criterion", o->criterion, "asymptotic | finite-horizon")->capture_default_str();
   app.add_option("--method", o->method,
                  "auto: on ln B planes the finite-horizon and in-plane asymptotic boundaries in closed form in B (one "
@@ -96,8 +69,7 @@ static Runner add_trace(CLI::App& app) {
       ->capture_default_str();
   app.add_option("--lines", o->trace.lines,
                  "interior lines (x fixed) searched for starting points besides the edges, integer in [0, 10000]")
-      ->check(integer_text("an integer in [0, 10000]"))
-      ->check(CLI::Range(0, 10000))
+      ->check(integer_in(0, 10000))
       ->capture_default_str();
   app.add_option("--samples", o->trace.samples, "brackets per edge or line when searching for starts, integer in [2, 1000000]")
       ->check(integer_in(2, 1000000))
@@ -115,7 +87,6 @@ static Runner add_trace(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterTrace{"trace", "Trace the stability boundary of a parameter plane as curves", add_trace, 42};
 }  // namespace
 

@@ -5,7 +5,6 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/io/units_io.hpp"
 #include "rbcstab/model/parameter_table.hpp"
@@ -35,9 +34,8 @@ int run(const UnitsOptions& o) {
     std::cout << units_text(a);
   return kOk;
 }
-}  // namespace
 
-static Runner add_units(CLI::App& app) {
+Runner add_units(CLI::App& app) {
   auto o = std::make_shared<UnitsOptions>();
   for (const SceneKey& k : scene_keys())
     if (k.kind == ValueKind::quantity)
@@ -51,7 +49,6 @@ static Runner add_units(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-namespace {
 const RegisterCommand kRegisterUnits{"units",
                                 "Physical units (shear rate, viscosities, moduli, size) to the paper's dimensionless "
                                 "numbers and back",

@@ -5,7 +5,6 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "exit_codes.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/core/text.hpp"
 

@@ -5,16 +5,6 @@
 
 namespace rbcstab::cli {
 
-void apply_unit_flag(SceneFile& file, const SceneKey& key, const std::string& text) {
-  try {
-    apply_flag(file, key, text);
-  } catch (const InvalidArgument& e) {
-    const std::string m = e.what();
-    const std::string& name = key.unit_flag;
-    throw InvalidArgument(name, m.rfind(key.key, 0) == 0 ? name + m.substr(key.key.size()) : name + ": " + m);
-  }
-}
-
 namespace {
 // Every flag's value is read in full and an empty one is refused, a text flag's (--name '') too.
 CLI::Validator non_empty_text(const std::string& accepts) {
@@ -106,15 +96,6 @@ void add_shear_rate_range(CLI::App& app, std::string& text) {
   app.add_option("--shear-rate-range", text,
                  "LO,HI: the shear rates [1/s] searched for the thresholds of a physical scene (units as for "
                  "--shear-rate; default " + format_value(defaults.min_rate) + "," + format_value(defaults.max_rate) + ")");
-}
-
-ShearRateSearchOptions shear_rate_search(const Scene& scene, const std::string& text) {
-  ShearRateSearchOptions search;
-  if (text.empty()) return search;
-  (void)physical_cell(scene, "--shear-rate-range");
-  set_search_range(search, text, "--shear-rate-range");
-  search.validate();
-  return search;
 }
 
 }  // namespace rbcstab::cli

@@ -6,7 +6,6 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
-#include <chrono>
 #include <cmath>
 #include <complex>
 #include <limits>
@@ -28,6 +27,7 @@
 #include "rbcstab/continuation/scene_restart.hpp"
 #include "rbcstab/continuation/scene_run.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/core/progress.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/report/bifurcation_plot.hpp"
 #include "rbcstab/report/report.hpp"
@@ -111,16 +111,14 @@ struct Watch {
     struct State {
       PyObject* progress = nullptr;  // borrowed; nullptr: none
       std::size_t points = 0;
-      std::chrono::steady_clock::time_point last{};
+      Throttle throttle{0.1, true};  // the first point reports at once
     };
     auto state = std::make_shared<State>();
     if (!progress.is_none()) state->progress = progress.ptr();
     stop = [poll = poll, state](const Eigen::VectorXd&, double p) {
       poll();
       ++state->points;
-      const auto now = std::chrono::steady_clock::now();
-      if (state->progress && now - state->last >= std::chrono::milliseconds(100)) {
-        state->last = now;
+      if (state->progress && state->throttle.due()) {
         py::gil_scoped_acquire gil;
         py::handle(state->progress)(state->points, p);
       }

@@ -1,7 +1,7 @@
-#include <chrono>
 #include <memory>
 
 #include "bindings.hpp"
+#include "rbcstab/core/progress.hpp"
 
 namespace rbcstab::python {
 
@@ -39,12 +39,9 @@ py::array_t<double> own(std::vector<double>&& v) {
 }
 
 std::function<void()> signal_poll() {
-  using clock = std::chrono::steady_clock;
-  auto last = std::make_shared<clock::time_point>(clock::now());
-  return [last] {
-    const clock::time_point now = clock::now();
-    if (now - *last < std::chrono::milliseconds(100)) return;
-    *last = now;
+  auto throttle = std::make_shared<Throttle>(0.1);  // the command line's throttle (core/progress.hpp)
+  return [throttle] {
+    if (!throttle->due()) return;
     py::gil_scoped_acquire gil;
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
   };

@@ -59,6 +59,26 @@ TEST(InitialState, PerturbationsCarryDeltaInEveryMode) {
   }
 }
 
+// A scene checked once (validated) gives the same initial state and system as the plain scene, whose overloads
+// still check: the proof cannot be had for an invalid scene.
+TEST(InitialState, AValidatedSceneIsTheSameSceneCheckedOnce) {
+  Scene s;
+  s.L = 6;
+  const ValidScene valid = validated(s);
+  EXPECT_EQ(&*valid, &s);
+  const InitialState a = initial_state(s), b = initial_state(valid);
+  for (int l = 2; l <= s.L; ++l)
+    for (int m = -l; m <= l; ++m) {
+      EXPECT_EQ(a.f.at(l, m), b.f.at(l, m));
+      EXPECT_EQ(a.g.at(l, m), b.g.at(l, m));
+    }
+  EXPECT_EQ(make_scene_system(valid).level.level, make_scene_system(s).level.level);
+  s.L = 1;
+  EXPECT_THROW(validated(s), InvalidArgument);
+  EXPECT_THROW(initial_state(s), InvalidArgument);
+  EXPECT_THROW(make_scene_system(s), InvalidArgument);
+}
+
 TEST(LevelChoice, SmallestExactLevel) {
   {
     const Scene s = fig3_scene(0.001);

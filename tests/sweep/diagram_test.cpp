@@ -502,5 +502,23 @@ TEST(DiagramScenes, PaperPanelsParse) {
   }
   EXPECT_EQ(n, 12);
 }
+// --counts of diagram and report, read one way: nx,ny, NxM or two texts; anything else names the flag and the form.
+TEST(DiagramFile, CountsAsAUserTypesThem) {
+  const std::vector<long long> want{3, 2};
+  EXPECT_EQ(parse_counts({"3,2"}, "--counts"), want);
+  EXPECT_EQ(parse_counts({"3x2"}, "--counts"), want);
+  EXPECT_EQ(parse_counts({"3", "2"}, "--counts"), want);
+  for (const std::vector<std::string>& bad : std::vector<std::vector<std::string>>{
+           {"3"}, {"3,a"}, {"0x2"}, {"3,,2"}, {"3x2x1"}, {"1000001,2"}, {"3", "2", "1"}, {""}}) {
+    try {
+      (void)parse_counts(bad, "--counts");
+      ADD_FAILURE() << "accepted " << bad.front();
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(e.parameter(), "--counts");
+      EXPECT_NE(std::string(e.what()).find("nx,ny or NxM"), std::string::npos) << e.what();
+    }
+  }
+}
+
 }  // namespace
 }  // namespace rbcstab

@@ -83,5 +83,21 @@ TEST(SweepIo, TraceDocumentCsvAndBriefReadBack) {
   EXPECT_FALSE(brief.contains("agreement"));
 }
 
+// A diagram's progress line, as the diagram, report and paper commands print it.
+TEST(SweepIo, ProgressLineOfADiagram) {
+  Progress p;
+  p.done = 12;
+  p.total = 64;
+  p.resumed = 4;
+  p.elapsed = 2.5;
+  p.rate = 3.21;
+  p.eta = 15;
+  EXPECT_EQ(progress_text(p, true), "diagram 12/64 (4 resumed), 3.2 points/s, elapsed 2.5s, ETA 15.0s");
+  EXPECT_EQ(progress_text(p, false), "diagram 12/64, 3.2 points/s, ETA 15.0s");
+  p.rate = 0;
+  p.resumed = 0;
+  EXPECT_EQ(progress_text(p, true), "diagram 12/64, 0.0 points/s, elapsed 2.5s, ETA ?");
+}
+
 }  // namespace
 }  // namespace rbcstab

@@ -7,12 +7,16 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/io/json.hpp"
+#include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/sweep/sweep_io.hpp"
 #include "rbcstab/sweep/threshold_precision.hpp"
 
 namespace rbcstab {
@@ -185,6 +189,32 @@ TEST(ThresholdPrecision, NoSignChangeIsAStatusAndBadOptionsThrow) {
   bad = {};
   bad.trace_max_steps = {0.0};
   EXPECT_THROW(threshold_precision(fig4b_at_B2(), bad), InvalidArgument);
+}
+
+// The study's one CSV, JSON and text: a row without a boundary is an empty field, a null with its status as the
+// reason and "n/a"; a failed reference explains every error of its predictor.
+TEST(ThresholdPrecision, RenderersExplainMissingNumbers) {
+  const SceneFile sf = parse_scene("");
+  ThresholdPrecisionOptions o;
+  ThresholdPrecision t;
+  t.B = 2;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  t.references = {{"asymptotic", -2.5, 1e-11, "ok"}, {"simulation", 0, 0, "run failed"}};
+  t.rows = {{"asymptotic", "bisection", 0, 8, -2.49, 0.01, 8, 0, 0.1, "ok"},
+            {"asymptotic", "grid", 0, 5, nan, nan, 5, 0, 0.1, "no verdict change on the grid"},
+            {"simulation", "bisection", 1e-6, 4, -2.4, nan, 4, 100, 0.2, "ok"}};
+  const std::string csv = threshold_precision_csv(t);
+  EXPECT_NE(csv.find("asymptotic,grid,0,5,,,5,0,0.1,\"no verdict change on the grid\"\n"), std::string::npos) << csv;
+  const nlohmann::json j = threshold_precision_json(sf, o, t);
+  EXPECT_TRUE(unexplained_nulls(j).empty());
+  EXPECT_EQ(j["ln_C_range"], nlohmann::json({-5.5, 2.0}));
+  EXPECT_EQ(j["rows"][1]["ln_C_reason"], "no verdict change on the grid");
+  EXPECT_EQ(j["rows"][2]["error_reason"], "no reference: run failed");
+  EXPECT_EQ(j["references"][1]["rtol"], o.reference_rtol);
+  const std::string text = threshold_precision_text(sf, t);
+  EXPECT_EQ(text.rfind("critical ln C at B = 2 (scene fig3_op)\n", 0), 0u) << text;
+  EXPECT_EQ(text.find("nan"), std::string::npos);
+  EXPECT_NE(text.find("n/a"), std::string::npos);
 }
 
 }  // namespace

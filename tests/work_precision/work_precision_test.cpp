@@ -1,8 +1,14 @@
 // Work-precision tables: the reference is consistent across levels, and errors follow the tolerance.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <limits>
+
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/work_precision.hpp"
+#include "rbcstab/io/json.hpp"
+#include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/io/work_precision_io.hpp"
 
 namespace rbcstab {
 namespace {
@@ -32,6 +38,34 @@ TEST(WorkPrecision, ErrorsShrinkWithTolerance) {
     EXPECT_LT(tight.error_Delta, 1e3 * tight.rtol);
     EXPECT_FALSE(tight.verdict_changed);
   }
+}
+
+// The one CSV, JSON and text of a table: a stopped row's missing error is an empty field, a null with its reason and
+// "n/a", never "nan".
+TEST(WorkPrecision, RenderersShowAStoppedRowsMissingNumbers) {
+  SceneFile sf = parse_scene("");
+  WorkPrecisionTable t;
+  t.scene_name = sf.scene.name;
+  t.reference_Delta = {0.9, 0.1};
+  t.reference_sigma = -30;
+  t.reference_rtol = 1e-13;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  t.rows.push_back({ModelLevel::modal, Stepper::rk8pd, 1e-4, IntegrationStatus::success, 10, 0, 5, 0.5, 1e-5, 2e-6, 3,
+                    false, ""});
+  t.rows.push_back({ModelLevel::full, Stepper::rkck, 1e-6, IntegrationStatus::time_limit, 20, 0, 9, 30, nan, nan, 2,
+                    false, "time limit"});
+  const std::string csv = work_precision_csv(t);
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 3);
+  EXPECT_NE(csv.find("full,rkck,1e-06,time_limit,20,0,9,30,,,2,0\n"), std::string::npos) << csv;
+  const nlohmann::json j = work_precision_json(sf, t);
+  EXPECT_TRUE(unexplained_nulls(j).empty());
+  EXPECT_EQ(j["reference"]["rtol"], 1e-13);
+  EXPECT_TRUE(j["rows"][1]["error_Delta"].is_null());
+  EXPECT_NE(j["rows"][1]["error_Delta_reason"].get<std::string>().find("time limit"), std::string::npos);
+  const std::string text = work_precision_text(t);
+  EXPECT_EQ(text.find("nan"), std::string::npos);
+  EXPECT_NE(text.find("n/a"), std::string::npos);
+  EXPECT_NE(text.find("time_limit"), std::string::npos);
 }
 
 TEST(WorkPrecision, RejectsBadOptions) {

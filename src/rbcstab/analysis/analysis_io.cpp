@@ -110,4 +110,35 @@ PostRun run_post(SceneFile file) {
   return out;
 }
 
+std::string truncation_convergence_csv(const TruncationConvergence& t) {
+  std::ostringstream csv;
+  csv << std::setprecision(10) << "L,status,l_Delta,sigma_final,error_Delta,error_sigma,rhs_evaluations,seconds\n";
+  for (const TruncationConvergenceRow& r : t.rows)
+    csv << r.L << ',' << to_string(r.status) << ',' << r.l_Delta << ',' << csv_number(r.sigma_final) << ','
+        << csv_number(r.error_Delta) << ',' << csv_number(r.error_sigma) << ',' << r.rhs_evaluations << ','
+        << csv_number(r.seconds) << '\n';
+  return csv.str();
+}
+
+nlohmann::json truncation_convergence_json(const SceneFile& file, const TruncationConvergence& t) {
+  const Parameters& p = file.scene.parameters;
+  const TruncationConvergenceRow& ref = t.reference();
+  nlohmann::json rows = nlohmann::json::array();
+  for (const TruncationConvergenceRow& r : t.rows) {
+    nlohmann::json row{{"L", r.L}, {"status", to_string(r.status)}, {"reason", r.reason}, {"l_Delta", r.l_Delta},
+                       {"rhs_evaluations", r.rhs_evaluations}, {"seconds", r.seconds}};
+    const std::string why = row_reason(r.status, r.reason, p);
+    put_number(row, "sigma_final", r.sigma_final, why);
+    const std::string error_why = t.reference_ok() ? why
+                                                   : "the reference (L = " + std::to_string(ref.L) + ") " +
+                                                         row_reason(ref.status, ref.reason, p);
+    put_number(row, "error_Delta", r.error_Delta, error_why);
+    put_number(row, "error_sigma", r.error_sigma, error_why);
+    rows.push_back(row);
+  }
+  nlohmann::json j{{"scene", to_json(file.scene)}, {"reference_L", ref.L}, {"rows", rows}};
+  put_truncation(j, file);
+  return j;
+}
+
 }  // namespace rbcstab

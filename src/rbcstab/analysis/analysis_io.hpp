@@ -9,6 +9,7 @@
 
 #include "rbcstab/analysis/post_instability.hpp"
 #include "rbcstab/analysis/quantity.hpp"
+#include "rbcstab/analysis/truncation_convergence.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/io/scene_file.hpp"
 
@@ -41,5 +42,11 @@ struct PostRun {
   SimulationResult run;
 };
 PostRun run_post(SceneFile file);
+
+// The truncation study (analysis/truncation_convergence.hpp): one CSV row per L (L, status, l_Delta, sigma_final,
+// error_Delta, error_sigma, rhs_evaluations, seconds; an empty field for a missing number), which is also its text,
+// and the document {scene, reference_L, rows, L, L_reason}, whose missing numbers are null with their reason.
+std::string truncation_convergence_csv(const TruncationConvergence& t);
+nlohmann::json truncation_convergence_json(const SceneFile& file, const TruncationConvergence& t);
 
 }  // namespace rbcstab

@@ -31,7 +31,9 @@ void PredictorOptions::validate() const {
           "regime_sample_dt", regime_sample_dt, "in (0, window/2]");
 }
 
-double stress_free_r0(const Scene& scene) {
+double stress_free_r0(const Scene& scene) { return stress_free_r0(validated(scene)); }
+
+double stress_free_r0(const ValidScene& scene) {
   const InitialState init = initial_state(scene);
   const double Delta0 = init.g.excess_area(2);
   if (Delta0 <= 0) return 0;
@@ -43,7 +45,7 @@ double stress_free_r0(const Scene& scene) {
 
 namespace {
 
-double initial_r(const Scene& scene) {
+double initial_r(const ValidScene& scene) {
   const InitialState init = initial_state(scene);
   const double Delta2 = init.f.excess_area(2);
   const double a2 = 2;
@@ -59,9 +61,9 @@ struct ReducedRun {
   std::vector<double> t, I, r, Psi;  // on the window grid; I = int_0^t sigma_R
 };
 
-ReducedRun run_reduced(const Scene& scene, const PredictorOptions& options) {
+ReducedRun run_reduced(const ValidScene& scene, const PredictorOptions& options) {
   options.validate();
-  const ReducedModel reduced(scene.parameters, initial_state(scene));
+  const ReducedModel reduced(scene->parameters, initial_state(scene));
   const WithQuadratures sys(reduced, tension_integral(reduced));
   const double t0 = options.transient, t1 = options.transient + options.window;
   std::vector<double> grid;
@@ -135,12 +137,14 @@ RegimeResult regime_from(const ReducedRun& run, bool out_of_plane) {
 }  // namespace
 
 SigmaAverage time_averaged_sigma_R(const Scene& scene, const PredictorOptions& options) {
-  scene.validate();
-  return average_from(run_reduced(scene, options), options);
+  return average_from(run_reduced(validated(scene), options), options);
 }
 
 RegimeResult reduced_regime(const Scene& scene, const PredictorOptions& options) {
-  scene.validate();
+  return reduced_regime(validated(scene), options);
+}
+
+RegimeResult reduced_regime(const ValidScene& scene, const PredictorOptions& options) {
   return regime_from(run_reduced(scene, options), initial_r(scene) < options.out_of_plane_r0);
 }
 
@@ -171,11 +175,16 @@ ReducedTransient transient_at_B(const ReducedTransient& transient, const Scene& 
 }
 
 ReducedTransient reduced_transient(const Scene& scene, double T, int checkpoints, const PredictorOptions& options) {
-  scene.validate();
+  return reduced_transient(validated(scene), T, checkpoints, options);
+}
+
+ReducedTransient reduced_transient(const ValidScene& valid, double T, int checkpoints,
+                                   const PredictorOptions& options) {
+  const Scene& scene = *valid;
   options.validate();
   require(std::isfinite(T) && T > 0, "T", T, "finite and > 0");
   require(checkpoints >= 1 && checkpoints <= 10000, "checkpoints", checkpoints, "an integer in [1, 10000]");
-  const ReducedModel reduced(scene.parameters, initial_state(scene));
+  const ReducedModel reduced(scene.parameters, initial_state(valid));
   const WithQuadratures sys(reduced, tension_integral(reduced));
   ReducedTransient tr;
   tr.parameters = scene.parameters;
@@ -203,7 +212,11 @@ ReducedTransient reduced_transient(const Scene& scene, double T, int checkpoints
 }
 
 FiniteHorizon finite_horizon_growth(const Scene& scene, const ReducedTransient& transient) {
-  scene.validate();
+  return finite_horizon_growth(validated(scene), transient);
+}
+
+FiniteHorizon finite_horizon_growth(const ValidScene& valid, const ReducedTransient& transient) {
+  const Scene& scene = *valid;
   if (!transient.of(scene))
     throw InvalidArgument("transient", "the reduced transient was integrated for other parameters or another beta");
   const Parameters& p = scene.parameters;
@@ -220,7 +233,8 @@ FiniteHorizon finite_horizon_growth(const Scene& scene, const ReducedTransient& 
 }
 
 FiniteHorizon finite_horizon_growth(const Scene& scene, double T, const PredictorOptions& options) {
-  return finite_horizon_growth(scene, reduced_transient(scene, T, 1, options));
+  const ValidScene valid = validated(scene);
+  return finite_horizon_growth(valid, reduced_transient(valid, T, 1, options));
 }
 
 }  // namespace rbcstab

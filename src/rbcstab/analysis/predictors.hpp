@@ -58,6 +58,8 @@ struct ReducedTransient {
   static std::array<double, 5> flow(const Parameters& p, double beta);
 };
 // checkpoints in [1, 10000]; options: its integrator.
+ReducedTransient reduced_transient(const ValidScene& scene, double T, int checkpoints = 1,
+                                   const PredictorOptions& options = {});
 ReducedTransient reduced_transient(const Scene& scene, double T, int checkpoints = 1,
                                    const PredictorOptions& options = {});
 
@@ -79,6 +81,7 @@ struct FiniteHorizon {
 };
 // From a transient of the scene (throws InvalidArgument("transient", ...) if it is another scene's); T = its T.
 FiniteHorizon finite_horizon_growth(const Scene& scene, const ReducedTransient& transient);
+FiniteHorizon finite_horizon_growth(const ValidScene& scene, const ReducedTransient& transient);
 // The same on its own run with one checkpoint (T only).
 FiniteHorizon finite_horizon_growth(const Scene& scene, double T, const PredictorOptions& options = {});
 
@@ -97,8 +100,10 @@ struct RegimeResult {
 // rolling: out-of-plane steady state (the paper's deformed rolling); tank_treading: in-plane steady state;
 // swinging: Psi oscillates with no net rotation; tumbling: Psi decreases without bound.
 RegimeResult reduced_regime(const Scene& scene, const PredictorOptions& options = {});
+RegimeResult reduced_regime(const ValidScene& scene, const PredictorOptions& options = {});
 
 // r0 = |z0| of the scene's stress-free l = 2 shape (0 out of plane, sqrt(3)/2 in plane).
 double stress_free_r0(const Scene& scene);
+double stress_free_r0(const ValidScene& scene);
 
 }  // namespace rbcstab

@@ -35,18 +35,31 @@ double log_area_gain(double d, double G) { return std::log(d) + 2 * G + std::log
 
 ReducedTransient truncation_transient(const Scene& scene, const TruncationOptions& options) {
   options.validate();
-  scene.validate();
-  return reduced_transient(scene, scene.T, options.checkpoints, options.predictor);
+  return reduced_transient(validated(scene), scene.T, options.checkpoints, options.predictor);
 }
 
+namespace {
+TruncationChoice choose_from_transient(const ValidScene& valid, const ReducedTransient& transient,
+                                       const TruncationOptions& options);
+}  // namespace
+
 TruncationChoice choose_truncation(const Scene& scene, const TruncationOptions& options) {
-  return choose_truncation(scene, truncation_transient(scene, options), options);
+  options.validate();
+  const ValidScene valid = validated(scene);
+  return choose_from_transient(valid, reduced_transient(valid, scene.T, options.checkpoints, options.predictor),
+                               options);
 }
 
 TruncationChoice choose_truncation(const Scene& scene, const ReducedTransient& transient,
                                    const TruncationOptions& options) {
   options.validate();
-  scene.validate();
+  return choose_from_transient(validated(scene), transient, options);
+}
+
+namespace {
+TruncationChoice choose_from_transient(const ValidScene& valid, const ReducedTransient& transient,
+                                       const TruncationOptions& options) {
+  const Scene& scene = *valid;
   if (!transient.of(scene) || transient.T != scene.T || transient.checkpoints != options.checkpoints)
     throw InvalidArgument("transient", "the reduced transient must be the scene's over [0, T = " + format_value(scene.T) +
                                            "] with " + std::to_string(options.checkpoints) + " checkpoints");
@@ -117,9 +130,9 @@ TruncationChoice choose_truncation(const Scene& scene, const ReducedTransient& t
   return c;
 }
 
-TruncationDecision resolve_truncation(const Scene& scene, Origin L_origin, TruncationUse use,
-                                      const TruncationOptions& options, const ReducedTransient* transient) {
-  scene.validate();
+TruncationDecision resolve_valid(const ValidScene& valid, Origin L_origin, TruncationUse use,
+                                 const TruncationOptions& options, const ReducedTransient* transient) {
+  const Scene& scene = *valid;
   TruncationDecision d;
   d.L = scene.L;
   const std::string L = "L = " + std::to_string(scene.L);
@@ -144,7 +157,10 @@ TruncationDecision resolve_truncation(const Scene& scene, Origin L_origin, Trunc
       // Never above the scene's L: a larger L would seed more modes, i.e. another scene.
       TruncationOptions o = options;
       o.L_max = scene.L;
-      const TruncationChoice c = transient ? choose_truncation(scene, *transient, o) : choose_truncation(scene, o);
+      o.validate();
+      std::optional<ReducedTransient> own;
+      if (!transient) own = reduced_transient(valid, scene.T, o.checkpoints, o.predictor);
+      const TruncationChoice c = choose_from_transient(valid, transient ? *transient : *own, o);
       d.L = c.L;
       d.reason = c.reason;
       d.check = c.L < scene.L;
@@ -161,6 +177,12 @@ TruncationDecision resolve_truncation(const Scene& scene, Origin L_origin, Trunc
     case TruncationUse::reduced: break;
   }
   return d;
+}
+}  // namespace
+
+TruncationDecision resolve_truncation(const Scene& scene, Origin L_origin, TruncationUse use,
+                                      const TruncationOptions& options, const ReducedTransient* transient) {
+  return resolve_valid(validated(scene), L_origin, use, options, transient);
 }
 
 namespace {
@@ -182,12 +204,12 @@ struct StepRecord {
 // by finish(), once t = 0 is known).
 class StepRecorder {
  public:
-  StepRecorder(const Scene& candidate, double atol) : floor_(std::max(1e6 * atol * 1e6 * atol, 1e-300)) {
+  StepRecorder(const ValidScene& candidate, double atol) : floor_(std::max(1e6 * atol * 1e6 * atol, 1e-300)) {
     const InitialState init = initial_state(candidate);
-    for (int l = 2; l <= candidate.L; ++l) {
-      U_.push_back(Upsilon_l(candidate.parameters, l));
+    for (int l = 2; l <= candidate->L; ++l) {
+      U_.push_back(Upsilon_l(candidate->parameters, l));
       Delta0_.push_back(init.f.excess_area(l));
-      reference_.push_back(l >= 3 && Delta0_.back() > 0 && candidate.rest_perturbation(l) == 0);
+      reference_.push_back(l >= 3 && Delta0_.back() > 0 && candidate->rest_perturbation(l) == 0);
     }
   }
   void add(double t, const std::vector<double>& Delta_l, double sigma) {
@@ -389,20 +411,49 @@ TruncationCheck check_run(const Scene& scene, int Lc, const SimulationResult& ru
   return c;
 }
 
+// run_and_check on a scene already validated: the candidate copy is validated once, for its run and its recorder.
+CheckedRun check_candidate(const ValidScene& valid, int L_candidate, const SimulationOptions& options,
+                           const TruncationOptions& truncation) {
+  const Scene& scene = *valid;
+  options.validate();
+  truncation.validate();
+  int L_explicit = 2;
+  for (const auto& [l, d] : scene.delta_l) L_explicit = std::max(L_explicit, l);
+  for (const auto& [l, d] : scene.rest_delta_l) L_explicit = std::max(L_explicit, l);
+  require(L_candidate >= L_explicit && L_candidate < scene.L, "L_candidate", L_candidate,
+          "an integer in [" + std::to_string(L_explicit) + ", " + std::to_string(scene.L - 1) +
+              "]: below the scene's L and keeping every mode the scene sets explicitly");
+  Scene candidate = scene;
+  candidate.L = L_candidate;
+  const ValidScene valid_candidate = validated(candidate);
+  StepRecorder recorder(valid_candidate, options.integrator.atol);
+  SimulationOptions o = options;
+  o.on_step = [&recorder, &options](double t, const Observation& ob) {
+    recorder.add(t, ob.Delta_l, ob.sigma);
+    if (options.on_step) options.on_step(t, ob);
+  };
+  CheckedRun out;
+  out.run = simulate(valid_candidate, o);
+  recorder.finish(out.run.Delta_initial, out.run.sigma_initial);
+  out.check = check_run(scene, L_candidate, out.run, recorder.steps, truncation);
+  return out;
+}
+
 // resolve_truncation for a simulation, then the candidate's run and check when it is below the scene's L: sets
 // file.scene.L, L_reason and truncation_check. Returns the candidate's run when it passed (the run at file.scene.L).
 std::optional<SimulationResult> decide_simulation(SceneFile& file, const SimulationOptions& options,
                                                   const ReducedTransient* transient) {
-  const TruncationDecision d =
-      resolve_truncation(file.scene, file.origin("run.L"), TruncationUse::simulation, {}, transient);
+  // The scene is validated once here: without a check d.L is the scene's L, and with one the candidate (the scene
+  // at d.L) is validated for its run, so neither outcome needs another check.
+  const ValidScene valid = validated(file.scene);
+  const TruncationDecision d = resolve_valid(valid, file.origin("run.L"), TruncationUse::simulation, {}, transient);
   file.truncation_check.reset();
   if (!d.check) {
     file.scene.L = d.L;
     file.L_reason = d.reason;
-    file.scene.validate();
     return std::nullopt;
   }
-  CheckedRun c = run_and_check(file.scene, d.L, options);
+  CheckedRun c = check_candidate(valid, d.L, options, {});
   const std::string dropped = "l = " + mode_range(d.L + 1, file.scene.L);
   std::optional<SimulationResult> out;
   if (c.check.passed) {
@@ -416,7 +467,6 @@ std::optional<SimulationResult> decide_simulation(SceneFile& file, const Simulat
                     "); candidate: " + d.reason;
   }
   file.truncation_check = std::move(c.check);
-  file.scene.validate();
   return out;
 }
 
@@ -424,28 +474,7 @@ std::optional<SimulationResult> decide_simulation(SceneFile& file, const Simulat
 
 CheckedRun run_and_check(const Scene& scene, int L_candidate, const SimulationOptions& options,
                          const TruncationOptions& truncation) {
-  scene.validate();
-  options.validate();
-  truncation.validate();
-  int L_explicit = 2;
-  for (const auto& [l, d] : scene.delta_l) L_explicit = std::max(L_explicit, l);
-  for (const auto& [l, d] : scene.rest_delta_l) L_explicit = std::max(L_explicit, l);
-  require(L_candidate >= L_explicit && L_candidate < scene.L, "L_candidate", L_candidate,
-          "an integer in [" + std::to_string(L_explicit) + ", " + std::to_string(scene.L - 1) +
-              "]: below the scene's L and keeping every mode the scene sets explicitly");
-  Scene candidate = scene;
-  candidate.L = L_candidate;
-  StepRecorder recorder(candidate, options.integrator.atol);
-  SimulationOptions o = options;
-  o.on_step = [&recorder, &options](double t, const Observation& ob) {
-    recorder.add(t, ob.Delta_l, ob.sigma);
-    if (options.on_step) options.on_step(t, ob);
-  };
-  CheckedRun out;
-  out.run = simulate(candidate, o);
-  recorder.finish(out.run.Delta_initial, out.run.sigma_initial);
-  out.check = check_run(scene, L_candidate, out.run, recorder.steps, truncation);
-  return out;
+  return check_candidate(validated(scene), L_candidate, options, truncation);
 }
 
 SimulationResult simulate_truncated(SceneFile& file, const SimulationOptions& options,

@@ -56,6 +56,27 @@ std::optional<double> read_number(const std::string& text) {
   return read(text, x) == Reading::number ? std::optional<double>(x) : std::nullopt;
 }
 
+std::optional<long long> read_integer(const std::string& text) {
+  std::size_t pos = 0;
+  long long v = 0;
+  try {
+    v = std::stoll(text, &pos);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  return pos != 0 && pos == text.size() ? std::optional<long long>(v) : std::nullopt;
+}
+
+std::vector<std::string> comma_items(const std::string& text) {
+  std::vector<std::string> items;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    items.push_back(text.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
+    if (comma == std::string::npos) return items;
+    start = comma + 1;
+  }
+}
+
 std::string number_error(const std::string& text) {
   double x = 0;
   return read(text, x) == Reading::beyond_range ? "'" + text + "' is out of range: beyond the largest double (1.8e308)"

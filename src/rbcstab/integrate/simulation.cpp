@@ -101,9 +101,13 @@ void append(IntegrationResult& run, IntegrationResult next) {
 }  // namespace
 
 SimulationResult simulate(const Scene& scene, const SimulationOptions& options, AttractorCertifier* certifier) {
-  scene.validate();
+  return simulate(validated(scene), options, certifier);
+}
+
+SimulationResult simulate(const ValidScene& valid, const SimulationOptions& options, AttractorCertifier* certifier) {
+  const Scene& scene = *valid;
   options.validate();
-  SceneSystem built = make_scene_system(scene);
+  SceneSystem built = make_scene_system(valid);
   SimulationResult res;
   res.scene_name = scene.name;
   res.level = built.level;

@@ -131,6 +131,8 @@ struct SimulationResult {
 // trajectory then holds no samples strictly between terminated_at and resumed_at.
 SimulationResult simulate(const Scene& scene, const SimulationOptions& options = {},
                           AttractorCertifier* certifier = nullptr);
+SimulationResult simulate(const ValidScene& scene, const SimulationOptions& options = {},
+                          AttractorCertifier* certifier = nullptr);
 
 // f_{l,m}(t_reached): the shape a run of `scene` ends in, rebuilt from its final state on the level it ran.
 ModeAmplitudes final_amplitudes(const Scene& scene, const SimulationResult& result);

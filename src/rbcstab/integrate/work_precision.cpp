@@ -55,6 +55,7 @@ WorkPrecisionTable work_precision(const Scene& scene, const WorkPrecisionOptions
     }
   WorkPrecisionTable table;
   table.scene_name = scene.name;
+  table.reference_rtol = options.reference_rtol;
   const double ref_atol = options.reference_rtol * 1e-3;
   // Reference: the full level (a different formulation from the modal one); the modal level at the same
   // tolerance gives the spread that bounds the reference's own error.

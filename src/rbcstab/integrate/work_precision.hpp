@@ -40,6 +40,7 @@ struct WorkPrecisionTable {
   double reference_sigma = 0;
   int reference_l_Delta = 2;
   ModelLevel reference_level = ModelLevel::full;
+  double reference_rtol = 1e-13;  // the references' tolerance (WorkPrecisionOptions::reference_rtol)
   double reference_spread = 0;  // max relative difference of the two references (full vs modal)
   // Not success: the reference run stopped (reference_reason says why) and the table has no rows.
   IntegrationStatus reference_status = IntegrationStatus::success;

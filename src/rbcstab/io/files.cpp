@@ -248,4 +248,13 @@ std::string read_file(const std::string& path, const std::string& parameter, std
   return text;
 }
 
+std::string output_prefix_problem(const std::string& path) {
+  if (path.empty()) return "'' is empty: must be a file name or prefix";
+  struct stat st {};
+  if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode) && !S_ISDIR(st.st_mode))
+    return "'" + path + "' is a device, FIFO or socket, and this flag takes a prefix (its files would be '" + path +
+           ".<suffix>'): give a file name prefix";
+  return "";
+}
+
 }  // namespace rbcstab

@@ -38,6 +38,11 @@ void write_file_atomic(const std::string& path, const std::string& content, cons
 // untouched and removes every temporary.
 void write_files_atomic(const std::vector<OutputFile>& files);
 
+// Why `path` cannot be an output prefix (PREFIX.csv, PREFIX.json, ...), or "": an empty one would write hidden files
+// named only by their suffix (".csv"), and one that names a device, FIFO or socket would put its files beside it
+// ("--out /dev/null" would create /dev/null.csv, not discard the output).
+std::string output_prefix_problem(const std::string& path);
+
 // Throws OutputError unless path can be a regular file that is read back and appended to
 // (a journal): not "-", a FIFO, a device, a directory, or a path in a missing or unwritable folder.
 void require_file_output(const std::string& path, const std::string& flag);

@@ -25,6 +25,11 @@ void put_number(nlohmann::json& j, const std::string& key, double v, const std::
   if (!std::isfinite(v)) j[key + "_reason"] = reason;
 }
 
+std::string row_reason(IntegrationStatus status, const std::string& reason, const Parameters& p) {
+  if (status == IntegrationStatus::success) return nonfinite_reason(p);
+  return "the run ended with " + to_string(status) + ": " + run_reason(status, reason, p);
+}
+
 namespace {
 
 bool holds_null(const nlohmann::json& v) {

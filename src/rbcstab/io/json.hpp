@@ -24,6 +24,9 @@ nlohmann::json to_json(const SimulationResult& r, const Parameters& p);
 nlohmann::json to_json(const EarlyTermination& e);
 // {"2": v[0], "3": v[1], ...}
 nlohmann::json by_mode(const std::vector<double>& values_from_l2);
+// Why a benchmark row's number is not finite: its run's status and message when it stopped, else the inputs that
+// overflowed (nonfinite_reason).
+std::string row_reason(IntegrationStatus status, const std::string& reason, const Parameters& p);
 // "L" and "L_reason" (why that L: SceneFile::L_reason), which every JSON output of a scene carries, and
 // "truncation_check" when the file holds one.
 void put_truncation(nlohmann::json& j, const SceneFile& file);

@@ -282,16 +282,22 @@ void apply_flag(SceneFile& file, const SceneKey& key, const SceneValue& value) {
   file.origins[key.path()] = Origin::flag;
 }
 
+void apply_unit_flag(SceneFile& file, const SceneKey& key, const std::string& text) {
+  try {
+    apply_flag(file, key, text);
+  } catch (const InvalidArgument& e) {
+    const std::string m = e.what();
+    const std::string& name = key.unit_flag;
+    throw InvalidArgument(name, m.rfind(key.key, 0) == 0 ? name + m.substr(key.key.size()) : name + ": " + m);
+  }
+}
+
 std::map<int, double> parse_modes(const std::vector<std::string>& items, const std::string& flag) {
   const std::string form =
       " must be l=value with an integer mode l >= 3 and a number, e.g. 3=1e-3 (several: 3=1e-3,4=2e-3)";
   std::map<int, double> out;
   for (const auto& item : items) {
-    std::size_t start = 0;
-    do {  // a comma list gives several modes at once; an empty piece ("3=1e-3,") is an error
-      const std::size_t comma = item.find(',', start);
-      const std::string pair = item.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-      start = comma == std::string::npos ? std::string::npos : comma + 1;
+    for (const std::string& pair : comma_items(item)) {  // several modes at once; an empty one ("3=1e-3,") is an error
       const auto eq = pair.find('=');
       std::size_t lpos = 0;
       int l = 0;
@@ -307,7 +313,7 @@ std::map<int, double> parse_modes(const std::vector<std::string>& items, const s
       if (!out.emplace(l, *v).second)
         throw InvalidArgument(flag, flag + " = '" + item + "' repeats mode l = " + std::to_string(l) +
                                         ": give each mode once");
-    } while (start != std::string::npos);
+    }
   }
   return out;
 }

@@ -89,6 +89,8 @@ std::vector<const SceneKey*> scene_flags();
 // Sets one flag's value on the file's scene and records its origin as a flag. The caller validates the scene
 // and options after the last flag (validate_scene_file).
 void apply_flag(SceneFile& file, const SceneKey& key, const SceneValue& value);
+// A [physical] key's text ("3.9um") as its unit flag gives it; a refusal names the flag ("--radius = ...").
+void apply_unit_flag(SceneFile& file, const SceneKey& key, const std::string& text);
 // "l=value" items of a repeatable mode flag (--delta-l 3=1e-3), each item also a comma list (3=1e-3,4=2e-3);
 // the whole text must parse and each mode appear once, else InvalidArgument(flag, ...).
 std::map<int, double> parse_modes(const std::vector<std::string>& items, const std::string& flag);

@@ -60,8 +60,15 @@ double Scene::rest_perturbation(int l) const {
   return it != rest_delta_l.end() ? it->second : 0.0;
 }
 
-InitialState initial_state(const Scene& scene) {
+ValidScene validated(const Scene& scene) {
   scene.validate();
+  return ValidScene(scene);
+}
+
+InitialState initial_state(const Scene& scene) { return initial_state(validated(scene)); }
+
+InitialState initial_state(const ValidScene& valid) {
+  const Scene& scene = *valid;
   const Parameters& p = scene.parameters;
   InitialState s{ModeAmplitudes(scene.L), ModeAmplitudes(scene.L)};
   for (int l = 2; l <= scene.L; ++l) {
@@ -132,8 +139,11 @@ std::unique_ptr<System> make_system(const Parameters& p, const InitialState& ini
   throw InvalidArgument("model", "make_system needs a concrete level (full, modal or reduced), not auto");
 }
 
-SceneSystem make_scene_system(const Scene& scene) {
-  SceneSystem s{initial_state(scene), {}, nullptr, scene.parameters.warnings()};
+SceneSystem make_scene_system(const Scene& scene) { return make_scene_system(validated(scene)); }
+
+SceneSystem make_scene_system(const ValidScene& valid) {
+  const Scene& scene = *valid;
+  SceneSystem s{initial_state(valid), {}, nullptr, scene.parameters.warnings()};
   s.level = choose_level(scene, s.init);
   if (!s.level.exact) s.warnings.push_back("model level " + to_string(s.level.level) + " " + s.level.reason);
   s.system = make_system(scene.parameters, s.init, s.level.level);

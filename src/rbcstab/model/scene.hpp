@@ -44,6 +44,22 @@ struct Scene {
   double rest_perturbation(int l) const;
 };
 
+// A scene that passed validate(): the calls a computation makes on its scene take one and do not check it again,
+// while a library caller with a plain Scene gets every check (each such call has a Scene overload that validates).
+// Only validated() makes one, so holding one means this very scene was checked; it refers to the scene, which
+// must outlive it and not change while it is used.
+class ValidScene {
+ public:
+  const Scene& operator*() const { return *scene_; }
+  const Scene* operator->() const { return scene_; }
+
+ private:
+  explicit ValidScene(const Scene& scene) : scene_(&scene) {}
+  friend ValidScene validated(const Scene& scene);
+  const Scene* scene_;
+};
+ValidScene validated(const Scene& scene);  // scene.validate(), then the proof of it
+
 struct InitialState {
   ModeAmplitudes f;  // current shape f_{l,m}(0)
   ModeAmplitudes g;  // stress-free shape g_{l,m}(0)
@@ -52,6 +68,7 @@ struct InitialState {
 // f_{2,m} = -sqrt(Delta/a_2) D^(2)_{m,0}(beta), f_{l,m} = +sqrt(delta_l/a_l) D^(l)_{m,0}(beta),
 // g likewise with Delta0 and the rest perturbations. Delta_2(0) = Delta, as in the paper.
 InitialState initial_state(const Scene& scene);
+InitialState initial_state(const ValidScene& scene);
 
 struct LevelChoice {
   ModelLevel level = ModelLevel::automatic;  // automatic only before a choice is made
@@ -73,5 +90,6 @@ struct SceneSystem {
   std::vector<std::string> warnings;
 };
 SceneSystem make_scene_system(const Scene& scene);
+SceneSystem make_scene_system(const ValidScene& scene);
 
 }  // namespace rbcstab

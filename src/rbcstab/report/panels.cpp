@@ -278,6 +278,11 @@ void PanelOptions::validate() const {
 }
 
 PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& panel, const ReportOptions& options) {
+  // The hooks draw other commands' data into a scene's report; a panel draws what it computes, in their place.
+  for (const std::string* hook : {&options.phase_diagram, &options.delta2_comparison, &options.bifurcation})
+    if (!hook->empty())
+      throw InvalidArgument("phase_diagram", "--phase-diagram, --delta2-comparison and --bifurcation draw data from "
+                                             "other commands into a scene report; a panel scene computes its own");
   panel.validate();
   options.validate();
   sf.scene.validate();

@@ -344,6 +344,12 @@ Scene reduced_scene(const Scene& s) {
   return r;
 }
 
+std::string executable_path() {
+  std::error_code ec;
+  const auto p = std::filesystem::read_symlink("/proc/self/exe", ec);
+  return ec ? std::string() : p.string();
+}
+
 AmplitudeSeries amplitudes_at(const SceneFile& sf, const std::vector<double>& times) {
   const Scene& s = sf.scene;
   s.validate();
@@ -551,6 +557,43 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
   });
   res.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return res;
+}
+
+ShapeExportRun export_shapes(const SceneFile& sf, const ShapeExportOptions& options, const std::string& flag) {
+  std::vector<double> times = options.times.empty() ? std::vector<double>{sf.scene.T} : options.times;
+  std::sort(times.begin(), times.end());
+  times.erase(std::unique(times.begin(), times.end()), times.end());
+  options.grid.validate();
+  const AmplitudeSeries series = amplitudes_at(sf, times);
+  ShapeExportRun out{{series.level.level, series.status, series.reason, {}}, {}};
+  for (std::size_t k = 0; k < series.t.size(); ++k) {
+    const ShapeGrid g = shape_on_grid(series.f[k], options.grid);
+    const SurfaceMesh mesh = surface_mesh(g);
+    std::ostringstream stem;
+    stem << options.stem;
+    if (times.size() > 1) stem << "_t" << series.t[k];
+    const std::string title = "rbcstab shape of scene " + sf.scene.name + " at t = " + format_value(series.t[k]);
+    for (const auto& f : options.formats) {
+      const std::string path = stem.str() + "." + f;
+      const std::string text = f == "vtk"   ? to_vtk_legacy(mesh, title)
+                               : f == "vtp" ? to_vtk_xml(mesh)
+                               : f == "ply" ? to_ply(mesh, title)
+                                            : to_csv(g);
+      out.files.push_back({path, text, flag});
+      out.result.files.push_back({series.t[k], path, g.rho_min, g.rho_max});
+    }
+  }
+  return out;
+}
+
+void draw_csv_figure(const std::string& script, const std::string& prefix, const std::string& title,
+                     const std::string& figure) {
+  check_python("/usr/bin/python3");
+  const std::string dir = find_script_dir("");
+  if (dir.empty()) throw ReportError("cannot find the plotting scripts (set RBCSTAB_DATA_DIR)");
+  const std::string log = prefix + ".plot.log";
+  if (run_process({"/usr/bin/python3", dir + "/" + script, prefix + ".csv", prefix + ".png", title}, log) != 0)
+    throw ReportError(figure + " failed: see " + log);
 }
 
 }  // namespace rbcstab

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "rbcstab/integrate/simulation.hpp"
+#include "rbcstab/io/files.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/report/shape.hpp"
 #include "rbcstab/verdict/shear_rate.hpp"
@@ -83,8 +84,26 @@ namespace detail {
 double oscillation_period(const std::vector<double>& t, const std::vector<double>& x);
 }  // namespace detail
 
+// `rbcstab shape`: the scene's shape at each time (sorted, repeats dropped; none: T) on the grid, in each format
+// (vtk, vtp, ply, csv) as STEM.<format>, or STEM_t<time>.<format> for several times. The files are returned for
+// the caller to write as one set (write_files_atomic; `flag` names the stem in its messages) with what they hold.
+struct ShapeExportOptions {
+  std::string stem;
+  std::vector<double> times;
+  std::vector<std::string> formats{"vtk"};
+  ShapeGridOptions grid;
+};
+struct ShapeExportRun {
+  ShapeExport result;
+  std::vector<OutputFile> files;
+};
+ShapeExportRun export_shapes(const SceneFile& scene, const ShapeExportOptions& options, const std::string& flag = "");
+
 // The drawing script of reports and bifurcation plots, in the folder find_script_dir gives.
 inline constexpr const char* kReportScript = "rbcstab_report.py";
+
+// The running program's path (/proc/self/exe; "" if unknown): an installed tool finds its data beside it.
+std::string executable_path();
 
 // Where rbcstab_report.py lives: $RBCSTAB_DATA_DIR[/python], then <exe>/../share/rbcstab/python
 // (installed), then the source tree this library was built from. Empty if none holds the script.
@@ -96,6 +115,10 @@ int run_process(const std::vector<std::string>& args, const std::string& log_pat
 
 // Throws ReportError with a remedy unless `python` runs and imports matplotlib (Agg backend).
 void check_python(const std::string& python);
+// A benchmark's figure PREFIX.png from PREFIX.csv by `script` (in the folder find_script_dir("") gives, run by
+// /usr/bin/python3, its output in PREFIX.plot.log). Throws ReportError ("<figure> failed: see <log>") when it fails.
+void draw_csv_figure(const std::string& script, const std::string& prefix, const std::string& title,
+                     const std::string& figure);
 
 // Runs the scene and writes the report. Bad input throws InvalidArgument; missing python,
 // failed plotting or unwritable output throw ReportError, leaving no partial folder. A failed

@@ -1,11 +1,13 @@
 #include "rbcstab/sweep/diagram_table.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
 #include <tuple>
 
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/core/text.hpp"
 
 namespace rbcstab {
 
@@ -79,6 +81,24 @@ DiagramSpec plane_spec(const SceneFile& scene, const PlaneChoice& c) {
   }
   spec.validate();
   return spec;
+}
+
+std::vector<long long> parse_counts(const std::vector<std::string>& texts, const std::string& name) {
+  std::vector<long long> out;
+  std::string given;
+  bool ok = true;
+  for (std::string text : texts) {
+    given += (given.empty() ? "" : " ") + text;
+    std::replace(text.begin(), text.end(), 'x', ',');
+    for (const std::string& item : comma_items(text)) {
+      const std::optional<long long> v = read_integer(item);
+      ok = ok && v && *v >= 1 && *v <= 1'000'000;
+      out.push_back(v.value_or(0));
+    }
+  }
+  if (!ok || out.size() != 2)
+    throw InvalidArgument(name, name + " = '" + given + "' must be two integers in [1, 1000000]: nx,ny or NxM");
+  return out;
 }
 
 }  // namespace rbcstab

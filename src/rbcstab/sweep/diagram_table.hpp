@@ -29,6 +29,10 @@ struct PlaneChoice {
   std::string classifier;                // auto | final | tail (a diagram's l_Delta rule)
   std::optional<double> alpha_fixed;     // >= 0: hold alpha = B/C at this value over the plane (0: off)
 };
+// A grid's counts as a user types them (`--counts` of diagram and report): "nx,ny", "NxM" or the two as separate
+// texts, each an integer in [1, 1000000]. Throws InvalidArgument(name, "<name> = '<texts>' must be two integers in
+// [1, 1000000]: nx,ny or NxM"), the texts joined by a space.
+std::vector<long long> parse_counts(const std::vector<std::string>& texts, const std::string& name);
 // diagram_spec(scene) with the choices applied, validated; InvalidArgument names the field (axes, x_range, ...).
 DiagramSpec plane_spec(const SceneFile& scene, const PlaneChoice& choice);
 

@@ -1,9 +1,12 @@
 #include "rbcstab/sweep/sweep_io.hpp"
 
+#include <iomanip>
 #include <sstream>
 
 #include "rbcstab/analysis/analysis_io.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/core/progress.hpp"
+#include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/sweep/diagram_document.hpp"
 #include "rbcstab/sweep/point_record.hpp"
@@ -176,6 +179,107 @@ nlohmann::json merge_brief_json(const MergeResult& m, std::size_t inputs, const 
           {"points", m.points.size()},
           {"missing", m.missing.size()},
           {"complete", m.missing.empty()}};
+}
+
+std::string threshold_precision_csv(const ThresholdPrecision& t) {
+  std::ostringstream csv;
+  csv << std::setprecision(12)
+      << "predictor,method,rtol,budget,ln_C,error,evaluations,rhs_evaluations,seconds,status\n";
+  for (const auto& r : t.rows)
+    csv << r.predictor << ',' << r.method << ',' << csv_number(r.rtol) << ',' << r.budget << ',' << csv_number(r.ln_C)
+        << ',' << csv_number(r.error) << ',' << r.evaluations << ',' << r.rhs_evaluations << ','
+        << csv_number(r.seconds) << ",\"" << r.status << "\"\n";
+  return csv.str();
+}
+
+nlohmann::json threshold_precision_json(const SceneFile& file, const ThresholdPrecisionOptions& options,
+                                        const ThresholdPrecision& t) {
+  nlohmann::json rows = nlohmann::json::array(), refs = nlohmann::json::array();
+  // A number is missing only with a status other than "ok", which says why.
+  auto why = [&](const std::string& status) {
+    return status == "ok" ? nonfinite_reason(file.scene.parameters) : status;
+  };
+  for (const auto& r : t.rows) {
+    nlohmann::json row{{"predictor", r.predictor}, {"method", r.method}, {"rtol", r.rtol}, {"budget", r.budget},
+                       {"evaluations", r.evaluations}, {"rhs_evaluations", r.rhs_evaluations}, {"seconds", r.seconds},
+                       {"status", r.status}};
+    put_number(row, "ln_C", r.ln_C, why(r.status));
+    std::string error_why = why(r.status);
+    for (const auto& ref : t.references)
+      if (ref.predictor == r.predictor && ref.status != "ok") error_why = "no reference: " + ref.status;
+    put_number(row, "error", r.error, error_why);
+    rows.push_back(row);
+  }
+  for (const auto& r : t.references) {
+    nlohmann::json ref{{"predictor", r.predictor}, {"status", r.status},
+                       {"rtol", r.predictor == "asymptotic" ? 0.0 : options.reference_rtol}};
+    put_number(ref, "ln_C", r.ln_C, why(r.status));
+    put_number(ref, "bracket", r.bracket, why(r.status));
+    refs.push_back(ref);
+  }
+  nlohmann::json j{{"scene", to_json(file.scene)}, {"B", t.B},
+                   {"ln_C_range", std::vector<double>{options.ln_C_lo, options.ln_C_hi}}, {"references", refs},
+                   {"rows", rows}};
+  put_truncation(j, file);
+  return j;
+}
+
+std::string threshold_precision_text(const SceneFile& file, const ThresholdPrecision& t) {
+  TextStream s;
+  s << std::setprecision(12) << "critical ln C at B = " << t.B << " (scene " << file.scene.name << ")\n";
+  for (const auto& r : t.references)
+    s << "  reference " << std::setw(15) << r.predictor << ": ln C = " << r.ln_C << " (bracket " << r.bracket << ")"
+      << (r.status == "ok" ? "" : "  " + r.status) << "\n";
+  s << std::setprecision(4) << std::setw(15) << "predictor" << std::setw(12) << "method" << std::setw(8) << "rtol"
+    << std::setw(8) << "budget" << std::setw(12) << "error" << std::setw(8) << "evals" << std::setw(12) << "RHS"
+    << std::setw(11) << "seconds\n";
+  for (const auto& r : t.rows)
+    s << std::setw(15) << r.predictor << std::setw(12) << r.method << std::setw(8) << r.rtol << std::setw(8)
+      << r.budget << std::setw(12) << r.error << std::setw(8) << r.evaluations << std::setw(12) << r.rhs_evaluations
+      << std::setw(11) << r.seconds << (r.status == "ok" ? "" : "  " + r.status) << "\n";
+  return s.str();
+}
+
+std::string progress_text(const Progress& p, bool detail) {
+  TextStream s;
+  s << "diagram " << p.done << "/" << p.total;
+  if (detail && p.resumed) s << " (" << p.resumed << " resumed)";
+  s << ", " << std::fixed << std::setprecision(1) << p.rate << " points/s";
+  if (detail) s << ", elapsed " << duration_text(p.elapsed);
+  s << ", ETA " << (p.rate > 0 ? duration_text(p.eta) : std::string("?"));
+  return s.str();
+}
+
+std::vector<std::string> trace_summary_lines(const TraceResult& t, const nlohmann::json& doc,
+                                             const std::string& prefix) {
+  TextStream s;
+  s << "traced " << t.curves.size() << " curve pieces, " << t.corners.size() << " corners, " << t.evaluations
+    << " criterion evaluations in " << t.seconds << " s; wrote " << prefix << ".csv and " << prefix << ".json";
+  std::vector<std::string> lines{s.str()};
+  for (const std::string& n : t.notes) lines.push_back("note: " + n);
+  if (doc.contains("agreement") && doc["agreement"].contains("predictors"))
+    for (const auto& a : doc["agreement"]["predictors"]) {
+      TextStream l;
+      l << "agreement of " << a["predictor"].get<std::string>() << ": verdict " << a["verdict_fraction"] << ", mode "
+        << a["mode_fraction"] << " over " << a["points"] << " points, disagreements beyond one grid step "
+        << a["beyond_one_grid_step"];
+      lines.push_back(l.str());
+    }
+  return lines;
+}
+
+std::string diagram_run_text(const DiagramRun& r, const std::string& prefix) {
+  TextStream s;
+  if (!r.complete) {
+    s << "interrupted after " << r.points.size() << " points (" << r.computed
+      << " computed in this run); finished points are in the journal: rerun the same command to resume";
+    return s.str();
+  }
+  const VerdictCounts counts = count_verdicts(r.points);
+  s << "diagram done: " << r.points.size() << " points (" << r.computed << " computed, " << r.resumed << " resumed) in "
+    << duration_text(r.seconds) << "; " << counts.unstable << " unstable, " << counts.failed << " failed; wrote "
+    << prefix << ".csv and " << prefix << ".json";
+  return s.str();
 }
 
 }  // namespace rbcstab

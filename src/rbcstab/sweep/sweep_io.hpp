@@ -11,6 +11,7 @@
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/diagram_document.hpp"
 #include "rbcstab/sweep/fig6e.hpp"
+#include "rbcstab/sweep/threshold_precision.hpp"
 #include "rbcstab/sweep/trace.hpp"
 
 namespace rbcstab {
@@ -29,6 +30,10 @@ nlohmann::json trace_json(const SceneFile& file, const DiagramSpec& plane, const
 // the document in messages. A document of another plane or not a diagram throws InvalidArgument("diagram", ...).
 nlohmann::json trace_agreement_json(const nlohmann::json& diagram_doc, const std::string& source,
                                     const DiagramSpec& plane, const TraceOptions& options, int threads);
+// What a trace says besides its files, one line each: the counts and seconds and the files written, its notes,
+// and every predictor's agreement when the document holds one.
+std::vector<std::string> trace_summary_lines(const TraceResult& t, const nlohmann::json& trace_doc,
+                                             const std::string& prefix);
 // What a trace wrote, from its document: files PREFIX.csv and PREFIX.json, pieces, corners, counts, agreement.
 nlohmann::json trace_brief_json(const nlohmann::json& trace_doc, const std::string& prefix);
 
@@ -46,7 +51,24 @@ nlohmann::json diagram_document(const SceneFile& file, const DiagramSpec& spec, 
                                 const std::optional<AgreementOptions>& agreement = AgreementOptions{});
 // What a diagram run wrote: files PREFIX.csv and PREFIX.json, point counts by verdict, hash, seconds, truncation.
 nlohmann::json diagram_brief_json(const SceneFile& file, const DiagramRun& r, const std::string& prefix);
+// The closing line of a diagram run: what it computed and wrote to PREFIX.csv and PREFIX.json, or when it was
+// stopped how far it got and how to resume.
+std::string diagram_run_text(const DiagramRun& r, const std::string& prefix);
 // What a merge of `inputs` shard files wrote.
 nlohmann::json merge_brief_json(const MergeResult& m, std::size_t inputs, const std::string& prefix);
+
+// The threshold-precision study (sweep/threshold_precision.hpp): one CSV row per located boundary (predictor,
+// method, rtol, budget, ln_C, error, evaluations, rhs_evaluations, seconds, status); the document {scene, B,
+// ln_C_range, references, rows, L, L_reason}, a missing number null with its reason (the row's status); the text:
+// the references, then one aligned line per row.
+std::string threshold_precision_csv(const ThresholdPrecision& t);
+nlohmann::json threshold_precision_json(const SceneFile& file, const ThresholdPrecisionOptions& options,
+                                        const ThresholdPrecision& t);
+std::string threshold_precision_text(const SceneFile& file, const ThresholdPrecision& t);
+
+// A diagram's progress line (the command line's diagram, report and paper): "diagram 12/64, 3.2 points/s, ETA
+// 15.0s"; with detail also the resumed points and the elapsed time ("diagram 12/64 (4 resumed), 3.2 points/s,
+// elapsed 2.5s, ETA 15.0s").
+std::string progress_text(const Progress& p, bool detail);
 
 }  // namespace rbcstab

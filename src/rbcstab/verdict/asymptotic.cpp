@@ -95,18 +95,22 @@ OrbitSigmaAverage orbit_sigma_average_at_B(const OrbitSigmaAverage& solved, cons
 }
 
 bool is_out_of_plane(const Scene& scene, const PredictorOptions& options) {
+  return is_out_of_plane(validated(scene), options);
+}
+
+bool is_out_of_plane(const ValidScene& scene, const PredictorOptions& options) {
   return stress_free_r0(scene) < options.out_of_plane_r0;
 }
 
 namespace {
 // flow_orbit: the orbit of the scene's flow if already solved (else solved here when needed).
-AsymptoticSigma asymptotic_sigma(const Scene& scene, const PredictorOptions& options, const OrbitAverageOptions& orbit,
-                                 const OrbitSigmaAverage* flow_orbit) {
-  scene.validate();
+AsymptoticSigma asymptotic_sigma(const ValidScene& valid, const PredictorOptions& options,
+                                 const OrbitAverageOptions& orbit, const OrbitSigmaAverage* flow_orbit) {
+  const Scene& scene = *valid;
   options.validate();
   orbit.validate();
   AsymptoticSigma out;
-  out.out_of_plane = is_out_of_plane(scene, options);
+  out.out_of_plane = is_out_of_plane(valid, options);
   if (out.out_of_plane) {
     out.equilibrium = out_of_plane_equilibrium(scene.parameters);
     if (out.equilibrium.stable) {
@@ -146,12 +150,17 @@ AsymptoticSigma asymptotic_sigma(const Scene& scene, const PredictorOptions& opt
 }  // namespace
 
 AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const PredictorOptions& options, const OrbitAverageOptions& orbit) {
+  return asymptotic_sigma(validated(scene), options, orbit, nullptr);
+}
+
+AsymptoticSigma asymptotic_sigma_R(const ValidScene& scene, const PredictorOptions& options,
+                                   const OrbitAverageOptions& orbit) {
   return asymptotic_sigma(scene, options, orbit, nullptr);
 }
 
 AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const OrbitSigmaAverage& flow_orbit,
                                    const PredictorOptions& options, const OrbitAverageOptions& orbit) {
-  return asymptotic_sigma(scene, options, orbit, &flow_orbit);
+  return asymptotic_sigma(validated(scene), options, orbit, &flow_orbit);
 }
 
 AsymptoticVerdict asymptotic_verdict(const Scene& scene, double sigma_R) {
@@ -184,8 +193,8 @@ AsymptoticSigmaMemo::AsymptoticSigmaMemo(const PredictorOptions& options, const 
 }
 
 AsymptoticSigma AsymptoticSigmaMemo::operator()(const Scene& scene) {
-  scene.validate();
-  if (!orbit_.enabled || is_out_of_plane(scene, options_)) return asymptotic_sigma_R(scene, options_, orbit_);
+  const ValidScene valid = validated(scene);
+  if (!orbit_.enabled || is_out_of_plane(valid, options_)) return asymptotic_sigma(valid, options_, orbit_, nullptr);
   const auto flow = ReducedTransient::flow(scene.parameters, scene.beta);
   const OrbitSigmaAverage* known = nullptr;
   {
@@ -193,13 +202,13 @@ AsymptoticSigma AsymptoticSigmaMemo::operator()(const Scene& scene) {
     const auto it = orbits_.find(flow);
     if (it != orbits_.end()) known = &it->second;
   }
-  if (known) return asymptotic_sigma_R(scene, *known, options_, orbit_);
+  if (known) return asymptotic_sigma(valid, options_, orbit_, known);
   const OrbitSigmaAverage solved = orbit_sigma_average(scene, orbit_);  // outside the lock: the slow part
   {
     const std::lock_guard lock(mutex_);
     orbits_.emplace(flow, solved);
   }
-  return asymptotic_sigma_R(scene, solved, options_, orbit_);
+  return asymptotic_sigma(valid, options_, orbit_, &solved);
 }
 
 std::size_t AsymptoticSigmaMemo::orbits_solved() const {

@@ -52,6 +52,7 @@ struct OrbitAverageOptions {
 // Out of plane: the stress-free l = 2 shape's r0 below options.out_of_plane_r0 (where the exact equilibrium
 // applies).
 bool is_out_of_plane(const Scene& scene, const PredictorOptions& options);
+bool is_out_of_plane(const ValidScene& scene, const PredictorOptions& options);
 
 struct AsymptoticSigma {
   double sigma_R = 0;
@@ -69,6 +70,8 @@ struct AsymptoticSigma {
 // Non-convergence is a status (outside_domain, reason), not an exception: the value would not be a property
 // of the attractor.
 AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const PredictorOptions& options = {},
+                                   const OrbitAverageOptions& orbit = {});
+AsymptoticSigma asymptotic_sigma_R(const ValidScene& scene, const PredictorOptions& options = {},
                                    const OrbitAverageOptions& orbit = {});
 
 // The periodic-orbit average alone (no fallback): status in the result.

@@ -96,23 +96,23 @@ ScenePrediction predict(const Scene& scene, const SimulationResult* simulated, c
 
 ScenePrediction predict(const Scene& scene, const ReducedTransient& transient, const SimulationResult* simulated,
                         const PredictorOptions& options, const OrbitAverageOptions& orbit) {
-  scene.validate();
+  const ValidScene valid = validated(scene);
   options.validate();
   if (!transient.of(scene) || transient.T != scene.T)
     throw InvalidArgument("transient", "the reduced transient must be the scene's over [0, T = " +
                                            format_value(scene.T) + "]");
   ScenePrediction out;
-  out.asymptotic_sigma = asymptotic_sigma_R(scene, options, orbit);
+  out.asymptotic_sigma = asymptotic_sigma_R(valid, options, orbit);
   const AsymptoticSigma& a = out.asymptotic_sigma;
   out.out_of_plane = a.out_of_plane;
   out.equilibrium = a.equilibrium;
   out.sigma_R_asymptotic = a.valid() ? Quantity::of(a.sigma_R) : Quantity::outside(a.reason);
   out.asymptotic_source = source_in_words(a, options);
   out.asymptotic = asymptotic_prediction(scene, a);
-  out.horizon = finite_horizon_growth(scene, transient);
+  out.horizon = finite_horizon_growth(valid, transient);
   out.finite_horizon = finite_horizon_prediction(scene, out.horizon);
   out.simulation = simulation_prediction(simulated);
-  out.regime = reduced_regime(scene, options);
+  out.regime = reduced_regime(valid, options);
   return out;
 }
 

@@ -6,6 +6,7 @@
 
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/core/text.hpp"
 #include "rbcstab/model/parameter_table.hpp"
 
 namespace rbcstab {
@@ -25,14 +26,12 @@ void ShearRateSearchOptions::validate() const {
 
 void set_search_range(ShearRateSearchOptions& options, std::string_view text, const std::string& name) {
   const std::string form = name + " = '" + std::string(text) + "' must be LO,HI: two shear rates 0 < LO < HI in 1/s";
-  const std::size_t comma = text.find(',');
-  if (comma == std::string_view::npos || text.find(',', comma + 1) != std::string_view::npos)
-    throw InvalidArgument(name, form);
+  const std::vector<std::string> parts = comma_items(std::string(text));
+  if (parts.size() != 2) throw InvalidArgument(name, form);
   double range[2] = {0, 0};
   for (int k = 0; k < 2; ++k) {
-    const std::string_view part = k == 0 ? text.substr(0, comma) : text.substr(comma + 1);
     try {
-      range[k] = parse_quantity(part, PhysicalUnit::per_second, name);
+      range[k] = parse_quantity(parts[std::size_t(k)], PhysicalUnit::per_second, name);
     } catch (const InvalidArgument& e) {
       throw InvalidArgument(name, form + " (" + e.what() + ")");
     }
@@ -124,6 +123,15 @@ ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const S
 std::vector<ShearRateThreshold> shear_rate_thresholds(const Scene& scene, const ShearRateSearchOptions& options) {
   return {shear_rate_threshold(scene, kOutOfPlaneBeta, options),
           shear_rate_threshold(scene, kPi / 2, options)};
+}
+
+ShearRateSearchOptions shear_rate_search(const Scene& scene, const std::string& text, const std::string& name) {
+  ShearRateSearchOptions search;
+  if (text.empty()) return search;
+  (void)physical_cell(scene, name);
+  set_search_range(search, text, name);
+  search.validate();
+  return search;
 }
 
 }  // namespace rbcstab

@@ -26,6 +26,9 @@ struct ShearRateSearchOptions {
 // "LO,HI" in 1/s, each with an optional unit as for the shear rate (parse_quantity: "10/s", "1e4Hz"), into
 // min_rate, max_rate. Throws InvalidArgument(name, "<name> = '<text>' ...") unless two quantities 0 < LO < HI.
 void set_search_range(ShearRateSearchOptions& options, std::string_view text, const std::string& name);
+// The search options a range's text gives ("": the defaults), for the scene; refused (InvalidArgument(name, ...))
+// on a scene that is not physical or for a malformed or empty range.
+ShearRateSearchOptions shear_rate_search(const Scene& scene, const std::string& text, const std::string& name);
 
 struct ShearRateThreshold {
   std::string orientation;  // "out_of_plane" (beta = 1e-3, the paper's OP) or "in_plane" (beta = pi/2)
