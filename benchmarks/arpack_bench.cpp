@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <vector>
 #include <numbers>
+#include <vector>
 
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/continuation/eigen_arpack.hpp"
@@ -157,7 +157,13 @@ void BM_Floquet(benchmark::State& state) {
   state.counters["steps"] = static_cast<double>(steps);
   state.counters["leading_abs_mu"] = lead;
 }
-BENCHMARK(BM_Floquet)->Args({6, 0})->Args({6, 1})->Args({12, 0})->Args({12, 1})->Args({20, 0})->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_Floquet)
+    ->Args({6, 0})
+    ->Args({6, 1})
+    ->Args({12, 0})
+    ->Args({12, 1})
+    ->Args({20, 0})
+    ->Unit(benchmark::kMillisecond);
 
 // One monodromy action Phi v (v a fixed pseudo-random unit vector) on the in-plane orbit, explicit
 // rk8pd vs the implicit rosenbrock variational integration, against the exact block-diagonal Phi
@@ -214,7 +220,8 @@ void BM_FloquetLeading(benchmark::State& state) {
   const Eigen::VectorXcd& e = r.arpack.eigenvalues;
   state.counters["n"] = static_cast<double>(full.dimension());
   state.counters["integrations"] = static_cast<double>(r.integrations);
-  state.counters["steps"] = static_cast<double>(r.counters.steps) / static_cast<double>(std::max<std::size_t>(1, r.integrations));
+  state.counters["steps"] =
+      static_cast<double>(r.counters.steps) / static_cast<double>(std::max<std::size_t>(1, r.integrations));
   state.counters["error"] = test::multiset_distance({e.data(), e.data() + e.size()}, exact);
 }
 BENCHMARK(BM_FloquetLeading)->Args({20, 10})->Args({30, 10})->Args({60, 8})->Iterations(1)->Unit(benchmark::kSecond);

@@ -7,10 +7,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "continuation/fig2_fixture.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/orbit.hpp"
-#include "continuation/fig2_fixture.hpp"
 
 namespace rbcstab {
 namespace {
@@ -23,7 +23,9 @@ class DifferencedBeta final : public ForcedSystem {
   explicit DifferencedBeta(const ReducedForcedSystem& s) : s_(s) {}
   Eigen::Index dimension() const override { return 3; }
   void rhs(double t, std::span<const double> x, double p, std::span<double> f) const override { s_.rhs(t, x, p, f); }
-  void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const override { s_.jacobian(t, x, p, J); }
+  void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const override {
+    s_.jacobian(t, x, p, J);
+  }
   bool conserves_norm() const override { return true; }
   std::string parameter_name() const override { return "beta"; }
 

@@ -6,10 +6,10 @@
 
 #include <cmath>
 
+#include "continuation/fig2_fixture.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"
 #include "rbcstab/continuation/orbit.hpp"
-#include "continuation/fig2_fixture.hpp"
 
 namespace rbcstab {
 namespace {

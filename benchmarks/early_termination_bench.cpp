@@ -9,16 +9,16 @@
 #include <benchmark/benchmark.h>
 
 #include <chrono>
-#include <ctime>
 #include <cmath>
+#include <ctime>
 #include <functional>
 #include <string>
 #include <thread>
 #include <vector>
 
+#include "integrate/rk8pd_fixtures.hpp"
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/core/error.hpp"
-#include "integrate/rk8pd_fixtures.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram.hpp"
@@ -38,8 +38,8 @@ double cpu_since(std::clock_t start) { return double(std::clock() - start) / CLO
 
 // range(0): the panel (kPanels), range(1): points per axis, range(2): threads.
 void BM_PanelEarlyVsFull(benchmark::State& state) {
-  const rbcstab::SceneFile sf = rbcstab::load_scene(std::string(RBCSTAB_SCENES_DIR) + "/" +
-                                                    kPanels[state.range(0)] + ".toml");
+  const rbcstab::SceneFile sf =
+      rbcstab::load_scene(std::string(RBCSTAB_SCENES_DIR) + "/" + kPanels[state.range(0)] + ".toml");
   rbcstab::DiagramSpec spec = rbcstab::diagram_spec(sf);
   spec.x.count = spec.y.count = int(state.range(1));
   rbcstab::DiagramOptions o;
@@ -94,8 +94,8 @@ struct AgreementPanel {
   std::vector<rbcstab::PointResult> points;
 };
 AgreementPanel agreement_panel(const benchmark::State& state) {
-  AgreementPanel p{rbcstab::load_scene(std::string(RBCSTAB_SCENES_DIR) + "/" + kPanels[state.range(0)] + ".toml"), {},
-                   {}};
+  AgreementPanel p{
+      rbcstab::load_scene(std::string(RBCSTAB_SCENES_DIR) + "/" + kPanels[state.range(0)] + ".toml"), {}, {}};
   p.spec = rbcstab::diagram_spec(p.sf);
   p.spec.x.count = p.spec.y.count = int(state.range(1));
   p.points.resize(p.spec.size());
@@ -250,8 +250,8 @@ void BM_UncertifiedRunFloor(benchmark::State& state) {
   const std::vector<double> grid = {sf.scene.T};
   const rbcstab::IntegratorOptions& io = sf.options.integrator;
   std::vector<double> times, states;
-  const rbcstab::IntegrationResult probe = rbcstab::integrate(
-      sys, sys.initial_state(), 0.0, grid, io, {}, [&](double t, std::span<const double> y) {
+  const rbcstab::IntegrationResult probe =
+      rbcstab::integrate(sys, sys.initial_state(), 0.0, grid, io, {}, [&](double t, std::span<const double> y) {
         times.push_back(t);
         states.insert(states.end(), y.begin(), y.end());
       });

@@ -10,10 +10,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "continuation/full_fixtures.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "continuation/full_fixtures.hpp"
 
 namespace rbcstab {
 namespace {
@@ -37,7 +37,8 @@ void BM_FullEllipsoidalBranchLambda(benchmark::State& state) {
   }
   state.counters["n"] = static_cast<double>(pr.dimension());
   state.counters["points_per_second"] = benchmark::Counter(static_cast<double>(points), benchmark::Counter::kIsRate);
-  state.counters["newton_per_point"] = static_cast<double>(newton) / static_cast<double>(std::max<std::size_t>(points, 1));
+  state.counters["newton_per_point"] =
+      static_cast<double>(newton) / static_cast<double>(std::max<std::size_t>(points, 1));
   state.counters["max_error_vs_closed_form"] = err;
 }
 BENCHMARK(BM_FullEllipsoidalBranchLambda)->Arg(4)->Arg(8)->Arg(12)->Unit(benchmark::kMillisecond);

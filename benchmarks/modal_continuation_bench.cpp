@@ -6,12 +6,12 @@
 
 #include <cmath>
 
+#include "continuation/modal_fixtures.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/continuation/branch_switch.hpp"
 #include "rbcstab/continuation/complementarity.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "continuation/modal_fixtures.hpp"
 
 namespace rbcstab {
 namespace {
@@ -37,7 +37,8 @@ void BM_ModalEllipsoidalBranchAndBPs(benchmark::State& state) {
       if (sp.type != SpecialPointType::BP) continue;
       ++bps;
       const int l = critical_mode(pr, sp.x, sp.p);
-      err = std::max(err, std::abs(sp.p - modal_fixtures::threshold_root(s.parameters, ContinuationParameter::C, l, sp.p_lo - 1e-3, sp.p_hi + 1e-3)));
+      err = std::max(err, std::abs(sp.p - modal_fixtures::threshold_root(s.parameters, ContinuationParameter::C, l,
+                                                                         sp.p_lo - 1e-3, sp.p_hi + 1e-3)));
     }
     state.ResumeTiming();
   }
@@ -92,7 +93,8 @@ void BM_IpoptSurvivingModes(benchmark::State& state) {
     iterations = r.iterations;
     l = r.surviving.empty() ? 2 : r.surviving.front();
     state.PauseTiming();
-    err = l == 2 ? std::abs(r.Delta_l[0] - s.parameters.Delta) : std::abs(r.Delta_l[0] - modal_fixtures::exact_post_state(s.parameters, l).Delta2);
+    err = l == 2 ? std::abs(r.Delta_l[0] - s.parameters.Delta)
+                 : std::abs(r.Delta_l[0] - modal_fixtures::exact_post_state(s.parameters, l).Delta2);
     state.ResumeTiming();
   }
   state.counters["ipopt_iterations"] = iterations;

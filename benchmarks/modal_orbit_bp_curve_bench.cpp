@@ -10,12 +10,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "continuation/ellipsoidal_orbit_bp_fixture.hpp"
 #include "rbcstab/continuation/branch_point_curve.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/modal_orbit_bp_curve.hpp"
 #include "rbcstab/continuation/orbit_two_parameter.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
-#include "continuation/ellipsoidal_orbit_bp_fixture.hpp"
 
 namespace {
 

@@ -6,10 +6,10 @@
 #include <algorithm>
 #include <cmath>
 
+#include "continuation/ns_fixtures.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/ns_curve.hpp"
 #include "rbcstab/continuation/orbit_two_parameter.hpp"
-#include "continuation/ns_fixtures.hpp"
 
 namespace {
 

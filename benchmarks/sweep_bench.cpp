@@ -103,7 +103,8 @@ void BM_InPlaneSigma(benchmark::State& state) {
   double worst = 0;
   if (orbit)
     for (const auto& s : scenes) {
-      const double a = rbcstab::asymptotic_sigma_R(s, po, oo).sigma_R, b = rbcstab::asymptotic_sigma_R(s, po, off).sigma_R;
+      const double a = rbcstab::asymptotic_sigma_R(s, po, oo).sigma_R,
+                   b = rbcstab::asymptotic_sigma_R(s, po, off).sigma_R;
       worst = std::max(worst, std::abs(a - b) / (1 + std::abs(b)));
     }
   state.counters["evaluations_per_s"] = benchmark::Counter(double(evaluations), benchmark::Counter::kIsRate);

@@ -5,9 +5,9 @@
 //     the same scene (its text is written canonically: "0.301" as "0.30099999999999999");
 //   - writing is a fixed point: that JSON parses back (parse_branch_file accepts what save_branch writes) to a run
 //     with the very same JSON.
+#include "rbcstab/continuation/branch_file.hpp"
 #include "fuzz_check.hpp"
 #include "json_compare.hpp"
-#include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/scene_file.hpp"
 
@@ -16,9 +16,18 @@ using namespace rbcstab::fuzz;
 
 namespace {
 // Written for readers of the file, derived from the spec, the curve system or the spectrum; never read back.
-const std::set<std::string> kDerived{"beta",        "free_parameter",  "kind",          "level",
-                                     "parameters",  "segments",        "curve.type",    "curve.parameters",
-                                     "curve.start", "curve.one_parameter_points", ".trivial_multiplier", ".critical",
+const std::set<std::string> kDerived{"beta",
+                                     "free_parameter",
+                                     "kind",
+                                     "level",
+                                     "parameters",
+                                     "segments",
+                                     "curve.type",
+                                     "curve.parameters",
+                                     "curve.start",
+                                     "curve.one_parameter_points",
+                                     ".trivial_multiplier",
+                                     ".critical",
                                      "spec.scene"};
 
 // The scene of a scene file's text, written canonically (without the run options, which a branch does not keep).

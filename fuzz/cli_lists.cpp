@@ -62,7 +62,8 @@ template <class Parse>
 void name(const std::string& text, const std::vector<std::string>& names, Parse parse, const char* what) {
   const bool listed = std::find(names.begin(), names.end(), text) != names.end();
   const bool ok = accepted([&] { (void)parse(text); });
-  expect(ok == listed, std::string(what) + " '" + text + (ok ? "' is accepted but not listed" : "' is listed but refused"));
+  expect(ok == listed,
+         std::string(what) + " '" + text + (ok ? "' is accepted but not listed" : "' is listed but refused"));
 }
 }  // namespace
 
@@ -70,10 +71,18 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0 || size > 4096) return 0;
   const std::string text = text_of(data + 1, size - 1);
   switch (data[0] % 4) {
-    case 0: shard(text); break;
-    case 1: measures(text); break;
-    case 2: name(text, axis_names(), axis_from_string, "axis"); break;
-    default: name(text, enum_names<Classifier>(), classifier_from_string, "classifier"); break;
+    case 0:
+      shard(text);
+      break;
+    case 1:
+      measures(text);
+      break;
+    case 2:
+      name(text, axis_names(), axis_from_string, "axis");
+      break;
+    default:
+      name(text, enum_names<Classifier>(), classifier_from_string, "classifier");
+      break;
   }
   return 0;
 }

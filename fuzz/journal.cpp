@@ -32,7 +32,8 @@ struct Config {
 };
 
 std::string scratch_folder() {
-  const char* base = access("/dev/shm", W_OK) == 0 ? "/dev/shm" : (std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "/tmp");
+  const char* base =
+      access("/dev/shm", W_OK) == 0 ? "/dev/shm" : (std::getenv("TMPDIR") ? std::getenv("TMPDIR") : "/tmp");
   std::string templ = std::string(base) + "/rbcstab-fuzz-journal-XXXXXX";
   if (!mkdtemp(templ.data())) fail("cannot create a scratch folder in " + std::string(base));
   return templ;
@@ -107,7 +108,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   DiagramRun first;
   const bool ok = accepted([&] { first = resume(c); });
   const std::vector<std::string> left = entries(c.dir);
-  expect(left.size() == 1 && left[0] == "fuzz.journal", "a run leaves " + std::to_string(left.size()) + " files in its folder");
+  expect(left.size() == 1 && left[0] == "fuzz.journal",
+         "a run leaves " + std::to_string(left.size()) + " files in its folder");
   if (!ok) return 0;
 
   // What the records say, by parse_point_line alone: lines after the header line (none if the header is torn).
@@ -120,13 +122,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     pos = eol == std::string::npos ? content.size() : eol + 1;
     ++lines;
     const ParsedPoint r = parse_point_line(line, c.hash, c.spec, c.file.scene.L);
-    if (r.point) ++times[r.point->index];
-    else ++refused;
+    if (r.point)
+      ++times[r.point->index];
+    else
+      ++refused;
   }
   std::size_t once = 0, repeats = 0;  // a point's first record is dropped silently, every repeat is reported
   for (const auto& [idx, n] : times) {
-    if (n == 1) ++once;
-    else repeats += std::size_t(n - 1);
+    if (n == 1)
+      ++once;
+    else
+      repeats += std::size_t(n - 1);
   }
 
   expect(first.complete && first.points.size() == c.spec.size(), "a resumed run did not finish the grid");
@@ -138,9 +144,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   expect(first.resumed == once, "resumed " + std::to_string(first.resumed) + " points, the journal holds " +
                                     std::to_string(once) + " valid records of distinct points");
   expect(first.resumed + first.computed == c.spec.size(), "resumed + computed is not the grid's size");
-  expect(first.rejected.size() == refused + repeats,
-         "rejected " + std::to_string(first.rejected.size()) + " records of " + std::to_string(lines) + ", expected " +
-             std::to_string(refused + repeats));
+  expect(first.rejected.size() == refused + repeats, "rejected " + std::to_string(first.rejected.size()) +
+                                                         " records of " + std::to_string(lines) + ", expected " +
+                                                         std::to_string(refused + repeats));
 
   const DiagramRun second = resume(c);
   expect(second.resumed == c.spec.size() && second.computed == 0 && second.rejected.empty(),

@@ -12,9 +12,12 @@ inline std::string pattern_of(const std::string& path) {
   std::string out;
   bool in_index = false;
   for (char c : path) {
-    if (c == '[') in_index = true, out += "[]";
-    else if (c == ']') in_index = false;
-    else if (!in_index) out += c;
+    if (c == '[')
+      in_index = true, out += "[]";
+    else if (c == ']')
+      in_index = false;
+    else if (!in_index)
+      out += c;
   }
   return out;
 }
@@ -49,7 +52,8 @@ inline std::string first_difference(const nlohmann::json& written, const nlohman
   if (written.is_array()) {
     if (!given.is_array() || given.size() != written.size()) return path + " (length)";
     for (std::size_t k = 0; k < written.size(); ++k)
-      if (std::string d = first_difference(written[k], given[k], derived, path + "[" + std::to_string(k) + "]"); !d.empty())
+      if (std::string d = first_difference(written[k], given[k], derived, path + "[" + std::to_string(k) + "]");
+          !d.empty())
         return d;
     return "";
   }

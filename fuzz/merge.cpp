@@ -1,6 +1,7 @@
 // Diagram outputs read back (sweep/diagram_document.hpp merge_diagrams: `rbcstab merge` of shard files). The input
 // is one or more diagram JSON documents separated by a line "----". An accepted merge must
-//   - hold a header with a valid scene_toml (what `rbcstab merge` reads for the agreement), a spec that validates and points in increasing index order, each inside the grid and passing
+//   - hold a header with a valid scene_toml (what `rbcstab merge` reads for the agreement), a spec that validates and
+//   points in increasing index order, each inside the grid and passing
 //     point_value_error for the modes of the header's scene, with the grid's axis values;
 //   - list as missing exactly the grid indices no point holds;
 //   - keep every point value as its input gave it: each input point, written back from the merged point of its
@@ -52,7 +53,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   expect(accepted([&] { m.spec.validate(); }), "a merge holds a spec that does not validate");
   // `rbcstab merge` reads the header's scene (the agreement of a complete merge): it must be there and valid.
   int L = 0;
-  expect(m.header.contains("scene_toml") && m.header.at("scene_toml").is_string(), "a merge accepted a header without scene_toml");
+  expect(m.header.contains("scene_toml") && m.header.at("scene_toml").is_string(),
+         "a merge accepted a header without scene_toml");
   expect(accepted([&] { L = parse_scene(m.header.at("scene_toml").get<std::string>()).scene.L; }),
          "a merge accepted a header whose scene_toml parse_scene refuses");
   std::vector<bool> held(m.spec.size(), false);
@@ -75,7 +77,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const nlohmann::json doc = nlohmann::json::parse(in.text);
     for (const nlohmann::json& given : doc.at("points")) {
       const std::size_t index = given.at("index").get<std::size_t>();
-      const auto p = std::find_if(m.points.begin(), m.points.end(), [&](const PointResult& q) { return q.index == index; });
+      const auto p =
+          std::find_if(m.points.begin(), m.points.end(), [&](const PointResult& q) { return q.index == index; });
       expect(p != m.points.end(), in.name + ": point " + std::to_string(index) + " is not in the merge");
       const nlohmann::json written = diagram_json(m.header, m.spec, {*p}, {}, {false}).at("points").at(0);
       const std::string differs = first_difference(written, given, {"i", "j", "x", "y"});
@@ -87,13 +90,17 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   (void)diagram_csv(m.spec, m.points, oo);
   const std::string doc = diagram_json(m.header, m.spec, m.points, {}, oo).dump(1);
   MergeResult back;
-  expect(accepted([&] { back = merge_diagrams(std::vector<MergeInput>{{"merged.json", doc}}); }),
+  expect(accepted([&] {
+           back = merge_diagrams(std::vector<MergeInput>{{"merged.json", doc}});
+         }),
          "a merged diagram JSON does not merge back");
-  expect(back.points.size() == m.points.size() && back.missing == m.missing, "a merged diagram merges back to other points");
+  expect(back.points.size() == m.points.size() && back.missing == m.missing,
+         "a merged diagram merges back to other points");
   for (std::size_t k = 0; k < m.points.size(); ++k) {
     PointResult expected = m.points[k];
     if (!m.seconds_present) expected.seconds = 0;  // not written: reads back as the default
-    expect(same_point(back.points[k], expected), "point " + std::to_string(expected.index) + " changes when its merge is merged again");
+    expect(same_point(back.points[k], expected),
+           "point " + std::to_string(expected.index) + " changes when its merge is merged again");
   }
   return 0;
 }

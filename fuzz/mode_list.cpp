@@ -47,8 +47,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
       expect(long(int(l)) == l && it != modes.end() && same(it->second, v),
              "parse_modes read the piece '" + piece + "' as something else");
     }
-  expect(pieces == modes.size(), "parse_modes gives " + std::to_string(modes.size()) + " modes for " +
-                                     std::to_string(pieces) + " pieces");
+  expect(pieces == modes.size(),
+         "parse_modes gives " + std::to_string(modes.size()) + " modes for " + std::to_string(pieces) + " pieces");
 
   std::string written;
   for (const auto& [l, v] : modes) {
@@ -58,7 +58,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   std::map<int, double> back;
   expect(accepted([&] { back = parse_modes({written}, flag); }), "the modes written as '" + written + "' are refused");
   expect(back.size() == modes.size(), "'" + written + "' parses back to another number of modes");
-  for (const auto& [l, v] : modes) expect(back.count(l) && same(back.at(l), v), "'" + written + "' does not round-trip");
+  for (const auto& [l, v] : modes)
+    expect(back.count(l) && same(back.at(l), v), "'" + written + "' does not round-trip");
 
   for (const SceneKey* k : scene_flags()) {
     if (k->kind != ValueKind::modes) continue;

@@ -21,8 +21,8 @@ inline std::string slurp(const std::filesystem::path& path) {
 // An empty folder <TempDir>/rbcstab_<prefix>_<name>_<pid>: per process, since ctest runs each test in its own
 // process, possibly in parallel.
 inline std::filesystem::path fresh_dir(const std::string& prefix, const std::string& name) {
-  const std::filesystem::path d = std::filesystem::path(::testing::TempDir()) /
-                                  ("rbcstab_" + prefix + "_" + name + "_" + std::to_string(getpid()));
+  const std::filesystem::path d =
+      std::filesystem::path(::testing::TempDir()) / ("rbcstab_" + prefix + "_" + name + "_" + std::to_string(getpid()));
   std::filesystem::remove_all(d);
   std::filesystem::create_directories(d);
   return d;

@@ -112,8 +112,11 @@ std::string parse_error_message(CLI::App& app, const CLI::ParseError& e) {
   const int lo = std::max(o->get_items_expected_min(), 1), hi = std::max(o->get_items_expected_max(), 1);
   const int n = int(given.size());
   if (n > hi && hi == 1)
-    return name + ": given " + std::to_string(n) + " times (" + quoted_values(given) + "): must be given once" + accepts;
-  const std::string wanted = lo == hi ? count_text(lo) : n < lo ? "at least " + count_text(lo) : "at most " + count_text(hi);
+    return name + ": given " + std::to_string(n) + " times (" + quoted_values(given) + "): must be given once" +
+           accepts;
+  const std::string wanted = lo == hi ? count_text(lo)
+                             : n < lo ? "at least " + count_text(lo)
+                                      : "at most " + count_text(hi);
   return name + ": " + count_text(n) + " given (" + quoted_values(given) + "): takes " + wanted + accepts;
 }
 

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "commands.hpp"
+#include "progress.hpp"
 #include "rbcstab/analysis/analysis_io.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
@@ -19,7 +20,6 @@
 #include "rbcstab/io/work_precision_io.hpp"
 #include "rbcstab/report/report.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
-#include "progress.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -30,8 +30,8 @@ struct BenchOptions {
   SceneOptions scene;
   std::string output = "out/bench";
   std::vector<std::string> levels{"modal", "full"}, steppers{"rk8pd", "rkck", "rosenbrock", "msbdf"};
-  WorkPrecisionOptions work_precision;  // --rtols, --max-seconds
-  TruncationConvergenceOptions truncation;    // --Ls
+  WorkPrecisionOptions work_precision;      // --rtols, --max-seconds
+  TruncationConvergenceOptions truncation;  // --Ls
   std::vector<double> ln_C_range{-5.5, 2.0};
   bool json = false;
   bool plot = true;
@@ -84,14 +84,15 @@ int run_truncation(const BenchOptions& o, const SceneFile& sf) {
   write_study(o, sf, "truncation", csv, j);
   std::cout << (o.json ? j.dump(2) + "\n" : csv);
   if (t.reference_ok()) return kOk;
-  std::cerr << "rbcstab: the truncation reference (L = " << t.reference().L << ") failed: "
-            << row_reason(t.reference().status, t.reference().reason, sf.scene.parameters) << "\n";
+  std::cerr << "rbcstab: the truncation reference (L = " << t.reference().L
+            << ") failed: " << row_reason(t.reference().status, t.reference().reason, sf.scene.parameters) << "\n";
   return kRunFailed;
 }
 
 int run_threshold(const BenchOptions& o, const SceneFile& sf) {
   if (o.ln_C_range.size() != 2)
-    throw InvalidArgument("--lnC-range", "--lnC-range takes two numbers (lo hi), got " + std::to_string(o.ln_C_range.size()));
+    throw InvalidArgument("--lnC-range",
+                          "--lnC-range takes two numbers (lo hi), got " + std::to_string(o.ln_C_range.size()));
   if (!(o.ln_C_range[0] < o.ln_C_range[1]))
     throw InvalidArgument("--lnC-range", "--lnC-range = " + format_value(o.ln_C_range[0]) + " " +
                                              format_value(o.ln_C_range[1]) + ": needs lo < hi (finite)");
@@ -130,8 +131,12 @@ Runner add_bench(CLI::App& app) {
       ->capture_default_str();
   o->scene.add_to(app);
   app.add_option("--output", o->output, "folder for the CSV, JSON and PNG")->capture_default_str();
-  app.add_option("--levels", o->levels, "model levels to compare (work-precision)")->delimiter(',')->capture_default_str();
-  app.add_option("--steppers", o->steppers, "steppers to compare (work-precision)")->delimiter(',')->capture_default_str();
+  app.add_option("--levels", o->levels, "model levels to compare (work-precision)")
+      ->delimiter(',')
+      ->capture_default_str();
+  app.add_option("--steppers", o->steppers, "steppers to compare (work-precision)")
+      ->delimiter(',')
+      ->capture_default_str();
   app.add_option("--rtols", o->work_precision.rtols, "tolerances (work-precision), each in [1e-14, 0.1]")
       ->delimiter(',')
       ->capture_default_str();
@@ -150,8 +155,8 @@ Runner add_bench(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-const RegisterCommand kRegisterBench{"bench", "Speed against accuracy: work-precision, truncation in L, threshold precision",
-                                add_bench, 80};
+const RegisterCommand kRegisterBench{
+    "bench", "Speed against accuracy: work-precision, truncation in L, threshold precision", add_bench, 80};
 }  // namespace
 
 }  // namespace rbcstab::cli

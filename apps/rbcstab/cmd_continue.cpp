@@ -9,12 +9,12 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
+#include "progress.hpp"
 #include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
-#include "progress.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -46,8 +46,8 @@ struct ContinueOptions {
   int label = 0, switch_at = 0;
   // Flags a restart takes from the command line only when given (else from the file).
   ProgressOutput progress;
-  CLI::Option *o_kind{}, *o_parameter{}, *o_min{}, *o_max{}, *o_direction{}, *o_step{}, *o_max_step{},
-      *o_max_points{}, *o_label_every{}, *o_segments{}, *o_relax_T{}, *o_label{}, *o_switch_at{};
+  CLI::Option *o_kind{}, *o_parameter{}, *o_min{}, *o_max{}, *o_direction{}, *o_step{}, *o_max_step{}, *o_max_points{},
+      *o_label_every{}, *o_segments{}, *o_relax_T{}, *o_label{}, *o_switch_at{};
 };
 
 // The continuation parameters' names, from the parameter table.
@@ -62,7 +62,8 @@ std::string parameter_names() {
 void print(const ContinueOptions& o, const std::string& L_reason, const ContinuationRun& r) {
   const std::string csv = o.csv.empty() ? "" : to_csv(r);
   const std::string file = o.save.empty() ? "" : branch_file_json(r).dump(1) + "\n";
-  const std::string out = o.json ? to_json(r, L_reason).dump(2) + "\n" : to_text(r, TableOptions::from_list(o.measures));
+  const std::string out =
+      o.json ? to_json(r, L_reason).dump(2) + "\n" : to_text(r, TableOptions::from_list(o.measures));
   std::vector<OutputFile> files;
   if (!o.csv.empty()) files.push_back({o.csv, csv, "--csv"});
   if (!o.save.empty()) files.push_back({o.save, file, "--save"});
@@ -140,11 +141,12 @@ Runner add_continue(CLI::App& app) {
   auto o = std::make_shared<ContinueOptions>();
   o->scene.add_to(app);
   o->o_kind = app.add_option("--kind", o->kind,
-                              "what to continue: equilibrium (reduced system), modal, full (L <= 16: stress-free l >= 3 "
-                              "content), orbit (in-plane reduced orbits) or modal-orbit (docs/continuation.md)")
+                             "what to continue: equilibrium (reduced system), modal, full (L <= 16: stress-free l >= 3 "
+                             "content), orbit (in-plane reduced orbits) or modal-orbit (docs/continuation.md)")
                   ->capture_default_str();
-  o->o_segments =
-      app.add_option("--segments", o->orbit.segments, "orbit: number of multiple-shooting segments, an integer in [1, 1000]")->capture_default_str();
+  o->o_segments = app.add_option("--segments", o->orbit.segments,
+                                 "orbit: number of multiple-shooting segments, an integer in [1, 1000]")
+                      ->capture_default_str();
   app.add_flag("--switch-at-bp", o->switch_at_bp,
                "equilibrium, modal, full, modal-orbit: also continue the branch that bifurcates at the first BP met "
                "from the start in the continuation direction (--direction both: the BP nearest the start in "
@@ -153,53 +155,68 @@ Runner add_continue(CLI::App& app) {
   app.add_flag("--allow-unstable-start", o->allow_unstable_start,
                "orbit, modal-orbit: continue even when the orbit found at the start is unstable (by default that is "
                "refused with exit 1: the scene does not relax to it)");
-  o->o_parameter = app.add_option("--parameter", o->parameter, "free parameter: " + parameter_names() +
-                                                                    " (beta: the rest shape's orientation, [0, pi])")
-                      ->capture_default_str();
-  o->o_min = app.add_option("--min", o->p_min,
-                 "lower bound of the free parameter (the branch ends there exactly; default: none, 0 for lambda and beta)")
-                 ->check(number_text("within the parameter's domain"));
-  o->o_max = app.add_option("--max", o->p_max, "upper bound of the free parameter (the branch ends there exactly; default: none, pi for beta)")
-                 ->check(number_text("within the parameter's domain"));
+  o->o_parameter =
+      app.add_option("--parameter", o->parameter,
+                     "free parameter: " + parameter_names() + " (beta: the rest shape's orientation, [0, pi])")
+          ->capture_default_str();
+  o->o_min =
+      app.add_option(
+             "--min", o->p_min,
+             "lower bound of the free parameter (the branch ends there exactly; default: none, 0 for lambda and beta)")
+          ->check(number_text("within the parameter's domain"));
+  o->o_max =
+      app.add_option("--max", o->p_max,
+                     "upper bound of the free parameter (the branch ends there exactly; default: none, pi for beta)")
+          ->check(number_text("within the parameter's domain"));
   o->o_direction = app.add_option("--direction", o->direction, "forward (parameter increasing), backward or both")
-      ->check(CLI::IsMember({"forward", "backward", "both"}))
-      ->capture_default_str();
-  o->o_step = app.add_option("--step", o->engine.initial_step, "first arclength step, > 0")->check(positive())->capture_default_str();
-  o->o_max_step = app.add_option("--max-step", o->engine.max_step, "largest arclength step, > 0")->check(positive())->capture_default_str();
-  o->o_max_points = app.add_option("--max-points", o->engine.max_points,
-                                   "points per direction, an integer in [2, 100000000]")
-                        ->check(integer_in(2, 100000000))
-                        ->capture_default_str();
-  o->o_relax_T = app.add_option("--relax-T", o->relax_T,
-                 "relaxation time that gives the start state from the scene's shape, > 0 (orbits: rounded up to a "
-                 "multiple of 2 pi)")
-      ->check(positive())
-      ->capture_default_str();
-  app.add_option("--curve", o->curve,
-                 "continue the curve of a special point of the one-parameter branch in (--parameter, --parameter2): "
-                 "LP, BP, HB (equilibrium, modal, full; modal BP: the symmetry-breaking curve Upsilon_l(sigma) = 0) or LPC, "
-                 "PD, NS, BP (orbit, modal-orbit; BP: the generic BP system over the shooting problem, e.g. the "
-                 "modal orbit's symmetry-breaking BPs) or UZ (orbit, modal-orbit: the swinging <-> tumbling "
-                 "transition, the orbit passing through r = 0, as a curve); default: none (one-parameter run)")
+                       ->check(CLI::IsMember({"forward", "backward", "both"}))
+                       ->capture_default_str();
+  o->o_step = app.add_option("--step", o->engine.initial_step, "first arclength step, > 0")
+                  ->check(positive())
+                  ->capture_default_str();
+  o->o_max_step = app.add_option("--max-step", o->engine.max_step, "largest arclength step, > 0")
+                      ->check(positive())
+                      ->capture_default_str();
+  o->o_max_points =
+      app.add_option("--max-points", o->engine.max_points, "points per direction, an integer in [2, 100000000]")
+          ->check(integer_in(2, 100000000))
+          ->capture_default_str();
+  o->o_relax_T =
+      app.add_option("--relax-T", o->relax_T,
+                     "relaxation time that gives the start state from the scene's shape, > 0 (orbits: rounded up to a "
+                     "multiple of 2 pi)")
+          ->check(positive())
+          ->capture_default_str();
+  app.add_option(
+         "--curve", o->curve,
+         "continue the curve of a special point of the one-parameter branch in (--parameter, --parameter2): "
+         "LP, BP, HB (equilibrium, modal, full; modal BP: the symmetry-breaking curve Upsilon_l(sigma) = 0) or LPC, "
+         "PD, NS, BP (orbit, modal-orbit; BP: the generic BP system over the shooting problem, e.g. the "
+         "modal orbit's symmetry-breaking BPs) or UZ (orbit, modal-orbit: the swinging <-> tumbling "
+         "transition, the orbit passing through r = 0, as a curve); default: none (one-parameter run)")
       ->check(CLI::IsMember({"LP", "BP", "HB", "LPC", "PD", "NS", "UZ"}));
   app.add_option("--parameter2", o->parameter2,
                  "--curve: second free parameter (" + parameter_names() + "), independent of --parameter");
-  app.add_option("--min2", o->p2_min, "--curve: lower bound of --parameter2 (the curve ends there exactly; default: none)")
+  app.add_option("--min2", o->p2_min,
+                 "--curve: lower bound of --parameter2 (the curve ends there exactly; default: none)")
       ->check(number_text("within --parameter2's domain"));
-  app.add_option("--max2", o->p2_max, "--curve: upper bound of --parameter2 (the curve ends there exactly; default: none)")
+  app.add_option("--max2", o->p2_max,
+                 "--curve: upper bound of --parameter2 (the curve ends there exactly; default: none)")
       ->check(number_text("within --parameter2's domain"));
-  app.add_option("--point", o->point, "--curve: start from the K-th located special point of that type, an integer in [1, 1000000]")
+  app.add_option("--point", o->point,
+                 "--curve: start from the K-th located special point of that type, an integer in [1, 1000000]")
       ->check(integer_in(1, 1000000))
       ->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object (branch, special_points) on stdout");
   app.add_option("--csv", o->csv, "write the branch as CSV to this file");
   app.add_option("--save", o->save,
                  "write a branch file (the JSON plus every point's state and what a restart needs) to this file");
-  o->o_label_every = app.add_option("--label-every", o->label_every,
-                                    "label every N-th point of a branch (AUTO's NPR), an integer in [0, 100000000]; special points "
-                                    "and the two ends are always labelled")
-                         ->check(integer_in(0, 100000000))
-                         ->capture_default_str();
+  o->o_label_every =
+      app.add_option("--label-every", o->label_every,
+                     "label every N-th point of a branch (AUTO's NPR), an integer in [0, 100000000]; special points "
+                     "and the two ends are always labelled")
+          ->check(integer_in(0, 100000000))
+          ->capture_default_str();
   app.add_option("--measures", o->measures,
                  "text output: the measures of the labelled-point table, comma-separated (e.g. r,Psi,sigma); "
                  "default: r, Psi, sigma, Delta_2, omega, sigma_bar, mode, r_min, r_max, kind as the branch has them");
@@ -216,8 +233,12 @@ Runner add_continue(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-const RegisterCommand kRegisterContinue{"continue", "Continue an equilibrium or periodic-orbit branch in one parameter (LP/BP/HB, LPC/PD/NS), or a special point's curve in two",
-                                add_continue, 40, {{"initial_step", "--step"}, {"p_min", "--min"}, {"p_max", "--max"}}};
+const RegisterCommand kRegisterContinue{"continue",
+                                        "Continue an equilibrium or periodic-orbit branch in one parameter (LP/BP/HB, "
+                                        "LPC/PD/NS), or a special point's curve in two",
+                                        add_continue,
+                                        40,
+                                        {{"initial_step", "--step"}, {"p_min", "--min"}, {"p_max", "--max"}}};
 }  // namespace
 
 }  // namespace rbcstab::cli

@@ -10,8 +10,8 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/sweep/diagram.hpp"
-#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/diagram_document.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/mpi.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
 #include "scene_options.hpp"
@@ -40,11 +40,13 @@ int run(const DiagramCliOptions& o) {
   ro.dynamic_schedule = o.schedule == "dynamic";
   ro.shard = shard_from_string(o.shard);
   if (mpi.size() > 1) {
-    if (ro.shard.n > 1) throw InvalidArgument("--shard", "--shard cannot be combined with mpirun (ranks already split the grid)");
+    if (ro.shard.n > 1)
+      throw InvalidArgument("--shard", "--shard cannot be combined with mpirun (ranks already split the grid)");
     ro.shard = Shard{mpi.rank(), mpi.size()};
   }
   ro.sync_interval = o.sync_interval;
-  const std::string suffix = ro.shard.n > 1 ? ".shard" + std::to_string(ro.shard.k) + "of" + std::to_string(ro.shard.n) : "";
+  const std::string suffix =
+      ro.shard.n > 1 ? ".shard" + std::to_string(ro.shard.k) + "of" + std::to_string(ro.shard.n) : "";
   const std::string prefix = mpi.size() > 1 ? o.out : o.out + suffix;
   if (!o.no_journal) ro.journal = (o.journal.empty() ? o.out : o.journal) + suffix + ".journal";
   const bool show = !o.quiet && mpi.rank() == 0;
@@ -83,7 +85,8 @@ Runner add_diagram(CLI::App& app) {
   app.add_option("--schedule", o->schedule, "point scheduling over threads")
       ->check(CLI::IsMember({"dynamic", "static"}))
       ->capture_default_str();
-  app.add_option("--shard", o->shard, "k/n with 0 <= k < n: compute only the points with index % n == k (job arrays; then rbcstab merge)")
+  app.add_option("--shard", o->shard,
+                 "k/n with 0 <= k < n: compute only the points with index % n == k (job arrays; then rbcstab merge)")
       ->capture_default_str();
   app.add_option("--out", o->out, "output prefix: PREFIX.csv, PREFIX.json (shards: PREFIX.shardKofN.*)")
       ->check(output_name())
@@ -91,8 +94,10 @@ Runner add_diagram(CLI::App& app) {
   app.add_option("--journal", o->journal, "checkpoint journal prefix (default: the output prefix; file PREFIX.journal)")
       ->check(output_name());
   app.add_flag("--no-journal", o->no_journal, "no checkpoint journal (no resume)");
-  app.add_option("--sync-interval", o->sync_interval, "fdatasync the journal at most this often [s], >= 0")->capture_default_str();
-  app.add_flag("--no-seconds", o->no_seconds, "omit per-point wall-clock seconds: outputs identical byte for byte across runs");
+  app.add_option("--sync-interval", o->sync_interval, "fdatasync the journal at most this often [s], >= 0")
+      ->capture_default_str();
+  app.add_flag("--no-seconds", o->no_seconds,
+               "omit per-point wall-clock seconds: outputs identical byte for byte across runs");
   app.add_flag("--quiet", o->quiet, "no progress and no closing summary on stderr");
   o->progress.add_flags(app, &o->quiet);
   app.add_flag("--no-finite-horizon-agreement", o->no_finite_horizon_agreement,
@@ -101,7 +106,8 @@ Runner add_diagram(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-const RegisterCommand kRegisterDiagram{"diagram", "Phase diagram by direct simulation over two parameter axes", add_diagram, 40};
+const RegisterCommand kRegisterDiagram{"diagram", "Phase diagram by direct simulation over two parameter axes",
+                                       add_diagram, 40};
 }  // namespace
 
 }  // namespace rbcstab::cli

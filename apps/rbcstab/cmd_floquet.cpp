@@ -45,12 +45,14 @@ int run(const FloquetOptions& o) {
 Runner add_floquet(CLI::App& app) {
   auto o = std::make_shared<FloquetOptions>();
   o->scene.add_to(app);
-  app.add_option("--relax-periods", o->floquet.relax_periods,
-                 "forcing periods simulated at the scene's level before the monodromy, an integer in [0, 1000000] (default 30)");
+  app.add_option(
+      "--relax-periods", o->floquet.relax_periods,
+      "forcing periods simulated at the scene's level before the monodromy, an integer in [0, 1000000] (default 30)");
   app.add_option("--max-periodicity-defect", o->floquet.max_periodicity_defect,
                  "largest periodicity defect |y(t0+T) - y(t0)|/|y(t0)| of the relaxed state accepted as an orbit "
                  "> 0 (default 1e-6; larger: exit 1 without multipliers; inf: any state)");
-  app.add_option("--k", o->floquet.arpack.k, "number of leading multipliers, an integer in [1, n - 2] with n the state dimension (default 12)");
+  app.add_option("--k", o->floquet.arpack.k,
+                 "number of leading multipliers, an integer in [1, n - 2] with n the state dimension (default 12)");
   app.add_option("--arpack-tol", o->floquet.arpack.tol, "ARPACK's relative Ritz tolerance, in [0, 1) (default 1e-10)");
   app.add_option("--implicit-from-L", o->floquet.monodromy.implicit_from_L,
                  "use the rosenbrock variational integration for L >= this, an integer >= 0 (default 40; 0: never)");
@@ -59,7 +61,7 @@ Runner add_floquet(CLI::App& app) {
 }
 
 const RegisterCommand kRegisterFloquet{"floquet", "Leading Floquet multipliers of the full model along a scene's orbit",
-                                add_floquet, 33};
+                                       add_floquet, 33};
 }  // namespace
 
 }  // namespace rbcstab::cli

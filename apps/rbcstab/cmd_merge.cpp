@@ -48,7 +48,9 @@ Runner add_merge(CLI::App& app) {
   app.add_option("inputs", o->inputs, "diagram JSON files of the shards (PREFIX.shardKofN.json)")
       ->required()
       ->check(CLI::ExistingFile);
-  app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")->check(output_name())->capture_default_str();
+  app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")
+      ->check(output_name())
+      ->capture_default_str();
   app.add_flag("--allow-incomplete", o->allow_incomplete, "write the merge even if points are missing (exit 1)");
   app.add_flag("--json", o->json, "print one JSON object on stdout (output files, points, missing)");
   return [o] { return run(*o); };

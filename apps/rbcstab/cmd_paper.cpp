@@ -47,11 +47,13 @@ int run(PaperCliOptions& o) {
 Runner add_paper(CLI::App& app) {
   auto o = std::make_shared<PaperCliOptions>();
   PaperOptions& p = o->paper;
-  app.add_option("--output,-o", p.output, "folder to create (index.html, the figures, their data); its parent must exist")
+  app.add_option("--output,-o", p.output,
+                 "folder to create (index.html, the figures, their data); its parent must exist")
       ->required();
   app.add_flag("--overwrite", p.overwrite, "replace an existing output folder (swapped in whole at the end)");
   app.add_flag("--quick", p.quick, "coarse grids: 12 x 12 phase diagrams and a 3 x 2 Fig. 6e grid per lambda");
-  app.add_option("--threads", p.threads, "worker threads for the runs and diagram points, integer in [0, 4096] (0: all cores)")
+  app.add_option("--threads", p.threads,
+                 "worker threads for the runs and diagram points, integer in [0, 4096] (0: all cores)")
       ->check(integer_in(0, 4096))
       ->capture_default_str();
   app.add_option("--python", p.python, "python3 interpreter with matplotlib (Debian python3-matplotlib)")
@@ -64,13 +66,14 @@ Runner add_paper(CLI::App& app) {
   app.add_flag("--quiet", o->quiet, "no progress on stderr");
   o->progress.add_flags(app, &o->quiet);
   app.add_flag("--json", o->json, "print one JSON object (counts, failed claims) on stdout");
-  app.footer("Exit codes: 0 ok (failed claims are reported, not an error), 1 a run stopped early or interrupted, "
-             "2 invalid input, 3 output error (python3/matplotlib missing, plotting failed: nothing is left behind).");
+  app.footer(
+      "Exit codes: 0 ok (failed claims are reported, not an error), 1 a run stopped early or interrupted, "
+      "2 invalid input, 3 output error (python3/matplotlib missing, plotting failed: nothing is left behind).");
   return [o] { return run(*o); };
 }
 
-const RegisterCommand kRegisterPaper{"paper", "Compute and draw every figure of the paper with its claims checked (one HTML page)",
-                                add_paper, 61};
+const RegisterCommand kRegisterPaper{
+    "paper", "Compute and draw every figure of the paper with its claims checked (one HTML page)", add_paper, 61};
 }  // namespace
 
 }  // namespace rbcstab::cli

@@ -37,7 +37,8 @@ Runner add_plot(CLI::App& app) {
                  "branch JSONs (`rbcstab continue --json > F.json` or a --save branch file), drawn overlaid; "
                  "a switched branch in a file is drawn as its own series")
       ->required();
-  app.add_option("--output,-o", o->draw.output, "the PNG to write; the JSON of what was drawn goes beside it (fig.json)")
+  app.add_option("--output,-o", o->draw.output,
+                 "the PNG to write; the JSON of what was drawn goes beside it (fig.json)")
       ->required();
   app.add_option("--x", o->plot.x,
                  "x axis: a parameter or measure of every file (default: the free parameter; a two-parameter "
@@ -56,14 +57,15 @@ Runner add_plot(CLI::App& app) {
   app.add_option("--data-dir", o->draw.script_dir,
                  "folder holding rbcstab_report.py (default: $RBCSTAB_DATA_DIR, <prefix>/share/rbcstab/python)");
   app.add_flag("--json", o->json, "print one JSON object (files, axes, series) on stdout");
-  app.footer("Stable parts solid, unstable dashed, uncertain dotted; special points marked with their type and "
-             "label (BP 3). Exit codes: 0 ok, 2 invalid input (unknown --x/--y, a file that is not a branch JSON: "
-             "nothing written), 3 output error (python3/matplotlib missing, plotting failed). docs/plot.md.");
+  app.footer(
+      "Stable parts solid, unstable dashed, uncertain dotted; special points marked with their type and "
+      "label (BP 3). Exit codes: 0 ok, 2 invalid input (unknown --x/--y, a file that is not a branch JSON: "
+      "nothing written), 3 output error (python3/matplotlib missing, plotting failed). docs/plot.md.");
   return [o] { return run(*o); };
 }
 
-const RegisterCommand kRegisterPlot{"plot", "Draw a bifurcation diagram (PNG + JSON of what was drawn) from branch JSONs of `continue`",
-                                add_plot, 45};
+const RegisterCommand kRegisterPlot{
+    "plot", "Draw a bifurcation diagram (PNG + JSON of what was drawn) from branch JSONs of `continue`", add_plot, 45};
 }  // namespace
 
 }  // namespace rbcstab::cli

@@ -5,10 +5,10 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
-#include "rbcstab/analysis/analysis_io.hpp"
-#include "rbcstab/sweep/sweep_io.hpp"
-#include "rbcstab/report/panels.hpp"
 #include "progress.hpp"
+#include "rbcstab/analysis/analysis_io.hpp"
+#include "rbcstab/report/panels.hpp"
+#include "rbcstab/sweep/sweep_io.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -68,7 +68,8 @@ Runner add_post(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-const RegisterCommand kRegisterPost{"post", "Post-instability excess area Delta~2: predicted (Eq. ss) vs simulated", add_post, 31};
+const RegisterCommand kRegisterPost{"post", "Post-instability excess area Delta~2: predicted (Eq. ss) vs simulated",
+                                    add_post, 31};
 }  // namespace
 
 }  // namespace rbcstab::cli

@@ -4,11 +4,11 @@
 
 #include "checks.hpp"
 #include "commands.hpp"
+#include "progress.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/report/report.hpp"
 #include "rbcstab/report/report_io.hpp"
-#include "progress.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -22,7 +22,7 @@ struct ReportCliOptions {
   bool json = false;
   PanelOptions panel;
   std::vector<std::string> counts;  // checks.hpp counts_of
-  std::string shear_rate_range;  // LO,HI (1/s): the threshold search of a physical scene
+  std::string shear_rate_range;     // LO,HI (1/s): the threshold search of a physical scene
   bool quiet = false;
   ProgressOutput progress;
 };
@@ -77,7 +77,8 @@ Runner add_report(CLI::App& app) {
   auto o = std::make_shared<ReportCliOptions>();
   o->scene.add_to(app);
   ReportOptions& r = o->report;
-  app.add_option("--output,-o", r.output, "report folder to create (index.html, README.md, figures, data); its parent must exist")
+  app.add_option("--output,-o", r.output,
+                 "report folder to create (index.html, README.md, figures, data); its parent must exist")
       ->required();
   app.add_flag("--overwrite", r.overwrite, "replace an existing output folder (swapped in whole at the end)");
   add_shear_rate_range(app, o->shear_rate_range);
@@ -95,7 +96,8 @@ Runner add_report(CLI::App& app) {
                  "polar grid points n_theta of the exported and rendered shape (n_phi = 2 n_theta), in [2, 4096]")
       ->check(integer_in(2, 4096))
       ->capture_default_str();
-  app.add_flag("--no-reduced", o->no_reduced, "skip the reduced-system companion run (Fig. 2 r, Psi from the l = 2 block only)");
+  app.add_flag("--no-reduced", o->no_reduced,
+               "skip the reduced-system companion run (Fig. 2 r, Psi from the l = 2 block only)");
   app.add_option("--phase-diagram", r.phase_diagram,
                  "also draw this phase-diagram CSV (x, y, l_Delta; overlay curves from the .json beside it)");
   app.add_option("--delta2-comparison", r.delta2_comparison,
@@ -125,13 +127,15 @@ Runner add_report(CLI::App& app) {
   app.add_flag("--quiet", o->quiet, "no progress on stderr");
   o->progress.add_flags(app, &o->quiet);
   app.add_flag("--json", o->json, "print one JSON object (files, summaries) on stdout");
-  app.footer("Exit codes: 0 ok, 1 a run stopped early (report still written), 2 invalid input, 3 output error "
-             "(python3/matplotlib missing, plotting failed, folder not writable: nothing is left behind).");
+  app.footer(
+      "Exit codes: 0 ok, 1 a run stopped early (report still written), 2 invalid input, 3 output error "
+      "(python3/matplotlib missing, plotting failed, folder not writable: nothing is left behind).");
   return [o] { return run(*o); };
 }
 
-const RegisterCommand kRegisterReport{"report", "Run a scene (or a figure panel: [diagram], [fig6e], [continuation]) and write a report folder",
-                                add_report, 60};
+const RegisterCommand kRegisterReport{
+    "report", "Run a scene (or a figure panel: [diagram], [fig6e], [continuation]) and write a report folder",
+    add_report, 60};
 }  // namespace
 
 }  // namespace rbcstab::cli

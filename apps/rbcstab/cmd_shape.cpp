@@ -57,8 +57,8 @@ Runner add_shape(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-const RegisterCommand kRegisterShape{"shape", "Write the cell's 3-D shape rho(theta, phi) at chosen times (VTK, VTP, PLY, CSV)",
-                                add_shape, 61};
+const RegisterCommand kRegisterShape{
+    "shape", "Write the cell's 3-D shape rho(theta, phi) at chosen times (VTK, VTP, PLY, CSV)", add_shape, 61};
 }  // namespace
 
 }  // namespace rbcstab::cli

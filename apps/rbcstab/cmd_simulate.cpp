@@ -3,10 +3,10 @@
 #include <memory>
 
 #include "commands.hpp"
+#include "progress.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/simulation_io.hpp"
-#include "progress.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
 #include "scene_options.hpp"
 
@@ -42,12 +42,14 @@ Runner add_simulate(CLI::App& app) {
   auto o = std::make_shared<SimulateOptions>();
   o->scene.add_to(app);
   app.add_flag("--json", o->json, "print one JSON object on stdout");
-  app.add_option("--trajectory", o->trajectory, "write t, Delta_2..Delta_L, sigma, r, Psi on the sampling grid to this CSV");
+  app.add_option("--trajectory", o->trajectory,
+                 "write t, Delta_2..Delta_L, sigma, r, Psi on the sampling grid to this CSV");
   o->progress.add_flags(app);
   return [o] { return run(*o); };
 }
 
-const RegisterCommand kRegisterSimulate{"simulate", "Integrate a scene and report the excess-area redistribution", add_simulate, 20};
+const RegisterCommand kRegisterSimulate{"simulate", "Integrate a scene and report the excess-area redistribution",
+                                        add_simulate, 20};
 }  // namespace
 
 }  // namespace rbcstab::cli

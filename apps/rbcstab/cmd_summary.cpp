@@ -3,8 +3,8 @@
 #include <memory>
 
 #include "commands.hpp"
-#include "rbcstab/verdict/verdict_io.hpp"
 #include "progress.hpp"
+#include "rbcstab/verdict/verdict_io.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {
@@ -38,7 +38,8 @@ Runner add_summary(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-const RegisterCommand kRegisterSummary{"summary", "The main job: a readable summary of a scene (default: the paper's Fig. 3 case)", add_summary, 10};
+const RegisterCommand kRegisterSummary{
+    "summary", "The main job: a readable summary of a scene (default: the paper's Fig. 3 case)", add_summary, 10};
 }  // namespace
 
 }  // namespace rbcstab::cli

@@ -35,8 +35,8 @@ Runner add_thresholds(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-const RegisterCommand kRegisterThresholds{"thresholds", "Instability thresholds and predicted unstable modes of a scene (no simulation)",
-                                add_thresholds, 30};
+const RegisterCommand kRegisterThresholds{
+    "thresholds", "Instability thresholds and predicted unstable modes of a scene (no simulation)", add_thresholds, 30};
 }  // namespace
 
 }  // namespace rbcstab::cli

@@ -71,23 +71,28 @@ Runner add_trace(CLI::App& app) {
                  "interior lines (x fixed) searched for starting points besides the edges, integer in [0, 10000]")
       ->check(integer_in(0, 10000))
       ->capture_default_str();
-  app.add_option("--samples", o->trace.samples, "brackets per edge or line when searching for starts, integer in [2, 1000000]")
+  app.add_option("--samples", o->trace.samples,
+                 "brackets per edge or line when searching for starts, integer in [2, 1000000]")
       ->check(integer_in(2, 1000000))
       ->capture_default_str();
   app.add_option("--max-step", o->trace.max_step, "continuation step cap in the unit square (curve resolution), > 0")
       ->capture_default_str();
-  app.add_option("--threads", o->threads, "threads for the per-point predictor verdicts of --diagram, integer in [0, 4096] (0: all cores)")
+  app.add_option("--threads", o->threads,
+                 "threads for the per-point predictor verdicts of --diagram, integer in [0, 4096] (0: all cores)")
       ->check(integer_in(0, 4096))
       ->capture_default_str();
   app.add_option("--diagram", o->diagram, "diagram JSON of the same plane: measure the criterion's agreement")
       ->check(CLI::ExistingFile);
-  app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")->check(output_name())->capture_default_str();
+  app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")
+      ->check(output_name())
+      ->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object on stdout (output files, pieces, corners, agreement)");
   o->progress.add_flags(app);
   return [o] { return run(*o); };
 }
 
-const RegisterCommand kRegisterTrace{"trace", "Trace the stability boundary of a parameter plane as curves", add_trace, 42};
+const RegisterCommand kRegisterTrace{"trace", "Trace the stability boundary of a parameter plane as curves", add_trace,
+                                     42};
 }  // namespace
 
 }  // namespace rbcstab::cli

@@ -49,10 +49,11 @@ Runner add_units(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-const RegisterCommand kRegisterUnits{"units",
-                                "Physical units (shear rate, viscosities, moduli, size) to the paper's dimensionless "
-                                "numbers and back",
-                                add_units, 95};
+const RegisterCommand kRegisterUnits{
+    "units",
+    "Physical units (shear rate, viscosities, moduli, size) to the paper's dimensionless "
+    "numbers and back",
+    add_units, 95};
 }  // namespace
 
 }  // namespace rbcstab::cli

@@ -10,11 +10,11 @@
 namespace rbcstab::cli {
 
 // What a runner returns: the exit codes of the rbcstab tool (docs/cli.md).
-constexpr int kOk = 0;              // done, every run succeeded
-constexpr int kRunFailed = 1;       // input valid, but a computation ended with a failure status
-constexpr int kInvalidInput = 2;    // bad flag, scene key or value: nothing was computed or written
-constexpr int kOutputError = 3;     // an output file could not be written
-constexpr int kInternalError = 4;   // a bug: please report
+constexpr int kOk = 0;             // done, every run succeeded
+constexpr int kRunFailed = 1;      // input valid, but a computation ended with a failure status
+constexpr int kInvalidInput = 2;   // bad flag, scene key or value: nothing was computed or written
+constexpr int kOutputError = 3;    // an output file could not be written
+constexpr int kInternalError = 4;  // a bug: please report
 
 using Runner = std::function<int()>;
 using CommandFactory = Runner (*)(CLI::App&);

@@ -42,16 +42,23 @@ void SceneOptions::add_to(CLI::App& app) {
         if (!k->names.empty()) o->check(CLI::IsMember(k->names));
         if (k->kind == ValueKind::text) o->check(non_empty_text(k->help));
         break;
-      case ValueKind::modes: o = app.add_option(k->flag, modes_[path], k->help); break;
-      case ValueKind::boolean: o = app.add_flag(k->flag, booleans_[path], k->help); break;
-      case ValueKind::quantity: o = app.add_option(k->unit_flag, names_[path], k->help)->type_name("QUANTITY"); break;
+      case ValueKind::modes:
+        o = app.add_option(k->flag, modes_[path], k->help);
+        break;
+      case ValueKind::boolean:
+        o = app.add_flag(k->flag, booleans_[path], k->help);
+        break;
+      case ValueKind::quantity:
+        o = app.add_option(k->unit_flag, names_[path], k->help)->type_name("QUANTITY");
+        break;
     }
     if (k->kind != ValueKind::modes && k->kind != ValueKind::boolean && k->kind != ValueKind::quantity)
       o->capture_default_str();
     flags_.push_back({k, o});
   }
-  full_horizon_option_ = app.add_flag("--full-horizon", full_horizon_,
-                                      "integrate every run to T: no certified early termination (scene key run.full_horizon)");
+  full_horizon_option_ =
+      app.add_flag("--full-horizon", full_horizon_,
+                   "integrate every run to T: no certified early termination (scene key run.full_horizon)");
 }
 
 SceneFile SceneOptions::read() const {
@@ -61,13 +68,25 @@ SceneFile SceneOptions::read() const {
     if (flag.option->count() == 0) continue;
     const std::string path = flag.key->path();
     switch (flag.key->kind) {
-      case ValueKind::number: apply_flag(f, *flag.key, numbers_.at(path)); break;
-      case ValueKind::integer: apply_flag(f, *flag.key, integers_.at(path)); break;
+      case ValueKind::number:
+        apply_flag(f, *flag.key, numbers_.at(path));
+        break;
+      case ValueKind::integer:
+        apply_flag(f, *flag.key, integers_.at(path));
+        break;
       case ValueKind::name:
-      case ValueKind::text: apply_flag(f, *flag.key, names_.at(path)); break;
-      case ValueKind::modes: apply_flag(f, *flag.key, parse_modes(modes_.at(path), flag.key->flag)); break;
-      case ValueKind::boolean: apply_flag(f, *flag.key, booleans_.at(path)); break;
-      case ValueKind::quantity: apply_unit_flag(f, *flag.key, names_.at(path)); break;
+      case ValueKind::text:
+        apply_flag(f, *flag.key, names_.at(path));
+        break;
+      case ValueKind::modes:
+        apply_flag(f, *flag.key, parse_modes(modes_.at(path), flag.key->flag));
+        break;
+      case ValueKind::boolean:
+        apply_flag(f, *flag.key, booleans_.at(path));
+        break;
+      case ValueKind::quantity:
+        apply_unit_flag(f, *flag.key, names_.at(path));
+        break;
     }
   }
   if (full_horizon_option_ && full_horizon_option_->count() > 0)
@@ -95,7 +114,8 @@ void add_shear_rate_range(CLI::App& app, std::string& text) {
   const ShearRateSearchOptions defaults;
   app.add_option("--shear-rate-range", text,
                  "LO,HI: the shear rates [1/s] searched for the thresholds of a physical scene (units as for "
-                 "--shear-rate; default " + format_value(defaults.min_rate) + "," + format_value(defaults.max_rate) + ")");
+                 "--shear-rate; default " +
+                     format_value(defaults.min_rate) + "," + format_value(defaults.max_rate) + ")");
 }
 
 }  // namespace rbcstab::cli

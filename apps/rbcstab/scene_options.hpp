@@ -60,8 +60,9 @@ struct PlaneFlags {
     std::string names;
     for (const std::string& n : axis_names()) names += (names.empty() ? "" : " ") + n;
     const DiagramSpec d;
-    app.add_option("--axes", axes, "two axes x,y from " + names + " (default: the scene's [diagram] or " +
-                                       to_string(d.x.axis) + "," + to_string(d.y.axis) + ")")
+    app.add_option("--axes", axes,
+                   "two axes x,y from " + names + " (default: the scene's [diagram] or " + to_string(d.x.axis) + "," +
+                       to_string(d.y.axis) + ")")
         ->check(each_item({}, "two axis names x,y"));
     auto range = [&](const std::string& flag, std::vector<std::string>& values, const std::string& axis,
                      const std::string& fallback) {

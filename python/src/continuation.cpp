@@ -214,8 +214,7 @@ Run curve_py(const Run& from, int label, const std::optional<std::string>& type,
   if (!type && (t.empty() || t == "EP"))
     throw InvalidArgument("label", "label " + std::to_string(label) +
                                        " is not a special point: a curve starts from an LP, BP, HB, LPC, PD, NS or UZ");
-  return restart_from(from, {label, 0, curve_spec(t, parameter2, p2_min, p2_max), {}}, options, progress,
-                      "curve");
+  return restart_from(from, {label, 0, curve_spec(t, parameter2, p2_min, p2_max), {}}, options, progress, "curve");
 }
 
 Run load_py(const std::string& path) {
@@ -272,7 +271,8 @@ py::dict columns(const Run& r, const std::string& role) {
   const std::size_t n = pts.size();
   py::dict out;
   const auto& names = m->branch.parameter_names;
-  for (std::size_t i = 0; i < names.size(); ++i) out[py::str(names[i])] = doubles(n, [&](std::size_t k) { return pts[k].parameters[i]; });
+  for (std::size_t i = 0; i < names.size(); ++i)
+    out[py::str(names[i])] = doubles(n, [&](std::size_t k) { return pts[k].parameters[i]; });
   for (std::size_t i = 0; i < m->measure_names.size(); ++i) {
     const py::str name(m->measure_names[i]);
     const MeasureValue first = n ? m->point_measures[0][i] : MeasureValue(0.0);
@@ -298,7 +298,8 @@ py::dict columns(const Run& r, const std::string& role) {
   auto w = spectrum.mutable_unchecked<2>();
   for (std::size_t k = 0; k < n; ++k)
     for (Eigen::Index i = 0; i < dim; ++i)
-      w(static_cast<py::ssize_t>(k), i) = i < pts[k].spectrum.size() ? pts[k].spectrum[i] : std::complex<double>(NAN, NAN);
+      w(static_cast<py::ssize_t>(k), i) =
+          i < pts[k].spectrum.size() ? pts[k].spectrum[i] : std::complex<double>(NAN, NAN);
   out[py::str(spectrum_key(m->spectrum_kind))] = spectrum;
   return out;
 }
@@ -326,19 +327,22 @@ py::object plot_spec_py(const std::vector<const Run*>& runs, const std::vector<s
 
 void bind_continuation(py::module_& m) {
   py::class_<Run> run(m, "_Run", "A continuation run (rbcstab.Branch wraps it).");
-  run.def("json", [](const Run& r) { return to_python(to_json(r.run, r.L_reason)); },
-          "The run as `rbcstab continue --json` prints it.");
+  run.def(
+      "json", [](const Run& r) { return to_python(to_json(r.run, r.L_reason)); },
+      "The run as `rbcstab continue --json` prints it.");
   run.def("columns", &columns, py::arg("role") = "branch",
           "The points of a part ('branch', 'switched', 'one_parameter') as named numpy columns.");
   run.def("has_part", [](const Run& r, const std::string& role) { return part_of(r.run, role) != nullptr; });
-  run.def("csv", [](const Run& r) { return to_csv(r.run); }, "The run as `rbcstab continue --csv` writes it.");
+  run.def(
+      "csv", [](const Run& r) { return to_csv(r.run); }, "The run as `rbcstab continue --csv` writes it.");
   run.def(
       "save_csv", [](const Run& r, const std::string& path) { write_file_atomic(path, to_csv(r.run)); },
       py::arg("path"), "Writes csv() to path, atomically (`rbcstab continue --csv`).");
   run.def(
       "text",
       [](const Run& r, const std::vector<std::string>& measures) { return to_text(r.run, TableOptions{measures}); },
-      py::arg("measures") = std::vector<std::string>{}, "The CLI's text: the summary and the table of labelled points.");
+      py::arg("measures") = std::vector<std::string>{},
+      "The CLI's text: the summary and the table of labelled points.");
   run.def(
       "save", [](const Run& r, const std::string& path) { save_branch(path, r.run); }, py::arg("path"),
       "Writes the CLI's branch file (`rbcstab continue --save`), atomically.");
@@ -346,13 +350,13 @@ void bind_continuation(py::module_& m) {
     const RunOutcome o = outcome(r.run);
     return py::make_tuple(o.has_output, o.note, o.failure);
   });
-  run.def("label_type", [](const Run& r, int label) { return find_label(r.run, label).type; }, py::arg("label"),
-          "The type of a labelled point ('' or 'EP': a regular point); ValueError listing the labels if none.");
-  run.def(py::pickle(
-      [](const Run& r) { return py::make_tuple(branch_file_json(r.run).dump(), r.L_reason); },
-      [](const py::tuple& t) {
-        return Run{parse_branch_file(t[0].cast<std::string>(), "pickle"), t[1].cast<std::string>()};
-      }));
+  run.def(
+      "label_type", [](const Run& r, int label) { return find_label(r.run, label).type; }, py::arg("label"),
+      "The type of a labelled point ('' or 'EP': a regular point); ValueError listing the labels if none.");
+  run.def(py::pickle([](const Run& r) { return py::make_tuple(branch_file_json(r.run).dump(), r.L_reason); },
+                     [](const py::tuple& t) {
+                       return Run{parse_branch_file(t[0].cast<std::string>(), "pickle"), t[1].cast<std::string>()};
+                     }));
 
   m.def("continue_scene", &continue_from_scene, py::arg("scene"), py::arg("kind"), py::arg("parameter"),
         py::arg("options"), py::arg("progress") = py::none(),
@@ -361,8 +365,8 @@ void bind_continuation(py::module_& m) {
         "rbcstab continue --restart FILE --label N");
   m.def("switch", &switch_py, py::arg("run"), py::arg("label"), py::arg("options"), py::arg("progress") = py::none(),
         "rbcstab continue --restart FILE --switch-at N");
-  m.def("curve", &curve_py, py::arg("run"), py::arg("label"), py::arg("type"), py::arg("parameter2"),
-        py::arg("min2"), py::arg("max2"), py::arg("options"), py::arg("progress") = py::none(),
+  m.def("curve", &curve_py, py::arg("run"), py::arg("label"), py::arg("type"), py::arg("parameter2"), py::arg("min2"),
+        py::arg("max2"), py::arg("options"), py::arg("progress") = py::none(),
         "rbcstab continue --restart FILE --label N --curve TYPE --parameter2 P2");
   m.def("load_branch", &load_py, py::arg("path"), "Reads a branch file (rbcstab continue --save).");
   m.def("plot_spec", &plot_spec_py, py::arg("runs"), py::arg("sources"), py::arg("x") = "", py::arg("y") = "",

@@ -9,12 +9,18 @@ py::object to_python(const nlohmann::json& j) {
   using value_t = nlohmann::json::value_t;
   switch (j.type()) {
     case value_t::null:
-    case value_t::discarded: return py::none();
-    case value_t::boolean: return py::bool_(j.get<bool>());
-    case value_t::number_integer: return py::int_(j.get<long long>());
-    case value_t::number_unsigned: return py::int_(j.get<unsigned long long>());
-    case value_t::number_float: return py::float_(j.get<double>());
-    case value_t::string: return py::str(j.get_ref<const std::string&>());
+    case value_t::discarded:
+      return py::none();
+    case value_t::boolean:
+      return py::bool_(j.get<bool>());
+    case value_t::number_integer:
+      return py::int_(j.get<long long>());
+    case value_t::number_unsigned:
+      return py::int_(j.get<unsigned long long>());
+    case value_t::number_float:
+      return py::float_(j.get<double>());
+    case value_t::string:
+      return py::str(j.get_ref<const std::string&>());
     case value_t::array: {
       py::list out;
       for (const auto& v : j) out.append(to_python(v));
@@ -25,7 +31,8 @@ py::object to_python(const nlohmann::json& j) {
       for (auto it = j.begin(); it != j.end(); ++it) out[py::str(it.key())] = to_python(it.value());
       return out;
     }
-    case value_t::binary: break;
+    case value_t::binary:
+      break;
   }
   throw std::logic_error("to_python: a binary JSON value");
 }

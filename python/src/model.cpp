@@ -94,8 +94,11 @@ std::vector<std::string> state_names(const System& s) {
       for (int l : dynamic_cast<const ModalModel&>(s).active_modes()) names.push_back("ln Delta_" + std::to_string(l));
       break;
     }
-    case ModelLevel::reduced: names = {"Re z", "Im z", "w"}; break;
-    case ModelLevel::automatic: throw std::logic_error("state_names: a system has a concrete level");
+    case ModelLevel::reduced:
+      names = {"Re z", "Im z", "w"};
+      break;
+    case ModelLevel::automatic:
+      throw std::logic_error("state_names: a system has a concrete level");
   }
   return names;
 }
@@ -210,17 +213,21 @@ void bind_model(py::module_& m) {
   py::class_<Model> cls(m, "Model", "The system a scene runs on (use rbcstab.Model, which documents it).");
   cls.def(py::init([](const py::handle& scene) { return std::make_unique<Model>(scene); }), py::arg("scene"));
   cls.def_property_readonly("n", &Model::n, "the state's dimension");
-  cls.def_property_readonly("level", [](const Model& s) { return to_string(s.built().level.level); },
-                            "the model level: 'full', 'modal' or 'reduced'");
-  cls.def_property_readonly("exact", [](const Model& s) { return s.built().level.exact; },
-                            "whether the level represents the scene without approximation");
-  cls.def_property_readonly("level_reason", [](const Model& s) { return s.built().level.reason; },
-                            "why this level (and what it drops if it is not exact)");
-  cls.def_property_readonly("warnings", [](const Model& s) { return s.built().warnings; },
-                            "the warnings a simulation of this scene reports");
-  cls.def_property_readonly("L", [](const Model& s) { return s.file().scene.L; }, "the truncation: modes l = 2..L");
-  cls.def_property_readonly("L_reason", [](const Model& s) { return s.file().L_reason; },
-                            "why this L (as L_reason in simulate's output)");
+  cls.def_property_readonly(
+      "level", [](const Model& s) { return to_string(s.built().level.level); },
+      "the model level: 'full', 'modal' or 'reduced'");
+  cls.def_property_readonly(
+      "exact", [](const Model& s) { return s.built().level.exact; },
+      "whether the level represents the scene without approximation");
+  cls.def_property_readonly(
+      "level_reason", [](const Model& s) { return s.built().level.reason; },
+      "why this level (and what it drops if it is not exact)");
+  cls.def_property_readonly(
+      "warnings", [](const Model& s) { return s.built().warnings; }, "the warnings a simulation of this scene reports");
+  cls.def_property_readonly(
+      "L", [](const Model& s) { return s.file().scene.L; }, "the truncation: modes l = 2..L");
+  cls.def_property_readonly(
+      "L_reason", [](const Model& s) { return s.file().L_reason; }, "why this L (as L_reason in simulate's output)");
   cls.def_property_readonly("y0", &Model::y0, "the initial state (a new array on each access)");
   cls.def_property_readonly("state_names", &Model::names, "the name of each state component, in order");
   cls.def("rhs", &Model::rhs, py::arg("t"), py::arg("y"), "F(t, y): a new array of shape (n,).");

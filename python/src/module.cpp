@@ -22,9 +22,10 @@ PYBIND11_MODULE(_rbcstab, m) {
       PyErr_SetString(PyExc_OSError, e.what());
     }
   });
-  m.def("report_script_dir", [] { return rbcstab::find_script_dir(""); },
-        "The folder of the report's drawing code (rbcstab_report.py, phase_draw.py, bifurcation_draw.py), as the "
-        "CLI finds it; '' when it cannot be found.");
+  m.def(
+      "report_script_dir", [] { return rbcstab::find_script_dir(""); },
+      "The folder of the report's drawing code (rbcstab_report.py, phase_draw.py, bifurcation_draw.py), as the "
+      "CLI finds it; '' when it cannot be found.");
   rbcstab::python::bind_scene(m);
   rbcstab::python::bind_runs(m);
   rbcstab::python::bind_model(m);

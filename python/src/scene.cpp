@@ -30,7 +30,6 @@ std::string allowed_keywords() {
   return out;
 }
 
-
 [[noreturn]] void type_error(const std::string& keyword, const std::string& want, const py::handle& v) {
   throw py::type_error("Scene: " + keyword + " must be " + want + ", got " + type_name(v) + " " +
                        std::string(py::repr(v)));
@@ -50,11 +49,13 @@ long long integer_of(const std::string& keyword, const py::handle& v) {
 
 SceneValue value_of(const SceneKey& k, const std::string& keyword, const py::handle& v) {
   switch (k.kind) {
-    case ValueKind::number: return number_of(keyword, v);
+    case ValueKind::number:
+      return number_of(keyword, v);
     case ValueKind::quantity:  // SI number, or text with a unit ("3.9um")
       if (py::isinstance<py::str>(v)) return v.cast<std::string>();
       return number_of(keyword, v);
-    case ValueKind::integer: return integer_of(keyword, v);
+    case ValueKind::integer:
+      return integer_of(keyword, v);
     case ValueKind::name:
     case ValueKind::text: {
       if (!py::isinstance<py::str>(v)) type_error(keyword, "a string", v);
@@ -150,13 +151,13 @@ std::string repr(const SceneFile& f) {
 }  // namespace
 
 const SceneFile& scene_file(const py::handle& scene) {
-  if (!py::isinstance<SceneFile>(scene))
-    throw py::type_error("scene must be a rbcstab.Scene, got " + type_name(scene));
+  if (!py::isinstance<SceneFile>(scene)) throw py::type_error("scene must be a rbcstab.Scene, got " + type_name(scene));
   return scene.cast<const SceneFile&>();
 }
 
 void bind_scene(py::module_& m) {
-  py::class_<SceneFile> cls(m, "Scene", R"(A scene: the paper's parameters, the run and the integrator, one keyword per scene key.
+  py::class_<SceneFile> cls(m, "Scene",
+                            R"(A scene: the paper's parameters, the run and the integrator, one keyword per scene key.
 
 Every key of a scene file (docs/scenes.md) is a keyword; ``lambda_`` (or ``**{"lambda": x}``) is lambda.
 Defaults are the paper's Fig. 3 out-of-plane case. ``L=None`` (the default) lets each computation choose the
@@ -174,11 +175,13 @@ Scenes are immutable: ``replace(**changes)`` returns a new one.)");
       "replace", [](const SceneFile& f, const py::kwargs& kwargs) { return with_keywords(f, kwargs); },
       "A copy with the given keywords changed (the same keywords as Scene()).");
   cls.def("to_dict", &to_dict, "Every scene key and its value (L: None when automatic); Scene(**d) rebuilds it.");
-  cls.def("to_toml", [](const SceneFile& f) { return to_toml(f); }, "The scene as scene-file text.");
+  cls.def(
+      "to_toml", [](const SceneFile& f) { return to_toml(f); }, "The scene as scene-file text.");
   cls.def(
       "origin", [](const SceneFile& f, const std::string& key) { return to_string(f.origin(key)); }, py::arg("key"),
       "Where a key's value came from: 'default', 'file' or 'flag' (a keyword), e.g. origin('parameters.B').");
-  cls.def_property_readonly("source", [](const SceneFile& f) { return f.source; }, "the scene file's name, '' without one");
+  cls.def_property_readonly(
+      "source", [](const SceneFile& f) { return f.source; }, "the scene file's name, '' without one");
   for (const SceneKey& k : scene_keys()) {
     const SceneKey* key = &k;
     cls.def_property_readonly(

@@ -8,8 +8,8 @@
 #include <atomic>
 #include <climits>
 #include <cmath>
-#include <stdexcept>
 #include <optional>
+#include <stdexcept>
 #include <utility>
 
 #include "bindings.hpp"
@@ -18,8 +18,8 @@
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/report/report.hpp"
-#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/diagram_document.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
 
 namespace rbcstab::python {
@@ -100,7 +100,8 @@ struct DiagramData {
     a["t_reached"] = grid_array<double>(spec, pts, std::nan(""), [](const PointResult& p) { return p.t_reached; });
     auto count = [](std::size_t n) { return static_cast<long long>(n); };
     a["steps"] = grid_array<long long>(spec, pts, -1, [&](const PointResult& p) { return count(p.steps); });
-    a["failed_steps"] = grid_array<long long>(spec, pts, -1, [&](const PointResult& p) { return count(p.failed_steps); });
+    a["failed_steps"] =
+        grid_array<long long>(spec, pts, -1, [&](const PointResult& p) { return count(p.failed_steps); });
     a["rhs_evaluations"] =
         grid_array<long long>(spec, pts, -1, [&](const PointResult& p) { return count(p.rhs_evaluations); });
     if (output.include_seconds)
@@ -315,8 +316,8 @@ py::tuple fig6e_scene(const py::handle& scene, const std::optional<std::vector<d
 
 PlaneChoice plane_choice(std::vector<std::string> axes, std::vector<double> x_range, std::vector<double> y_range,
                          std::vector<long long> counts, std::string classifier, std::optional<double> alpha_fixed) {
-  return {std::move(axes), std::move(x_range), std::move(y_range), std::move(counts), std::move(classifier),
-          alpha_fixed};
+  return {std::move(axes),   std::move(x_range),    std::move(y_range),
+          std::move(counts), std::move(classifier), alpha_fixed};
 }
 
 }  // namespace
@@ -340,9 +341,9 @@ void bind_sweep(py::module_& m) {
             return f;
           },
           py::arg("index"))
-      .def_property_readonly("axes", [](const DiagramData& d) {
-        return py::make_tuple(to_string(d.spec.x.axis), to_string(d.spec.y.axis));
-      })
+      .def_property_readonly(
+          "axes",
+          [](const DiagramData& d) { return py::make_tuple(to_string(d.spec.x.axis), to_string(d.spec.y.axis)); })
       .def_property_readonly("computed", [](const DiagramData& d) { return d.run.computed; })
       .def_property_readonly("resumed", [](const DiagramData& d) { return d.run.resumed; })
       .def_property_readonly("rejected", [](const DiagramData& d) { return d.run.rejected; })
@@ -382,18 +383,19 @@ void bind_sweep(py::module_& m) {
       .def("csv", &TraceData::csv)
       .def("json_text", &TraceData::json_text)
       .def("save", &TraceData::save, py::arg("prefix"))
-      .def_property_readonly("axes", [](const TraceData& d) {
-        return py::make_tuple(to_string(d.plane.x.axis), to_string(d.plane.y.axis));
-      })
+      .def_property_readonly(
+          "axes",
+          [](const TraceData& d) { return py::make_tuple(to_string(d.plane.x.axis), to_string(d.plane.y.axis)); })
       .def_property_readonly("x_range", [](const TraceData& d) { return py::make_tuple(d.plane.x.min, d.plane.x.max); })
-      .def_property_readonly("y_range", [](const TraceData& d) { return py::make_tuple(d.plane.y.min, d.plane.y.max); });
+      .def_property_readonly("y_range",
+                             [](const TraceData& d) { return py::make_tuple(d.plane.y.min, d.plane.y.max); });
 
   m.def(
       "trace",
       [](const py::handle& scene, std::vector<std::string> axes, std::vector<double> x_range,
          std::vector<double> y_range, std::optional<double> alpha_fixed, std::string criterion, std::string method,
-         double horizon, long long lines, long long samples, double max_step, long long threads, std::optional<std::string> diagram,
-         std::string diagram_source) {
+         double horizon, long long lines, long long samples, double max_step, long long threads,
+         std::optional<std::string> diagram, std::string diagram_source) {
         TraceArgs a;
         a.plane = plane_choice(std::move(axes), std::move(x_range), std::move(y_range), {}, {}, alpha_fixed);
         a.criterion = std::move(criterion);
@@ -408,8 +410,8 @@ void bind_sweep(py::module_& m) {
         return trace_scene(scene, a);
       },
       py::arg("scene"), py::arg("axes"), py::arg("x_range"), py::arg("y_range"), py::arg("alpha_fixed"),
-      py::arg("criterion"), py::arg("method"), py::arg("horizon"), py::arg("lines"), py::arg("samples"), py::arg("max_step"),
-      py::arg("threads"), py::arg("diagram"), py::arg("diagram_source"),
+      py::arg("criterion"), py::arg("method"), py::arg("horizon"), py::arg("lines"), py::arg("samples"),
+      py::arg("max_step"), py::arg("threads"), py::arg("diagram"), py::arg("diagram_source"),
       "rbcstab trace: the traced boundary as a _Trace (diagram: a diagram document's JSON text, for the agreement).");
 
   m.def("fig6e", &fig6e_scene, py::arg("scene"), py::arg("lambdas"), py::arg("B"), py::arg("C"),

@@ -41,7 +41,8 @@ TEST(PostInstability, PrintedRssPostinstIsTheZSteadyState) {
         EXPECT_FALSE(d.Delta2_tilde.reason.empty());
         continue;
       }
-      const double Lambda_t = std::sqrt(d.Delta2_tilde.value) * (23 * lambda + 32) / (8 * std::sqrt(30 * std::numbers::pi));
+      const double Lambda_t =
+          std::sqrt(d.Delta2_tilde.value) * (23 * lambda + 32) / (8 * std::sqrt(30 * std::numbers::pi));
       EXPECT_NEAR(d.r_tilde.value, 1 / (std::sqrt(K * K + 1) * Lambda_t), 1e-14);
       // z~ = r~ e^{-i Psi~} is the fixed point of z' = (i + mu~) z - i / Lambda~ (Eq. ssr with r0 = 0).
       const std::complex<double> z = std::polar(d.r_tilde.value, -d.Psi_tilde.value);
@@ -130,10 +131,11 @@ TEST(PostInstability, AgainstSimulation) {
       const double bar = r.Delta_tail_mean[0];
       const double e_int = post.integer_mode.Delta2_tilde.value / bar - 1;
       const double e_cont = post.continuous.Delta2_tilde.value / bar - 1;
-      std::printf("lambda %g beta %g: Delta-bar_2 %.6g, integer (l = %d) %.6g (%+.3g), continuous (l_* = %.3f) %.6g "
-                  "(%+.3g), l_Delta %d\n",
-                  lambda, beta, bar, post.surviving_mode, post.integer_mode.Delta2_tilde.value, e_int, post.continuous.l,
-                  post.continuous.Delta2_tilde.value, e_cont, r.l_Delta);
+      std::printf(
+          "lambda %g beta %g: Delta-bar_2 %.6g, integer (l = %d) %.6g (%+.3g), continuous (l_* = %.3f) %.6g "
+          "(%+.3g), l_Delta %d\n",
+          lambda, beta, bar, post.surviving_mode, post.integer_mode.Delta2_tilde.value, e_int, post.continuous.l,
+          post.continuous.Delta2_tilde.value, e_cont, r.l_Delta);
       if (beta > 0.1)
         std::printf("    in plane with the out-of-plane g (w0 = 1): integer %+.3g, continuous %+.3g\n",
                     post0.integer_mode.Delta2_tilde.value / bar - 1, post0.continuous.Delta2_tilde.value / bar - 1);

@@ -27,7 +27,8 @@ Scene fig3(double lambda, double beta) {
 }
 
 // While the Delta_l stay small, sigma = sigma_R + O(sum Delta_l / Delta) and every l >= 3 obeys
-// Delta_l' = 2 Upsilon_l(sigma) Delta_l exactly, so ln(Delta_l(T)/Delta_l(0)) = 2 G_l(T) + O(max Delta_l * T * |dUpsilon/dsigma|).
+// Delta_l' = 2 Upsilon_l(sigma) Delta_l exactly, so ln(Delta_l(T)/Delta_l(0)) = 2 G_l(T) + O(max Delta_l * T *
+// |dUpsilon/dsigma|).
 TEST(FiniteHorizon, MatchesModalSimulationWhileModesAreSmall) {
   for (double lambda : {1.0, 5.0})
     for (double beta : {0.0, kHalfPi}) {

@@ -44,7 +44,8 @@ double sigma_R_printed(const Parameters& p, double r, double Psi) {
 struct SteadyStateCase {
   double Lambda, S;
 };
-const SteadyStateCase kCases[] = {{0.19, 2}, {1.9, 2}, {0.7, 20}, {1, 5}, {3, 0.3}, {0.5, 1e3}, {1.5, 1e6}, {0.9, 0.05}};
+const SteadyStateCase kCases[] = {{0.19, 2}, {1.9, 2},   {0.7, 20},  {1, 5},
+                                  {3, 0.3},  {0.5, 1e3}, {1.5, 1e6}, {0.9, 0.05}};
 
 TEST(OutOfPlaneEquilibrium, SatisfiesQuadraticAndOde) {
   for (const SteadyStateCase& c : kCases) {
@@ -84,8 +85,8 @@ TEST(OutOfPlaneEquilibrium, IsTheLongTimeStateOfIntegration) {
     o.atol = 1e-14;
     const double grid[1] = {T};
     std::vector<double> y;
-    const IntegrationResult r =
-        integrate(m, m.initial_state(), 0, grid, o, [&](double, std::span<const double> yy) { y.assign(yy.begin(), yy.end()); });
+    const IntegrationResult r = integrate(m, m.initial_state(), 0, grid, o,
+                                          [&](double, std::span<const double> yy) { y.assign(yy.begin(), yy.end()); });
     ASSERT_EQ(r.status, IntegrationStatus::success);
     const double rr = std::hypot(y[0], y[1]);
     const double Psi = -std::atan2(y[1], y[0]);
@@ -170,9 +171,10 @@ TEST(OutOfPlaneEquilibrium, ExactVersusLargeSTension) {
       const OutOfPlaneCriterion c = out_of_plane_criterion(p, 10);
       ASSERT_TRUE(c.equilibrium.sigma_R_large_S.valid());
       const double gap = c.equilibrium.sigma_R - c.equilibrium.sigma_R_large_S.value;
-      std::printf("lambda %g C %g S %.4g: sigma_R exact %.6g, S>>1 %.6g (gap %.3g), unstable exact %zu modes, S>>1 %zu\n",
-                  lambda, C, p.S(), c.equilibrium.sigma_R, c.equilibrium.sigma_R_large_S.value, gap,
-                  c.unstable_exact.size(), c.unstable_large_S.size());
+      std::printf(
+          "lambda %g C %g S %.4g: sigma_R exact %.6g, S>>1 %.6g (gap %.3g), unstable exact %zu modes, S>>1 %zu\n",
+          lambda, C, p.S(), c.equilibrium.sigma_R, c.equilibrium.sigma_R_large_S.value, gap, c.unstable_exact.size(),
+          c.unstable_large_S.size());
       if (p.S() > 1e3) {
         EXPECT_NEAR(gap, 0, 0.05 * (1 + std::abs(c.equilibrium.sigma_R)));
       }

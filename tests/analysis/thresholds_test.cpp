@@ -148,7 +148,7 @@ TEST(Thresholds, InitialTensionAndAlphaInit) {
     EXPECT_NEAR(sigma_R_initial(p), sigma_star(a.value), 1e-12 * a.value) << Delta0;
   }
   EXPECT_DOUBLE_EQ(alpha_init(params(5, 1, 0, 1, 1)).value, 9.0);  // Delta0 -> 0 limit
-  const Quantity none = alpha_init(params(5, 1, 1, 1, 1));           // Delta0 = Delta: infinite
+  const Quantity none = alpha_init(params(5, 1, 1, 1, 1));         // Delta0 = Delta: infinite
   EXPECT_FALSE(none.valid());
   EXPECT_FALSE(none.reason.empty());
 }

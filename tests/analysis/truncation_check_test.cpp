@@ -130,7 +130,8 @@ TEST(TruncationCheck, DefaultSceneIsRerunAtItsL) {
   EXPECT_EQ(jc.at("passed"), false);
   ASSERT_EQ(jc.at("dropped").size(), 6u);
   EXPECT_EQ(jc.at("dropped")[0].at("l"), 5);
-  for (const char* key : {"delta", "Delta_max", "bound", "t_max"}) EXPECT_TRUE(jc.at("dropped")[0].contains(key)) << key;
+  for (const char* key : {"delta", "Delta_max", "bound", "t_max"})
+    EXPECT_TRUE(jc.at("dropped")[0].contains(key)) << key;
   for (const char* key : {"threshold", "sigma_shift", "sigma_tolerance", "t_sigma_shift", "samples", "verdict"})
     EXPECT_TRUE(jc.contains(key)) << key;
 }
@@ -178,18 +179,18 @@ TEST_P(TruncationCheckPasses, AgreesWithTheSceneL) {
   EXPECT_LE(c.sigma_shift, c.sigma_tolerance);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Scenes, TruncationCheckPasses,
-    ::testing::Values(PassCase{"fig3_op_delta1em10", paper_scene(1, 2, 0.04, 1e-10, 0.05), 4},
-                      PassCase{"fig3_ip_delta1em10",
-                               [] {
-                                 Scene s = paper_scene(1, 2, 0.04, 1e-10, 0.05);
-                                 s.beta = std::numbers::pi / 2;
-                                 return s;
-                               }(),
-                               4},
-                      PassCase{"appF_a_delta1em10", paper_scene(0.1, std::exp(4.0), std::exp(-2.7), 1e-10, 0.01), 3}),
-    [](const ::testing::TestParamInfo<PassCase>& i) { return std::string(i.param.name); });
+INSTANTIATE_TEST_SUITE_P(Scenes, TruncationCheckPasses,
+                         ::testing::Values(PassCase{"fig3_op_delta1em10", paper_scene(1, 2, 0.04, 1e-10, 0.05), 4},
+                                           PassCase{"fig3_ip_delta1em10",
+                                                    [] {
+                                                      Scene s = paper_scene(1, 2, 0.04, 1e-10, 0.05);
+                                                      s.beta = std::numbers::pi / 2;
+                                                      return s;
+                                                    }(),
+                                                    4},
+                                           PassCase{"appF_a_delta1em10",
+                                                    paper_scene(0.1, std::exp(4.0), std::exp(-2.7), 1e-10, 0.01), 3}),
+                         [](const ::testing::TestParamInfo<PassCase>& i) { return std::string(i.param.name); });
 
 // The automatic L never exceeds the scene's: over a short horizon the a priori rule at L_max = 40 keeps 17
 // modes, which would seed l = 11..17 too and give another scene (Delta_6 peaks at 1.81e-3 instead of 1.76e-3).

@@ -18,9 +18,9 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/integrate/quadrature.hpp"
-#include "rbcstab/model/reduced_model.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/model/reduced_model.hpp"
 
 namespace rbcstab {
 namespace {
@@ -69,7 +69,6 @@ TEST_P(TruncationStudy, ChosenLReproducesL40WithinTolerance) {
   ASSERT_EQ(fed.status, IntegrationStatus::success);
   RecordProperty("L", c.L);
 
-
   EXPECT_EQ(got.l_Delta, ref.l_Delta) << c.reason;
   for (int l = 2; l <= c.L; ++l)
     // 1.1: in plane the extra area also shifts the tank-treading state (measured: 1.7 % more than the area)
@@ -82,22 +81,21 @@ TEST_P(TruncationStudy, ChosenLReproducesL40WithinTolerance) {
   // to area with slope k = d sigma / d Delta (measured here from got vs fed), so its bound is 2 k tolD + 1e-8.
   for (int l = 2; l <= c.L; ++l)
     EXPECT_NEAR(fed.Delta_final[std::size_t(l - 2)], ref.Delta_final[std::size_t(l - 2)], tolD) << "fed l = " << l;
-  const double k = c.dropped_seeded_area > 0
-                       ? std::abs(fed.sigma_final - got.sigma_final) / c.dropped_seeded_area
-                       : 0.0;
+  const double k =
+      c.dropped_seeded_area > 0 ? std::abs(fed.sigma_final - got.sigma_final) / c.dropped_seeded_area : 0.0;
   EXPECT_NEAR(fed.sigma_final, ref.sigma_final, 2 * k * tolD + 1e-8 * std::abs(ref.sigma_final));
   EXPECT_EQ(fed.l_Delta, ref.l_Delta);
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Scenes, TruncationStudy,
-    ::testing::Values(TruncationCase{"fig3_op", base(5, 2, 0.04, 1e-3, 1e-3)},
-                      TruncationCase{"fig3_ip", base(5, 2, 0.04, std::numbers::pi / 2, 1e-3)},
-                      TruncationCase{"stiff", base(1, std::exp(-1.0), std::exp(-5.5), 1e-3, 1e-3)},
-                      TruncationCase{"fig6_lambda1_delta1em10", base(1, std::exp(2.0), std::exp(-4.0), 1e-3, 1e-10)},
-                      TruncationCase{"fig6_cd_lambda1", base(1, 2, 0.04, 1e-3, 1e-3)},
-                      TruncationCase{"alpha500", base(5, 2, 0.004, 1e-3, 1e-3)}),
-    [](const ::testing::TestParamInfo<TruncationCase>& i) { return std::string(i.param.name); });
+INSTANTIATE_TEST_SUITE_P(Scenes, TruncationStudy,
+                         ::testing::Values(TruncationCase{"fig3_op", base(5, 2, 0.04, 1e-3, 1e-3)},
+                                           TruncationCase{"fig3_ip", base(5, 2, 0.04, std::numbers::pi / 2, 1e-3)},
+                                           TruncationCase{"stiff", base(1, std::exp(-1.0), std::exp(-5.5), 1e-3, 1e-3)},
+                                           TruncationCase{"fig6_lambda1_delta1em10",
+                                                          base(1, std::exp(2.0), std::exp(-4.0), 1e-3, 1e-10)},
+                                           TruncationCase{"fig6_cd_lambda1", base(1, 2, 0.04, 1e-3, 1e-3)},
+                                           TruncationCase{"alpha500", base(5, 2, 0.004, 1e-3, 1e-3)}),
+                         [](const ::testing::TestParamInfo<TruncationCase>& i) { return std::string(i.param.name); });
 
 TEST(Truncation, StiffSceneNeedsItsSurvivingMode) {
   // Measured with `rbcstab bench truncation`: at L = 3 this scene's verdict is l_Delta = 3, at L >= 4 it is 4.

@@ -74,7 +74,8 @@ class JsonWalk : public ::testing::Test {
       ADD_FAILURE() << where << " is not strict JSON (" << e.what() << "):\n" << text.substr(0, 400);
       return;
     }
-    for (const std::string& path : rbcstab::unexplained_nulls(j)) ADD_FAILURE() << where << ": null at " << path << " has no reason";
+    for (const std::string& path : rbcstab::unexplained_nulls(j))
+      ADD_FAILURE() << where << ": null at " << path << " has no reason";
   }
 
   // Every field (split at newlines and commas), trimmed, without a sign, case-folded: never nan, inf or infinity.
@@ -85,12 +86,15 @@ class JsonWalk : public ::testing::Test {
       for (char c : field)
         if (!std::isspace(static_cast<unsigned char>(c))) f += char(std::tolower(static_cast<unsigned char>(c)));
       if (!f.empty() && (f[0] == '-' || f[0] == '+')) f.erase(0, 1);
-      if (f == "nan" || f == "inf" || f == "infinity") ADD_FAILURE() << where << " holds a non-finite field: '" << field << "'";
+      if (f == "nan" || f == "inf" || f == "infinity")
+        ADD_FAILURE() << where << " holds a non-finite field: '" << field << "'";
       field.clear();
     };
     for (char c : text) {
-      if (c == ',' || c == '\n') check();
-      else field += c;
+      if (c == ',' || c == '\n')
+        check();
+      else
+        field += c;
     }
     check();
   }
@@ -114,14 +118,16 @@ TEST_F(JsonWalk, SceneCommands) {
 }
 
 TEST_F(JsonWalk, ContinuationAndPlot) {
-  walk_extremes({"continue --max-points 12 --save b.json --csv b.csv --json", "continue --kind orbit --max-points 6 --json"});
+  walk_extremes(
+      {"continue --max-points 12 --save b.json --csv b.csv --json", "continue --kind orbit --max-points 6 --json"});
   // A branch of the vesicle limit drawn by plot: the figure's JSON beside the PNG.
   walk("plot", "continue --max-points 12 --save b.json --C inf --json");
   walk("plot", "plot " + written("b.json").string() + " --output p.png --json");
 }
 
 TEST_F(JsonWalk, PlaneCommands) {
-  walk_extremes({"diagram --counts 3,3 --T 5 --no-journal --quiet --out d --json", "trace --lines 2 --samples 8 --out t --json"});
+  walk_extremes(
+      {"diagram --counts 3,3 --T 5 --no-journal --quiet --out d --json", "trace --lines 2 --samples 8 --out t --json"});
   // Two shards of a failing grid, merged.
   std::string shards;
   for (const std::string k : {"0", "1"}) {
@@ -133,9 +139,10 @@ TEST_F(JsonWalk, PlaneCommands) {
 }
 
 TEST_F(JsonWalk, ReportAndBench) {
-  walk_extremes({"report --T 5 --frames 2 --shape-resolution 8 --output r --json",
-                 "bench truncation --T 5 --Ls 3,4 --no-plot --output b --json",
-                 "bench work-precision --T 5 --levels modal --steppers rk8pd --rtols 1e-4 --no-plot --output b --json"});
+  walk_extremes(
+      {"report --T 5 --frames 2 --shape-resolution 8 --output r --json",
+       "bench truncation --T 5 --Ls 3,4 --no-plot --output b --json",
+       "bench work-precision --T 5 --levels modal --steppers rk8pd --rtols 1e-4 --no-plot --output b --json"});
   walk("lambda = 1e308", "bench threshold --lambda 1e308 --no-plot --output b --json");
 }
 

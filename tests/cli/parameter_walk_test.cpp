@@ -101,8 +101,9 @@ TEST(ParameterWalk, CommandLineFlagsAreTheTablesRows) {
 
 // `units --json`: the formulas are R, the rows with a physical formula, the time unit.
 TEST(ParameterWalk, UnitsFormulasAreTheRowsFormulas) {
-  const std::string out = cli_output("units --radius 3um --viscosity 1mPa.s --shear-rate 100 --bending-modulus 2e-19J "
-                                     "--shear-modulus 6uN/m --json");
+  const std::string out = cli_output(
+      "units --radius 3um --viscosity 1mPa.s --shear-rate 100 --bending-modulus 2e-19J "
+      "--shear-modulus 6uN/m --json");
   std::set<std::string> expected{"R_m", "time_unit_s"};
   for (const ParameterRow& r : parameter_table())
     if (r.physical.formula) expected.insert(r.name);
@@ -126,8 +127,7 @@ TEST(ParameterWalk, SummaryLinesNameTheRows) {
   std::vector<std::string> stored = row_names([](const ParameterRow& r) { return r.table != nullptr; });
   stored.insert(stored.end(), {"L", "T"});
   EXPECT_EQ(names_on("Parameters", "Derived"), stored) << out;
-  EXPECT_EQ(names_on("Derived", "\n"), row_names([](const ParameterRow& r) { return r.definition != nullptr; }))
-      << out;
+  EXPECT_EQ(names_on("Derived", "\n"), row_names([](const ParameterRow& r) { return r.definition != nullptr; })) << out;
 }
 
 // docs/scenes.md's parameter table is this table, row for row: a row added here and not there fails, with the
@@ -135,10 +135,10 @@ TEST(ParameterWalk, SummaryLinesNameTheRows) {
 TEST(ParameterWalk, ScenesDocumentListsTheRows) {
   std::string expected;
   for (const ParameterRow& r : parameter_table()) {
-    const std::string stored = r.table                        ? std::string("`[") + r.table + "]`"
-                               : r.definition                 ? "derived"
-                               : r.scale == AxisScale::log    ? "log axis"
-                                                              : "`[physical]`";
+    const std::string stored = r.table                     ? std::string("`[") + r.table + "]`"
+                               : r.definition              ? "derived"
+                               : r.scale == AxisScale::log ? "log axis"
+                                                           : "`[physical]`";
     std::string levels;
     for (ModelLevel l : {ModelLevel::reduced, ModelLevel::modal, ModelLevel::full})
       if (r.levels & level_bit(l)) levels += (levels.empty() ? "" : ", ") + to_string(l);

@@ -53,7 +53,7 @@ KnownMatrix known_matrix(int n) {
 
 std::vector<std::complex<double>> sorted_by(std::vector<std::complex<double>> v, ArpackWhich which, double shift) {
   auto key = [&](std::complex<double> l) {
-    return which == ArpackWhich::largest_real      ? -l.real()
+    return which == ArpackWhich::largest_real        ? -l.real()
            : which == ArpackWhich::largest_magnitude ? -std::abs(l)
                                                      : std::abs(l - shift);
   };

@@ -4,11 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
-#include <unsupported/Eigen/MatrixFunctions>
 #include <cmath>
 #include <complex>
 #include <numbers>
 #include <random>
+#include <unsupported/Eigen/MatrixFunctions>
 
 #include "rbcstab/continuation/attractor.hpp"
 #include "rbcstab/continuation/continuation.hpp"
@@ -19,11 +19,12 @@
 namespace rbcstab {
 namespace {
 
-
 // x' = A x + Re(c e^{it}): the periodic orbit is x*(t) = Re((iI - A)^{-1} c e^{it}), the monodromy e^{2 pi A}.
 class LinearForced final : public ForcedSystem {
  public:
-  explicit LinearForced(const Eigen::Matrix3d& A) : A_(A) { c_ << std::complex<double>(1, 0.5), 0.3, std::complex<double>(0, -2); }
+  explicit LinearForced(const Eigen::Matrix3d& A) : A_(A) {
+    c_ << std::complex<double>(1, 0.5), 0.3, std::complex<double>(0, -2);
+  }
   Eigen::Index dimension() const override { return 3; }
   void rhs(double t, std::span<const double> x, double, std::span<double> f) const override {
     const Eigen::Vector3d X(x[0], x[1], x[2]);
@@ -32,7 +33,8 @@ class LinearForced final : public ForcedSystem {
   }
   void jacobian(double, std::span<const double>, double, Eigen::MatrixXd& J) const override { J = A_; }
   Eigen::Vector3d orbit(double t) const {
-    const Eigen::Matrix3cd shifted = std::complex<double>(0, 1) * Eigen::Matrix3cd::Identity() - A_.cast<std::complex<double>>();
+    const Eigen::Matrix3cd shifted =
+        std::complex<double>(0, 1) * Eigen::Matrix3cd::Identity() - A_.cast<std::complex<double>>();
     return (shifted.partialPivLu().solve(c_) * std::polar(1.0, t)).real();
   }
   Eigen::Matrix3d A_;
@@ -65,7 +67,8 @@ TEST(RefinePeriodicOrbit, LinearForcedSystemAgainstClosedForm) {
   ASSERT_EQ(r.multipliers.values.size(), 3);
   for (Eigen::Index i = 0; i < 3; ++i) {
     double nearest = INFINITY;
-    for (Eigen::Index k = 0; k < 3; ++k) nearest = std::min(nearest, std::abs(r.multipliers.values[i] - std::exp(kTwoPi * lambda[k])));
+    for (Eigen::Index k = 0; k < 3; ++k)
+      nearest = std::min(nearest, std::abs(r.multipliers.values[i] - std::exp(kTwoPi * lambda[k])));
     EXPECT_LE(nearest, r.multipliers.errors[i]) << i;
   }
   const Eigen::Vector3d sum = (Eigen::Matrix3d::Identity() - M).partialPivLu().solve(Eigen::Vector3d(x0 - r.x));

@@ -11,25 +11,24 @@
 #include <string>
 #include <vector>
 
+#include "continuation/fig2_fixture.hpp"
+#include "continuation/periodic_quadrature.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"
 #include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/orbit.hpp"
-#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "continuation/fig2_fixture.hpp"
-#include "continuation/periodic_quadrature.hpp"
 
 namespace rbcstab {
 namespace {
-
 
 Scene fig2(double Delta, double beta = M_PI / 2) { return test::fig2_in_plane(Delta, beta); }
 
@@ -82,7 +81,8 @@ TEST(Beta, ForcedSystemsDerivativeInBetaMatchesDifferences) {
         modal.ForcedSystem::parameter_derivative(t, std::span<const double>(x.data(), nn), beta,
                                                  std::span<double>(dm.data(), nn));
         const double ds = std::max(1e-3, dm.cwiseAbs().maxCoeff());
-        for (Eigen::Index i = 0; i < n; ++i) EXPECT_NEAR(am[i], dm[i], 1e-7 * ds) << "modal beta = " << beta << " i = " << i;
+        for (Eigen::Index i = 0; i < n; ++i)
+          EXPECT_NEAR(am[i], dm[i], 1e-7 * ds) << "modal beta = " << beta << " i = " << i;
       }
     }
   }
@@ -150,7 +150,8 @@ TEST(Beta, InPlaneOrbitCollapsesOntoTheOutOfPlaneEquilibriumAtBetaZero) {
     const double z0 = -std::sqrt(2.0) * D[4] / std::hypot(std::sqrt(2.0) * D[4], D[2]);
     const Eigen::Vector3cd g(z0, std::complex<double>(0, -z0), 0);
     const Eigen::Matrix3cd P = (Eigen::Matrix3d::Identity() - e * e.transpose()).cast<std::complex<double>>();
-    const Eigen::Matrix3cd A = std::complex<double>(0, 1) * Eigen::Matrix3cd::Identity() - J.cast<std::complex<double>>();
+    const Eigen::Matrix3cd A =
+        std::complex<double>(0, 1) * Eigen::Matrix3cd::Identity() - J.cast<std::complex<double>>();
     const Eigen::Vector3cd R = A.partialPivLu().solve(kappa * (P * g));
     double err = 0;
     for (int j = 0; j < r.pr.segments(); ++j) {
@@ -273,8 +274,10 @@ TEST(Beta, EquilibriaEndAtBetaZeroWhenTheRestShapePullsAndAreConstantOtherwise) 
   }
   for (int variant = 0; variant < 2; ++variant) {
     Scene s = fig2(1.0, 0.0);
-    if (variant == 0) s.parameters.Delta0 = 0;
-    else s.parameters.C = INFINITY;
+    if (variant == 0)
+      s.parameters.Delta0 = 0;
+    else
+      s.parameters.C = INFINITY;
     const ReducedEquilibriumProblem pr(s, ContinuationParameter::beta);
     const Branch b = continue_branch(pr, pr.relaxed_state(300), 0.0, o);
     EXPECT_EQ(b.status, ContinuationStatus::completed) << b.message;
@@ -335,7 +338,8 @@ TEST(Beta, ReducedMultipliersAreAConformalPairWithModulusExpOfTheMeanGrowthRate)
                                                     [&](double t, std::span<const double> y) { return m.mu(t, y); });
       EXPECT_NEAR(std::abs(mu[0]), std::exp(integral), 1e-9 * std::exp(integral)) << "beta " << beta << " C " << C;
       EXPECT_LT(integral, 0.0);
-      std::printf("beta = %.3f, C = %.2f: |k| = %.12e, exp(int mu dt) = %.12e\n", beta, C, std::abs(mu[0]), std::exp(integral));
+      std::printf("beta = %.3f, C = %.2f: |k| = %.12e, exp(int mu dt) = %.12e\n", beta, C, std::abs(mu[0]),
+                  std::exp(integral));
     }
   }
 }

@@ -23,7 +23,9 @@ namespace {
 using P = ContinuationParameter;
 using nlohmann::json;
 
-ContinuationRun round_trip(const ContinuationRun& run) { return parse_branch_file(branch_file_json(run).dump(1), "t.json"); }
+ContinuationRun round_trip(const ContinuationRun& run) {
+  return parse_branch_file(branch_file_json(run).dump(1), "t.json");
+}
 
 // The ellipsoidal branch of modal equilibria from C = 0.08 down to 0.015 and its switched branch.
 const SceneBranch& modal_run() {
@@ -54,7 +56,6 @@ LabelledPoint regular_label(const ContinuationRun& run, int b, std::size_t from 
   return {};
 }
 
-
 double max_diff(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
   return a.size() == b.size() ? (a - b).lpNorm<Eigen::Infinity>() : std::numeric_limits<double>::infinity();
 }
@@ -74,7 +75,8 @@ TEST(BranchFile, SavedRunsLoadBackBitForBit) {
   // The states are the engine's, bit for bit.
   const SceneBranch back = std::get<SceneBranch>(round_trip(modal_run()));
   EXPECT_TRUE(back.branch.branch.points[7].x == modal_run().branch.branch.points[7].x);
-  EXPECT_TRUE(back.switched->branch.branch.special_points[0].x == modal_run().switched->branch.branch.special_points[0].x);
+  EXPECT_TRUE(back.switched->branch.branch.special_points[0].x ==
+              modal_run().switched->branch.branch.special_points[0].x);
   EXPECT_EQ(back.problem_scene.parameters.C, modal_run().problem_scene.parameters.C);
   EXPECT_EQ(back.spec.engine.p_min, 0.015);
   EXPECT_EQ(back.spec.engine.direction, Direction::backward);
@@ -91,7 +93,8 @@ TEST(BranchFile, RefusesWhatIsNotABranchFileNamingTheKey) {
   };
   EXPECT_EQ(test::invalid_parameter(parse(good.substr(0, good.size() / 2)), &m), "restart");  // truncated
   EXPECT_NE(m.find("restart = 'f.json' is not a valid branch file: it is not JSON (a truncated or corrupted file?)"),
-            std::string::npos) << m;
+            std::string::npos)
+      << m;
   EXPECT_EQ(test::invalid_parameter(parse("{\"branch\": []}"), &m), "restart");
   EXPECT_NE(m.find("it has no \"format\": \"rbcstab-branch\""), std::string::npos) << m;
   EXPECT_EQ(test::invalid_parameter(parse("[parameters]\nC = 0.04\n"), &m), "restart");  // a scene file
@@ -106,16 +109,19 @@ TEST(BranchFile, RefusesWhatIsNotABranchFileNamingTheKey) {
   EXPECT_NE(m.find("branch[3].x has 8 entries: must be 9 (the problem's unknowns)"), std::string::npos) << m;
   EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["branch"][3]["x"][1] = nullptr; })), &m), "restart");
   EXPECT_NE(m.find("branch[3].x[1] must be a finite number, got null"), std::string::npos) << m;
-  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["switched_branch"]["branch"][0]["C"] = "0.1"; })), &m), "restart");
+  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["switched_branch"]["branch"][0]["C"] = "0.1"; })), &m),
+            "restart");
   EXPECT_NE(m.find("switched_branch.branch[0].C must be a finite number"), std::string::npos) << m;
   EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["branch"][1]["label"] = 1; })), &m), "restart");
   EXPECT_NE(m.find("label 1 appears twice"), std::string::npos) << m;
   EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["branch"][0]["type"] = ""; })), &m), "restart");
   EXPECT_NE(m.find("branch[0].type = '' must be 'EP'"), std::string::npos) << m;
-  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["spec"]["scene"] = "[parameters]\nC = -1\n"; })), &m), "restart");
+  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["spec"]["scene"] = "[parameters]\nC = -1\n"; })), &m),
+            "restart");
   EXPECT_NE(m.find("spec.scene: "), std::string::npos) << m;
   // An integer measure beyond int was truncated (a winding 2^32 + 1 read as 1; found by fuzzing).
-  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["branch"][0]["sigma"] = 4294967297LL; })), &m), "restart");
+  EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["branch"][0]["sigma"] = 4294967297LL; })), &m),
+            "restart");
   EXPECT_NE(m.find("branch[0].sigma = 4294967297 is out of range"), std::string::npos) << m;
   EXPECT_EQ(test::invalid_parameter([] { (void)load_branch("/nonexistent/b.json"); }, &m), "restart");
   EXPECT_NE(m.find("restart = '/nonexistent/b.json'"), std::string::npos) << m;
@@ -166,12 +172,14 @@ TEST(BranchRestart, AnyParameterFromALabel) {
   EXPECT_EQ(r.spec.parameter, P::B);
   EXPECT_EQ(r.problem_scene.parameters.C, 0.08);
   const Branch& b = r.branch.branch;
-  const auto start = std::find_if(b.points.begin(), b.points.end(), [](const BranchPoint& q) { return q.arclength == 0; });
+  const auto start =
+      std::find_if(b.points.begin(), b.points.end(), [](const BranchPoint& q) { return q.arclength == 0; });
   ASSERT_NE(start, b.points.end());
   EXPECT_LT(max_diff(start->x, modal_run().branch.branch.points.front().x), 1e-12);
   const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP);
   ASSERT_NE(bp, nullptr);
-  BranchSpec fresh = test::spec_of(modal_fixtures::scene(0.1, 6), ProblemKind::modal, P::C, 0.05, 0.1, Direction::backward);
+  BranchSpec fresh =
+      test::spec_of(modal_fixtures::scene(0.1, 6), ProblemKind::modal, P::C, 0.05, 0.1, Direction::backward);
   fresh.scene.parameters.B = bp->p;
   const SceneBranch f = continue_scene(fresh);
   const SpecialPoint* fbp = find_special_point(f.branch.branch, SpecialPointType::BP);
@@ -221,7 +229,8 @@ TEST(BranchSwitch, AtTheLabelledOnsetBPIsThePostInstabilityBranch) {
     EXPECT_TRUE(again.switched->branch.branch.points[i].x == sw.branch.points[i].x) << i;
   EXPECT_EQ(again.switched->branch.point_labels.front(), std::max(r.branch.last_label(), sw.last_label()) + 1);
   EXPECT_NE(to_text(again).find("switched at BP label " + std::to_string(r.switched->bp_label) + " at C = 0.03616893"),
-            std::string::npos) << to_text(again);
+            std::string::npos)
+      << to_text(again);
   // The l = 4 BP of the run: its branch has sigma pinned at sigma_4^c = -(20 + 4 alpha / 20).
   const SceneBranch l4 = switch_at_label(saved, r.branch.special_labels[2]);
   ASSERT_TRUE(l4.switched && l4.switched->switched) << l4.switched->message;
@@ -234,7 +243,9 @@ TEST(BranchSwitch, AtTheLabelledOnsetBPIsThePostInstabilityBranch) {
   // Labels that are not BPs, a label the run does not have, a parameter other than the branch's.
   std::string m;
   EXPECT_EQ(test::invalid_parameter([&] { (void)switch_at_label(saved, 1); }, &m), "switch_at");
-  EXPECT_NE(m.find("switch_at = 1 is a point of type EP, not a BP (branch point): the BP labels of this run are"), std::string::npos) << m;
+  EXPECT_NE(m.find("switch_at = 1 is a point of type EP, not a BP (branch point): the BP labels of this run are"),
+            std::string::npos)
+      << m;
   EXPECT_EQ(test::invalid_parameter([&] { (void)switch_at_label(saved, 999); }, &m), "switch_at");
   EXPECT_NE(m.find("switch_at = 999 is not a label of this run: its labels are 1 to "), std::string::npos) << m;
   EXPECT_EQ(test::invalid_parameter([&] { (void)restart(saved, 999); }, &m), "label");
@@ -323,8 +334,12 @@ TEST(BranchRestart, CurveLabelsRestartTheirBranchAndTheirCurve) {
   EXPECT_NEAR(from_bp.curve.branch.points.back().parameters[0], a.points.back().parameters[0], 1e-10);
   // A curve of another type, and switching at a point of the curve, are refused naming the flag.
   std::string m;
-  EXPECT_EQ(test::invalid_parameter([&] { (void)restart_curve(run, lp.label, test::curve_of(CurveKind::LP, P::B, 0.8, 1.2)); }, &m), "label");
-  EXPECT_NE(m.find("is a point of a BP curve: --curve LP starts from a point of type LP or a point of a LP curve"), std::string::npos) << m;
+  EXPECT_EQ(test::invalid_parameter(
+                [&] { (void)restart_curve(run, lp.label, test::curve_of(CurveKind::LP, P::B, 0.8, 1.2)); }, &m),
+            "label");
+  EXPECT_NE(m.find("is a point of a BP curve: --curve LP starts from a point of type LP or a point of a LP curve"),
+            std::string::npos)
+      << m;
   EXPECT_EQ(test::invalid_parameter([&] { (void)switch_at_label(run, lp.label); }, &m), "switch_at");
   EXPECT_NE(m.find("is a point of the BP curve, not a BP of a one-parameter branch"), std::string::npos) << m;
 }

@@ -48,9 +48,12 @@ void expect_branch_json(const nlohmann::json& j, const MeasuredBranch& m, const 
     for (std::size_t i = 0; i < m.measure_names.size(); ++i) {
       const MeasureValue& v = m.point_measures[k][i];
       const nlohmann::json& got = pt.at(m.measure_names[i]);
-      if (const double* d = std::get_if<double>(&v)) EXPECT_EQ(got.get<double>(), *d) << m.measure_names[i];
-      else if (const int* n = std::get_if<int>(&v)) EXPECT_EQ(got.get<int>(), *n) << m.measure_names[i];
-      else EXPECT_EQ(got.get<std::string>(), std::get<std::string>(v)) << m.measure_names[i];
+      if (const double* d = std::get_if<double>(&v))
+        EXPECT_EQ(got.get<double>(), *d) << m.measure_names[i];
+      else if (const int* n = std::get_if<int>(&v))
+        EXPECT_EQ(got.get<int>(), *n) << m.measure_names[i];
+      else
+        EXPECT_EQ(got.get<std::string>(), std::get<std::string>(v)) << m.measure_names[i];
     }
   }
   ASSERT_EQ(j.at("special_points").size(), b.special_points.size());
@@ -189,8 +192,10 @@ TEST(BranchLabels, SpecialPointsEndsAndEveryNthPointNumberedAlongTheRun) {
 TEST(BranchText, SummarisesTheBranchItsSpecialPointsAndTheSwitch) {
   const SceneBranch& m = modal_switched();
   const std::string t = to_text(m);
-  EXPECT_EQ(t.rfind(std::to_string(m.branch.branch.points.size()) + " points in C from 0.08 to 0.02, status completed", 0),
-            0u) << t;
+  EXPECT_EQ(
+      t.rfind(std::to_string(m.branch.branch.points.size()) + " points in C from 0.08 to 0.02, status completed", 0),
+      0u)
+      << t;
   EXPECT_NE(t.find("\nBP C = 0.03616893"), std::string::npos) << t;
   EXPECT_NE(t.find("switched at the first BP: "), std::string::npos) << t;
   EXPECT_NE(to_text(orbit_branch()).find("swing_tumble Delta = 0.38478"), std::string::npos);
@@ -204,8 +209,10 @@ TEST(BranchText, TableHasOneRowPerLabelledPoint) {
   std::size_t head = 0;
   while (head < lines.size() && lines[head].rfind(" BR", 0) != 0) ++head;
   ASSERT_LT(head, lines.size());
-  EXPECT_NE(lines[head].find("LAB                C                r              Psi            sigma          Delta_2  stability"),
-            std::string::npos) << lines[head];
+  EXPECT_NE(lines[head].find(
+                "LAB                C                r              Psi            sigma          Delta_2  stability"),
+            std::string::npos)
+      << lines[head];
   const int n = std::max(m.branch.last_label(), m.switched->branch.last_label());
   ASSERT_EQ(lines.size(), head + 1 + static_cast<std::size_t>(n));
   // Row of the first BP: branch 1, PT k+ (between points k and k + 1), type, label, C to 10 digits.

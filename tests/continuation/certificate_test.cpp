@@ -137,15 +137,14 @@ TEST(StabilityCertificate, LabelsFromTheMarginAndItsError) {
 // equilibrium's (analysis/steady_states: its own 2 x 2 trace/determinant at the exact state). Each margin
 // is within its error of the oracle's, up to the oracle's own rounding (4 eps per unit).
 TEST(Certificate, ReducedEquilibriumAgainstTheClosedFormEigenvalues) {
-  const BranchSpec spec = test::spec_of(modal_fixtures::scene(0.08, 2), ProblemKind::equilibrium, P::lambda, 0.5, 3,
-                                        Direction::both);
+  const BranchSpec spec =
+      test::spec_of(modal_fixtures::scene(0.08, 2), ProblemKind::equilibrium, P::lambda, 0.5, 3, Direction::both);
   const SceneBranch r = continue_scene(spec);
   const auto& pts = r.branch.branch.points;
   ASSERT_GT(pts.size(), 5u);
   Ratio ratio;
   for (const BranchPoint& pt : pts) {
-    const OutOfPlaneEquilibrium eq =
-        out_of_plane_equilibrium(with_parameter(spec.scene.parameters, P::lambda, pt.p));
+    const OutOfPlaneEquilibrium eq = out_of_plane_equilibrium(with_parameter(spec.scene.parameters, P::lambda, pt.p));
     const double oracle = -std::max(eq.eigenvalues[0].real(), eq.eigenvalues[1].real());
     const double oracle_error = 4 * kEps * (1 + std::abs(eq.eigenvalues[0]));
     EXPECT_LE(std::abs(pt.margin - oracle), pt.margin_error + oracle_error) << "lambda = " << pt.p;
@@ -217,20 +216,22 @@ TEST(Certificate, InPlaneOrbitAgainstLiouville) {
       ASSERT_NE(pt.spectrum[0].imag(), 0.0) << "a complex pair";
       const Eigen::Vector3d y0 = pr.state_at_zero(pt.x);
       const ReducedModel& m = sys.model(pt.p);
-      const double trace = test::period_integral(m, std::span<const double>(y0.data(), 3), [&](double t, std::span<const double> y) {
-        Eigen::MatrixXd J;
-        sys.jacobian(t, y, pt.p, J);
-        return J.trace();
-      });
+      const double trace =
+          test::period_integral(m, std::span<const double>(y0.data(), 3), [&](double t, std::span<const double> y) {
+            Eigen::MatrixXd J;
+            sys.jacobian(t, y, pt.p, J);
+            return J.trace();
+          });
       const double oracle = 1 - std::exp(trace / 2);
       EXPECT_LE(std::abs(pt.margin - oracle), pt.margin_error + 1e-13) << "Lambda = " << pt.p;
       EXPECT_LT(pt.margin_error, 1e-8) << "Lambda = " << pt.p;
       EXPECT_EQ(pt.stability, Stability::stable);
       ratio.add(std::abs(pt.margin - oracle), pt.margin_error);
     }
-    std::printf("in-plane orbit, %s certificates (%zu points, %.3f s): worst |margin - Liouville| / margin_error "
-                "%.3g (%.3g / %.3g)\n",
-                refined ? "refined" : "cheap", pts.size(), seconds, ratio.worst, ratio.actual, ratio.estimate);
+    std::printf(
+        "in-plane orbit, %s certificates (%zu points, %.3f s): worst |margin - Liouville| / margin_error "
+        "%.3g (%.3g / %.3g)\n",
+        refined ? "refined" : "cheap", pts.size(), seconds, ratio.worst, ratio.actual, ratio.estimate);
   }
 }
 
@@ -257,9 +258,10 @@ TEST(Certificate, EllipsoidalModalOrbitAgainstTheClosedFormMultipliers) {
     const ReducedForcedSystem red(at, P::C);
     const Eigen::Vector3d y0 = pt.x.head(3);
     const ReducedModel& m = red.model(pt.p);
-    const double sigma_bar = test::period_integral(m, std::span<const double>(y0.data(), 3), [&](double t, std::span<const double> y) {
-                               return m.sigma_from_mu(m.mu(t, y));
-                             }) / kTwoPi;
+    const double sigma_bar =
+        test::period_integral(m, std::span<const double>(y0.data(), 3),
+                              [&](double t, std::span<const double> y) { return m.sigma_from_mu(m.mu(t, y)); }) /
+        kTwoPi;
     double top = 0;  // the largest closed-form multiplier
     for (int l = 2; l <= 4; ++l) top = std::max(top, std::exp(kTwoPi * Upsilon_l(at.parameters, l, sigma_bar)));
     const PeriodicOrbitProblem rp(red);
@@ -272,9 +274,10 @@ TEST(Certificate, EllipsoidalModalOrbitAgainstTheClosedFormMultipliers) {
     ratio.add(std::abs(pt.margin - oracle), pt.margin_error);
   }
   EXPECT_GE(compared, 3);
-  std::printf("ellipsoidal modal orbit (%d of %zu points compared): worst |margin - closed form| / margin_error %.3g "
-              "(%.3g / %.3g)\n",
-              compared, b.points.size(), ratio.worst, ratio.actual, ratio.estimate);
+  std::printf(
+      "ellipsoidal modal orbit (%d of %zu points compared): worst |margin - closed form| / margin_error %.3g "
+      "(%.3g / %.3g)\n",
+      compared, b.points.size(), ratio.worst, ratio.actual, ratio.estimate);
   const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP);
   ASSERT_NE(bp, nullptr);
   EXPECT_EQ(bp->stability, Stability::uncertain);

@@ -158,13 +158,15 @@ TEST(Complementarity, AgreesWithALongModalSimulationWhereL4Survives) {
   const ComplementarityResult r = solve_surviving_modes(pr, s.parameters.C);
   ASSERT_TRUE(r.converged) << r.message;
   ASSERT_EQ(r.surviving, std::vector<int>{4});
-  for (std::size_t k = 0; k < r.Delta_l.size(); ++k) EXPECT_NEAR(sim.Delta_final[k], r.Delta_l[k], 1e-8) << "l = " << k + 2;
+  for (std::size_t k = 0; k < r.Delta_l.size(); ++k)
+    EXPECT_NEAR(sim.Delta_final[k], r.Delta_l[k], 1e-8) << "l = " << k + 2;
   EXPECT_NEAR(sim.sigma_final, r.sigma, 1e-7);
 }
 
 TEST(ModalBranchPointCurve, RejectsCoupledParameters) {
   const Scene s = scene(0.04, 6);
-  EXPECT_THROW(ModalBranchPointCurve(s, ContinuationParameter::Lambda, ContinuationParameter::Delta, 3), InvalidArgument);
+  EXPECT_THROW(ModalBranchPointCurve(s, ContinuationParameter::Lambda, ContinuationParameter::Delta, 3),
+               InvalidArgument);
   EXPECT_THROW(ModalBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::S, 3), InvalidArgument);
   EXPECT_THROW(ModalBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::C, 3), InvalidArgument);
   EXPECT_THROW(ModalBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::B, 7), InvalidArgument);
@@ -193,7 +195,8 @@ TEST(SphereCoordinates, BranchThroughRNearOneStaysInRange) {
     EXPECT_GE(ps.r, 0.0);
     EXPECT_LE(ps.r, 1.0);
     r_max = std::max(r_max, ps.r);
-    const OutOfPlaneEquilibrium c = out_of_plane_equilibrium(with_parameter(s.parameters, ContinuationParameter::Lambda, pt.p));
+    const OutOfPlaneEquilibrium c =
+        out_of_plane_equilibrium(with_parameter(s.parameters, ContinuationParameter::Lambda, pt.p));
     EXPECT_NEAR(ps.r, c.r, 1e-10) << "Lambda = " << pt.p;
   }
   EXPECT_GT(r_max, 1 - 1e-6);  // the branch did pass r -> 1

@@ -279,11 +279,13 @@ TEST(ContinuationEngine, DomainErrorsAndBadOptions) {
   } catch (const InvalidArgument& e) {
     EXPECT_EQ(e.parameter(), "initial_step");
   }
-  EXPECT_THROW(continue_branch(pr, vec({1.0}), 2.0, [] {
-    ContinuationOptions q;
-    q.p_max = 1.5;
-    return q;
-  }()), InvalidArgument);
+  EXPECT_THROW(continue_branch(pr, vec({1.0}), 2.0,
+                               [] {
+                                 ContinuationOptions q;
+                                 q.p_max = 1.5;
+                                 return q;
+                               }()),
+               InvalidArgument);
   // A rough start (x = 1 at p = 4, root x = 2) is corrected by Newton before continuing.
   const Branch s = continue_branch(pr, vec({1.0}), 4.0, [] {
     ContinuationOptions q;

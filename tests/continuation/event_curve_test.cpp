@@ -249,7 +249,9 @@ TEST(OrbitPassageEvent, TheUZFunctionAsAScalarEventGivesTheSameCurve) {
 
 // Fig. 2's in-plane orbit continued in Delta at lambda = 5 (UZ at Delta = 0.38478), its transition
 // continued in lambda over [2.5, 6].
-SceneCurve lambda_curve() { return continue_curve(test::orbit_spec(), test::curve_of(CurveKind::UZ, P::lambda, 2.5, 6)); }
+SceneCurve lambda_curve() {
+  return continue_curve(test::orbit_spec(), test::curve_of(CurveKind::UZ, P::lambda, 2.5, 6));
+}
 
 TEST(TransitionCurve, IsTheEventSystemWithOrbitMeasures) {
   const SceneCurve c = lambda_curve();
@@ -270,9 +272,9 @@ TEST(TransitionCurve, IsTheEventSystemWithOrbitMeasures) {
   // The reduced system depends on (lambda, Delta) only through Lambda (S does not involve them): the
   // transition curve is the level set Lambda(lambda, Delta) = Lambda*, every point the same orbit.
   const auto Lambda_at = [&](std::size_t k) {
-    return get_parameter(with_parameter(with_parameter(c.one.problem_scene, P::lambda, pts[k].p), P::Delta,
-                                        pts[k].parameters[0]),
-                         P::Lambda);
+    return get_parameter(
+        with_parameter(with_parameter(c.one.problem_scene, P::lambda, pts[k].p), P::Delta, pts[k].parameters[0]),
+        P::Lambda);
   };
   for (std::size_t k = 0; k < pts.size(); ++k) {
     EXPECT_TRUE(pts[k].stable) << k;
@@ -311,8 +313,8 @@ TEST(TransitionCurve, MatchesTheUZOfOneParameterBranchesAtFixedLambda) {
     const Branch b = continue_branch(pr, st.x, Delta_0, o);
     const SpecialPoint* uz = find_special_point(b, SpecialPointType::UZ);
     ASSERT_NE(uz, nullptr) << lambda;
-    std::printf("lambda = %.10f: curve Delta = %.13f, one-parameter UZ %.13f, difference %.1e\n", lambda, Delta_c, uz->p,
-                uz->p - Delta_c);
+    std::printf("lambda = %.10f: curve Delta = %.13f, one-parameter UZ %.13f, difference %.1e\n", lambda, Delta_c,
+                uz->p, uz->p - Delta_c);
     EXPECT_NEAR(uz->p, Delta_c, 1e-10) << lambda;
   }
 }
@@ -340,7 +342,8 @@ int simulated_winding(double Delta, double lambda) {
   std::vector<double> grid;
   for (int k = 1; k <= kCoarse; ++k) grid.push_back(T0 + kTwoPi * k / kCoarse);
   std::vector<std::vector<double>> ys{relaxed.y};
-  integrate(m, relaxed.y, T0, grid, io, [&](double, std::span<const double> y) { ys.emplace_back(y.begin(), y.end()); });
+  integrate(m, relaxed.y, T0, grid, io,
+            [&](double, std::span<const double> y) { ys.emplace_back(y.begin(), y.end()); });
   if (ys.size() != kCoarse + 1) return -1;
   const auto angle = [](const std::vector<double>& a, const std::vector<double>& b) {
     return std::atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]);
@@ -443,7 +446,8 @@ TEST(TransitionCurve, NoUZOnTheBranchIsAReasonAndEquilibriaHaveNoEvents) {
   std::string m;
   EXPECT_EQ(invalid_parameter([&] { test::curve_of(CurveKind::UZ, P::B, 0, 1).validate(BranchSpec{}); }, &m), "curve");
   EXPECT_NE(m.find("curve = UZ is not available for --kind equilibrium: must be LP, BP or HB"), std::string::npos) << m;
-  EXPECT_EQ(invalid_parameter([&] { test::curve_of(CurveKind::LP, P::B, 0, 1).validate(test::orbit_spec()); }, &m), "curve");
+  EXPECT_EQ(invalid_parameter([&] { test::curve_of(CurveKind::LP, P::B, 0, 1).validate(test::orbit_spec()); }, &m),
+            "curve");
   EXPECT_NE(m.find("must be LPC, PD, NS, BP or UZ"), std::string::npos) << m;
   EXPECT_EQ(curve_kind_from_string("UZ"), CurveKind::UZ);
   EXPECT_EQ(special_point_type(CurveKind::UZ), SpecialPointType::UZ);

@@ -68,7 +68,7 @@ TEST(FoldCurve, CuspFoldCurveMatchesClosedFormThroughTheCusp) {
   for (const auto& sp : curve.special_points) {
     if (sp.type != SpecialPointType::LP) continue;
     ++cusps;
-    EXPECT_LT(std::abs(sp.p), 1e-8);             // p2 = 0 at the cusp
+    EXPECT_LT(std::abs(sp.p), 1e-8);              // p2 = 0 at the cusp
     EXPECT_LT(std::abs(sp.parameters[0]), 1e-8);  // p1 = 0
   }
   EXPECT_EQ(cusps, 1u);

@@ -11,11 +11,14 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
-#include <limits>
 #include <cstdio>
+#include <limits>
 #include <random>
 #include <vector>
 
+#include "continuation/full_fixtures.hpp"
+#include "continuation/full_model_fixture.hpp"
+#include "continuation/modal_fixtures.hpp"
 #include "rbcstab/continuation/branch_point_curve.hpp"
 #include "rbcstab/continuation/branch_switch.hpp"
 #include "rbcstab/continuation/continuation.hpp"
@@ -29,15 +32,12 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "continuation/full_fixtures.hpp"
-#include "continuation/full_model_fixture.hpp"
-#include "continuation/modal_fixtures.hpp"
 
 namespace rbcstab {
 namespace {
 
-using full_fixtures::ClosedForm;
 using full_fixtures::closed_form;
+using full_fixtures::ClosedForm;
 using full_fixtures::drive;
 using full_fixtures::forced_scene;
 using full_fixtures::state_error;
@@ -141,7 +141,6 @@ TEST(FullEquilibrium, EllipsoidalBranchEqualsModalLevelAndClosedForm) {
   }
 }
 
-
 // The branch in C from 0.08 down to 0.012 with a stress-free l = 3 content (L = 5).
 struct ForcedRun {
   Scene s;
@@ -214,9 +213,9 @@ TEST(FullEquilibrium, ForcedBranchesInEveryParameterEqualClosedForm) {
     ContinuationParameter q;
     double lo, hi;
   };
-  const Case cases[] = {{ContinuationParameter::lambda, 0.2, 5},  {ContinuationParameter::Delta, 0.5, 2},
+  const Case cases[] = {{ContinuationParameter::lambda, 0.2, 5},     {ContinuationParameter::Delta, 0.5, 2},
                         {ContinuationParameter::Delta0, 1e-3, 0.05}, {ContinuationParameter::B, 0.7, 1.5},
-                        {ContinuationParameter::Lambda, 0.3, 1.5}, {ContinuationParameter::S, 0.5, 2}};
+                        {ContinuationParameter::Lambda, 0.3, 1.5},   {ContinuationParameter::S, 0.5, 2}};
   const ForcedRun at_C(1e-3, 4, 0.03);
   ASSERT_EQ(at_C.branch.status, ContinuationStatus::completed) << at_C.branch.message;
   const Eigen::VectorXd x0 = at_C.branch.points.back().x;
@@ -292,8 +291,8 @@ TEST(FullEquilibrium, UnforcedModeCrossingIsLocatedAsBranchPointWithCoincidentHo
   }
   const double omega = std::abs(hb->eigenvalue.imag());
   std::printf("l = 4 crossing: BP C = %.12f (%s, %d -> %d, vs closed form %.1e), HB C = %.12f (omega %.6f, %d -> %d)\n",
-              bp->p, to_string(bp->status).c_str(), bp->unstable_before, bp->unstable_after, std::abs(bp->p - C4), hb->p, omega,
-              hb->unstable_before, hb->unstable_after);
+              bp->p, to_string(bp->status).c_str(), bp->unstable_before, bp->unstable_after, std::abs(bp->p - C4),
+              hb->p, omega, hb->unstable_before, hb->unstable_after);
 }
 
 TEST(FullEquilibrium, BranchSwitchAtTheL4CrossingHasSigmaPinnedAtItsCriticalValue) {
@@ -344,7 +343,8 @@ TEST(FullEquilibrium, L4CrossingContinuedInTwoParametersByTheGenericBranchPointC
   ASSERT_NE(bp, nullptr);
   Scene scene = run.s;
   scene.parameters.C = bp->p;
-  const SceneTwoParameterProblem<FullEquilibriumProblem> base(scene, ContinuationParameter::C, ContinuationParameter::B);
+  const SceneTwoParameterProblem<FullEquilibriumProblem> base(scene, ContinuationParameter::C,
+                                                              ContinuationParameter::B);
   const BranchPointCurveProblem curve(base, *bp, 1.0);
   ContinuationOptions o;
   o.p_min = 0.8;

@@ -19,9 +19,9 @@
 #include <complex>
 #include <vector>
 
+#include "continuation/modal_fixtures.hpp"
 #include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/model/coefficients.hpp"
-#include "continuation/modal_fixtures.hpp"
 
 namespace rbcstab::full_fixtures {
 

@@ -91,8 +91,7 @@ void check_nearest_shift(int L, bool with_dense) {
     oracles.push_back(to_vector(Eigen::EigenSolver<Eigen::MatrixXd>(test::dense(f.J), false).eigenvalues()));
   for (auto want : oracles) {
     // The 16 values nearest the shift, with multiplicity: distances must agree one by one.
-    std::sort(want.begin(), want.end(),
-              [&](auto a, auto b) { return std::abs(a - o.shift) < std::abs(b - o.shift); });
+    std::sort(want.begin(), want.end(), [&](auto a, auto b) { return std::abs(a - o.shift) < std::abs(b - o.shift); });
     for (Eigen::Index i = 0; i < 16; ++i)
       EXPECT_NEAR(std::abs(r.eigenvalues[i] - o.shift), std::abs(want[std::size_t(i)] - o.shift), 1e-9) << i;
     EXPECT_LT(test::multiset_distance(to_vector(r.eigenvalues), want), 1e-9);

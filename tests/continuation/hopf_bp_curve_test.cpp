@@ -145,7 +145,7 @@ void check_bp_curve(const TwoParameterProblem& base, double p2_0, double p1_lo, 
     EXPECT_NEAR(p1, closed(p2), 1e-9) << "p2 = " << p2;
     EXPECT_NEAR(pt.x[0], 0, 1e-10);
     EXPECT_NEAR(pt.x[1], 0, 1e-10);
-    EXPECT_LT(std::abs(bc.mu(pt.x)), 1e-12);  // the BP persists: no unfolding needed
+    EXPECT_LT(std::abs(bc.mu(pt.x)), 1e-12);           // the BP persists: no unfolding needed
     EXPECT_NEAR(std::abs(bc.psi(pt.x)[0]), 1, 1e-10);  // the critical direction is x
   }
 }

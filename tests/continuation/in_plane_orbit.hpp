@@ -27,7 +27,6 @@
 
 namespace rbcstab::test {
 
-
 // An in-plane orbit state at t0 = 2 pi k: the reduced model (exact for ellipsoidal states) relaxed over
 // 30 forcing periods, embedded with f_{l>=3} = 0.
 struct InPlaneOrbit {

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <random>
 
+#include "continuation/modal_fixtures.hpp"
 #include "rbcstab/analysis/post_instability.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/continuation/branch_switch.hpp"
@@ -19,7 +20,6 @@
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/modal_model.hpp"
 #include "rbcstab/sweep/trace.hpp"
-#include "continuation/modal_fixtures.hpp"
 
 namespace rbcstab {
 namespace {
@@ -153,7 +153,8 @@ TEST(ModalEquilibrium, BranchPointsWhereUpsilonCrossesZero) {
     const int l = critical_mode(run.pr, sp->x, sp->p);
     EXPECT_EQ(l, expected_l++);
     // Located to 1e-8 against the closed form: sigma_eq(C) = sigma_l^c(B/C) solved by bisection.
-    const double C_star = threshold_root(run.s.parameters, ContinuationParameter::C, l, sp->p_lo - 1e-3, sp->p_hi + 1e-3);
+    const double C_star =
+        threshold_root(run.s.parameters, ContinuationParameter::C, l, sp->p_lo - 1e-3, sp->p_hi + 1e-3);
     EXPECT_NEAR(sp->p, C_star, 1e-8) << "l = " << l;
     EXPECT_EQ(sp->unstable_after, sp->unstable_before + 1);  // one real eigenvalue (Upsilon_l) crosses
   }

@@ -49,8 +49,10 @@ inline double threshold_root(Parameters p, ContinuationParameter q, int l, doubl
   for (int it = 0; it < 200 && hi - lo > 1e-15 * std::abs(hi); ++it) {
     const double mid = 0.5 * (lo + hi);
     const double g = threshold_margin(with_parameter(p, q, mid), l);
-    if ((g > 0) == (glo > 0)) lo = mid, glo = g;
-    else hi = mid;
+    if ((g > 0) == (glo > 0))
+      lo = mid, glo = g;
+    else
+      hi = mid;
   }
   return 0.5 * (lo + hi);
 }

@@ -13,22 +13,21 @@
 #include <cstdio>
 #include <vector>
 
+#include "continuation/ellipsoidal_orbit_bp_fixture.hpp"
 #include "rbcstab/continuation/branch_point_curve.hpp"
-#include "rbcstab/core/constants.hpp"
-#include "rbcstab/core/error.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/modal_orbit_bp_curve.hpp"
 #include "rbcstab/continuation/orbit_two_parameter.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
+#include "rbcstab/core/constants.hpp"
+#include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/sweep/trace.hpp"
-#include "continuation/ellipsoidal_orbit_bp_fixture.hpp"
 
 namespace rbcstab {
 namespace {
-
 
 using test::curve_point;
 
@@ -138,7 +137,8 @@ TEST(ModalOrbitBranchPointCurve, ModalMultiplierOfModeLIsOneOnTheCurve) {
       EXPECT_LT(F.norm(), 1e-10) << "the embedded orbit solves the modal shooting system";
       const Floquet f = mp.floquet(Xm, C);
       double closest = 1e300;
-      for (Eigen::Index i = 0; i < f.multipliers.size(); ++i) closest = std::min(closest, std::abs(f.multipliers[i] - 1.0));
+      for (Eigen::Index i = 0; i < f.multipliers.size(); ++i)
+        closest = std::min(closest, std::abs(f.multipliers[i] - 1.0));
       std::printf("lambda %g B %g C %.12f: closest modal multiplier to 1 at %.2e\n", lambda, B, C, closest);
       EXPECT_LT(closest, 1e-8);
       // The curve's own spectrum (closed-form decoupled multipliers) matches the modal Floquet set.
@@ -268,8 +268,10 @@ TEST(ModalOrbitBranchPointCurve, RejectsCoupledPairsModesAndTiltedRestShapes) {
   EXPECT_THROW(ModalOrbitBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::B, 2), InvalidArgument);
   Scene tilted = s;
   tilted.beta = 1.0;
-  EXPECT_THROW(ModalOrbitBranchPointCurve(tilted, ContinuationParameter::C, ContinuationParameter::B, 3), InvalidArgument);
-  EXPECT_THROW(ModalOrbitBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::beta, 3), InvalidArgument);
+  EXPECT_THROW(ModalOrbitBranchPointCurve(tilted, ContinuationParameter::C, ContinuationParameter::B, 3),
+               InvalidArgument);
+  EXPECT_THROW(ModalOrbitBranchPointCurve(s, ContinuationParameter::C, ContinuationParameter::beta, 3),
+               InvalidArgument);
 }
 
 }  // namespace

@@ -22,7 +22,6 @@
 namespace rbcstab {
 namespace {
 
-
 // The paper's in-plane scenes (Fig. 2 / Fig. 6 parameters) at a tilt beta.
 Scene in_plane(double lambda, double beta, double delta, int L) {
   Scene s;
@@ -272,8 +271,10 @@ TEST(ModalOrbit, PostInstabilityInPlaneOrbitIsTheLongTimeStateOfTheModalSimulati
     ASSERT_EQ(sample, 4 * 64 + 1);
     EXPECT_LT(worst, 1e-9) << lambda;
     for (std::size_t k = 0; k < 9; ++k) EXPECT_NEAR(sim_mean[k], orbit_mean[k], 1e-9) << "l = " << k + 2;
-    std::printf("lambda %g: |x_sim(2 pi k) - x0| <= %.3e; <Delta_2> = %.10f, <Delta_3> = %.10f (orbit), %.10f, %.10f (simulation)\n",
-                lambda, worst, orbit_mean[0], orbit_mean[1], sim_mean[0], sim_mean[1]);
+    std::printf(
+        "lambda %g: |x_sim(2 pi k) - x0| <= %.3e; <Delta_2> = %.10f, <Delta_3> = %.10f (orbit), %.10f, %.10f "
+        "(simulation)\n",
+        lambda, worst, orbit_mean[0], orbit_mean[1], sim_mean[0], sim_mean[1]);
   }
 }
 

@@ -6,17 +6,16 @@
 #include <cmath>
 #include <complex>
 
+#include "continuation/ns_fixtures.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/ns_curve.hpp"
 #include "rbcstab/continuation/orbit_two_parameter.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
-#include "continuation/ns_fixtures.hpp"
 
 namespace rbcstab {
 namespace {
 using ns_fixtures::Forced3;
-
 
 constexpr double kOmega = 0.3;
 
@@ -137,8 +136,8 @@ TEST(NeimarkSackerCurve, NeutralSaddleReportedAsSuch) {
   const Eigen::VectorXcd mu = curve.floquet(nr.x, p1, p2).multipliers;
   int real_pair = 0;
   for (Eigen::Index i = 0; i < mu.size(); ++i)
-    if (std::abs(mu[i].imag()) < 1e-12 && (std::abs(mu[i].real() - std::exp(kTwoPi * s)) < 1e-9 ||
-                                            std::abs(mu[i].real() - std::exp(-kTwoPi * s)) < 1e-9))
+    if (std::abs(mu[i].imag()) < 1e-12 &&
+        (std::abs(mu[i].real() - std::exp(kTwoPi * s)) < 1e-9 || std::abs(mu[i].real() - std::exp(-kTwoPi * s)) < 1e-9))
       ++real_pair;
   EXPECT_EQ(real_pair, 2);
 

@@ -52,8 +52,8 @@ class Forced3 final : public ForcedSystem2 {
                             std::span<double> fp) const override {
     const Eigen::Vector3d e = Eigen::Vector3d(x[0], x[1], x[2]) - xp(t, p1, p2);
     const Eigen::Vector3d dxp(std::sin(2 * t), 0, 0), dxp_dot(2 * std::cos(2 * t), 0, 0);
-    const Eigen::Vector3d F = Eigen::Vector3d(e[0], e[1], 0) - A(p1, p2) * dxp + dxp_dot -
-                              Eigen::Vector3d(2 * kC * e.dot(dxp), 0, 0);
+    const Eigen::Vector3d F =
+        Eigen::Vector3d(e[0], e[1], 0) - A(p1, p2) * dxp + dxp_dot - Eigen::Vector3d(2 * kC * e.dot(dxp), 0, 0);
     for (int i = 0; i < 3; ++i) fp[static_cast<std::size_t>(i)] = F[i];
   }
 

@@ -4,25 +4,24 @@
 // segments, a long direct simulation, the swinging <-> tumbling transition).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <cstdio>
-#include <algorithm>
 #include <vector>
 
 #include <Eigen/Eigenvalues>
 
+#include "continuation/fig2_fixture.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/orbit_two_parameter.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/integrator.hpp"
-#include "continuation/fig2_fixture.hpp"
 
 namespace rbcstab {
 namespace {
-
 
 // Forced saddle-node: x1' = p - (x1 - sin t)^2 + cos t, x2' = -x2 + sin t. With u = x1 - sin t,
 // u' = p - u^2: orbits x1 = sin t +- sqrt(p), x2 = (sin t - cos t)/2, multipliers e^{-+4 pi sqrt(p)}
@@ -353,7 +352,9 @@ TEST(OrbitNormalForms, PeriodDoublingCurveInTwoParameters) {
     EXPECT_LT(d, 1e-9) << q2;
   }
   for (const auto& sp : c.special_points) EXPECT_NE(sp.type, SpecialPointType::PD);
-  std::printf("points %zu steps %zu rejected %zu newton %zu loc %zu sps %zu\n", c.points.size(), c.counters.steps, c.counters.rejected_steps, c.counters.newton_iterations, c.counters.location_iterations, c.special_points.size());
+  std::printf("points %zu steps %zu rejected %zu newton %zu loc %zu sps %zu\n", c.points.size(), c.counters.steps,
+              c.counters.rejected_steps, c.counters.newton_iterations, c.counters.location_iterations,
+              c.special_points.size());
 }
 
 TEST(OrbitOptionsTest, ValidateNamesTheField) {
@@ -481,7 +482,8 @@ TEST(ReducedOrbit, MultiplierProductMatchesLiouville) {
     const Eigen::VectorXcd mu = pr.spectrum(X, Delta);
     const double product = (mu[0] * mu[1]).real(), expected = std::exp(integral);
     const double rel = std::abs(product - expected) / expected;
-    std::printf("Delta = %g: mu1 mu2 = %.6e, exp(int tr J) = %.6e, relative error %.2e\n", Delta, product, expected, rel);
+    std::printf("Delta = %g: mu1 mu2 = %.6e, exp(int tr J) = %.6e, relative error %.2e\n", Delta, product, expected,
+                rel);
     EXPECT_LT(rel, 1e-8) << Delta;
   }
 }

@@ -70,8 +70,9 @@ TEST(ReducedEquilibrium, OutOfPlaneBranchInLambdaMatchesClosedForm) {
 TEST(ReducedEquilibrium, OutOfPlaneBranchInEveryParameter) {
   Scene s = op_scene();
   s.parameters.lambda = 5;
-  check_branch(ContinuationParameter::Lambda, s, 0.2, 3.0, 5);  // through Lambda = 1 at finite S (Delta >= Delta0: Lambda >= 0.19)
-  check_branch(ContinuationParameter::S, s, 0.05, 50.0, 5);      // r -> 1 regime as S grows
+  check_branch(ContinuationParameter::Lambda, s, 0.2, 3.0,
+               5);  // through Lambda = 1 at finite S (Delta >= Delta0: Lambda >= 0.19)
+  check_branch(ContinuationParameter::S, s, 0.05, 50.0, 5);  // r -> 1 regime as S grows
   check_branch(ContinuationParameter::C, s, 0.001, 1.0, 5);
   check_branch(ContinuationParameter::Delta, s, 0.02, 3.0, 5);
   // kappa = 1/(Lambda S) ~ sqrt(Delta0): the branch has a square-root end at Delta0 = 0 (a fold in

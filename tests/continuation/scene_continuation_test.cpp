@@ -61,8 +61,8 @@ void expect_same_branch(const Branch& a, const Branch& b) {
 using test::invalid_parameter;
 
 TEST(SceneContinuation, EquilibriumIsTheDirectBranchWithPolarMeasures) {
-  const BranchSpec spec = spec_of(modal_fixtures::scene(0.08, 2), ProblemKind::equilibrium, P::lambda, 0.5, 3,
-                                  Direction::both);
+  const BranchSpec spec =
+      spec_of(modal_fixtures::scene(0.08, 2), ProblemKind::equilibrium, P::lambda, 0.5, 3, Direction::both);
   const SceneBranch r = continue_scene(spec);
   const ReducedEquilibriumProblem pr(spec.scene, P::lambda);
   const Branch direct = continue_branch(pr, pr.relaxed_state(200), pr.start_parameter(), spec.engine);
@@ -119,8 +119,8 @@ TEST(SceneContinuation, ModalIsTheDirectBranchAndSwitchesAtItsFirstBP) {
 }
 
 TEST(SceneContinuation, FullStartsFromTheRelaxedSceneWithRestContentAndFromTheEllipsoidWithout) {
-  const BranchSpec spec = spec_of(full_fixtures::forced_scene(0.08, 5, 1e-3), ProblemKind::full, P::C, 0.03, 0.08,
-                                  Direction::backward);
+  const BranchSpec spec =
+      spec_of(full_fixtures::forced_scene(0.08, 5, 1e-3), ProblemKind::full, P::C, 0.03, 0.08, Direction::backward);
   const SceneBranch r = continue_scene(spec);
   const FullEquilibriumProblem pr(spec.scene, P::C);
   const double p0 = pr.start_parameter();
@@ -133,8 +133,8 @@ TEST(SceneContinuation, FullStartsFromTheRelaxedSceneWithRestContentAndFromTheEl
   EXPECT_EQ(r.branch.measure_names, measure_names(ProblemKind::full, 5));
 
   // No stress-free l >= 3 content: Newton from the ellipsoidal closed form.
-  const BranchSpec plain = spec_of(full_fixtures::forced_scene(0.08, 4, 0), ProblemKind::full, P::C, 0.05, 0.08,
-                                   Direction::backward);
+  const BranchSpec plain =
+      spec_of(full_fixtures::forced_scene(0.08, 4, 0), ProblemKind::full, P::C, 0.05, 0.08, Direction::backward);
   const StartPoint s = find_start(plain);
   const FullEquilibriumProblem pp(plain.scene, P::C);
   EXPECT_EQ(s.method, StartMethod::ellipsoidal);
@@ -205,8 +205,8 @@ TEST(SceneContinuation, ModalOrbitRunsOnTheTotalAreaSceneFromTheRelaxedModalStat
 }
 
 TEST(SceneContinuation, BoundsLandOnTheParameterDomainEdges) {
-  BranchSpec spec = spec_of(modal_fixtures::scene(0.08, 2), ProblemKind::equilibrium, P::lambda, -5, 1.5,
-                            Direction::backward);
+  BranchSpec spec =
+      spec_of(modal_fixtures::scene(0.08, 2), ProblemKind::equilibrium, P::lambda, -5, 1.5, Direction::backward);
   const SceneBranch r = continue_scene(spec);
   EXPECT_EQ(r.spec.engine.p_min, 0.0);
   EXPECT_EQ(r.branch.branch.points.back().p, 0.0);  // landed on exactly
@@ -319,14 +319,15 @@ TEST(SceneCurve, BranchPointSystemChoice) {
 // ---- names and validation ----
 
 TEST(SceneContinuation, KindAndCurveNamesRoundTrip) {
-  for (ProblemKind k : {ProblemKind::equilibrium, ProblemKind::modal, ProblemKind::full, ProblemKind::orbit,
-                        ProblemKind::modal_orbit})
+  for (ProblemKind k :
+       {ProblemKind::equilibrium, ProblemKind::modal, ProblemKind::full, ProblemKind::orbit, ProblemKind::modal_orbit})
     EXPECT_EQ(problem_kind_from_string(to_string(k)), k);
   EXPECT_EQ(to_string(ProblemKind::modal_orbit), "modal-orbit");
   std::string m;
   EXPECT_EQ(invalid_parameter([] { (void)problem_kind_from_string("cycle"); }, &m), "kind");
   EXPECT_NE(m.find("kind = 'cycle' is not available: must be equilibrium, orbit, modal, modal-orbit or full"),
-            std::string::npos) << m;
+            std::string::npos)
+      << m;
   for (CurveKind c : {CurveKind::LP, CurveKind::BP, CurveKind::HB, CurveKind::LPC, CurveKind::PD, CurveKind::NS})
     EXPECT_EQ(curve_kind_from_string(to_string(c)), c);
   EXPECT_EQ(invalid_parameter([] { (void)curve_kind_from_string("EP"); }), "curve");
@@ -350,7 +351,8 @@ TEST(SceneContinuation, ValidateNamesTheField) {
   s = orbit_spec();
   s.scene.model = ModelLevel::modal;
   EXPECT_EQ(invalid_parameter([&] { s.validate(); }, &m), "model");
-  EXPECT_NE(m.find("model = modal is not available for --kind orbit: must be reduced (or auto)"), std::string::npos) << m;
+  EXPECT_NE(m.find("model = modal is not available for --kind orbit: must be reduced (or auto)"), std::string::npos)
+      << m;
   s = orbit_spec();
   s.relax_T = -1;
   EXPECT_EQ(invalid_parameter([&] { s.validate(); }), "relax_T");
@@ -367,7 +369,8 @@ TEST(SceneContinuation, ValidateNamesTheField) {
   c.parameter2 = P::B;
   c.type = CurveKind::LPC;
   EXPECT_EQ(invalid_parameter([&] { c.validate(BranchSpec{}); }, &m), "curve");
-  EXPECT_NE(m.find("curve = LPC is not available for --kind equilibrium: must be LP, BP or HB"), std::string::npos) << m;
+  EXPECT_NE(m.find("curve = LPC is not available for --kind equilibrium: must be LP, BP or HB"), std::string::npos)
+      << m;
   c.type = CurveKind::LP;
   EXPECT_EQ(invalid_parameter([&] { c.validate(orbit_spec()); }, &m), "curve");
   EXPECT_NE(m.find("curve = LP"), std::string::npos) << m;

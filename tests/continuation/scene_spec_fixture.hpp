@@ -8,8 +8,8 @@
 #include <string>
 
 #include "continuation/fig2_fixture.hpp"
-#include "continuation/modal_fixtures.hpp"
 #include "continuation/invalid_argument_fixture.hpp"
+#include "continuation/modal_fixtures.hpp"
 #include "rbcstab/continuation/branch_spec.hpp"
 #include "rbcstab/continuation/scene_curve.hpp"
 #include "rbcstab/continuation/scene_kinds.hpp"
@@ -47,11 +47,10 @@ inline BranchSpec modal_spec(int L = 6, double C_min = 0.015) {
 
 // Fig. 2's in-plane orbit from Delta = 0.3 to 0.45 (4 segments): one swinging -> tumbling transition.
 inline BranchSpec orbit_spec() {
-  BranchSpec s = spec_of(fig2_in_plane(0.3), ProblemKind::orbit, ContinuationParameter::Delta, 0.3, 0.45,
-                         Direction::forward);
+  BranchSpec s =
+      spec_of(fig2_in_plane(0.3), ProblemKind::orbit, ContinuationParameter::Delta, 0.3, 0.45, Direction::forward);
   s.orbit.segments = 4;
   return s;
 }
-
 
 }  // namespace rbcstab::test

@@ -8,9 +8,9 @@
 #include <cmath>
 
 #include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
-#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/physical.hpp"
 
@@ -117,7 +117,8 @@ TEST(ShearRatePath, ModalBranchSolvesTheConvertedScene) {
   Scene C_only = s;
   C_only.physical.reset();
   C_only.parameters.C = converted(s, end.p).parameters.C;
-  const Eigen::VectorXcd wrong = ModalEquilibriumProblem(C_only, ContinuationParameter::C).spectrum(end.x, C_only.parameters.C);
+  const Eigen::VectorXcd wrong =
+      ModalEquilibriumProblem(C_only, ContinuationParameter::C).spectrum(end.x, C_only.parameters.C);
   EXPECT_GT(distance(wrong, pr.spectrum(end.x, end.p)), 1e-3);
 }
 

@@ -55,10 +55,11 @@ TEST(OrbitStart, WrongStartCaseNowStartsOnTheAttractingOrbit) {
   EXPECT_NEAR(s.margin, 1 - max_modulus(mu), 1e-15);
   const Eigen::VectorXd simulated = sys.relaxed_state(2 * M_PI * 3000);
   EXPECT_LT((simulated - pr.state_at_zero(s.x)).norm(), 1e-7);
-  std::printf("wrong-start case: %d periods relaxed (defect %.3e), max |mu| = %.8f, margin %.6e +- %.2e, "
-              "|start - 3000-period simulation| = %.2e\n",
-              s.relaxation_periods, s.periodicity_defect, max_modulus(mu), s.margin, s.margin_error,
-              (simulated - pr.state_at_zero(s.x)).norm());
+  std::printf(
+      "wrong-start case: %d periods relaxed (defect %.3e), max |mu| = %.8f, margin %.6e +- %.2e, "
+      "|start - 3000-period simulation| = %.2e\n",
+      s.relaxation_periods, s.periodicity_defect, max_modulus(mu), s.margin, s.margin_error,
+      (simulated - pr.state_at_zero(s.x)).norm());
 
   // What the old start (Newton from the 32-period state) found: the repelling orbit, certified unstable,
   // 6e-3 from the attracting one.

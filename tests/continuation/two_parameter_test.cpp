@@ -77,8 +77,8 @@ TEST(SceneTwoParameterProblem, VesicleFoldCurveIsLambdaEqualsOne) {
 TEST(SceneTwoParameterProblem, CoupledPairsAreRejected) {
   const Scene s = modal_fixtures::scene();
   using P = ContinuationParameter;
-  const std::vector<std::pair<P, P>> coupled{{P::Lambda, P::Delta}, {P::lambda, P::Lambda}, {P::S, P::C},
-                                             {P::Delta0, P::S}, {P::B, P::B}};
+  const std::vector<std::pair<P, P>> coupled{
+      {P::Lambda, P::Delta}, {P::lambda, P::Lambda}, {P::S, P::C}, {P::Delta0, P::S}, {P::B, P::B}};
   for (const auto& [a, b] : coupled) {
     try {
       const SceneTwoParameterProblem<ReducedEquilibriumProblem> pr(s, a, b);
@@ -107,7 +107,8 @@ TEST(SceneTwoParameterProblem, ModalBranchPointCurveGenericSystemMatchesSigmaCri
   ASSERT_EQ(critical_mode(pr, bp->x, bp->p), 3);
   Scene at_bp = s;
   at_bp.parameters.C = bp->p;
-  const SceneTwoParameterProblem<ModalEquilibriumProblem> base(at_bp, ContinuationParameter::C, ContinuationParameter::B);
+  const SceneTwoParameterProblem<ModalEquilibriumProblem> base(at_bp, ContinuationParameter::C,
+                                                               ContinuationParameter::B);
   const BranchPointCurveProblem curve(base, *bp, 1.0);
   ContinuationOptions oc;
   oc.p_min = 0.7;

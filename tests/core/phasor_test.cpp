@@ -39,7 +39,8 @@ TEST(UnitPhasor, WithinOneUlpOverTheTimesOfARun) {
 TEST(UnitPhasor, WithinOneUlpNearMultiplesOfHalfPi) {
   // Where the reduced argument cancels most: the nearest doubles to k pi/2 and their neighbours.
   for (long k = -200000; k <= 200000; k += 997)
-    for (double x = std::nextafter(static_cast<double>(k) * 1.5707963267948966, -1e300), n = 0; n < 5; ++n, x = std::nextafter(x, 1e300))
+    for (double x = std::nextafter(static_cast<double>(k) * 1.5707963267948966, -1e300), n = 0; n < 5;
+         ++n, x = std::nextafter(x, 1e300))
       expect_within_one_ulp(x);
 }
 

@@ -34,10 +34,12 @@ TEST(Progress, TheThrottleWaitsOutItsInterval) {
   EXPECT_TRUE(always.due());
   // A callback of lines shows nothing in its first interval: a short run prints nothing.
   std::vector<std::string> lines;
-  const ProgressCallback quiet = progress_lines("w", "u", [&](const std::string& l) { lines.push_back(l); }, 3600);
+  const ProgressCallback quiet = progress_lines(
+      "w", "u", [&](const std::string& l) { lines.push_back(l); }, 3600);
   quiet(1, 2);
   EXPECT_TRUE(lines.empty());
-  const ProgressCallback eager = progress_lines("w", "u", [&](const std::string& l) { lines.push_back(l); }, 0);
+  const ProgressCallback eager = progress_lines(
+      "w", "u", [&](const std::string& l) { lines.push_back(l); }, 0);
   eager(1, 2);
   ASSERT_EQ(lines.size(), 1u);
   EXPECT_EQ(lines[0].rfind("w 1 of 2 u (50%), elapsed ", 0), 0u);

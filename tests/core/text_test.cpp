@@ -22,8 +22,8 @@ TEST(TextStream, NotANumberReadsNa) {
 
 TEST(TextStream, NaIsPaddedLikeANumber) {
   TextStream s;
-  s << '[' << std::setw(6) << kNaN << ']' << '[' << std::left << std::setw(5) << kNaN << ']' << '['
-    << std::setw(2) << kNaN << ']' << '[' << std::setw(4) << 1.5 << ']';
+  s << '[' << std::setw(6) << kNaN << ']' << '[' << std::left << std::setw(5) << kNaN << ']' << '[' << std::setw(2)
+    << kNaN << ']' << '[' << std::setw(4) << 1.5 << ']';
   EXPECT_EQ(s.str(), "[   n/a][n/a  ][n/a][1.5 ]");
 }
 

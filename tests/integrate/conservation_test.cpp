@@ -42,8 +42,8 @@ TEST_P(Conservation, DriftIsSmallAgainstRtol) {
   for (double rtol : {1e-6, 1e-9}) {
     const SimulationResult r = run(s, c.level, rtol, c.stepper);
     ASSERT_EQ(r.status, IntegrationStatus::success) << r.reason;
-    std::cout << c.name << " rtol = " << rtol << ": drift = " << r.excess_area_drift
-              << ", steps = " << r.counters.steps << "\n";
+    std::cout << c.name << " rtol = " << rtol << ": drift = " << r.excess_area_drift << ", steps = " << r.counters.steps
+              << "\n";
     // The tension keeps dDelta/dt = 0 exactly; the discrete flow conserves it to its local error,
     // accumulated over the steps: drift <= K * rtol * Delta. Measured K: <= 35 for the one-step
     // methods (we allow 1e2) and up to ~230 for GSL's variable-order BDF (we allow 1e3).

@@ -51,27 +51,73 @@ TEST_P(Extremes, RunsToTheEndWithFiniteOutput) {
 
 INSTANTIATE_TEST_SUITE_P(
     Cases, Extremes,
-    ::testing::Values(
-        Extreme{"reduced_beta0", fig2_scene(1.0, 0.0), ModelLevel::reduced},
-        Extreme{"modal_beta0", fig2_scene(1.0, 0.0), ModelLevel::modal},
-        Extreme{"full_beta0", modified(fig3_scene(0.0), [](Scene& s) { s.T = 60; }), ModelLevel::full},
-        Extreme{"modal_C_inf", modified(fig3_scene(0.0), [](Scene& s) { s.parameters.C = INFINITY; s.T = 100; }),
-                ModelLevel::modal},
-        Extreme{"full_C_inf", modified(fig3_scene(kPi / 2), [](Scene& s) { s.parameters.C = INFINITY; s.T = 50; s.L = 5; }),
-                ModelLevel::full},
-        Extreme{"reduced_C_inf", modified(fig2_scene(0.5, kPi / 2), [](Scene& s) { s.parameters.C = INFINITY; }),
-                ModelLevel::reduced},
-        Extreme{"modal_Delta0_0", modified(fig3_scene(kPi / 2), [](Scene& s) { s.parameters.Delta0 = 0; s.T = 100; }),
-                ModelLevel::modal},
-        Extreme{"reduced_Delta0_0", modified(fig2_scene(1.0, kPi / 2), [](Scene& s) { s.parameters.Delta0 = 0; }),
-                ModelLevel::reduced},
-        Extreme{"modal_delta_1e-14", modified(fig3_scene(0.001), [](Scene& s) { s.delta = 1e-14; s.T = 200; }),
-                ModelLevel::modal},
-        Extreme{"full_delta_1e-14", modified(fig3_scene(0.001), [](Scene& s) { s.delta = 1e-14; s.T = 100; s.L = 5; }),
-                ModelLevel::full},
-        Extreme{"auto_L2", modified(fig3_scene(kPi / 2), [](Scene& s) { s.L = 2; s.T = 50; }), ModelLevel::automatic},
-        Extreme{"full_L2", modified(fig3_scene(0.3), [](Scene& s) { s.L = 2; s.T = 50; }), ModelLevel::full},
-        Extreme{"modal_L2", modified(fig3_scene(0.3), [](Scene& s) { s.L = 2; s.T = 50; }), ModelLevel::modal}),
+    ::testing::Values(Extreme{"reduced_beta0", fig2_scene(1.0, 0.0), ModelLevel::reduced},
+                      Extreme{"modal_beta0", fig2_scene(1.0, 0.0), ModelLevel::modal},
+                      Extreme{"full_beta0", modified(fig3_scene(0.0), [](Scene& s) { s.T = 60; }), ModelLevel::full},
+                      Extreme{"modal_C_inf",
+                              modified(fig3_scene(0.0),
+                                       [](Scene& s) {
+                                         s.parameters.C = INFINITY;
+                                         s.T = 100;
+                                       }),
+                              ModelLevel::modal},
+                      Extreme{"full_C_inf",
+                              modified(fig3_scene(kPi / 2),
+                                       [](Scene& s) {
+                                         s.parameters.C = INFINITY;
+                                         s.T = 50;
+                                         s.L = 5;
+                                       }),
+                              ModelLevel::full},
+                      Extreme{"reduced_C_inf",
+                              modified(fig2_scene(0.5, kPi / 2), [](Scene& s) { s.parameters.C = INFINITY; }),
+                              ModelLevel::reduced},
+                      Extreme{"modal_Delta0_0",
+                              modified(fig3_scene(kPi / 2),
+                                       [](Scene& s) {
+                                         s.parameters.Delta0 = 0;
+                                         s.T = 100;
+                                       }),
+                              ModelLevel::modal},
+                      Extreme{"reduced_Delta0_0",
+                              modified(fig2_scene(1.0, kPi / 2), [](Scene& s) { s.parameters.Delta0 = 0; }),
+                              ModelLevel::reduced},
+                      Extreme{"modal_delta_1e-14",
+                              modified(fig3_scene(0.001),
+                                       [](Scene& s) {
+                                         s.delta = 1e-14;
+                                         s.T = 200;
+                                       }),
+                              ModelLevel::modal},
+                      Extreme{"full_delta_1e-14",
+                              modified(fig3_scene(0.001),
+                                       [](Scene& s) {
+                                         s.delta = 1e-14;
+                                         s.T = 100;
+                                         s.L = 5;
+                                       }),
+                              ModelLevel::full},
+                      Extreme{"auto_L2",
+                              modified(fig3_scene(kPi / 2),
+                                       [](Scene& s) {
+                                         s.L = 2;
+                                         s.T = 50;
+                                       }),
+                              ModelLevel::automatic},
+                      Extreme{"full_L2",
+                              modified(fig3_scene(0.3),
+                                       [](Scene& s) {
+                                         s.L = 2;
+                                         s.T = 50;
+                                       }),
+                              ModelLevel::full},
+                      Extreme{"modal_L2",
+                              modified(fig3_scene(0.3),
+                                       [](Scene& s) {
+                                         s.L = 2;
+                                         s.T = 50;
+                                       }),
+                              ModelLevel::modal}),
     [](const ::testing::TestParamInfo<Extreme>& param_info) {
       std::string n = param_info.param.name;
       for (char& c : n)
@@ -97,8 +143,10 @@ TEST(Extremes, ReducedWithInfiniteSTendsToTankTreading) {
   // Psi -> arccos(Lambda). From the out-of-plane start beta = 0 exactly (r = 0), through r = 1.
   for (int variant = 0; variant < 2; ++variant) {
     Scene s = fig2_scene(0.01, 0.0);
-    if (variant == 0) s.parameters.Delta0 = 0;
-    else s.parameters.C = INFINITY;
+    if (variant == 0)
+      s.parameters.Delta0 = 0;
+    else
+      s.parameters.C = INFINITY;
     s.T = 200;
     ASSERT_TRUE(std::isinf(s.parameters.S()));
     const double Lambda = s.parameters.Lambda();
@@ -117,7 +165,6 @@ TEST(Extremes, ReducedWithInfiniteSTendsToTankTreading) {
     }
   }
 }
-
 
 TEST(ReducedEquilibrium, OutOfPlaneLongTimeStateMatchesClosedForm) {
   // docs/theory.md: for r0 = 0 the reduced system is autonomous and its equilibrium has

@@ -148,7 +148,6 @@ TEST(Failure, IntegrateRejectsBadGrid) {
   EXPECT_THROW(integrate(*sys, y_wrong, 0.0, grid, {}, {}), InvalidArgument);
 }
 
-
 // A one-dimensional test system y' = 1 - y whose F is NaN where y > y_bad or t > t_bad.
 class ToySystem final : public System {
  public:
@@ -198,7 +197,8 @@ TEST(Failure, PersistentNonFiniteRhsEndsWithStatus) {
     IntegratorOptions o;
     o.stepper = st;
     int samples = 0;
-    const IntegrationResult r = integrate(sys, sys.initial_state(), 0.0, grid, o, [&](double, std::span<const double>) { ++samples; });
+    const IntegrationResult r =
+        integrate(sys, sys.initial_state(), 0.0, grid, o, [&](double, std::span<const double>) { ++samples; });
     EXPECT_EQ(r.status, IntegrationStatus::non_finite_state) << to_string(st) << ": " << r.reason;
     EXPECT_NE(r.reason.find("non-finite"), std::string::npos) << r.reason;
     EXPECT_EQ(samples, 1) << to_string(st);
@@ -242,7 +242,6 @@ TEST(Simulation, TrajectoryIsOnTheUserGrid) {
   // The first sample is the initial state.
   EXPECT_EQ(r.trajectory.Delta_l[0], r.Delta_initial);
 }
-
 
 TEST(Simulation, TailMeanDoesNotDependOnTheSamplingInterval) {
   // The tail averages use their own uniform grid (Simpson); user samples inside the window must not

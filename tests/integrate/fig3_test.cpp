@@ -69,7 +69,8 @@ TEST_P(Fig3, ExcessAreaMovesToL3AndSigmaSettlesAtSigma3c) {
   EXPECT_LT(bound, (r.oscillating ? 1e-3 : 1e-6) * std::abs(sigma3c));
   double mean = 0;
   const std::size_t k0 = std::size_t(std::lower_bound(tr.t.begin(), tr.t.end(), s.T - W - 1e-9) - tr.t.begin());
-  for (std::size_t k = k0 + 1; k < tr.t.size(); ++k) mean += 0.5 * (tr.sigma[k] + tr.sigma[k - 1]) * (tr.t[k] - tr.t[k - 1]);
+  for (std::size_t k = k0 + 1; k < tr.t.size(); ++k)
+    mean += 0.5 * (tr.sigma[k] + tr.sigma[k - 1]) * (tr.t[k] - tr.t[k - 1]);
   mean /= tr.t.back() - tr.t[k0];
   std::cout << "  mean sigma over [250, 500] = " << mean << ", sigma_3^c = " << sigma3c << ", bound " << bound << "\n";
   EXPECT_NEAR(mean, sigma3c, bound + (r.oscillating ? 1e-2 : 1e-6 * std::abs(sigma3c)));

@@ -115,7 +115,6 @@ TEST(ModalAmplitudes, ReconstructedAmplitudesMatchFullModel) {
   }
 }
 
-
 TEST(SigmaFollowsReduced, WhilePerturbationsAreSmall) {
   // Sec. IV / Fig. 3(d): sigma(t) first follows sigma_R(t) of the reduced system. With beta = 0 the
   // reduced system is the modal one without the l >= 3 modes, so the difference is caused by their

@@ -22,8 +22,8 @@
 namespace rbcstab {
 namespace {
 
-using testing::FullState;
 using testing::fig3_scene;
+using testing::FullState;
 using testing::gsl_rk8pd;
 using testing::native_rk8pd;
 using testing::Steps;
@@ -62,7 +62,8 @@ TEST(PrinceDormand, BitForBitWithGslsRk8pd) {
       EXPECT_GT(a.failed, 0u) << what;  // the rejection path is exercised
       ASSERT_EQ(a.samples.size(), grid.size()) << what;
       ASSERT_EQ(b.samples.size(), grid.size()) << what;
-      for (std::size_t k = 0; k < a.samples.size(); ++k) EXPECT_EQ(a.samples[k], b.samples[k]) << what << " sample " << k;
+      for (std::size_t k = 0; k < a.samples.size(); ++k)
+        EXPECT_EQ(a.samples[k], b.samples[k]) << what << " sample " << k;
     }
   }
 }
@@ -127,9 +128,11 @@ TEST(PrinceDormand, CompactFormTakesTheSameStepsAsTheFullState) {
       ASSERT_EQ(a.samples.size(), grid.size());
       ASSERT_EQ(b.samples.size(), grid.size());
       for (std::size_t k = 0; k < a.samples.size(); ++k) {
-        const Observation oa = ss.system->observe(grid[k], a.samples[k]), ob = ss.system->observe(grid[k], b.samples[k]);
+        const Observation oa = ss.system->observe(grid[k], a.samples[k]),
+                          ob = ss.system->observe(grid[k], b.samples[k]);
         for (std::size_t l = 0; l < oa.Delta_l.size(); ++l)
-          EXPECT_NEAR(oa.Delta_l[l], ob.Delta_l[l], 2.6e-12) << beta << " " << rtol << " t = " << grid[k] << " l = " << l + 2;
+          EXPECT_NEAR(oa.Delta_l[l], ob.Delta_l[l], 2.6e-12)
+              << beta << " " << rtol << " t = " << grid[k] << " l = " << l + 2;
         EXPECT_NEAR(oa.sigma, ob.sigma, 3.6e-13 * std::abs(ob.sigma)) << beta << " " << rtol << " t = " << grid[k];
       }
     }

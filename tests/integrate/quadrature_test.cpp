@@ -64,10 +64,11 @@ TEST(Quadrature, TensionIntegralIsTheIntegralOfSigmaR) {
   const std::vector<double> y0 = sys.initial_state();
   std::vector<double> samples = {m.sigma(0.0, std::span<const double>(y0).first(3))};
   double I = 0;
-  const IntegrationResult r = integrate(sys, y0, 0.0, grid, tight(Stepper::rk8pd), [&](double t, std::span<const double> y) {
-    samples.push_back(m.sigma(t, y.first(3)));
-    I = y[3];
-  });
+  const IntegrationResult r =
+      integrate(sys, y0, 0.0, grid, tight(Stepper::rk8pd), [&](double t, std::span<const double> y) {
+        samples.push_back(m.sigma(t, y.first(3)));
+        I = y[3];
+      });
   ASSERT_EQ(r.status, IntegrationStatus::success);
   double simpson = samples.front() + samples.back();
   for (int k = 1; k < n; ++k) simpson += (k % 2 == 1 ? 4 : 2) * samples[std::size_t(k)];
@@ -103,7 +104,8 @@ TEST(Quadrature, JacobianMatchesCentralDifferencesAndImplicitStepsAgree) {
   }
   sys.rhs(t + h, y, fp);
   sys.rhs(t - h, y, fm);
-  for (std::size_t i = 0; i < n; ++i) EXPECT_NEAR(dfdt[i], (fp[i] - fm[i]) / (2 * h), 1e-7 * scale) << "dF_" << i << "/dt";
+  for (std::size_t i = 0; i < n; ++i)
+    EXPECT_NEAR(dfdt[i], (fp[i] - fm[i]) / (2 * h), 1e-7 * scale) << "dF_" << i << "/dt";
   EXPECT_GT(std::abs(dfdt[3]), 1e-3);  // the rest shape rotates: sigma_R depends on t explicitly
 
   const double grid[1] = {20.0};

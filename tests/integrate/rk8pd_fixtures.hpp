@@ -54,8 +54,9 @@ inline Steps gsl_rk8pd(const System& s, const std::vector<double>& grid, const I
 
 inline Steps native_rk8pd(const System& s, const std::vector<double>& grid, const IntegratorOptions& o) {
   Steps r;
-  const IntegrationResult ir = integrate(s, s.initial_state(), 0.0, grid, o,
-                                         [&](double, std::span<const double> y) { r.samples.emplace_back(y.begin(), y.end()); });
+  const IntegrationResult ir = integrate(s, s.initial_state(), 0.0, grid, o, [&](double, std::span<const double> y) {
+    r.samples.emplace_back(y.begin(), y.end());
+  });
   if (ir.status != IntegrationStatus::success) r.samples.clear();
   r.steps = ir.counters.steps;
   r.failed = ir.counters.failed_steps;

@@ -34,19 +34,22 @@ inline Deviation max_deviation(const SimulationResult& a, const SimulationResult
     d.sigma = std::max(d.sigma, std::abs(a.trajectory.sigma[k] - b.trajectory.sigma[k]));
     d.r = std::max(d.r, std::abs(a.trajectory.r[k] - b.trajectory.r[k]));
     if (a.trajectory.r[k] > 1e-6 && b.trajectory.r[k] > 1e-6)
-      d.Psi = std::max(d.Psi, std::abs(std::remainder(a.trajectory.Psi[k] - b.trajectory.Psi[k], 2 * std::numbers::pi)));
+      d.Psi =
+          std::max(d.Psi, std::abs(std::remainder(a.trajectory.Psi[k] - b.trajectory.Psi[k], 2 * std::numbers::pi)));
   }
   return d;
 }
 
 inline bool all_finite(const SimulationResult& r) {
-  auto fin = [](const std::vector<double>& v) { return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); }); };
+  auto fin = [](const std::vector<double>& v) {
+    return std::all_of(v.begin(), v.end(), [](double x) { return std::isfinite(x); });
+  };
   bool ok = fin(r.Delta_final) && fin(r.Delta_tail_mean) && fin(r.Delta_initial) && fin(r.y_final) &&
             std::isfinite(r.sigma_final) && std::isfinite(r.sigma_tail_mean) && std::isfinite(r.r_final) &&
             std::isfinite(r.Psi_final) && std::isfinite(r.excess_area_drift);
   for (std::size_t k = 0; k < r.trajectory.t.size(); ++k)
-    ok = ok && fin(r.trajectory.Delta_l[k]) && std::isfinite(r.trajectory.sigma[k]) && std::isfinite(r.trajectory.r[k]) &&
-         std::isfinite(r.trajectory.Psi[k]);
+    ok = ok && fin(r.trajectory.Delta_l[k]) && std::isfinite(r.trajectory.sigma[k]) &&
+         std::isfinite(r.trajectory.r[k]) && std::isfinite(r.trajectory.Psi[k]);
   return ok;
 }
 

@@ -23,7 +23,10 @@ TEST(Json, NonFiniteBecomesNull) {
 }
 
 TEST(Json, EveryNullGetsAReasonNamingTheInput) {
-  nlohmann::json j = {{"a", INFINITY}, {"b", 1.0}, {"m", {{1.0, NAN}}}, {"o", {{"c", nullptr}, {"c_reason", "known"}}},
+  nlohmann::json j = {{"a", INFINITY},
+                      {"b", 1.0},
+                      {"m", {{1.0, NAN}}},
+                      {"o", {{"c", nullptr}, {"c_reason", "known"}}},
                       {"list", {{{"d", NAN}}}}};
   EXPECT_EQ(unexplained_nulls(j).size(), 3u);  // a, m and list/0/d: o/c has its reason
   explain_nulls(j, "why");

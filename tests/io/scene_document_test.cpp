@@ -55,7 +55,8 @@ TEST(SceneDocument, FlagsContinuationParametersAndAxesAreTheTables) {
   std::vector<std::string> expected{"--name"};
   for (const ParameterRow& r : parameter_table())
     if (r.table) expected.push_back("--" + std::string(r.name));
-  for (const char* f : {"--delta-l", "--rest-delta-l", "--L", "--T", "--dt", "--model", "--stepper", "--rtol", "--atol"})
+  for (const char* f :
+       {"--delta-l", "--rest-delta-l", "--L", "--T", "--dt", "--model", "--stepper", "--rtol", "--atol"})
     expected.emplace_back(f);
   std::vector<std::string> flags;
   for (const SceneKey* k : scene_flags()) flags.push_back(k->flag);
@@ -70,15 +71,17 @@ TEST(SceneDocument, FlagsContinuationParametersAndAxesAreTheTables) {
   }
   EXPECT_EQ(continuation_parameter_names(), parameter_names(ParameterUse::continuation));
   EXPECT_EQ(axis_names(), parameter_names(ParameterUse::axis));
-  for (const std::string& n : continuation_parameter_names()) EXPECT_EQ(to_string(continuation_parameter_from_string(n)), n);
+  for (const std::string& n : continuation_parameter_names())
+    EXPECT_EQ(to_string(continuation_parameter_from_string(n)), n);
   for (const std::string& n : axis_names()) EXPECT_EQ(to_string(axis_from_string(n)), n);
   EXPECT_THROW(axis_from_string("B"), InvalidArgument);  // a parameter, not an axis (lnB is)
 }
 
 TEST(SceneDocument, RecordsWhereEachValueCameFrom) {
-  SceneFile f = parse_scene("name = \"p\"\n[parameters]\nB = 3\n[run]\nL = 6\n[initial]\ndelta_l = { 3 = 1e-4 }\n"
-                            "[diagram]\ncounts = [2, 2]\n",
-                            "p.toml");
+  SceneFile f = parse_scene(
+      "name = \"p\"\n[parameters]\nB = 3\n[run]\nL = 6\n[initial]\ndelta_l = { 3 = 1e-4 }\n"
+      "[diagram]\ncounts = [2, 2]\n",
+      "p.toml");
   EXPECT_EQ(f.origin("parameters.B"), Origin::file);
   EXPECT_EQ(f.origin("run.L"), Origin::file);
   EXPECT_EQ(f.origin("name"), Origin::file);

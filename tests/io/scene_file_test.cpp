@@ -189,7 +189,8 @@ TEST(SceneFile, NamesArePrintableAndRoundTripThroughToToml) {
 // Keys that name one mode ("3", "03", " 3", "+3") were merged, the last silently winning (found by fuzzing).
 TEST(SceneFile, ModeGivenTwiceIsRefused) {
   expect_refused("[initial]\ndelta_l = { 3 = 1e-3, \"03\" = 2e-3 }", "initial.delta_l", {"'03' and '3'", "mode l = 3"});
-  expect_refused("[initial]\nrest_delta_l = { \"+4\" = 1e-4, 4 = 2e-4 }", "initial.rest_delta_l", {"give each mode once"});
+  expect_refused("[initial]\nrest_delta_l = { \"+4\" = 1e-4, 4 = 2e-4 }", "initial.rest_delta_l",
+                 {"give each mode once"});
   EXPECT_EQ(parse_scene("[initial]\ndelta_l = { 3 = 1e-3, 4 = 2e-3 }").scene.delta_l.size(), 2u);
 }
 

@@ -111,7 +111,8 @@ TEST_P(JacobianTest, ApplyAndShiftedSolveMatchDenseEigen) {
   J.apply(x, Jx);
   const Eigen::VectorXd Jx_dense = A * b;
   for (std::size_t i = 0; i < n; ++i)
-    EXPECT_NEAR(Jx[i], Jx_dense(Eigen::Index(i)), 1e-13 * double(n) * A.cwiseAbs().maxCoeff() * b.cwiseAbs().maxCoeff());
+    EXPECT_NEAR(Jx[i], Jx_dense(Eigen::Index(i)),
+                1e-13 * double(n) * A.cwiseAbs().maxCoeff() * b.cwiseAbs().maxCoeff());
 
   for (double c : {1e-4, 0.01, 0.3, -0.5, 2.0}) {
     const Eigen::MatrixXd S = Eigen::MatrixXd::Identity(Eigen::Index(n), Eigen::Index(n)) - c * A;
@@ -120,7 +121,7 @@ TEST_P(JacobianTest, ApplyAndShiftedSolveMatchDenseEigen) {
     std::vector<double> xs(n);
     const bool ok = J.solve_shifted(c, {b.data(), n}, xs);
     const double cond = 1 / lu.rcond();  // 1-norm condition number estimate
-    if (cond > 1e12) continue;  // numerically singular: either answer is acceptable
+    if (cond > 1e12) continue;           // numerically singular: either answer is acceptable
     ASSERT_TRUE(ok) << "c = " << c << ", cond = " << cond;
     // Both solves are backward stable: forward errors ~ cond * eps each; 100 n eps cond bounds them.
     const double tol = 100 * double(n) * 2.2e-16 * cond * std::max(1.0, x_ref.cwiseAbs().maxCoeff());
@@ -131,13 +132,14 @@ TEST_P(JacobianTest, ApplyAndShiftedSolveMatchDenseEigen) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Levels, JacobianTest,
-    ::testing::Values(Case{"full_L4", 4, ModelLevel::full, true}, Case{"full_L10", 10, ModelLevel::full, true},
-                      Case{"full_L10_ellipsoidal_rest", 10, ModelLevel::full, false},
-                      Case{"modal_L4", 4, ModelLevel::modal, false}, Case{"modal_L10", 10, ModelLevel::modal, false},
-                      Case{"reduced", 2, ModelLevel::reduced, false}),
-    [](const ::testing::TestParamInfo<Case>& param_info) { return param_info.param.name; });
+INSTANTIATE_TEST_SUITE_P(Levels, JacobianTest,
+                         ::testing::Values(Case{"full_L4", 4, ModelLevel::full, true},
+                                           Case{"full_L10", 10, ModelLevel::full, true},
+                                           Case{"full_L10_ellipsoidal_rest", 10, ModelLevel::full, false},
+                                           Case{"modal_L4", 4, ModelLevel::modal, false},
+                                           Case{"modal_L10", 10, ModelLevel::modal, false},
+                                           Case{"reduced", 2, ModelLevel::reduced, false}),
+                         [](const ::testing::TestParamInfo<Case>& param_info) { return param_info.param.name; });
 
 TEST(StructuredJacobian, SingularShiftIsReportedNotNaN) {
   // J = diag(1, 2) with no rank-one part: I - 1 * J is singular in its first entry.

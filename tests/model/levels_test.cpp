@@ -54,8 +54,7 @@ TEST(InitialState, PerturbationsCarryDeltaInEveryMode) {
     }
     // Reality f_{l,-m} = (-1)^m conj f_{l,m}.
     for (int l = 2; l <= s.L; ++l)
-      for (int m = 1; m <= l; ++m)
-        EXPECT_EQ(init.f.at(l, -m), (m % 2 ? -1.0 : 1.0) * std::conj(init.f.at(l, m)));
+      for (int m = 1; m <= l; ++m) EXPECT_EQ(init.f.at(l, -m), (m % 2 ? -1.0 : 1.0) * std::conj(init.f.at(l, m)));
   }
 }
 
@@ -149,8 +148,8 @@ TEST_P(ReducedAgainstPaper, RhsEqualsEqRedEqsByChainRule) {
     // The stress-free shape: z0(t) = r0 e^{-i Phi(t)}; Phi' = -1 is checked separately.
     const std::complex<double> z0 = red.z0(t);
     const double r0 = std::abs(z0), Phi = -std::arg(z0);
-    const double r_paper = (1 - r * r) * std::sin(Psi) / Lambda +
-                           kappa * (r0 * (1 - r * r) * std::cos(Phi - Psi) - r * std::sqrt((1 - r0 * r0) * (1 - r * r)));
+    const double r_paper = (1 - r * r) * std::sin(Psi) / Lambda + kappa * (r0 * (1 - r * r) * std::cos(Phi - Psi) -
+                                                                           r * std::sqrt((1 - r0 * r0) * (1 - r * r)));
     const double Psi_paper = -1 + std::cos(Psi) / (Lambda * r) + kappa * r0 / r * std::sin(Phi - Psi);
     // Terms are O(1/Lambda + kappa) (and /r for Psi'); both sides are a few roundings: 1e-12.
     const double sc = 1 / Lambda + kappa + 1;
@@ -240,7 +239,6 @@ TEST(LevelFlows, ReducedFlowIsTheFullFlow) {
   }
 }
 
-
 TEST(FullTension, KeepsExcessAreaConstantAndMatchesEqStWithRealPart) {
   // At generic states of a scene without symmetry (all m, stress-free l >= 3 content):
   // (1) the tension makes dDelta/dt = sum_l a_l sum_m 2 Re(conj(f) f') vanish (its definition);
@@ -301,7 +299,6 @@ TEST(ModalTension, KeepsExcessAreaConstant) {
     EXPECT_NEAR(dDelta, 0, 1e-13 * scale) << "seed " << seed;
   }
 }
-
 
 TEST(InitialTension, OutOfPlaneStartMatchesSectionIV) {
   // Sec. IV: at r = r0 = 0 (beta = 0), sigma_R^init = -6 + (2/3) alpha (sqrt(Delta0/Delta) - 1), exact there.

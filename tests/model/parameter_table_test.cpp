@@ -108,7 +108,8 @@ TEST(ParameterTable, NamesPerUseAreTheMarkedRows) {
     FAIL();
   } catch (const InvalidArgument& e) {
     EXPECT_EQ(e.parameter(), "parameter");
-    EXPECT_NE(std::string(e.what()).find("lambda, Delta, Delta0, B, C, Lambda, S, beta"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("lambda, Delta, Delta0, B, C, Lambda, S, beta"), std::string::npos)
+        << e.what();
   }
   EXPECT_THROW((void)parameter_from_string("lnB", ParameterUse::continuation), InvalidArgument);
   EXPECT_THROW((void)parameter_from_string("C", ParameterUse::axis), InvalidArgument);
@@ -136,8 +137,8 @@ TEST(ParameterTable, IndependenceIsSharingNoInput) {
 // equals the cell converted afresh at gamma'. Oracle: physical_parameters (B = eta gamma R^3/kappa, C = eta gamma
 // R/mu); 1e-14: one multiplication and one division apart.
 TEST(ParameterTable, ShearRateMovesBAndCOnAPhysicalScene) {
-  PhysicalCell c{.shear_rate = 1000, .viscosity = 1.2e-3, .radius = 3.9e-6, .bending_modulus = 2.1e-19,
-                 .shear_modulus = 6e-6};
+  PhysicalCell c{
+      .shear_rate = 1000, .viscosity = 1.2e-3, .radius = 3.9e-6, .bending_modulus = 2.1e-19, .shear_modulus = 6e-6};
   Scene s;
   s.physical = c;
   s.parameters = physical_parameters(c, s.parameters);
@@ -157,7 +158,8 @@ TEST(ParameterTable, ShearRateMovesBAndCOnAPhysicalScene) {
   EXPECT_EQ(parameter_row(P::shear_rate).scale, AxisScale::geometric);
   EXPECT_FALSE(is_material(P::shear_rate));  // not a function of Parameters: the material overloads refuse it
   // Moves B and C, keeps alpha: dependent on B, C, their logs and S (~ C); independent of alpha and the rest.
-  for (P q : {P::B, P::C, P::lnB, P::lnC, P::S, P::shear_rate}) EXPECT_FALSE(independent(P::shear_rate, q)) << to_string(q);
+  for (P q : {P::B, P::C, P::lnB, P::lnC, P::S, P::shear_rate})
+    EXPECT_FALSE(independent(P::shear_rate, q)) << to_string(q);
   for (P q : {P::alpha, P::lambda, P::Delta, P::Delta0, P::Lambda, P::beta}) {
     EXPECT_TRUE(independent(P::shear_rate, q)) << to_string(q);
     EXPECT_TRUE(independent(q, P::shear_rate)) << to_string(q);

@@ -13,7 +13,6 @@
 namespace rbcstab {
 namespace {
 
-
 TEST(Parameters, DerivedQuantitiesMatchFig2Caption) {
   // Fig. 2: C = 0.04, lambda = 5, Delta0 = 0.01: S ~ 2, Lambda ~ 0.19 (Delta = 0.01) and 1.9 (Delta = 1).
   Parameters p{5.0, 0.01, 0.01, 2.0, 0.04};

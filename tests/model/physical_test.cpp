@@ -15,7 +15,6 @@
 namespace rbcstab {
 namespace {
 
-
 std::string message_of(auto&& f) {
   try {
     f();
@@ -47,7 +46,8 @@ TEST(Physical, UnitSuffixesConvertToSI) {
   EXPECT_DOUBLE_EQ(parse_quantity("2e-19J", PhysicalUnit::joule, "bending_modulus"), 2e-19);
   EXPECT_DOUBLE_EQ(parse_quantity("0.2aJ", PhysicalUnit::joule, "bending_modulus"), 0.2e-18);
   // kBT at the stated temperature: 50 x 1.380649e-23 J/K x 310 K = 2.14000595e-19 J (hand-computed).
-  EXPECT_NEAR(parse_quantity("50kBT", PhysicalUnit::joule, "bending_modulus", 310), 2.14000595e-19, 1e-15 * 2.14000595e-19);
+  EXPECT_NEAR(parse_quantity("50kBT", PhysicalUnit::joule, "bending_modulus", 310), 2.14000595e-19,
+              1e-15 * 2.14000595e-19);
   EXPECT_NEAR(parse_quantity("6uN/m", PhysicalUnit::newton_per_metre, "shear_modulus"), 6e-6, 1e-15 * 6e-6);
   EXPECT_NEAR(parse_quantity("2.5 uPa m", PhysicalUnit::newton_per_metre, "shear_modulus"), 2.5e-6, 1e-15 * 2.5e-6);
   EXPECT_NEAR(parse_quantity("3.9um", PhysicalUnit::metre, "radius"), 3.9e-6, 1e-15 * 3.9e-6);

@@ -1,8 +1,8 @@
 #pragma once
 // Scenes and generic states shared by the model and integration tests.
 #include <cmath>
-#include <ostream>
 #include <numbers>
+#include <ostream>
 #include <random>
 #include <vector>
 

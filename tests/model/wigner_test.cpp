@@ -69,7 +69,8 @@ TEST(Wigner, HalfPiAgainstClosedForm) {
   for (int l = 0; l <= 100; ++l) {
     const auto D = wigner_column(l, kPi / 2);
     // cos(pi/2) = 6e-17 in double, so odd-parity entries are O(1e-16 l) instead of 0.
-    for (int m = -l; m <= l; ++m) EXPECT_NEAR(D[m + l], closed_form_half_pi(l, m), kTol) << "l = " << l << ", m = " << m;
+    for (int m = -l; m <= l; ++m)
+      EXPECT_NEAR(D[m + l], closed_form_half_pi(l, m), kTol) << "l = " << l << ", m = " << m;
   }
 }
 
@@ -82,7 +83,7 @@ TEST(Wigner, HalfPiAgainstClosedForm) {
 double gsl_column_entry(int l, int m, double beta) {
   const int am = std::abs(m);
   double v = std::sqrt(4 * kPi / (2 * l + 1)) * gsl_sf_legendre_sphPlm(l, am, std::cos(beta));
-  if (am % 2) v = -v;          // remove the Condon-Shortley phase
+  if (am % 2) v = -v;           // remove the Condon-Shortley phase
   if (m < 0 && am % 2) v = -v;  // D_{-m,0} = (-1)^m D_{m,0}
   return v;
 }
@@ -93,7 +94,8 @@ TEST(Wigner, LargeLAgainstGsl) {
     for (double beta : kBetas) {
       const auto D = wigner_column(l, beta);
       for (int m = -l; m <= l; ++m)
-        ASSERT_NEAR(D[m + l], gsl_column_entry(l, m, beta), kTol) << "l = " << l << ", m = " << m << ", beta = " << beta;
+        ASSERT_NEAR(D[m + l], gsl_column_entry(l, m, beta), kTol)
+            << "l = " << l << ", m = " << m << ", beta = " << beta;
     }
 }
 

@@ -56,7 +56,8 @@ TEST(PaperQuick, EveryFigureDrawnEveryClaimEvaluated) {
   }
   // Each failed claim is shown as failed on the page.
   std::size_t shown = 0;
-  for (std::size_t at = html.find("<b>FAILED</b>"); at != std::string::npos; at = html.find("<b>FAILED</b>", at + 1)) ++shown;
+  for (std::size_t at = html.find("<b>FAILED</b>"); at != std::string::npos; at = html.find("<b>FAILED</b>", at + 1))
+    ++shown;
   EXPECT_EQ(shown, failed_rows);
   for (const PaperFigure& f : r.figures) {
     EXPECT_TRUE(fs::is_regular_file(parent / "paper" / (f.id + ".png"))) << f.id;

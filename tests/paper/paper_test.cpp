@@ -49,7 +49,7 @@ TEST(PaperMeasure, GrowsThenDecays) {
   for (double v : t) bump.push_back(0.1 + v * std::exp(-v)), decay.push_back(std::exp(-v)), growth.push_back(v);
   // 0.1 + t e^{-t}: peak 0.1 + 1/e at t = 1, end ~0.1 < 0.5 (0.1 + 1/e)? yes; start 0.1 < peak.
   EXPECT_TRUE(grows_then_decays(bump, 0.5));
-  EXPECT_FALSE(grows_then_decays(bump, 0.2));  // 0.1 > 0.2 (0.1 + 1/e) = 0.094: has not fallen that far
+  EXPECT_FALSE(grows_then_decays(bump, 0.2));    // 0.1 > 0.2 (0.1 + 1/e) = 0.094: has not fallen that far
   EXPECT_FALSE(grows_then_decays(decay, 0.5));   // maximum at the start
   EXPECT_FALSE(grows_then_decays(growth, 0.5));  // maximum at the end
 }

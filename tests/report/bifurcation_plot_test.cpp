@@ -6,13 +6,13 @@
 
 #include <algorithm>
 
+#include <unistd.h>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <numbers>
-#include <unistd.h>
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
@@ -37,7 +37,9 @@ std::string expect_invalid(const std::function<void()>& f, const std::string& pa
   return "";
 }
 
-std::size_t count(const std::vector<std::string>& v, const std::string& x) { return std::size_t(std::count(v.begin(), v.end(), x)); }
+std::size_t count(const std::vector<std::string>& v, const std::string& x) {
+  return std::size_t(std::count(v.begin(), v.end(), x));
+}
 
 // A hand-made branch in lambda: r = lambda, stabilities s s u u ? ? s (the last two from "stable"
 // alone), a BP with label 3 between points 1 and 2 and an EP with label 7 on the last point.
@@ -52,10 +54,16 @@ json hand_branch() {
     if (k == 6) p["label"] = 7;
     pts.push_back(p);
   }
-  json sp{{"type", "BP"}, {"name", "BP"}, {"lambda", 1.5}, {"r", 1.5}, {"Psi", 0.15}, {"label", 3}, {"stability", "uncertain"}};
-  return {{"kind", "equilibrium"}, {"level", "reduced"}, {"free_parameter", "lambda"},
+  json sp{{"type", "BP"}, {"name", "BP"}, {"lambda", 1.5},           {"r", 1.5},
+          {"Psi", 0.15},  {"label", 3},   {"stability", "uncertain"}};
+  return {{"kind", "equilibrium"},
+          {"level", "reduced"},
+          {"free_parameter", "lambda"},
           {"parameters", {{"lambda", 0.0}, {"Delta", 1.0}, {"Delta0", 0.01}, {"B", 2.0}, {"C", nullptr}}},
-          {"beta", 0.0}, {"branch", pts}, {"special_points", json::array({sp})}, {"status", "completed"}};
+          {"beta", 0.0},
+          {"branch", pts},
+          {"special_points", json::array({sp})},
+          {"status", "completed"}};
 }
 
 TEST(PlotSpec, StabilitySegmentsSplitWhereStabilityChanges) {
@@ -65,7 +73,8 @@ TEST(PlotSpec, StabilitySegmentsSplitWhereStabilityChanges) {
   ASSERT_EQ(spec.series.size(), 1u);
   const PlotSeries& s = spec.series[0];
   EXPECT_EQ(s.kind, "equilibrium");
-  EXPECT_EQ(s.stability, (std::vector<std::string>{"stable", "stable", "unstable", "unstable", "uncertain", "uncertain", "stable"}));
+  EXPECT_EQ(s.stability,
+            (std::vector<std::string>{"stable", "stable", "unstable", "unstable", "uncertain", "uncertain", "stable"}));
   ASSERT_EQ(s.segments.size(), 4u);
   const std::vector<std::pair<std::string, std::string>> kinds{
       {"stable", "solid"}, {"unstable", "dashed"}, {"uncertain", "dotted"}, {"stable", "solid"}};
@@ -152,10 +161,10 @@ TEST(PlotSpec, BadInputNamesTheAxisTheValueAndTheChoices) {
   EXPECT_NE(m.find("x = 'kappa'"), std::string::npos) << m;
   expect_invalid([] { (void)plot_spec({}); }, "inputs");
 
-  for (const json& bad : {json{{"a", 1}}, json::array(), json{{"branch", json::array()}},
-                          json{{"branch", {1, 2}}, {"free_parameter", "C"}},
-                          json{{"branch", {{{"lambda", 1}}}}, {"free_parameter", "C"}},
-                          json{{"format", "rbcstab-plot"}, {"branch", json::array()}, {"free_parameter", "C"}}}) {
+  for (const json& bad :
+       {json{{"a", 1}}, json::array(), json{{"branch", json::array()}},
+        json{{"branch", {1, 2}}, {"free_parameter", "C"}}, json{{"branch", {{{"lambda", 1}}}}, {"free_parameter", "C"}},
+        json{{"format", "rbcstab-plot"}, {"branch", json::array()}, {"free_parameter", "C"}}}) {
     m = expect_invalid([&] { (void)plot_input(bad, "x.json"); }, "file");
     EXPECT_NE(m.find("x.json is not a branch JSON"), std::string::npos) << m;
   }
@@ -183,14 +192,16 @@ PlotInput continue_json(const fs::path& dir, const std::string& name, const std:
   return read_plot_input(out.string());
 }
 
-const std::string kModal = "--kind modal --parameter C --min 0.015 --max 0.08 --direction backward --lambda 1 --B 1 "
-                           "--C 0.08 --Delta 1 --Delta0 0.01 --L 6";
+const std::string kModal =
+    "--kind modal --parameter C --min 0.015 --max 0.08 --direction backward --lambda 1 --B 1 "
+    "--C 0.08 --Delta 1 --Delta0 0.01 --L 6";
 
 // The user's case: an orbit branch in lambda is drawn against lambda (not Psi_max) and called orbits.
 TEST(PlotSpec, OrbitBranchAgainstItsFreeParameter) {
   const fs::path dir = test::fresh_dir("plot_test", "orbit");
-  const PlotInput in = continue_json(dir, "o", "--kind orbit --parameter lambda --min 3 --max 7 --lambda 5 "
-                                               "--Delta 0.3 --Delta0 0.01 --B 2 --C 0.04 --L 2");
+  const PlotInput in = continue_json(dir, "o",
+                                     "--kind orbit --parameter lambda --min 3 --max 7 --lambda 5 "
+                                     "--Delta 0.3 --Delta0 0.01 --B 2 --C 0.04 --L 2");
   const PlotSpec spec = plot_spec({in});
   EXPECT_EQ(spec.x.name, "lambda");
   EXPECT_EQ(spec.y.name, "r_max");
@@ -212,7 +223,8 @@ TEST(PlotSpec, OrbitBranchAgainstItsFreeParameter) {
   EXPECT_EQ(uz->x, in.branch.at("special_points")[0].at("lambda").get<double>());
   EXPECT_EQ(std::count_if(spec.points.begin(), spec.points.end(), [](const auto& q) { return q.type == "EP"; }), 2);
   // Derived measures: the forcing period 2 pi; max |mu| < 1 exactly where the engine says stable.
-  for (const char* m : {"period", "max_abs_multiplier", "r_min", "r_max", "Psi", "B"}) EXPECT_EQ(count(spec.measures, m), 1u) << m;
+  for (const char* m : {"period", "max_abs_multiplier", "r_min", "r_max", "Psi", "B"})
+    EXPECT_EQ(count(spec.measures, m), 1u) << m;
   PlotOptions o;
   o.y = "period";
   const PlotSpec period = plot_spec({in}, o);

@@ -3,17 +3,17 @@
 // diagram panel end to end (PNG of the declared size; its CSV equals an independent single-thread run).
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
-#include <unistd.h>
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/report/panels.hpp"
-#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/diagram_document.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
 #include "test_files.hpp"
 
 namespace rbcstab {
@@ -95,7 +95,8 @@ TEST(Fig6eTable, CsvRoundTripsTheRows) {
   std::getline(in, line);
   EXPECT_EQ(line.rfind("# Fig. 6e", 0), 0u);
   std::getline(in, line);
-  EXPECT_EQ(line, "lambda,B,C,alpha,ln_alpha,l_s,l_Delta,Delta2_tilde,Delta2_tilde_integer,Delta2_bar,ratio,ratio_integer");
+  EXPECT_EQ(line,
+            "lambda,B,C,alpha,ln_alpha,l_s,l_Delta,Delta2_tilde,Delta2_tilde_integer,Delta2_bar,ratio,ratio_integer");
   for (const Fig6eRow& r : rows) {
     ASSERT_TRUE(std::getline(in, line));
     std::vector<std::string> cells;
@@ -118,9 +119,10 @@ TEST(Fig6eTable, CsvRoundTripsTheRows) {
 }
 
 TEST(ContinuationTable, ParsesAndNamesBadKeys) {
-  const ContinuationPanel c = continuation_panel(parse_scene(
-      kBase + "[continuation]\nparameter = \"C\"\nmin = 0.01\nmax = 2.0\ndirection = \"forward\"\nmeasure = \"r\"\n"
-              "max_points = 50\n"));
+  const ContinuationPanel c =
+      continuation_panel(parse_scene(
+          kBase + "[continuation]\nparameter = \"C\"\nmin = 0.01\nmax = 2.0\ndirection = \"forward\"\nmeasure = \"r\"\n"
+                  "max_points = 50\n"));
   EXPECT_EQ(c.parameter, ContinuationParameter::C);
   EXPECT_EQ(c.engine.p_min, 0.01);
   EXPECT_EQ(c.engine.p_max, 2.0);
@@ -128,10 +130,13 @@ TEST(ContinuationTable, ParsesAndNamesBadKeys) {
   EXPECT_EQ(c.measure, "r");
   EXPECT_EQ(c.engine.max_points, 50u);
   for (const auto& [table, name] :
-       {std::pair{"measure = \"Q\"\n", "continuation.measure"}, std::pair{"parameter = \"kappa\"\n", "continuation.parameter"},
-        std::pair{"direction = \"up\"\n", "continuation.direction"}, std::pair{"min = 2.0\nmax = 1.0\n", "continuation.max"},
+       {std::pair{"measure = \"Q\"\n", "continuation.measure"},
+        std::pair{"parameter = \"kappa\"\n", "continuation.parameter"},
+        std::pair{"direction = \"up\"\n", "continuation.direction"},
+        std::pair{"min = 2.0\nmax = 1.0\n", "continuation.max"},
         std::pair{"max_points = 1\n", "continuation.max_points"}, std::pair{"colour = 1\n", "continuation.colour"}}) {
-    const std::string m = expect_invalid([&] { (void)continuation_panel(parse_scene(kBase + "[continuation]\n" + table)); });
+    const std::string m =
+        expect_invalid([&] { (void)continuation_panel(parse_scene(kBase + "[continuation]\n" + table)); });
     EXPECT_NE(m.find(name), std::string::npos) << table << ": " << m;
   }
 }
@@ -178,7 +183,8 @@ TEST(PhaseOverlay, HoldsTheTracedBoundaryAndTheAnalyticLines) {
   a.points = {TracePoint{0, 1, 3, 0, 0, 0}, TracePoint{1, 2, 3, 0, 0, 0}};
   b.l = 4;
   b.points = {TracePoint{1, 2, 4, 0, 0, 0}, TracePoint{2, 2.5, 4, 0, 0, 0}};
-  const std::vector<Overlay> lines{{"l_star=2.5", {0, 1}, {-3, -2}}, {"C_star_plus", {0, 2}, {1, 1}}, {"empty", {}, {}}};
+  const std::vector<Overlay> lines{
+      {"l_star=2.5", {0, 1}, {-3, -2}}, {"C_star_plus", {0, 2}, {1, 1}}, {"empty", {}, {}}};
   DiagramSpec spec;  // ln B x ln C
   const nlohmann::json o = phase_overlay_json(spec, {a, b}, lines);
   EXPECT_EQ(o.at("axes").at("x"), "$\\ln \\mathcal{B}$");  // the parameter table's symbols
@@ -197,8 +203,9 @@ TEST(PhaseOverlay, HoldsTheTracedBoundaryAndTheAnalyticLines) {
 
 // A 4 x 3 diagram panel end to end; the data behind the figure equals an independent single-thread run.
 TEST(PanelReport, TinyDiagramBuildsAndItsDataEqualAnIndependentRun) {
-  const std::string text = kBase + "[diagram]\naxes = [\"lnB\", \"lnC\"]\nx_range = [-1.0, 6.0]\n"
-                                   "y_range = [-5.5, 2.0]\ncounts = [9, 9]\nclassifier = \"final\"\n";
+  const std::string text = kBase +
+                           "[diagram]\naxes = [\"lnB\", \"lnC\"]\nx_range = [-1.0, 6.0]\n"
+                           "y_range = [-5.5, 2.0]\ncounts = [9, 9]\nclassifier = \"final\"\n";
   const SceneFile sf = parse_scene(text);
   const fs::path parent = test::fresh_dir("panels_test", "diagram");
   ReportOptions ro;
@@ -228,7 +235,8 @@ TEST(PanelReport, TinyDiagramBuildsAndItsDataEqualAnIndependentRun) {
   DiagramOptions one;
   one.threads = 1;
   const DiagramRun serial = run_diagram(sf.scene, sf.options, spec, one);
-  EXPECT_EQ(read_file((dir / "phase_diagram.csv").string()), diagram_csv(spec, serial.points, DiagramOutputOptions{false}));
+  EXPECT_EQ(read_file((dir / "phase_diagram.csv").string()),
+            diagram_csv(spec, serial.points, DiagramOutputOptions{false}));
   const nlohmann::json overlay = nlohmann::json::parse(read_file((dir / "phase_diagram_overlay.json").string()));
   EXPECT_GE(overlay.at("curves").size(), 2u);  // the traced boundary and at least the l_* = 2.5 line
 }

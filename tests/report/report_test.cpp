@@ -2,6 +2,7 @@
 // reads back, and the data behind each figure equals an independent run of the same scene.
 #include <gtest/gtest.h>
 
+#include <unistd.h>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -9,7 +10,6 @@
 #include <nlohmann/json.hpp>
 #include <numbers>
 #include <sstream>
-#include <unistd.h>
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
@@ -161,8 +161,7 @@ void check_trajectories(const Built& b) {
   // Thresholds behind the sigma_l^c lines.
   const auto th = nlohmann::json::parse(read_file((parent_ / "out" / "thresholds.json").string()));
   const double alpha = scene_.scene.parameters.alpha();
-  for (int l = 2; l <= 4; ++l)
-    EXPECT_EQ(th.at("sigma_c").at(std::to_string(l)).get<double>(), sigma_c(l, alpha));
+  for (int l = 2; l <= 4; ++l) EXPECT_EQ(th.at("sigma_c").at(std::to_string(l)).get<double>(), sigma_c(l, alpha));
   EXPECT_NEAR(th.at("sigma_star").get<double>(), -4 * std::sqrt(alpha), 1e-14 * std::sqrt(alpha));
 }
 
@@ -210,7 +209,8 @@ void check_shape_files(const Built& b) {
   EXPECT_EQ(anim.at("t").back().get<double>(), scene_.scene.T);
   for (std::size_t i = 0; i < th.size(); ++i)
     for (std::size_t j = 0; j < ph.size(); ++j)
-      EXPECT_NEAR(last[i * ph.size() + j].get<double>(), shape_radius(f, th[i].get<double>(), ph[j].get<double>()), 1e-6);
+      EXPECT_NEAR(last[i * ph.size() + j].get<double>(), shape_radius(f, th[i].get<double>(), ph[j].get<double>()),
+                  1e-6);
 }
 
 TEST(ReportEndToEnd, SmallInPlaneSceneBuildsAndItsDataReproduceTheFigures) {
@@ -298,11 +298,13 @@ TEST(ReportHooks, SelftestDrawsHookFiguresOfTheDeclaredSize) {
   const fs::path dir = test::fresh_dir("report_test", "hooks");
   const Cleanup cleanup{dir};
   const std::string script = find_script_dir("") + "/rbcstab_report.py";
-  const std::string cmd = "/usr/bin/python3 '" + script + "' selftest '" + dir.string() + "' > '" +
-                          (dir / "log.txt").string() + "' 2>&1";
+  const std::string cmd =
+      "/usr/bin/python3 '" + script + "' selftest '" + dir.string() + "' > '" + (dir / "log.txt").string() + "' 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << read_file((dir / "log.txt").string());
   const std::map<std::string, std::pair<int, int>> expected{
-      {"fig_phase_diagram.png", {900, 750}}, {"fig_delta2_theory.png", {750, 750}}, {"fig_bifurcation.png", {900, 675}},
+      {"fig_phase_diagram.png", {900, 750}},
+      {"fig_delta2_theory.png", {750, 750}},
+      {"fig_bifurcation.png", {900, 675}},
       {"fig_bifurcation_continue.png", {900, 675}}};  // from the layout of `rbcstab continue --json`
   for (const auto& [file, size] : expected) EXPECT_EQ(png_size(dir / file), size) << file;
 }
@@ -361,7 +363,8 @@ TEST(ReportCli, ExitCodes) {
   const Cleanup cleanup{parent};
   const std::string base = std::string(RBCSTAB_CLI) + " report --T 2 --L 3 --frames 2 --shape-resolution 6 ";
   const std::string quiet = " > /dev/null 2>&1";
-  int rc = std::system((base + "--python /nonexistent/python3 --output '" + (parent / "a").string() + "'" + quiet).c_str());
+  int rc =
+      std::system((base + "--python /nonexistent/python3 --output '" + (parent / "a").string() + "'" + quiet).c_str());
   EXPECT_EQ(WEXITSTATUS(rc), 3);
   EXPECT_FALSE(fs::exists(parent / "a"));
   fs::create_directories(parent / "b");
@@ -377,8 +380,11 @@ TEST(ShapeCli, WritesTheInitialShapeAtTimeZero) {
   const fs::path parent = test::fresh_dir("report_test", "shapecli");
   const Cleanup cleanup{parent};
   const std::string stem = (parent / "cell").string();
-  const int rc = std::system((std::string(RBCSTAB_CLI) + " shape --T 2 --L 3 --beta 0.7 --at 0 --at 2 --resolution 8 "
-                              "--format vtk --format ply --output '" + stem + "' > /dev/null 2>&1").c_str());
+  const int rc = std::system((std::string(RBCSTAB_CLI) +
+                              " shape --T 2 --L 3 --beta 0.7 --at 0 --at 2 --resolution 8 "
+                              "--format vtk --format ply --output '" +
+                              stem + "' > /dev/null 2>&1")
+                                 .c_str());
   ASSERT_EQ(WEXITSTATUS(rc), 0);
   EXPECT_TRUE(fs::exists(stem + "_t2.vtk"));
   EXPECT_TRUE(fs::exists(stem + "_t2.ply"));

@@ -40,7 +40,8 @@ TEST(SphericalHarmonic, MatchesGslUpToLTwenty) {
 TEST(SphericalHarmonic, KnownLowOrderForms) {
   const double th = 0.9, ph = 0.4;
   // Y_22 = (1/4) sqrt(15/(2 pi)) sin^2 th e^{2 i ph}; Y_21 = -(1/2) sqrt(15/(2 pi)) sin th cos th e^{i ph}.
-  const std::complex<double> y22 = 0.25 * std::sqrt(15 / (2 * pi)) * std::pow(std::sin(th), 2) * std::polar(1.0, 2 * ph);
+  const std::complex<double> y22 =
+      0.25 * std::sqrt(15 / (2 * pi)) * std::pow(std::sin(th), 2) * std::polar(1.0, 2 * ph);
   const std::complex<double> y21 = -0.5 * std::sqrt(15 / (2 * pi)) * std::sin(th) * std::cos(th) * std::polar(1.0, ph);
   EXPECT_LT(std::abs(spherical_harmonic(2, 2, th, ph) - y22), 1e-15);
   EXPECT_LT(std::abs(spherical_harmonic(2, 1, th, ph) - y21), 1e-15);

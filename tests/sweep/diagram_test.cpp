@@ -16,8 +16,8 @@
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/sweep/diagram.hpp"
-#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/diagram_document.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/point_record.hpp"
 
 namespace rbcstab {
@@ -263,7 +263,6 @@ TEST(DiagramFile, PlaneChoiceOverridesTheTableAndNamesBadFields) {
   EXPECT_EQ(field_of({{"lnB", "lnC"}, {-1, 6}, {-5.5, 2}, {64, 64}, "auto", 0.0}), "accepted");
 }
 
-
 std::vector<std::string> lines_of(const std::string& path) {
   std::ifstream in(path);
   std::vector<std::string> v;
@@ -340,9 +339,9 @@ TEST(Journal, EditedRecordsAreReportedWithLineAndRecomputed) {
   ASSERT_EQ(l.size(), 1 + spec.size());
   // Line k + 2 holds index k (one thread: index order); record fields: P hash index verdict l_Delta growth ...
   set_field(l[2], 3, field(l[2], 3) == "stable" ? "unstable" : "stable");  // verdict flipped
-  set_field(l[3], 4, field(l[3], 4) == "3" ? "4" : "3");                     // l_Delta changed
-  set_field(l[4], 5, "nan");                                                 // growth
-  set_field(l[5], 2, "5");                                                   // index 4 swapped for 5
+  set_field(l[3], 4, field(l[3], 4) == "3" ? "4" : "3");                   // l_Delta changed
+  set_field(l[4], 5, "nan");                                               // growth
+  set_field(l[5], 2, "5");                                                 // index 4 swapped for 5
   // A record with a valid checksum but an impossible value (l_Delta above L) is refused too.
   PointResult forged = run_diagram(base, {}, spec, {}).points[6];
   forged.l_Delta = base.L + 3;
@@ -353,9 +352,10 @@ TEST(Journal, EditedRecordsAreReportedWithLineAndRecomputed) {
   const DiagramRun r = run_diagram(base, {}, spec, o);
   ASSERT_EQ(r.rejected.size(), 6u) << ::testing::PrintToString(r.rejected);
   for (int line : {3, 4, 5, 6, 9, 13})
-    EXPECT_TRUE(std::any_of(r.rejected.begin(), r.rejected.end(), [&](const std::string& why) {
-      return why.rfind(journal + ":" + std::to_string(line) + ": ", 0) == 0;
-    })) << "line " << line << " not reported";
+    EXPECT_TRUE(std::any_of(
+        r.rejected.begin(), r.rejected.end(),
+        [&](const std::string& why) { return why.rfind(journal + ":" + std::to_string(line) + ": ", 0) == 0; }))
+        << "line " << line << " not reported";
   EXPECT_NE(r.rejected[0].find("checksum"), std::string::npos) << r.rejected[0];
   EXPECT_NE(r.rejected[4].find("l_Delta " + std::to_string(base.L + 3)), std::string::npos) << r.rejected[4];
   EXPECT_NE(r.rejected[5].find("torn"), std::string::npos) << r.rejected[5];
@@ -396,10 +396,10 @@ TEST(Merge, RefusesOutOfDomainValuesNamingFileLineAndValue) {
     std::size_t point;
     std::string key, from, to, message;
   };
-  for (const Case& c : {Case{2, "l_Delta", "", "-7", "l_Delta -7 is outside [2, 5]"},
-                        Case{5, "verdict", "", "\"banana\"", "'banana' is not one of: stable, unstable, failed"},
-                        Case{7, "status", "", "\"sideways\"", "'sideways'"},
-                        Case{3, "growth", "", "\"x\"", "growth = \"x\""}}) {
+  for (const Case& c :
+       {Case{2, "l_Delta", "", "-7", "l_Delta -7 is outside [2, 5]"},
+        Case{5, "verdict", "", "\"banana\"", "'banana' is not one of: stable, unstable, failed"},
+        Case{7, "status", "", "\"sideways\"", "'sideways'"}, Case{3, "growth", "", "\"x\"", "growth = \"x\""}}) {
     nlohmann::json doc = nlohmann::json::parse(good);
     doc["points"][c.point][c.key] = nlohmann::json::parse(c.to);
     const std::string text = doc.dump(1);
@@ -422,8 +422,10 @@ TEST(Merge, RefusesOutOfDomainValuesNamingFileLineAndValue) {
 TEST(Merge, RefusesTruncatedIntegersEditedHeadersAndDisagreeingDuplicates) {
   const Scene base = small_scene();
   const DiagramSpec spec = small_spec();
-  const nlohmann::json good = diagram_json(diagram_header(base, {}, spec), spec, run_diagram(base, {}, spec, {}).points, {}, {false});
-  auto refused = [&](const std::function<void(nlohmann::json&)>& edit, const std::string& fragment, bool twice = false) {
+  const nlohmann::json good =
+      diagram_json(diagram_header(base, {}, spec), spec, run_diagram(base, {}, spec, {}).points, {}, {false});
+  auto refused = [&](const std::function<void(nlohmann::json&)>& edit, const std::string& fragment,
+                     bool twice = false) {
     nlohmann::json doc = good;
     edit(doc);
     std::vector<MergeInput> inputs{{"shard.json", doc.dump(1)}};
@@ -436,11 +438,13 @@ TEST(Merge, RefusesTruncatedIntegersEditedHeadersAndDisagreeingDuplicates) {
     }
   };
   refused([](nlohmann::json& d) { d["points"][1]["index"] = 0.5; }, "points[1].index: 0.5 is not an integer in [0, ");
-  refused([](nlohmann::json& d) { d["points"][1]["l_Delta"] = 4294967299LL; }, "points[1].l_Delta: 4294967299 is not an integer in [");
+  refused([](nlohmann::json& d) { d["points"][1]["l_Delta"] = 4294967299LL; },
+          "points[1].l_Delta: 4294967299 is not an integer in [");
   refused([](nlohmann::json& d) { d["points"][1]["steps"] = -1; }, "points[1].steps: -1 is not an integer in [0, ");
   refused([](nlohmann::json& d) { d["diagram"]["x"]["count"] = 4294967298LL; }, "4294967298 is not an integer");
   refused([](nlohmann::json& d) { d["config_hash"] = 12; }, "has no config_hash string (12)");
-  refused([](nlohmann::json& d) { d["seconds_included"] = "yes"; }, "seconds_included = \"yes\": must be true or false");
+  refused([](nlohmann::json& d) { d["seconds_included"] = "yes"; },
+          "seconds_included = \"yes\": must be true or false");
   refused([](nlohmann::json& d) { d["scene"]["T"] = 99; }, "input 1 has scene = ");
   refused([](nlohmann::json& d) { d["scene_toml"] = "[run]\nT = 99.0\n"; }, "hash to");
   refused([](nlohmann::json& d) { d.erase("scene_toml"); }, "no scene_toml");

@@ -64,14 +64,33 @@ using rbcstab::test::slurp;
 // finish the grid before the kill): about 12 ms a point, 1 s on one thread, so that polling the journal every
 // 2 ms catches the run midway.
 std::vector<std::string> command(const std::string& out) {
-  return {RBCSTAB_CLI, "diagram", "--L", "6", "--T", "3000", "--dt", "3000", "--full-horizon", "--axes", "lnB,lnC",
-          "--x-range=-1,6", "--y-range=-5.5,2", "--counts", "10,8", "--classifier", "final",
-          "--threads", "1", "--no-seconds", "--out", out};
+  return {RBCSTAB_CLI,
+          "diagram",
+          "--L",
+          "6",
+          "--T",
+          "3000",
+          "--dt",
+          "3000",
+          "--full-horizon",
+          "--axes",
+          "lnB,lnC",
+          "--x-range=-1,6",
+          "--y-range=-5.5,2",
+          "--counts",
+          "10,8",
+          "--classifier",
+          "final",
+          "--threads",
+          "1",
+          "--no-seconds",
+          "--out",
+          out};
 }
 
 void kill_and_resume(int signal_number) {
-  const fs::path dir = fs::temp_directory_path() / ("rbcstab_kill_test_" + std::to_string(getpid()) + "_" +
-                                                    std::to_string(signal_number));
+  const fs::path dir = fs::temp_directory_path() /
+                       ("rbcstab_kill_test_" + std::to_string(getpid()) + "_" + std::to_string(signal_number));
   fs::remove_all(dir);
   fs::create_directories(dir);
   const std::string out = (dir / "panel").string(), journal = out + ".journal", err = (dir / "err.txt").string();
@@ -122,8 +141,9 @@ TEST(DiagramCli, ShardsMergeToTheSerialOutput) {
   fs::create_directories(dir);
   const std::string err = (dir / "err.txt").string();
   auto args = [&](const std::string& out) {
-    return std::vector<std::string>{RBCSTAB_CLI, "diagram", "--L", "5", "--T", "60", "--dt", "60", "--counts", "5,4",
-                                    "--threads", "2", "--no-seconds", "--quiet", "--out", (dir / out).string()};
+    return std::vector<std::string>{
+        RBCSTAB_CLI, "diagram", "--L",       "5", "--T",          "60",      "--dt",  "60",
+        "--counts",  "5,4",     "--threads", "2", "--no-seconds", "--quiet", "--out", (dir / out).string()};
   };
   ASSERT_EQ(wait_exit(spawn(args("serial"), err)), 0) << slurp(err);
   std::vector<std::string> merge{RBCSTAB_CLI, "merge", "--out", (dir / "merged").string()};

@@ -83,9 +83,9 @@ double max_curvature(const TraceResult& t, const DiagramSpec& d) {
   return k;
 }
 
-// Corners: where the boundary's mode changes between l and l + 1 (either way along the chain), e_l = e_{l+1} = 0, so sigma_l^c = sigma_{l+1}^c:
-// alpha = Pi(l) Pi(l+1)/4 (alpha_mode_change, an independent closed form). The corner's u is Brent's root to
-// ~1e-14 of the axis and its ln B a Newton step: alpha to ~1e-13 relative; 1e-11 leaves margin.
+// Corners: where the boundary's mode changes between l and l + 1 (either way along the chain), e_l = e_{l+1} = 0, so
+// sigma_l^c = sigma_{l+1}^c: alpha = Pi(l) Pi(l+1)/4 (alpha_mode_change, an independent closed form). The corner's u is
+// Brent's root to ~1e-14 of the axis and its ln B a Newton step: alpha to ~1e-13 relative; 1e-11 leaves margin.
 void expect_corners_on_mode_change_lines(const Scene& base, const DiagramSpec& plane, const TraceResult& t) {
   for (const TraceCorner& k : t.corners) {
     EXPECT_EQ(std::abs(k.l_to - k.l_from), 1);
@@ -172,14 +172,17 @@ TEST(TraceInB, AgreesWithContinuation) {
     const double k = max_curvature(e, P.plane), bound = 2 * k * kMaxStep * kMaxStep / 8 + 1e-12;
     double e_to_c = 0, c_to_e = 0;
     for (const TraceCurve& curve : e.curves)
-      for (const TracePoint& q : curve.points) e_to_c = std::max(e_to_c, distance_to(c, P.plane, unit(P.plane, q.x, q.y)));
+      for (const TracePoint& q : curve.points)
+        e_to_c = std::max(e_to_c, distance_to(c, P.plane, unit(P.plane, q.x, q.y)));
     for (const TraceCurve& curve : c.curves)
-      for (const TracePoint& q : curve.points) c_to_e = std::max(c_to_e, distance_to(e, P.plane, unit(P.plane, q.x, q.y)));
+      for (const TracePoint& q : curve.points)
+        c_to_e = std::max(c_to_e, distance_to(e, P.plane, unit(P.plane, q.x, q.y)));
     EXPECT_LE(e_to_c, bound) << p;
     EXPECT_LE(c_to_e, bound) << p;
     const double grid = 1.0 / (P.plane.x.count - 1);
-    std::cout << "appE_" << p << ": curvature " << k << ", bound " << bound / grid << " grid steps; exact to continuation "
-              << e_to_c / grid << ", continuation to exact " << c_to_e / grid << " grid steps\n";
+    std::cout << "appE_" << p << ": curvature " << k << ", bound " << bound / grid
+              << " grid steps; exact to continuation " << e_to_c / grid << ", continuation to exact " << c_to_e / grid
+              << " grid steps\n";
   }
 }
 
@@ -197,7 +200,8 @@ TEST(TraceInB, ReversedAxesGiveTheSameBoundary) {
       EXPECT_EQ(t.corners[i].y, P.exact.corners[i].y);
     }
     ASSERT_EQ(t.curves.size(), P.exact.curves.size());
-    for (std::size_t i = 0; i < t.curves.size(); ++i) EXPECT_EQ(t.curves[i].points.size(), P.exact.curves[i].points.size());
+    for (std::size_t i = 0; i < t.curves.size(); ++i)
+      EXPECT_EQ(t.curves[i].points.size(), P.exact.curves[i].points.size());
   }
 }
 
@@ -224,8 +228,7 @@ TEST(TraceInB, LnBOnTheYAxisGivesTheTransposedBoundary) {
     std::size_t chain_last = t.curves.size() - 1;
     while (t.curves[chain_last].chain != c.chain) --chain_last;
     EXPECT_LT(t.curves[chain_first].points.front().x, t.curves[chain_last].points.back().x);
-    for (const TracePoint& q : c.points)
-      EXPECT_LE(distance_to(P.exact, P.plane, unit(P.plane, q.y, q.x)), 1e-12);
+    for (const TracePoint& q : c.points) EXPECT_LE(distance_to(P.exact, P.plane, unit(P.plane, q.y, q.x)), 1e-12);
   }
 }
 
@@ -240,7 +243,8 @@ void expect_identical(const TraceResult& a, const TraceResult& b) {
     ASSERT_EQ(a.curves[i].points.size(), b.curves[i].points.size());
     for (std::size_t j = 0; j < a.curves[i].points.size(); ++j) {
       const TracePoint &p = a.curves[i].points[j], &q = b.curves[i].points[j];
-      EXPECT_EQ(std::tie(p.x, p.y, p.l, p.sigma_R, p.sigma_c, p.mu), std::tie(q.x, q.y, q.l, q.sigma_R, q.sigma_c, q.mu));
+      EXPECT_EQ(std::tie(p.x, p.y, p.l, p.sigma_R, p.sigma_c, p.mu),
+                std::tie(q.x, q.y, q.l, q.sigma_R, q.sigma_c, q.mu));
     }
   }
   for (std::size_t i = 0; i < a.corners.size(); ++i) {
@@ -310,7 +314,9 @@ TEST(TraceInB, UnusableOrbitFallsBackToContinuation) {
   const TraceResult b = trace_boundary(s, plane, off);
   ASSERT_FALSE(a.curves.empty());
   ASSERT_FALSE(a.notes.empty());
-  EXPECT_EQ(a.notes.front().rfind("closed form in B not used (traced by continuation): no attracting periodic orbit at ln C = -2", 0), 0u)
+  EXPECT_EQ(a.notes.front().rfind(
+                "closed form in B not used (traced by continuation): no attracting periodic orbit at ln C = -2", 0),
+            0u)
       << a.notes.front();
   EXPECT_EQ(a.evaluations, b.evaluations + 1);
   a.notes.erase(a.notes.begin());
@@ -352,8 +358,8 @@ TEST(TraceInB, LambdaAxis) {
       ++n;
     }
   expect_corners_on_mode_change_lines(s, plane, t);
-  std::cout << "lambda x ln B: " << n << " points, " << t.corners.size() << " corners, " << t.evaluations
-            << " orbits, " << t.seconds << " s\n";
+  std::cout << "lambda x ln B: " << n << " points, " << t.corners.size() << " corners, " << t.evaluations << " orbits, "
+            << t.seconds << " s\n";
 }
 }  // namespace
 }  // namespace rbcstab

@@ -98,8 +98,10 @@ std::vector<double> oracle_roots(const Scene& base, const DiagramSpec& plane, do
         const double m = 0.5 * (a + b);
         if (m <= std::min(a, b) || m >= std::max(a, b)) break;
         const double fm = margin(m);
-        if ((fm < 0) == (fa2 < 0)) a = m, fa2 = fm;
-        else b = m;
+        if ((fm < 0) == (fa2 < 0))
+          a = m, fa2 = fm;
+        else
+          b = m;
       }
       roots.push_back(0.5 * (a + b));
     }
@@ -136,8 +138,8 @@ TEST(Trace, ContinuationAgreesWithTheRootSolveOracle) {
         ASSERT_EQ(r.size(), 1u) << p.x << ", " << p.y;
         EXPECT_NEAR(r[0], p.y, 1e-9 * ry);
       }
-    std::cout << "lambda " << lambda << ", Delta " << Delta << ": " << t.curves.size() << " pieces, " << t.corners.size()
-              << " corners, " << t.evaluations << " evaluations, " << t.seconds << " s\n";
+    std::cout << "lambda " << lambda << ", Delta " << Delta << ": " << t.curves.size() << " pieces, "
+              << t.corners.size() << " corners, " << t.evaluations << " evaluations, " << t.seconds << " s\n";
   }
 }
 
@@ -173,8 +175,8 @@ TEST(Trace, FiniteHorizonPointsSatisfyGlOfTAndCornersOnModeChangeLines) {
     const double alpha = plane_scene(base, plane, k.x, k.y).parameters.alpha();
     EXPECT_NEAR(alpha / alpha_mode_change(k.l_from), 1.0, 1e-9) << "corner " << k.l_from << "->" << k.l_to;
   }
-  std::cout << "finite horizon: " << t.curves.size() << " pieces, " << t.corners.size() << " corners, "
-            << t.evaluations << " evaluations, " << t.seconds << " s\n";
+  std::cout << "finite horizon: " << t.curves.size() << " pieces, " << t.corners.size() << " corners, " << t.evaluations
+            << " evaluations, " << t.seconds << " s\n";
 }
 
 // In-plane scenes: the asymptotic criterion is mu_l = Upsilon_l(<sigma_R>) with a time average (cheap options:
@@ -207,8 +209,10 @@ TEST(Trace, InPlaneAsymptoticByTimeAverage) {
       EXPECT_EQ(asymptotic_sigma_R(q, o.predictor, o.orbit).source, SigmaSource::periodic_orbit);
       EXPECT_LE(std::abs(Upsilon_l(q.parameters, c.l, sigma)), 1e-10) << p.x << ", " << p.y;
     }
-  std::cout << "in-plane trace: " << t.curves.size() << " pieces, " << t.evaluations << " evaluations, " << t.counters.steps << " steps, " << t.counters.rejected_steps << " rejected, " << t.counters.newton_iterations << " newton, " << t.counters.location_iterations << " location, " << t.seconds
-            << " s\n";
+  std::cout << "in-plane trace: " << t.curves.size() << " pieces, " << t.evaluations << " evaluations, "
+            << t.counters.steps << " steps, " << t.counters.rejected_steps << " rejected, "
+            << t.counters.newton_iterations << " newton, " << t.counters.location_iterations << " location, "
+            << t.seconds << " s\n";
 }
 
 // On a small simulated grid (Fig. 4(b) plane, 7 x 6 points, T = 500, L = 10: the paper's setting) the traced
@@ -233,8 +237,8 @@ TEST(Trace, BoundarySeparatesSimulatedVerdictsOnASmallGrid) {
   EXPECT_EQ(a.points, spec.size());
   for (const Disagreement& d : a.verdict_disagreements)
     std::cout << "disagreement at point " << d.index << ": simulated l = " << d.l_simulated << ", predicted "
-              << (d.predicted_unstable ? "unstable" : "stable") << ", " << d.distance_steps << " grid steps from the boundary, S = "
-              << d.S << "\n";
+              << (d.predicted_unstable ? "unstable" : "stable") << ", " << d.distance_steps
+              << " grid steps from the boundary, S = " << d.S << "\n";
   EXPECT_EQ(a.beyond_one_step, 0u);
   EXPECT_GE(a.verdict_matches, a.points - 3);
 

@@ -68,8 +68,8 @@ TEST(ZeroSet, UnionOfDisksClosedCurveCornersAndTurningPoints) {
   const ZeroSetPoint& last = r.pieces.back().points.back();
   EXPECT_NEAR(first.x, last.x, 1e-12);
   EXPECT_NEAR(first.y, last.y, 1e-12);
-  std::cout << "two disks: " << r.pieces.size() << " pieces, " << n << " points, " << r.evaluations
-            << " evaluations, " << r.turning_points << " turning points\n";
+  std::cout << "two disks: " << r.pieces.size() << " pieces, " << n << " points, " << r.evaluations << " evaluations, "
+            << r.turning_points << " turning points\n";
 }
 
 // A curve entering and leaving through the edges (the disks cut by the box): started on an edge, ends

@@ -13,9 +13,9 @@
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/simulation.hpp"
-#include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
 #include "rbcstab/sweep/threshold_precision.hpp"
 

@@ -30,8 +30,8 @@
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/sweep/diagram.hpp"
-#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/diagram_document.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/point_record.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
 #include "rbcstab/verdict/verdict_io.hpp"
@@ -39,7 +39,6 @@
 
 namespace rbcstab {
 namespace {
-
 
 using test::panel;
 
@@ -152,12 +151,12 @@ TEST(CertifiedRun, AppEcPanelEqualsFullHorizon) { compare_panel("appE_c_ip", 200
 
 // The diagram's savings together (certified early termination, and no tail-window samples under the final
 // classifier, which reads Delta_l(T) only, or tail means by quadrature under the tail classifier), point by point
-// against the full-horizon panel (every run to T, tail sampled) on 16 x 16 grids of the Fig. 4 and App. E(b) panels: verdict and l_Delta equal; the growth and sigma(T) within 1e-5
-// (Delta_total, max(1, |sigma|): the hard bound of compare_panel is 1e-4, its typical 1e-6; the values are printed).
-// The oscillation flag is then judged on the accepted steps (~0.5 apart) instead of the 161-point grid: it may
-// miss an oscillation shorter than a step (8 of 4096 points on the 64 x 64 Fig. 4(b) panel): at most 2 %. The tail
-// classifier does not read the flag; on App. E(b) it differs more often (61 of 4096 points on 64 x 64, 9 of 256 on
-// 16 x 16): at most 5 % there.
+// against the full-horizon panel (every run to T, tail sampled) on 16 x 16 grids of the Fig. 4 and App. E(b) panels:
+// verdict and l_Delta equal; the growth and sigma(T) within 1e-5 (Delta_total, max(1, |sigma|): the hard bound of
+// compare_panel is 1e-4, its typical 1e-6; the values are printed). The oscillation flag is then judged on the accepted
+// steps (~0.5 apart) instead of the 161-point grid: it may miss an oscillation shorter than a step (8 of 4096 points on
+// the 64 x 64 Fig. 4(b) panel): at most 2 %. The tail classifier does not read the flag; on App. E(b) it differs more
+// often (61 of 4096 points on 64 x 64, 9 of 256 on 16 x 16): at most 5 % there.
 void compare_diagram(const std::string& name, Classifier classifier = Classifier::final,
                      double max_oscillation = 0.02) {
   const SceneFile sf = panel(name);
@@ -183,8 +182,10 @@ void compare_diagram(const std::string& name, Classifier classifier = Classifier
     work_fast += a.rhs_evaluations;
     work_full += b.rhs_evaluations;
   }
-  std::printf("%s: max |growth difference| %.3g, max sigma(T) difference %.3g, oscillation flags differing %zu, "
-              "RHS evaluations %zu -> %zu\n", name.c_str(), growth, sigma, oscillation, work_full, work_fast);
+  std::printf(
+      "%s: max |growth difference| %.3g, max sigma(T) difference %.3g, oscillation flags differing %zu, "
+      "RHS evaluations %zu -> %zu\n",
+      name.c_str(), growth, sigma, oscillation, work_full, work_fast);
   EXPECT_LE(growth, 1e-5 * sf.scene.parameters.Delta) << name;
   EXPECT_LE(sigma, 1e-5) << name;
   EXPECT_LE(double(oscillation), max_oscillation * double(spec.size())) << name;
@@ -418,7 +419,8 @@ TEST(CertifiedRun, OptionsAreValidated) {
 #ifdef RBCSTAB_CLI
 // --full-horizon on the command line.
 TEST(CertifiedRun, FullHorizonFlag) {
-  const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("rbcstab_early_" + std::to_string(::getpid()));
+  const std::filesystem::path dir =
+      std::filesystem::temp_directory_path() / ("rbcstab_early_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);
   auto run = [&](const std::string& flags) {
     const std::string out = (dir / "out.json").string();

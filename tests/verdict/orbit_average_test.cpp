@@ -14,9 +14,9 @@
 
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
+#include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
-#include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/reduced_model.hpp"
@@ -24,7 +24,6 @@
 
 namespace rbcstab {
 namespace {
-
 
 // Appendix E(a): in plane, lambda = 1, Delta = 1, beta = pi/2.
 Scene appE_a(double lnB, double lnC) {

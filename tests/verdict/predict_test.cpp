@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "model/test_scenes.hpp"
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/analysis/truncation.hpp"
@@ -14,7 +15,6 @@
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/sweep/trace.hpp"
 #include "rbcstab/verdict/predict.hpp"
-#include "model/test_scenes.hpp"
 
 namespace rbcstab {
 namespace {
@@ -100,8 +100,8 @@ TEST(Verdict, InPlaneSummaryUsesTheAttractingOrbit) {
     ASSERT_TRUE(ta.mean.valid()) << ta.mean.reason;
     const double diff = pr.sigma_R_asymptotic.value - ta.mean.value;
     std::printf("lambda %g in plane: %s <sigma_R> %.12g, time average %.12g, difference %.3g (halves differ by %.3g)\n",
-                lambda, to_string(pr.asymptotic_sigma.source).c_str(), pr.sigma_R_asymptotic.value, ta.mean.value,
-                diff, ta.first_half - ta.second_half);
+                lambda, to_string(pr.asymptotic_sigma.source).c_str(), pr.sigma_R_asymptotic.value, ta.mean.value, diff,
+                ta.first_half - ta.second_half);
     if (pr.asymptotic_sigma.source == SigmaSource::periodic_orbit)
       EXPECT_NEAR(pr.sigma_R_asymptotic.value, ta.mean.value,
                   4 * std::abs(ta.first_half - ta.second_half) + 1e-3 * std::abs(ta.mean.value));

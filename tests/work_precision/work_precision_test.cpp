@@ -50,8 +50,8 @@ TEST(WorkPrecision, RenderersShowAStoppedRowsMissingNumbers) {
   t.reference_sigma = -30;
   t.reference_rtol = 1e-13;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  t.rows.push_back({ModelLevel::modal, Stepper::rk8pd, 1e-4, IntegrationStatus::success, 10, 0, 5, 0.5, 1e-5, 2e-6, 3,
-                    false, ""});
+  t.rows.push_back(
+      {ModelLevel::modal, Stepper::rk8pd, 1e-4, IntegrationStatus::success, 10, 0, 5, 0.5, 1e-5, 2e-6, 3, false, ""});
   t.rows.push_back({ModelLevel::full, Stepper::rkck, 1e-6, IntegrationStatus::time_limit, 20, 0, 9, 30, nan, nan, 2,
                     false, "time limit"});
   const std::string csv = work_precision_csv(t);

@@ -96,8 +96,8 @@ std::string post_text(const SceneFile& file, const PostInstability& post, const 
         << ", Psi~ = " << to_text(d->Psi_tilde) << "\n";
   }
   out << "Simulated Delta-bar_2 (tail mean over the last " << file.options.tail_window << " of T = " << s.T
-      << ") = " << to_text(simulated_Delta2(r)) << ", l_Delta = " << r.l_Delta << ", sigma tail mean = "
-      << r.sigma_tail_mean << "\n";
+      << ") = " << to_text(simulated_Delta2(r)) << ", l_Delta = " << r.l_Delta
+      << ", sigma tail mean = " << r.sigma_tail_mean << "\n";
   return out.str();
 }
 
@@ -125,13 +125,17 @@ nlohmann::json truncation_convergence_json(const SceneFile& file, const Truncati
   const TruncationConvergenceRow& ref = t.reference();
   nlohmann::json rows = nlohmann::json::array();
   for (const TruncationConvergenceRow& r : t.rows) {
-    nlohmann::json row{{"L", r.L}, {"status", to_string(r.status)}, {"reason", r.reason}, {"l_Delta", r.l_Delta},
-                       {"rhs_evaluations", r.rhs_evaluations}, {"seconds", r.seconds}};
+    nlohmann::json row{{"L", r.L},
+                       {"status", to_string(r.status)},
+                       {"reason", r.reason},
+                       {"l_Delta", r.l_Delta},
+                       {"rhs_evaluations", r.rhs_evaluations},
+                       {"seconds", r.seconds}};
     const std::string why = row_reason(r.status, r.reason, p);
     put_number(row, "sigma_final", r.sigma_final, why);
-    const std::string error_why = t.reference_ok() ? why
-                                                   : "the reference (L = " + std::to_string(ref.L) + ") " +
-                                                         row_reason(ref.status, ref.reason, p);
+    const std::string error_why =
+        t.reference_ok() ? why
+                         : "the reference (L = " + std::to_string(ref.L) + ") " + row_reason(ref.status, ref.reason, p);
     put_number(row, "error_Delta", r.error_Delta, error_why);
     put_number(row, "error_sigma", r.error_sigma, error_why);
     rows.push_back(row);

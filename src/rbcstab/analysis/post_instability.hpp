@@ -13,15 +13,15 @@
 namespace rbcstab {
 
 struct Delta2Prediction {
-  std::string variant;         // "continuous" (l_*, sigma_*) or "integer" (l_s, sigma_{l_s}^c)
-  double l = 0;                // l_* or l_s
-  double sigma_s = 0;          // the saturated tension
-  double mu_tilde = 0;         // Upsilon_2(sigma_s) <= 0: the l = 2 decay rate at saturation
-  Quantity Delta2_tilde;       // the selected root
-  Quantity r_tilde, Psi_tilde; // Eq. rss_postinst at the selected Delta2 (Psi~ = arctan(-mu~) needs no Delta2)
-  double K1 = 0, K2 = 0, c = 0;  // Eq. ss with Eq. subs_ss: Delta2 = K1 + K2 sqrt(Delta2 - c)
+  std::string variant;            // "continuous" (l_*, sigma_*) or "integer" (l_s, sigma_{l_s}^c)
+  double l = 0;                   // l_* or l_s
+  double sigma_s = 0;             // the saturated tension
+  double mu_tilde = 0;            // Upsilon_2(sigma_s) <= 0: the l = 2 decay rate at saturation
+  Quantity Delta2_tilde;          // the selected root
+  Quantity r_tilde, Psi_tilde;    // Eq. rss_postinst at the selected Delta2 (Psi~ = arctan(-mu~) needs no Delta2)
+  double K1 = 0, K2 = 0, c = 0;   // Eq. ss with Eq. subs_ss: Delta2 = K1 + K2 sqrt(Delta2 - c)
   std::array<double, 2> roots{};  // of the squared quadratic (Delta2 - K1)^2 = K2^2 (Delta2 - c), ascending
-  std::string selection;       // which root was kept and why
+  std::string selection;          // which root was kept and why
 };
 
 // Delta~2 at saturated tension sigma_s for a stress-free shape with w0 = sqrt(1 - r0^2) (r0 = 0 out of plane;

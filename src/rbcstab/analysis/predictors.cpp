@@ -160,8 +160,9 @@ bool ReducedTransient::of_flow(const Scene& scene) const {
 
 ReducedTransient transient_at_B(const ReducedTransient& transient, const Scene& scene) {
   if (!transient.of_flow(scene))
-    throw InvalidArgument("transient", "the reduced transient was integrated for another flow (parameters other "
-                                       "than B, or beta)");
+    throw InvalidArgument("transient",
+                          "the reduced transient was integrated for another flow (parameters other "
+                          "than B, or beta)");
   if (transient.of(scene)) return transient;
   const GrowthRate from = Upsilon_l(transient.parameters, 2), to = Upsilon_l(scene.parameters, 2);
   // int_0^t mu = from.slope (I - from.sigma_c t), then int_0^t sigma_R = int mu / to.slope + to.sigma_c t.

@@ -19,19 +19,20 @@ namespace rbcstab {
 
 struct PredictorOptions {
   IntegratorOptions integrator = default_integrator();  // reduced runs: 3 unknowns, tight tolerances are cheap
-  double transient = 500;     // skipped before the time average of sigma_R (the reduced relaxation time is O(10-100))
-  double window = 2000;       // averaging window: many periods of any in-plane orbit (periods are O(2 pi))
+  double transient = 500;  // skipped before the time average of sigma_R (the reduced relaxation time is O(10-100))
+  double window = 2000;    // averaging window: many periods of any in-plane orbit (periods are O(2 pi))
   double average_tolerance = 1e-3;  // |mean(first half) - mean(second half)| <= tol (1 + |mean|) => converged
   double out_of_plane_r0 = 1e-4;    // r0 below this counts as out of plane (beta = 1e-3 gives r0 ~ 9e-7)
-  double regime_sample_dt = 0.05;   // in (0, window/2]: Psi sampling over the regime window: far below the rotation period 2 pi
-  void validate() const;            // throws InvalidArgument naming the field
+  double regime_sample_dt =
+      0.05;               // in (0, window/2]: Psi sampling over the regime window: far below the rotation period 2 pi
+  void validate() const;  // throws InvalidArgument naming the field
   static IntegratorOptions default_integrator();
 };
 
 // Time average of sigma_R over [transient, transient + window] along the ReducedModel trajectory from the
 // scene's own initial state.
 struct SigmaAverage {
-  Quantity mean;               // outside_domain if the run failed or the halves disagree
+  Quantity mean;  // outside_domain if the run failed or the halves disagree
   double first_half = 0, second_half = 0;
   IntegrationCounters counters;
 };
@@ -45,14 +46,14 @@ SigmaAverage time_averaged_sigma_R(const Scene& scene, const PredictorOptions& o
 struct ReducedTransient {
   Parameters parameters;  // of the scene it was integrated for
   double beta = 0;
-  double T = 0;           // the requested horizon
-  int checkpoints = 1;    // K
-  std::vector<double> t, integral;      // checkpoints reached, int_0^{t_k} sigma_R there
-  double t_end = 0, integral_end = 0;   // T on success, else where the run stopped; the integral there
+  double T = 0;                        // the requested horizon
+  int checkpoints = 1;                 // K
+  std::vector<double> t, integral;     // checkpoints reached, int_0^{t_k} sigma_R there
+  double t_end = 0, integral_end = 0;  // T on success, else where the run stopped; the integral there
   IntegrationStatus status = IntegrationStatus::success;
   std::string reason;
   IntegrationCounters counters;
-  bool of(const Scene& scene) const;    // integrated for this scene's parameters and beta (any T, L, seeds)
+  bool of(const Scene& scene) const;       // integrated for this scene's parameters and beta (any T, L, seeds)
   bool of_flow(const Scene& scene) const;  // the same up to B (see transient_at_B)
   // What the reduced flow depends on: lambda, Delta, Delta0, C and beta (not B, T, L or the seeds).
   static std::array<double, 5> flow(const Parameters& p, double beta);
@@ -74,7 +75,7 @@ ReducedTransient transient_at_B(const ReducedTransient& transient, const Scene& 
 struct FiniteHorizon {
   double T = 0;
   double mean_sigma_R = 0;
-  std::vector<double> G;       // index l - 2
+  std::vector<double> G;  // index l - 2
   IntegrationStatus status = IntegrationStatus::success;
   std::string reason;
   IntegrationCounters counters;
@@ -88,9 +89,11 @@ FiniteHorizon finite_horizon_growth(const Scene& scene, double T, const Predicto
 enum class Regime { rolling, tank_treading, swinging, tumbling, undetermined };
 template <>
 struct EnumTable<Regime> {
-  static constexpr EnumName<Regime> entries[] = {
-      {Regime::rolling, "rolling"}, {Regime::tank_treading, "tank-treading"}, {Regime::swinging, "swinging"},
-      {Regime::tumbling, "tumbling"}, {Regime::undetermined, "undetermined"}};
+  static constexpr EnumName<Regime> entries[] = {{Regime::rolling, "rolling"},
+                                                 {Regime::tank_treading, "tank-treading"},
+                                                 {Regime::swinging, "swinging"},
+                                                 {Regime::tumbling, "tumbling"},
+                                                 {Regime::undetermined, "undetermined"}};
 };
 struct RegimeResult {
   Regime regime = Regime::undetermined;

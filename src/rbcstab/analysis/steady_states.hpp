@@ -17,17 +17,17 @@ struct OutOfPlaneEquilibrium {
   // Lambda^2 u^2 - (1 + Lambda^2 + S^-2) u + 1 = 0, u = r^2 in (0, 1]; cos Psi = Lambda r,
   // sqrt(1 - r^2) sin Psi = r / S, sin Psi >= 0.
   double r = 0, Psi = 0;
-  double w = 0;                 // sqrt(1 - r^2) (computed without cancellation)
-  double mu = 0;                // Upsilon_2 at the equilibrium (the reduced model's multiplier)
-  double sigma_R = 0;           // Eq. st_red at the equilibrium
+  double w = 0;                                     // sqrt(1 - r^2) (computed without cancellation)
+  double mu = 0;                                    // Upsilon_2 at the equilibrium (the reduced model's multiplier)
+  double sigma_R = 0;                               // Eq. st_red at the equilibrium
   std::array<std::complex<double>, 2> eigenvalues;  // of the reduced Jacobian on the sphere's tangent plane
-  bool stable = false;          // both eigenvalues have negative real part
+  bool stable = false;                              // both eigenvalues have negative real part
   // False when the eigenvalues are not finite (inputs so extreme that the Jacobian overflows): `stable` then
   // says nothing and the outputs write "n/a" / null with the reason.
   bool stability_known() const {
     return std::isfinite(std::abs(eigenvalues[0])) && std::isfinite(std::abs(eigenvalues[1]));
   }
-  double residual = 0;          // max |rhs| of ReducedModel at the equilibrium (an O(eps) check)
+  double residual = 0;  // max |rhs| of ReducedModel at the equilibrium (an O(eps) check)
   // The paper's S >> 1 forms (Eq. ss_red): r_ss, Psi_ss, <sigma_R^-+> (Eq. ss_st_red).
   double r_large_S = 0, Psi_large_S = 0;
   Quantity sigma_R_large_S;

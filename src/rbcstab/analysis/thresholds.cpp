@@ -90,8 +90,9 @@ Quantity alpha_init(const Parameters& p) {
   p.validate();
   const double q = std::sqrt(std::sqrt(p.Delta0 / p.Delta));
   if (q >= 1)
-    return Quantity::outside("Delta0 = Delta: sigma_R(0) = -6 never reaches sigma_* = -4 sqrt(alpha) for alpha > 9/4, "
-                             "alpha_*^init is infinite");
+    return Quantity::outside(
+        "Delta0 = Delta: sigma_R(0) = -6 never reaches sigma_* = -4 sqrt(alpha) for alpha > 9/4, "
+        "alpha_*^init is infinite");
   return Quantity::of(9 / ((1 - q) * (1 - q)));
 }
 
@@ -99,8 +100,8 @@ Quantity mean_sigma_R_minus(const Parameters& p) {
   p.validate();
   const double Lambda = p.Lambda();
   if (Lambda > 1) return Quantity::outside("Lambda = " + format_value(Lambda) + " > 1: <sigma_R^-> needs Lambda <= 1");
-  const double value = -6 + std::sqrt(30 * kPi) / 3 * std::sqrt((1 - Lambda * Lambda) / p.Delta) * p.B -
-                       2 * p.alpha() / 3;
+  const double value =
+      -6 + std::sqrt(30 * kPi) / 3 * std::sqrt((1 - Lambda * Lambda) / p.Delta) * p.B - 2 * p.alpha() / 3;
   return Quantity::of(value);
 }
 
@@ -168,8 +169,10 @@ Quantity lambda_star_minus(double alpha, double C, double Delta) {
   const double q = std::sqrt(alpha) - 3;
   const double radicand = 30 * kPi * C * C * alpha * alpha / Delta - 4 * q * q * q * q;
   if (radicand < 0)
-    return Quantity::outside("<sigma_R^-> < sigma_* for every Lambda in [0, 1): every lambda with Lambda < 1 is "
-                             "unstable (radicand " + format_value(radicand) + " < 0)");
+    return Quantity::outside(
+        "<sigma_R^-> < sigma_* for every Lambda in [0, 1): every lambda with Lambda < 1 is "
+        "unstable (radicand " +
+        format_value(radicand) + " < 0)");
   const double value = 8.0 / 23.0 * (std::sqrt(radicand) / (C * alpha) - 4);
   if (value < 0)
     return Quantity::outside("lambda_*^- = " + format_value(value) +

@@ -42,8 +42,8 @@ Quantity alpha_init(const Parameters& p);
 
 // <sigma_R^-> (Eq. ss_st_red, Lambda < 1, S >> 1): -6 + (sqrt(30 pi)/3) sqrt((1 - Lambda^2)/Delta) B - 2 alpha/3.
 Quantity mean_sigma_R_minus(const Parameters& p);
-// <sigma_R^+> (Lambda > 1, S >> 1), corrected: -6 + (2 alpha/3)(sqrt(Delta0/Delta (1 - r0^2)) Lambda/sqrt(Lambda^2 - 1) - 1).
-// The printed form drops the shear term B r sin Psi, which is O(alpha sqrt(Delta0)) because sin Psi = O(1/S)
+// <sigma_R^+> (Lambda > 1, S >> 1), corrected: -6 + (2 alpha/3)(sqrt(Delta0/Delta (1 - r0^2)) Lambda/sqrt(Lambda^2 - 1)
+// - 1). The printed form drops the shear term B r sin Psi, which is O(alpha sqrt(Delta0)) because sin Psi = O(1/S)
 // (docs/theory.md). Outside domain for Lambda <= 1. r0 enters through the Phi-average (w0 = sqrt(1 - r0^2)).
 Quantity mean_sigma_R_plus(const Parameters& p, double r0);
 // The printed <sigma_R^+> with (1 - Lambda^2)(1 - r0^2) under the root: negative for every Lambda > 1, r0 < 1.

@@ -61,8 +61,9 @@ TruncationChoice choose_from_transient(const ValidScene& valid, const ReducedTra
                                        const TruncationOptions& options) {
   const Scene& scene = *valid;
   if (!transient.of(scene) || transient.T != scene.T || transient.checkpoints != options.checkpoints)
-    throw InvalidArgument("transient", "the reduced transient must be the scene's over [0, T = " + format_value(scene.T) +
-                                           "] with " + std::to_string(options.checkpoints) + " checkpoints");
+    throw InvalidArgument(
+        "transient", "the reduced transient must be the scene's over [0, T = " + format_value(scene.T) + "] with " +
+                         std::to_string(options.checkpoints) + " checkpoints");
   Scene s = scene;
   // Every explicitly set mode must exist; L_max covers the candidates of the rule.
   int L_explicit = 2;
@@ -170,11 +171,15 @@ TruncationDecision resolve_valid(const ValidScene& valid, Origin L_origin, Trunc
       d.reason = unset + "one L serves every scene of the grid, while the automatic choice is made per scene";
       break;
     case TruncationUse::analysis:
-      d.reason = unset + "the automatic choice bounds the truncation error of a simulation over [0, T], and this "
-                         "computation has no such horizon";
+      d.reason = unset +
+                 "the automatic choice bounds the truncation error of a simulation over [0, T], and this "
+                 "computation has no such horizon";
       break;
-    case TruncationUse::measurement: d.reason = unset + "a benchmark measures at the L it is given"; break;
-    case TruncationUse::reduced: break;
+    case TruncationUse::measurement:
+      d.reason = unset + "a benchmark measures at the L it is given";
+      break;
+    case TruncationUse::reduced:
+      break;
   }
   return d;
 }
@@ -190,10 +195,10 @@ namespace {
 // The candidate run's state at one accepted step, reduced to what the check reads.
 struct StepRecord {
   double t = 0, sigma = 0;
-  double J = 0;       // int_0^t sigma dt'
+  double J = 0;  // int_0^t sigma dt'
   bool J_exact = false;
-  double D = 0;       // sum over the kept modes of dUpsilon_l/dsigma Delta_l (< 0)
-  double W = 0;       // the work term of the area balance: sum_l Upsilon_l(sigma) Delta_l + W = 0 (tension.hpp)
+  double D = 0;  // sum over the kept modes of dUpsilon_l/dsigma Delta_l (< 0)
+  double W = 0;  // the work term of the area balance: sum_l Upsilon_l(sigma) Delta_l + W = 0 (tension.hpp)
   double Delta2 = 0;
 };
 
@@ -253,12 +258,14 @@ class StepRecorder {
 
  private:
   double floor_;
-  std::vector<GrowthRate> U_;      // index l - 2
-  std::vector<double> Delta0_;     // the run's Delta_l(0)
+  std::vector<GrowthRate> U_;   // index l - 2
+  std::vector<double> Delta0_;  // the run's Delta_l(0)
   std::vector<char> reference_;
 };
 
-std::string mode_range(int a, int b) { return a == b ? std::to_string(a) : std::to_string(a) + ".." + std::to_string(b); }
+std::string mode_range(int a, int b) {
+  return a == b ? std::to_string(a) : std::to_string(a) + ".." + std::to_string(b);
+}
 
 // The check of the dropped modes l = Lc+1..scene.L along the recorded run.
 TruncationCheck check_run(const Scene& scene, int Lc, const SimulationResult& run, const std::vector<StepRecord>& steps,
@@ -316,7 +323,8 @@ TruncationCheck check_run(const Scene& scene, int Lc, const SimulationResult& ru
       // d ln Delta_l/dt = 2 |slope| (sigma_c - sigma) lies in [-g, f]: f = 2 |slope| (sigma_c - lo) and
       // g = 2 |slope| (hi - sigma_c), so u(t) <= min(uk + f tau, un + g (h - tau)), tau = t - t_k. That minimum
       // is concave: its largest value is at tau = 0, h or where the two lines meet.
-      const double f = 2 * std::abs(m.U.slope) * (m.U.sigma_c - in.lo), g = 2 * std::abs(m.U.slope) * (in.hi - m.U.sigma_c);
+      const double f = 2 * std::abs(m.U.slope) * (m.U.sigma_c - in.lo),
+                   g = 2 * std::abs(m.U.slope) * (in.hi - m.U.sigma_c);
       auto line_min = [&](double tau) { return std::min(uk + f * tau, un + g * (h - tau)); };
       double bound = std::max({line_min(0), line_min(h), uk, un});
       if (f + g > 0) bound = std::max(bound, line_min(std::clamp((un - uk + g * h) / (f + g), 0.0, h)));
@@ -385,11 +393,11 @@ TruncationCheck check_run(const Scene& scene, int Lc, const SimulationResult& ru
   for (const auto& d : c.dropped)
     if (!(d.Delta_max <= d.delta + c.threshold))
       failed << "l = " << d.l << " reaches Delta_" << d.l << " = " << short_value(d.Delta_max) << " > delta_l + "
-             << short_value(c.threshold) << " = " << short_value(d.delta + c.threshold) << " (t = " << short_value(d.t_max)
-             << "); ";
+             << short_value(c.threshold) << " = " << short_value(d.delta + c.threshold)
+             << " (t = " << short_value(d.t_max) << "); ";
   if (!(c.sigma_shift <= c.sigma_tolerance))
-    failed << "their area moves sigma by up to " << short_value(c.sigma_shift) << " > " << short_value(c.sigma_tolerance)
-           << " (t = " << short_value(c.t_sigma_shift) << ")";
+    failed << "their area moves sigma by up to " << short_value(c.sigma_shift) << " > "
+           << short_value(c.sigma_tolerance) << " (t = " << short_value(c.t_sigma_shift) << ")";
   std::string f = failed.str();
   if (f.size() >= 2 && f.compare(f.size() - 2, 2, "; ") == 0) f.resize(f.size() - 2);
   c.passed = f.empty();
@@ -402,8 +410,8 @@ TruncationCheck check_run(const Scene& scene, int Lc, const SimulationResult& ru
       v << " (closest: l = " << d.l << ", " << short_value(d.delta) << " -> " << short_value(d.Delta_max)
         << " at t = " << short_value(d.t_max) << ")";
     }
-    v << ", and their area moves sigma by at most " << short_value(c.sigma_shift) << " <= "
-      << short_value(c.sigma_tolerance) << " (" << short_value(options.tolerance) << " max |sigma|)";
+    v << ", and their area moves sigma by at most " << short_value(c.sigma_shift)
+      << " <= " << short_value(c.sigma_tolerance) << " (" << short_value(options.tolerance) << " max |sigma|)";
   } else {
     v << f;
   }
@@ -462,9 +470,9 @@ std::optional<SimulationResult> decide_simulation(SceneFile& file, const Simulat
     file.scene.L = d.L;
     out = std::move(c.run);
   } else {
-    file.L_reason = "L = " + std::to_string(file.scene.L) + ": the scene's L, because the candidate L = " +
-                    std::to_string(d.L) + " failed the check after its run (" + c.check.verdict +
-                    "); candidate: " + d.reason;
+    file.L_reason = "L = " + std::to_string(file.scene.L) +
+                    ": the scene's L, because the candidate L = " + std::to_string(d.L) +
+                    " failed the check after its run (" + c.check.verdict + "); candidate: " + d.reason;
   }
   file.truncation_check = std::move(c.check);
   return out;

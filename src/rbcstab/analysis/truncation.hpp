@@ -30,22 +30,22 @@
 namespace rbcstab {
 
 struct TruncationOptions {
-  double tolerance = 1e-4;  // in (0, 1): area gain (relative to Delta) a dropped mode may take from the kept ones,
-                            // and the tension change (relative to max_t |sigma|) their area may cause
-  int L_max = 40;           // in [3, kMaxL]: largest L choose_truncation considers (the policy passes the
-                            // scene's L; 40: the reference of the truncation study)
-  int checkpoints = 32;     // in [1, 10000]: times T k/K where G_l(t) is evaluated, so that a mode that grows
-                            // and decays again before T still counts
+  double tolerance = 1e-4;     // in (0, 1): area gain (relative to Delta) a dropped mode may take from the kept ones,
+                               // and the tension change (relative to max_t |sigma|) their area may cause
+  int L_max = 40;              // in [3, kMaxL]: largest L choose_truncation considers (the policy passes the
+                               // scene's L; 40: the reference of the truncation study)
+  int checkpoints = 32;        // in [1, 10000]: times T k/K where G_l(t) is evaluated, so that a mode that grows
+                               // and decays again before T still counts
   PredictorOptions predictor;  // the reduced run (its integrator tolerances)
   void validate() const;       // throws InvalidArgument naming the field
 };
 
 struct TruncationChoice {
   int L = 10;
-  std::string reason;             // one line for the user: the rule and what decided it
-  std::vector<double> G_max;      // index l - 3 for l = 3..L_max: max over the checkpoints of G_l(t)
-  std::vector<double> log_gain;   // index l - 3: ln(delta_l (exp(2 G_max) - 1) / Delta), -inf-free: -1e300 if no gain
-  double dropped_seeded_area = 0; // sum of delta_l for l = L+1..L_max: the area the candidate run does not hold
+  std::string reason;              // one line for the user: the rule and what decided it
+  std::vector<double> G_max;       // index l - 3 for l = 3..L_max: max over the checkpoints of G_l(t)
+  std::vector<double> log_gain;    // index l - 3: ln(delta_l (exp(2 G_max) - 1) / Delta), -inf-free: -1e300 if no gain
+  double dropped_seeded_area = 0;  // sum of delta_l for l = L+1..L_max: the area the candidate run does not hold
   DomainStatus status = DomainStatus::ok;  // outside_domain: the reduced run failed, L = L_max (conservative)
   IntegrationCounters counters;
 };
@@ -82,7 +82,8 @@ struct TruncationDecision {
 // transient (optional): the scene's truncation_transient, read by the automatic choice instead of a run of its
 // own, so that the finite-horizon predictor can share it.
 TruncationDecision resolve_truncation(const Scene& scene, Origin L_origin, TruncationUse use,
-                                      const TruncationOptions& options = {}, const ReducedTransient* transient = nullptr);
+                                      const TruncationOptions& options = {},
+                                      const ReducedTransient* transient = nullptr);
 
 // The scene run at L_candidate in [2, scene.L) (the kept modes keep the scene's seeds) and the check of the
 // dropped modes l = L_candidate+1..scene.L against that run's sigma(t) (TruncationCheck, io/scene_file.hpp;

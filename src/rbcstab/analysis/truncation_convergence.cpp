@@ -44,8 +44,8 @@ TruncationConvergence truncation_convergence(const Scene& scene, const Simulatio
     e /= scene.parameters.Delta;
     double es = std::abs(r.sigma_final - ref.sigma_final) / std::max(1.0, std::abs(ref.sigma_final));
     if (!reference_ok) e = es = std::numeric_limits<double>::quiet_NaN();
-    out.rows.push_back({study.Ls[i], r.status, r.reason, r.l_Delta, r.sigma_final, e, es, r.counters.rhs_evaluations,
-                        r.seconds});
+    out.rows.push_back(
+        {study.Ls[i], r.status, r.reason, r.l_Delta, r.sigma_final, e, es, r.counters.rhs_evaluations, r.seconds});
   }
   return out;
 }

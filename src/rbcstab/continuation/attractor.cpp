@@ -135,8 +135,8 @@ PeriodicRefinement refine_periodic_orbit(const ForcedSystem& system, double p, d
   // The multipliers: M is known at x0 only; |M(x*) - M(x0)| <~ q |DE| (what slows the chord), x0's own
   // defect moves the invariant plane (M maps x0^perp onto phi0^perp), and the run's tolerance.
   const double m_norm = M.norm();
-  const double eta = std::max({10 * options.variational.rtol, (phi0 - x0).norm(),
-                               m_norm > 0 ? r.contraction * DE.norm() / m_norm : 0.0});
+  const double eta = std::max(
+      {10 * options.variational.rtol, (phi0 - x0).norm(), m_norm > 0 ? r.contraction * DE.norm() / m_norm : 0.0});
   const Eigen::MatrixXd T = norm ? detail::tangent_basis(x0) : Eigen::MatrixXd::Identity(n, n);
   r.monodromy = T.transpose() * M * T;
   r.multipliers = certified_eigenvalues(r.monodromy, eta);

@@ -9,10 +9,10 @@
 // variational run at the start x0 gives the monodromy M = dphi/dx and the chord matrix DE; every further
 // iterate costs one plain run. The chord converges at the rate q ~ |M(x*) - M(x0)| / |DE| ~ |x0 - x*|, so a
 // measured q well below 1 says that x0 lies where the orbit's linearisation holds.
-#include "rbcstab/continuation/dense.hpp"
 #include <numbers>
 #include <string>
 #include <vector>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
@@ -31,20 +31,20 @@ struct PeriodicRefinementOptions {
   // The monodromy at the start: it only steers the chord and gives the multipliers, whose error bound
   // includes its tolerance (a margin far above it is what a certificate needs).
   IntegratorOptions variational = {Stepper::rk8pd, 1e-7, 1e-10};
-  double residual_tol = 1e-9;    // |phi(x*) - x*| (states have |x| = 1) that accepts x* as periodic
-  int max_iterations = 6;        // chord iterations after the variational run
-  double max_contraction = 0.25; // a slower chord: x0 is too far from the orbit for its linearisation
-  void validate() const;         // throws InvalidArgument naming the field
+  double residual_tol = 1e-9;     // |phi(x*) - x*| (states have |x| = 1) that accepts x* as periodic
+  int max_iterations = 6;         // chord iterations after the variational run
+  double max_contraction = 0.25;  // a slower chord: x0 is too far from the orbit for its linearisation
+  void validate() const;          // throws InvalidArgument naming the field
 };
 
 struct PeriodicRefinement {
   bool converged = false;
-  std::string reason;              // why not converged
-  Eigen::VectorXd x;               // x*: the orbit's state at t0 (modulo the period)
-  double residual = 0;             // |phi(x*) - x*|
-  double distance = 0;             // |x0 - x*|
-  double contraction = 0;          // ratio of the last two chord steps
-  int iterations = 0;              // chord iterations
+  std::string reason;      // why not converged
+  Eigen::VectorXd x;       // x*: the orbit's state at t0 (modulo the period)
+  double residual = 0;     // |phi(x*) - x*|
+  double distance = 0;     // |x0 - x*|
+  double contraction = 0;  // ratio of the last two chord steps
+  int iterations = 0;      // chord iterations
   // Phi(t0 + period, t0) at x0 on the tangent plane x0^perp (orthonormal basis) when the system conserves
   // |x|^2 (the trivial multiplier 1 removed), else the whole monodromy.
   Eigen::MatrixXd monodromy;
@@ -56,8 +56,8 @@ struct PeriodicRefinement {
   // decay): to first order, the deviations of the later trajectory at the start's phase add up to this, so an
   // integral along it exceeds the orbit's by the integral's change from x* to x* + deviation_sum.
   Eigen::VectorXd deviation_sum;
-  Eigen::VectorXd integrals;       // the caller's integrands over one period along x*
-  IntegrationCounters work;        // every run
+  Eigen::VectorXd integrals;  // the caller's integrands over one period along x*
+  IntegrationCounters work;   // every run
 };
 
 // Refines the orbit of `system` (at parameter p) through the state x0 at time t0. Failures are a reason in
@@ -71,8 +71,8 @@ PeriodicRefinement refine_periodic_orbit(const ForcedSystem& system, double p, d
 // their first-order change.
 struct PeriodRun {
   bool ok = false;
-  std::string reason;         // why not ok
-  Eigen::VectorXd x;          // phi(x0)
+  std::string reason;  // why not ok
+  Eigen::VectorXd x;   // phi(x0)
   Eigen::VectorXd integrals;
   IntegrationCounters work;
 };

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 #include <climits>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <set>
 #include <utility>
@@ -28,7 +28,6 @@ json vector_json(const Eigen::VectorXd& x) {
   for (Eigen::Index i = 0; i < x.size(); ++i) a.push_back(number_or_null(x[i]));
   return a;
 }
-
 
 // The file keys of a branch object (to_json(MeasuredBranch) already holds the rest).
 void add_states(json& j, const MeasuredBranch& m) {
@@ -59,21 +58,21 @@ void put_bound(json& j, const std::string& key, double v) {
 
 json engine_json(const ContinuationOptions& e) {
   json j{{"initial_step", e.initial_step},
-          {"min_step", e.min_step},
-          {"max_step", e.max_step},
-          {"step_growth", e.step_growth},
-          {"step_shrink", e.step_shrink},
-          {"easy_iterations", e.easy_iterations},
-          {"max_newton", e.max_newton},
-          {"newton_tol", e.newton_tol},
-          {"max_points", e.max_points},
-          {"direction", to_string(e.direction)},
-          {"detect_bifurcations", e.detect_bifurcations},
-          {"compute_stability", e.compute_stability},
-          {"location_tol", e.location_tol},
-          {"max_location_iterations", e.max_location_iterations},
-          {"stability_tol", e.stability_tol},
-          {"certificate_refine_margin", e.certificate_refine_margin}};
+         {"min_step", e.min_step},
+         {"max_step", e.max_step},
+         {"step_growth", e.step_growth},
+         {"step_shrink", e.step_shrink},
+         {"easy_iterations", e.easy_iterations},
+         {"max_newton", e.max_newton},
+         {"newton_tol", e.newton_tol},
+         {"max_points", e.max_points},
+         {"direction", to_string(e.direction)},
+         {"detect_bifurcations", e.detect_bifurcations},
+         {"compute_stability", e.compute_stability},
+         {"location_tol", e.location_tol},
+         {"max_location_iterations", e.max_location_iterations},
+         {"stability_tol", e.stability_tol},
+         {"certificate_refine_margin", e.certificate_refine_margin}};
   put_bound(j, "p_min", e.p_min);
   put_bound(j, "p_max", e.p_max);
   return j;
@@ -83,25 +82,24 @@ json spec_json(const BranchSpec& s) {
   SceneFile sf;
   sf.scene = s.scene;
   json j{{"scene", to_toml(sf)},
-          {"kind", to_string(s.kind)},
-          {"parameter", to_string(s.parameter)},
-          {"engine", engine_json(s.engine)},
-          {"relax_T", s.relax_T},
-          {"relax_tol", s.relax_tol},
-          {"relax_max_periods", s.relax_max_periods},
-          {"allow_unstable_start", s.allow_unstable_start},
-          {"orbit",
-           {{"segments", s.orbit.segments},
-            {"rtol", s.orbit.rtol},
-            {"atol", s.orbit.atol},
-            {"samples_per_segment", s.orbit.samples_per_segment}}},
-          {"label_every", s.label_every},
-          {"switch_at_bp", s.switch_at_bp},
-          {"start_state", s.start_state ? vector_json(*s.start_state) : json(nullptr)}};
+         {"kind", to_string(s.kind)},
+         {"parameter", to_string(s.parameter)},
+         {"engine", engine_json(s.engine)},
+         {"relax_T", s.relax_T},
+         {"relax_tol", s.relax_tol},
+         {"relax_max_periods", s.relax_max_periods},
+         {"allow_unstable_start", s.allow_unstable_start},
+         {"orbit",
+          {{"segments", s.orbit.segments},
+           {"rtol", s.orbit.rtol},
+           {"atol", s.orbit.atol},
+           {"samples_per_segment", s.orbit.samples_per_segment}}},
+         {"label_every", s.label_every},
+         {"switch_at_bp", s.switch_at_bp},
+         {"start_state", s.start_state ? vector_json(*s.start_state) : json(nullptr)}};
   if (!s.start_state) j["start_state_reason"] = "none: the start is computed from the scene";
   return j;
 }
-
 
 json special_point_json(const SpecialPoint& sp) {
   return {{"type", to_string(sp.type)},
@@ -118,7 +116,6 @@ json special_point_json(const SpecialPoint& sp) {
           {"after_index", sp.after_index},
           {"eigenvalue", complex_json(sp.eigenvalue)}};
 }
-
 
 // ---- reading: every access names the key path and the file ----
 
@@ -201,7 +198,9 @@ class Reader {
     }
   }
 
-  static std::string join(const std::string& path, const std::string& key) { return path.empty() ? key : path + "." + key; }
+  static std::string join(const std::string& path, const std::string& key) {
+    return path.empty() ? key : path + "." + key;
+  }
   static std::string item(const std::string& path, std::size_t k) { return path + "[" + std::to_string(k) + "]"; }
 
  private:
@@ -293,8 +292,9 @@ void read_stability(const Reader& rd, const json& o, const std::string& at, Poin
 
 // A branch object back into a MeasuredBranch: parameter and measure names as the run's, states of
 // `dimension` unknowns (0: any, the same for every point).
-MeasuredBranch read_branch(const Reader& rd, const json& j, const std::string& path, std::vector<std::string> parameter_names,
-                           std::vector<std::string> measure_names, Eigen::Index dimension) {
+MeasuredBranch read_branch(const Reader& rd, const json& j, const std::string& path,
+                           std::vector<std::string> parameter_names, std::vector<std::string> measure_names,
+                           Eigen::Index dimension) {
   MeasuredBranch m;
   m.measure_names = std::move(measure_names);
   m.branch.parameter_names = std::move(parameter_names);
@@ -320,7 +320,8 @@ MeasuredBranch read_branch(const Reader& rd, const json& j, const std::string& p
     const json& spectrum_values = rd.array(o, spectrum, at);
     pt.spectrum.resize(static_cast<Eigen::Index>(spectrum_values.size()));
     for (std::size_t i = 0; i < spectrum_values.size(); ++i)
-      pt.spectrum[static_cast<Eigen::Index>(i)] = rd.complex(spectrum_values[i], Reader::item(Reader::join(at, spectrum), i));
+      pt.spectrum[static_cast<Eigen::Index>(i)] =
+          rd.complex(spectrum_values[i], Reader::item(Reader::join(at, spectrum), i));
     pt.n_unstable = rd.small_int(o, "n_unstable", at);
     pt.stable = rd.boolean(o, "stable", at);
     read_stability(rd, o, at, pt);
@@ -345,7 +346,8 @@ MeasuredBranch read_branch(const Reader& rd, const json& j, const std::string& p
     read_stability(rd, o, at, sp);
     check_size(sp.x, Reader::join(at, "x"));
     if (sp.after_index + 1 >= pts.size())
-      rd.fail(Reader::join(at, "after_index") + " = " + std::to_string(sp.after_index) + " must be below the last "
+      rd.fail(Reader::join(at, "after_index") + " = " + std::to_string(sp.after_index) +
+              " must be below the last "
               "point's index (a special point lies between two points of the branch)");
     m.branch.special_points.push_back(std::move(sp));
     m.special_measures.push_back(measures_of(rd, o, m.measure_names, at));
@@ -396,7 +398,8 @@ BranchSpec read_spec(const Reader& rd, const json& j) {
   const std::string toml = rd.string(j, "scene", path);
   s.scene = rd.checked("spec.scene", [&] { return parse_scene(toml, "spec.scene").scene; });
   s.kind = rd.checked("spec.kind", [&] { return problem_kind_from_string(rd.string(j, "kind", path)); });
-  s.parameter = rd.checked("spec.parameter", [&] { return continuation_parameter_from_string(rd.string(j, "parameter", path)); });
+  s.parameter =
+      rd.checked("spec.parameter", [&] { return continuation_parameter_from_string(rd.string(j, "parameter", path)); });
   s.engine = read_engine(rd, rd.at(j, "engine", path), "spec.engine");
   s.relax_T = rd.number(j, "relax_T", path);
   s.relax_tol = rd.number(j, "relax_tol", path);
@@ -518,7 +521,8 @@ ContinuationRun parse_branch_file(const std::string& text, const std::string& so
     rd.fail(std::string("it has no \"format\": \"") + kBranchFileFormat + "\" (written by rbcstab continue --save?)");
   const long long version = rd.integer(j, "version", "");
   if (version != kBranchFileVersion)
-    rd.fail("version " + std::to_string(version) + ": this rbcstab reads version " + std::to_string(kBranchFileVersion));
+    rd.fail("version " + std::to_string(version) + ": this rbcstab reads version " +
+            std::to_string(kBranchFileVersion));
   if (!j.contains("curve")) {
     ContinuationRun run = read_scene_branch(rd, j, j, "");
     check_labels(rd, run);
@@ -527,7 +531,8 @@ ContinuationRun parse_branch_file(const std::string& text, const std::string& so
   SceneCurve c;
   c.one = read_scene_branch(rd, j, rd.at(j, "one_parameter_branch", ""), "one_parameter_branch");
   const json& cs = rd.at(j, "curve_spec", "");
-  c.spec.type = rd.checked("curve_spec.type", [&] { return curve_kind_from_string(rd.string(cs, "type", "curve_spec")); });
+  c.spec.type =
+      rd.checked("curve_spec.type", [&] { return curve_kind_from_string(rd.string(cs, "type", "curve_spec")); });
   c.spec.parameter2 = rd.checked("curve_spec.parameter2", [&] {
     return continuation_parameter_from_string(rd.string(cs, "parameter2", "curve_spec"));
   });

@@ -34,7 +34,8 @@ void save_branch(const std::string& path, const ContinuationRun& run);
 // state against the problem's dimension, finite numbers, labels positive and unique); anything else
 // throws InvalidArgument(name, "name = 'source' ...") naming the key and its value: a file that is not a
 // branch file, a truncated file, a newer version.
-ContinuationRun parse_branch_file(const std::string& text, const std::string& source, const std::string& name = "restart");
+ContinuationRun parse_branch_file(const std::string& text, const std::string& source,
+                                  const std::string& name = "restart");
 ContinuationRun load_branch(const std::string& path, const std::string& name = "restart");
 
 }  // namespace rbcstab

@@ -33,7 +33,6 @@ void put_csv_value(std::ostream& os, const MeasureValue& v) {
     put_value(os, v);
 }
 
-
 // The certified stability keys of a point, special point or start.
 template <class Point>
 void put_stability(nlohmann::json& j, const Point& pt) {
@@ -114,8 +113,8 @@ void csv_rows(std::ostream& os, const MeasuredBranch& m, const char* branch, boo
   });
 }
 
-void csv_header(std::ostream& os, const std::vector<std::string>& parameters, bool with_label,
-                const MeasuredBranch& m, bool with_max) {
+void csv_header(std::ostream& os, const std::vector<std::string>& parameters, bool with_label, const MeasuredBranch& m,
+                bool with_max) {
   for (std::size_t i = 0; i < parameters.size(); ++i) os << (i ? "," : "") << parameters[i];
   if (with_label) os << ",branch";
   for (const auto& n : m.measure_names)
@@ -146,12 +145,15 @@ std::vector<std::string> table_measures(const MeasuredBranch& m, const TableOpti
   }
   std::vector<std::string> out;
   for (const char* name : {"r", "Psi", "sigma", "Delta_2", "omega", "sigma_bar", "mode", "r_min", "r_max", "kind"})
-    if (std::find(m.measure_names.begin(), m.measure_names.end(), name) != m.measure_names.end()) out.emplace_back(name);
+    if (std::find(m.measure_names.begin(), m.measure_names.end(), name) != m.measure_names.end())
+      out.emplace_back(name);
   return out;
 }
 
 // "stable" for no unstable eigenvalue (multiplier), else "unstable n".
-std::string stability_word(int n_unstable) { return n_unstable == 0 ? "stable" : "unstable " + std::to_string(n_unstable); }
+std::string stability_word(int n_unstable) {
+  return n_unstable == 0 ? "stable" : "unstable " + std::to_string(n_unstable);
+}
 
 // AUTO's b-file table: one row per labelled point of the branches (BR 1, 2, ...), in order along each.
 void b_table(std::ostream& os, const std::vector<const MeasuredBranch*>& branches, const TableOptions& table) {
@@ -175,31 +177,38 @@ void b_table(std::ostream& os, const std::vector<const MeasuredBranch*>& branche
     for (const auto& n : measures) {
       const auto it = std::find(m.measure_names.begin(), m.measure_names.end(), n);
       columns.push_back(it == m.measure_names.end() ? std::string::npos
-                                                     : static_cast<std::size_t>(it - m.measure_names.begin()));
+                                                    : static_cast<std::size_t>(it - m.measure_names.begin()));
     }
     along(m, [&](bool special, std::size_t k) {
       const int label = special ? m.special_label(k) : m.point_label(k);
       if (label <= 0) return;
-      const std::vector<double>& values = special ? m.branch.special_points[k].parameters : m.branch.points[k].parameters;
+      const std::vector<double>& values =
+          special ? m.branch.special_points[k].parameters : m.branch.points[k].parameters;
       const std::vector<MeasureValue>& row = special ? m.special_measures[k] : m.point_measures[k];
       const std::size_t pt = special ? m.branch.special_points[k].after_index : k;
-      os << std::setw(3) << b + 1 << std::setw(7) << (std::to_string(pt) + (special ? "+" : ""))
-         << std::setw(4) << (special ? to_string(m.branch.special_points[k].type) : m.point_type(k)) << std::setw(6) << label;
+      os << std::setw(3) << b + 1 << std::setw(7) << (std::to_string(pt) + (special ? "+" : "")) << std::setw(4)
+         << (special ? to_string(m.branch.special_points[k].type) : m.point_type(k)) << std::setw(6) << label;
       for (std::size_t i = 0; i < parameters.size(); ++i) {
         os << std::setw(w);
-        if (i < values.size()) os << values[i];
-        else os << "";
+        if (i < values.size())
+          os << values[i];
+        else
+          os << "";
       }
       for (std::size_t c : columns) {
         os << std::setw(w);
-        if (c == std::string::npos) os << "";
-        else put_value(os, row[c]);
+        if (c == std::string::npos)
+          os << "";
+        else
+          put_value(os, row[c]);
       }
       if (special) {
         const SpecialPoint& sp = m.branch.special_points[k];
         os << "  ";
-        if (sp.unstable_after == sp.unstable_before) os << stability_word(sp.unstable_before) << '\n';
-        else os << "unstable " << sp.unstable_before << " -> " << sp.unstable_after << '\n';
+        if (sp.unstable_after == sp.unstable_before)
+          os << stability_word(sp.unstable_before) << '\n';
+        else
+          os << "unstable " << sp.unstable_before << " -> " << sp.unstable_after << '\n';
       } else {
         const BranchPoint& q = m.branch.points[k];
         // The certified label: a margin within its error reads "uncertain", whatever the count says.
@@ -278,11 +287,16 @@ nlohmann::json to_json(const MeasuredBranch& m) {
 }
 
 nlohmann::json to_json(const StartPoint& s, bool orbit) {
-  nlohmann::json start{{"method", to_string(s.method)}, {"p", number_or_null(s.p)},
-                       {"newton", s.newton},            {"converged", s.converged},
-                       {"iterations", s.iterations},    {"residual_norm", number_or_null(s.residual_norm)},
-                       {"stable", s.stable},            {"n_unstable", s.n_unstable},
-                       {"refused", s.refused},          {"message", s.message}};
+  nlohmann::json start{{"method", to_string(s.method)},
+                       {"p", number_or_null(s.p)},
+                       {"newton", s.newton},
+                       {"converged", s.converged},
+                       {"iterations", s.iterations},
+                       {"residual_norm", number_or_null(s.residual_norm)},
+                       {"stable", s.stable},
+                       {"n_unstable", s.n_unstable},
+                       {"refused", s.refused},
+                       {"message", s.message}};
   put_stability(start, s);
   if (orbit) {
     start["relaxation_periods"] = s.relaxation_periods;
@@ -290,7 +304,8 @@ nlohmann::json to_json(const StartPoint& s, bool orbit) {
     start["periodicity_tol"] = number_or_null(s.periodicity_tol);
     start["relaxed"] = s.relaxed;
   }
-  explain_nulls(start, s.converged ? "not finite at the start point" : "not computed: the start failed (" + s.message + ")");
+  explain_nulls(start,
+                s.converged ? "not finite at the start point" : "not computed: the start failed (" + s.message + ")");
   return start;
 }
 
@@ -370,8 +385,9 @@ TableOptions TableOptions::from_list(const std::string& comma_separated) {
     const std::size_t comma = comma_separated.find(',', start);
     t.measures.push_back(comma_separated.substr(start, comma == std::string::npos ? std::string::npos : comma - start));
     if (t.measures.back().empty())
-      throw InvalidArgument("measures", "measures = '" + comma_separated + "' has an empty name: give names separated "
-                                        "by single commas, e.g. r,Psi,sigma");
+      throw InvalidArgument("measures", "measures = '" + comma_separated +
+                                            "' has an empty name: give names separated "
+                                            "by single commas, e.g. r,Psi,sigma");
     if (comma == std::string::npos) return t;
     start = comma + 1;
   }
@@ -382,7 +398,8 @@ void TableOptions::validate(const std::vector<std::string>& available) const {
     if (std::find(available.begin(), available.end(), name) == available.end()) {
       std::string list;
       for (const auto& n : available) list += (list.empty() ? "" : ", ") + n;
-      throw InvalidArgument("measures", "measures = '" + name + "' is not a measure of this branch: must be one of " + list);
+      throw InvalidArgument("measures",
+                            "measures = '" + name + "' is not a measure of this branch: must be one of " + list);
     }
 }
 

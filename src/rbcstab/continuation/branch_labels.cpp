@@ -57,7 +57,8 @@ int run_last_label(const SceneBranch& r) {
 }
 
 int run_last_label(const ContinuationRun& run) {
-  if (const SceneCurve* c = std::get_if<SceneCurve>(&run)) return std::max(run_last_label(c->one), c->curve.last_label());
+  if (const SceneCurve* c = std::get_if<SceneCurve>(&run))
+    return std::max(run_last_label(c->one), c->curve.last_label());
   return run_last_label(std::get<SceneBranch>(run));
 }
 
@@ -86,7 +87,8 @@ std::vector<LabelledPoint> labelled_points(const ContinuationRun& run) {
     for (std::size_t k = 0; k < m->branch.points.size(); ++k)
       if (const int l = m->point_label(k)) out.push_back({l, m->point_type(k), b, false, k});
     for (std::size_t k = 0; k < m->branch.special_points.size(); ++k)
-      if (const int l = m->special_label(k)) out.push_back({l, to_string(m->branch.special_points[k].type), b, true, k});
+      if (const int l = m->special_label(k))
+        out.push_back({l, to_string(m->branch.special_points[k].type), b, true, k});
   }
   std::sort(out.begin(), out.end(), [](const LabelledPoint& a, const LabelledPoint& b) { return a.label < b.label; });
   return out;

@@ -18,9 +18,9 @@ using ContinuationRun = std::variant<SceneBranch, SceneCurve>;
 // A labelled point of a run and where it lies.
 struct LabelledPoint {
   int label = 0;
-  std::string type;     // "" or "EP" for a point of a branch, else the special point's type ("BP", "UZ", ...)
-  int branch = 1;       // 1: the primary (a curve run: the one-parameter) branch; 2: the switched branch or the curve
-  bool special = false;   // a special point (index into special_points) or a point (index into points)
+  std::string type;      // "" or "EP" for a point of a branch, else the special point's type ("BP", "UZ", ...)
+  int branch = 1;        // 1: the primary (a curve run: the one-parameter) branch; 2: the switched branch or the curve
+  bool special = false;  // a special point (index into special_points) or a point (index into points)
   std::size_t index = 0;
 };
 

@@ -1,13 +1,13 @@
 #pragma once
 // What one-parameter branch to continue from a scene (BranchSpec), and the bounds of its free parameter:
 // closed domain edges are landed on exactly, a bound beyond one is refused.
-#include "rbcstab/continuation/dense.hpp"
 #include <optional>
 #include <string>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/continuation.hpp"
-#include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/continuation_parameter.hpp"
+#include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/scene_kinds.hpp"
 #include "rbcstab/model/scene.hpp"
 
@@ -25,7 +25,7 @@ struct BranchSpec {
     o.direction = Direction::both;
     return o;
   }();
-  double relax_T = 200;       // relaxation that gives the start state (orbits: rounded up to a multiple of 2 pi)
+  double relax_T = 200;  // relaxation that gives the start state (orbits: rounded up to a multiple of 2 pi)
   // Orbits: after relax_T, whole forcing periods are relaxed in chunks until the periodicity defect
   // |x(2 pi k) - x(2 pi (k - 1))|_2 (a unit-norm state) is below relax_tol or relax_max_periods more
   // have run; Newton then solves the orbit from there. Near an attracting orbit with leading multiplier
@@ -37,7 +37,7 @@ struct BranchSpec {
   // the branch is not continued) unless this is set. An unstable equilibrium start is reported only
   // (the modal and full kinds start on the symmetric branch by design, stable or not).
   bool allow_unstable_start = false;
-  OrbitOptions orbit;         // orbit, modal_orbit: the shooting
+  OrbitOptions orbit;  // orbit, modal_orbit: the shooting
   // Also follow the branch bifurcating at the first BP met from the start in the continuation direction
   // (direction both: the BP nearest the start in arclength, first_bp_met).
   bool switch_at_bp = false;

@@ -12,7 +12,8 @@ namespace rbcstab {
 void BranchSwitchOptions::validate() const {
   require(std::isfinite(amplitude) && amplitude > 0, "amplitude", amplitude, "a finite number > 0");
   require(side == 1 || side == -1, "side", side, "+1 or -1");
-  require(std::isfinite(kernel_ratio) && kernel_ratio > 0 && kernel_ratio < 1, "kernel_ratio", kernel_ratio, "in (0, 1)");
+  require(std::isfinite(kernel_ratio) && kernel_ratio > 0 && kernel_ratio < 1, "kernel_ratio", kernel_ratio,
+          "in (0, 1)");
   require(max_newton >= 1, "max_newton", max_newton, "an integer >= 1");
   continuation.validate();
 }

@@ -10,21 +10,21 @@
 namespace rbcstab {
 
 struct BranchSwitchOptions {
-  double amplitude = 1e-3;  // |h|: predictor step off the BP; small enough for Newton, large enough
-                            // that the corrector does not fall back onto the known branch
-  int side = 1;             // +1 or -1: which of the two halves (+d or -d) of the new branch
-  double kernel_ratio = 1e-4;  // sigma_{n-1}/sigma_max of [J F_p] must exceed this: a 2-D kernel, not 3-D
-  int max_newton = 20;         // corrector iterations for the first point
+  double amplitude = 1e-3;           // |h|: predictor step off the BP; small enough for Newton, large enough
+                                     // that the corrector does not fall back onto the known branch
+  int side = 1;                      // +1 or -1: which of the two halves (+d or -d) of the new branch
+  double kernel_ratio = 1e-4;        // sigma_{n-1}/sigma_max of [J F_p] must exceed this: a 2-D kernel, not 3-D
+  int max_newton = 20;               // corrector iterations for the first point
   ContinuationOptions continuation;  // for the new branch (its direction is chosen away from the BP)
-  void validate() const;  // throws InvalidArgument naming the field
+  void validate() const;             // throws InvalidArgument naming the field
 };
 
 struct BranchSwitchResult {
-  bool switched = false;   // false: message says why (not a simple BP, corrector failed)
+  bool switched = false;  // false: message says why (not a simple BP, corrector failed)
   std::string message;
-  Eigen::VectorXd direction;  // d in (x, p), unit
+  Eigen::VectorXd direction;                // d in (x, p), unit
   std::array<double, 3> singular_values{};  // the three smallest of [J F_p] at the BP, ascending
-  Branch branch;           // the bifurcating branch, starting next to the BP
+  Branch branch;                            // the bifurcating branch, starting next to the BP
 };
 
 // bp must be a special point of type BP of `branch` (continued with `problem`).

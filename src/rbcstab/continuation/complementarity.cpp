@@ -30,7 +30,8 @@ using Ipopt::Number;
 // area [5], Upsilon_l [6 + l - 3]).
 class SurvivingModesNlp final : public Ipopt::TNLP {
  public:
-  SurvivingModesNlp(const ModalCoefficients& c, Eigen::VectorXd start) : c_(c), nl_(c.L - 2), start_(std::move(start)) {}
+  SurvivingModesNlp(const ModalCoefficients& c, Eigen::VectorXd start)
+      : c_(c), nl_(c.L - 2), start_(std::move(start)) {}
 
   Eigen::VectorXd solution;
   Ipopt::SolverReturn solver_status = Ipopt::UNASSIGNED;
@@ -122,8 +123,8 @@ class SurvivingModesNlp final : public Ipopt::TNLP {
       return true;
     }
     Index k = 0;
-    for (int j = 0; j < 5; ++j) val[k++] = lambda[j] * slope(2);  // d2(Upsilon_2 x_j)/dsigma dx_j
-    for (int j = 0; j < 5; ++j) val[k++] = 2 * lambda[5];         // the area's |x_2|^2
+    for (int j = 0; j < 5; ++j) val[k++] = lambda[j] * slope(2);        // d2(Upsilon_2 x_j)/dsigma dx_j
+    for (int j = 0; j < 5; ++j) val[k++] = 2 * lambda[5];               // the area's |x_2|^2
     for (int l = 3; l <= c_.L; ++l) val[k++] = -obj_factor * slope(l);  // d2(-d_l Upsilon_l)/dd_l dsigma
     return true;
   }
@@ -147,13 +148,20 @@ class SurvivingModesNlp final : public Ipopt::TNLP {
 
 std::string status_name(Ipopt::ApplicationReturnStatus s) {
   switch (s) {
-    case Ipopt::Solve_Succeeded: return "Solve_Succeeded";
-    case Ipopt::Solved_To_Acceptable_Level: return "Solved_To_Acceptable_Level";
-    case Ipopt::Infeasible_Problem_Detected: return "Infeasible_Problem_Detected";
-    case Ipopt::Maximum_Iterations_Exceeded: return "Maximum_Iterations_Exceeded";
-    case Ipopt::Restoration_Failed: return "Restoration_Failed";
-    case Ipopt::Error_In_Step_Computation: return "Error_In_Step_Computation";
-    default: return "Ipopt status " + std::to_string(static_cast<int>(s));
+    case Ipopt::Solve_Succeeded:
+      return "Solve_Succeeded";
+    case Ipopt::Solved_To_Acceptable_Level:
+      return "Solved_To_Acceptable_Level";
+    case Ipopt::Infeasible_Problem_Detected:
+      return "Infeasible_Problem_Detected";
+    case Ipopt::Maximum_Iterations_Exceeded:
+      return "Maximum_Iterations_Exceeded";
+    case Ipopt::Restoration_Failed:
+      return "Restoration_Failed";
+    case Ipopt::Error_In_Step_Computation:
+      return "Error_In_Step_Computation";
+    default:
+      return "Ipopt status " + std::to_string(static_cast<int>(s));
   }
 }
 

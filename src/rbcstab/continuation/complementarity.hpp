@@ -21,24 +21,24 @@
 namespace rbcstab {
 
 struct ComplementarityOptions {
-  double tol = 1e-12;              // Ipopt's tol on the scaled KKT error: the state to ~1e-10
-  int max_iterations = 500;        // Ipopt iterations
+  double tol = 1e-12;                 // Ipopt's tol on the scaled KKT error: the state to ~1e-10
+  int max_iterations = 500;           // Ipopt iterations
   double start_area_fraction = 0.05;  // d_l at the start: interior (> 0) and small against Delta_2
   double surviving_threshold = 1e-8;  // d_l above this counts as a surviving mode (Ipopt leaves ~tol)
-  int print_level = 0;             // Ipopt's own output (0: silent; only apps/ print)
-  void validate() const;           // throws InvalidArgument naming the field
+  int print_level = 0;                // Ipopt's own output (0: silent; only apps/ print)
+  void validate() const;              // throws InvalidArgument naming the field
 };
 
 struct ComplementarityResult {
-  bool converged = false;   // Ipopt reported Solve_Succeeded (or Solved_To_Acceptable_Level)
-  std::string status;       // Ipopt's return status
+  bool converged = false;  // Ipopt reported Solve_Succeeded (or Solved_To_Acceptable_Level)
+  std::string status;      // Ipopt's return status
   std::string message;
-  Eigen::VectorXd x;        // the state in ModalEquilibriumProblem coordinates: a_l = +sqrt(d_l) for
-                            // surviving modes, 0 for the others (Delta_l keeps Ipopt's raw d_l ~ tol)
+  Eigen::VectorXd x;  // the state in ModalEquilibriumProblem coordinates: a_l = +sqrt(d_l) for
+                      // surviving modes, 0 for the others (Delta_l keeps Ipopt's raw d_l ~ tol)
   double sigma = 0;
-  std::vector<double> Delta_l;   // l = 2..L (index l - 2)
-  std::vector<int> surviving;    // modes l >= 3 with d_l > surviving_threshold
-  double complementarity = 0;    // sum_l d_l (-Upsilon_l(sigma)) at the solution
+  std::vector<double> Delta_l;          // l = 2..L (index l - 2)
+  std::vector<int> surviving;           // modes l >= 3 with d_l > surviving_threshold
+  double complementarity = 0;           // sum_l d_l (-Upsilon_l(sigma)) at the solution
   double max_constraint_violation = 0;  // of the equalities and Upsilon_l <= 0
   int iterations = 0;
 };

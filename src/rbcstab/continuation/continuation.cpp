@@ -36,7 +36,8 @@ void ContinuationOptions::validate() const {
   require(location_tol > 0, "location_tol", location_tol, "a number > 0");
   require(max_location_iterations >= 1, "max_location_iterations", max_location_iterations, "an integer >= 1");
   require(stability_tol >= 0, "stability_tol", stability_tol, "a number >= 0");
-  require(certificate_refine_margin >= 0, "certificate_refine_margin", certificate_refine_margin, "a number >= 0 (or inf)");
+  require(certificate_refine_margin >= 0, "certificate_refine_margin", certificate_refine_margin,
+          "a number >= 0 (or inf)");
   for (const auto& e : events) {
     if (!e.g) throw InvalidArgument("events", "event '" + e.name + "' has no function");
   }
@@ -238,8 +239,10 @@ Branch Engine::run(const Eigen::VectorXd& x0, double p0, double sign) {
       br.message = "user stop";
       break;
     }
-    if (iters <= o_.easy_iterations) ds = std::min(ds * o_.step_growth, o_.max_step);
-    else if (iters > o_.max_newton / 2) ds = std::max(ds * o_.step_shrink, o_.min_step);
+    if (iters <= o_.easy_iterations)
+      ds = std::min(ds * o_.step_growth, o_.max_step);
+    else if (iters > o_.max_newton / 2)
+      ds = std::max(ds * o_.step_shrink, o_.min_step);
   }
   if (br.points.size() >= o_.max_points && br.message.empty()) br.message = "reached max_points";
   return br;
@@ -338,11 +341,12 @@ Branch continue_branch(const ContinuationProblem& problem, const Eigen::VectorXd
     add_counters(out.counters, e.counters);
     return b;
   };
-  if (options.direction != Direction::both) return [&] {
-    Branch b = run(options.direction == Direction::forward ? 1.0 : -1.0);
-    b.counters = out.counters;
-    return b;
-  }();
+  if (options.direction != Direction::both)
+    return [&] {
+      Branch b = run(options.direction == Direction::forward ? 1.0 : -1.0);
+      b.counters = out.counters;
+      return b;
+    }();
   Branch back = run(-1.0);
   Branch fwd = run(1.0);
   // Backward part reversed (without its start point), then the forward part.

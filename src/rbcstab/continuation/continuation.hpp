@@ -3,13 +3,13 @@
 // bordered system [F; t.(X - X0) - ds], adaptive step, both directions, parameter bounds, stop
 // conditions, bifurcation test functions and user events located by a safeguarded secant
 // (Illinois) on the arclength. Results are plain data (docs/continuation.md).
-#include "rbcstab/continuation/dense.hpp"
 #include <complex>
 #include <cstddef>
 #include <functional>
 #include <limits>
 #include <string>
 #include <vector>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/problem.hpp"
 #include "rbcstab/core/enum_table.hpp"
@@ -22,30 +22,31 @@ namespace rbcstab {
 enum class SpecialPointType { LP, BP, HB, LPC, PD, NS, UZ, EP };
 template <>
 struct EnumTable<SpecialPointType> {
-  static constexpr EnumName<SpecialPointType> entries[] = {
-      {SpecialPointType::LP, "LP"}, {SpecialPointType::BP, "BP"}, {SpecialPointType::HB, "HB"},
-      {SpecialPointType::LPC, "LPC"}, {SpecialPointType::PD, "PD"}, {SpecialPointType::NS, "NS"},
-      {SpecialPointType::UZ, "UZ"}, {SpecialPointType::EP, "EP"}};
+  static constexpr EnumName<SpecialPointType> entries[] = {{SpecialPointType::LP, "LP"}, {SpecialPointType::BP, "BP"},
+                                                           {SpecialPointType::HB, "HB"}, {SpecialPointType::LPC, "LPC"},
+                                                           {SpecialPointType::PD, "PD"}, {SpecialPointType::NS, "NS"},
+                                                           {SpecialPointType::UZ, "UZ"}, {SpecialPointType::EP, "EP"}};
 };
 
 enum class LocationStatus { located, guess };  // guess: bracketed but the secant did not converge
 template <>
 struct EnumTable<LocationStatus> {
-  static constexpr EnumName<LocationStatus> entries[] = {
-      {LocationStatus::located, "located"}, {LocationStatus::guess, "guess"}};
+  static constexpr EnumName<LocationStatus> entries[] = {{LocationStatus::located, "located"},
+                                                         {LocationStatus::guess, "guess"}};
 };
 
 enum class ContinuationStatus {
-  completed,        // a stop condition was met (bound, max points, user stop)
-  step_too_small,   // the corrector failed down to min_step
-  outside_domain,   // the problem rejected a parameter value (message says which)
-  start_failed      // Newton did not converge at the starting point
+  completed,       // a stop condition was met (bound, max points, user stop)
+  step_too_small,  // the corrector failed down to min_step
+  outside_domain,  // the problem rejected a parameter value (message says which)
+  start_failed     // Newton did not converge at the starting point
 };
 template <>
 struct EnumTable<ContinuationStatus> {
-  static constexpr EnumName<ContinuationStatus> entries[] = {
-      {ContinuationStatus::completed, "completed"}, {ContinuationStatus::step_too_small, "step_too_small"},
-      {ContinuationStatus::outside_domain, "outside_domain"}, {ContinuationStatus::start_failed, "start_failed"}};
+  static constexpr EnumName<ContinuationStatus> entries[] = {{ContinuationStatus::completed, "completed"},
+                                                             {ContinuationStatus::step_too_small, "step_too_small"},
+                                                             {ContinuationStatus::outside_domain, "outside_domain"},
+                                                             {ContinuationStatus::start_failed, "start_failed"}};
 };
 
 enum class Direction { forward, backward, both };  // forward: p increasing at the start
@@ -90,29 +91,29 @@ struct UserEvent {
 };
 
 struct ContinuationOptions {
-  double initial_step = 1e-2;   // first arclength step |ds|: small enough for Newton from the tangent
-  double min_step = 1e-10;      // give up below this: the branch is lost (or the problem ends here)
-  double max_step = 0.5;        // caps the step so test functions are sampled densely enough
-  double step_growth = 1.5;     // after an easy corrector (<= easy_iterations), grow ds by this
-  double step_shrink = 0.5;     // after a failed or hard corrector, shrink ds by this
-  int easy_iterations = 3;      // Newton iterations counted as easy
-  int max_newton = 12;          // Newton iterations per corrector before declaring failure
-  double newton_tol = 1e-12;    // on max|dX| and max|F| (absolute; states here are O(1))
+  double initial_step = 1e-2;  // first arclength step |ds|: small enough for Newton from the tangent
+  double min_step = 1e-10;     // give up below this: the branch is lost (or the problem ends here)
+  double max_step = 0.5;       // caps the step so test functions are sampled densely enough
+  double step_growth = 1.5;    // after an easy corrector (<= easy_iterations), grow ds by this
+  double step_shrink = 0.5;    // after a failed or hard corrector, shrink ds by this
+  int easy_iterations = 3;     // Newton iterations counted as easy
+  int max_newton = 12;         // Newton iterations per corrector before declaring failure
+  double newton_tol = 1e-12;   // on max|dX| and max|F| (absolute; states here are O(1))
   double p_min = -std::numeric_limits<double>::infinity();  // stop at this parameter bound, exactly
   double p_max = std::numeric_limits<double>::infinity();
   std::size_t max_points = 1000;  // per direction, start point included
   Direction direction = Direction::forward;
-  bool detect_bifurcations = true;  // evaluate LP/BP/HB (LPC/PD/NS) test functions
-  bool compute_stability = true;    // spectrum at every point (needed for detection)
-  double location_tol = 1e-11;      // stop locating when the bracket spans < this in (x, p) (max norm)
+  bool detect_bifurcations = true;   // evaluate LP/BP/HB (LPC/PD/NS) test functions
+  bool compute_stability = true;     // spectrum at every point (needed for detection)
+  double location_tol = 1e-11;       // stop locating when the bracket spans < this in (x, p) (max norm)
   int max_location_iterations = 60;  // secant/bisection steps per special point
-  double stability_tol = 1e-9;      // Re(lambda) or |mu| - 1 below this counts as neutral
+  double stability_tol = 1e-9;       // Re(lambda) or |mu| - 1 below this counts as neutral
   // Stability certificates: a point whose cheap certificate has |margin| below this also gets the
   // problem's refinement check (orbits: ~2.4 shootings) and the state-error term (the margin at the
   // state moved by its error: one more corrector step, at least newton_tol; one more spectrum); special
   // points always do. 0: never (special points still do); inf: every point.
   double certificate_refine_margin = 1e-6;
-  std::vector<UserEvent> events;    // user zero crossings -> UZ
+  std::vector<UserEvent> events;  // user zero crossings -> UZ
   // Optional user stop: return true to end the branch after this point.
   std::function<bool(const Eigen::VectorXd& x, double p)> stop;
   ProgressCallback on_progress;  // points of this direction so far, of max_points
@@ -126,27 +127,27 @@ struct BranchPoint {
   std::vector<double> parameters;  // problem.parameter_values(x, p)
   Eigen::VectorXcd spectrum;       // eigenvalues or Floquet multipliers
   int n_unstable = 0;
-  bool stable = true;              // n_unstable == 0 (values within stability_tol of the boundary count as stable)
+  bool stable = true;  // n_unstable == 0 (values within stability_tol of the boundary count as stable)
   Stability stability = Stability::uncertain;  // the certified label (certify); margin and its error:
   double margin = std::numeric_limits<double>::quiet_NaN();
   double margin_error = std::numeric_limits<double>::quiet_NaN();
-  double arclength = 0;            // signed arclength from the start point
+  double arclength = 0;  // signed arclength from the start point
   int newton_iterations = 0;
 };
 
 struct SpecialPoint {
   SpecialPointType type = SpecialPointType::UZ;
-  std::string name;                // the event name for UZ; the label otherwise
+  std::string name;  // the event name for UZ; the label otherwise
   Eigen::VectorXd x;
   double p = 0;
   std::vector<double> parameters;
-  double p_lo = 0, p_hi = 0;       // parameter bracket at the end of location
-  double precision = 0;            // max-norm distance in (x, p) of the final bracket
+  double p_lo = 0, p_hi = 0;  // parameter bracket at the end of location
+  double precision = 0;       // max-norm distance in (x, p) of the final bracket
   LocationStatus status = LocationStatus::guess;
   int unstable_before = 0, unstable_after = 0;  // change in the unstable count across the point
-  double test_value = 0;           // the test function at the reported point
-  std::size_t after_index = 0;     // lies between branch points after_index and after_index + 1
-  std::complex<double> eigenvalue; // HB: the crossing pair (+ i omega); NS/PD: the critical multiplier
+  double test_value = 0;                        // the test function at the reported point
+  std::size_t after_index = 0;                  // lies between branch points after_index and after_index + 1
+  std::complex<double> eigenvalue;              // HB: the crossing pair (+ i omega); NS/PD: the critical multiplier
   // The point's certified stability; margin_error also covers the margin's change across the final
   // bracket (the point is located only to within it).
   Stability stability = Stability::uncertain;
@@ -155,13 +156,13 @@ struct SpecialPoint {
 };
 
 struct ContinuationCounters {
-  std::size_t steps = 0, rejected_steps = 0, newton_iterations = 0, residual_evaluations = 0,
-              jacobian_evaluations = 0, spectra = 0, location_iterations = 0;
+  std::size_t steps = 0, rejected_steps = 0, newton_iterations = 0, residual_evaluations = 0, jacobian_evaluations = 0,
+              spectra = 0, location_iterations = 0;
 };
 
 struct Branch {
   std::vector<std::string> parameter_names;
-  std::vector<BranchPoint> points;       // ordered along the branch (backward part reversed first)
+  std::vector<BranchPoint> points;  // ordered along the branch (backward part reversed first)
   std::vector<SpecialPoint> special_points;
   ContinuationStatus status = ContinuationStatus::completed;
   std::string message;

@@ -19,8 +19,9 @@ namespace {
 // Throws unless q is a function of the material Parameters alone (beta lives in the Scene).
 void require_material(ContinuationParameter q) {
   if (!is_material(q))
-    throw InvalidArgument("parameter", "parameter = " + to_string(q) +
-                                           " is a scene parameter, not a material one (internal: use the Scene overload)");
+    throw InvalidArgument(
+        "parameter",
+        "parameter = " + to_string(q) + " is a scene parameter, not a material one (internal: use the Scene overload)");
 }
 
 Scene scene_of(const Parameters& p) {

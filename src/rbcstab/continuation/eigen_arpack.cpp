@@ -41,11 +41,21 @@ void start_vector(std::vector<double>& resid) {
 std::string arpack_error(const char* routine, int info) {
   std::string what;
   switch (info) {
-    case -8: what = "error in the LAPACK Schur form (dlahqr)"; break;
-    case -9: what = "starting vector is zero"; break;
-    case -9999: what = "could not build an Arnoldi factorization (the operator may be rank deficient)"; break;
-    case -14: what = "no Ritz value converged"; break;
-    default: what = "error code"; break;
+    case -8:
+      what = "error in the LAPACK Schur form (dlahqr)";
+      break;
+    case -9:
+      what = "starting vector is zero";
+      break;
+    case -9999:
+      what = "could not build an Arnoldi factorization (the operator may be rank deficient)";
+      break;
+    case -14:
+      what = "no Ritz value converged";
+      break;
+    default:
+      what = "error code";
+      break;
   }
   return std::string(routine) + " info = " + std::to_string(info) + ": " + what;
 }
@@ -73,7 +83,8 @@ ArpackResult arpack_eigenvalues(std::size_t n_size, const LinearOperator& apply,
   static std::mutex arpack_mutex;
   const std::lock_guard<std::mutex> lock(arpack_mutex);
   ArpackResult out;
-  std::vector<double> resid(n_size), v(n_size * static_cast<std::size_t>(ncv)), workd(3 * n_size), workl(static_cast<std::size_t>(lworkl));
+  std::vector<double> resid(n_size), v(n_size * static_cast<std::size_t>(ncv)), workd(3 * n_size),
+      workl(static_cast<std::size_t>(lworkl));
   start_vector(resid);
   int iparam[11] = {}, ipntr[14] = {};
   iparam[0] = 1;  // exact shifts
@@ -120,14 +131,15 @@ ArpackResult arpack_eigenvalues(std::size_t n_size, const LinearOperator& apply,
   const int rvec = options.eigenvectors ? 1 : 0;
   const char howmny = 'A';
   std::vector<int> select(static_cast<std::size_t>(ncv), 0);
-  std::vector<double> dr(static_cast<std::size_t>(nev) + 1), di(static_cast<std::size_t>(nev) + 1), workev(3 * static_cast<std::size_t>(ncv));
+  std::vector<double> dr(static_cast<std::size_t>(nev) + 1), di(static_cast<std::size_t>(nev) + 1),
+      workev(3 * static_cast<std::size_t>(ncv));
   std::vector<double> z(rvec ? n_size * (static_cast<std::size_t>(nev) + 1) : 1);
   const int ldz = rvec ? n : 1;
   const double sigmar = options.shift, sigmai = 0;  // real shift: dneupd returns A's eigenvalues (type SHIFTI)
   int info2 = 0;
   dneupd_(&rvec, &howmny, select.data(), dr.data(), di.data(), z.data(), &ldz, &sigmar, &sigmai, workev.data(), &bmat,
-          &n, which, &nev, &tol, resid.data(), &ncv, v.data(), &ldv, iparam, ipntr, workd.data(), workl.data(),
-          &lworkl, &info2, 1, 1, 2);
+          &n, which, &nev, &tol, resid.data(), &ncv, v.data(), &ldv, iparam, ipntr, workd.data(), workl.data(), &lworkl,
+          &info2, 1, 1, 2);
   if (info2 != 0) {
     out.status = ArpackStatus::failed;
     out.message = arpack_error("dneupd", info2);
@@ -145,9 +157,9 @@ ArpackResult arpack_eigenvalues(std::size_t n_size, const LinearOperator& apply,
     const auto uj = static_cast<std::size_t>(j);
     values[uj] = {dr[uj], di[uj]};
     const bool complex_value = di[uj] != 0;
-    if (complex_value && pair_start < 0) pair_start = j;                     // first column of a pair
+    if (complex_value && pair_start < 0) pair_start = j;  // first column of a pair
     const int p = complex_value ? pair_start : j;
-    if (complex_value && j == pair_start + 1) pair_start = -1;               // pair complete
+    if (complex_value && j == pair_start + 1) pair_start = -1;  // pair complete
     if (!rvec) continue;
     if (complex_value && p + 1 > nev) continue;  // its partner column was not returned
     Eigen::VectorXcd vec(n);
@@ -168,9 +180,12 @@ ArpackResult arpack_eigenvalues(std::size_t n_size, const LinearOperator& apply,
   auto key = [&](std::size_t i) {
     const std::complex<double> l = values[i];
     switch (options.which) {
-      case ArpackWhich::largest_real: return -l.real();
-      case ArpackWhich::largest_magnitude: return -std::abs(l);
-      case ArpackWhich::nearest_shift: return std::abs(l - options.shift);
+      case ArpackWhich::largest_real:
+        return -l.real();
+      case ArpackWhich::largest_magnitude:
+        return -std::abs(l);
+      case ArpackWhich::nearest_shift:
+        return std::abs(l - options.shift);
     }
     return 0.0;
   };
@@ -201,7 +216,8 @@ ArpackResult arpack_eigenvalues(std::size_t n_size, const LinearOperator& apply,
       apply(xi, yi);
       double s = 0;
       const std::complex<double> l = out.eigenvalues[static_cast<Eigen::Index>(i)];
-      for (std::size_t r = 0; r < n_size; ++r) s += std::norm(std::complex<double>(yr[r], yi[r]) - l * vec[static_cast<Eigen::Index>(r)]);
+      for (std::size_t r = 0; r < n_size; ++r)
+        s += std::norm(std::complex<double>(yr[r], yi[r]) - l * vec[static_cast<Eigen::Index>(r)]);
       out.residuals[static_cast<Eigen::Index>(i)] = std::sqrt(s);
     }
   }

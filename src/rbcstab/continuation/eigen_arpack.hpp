@@ -8,12 +8,12 @@
 // semisimple multiple eigenvalue (the full model's (l, m) and (l, -m) modes give equal pairs);
 // rounding usually reveals the second copy (it did in every test here), but do not rely on counts.
 // ARPACK is not reentrant (Fortran SAVE state): calls from several threads are serialised inside.
-#include "rbcstab/continuation/dense.hpp"
 #include <complex>
 #include <cstddef>
 #include <functional>
 #include <span>
 #include <string>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/model/structured_jacobian.hpp"
@@ -32,18 +32,18 @@ enum class ArpackWhich {
 };
 template <>
 struct EnumTable<ArpackWhich> {
-  static constexpr EnumName<ArpackWhich> entries[] = {
-      {ArpackWhich::largest_real, "largest_real"}, {ArpackWhich::largest_magnitude, "largest_magnitude"},
-      {ArpackWhich::nearest_shift, "nearest_shift"}};
+  static constexpr EnumName<ArpackWhich> entries[] = {{ArpackWhich::largest_real, "largest_real"},
+                                                      {ArpackWhich::largest_magnitude, "largest_magnitude"},
+                                                      {ArpackWhich::nearest_shift, "nearest_shift"}};
 };
 
 struct ArpackOptions {
-  int k = 6;               // eigenvalues wanted
-  int ncv = 0;             // Krylov basis size; 0 = min(n, max(2k + 1, k + 20)): ARPACK needs k + 2 <= ncv <= n
-  double tol = 1e-12;      // ARPACK's relative Ritz accuracy |r| <= tol |theta| (0: machine precision)
+  int k = 6;                  // eigenvalues wanted
+  int ncv = 0;                // Krylov basis size; 0 = min(n, max(2k + 1, k + 20)): ARPACK needs k + 2 <= ncv <= n
+  double tol = 1e-12;         // ARPACK's relative Ritz accuracy |r| <= tol |theta| (0: machine precision)
   int max_iterations = 3000;  // Arnoldi restarts before giving up (status max_iterations)
   ArpackWhich which = ArpackWhich::largest_real;
-  double shift = 0;        // real shift s for nearest_shift (ARPACK returns A's eigenvalues for a real shift)
+  double shift = 0;           // real shift s for nearest_shift (ARPACK returns A's eigenvalues for a real shift)
   bool eigenvectors = false;  // also return Ritz vectors (and residuals |A v - lambda v| / |v|)
   void validate(std::size_t n) const;  // throws InvalidArgument naming the field
 };
@@ -56,9 +56,10 @@ enum class ArpackStatus {
 };
 template <>
 struct EnumTable<ArpackStatus> {
-  static constexpr EnumName<ArpackStatus> entries[] = {
-      {ArpackStatus::converged, "converged"}, {ArpackStatus::max_iterations, "max_iterations"},
-      {ArpackStatus::solve_failed, "solve_failed"}, {ArpackStatus::failed, "failed"}};
+  static constexpr EnumName<ArpackStatus> entries[] = {{ArpackStatus::converged, "converged"},
+                                                       {ArpackStatus::max_iterations, "max_iterations"},
+                                                       {ArpackStatus::solve_failed, "solve_failed"},
+                                                       {ArpackStatus::failed, "failed"}};
 };
 
 struct ArpackResult {

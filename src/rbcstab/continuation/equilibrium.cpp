@@ -30,9 +30,11 @@ const ReducedModel& ReducedEquilibriumProblem::model(double p) const {
     // beta from 0 would otherwise walk into a forced system read at t = 0).
     if (at.parameters.inv_Lambda_S() > 0 && std::abs(cache_->z0(0)) > 0) {
       cache_.reset();
-      const std::string where = free_ == ContinuationParameter::beta ? "" : " at " + to_string(free_) + " = " + format_value(p);
-      throw InvalidArgument("beta", "beta = " + format_value(at.beta) + " gives an in-plane rest-shape component (r0 > 0)" +
-                                        where + ": the reduced system is forced with period 2 pi and has no equilibria; use "
+      const std::string where =
+          free_ == ContinuationParameter::beta ? "" : " at " + to_string(free_) + " = " + format_value(p);
+      throw InvalidArgument("beta", "beta = " + format_value(at.beta) +
+                                        " gives an in-plane rest-shape component (r0 > 0)" + where +
+                                        ": the reduced system is forced with period 2 pi and has no equilibria; use "
                                         "beta = 0, Delta0 = 0, or continue periodic orbits");
     }
   }

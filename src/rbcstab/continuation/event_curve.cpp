@@ -46,8 +46,10 @@ void OrbitPassageEvent::residual(const Eigen::VectorXd& X, double p1, const Eige
   const OrbitPoint pt = base_.point_at(X, p1, p2, a[0]);
   G.resize(2);
   // A failed integration: NaN makes the corrector fail and shrink the step (as the shooting residual).
-  if (!pt.ok) G.setConstant(std::numeric_limits<double>::quiet_NaN());
-  else G = pt.x.head(2);
+  if (!pt.ok)
+    G.setConstant(std::numeric_limits<double>::quiet_NaN());
+  else
+    G = pt.x.head(2);
 }
 
 void OrbitPassageEvent::jacobian(const Eigen::VectorXd& X, double p1, const Eigen::VectorXd& a, double p2,

@@ -77,8 +77,8 @@ class ScalarCurveEvent final : public CurveEvent {
 // fails, the angle is read from samples, whose chords misread passages within ~1e-5 of z = 0). Near the
 // transition it is nevertheless smooth to ~1e-12 (measured; as a ScalarCurveEvent it gives the same curve,
 // tests/continuation/event_curve_test.cpp), but each evaluation is a dense pass over the period and its
-// Jacobian row 2 (n N + 1) of them (measured: 25x the CPU time of this event on a 28-point curve). With the passage time t* as an
-// unknown the event is a plain smooth function of the unknowns with an exact derivative, needs no winding
+// Jacobian row 2 (n N + 1) of them (measured: 25x the CPU time of this event on a 28-point curve). With the passage
+// time t* as an unknown the event is a plain smooth function of the unknowns with an exact derivative, needs no winding
 // number (at a zero both components vanish) and costs one integration over part of a segment.
 class OrbitPassageEvent final : public CurveEvent {
  public:

@@ -2,11 +2,11 @@
 // Periodically forced ODEs x' = f(t, x, p) (period 2 pi in t, fixed), whose periodic orbits orbit.hpp
 // continues: the small ForcedSystem interface, which the in-plane reduced system (ReducedForcedSystem) and
 // the textbook normal forms of the tests implement.
-#include "rbcstab/continuation/dense.hpp"
 #include <functional>
 #include <map>
 #include <span>
 #include <string>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/model/reduced_model.hpp"

@@ -197,7 +197,8 @@ CertifiedSpectrum FullEquilibriumProblem::certified_spectrum(const Eigen::Vector
   }
   append(detail::certified_tangent_spectrum(DFa, xa, eta));
   const auto size = static_cast<Eigen::Index>(values.size());
-  return {Eigen::Map<const Eigen::VectorXcd>(values.data(), size), Eigen::Map<const Eigen::VectorXd>(errors.data(), size)};
+  return {Eigen::Map<const Eigen::VectorXcd>(values.data(), size),
+          Eigen::Map<const Eigen::VectorXd>(errors.data(), size)};
 }
 
 void FullEquilibriumProblem::parameter_derivative(const Eigen::VectorXd& x, double p, Eigen::VectorXd& Fp) const {

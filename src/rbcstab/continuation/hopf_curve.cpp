@@ -32,8 +32,9 @@ HopfCurveProblem::HopfCurveProblem(const TwoParameterProblem& base, const Specia
   base.parameter_derivative(hb.x, hb.p, p2, Fp);
   Jx.topLeftCorner(n, n) = J;
   Jx.col(n).head(n) = Fp;
-  entries_ = detail::best_conditioned_entries(
-      Jx, detail::g_entry_derivatives(start_, [&](const Eigen::VectorXd& Z) { return G(Z.head(n), Z[n], Z[n + 1], p2); }));
+  entries_ = detail::best_conditioned_entries(Jx, detail::g_entry_derivatives(start_, [&](const Eigen::VectorXd& Z) {
+                                                return G(Z.head(n), Z[n], Z[n + 1], p2);
+                                              }));
 }
 
 Eigen::Matrix2d HopfCurveProblem::G(const Eigen::VectorXd& x, double p1, double kappa, double p2) const {

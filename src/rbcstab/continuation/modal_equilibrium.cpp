@@ -202,7 +202,8 @@ CertifiedSpectrum ModalEquilibriumProblem::certified_spectrum(const Eigen::Vecto
 Eigen::VectorXd ModalEquilibriumProblem::ellipsoidal_state(double p) const {
   const OutOfPlaneEquilibrium e = out_of_plane_equilibrium(with_parameter(scene_, free_, p).parameters);
   // The closed form is written for w0 = +1; the system is odd in (w, w0). (Built through a
-  // std::vector with the values first: GCC 12 flags element writes into a fresh dynamic Eigen vector as null dereferences.)
+  // std::vector with the values first: GCC 12 flags element writes into a fresh dynamic Eigen vector as null
+  // dereferences.)
   std::vector<double> x = {e.r * std::cos(e.Psi), -e.r * std::sin(e.Psi), w0_ * e.w};
   x.resize(static_cast<std::size_t>(dimension()), 0.0);
   return Eigen::Map<const Eigen::VectorXd>(x.data(), dimension());
@@ -219,7 +220,8 @@ ModalState ModalEquilibriumProblem::observe(const Eigen::VectorXd& x, double p) 
   if (s.Psi <= -kPi) s.Psi += 2 * kPi;
   s.Delta_l.assign(static_cast<std::size_t>(L_ - 1), 0.0);
   s.Delta_l[0] = Delta * x.head(5).squaredNorm();
-  for (int l = 3; l <= L_; ++l) s.Delta_l[static_cast<std::size_t>(l - 2)] = Delta * x[index_of_mode(l)] * x[index_of_mode(l)];
+  for (int l = 3; l <= L_; ++l)
+    s.Delta_l[static_cast<std::size_t>(l - 2)] = Delta * x[index_of_mode(l)] * x[index_of_mode(l)];
   return s;
 }
 

@@ -42,8 +42,8 @@ namespace rbcstab {
 struct ModalCoefficients {
   Parameters parameters;
   int L = 2;
-  double inv_Lambda = 0;     // 1/Lambda: the shear drive of z
-  double kappa_w0 = 0;       // kappa w0: the rest shape's pull on w
+  double inv_Lambda = 0;            // 1/Lambda: the shear drive of z
+  double kappa_w0 = 0;              // kappa w0: the rest shape's pull on w
   std::vector<GrowthRate> Upsilon;  // Upsilon_l, index l - 2
   const GrowthRate& rate(int l) const { return Upsilon[static_cast<std::size_t>(l - 2)]; }
   double upsilon(int l, double sigma) const { return rate(l)(sigma); }
@@ -73,8 +73,8 @@ void modal_dynamics_jacobian(const ModalCoefficients& c, const Eigen::Ref<const 
 // Observables of a modal equilibrium state.
 struct ModalState {
   double sigma = 0;
-  double r = 0, Psi = 0;           // of the l = 2 block's (z, w): r = |z| / sqrt(|z|^2 + w^2)
-  std::vector<double> Delta_l;     // Delta_l for l = 2..L (index l - 2); Delta_2 includes |v|^2
+  double r = 0, Psi = 0;        // of the l = 2 block's (z, w): r = |z| / sqrt(|z|^2 + w^2)
+  std::vector<double> Delta_l;  // Delta_l for l = 2..L (index l - 2); Delta_2 includes |v|^2
 };
 
 class ModalEquilibriumProblem final : public ContinuationProblem {

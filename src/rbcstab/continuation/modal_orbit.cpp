@@ -18,7 +18,6 @@ namespace rbcstab {
 
 namespace {
 
-
 using detail::fd_step;
 
 // Mode l of entry i of x (2 for the l = 2 block).
@@ -213,7 +212,8 @@ Eigen::VectorXd ModalForcedSystem::from_modal_model_state(const ModalModel& m, d
   const std::vector<int>& active = m.active_modes();
   for (std::size_t j = 0; j < active.size(); ++j)
     if (active[j] <= L_)
-      x[static_cast<std::size_t>(ModalEquilibriumProblem::index_of_mode(active[j]))] = std::sqrt(std::exp(y[5 + j]) / Delta);
+      x[static_cast<std::size_t>(ModalEquilibriumProblem::index_of_mode(active[j]))] =
+          std::sqrt(std::exp(y[5 + j]) / Delta);
   return Eigen::Map<const Eigen::VectorXd>(x.data(), dimension());
 }
 

@@ -17,16 +17,16 @@
 //
 // Floquet multipliers: on an orbit with a_l = 0 the a_l direction decouples, da_l' = Y_l da_l, with
 // multiplier exp(int_0^{2 pi} Upsilon_l(sigma(t)) dt) (tested against the reduced orbit's sigma(t)).
-#include "rbcstab/continuation/dense.hpp"
 #include <functional>
 #include <map>
 #include <span>
 #include <string>
 #include <vector>
+#include "rbcstab/continuation/dense.hpp"
 
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/continuation/orbit.hpp"
-#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/model/modal_model.hpp"
 #include "rbcstab/model/scene.hpp"
 

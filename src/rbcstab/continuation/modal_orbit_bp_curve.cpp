@@ -14,7 +14,6 @@
 namespace rbcstab {
 namespace {
 
-
 using detail::fd_step;
 
 }  // namespace
@@ -31,8 +30,9 @@ ModalOrbitBranchPointCurve::ModalOrbitBranchPointCurve(const Scene& scene, Conti
       n_(base_.dimension()) {
   require(l >= 3 && l <= scene.L, "l", l, "in [3, L = " + std::to_string(scene.L) + "]");
   if (p1 == ContinuationParameter::beta || p2 == ContinuationParameter::beta)
-    throw InvalidArgument("beta", "the ellipsoidal-orbit BP curve needs a fixed in-plane rest shape: beta cannot be "
-                                  "a free parameter (a tilted rest shape forces v~ away from 0)");
+    throw InvalidArgument("beta",
+                          "the ellipsoidal-orbit BP curve needs a fixed in-plane rest shape: beta cannot be "
+                          "a free parameter (a tilted rest shape forces v~ away from 0)");
   if (!has_untilted_rest_shape(scene))
     throw InvalidArgument("beta", "beta = " + std::to_string(scene.beta) +
                                       ": the rest shape's m = 1 content forces v~ (no ellipsoidal orbit with v~ = 0); "
@@ -126,7 +126,8 @@ Eigen::VectorXcd ModalOrbitBranchPointCurve::spectrum(const Eigen::VectorXd& X, 
   return out;
 }
 
-CertifiedSpectrum ModalOrbitBranchPointCurve::certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const {
+CertifiedSpectrum ModalOrbitBranchPointCurve::certified_spectrum(const Eigen::VectorXd& X, double p2,
+                                                                 bool refine) const {
   const double p1 = X[n_];
   const CertifiedSpectrum red = base_.certified_spectrum(X.head(n_), p1, p2, refine);
   CertifiedSpectrum c;
@@ -138,8 +139,9 @@ CertifiedSpectrum ModalOrbitBranchPointCurve::certified_spectrum(const Eigen::Ve
   const double d_sigma = options_.rtol * (1 + std::abs(sb));
   for (Eigen::Index k = red.errors.size(); k < c.values.size(); ++k) {
     const int l = k < red.errors.size() + 2 ? 2 : static_cast<int>(k - red.errors.size()) + 1;  // v~ plane: l = 2
-    const double slope = Upsilon_l(q, l).slope;  // dUpsilon_l/dsigma
-    c.errors[k] = kTwoPi * std::abs(c.values[k]) * (std::abs(slope) * d_sigma + 4 * std::numeric_limits<double>::epsilon());
+    const double slope = Upsilon_l(q, l).slope;                                                 // dUpsilon_l/dsigma
+    c.errors[k] =
+        kTwoPi * std::abs(c.values[k]) * (std::abs(slope) * d_sigma + 4 * std::numeric_limits<double>::epsilon());
   }
   return c;
 }
@@ -148,8 +150,8 @@ Eigen::VectorXd ModalOrbitBranchPointCurve::start_from_modal(const Eigen::Vector
   const Eigen::Index nm = 5 + (scene_.L - 2);
   const int N = options_.segments;
   if (X_modal.size() != nm * N)
-    throw InvalidArgument("X_modal", "size " + std::to_string(X_modal.size()) + " must be (5 + L - 2) x segments = " +
-                                         std::to_string(nm * N));
+    throw InvalidArgument("X_modal", "size " + std::to_string(X_modal.size()) +
+                                         " must be (5 + L - 2) x segments = " + std::to_string(nm * N));
   Eigen::VectorXd X(n_ + 1);
   for (int j = 0; j < N; ++j) X.segment<3>(3 * j) = X_modal.segment<3>(nm * j);
   X[n_] = p1_bp;

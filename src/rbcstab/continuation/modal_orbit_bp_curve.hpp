@@ -16,13 +16,13 @@
 // for Newton, whose converged point depends only on the residual); each x_j only moves segment j's
 // integral, so the row costs 2 segment integrations per column. Cost is independent of L (L enters only
 // through the admissible l <= L and the reported multipliers).
-#include "rbcstab/continuation/dense.hpp"
 #include <string>
 #include <vector>
+#include "rbcstab/continuation/dense.hpp"
 
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/orbit_two_parameter.hpp"
-#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/continuation/problem.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/model/scene.hpp"

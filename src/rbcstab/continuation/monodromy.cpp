@@ -219,7 +219,7 @@ void SceneFloquetOptions::validate(int L) const {
 
 SceneFloquetResult scene_floquet_multipliers(const Scene& scene, const SceneFloquetOptions& options) {
   const InitialState init = initial_state(scene);  // validates the scene
-  options.validate(scene.L);  // before any work: bad input computes nothing
+  options.validate(scene.L);                       // before any work: bad input computes nothing
   SceneFloquetResult out;
   // Odd-m rest-shape content below 1e-12 of the largest is rounding (the Wigner d^l_{m,0}(pi/2) of odd
   // m are ~1e-16, not 0): its 4 pi forcing is far below the integration accuracy.
@@ -240,8 +240,9 @@ SceneFloquetResult scene_floquet_multipliers(const Scene& scene, const SceneFloq
     const IntegrationResult r = integrate(*relaxing, relaxing->initial_state(), 0.0, grid, options.relax, {});
     if (r.status != IntegrationStatus::success) {
       out.status = SceneFloquetStatus::relaxation_failed;
-      out.message = "relaxation at the " + to_string(out.relax_level) + " level failed at t = " +
-                    std::to_string(r.t_reached) + ": " + run_reason(r.status, r.reason, scene.parameters);
+      out.message = "relaxation at the " + to_string(out.relax_level) +
+                    " level failed at t = " + std::to_string(r.t_reached) + ": " +
+                    run_reason(r.status, r.reason, scene.parameters);
       return out;
     }
     relaxed.f = relaxing->amplitudes(out.t0, r.y);

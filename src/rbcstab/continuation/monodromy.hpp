@@ -4,12 +4,12 @@
 // structured Jacobian, applied in O(n)) together with y' = F(t, y) from the given orbit state, so no
 // n x n matrix is ever formed; ARPACK then finds the leading multipliers from a few dozen actions.
 // The orbit itself is an input (the periodic-orbit solver or a long simulation sampled at t0 + kT).
-#include "rbcstab/continuation/dense.hpp"
 #include <cstddef>
 #include <memory>
 #include <span>
 #include <string>
 #include <vector>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/eigen_arpack.hpp"
 #include "rbcstab/core/enum_table.hpp"
@@ -110,19 +110,21 @@ enum class SceneFloquetStatus { converged, relaxation_failed, not_periodic, arpa
 template <>
 struct EnumTable<SceneFloquetStatus> {
   static constexpr EnumName<SceneFloquetStatus> entries[] = {
-      {SceneFloquetStatus::converged, "converged"}, {SceneFloquetStatus::relaxation_failed, "relaxation_failed"},
-      {SceneFloquetStatus::not_periodic, "not_periodic"}, {SceneFloquetStatus::arpack_failed, "arpack_failed"}};
+      {SceneFloquetStatus::converged, "converged"},
+      {SceneFloquetStatus::relaxation_failed, "relaxation_failed"},
+      {SceneFloquetStatus::not_periodic, "not_periodic"},
+      {SceneFloquetStatus::arpack_failed, "arpack_failed"}};
 };
 
 struct SceneFloquetResult {
   SceneFloquetStatus status = SceneFloquetStatus::converged;
-  std::string message;                         // empty when converged
-  ModelLevel relax_level = ModelLevel::full;   // the level the scene was relaxed with
-  double t0 = 0, period = 0;                   // the monodromy runs from t0 over one period
-  Stepper stepper = Stepper::rk8pd;            // the variational integration's stepper
-  std::size_t dimension = 0;                   // n of the full model
-  double periodicity_defect = 0;               // |y(t0 + T) - y(t0)| / |y(t0)| along the full model
-  FloquetResult floquet;                       // multipliers in floquet.arpack.eigenvalues, largest first
+  std::string message;                        // empty when converged
+  ModelLevel relax_level = ModelLevel::full;  // the level the scene was relaxed with
+  double t0 = 0, period = 0;                  // the monodromy runs from t0 over one period
+  Stepper stepper = Stepper::rk8pd;           // the variational integration's stepper
+  std::size_t dimension = 0;                  // n of the full model
+  double periodicity_defect = 0;              // |y(t0 + T) - y(t0)| / |y(t0)| along the full model
+  FloquetResult floquet;                      // multipliers in floquet.arpack.eigenvalues, largest first
 };
 
 SceneFloquetResult scene_floquet_multipliers(const Scene& scene, const SceneFloquetOptions& options);

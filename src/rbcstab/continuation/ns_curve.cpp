@@ -92,7 +92,8 @@ Eigen::VectorXcd NeimarkSackerCurveProblem::spectrum(const Eigen::VectorXd& X, d
   return floquet(X.head(m_), X[m_], p2).multipliers;
 }
 
-CertifiedSpectrum NeimarkSackerCurveProblem::certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const {
+CertifiedSpectrum NeimarkSackerCurveProblem::certified_spectrum(const Eigen::VectorXd& X, double p2,
+                                                                bool refine) const {
   at(p2);
   return orbit_.certified_spectrum(X.head(m_), X[m_], refine);
 }

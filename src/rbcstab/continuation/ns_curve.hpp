@@ -36,8 +36,8 @@ namespace rbcstab {
 struct NeimarkSackerKind {
   bool neutral_saddle = false;
   double kappa = 0;
-  double theta = 0;           // NS: arccos(kappa) in [0, pi]; neutral saddle: 0 (kappa > 1) or pi (kappa < -1)
-  double real_multiplier = 0; // neutral saddle: mu with |mu| >= 1; NS: 0
+  double theta = 0;            // NS: arccos(kappa) in [0, pi]; neutral saddle: 0 (kappa > 1) or pi (kappa < -1)
+  double real_multiplier = 0;  // neutral saddle: mu with |mu| >= 1; NS: 0
 };
 
 class NeimarkSackerCurveProblem final : public ContinuationProblem {
@@ -57,9 +57,7 @@ class NeimarkSackerCurveProblem final : public ContinuationProblem {
   CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const override;
   std::string parameter_name() const override { return system_.name2(); }
   std::vector<std::string> parameter_names() const override { return {system_.name1(), system_.name2()}; }
-  std::vector<double> parameter_values(const Eigen::VectorXd& X, double p2) const override {
-    return {X[m_], p2};
-  }
+  std::vector<double> parameter_values(const Eigen::VectorXd& X, double p2) const override { return {X[m_], p2}; }
 
   const Eigen::VectorXd& start() const { return start_; }  // (X, p1, kappa) at the NS point
   NeimarkSackerKind classify(const Eigen::VectorXd& X) const;

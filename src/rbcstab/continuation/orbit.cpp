@@ -41,7 +41,8 @@ IntegratorOptions integrator_options(const OrbitOptions& o) {
 
 void OrbitOptions::validate() const {
   require(segments >= 1 && segments <= 1000, "segments", segments, "an integer in [1, 1000]");
-  require(std::isfinite(rtol) && rtol >= 1e-15 && rtol <= 1e-6, "rtol", rtol, "[1e-15, 1e-6] (Floquet multipliers need a tight tolerance)");
+  require(std::isfinite(rtol) && rtol >= 1e-15 && rtol <= 1e-6, "rtol", rtol,
+          "[1e-15, 1e-6] (Floquet multipliers need a tight tolerance)");
   require(std::isfinite(atol) && atol > 0 && atol <= 1e-6, "atol", atol, "(0, 1e-6]");
   require(samples_per_segment >= 4 && samples_per_segment <= 100000, "samples_per_segment", samples_per_segment,
           "an integer in [4, 100000]");
@@ -209,8 +210,8 @@ Eigen::VectorXd PeriodicOrbitProblem::shooting_guess(const Eigen::VectorXd& x0, 
   for (int j = 1; j < N_; ++j) grid.push_back(kTwoPi * j / N_);
   const ForcedFlow plain(sys_, p, ForcedFlow::Mode::plain);
   int k = 1;
-  integrate(plain, std::span<const double>(x0.data(), static_cast<std::size_t>(n_)), 0.0, grid,
-            integrator_options(o_), [&](double, std::span<const double> y) {
+  integrate(plain, std::span<const double>(x0.data(), static_cast<std::size_t>(n_)), 0.0, grid, integrator_options(o_),
+            [&](double, std::span<const double> y) {
               X.segment(k * n_, n_) = Eigen::Map<const Eigen::VectorXd>(y.data(), n_);
               ++k;
             });
@@ -235,16 +236,15 @@ OrbitRelaxation PeriodicOrbitProblem::relax(const Eigen::VectorXd& x0, double p,
     std::vector<double> grid;
     for (int j = 1; j <= k; ++j) grid.push_back(kTwoPi * j);
     int done = 0;
-    const IntegrationResult res =
-        integrate(plain, std::span<const double>(r.x.data(), static_cast<std::size_t>(n_)), 0.0, grid, io,
-                  [&](double, std::span<const double> y) {
-                    if (r.converged) return;  // the rest of the chunk only relaxes further
-                    const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(y.data(), n_);
-                    r.defect = (x - prev).norm();
-                    r.converged = r.defect < tol;
-                    prev = x;
-                    ++done;
-                  });
+    const IntegrationResult res = integrate(plain, std::span<const double>(r.x.data(), static_cast<std::size_t>(n_)),
+                                            0.0, grid, io, [&](double, std::span<const double> y) {
+                                              if (r.converged) return;  // the rest of the chunk only relaxes further
+                                              const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(y.data(), n_);
+                                              r.defect = (x - prev).norm();
+                                              r.converged = r.defect < tol;
+                                              prev = x;
+                                              ++done;
+                                            });
     ++integrations_;
     r.periods += done;
     r.x = prev;
@@ -284,13 +284,14 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p) c
     xs.push_back(xj);
     theta.push_back(th);
     int k = 1;
-    const IntegrationResult r = integrate(with_angle, y0, kTwoPi * j / N_, grid, io, [&](double, std::span<const double> y) {
-      if (k < S) {
-        xs.emplace_back(Eigen::Map<const Eigen::VectorXd>(y.data(), n_));
-        theta.push_back(y[n]);
-      }
-      ++k;
-    });
+    const IntegrationResult r =
+        integrate(with_angle, y0, kTwoPi * j / N_, grid, io, [&](double, std::span<const double> y) {
+          if (k < S) {
+            xs.emplace_back(Eigen::Map<const Eigen::VectorXd>(y.data(), n_));
+            theta.push_back(y[n]);
+          }
+          ++k;
+        });
     ++integrations_;
     if (r.status != IntegrationStatus::success) {
       // z passed (numerically) through 0: the angle is undefined there. Fill the segment from the
@@ -298,15 +299,17 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p) c
       xs.resize(static_cast<std::size_t>(j * S + 1));
       theta.resize(static_cast<std::size_t>(j * S + 1));
       k = 1;
-      integrate(plain, std::span<const double>(xj.data(), n), kTwoPi * j / N_, grid, io, [&](double, std::span<const double> y) {
-        if (k < S) {
-          xs.emplace_back(Eigen::Map<const Eigen::VectorXd>(y.data(), n_));
-          theta.push_back(theta.back() + std::remainder(std::atan2(y[1], y[0]) - theta.back(), kTwoPi));
-        }
-        ++k;
-      });
+      integrate(plain, std::span<const double>(xj.data(), n), kTwoPi * j / N_, grid, io,
+                [&](double, std::span<const double> y) {
+                  if (k < S) {
+                    xs.emplace_back(Eigen::Map<const Eigen::VectorXd>(y.data(), n_));
+                    theta.push_back(theta.back() + std::remainder(std::atan2(y[1], y[0]) - theta.back(), kTwoPi));
+                  }
+                  ++k;
+                });
       ++integrations_;
-      th = theta.back() + std::remainder(std::atan2(X[((j + 1) % N_) * n_ + 1], X[((j + 1) % N_) * n_]) - theta.back(), kTwoPi);
+      th = theta.back() +
+           std::remainder(std::atan2(X[((j + 1) % N_) * n_ + 1], X[((j + 1) % N_) * n_]) - theta.back(), kTwoPi);
     } else {
       th = r.y[n];
     }

@@ -11,7 +11,6 @@
 // still closed in the regular coordinates y = (Re z, Im z, w), because Psi only enters through
 // z = r e^{-i Psi}. The unknowns therefore never carry an angle and need no unwrapping; the winding
 // number is a property of the solution, computed afterwards (orbit_summary).
-#include "rbcstab/continuation/dense.hpp"
 #include <cstddef>
 #include <functional>
 #include <limits>
@@ -22,23 +21,24 @@
 #include <string>
 #include <string_view>
 #include <vector>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/continuation.hpp"
-#include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/continuation/forced_system.hpp"
 #include "rbcstab/continuation/problem.hpp"
+#include "rbcstab/core/enum_table.hpp"
 
 namespace rbcstab {
 
 struct OrbitOptions {
-  int segments = 8;            // shooting segments N: more = better conditioned Newton for unstable orbits
-  double rtol = 1e-12;         // integration tolerance of each segment (with its variational equations)
-  double atol = 1e-13;         // absolute tolerance (states are O(1))
+  int segments = 8;              // shooting segments N: more = better conditioned Newton for unstable orbits
+  double rtol = 1e-12;           // integration tolerance of each segment (with its variational equations)
+  double atol = 1e-13;           // absolute tolerance (states are O(1))
   int samples_per_segment = 64;  // dense samples for r_min/max, Psi_min/max (the winding is integrated)
   // Every integration's IntegratorOptions::poll (the shootings; continue_scene: also the start's relaxation
   // for relax_T and to the orbit): a front end abandons a long run through it (it may throw). Not saved.
   std::function<void()> poll{};
-  void validate() const;       // throws InvalidArgument naming the field
+  void validate() const;  // throws InvalidArgument naming the field
 };
 
 // Floquet data of a periodic orbit at t = 0: the monodromy M = M_{N-1} ... M_0 (plain product; the
@@ -47,15 +47,15 @@ struct OrbitOptions {
 // and the trivial one x0^T M x0 / |x0|^2 (exactly 1 in exact arithmetic).
 struct Floquet {
   Eigen::MatrixXd monodromy;
-  Eigen::VectorXcd multipliers;       // nontrivial (all of them when no norm is conserved)
-  std::optional<double> trivial;      // only for conserves_norm systems
+  Eigen::VectorXcd multipliers;   // nontrivial (all of them when no norm is conserved)
+  std::optional<double> trivial;  // only for conserves_norm systems
 };
 
 enum class OrbitKind { swinging, tumbling };
 template <>
 struct EnumTable<OrbitKind> {
-  static constexpr EnumName<OrbitKind> entries[] = {
-      {OrbitKind::swinging, "swinging"}, {OrbitKind::tumbling, "tumbling"}};
+  static constexpr EnumName<OrbitKind> entries[] = {{OrbitKind::swinging, "swinging"},
+                                                    {OrbitKind::tumbling, "tumbling"}};
 };
 // The name of the swinging <-> tumbling UZ event on orbit branches (transition_event's default).
 inline constexpr std::string_view kTransitionEventName = "swing_tumble";
@@ -68,28 +68,28 @@ struct OrbitSummary {
   double Psi_min = 0, Psi_max = 0;  // of the continuous Psi(t) started at Psi0, over the samples
   int winding = 0;                  // turns of z around 0 per period (counter-clockwise); Psi advances -2 pi winding
   OrbitKind kind = OrbitKind::swinging;
-  double transition_function = 0;   // +r_min when swinging, -r_min when tumbling: continuous, 0 at the transition
-  Eigen::VectorXd mean;             // period average of x (periodic trapezoid rule on the uniform samples:
-                                    // spectrally accurate for a smooth periodic orbit)
+  double transition_function = 0;  // +r_min when swinging, -r_min when tumbling: continuous, 0 at the transition
+  Eigen::VectorXd mean;            // period average of x (periodic trapezoid rule on the uniform samples:
+                                   // spectrally accurate for a smooth periodic orbit)
 };
 
 // Whole forcing periods of x' = f(t, x, p) from a state at t = 0 (mod 2 pi): how far a relaxation got.
 struct OrbitRelaxation {
-  Eigen::VectorXd x;       // the state after `periods` periods (t = 0 mod 2 pi)
-  int periods = 0;         // forcing periods integrated
+  Eigen::VectorXd x;                                         // the state after `periods` periods (t = 0 mod 2 pi)
+  int periods = 0;                                           // forcing periods integrated
   double defect = std::numeric_limits<double>::quiet_NaN();  // |x(2 pi k) - x(2 pi (k - 1))|_2 of the last period
-  bool converged = false;  // defect < tol before max_periods
-  std::string failure;     // non-empty: the integration failed (x is the last state reached)
+  bool converged = false;                                    // defect < tol before max_periods
+  std::string failure;  // non-empty: the integration failed (x is the last state reached)
 };
 
 // The orbit's state at a time t and its first derivatives (PeriodicOrbitProblem::point_at).
 struct OrbitPoint {
-  bool ok = false;       // false: the integration failed (the other fields are then empty)
-  int segment = 0;       // j: t (mod 2 pi) lies in [t_j, t_{j+1}), the state is phi(t, t_j, x_j)
-  Eigen::VectorXd x;     // the state
-  Eigen::MatrixXd dx;    // d x / d x_j (the segment's variational matrix up to t)
-  Eigen::VectorXd dt;    // d x / d t = f(t, x, p)
-  Eigen::VectorXd dp;    // d x / d p (the parameter sensitivity from t_j)
+  bool ok = false;     // false: the integration failed (the other fields are then empty)
+  int segment = 0;     // j: t (mod 2 pi) lies in [t_j, t_{j+1}), the state is phi(t, t_j, x_j)
+  Eigen::VectorXd x;   // the state
+  Eigen::MatrixXd dx;  // d x / d x_j (the segment's variational matrix up to t)
+  Eigen::VectorXd dt;  // d x / d t = f(t, x, p)
+  Eigen::VectorXd dp;  // d x / d p (the parameter sensitivity from t_j)
 };
 
 // F(X, p) = 0 for X = (x_0, ..., x_{N-1}), x_j the state at t_j = 2 pi j / N:

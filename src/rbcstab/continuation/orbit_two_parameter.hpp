@@ -2,9 +2,9 @@
 // Periodic orbits of forced systems with two parameters: the system (ForcedSystem2) and its slice at fixed
 // p2, the shooting problem with both parameters free (OrbitTwoParameterProblem, the base of the LPC, PD, NS
 // and event curves) and the PD curve.
-#include "rbcstab/continuation/dense.hpp"
 #include <span>
 #include <string>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/fold_curve.hpp"
@@ -25,7 +25,8 @@ class ForcedSystem2 {
   virtual void rhs(double t, std::span<const double> x, double p1, double p2, std::span<double> f) const = 0;
   virtual void jacobian(double t, std::span<const double> x, double p1, double p2, Eigen::MatrixXd& J) const = 0;
   // df/dp1. Default: central differences (see ForcedSystem::parameter_derivative).
-  virtual void parameter_derivative(double t, std::span<const double> x, double p1, double p2, std::span<double> fp) const;
+  virtual void parameter_derivative(double t, std::span<const double> x, double p1, double p2,
+                                    std::span<double> fp) const;
   virtual bool conserves_norm() const { return false; }
   virtual std::string name1() const { return "p1"; }
   virtual std::string name2() const { return "p2"; }
@@ -36,7 +37,9 @@ class ForcedSlice final : public ForcedSystem {
  public:
   ForcedSlice(const ForcedSystem2& base, double p2) : base_(base), p2_(p2) {}
   Eigen::Index dimension() const override { return base_.dimension(); }
-  void rhs(double t, std::span<const double> x, double p, std::span<double> f) const override { base_.rhs(t, x, p, p2_, f); }
+  void rhs(double t, std::span<const double> x, double p, std::span<double> f) const override {
+    base_.rhs(t, x, p, p2_, f);
+  }
   void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const override {
     base_.jacobian(t, x, p, p2_, J);
   }
@@ -69,7 +72,9 @@ class OrbitTwoParameterProblem final : public TwoParameterProblem {
   OrbitSummary summary(const Eigen::VectorXd& X, double p1, double p2) const;
   OrbitPoint point_at(const Eigen::VectorXd& X, double p1, double p2, double t) const;
   // Curves over this problem (LPC) report the orbits' Floquet multipliers.
-  Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p1, double p2) const override { return multipliers(X, p1, p2); }
+  Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p1, double p2) const override {
+    return multipliers(X, p1, p2);
+  }
   CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& X, double p1, double p2, bool refine) const override;
   StabilityKind stability_kind() const override { return StabilityKind::multipliers; }
 

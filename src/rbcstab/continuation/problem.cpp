@@ -68,7 +68,7 @@ CertifiedSpectrum certified_eigenvalues(const Eigen::MatrixXd& A, double eta) {
   c.errors.setConstant(n, std::numeric_limits<double>::infinity());
   const Eigen::MatrixXcd V = es.eigenvectors();
   const Eigen::FullPivLU<Eigen::MatrixXcd> lu(V);
-  if (!lu.isInvertible()) return c;  // defective to working precision: no first-order bound
+  if (!lu.isInvertible()) return c;         // defective to working precision: no first-order bound
   const Eigen::MatrixXcd U = lu.inverse();  // rows: left eigenvectors with u_i^H v_i = 1
   const Eigen::MatrixXcd Ac = A.cast<std::complex<double>>();
   const double matrix_error = eta * A.norm();
@@ -109,7 +109,8 @@ CertifiedSpectrum ContinuationProblem::certified_spectrum(const Eigen::VectorXd&
 int count_unstable(const Eigen::VectorXcd& spectrum, StabilityKind kind, double tol) {
   int n = 0;
   for (Eigen::Index i = 0; i < spectrum.size(); ++i) {
-    const bool unstable = kind == StabilityKind::eigenvalues ? spectrum[i].real() > tol : std::abs(spectrum[i]) > 1 + tol;
+    const bool unstable =
+        kind == StabilityKind::eigenvalues ? spectrum[i].real() > tol : std::abs(spectrum[i]) > 1 + tol;
     n += unstable ? 1 : 0;
   }
   return n;

@@ -2,9 +2,9 @@
 // What the continuation engine continues: a square system F(x, p) = 0 in n unknowns x and one free
 // parameter p. The engine knows nothing else about the problem (equilibria, fold curves, orbits):
 // every problem kind is an implementation of this interface (BifurcationKit's shape: one engine).
-#include "rbcstab/continuation/dense.hpp"
 #include <string>
 #include <vector>
+#include "rbcstab/continuation/dense.hpp"
 
 namespace rbcstab {
 

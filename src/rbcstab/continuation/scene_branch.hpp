@@ -1,9 +1,9 @@
 #pragma once
 // A one-parameter branch continued from a scene (SceneBranch, continue_scene) and the branch bifurcating
 // at one of its BPs (SwitchedBranch, switch_at_bp; scene_switch.cpp).
-#include "rbcstab/continuation/dense.hpp"
 #include <optional>
 #include <string>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/branch_spec.hpp"
 #include "rbcstab/continuation/branch_switch.hpp"
@@ -27,7 +27,7 @@ struct SceneBranch {
   BranchSpec spec;      // as run: the engine's bounds set by set_domain_bounds
   Scene problem_scene;  // the problem's scene (modal_orbit: spec.scene with its total excess area as Delta)
   StartPoint start;
-  MeasuredBranch branch;  // status start_failed (no points) when the start did not converge
+  MeasuredBranch branch;                   // status start_failed (no points) when the start did not converge
   std::optional<SwitchedBranch> switched;  // spec.switch_at_bp: at the first BP met (first_bp_met)
 };
 

@@ -1,8 +1,8 @@
 // The curve of a special point of a scene branch in a second parameter: the system that continues it
 // (curve_system), its start and trace over each kind's two-parameter problem, and the state of the problem
 // it augments at a curve point (curve_point_state).
-#include "rbcstab/continuation/orbit_two_parameter.hpp"
 #include "rbcstab/continuation/scene_curve.hpp"
+#include "rbcstab/continuation/orbit_two_parameter.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -158,8 +158,8 @@ Eigen::VectorXd ellipsoidal_orbit_state(const Eigen::VectorXd& X, int L, int seg
 
 // The symmetry-breaking BP curve of modal equilibria (mode l = critical_mode of the start): the
 // ellipsoidal l = 2 block plus Upsilon_l(sigma) = 0, six unknowns, exact.
-MeasuredBranch modal_bp_curve(const CurveRun& run, const Scene& scene, ContinuationParameter q1, ContinuationParameter q2,
-                              const SceneTwoParameterProblem<ModalEquilibriumProblem>& base) {
+MeasuredBranch modal_bp_curve(const CurveRun& run, const Scene& scene, ContinuationParameter q1,
+                              ContinuationParameter q2, const SceneTwoParameterProblem<ModalEquilibriumProblem>& base) {
   const ModalBranchPointCurve curve(scene, q1, q2, critical_mode(base.at(run.p2_0), run.sp.x, run.sp.p));
   return run.trace(curve, curve.start(run.sp.x, run.sp.p), [&](const Eigen::VectorXd& X, double p1, double p2) {
     return equilibrium_values(base.at(p2), ellipsoidal_modal_state(X, base.dimension()), p1);
@@ -186,7 +186,8 @@ void trace_curve(SceneCurve& r, const SpecialPoint& sp, int first_label) {
   const ContinuationParameter q1 = one.spec.parameter, q2 = *r.spec.parameter2;
   if (sp.status != LocationStatus::located) {
     r.message = "--curve " + to_string(r.spec.type) + ": special point " + sp.name + " at " + to_string(q1) + " = " +
-                std::to_string(sp.p) + " was not located (" + to_string(sp.status) + "); its curve needs an exact start";
+                std::to_string(sp.p) + " was not located (" + to_string(sp.status) +
+                "); its curve needs an exact start";
     return;
   }
   ContinuationOptions engine = one.spec.engine;
@@ -200,7 +201,9 @@ void trace_curve(SceneCurve& r, const SpecialPoint& sp, int first_label) {
   r.system = curve_system(one.spec.kind, r.spec.type, scene, q1, q2, sp, r.spec.symmetric_tol);
   const CurveRun run{r.start, r.start_p2, engine, curve_measure_names(one.spec.kind, r.system, scene.L)};
   switch (one.spec.kind) {
-    case ProblemKind::orbit: r.curve = cycle_curve(run, r.system, ReducedForcedSystem2(scene, q1, q2), one.spec.orbit); break;
+    case ProblemKind::orbit:
+      r.curve = cycle_curve(run, r.system, ReducedForcedSystem2(scene, q1, q2), one.spec.orbit);
+      break;
     case ProblemKind::modal_orbit:
       r.curve = r.system == CurveSystem::ellipsoidal_orbit_branch_point
                     ? ellipsoidal_orbit_bp_curve(run, scene, q1, q2, one.spec.orbit)
@@ -245,10 +248,12 @@ Eigen::VectorXd curve_point_state(const SceneCurve& c, const Eigen::VectorXd& X)
 void CurveSpec::validate(const BranchSpec& branch) const {
   const bool orbit = is_orbit(branch.kind);
   // UZ: the events of a branch are those of its kind; only orbit branches carry one (swing_tumble).
-  const bool cycle_curve = type == CurveKind::LPC || type == CurveKind::PD || type == CurveKind::NS || type == CurveKind::UZ;
+  const bool cycle_curve =
+      type == CurveKind::LPC || type == CurveKind::PD || type == CurveKind::NS || type == CurveKind::UZ;
   if (orbit != cycle_curve && !(orbit && type == CurveKind::BP))
-    throw InvalidArgument("curve", "curve = " + to_string(type) + " is not available for --kind " + to_string(branch.kind) +
-                                       ": must be " + (orbit ? "LPC, PD, NS, BP or UZ" : "LP, BP or HB"));
+    throw InvalidArgument("curve", "curve = " + to_string(type) + " is not available for --kind " +
+                                       to_string(branch.kind) + ": must be " +
+                                       (orbit ? "LPC, PD, NS, BP or UZ" : "LP, BP or HB"));
   if (!parameter2) throw InvalidArgument("parameter2", "--curve needs --parameter2 (the second free parameter)");
   if (branch.switch_at_bp) throw InvalidArgument("switch_at_bp", "--switch-at-bp and --curve cannot be combined");
   require_independent(branch.parameter, *parameter2, "parameter2");
@@ -262,12 +267,18 @@ CurveSystem curve_system(ProblemKind kind, CurveKind type, const Scene& scene, C
                          ContinuationParameter q2, const SpecialPoint& start, double symmetric_tol) {
   switch (type) {
     case CurveKind::LP:
-    case CurveKind::LPC: return CurveSystem::fold;
-    case CurveKind::HB: return CurveSystem::hopf;
-    case CurveKind::PD: return CurveSystem::period_doubling;
-    case CurveKind::NS: return CurveSystem::neimark_sacker;
-    case CurveKind::UZ: return CurveSystem::event;
-    case CurveKind::BP: break;
+    case CurveKind::LPC:
+      return CurveSystem::fold;
+    case CurveKind::HB:
+      return CurveSystem::hopf;
+    case CurveKind::PD:
+      return CurveSystem::period_doubling;
+    case CurveKind::NS:
+      return CurveSystem::neimark_sacker;
+    case CurveKind::UZ:
+      return CurveSystem::event;
+    case CurveKind::BP:
+      break;
   }
   if (kind == ProblemKind::modal) return CurveSystem::modal_branch_point;
   if (kind != ProblemKind::modal_orbit || q1 == ContinuationParameter::beta || q2 == ContinuationParameter::beta ||
@@ -277,7 +288,7 @@ CurveSystem curve_system(ProblemKind kind, CurveKind type, const Scene& scene, C
   // the first three vanish.
   const Eigen::Index nm = 5 + (scene.L - 2);
   return start.x.segment(3, nm - 3).cwiseAbs().maxCoeff() <= symmetric_tol ? CurveSystem::ellipsoidal_orbit_branch_point
-                                                                            : CurveSystem::branch_point;
+                                                                           : CurveSystem::branch_point;
 }
 
 SceneCurve continue_curve(const BranchSpec& branch, const CurveSpec& curve) {

@@ -1,10 +1,10 @@
 #pragma once
 // The curve of a special point of a scene branch in a second parameter (CurveSpec, continue_curve) and the
 // system that continues it (curve_system).
-#include "rbcstab/continuation/dense.hpp"
 #include <limits>
 #include <optional>
 #include <string>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/continuation_parameter.hpp"
@@ -40,12 +40,12 @@ CurveSystem curve_system(ProblemKind kind, CurveKind type, const Scene& scene, C
                          ContinuationParameter q2, const SpecialPoint& start, double symmetric_tol = 1e-8);
 
 struct SceneCurve {
-  CurveSpec spec;      // as run: the bounds set by set_domain_bounds
-  SceneBranch one;     // the one-parameter branch the curve starts from
+  CurveSpec spec;        // as run: the bounds set by set_domain_bounds
+  SceneBranch one;       // the one-parameter branch the curve starts from
   bool started = false;  // false: no start (the branch's start failed, or no located point); message says why
   std::string message;
-  SpecialPoint start;  // the special point of `one`
-  double start_p2 = 0;   // parameter2 at the start (the scene's value)
+  SpecialPoint start;   // the special point of `one`
+  double start_p2 = 0;  // parameter2 at the start (the scene's value)
   CurveSystem system = CurveSystem::fold;
   MeasuredBranch curve;  // points carry (parameter, parameter2)
 };

@@ -35,10 +35,13 @@ ProblemKind problem_kind_from_string(const std::string& name) {
 
 ModelLevel model_level(ProblemKind kind) {
   switch (kind) {
-    case ProblemKind::full: return ModelLevel::full;
+    case ProblemKind::full:
+      return ModelLevel::full;
     case ProblemKind::modal:
-    case ProblemKind::modal_orbit: return ModelLevel::modal;
-    default: return ModelLevel::reduced;
+    case ProblemKind::modal_orbit:
+      return ModelLevel::modal;
+    default:
+      return ModelLevel::reduced;
   }
 }
 

@@ -40,7 +40,9 @@ Values polar_values(const Eigen::VectorXd& x) {  // of (Re z, Im z, w), the firs
   return {s.r, s.Psi};
 }
 
-Values equilibrium_values(const ReducedEquilibriumProblem&, const Eigen::VectorXd& x, double) { return polar_values(x); }
+Values equilibrium_values(const ReducedEquilibriumProblem&, const Eigen::VectorXd& x, double) {
+  return polar_values(x);
+}
 Values equilibrium_values(const ModalEquilibriumProblem& pr, const Eigen::VectorXd& x, double p) {
   return modal_values(pr.observe(x, p));
 }
@@ -109,7 +111,8 @@ const MeasureValue& MeasuredBranch::measure(std::size_t k, std::string_view name
     if (measure_names[i] == name) return point_measures.at(k).at(i);
   std::string list;
   for (const auto& n : measure_names) list += (list.empty() ? "" : ", ") + n;
-  throw InvalidArgument("measure", "measure = '" + std::string(name) + "' is not a measure of this branch: must be one of " + list);
+  throw InvalidArgument(
+      "measure", "measure = '" + std::string(name) + "' is not a measure of this branch: must be one of " + list);
 }
 
 double MeasuredBranch::number(std::size_t k, std::string_view name) const {

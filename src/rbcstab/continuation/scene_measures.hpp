@@ -1,12 +1,12 @@
 #pragma once
 // The measures of a scene branch's points by name (measure_names per kind, curve_measure_names per curve
 // system) and MeasuredBranch, the branch with its measures and labels that every rendering and plot reads.
-#include "rbcstab/continuation/dense.hpp"
 #include <cstddef>
 #include <string>
 #include <string_view>
 #include <variant>
 #include <vector>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/problem.hpp"

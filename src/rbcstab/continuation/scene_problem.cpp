@@ -46,7 +46,8 @@ StartPoint equilibrium_start(const FullEquilibriumProblem& pr, const BranchSpec&
   if (std::any_of(rest.begin(), rest.end(), [](const auto& kv) { return kv.second > 0; }))
     return newton_start(pr, StartMethod::relaxed, pr.relaxed_state(spec.relax_T), p0,
                         "full-model equilibrium near the relaxed state");
-  return newton_start(pr, StartMethod::ellipsoidal, pr.ellipsoidal_state(p0), p0, "full-model equilibrium near the ellipsoid");
+  return newton_start(pr, StartMethod::ellipsoidal, pr.ellipsoidal_state(p0), p0,
+                      "full-model equilibrium near the ellipsoid");
 }
 
 // Equilibria of one level (Problem: ReducedEquilibriumProblem, ModalEquilibriumProblem, FullEquilibriumProblem).
@@ -66,7 +67,8 @@ class Equilibrium final : public SceneProblem {
 template <class System>
 class Orbit final : public SceneProblem {
  public:
-  Orbit(const Scene& scene, ContinuationParameter q, const OrbitOptions& options) : sys_(scene, q), pr_(sys_, options) {}
+  Orbit(const Scene& scene, ContinuationParameter q, const OrbitOptions& options)
+      : sys_(scene, q), pr_(sys_, options) {}
   const ContinuationProblem& problem() const override { return pr_; }
   // The scene relaxed for relax_T, then period by period to relax_tol (PeriodicOrbitProblem::relax), then Newton.
   StartPoint start(const BranchSpec& spec) const override {
@@ -85,9 +87,10 @@ class Orbit final : public SceneProblem {
       x0 = sys_.relaxed_state(spec.relax_T, spec.orbit.poll);
     }
     const OrbitRelaxation r = pr_.relax(x0, p0, spec.relax_tol, spec.relax_max_periods);
-    StartPoint s = newton_start(pr_, StartMethod::relaxed, pr_.shooting_guess(r.x, p0), p0,
-                                std::is_same_v<System, ModalForcedSystem> ? "periodic orbit near the relaxed modal state"
-                                                                          : "periodic orbit near the relaxed state");
+    StartPoint s =
+        newton_start(pr_, StartMethod::relaxed, pr_.shooting_guess(r.x, p0), p0,
+                     std::is_same_v<System, ModalForcedSystem> ? "periodic orbit near the relaxed modal state"
+                                                               : "periodic orbit near the relaxed state");
     s.relaxation_periods = static_cast<int>(std::ceil(spec.relax_T / (2 * kPi))) + r.periods;
     s.periodicity_defect = r.defect;
     s.periodicity_tol = spec.relax_tol;
@@ -97,8 +100,9 @@ class Orbit final : public SceneProblem {
     if (!r.failure.empty())
       m << "the relaxation failed after " << s.relaxation_periods << " periods (" << r.failure << ")";
     else if (!r.converged)
-      m << "the relaxation reached its bound of " << spec.relax_max_periods << " periods after relax_T with periodicity defect "
-        << r.defect << " > " << spec.relax_tol << " (a slow transient, or an attractor that is not periodic)";
+      m << "the relaxation reached its bound of " << spec.relax_max_periods
+        << " periods after relax_T with periodicity defect " << r.defect << " > " << spec.relax_tol
+        << " (a slow transient, or an attractor that is not periodic)";
     if (!m.str().empty()) s.message = s.message.empty() ? m.str() : s.message + "; " + m.str();
     return s;
   }
@@ -119,10 +123,14 @@ std::unique_ptr<SceneProblem> make_problem(const BranchSpec& spec, const Scene& 
   switch (spec.kind) {
     case ProblemKind::equilibrium:
       return std::make_unique<Equilibrium<ReducedEquilibriumProblem>>(scene, spec.parameter);
-    case ProblemKind::modal: return std::make_unique<Equilibrium<ModalEquilibriumProblem>>(scene, spec.parameter);
-    case ProblemKind::full: return std::make_unique<Equilibrium<FullEquilibriumProblem>>(scene, spec.parameter);
-    case ProblemKind::orbit: return std::make_unique<Orbit<ReducedForcedSystem>>(scene, spec.parameter, spec.orbit);
-    case ProblemKind::modal_orbit: return std::make_unique<Orbit<ModalForcedSystem>>(scene, spec.parameter, spec.orbit);
+    case ProblemKind::modal:
+      return std::make_unique<Equilibrium<ModalEquilibriumProblem>>(scene, spec.parameter);
+    case ProblemKind::full:
+      return std::make_unique<Equilibrium<FullEquilibriumProblem>>(scene, spec.parameter);
+    case ProblemKind::orbit:
+      return std::make_unique<Orbit<ReducedForcedSystem>>(scene, spec.parameter, spec.orbit);
+    case ProblemKind::modal_orbit:
+      return std::make_unique<Orbit<ModalForcedSystem>>(scene, spec.parameter, spec.orbit);
   }
   throw std::logic_error("unknown problem kind");
 }
@@ -134,7 +142,9 @@ MeasuredBranch measure_branch(const SceneProblem& sp, const SceneBranch& r, Bran
 
 }  // namespace detail
 
-Eigen::Index problem_dimension(const SceneBranch& r) { return make_problem(r.spec, r.problem_scene)->problem().dimension(); }
+Eigen::Index problem_dimension(const SceneBranch& r) {
+  return make_problem(r.spec, r.problem_scene)->problem().dimension();
+}
 
 Scene problem_scene_of(const BranchSpec& spec) {
   return spec.kind == ProblemKind::modal_orbit && !spec.start_state ? total_area_scene(spec.scene) : spec.scene;

@@ -84,7 +84,8 @@ void apply_changes(BranchSpec& s, const RestartChanges& c) {
 void RestartRequest::validate() const {
   if (label > 0 && switch_at > 0) throw InvalidArgument("switch_at", "--switch-at and --label cannot be combined");
   if (label <= 0 && switch_at <= 0)
-    throw InvalidArgument("label", "--restart needs --label N (the labelled point to start from) or --switch-at N (a BP's label)");
+    throw InvalidArgument(
+        "label", "--restart needs --label N (the labelled point to start from) or --switch-at N (a BP's label)");
   if (switch_at > 0 && curve) throw InvalidArgument("switch_at", "--switch-at and --curve cannot be combined");
 }
 
@@ -124,19 +125,22 @@ SceneBranch switch_at_label(const ContinuationRun& run, int label, const Restart
   if (std::holds_alternative<SceneCurve>(run) && lp.branch == 2)
     throw InvalidArgument("switch_at", what + " is a point of the " + to_string(std::get<SceneCurve>(run).spec.type) +
                                            " curve, not a BP of a one-parameter branch: restart a branch from it "
-                                           "(--label " + std::to_string(label) + ") and switch at that branch's BP");
+                                           "(--label " +
+                                           std::to_string(label) + ") and switch at that branch's BP");
   if (lp.type != to_string(SpecialPointType::BP)) {
     std::string bps;
     for (const LabelledPoint& p : labelled_points(run))
       if (p.type == to_string(SpecialPointType::BP) && !(std::holds_alternative<SceneCurve>(run) && p.branch == 2))
         bps += (bps.empty() ? "" : ", ") + std::to_string(p.label);
-    throw InvalidArgument("switch_at", what + " is " + (lp.type.empty() ? "a regular point" : "a point of type " + lp.type) +
-                                           ", not a BP (branch point): " +
-                                           (bps.empty() ? "this run has no BP" : "the BP labels of this run are " + bps));
+    throw InvalidArgument("switch_at",
+                          what + " is " + (lp.type.empty() ? "a regular point" : "a point of type " + lp.type) +
+                              ", not a BP (branch point): " +
+                              (bps.empty() ? "this run has no BP" : "the BP labels of this run are " + bps));
   }
   if (changes.parameter && *changes.parameter != ctx.spec.parameter)
     throw InvalidArgument("parameter", "parameter = " + to_string(*changes.parameter) + " cannot switch at " + what +
-                                           ": a switch continues the branch's own parameter, " + to_string(ctx.spec.parameter));
+                                           ": a switch continues the branch's own parameter, " +
+                                           to_string(ctx.spec.parameter));
   SceneBranch r;
   r.spec = ctx.spec;
   r.spec.switch_at_bp = false;
@@ -153,10 +157,12 @@ SceneBranch switch_at_label(const ContinuationRun& run, int label, const Restart
       << ", outside [--min, --max] = [" << r.spec.engine.p_min << ", " << r.spec.engine.p_max << "]";
     throw InvalidArgument("min", m.str());
   }
-  const int k = static_cast<int>(std::count_if(r.branch.branch.special_points.begin(),
-                                               r.branch.branch.special_points.begin() + static_cast<std::ptrdiff_t>(lp.index) + 1,
-                                               [](const SpecialPoint& p) { return p.type == SpecialPointType::BP; }));
-  r.switched = switch_with(*make_problem(r.spec, r.problem_scene), r, r.branch, k, switch_options(r), run_last_label(run) + 1);
+  const int k =
+      static_cast<int>(std::count_if(r.branch.branch.special_points.begin(),
+                                     r.branch.branch.special_points.begin() + static_cast<std::ptrdiff_t>(lp.index) + 1,
+                                     [](const SpecialPoint& p) { return p.type == SpecialPointType::BP; }));
+  r.switched =
+      switch_with(*make_problem(r.spec, r.problem_scene), r, r.branch, k, switch_options(r), run_last_label(run) + 1);
   return r;
 }
 
@@ -164,8 +170,9 @@ SceneCurve restart_curve(const ContinuationRun& run, int label, const CurveSpec&
   const LabelledPoint lp = find_label(run, label);
   const SceneBranch& ctx = one_parameter_run(run);
   if (changes.parameter && *changes.parameter != ctx.spec.parameter)
-    throw InvalidArgument("parameter", "parameter = " + to_string(*changes.parameter) + " cannot continue the curve of label " +
-                                           std::to_string(label) + ": it is a special point in " + to_string(ctx.spec.parameter) +
+    throw InvalidArgument("parameter", "parameter = " + to_string(*changes.parameter) +
+                                           " cannot continue the curve of label " + std::to_string(label) +
+                                           ": it is a special point in " + to_string(ctx.spec.parameter) +
                                            ", the curve's first parameter");
   const SpecialPointType type = special_point_type(curve.type);
   const std::string T = to_string(curve.type);
@@ -173,10 +180,11 @@ SceneCurve restart_curve(const ContinuationRun& run, int label, const CurveSpec&
   const bool curve_point = on && lp.branch == 2;
   if (curve_point ? on->spec.type != curve.type : lp.type != T)
     throw InvalidArgument("label", "label = " + std::to_string(label) + " is " +
-                                       (curve_point ? "a point of a " + to_string(on->spec.type) + " curve"
-                                                    : lp.type.empty() ? "a regular point" : "a point of type " + lp.type) +
-                                       ": --curve " + T + " starts from a point of type " + T + " or a point of a " + T +
-                                       " curve");
+                                       (curve_point       ? "a point of a " + to_string(on->spec.type) + " curve"
+                                        : lp.type.empty() ? "a regular point"
+                                                          : "a point of type " + lp.type) +
+                                       ": --curve " + T + " starts from a point of type " + T + " or a point of a " +
+                                       T + " curve");
   SceneBranch one;
   one.spec = restart_spec(run, label, changes);
   one.problem_scene = one.spec.scene;

@@ -1,9 +1,9 @@
 #pragma once
 // Restarts from a labelled point of a run (AUTO's IRS): a branch (restart), a switch at a labelled BP
 // (switch_at_label) or a special point's curve (restart_curve), and the request that picks one.
-#include "rbcstab/continuation/dense.hpp"
 #include <cstddef>
 #include <optional>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/branch_labels.hpp"
 #include "rbcstab/continuation/branch_spec.hpp"

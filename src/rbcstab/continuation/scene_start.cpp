@@ -26,9 +26,11 @@ StartPoint start_of(const SceneProblem& sp, const BranchSpec& spec, const Scene&
   if (spec.start_state->size() != n || !spec.start_state->allFinite())
     throw InvalidArgument("start_state", "start_state has " + std::to_string(spec.start_state->size()) +
                                              " entries: must be " + std::to_string(n) +
-                                             " finite numbers (the problem's unknowns for --kind " + to_string(spec.kind) + ")");
+                                             " finite numbers (the problem's unknowns for --kind " +
+                                             to_string(spec.kind) + ")");
   return newton_start(sp.problem(), StartMethod::restart, *spec.start_state, get_parameter(scene, spec.parameter),
-                      "solution near the labelled point's state", "the labelled point is not a solution of this problem");
+                      "solution near the labelled point's state",
+                      "the labelled point is not a solution of this problem");
 }
 
 }  // namespace
@@ -53,8 +55,8 @@ StartPoint newton_start(const ContinuationProblem& problem, StartMethod method, 
   s.residual_norm = r.residual_norm;
   if (!r.converged) {
     std::ostringstream m;
-    m << "no " << what << " (Newton residual " << r.residual_norm << " after " << r.iterations
-      << " iterations); " << hint;
+    m << "no " << what << " (Newton residual " << r.residual_norm << " after " << r.iterations << " iterations); "
+      << hint;
     s.message = m.str();
   }
   return s;

@@ -1,9 +1,9 @@
 #pragma once
 // How a scene branch starts (StartPoint, find_start): the kind's start or a restart's given state, solved
 // by Newton where the kind needs it, with its certified stability.
-#include "rbcstab/continuation/dense.hpp"
 #include <limits>
 #include <string>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/branch_spec.hpp"
 #include "rbcstab/continuation/continuation.hpp"
@@ -25,17 +25,17 @@ struct EnumTable<StartMethod> {
 };
 struct StartPoint {
   StartMethod method = StartMethod::relaxed;
-  Eigen::VectorXd x;  // the problem's unknowns (orbits: the shooting vector)
-  double p = 0;       // the free parameter's start value
-  bool newton = false;      // Newton at fixed p solved x (full, orbits)
-  bool converged = true;    // false: no solution near the start state; message says which
+  Eigen::VectorXd x;      // the problem's unknowns (orbits: the shooting vector)
+  double p = 0;           // the free parameter's start value
+  bool newton = false;    // Newton at fixed p solved x (full, orbits)
+  bool converged = true;  // false: no solution near the start state; message says which
   int iterations = 0;
   double residual_norm = 0;
   // Orbits: the relaxation before Newton (BranchSpec::relax_tol).
   int relaxation_periods = 0;  // forcing periods relaxed in all (relax_T's and the adaptive ones)
   double periodicity_defect = std::numeric_limits<double>::quiet_NaN();  // of the last period relaxed
   double periodicity_tol = std::numeric_limits<double>::quiet_NaN();     // spec.relax_tol
-  bool relaxed = false;        // the defect fell below the tolerance within relax_max_periods
+  bool relaxed = false;  // the defect fell below the tolerance within relax_max_periods
   // The solution's stability at the start (equilibria: after Newton at fixed p from x), certified as
   // every branch point is (certify_solution); stable and n_unstable as BranchPoint's.
   bool stable = true;

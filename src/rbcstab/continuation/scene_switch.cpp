@@ -94,7 +94,8 @@ SwitchedBranch switch_at_bp(const SceneBranch& from, int k) { return switch_at_b
 
 SwitchedBranch switch_at_bp(const SceneBranch& from, int k, const BranchSwitchOptions& options) {
   require_switchable(from.spec.kind);
-  return switch_with(*make_problem(from.spec, from.problem_scene), from, from.branch, k, options, run_last_label(from) + 1);
+  return switch_with(*make_problem(from.spec, from.problem_scene), from, from.branch, k, options,
+                     run_last_label(from) + 1);
 }
 
 }  // namespace rbcstab

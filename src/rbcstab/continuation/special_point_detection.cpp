@@ -21,9 +21,12 @@ bool Engine::neutral(const Pt& q, int slot) const {
   const Eigen::VectorXcd& s = q.spectrum;
   for (Eigen::Index i = 0; i < s.size(); ++i) {
     double d = 0;
-    if (!cycles_) d = s[i].imag() != 0 ? std::abs(s[i].real()) : std::numeric_limits<double>::infinity();
-    else if (slot == 2) d = s[i].imag() != 0 ? std::abs(std::abs(s[i]) - 1) : std::numeric_limits<double>::infinity();
-    else d = std::abs(s[i] + 1.0);
+    if (!cycles_)
+      d = s[i].imag() != 0 ? std::abs(s[i].real()) : std::numeric_limits<double>::infinity();
+    else if (slot == 2)
+      d = s[i].imag() != 0 ? std::abs(std::abs(s[i]) - 1) : std::numeric_limits<double>::infinity();
+    else
+      d = std::abs(s[i] + 1.0);
     if (d <= o_.stability_tol) return true;
   }
   return false;
@@ -31,10 +34,14 @@ bool Engine::neutral(const Pt& q, int slot) const {
 
 SpecialPointType Engine::slot_type(int slot) const {
   switch (slot) {
-    case 0: return cycles_ ? SpecialPointType::LPC : SpecialPointType::LP;
-    case 1: return SpecialPointType::BP;
-    case 2: return cycles_ ? SpecialPointType::NS : SpecialPointType::HB;
-    default: return SpecialPointType::PD;
+    case 0:
+      return cycles_ ? SpecialPointType::LPC : SpecialPointType::LP;
+    case 1:
+      return SpecialPointType::BP;
+    case 2:
+      return cycles_ ? SpecialPointType::NS : SpecialPointType::HB;
+    default:
+      return SpecialPointType::PD;
   }
 }
 
@@ -58,7 +65,8 @@ bool Engine::locate(const Pt& a, const Pt& b, int slot, int event, std::size_t a
     double s = s_lo - g_lo * (s_hi - s_lo) / (g_hi - g_lo);
     const double w = s_hi - s_lo;
     // Safeguard: stay inside the bracket and away from its ends; bisect every third step.
-    if (!std::isfinite(s) || std::abs(s - s_lo) < 1e-3 * std::abs(w) || std::abs(s_hi - s) < 1e-3 * std::abs(w) || it % 3 == 2)
+    if (!std::isfinite(s) || std::abs(s - s_lo) < 1e-3 * std::abs(w) || std::abs(s_hi - s) < 1e-3 * std::abs(w) ||
+        it % 3 == 2)
       s = 0.5 * (s_lo + s_hi);
     Pt q;
     if (!probe(a, s, q)) break;
@@ -103,9 +111,12 @@ bool Engine::locate(const Pt& a, const Pt& b, int slot, int event, std::size_t a
     double dist = std::numeric_limits<double>::infinity();
     for (Eigen::Index i = 0; i < s.size(); ++i) {
       double d = 0;
-      if (!cycles_) d = std::abs(s[i].real()) + (s[i].imag() > 0 ? 0.0 : 1e300);
-      else if (slot == 2) d = std::abs(std::abs(s[i]) - 1) + (s[i].imag() > 0 ? 0.0 : 1e300);
-      else d = std::abs(s[i] + 1.0);
+      if (!cycles_)
+        d = std::abs(s[i].real()) + (s[i].imag() > 0 ? 0.0 : 1e300);
+      else if (slot == 2)
+        d = std::abs(std::abs(s[i]) - 1) + (s[i].imag() > 0 ? 0.0 : 1e300);
+      else
+        d = std::abs(s[i] + 1.0);
       if (d < dist) dist = d, k = i;
     }
     if (!(dist < 1e-4 * (1 + std::abs(s[k])))) return false;

@@ -41,7 +41,8 @@ Eigen::VectorXd state_perturbation(const Eigen::VectorXd& step, double tol) {
   if (size >= tol) return step;
   if (size > 0) return step * (tol / size);
   Eigen::VectorXd d(step.size());
-  for (Eigen::Index i = 0; i < d.size(); ++i) d[i] = (i % 2 == 0 ? 1.0 : -1.0) * (1 + static_cast<double>(i) / static_cast<double>(d.size()));
+  for (Eigen::Index i = 0; i < d.size(); ++i)
+    d[i] = (i % 2 == 0 ? 1.0 : -1.0) * (1 + static_cast<double>(i) / static_cast<double>(d.size()));
   return d * (tol / d.lpNorm<Eigen::Infinity>());
 }
 
@@ -77,7 +78,8 @@ StabilityCertificate certify(const CertifiedSpectrum& spectrum, StabilityKind ki
     hi = std::max(hi, ai + e);
   }
   c.margin = s.allFinite() ? -a : std::numeric_limits<double>::quiet_NaN();
-  c.margin_error = known && std::isfinite(c.margin) ? std::max(hi - a, a - lo) : std::numeric_limits<double>::quiet_NaN();
+  c.margin_error =
+      known && std::isfinite(c.margin) ? std::max(hi - a, a - lo) : std::numeric_limits<double>::quiet_NaN();
   c.stability = label(c.margin, c.margin_error);
   return c;
 }

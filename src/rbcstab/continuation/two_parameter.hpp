@@ -68,7 +68,9 @@ class SceneTwoParameterProblem final : public TwoParameterProblem {
     at(p2).parameter_derivative(x, p1, Fp);
   }
   // The dynamics' spectrum on the sphere's tangent plane (not the Newton system's Jacobian).
-  Eigen::VectorXcd spectrum(const Eigen::VectorXd& x, double p1, double p2) const override { return at(p2).spectrum(x, p1); }
+  Eigen::VectorXcd spectrum(const Eigen::VectorXd& x, double p1, double p2) const override {
+    return at(p2).spectrum(x, p1);
+  }
   CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& x, double p1, double p2, bool refine) const override {
     return at(p2).certified_spectrum(x, p1, refine);
   }
@@ -93,7 +95,8 @@ class ReducedForcedSystem2 final : public ForcedSystem2 {
   void jacobian(double t, std::span<const double> x, double p1, double p2, Eigen::MatrixXd& J) const override {
     by_.at(p2).jacobian(t, x, p1, J);
   }
-  void parameter_derivative(double t, std::span<const double> x, double p1, double p2, std::span<double> fp) const override {
+  void parameter_derivative(double t, std::span<const double> x, double p1, double p2,
+                            std::span<double> fp) const override {
     by_.at(p2).parameter_derivative(t, x, p1, fp);  // analytic in p1
   }
   bool conserves_norm() const override { return true; }
@@ -119,7 +122,8 @@ class ModalForcedSystem2 final : public ForcedSystem2 {
   void jacobian(double t, std::span<const double> x, double p1, double p2, Eigen::MatrixXd& J) const override {
     by_.at(p2).jacobian(t, x, p1, J);
   }
-  void parameter_derivative(double t, std::span<const double> x, double p1, double p2, std::span<double> fp) const override {
+  void parameter_derivative(double t, std::span<const double> x, double p1, double p2,
+                            std::span<double> fp) const override {
     by_.at(p2).parameter_derivative(t, x, p1, fp);  // exact in x (modal_orbit.hpp)
   }
   bool conserves_norm() const override { return true; }

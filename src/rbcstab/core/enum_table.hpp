@@ -28,7 +28,9 @@ template <class E>
 struct EnumTable;  // specialised next to each enum
 
 template <class E>
-concept TabledEnum = std::is_enum_v<E> && requires { EnumTable<E>::entries; };
+concept TabledEnum = std::is_enum_v<E> && requires {
+  EnumTable<E>::entries;
+};
 
 // Every name is distinct (else from_string would be ambiguous) and the values the table names are
 // 0, 1, ..., n - 1 with none skipped (the enums here are contiguous from 0: a gap is a forgotten value).
@@ -80,7 +82,8 @@ std::optional<E> try_from_string(std::string_view name) {
 }
 
 // Throws InvalidArgument(key, "<key> = '<name>' is not one of: <allowed, comma-separated>").
-[[noreturn]] void throw_not_one_of(std::string_view key, std::string_view name, const std::vector<std::string>& allowed);
+[[noreturn]] void throw_not_one_of(std::string_view key, std::string_view name,
+                                   const std::vector<std::string>& allowed);
 
 // The value named name (canonical or alias); otherwise InvalidArgument naming key, name and the
 // canonical names.

@@ -20,7 +20,8 @@ class StopOnSignal {
   const std::atomic<bool>* flag() const;
 
  private:
-  struct sigaction previous_int_ {}, previous_term_ {};
+  struct sigaction previous_int_ {
+  }, previous_term_{};
 };
 
 }  // namespace rbcstab

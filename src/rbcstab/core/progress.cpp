@@ -22,14 +22,16 @@ double Throttle::elapsed() const { return std::chrono::duration<double>(Clock::n
 
 std::string duration_text(double s) {
   std::ostringstream ss;
-  if (s >= 3600) ss << int(s / 3600) << "h" << std::setw(2) << std::setfill('0') << int(s / 60) % 60 << "m";
-  else if (s >= 60) ss << int(s / 60) << "m" << std::setw(2) << std::setfill('0') << int(s) % 60 << "s";
-  else ss << std::fixed << std::setprecision(1) << s << "s";
+  if (s >= 3600)
+    ss << int(s / 3600) << "h" << std::setw(2) << std::setfill('0') << int(s / 60) % 60 << "m";
+  else if (s >= 60)
+    ss << int(s / 60) << "m" << std::setw(2) << std::setfill('0') << int(s) % 60 << "s";
+  else
+    ss << std::fixed << std::setprecision(1) << s << "s";
   return ss.str();
 }
 
-std::string progress_text(const std::string& what, const std::string& unit, double done, double total,
-                          double elapsed) {
+std::string progress_text(const std::string& what, const std::string& unit, double done, double total, double elapsed) {
   std::ostringstream line;
   line << std::setprecision(6) << what << " " << done;
   if (total > 0) line << " of " << total;

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <mutex>
 #include <memory>
+#include <mutex>
 #include <optional>
 
 #include "rbcstab/core/error.hpp"
@@ -19,14 +19,22 @@ namespace rbcstab {
 namespace {
 const gsl_odeiv2_step_type* gsl_type(Stepper s) {
   switch (s) {
-    case Stepper::rk8pd: return gsl_odeiv2_step_rk8pd;  // not asked: integrate() steps rk8pd itself
-    case Stepper::rkck: return gsl_odeiv2_step_rkck;
-    case Stepper::rkf45: return gsl_odeiv2_step_rkf45;
-    case Stepper::msadams: return gsl_odeiv2_step_msadams;
-    case Stepper::rosenbrock: return detail::rosenbrock_step_type();
-    case Stepper::msbdf: return gsl_odeiv2_step_msbdf;
-    case Stepper::bsimp: return gsl_odeiv2_step_bsimp;
-    case Stepper::rk4imp: return gsl_odeiv2_step_rk4imp;
+    case Stepper::rk8pd:
+      return gsl_odeiv2_step_rk8pd;  // not asked: integrate() steps rk8pd itself
+    case Stepper::rkck:
+      return gsl_odeiv2_step_rkck;
+    case Stepper::rkf45:
+      return gsl_odeiv2_step_rkf45;
+    case Stepper::msadams:
+      return gsl_odeiv2_step_msadams;
+    case Stepper::rosenbrock:
+      return detail::rosenbrock_step_type();
+    case Stepper::msbdf:
+      return gsl_odeiv2_step_msbdf;
+    case Stepper::bsimp:
+      return gsl_odeiv2_step_bsimp;
+    case Stepper::rk4imp:
+      return gsl_odeiv2_step_rk4imp;
   }
   return gsl_odeiv2_step_rk8pd;
 }
@@ -100,7 +108,8 @@ class GslEvolver final : public Evolver {
 class PrinceDormandEvolver final : public Evolver {
  public:
   PrinceDormandEvolver(detail::GslContext& ctx, std::optional<CompactForm> form, const IntegratorOptions& o)
-      : form_(std::move(form)), x_(form_ ? form_->x0 : std::vector<double>{}),
+      : form_(std::move(form)),
+        x_(form_ ? form_->x0 : std::vector<double>{}),
         stepper_(form_ ? x_.size() : ctx.system->dimension(), form_ ? compact_rhs : gsl_rhs, &ctx, o.atol, o.rtol,
                  form_ ? &*form_ : nullptr) {
     ctx.form = form_ ? &*form_ : nullptr;
@@ -155,11 +164,13 @@ bool is_implicit(Stepper s) {
     case Stepper::rk8pd:
     case Stepper::rkck:
     case Stepper::rkf45:
-    case Stepper::msadams: return false;
+    case Stepper::msadams:
+      return false;
     case Stepper::rosenbrock:
     case Stepper::msbdf:
     case Stepper::bsimp:
-    case Stepper::rk4imp: return true;
+    case Stepper::rk4imp:
+      return true;
   }
   return false;
 }
@@ -167,9 +178,12 @@ bool is_implicit(Stepper s) {
 int dense_matrices(Stepper s) {
   switch (s) {
     case Stepper::msbdf:
-    case Stepper::bsimp: return 2;
-    case Stepper::rk4imp: return 5;
-    default: return 0;
+    case Stepper::bsimp:
+      return 2;
+    case Stepper::rk4imp:
+      return 5;
+    default:
+      return 0;
   }
 }
 
@@ -177,11 +191,12 @@ void require_dense_dimension(Stepper s, std::size_t n, const std::string& system
   const int k = dense_matrices(s);
   if (k == 0 || n <= kMaxDenseDimension) return;
   auto gb = [k](double dim) { return format_bytes(double(k) * dim * dim * 8); };
-  throw InvalidArgument("stepper", "stepper = " + to_string(s) + " on " + system + " keeps " + std::to_string(k) +
-                                       " dense " + std::to_string(n) + " x " + std::to_string(n) +
-                                       " matrices, about " + gb(double(n)) + ": it is allowed up to dimension " +
-                                       std::to_string(kMaxDenseDimension) + " (" + gb(double(kMaxDenseDimension)) +
-                                       "): use rosenbrock (O(n) structured solves), an explicit stepper, or the modal level");
+  throw InvalidArgument("stepper",
+                        "stepper = " + to_string(s) + " on " + system + " keeps " + std::to_string(k) + " dense " +
+                            std::to_string(n) + " x " + std::to_string(n) + " matrices, about " + gb(double(n)) +
+                            ": it is allowed up to dimension " + std::to_string(kMaxDenseDimension) + " (" +
+                            gb(double(kMaxDenseDimension)) +
+                            "): use rosenbrock (O(n) structured solves), an explicit stepper, or the modal level");
 }
 
 void IntegratorOptions::validate() const {
@@ -194,10 +209,9 @@ void IntegratorOptions::validate() const {
   require(std::isfinite(max_seconds) && max_seconds >= 0, "max_seconds", max_seconds, "finite and >= 0 (0: no limit)");
 }
 
-IntegrationResult integrate(const System& system, std::span<const double> y0, double t0,
-                            std::span<const double> grid, const IntegratorOptions& options,
-                            const StateObserver& on_sample, const StateObserver& on_step,
-                            const StopCondition& stop) {
+IntegrationResult integrate(const System& system, std::span<const double> y0, double t0, std::span<const double> grid,
+                            const IntegratorOptions& options, const StateObserver& on_sample,
+                            const StateObserver& on_step, const StopCondition& stop) {
   options.validate();
   const std::size_t n = system.dimension();
   require(y0.size() == n, "y0", double(y0.size()), "of the system's dimension " + std::to_string(n));
@@ -249,8 +263,8 @@ IntegrationResult integrate(const System& system, std::span<const double> y0, do
       if (rc != GSL_SUCCESS) {
         const bool tiny = std::abs(h) < options.h_min;
         fail(tiny ? IntegrationStatus::step_size_underflow : IntegrationStatus::solver_error,
-             to_string(options.stepper) + " failed at t = " + format_value(t) + " (h = " +
-                 format_value(h) + "): " + gsl_strerror(rc));
+             to_string(options.stepper) + " failed at t = " + format_value(t) + " (h = " + format_value(h) +
+                 "): " + gsl_strerror(rc));
         break;
       }
       ++result.counters.steps;
@@ -264,8 +278,9 @@ IntegrationResult integrate(const System& system, std::span<const double> y0, do
         break;
       }
       if (t < target && std::abs(h) < options.h_min && ctx.nonfinite_rhs > nonfinite_before) {
-        fail(IntegrationStatus::non_finite_state, "the right-hand side is non-finite just beyond t = " + format_value(t) +
-                                                      " (the step size fell to " + format_value(h) + ")");
+        fail(IntegrationStatus::non_finite_state,
+             "the right-hand side is non-finite just beyond t = " + format_value(t) + " (the step size fell to " +
+                 format_value(h) + ")");
         break;
       }
       if (t < target && std::abs(h) < options.h_min) {

@@ -43,8 +43,7 @@ class WithQuadratures final : public System {
   std::optional<CompactForm> compact_form(std::span<const double> y0) const override;
   // The base's x' then q' = g(t, y, F) at the base state y and rate F the form rebuilds. Uses a scratch of this
   // object: one integration at a time (as every use here).
-  void compact_rhs(double t, std::span<const double> x, const CompactForm& form,
-                   std::span<double> dxdt) const override;
+  void compact_rhs(double t, std::span<const double> x, const CompactForm& form, std::span<double> dxdt) const override;
 
  private:
   const System& base_;

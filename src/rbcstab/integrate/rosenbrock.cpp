@@ -76,8 +76,8 @@ int ros_apply(void* vstate, std::size_t n, double t, double h, double y[], doubl
   return GSL_SUCCESS;
 }
 
-const gsl_odeiv2_step_type kRosenbrock = {"rosenbrock", 1, 1, ros_alloc, ros_apply, ros_set_driver,
-                                          ros_reset,    ros_order, ros_free};
+const gsl_odeiv2_step_type kRosenbrock = {"rosenbrock",   1,         1,         ros_alloc, ros_apply,
+                                          ros_set_driver, ros_reset, ros_order, ros_free};
 }  // namespace
 
 const gsl_odeiv2_step_type* rosenbrock_step_type() { return &kRosenbrock; }

@@ -16,9 +16,10 @@ void SimulationOptions::validate() const {
   require(to_string(tail_means) != "?", "tail_means", double(static_cast<int>(tail_means)),
           "one of grid, quadrature, none");
   if (tail_means == TailMeans::quadrature && is_implicit(integrator.stepper))
-    throw InvalidArgument("tail_means", "tail_means = quadrature needs an explicit stepper (the quadrature rows have "
-                                        "no Jacobian), not stepper = " + to_string(integrator.stepper) +
-                                            ": use tail_means = grid");
+    throw InvalidArgument("tail_means",
+                          "tail_means = quadrature needs an explicit stepper (the quadrature rows have "
+                          "no Jacobian), not stepper = " +
+                              to_string(integrator.stepper) + ": use tail_means = grid");
 }
 
 ModeAmplitudes final_amplitudes(const Scene& scene, const SimulationResult& result) {
@@ -57,7 +58,8 @@ void require_memory(const Scene& scene, const SimulationOptions& options, ModelL
                                   format_bytes(kMaxTrajectoryBytes) + ": raise dt, or lower T or L");
 }
 
-constexpr int kTailIntervals = 160;  // Simpson on the tail window: measured error ~1e-8 relative on the in-plane Fig. 3 scene
+constexpr int kTailIntervals =
+    160;  // Simpson on the tail window: measured error ~1e-8 relative on the in-plane Fig. 3 scene
 
 // Delta_2 rises and falls over its samples by more than rounding.
 bool oscillates(const std::vector<double>& Delta2, double Delta) {
@@ -228,8 +230,8 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
     std::vector<double> yq = r.y;
     yq.resize(with_tail_integrals.dimension(), 0.0);
     tail_from = r.t_reached;
-    IntegrationResult w = integrate(with_tail_integrals, yq, r.t_reached, {window, times.end()}, in_window, on_sample,
-                                    on_step);
+    IntegrationResult w =
+        integrate(with_tail_integrals, yq, r.t_reached, {window, times.end()}, in_window, on_sample, on_step);
     tail_integrals.assign(w.y.begin() + std::ptrdiff_t(n), w.y.end());
     w.y.resize(n);
     append(r, std::move(w));
@@ -244,8 +246,8 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
     res.early.terminated_at = ir.t_reached;
     res.early.resumed_at = jump.t;
     Psi += jump.Psi_advance;
-    user_index = std::size_t(std::lower_bound(user_grid.begin(), user_grid.end(), jump.t - 1e-12 * scene.T) -
-                             user_grid.begin());
+    user_index =
+        std::size_t(std::lower_bound(user_grid.begin(), user_grid.end(), jump.t - 1e-12 * scene.T) - user_grid.begin());
     const std::vector<double> rest(std::lower_bound(grid.begin(), grid.end(), jump.t), grid.end());
     append(ir, run(jump.t, jump.y, rest, remaining(options.integrator, ir), {}));
   }

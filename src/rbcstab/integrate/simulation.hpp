@@ -35,9 +35,9 @@ struct EnumTable<TailMeans> {
 };
 
 struct SimulationOptions {
-  IntegratorOptions integrator;  // stepper, tolerances, limits
-  double tail_window = 10;       // Delta_l averaged over [T - tail_window, T] (Appendix E)
-  bool record_trajectory = true; // keep the samples on the output grid
+  IntegratorOptions integrator;   // stepper, tolerances, limits
+  double tail_window = 10;        // Delta_l averaged over [T - tail_window, T] (Appendix E)
+  bool record_trajectory = true;  // keep the samples on the output grid
   // Called after every accepted step with the observables there (the truncation check reads sigma(t) from
   // them); empty: not called.
   std::function<void(double t, const Observation& o)> on_step{};
@@ -70,17 +70,17 @@ struct EarlyTermination {
   static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   bool terminated = false;
   double terminated_at = nan, resumed_at = nan;
-  std::string note;                  // why the run was integrated to T (empty when it terminated early)
-  std::string kind;                  // "periodic_orbit" or "equilibrium" (time-independent forcing)
-  double period = nan;               // of the forcing (the orbit's period or a multiple of it)
-  double margin = nan;               // 1 - max |mu| over the nontrivial Floquet multipliers
-  double margin_error = nan;         // its error bound (certify, continuation.hpp)
-  double rate = nan;                 // -ln(max |mu|) / period: the slowest decay rate
-  double residual = nan;             // periodicity defect |phi(x*) - x*| of the refined state x*
-  double distance = nan;             // |x(terminated_at) - x*| in the level's regular coordinates (|x| = 1)
-  double decay_bound = nan;          // linear bound on |x - x*| at resumed_at (the error the skip makes)
-  int attempts = 0;                  // certification attempts, failed ones included
-  IntegrationCounters work;          // the attempts' integrations (not in SimulationResult::counters)
+  std::string note;           // why the run was integrated to T (empty when it terminated early)
+  std::string kind;           // "periodic_orbit" or "equilibrium" (time-independent forcing)
+  double period = nan;        // of the forcing (the orbit's period or a multiple of it)
+  double margin = nan;        // 1 - max |mu| over the nontrivial Floquet multipliers
+  double margin_error = nan;  // its error bound (certify, continuation.hpp)
+  double rate = nan;          // -ln(max |mu|) / period: the slowest decay rate
+  double residual = nan;      // periodicity defect |phi(x*) - x*| of the refined state x*
+  double distance = nan;      // |x(terminated_at) - x*| in the level's regular coordinates (|x| = 1)
+  double decay_bound = nan;   // linear bound on |x - x*| at resumed_at (the error the skip makes)
+  int attempts = 0;           // certification attempts, failed ones included
+  IntegrationCounters work;   // the attempts' integrations (not in SimulationResult::counters)
 };
 
 // Where the run resumes after a certified attractor, and how the unwrapped Psi moved meanwhile.
@@ -115,9 +115,9 @@ struct SimulationResult {
   int l_Delta_final = 2;           // the same with X = Delta_l(T)
   double sigma_initial = 0, sigma_final = 0, sigma_tail_mean = 0;
   double r_final = 0, Psi_final = 0;
-  double excess_area_drift = 0;    // max over accepted steps of |sum_l Delta_l(t) - sum_l Delta_l(0)|
+  double excess_area_drift = 0;  // max over accepted steps of |sum_l Delta_l(t) - sum_l Delta_l(0)|
   Trajectory trajectory;
-  EarlyTermination early;          // empty unless an attractor certifier was given
+  EarlyTermination early;  // empty unless an attractor certifier was given
   IntegrationCounters counters;
   double seconds = 0;
   std::vector<double> y_final;
@@ -139,7 +139,6 @@ ModeAmplitudes final_amplitudes(const Scene& scene, const SimulationResult& resu
 
 // Regular-grid helper: 0, dt, 2 dt, ..., T (T always included).
 std::vector<double> sampling_grid(double T, double dt);
-
 
 // r.reason, and for a run whose state became non-finite, the inputs that made it overflow (nonfinite_reason).
 std::string run_reason(const SimulationResult& r, const Parameters& p);

@@ -80,12 +80,11 @@ WorkPrecisionTable work_precision(const Scene& scene, const WorkPrecisionOptions
     for (Stepper stepper : options.steppers)
       for (double rtol : options.rtols) {
         const SimulationResult r = run(scene, level, stepper, rtol, rtol * options.atol_ratio, options.max_seconds);
-        table.rows.push_back({level, stepper, rtol, r.status, r.counters.rhs_evaluations, r.counters.jacobian_evaluations,
-                              r.counters.steps, r.seconds,
+        table.rows.push_back({level, stepper, rtol, r.status, r.counters.rhs_evaluations,
+                              r.counters.jacobian_evaluations, r.counters.steps, r.seconds,
                               relative_error(r.Delta_final, ref.Delta_final, scene.parameters.Delta),
                               std::abs(r.sigma_final - ref.sigma_final) / std::max(1.0, std::abs(ref.sigma_final)),
-                              r.l_Delta, r.status == IntegrationStatus::success && r.l_Delta != ref.l_Delta,
-                              r.reason});
+                              r.l_Delta, r.status == IntegrationStatus::success && r.l_Delta != ref.l_Delta, r.reason});
         progress();
       }
   return table;

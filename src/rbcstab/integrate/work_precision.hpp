@@ -13,8 +13,8 @@ struct WorkPrecisionOptions {
   std::vector<ModelLevel> levels{ModelLevel::modal, ModelLevel::full};  // exact levels to compare
   std::vector<Stepper> steppers{Stepper::rk8pd, Stepper::rkck, Stepper::rosenbrock, Stepper::msbdf};
   std::vector<double> rtols{1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
-  double atol_ratio = 1e-4;    // atol = atol_ratio * rtol: the relative test dominates for O(1) states
-  double max_seconds = 30;     // per run: an expensive combination ends as time_limit, not a stall
+  double atol_ratio = 1e-4;  // atol = atol_ratio * rtol: the relative test dominates for O(1) states
+  double max_seconds = 30;   // per run: an expensive combination ends as time_limit, not a stall
   double reference_rtol = 1e-13;
   ProgressCallback on_progress;  // runs done of all (the two references, then every row)
   void validate() const;
@@ -30,8 +30,9 @@ struct WorkPrecisionRow {
   double error_Delta = 0;  // max over l with Delta_l(T) > 1e-8 Delta of |Delta_l(T) - ref| / ref
   double error_sigma = 0;  // |sigma(T) - ref| / max(1, |ref|)
   int l_Delta = 2;
-  bool verdict_changed = false;  // l_Delta differs from the reference's (runs that reached T only: a stopped run has no verdict)
-  std::string reason;            // the integrator's message when status is not success
+  bool verdict_changed =
+      false;           // l_Delta differs from the reference's (runs that reached T only: a stopped run has no verdict)
+  std::string reason;  // the integrator's message when status is not success
 };
 
 struct WorkPrecisionTable {
@@ -41,7 +42,7 @@ struct WorkPrecisionTable {
   int reference_l_Delta = 2;
   ModelLevel reference_level = ModelLevel::full;
   double reference_rtol = 1e-13;  // the references' tolerance (WorkPrecisionOptions::reference_rtol)
-  double reference_spread = 0;  // max relative difference of the two references (full vs modal)
+  double reference_spread = 0;    // max relative difference of the two references (full vs modal)
   // Not success: the reference run stopped (reference_reason says why) and the table has no rows.
   IntegrationStatus reference_status = IntegrationStatus::success;
   std::string reference_reason;

@@ -54,8 +54,8 @@ std::string staging_prefix(const std::string& target_name, const std::string& ta
 void remove_stale_staging(const std::string& folder, const std::string& target_name, const std::string& tag);
 
 // Input files are bounded so that a device or a runaway file cannot hang a run or exhaust memory.
-constexpr std::size_t kMaxSceneBytes = std::size_t(1) << 20;       // a scene file: 1 MiB
-constexpr std::size_t kMaxDataFileBytes = std::size_t(1) << 30;    // a diagram, journal or branch file: 1 GiB
+constexpr std::size_t kMaxSceneBytes = std::size_t(1) << 20;     // a scene file: 1 MiB
+constexpr std::size_t kMaxDataFileBytes = std::size_t(1) << 30;  // a diagram, journal or branch file: 1 GiB
 // The whole of a regular file or a pipe (process substitution) of at most max_bytes. Throws
 // InvalidArgument(parameter, "<parameter> = '<path>' ...") if it is missing, unreadable, a directory or a device,
 // or longer than the bound (reading stops at the bound: /dev/zero through a pipe ends too).

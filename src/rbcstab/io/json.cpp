@@ -85,7 +85,6 @@ nlohmann::json by_mode(const std::vector<double>& values) {
   return j;
 }
 
-
 nlohmann::json to_json(const Parameters& p) {
   Scene s;
   s.parameters = p;
@@ -102,8 +101,11 @@ nlohmann::json to_json(const Scene& s) {
   nlohmann::json dl = nlohmann::json::object(), rl = nlohmann::json::object();
   for (const auto& [l, v] : s.delta_l) dl[std::to_string(l)] = v;
   for (const auto& [l, v] : s.rest_delta_l) rl[std::to_string(l)] = v;
-  return {{"name", s.name}, {"parameters", to_json(s.parameters)}, {"beta", s.beta}, {"delta", s.delta},
-          {"delta_l", dl}, {"rest_delta_l", rl}, {"L", s.L}, {"T", s.T}, {"dt", s.dt}, {"model", to_string(s.model)}};
+  return {{"name", s.name}, {"parameters", to_json(s.parameters)},
+          {"beta", s.beta}, {"delta", s.delta},
+          {"delta_l", dl},  {"rest_delta_l", rl},
+          {"L", s.L},       {"T", s.T},
+          {"dt", s.dt},     {"model", to_string(s.model)}};
 }
 
 nlohmann::json to_json(const PhysicalCell& c) {
@@ -139,11 +141,16 @@ nlohmann::json to_json(const TruncationCheck& c) {
     put_number(m, "Delta_max", d.Delta_max, overflow);
     dropped.push_back(m);
   }
-  nlohmann::json j = {{"L_scene", c.L_scene},   {"L_candidate", c.L_candidate},
-                      {"L_run", c.L_run},       {"dropped", dropped},
-                      {"threshold", c.threshold}, {"t_sigma_shift", c.t_sigma_shift},
-                      {"sigma_tolerance", c.sigma_tolerance}, {"samples", c.samples},
-                      {"passed", c.passed},     {"verdict", c.verdict}};
+  nlohmann::json j = {{"L_scene", c.L_scene},
+                      {"L_candidate", c.L_candidate},
+                      {"L_run", c.L_run},
+                      {"dropped", dropped},
+                      {"threshold", c.threshold},
+                      {"t_sigma_shift", c.t_sigma_shift},
+                      {"sigma_tolerance", c.sigma_tolerance},
+                      {"samples", c.samples},
+                      {"passed", c.passed},
+                      {"verdict", c.verdict}};
   put_number(j, "sigma_shift", c.sigma_shift, "no bound: the dropped modes' area is not small against the kept modes'");
   return j;
 }
@@ -174,36 +181,37 @@ nlohmann::json to_json(const EarlyTermination& e) {
 
 nlohmann::json to_json(const SimulationResult& r) {
   nlohmann::json j = {{"scene", r.scene_name},
-          {"model", to_string(r.level.level)},
-          {"model_exact", r.level.exact},
-          {"model_reason", r.level.reason},
-          {"status", to_string(r.status)},
-          {"reason", r.reason},
-          {"L", r.L},
-          {"T", r.T},
-          {"t_reached", r.t_reached},
-          {"excess_area_total", r.Delta_total_initial},
-          {"excess_area_initial", by_mode(r.Delta_initial)},
-          {"excess_area_final", by_mode(r.Delta_final)},
-          {"excess_area_tail_mean", by_mode(r.Delta_tail_mean)},
-          {"oscillating", r.oscillating},
-          {"l_Delta", r.l_Delta},
-          {"l_Delta_final", r.l_Delta_final},
-          {"sigma_initial", number_or_null(r.sigma_initial)},
-          {"sigma_final", number_or_null(r.sigma_final)},
-          {"sigma_tail_mean", number_or_null(r.sigma_tail_mean)},
-          {"r_final", number_or_null(r.r_final)},
-          {"Psi_final", number_or_null(r.Psi_final)},
-          {"excess_area_drift", number_or_null(r.excess_area_drift)},
-          {"steps", r.counters.steps},
-          {"failed_steps", r.counters.failed_steps},
-          {"rhs_evaluations", r.counters.rhs_evaluations},
-          {"jacobian_evaluations", r.counters.jacobian_evaluations},
-          {"seconds", r.seconds},
-          {"warnings", r.warnings}};
+                      {"model", to_string(r.level.level)},
+                      {"model_exact", r.level.exact},
+                      {"model_reason", r.level.reason},
+                      {"status", to_string(r.status)},
+                      {"reason", r.reason},
+                      {"L", r.L},
+                      {"T", r.T},
+                      {"t_reached", r.t_reached},
+                      {"excess_area_total", r.Delta_total_initial},
+                      {"excess_area_initial", by_mode(r.Delta_initial)},
+                      {"excess_area_final", by_mode(r.Delta_final)},
+                      {"excess_area_tail_mean", by_mode(r.Delta_tail_mean)},
+                      {"oscillating", r.oscillating},
+                      {"l_Delta", r.l_Delta},
+                      {"l_Delta_final", r.l_Delta_final},
+                      {"sigma_initial", number_or_null(r.sigma_initial)},
+                      {"sigma_final", number_or_null(r.sigma_final)},
+                      {"sigma_tail_mean", number_or_null(r.sigma_tail_mean)},
+                      {"r_final", number_or_null(r.r_final)},
+                      {"Psi_final", number_or_null(r.Psi_final)},
+                      {"excess_area_drift", number_or_null(r.excess_area_drift)},
+                      {"steps", r.counters.steps},
+                      {"failed_steps", r.counters.failed_steps},
+                      {"rhs_evaluations", r.counters.rhs_evaluations},
+                      {"jacobian_evaluations", r.counters.jacobian_evaluations},
+                      {"seconds", r.seconds},
+                      {"warnings", r.warnings}};
   j["terminated_at"] = number_or_null(r.early.terminated_at);
   if (!r.early.terminated)
-    j["terminated_at_reason"] = r.early.note.empty() ? "integrated to T (no early termination asked for)" : r.early.note;
+    j["terminated_at_reason"] =
+        r.early.note.empty() ? "integrated to T (no early termination asked for)" : r.early.note;
   j["early_termination"] = to_json(r.early);
   return j;
 }

@@ -1,14 +1,14 @@
 #include "rbcstab/io/scene_file.hpp"
 
+#include <toml++/toml.h>
 #include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <set>
 #include <sstream>
-#include <nlohmann/json.hpp>
-#include <toml++/toml.h>
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/core/text.hpp"
@@ -31,7 +31,12 @@ void merge_modes(std::map<int, double>& into, const SceneValue& v) {
 // field: a generic lambda returning the number's reference in a (const or not) SceneFile.
 template <class Field>
 SceneKey number_key(const char* table, const char* key, const char* flag, const char* help, Field field) {
-  return {table, key, ValueKind::number, flag, help, {},
+  return {table,
+          key,
+          ValueKind::number,
+          flag,
+          help,
+          {},
           [field](const SceneFile& f) { return SceneValue{field(f)}; },
           [field](SceneFile& f, const SceneValue& v) { field(f) = number_of(v); }};
 }
@@ -57,8 +62,7 @@ void add_physical_keys(std::vector<SceneKey>& k) {
        "external (plasma) viscosity eta_ex [Pa s]"},
       {"inner_viscosity", "--inner-viscosity", PhysicalUnit::pascal_second, &PhysicalCell::inner_viscosity,
        "internal (cytoplasm) viscosity eta_in [Pa s]: lambda = eta_in/eta_ex (else --lambda)"},
-      {"radius", "--radius", PhysicalUnit::metre, &PhysicalCell::radius,
-       "radius R [m] (or --area with --volume)"},
+      {"radius", "--radius", PhysicalUnit::metre, &PhysicalCell::radius, "radius R [m] (or --area with --volume)"},
       {"area", "--area", PhysicalUnit::square_metre, &PhysicalCell::area,
        "membrane area A [m^2], with --volume: R = (3V/4 pi)^(1/3), Delta = A/R^2 - 4 pi"},
       {"volume", "--volume", PhysicalUnit::cubic_metre, &PhysicalCell::volume, "cell volume V [m^3], with --area"},
@@ -77,101 +81,140 @@ void add_physical_keys(std::vector<SceneKey>& k) {
     for (const ParameterRow& p : parameter_table())
       if (key == p.name) parameter = &p;
     const std::string help = parameter ? parameter->description : r.help;
-    k.push_back({"physical", r.key, ValueKind::quantity, "",
-                 help + "; a number in " + si_unit(unit) + " or with a unit (" + accepted_units(unit) + ")",
-                 {},
-                 [field](const SceneFile& f) { return SceneValue{f.scene.physical ? (*f.scene.physical).*field : kNotGiven}; },
-                 [field, unit, key, parameter](SceneFile& f, const SceneValue& v) {
-                   double x = kNotGiven;
-                   if (const auto* text = std::get_if<std::string>(&v))
-                     x = parse_quantity(*text, unit, key,
-                                        f.scene.physical ? f.scene.physical->temperature : kNotGiven);
-                   else
-                     x = number_of(v);
-                   if (std::isnan(x)) {
-                     if (f.scene.physical) (*f.scene.physical).*field = x;
-                     return;
-                   }
-                   if (parameter)
-                     require_in(parameter->id, parameter_domain(parameter->id, f.scene.parameters), x);
-                   else
-                     require(std::isfinite(x) && x > 0, key, x, "finite and > 0 (" + si_unit(unit) + ")");
-                   if (!f.scene.physical) f.scene.physical.emplace();
-                   (*f.scene.physical).*field = x;
-                 },
-                 r.flag});
+    k.push_back(
+        {"physical",
+         r.key,
+         ValueKind::quantity,
+         "",
+         help + "; a number in " + si_unit(unit) + " or with a unit (" + accepted_units(unit) + ")",
+         {},
+         [field](const SceneFile& f) { return SceneValue{f.scene.physical ? (*f.scene.physical).*field : kNotGiven}; },
+         [field, unit, key, parameter](SceneFile& f, const SceneValue& v) {
+           double x = kNotGiven;
+           if (const auto* text = std::get_if<std::string>(&v))
+             x = parse_quantity(*text, unit, key, f.scene.physical ? f.scene.physical->temperature : kNotGiven);
+           else
+             x = number_of(v);
+           if (std::isnan(x)) {
+             if (f.scene.physical) (*f.scene.physical).*field = x;
+             return;
+           }
+           if (parameter)
+             require_in(parameter->id, parameter_domain(parameter->id, f.scene.parameters), x);
+           else
+             require(std::isfinite(x) && x > 0, key, x, "finite and > 0 (" + si_unit(unit) + ")");
+           if (!f.scene.physical) f.scene.physical.emplace();
+           (*f.scene.physical).*field = x;
+         },
+         r.flag});
   }
 }
 
 std::vector<SceneKey> make_scene_keys() {
   std::vector<SceneKey> k;
-  k.push_back({"", "name", ValueKind::text, "--name",
+  k.push_back({"",
+               "name",
+               ValueKind::text,
+               "--name",
                "label carried into outputs (JSON \"scene\", plot titles, report headings): one line of printable "
                "text",
-               {}, [](const SceneFile& f) { return SceneValue{f.scene.name}; },
+               {},
+               [](const SceneFile& f) { return SceneValue{f.scene.name}; },
                [](SceneFile& f, const SceneValue& v) { f.scene.name = text_of(v); }});
   for (const ParameterRow& r : parameter_table()) {
     if (!r.table) continue;
     const SceneParameter q = r.id;
-    k.push_back({r.table, r.name, ValueKind::number, std::string("--") + r.name,
-                 std::string(r.description) + ", " + parameter_domain(q, Parameters{}).text(false), {},
+    k.push_back({r.table,
+                 r.name,
+                 ValueKind::number,
+                 std::string("--") + r.name,
+                 std::string(r.description) + ", " + parameter_domain(q, Parameters{}).text(false),
+                 {},
                  [q](const SceneFile& f) { return SceneValue{get_parameter(f.scene, q)}; },
                  [q](SceneFile& f, const SceneValue& v) { set_parameter(f.scene, q, number_of(v)); }});
   }
-  k.push_back({"initial", "delta_l", ValueKind::modes, "--delta-l",
+  k.push_back({"initial",
+               "delta_l",
+               ValueKind::modes,
+               "--delta-l",
                "per-mode perturbation override, l=value or a comma list 3=1e-3,4=2e-3 (repeatable; each mode once)",
-               {}, [](const SceneFile& f) { return SceneValue{f.scene.delta_l}; },
-               [](SceneFile& f, const SceneValue& v) { merge_modes(f.scene.delta_l, v); }});
-  k.push_back({"initial", "rest_delta_l", ValueKind::modes, "--rest-delta-l",
-               "stress-free l >= 3 content Delta0_l, l=value or a comma list (repeatable; each mode once; only the full "
-               "level holds it)",
                {},
-               [](const SceneFile& f) { return SceneValue{f.scene.rest_delta_l}; },
-               [](SceneFile& f, const SceneValue& v) { merge_modes(f.scene.rest_delta_l, v); }});
+               [](const SceneFile& f) { return SceneValue{f.scene.delta_l}; },
+               [](SceneFile& f, const SceneValue& v) { merge_modes(f.scene.delta_l, v); }});
+  k.push_back(
+      {"initial",
+       "rest_delta_l",
+       ValueKind::modes,
+       "--rest-delta-l",
+       "stress-free l >= 3 content Delta0_l, l=value or a comma list (repeatable; each mode once; only the full "
+       "level holds it)",
+       {},
+       [](const SceneFile& f) { return SceneValue{f.scene.rest_delta_l}; },
+       [](SceneFile& f, const SceneValue& v) { merge_modes(f.scene.rest_delta_l, v); }});
   add_physical_keys(k);
-  k.push_back({"run", "L", ValueKind::integer, "--L",
+  k.push_back({"run",
+               "L",
+               ValueKind::integer,
+               "--L",
                "truncation: modes l = 2..L, an integer in [" + std::to_string(kMinL) + ", " + std::to_string(kMaxL) +
                    "]; without --L or run.L each command states its choice (simulate, summary, report, post, "
                    "shape: the smallest L whose dropped modes gain < 1e-4 Delta)",
-               {}, [](const SceneFile& f) { return SceneValue{static_cast<long long>(f.scene.L)}; },
+               {},
+               [](const SceneFile& f) { return SceneValue{static_cast<long long>(f.scene.L)}; },
                [](SceneFile& f, const SceneValue& v) {
                  require_L(integer_of(v));
                  f.scene.L = int(integer_of(v));
                }});
-  k.push_back(number_key("run", "T", "--T", "horizon T, in (0, 1e7]", [](auto& f) -> auto& { return f.scene.T; }));
-  k.push_back(number_key("run", "dt", "--dt", "output sampling interval, in (0, T]",
-                         [](auto& f) -> auto& { return f.scene.dt; }));
+  k.push_back(number_key(
+      "run", "T", "--T", "horizon T, in (0, 1e7]", [](auto& f) -> auto& { return f.scene.T; }));
+  k.push_back(number_key(
+      "run", "dt", "--dt", "output sampling interval, in (0, T]", [](auto& f) -> auto& { return f.scene.dt; }));
   std::vector<std::string> levels;
   for (ModelLevel m : {ModelLevel::automatic, ModelLevel::full, ModelLevel::modal, ModelLevel::reduced})
     levels.push_back(to_string(m));
   k.push_back({"run", "model", ValueKind::name, "--model", "model level", levels,
                [](const SceneFile& f) { return SceneValue{to_string(f.scene.model)}; },
                [](SceneFile& f, const SceneValue& v) { f.scene.model = model_level_from_string(text_of(v)); }});
-  k.push_back(number_key("run", "tail_window", "", "Delta_l are averaged over [T - tail_window, T], > 0",
-                         [](auto& f) -> auto& { return f.options.tail_window; }));
-  k.push_back({"run", "full_horizon", ValueKind::boolean, "",
-               "integrate every run to T: no certified early termination on an attracting orbit", {},
+  k.push_back(number_key(
+      "run", "tail_window", "", "Delta_l are averaged over [T - tail_window, T], > 0",
+      [](auto& f) -> auto& { return f.options.tail_window; }));
+  k.push_back({"run",
+               "full_horizon",
+               ValueKind::boolean,
+               "",
+               "integrate every run to T: no certified early termination on an attracting orbit",
+               {},
                [](const SceneFile& f) { return SceneValue{f.options.full_horizon}; },
                [](SceneFile& f, const SceneValue& v) { f.options.full_horizon = boolean_of(v); }});
-  k.push_back({"integrator", "stepper", ValueKind::name, "--stepper", "time stepper", stepper_names(),
-               [](const SceneFile& f) { return SceneValue{to_string(f.options.integrator.stepper)}; },
-               [](SceneFile& f, const SceneValue& v) { f.options.integrator.stepper = stepper_from_string(text_of(v)); }});
-  k.push_back(number_key("integrator", "rtol", "--rtol", "relative tolerance, in [1e-15, 0.1]",
-                         [](auto& f) -> auto& { return f.options.integrator.rtol; }));
-  k.push_back(number_key("integrator", "atol", "--atol", "absolute tolerance, in [0, 1]",
-                         [](auto& f) -> auto& { return f.options.integrator.atol; }));
-  k.push_back(number_key("integrator", "h_init", "", "first trial step",
-                         [](auto& f) -> auto& { return f.options.integrator.h_init; }));
-  k.push_back(number_key("integrator", "h_min", "", "a smaller step ends the run with status step_size_underflow",
-                         [](auto& f) -> auto& { return f.options.integrator.h_min; }));
-  k.push_back({"integrator", "max_steps", ValueKind::integer, "", "a run never hangs: it ends with status step_limit", {},
+  k.push_back(
+      {"integrator", "stepper", ValueKind::name, "--stepper", "time stepper", stepper_names(),
+       [](const SceneFile& f) { return SceneValue{to_string(f.options.integrator.stepper)}; },
+       [](SceneFile& f, const SceneValue& v) { f.options.integrator.stepper = stepper_from_string(text_of(v)); }});
+  k.push_back(number_key(
+      "integrator", "rtol", "--rtol", "relative tolerance, in [1e-15, 0.1]",
+      [](auto& f) -> auto& { return f.options.integrator.rtol; }));
+  k.push_back(number_key(
+      "integrator", "atol", "--atol", "absolute tolerance, in [0, 1]",
+      [](auto& f) -> auto& { return f.options.integrator.atol; }));
+  k.push_back(number_key(
+      "integrator", "h_init", "", "first trial step", [](auto& f) -> auto& { return f.options.integrator.h_init; }));
+  k.push_back(number_key(
+      "integrator", "h_min", "", "a smaller step ends the run with status step_size_underflow",
+      [](auto& f) -> auto& { return f.options.integrator.h_min; }));
+  k.push_back({"integrator",
+               "max_steps",
+               ValueKind::integer,
+               "",
+               "a run never hangs: it ends with status step_limit",
+               {},
                [](const SceneFile& f) { return SceneValue{static_cast<long long>(f.options.integrator.max_steps)}; },
                [](SceneFile& f, const SceneValue& v) {
                  require(integer_of(v) > 0, "max_steps", double(integer_of(v)), "> 0");
                  f.options.integrator.max_steps = std::size_t(integer_of(v));
                }});
-  k.push_back(number_key("integrator", "max_seconds", "", "wall-clock budget (0 = none): status time_limit",
-                         [](auto& f) -> auto& { return f.options.integrator.max_seconds; }));
+  k.push_back(number_key(
+      "integrator", "max_seconds", "", "wall-clock budget (0 = none): status time_limit",
+      [](auto& f) -> auto& { return f.options.integrator.max_seconds; }));
   return k;
 }
 
@@ -187,7 +230,8 @@ void with_scene_keys(F&& check) {
       if (k.key != bare || k.table.empty()) continue;
       const std::string key = k.table + "." + e.parameter();
       std::string message = e.what();
-      message = message.rfind(e.parameter(), 0) == 0 ? key + message.substr(e.parameter().size()) : key + ": " + message;
+      message =
+          message.rfind(e.parameter(), 0) == 0 ? key + message.substr(e.parameter().size()) : key + ": " + message;
       throw InvalidArgument(key, message);
     }
     throw;
@@ -245,14 +289,20 @@ SceneTable table_of(const std::string& name, const toml::table& t) {
 
 SceneValue read(const SceneTable& t, const SceneKey& k) {
   switch (k.kind) {
-    case ValueKind::number: return t.number(k.key);
-    case ValueKind::integer: return t.integer(k.key);
+    case ValueKind::number:
+      return t.number(k.key);
+    case ValueKind::integer:
+      return t.integer(k.key);
     case ValueKind::name:
-    case ValueKind::text: return t.text(k.key);
-    case ValueKind::modes: return t.modes(k.key);
-    case ValueKind::boolean: return t.boolean(k.key);
+    case ValueKind::text:
+      return t.text(k.key);
+    case ValueKind::modes:
+      return t.modes(k.key);
+    case ValueKind::boolean:
+      return t.boolean(k.key);
     case ValueKind::quantity:
-      if (const auto& items = t.values().at(k.key).items; items.size() == 1 && std::holds_alternative<std::string>(items[0]))
+      if (const auto& items = t.values().at(k.key).items;
+          items.size() == 1 && std::holds_alternative<std::string>(items[0]))
         return t.text(k.key);
       return t.number(k.key);
   }
@@ -311,8 +361,8 @@ std::map<int, double> parse_modes(const std::vector<std::string>& items, const s
       }
       if (eq == std::string::npos || lpos != eq || !v) throw InvalidArgument(flag, flag + " = '" + item + "'" + form);
       if (!out.emplace(l, *v).second)
-        throw InvalidArgument(flag, flag + " = '" + item + "' repeats mode l = " + std::to_string(l) +
-                                        ": give each mode once");
+        throw InvalidArgument(
+            flag, flag + " = '" + item + "' repeats mode l = " + std::to_string(l) + ": give each mode once");
     }
   }
   return out;
@@ -357,8 +407,8 @@ void validate_scene_file(const SceneFile& file) {
       const std::string from = file.origin("name") == Origin::flag   ? "--name"
                                : file.origin("name") == Origin::file ? "the scene file " + file.source
                                                                      : "the default";
-      throw InvalidArgument("name", std::string(e.what()) + " (name = " + quoted_name(file.scene.name) + " from " +
-                                        from + ")");
+      throw InvalidArgument("name",
+                            std::string(e.what()) + " (name = " + quoted_name(file.scene.name) + " from " + from + ")");
     }
     const std::string from = origins_named(file, e.what());
     if (from.empty()) throw;
@@ -396,8 +446,8 @@ void resolve_physical(SceneFile& file) {
       const SceneKey& physical = key_at("physical", input);
       if (file.origin(physical.path()) == Origin::default_value) continue;
       throw InvalidArgument(parameter.path(), given_as(file, parameter) + " and " + given_as(file, physical) +
-                                             " both given: " + d.parameter +
-                                             " follows from the physical values; give one of them");
+                                                  " both given: " + d.parameter +
+                                                  " follows from the physical values; give one of them");
     }
   }
   try {
@@ -478,14 +528,22 @@ std::string to_toml(const SceneFile& file) {
     }
     const SceneValue v = k.get(file);
     switch (k.kind) {
-      case ValueKind::number: t->insert(k.key, number_of(v)); break;
+      case ValueKind::number:
+        t->insert(k.key, number_of(v));
+        break;
       case ValueKind::quantity:
         if (!std::isnan(number_of(v))) t->insert(k.key, number_of(v));
         break;
-      case ValueKind::integer: t->insert(k.key, static_cast<int64_t>(integer_of(v))); break;
+      case ValueKind::integer:
+        t->insert(k.key, static_cast<int64_t>(integer_of(v)));
+        break;
       case ValueKind::name:
-      case ValueKind::text: t->insert(k.key, text_of(v)); break;
-      case ValueKind::boolean: t->insert(k.key, boolean_of(v)); break;
+      case ValueKind::text:
+        t->insert(k.key, text_of(v));
+        break;
+      case ValueKind::boolean:
+        t->insert(k.key, boolean_of(v));
+        break;
       case ValueKind::modes: {
         toml::table m;
         for (const auto& [l, d] : std::get<std::map<int, double>>(v)) m.insert(std::to_string(l), d);

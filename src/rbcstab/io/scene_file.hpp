@@ -26,9 +26,9 @@ struct TruncationCheck {
     double Delta_max = 0;  // upper bound of max_t Delta_l(t) along the run's sigma(t)
     double t_max = 0;      // where that bound is reached
   };
-  int L_scene = 10;        // the scene's L: the seeded modes l = 3..L_scene
-  int L_candidate = 10;    // the L the a priori rule proposed and that was run first
-  int L_run = 10;          // the L of the run the outputs come from (L_candidate if passed, else L_scene)
+  int L_scene = 10;                  // the scene's L: the seeded modes l = 3..L_scene
+  int L_candidate = 10;              // the L the a priori rule proposed and that was run first
+  int L_run = 10;                    // the L of the run the outputs come from (L_candidate if passed, else L_scene)
   std::vector<DroppedMode> dropped;  // l = L_candidate + 1..L_scene
   double threshold = 0;    // a dropped mode must stay below delta_l + threshold (tolerance * Delta) at every t
   double sigma_shift = 0;  // upper bound of |sigma_scene(t) - sigma_run(t)| from the dropped modes' area
@@ -36,7 +36,7 @@ struct TruncationCheck {
   double sigma_tolerance = 0;  // tolerance * max_t |sigma_run(t)|
   std::size_t samples = 0;     // accepted steps of the run the check read
   bool passed = false;
-  std::string verdict;     // one line: what passed or what failed
+  std::string verdict;  // one line: what passed or what failed
 };
 
 struct SceneFile {
@@ -68,7 +68,7 @@ using SceneValue = std::variant<double, long long, std::string, std::map<int, do
 // (model/parameter_table.hpp), then the run and integrator options. The parser, to_toml, the provenance and the
 // command-line flags are all made from these rows.
 struct SceneKey {
-  std::string table, key;          // "parameters", "B"; table "" for the root's "name"
+  std::string table, key;  // "parameters", "B"; table "" for the root's "name"
   ValueKind kind = ValueKind::number;
   std::string flag;                // "--B", "--delta-l"; "" when only a file sets it (a boolean's flag sets it true)
   std::string help;                // one line for --help: meaning and range

@@ -37,8 +37,8 @@ std::string units_text(const UnitsAnswer& a) {
   for (const auto& [key, v] : given.items()) {
     bool derived = false;
     for (const std::string& d : a.derived_physical) derived = derived || d == key;
-    out << "  " << std::left << std::setw(20) << key << v.get<double>() << (derived ? "  (from the dimensionless input)" : "")
-        << "\n";
+    out << "  " << std::left << std::setw(20) << key << v.get<double>()
+        << (derived ? "  (from the dimensionless input)" : "") << "\n";
   }
   out << "Dimensionless numbers (paper Sec. II):\n";
   for (const NumberFormula& f : number_formulas()) {

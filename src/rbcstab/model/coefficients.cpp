@@ -78,9 +78,8 @@ std::vector<double> wigner_column(int l, double beta) {
       double p_curr = std::sqrt(2.0 * m + 1) * x * pmm;  // P~_{m+1}^m
       for (int k = m + 2; k <= l; ++k) {
         const double kk = k;
-        const double next =
-            ((2 * kk - 1) * x * p_curr - std::sqrt((kk - 1) * (kk - 1) - double(m) * m) * p_prev) /
-            std::sqrt(kk * kk - double(m) * m);
+        const double next = ((2 * kk - 1) * x * p_curr - std::sqrt((kk - 1) * (kk - 1) - double(m) * m) * p_prev) /
+                            std::sqrt(kk * kk - double(m) * m);
         p_prev = p_curr;
         p_curr = next;
       }

@@ -8,8 +8,7 @@ namespace rbcstab {
 
 FullModel::FullModel(const Parameters& p, const InitialState& init) : p_(p), L_(init.f.L) {
   p_.validate();
-  for (int l = 2; l <= L_; ++l)
-    modes_.push_back({Upsilon_l(p, l), Gamma3(p.lambda, l) * p.inv_C(), a_l(l)});
+  for (int l = 2; l <= L_; ++l) modes_.push_back({Upsilon_l(p, l), Gamma3(p.lambda, l) * p.inv_C(), a_l(l)});
   const std::size_t n = ModeAmplitudes::count(L_);
   C_.resize(n);
   g0_.assign(n, 0.0);

@@ -34,8 +34,8 @@ class FullModel final : public System {
   AreaBalance balance(std::span<const double> y, const std::vector<std::complex<double>>& S) const;
   Parameters p_;
   int L_;
-  std::vector<ModeData> modes_;                  // index l - 2
-  std::vector<std::complex<double>> C_, g0_;     // C_{l,m}, g_{l,m}(0)
+  std::vector<ModeData> modes_;               // index l - 2
+  std::vector<std::complex<double>> C_, g0_;  // C_{l,m}, g_{l,m}(0)
   std::vector<double> y0_;
 };
 

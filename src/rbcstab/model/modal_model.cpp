@@ -155,7 +155,8 @@ Observation ModalModel::observe(double t, std::span<const double> y) const {
   Observation o;
   o.Delta_l.assign(L_ - 1, 0.0);
   o.Delta_l[0] = 2 * (y[0] * y[0] + 2 * (y[1] * y[1] + y[2] * y[2] + y[3] * y[3] + y[4] * y[4]));
-  for (std::size_t j = 0; j < active_.size(); ++j) o.Delta_l[active_[j] - 2] = std::exp(y[5 + j]);  // exact, even if denormal
+  for (std::size_t j = 0; j < active_.size(); ++j)
+    o.Delta_l[active_[j] - 2] = std::exp(y[5 + j]);  // exact, even if denormal
   o.sigma = sigma(t, y);
   o.f22 = {y[3], y[4]};
   o.Delta2 = o.Delta_l[0];

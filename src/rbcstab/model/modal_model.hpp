@@ -28,8 +28,7 @@ class ModalModel final : public System {
   // u_l = u_l(t0) + 2 Upsilon_l' (s + (sigma_ref - sigma_l^c) tau) exactly, since u_l' = 2 Upsilon_l(sigma) is
   // affine in sigma (CompactForm; the stepper sets sigma_ref). None without an active mode (x would be y).
   std::optional<CompactForm> compact_form(std::span<const double> y0) const override;
-  void compact_rhs(double t, std::span<const double> x, const CompactForm& form,
-                   std::span<double> dxdt) const override;
+  void compact_rhs(double t, std::span<const double> x, const CompactForm& form, std::span<double> dxdt) const override;
   double sigma(double t, std::span<const double> y) const;
   const std::vector<int>& active_modes() const { return active_; }  // the l >= 3 carried as u_l
 
@@ -46,7 +45,7 @@ class ModalModel final : public System {
   std::vector<int> active_;
   std::vector<GrowthRate> Upsilon_;  // l = 2 (index 0) and the active l
   std::complex<double> C22_, g20_[3];
-  double G3C2_ = 0;  // Gamma3^2 / C
+  double G3C2_ = 0;   // Gamma3^2 / C
   double u_cut_ = 0;  // ln Delta_l below which a mode's area is negligible in the tension sums
   double area_of(double u) const { return u < u_cut_ ? 0.0 : std::exp(u); }
   ModeAmplitudes f0_;

@@ -1,9 +1,10 @@
 #pragma once
 // The scene's parameters, one row each: name, symbol, description, domain with its message, get/set on a
 // Scene, where a scene file keeps it and how an axis spaces it. shear_rate (gamma, 1/s) is the one row valid
-// only on a physical scene (Scene::physical): its get and set throw InvalidArgument("shear_rate", ...) elsewhere. Scene files and command-line flags (io),
-// continuation parameters (continuation/continuation_parameter.hpp) and diagram axes (sweep/diagram.hpp) all take their
-// names and checks from this table, so adding a parameter is one enumerator and one row.
+// only on a physical scene (Scene::physical): its get and set throw InvalidArgument("shear_rate", ...) elsewhere. Scene
+// files and command-line flags (io), continuation parameters (continuation/continuation_parameter.hpp) and diagram axes
+// (sweep/diagram.hpp) all take their names and checks from this table, so adding a parameter is one enumerator and one
+// row.
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -71,8 +72,8 @@ inline constexpr unsigned kModesAboveTwo = level_bit(ModelLevel::modal) | level_
 // How a dimensionless number is made from a cell in physical units (Sec. II), for `rbcstab units`, the
 // [physical] table and docs/units.md. A row without one (formula nullptr) is not made from physical inputs.
 struct PhysicalFormula {
-  const char* formula = nullptr;    // "eta_ex gamma R^3 / kappa"
-  const char* reference = nullptr;  // "Eq. (dimless_nums)"
+  const char* formula = nullptr;                    // "eta_ex gamma R^3 / kappa"
+  const char* reference = nullptr;                  // "Eq. (dimless_nums)"
   double (*value)(const CellNumbers& n) = nullptr;  // NaN where an input is missing
   // `rbcstab units --<name>`: the physical value a given number completes ("the shear rate"), and where the
   // query holds it; nullptr: not an input of the conversion.
@@ -94,9 +95,9 @@ struct ParameterRow {
   // Bit set (1u << parameter) of the stored parameters the value depends on. shear_rate, stored in the scene's
   // physical cell, lists B and C too: they are proportional to it there, so it moves them with it.
   std::uint32_t inputs;
-  unsigned levels;          // the model levels it moves (level_bit)
-  bool continuation;        // usable as a continuation parameter
-  bool axis;                // usable as a diagram axis
+  unsigned levels;    // the model levels it moves (level_bit)
+  bool continuation;  // usable as a continuation parameter
+  bool axis;          // usable as a diagram axis
   // A derived row's definition from the stored ones ("B/C"); nullptr for a stored row.
   const char* definition;
   PhysicalFormula physical;
@@ -112,7 +113,7 @@ struct ParameterRow {
 
 std::span<const ParameterRow> parameter_table();
 const ParameterRow& parameter_row(SceneParameter q);
-std::string to_string(SceneParameter q);      // the row's name
+std::string to_string(SceneParameter q);        // the row's name
 std::string parameter_label(SceneParameter q);  // plain-text symbol: the name, "ln B" for a log axis
 // The stored parameter a row is set through (Lambda: Delta, S: C, lnB: B), and whether setting any of `free`
 // moves `stored` (also shear_rate, which moves B and C with it): a branch in `free` holds the others fixed.

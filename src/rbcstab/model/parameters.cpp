@@ -24,9 +24,7 @@ std::vector<std::string> Parameters::warnings() const {
   return w;
 }
 
-double Parameters::Lambda() const {
-  return std::sqrt(Delta) * d_lambda_l(lambda, 2) / (8 * std::sqrt(30 * kPi));
-}
+double Parameters::Lambda() const { return std::sqrt(Delta) * d_lambda_l(lambda, 2) / (8 * std::sqrt(30 * kPi)); }
 
 double Parameters::S() const {
   if (Delta0 == 0) return INFINITY;

@@ -17,7 +17,7 @@ struct Parameters {
   // Values accepted but outside the perturbative regime (e.g. Delta > 1).
   std::vector<std::string> warnings() const;
 
-  double alpha() const { return B / C; }  // mu R^2 / kappa; 0 when C = inf
+  double alpha() const { return B / C; }    // mu R^2 / kappa; 0 when C = inf
   double inv_C() const { return 1.0 / C; }  // 0 when C = inf
   // Lambda = sqrt(Delta) (23 lambda + 32) / (8 sqrt(30 pi))   (Eq. Lambda_S)
   double Lambda() const;

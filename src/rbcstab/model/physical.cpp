@@ -2,8 +2,8 @@
 
 #include <cctype>
 #include <cstdlib>
-#include <utility>
 #include <numbers>
+#include <utility>
 
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
@@ -18,11 +18,10 @@ struct Prefix {
   const char* text;
   double factor;
 };
-constexpr Prefix kLengthPrefixes[] = {{"", 1}, {"c", 1e-2}, {"m", 1e-3}, {"u", 1e-6}, {"\xC2\xB5", 1e-6},
-                                      {"\xCE\xBC", 1e-6}, {"n", 1e-9}};
-constexpr Prefix kSmallPrefixes[] = {{"", 1},      {"m", 1e-3},          {"u", 1e-6}, {"\xC2\xB5", 1e-6},
-                                     {"\xCE\xBC", 1e-6}, {"n", 1e-9}, {"p", 1e-12}, {"f", 1e-15},
-                                     {"a", 1e-18}, {"z", 1e-21}};
+constexpr Prefix kLengthPrefixes[] = {
+    {"", 1}, {"c", 1e-2}, {"m", 1e-3}, {"u", 1e-6}, {"\xC2\xB5", 1e-6}, {"\xCE\xBC", 1e-6}, {"n", 1e-9}};
+constexpr Prefix kSmallPrefixes[] = {{"", 1},     {"m", 1e-3},  {"u", 1e-6},  {"\xC2\xB5", 1e-6}, {"\xCE\xBC", 1e-6},
+                                     {"n", 1e-9}, {"p", 1e-12}, {"f", 1e-15}, {"a", 1e-18},       {"z", 1e-21}};
 
 // Every accepted suffix of a unit (as written after removing spaces, '*' and '.') with its factor to SI.
 std::vector<std::pair<std::string, double>> suffixes(PhysicalUnit unit) {
@@ -43,19 +42,27 @@ std::vector<std::pair<std::string, double>> suffixes(PhysicalUnit unit) {
       out.emplace_back("cP", 1e-3);
       out.emplace_back("P", 0.1);
       break;
-    case PhysicalUnit::metre: powers(1, {""}); break;
-    case PhysicalUnit::square_metre: powers(2, {"^2", "2", "\xC2\xB2"}); break;
+    case PhysicalUnit::metre:
+      powers(1, {""});
+      break;
+    case PhysicalUnit::square_metre:
+      powers(2, {"^2", "2", "\xC2\xB2"});
+      break;
     case PhysicalUnit::cubic_metre:
       powers(3, {"^3", "3", "\xC2\xB3"});
       for (const char* s : {"fL", "fl"}) out.emplace_back(s, 1e-18);  // 1 fL = 1 um^3: a cell volume's unit
       break;
-    case PhysicalUnit::joule: prefixed(kSmallPrefixes, "J"); break;
+    case PhysicalUnit::joule:
+      prefixed(kSmallPrefixes, "J");
+      break;
     case PhysicalUnit::newton_per_metre:
       prefixed(kSmallPrefixes, "N/m");
       prefixed(kSmallPrefixes, "Pam");
       out.emplace_back("pN/um", 1e-6);
       break;
-    case PhysicalUnit::kelvin: out.emplace_back("K", 1); break;
+    case PhysicalUnit::kelvin:
+      out.emplace_back("K", 1);
+      break;
   }
   return out;
 }
@@ -91,28 +98,44 @@ double radius_of(const PhysicalCell& c) { return given(c.radius) ? c.radius : eq
 
 std::string si_unit(PhysicalUnit unit) {
   switch (unit) {
-    case PhysicalUnit::per_second: return "1/s";
-    case PhysicalUnit::pascal_second: return "Pa s";
-    case PhysicalUnit::metre: return "m";
-    case PhysicalUnit::square_metre: return "m^2";
-    case PhysicalUnit::cubic_metre: return "m^3";
-    case PhysicalUnit::joule: return "J";
-    case PhysicalUnit::newton_per_metre: return "N/m";
-    case PhysicalUnit::kelvin: return "K";
+    case PhysicalUnit::per_second:
+      return "1/s";
+    case PhysicalUnit::pascal_second:
+      return "Pa s";
+    case PhysicalUnit::metre:
+      return "m";
+    case PhysicalUnit::square_metre:
+      return "m^2";
+    case PhysicalUnit::cubic_metre:
+      return "m^3";
+    case PhysicalUnit::joule:
+      return "J";
+    case PhysicalUnit::newton_per_metre:
+      return "N/m";
+    case PhysicalUnit::kelvin:
+      return "K";
   }
   return "";
 }
 
 std::string accepted_units(PhysicalUnit unit) {
   switch (unit) {
-    case PhysicalUnit::per_second: return "1/s, /s, s^-1, Hz";
-    case PhysicalUnit::pascal_second: return "Pa s, mPa s, uPa s, cP, P";
-    case PhysicalUnit::metre: return "m, cm, mm, um, nm";
-    case PhysicalUnit::square_metre: return "m^2, mm^2, um^2, nm^2 (also um2)";
-    case PhysicalUnit::cubic_metre: return "m^3, mm^3, um^3, nm^3 (also um3), fL";
-    case PhysicalUnit::joule: return "J, mJ, ..., aJ, zJ, kBT (at the stated temperature)";
-    case PhysicalUnit::newton_per_metre: return "N/m, mN/m, uN/m, nN/m, pN/um, uPa m";
-    case PhysicalUnit::kelvin: return "K";
+    case PhysicalUnit::per_second:
+      return "1/s, /s, s^-1, Hz";
+    case PhysicalUnit::pascal_second:
+      return "Pa s, mPa s, uPa s, cP, P";
+    case PhysicalUnit::metre:
+      return "m, cm, mm, um, nm";
+    case PhysicalUnit::square_metre:
+      return "m^2, mm^2, um^2, nm^2 (also um2)";
+    case PhysicalUnit::cubic_metre:
+      return "m^3, mm^3, um^3, nm^3 (also um3), fL";
+    case PhysicalUnit::joule:
+      return "J, mJ, ..., aJ, zJ, kBT (at the stated temperature)";
+    case PhysicalUnit::newton_per_metre:
+      return "N/m, mN/m, uN/m, nN/m, pN/um, uPa m";
+    case PhysicalUnit::kelvin:
+      return "K";
   }
   return "";
 }
@@ -124,8 +147,7 @@ double parse_quantity(std::string_view text, PhysicalUnit unit, std::string_view
   const char* begin = s.c_str();
   char* end = nullptr;
   const double number = std::strtod(begin, &end);
-  if (end == begin || s.empty() || std::isspace(static_cast<unsigned char>(s[0])))
-    throw InvalidArgument(n, form);
+  if (end == begin || s.empty() || std::isspace(static_cast<unsigned char>(s[0]))) throw InvalidArgument(n, form);
   const std::string suffix = strip_separators(std::string_view(end));
   double factor = 1;
   if (!suffix.empty()) {
@@ -167,8 +189,8 @@ void PhysicalCell::validate() const {
   if (given(radius) && given(volume)) both("radius", "volume", "R = (3V/4 pi)^(1/3): give the radius or the volume");
   if (given(area) != given(volume))
     throw InvalidArgument(given(area) ? "area" : "volume",
-                          std::string(given(area) ? "area" : "volume") +
-                              " is given without " + (given(area) ? "volume" : "area") +
+                          std::string(given(area) ? "area" : "volume") + " is given without " +
+                              (given(area) ? "volume" : "area") +
                               ": Delta = A/R^2 - 4 pi with R = (3V/4 pi)^(1/3) needs both");
   if (given(stress_free_volume) && !given(area))
     throw InvalidArgument("stress_free_volume",
@@ -253,7 +275,8 @@ PhysicalCell unit_cell(const Parameters& p) {
 
 const std::vector<NumberFormula>& number_formulas() {
   static const std::vector<NumberFormula> f = [] {
-    std::vector<NumberFormula> out{{"R", "(3 V/(4 pi))^(1/3) [m]", "Sec. II, Fig. 1", [](const CellNumbers& n) { return n.R; }}};
+    std::vector<NumberFormula> out{
+        {"R", "(3 V/(4 pi))^(1/3) [m]", "Sec. II, Fig. 1", [](const CellNumbers& n) { return n.R; }}};
     for (const ParameterRow& r : parameter_table())
       if (r.physical.formula) out.push_back({r.name, r.physical.formula, r.physical.reference, r.physical.value});
     out.push_back({"time_unit_s", "1/gamma [s]", "Sec. II (time in units of 1/gamma)",
@@ -279,12 +302,12 @@ UnitsAnswer convert_units(const UnitsQuery& q) {
                  std::initializer_list<std::pair<const char*, double>> needs, auto formula) {
     if (!given(value)) return;
     if (given(c.*field))
-      throw InvalidArgument(number, std::string(number) + " and " + key + " both given: " + number +
-                                        " fixes " + key + " here; give one");
+      throw InvalidArgument(
+          number, std::string(number) + " and " + key + " both given: " + number + " fixes " + key + " here; give one");
     for (const auto& [need, v] : needs)
       if (!given(v))
-        throw InvalidArgument(number, std::string(number) + " = " + format_value(value) + " needs " + need +
-                                          " to give " + key);
+        throw InvalidArgument(number,
+                              std::string(number) + " = " + format_value(value) + " needs " + need + " to give " + key);
     c.*field = formula(value);
     a.derived_physical.emplace_back(key);
   };

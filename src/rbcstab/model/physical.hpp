@@ -17,7 +17,16 @@ namespace rbcstab {
 
 inline constexpr double kNotGiven = std::numeric_limits<double>::quiet_NaN();  // a physical input not given
 
-enum class PhysicalUnit { per_second, pascal_second, metre, square_metre, cubic_metre, joule, newton_per_metre, kelvin };
+enum class PhysicalUnit {
+  per_second,
+  pascal_second,
+  metre,
+  square_metre,
+  cubic_metre,
+  joule,
+  newton_per_metre,
+  kelvin
+};
 
 inline constexpr double kBoltzmann = 1.380649e-23;  // J/K, exact in the SI since 2019
 
@@ -28,8 +37,7 @@ std::string accepted_units(PhysicalUnit unit);
 // "1.2mPa.s"). Without a suffix the number is SI. "kBT" (joule) needs a finite temperature > 0 [K]. Throws
 // InvalidArgument(name, "<name> = '<text>' ...") for a malformed number, an unknown unit, or a value that is
 // not finite and > 0.
-double parse_quantity(std::string_view text, PhysicalUnit unit, std::string_view name,
-                      double temperature = kNotGiven);
+double parse_quantity(std::string_view text, PhysicalUnit unit, std::string_view name, double temperature = kNotGiven);
 
 // The physical inputs; NaN: not given. A scene holding one derives its B, C (and lambda, Delta, Delta0 when
 // their inputs are given) from it (physical_parameters).
@@ -54,16 +62,16 @@ struct PhysicalCell {
 };
 
 // The paper's symbols, each from its physical inputs (Sec. II).
-double equivalent_radius(double volume);                   // R = (3V/4 pi)^(1/3)
-double excess_area(double area, double volume);            // A/R^2 - 4 pi, R from the volume (Delta; Delta0 from V0)
-double bending_number(double eta_ex, double shear_rate, double R, double kappa);   // B = eta gamma R^3/kappa
-double capillary_number(double eta_ex, double shear_rate, double R, double mu);    // C = eta gamma R/mu
-double viscosity_ratio(double eta_in, double eta_ex);      // lambda = eta_in/eta_ex
-double elasticity_ratio(double mu, double R, double kappa);  // alpha = mu R^2/kappa = B/C
+double equivalent_radius(double volume);         // R = (3V/4 pi)^(1/3)
+double excess_area(double area, double volume);  // A/R^2 - 4 pi, R from the volume (Delta; Delta0 from V0)
+double bending_number(double eta_ex, double shear_rate, double R, double kappa);  // B = eta gamma R^3/kappa
+double capillary_number(double eta_ex, double shear_rate, double R, double mu);   // C = eta gamma R/mu
+double viscosity_ratio(double eta_in, double eta_ex);                             // lambda = eta_in/eta_ex
+double elasticity_ratio(double mu, double R, double kappa);                       // alpha = mu R^2/kappa = B/C
 
 // The dimensionless numbers a PhysicalCell determines; NaN where an input is missing.
 struct CellNumbers {
-  double R = kNotGiven;          // m
+  double R = kNotGiven;  // m
   double B = kNotGiven, C = kNotGiven, lambda = kNotGiven, alpha = kNotGiven, Delta = kNotGiven, Delta0 = kNotGiven;
   double time_unit = kNotGiven;  // s: 1/gamma, the model's unit of time
 };
@@ -104,12 +112,13 @@ const std::vector<NumberFormula>& number_formulas();
 // ...: give one"); a number whose other inputs are missing is refused naming them.
 struct UnitsQuery {
   PhysicalCell cell;
-  double B = kNotGiven, C = kNotGiven, lambda = kNotGiven, alpha = kNotGiven, Delta = kNotGiven, Delta0 = kNotGiven;  // NaN: not given
+  double B = kNotGiven, C = kNotGiven, lambda = kNotGiven, alpha = kNotGiven, Delta = kNotGiven,
+         Delta0 = kNotGiven;  // NaN: not given
 };
 struct UnitsAnswer {
-  PhysicalCell cell;         // the inputs, completed
+  PhysicalCell cell;  // the inputs, completed
   CellNumbers numbers;
-  std::optional<Parameters> parameters;  // when lambda, Delta, Delta0, B, C are all known: Lambda and S follow
+  std::optional<Parameters> parameters;       // when lambda, Delta, Delta0, B, C are all known: Lambda and S follow
   std::vector<std::string> derived_physical;  // the physical keys completed from dimensionless numbers
 };
 UnitsAnswer convert_units(const UnitsQuery& query);

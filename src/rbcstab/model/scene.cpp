@@ -7,8 +7,8 @@
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/full_model.hpp"
 #include "rbcstab/model/modal_model.hpp"
-#include "rbcstab/model/reduced_model.hpp"
 #include "rbcstab/model/parameter_table.hpp"
+#include "rbcstab/model/reduced_model.hpp"
 
 namespace rbcstab {
 
@@ -40,8 +40,8 @@ void Scene::validate() const {
   }
   for (const auto& [l, d] : rest_delta_l) {
     require(l >= 3 && l <= L, "rest_delta_l", l, "a mode l in [3, L] with L = " + std::to_string(L));
-    require(std::isfinite(d) && d >= 0 && d <= parameters.Delta0 + parameters.Delta, "rest_delta_l." + std::to_string(l),
-            d, "finite, >= 0 and small against Delta");
+    require(std::isfinite(d) && d >= 0 && d <= parameters.Delta0 + parameters.Delta,
+            "rest_delta_l." + std::to_string(l), d, "finite, >= 0 and small against Delta");
   }
   require(std::isfinite(T) && T > 0 && T <= 1e7, "T", T, "in (0, 1e7]");
   require(std::isfinite(dt) && dt > 0 && dt <= T, "dt", dt, "in (0, T] with T = " + format_value(T));
@@ -113,28 +113,37 @@ LevelChoice choose_level(const Scene& scene, const InitialState& init) {
   }
   c.level = scene.model;
   switch (scene.model) {
-    case ModelLevel::full: c.reason = "forced (full is exact for every scene)"; break;
+    case ModelLevel::full:
+      c.reason = "forced (full is exact for every scene)";
+      break;
     case ModelLevel::modal:
       if (rest_high)
-        throw InvalidArgument("model", "model = modal cannot hold a stress-free shape with l >= 3 content: use full or auto");
+        throw InvalidArgument("model",
+                              "model = modal cannot hold a stress-free shape with l >= 3 content: use full or auto");
       c.reason = "forced (exact: the stress-free shape is ellipsoidal)";
       break;
     case ModelLevel::reduced:
       c.exact = !rest_high && !cur_high && !m1;
-      c.reason = c.exact ? "forced (exact for this scene)"
-                         : "forced: drops the l >= 3 perturbations and the m = +-1 content, so it approximates this scene";
+      c.reason = c.exact
+                     ? "forced (exact for this scene)"
+                     : "forced: drops the l >= 3 perturbations and the m = +-1 content, so it approximates this scene";
       break;
-    case ModelLevel::automatic: break;
+    case ModelLevel::automatic:
+      break;
   }
   return c;
 }
 
 std::unique_ptr<System> make_system(const Parameters& p, const InitialState& init, ModelLevel level) {
   switch (level) {
-    case ModelLevel::full: return std::make_unique<FullModel>(p, init);
-    case ModelLevel::modal: return std::make_unique<ModalModel>(p, init);
-    case ModelLevel::reduced: return std::make_unique<ReducedModel>(p, init);
-    case ModelLevel::automatic: break;
+    case ModelLevel::full:
+      return std::make_unique<FullModel>(p, init);
+    case ModelLevel::modal:
+      return std::make_unique<ModalModel>(p, init);
+    case ModelLevel::reduced:
+      return std::make_unique<ReducedModel>(p, init);
+    case ModelLevel::automatic:
+      break;
   }
   throw InvalidArgument("model", "make_system needs a concrete level (full, modal or reduced), not auto");
 }

@@ -25,21 +25,21 @@ void require_L(long long L, int min_L = kMinL, int max_L = kMaxL, std::string_vi
                std::string_view name = "L");
 
 struct Scene {
-  std::string name = "fig3_op";    // label carried into outputs: one line of printable text
-  Parameters parameters;           // defaults: the paper's Fig. 3 case
-  double beta = 0.001;             // rotation of the axisymmetric shapes about y (0: out of plane, pi/2: in plane)
-  double delta = 1e-3;             // perturbation Delta_l(0) put in f_{l,0} for every l = 3..L
-  std::map<int, double> delta_l;   // per-mode overrides of delta
+  std::string name = "fig3_op";        // label carried into outputs: one line of printable text
+  Parameters parameters;               // defaults: the paper's Fig. 3 case
+  double beta = 0.001;                 // rotation of the axisymmetric shapes about y (0: out of plane, pi/2: in plane)
+  double delta = 1e-3;                 // perturbation Delta_l(0) put in f_{l,0} for every l = 3..L
+  std::map<int, double> delta_l;       // per-mode overrides of delta
   std::map<int, double> rest_delta_l;  // stress-free l >= 3 content Delta0_l (only the full model holds it)
-  int L = 10;                      // truncation: modes l = 2..L (require_L)
-  double T = 500;                  // horizon
-  double dt = 1;                   // output sampling interval
+  int L = 10;                          // truncation: modes l = 2..L (require_L)
+  double T = 500;                      // horizon
+  double dt = 1;                       // output sampling interval
   ModelLevel model = ModelLevel::automatic;  // forced level, or automatic
   // A physical scene's inputs (SI): B, C and the numbers their inputs give were derived from them
   // (physical_parameters); times are in units of 1/shear_rate.
   std::optional<PhysicalCell> physical;
 
-  void validate() const;  // throws InvalidArgument naming the key (parameter domains: parameter_table.hpp)
+  void validate() const;             // throws InvalidArgument naming the key (parameter domains: parameter_table.hpp)
   double perturbation(int l) const;  // delta_l with overrides applied
   double rest_perturbation(int l) const;
 };
@@ -72,8 +72,8 @@ InitialState initial_state(const ValidScene& scene);
 
 struct LevelChoice {
   ModelLevel level = ModelLevel::automatic;  // automatic only before a choice is made
-  bool exact = false;   // the chosen level represents the scene without approximation
-  std::string reason;   // why this level (and what is dropped if not exact)
+  bool exact = false;                        // the chosen level represents the scene without approximation
+  std::string reason;                        // why this level (and what is dropped if not exact)
 };
 // The smallest exact level unless scene.model forces one; forcing a level that cannot hold the
 // scene's stress-free shape throws InvalidArgument("model", ...).

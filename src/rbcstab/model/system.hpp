@@ -21,9 +21,10 @@ namespace rbcstab {
 enum class ModelLevel { automatic, full, modal, reduced };
 template <>
 struct EnumTable<ModelLevel> {
-  static constexpr EnumName<ModelLevel> entries[] = {
-      {ModelLevel::automatic, "auto"}, {ModelLevel::full, "full"}, {ModelLevel::modal, "modal"},
-      {ModelLevel::reduced, "reduced"}};
+  static constexpr EnumName<ModelLevel> entries[] = {{ModelLevel::automatic, "auto"},
+                                                     {ModelLevel::full, "full"},
+                                                     {ModelLevel::modal, "modal"},
+                                                     {ModelLevel::reduced, "reduced"}};
 };
 // Throws InvalidArgument("model", ...) naming the allowed levels.
 inline ModelLevel model_level_from_string(std::string_view name) { return from_string<ModelLevel>(name, "model"); }
@@ -69,11 +70,11 @@ class ShiftedSolver {
 // is exact near the pivot (as sigma - sigma_l^c is in y_k'), and the steps depend on the state alone (a run
 // restarted from a step's end takes the same steps as one that goes on).
 struct CompactForm {
-  std::vector<double> x0;            // x where the integrals start (each of them 0)
-  std::vector<bool> integral;        // per component of x: an integral (the clock included), restarted by rebase()
-  std::vector<double> reference;     // per component of x: subtracted from its integrand (0 unless an integral)
-  std::size_t clock = 0;             // the component of x that is tau
-  std::vector<std::size_t> source;   // per component of y
+  std::vector<double> x0;           // x where the integrals start (each of them 0)
+  std::vector<bool> integral;       // per component of x: an integral (the clock included), restarted by rebase()
+  std::vector<double> reference;    // per component of x: subtracted from its integrand (0 unless an integral)
+  std::size_t clock = 0;            // the component of x that is tau
+  std::vector<std::size_t> source;  // per component of y
   std::vector<double> scale, offset, pivot;
   double y(std::size_t k, std::span<const double> x) const {
     const std::size_t i = source[k];
@@ -105,8 +106,7 @@ class System {
   virtual int L() const = 0;
   virtual void rhs(double t, std::span<const double> y, std::span<double> dydt) const = 0;
   // Fills J = M + v w^T and dF/dt at (t, y).
-  virtual void jacobian(double t, std::span<const double> y, StructuredJacobian& J,
-                        std::span<double> dfdt) const = 0;
+  virtual void jacobian(double t, std::span<const double> y, StructuredJacobian& J, std::span<double> dfdt) const = 0;
   virtual Observation observe(double t, std::span<const double> y) const = 0;
   // The state the system was built from, and the amplitudes f_{l,m}(t) rebuilt from any state.
   virtual std::vector<double> initial_state() const = 0;

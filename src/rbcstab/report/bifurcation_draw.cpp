@@ -119,7 +119,8 @@ PlotFiles draw_plot(const PlotSpec& spec, const PlotDrawOptions& o) {
                                 tmp_png.string(), std::to_string(o.width), std::to_string(o.height)},
                                log.string());
     if (rc != 0 || !fs::is_regular_file(tmp_png, ec))
-      throw ReportError("the plotting script failed (exit " + std::to_string(rc) + "): " + detail::log_tail(log.string(), 1500));
+      throw ReportError("the plotting script failed (exit " + std::to_string(rc) +
+                        "): " + detail::log_tail(log.string(), 1500));
     fs::rename(tmp_png, png);
     fs::rename(tmp_json, json_path);
   } catch (const fs::filesystem_error& e) {

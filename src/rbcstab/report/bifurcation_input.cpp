@@ -18,8 +18,10 @@ using nlohmann::json;
 PlotInput plot_input(json j, const std::string& source) {
   using namespace detail::plot;  // the branch readers (detail/plot_branch.hpp)
   auto refuse = [&](const std::string& why) {
-    return InvalidArgument("file", source + " is not a branch JSON (the output of `rbcstab continue --json` or a "
-                                            "branch file of --save): " + why);
+    return InvalidArgument("file", source +
+                                       " is not a branch JSON (the output of `rbcstab continue --json` or a "
+                                       "branch file of --save): " +
+                                       why);
   };
   if (!j.is_object()) throw refuse("not a JSON object");
   if (j.contains("format") && j["format"] != "rbcstab-branch")

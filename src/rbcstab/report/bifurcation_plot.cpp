@@ -186,7 +186,7 @@ PlotSeries make_series(const SeriesSource& src, const Axes& axes, std::size_t in
   s.role = src.role;
   s.source = src.input->source;
   const std::string level_text = s.level + (s.level == "reduced" ? " system" : " model");
-  s.name = (is_curve(j) ? j["curve"].value("type", std::string("special-point")) + " curve"
+  s.name = (is_curve(j)         ? j["curve"].value("type", std::string("special-point")) + " curve"
             : s.kind == "orbit" ? std::string("periodic orbits")
                                 : std::string("equilibria")) +
            " (" + level_text + ")" + (src.role == "switched" ? ", switched branch" : "");
@@ -274,7 +274,8 @@ void merge_texts(PlotSpec& spec) {
   for (const PlotSeries& s : spec.series)
     for (std::size_t k = 0; k < s.x.size(); ++k)
       if (std::isfinite(s.x[k]) && std::isfinite(s.y[k]))
-        xlo = std::min(xlo, s.x[k]), xhi = std::max(xhi, s.x[k]), ylo = std::min(ylo, s.y[k]), yhi = std::max(yhi, s.y[k]);
+        xlo = std::min(xlo, s.x[k]), xhi = std::max(xhi, s.x[k]), ylo = std::min(ylo, s.y[k]),
+        yhi = std::max(yhi, s.y[k]);
   const double dx = kCoincident * (xhi > xlo ? xhi - xlo : 1), dy = kCoincident * (yhi > ylo ? yhi - ylo : 1);
   for (std::size_t i = 0; i < spec.points.size(); ++i) {
     PlotPoint& p = spec.points[i];
@@ -371,7 +372,8 @@ std::string tex_symbol(const std::string& name) {
   using namespace detail::plot;  // the branch readers (detail/plot_branch.hpp)
   // A scene parameter's symbol is its row's (model/parameter_table.hpp); the map holds the branch quantities.
   for (const ParameterRow& row : parameter_table())
-    if (name == row.name) return std::string("$") + row.symbol + "$" + (*row.unit ? std::string(" [") + row.unit + "]" : "");
+    if (name == row.name)
+      return std::string("$") + row.symbol + "$" + (*row.unit ? std::string(" [") + row.unit + "]" : "");
   static const std::map<std::string, std::string> symbols{
       {"r", R"($r$)"},
       {"Psi", R"($\Psi$)"},

@@ -47,18 +47,18 @@ struct PlotOptions {
 // A run of consecutive vertices of one stability; neighbouring segments share their boundary vertex
 // (the located special point where stability changes, else the midpoint of the two points).
 struct PlotSegment {
-  std::string stability;  // stable, unstable, uncertain; "curve" for two-parameter curves
-  std::string style;      // solid, dashed, dotted
+  std::string stability;     // stable, unstable, uncertain; "curve" for two-parameter curves
+  std::string style;         // solid, dashed, dotted
   std::vector<double> x, y;  // NaN where the quantity is undefined (the line breaks there)
 };
 
 struct PlotSeries {
-  std::string name;     // legend text
-  std::string kind;     // equilibrium, orbit, curve
-  std::string problem;  // the input's kind: equilibrium, modal, full, orbit, modal-orbit
-  std::string level;    // reduced, modal, full
-  std::string role;     // primary, switched
-  std::string source;   // the input it came from
+  std::string name;                    // legend text
+  std::string kind;                    // equilibrium, orbit, curve
+  std::string problem;                 // the input's kind: equilibrium, modal, full, orbit, modal-orbit
+  std::string level;                   // reduced, modal, full
+  std::string role;                    // primary, switched
+  std::string source;                  // the input it came from
   std::vector<double> x, y;            // the branch's points (NaN: undefined)
   std::vector<std::string> stability;  // per point
   std::vector<PlotSegment> segments;   // what is drawn: the points with the special points inserted

@@ -19,8 +19,8 @@
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/report/bifurcation_plot.hpp"
-#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/diagram_document.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
 
 namespace rbcstab {
@@ -113,17 +113,21 @@ PanelKind panel_kind(const SceneFile& scene) {
                              std::pair{&scene.continuation, PanelKind::continuation}})
     if (table->has_value()) found.push_back(kind);
   if (found.size() > 1)
-    throw InvalidArgument("scene", scene.source + " holds more than one panel table ([diagram], [fig6e], [continuation]): "
-                                                  "one figure panel per scene file");
+    throw InvalidArgument("scene", scene.source +
+                                       " holds more than one panel table ([diagram], [fig6e], [continuation]): "
+                                       "one figure panel per scene file");
   return found.empty() ? PanelKind::none : found[0];
 }
 
 TruncationUse truncation_use(PanelKind kind) {
   switch (kind) {
-    case PanelKind::none: return TruncationUse::simulation;
+    case PanelKind::none:
+      return TruncationUse::simulation;
     case PanelKind::diagram:
-    case PanelKind::fig6e: return TruncationUse::grid;
-    case PanelKind::continuation: return TruncationUse::reduced;
+    case PanelKind::fig6e:
+      return TruncationUse::grid;
+    case PanelKind::continuation:
+      return TruncationUse::reduced;
   }
   return TruncationUse::simulation;
 }
@@ -151,8 +155,8 @@ Fig6eOptions fig6e_options(const SceneFile& sf) {
 
 std::string fig6e_csv(const Fig6eOptions& f, const std::vector<Fig6eRow>& rows) {
   std::ostringstream ss;
-  ss << "# Fig. 6e: Delta~2 (continuous l_*, integer l_s) vs simulated Delta-bar_2 (T = " << f.T
-     << ", tail mean over " << f.simulation.tail_window << "); n/a: outside domain or stable\n";
+  ss << "# Fig. 6e: Delta~2 (continuous l_*, integer l_s) vs simulated Delta-bar_2 (T = " << f.T << ", tail mean over "
+     << f.simulation.tail_window << "); n/a: outside domain or stable\n";
   ss << "lambda,B,C,alpha,ln_alpha,l_s,l_Delta,Delta2_tilde,Delta2_tilde_integer,Delta2_bar,ratio,ratio_integer\n";
   for (const Fig6eRow& r : rows)
     ss << r.lambda << ',' << r.B << ',' << r.C << ',' << r.alpha << ',' << r.ln_alpha << ',' << r.surviving_mode << ','
@@ -281,8 +285,9 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
   // The hooks draw other commands' data into a scene's report; a panel draws what it computes, in their place.
   for (const std::string* hook : {&options.phase_diagram, &options.delta2_comparison, &options.bifurcation})
     if (!hook->empty())
-      throw InvalidArgument("phase_diagram", "--phase-diagram, --delta2-comparison and --bifurcation draw data from "
-                                             "other commands into a scene report; a panel scene computes its own");
+      throw InvalidArgument("phase_diagram",
+                            "--phase-diagram, --delta2-comparison and --bifurcation draw data from "
+                            "other commands into a scene report; a panel scene computes its own");
   panel.validate();
   options.validate();
   sf.scene.validate();
@@ -333,19 +338,22 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
     // along it): not traced. In plane a ln B plane is traced in closed form in B (App. E: ~0.4 s).
     const bool traceable = spec.x.axis != Axis::beta && spec.y.axis != Axis::beta;
     if (!traceable)
-      trace_note = "not traced: beta on an axis (the plane mixes in- and out-of-plane criteria; "
-                   "try `rbcstab trace`)";
-    else try {
-      traced = std::make_shared<const TraceResult>(trace_boundary(sf.scene, spec, panel.trace));
-      const TraceResult& tr = *traced;
-      boundary = tr.curves;
-      trace_note = std::to_string(tr.curves.size()) + " pieces, " + std::to_string(tr.corners.size()) +
-                   " mode corners, " + std::to_string(tr.evaluations) + " criterion evaluations, " +
-                   fixed(tr.seconds, 2) + " s";
-    } catch (const InvalidArgument& e) {
-      trace_note = std::string("not traced: ") + e.what();
-    }
-    const std::vector<Overlay> lines = analytic_overlays(sf.scene, spec, 200);  // 200 samples per line: smooth at 900 px
+      trace_note =
+          "not traced: beta on an axis (the plane mixes in- and out-of-plane criteria; "
+          "try `rbcstab trace`)";
+    else
+      try {
+        traced = std::make_shared<const TraceResult>(trace_boundary(sf.scene, spec, panel.trace));
+        const TraceResult& tr = *traced;
+        boundary = tr.curves;
+        trace_note = std::to_string(tr.curves.size()) + " pieces, " + std::to_string(tr.corners.size()) +
+                     " mode corners, " + std::to_string(tr.evaluations) + " criterion evaluations, " +
+                     fixed(tr.seconds, 2) + " s";
+      } catch (const InvalidArgument& e) {
+        trace_note = std::string("not traced: ") + e.what();
+      }
+    const std::vector<Overlay> lines =
+        analytic_overlays(sf.scene, spec, 200);  // 200 samples per line: smooth at 900 px
     // Without the per-point wall-clock seconds: the data behind the figure is the same on every run.
     ro.phase_diagram = staging.put("phase_diagram.csv", diagram_csv(spec, run.points, DiagramOutputOptions{false}));
     staging.put("phase_diagram.json", phase_overlay_json(spec, boundary, lines).dump(1) + "\n");
@@ -360,9 +368,9 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
     ro.attachments.push_back(staging.put("diagram.json", doc.dump(1) + "\n"));
     res.status = res.failed ? "failed runs" : "success";
     res.facts = {{"grid", std::to_string(spec.x.count) + " x " + std::to_string(spec.y.count) + " (" +
-                              parameter_label(spec.x.axis) + " in [" + fixed(spec.x.min, 3) + ", " + fixed(spec.x.max, 3) +
-                              "], " + parameter_label(spec.y.axis) + " in [" + fixed(spec.y.min, 3) + ", " +
-                              fixed(spec.y.max, 3) + "])"},
+                              parameter_label(spec.x.axis) + " in [" + fixed(spec.x.min, 3) + ", " +
+                              fixed(spec.x.max, 3) + "], " + parameter_label(spec.y.axis) + " in [" +
+                              fixed(spec.y.min, 3) + ", " + fixed(spec.y.max, 3) + "])"},
                  {"classifier", to_string(spec.classifier)},
                  {"unstable points", std::to_string(unstable)},
                  {"failed points", std::to_string(res.failed)},
@@ -374,12 +382,13 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
                            fixed(100 * doc["agreement"]["verdict_fraction"].get<double>()) + "% / " +
                                fixed(100 * doc["agreement"]["mode_fraction"].get<double>()) + "%"});
     summary << "Phase diagram by direct simulation (modal level, L = " << sf.scene.L << ", T = " << sf.scene.T
-            << ") over " << parameter_label(spec.x.axis) << " and " << parameter_label(spec.y.axis) << ", coloured by l_Delta ("
-            << to_string(spec.classifier) << " classifier), with the traced stability boundary and the paper's "
+            << ") over " << parameter_label(spec.x.axis) << " and " << parameter_label(spec.y.axis)
+            << ", coloured by l_Delta (" << to_string(spec.classifier)
+            << " classifier), with the traced stability boundary and the paper's "
             << "analytic lines. Base scene: "
             << parameters_text(sf.scene, spec.x.axis != Axis::lambda && spec.y.axis != Axis::lambda, false) << ".";
-    ro.figure_title = sf.scene.name + ": " + tex_parameters(sf.scene, {to_string(spec.x.axis), to_string(spec.y.axis)},
-                                                            false, spec.alpha);
+    ro.figure_title = sf.scene.name + ": " +
+                      tex_parameters(sf.scene, {to_string(spec.x.axis), to_string(spec.y.axis)}, false, spec.alpha);
   } else if (res.kind == PanelKind::fig6e) {
     const Fig6eOptions f = fig6e_options(sf);
     const std::vector<Fig6eRow> rows = fig6e_table(f);
@@ -419,8 +428,8 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
                  {"special points", specials.empty() ? "none" : specials},
                  {"Newton iterations", std::to_string(b.counters.newton_iterations)}};
     summary << "Bifurcation diagram: equilibria of the reduced system (out-of-plane rest shape) continued in " << name
-            << " from " << r.start.p << ", " << c.measure
-            << " against " << name << "; stable solid, unstable dashed, special points (AUTO-07p labels) marked. "
+            << " from " << r.start.p << ", " << c.measure << " against " << name
+            << "; stable solid, unstable dashed, special points (AUTO-07p labels) marked. "
             << "Base scene: " << parameters_text(sf.scene, c.parameter != ContinuationParameter::lambda, true) << ".";
     // Lambda moves Delta, S moves C (parameters.hpp): those are varied too.
     std::set<std::string> varied{name};

@@ -13,18 +13,18 @@
 #include <utility>
 #include <vector>
 
-#include "rbcstab/continuation/branch_spec.hpp"
-#include "rbcstab/continuation/scene_branch.hpp"
-#include "rbcstab/continuation/scene_kinds.hpp"
-#include "rbcstab/sweep/fig6e.hpp"
 #include "rbcstab/analysis/truncation.hpp"
+#include "rbcstab/continuation/branch_spec.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/continuation_parameter.hpp"
+#include "rbcstab/continuation/scene_branch.hpp"
+#include "rbcstab/continuation/scene_kinds.hpp"
 #include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/report/report.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram.hpp"
+#include "rbcstab/sweep/fig6e.hpp"
 #include "rbcstab/sweep/trace.hpp"
 
 namespace rbcstab {
@@ -32,9 +32,10 @@ namespace rbcstab {
 enum class PanelKind { none, diagram, fig6e, continuation };  // names: the scene file's panel tables
 template <>
 struct EnumTable<PanelKind> {
-  static constexpr EnumName<PanelKind> entries[] = {
-      {PanelKind::none, "none"}, {PanelKind::diagram, "diagram"}, {PanelKind::fig6e, "fig6e"},
-      {PanelKind::continuation, "continuation"}};
+  static constexpr EnumName<PanelKind> entries[] = {{PanelKind::none, "none"},
+                                                    {PanelKind::diagram, "diagram"},
+                                                    {PanelKind::fig6e, "fig6e"},
+                                                    {PanelKind::continuation, "continuation"}};
 };
 // The panel table the scene file holds: none, or exactly one (two throw InvalidArgument("scene", ...)).
 PanelKind panel_kind(const SceneFile& scene);
@@ -74,21 +75,21 @@ nlohmann::json phase_overlay_json(const DiagramSpec& spec, const std::vector<Tra
                                   const std::vector<Overlay>& lines);
 
 struct PanelOptions {
-  int threads = 0;           // diagram worker threads; 0 = all cores (the points are independent)
-  int nx = 0, ny = 0;        // > 0: override the scene's [diagram] counts (a quick look at a coarse grid)
-  TraceOptions trace;        // the traced boundary (criterion, start search, step cap)
+  int threads = 0;     // diagram worker threads; 0 = all cores (the points are independent)
+  int nx = 0, ny = 0;  // > 0: override the scene's [diagram] counts (a quick look at a coarse grid)
+  TraceOptions trace;  // the traced boundary (criterion, start search, step cap)
   std::function<void(const Progress&)> on_progress;  // diagram progress (called on the calling thread)
   const std::atomic<bool>* stop = nullptr;           // set to stop a diagram early (then nothing is drawn)
-  void validate() const;     // names the field
+  void validate() const;                             // names the field
 };
 
 struct PanelReportResult {
   PanelKind kind = PanelKind::none;
   ReportResult report;
-  bool complete = true;        // false: the panel's computation did not finish (diagram stopped) and no folder was written
-  std::size_t failed = 0;      // diagram points or Fig. 6e rows whose run did not reach T; a branch that was lost
-  std::string status;          // continuation: the branch status; otherwise "success" or "failed runs"
-  double compute_seconds = 0;  // the panel's computation (drawing excluded)
+  bool complete = true;    // false: the panel's computation did not finish (diagram stopped) and no folder was written
+  std::size_t failed = 0;  // diagram points or Fig. 6e rows whose run did not reach T; a branch that was lost
+  std::string status;      // continuation: the branch status; otherwise "success" or "failed runs"
+  double compute_seconds = 0;                              // the panel's computation (drawing excluded)
   std::vector<std::pair<std::string, std::string>> facts;  // also shown on the report's "Panel" table
 };
 

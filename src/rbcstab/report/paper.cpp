@@ -73,49 +73,54 @@ PaperResult build_paper(const PaperOptions& options) {
 
   PaperResult res;
   try {
-  detail::in_staging_folder(target, [&](const fs::path& tmp) {
-    Composer c(o, tmp, res);
-    c.set_scene_dir(o.scene_dir);
-    const int n = 10;
-    int k = 0;
-    const std::vector<std::function<void()>> steps = {
-        [&] { fig2(c, ++k, n); },
-        [&] { fig3(c, ++k, n); },
-        [&] { fig4(c, ++k, n); },
-        [&] { fig5(c, ++k, n); },
-        [&] { fig6(c, ++k, n); },
-        [&] { app_vesicle(c, false, ++k, n); },
-        [&] { app_vesicle(c, true, ++k, n); },
-        [&] { app_in_plane_diagrams(c, ++k, n); },
-        [&] { app_suppressed(c, ++k, n); },
-    };
-    for (const auto& step : steps) {
-      step();
-      if (c.stopped()) {
-        res.complete = false;
-        throw Stopped{};  // removes the staging folder; caught below
+    detail::in_staging_folder(target, [&](const fs::path& tmp) {
+      Composer c(o, tmp, res);
+      c.set_scene_dir(o.scene_dir);
+      const int n = 10;
+      int k = 0;
+      const std::vector<std::function<void()>> steps = {
+          [&] { fig2(c, ++k, n); },
+          [&] { fig3(c, ++k, n); },
+          [&] { fig4(c, ++k, n); },
+          [&] { fig5(c, ++k, n); },
+          [&] { fig6(c, ++k, n); },
+          [&] { app_vesicle(c, false, ++k, n); },
+          [&] { app_vesicle(c, true, ++k, n); },
+          [&] { app_in_plane_diagrams(c, ++k, n); },
+          [&] { app_suppressed(c, ++k, n); },
+      };
+      for (const auto& step : steps) {
+        step();
+        if (c.stopped()) {
+          res.complete = false;
+          throw Stopped{};  // removes the staging folder; caught below
+        }
       }
-    }
-    for (const auto& cl : res.claims) (cl.passed ? res.passed : res.failed) += 1;
-    json spec{{"format", "rbcstab-paper"}, {"version", 1}, {"quick", o.quick}, {"figures", c.figures}};
-    json claims = json::array();
-    for (const auto& cl : res.claims)
-      claims.push_back({{"figure", cl.figure}, {"claim", cl.claim}, {"measured", cl.measured},
-                        {"expected", cl.expected}, {"passed", cl.passed}, {"how", cl.how}});
-    write_file_atomic((tmp / "paper.json").string(), spec.dump(1) + "\n");
-    write_file_atomic((tmp / "claims.json").string(), claims.dump(1) + "\n");
-    res.files.insert(res.files.end(), {"paper.json", "claims.json"});
-    if (o.on_step) o.on_step("drawing the figures with " + o.python, n, n);
-    const std::string log = (tmp / "plot.log").string();
-    const int rc = run_process({o.python, (fs::path(o.script_dir) / "paper_draw.py").string(), tmp.string()}, log);
-    if (rc != 0)
-      throw ReportError("the plotting script failed (exit " + std::to_string(rc) + "): " + detail::log_tail(log, 1500));
-    for (const auto& f : c.figures) res.files.push_back(f["png"].get<std::string>());
-    res.files.push_back("plot.log");
-    write_file_atomic((tmp / "index.html").string(), paper_html(spec, res, o));
-    res.files.push_back("index.html");
-    detail::publish_folder(tmp, target);
-  });
+      for (const auto& cl : res.claims) (cl.passed ? res.passed : res.failed) += 1;
+      json spec{{"format", "rbcstab-paper"}, {"version", 1}, {"quick", o.quick}, {"figures", c.figures}};
+      json claims = json::array();
+      for (const auto& cl : res.claims)
+        claims.push_back({{"figure", cl.figure},
+                          {"claim", cl.claim},
+                          {"measured", cl.measured},
+                          {"expected", cl.expected},
+                          {"passed", cl.passed},
+                          {"how", cl.how}});
+      write_file_atomic((tmp / "paper.json").string(), spec.dump(1) + "\n");
+      write_file_atomic((tmp / "claims.json").string(), claims.dump(1) + "\n");
+      res.files.insert(res.files.end(), {"paper.json", "claims.json"});
+      if (o.on_step) o.on_step("drawing the figures with " + o.python, n, n);
+      const std::string log = (tmp / "plot.log").string();
+      const int rc = run_process({o.python, (fs::path(o.script_dir) / "paper_draw.py").string(), tmp.string()}, log);
+      if (rc != 0)
+        throw ReportError("the plotting script failed (exit " + std::to_string(rc) +
+                          "): " + detail::log_tail(log, 1500));
+      for (const auto& f : c.figures) res.files.push_back(f["png"].get<std::string>());
+      res.files.push_back("plot.log");
+      write_file_atomic((tmp / "index.html").string(), paper_html(spec, res, o));
+      res.files.push_back("index.html");
+      detail::publish_folder(tmp, target);
+    });
   } catch (const Stopped&) {
     res.complete = false;
   }

@@ -20,13 +20,13 @@
 namespace rbcstab {
 
 struct PaperOptions {
-  std::string output;              // folder to create (its parent must exist)
-  bool overwrite = false;          // replace an existing folder (swapped in whole at the end)
-  bool quick = false;              // coarse grids: 12 x 12 phase diagrams, a 3 x 2 Fig. 6e grid per lambda
-  int threads = 0;                 // worker threads for runs and diagram points; 0 = all cores
+  std::string output;                       // folder to create (its parent must exist)
+  bool overwrite = false;                   // replace an existing folder (swapped in whole at the end)
+  bool quick = false;                       // coarse grids: 12 x 12 phase diagrams, a 3 x 2 Fig. 6e grid per lambda
+  int threads = 0;                          // worker threads for runs and diagram points; 0 = all cores
   std::string python = "/usr/bin/python3";  // with python3-matplotlib
-  std::string script_dir;          // folder of paper_draw.py; empty: find_script_dir("")
-  std::string scene_dir;           // folder of the paper's scene files; empty: find_scene_dir("")
+  std::string script_dir;                   // folder of paper_draw.py; empty: find_script_dir("")
+  std::string scene_dir;                    // folder of the paper's scene files; empty: find_scene_dir("")
   // Progress: each step as it starts (figure k of n), and the diagram points of the phase diagrams.
   std::function<void(const std::string& step, int figure, int figures)> on_step;
   std::function<void(const Progress&)> on_progress;
@@ -41,14 +41,14 @@ struct ClaimCheck {
   std::string measured;  // the value computed from the runs
   std::string expected;  // the condition the value must meet
   bool passed = false;
-  std::string how;       // how the value is measured (window, tolerance, which runs)
+  std::string how;  // how the value is measured (window, tolerance, which runs)
 };
 
 struct PaperFigure {
-  std::string id;                  // "fig2", ... (also the PNG's name)
-  std::string title;               // "Fig. 2: reduced system dynamics with different excess areas"
-  std::vector<std::string> data;   // files behind it, relative to the output folder
-  double seconds = 0;              // its computation (drawing excluded)
+  std::string id;                 // "fig2", ... (also the PNG's name)
+  std::string title;              // "Fig. 2: reduced system dynamics with different excess areas"
+  std::vector<std::string> data;  // files behind it, relative to the output folder
+  double seconds = 0;             // its computation (drawing excluded)
 };
 
 struct PaperResult {

@@ -8,8 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include "rbcstab/report/detail/paper_draw_spec.hpp"
 #include "rbcstab/core/constants.hpp"
+#include "rbcstab/report/detail/paper_draw_spec.hpp"
 #include "rbcstab/report/detail/paper_figures.hpp"
 
 namespace rbcstab::detail::paper {
@@ -49,8 +49,8 @@ void app_vesicle(Composer& c, bool ip, int k, int n) {
     }
     const std::string xs = time_axis(rs, xlim);
     top.push_back(lines_panel(std::string("(") + letters[j] + ") $r(t)$, $\\lambda=" + lam + "$", "$r$", sr, xs, xlim));
-    bottom.push_back(
-        lines_panel(std::string("(") + letters[j + 3] + ") $\\Psi(t)$, $\\lambda=" + lam + "$", "$\\Psi$ (rad)", sp, xs, xlim));
+    bottom.push_back(lines_panel(std::string("(") + letters[j + 3] + ") $\\Psi(t)$, $\\lambda=" + lam + "$",
+                                 "$\\Psi$ (rad)", sp, xs, xlim));
   }
   auto at = [&](int lam, int cs) -> const Line& { return runs[std::size_t(3 * (lam / 2) + cs)]; };
   auto turn = [](const Line& l) { return net_turn(l.run.trajectory.Psi); };
@@ -64,8 +64,8 @@ void app_vesicle(Composer& c, bool ip, int k, int n) {
     }
     const double Lambda = at(1, 0).file.scene.parameters.Lambda();
     c.claim("lambda = 1: all three converge to tank-treading along Psi = pi/2",
-            "max |<Psi> - pi/2| = " + num(worst, 3) + ", max tail range of r = " + num(worst_r, 3),
-            "< 0.05 and < 1e-3", worst < 0.05 && worst_r < 1e-3,
+            "max |<Psi> - pi/2| = " + num(worst, 3) + ", max tail range of r = " + num(worst_r, 3), "< 0.05 and < 1e-3",
+            worst < 0.05 && worst_r < 1e-3,
             how + "; the reduced equations' tank-treading state at S >> 1 has cos Psi = Lambda r, i.e. Psi = arccos(" +
                 num(Lambda, 3) + ") = " + num(std::acos(std::min(1.0, Lambda)), 3) + " at r = 1, not pi/2");
     // The text's Psi = pi/2 against the paper's own steady state (Eq. ss_red_TT: r = 1, Psi = arccos Lambda for
@@ -80,13 +80,14 @@ void app_vesicle(Composer& c, bool ip, int k, int n) {
       worst_r1 = std::max(worst_r1, std::abs(tail_mean(l.t(), l.run.trajectory.r, w) - 1));
       cells += (cells.empty() ? "S = " : ", ") + num(l.file.scene.parameters.S(), 3);
     }
-    c.claim("lambda = 1: the tank-treading state is the reduced steady state r = 1, Psi = arccos Lambda (Eq. ss_red, "
-            "Lambda < 1) for the vesicle-like and enucleated RBC",
-            "max |<Psi> - arccos Lambda| = " + num(worst_ss, 3) + ", max |<r> - 1| = " + num(worst_r1, 3) +
-                " (arccos Lambda = " + num(std::acos(std::min(1.0, Lambda)), 3) + ")",
-            "< 0.02 and < 0.01", worst_ss < 0.02 && worst_r1 < 0.01,
-            how + "; leading order in 1/S (" + cells + "); the unstressed RBC (S = " +
-                num(at(1, 1).file.scene.parameters.S(), 3) + ") is left out");
+    c.claim(
+        "lambda = 1: the tank-treading state is the reduced steady state r = 1, Psi = arccos Lambda (Eq. ss_red, "
+        "Lambda < 1) for the vesicle-like and enucleated RBC",
+        "max |<Psi> - arccos Lambda| = " + num(worst_ss, 3) + ", max |<r> - 1| = " + num(worst_r1, 3) +
+            " (arccos Lambda = " + num(std::acos(std::min(1.0, Lambda)), 3) + ")",
+        "< 0.02 and < 0.01", worst_ss < 0.02 && worst_r1 < 0.01,
+        how + "; leading order in 1/S (" + cells +
+            "); the unstressed RBC (S = " + num(at(1, 1).file.scene.parameters.S(), 3) + ") is left out");
     for (int lam : {3, 5})
       c.claim("lambda = " + std::to_string(lam) + ": the vesicle-like RBC tumbles",
               "net turn of Psi = " + num(turn(at(lam, 0))), "< -2 pi", turn(at(lam, 0)) < -2 * kPi, how);
@@ -99,8 +100,9 @@ void app_vesicle(Composer& c, bool ip, int k, int n) {
               ts > paper_t / 2 && ts < 2 * paper_t, how);
       const Line& e = at(lam, 2);
       const double te = settle_time(e.t(), e.run.trajectory.r, 1e-3);
-      c.claim("lambda = " + std::to_string(lam) + ": the enucleated RBC's oscillations are damped more slowly than the "
-                                                  "unstressed RBC's",
+      c.claim("lambda = " + std::to_string(lam) +
+                  ": the enucleated RBC's oscillations are damped more slowly than the "
+                  "unstressed RBC's",
               "settling time of r: enucleated " + num(te, 3) + ", unstressed " + num(ts, 3), "enucleated > unstressed",
               te > ts, "r within 1e-3 of its final value; " + how);
     }
@@ -113,22 +115,22 @@ void app_vesicle(Composer& c, bool ip, int k, int n) {
     const Line& u3 = at(3, 1);
     const double drift_u = u3.run.trajectory.Psi.back() - tail_mean(u3.t(), u3.run.trajectory.Psi, T / 2);
     c.claim("lambda = 3: the vesicle-like RBC tumbles while the unstressed RBC swings",
-            "vesicle net turn of Psi = " + num(turn(at(3, 0))) + "; unstressed Psi(T) minus its second-half mean = " +
-                num(drift_u, 3),
-            "vesicle < -2 pi; |unstressed| < pi/2",
-            turn(at(3, 0)) < -2 * kPi && std::abs(drift_u) < kPi / 2, how);
+            "vesicle net turn of Psi = " + num(turn(at(3, 0))) +
+                "; unstressed Psi(T) minus its second-half mean = " + num(drift_u, 3),
+            "vesicle < -2 pi; |unstressed| < pi/2", turn(at(3, 0)) < -2 * kPi && std::abs(drift_u) < kPi / 2, how);
     double worst = -1e300;
     for (int cs = 0; cs < 3; ++cs) worst = std::max(worst, turn(at(5, cs)));
-    c.claim("lambda = 5: all three RBCs perform deformed tumbling", "largest net turn of Psi of the three = " + num(worst),
-            "< -2 pi", worst < -2 * kPi, how);
+    c.claim("lambda = 5: all three RBCs perform deformed tumbling",
+            "largest net turn of Psi of the three = " + num(worst), "< -2 pi", worst < -2 * kPi, how);
   }
   json panels = top;
   for (auto& p : bottom) panels.push_back(p);
-  c.end(panels, 2, 3, 1800, 900,
-        std::string("Unperturbed reduced dynamics, ") + (ip ? "in plane" : "out of plane") +
-            ": vesicle-like (C = 1e6, dashed green), unstressed (Delta = Delta0 = 1, C = 1, dash-dot) and enucleated RBC "
-            "(Delta = 1, Delta0 = 0.01, C = 1, solid) at lambda = 1, 3, 5; top r(t), bottom Psi(t). Delta = 1 and "
-            "Delta0 = 0.01 are this repository's choice (not printed in the paper).");
+  c.end(
+      panels, 2, 3, 1800, 900,
+      std::string("Unperturbed reduced dynamics, ") + (ip ? "in plane" : "out of plane") +
+          ": vesicle-like (C = 1e6, dashed green), unstressed (Delta = Delta0 = 1, C = 1, dash-dot) and enucleated RBC "
+          "(Delta = 1, Delta0 = 0.01, C = 1, solid) at lambda = 1, 3, 5; top r(t), bottom Psi(t). Delta = 1 and "
+          "Delta0 = 0.01 are this repository's choice (not printed in the paper).");
 }
 
 }  // namespace rbcstab::detail::paper

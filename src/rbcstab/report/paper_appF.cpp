@@ -44,8 +44,9 @@ void app_suppressed(Composer& c, int k, int n) {
       if (f > factor) factor = f, grown = m;
     }
     const std::vector<double> above = l.Delta_above2();
-    c.claim(std::string(i ? "(b)" : "(a)") + ": an initial growth of the perturbations, suppressed by the reduced "
-                                             "dynamics",
+    c.claim(std::string(i ? "(b)" : "(a)") +
+                ": an initial growth of the perturbations, suppressed by the reduced "
+                "dynamics",
             "largest growth max_t Delta_l / Delta_l(0) = " + num(factor, 4) + " (l = " + std::to_string(grown) +
                 "); sum_{l>=3} Delta_l: start " + num(above.front(), 3) + ", end " + num(above.back(), 3) +
                 "; l_Delta = " + std::to_string(l.run.l_Delta),

@@ -6,8 +6,8 @@
 #include <utility>
 #include <vector>
 
-#include "rbcstab/report/detail/paper_draw_spec.hpp"
 #include "rbcstab/core/constants.hpp"
+#include "rbcstab/report/detail/paper_draw_spec.hpp"
 #include "rbcstab/report/detail/paper_figures.hpp"
 
 namespace rbcstab::detail::paper {
@@ -40,12 +40,13 @@ void fig2(Composer& c, int k, int n) {
     const double r_small = tail_mean(small.t(), small.run.trajectory.r, w);
     const double r_large = tail_mean(large.t(), large.run.trajectory.r, w);
     c.claim(std::string(op ? "IP" : "OP") + ": increasing Delta lowers r at long times (a less elongated cell)",
-            "mean r = " + num(r_small) + " (Delta = 0.01), " + num(r_large) + " (Delta = 1)", "r(Delta = 1) < r(Delta = 0.01)",
-            r_large < r_small, how);
+            "mean r = " + num(r_small) + " (Delta = 0.01), " + num(r_large) + " (Delta = 1)",
+            "r(Delta = 1) < r(Delta = 0.01)", r_large < r_small, how);
   }
   for (int i = 0; i < 2; ++i) {
     const Line& l = runs[std::size_t(i)];
-    const double range_r = tail_range(l.t(), l.run.trajectory.r, w), range_p = tail_range(l.t(), l.run.trajectory.Psi, w);
+    const double range_r = tail_range(l.t(), l.run.trajectory.r, w),
+                 range_p = tail_range(l.t(), l.run.trajectory.Psi, w);
     c.claim(std::string("OP, ") + (i ? "Delta = 1" : "Delta = 0.01") +
                 ": r saturates to a fixed value at a fixed angle Psi (steady state)",
             "tail range of r = " + num(range_r, 3) + ", of Psi = " + num(range_p, 3), "both < 1e-3",

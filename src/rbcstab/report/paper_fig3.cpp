@@ -78,12 +78,29 @@ void fig3(Composer& c, int k, int n) {
              {"xlim", {1, 8}},
              {"ylim", {-4 * alpha, 1.2 * std::max(crit(band.l_c.value, s_below), 0.0) + 10}},
              {"series",
-              {{{"data", fa}, {"x", "l"}, {"y", "criterion_sigma_star"}, {"label", "$\\sigma=\\sigma_*$"},
-                {"color", "black"}, {"ls", "--"}, {"lw", 1.5}},
-               {{"data", fa}, {"x", "l"}, {"y", "criterion_below"}, {"label", "$\\sigma=" + num(s_below / s_star, 3) + "\\,\\sigma_*$"},
-                {"color", "black"}, {"ls", "-"}, {"lw", 1.8}},
-               {{"data", fb}, {"x", "l"}, {"y", "B_Upsilon"}, {"label", "$\\mathcal{B}\\Upsilon_l$ (right axis)"},
-                {"color", "tab:green"}, {"ls", "-"}, {"lw", 1.2}, {"marker", "o"}, {"right", true}}}},
+              {{{"data", fa},
+                {"x", "l"},
+                {"y", "criterion_sigma_star"},
+                {"label", "$\\sigma=\\sigma_*$"},
+                {"color", "black"},
+                {"ls", "--"},
+                {"lw", 1.5}},
+               {{"data", fa},
+                {"x", "l"},
+                {"y", "criterion_below"},
+                {"label", "$\\sigma=" + num(s_below / s_star, 3) + "\\,\\sigma_*$"},
+                {"color", "black"},
+                {"ls", "-"},
+                {"lw", 1.8}},
+               {{"data", fb},
+                {"x", "l"},
+                {"y", "B_Upsilon"},
+                {"label", "$\\mathcal{B}\\Upsilon_l$ (right axis)"},
+                {"color", "tab:green"},
+                {"ls", "-"},
+                {"lw", 1.2},
+                {"marker", "o"},
+                {"right", true}}}},
              {"hlines", {hline(0, "", "0.5", ":", 1.0)}},
              {"vlines",
               {{{"x", band.l_c.value}, {"label", "$l_c$"}, {"color", "black"}, {"ls", "--"}},
@@ -100,8 +117,9 @@ void fig3(Composer& c, int k, int n) {
   c.claim("(a) l_c can differ from the fastest-growing mode",
           "l_c = " + num(band.l_c.value) + ", fastest-growing integer mode " + std::to_string(fastest),
           "round(l_c) != fastest mode at some sigma < sigma_*", int(std::lround(band.l_c.value)) != fastest,
-          s_text + ": the first sigma below sigma_* (steps of 0.01 sigma_*, down to 3 sigma_*) where they differ; "
-          "integer l only (Upsilon_l is defined at integer l)");
+          s_text +
+              ": the first sigma below sigma_* (steps of 0.01 sigma_*, down to 3 sigma_*) where they differ; "
+              "integer l only (Upsilon_l is defined at integer l)");
 
   // (b)-(e): OP and IP runs with their reduced companions (sigma_R).
   const std::vector<Line> runs = c.lines({"fig3_b_op", "fig3_c_ip"}, true);
@@ -121,10 +139,10 @@ void fig3(Composer& c, int k, int n) {
         time_axis({{&l.t(), &D[0]}, {&l.t(), &D[1]}, {&l.t(), &D[2]}, {&l.t(), &l.run.trajectory.sigma}}, xlim);
     json s = json::array();
     for (int m = 2; m <= 4; ++m)
-      s.push_back(series(l.csv, "Delta_" + std::to_string(m), "$\\Delta_" + std::to_string(m) + "$",
-                         lcolor[m - 2], m == 2 ? "-" : (m == 3 ? "--" : "-.")));
-    delta_panels.push_back(lines_panel(std::string(ip ? "(c)" : "(b)") + " $\\Delta_l(t)$, " + tag, "$\\Delta_l$", s, xs,
-                                       xlim, "log"));
+      s.push_back(series(l.csv, "Delta_" + std::to_string(m), "$\\Delta_" + std::to_string(m) + "$", lcolor[m - 2],
+                         m == 2 ? "-" : (m == 3 ? "--" : "-.")));
+    delta_panels.push_back(
+        lines_panel(std::string(ip ? "(c)" : "(b)") + " $\\Delta_l(t)$, " + tag, "$\\Delta_l$", s, xs, xlim, "log"));
     json ps = lines_panel(std::string(ip ? "(e)" : "(d)") + " $\\sigma(t)$, " + tag, "$\\sigma$",
                           {series(red.csv, "sigma", "$\\sigma_R(t)$ (reduced)", "0.6", "-", 3.5),
                            series(l.csv, "sigma", "$\\sigma(t)$", "black", "-", 1.3)},
@@ -138,9 +156,9 @@ void fig3(Composer& c, int k, int n) {
 
     const double T = l.t().back(), w = 50;
     c.claim(tag + ": Delta_2 decreases while Delta_3 and Delta_4 grow initially",
-            "Delta_2: " + num(D[0].front()) + " -> " + num(D[0].back()) + "; max Delta_3 / Delta_3(0) = " +
-                num(*std::max_element(D[1].begin(), D[1].end()) / D[1].front()) + ", max Delta_4 / Delta_4(0) = " +
-                num(*std::max_element(D[2].begin(), D[2].end()) / D[2].front()),
+            "Delta_2: " + num(D[0].front()) + " -> " + num(D[0].back()) +
+                "; max Delta_3 / Delta_3(0) = " + num(*std::max_element(D[1].begin(), D[1].end()) / D[1].front()) +
+                ", max Delta_4 / Delta_4(0) = " + num(*std::max_element(D[2].begin(), D[2].end()) / D[2].front()),
             "Delta_2(T) < Delta_2(0); both ratios > 1",
             D[0].back() < D[0].front() && *std::max_element(D[1].begin(), D[1].end()) > D[1].front() &&
                 *std::max_element(D[2].begin(), D[2].end()) > D[2].front(),
@@ -149,7 +167,8 @@ void fig3(Composer& c, int k, int n) {
     c.claim(tag + ": Delta_4 first grows, then decays (l = 4 is stabilised)",
             "max Delta_4 = " + num(*peak4, 3) + " at t = " + num(l.t()[std::size_t(peak4 - D[2].begin())]) +
                 ", Delta_4(T) = " + num(D[2].back(), 3),
-            "interior maximum, Delta_4(T) < max / 2", grows_then_decays(D[2], 0.5), "samples on the scene's output grid");
+            "interior maximum, Delta_4(T) < max / 2", grows_then_decays(D[2], 0.5),
+            "samples on the scene's output grid");
     const std::vector<double> above = l.Delta_above2();
     const double share = tail_mean(l.t(), D[1], w) / tail_mean(l.t(), above, w);
     c.claim(tag + ": Delta_3 takes the area (l = 3 keeps growing and holds the excess area beyond l = 2)",
@@ -175,10 +194,11 @@ void fig3(Composer& c, int k, int n) {
   panels.push_back(delta_panels[1]);
   panels.push_back(sigma_panels[0]);
   panels.push_back(sigma_panels[1]);
-  c.end(panels, 3, 2, 1300, 1450,
-        "(a) the simplified criterion at alpha = 25, at sigma_* (dashed) and below it (solid), and B Upsilon_l (green). "
-        "(b)-(c) Delta_l(t), l = 2..4, for C = 0.04, B = 2, Delta = 1, Delta0 = 0.01, lambda = 5, OP and IP; "
-        "(d)-(e) sigma(t), sigma_R(t) (thick grey) and sigma_3^c, sigma_4^c.");
+  c.end(
+      panels, 3, 2, 1300, 1450,
+      "(a) the simplified criterion at alpha = 25, at sigma_* (dashed) and below it (solid), and B Upsilon_l (green). "
+      "(b)-(c) Delta_l(t), l = 2..4, for C = 0.04, B = 2, Delta = 1, Delta0 = 0.01, lambda = 5, OP and IP; "
+      "(d)-(e) sigma(t), sigma_R(t) (thick grey) and sigma_3^c, sigma_4^c.");
 }
 
 }  // namespace rbcstab::detail::paper

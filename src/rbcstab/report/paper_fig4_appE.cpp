@@ -39,8 +39,9 @@ void agreement_claims(Composer& c, const Diagram& d, const std::string& panel) {
     const std::string measured = "verdict " + pct(f) + ", mode " + pct(fm) + " of " + std::to_string(a.points) +
                                  " points (" + std::to_string(a.beyond_one_step) + " misses beyond one grid step)";
     if (alpha_line && Lambda < 1) {
-      alpha_lines += "; the " + a.predictor + " line against the simulated stability (not claimed at Lambda = " +
-                     num(Lambda, 3) + " < 1): " + measured;
+      alpha_lines += "; the " + a.predictor +
+                     " line against the simulated stability (not claimed at Lambda = " + num(Lambda, 3) +
+                     " < 1): " + measured;
       continue;
     }
     c.claim(panel + ": the " + a.predictor + " prediction matches the simulated stability (and mode)", measured,
@@ -49,8 +50,9 @@ void agreement_claims(Composer& c, const Diagram& d, const std::string& panel) {
   if (!mode_source || mode_source->points == 0) return;
   const Agreement& a = *mode_source;
   const double u = a.unstable_matches ? double(a.unstable_mode_matches) / double(a.unstable_matches) : 0.0;
-  c.claim(panel + ": alpha dictates the excited mode (round(l_*) is the simulated l_Delta where both call the point "
-                  "unstable)",
+  c.claim(panel +
+              ": alpha dictates the excited mode (round(l_*) is the simulated l_Delta where both call the point "
+              "unstable)",
           "mode " + pct(u) + " of " + std::to_string(a.unstable_matches) + " points both call unstable", ">= 90%",
           a.unstable_matches > 0 && u >= 0.9, a.description + alpha_lines);
 }
@@ -65,7 +67,8 @@ void diagram_triplet(Composer& c, const std::string& id, const std::string& titl
   c.begin(id, title, label, k, n);
   std::vector<Diagram> ds;
   const char* tags[] = {"(a) lambda = 1, Delta = 1", "(b) lambda = 5, Delta = 1", "(c) lambda = 5, Delta = 0.1"};
-  const char* tex[] = {"(a) $\\lambda=1$, $\\Delta=1$", "(b) $\\lambda=5$, $\\Delta=1$", "(c) $\\lambda=5$, $\\Delta=0.1$"};
+  const char* tex[] = {"(a) $\\lambda=1$, $\\Delta=1$", "(b) $\\lambda=5$, $\\Delta=1$",
+                       "(c) $\\lambda=5$, $\\Delta=0.1$"};
   json panels = json::array();
   for (std::size_t i = 0; i < names.size(); ++i) {
     ds.push_back(c.diagram(names[i], title));
@@ -79,17 +82,18 @@ void diagram_triplet(Composer& c, const std::string& id, const std::string& titl
           "unstable points with ln C > 0: (a) " + std::to_string(a) + ", (b) " + std::to_string(b), "(b) > (a)", b > a,
           grid);
   c.claim("Increasing Delta destabilises RBCs of high C: (b) has more unstable high-C points than (c)",
-          "unstable points with ln C > 0: (b) " + std::to_string(b) + ", (c) " + std::to_string(cc), "(b) > (c)", b > cc,
-          grid);
+          "unstable points with ln C > 0: (b) " + std::to_string(b) + ", (c) " + std::to_string(cc), "(b) > (c)",
+          b > cc, grid);
   if (label == "Fig. 4") {
-    // Sec. VI: R ~ 3 um, mu ~ 2.5 uPa m, kappa ~ 2e-19 J give ln B ~ 4.5, ln C ~ 0, "in the unstable region at lambda = 5".
+    // Sec. VI: R ~ 3 um, mu ~ 2.5 uPa m, kappa ~ 2e-19 J give ln B ~ 4.5, ln C ~ 0, "in the unstable region at lambda =
+    // 5".
     const Diagram& d = ds[1];
     const PointResult* best = nullptr;
     for (const auto& p : d.points)
       if (!best || std::hypot(p.x - 4.5, p.y) < std::hypot(best->x - 4.5, best->y)) best = &p;
     c.claim("(b) The physiological estimate ln B ~ 4.5, ln C ~ 0 lies in the unstable region at lambda = 5",
-            "nearest grid point (ln B, ln C) = (" + num(best->x, 3) + ", " + num(best->y, 3) + "): " +
-                to_string(best->verdict) + ", l_Delta = " + std::to_string(best->l_Delta),
+            "nearest grid point (ln B, ln C) = (" + num(best->x, 3) + ", " + num(best->y, 3) +
+                "): " + to_string(best->verdict) + ", l_Delta = " + std::to_string(best->l_Delta),
             "unstable", best->verdict == Verdict::unstable, grid);
   }
   c.end(panels, 1, 3, 2100, 650, caption);

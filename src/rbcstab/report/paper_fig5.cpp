@@ -30,15 +30,20 @@ void fig5(Composer& c, int k, int n) {
       count[{panel, alphas[i]}] = d.unstable();
       halves[{panel, alphas[i]}] = {d.unstable([](const PointResult& p) { return p.y < 5; }),
                                     d.unstable([](const PointResult& p) { return p.y >= 5; })};
-      sets.push_back({{"data", d.csv}, {"label", "unstable, $\\alpha=" + std::to_string(alphas[i]) + "$"},
-                      {"color", colors[i]}, {"marker", markers[i]}});
+      sets.push_back({{"data", d.csv},
+                      {"label", "unstable, $\\alpha=" + std::to_string(alphas[i]) + "$"},
+                      {"color", colors[i]},
+                      {"marker", markers[i]}});
       for (const Overlay& o : analytic_overlays(d.file.scene, d.spec, 200))
         if (o.name == "lambda_star_minus")
-          curves.push_back({{"x", o.x}, {"y", o.y}, {"color", colors[i]}, {"style", "dashed"},
+          curves.push_back({{"x", o.x},
+                            {"y", o.y},
+                            {"color", colors[i]},
+                            {"style", "dashed"},
                             {"label", "$\\lambda_*^-$, $\\alpha=" + std::to_string(alphas[i]) + "$"}});
     }
-    const std::string curves_file = c.put(std::string("fig5") + panel + "_lambda_star.json",
-                                          json{{"curves", curves}}.dump(1) + "\n");
+    const std::string curves_file =
+        c.put(std::string("fig5") + panel + "_lambda_star.json", json{{"curves", curves}}.dump(1) + "\n");
     panels.push_back({{"kind", "markers"},
                       {"title", panel == 'a' ? "(a) $\\Delta=1$" : "(b) $\\Delta=0.1$"},
                       {"sets", sets},
@@ -47,27 +52,31 @@ void fig5(Composer& c, int k, int n) {
                       {"ylabel", "$\\lambda$"}});
   }
   auto counts = [&](char p) {
-    return std::to_string(count[{p, 40}]) + ", " + std::to_string(count[{p, 100}]) + ", " + std::to_string(count[{p, 500}]);
+    return std::to_string(count[{p, 40}]) + ", " + std::to_string(count[{p, 100}]) + ", " +
+           std::to_string(count[{p, 500}]);
   };
   c.claim("(b) alpha = 40 is below alpha_*^init: the whole ln C - lambda plane is stable",
           "unstable points at alpha = 40, Delta = 0.1: " + std::to_string(count[{'b', 40}]), "0", count[{'b', 40}] == 0,
           grid);
   for (char p : {'a', 'b'})
     c.claim(std::string("(") + p + ") Increasing alpha pushes the boundary to higher C (more of the plane unstable)",
-            "unstable points at alpha = 40, 100, 500: " + counts(p), "non-decreasing in alpha, alpha = 500 > alpha = 40",
+            "unstable points at alpha = 40, 100, 500: " + counts(p),
+            "non-decreasing in alpha, alpha = 500 > alpha = 40",
             count[{p, 40}] <= count[{p, 100}] && count[{p, 100}] <= count[{p, 500}] && count[{p, 500}] > count[{p, 40}],
             grid);
   bool delta_effect = true;
   for (int a : alphas) delta_effect = delta_effect && count[{'a', a}] >= count[{'b', a}];
   c.claim("A similar effect for increased Delta: (a) Delta = 1 at least as unstable as (b) Delta = 0.1 at every alpha",
-          "unstable points (a): " + counts('a') + "; (b): " + counts('b'), "(a) >= (b) at each alpha", delta_effect, grid);
+          "unstable points (a): " + counts('a') + "; (b): " + counts('b'), "(a) >= (b) at each alpha", delta_effect,
+          grid);
   const auto [low, high] = halves[{'a', 500}];
   c.claim("Increasing lambda destabilises RBCs with large C (panel (a), alpha = 500)",
           "unstable points at lambda < 5: " + std::to_string(low) + ", lambda >= 5: " + std::to_string(high),
           "lambda >= 5 > lambda < 5", high > low, grid);
-  c.end(panels, 1, 2, 1500, 650,
-        "OP stability in ln C - lambda at alpha = 40, 100, 500 for Delta = 1 (a) and 0.1 (b); markers: unstable points; "
-        "dashed: lambda_*^-(C) of Eq. ss_lambda_red for each alpha.");
+  c.end(
+      panels, 1, 2, 1500, 650,
+      "OP stability in ln C - lambda at alpha = 40, 100, 500 for Delta = 1 (a) and 0.1 (b); markers: unstable points; "
+      "dashed: lambda_*^-(C) of Eq. ss_lambda_red for each alpha.");
 }
 
 }  // namespace rbcstab::detail::paper

@@ -23,7 +23,8 @@ namespace {
 
 std::string shares_text(const std::vector<double>& share) {
   std::string out;
-  for (std::size_t m = 0; m < share.size(); ++m) out += (m ? ", " : "") + std::string("|m| = ") + std::to_string(m) + ": " + pct(share[m]);
+  for (std::size_t m = 0; m < share.size(); ++m)
+    out += (m ? ", " : "") + std::string("|m| = ") + std::to_string(m) + ": " + pct(share[m]);
   return out;
 }
 
@@ -40,10 +41,11 @@ json shape_insets(Composer& c, const std::vector<const Line*>& runs, const std::
     const bool ip = i == 1;
     const ModeAmplitudes f = final_amplitudes(l.file.scene, l.run);
     const std::string csv = c.put(l.file.scene.name + "_shape_T.csv", to_csv(shape_on_grid(f, grid)));
-    insets.push_back({{"data", csv},
-                      {"in_plane", ip},
-                      {"label", std::string(ip ? "IP, from above" : "OP, from below") + ", $t=" + num(l.run.t_reached) + "$"},
-                      {"bounds", {0.6, ip ? 0.02 : 0.4, 0.4, 0.36}}});
+    insets.push_back(
+        {{"data", csv},
+         {"in_plane", ip},
+         {"label", std::string(ip ? "IP, from above" : "OP, from below") + ", $t=" + num(l.run.t_reached) + "$"},
+         {"bounds", {0.6, ip ? 0.02 : 0.4, 0.4, 0.36}}});
     // Sec. V: "the long-time structures inherit their symmetry from their initial state and their orientation
     // with respect to the flow": the dominant mode's azimuthal pattern at T is its pattern at t = 0.
     int top = 3;
@@ -54,19 +56,21 @@ json shape_insets(Composer& c, const std::vector<const Line*>& runs, const std::
     double moved = 0;
     for (std::size_t m = 0; m < end.size(); ++m) moved = std::max(moved, std::abs(end[m] - start[m]));
     const std::size_t largest = std::size_t(std::max_element(end.begin(), end.end()) - end.begin());
-    const std::string measured = "dominant l >= 3 mode at T: l = " + std::to_string(top) + " (Delta_l = " +
-                                 num(f.excess_area(top), 3) + "); shares at T: " + shares_text(end) +
+    const std::string measured = "dominant l >= 3 mode at T: l = " + std::to_string(top) +
+                                 " (Delta_l = " + num(f.excess_area(top), 3) + "); shares at T: " + shares_text(end) +
                                  "; largest change from t = 0: " + num(100 * moved, 3) + " points";
     const std::string how = "final amplitudes f_{l,m}(T) of the delta = 1e-3 run; m about the vorticity axis z";
     if (!ip)
-      c.claim(tag + ", OP: the cell evolves into a stomatocyte: its dominant l >= 3 mode is odd (a cup) and "
-                    "axisymmetric about the vorticity axis, the symmetry it started with",
+      c.claim(tag +
+                  ", OP: the cell evolves into a stomatocyte: its dominant l >= 3 mode is odd (a cup) and "
+                  "axisymmetric about the vorticity axis, the symmetry it started with",
               measured, "odd l, |m| = 0 share >= 99%, shares within 1 point of t = 0",
               top % 2 == 1 && end[0] >= 0.99 && moved < 0.01, how);
     else
-      c.claim(tag + ", IP: the cell evolves into a multi-lobed shape: its dominant l >= 3 mode has no axisymmetric "
-                    "part about the vorticity axis and most area at |m| = l (l lobes in the shear plane), the pattern "
-                    "it started with",
+      c.claim(tag +
+                  ", IP: the cell evolves into a multi-lobed shape: its dominant l >= 3 mode has no axisymmetric "
+                  "part about the vorticity axis and most area at |m| = l (l lobes in the shear plane), the pattern "
+                  "it started with",
               measured, "|m| = 0 share < 1%, |m| = l the largest share, shares within 1 point of t = 0",
               end[0] < 0.01 && largest == std::size_t(top) && moved < 0.01, how);
   }
@@ -105,7 +109,8 @@ void fig6(Composer& c, int k, int n) {
       ss.push_back(series(runs[i].csv, "sigma", rlabel[i], rcolor[i], "-", 1.2));
     }
     const std::string a = lam == 5 ? "(a)" : "(c)", b = lam == 5 ? "(b)" : "(d)";
-    json pd = lines_panel(a + " $\\Delta_l(t)$, $\\lambda=" + std::to_string(lam) + "$ (solid $l=2$, dashed 3, dash-dot 4; runs as in " + b + ")",
+    json pd = lines_panel(a + " $\\Delta_l(t)$, $\\lambda=" + std::to_string(lam) +
+                              "$ (solid $l=2$, dashed 3, dash-dot 4; runs as in " + b + ")",
                           "$\\Delta_l$", sd, "log", {1, T}, "log");
     pd["hlines"] = {hline(tilde, "$\\tilde\\Delta_2$ (theory)", "black", "-", 3),
                     hline(mean_bar, "$\\bar\\Delta_2$ (simulations)", "tab:green", "--", 2)};
@@ -136,8 +141,9 @@ void fig6(Composer& c, int k, int n) {
               how + "; delta = 1e-3; Delta~_2 with the continuous l_* (Eq. ss)");
     }
     const double sgap = std::abs(bar_sigma[0] - s_star) / std::abs(s_star);
-    c.claim(tag + ": sigma saturates at ~sigma_*", "mean sigma (OP, delta = 1e-3) = " + num(bar_sigma[0]) +
-                                                       ", sigma_* = " + num(s_star) + " (gap " + pct(sgap) + ")",
+    c.claim(tag + ": sigma saturates at ~sigma_*",
+            "mean sigma (OP, delta = 1e-3) = " + num(bar_sigma[0]) + ", sigma_* = " + num(s_star) + " (gap " +
+                pct(sgap) + ")",
             "gap < 10%", sgap < 0.1, how);
   }
   // (e): the Fig. 6e table.
@@ -173,14 +179,14 @@ void fig6(Composer& c, int k, int n) {
       by_lambda[r.lambda].push_back({r.ln_alpha, std::abs(r.ratio.value - 1)});
     }
   if (dev.empty()) {
-    c.claim("(e) Systematic agreement between Delta~_2 and Delta-bar_2", "no unstable row with a prediction", "some rows",
-            false, "fig6e grid");
+    c.claim("(e) Systematic agreement between Delta~_2 and Delta-bar_2", "no unstable row with a prediction",
+            "some rows", false, "fig6e grid");
   } else {
     std::sort(dev.begin(), dev.end());
     const double median = dev[dev.size() / 2];
     c.claim("(e) Systematic agreement between Delta~_2 and Delta-bar_2",
-            "median |ratio - 1| = " + pct(median) + " over " + std::to_string(dev.size()) + " unstable rows",
-            "< 10%", median < 0.1, std::to_string(rows.size()) + " runs (lambda x B x C)");
+            "median |ratio - 1| = " + pct(median) + " over " + std::to_string(dev.size()) + " unstable rows", "< 10%",
+            median < 0.1, std::to_string(rows.size()) + " runs (lambda x B x C)");
   }
   for (auto& [lam, v] : by_lambda) {
     std::sort(v.begin(), v.end());
@@ -189,15 +195,17 @@ void fig6(Composer& c, int k, int n) {
     for (std::size_t i = 0; i < v.size(); ++i) (i < h ? lo : hi) += v[i].second;
     lo /= double(std::max<std::size_t>(h, 1));
     hi /= double(std::max<std::size_t>(v.size() - h, 1));
-    c.claim("(e) inset, lambda = " + num(lam) + ": the ratio Delta~_2 / Delta-bar_2 deviates more as alpha decreases "
-                                               "towards the boundary",
+    c.claim("(e) inset, lambda = " + num(lam) +
+                ": the ratio Delta~_2 / Delta-bar_2 deviates more as alpha decreases "
+                "towards the boundary",
             "mean |ratio - 1| at the lower half of ln alpha = " + pct(lo) + ", upper half = " + pct(hi),
             "lower half > upper half", v.size() >= 2 && lo > hi, std::to_string(v.size()) + " unstable rows");
   }
   c.end(panels, 3, 2, 1300, 1750,
         "(a)-(d) Delta_l(t), l = 2..4, and sigma(t) for B = 2, C = 0.04, Delta = 1, Delta0 = 0.01, lambda = 5 (a, b) "
         "and 1 (c, d), delta = 1e-3, 1e-10, OP and IP; black: Delta~_2 and sigma_*; green: the simulations' "
-        "Delta-bar_2. Insets of (a), (c): the shapes the delta = 1e-3 runs end in at T, OP (a stomatocyte, seen obliquely "
+        "Delta-bar_2. Insets of (a), (c): the shapes the delta = 1e-3 runs end in at T, OP (a stomatocyte, seen "
+        "obliquely "
         "from below) and IP (a multi-lobed shape, seen from above the shear plane), coloured by the distance from the "
         "origin. (e) Delta~_2 against Delta-bar_2 over lambda = 1, 5, B, C; inset: the ratio against ln alpha.");
 }

@@ -12,10 +12,14 @@ namespace {
 std::string esc(const std::string& s) {
   std::string o;
   for (char ch : s) {
-    if (ch == '<') o += "&lt;";
-    else if (ch == '>') o += "&gt;";
-    else if (ch == '&') o += "&amp;";
-    else o += ch;
+    if (ch == '<')
+      o += "&lt;";
+    else if (ch == '>')
+      o += "&gt;";
+    else if (ch == '&')
+      o += "&amp;";
+    else
+      o += ch;
   }
   return o;
 }
@@ -31,8 +35,9 @@ std::string paper_html(const json& spec, const PaperResult& r, const PaperOption
        ".fig{display:flex;gap:1em;flex-wrap:wrap}.fig>div{flex:1 1 600px}</style></head><body>\n";
   h << "<h1>Moriel, Stone &amp; Mendez: the figures recomputed by rbcstab</h1>\n<p>"
     << (o.quick ? "Quick mode (coarse grids: 12 x 12 phase diagrams, a reduced Fig. 6e grid). " : "Full grids. ")
-    << "Claims checked: " << r.passed << " passed, " << r.failed << " failed. Runs that did not reach T: "
-    << r.failed_runs << ". A failed claim is shown as measured, not tuned away.</p>\n<ul>";
+    << "Claims checked: " << r.passed << " passed, " << r.failed
+    << " failed. Runs that did not reach T: " << r.failed_runs
+    << ". A failed claim is shown as measured, not tuned away.</p>\n<ul>";
   for (const auto& f : spec["figures"])
     h << "<li><a href=\"#" << f["id"].get<std::string>() << "\">" << esc(f["title"].get<std::string>()) << "</a></li>";
   h << "</ul>\n";
@@ -40,15 +45,17 @@ std::string paper_html(const json& spec, const PaperResult& r, const PaperOption
     const std::string label = f["label"];
     h << "<h2 id=\"" << f["id"].get<std::string>() << "\">" << esc(f["title"].get<std::string>()) << "</h2>\n"
       << "<div class=\"fig\"><div><img src=\"" << f["png"].get<std::string>() << "\" alt=\"" << esc(label)
-      << "\"></div><div><p>" << esc(f["caption"].get<std::string>()) << "</p>\n<table><tr><th>claim</th><th>measured</th>"
+      << "\"></div><div><p>" << esc(f["caption"].get<std::string>())
+      << "</p>\n<table><tr><th>claim</th><th>measured</th>"
       << "<th>expected</th><th></th><th>how</th></tr>\n";
     for (const ClaimCheck& c : r.claims)
       if (c.figure == label)
-        h << "<tr class=\"" << (c.passed ? "pass" : "fail") << "\"><td>" << esc(c.claim) << "</td><td>" << esc(c.measured)
-          << "</td><td>" << esc(c.expected) << "</td><td>" << (c.passed ? "passed" : "<b>FAILED</b>") << "</td><td>"
-          << esc(c.how) << "</td></tr>\n";
+        h << "<tr class=\"" << (c.passed ? "pass" : "fail") << "\"><td>" << esc(c.claim) << "</td><td>"
+          << esc(c.measured) << "</td><td>" << esc(c.expected) << "</td><td>" << (c.passed ? "passed" : "<b>FAILED</b>")
+          << "</td><td>" << esc(c.how) << "</td></tr>\n";
     h << "</table><p>Data: ";
-    for (const auto& d : f["data"]) h << "<a href=\"" << d.get<std::string>() << "\">" << d.get<std::string>() << "</a> ";
+    for (const auto& d : f["data"])
+      h << "<a href=\"" << d.get<std::string>() << "\">" << d.get<std::string>() << "</a> ";
     h << "</p><p>Computed in " << num(f["seconds"].get<double>(), 3) << " s.</p></div></div>\n";
   }
   h << "<p>Drawing spec: <a href=\"paper.json\">paper.json</a>; claims: <a href=\"claims.json\">claims.json</a>.</p>"

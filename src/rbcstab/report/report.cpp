@@ -4,10 +4,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <fcntl.h>
 #include <algorithm>
 #include <cerrno>
 #include <chrono>
-#include <fcntl.h>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -57,7 +57,6 @@ std::string grid_csv(const ShapeGrid& g) {
   return ss.str();
 }
 
-
 }  // namespace
 
 int run_process(const std::vector<std::string>& args, const std::string& log_path) {
@@ -78,7 +77,6 @@ int run_process(const std::vector<std::string>& args, const std::string& log_pat
     if (errno != EINTR) return -1;
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
-
 
 namespace detail {
 std::string log_tail(const std::string& path, std::size_t n) {
@@ -253,29 +251,30 @@ void add_hook_figures(const ReportOptions& o, const std::optional<PlotSpec>& bif
     if (!o.figure_title.empty()) f["title"] = o.figure_title;
     return f;
   };
-    if (!o.phase_diagram.empty()) {
-      std::vector<std::string> data{import_hook(o.phase_diagram, dir, "phase_diagram.csv")};
-      const fs::path overlay = fs::path(o.phase_diagram).replace_extension(".json");
-      if (fs::is_regular_file(overlay, ec)) data.push_back(import_hook(overlay.string(), dir, "phase_diagram_overlay.json"));
-      files.insert(files.end(), data.begin(), data.end());
-      figs.push_back(titled(figure("phase_diagram", "fig_phase_diagram.png", 900, 750, data,
-                            "Phase diagram coloured by l_Delta with the traced boundaries and analytic lines")));
-    }
-    if (!o.delta2_comparison.empty()) {
-      const std::string d = import_hook(o.delta2_comparison, dir, "delta2_comparison.csv");
-      files.push_back(d);
-      figs.push_back(titled(figure("delta2_comparison", "fig_delta2_theory.png", 750, 750, {d},
-                            "Fig. 6e-type: post-instability Delta~_2 from theory against the simulated mean")));
-    }
-    if (bifurcation) {
-      const std::string d = import_hook(o.bifurcation, dir, "bifurcation.json");
-      write_file_atomic((dir / "bifurcation_plot.json").string(), to_json(*bifurcation).dump(1) + "\n");
-      files.insert(files.end(), {d, "bifurcation_plot.json"});
-      figs.push_back(titled(figure("bifurcation", "fig_bifurcation.png", 900, 675, {"bifurcation_plot.json", d},
-                                   "Bifurcation diagram: " + bifurcation->y.name + " against " + bifurcation->x.name +
-                                       "; stable solid, unstable dashed, uncertain dotted; special points marked "
-                                       "with their type and label (bifurcation_plot.json: what was drawn)")));
-    }
+  if (!o.phase_diagram.empty()) {
+    std::vector<std::string> data{import_hook(o.phase_diagram, dir, "phase_diagram.csv")};
+    const fs::path overlay = fs::path(o.phase_diagram).replace_extension(".json");
+    if (fs::is_regular_file(overlay, ec))
+      data.push_back(import_hook(overlay.string(), dir, "phase_diagram_overlay.json"));
+    files.insert(files.end(), data.begin(), data.end());
+    figs.push_back(titled(figure("phase_diagram", "fig_phase_diagram.png", 900, 750, data,
+                                 "Phase diagram coloured by l_Delta with the traced boundaries and analytic lines")));
+  }
+  if (!o.delta2_comparison.empty()) {
+    const std::string d = import_hook(o.delta2_comparison, dir, "delta2_comparison.csv");
+    files.push_back(d);
+    figs.push_back(titled(figure("delta2_comparison", "fig_delta2_theory.png", 750, 750, {d},
+                                 "Fig. 6e-type: post-instability Delta~_2 from theory against the simulated mean")));
+  }
+  if (bifurcation) {
+    const std::string d = import_hook(o.bifurcation, dir, "bifurcation.json");
+    write_file_atomic((dir / "bifurcation_plot.json").string(), to_json(*bifurcation).dump(1) + "\n");
+    files.insert(files.end(), {d, "bifurcation_plot.json"});
+    figs.push_back(titled(figure("bifurcation", "fig_bifurcation.png", 900, 675, {"bifurcation_plot.json", d},
+                                 "Bifurcation diagram: " + bifurcation->y.name + " against " + bifurcation->x.name +
+                                     "; stable solid, unstable dashed, uncertain dotted; special points marked "
+                                     "with their type and label (bifurcation_plot.json: what was drawn)")));
+  }
 
   for (const std::string& a : o.attachments) files.push_back(import_hook(a, dir, fs::path(a).filename().string()));
 }
@@ -287,7 +286,8 @@ void draw_and_publish(const ReportOptions& o, const nlohmann::json& manifest, co
   std::error_code ec;
   const std::string log = (tmp / "plot.log").string();
   if (o.on_step) o.on_step("drawing the figures with " + o.python);
-  const int rc = run_process({o.python, (fs::path(o.script_dir) / kReportScript).string(), "report", tmp.string()}, log);
+  const int rc =
+      run_process({o.python, (fs::path(o.script_dir) / kReportScript).string(), "report", tmp.string()}, log);
   if (rc != 0)
     throw ReportError("the plotting script failed (exit " + std::to_string(rc) + "): " + detail::log_tail(log, 1500));
   files.push_back("plot.log");
@@ -306,8 +306,9 @@ void draw_and_publish(const ReportOptions& o, const nlohmann::json& manifest, co
 ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, const std::optional<PlotSpec>& bifurcation,
                                 const fs::path& target, std::chrono::steady_clock::time_point start) {
   if (o.phase_diagram.empty() && o.delta2_comparison.empty() && o.bifurcation.empty())
-    throw InvalidArgument("run_scene", "run_scene = false (a figure panel) needs a phase diagram, a Fig. 6e table "
-                                       "or a bifurcation to draw");
+    throw InvalidArgument("run_scene",
+                          "run_scene = false (a figure panel) needs a phase diagram, a Fig. 6e table "
+                          "or a bifurcation to draw");
   ReportResult res;
   detail::in_staging_folder(target, [&](const fs::path& tmp) {
     write_file_atomic((tmp / "scene.toml").string(), o.scene_toml.empty() ? to_toml(sf) : o.scene_toml);
@@ -355,8 +356,8 @@ AmplitudeSeries amplitudes_at(const SceneFile& sf, const std::vector<double>& ti
   s.validate();
   sf.options.validate();
   for (std::size_t k = 0; k < times.size(); ++k)
-    require(std::isfinite(times[k]) && times[k] >= 0 && times[k] <= s.T && (k == 0 || times[k] > times[k - 1]),
-            "t", times[k], "increasing times in [0, T]");
+    require(std::isfinite(times[k]) && times[k] >= 0 && times[k] <= s.T && (k == 0 || times[k] > times[k - 1]), "t",
+            times[k], "increasing times in [0, T]");
   const InitialState init = initial_state(s);
   AmplitudeSeries out;
   out.level = choose_level(s, init);
@@ -379,7 +380,8 @@ void ReportOptions::validate() const {
   require(frames >= 2 && frames <= 2000, "frames", frames, "an integer in [2, 2000]");
   require(std::isfinite(frame_window) && frame_window >= 0, "frame_window", frame_window, "finite and >= 0 (0: auto)");
   if (python.empty()) throw InvalidArgument("python", "python: an interpreter path is required");
-  for (const auto& [name, axis] : {std::pair{"bifurcation_x", &bifurcation_x}, std::pair{"bifurcation_y", &bifurcation_y}})
+  for (const auto& [name, axis] :
+       {std::pair{"bifurcation_x", &bifurcation_x}, std::pair{"bifurcation_y", &bifurcation_y}})
     if (!axis->empty() && bifurcation.empty())
       throw InvalidArgument(name, std::string(name) + " = '" + *axis + "' needs a bifurcation file to draw");
 }
@@ -401,7 +403,8 @@ std::string find_script_dir(const std::string& executable_path) {
 void check_python(const std::string& python) {
   std::error_code ec;
   if (!fs::exists(python, ec))
-    throw ReportError("python: " + python + " not found; the report draws its figures with python3 and matplotlib "
+    throw ReportError("python: " + python +
+                      " not found; the report draws its figures with python3 and matplotlib "
                       "(Debian: apt-get install python3-matplotlib) or pass --python PATH");
   const int rc = run_process({python, "-c", "import matplotlib; matplotlib.use('Agg'); import matplotlib.pyplot"}, "");
   if (rc != 0)
@@ -499,29 +502,34 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
 
     const bool in_plane = std::abs(std::cos(sf.scene.beta)) < 0.5;
     // Times stay in model units; a physical scene's captions say what that unit is in seconds.
-    const std::string t_unit = sf.scene.physical ? " (t in units of 1/gamma = " +
-                                                       format_value(cell_numbers(*sf.scene.physical).time_unit) + " s)"
-                                                 : "";
+    const std::string t_unit =
+        sf.scene.physical
+            ? " (t in units of 1/gamma = " + format_value(cell_numbers(*sf.scene.physical).time_unit) + " s)"
+            : "";
     nlohmann::json figs = nlohmann::json::array();
-    figs.push_back(figure("reduced_dynamics", "fig_reduced_r_Psi.png", 1200, 450,
-                          res.has_reduced ? std::vector<std::string>{"reduced_trajectory.csv", "trajectory.csv"}
-                                          : std::vector<std::string>{"trajectory.csv"},
-                          std::string(res.has_reduced
-                                          ? "Fig. 2-type: ellipsoidal amplitude r(t) and angle Psi(t), reduced system "
-                                            "(l = 2 only, perturbations dropped) and the l = 2 block of this run"
-                                          : "Fig. 2-type: ellipsoidal amplitude r(t) and angle Psi(t) of this run "
-                                            "(reduced level)") + t_unit));
+    figs.push_back(
+        figure("reduced_dynamics", "fig_reduced_r_Psi.png", 1200, 450,
+               res.has_reduced ? std::vector<std::string>{"reduced_trajectory.csv", "trajectory.csv"}
+                               : std::vector<std::string>{"trajectory.csv"},
+               std::string(res.has_reduced ? "Fig. 2-type: ellipsoidal amplitude r(t) and angle Psi(t), reduced system "
+                                             "(l = 2 only, perturbations dropped) and the l = 2 block of this run"
+                                           : "Fig. 2-type: ellipsoidal amplitude r(t) and angle Psi(t) of this run "
+                                             "(reduced level)") +
+                   t_unit));
     figs.push_back(figure("excess_areas", "fig_excess_areas.png", 900, 600, {"trajectory.csv"},
                           "Fig. 3b/c-type: excess area per mode Delta_l(t), l = 2..L (log scale)" + t_unit));
     figs.push_back(figure("tension", "fig_tension.png", 900, 600,
-                          res.has_reduced ? std::vector<std::string>{"trajectory.csv", "thresholds.json", "reduced_trajectory.csv"}
-                                          : std::vector<std::string>{"trajectory.csv", "thresholds.json"},
+                          res.has_reduced
+                              ? std::vector<std::string>{"trajectory.csv", "thresholds.json", "reduced_trajectory.csv"}
+                              : std::vector<std::string>{"trajectory.csv", "thresholds.json"},
                           "Fig. 3d/e-type: membrane tension sigma(t), the reduced system's sigma_R(t), and the "
-                          "critical tensions sigma_l^c of the modes that can grow" + t_unit));
-    nlohmann::json shape_fig = figure("shape", "fig_shape_T.png", 750, 750, {"shape_T.csv"},
-                                      std::string("Fig. 6-inset-type: the shape at t = ") + format_value(res.run.t_reached) +
-                                          ", coloured by the distance from the origin rho (" +
-                                          (in_plane ? "in-plane start" : "out-of-plane start") + ")");
+                          "critical tensions sigma_l^c of the modes that can grow" +
+                              t_unit));
+    nlohmann::json shape_fig =
+        figure("shape", "fig_shape_T.png", 750, 750, {"shape_T.csv"},
+               std::string("Fig. 6-inset-type: the shape at t = ") + format_value(res.run.t_reached) +
+                   ", coloured by the distance from the origin rho (" +
+                   (in_plane ? "in-plane start" : "out-of-plane start") + ")");
     shape_fig["t"] = res.run.t_reached;
     figs.push_back(shape_fig);
     nlohmann::json anim = figure("animation", "fig_animation_strip.png", 1500, 375, {"animation.json"},
@@ -546,12 +554,13 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     manifest["thresholds"] = thresholds;
     put_physical(manifest, sf.scene);
     if (sf.scene.physical) manifest["shear_rate_thresholds"] = to_json(res.shear_rate_thresholds);
-    manifest["shape"] = {{"t", res.run.t_reached}, {"rho_min", res.shape.rho_min}, {"rho_max", res.shape.rho_max},
-                         {"n_theta", res.shape.n_theta}, {"n_phi", res.shape.n_phi}, {"in_plane", in_plane}};
+    manifest["shape"] = {{"t", res.run.t_reached},       {"rho_min", res.shape.rho_min}, {"rho_max", res.shape.rho_max},
+                         {"n_theta", res.shape.n_theta}, {"n_phi", res.shape.n_phi},     {"in_plane", in_plane}};
     manifest["frames"] = {{"count", frames.t.size()}, {"status", to_string(frames.status)}, {"window", window}};
     manifest["warnings"] = res.warnings;
     manifest["figures"] = figs;
-    explain_nulls(manifest, res.run.status == IntegrationStatus::success ? nonfinite_reason(p) : run_reason(res.run, p));
+    explain_nulls(manifest,
+                  res.run.status == IntegrationStatus::success ? nonfinite_reason(p) : run_reason(res.run, p));
     put("report.json", manifest.dump(2) + "\n");
     draw_and_publish(o, manifest, tmp, target, res.files);
   });

@@ -23,20 +23,20 @@ class ReportError : public std::runtime_error {
 };
 
 struct ReportOptions {
-  std::string output;                  // folder to create (its parent must exist)
-  bool overwrite = false;              // replace an existing folder; otherwise refuse (never merge)
+  std::string output;                       // folder to create (its parent must exist)
+  bool overwrite = false;                   // replace an existing folder; otherwise refuse (never merge)
   std::string python = "/usr/bin/python3";  // Debian's python3 with python3-matplotlib
-  std::string script_dir;              // folder of rbcstab_report.py; empty: find_script_dir("")
-  ShapeGridOptions shape{64, 128};     // the rendered / exported shape at T
-  ShapeGridOptions frame_shape{32, 64};  // coarser grid per animation frame (keeps animation.json ~1 MB)
-  int frames = 60;                     // animation frames (GIF), uniform in [T - frame_window, T]
-  double frame_window = 0;             // 0: auto (one period of r(t) at the end if the run oscillates, else [0, T])
-  bool reduced_companion = true;       // also run the reduced level (Fig. 2 r, Psi; Fig. 3 sigma_R)
+  std::string script_dir;                   // folder of rbcstab_report.py; empty: find_script_dir("")
+  ShapeGridOptions shape{64, 128};          // the rendered / exported shape at T
+  ShapeGridOptions frame_shape{32, 64};     // coarser grid per animation frame (keeps animation.json ~1 MB)
+  int frames = 60;                          // animation frames (GIF), uniform in [T - frame_window, T]
+  double frame_window = 0;        // 0: auto (one period of r(t) at the end if the run oscillates, else [0, T])
+  bool reduced_companion = true;  // also run the reduced level (Fig. 2 r, Psi; Fig. 3 sigma_R)
   ShearRateSearchOptions shear_rate_search;  // a physical scene: the thresholds' search (summary's)
   // Hooks for data other modules produce; drawn when given (formats in docs/report.md).
-  std::string phase_diagram;           // CSV with columns x, y, l_Delta (+ optional overlay JSON beside it)
-  std::string delta2_comparison;       // CSV with columns Delta2_theory, Delta2_simulation[, alpha]
-  std::string bifurcation;             // a branch JSON (continuation/branch_io.hpp), drawn by plot_spec (bifurcation_plot.hpp)
+  std::string phase_diagram;      // CSV with columns x, y, l_Delta (+ optional overlay JSON beside it)
+  std::string delta2_comparison;  // CSV with columns Delta2_theory, Delta2_simulation[, alpha]
+  std::string bifurcation;  // a branch JSON (continuation/branch_io.hpp), drawn by plot_spec (bifurcation_plot.hpp)
   std::string bifurcation_x, bifurcation_y;  // its axes ("": plot_spec's defaults)
   // Figure panels (phase diagram, Fig. 6e, bifurcation; report/panels.hpp): no run of the scene itself,
   // whose time-dependent figures would mean nothing there; only the hooks are drawn (at least one is needed).
@@ -44,21 +44,21 @@ struct ReportOptions {
   std::vector<std::string> attachments;  // files copied in as they are (the raw data behind a panel)
   std::string panel_summary;             // panel reports: what was computed, shown under the title
   std::vector<std::pair<std::string, std::string>> panel_facts;  // panel reports: rows of the "Panel" table
-  std::string figure_title;              // panel reports: title drawn above the hook figures
-  std::string scene_toml;                // panel reports: the scene file as read (its panel table kept) for scene.toml
+  std::string figure_title;                                      // panel reports: title drawn above the hook figures
+  std::string scene_toml;  // panel reports: the scene file as read (its panel table kept) for scene.toml
   // Each step as it starts ("running the scene", "drawing the figures"), for progress; the runs themselves
   // report through the scene's SimulationOptions::on_progress.
   std::function<void(const std::string& step)> on_step;
-  void validate() const;               // throws InvalidArgument naming the field
+  void validate() const;  // throws InvalidArgument naming the field
 };
 
 struct ReportResult {
-  SimulationResult run;                // the scene as given
+  SimulationResult run;  // the scene as given
   bool has_reduced = false;
-  SimulationResult reduced;            // model = reduced, perturbations dropped
-  std::vector<std::string> files;      // relative to the output folder
+  SimulationResult reduced;        // model = reduced, perturbations dropped
+  std::vector<std::string> files;  // relative to the output folder
   std::vector<std::string> warnings;
-  ShapeGrid shape;                     // rho at the end of the run
+  ShapeGrid shape;                                        // rho at the end of the run
   std::vector<ShearRateThreshold> shear_rate_thresholds;  // a physical scene: per orientation (else empty)
   double seconds = 0;
 };

@@ -26,8 +26,8 @@ nlohmann::json report_json(const SceneFile& file, const ReportOptions& options, 
 
 std::string report_text(const ReportOptions& options, const ReportResult& r) {
   TextStream s;
-  s << "report written to " << options.output << " (" << r.files.size() << " files, open index.html); l_Delta = "
-    << r.run.l_Delta << ", status " << to_string(r.run.status) << "\n";
+  s << "report written to " << options.output << " (" << r.files.size()
+    << " files, open index.html); l_Delta = " << r.run.l_Delta << ", status " << to_string(r.run.status) << "\n";
   return s.str();
 }
 
@@ -97,9 +97,8 @@ std::string paper_text(const PaperOptions& options, const PaperResult& r) {
 nlohmann::json plot_json(const PlotSpec& spec, const PlotFiles& files) {
   nlohmann::json series = nlohmann::json::array();
   for (const PlotSeries& s : spec.series) series.push_back({{"name", s.name}, {"kind", s.kind}, {"role", s.role}});
-  return {{"png", files.png},        {"json", files.json},     {"x", spec.x.name},
-          {"y", spec.y.name},        {"series", series},       {"points", spec.points.size()},
-          {"measures", spec.measures}, {"notes", spec.notes}};
+  return {{"png", files.png}, {"json", files.json},           {"x", spec.x.name},          {"y", spec.y.name},
+          {"series", series}, {"points", spec.points.size()}, {"measures", spec.measures}, {"notes", spec.notes}};
 }
 
 std::string plot_text(const PlotSpec& spec, const PlotFiles& files) {

@@ -92,8 +92,8 @@ SurfaceMesh surface_mesh(const ShapeGrid& g) {
           "grid", double(g.rho.size()), "a grid from shape_on_grid");
   SurfaceMesh m;
   auto add = [&](double theta, double phi, double rho) {
-    m.points.push_back({rho * std::sin(theta) * std::cos(phi), rho * std::sin(theta) * std::sin(phi),
-                        rho * std::cos(theta)});
+    m.points.push_back(
+        {rho * std::sin(theta) * std::cos(phi), rho * std::sin(theta) * std::sin(phi), rho * std::cos(theta)});
     m.rho.push_back(rho);
     m.theta.push_back(theta);
     m.phi.push_back(phi);
@@ -139,7 +139,8 @@ std::string to_vtk_xml(const SurfaceMesh& mesh) {
      << " NumberOfStrips=\"0\" NumberOfPolys=\"" << mesh.triangles.size() << "\">\n";
   ss << "<PointData Scalars=\"rho\">\n<DataArray type=\"Float64\" Name=\"rho\" format=\"ascii\">\n";
   for (double r : mesh.rho) ss << r << '\n';
-  ss << "</DataArray>\n</PointData>\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+  ss << "</DataArray>\n</PointData>\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+        "format=\"ascii\">\n";
   for (const auto& p : mesh.points) ss << p[0] << ' ' << p[1] << ' ' << p[2] << '\n';
   ss << "</DataArray>\n</Points>\n<Polys>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
   for (const auto& c : mesh.triangles) ss << c[0] << ' ' << c[1] << ' ' << c[2] << '\n';
@@ -176,7 +177,8 @@ std::string to_csv(const ShapeGrid& g) {
   ss << std::setprecision(17) << "i,j,theta,phi,rho\n";
   for (int i = 0; i <= g.n_theta; ++i)
     for (int j = 0; j <= g.n_phi; ++j)
-      ss << i << ',' << j << ',' << g.theta[std::size_t(i)] << ',' << g.phi[std::size_t(j)] << ',' << g.at(i, j) << '\n';
+      ss << i << ',' << j << ',' << g.theta[std::size_t(i)] << ',' << g.phi[std::size_t(j)] << ',' << g.at(i, j)
+         << '\n';
   return ss.str();
 }
 

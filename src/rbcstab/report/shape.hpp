@@ -34,8 +34,8 @@ struct ShapeGrid {
   double at(int i, int j) const { return rho[std::size_t(i) * std::size_t(n_phi + 1) + std::size_t(j)]; }
 };
 struct ShapeGridOptions {
-  int n_theta = 64;   // polar resolution: resolves l <= ~n_theta/3 without visible facets
-  int n_phi = 128;    // azimuthal resolution (2 n_theta keeps the facets square at the equator)
+  int n_theta = 64;       // polar resolution: resolves l <= ~n_theta/3 without visible facets
+  int n_phi = 128;        // azimuthal resolution (2 n_theta keeps the facets square at the equator)
   void validate() const;  // n_theta in [2, 4096], n_phi in [3, 8192]
 };
 ShapeGrid shape_on_grid(const ModeAmplitudes& f, const ShapeGridOptions& options = {});
@@ -45,8 +45,8 @@ ShapeGrid shape_on_grid(const ModeAmplitudes& f, const ShapeGridOptions& options
 struct SurfaceMesh {
   std::vector<std::array<double, 3>> points;  // x = rho sin th cos ph, y = rho sin th sin ph, z = rho cos th
   std::vector<std::array<int, 3>> triangles;
-  std::vector<double> rho;                    // distance from the origin, per point
-  std::vector<double> theta, phi;             // per point
+  std::vector<double> rho;         // distance from the origin, per point
+  std::vector<double> theta, phi;  // per point
 };
 SurfaceMesh surface_mesh(const ShapeGrid& grid);
 
@@ -75,7 +75,8 @@ struct ShapeExport {
   std::string reason;
   std::vector<ShapeFile> files;
 };
-nlohmann::json to_json(const ShapeExport& e);  // {"model", "status", "reason", "files": [{"t", "file", "rho_min", "rho_max"}]}
-std::string to_text(const ShapeExport& e);     // one line per file: path, t and rho range
+nlohmann::json to_json(
+    const ShapeExport& e);  // {"model", "status", "reason", "files": [{"t", "file", "rho_min", "rho_max"}]}
+std::string to_text(const ShapeExport& e);  // one line per file: path, t and rho range
 
 }  // namespace rbcstab

@@ -313,7 +313,7 @@ std::vector<Agreement> predictor_agreements(const Scene& base, const DiagramSpec
            {"C_star_minus", "C_star_plus", "lambda_star_minus"}, [](const Scene& s) {
              const Parameters& p = s.parameters;
              const double Lambda = p.Lambda();
-             const Quantity m = Lambda < 1 ? mean_sigma_R_minus(p)
+             const Quantity m = Lambda < 1   ? mean_sigma_R_minus(p)
                                 : Lambda > 1 ? mean_sigma_R_plus(p, stress_free_r0(s))
                                              : Quantity::outside("Lambda = 1");
              if (!m.valid()) return PointVerdict{};

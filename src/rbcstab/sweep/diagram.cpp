@@ -32,7 +32,8 @@ double AxisRange::value(int i) const {
   if (count <= 1) return min;
   if (i == count - 1) return max;
   // A geometric axis (shear_rate) spans decades: even steps in ln. Its range is checked > 0 (validate_plane).
-  if (parameter_row(axis).scale == AxisScale::geometric) return min * std::pow(max / min, double(i) / double(count - 1));
+  if (parameter_row(axis).scale == AxisScale::geometric)
+    return min * std::pow(max / min, double(i) / double(count - 1));
   return min + (max - min) * double(i) / double(count - 1);
 }
 
@@ -47,8 +48,8 @@ void DiagramSpec::validate() const {
     if (!usable_as(a->axis, ParameterUse::axis)) {
       std::string list;
       for (const std::string& name : axis_names()) list += (list.empty() ? "" : ", ") + name;
-      throw InvalidArgument("diagram.axes", "diagram.axes: " + to_string(a->axis) + " is not a diagram axis (allowed: " +
-                                                list + ")");
+      throw InvalidArgument("diagram.axes",
+                            "diagram.axes: " + to_string(a->axis) + " is not a diagram axis (allowed: " + list + ")");
     }
   }
   const long long points = 1LL * x.count * y.count;
@@ -59,11 +60,12 @@ void DiagramSpec::validate() const {
       << kMaxDiagramPoints << " points (4096 x 4096)";
     throw InvalidArgument("diagram.counts", m.str());
   }
-    require(std::isfinite(alpha) && alpha >= 0, "diagram.alpha", alpha, "finite and >= 0 (0: alpha not held fixed)");
+  require(std::isfinite(alpha) && alpha >= 0, "diagram.alpha", alpha, "finite and >= 0 (0: alpha not held fixed)");
   if (alpha > 0 && (x.axis == Axis::alpha || y.axis == Axis::alpha))
     throw InvalidArgument("diagram.alpha", "diagram.alpha cannot be held fixed while alpha is an axis");
   if (x.axis == y.axis)
-    throw InvalidArgument("diagram.axes", "diagram.axes must name two different axes (both are '" + to_string(x.axis) + "')");
+    throw InvalidArgument("diagram.axes",
+                          "diagram.axes must name two different axes (both are '" + to_string(x.axis) + "')");
   // alpha is applied last and keeps the other axis's move (plane_scene); any other pair must not move each other.
   if (x.axis != Axis::alpha && y.axis != Axis::alpha && !independent(x.axis, y.axis))
     throw InvalidArgument("diagram.axes", "diagram.axes = " + to_string(x.axis) + "," + to_string(y.axis) +
@@ -127,8 +129,8 @@ void validate_plane(const Scene& base, const DiagramSpec& spec) {
   base.validate();
   for (Axis a : {spec.x.axis, spec.y.axis}) require_usable(a, base);
   // Each axis alone at its ends with the other at its min, then the corners (held alpha couples the axes).
-  const std::pair<double, double> corners[] = {{spec.x.min, spec.y.min}, {spec.x.max, spec.y.min},
-                                               {spec.x.min, spec.y.max}, {spec.x.max, spec.y.max}};
+  const std::pair<double, double> corners[] = {
+      {spec.x.min, spec.y.min}, {spec.x.max, spec.y.min}, {spec.x.min, spec.y.max}, {spec.x.max, spec.y.max}};
   for (const auto& [x, y] : corners) {
     try {
       plane_scene(base, spec, x, y).validate();
@@ -136,14 +138,14 @@ void validate_plane(const Scene& base, const DiagramSpec& spec) {
       // The axis that moves the parameter named, else the one away from its min.
       auto moves = [](Axis a) { return to_string(moved_parameter(a)); };
       const bool x_moved = x != spec.x.min, y_moved = y != spec.y.min;
-      const bool blame_y = e.parameter() == moves(spec.y.axis) ? e.parameter() != moves(spec.x.axis) || !x_moved
-                                                                : y_moved && !x_moved;
+      const bool blame_y =
+          e.parameter() == moves(spec.y.axis) ? e.parameter() != moves(spec.x.axis) || !x_moved : y_moved && !x_moved;
       const AxisRange& a = blame_y ? spec.y : spec.x;
       const std::string key = std::string("diagram.") + (blame_y ? "y" : "x") + "_range";
       std::string at = to_string(a.axis) + " = " + format_value(blame_y ? y : x);
       if (x_moved && y_moved) at += " with " + to_string(spec.y.axis) + " = " + format_value(y);
-      throw InvalidArgument(key, key + " = " + format_value(a.min) + "," + format_value(a.max) + ": at " + at + ", " +
-                                     e.what());
+      throw InvalidArgument(
+          key, key + " = " + format_value(a.min) + "," + format_value(a.max) + ": at " + at + ", " + e.what());
     }
   }
 }
@@ -174,8 +176,7 @@ Verdict verdict_of(IntegrationStatus status, int l_Delta) {
   return l_Delta >= 3 ? Verdict::unstable : Verdict::stable;
 }
 
-PointResult run_point(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec,
-                      std::size_t index) {
+PointResult run_point(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec, std::size_t index) {
   const Scene scene = point_scene(base, spec, index);
   SimulationOptions o = options;
   o.record_trajectory = false;
@@ -194,8 +195,8 @@ PointResult run_point(const Scene& base, const SimulationOptions& options, const
   p.j = int(index / std::size_t(spec.x.count));
   p.x = spec.x.value(p.i);
   p.y = spec.y.value(p.j);
-  const bool tail = spec.classifier == Classifier::tail_mean ||
-                    (spec.classifier == Classifier::automatic && r.oscillating);
+  const bool tail =
+      spec.classifier == Classifier::tail_mean || (spec.classifier == Classifier::automatic && r.oscillating);
   std::tie(p.l_Delta, p.growth) = argmax_growth(tail ? r.Delta_tail_mean : r.Delta_final, r.Delta_initial);
   p.oscillating = r.oscillating;
   p.sigma_final = r.sigma_final;
@@ -217,11 +218,12 @@ PointResult run_point(const Scene& base, const SimulationOptions& options, const
 std::string config_hash(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec) {
   std::ostringstream text;
   SceneFile f{base, options};
-  f.scene.name = "";  // the label does not change any number
+  f.scene.name = "";                     // the label does not change any number
   f.options.integrator.max_seconds = 0;  // a wall-clock budget is not part of the configuration
   text << to_toml(f) << "x " << to_string(spec.x.axis) << ' ' << exact(spec.x.min) << ' ' << exact(spec.x.max) << ' '
        << spec.x.count << "\ny " << to_string(spec.y.axis) << ' ' << exact(spec.y.min) << ' ' << exact(spec.y.max)
-       << ' ' << spec.y.count << "\nclassifier " << to_string(spec.classifier) << "\nalpha " << exact(spec.alpha) << "\n";
+       << ' ' << spec.y.count << "\nclassifier " << to_string(spec.classifier) << "\nalpha " << exact(spec.alpha)
+       << "\n";
   return fnv1a_hex(text.str());
 }
 
@@ -273,7 +275,8 @@ DiagramRun run_diagram(const Scene& base, const SimulationOptions& options, cons
   std::size_t computed = 0, running = 0;
   std::atomic<std::size_t> next{0};
   std::exception_ptr error;
-  int nthreads = run_options.threads == 0 ? int(std::max(1u, std::thread::hardware_concurrency())) : run_options.threads;
+  int nthreads =
+      run_options.threads == 0 ? int(std::max(1u, std::thread::hardware_concurrency())) : run_options.threads;
   nthreads = int(std::min<std::size_t>(std::size_t(nthreads), std::max<std::size_t>(1, pending.size())));
   auto stopped = [&] { return run_options.stop && run_options.stop->load(); };
 

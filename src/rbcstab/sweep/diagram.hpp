@@ -52,8 +52,8 @@ inline Classifier classifier_from_string(std::string_view name) { return from_st
 constexpr long long kMaxDiagramPoints = 4096LL * 4096LL;
 
 struct DiagramSpec {
-  AxisRange x{Axis::lnB, -1, 6, 64};    // fastest-varying axis: index = j * x.count + i
-  AxisRange y{Axis::lnC, -5.5, 2, 64};  // Fig. 4: ln C in [-5.5, 2]
+  AxisRange x{Axis::lnB, -1, 6, 64};              // fastest-varying axis: index = j * x.count + i
+  AxisRange y{Axis::lnC, -5.5, 2, 64};            // Fig. 4: ln C in [-5.5, 2]
   Classifier classifier = Classifier::automatic;  // see Classifier
   double alpha = 0;  // > 0: hold alpha = B/C fixed over the plane (Fig. 5: ln C - lambda at alpha = 40, 100, 500)
   // Distinct axes that do not move each other (independent(); alpha is applied last), finite ranges, counts in
@@ -88,19 +88,19 @@ Verdict verdict_of(IntegrationStatus status, int l_Delta);
 
 struct PointResult {
   std::size_t index = 0;
-  int i = 0, j = 0;               // grid position (x, y)
-  double x = 0, y = 0;            // axis values
+  int i = 0, j = 0;     // grid position (x, y)
+  double x = 0, y = 0;  // axis values
   Verdict verdict = Verdict::stable;
-  int l_Delta = 2;                // per the spec's classifier (2: stable)
-  double growth = 0;              // X_{l_Delta} - Delta_{l_Delta}(0)
-  bool oscillating = false;       // Delta_2 not monotonic over the tail window (classifiers final and tail: on
-                                  // the run's accepted steps there, SimulationOptions::tail_means)
-  double sigma_final = 0;         // sigma(T)
+  int l_Delta = 2;           // per the spec's classifier (2: stable)
+  double growth = 0;         // X_{l_Delta} - Delta_{l_Delta}(0)
+  bool oscillating = false;  // Delta_2 not monotonic over the tail window (classifiers final and tail: on
+                             // the run's accepted steps there, SimulationOptions::tail_means)
+  double sigma_final = 0;    // sigma(T)
   IntegrationStatus status = IntegrationStatus::success;
-  std::string reason;             // integrator message when not success
+  std::string reason;  // integrator message when not success
   double t_reached = 0;
   std::size_t steps = 0, failed_steps = 0, rhs_evaluations = 0;  // cost (deterministic)
-  double seconds = 0;             // cost (wall clock; the only non-deterministic field)
+  double seconds = 0;                                            // cost (wall clock; the only non-deterministic field)
   // Certified early termination (SimulationResult::early): where the run stopped integrating and its
   // certificate's margin 1 - max |mu|; NaN when the run was integrated to T.
   double terminated_at = std::numeric_limits<double>::quiet_NaN();
@@ -108,8 +108,7 @@ struct PointResult {
 };
 
 // One grid point (throws InvalidArgument if the point's scene is invalid).
-PointResult run_point(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec,
-                      std::size_t index);
+PointResult run_point(const Scene& base, const SimulationOptions& options, const DiagramSpec& spec, std::size_t index);
 
 struct Shard {
   int k = 0, n = 1;  // this job computes the points with index % n == k (interleaved: balances cost)
@@ -119,12 +118,12 @@ struct Shard {
 Shard shard_from_string(const std::string& text);  // "k/n", 0 <= k < n
 
 struct Progress {
-  std::size_t done = 0;      // finished points of this job, resumed ones included
-  std::size_t total = 0;     // points of this job
-  std::size_t resumed = 0;   // taken from the journal
-  double elapsed = 0;        // seconds since the start of this run
-  double rate = 0;           // computed points per second in this run
-  double eta = 0;            // seconds left at that rate (0 when unknown)
+  std::size_t done = 0;     // finished points of this job, resumed ones included
+  std::size_t total = 0;    // points of this job
+  std::size_t resumed = 0;  // taken from the journal
+  double elapsed = 0;       // seconds since the start of this run
+  double rate = 0;          // computed points per second in this run
+  double eta = 0;           // seconds left at that rate (0 when unknown)
 };
 
 struct DiagramOptions {
@@ -136,17 +135,17 @@ struct DiagramOptions {
                                    // so a killed process loses nothing, only a power cut could lose <= this much
   double progress_interval = 1.0;  // seconds between on_progress calls
   std::function<void(const Progress&)> on_progress;  // called on the calling thread
-  const std::atomic<bool>* stop = nullptr;  // set (e.g. by SIGINT) to stop picking new points
+  const std::atomic<bool>* stop = nullptr;           // set (e.g. by SIGINT) to stop picking new points
   void validate() const;
 };
 
 struct DiagramRun {
-  std::vector<PointResult> points;  // this job's points in index order (all of them unless interrupted)
-  std::size_t computed = 0;         // simulated in this run
-  std::size_t resumed = 0;          // read back from the journal
+  std::vector<PointResult> points;    // this job's points in index order (all of them unless interrupted)
+  std::size_t computed = 0;           // simulated in this run
+  std::size_t resumed = 0;            // read back from the journal
   std::vector<std::string> rejected;  // "journal:line: why" of each journal record dropped and recomputed
-  bool complete = false;            // every point of the job is in `points`
-  std::string config_hash;          // hash of everything that determines the points
+  bool complete = false;              // every point of the job is in `points`
+  std::string config_hash;            // hash of everything that determines the points
   double seconds = 0;
 };
 

@@ -12,8 +12,8 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/scene_file.hpp"
-#include "rbcstab/sweep/point_record.hpp"
 #include "rbcstab/sweep/agreement.hpp"
+#include "rbcstab/sweep/point_record.hpp"
 
 namespace rbcstab {
 
@@ -60,12 +60,16 @@ nlohmann::json diagram_header(const Scene& base, const SimulationOptions& option
                      {"rtol", options.integrator.rtol},
                      {"atol", options.integrator.atol},
                      {"tail_window", options.tail_window}};
-  h["diagram"] = {{"x", axis_json(spec.x)}, {"y", axis_json(spec.y)}, {"classifier", to_string(spec.classifier)},
-                  {"alpha", spec.alpha}, {"points", spec.size()}};
+  h["diagram"] = {{"x", axis_json(spec.x)},
+                  {"y", axis_json(spec.y)},
+                  {"classifier", to_string(spec.classifier)},
+                  {"alpha", spec.alpha},
+                  {"points", spec.size()}};
   return h;
 }
 
-std::string diagram_csv(const DiagramSpec& spec, const std::vector<PointResult>& points, const DiagramOutputOptions& o) {
+std::string diagram_csv(const DiagramSpec& spec, const std::vector<PointResult>& points,
+                        const DiagramOutputOptions& o) {
   std::ostringstream ss;
   ss << "index,i,j," << to_string(spec.x.axis) << ',' << to_string(spec.y.axis)
      << ",verdict,l_Delta,growth,oscillating,sigma_final,status,t_reached,steps,failed_steps,rhs_evaluations"
@@ -75,16 +79,17 @@ std::string diagram_csv(const DiagramSpec& spec, const std::vector<PointResult>&
   for (const PointResult& p : points) {
     ss << p.index << ',' << p.i << ',' << p.j << ',' << exact(p.x) << ',' << exact(p.y) << ',' << to_string(p.verdict)
        << ',' << p.l_Delta << ',' << csv_number(p.growth) << ',' << int(p.oscillating) << ','
-       << csv_number(p.sigma_final) << ',' << to_string(p.status) << ',' << csv_number(p.t_reached) << ',' << p.steps << ',' << p.failed_steps << ','
-       << p.rhs_evaluations << ',' << csv_number(p.terminated_at) << ',' << csv_number(p.margin);
+       << csv_number(p.sigma_final) << ',' << to_string(p.status) << ',' << csv_number(p.t_reached) << ',' << p.steps
+       << ',' << p.failed_steps << ',' << p.rhs_evaluations << ',' << csv_number(p.terminated_at) << ','
+       << csv_number(p.margin);
     if (o.include_seconds) ss << ',' << csv_number(p.seconds);
     ss << '\n';
   }
   return ss.str();
 }
 
-nlohmann::json diagram_json(const nlohmann::json& header, const DiagramSpec& spec, const std::vector<PointResult>& points,
-                            const Shard& shard, const DiagramOutputOptions& o) {
+nlohmann::json diagram_json(const nlohmann::json& header, const DiagramSpec& spec,
+                            const std::vector<PointResult>& points, const Shard& shard, const DiagramOutputOptions& o) {
   nlohmann::json doc = header;
   if (shard.n > 1) doc["shard"] = {{"k", shard.k}, {"n", shard.n}};
   std::size_t expected = 0;
@@ -116,10 +121,9 @@ nlohmann::json diagram_json(const nlohmann::json& header, const DiagramSpec& spe
                      {"terminated_at", number_or_null(p.terminated_at)},
                      {"margin", number_or_null(p.margin)}};
     if (o.include_seconds) r["seconds"] = p.seconds;
-    explain_nulls(r, p.status == IntegrationStatus::success
-                         ? "not finite at this point's parameters"
-                         : "the run ended with " + to_string(p.status) + " at t = " + format_value(p.t_reached) + ": " +
-                               p.reason);
+    explain_nulls(r, p.status == IntegrationStatus::success ? "not finite at this point's parameters"
+                                                            : "the run ended with " + to_string(p.status) + " at t = " +
+                                                                  format_value(p.t_reached) + ": " + p.reason);
     arr.push_back(std::move(r));
     ++verdicts[to_string(p.verdict)];
     if (p.verdict != Verdict::failed) ++modes[std::to_string(p.l_Delta)];
@@ -129,8 +133,8 @@ nlohmann::json diagram_json(const nlohmann::json& header, const DiagramSpec& spe
     seconds += p.seconds;
     terminated += std::isfinite(p.terminated_at) ? 1 : 0;
   }
-  nlohmann::json summary{{"points", points.size()}, {"verdicts", verdicts}, {"l_Delta", modes},
-                         {"failed_indices", failed}, {"rhs_evaluations", rhs}, {"steps", steps},
+  nlohmann::json summary{{"points", points.size()},       {"verdicts", verdicts},   {"l_Delta", modes},
+                         {"failed_indices", failed},      {"rhs_evaluations", rhs}, {"steps", steps},
                          {"terminated_early", terminated}};
   if (o.include_seconds) summary["seconds"] = seconds;
   doc["summary"] = summary;
@@ -142,9 +146,13 @@ namespace {
 nlohmann::json agreement_entry(const Agreement& a) {
   nlohmann::json d = nlohmann::json::array();
   for (const auto& x : a.verdict_disagreements)
-    d.push_back({{"index", x.index}, {"simulated", to_string(x.simulated)}, {"l_simulated", x.l_simulated},
-                 {"predicted", x.predicted_unstable ? "unstable" : "stable"}, {"l_predicted", x.l_predicted},
-                 {"distance_grid_steps", number_or_null(x.distance_steps)}, {"S", number_or_null(x.S)},
+    d.push_back({{"index", x.index},
+                 {"simulated", to_string(x.simulated)},
+                 {"l_simulated", x.l_simulated},
+                 {"predicted", x.predicted_unstable ? "unstable" : "stable"},
+                 {"l_predicted", x.l_predicted},
+                 {"distance_grid_steps", number_or_null(x.distance_steps)},
+                 {"S", number_or_null(x.S)},
                  {"alpha_over_alpha_init", x.alpha_over_alpha_init}});
   const double n = a.points ? double(a.points) : 1.0;
   nlohmann::json j{{"predictor", a.predictor},
@@ -155,9 +163,9 @@ nlohmann::json agreement_entry(const Agreement& a) {
                    {"verdict_fraction", a.points ? nlohmann::json(double(a.verdict_matches) / n) : nlohmann::json()},
                    {"mode_fraction", a.points ? nlohmann::json(double(a.mode_matches) / n) : nlohmann::json()},
                    {"unstable_points", a.unstable_matches},
-                   {"unstable_mode_fraction", a.unstable_matches ? nlohmann::json(double(a.unstable_mode_matches) /
-                                                                                  double(a.unstable_matches))
-                                                                 : nlohmann::json()},
+                   {"unstable_mode_fraction",
+                    a.unstable_matches ? nlohmann::json(double(a.unstable_mode_matches) / double(a.unstable_matches))
+                                       : nlohmann::json()},
                    {"verdict_disagreements", a.verdict_disagreements.size()},
                    {"within_one_grid_step", a.verdict_disagreements.size() - a.beyond_one_step},
                    {"beyond_one_grid_step", a.beyond_one_step},
@@ -242,8 +250,10 @@ std::vector<PointResult> read_points(const nlohmann::json& doc, const DiagramSpe
     };
     PointResult p;
     field("index", [&](const nlohmann::json& v) { p.index = integer_of<std::size_t>(v); });
-    field("verdict", [&](const nlohmann::json& v) { p.verdict = from_string<Verdict>(v.get<std::string>(), "verdict"); });
-    field("status", [&](const nlohmann::json& v) { p.status = from_string<IntegrationStatus>(v.get<std::string>(), "status"); });
+    field("verdict",
+          [&](const nlohmann::json& v) { p.verdict = from_string<Verdict>(v.get<std::string>(), "verdict"); });
+    field("status",
+          [&](const nlohmann::json& v) { p.status = from_string<IntegrationStatus>(v.get<std::string>(), "status"); });
     field("l_Delta", [&](const nlohmann::json& v) { p.l_Delta = integer_of<int>(v); });
     field("growth", [&](const nlohmann::json& v) { p.growth = number(v); });
     field("oscillating", [&](const nlohmann::json& v) { p.oscillating = v.get<bool>(); });
@@ -350,8 +360,8 @@ struct CountingIterator {
 std::size_t point_line(const std::string& text, std::size_t k, const std::string& key) {
   std::size_t consumed = 0;
   PointLineFinder finder(text, consumed, k, key);
-  nlohmann::json::sax_parse(CountingIterator{text.data(), &consumed}, CountingIterator{text.data() + text.size(), &consumed},
-                            &finder);
+  nlohmann::json::sax_parse(CountingIterator{text.data(), &consumed},
+                            CountingIterator{text.data() + text.size(), &consumed}, &finder);
   return finder.line();
 }
 

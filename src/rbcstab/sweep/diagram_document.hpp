@@ -41,9 +41,9 @@ std::vector<PointResult> points_from_json(const nlohmann::json& doc, const Diagr
 struct MergeResult {
   nlohmann::json header;
   DiagramSpec spec;
-  std::vector<PointResult> points;  // index order
-  std::vector<std::size_t> missing; // grid indices no input held
-  bool seconds_present = true;      // every input carried per-point seconds
+  std::vector<PointResult> points;   // index order
+  std::vector<std::size_t> missing;  // grid indices no input held
+  bool seconds_present = true;       // every input carried per-point seconds
 };
 // Merges shard outputs of one diagram: they must share the config hash, which must be the hash of the first
 // input's scene_toml and diagram (an edited header is refused); a point held twice must agree (deterministic

@@ -11,15 +11,15 @@
 namespace rbcstab {
 
 struct Fig6eOptions {
-  std::vector<double> lambdas = {1, 5};                           // the paper's two panels
-  std::vector<double> B = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};        // "B = 1-10"
-  std::vector<double> C = {0.01, 0.02, 0.04, 0.08};               // alpha = B/C from 12.5 to 1000
-  double Delta = 1, Delta0 = 0.01;                                // as Fig. 6 (a)-(d)
-  double beta = 0.001, delta = 1e-3;                              // out of plane, the paper's perturbation
+  std::vector<double> lambdas = {1, 5};                     // the paper's two panels
+  std::vector<double> B = {1, 2, 3, 4, 5, 6, 7, 8, 9, 10};  // "B = 1-10"
+  std::vector<double> C = {0.01, 0.02, 0.04, 0.08};         // alpha = B/C from 12.5 to 1000
+  double Delta = 1, Delta0 = 0.01;                          // as Fig. 6 (a)-(d)
+  double beta = 0.001, delta = 1e-3;                        // out of plane, the paper's perturbation
   int L = 10;
-  double T = 500;                                                 // the paper's horizon
-  SimulationOptions simulation;                                   // tail_window = 10: the paper's average
-  ProgressCallback on_progress;                                   // runs done of the grid's, after each run
+  double T = 500;                // the paper's horizon
+  SimulationOptions simulation;  // tail_window = 10: the paper's average
+  ProgressCallback on_progress;  // runs done of the grid's, after each run
   void validate() const;
 };
 struct Fig6eRow {

@@ -70,8 +70,10 @@ DiagramRun MpiSession::gather(const DiagramRun& mine, const DiagramSpec& spec) c
   while (pos < all.size()) {
     const auto eol = all.find('\n', pos);
     const std::string line = all.substr(pos, eol == std::string::npos ? std::string::npos : eol + 1 - pos);
-    if (auto p = point_from_line(line, mine.config_hash, spec)) points.emplace(p->index, *p);
-    else throw std::runtime_error("MPI gather: a rank sent a malformed point");
+    if (auto p = point_from_line(line, mine.config_hash, spec))
+      points.emplace(p->index, *p);
+    else
+      throw std::runtime_error("MPI gather: a rank sent a malformed point");
     if (eol == std::string::npos) break;
     pos = eol + 1;
   }

@@ -65,7 +65,8 @@ std::string point_to_line(const PointResult& p, const std::string& config_hash) 
 
 FieldError point_value_error(const PointResult& p, const DiagramSpec& spec, int L) {
   if (p.index >= spec.size())
-    return {"index", "index " + std::to_string(p.index) + " is outside the grid (0.." + std::to_string(spec.size() - 1) + ")"};
+    return {"index",
+            "index " + std::to_string(p.index) + " is outside the grid (0.." + std::to_string(spec.size() - 1) + ")"};
   if (p.l_Delta < 2 || p.l_Delta > L)
     return {"l_Delta", "l_Delta " + std::to_string(p.l_Delta) + " is outside [2, " + std::to_string(L) + "]"};
   const Verdict v = verdict_of(p.status, p.l_Delta);
@@ -76,7 +77,8 @@ FieldError point_value_error(const PointResult& p, const DiagramSpec& spec, int 
     if (!std::isfinite(p.growth))
       return {"growth", "growth " + exact(p.growth) + " of a " + to_string(p.verdict) + " point is not finite"};
     if (!std::isfinite(p.sigma_final))
-      return {"sigma_final", "sigma_final " + exact(p.sigma_final) + " of a " + to_string(p.verdict) + " point is not finite"};
+      return {"sigma_final",
+              "sigma_final " + exact(p.sigma_final) + " of a " + to_string(p.verdict) + " point is not finite"};
   }
   if (!(std::isfinite(p.t_reached) && p.t_reached >= 0))
     return {"t_reached", "t_reached " + exact(p.t_reached) + " is not finite and >= 0"};
@@ -108,16 +110,22 @@ ParsedPoint parse_point_line(const std::string& line, const std::string& config_
     return {std::nullopt, "record of another configuration (hash " + f[1] + ", this run's is " + config_hash + ")"};
   PointResult p;
   int osc = 0;
-  const std::pair<const char*, bool> checks[] = {
-      {"index", parse_int(f[2], p.index)},        {"l_Delta", parse_int(f[4], p.l_Delta)},
-      {"growth", parse_double(f[5], p.growth)},    {"oscillating", parse_int(f[6], osc) && (osc == 0 || osc == 1)},
-      {"sigma_final", parse_double(f[7], p.sigma_final)}, {"t_reached", parse_double(f[9], p.t_reached)},
-      {"steps", parse_int(f[10], p.steps)},        {"failed_steps", parse_int(f[11], p.failed_steps)},
-      {"rhs_evaluations", parse_int(f[12], p.rhs_evaluations)}, {"seconds", parse_double(f[13], p.seconds)},
-      {"terminated_at", parse_double(f[14], p.terminated_at)}, {"margin", parse_double(f[15], p.margin)}};
+  const std::pair<const char*, bool> checks[] = {{"index", parse_int(f[2], p.index)},
+                                                 {"l_Delta", parse_int(f[4], p.l_Delta)},
+                                                 {"growth", parse_double(f[5], p.growth)},
+                                                 {"oscillating", parse_int(f[6], osc) && (osc == 0 || osc == 1)},
+                                                 {"sigma_final", parse_double(f[7], p.sigma_final)},
+                                                 {"t_reached", parse_double(f[9], p.t_reached)},
+                                                 {"steps", parse_int(f[10], p.steps)},
+                                                 {"failed_steps", parse_int(f[11], p.failed_steps)},
+                                                 {"rhs_evaluations", parse_int(f[12], p.rhs_evaluations)},
+                                                 {"seconds", parse_double(f[13], p.seconds)},
+                                                 {"terminated_at", parse_double(f[14], p.terminated_at)},
+                                                 {"margin", parse_double(f[15], p.margin)}};
   static const std::size_t field_of[] = {2, 4, 5, 6, 7, 9, 10, 11, 12, 13, 14, 15};
   for (std::size_t k = 0; k < std::size(checks); ++k)
-    if (!checks[k].second) return {std::nullopt, std::string(checks[k].first) + " '" + f[field_of[k]] + "' is not valid"};
+    if (!checks[k].second)
+      return {std::nullopt, std::string(checks[k].first) + " '" + f[field_of[k]] + "' is not valid"};
   try {
     p.verdict = from_string<Verdict>(f[3], "verdict");
     p.status = from_string<IntegrationStatus>(f[8], "status");

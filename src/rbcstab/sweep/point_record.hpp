@@ -11,7 +11,8 @@
 namespace rbcstab {
 
 // "P <hash> <index> <verdict> <l_Delta> <growth> <oscillating> <sigma_final> <status> <t_reached>
-//  <steps> <failed_steps> <rhs_evaluations> <seconds> <terminated_at> <margin> |<reason> *<checksum>\n": the reason is free
+//  <steps> <failed_steps> <rhs_evaluations> <seconds> <terminated_at> <margin> |<reason> *<checksum>\n": the reason is
+//  free
 // text up to the checksum (newlines replaced), a non-finite number is written "-" (never "nan"), and
 // the checksum is fnv1a_hex of everything before " *", so an edited or spliced record is detected.
 std::string point_to_line(const PointResult& p, const std::string& config_hash);

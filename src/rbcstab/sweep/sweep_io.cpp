@@ -18,8 +18,13 @@ nlohmann::json fig6e_json(const SceneFile& file, const std::vector<Fig6eRow>& ro
   put_truncation(j, file);
   j["rows"] = nlohmann::json::array();
   for (const Fig6eRow& r : rows) {
-    nlohmann::json e{{"lambda", r.lambda}, {"B", r.B}, {"C", r.C}, {"alpha", r.alpha}, {"ln_alpha", r.ln_alpha},
-                     {"surviving_mode", r.surviving_mode}, {"l_Delta", r.l_Delta}};
+    nlohmann::json e{{"lambda", r.lambda},
+                     {"B", r.B},
+                     {"C", r.C},
+                     {"alpha", r.alpha},
+                     {"ln_alpha", r.ln_alpha},
+                     {"surviving_mode", r.surviving_mode},
+                     {"l_Delta", r.l_Delta}};
     put(e, "Delta2_tilde", r.Delta2_tilde);
     put(e, "Delta2_tilde_integer_mode", r.Delta2_tilde_integer);
     put(e, "Delta2_simulated", r.Delta2_bar);
@@ -40,7 +45,8 @@ std::string trace_csv(const DiagramSpec& plane, const TraceResult& t) {
   return csv.str();
 }
 
-nlohmann::json trace_json(const SceneFile& file, const DiagramSpec& plane, const TraceOptions& to, const TraceResult& t) {
+nlohmann::json trace_json(const SceneFile& file, const DiagramSpec& plane, const TraceOptions& to,
+                          const TraceResult& t) {
   nlohmann::json curves = nlohmann::json::array();
   for (std::size_t c = 0; c < t.curves.size(); ++c) {
     const TraceCurve& tc = t.curves[c];
@@ -50,7 +56,12 @@ nlohmann::json trace_json(const SceneFile& file, const DiagramSpec& plane, const
       ys.push_back(p.y);
       mus.push_back(p.mu);
     }
-    curves.push_back({{"curve", c}, {"chain", tc.chain}, {"l", tc.l}, {"criterion", tc.criterion}, {"x", xs}, {"y", ys},
+    curves.push_back({{"curve", c},
+                      {"chain", tc.chain},
+                      {"l", tc.l},
+                      {"criterion", tc.criterion},
+                      {"x", xs},
+                      {"y", ys},
                       {"mu", mus}});
   }
   nlohmann::json corners = nlohmann::json::array();
@@ -64,13 +75,21 @@ nlohmann::json trace_json(const SceneFile& file, const DiagramSpec& plane, const
   nlohmann::json doc{{"format", "rbcstab-trace"},
                      {"version", 1},
                      {"scene", to_json(file.scene)},
-                     {"plane", {{"x", to_string(plane.x.axis)}, {"x_range", {plane.x.min, plane.x.max}},
-                                {"y", to_string(plane.y.axis)}, {"y_range", {plane.y.min, plane.y.max}},
-                                {"alpha", plane.alpha}}},
+                     {"plane",
+                      {{"x", to_string(plane.x.axis)},
+                       {"x_range", {plane.x.min, plane.x.max}},
+                       {"y", to_string(plane.y.axis)},
+                       {"y_range", {plane.y.min, plane.y.max}},
+                       {"alpha", plane.alpha}}},
                      {"criterion", to_string(to.criterion)},
-                     {"options", {{"criterion", to_string(to.criterion)}, {"T", to.T > 0 ? to.T : file.scene.T},
-                                  {"lines", to.lines}, {"samples", to.samples}, {"bisections", to.bisections},
-                                  {"max_step", to.max_step}, {"method", to_string(to.method)}}},
+                     {"options",
+                      {{"criterion", to_string(to.criterion)},
+                       {"T", to.T > 0 ? to.T : file.scene.T},
+                       {"lines", to.lines},
+                       {"samples", to.samples},
+                       {"bisections", to.bisections},
+                       {"max_step", to.max_step},
+                       {"method", to_string(to.method)}}},
                      {"method", t.method},
                      {"curves", curves},
                      {"corners", corners},
@@ -79,9 +98,11 @@ nlohmann::json trace_json(const SceneFile& file, const DiagramSpec& plane, const
                      {"chains", t.chains},
                      {"starts", t.starts},
                      {"turning_points", t.turning_points},
-                     {"continuation", {{"steps", t.counters.steps}, {"rejected_steps", t.counters.rejected_steps},
-                                       {"newton_iterations", t.counters.newton_iterations},
-                                       {"location_iterations", t.counters.location_iterations}}},
+                     {"continuation",
+                      {{"steps", t.counters.steps},
+                       {"rejected_steps", t.counters.rejected_steps},
+                       {"newton_iterations", t.counters.newton_iterations},
+                       {"location_iterations", t.counters.location_iterations}}},
                      {"notes", t.notes},
                      {"seconds", t.seconds}};
   put_truncation(doc, file);
@@ -157,28 +178,17 @@ nlohmann::json diagram_document(const SceneFile& file, const DiagramSpec& spec, 
 
 nlohmann::json diagram_brief_json(const SceneFile& file, const DiagramRun& r, const std::string& prefix) {
   const VerdictCounts c = count_verdicts(r.points);
-  nlohmann::json j{{"csv", prefix + ".csv"},
-                   {"json", prefix + ".json"},
-                   {"points", r.points.size()},
-                   {"computed", r.computed},
-                   {"resumed", r.resumed},
-                   {"stable", c.stable},
-                   {"unstable", c.unstable},
-                   {"failed", c.failed},
-                   {"complete", r.complete},
-                   {"config_hash", r.config_hash},
-                   {"seconds", r.seconds}};
+  nlohmann::json j{{"csv", prefix + ".csv"},       {"json", prefix + ".json"}, {"points", r.points.size()},
+                   {"computed", r.computed},       {"resumed", r.resumed},     {"stable", c.stable},
+                   {"unstable", c.unstable},       {"failed", c.failed},       {"complete", r.complete},
+                   {"config_hash", r.config_hash}, {"seconds", r.seconds}};
   put_truncation(j, file);
   return j;
 }
 
 nlohmann::json merge_brief_json(const MergeResult& m, std::size_t inputs, const std::string& prefix) {
-  return {{"csv", prefix + ".csv"},
-          {"json", prefix + ".json"},
-          {"inputs", inputs},
-          {"points", m.points.size()},
-          {"missing", m.missing.size()},
-          {"complete", m.missing.empty()}};
+  return {{"csv", prefix + ".csv"},    {"json", prefix + ".json"},    {"inputs", inputs},
+          {"points", m.points.size()}, {"missing", m.missing.size()}, {"complete", m.missing.empty()}};
 }
 
 std::string threshold_precision_csv(const ThresholdPrecision& t) {
@@ -200,8 +210,13 @@ nlohmann::json threshold_precision_json(const SceneFile& file, const ThresholdPr
     return status == "ok" ? nonfinite_reason(file.scene.parameters) : status;
   };
   for (const auto& r : t.rows) {
-    nlohmann::json row{{"predictor", r.predictor}, {"method", r.method}, {"rtol", r.rtol}, {"budget", r.budget},
-                       {"evaluations", r.evaluations}, {"rhs_evaluations", r.rhs_evaluations}, {"seconds", r.seconds},
+    nlohmann::json row{{"predictor", r.predictor},
+                       {"method", r.method},
+                       {"rtol", r.rtol},
+                       {"budget", r.budget},
+                       {"evaluations", r.evaluations},
+                       {"rhs_evaluations", r.rhs_evaluations},
+                       {"seconds", r.seconds},
                        {"status", r.status}};
     put_number(row, "ln_C", r.ln_C, why(r.status));
     std::string error_why = why(r.status);
@@ -211,14 +226,17 @@ nlohmann::json threshold_precision_json(const SceneFile& file, const ThresholdPr
     rows.push_back(row);
   }
   for (const auto& r : t.references) {
-    nlohmann::json ref{{"predictor", r.predictor}, {"status", r.status},
+    nlohmann::json ref{{"predictor", r.predictor},
+                       {"status", r.status},
                        {"rtol", r.predictor == "asymptotic" ? 0.0 : options.reference_rtol}};
     put_number(ref, "ln_C", r.ln_C, why(r.status));
     put_number(ref, "bracket", r.bracket, why(r.status));
     refs.push_back(ref);
   }
-  nlohmann::json j{{"scene", to_json(file.scene)}, {"B", t.B},
-                   {"ln_C_range", std::vector<double>{options.ln_C_lo, options.ln_C_hi}}, {"references", refs},
+  nlohmann::json j{{"scene", to_json(file.scene)},
+                   {"B", t.B},
+                   {"ln_C_range", std::vector<double>{options.ln_C_lo, options.ln_C_hi}},
+                   {"references", refs},
                    {"rows", rows}};
   put_truncation(j, file);
   return j;
@@ -234,8 +252,8 @@ std::string threshold_precision_text(const SceneFile& file, const ThresholdPreci
     << std::setw(8) << "budget" << std::setw(12) << "error" << std::setw(8) << "evals" << std::setw(12) << "RHS"
     << std::setw(11) << "seconds\n";
   for (const auto& r : t.rows)
-    s << std::setw(15) << r.predictor << std::setw(12) << r.method << std::setw(8) << r.rtol << std::setw(8)
-      << r.budget << std::setw(12) << r.error << std::setw(8) << r.evaluations << std::setw(12) << r.rhs_evaluations
+    s << std::setw(15) << r.predictor << std::setw(12) << r.method << std::setw(8) << r.rtol << std::setw(8) << r.budget
+      << std::setw(12) << r.error << std::setw(8) << r.evaluations << std::setw(12) << r.rhs_evaluations
       << std::setw(11) << r.seconds << (r.status == "ok" ? "" : "  " + r.status) << "\n";
   return s.str();
 }

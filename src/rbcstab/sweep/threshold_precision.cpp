@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <limits>
 #include <functional>
+#include <limits>
 
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
@@ -21,17 +21,20 @@ void ThresholdPrecisionOptions::validate() const {
   for (int k : bisections) require(k >= 1 && k <= 60, "bisections", k, "each in [1, 60]");
   for (double r : rtols) require(std::isfinite(r) && r >= 1e-14 && r <= 0.1, "rtols", r, "each in [1e-14, 0.1]");
   for (int n : grid_points) require(n >= 2 && n <= 100000, "grid_points", n, "each in [2, 100000]");
-  require(std::isfinite(grid_rtol) && grid_rtol >= 1e-14 && grid_rtol <= 0.1, "grid_rtol", grid_rtol, "in [1e-14, 0.1]");
+  require(std::isfinite(grid_rtol) && grid_rtol >= 1e-14 && grid_rtol <= 0.1, "grid_rtol", grid_rtol,
+          "in [1e-14, 0.1]");
   require(std::isfinite(reference_rtol) && reference_rtol >= 1e-14 && reference_rtol <= 1e-9, "reference_rtol",
           reference_rtol, "in [1e-14, 1e-9]");
   require(reference_bisections >= 10 && reference_bisections <= 60, "reference_bisections", reference_bisections,
           "an integer in [10, 60]");
-  for (double h : trace_max_steps) require(std::isfinite(h) && h > 0 && h <= 0.5, "trace_max_steps", h, "each in (0, 0.5]");
+  for (double h : trace_max_steps)
+    require(std::isfinite(h) && h > 0 && h <= 0.5, "trace_max_steps", h, "each in (0, 0.5]");
   require(std::isfinite(trace_half_width) && trace_half_width > 0 && trace_half_width <= 10, "trace_half_width",
           trace_half_width, "in (0, 10]");
   for (const auto& name : predictors)
     if (name != "asymptotic" && name != "finite_horizon" && name != "simulation")
-      throw InvalidArgument("predictors", "predictors: '" + name + "' is not one of asymptotic, finite_horizon, simulation");
+      throw InvalidArgument("predictors",
+                            "predictors: '" + name + "' is not one of asymptotic, finite_horizon, simulation");
 }
 
 namespace {
@@ -106,7 +109,8 @@ Bisection bisect(const VerdictFn& f, double lo, double hi, double rtol, int halv
     return b;
   }
   if (elo.unstable == ehi.unstable) {
-    b.status = std::string("no verdict change in the bracket (") + (elo.unstable ? "unstable" : "stable") + " at both ends)";
+    b.status =
+        std::string("no verdict change in the bracket (") + (elo.unstable ? "unstable" : "stable") + " at both ends)";
     return b;
   }
   double a = lo, c = hi;
@@ -212,7 +216,9 @@ ThresholdPrecision threshold_precision(const Scene& base, const ThresholdPrecisi
     }
     out.references.push_back(r);
     // Without a reference the error is unknown: NaN, which the outputs show as a missing value with its reason.
-    auto error_of = [&](double x) { return r.status == "ok" ? std::abs(x - r.ln_C) : std::numeric_limits<double>::quiet_NaN(); };
+    auto error_of = [&](double x) {
+      return r.status == "ok" ? std::abs(x - r.ln_C) : std::numeric_limits<double>::quiet_NaN();
+    };
 
     const std::vector<double> rtols = p.integrates ? options.rtols : std::vector<double>{0.0};
     for (double rtol : rtols) {
@@ -237,7 +243,8 @@ ThresholdPrecision threshold_precision(const Scene& base, const ThresholdPrecisi
     }
     if (p.name != "simulation")  // the simulated verdict has no smooth criterion to continue
       for (double h : options.trace_max_steps) {
-        const TraceCriterion crit = p.name == "asymptotic" ? TraceCriterion::asymptotic : TraceCriterion::finite_horizon;
+        const TraceCriterion crit =
+            p.name == "asymptotic" ? TraceCriterion::asymptotic : TraceCriterion::finite_horizon;
         ThresholdRow row = continuation(base, p.name, crit, lo, hi, options.trace_half_width, h);
         if (row.status == "ok") row.error = error_of(row.ln_C);
         add(row);

@@ -20,37 +20,37 @@ namespace rbcstab {
 struct ThresholdPrecisionOptions {
   double ln_C_lo = -5.5, ln_C_hi = 2.0;  // bracket in ln C (the Fig. 4(b) axis); the verdicts must differ at its ends
   std::vector<int> bisections{2, 4, 6, 8, 12, 16, 20, 24, 28, 32};  // root-solve budgets (halvings), each in [1, 60]
-  std::vector<double> rtols{1e-4, 1e-6, 1e-8, 1e-10};  // integrator tolerances of the finite-horizon and
-                                                       // simulation predictors, each in [1e-14, 0.1]
-  std::vector<int> grid_points{5, 9, 17, 33, 65, 129};  // n per axis of grid sampling, each in [2, 100000]
-  double grid_rtol = 1e-8;         // tolerance of the grid runs (the CLI default)
-  double reference_rtol = 1e-12;   // in [1e-14, 1e-9]: the references' integrator tolerance
-  int reference_bisections = 40;   // in [10, 60]: 7.5 / 2^40 ~ 7e-12 in ln C
+  std::vector<double> rtols{1e-4, 1e-6, 1e-8, 1e-10};               // integrator tolerances of the finite-horizon and
+                                                                    // simulation predictors, each in [1e-14, 0.1]
+  std::vector<int> grid_points{5, 9, 17, 33, 65, 129};              // n per axis of grid sampling, each in [2, 100000]
+  double grid_rtol = 1e-8;                                          // tolerance of the grid runs (the CLI default)
+  double reference_rtol = 1e-12;                               // in [1e-14, 1e-9]: the references' integrator tolerance
+  int reference_bisections = 40;                               // in [10, 60]: 7.5 / 2^40 ~ 7e-12 in ln C
   std::vector<double> trace_max_steps{0.1, 0.05, 0.02, 0.01};  // continuation step caps (unit square), each in
-                                                                // (0, 0.5]; empty: no continuation rows
-  double trace_half_width = 0.5;   // in (0, 10]: the traced strip is ln B +- this
+                                                               // (0, 0.5]; empty: no continuation rows
+  double trace_half_width = 0.5;                               // in (0, 10]: the traced strip is ln B +- this
   std::vector<std::string> predictors{"asymptotic", "finite_horizon", "simulation"};  // which to measure
-  ProgressCallback on_progress;    // rows done (total not known in advance: 0)
-  void validate() const;           // throws InvalidArgument naming the field
+  ProgressCallback on_progress;  // rows done (total not known in advance: 0)
+  void validate() const;         // throws InvalidArgument naming the field
 };
 
 struct ThresholdRow {
-  std::string predictor;   // "asymptotic", "finite_horizon", "simulation"
-  std::string method;      // "bisection", "grid", "continuation", "closed_form"
-  double rtol = 0;         // integrator tolerance (0: no integration)
-  int budget = 0;          // halvings (bisection), points per axis (grid), 1 / max_step (continuation)
-  double ln_C = 0;         // located boundary
-  double error = 0;        // |ln_C - reference| of this predictor; NaN when the reference failed
+  std::string predictor;            // "asymptotic", "finite_horizon", "simulation"
+  std::string method;               // "bisection", "grid", "continuation", "closed_form"
+  double rtol = 0;                  // integrator tolerance (0: no integration)
+  int budget = 0;                   // halvings (bisection), points per axis (grid), 1 / max_step (continuation)
+  double ln_C = 0;                  // located boundary
+  double error = 0;                 // |ln_C - reference| of this predictor; NaN when the reference failed
   std::size_t evaluations = 0;      // verdict evaluations
   std::size_t rhs_evaluations = 0;  // summed over the runs (0 for the asymptotic predictor and continuation)
   double seconds = 0;
-  std::string status = "ok";        // "ok", or why no boundary was located (no sign change, failed run)
+  std::string status = "ok";  // "ok", or why no boundary was located (no sign change, failed run)
 };
 
 struct ThresholdReference {
   std::string predictor;
   double ln_C = 0;
-  double bracket = 0;      // final bisection bracket width in ln C
+  double bracket = 0;  // final bisection bracket width in ln C
   std::string status = "ok";
 };
 

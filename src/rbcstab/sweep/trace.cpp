@@ -11,19 +11,23 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/parameter_table.hpp"
-#include "rbcstab/verdict/asymptotic.hpp"
-#include "rbcstab/verdict/predict.hpp"
 #include "rbcstab/model/scene.hpp"
 #include "rbcstab/sweep/detail/trace_in_B.hpp"
+#include "rbcstab/verdict/asymptotic.hpp"
+#include "rbcstab/verdict/predict.hpp"
 
 namespace rbcstab {
 
 namespace {
-const char* kAsymptoticExact = "mu_l = Upsilon_l(sigma_R^eq) = 0 (exact out-of-plane equilibrium, envelope over l = 3..L)";
-const char* kAsymptoticAverage = "mu_l = Upsilon_l(<sigma_R>) = 0 (time average on the reduced attractor, envelope over l = 3..L)";
+const char* kAsymptoticExact =
+    "mu_l = Upsilon_l(sigma_R^eq) = 0 (exact out-of-plane equilibrium, envelope over l = 3..L)";
+const char* kAsymptoticAverage =
+    "mu_l = Upsilon_l(<sigma_R>) = 0 (time average on the reduced attractor, envelope over l = 3..L)";
 const char* kAsymptoticOrbit =
-    "mu_l = Upsilon_l(<sigma_R>) = 0 (period average on the attracting periodic orbit, else time average; envelope over l = 3..L)";
-const char* kFiniteHorizon = "G_l(T) = int_0^T Upsilon_l(sigma_R(t)) dt = 0 (reduced transient, envelope over l = 3..L)";
+    "mu_l = Upsilon_l(<sigma_R>) = 0 (period average on the attracting periodic orbit, else time average; envelope "
+    "over l = 3..L)";
+const char* kFiniteHorizon =
+    "G_l(T) = int_0^T Upsilon_l(sigma_R(t)) dt = 0 (reduced transient, envelope over l = 3..L)";
 }  // namespace
 
 void TraceOptions::validate() const {
@@ -55,11 +59,11 @@ ModeCriteria plane_criteria(const Scene& base, const DiagramSpec& plane, const T
   c.l_min = 3;
   if (options.criterion == TraceCriterion::asymptotic) {
     c.description = is_out_of_plane(base, options.predictor) ? kAsymptoticExact
-                    : options.orbit.enabled                   ? kAsymptoticOrbit
-                                                              : kAsymptoticAverage;
+                    : options.orbit.enabled                  ? kAsymptoticOrbit
+                                                             : kAsymptoticAverage;
     // Evaluations that share a flow (e.g. along a line of constant C) share its in-plane orbit.
     c.at = [&base, &plane, memo = std::make_shared<AsymptoticSigmaMemo>(options.predictor, options.orbit)](double x,
-                                                                                                          double y) {
+                                                                                                           double y) {
       const Scene s = plane_scene(base, plane, x, y);
       s.validate();
       CriterionSample out;
@@ -136,8 +140,9 @@ TraceResult trace_boundary(const Scene& base, const DiagramSpec& plane_spec, con
   const auto t0 = std::chrono::steady_clock::now();
   if (!detail::closed_form_in_B_applies(base, plane_spec, options))
     return trace_by_continuation(base, plane_spec, options, t0);
-  detail::InBTrace exact = detail::trace_in_B(
-      base, plane_spec, options, options.criterion == TraceCriterion::finite_horizon ? kFiniteHorizon : kAsymptoticOrbit);
+  detail::InBTrace exact =
+      detail::trace_in_B(base, plane_spec, options,
+                         options.criterion == TraceCriterion::finite_horizon ? kFiniteHorizon : kAsymptoticOrbit);
   if (exact.result) {
     exact.result->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     return *exact.result;
@@ -156,7 +161,9 @@ std::vector<Overlay> analytic_overlays(const Scene& base, const DiagramSpec& pla
   const AxisRange& X = plane.x;
   const AxisRange& Y = plane.y;
   auto xs = [&](int k) { return X.min + (X.max - X.min) * double(k) / double(n - 1); };
-  auto inside = [&](double y) { return std::isfinite(y) && y >= std::min(Y.min, Y.max) && y <= std::max(Y.min, Y.max); };
+  auto inside = [&](double y) {
+    return std::isfinite(y) && y >= std::min(Y.min, Y.max) && y <= std::max(Y.min, Y.max);
+  };
   if (X.axis == Axis::lnB && Y.axis == Axis::lnC && plane.alpha == 0) {
     auto alpha_line = [&](const std::string& name, double alpha) {
       Overlay o{name, {}, {}};
@@ -172,7 +179,8 @@ std::vector<Overlay> analytic_overlays(const Scene& base, const DiagramSpec& pla
       const Parameters p = plane_scene(base, plane, xs(k), 0.5 * (Y.min + Y.max)).parameters;
       if (const Quantity q = C_star_minus(p); q.valid() && q.value > 0 && inside(std::log(q.value)))
         cm.x.push_back(xs(k)), cm.y.push_back(std::log(q.value));
-      if (const Quantity q = C_star_plus(p, stress_free_r0(base)); q.valid() && q.value > 0 && inside(std::log(q.value)))
+      if (const Quantity q = C_star_plus(p, stress_free_r0(base));
+          q.valid() && q.value > 0 && inside(std::log(q.value)))
         cp.x.push_back(xs(k)), cp.y.push_back(std::log(q.value));
     }
     out.push_back(cm);

@@ -29,9 +29,9 @@ enum class TraceCriterion { asymptotic, finite_horizon };
 // Outputs write "finite-horizon"; input also takes the enumerator's spelling "finite_horizon".
 template <>
 struct EnumTable<TraceCriterion> {
-  static constexpr EnumName<TraceCriterion> entries[] = {
-      {TraceCriterion::asymptotic, "asymptotic"}, {TraceCriterion::finite_horizon, "finite-horizon"},
-      {TraceCriterion::finite_horizon, "finite_horizon"}};
+  static constexpr EnumName<TraceCriterion> entries[] = {{TraceCriterion::asymptotic, "asymptotic"},
+                                                         {TraceCriterion::finite_horizon, "finite-horizon"},
+                                                         {TraceCriterion::finite_horizon, "finite_horizon"}};
 };
 // Throws InvalidArgument("criterion", ...) naming the allowed criteria.
 inline TraceCriterion trace_criterion_from_string(std::string_view name) {
@@ -46,17 +46,17 @@ enum class TraceMethod { automatic, continuation };
 template <>
 struct EnumTable<TraceMethod> {
   static constexpr EnumName<TraceMethod> entries[] = {{TraceMethod::automatic, "auto"},
-                                                       {TraceMethod::continuation, "continuation"}};
+                                                      {TraceMethod::continuation, "continuation"}};
 };
 // Throws InvalidArgument("method", ...) naming the allowed methods.
 inline TraceMethod trace_method_from_string(std::string_view name) { return from_string<TraceMethod>(name, "method"); }
 
 struct TraceOptions {
   TraceCriterion criterion = TraceCriterion::asymptotic;
-  double T = 0;          // finite horizon; 0: the scene's T
-  int lines = 4;         // interior lines x = const searched for starts, besides the plane's four edges
-  int samples = 128;     // brackets per edge or line: start roots closer than 1/samples of it can be missed
-  int bisections = 60;   // per start root (to the last bit; Newton then polishes)
+  double T = 0;            // finite horizon; 0: the scene's T
+  int lines = 4;           // interior lines x = const searched for starts, besides the plane's four edges
+  int samples = 128;       // brackets per edge or line: start roots closer than 1/samples of it can be missed
+  int bisections = 60;     // per start root (to the last bit; Newton then polishes)
   double max_step = 0.02;  // arclength step cap in the unit square: the curve's resolution
   // Reduced runs of the finite-horizon and in-plane criteria: rk8pd at rtol 1e-12 (analysis default 1e-10),
   // because Newton needs the criterion smooth below the 1e-10 residual it is traced to (at 1e-10 the step
@@ -75,19 +75,19 @@ ModeCriteria plane_criteria(const Scene& base, const DiagramSpec& plane, const T
 
 struct TracePoint {
   double x = 0, y = 0;
-  int l = 3;            // active mode
+  int l = 3;                        // active mode
   double sigma_R = 0, sigma_c = 0;  // <sigma_R> (asymptotic) or <sigma_R>_T (finite horizon); sigma_l^c(alpha)
-  double mu = 0;        // the criterion's residual g_l: mu_l (asymptotic) or G_l(T) (finite horizon); 0 on the boundary
+  double mu = 0;  // the criterion's residual g_l: mu_l (asymptotic) or G_l(T) (finite horizon); 0 on the boundary
 };
 struct TraceCurve {
-  int l = 3;                   // the mode of this piece
-  std::string criterion;       // e.g. "mu_l = Upsilon_l(sigma_R^eq) = 0 (...)"
+  int l = 3;                       // the mode of this piece
+  std::string criterion;           // e.g. "mu_l = Upsilon_l(sigma_R^eq) = 0 (...)"
   std::vector<TracePoint> points;  // ordered along the curve (each chain runs towards increasing x)
-  std::size_t chain = 0;       // pieces of one connected curve share this index
+  std::size_t chain = 0;           // pieces of one connected curve share this index
 };
 struct TraceCorner {
   double x = 0, y = 0;
-  int l_from = 3, l_to = 4;    // active mode before and after (along the chain, i.e. towards increasing x)
+  int l_from = 3, l_to = 4;  // active mode before and after (along the chain, i.e. towards increasing x)
 };
 struct TraceResult {
   std::vector<TraceCurve> curves;

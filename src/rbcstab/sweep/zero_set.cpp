@@ -46,8 +46,8 @@ class Evaluator {
     if (e.s.g.empty()) throw InvalidArgument("criteria", "the criterion returned no modes");
     for (double g : e.s.g)
       if (!std::isfinite(g))
-        throw InvalidArgument("criteria", "the criterion is not finite at (" + format_value(x(u)) + ", " +
-                                              format_value(y(v)) + ")");
+        throw InvalidArgument(
+            "criteria", "the criterion is not finite at (" + format_value(x(u)) + ", " + format_value(y(v)) + ")");
     e.u = u;
     e.v = v;
     e.valid = true;
@@ -131,8 +131,7 @@ struct Root {
 };
 
 // Sign changes of the envelope along w(s) = a + s (b - a), s in [0, 1], refined by bisection.
-void roots_on_segment(Evaluator& ev, Vec2 a, Vec2 b, Vec2 inward, int samples, int bisections,
-                      std::vector<Root>& out) {
+void roots_on_segment(Evaluator& ev, Vec2 a, Vec2 b, Vec2 inward, int samples, int bisections, std::vector<Root>& out) {
   auto at = [&](double s) { return Vec2{a[0] + s * (b[0] - a[0]), a[1] + s * (b[1] - a[1])}; };
   // NaN where the criterion is outside its domain (e.g. an unconverged time average): no bracket there.
   auto env = [&](double s) {

@@ -34,23 +34,23 @@ struct PlaneBox {
 };
 
 struct ZeroSetOptions {
-  int seed_lines = 4;         // interior lines x = const also searched for starts (curves not touching an edge)
-  int samples = 128;          // brackets per edge or seed line: roots closer than 1/samples of it can be missed
-  int bisections = 60;        // per start root: halves the bracket to ~1e-18 of the edge (then Newton polishes)
-  double max_step = 0.02;     // arclength step cap in the unit square: the curve's resolution (~50 points across)
-  double initial_step = 0.005;  // first step of each piece (unit square)
-  double newton_tol = 1e-12;  // the engine's corrector tolerance (unit-square coordinates are O(1))
-  double residual_tol = 1e-12;  // points with |g_l| above this are polished by Newton along the gradient
-  double cover_tol = 2e-3;    // a start within this distance (unit square) of a traced curve is already traced
+  int seed_lines = 4;             // interior lines x = const also searched for starts (curves not touching an edge)
+  int samples = 128;              // brackets per edge or seed line: roots closer than 1/samples of it can be missed
+  int bisections = 60;            // per start root: halves the bracket to ~1e-18 of the edge (then Newton polishes)
+  double max_step = 0.02;         // arclength step cap in the unit square: the curve's resolution (~50 points across)
+  double initial_step = 0.005;    // first step of each piece (unit square)
+  double newton_tol = 1e-12;      // the engine's corrector tolerance (unit-square coordinates are O(1))
+  double residual_tol = 1e-12;    // points with |g_l| above this are polished by Newton along the gradient
+  double cover_tol = 2e-3;        // a start within this distance (unit square) of a traced curve is already traced
   std::size_t max_points = 5000;  // per piece
-  int max_pieces = 200;       // guards against cycling between modes
-  void validate() const;      // throws InvalidArgument naming the field
+  int max_pieces = 200;           // guards against cycling between modes
+  void validate() const;          // throws InvalidArgument naming the field
 };
 
 struct ZeroSetPoint {
   double x = 0, y = 0;
   int l = 3;
-  double g = 0;            // g_l at the point: the residual (0 on the boundary)
+  double g = 0;  // g_l at the point: the residual (0 on the boundary)
   double sigma_R = 0, alpha = 0;
 };
 struct ZeroSetPiece {
@@ -63,7 +63,7 @@ struct ZeroSetCorner {
   int l_from = 3, l_to = 4;  // mode before and after, along the chain
   std::size_t chain = 0;
   LocationStatus status = LocationStatus::located;
-  double precision = 0;      // the engine's final bracket (unit square)
+  double precision = 0;  // the engine's final bracket (unit square)
 };
 struct ZeroSetResult {
   std::vector<ZeroSetPiece> pieces;

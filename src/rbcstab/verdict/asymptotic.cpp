@@ -16,8 +16,8 @@ void OrbitAverageOptions::validate() const {
   require(relaxation_periods >= 0 && relaxation_periods <= 100000, "relaxation_periods", relaxation_periods,
           "an integer in [0, 100000]");
   require(samples >= 4 && samples <= 1000000, "samples", samples, "an integer in [4, 1000000]");
-  require(std::isfinite(max_multiplier) && max_multiplier > 0 && max_multiplier <= 1, "max_multiplier",
-          max_multiplier, "(0, 1]");
+  require(std::isfinite(max_multiplier) && max_multiplier > 0 && max_multiplier <= 1, "max_multiplier", max_multiplier,
+          "(0, 1]");
   require(std::isfinite(newton_tol) && newton_tol >= 1e-15 && newton_tol <= 1e-6, "newton_tol", newton_tol,
           "[1e-15, 1e-6]");
   require(max_iterations >= 1 && max_iterations <= 1000, "max_iterations", max_iterations, "an integer in [1, 1000]");
@@ -149,7 +149,8 @@ AsymptoticSigma asymptotic_sigma(const ValidScene& valid, const PredictorOptions
 }
 }  // namespace
 
-AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const PredictorOptions& options, const OrbitAverageOptions& orbit) {
+AsymptoticSigma asymptotic_sigma_R(const Scene& scene, const PredictorOptions& options,
+                                   const OrbitAverageOptions& orbit) {
   return asymptotic_sigma(validated(scene), options, orbit, nullptr);
 }
 

@@ -6,8 +6,8 @@
 #include <optional>
 
 #include "rbcstab/continuation/continuation.hpp"
-#include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/continuation_parameter.hpp"
+#include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/model/modal_model.hpp"
@@ -74,10 +74,13 @@ class SceneCertifier final : public AttractorCertifier {
     const int k = static_cast<int>(periods);
     try {
       switch (system.level()) {
-        case ModelLevel::modal: return modal(static_cast<const ModalModel&>(system), t, y, k, jump, record);
-        case ModelLevel::reduced: return reduced(t, y, k, jump, record);
+        case ModelLevel::modal:
+          return modal(static_cast<const ModalModel&>(system), t, y, k, jump, record);
+        case ModelLevel::reduced:
+          return reduced(t, y, k, jump, record);
         case ModelLevel::full:
-        case ModelLevel::automatic: break;
+        case ModelLevel::automatic:
+          break;
       }
     } catch (const InvalidArgument& e) {
       // The orbit problem refuses this scene (e.g. its total excess area outside Delta's domain): the run
@@ -112,8 +115,10 @@ class SceneCertifier final : public AttractorCertifier {
     }
     last_t_ = t;
     last_defect_ = defect;
-    if (!small) fail(record, t, "the periodicity defect over one period is " + format_value(defect) + " (above " +
-                                    format_value(o_.max_distance) + ")");
+    if (!small)
+      fail(record, t,
+           "the periodicity defect over one period is " + format_value(defect) + " (above " +
+               format_value(o_.max_distance) + ")");
     return small;
   }
 
@@ -125,20 +130,23 @@ class SceneCertifier final : public AttractorCertifier {
     const double needed = 1 - std::exp(-o_.min_rate * P);
     if (c.stability != Stability::stable || !(c.margin - c.margin_error >= needed)) {
       backoff();
-      return fail(record, t, "the orbit's slowest direction is not attracting by the margin (1 - max |mu| = " +
-                                 format_value(c.margin) + " +- " + format_value(c.margin_error) + ", needed " +
-                                 format_value(needed) + ")");
+      return fail(
+          record, t,
+          "the orbit's slowest direction is not attracting by the margin (1 - max |mu| = " + format_value(c.margin) +
+              " +- " + format_value(c.margin_error) + ", needed " + format_value(needed) + ")");
     }
     const double distance = std::hypot(ref.distance, decayed_distance);
     if (distance > o_.max_distance)
-      return fail(record, t, "the state is " + format_value(distance) + " from the orbit (above " +
-                                 format_value(o_.max_distance) + ")");
+      return fail(
+          record, t,
+          "the state is " + format_value(distance) + " from the orbit (above " + format_value(o_.max_distance) + ")");
     const double bound = power_norm(ref.monodromy, k) * ref.distance;
     if (!(bound <= tolerance_)) {
       // In the linear regime the bound at the (fixed) resume time does not improve with later attempts.
       if (bound > 10 * tolerance_) next_ = kInf;
-      return fail(record, t, "the linear decay bound " + format_value(bound) + " after " + std::to_string(k) +
-                                 " periods is above the state tolerance " + format_value(tolerance_));
+      return fail(record, t,
+                  "the linear decay bound " + format_value(bound) + " after " + std::to_string(k) +
+                      " periods is above the state tolerance " + format_value(tolerance_));
     }
     record.kind = forced_ ? "periodic_orbit" : "equilibrium";
     record.period = P;
@@ -285,8 +293,7 @@ SimulationResult simulate_certified(const Scene& scene, const SimulationOptions&
   return simulate(scene, options, &certifier);
 }
 
-SimulationResult simulate_scene(SceneFile& file, const SimulationOptions& options,
-                                const ReducedTransient* transient) {
+SimulationResult simulate_scene(SceneFile& file, const SimulationOptions& options, const ReducedTransient* transient) {
   return simulate_truncated(file, options, transient, [](const Scene& scene, const SimulationOptions& o) {
     return simulate_certified(scene, o);
   });

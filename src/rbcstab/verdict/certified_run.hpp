@@ -25,8 +25,8 @@
 #include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/continuation/attractor.hpp"
 #include "rbcstab/core/constants.hpp"
-#include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/integrate/simulation.hpp"
+#include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
@@ -34,11 +34,11 @@ namespace rbcstab {
 struct EarlyTerminationOptions {
   // Slowest decay rate a certificate accepts: every multiplier |mu| + error <= exp(-min_rate period).
   double min_rate = 1e-3;
-  double max_distance = 1e-3;    // linearisation radius |x - x*| (|x| = 1), decayed modes included
-  double state_tolerance = 0;    // decay bound at the resume time; 0: the run's rtol / 10 (the factor 10
-                                 // covers growth within a period, which the bound at whole periods misses)
+  double max_distance = 1e-3;      // linearisation radius |x - x*| (|x| = 1), decayed modes included
+  double state_tolerance = 0;      // decay bound at the resume time; 0: the run's rtol / 10 (the factor 10
+                                   // covers growth within a period, which the bound at whole periods misses)
   double first_attempt = 4 * kPi;  // no attempt before this time
-  double attempt_growth = 1.25;  // after a failed attempt at t, none before max(growth t, t + period)
+  double attempt_growth = 1.25;    // after a failed attempt at t, none before max(growth t, t + period)
   IntegratorOptions screen = {Stepper::rk8pd, 1e-6, 1e-9};  // the one-period defect before a refinement
   PeriodicRefinementOptions refinement;  // its period is replaced by 2 pi, the forcing period of both levels
   void validate() const;                 // throws InvalidArgument naming the field

@@ -11,12 +11,14 @@ namespace rbcstab {
 namespace {
 std::string source_in_words(const AsymptoticSigma& a, const PredictorOptions& options) {
   switch (a.source) {
-    case SigmaSource::equilibrium: return "exact out-of-plane equilibrium";
+    case SigmaSource::equilibrium:
+      return "exact out-of-plane equilibrium";
     case SigmaSource::periodic_orbit:
       return "period average of sigma_R over the attracting 2 pi-periodic orbit of the reduced model (largest "
              "nontrivial Floquet multiplier modulus " +
              format_value(a.max_multiplier) + ")";
-    case SigmaSource::time_average: break;
+    case SigmaSource::time_average:
+      break;
   }
   std::string s = "time average of sigma_R over t in [" + format_value(options.transient) + ", " +
                   format_value(options.transient + options.window) + "] of the reduced model";
@@ -99,8 +101,8 @@ ScenePrediction predict(const Scene& scene, const ReducedTransient& transient, c
   const ValidScene valid = validated(scene);
   options.validate();
   if (!transient.of(scene) || transient.T != scene.T)
-    throw InvalidArgument("transient", "the reduced transient must be the scene's over [0, T = " +
-                                           format_value(scene.T) + "]");
+    throw InvalidArgument("transient",
+                          "the reduced transient must be the scene's over [0, T = " + format_value(scene.T) + "]");
   ScenePrediction out;
   out.asymptotic_sigma = asymptotic_sigma_R(valid, options, orbit);
   const AsymptoticSigma& a = out.asymptotic_sigma;

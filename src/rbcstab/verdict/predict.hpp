@@ -23,7 +23,8 @@ struct ModePrediction {
   std::string predictor;      // "asymptotic", "finite_horizon", "simulation"
   std::vector<int> unstable;  // l in [3, L] predicted (or seen) to grow
   int l_Delta = 2;            // predicted argmax_l [Delta_l(T) - Delta_l(0)]
-  std::vector<double> rate;   // index l - 2: mu_l (asymptotic), G_l(T) (finite horizon), ln(X_l/Delta_l(0))/2 (simulation)
+  std::vector<double>
+      rate;  // index l - 2: mu_l (asymptotic), G_l(T) (finite horizon), ln(X_l/Delta_l(0))/2 (simulation)
   DomainStatus status = DomainStatus::ok;
   std::string reason;
 };
@@ -39,11 +40,11 @@ ModePrediction finite_horizon_prediction(const Scene& scene, const FiniteHorizon
 ModePrediction simulation_prediction(const SimulationResult* simulated);
 
 struct ScenePrediction {
-  Quantity sigma_R_asymptotic;          // <sigma_R> on the attractor
-  std::string asymptotic_source;        // which source gave it, in words
-  AsymptoticSigma asymptotic_sigma;     // the source and its diagnostics
-  bool out_of_plane = false;           // the stress-free shape is out of plane (is_out_of_plane)
-  OutOfPlaneEquilibrium equilibrium;    // filled when out_of_plane
+  Quantity sigma_R_asymptotic;        // <sigma_R> on the attractor
+  std::string asymptotic_source;      // which source gave it, in words
+  AsymptoticSigma asymptotic_sigma;   // the source and its diagnostics
+  bool out_of_plane = false;          // the stress-free shape is out of plane (is_out_of_plane)
+  OutOfPlaneEquilibrium equilibrium;  // filled when out_of_plane
   FiniteHorizon horizon;
   ModePrediction asymptotic, finite_horizon, simulation;
   RegimeResult regime;

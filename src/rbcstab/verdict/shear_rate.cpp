@@ -121,8 +121,7 @@ ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const S
 }
 
 std::vector<ShearRateThreshold> shear_rate_thresholds(const Scene& scene, const ShearRateSearchOptions& options) {
-  return {shear_rate_threshold(scene, kOutOfPlaneBeta, options),
-          shear_rate_threshold(scene, kPi / 2, options)};
+  return {shear_rate_threshold(scene, kOutOfPlaneBeta, options), shear_rate_threshold(scene, kPi / 2, options)};
 }
 
 ShearRateSearchOptions shear_rate_search(const Scene& scene, const std::string& text, const std::string& name) {

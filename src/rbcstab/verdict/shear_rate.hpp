@@ -33,15 +33,15 @@ ShearRateSearchOptions shear_rate_search(const Scene& scene, const std::string& 
 struct ShearRateThreshold {
   std::string orientation;  // "out_of_plane" (beta = 1e-3, the paper's OP) or "in_plane" (beta = pi/2)
   double beta = 0;
-  bool found = false;       // a stable-to-unstable crossing within [min_rate, max_rate]
-  std::string reason;       // why not found (unstable already at min_rate, stable up to max_rate, verdict failed)
-  double shear_rate = 0;    // 1/s: the crossing (the bracket's upper end: the first rate found unstable)
-  double lo = 0, hi = 0;    // the final bracket: stable at lo, unstable at hi (hi/lo - 1 <= rtol)
-  double B = 0, C = 0;      // at shear_rate
-  double alpha = 0;         // B/C, fixed along the path
-  int l = 0;                // the surviving mode just above the threshold (asymptotic_verdict)
-  std::string shape;        // the shape the paper associates with it (Sec. V, Fig. 6)
-  int evaluations = 0;      // asymptotic verdicts evaluated
+  bool found = false;     // a stable-to-unstable crossing within [min_rate, max_rate]
+  std::string reason;     // why not found (unstable already at min_rate, stable up to max_rate, verdict failed)
+  double shear_rate = 0;  // 1/s: the crossing (the bracket's upper end: the first rate found unstable)
+  double lo = 0, hi = 0;  // the final bracket: stable at lo, unstable at hi (hi/lo - 1 <= rtol)
+  double B = 0, C = 0;    // at shear_rate
+  double alpha = 0;       // B/C, fixed along the path
+  int l = 0;              // the surviving mode just above the threshold (asymptotic_verdict)
+  std::string shape;      // the shape the paper associates with it (Sec. V, Fig. 6)
+  int evaluations = 0;    // asymptotic verdicts evaluated
 };
 
 // The scene's shear rate moved along [min_rate, max_rate] (at_shear_rate: B and C together at fixed alpha), with

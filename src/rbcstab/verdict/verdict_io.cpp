@@ -43,19 +43,20 @@ void analysis_text(std::ostream& out, const SceneFile& file, const SimulationRes
   out << "Thresholds   sigma_* = " << sigma_star(alpha) << ", l_* = " << l_star(alpha)
       << (l_star_criterion(alpha) ? " (>= 2.5: an integer mode l >= 3 can be excited)" : " (< 2.5: no l >= 3 band)")
       << ", alpha_*^init = " << to_text(alpha_init(p)) << "\n";
-  if (s.L >= 3) out << "             surviving integer mode (largest sigma_l^c) l_s = " << surviving_mode(alpha, s.L) << "\n";
+  if (s.L >= 3)
+    out << "             surviving integer mode (largest sigma_l^c) l_s = " << surviving_mode(alpha, s.L) << "\n";
   out << "Predictors   (a) asymptotic     <sigma_R> = " << to_text(pr.sigma_R_asymptotic) << " ("
-      << pr.asymptotic_source << "): unstable " << mode_list(pr.asymptotic.unstable) << ", l_Delta = " << pr.asymptotic.l_Delta
-      << "\n";
+      << pr.asymptotic_source << "): unstable " << mode_list(pr.asymptotic.unstable)
+      << ", l_Delta = " << pr.asymptotic.l_Delta << "\n";
   out << "             (b) finite horizon <sigma_R>_T = " << pr.horizon.mean_sigma_R << " over [0, " << pr.horizon.T
       << "]: unstable " << mode_list(pr.finite_horizon.unstable) << ", l_Delta = " << pr.finite_horizon.l_Delta
       << " (linear growth exp(2 G_l))\n";
-  out << "             (c) simulation     unstable " << mode_list(pr.simulation.unstable) << ", l_Delta = " << pr.simulation.l_Delta
-      << "\n";
+  out << "             (c) simulation     unstable " << mode_list(pr.simulation.unstable)
+      << ", l_Delta = " << pr.simulation.l_Delta << "\n";
   if (s.L >= 3) {
     const PostInstability post = post_instability(p, s.L, 0.0);
-    out << "Delta~2      predicted: continuous l_* " << to_text(post.continuous.Delta2_tilde) << ", integer l_s = "
-        << post.surviving_mode << " " << to_text(post.integer_mode.Delta2_tilde) << "\n";
+    out << "Delta~2      predicted: continuous l_* " << to_text(post.continuous.Delta2_tilde)
+        << ", integer l_s = " << post.surviving_mode << " " << to_text(post.integer_mode.Delta2_tilde) << "\n";
     if (has_post_instability_state(r))
       out << "             simulated Delta-bar_2 = " << r.Delta_tail_mean[0] << " (tail mean over the last "
           << file.options.tail_window << ")\n";
@@ -111,7 +112,10 @@ nlohmann::json summary_json(const SceneFile& file, const SimulationResult& r, co
 nlohmann::json to_json(const std::vector<ShearRateThreshold>& thresholds) {
   nlohmann::json a = nlohmann::json::array();
   for (const ShearRateThreshold& t : thresholds) {
-    nlohmann::json o = {{"orientation", t.orientation}, {"beta", t.beta}, {"found", t.found}, {"alpha", t.alpha},
+    nlohmann::json o = {{"orientation", t.orientation},
+                        {"beta", t.beta},
+                        {"found", t.found},
+                        {"alpha", t.alpha},
                         {"evaluations", t.evaluations}};
     if (t.found) {
       o["shear_rate"] = t.shear_rate;
@@ -205,9 +209,9 @@ std::string summary_text(const SceneFile& file, const SimulationResult& r, const
       << r.seconds << " s with " << to_string(file.options.integrator.stepper) << " at rtol "
       << file.options.integrator.rtol << "\n";
   if (r.early.terminated)
-    out << "Early stop: at t = " << r.early.terminated_at << " the state was certified on an attracting " << r.early.kind
-        << " (margin 1 - max |mu| = " << r.early.margin << " +- " << r.early.margin_error << ", distance "
-        << r.early.distance << "); the run resumed on it at t = " << r.early.resumed_at << "\n";
+    out << "Early stop: at t = " << r.early.terminated_at << " the state was certified on an attracting "
+        << r.early.kind << " (margin 1 - max |mu| = " << r.early.margin << " +- " << r.early.margin_error
+        << ", distance " << r.early.distance << "); the run resumed on it at t = " << r.early.resumed_at << "\n";
   else if (!r.early.note.empty())
     out << "Full horizon: " << r.early.note << "\n";
   if (r.status != IntegrationStatus::success)

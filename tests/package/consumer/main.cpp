@@ -17,6 +17,7 @@ int main() {
     std::cerr << "unexpected result: " << j.dump() << "\n";
     return 1;
   }
-  std::cout << "rbcstab consumer ok: model " << j["model"].get<std::string>() << ", sigma(T) = " << r.sigma_final << "\n";
+  std::cout << "rbcstab consumer ok: model " << j["model"].get<std::string>() << ", sigma(T) = " << r.sigma_final
+            << "\n";
   return 0;
 }

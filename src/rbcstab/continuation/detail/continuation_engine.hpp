@@ -2,10 +2,10 @@
 // Module-private: the engine behind continue_branch, which continues one direction of a branch: its
 // predictor-corrector steps (continuation.cpp), the special points between two accepted points
 // (special_point_detection.cpp) and the points' stability certificates (stability_certificate.cpp).
-#include "rbcstab/continuation/dense.hpp"
 #include <array>
 #include <cstddef>
 #include <vector>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/problem.hpp"
@@ -29,7 +29,11 @@ struct Pt {
 class Engine {
  public:
   Engine(const ContinuationProblem& problem, const ContinuationOptions& options)
-      : pr_(problem), o_(options), n_(problem.dimension()), N_(n_ + 1), cycles_(problem.stability_kind() == StabilityKind::multipliers) {}
+      : pr_(problem),
+        o_(options),
+        n_(problem.dimension()),
+        N_(n_ + 1),
+        cycles_(problem.stability_kind() == StabilityKind::multipliers) {}
 
   ContinuationCounters counters;
 

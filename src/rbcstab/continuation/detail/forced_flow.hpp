@@ -3,10 +3,10 @@
 // equations Phi' = J Phi (n x n, column-major) and, for shooting in p, s' = J s + f_p (the parameter
 // sensitivity). Only explicit steppers are used (rk8pd), which never ask for the Jacobian of the augmented
 // system, so jacobian/observe/amplitudes are not part of this adapter's contract and throw logic_error.
-#include "rbcstab/continuation/dense.hpp"
 #include <span>
 #include <stdexcept>
 #include <vector>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/forced_system.hpp"
 #include "rbcstab/integrate/quadrature.hpp"
@@ -26,9 +26,12 @@ class ForcedFlow final : public System {
   std::size_t dimension() const override {
     const auto n = static_cast<std::size_t>(n_);
     switch (mode_) {
-      case Mode::plain: return n;
-      case Mode::monodromy: return n + n * n;
-      case Mode::variational: return n + n * n + n;
+      case Mode::plain:
+        return n;
+      case Mode::monodromy:
+        return n + n * n;
+      case Mode::variational:
+        return n + n * n + n;
     }
     return n;
   }

@@ -3,10 +3,10 @@
 // A(x, p) that becomes rank deficient by k on the curve. With borders B, C (n x k) the bordered system
 //   [A B; C^T 0] [V; G] = [0; I_k]
 // is regular near the curve and G (k x k) vanishes exactly where rank A = n - k.
-#include "rbcstab/continuation/dense.hpp"
 #include <array>
 #include <cmath>
 #include <limits>
+#include "rbcstab/continuation/dense.hpp"
 
 namespace rbcstab::detail {
 

@@ -1,10 +1,10 @@
 #pragma once
 // Module-private: the measures of a point of each kind, in the order of measure_names / curve_measure_names,
 // and the MeasuredBranch built from them (scene_measures.cpp); the scene problems and curves read them.
-#include "rbcstab/continuation/dense.hpp"
 #include <functional>
 #include <string>
 #include <vector>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"

@@ -1,10 +1,10 @@
 #pragma once
 // Module-private: the problem behind a scene branch (SceneProblem, make_problem: scene_problem.cpp) and the
 // starts every kind shares (scene_start.cpp).
-#include "rbcstab/continuation/dense.hpp"
 #include <memory>
 #include <string>
 #include <vector>
+#include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/branch_spec.hpp"
 #include "rbcstab/continuation/continuation.hpp"

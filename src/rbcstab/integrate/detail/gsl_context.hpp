@@ -11,7 +11,7 @@ struct GslContext {
   const System* system = nullptr;
   const CompactForm* form = nullptr;  // stepped instead of the system's state when set (rk8pd only)
   IntegrationCounters* counters = nullptr;
-  StructuredJacobian jacobian;  // scratch for the dense-Jacobian callback
+  StructuredJacobian jacobian;    // scratch for the dense-Jacobian callback
   std::size_t nonfinite_rhs = 0;  // trial states where F was not finite (each rejects its trial step)
   double nonfinite_t = 0;         // time of the last such trial state
 };

@@ -25,8 +25,8 @@
 #include "rbcstab/report/report.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram.hpp"
-#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/diagram_document.hpp"
+#include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/trace.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
 
@@ -97,9 +97,16 @@ class Composer {
   // Closes the current figure: its drawing spec (panels in a grid) and its caption text.
   void end(json panels, int nrows, int ncols, int width, int height, const std::string& caption) {
     current_.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-    figures.push_back({{"id", current_.id}, {"title", current_.title}, {"png", current_.id + ".png"},
-                       {"size_px", {width, height}}, {"nrows", nrows}, {"ncols", ncols}, {"panels", panels},
-                       {"caption", caption}, {"data", current_.data}, {"label", label_},
+    figures.push_back({{"id", current_.id},
+                       {"title", current_.title},
+                       {"png", current_.id + ".png"},
+                       {"size_px", {width, height}},
+                       {"nrows", nrows},
+                       {"ncols", ncols},
+                       {"panels", panels},
+                       {"caption", caption},
+                       {"data", current_.data},
+                       {"label", label_},
                        {"seconds", current_.seconds}});
     res_.figures.push_back(current_);
   }
@@ -168,7 +175,8 @@ class Composer {
     std::vector<TraceCurve> boundary;
     AgreementOptions ao;
     try {
-      ao.asymptotic_boundary = std::make_shared<const TraceResult>(trace_boundary(d.file.scene, d.spec, ao.trace_options));
+      ao.asymptotic_boundary =
+          std::make_shared<const TraceResult>(trace_boundary(d.file.scene, d.spec, ao.trace_options));
       boundary = ao.asymptotic_boundary->curves;
     } catch (const InvalidArgument&) {  // not traceable on this plane: the simulations and lines are drawn
     }

@@ -17,8 +17,7 @@ json series(const std::string& csv, const std::string& y, const std::string& lab
             const std::string& ls, double lw) {
   return {{"data", csv}, {"x", "t"}, {"y", y}, {"label", label}, {"color", color}, {"ls", ls}, {"lw", lw}};
 }
-json psi_series(const Line& l, const std::string& label, const std::string& color, const std::string& ls,
-                double lw) {
+json psi_series(const Line& l, const std::string& label, const std::string& color, const std::string& ls, double lw) {
   const bool tumbles = std::abs(net_turn(l.run.trajectory.Psi)) > kPi;
   json s = series(l.csv, "Psi", tumbles ? label + " (mod $\\pi$)" : label, color, ls, lw);
   if (tumbles) s["wrap"] = kPi;
@@ -29,8 +28,15 @@ json hline(double y, const std::string& label, const std::string& color, const s
 }
 json lines_panel(const std::string& title, const std::string& ylabel, json s, const std::string& xscale,
                  std::pair<double, double> xlim, const std::string& yscale) {
-  return {{"kind", "lines"}, {"title", title}, {"xlabel", "$t$"}, {"ylabel", ylabel}, {"series", s},
-          {"xscale", xscale}, {"xlim", {xlim.first, xlim.second}}, {"yscale", yscale}, {"hlines", json::array()},
+  return {{"kind", "lines"},
+          {"title", title},
+          {"xlabel", "$t$"},
+          {"ylabel", ylabel},
+          {"series", s},
+          {"xscale", xscale},
+          {"xlim", {xlim.first, xlim.second}},
+          {"yscale", yscale},
+          {"hlines", json::array()},
           {"vlines", json::array()}};
 }
 

@@ -33,7 +33,8 @@ double derived(const json& p, const std::string& name) {
     return m;
   };
   if (name == "period") return 2 * kPi;
-  if (name == "max_abs_multiplier") return max_over("multipliers", [](double re, double im) { return std::hypot(re, im); });
+  if (name == "max_abs_multiplier")
+    return max_over("multipliers", [](double re, double im) { return std::hypot(re, im); });
   if (name == "max_Re_eig") return max_over("eigenvalues", [](double re, double) { return re; });
   if (name == "norm_Delta" || name == "norm_x") {
     double s = 0;
@@ -121,7 +122,8 @@ std::string stability_of(const json& p, const std::string& source, std::size_t k
                                         "' (must be stable, unstable or uncertain)");
     return s;
   }
-  if (const auto it = p.find("stable"); it != p.end() && it->is_boolean()) return it->get<bool>() ? "stable" : "unstable";
+  if (const auto it = p.find("stable"); it != p.end() && it->is_boolean())
+    return it->get<bool>() ? "stable" : "unstable";
   return "uncertain";
 }
 

@@ -42,10 +42,10 @@ std::string regime_text(const nlohmann::json& m) {
     ss << "No mode l >= 3 gained excess area: l_Delta = 2, the ellipsoidal dynamics are stable to the perturbations. ";
   else
     ss << "Shape instability: mode l_Delta = " << lD << " gained the most excess area ("
-       << (s.at("oscillating").get<bool>() ? "tail mean over the last window, oscillating run" : "at t = T")
-       << "). ";
+       << (s.at("oscillating").get<bool>() ? "tail mean over the last window, oscillating run" : "at t = T") << "). ";
   const auto& th = m.at("thresholds");
-  ss << "alpha = B/C = " << num(th.at("alpha")) << ": the most dangerous continuous mode is l_* = " << num(th.at("l_star"))
+  ss << "alpha = B/C = " << num(th.at("alpha"))
+     << ": the most dangerous continuous mode is l_* = " << num(th.at("l_star"))
      << " with sigma_* = -4 sqrt(alpha) = " << num(th.at("sigma_star")) << "; sigma(T) = " << num(s.at("sigma_final"))
      << " (tail mean " << num(s.at("sigma_tail_mean")) << "). ";
   if (m.contains("reduced_summary")) {
@@ -77,7 +77,8 @@ Page make_page(const nlohmann::json& m) {
   p.tables.push_back({panel ? "Base scene (the panel varies some of these)" : "Parameters", params});
   if (panel) {
     Table facts{{"quantity", "value"}, {}};
-    for (const auto& f : m.at("panel").at("facts")) facts.rows.push_back({f.at(0).get<std::string>(), f.at(1).get<std::string>()});
+    for (const auto& f : m.at("panel").at("facts"))
+      facts.rows.push_back({f.at(0).get<std::string>(), f.at(1).get<std::string>()});
     p.tables.push_back({"Panel", facts});
     for (const auto& w : m.at("warnings")) p.warnings.push_back(w.get<std::string>());
     return p;
@@ -96,12 +97,12 @@ Page make_page(const nlohmann::json& m) {
   p.tables.push_back({"Excess area per mode (mode l grows while sigma < sigma_l^c)", modes});
 
   Table run{{"quantity", "value"}, {}};
-  for (const char* k : {"status", "l_Delta", "l_Delta_final", "oscillating", "sigma_initial", "sigma_final",
-                        "sigma_tail_mean", "r_final", "Psi_final", "excess_area_drift", "steps", "rhs_evaluations",
-                        "seconds"})
+  for (const char* k :
+       {"status", "l_Delta", "l_Delta_final", "oscillating", "sigma_initial", "sigma_final", "sigma_tail_mean",
+        "r_final", "Psi_final", "excess_area_drift", "steps", "rhs_evaluations", "seconds"})
     run.rows.push_back({k, num(s.at(k))});
-  run.rows.push_back({"shape rho_min / rho_max at T", num(m.at("shape").at("rho_min")) + " / " +
-                                                        num(m.at("shape").at("rho_max"))});
+  run.rows.push_back(
+      {"shape rho_min / rho_max at T", num(m.at("shape").at("rho_min")) + " / " + num(m.at("shape").at("rho_max"))});
   p.tables.push_back({"Run", run});
   if (m.contains("physical")) {
     Table cell{{"quantity", "value"}, {}};
@@ -117,7 +118,8 @@ Page make_page(const nlohmann::json& m) {
                             t.contains("l") ? num(t.at("l")) : "", t.value("shape", ""),
                             found ? num(t.at("B")) + ", " + num(t.at("C")) : ""});
     }
-    p.tables.push_back({"Shear-rate thresholds (asymptotic verdict along B, C proportional to gamma at fixed alpha)", rates});
+    p.tables.push_back(
+        {"Shear-rate thresholds (asymptotic verdict along B, C proportional to gamma at fixed alpha)", rates});
   }
   for (const auto& w : m.at("warnings")) p.warnings.push_back(w.get<std::string>());
   return p;
@@ -127,11 +129,20 @@ std::string html_escape(const std::string& s) {
   std::string o;
   for (char c : s) {
     switch (c) {
-      case '<': o += "&lt;"; break;
-      case '>': o += "&gt;"; break;
-      case '&': o += "&amp;"; break;
-      case '"': o += "&quot;"; break;
-      default: o += c;
+      case '<':
+        o += "&lt;";
+        break;
+      case '>':
+        o += "&gt;";
+        break;
+      case '&':
+        o += "&amp;";
+        break;
+      case '"':
+        o += "&quot;";
+        break;
+      default:
+        o += c;
     }
   }
   return o;
@@ -176,7 +187,8 @@ std::string report_markdown(const nlohmann::json& m, const nlohmann::json& drawn
       md << (first ? "" : ", ") << "[" << x.get<std::string>() << "](" << x.get<std::string>() << ")";
       first = false;
     }
-    if (f->contains("gif")) md << ". Animation: [" << f->at("gif").get<std::string>() << "](" << f->at("gif").get<std::string>() << ")";
+    if (f->contains("gif"))
+      md << ". Animation: [" << f->at("gif").get<std::string>() << "](" << f->at("gif").get<std::string>() << ")";
     md << ".\n\n";
   }
   if (m.contains("panel")) {
@@ -185,7 +197,8 @@ std::string report_markdown(const nlohmann::json& m, const nlohmann::json& drawn
     return md.str();
   }
   md << "## Shape files\n\n" << kShapeFiles << ": open the .vtk or .vtp in ParaView, colour by `rho`.\n\n";
-  md << "## Reproduce\n\n```\nrbcstab report --scene scene.toml --output " << "DIR\n```\n\n"
+  md << "## Reproduce\n\n```\nrbcstab report --scene scene.toml --output "
+     << "DIR\n```\n\n"
      << "The numbers above are in report.json (manifest), trajectory.csv (t, Delta_2..Delta_L, sigma, r, Psi) and "
      << "thresholds.json.\n";
   return md.str();
@@ -227,7 +240,8 @@ std::string report_html(const nlohmann::json& m, const nlohmann::json& drawn) {
   }
   if (m.contains("panel")) {
     h << "<h2>Reproduce</h2>\n<pre>rbcstab report --scene scene.toml --output DIR</pre>\n"
-      << "<p>Numbers: <a href=\"report.json\">report.json</a> and the data files beside each figure.</p>\n</body></html>\n";
+      << "<p>Numbers: <a href=\"report.json\">report.json</a> and the data files beside each "
+         "figure.</p>\n</body></html>\n";
     return h.str();
   }
   h << "<h2>Shape files</h2>\n<p>" << html_escape(kShapeFiles)

@@ -20,9 +20,7 @@
 namespace rbcstab::detail {
 
 namespace {
-double now() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
+double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
 // v2: records carry checksums; v3: and the early termination (terminated_at, margin). Older journals are
 // refused rather than trusted.
 constexpr const char* kMagic = "# rbcstab diagram journal ";
@@ -155,7 +153,8 @@ void Journal::load(const DiagramSpec& spec, int L) {
   }
   if (rewrite) {
     // Under the lock nobody else writes: cut the file and write back only what was accepted.
-    if (::ftruncate(fd_, 0) != 0) throw std::runtime_error("cannot rewrite journal '" + path_ + "': " + std::strerror(errno));
+    if (::ftruncate(fd_, 0) != 0)
+      throw std::runtime_error("cannot rewrite journal '" + path_ + "': " + std::strerror(errno));
     write_all(fd_, kept, path_);
   }
   ::fdatasync(fd_);

@@ -18,7 +18,8 @@ namespace rbcstab::detail {
 
 bool closed_form_in_B_applies(const Scene& base, const DiagramSpec& plane, const TraceOptions& options) {
   if (options.method != TraceMethod::automatic || plane.alpha != 0) return false;
-  if (options.criterion == TraceCriterion::asymptotic && (!options.orbit.enabled || is_out_of_plane(base, options.predictor)))
+  if (options.criterion == TraceCriterion::asymptotic &&
+      (!options.orbit.enabled || is_out_of_plane(base, options.predictor)))
     return false;
   const bool b_on_x = plane.x.axis == Axis::lnB;
   if (b_on_x == (plane.y.axis == Axis::lnB)) return false;
@@ -108,8 +109,12 @@ struct Node {
 class InB {
  public:
   InB(const Scene& base, const DiagramSpec& plane, const TraceOptions& options)
-      : base_(base), plane_(plane), o_(options), b_on_x_(plane.x.axis == Axis::lnB),
-        finite_(options.criterion == TraceCriterion::finite_horizon), T_(options.T > 0 ? options.T : base.T) {
+      : base_(base),
+        plane_(plane),
+        o_(options),
+        b_on_x_(plane.x.axis == Axis::lnB),
+        finite_(options.criterion == TraceCriterion::finite_horizon),
+        T_(options.T > 0 ? options.T : base.T) {
     const AxisRange& U = b_on_x_ ? plane.y : plane.x;
     const AxisRange& V = b_on_x_ ? plane.x : plane.y;
     u0_ = std::min(U.min, U.max);  // sampled upwards whatever the axis's orientation (chains are oriented in x)

@@ -28,7 +28,7 @@ struct InBTrace {
   std::optional<TraceResult> result;  // empty: a sampled value's orbit or transient was not usable (why): the
                                       // caller falls back
   std::string why;
-  std::size_t evaluations = 0;        // orbit solves or transients, also when empty
+  std::size_t evaluations = 0;  // orbit solves or transients, also when empty
 };
 // Requires closed_form_in_B_applies. `criterion` is carried into each curve.
 InBTrace trace_in_B(const Scene& base, const DiagramSpec& plane, const TraceOptions& options,
