@@ -50,7 +50,7 @@ def test_parameter_table_drives_every_python_interface():
     assert "must be one of " + ", ".join(r["name"] for r in rows if r["axis"]) in str(e.value)
     from rbcstab.sweep import phase_draw
     assert not hasattr(phase_draw(), "SYMBOLS")
-    # B never reaches the reduced (l = 2) system: Upsilon_l's B term is for l >= 3 (the levels' own test).
+    # B never reaches the reduced (l = 2) system, whose multiplier is Upsilon_2 itself (the levels' own test).
     assert {r["name"]: r["levels"] for r in rows}["B"] == ["modal", "full"]
 
 

@@ -63,7 +63,7 @@ enum class ParameterUse {
 
 // The model levels a row moves (bit set of 1u << ModelLevel): a level it leaves alone has the same right-hand
 // side and initial state at every value (tests/model/parameter_table_test.cpp checks each bit against the
-// systems). B enters Upsilon_l (l >= 3) only, so the reduced (l = 2) system never sees it.
+// systems). The reduced (l = 2) level takes Upsilon_2 itself as its multiplier, so B drops out of it.
 inline constexpr unsigned level_bit(ModelLevel level) { return 1u << static_cast<unsigned>(level); }
 inline constexpr unsigned kEveryLevel =
     level_bit(ModelLevel::reduced) | level_bit(ModelLevel::modal) | level_bit(ModelLevel::full);
