@@ -16,7 +16,9 @@ namespace rbcstab::python {
 namespace {
 
 // The keyword of a key: its name, with a trailing underscore where the name is a Python keyword.
-std::string keyword_of(const SceneKey& k) { return k.key == "lambda" ? "lambda_" : k.key; }
+// A scene key's Python keyword: the key itself, but lambda_ for lambda (a Python reserved word).
+std::string keyword_of(const std::string& key) { return key == "lambda" ? "lambda_" : key; }
+std::string keyword_of(const SceneKey& k) { return keyword_of(k.key); }
 
 const SceneKey* key_for_keyword(const std::string& word) {
   for (const SceneKey& k : scene_keys())
@@ -235,7 +237,7 @@ Scenes are immutable: ``replace(**changes)`` returns a new one.)");
         for (const ParameterRow& r : parameter_table()) {
           py::dict d;
           d["name"] = r.name;
-          d["keyword"] = std::string(r.name) == "lambda" ? "lambda_" : r.name;  // as Scene(...) takes it
+          d["keyword"] = keyword_of(r.name);  // as Scene(...) takes it
           d["symbol"] = r.symbol;
           d["label"] = tex_symbol(r.name);
           d["unicode"] = r.unicode;

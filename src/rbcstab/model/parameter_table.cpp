@@ -25,17 +25,6 @@ Domain up_to_Delta(const Parameters& p) {
   return Domain{0, p.Delta, true, true, "", "Delta", "Delta = " + format_value(p.Delta), ""};
 }
 
-// A number the cell determines, NaN where an input is missing (Lambda and S from the numbers that make them).
-Parameters cell_parameters(const CellNumbers& n) {
-  Parameters p;
-  p.lambda = n.lambda;
-  p.Delta = n.Delta;
-  p.Delta0 = n.Delta0;
-  p.B = n.B;
-  p.C = n.C;
-  return p;
-}
-
 constexpr unsigned kEvery = kEveryLevel, kAboveTwo = kModesAboveTwo;
 
 // One row per SceneParameter, in its order (tests/model/parameter_table_test.cpp checks it).
@@ -44,7 +33,6 @@ const std::array<ParameterRow, 13> kTable{{
      .name = "lambda",
      .symbol = "\\lambda",
      .unicode = "λ",
-     .unit = "",
      .description = "viscosity ratio eta_in/eta_ex",
      .table = "parameters",
      .scale = AxisScale::linear,
@@ -54,7 +42,6 @@ const std::array<ParameterRow, 13> kTable{{
      .levels = kEvery,
      .continuation = true,
      .axis = true,
-     .definition = nullptr,
      .physical = {"eta_in / eta_ex", "Sec. II", [](const CellNumbers& n) { return n.lambda; }, "the inner viscosity",
                   &UnitsQuery::lambda},
      .domain = [](const Parameters&) { return open_above(0, true); },
@@ -64,7 +51,6 @@ const std::array<ParameterRow, 13> kTable{{
      .name = "Delta",
      .symbol = "\\Delta",
      .unicode = "Δ",
-     .unit = "",
      .description = "excess area of the current shape",
      .table = "parameters",
      .scale = AxisScale::linear,
@@ -74,7 +60,6 @@ const std::array<ParameterRow, 13> kTable{{
      .levels = kEvery,
      .continuation = true,
      .axis = true,
-     .definition = nullptr,
      .physical = {"A/R^2 - 4 pi", "Sec. II, Fig. 1", [](const CellNumbers& n) { return n.Delta; }, "the area",
                   &UnitsQuery::Delta},
      .domain = [](const Parameters&) { return Domain{0, 4 * kPi, false, false, "", "4 pi", "", ""}; },
@@ -84,7 +69,6 @@ const std::array<ParameterRow, 13> kTable{{
      .name = "Delta0",
      .symbol = "\\Delta_0",
      .unicode = "Δ₀",
-     .unit = "",
      .description = "excess area of the stress-free shape (0: the vesicle limit)",
      .table = "parameters",
      .scale = AxisScale::linear,
@@ -94,7 +78,6 @@ const std::array<ParameterRow, 13> kTable{{
      .levels = kEvery,
      .continuation = true,
      .axis = true,
-     .definition = nullptr,
      .physical = {"A/R0^2 - 4 pi, R0 = (3 V0/(4 pi))^(1/3)", "Sec. II, Fig. 1",
                   [](const CellNumbers& n) { return n.Delta0; }, "the stress-free volume", &UnitsQuery::Delta0},
      .domain = up_to_Delta,
@@ -104,7 +87,6 @@ const std::array<ParameterRow, 13> kTable{{
      .name = "B",
      .symbol = "\\mathcal{B}",
      .unicode = "B",
-     .unit = "",
      .description = "bending number eta gamma R^3 / kappa",
      .table = "parameters",
      .scale = AxisScale::linear,
@@ -114,7 +96,6 @@ const std::array<ParameterRow, 13> kTable{{
      .levels = kAboveTwo,
      .continuation = true,
      .axis = false,
-     .definition = nullptr,
      .physical = {"eta_ex gamma R^3 / kappa", "Eq. (dimless_nums)", [](const CellNumbers& n) { return n.B; },
                   "the shear rate", &UnitsQuery::B},
      .domain = [](const Parameters&) { return open_above(0, false); },
@@ -124,7 +105,6 @@ const std::array<ParameterRow, 13> kTable{{
      .name = "C",
      .symbol = "\\mathcal{C}",
      .unicode = "C",
-     .unit = "",
      .description = "capillary number eta gamma R / mu",
      .table = "parameters",
      .scale = AxisScale::linear,
@@ -134,7 +114,6 @@ const std::array<ParameterRow, 13> kTable{{
      .levels = kEvery,
      .continuation = true,
      .axis = false,
-     .definition = nullptr,
      .physical = {"eta_ex gamma R / mu", "Eq. (dimless_nums)", [](const CellNumbers& n) { return n.C; },
                   "the shear rate, or the shear modulus when B is given too", &UnitsQuery::C},
      .domain =
@@ -147,7 +126,6 @@ const std::array<ParameterRow, 13> kTable{{
      .name = "Lambda",
      .symbol = "\\Lambda",
      .unicode = "Λ",
-     .unit = "",
      .description = "sqrt(Delta)(23 lambda + 32)/(8 sqrt(30 pi)) of the reduced system, set through Delta",
      .table = nullptr,
      .scale = AxisScale::linear,
@@ -171,7 +149,6 @@ const std::array<ParameterRow, 13> kTable{{
      .name = "S",
      .symbol = "S",
      .unicode = "S",
-     .unit = "",
      .description = "C sqrt(15 pi/(2 Delta0)) of the reduced system, set through C",
      .table = nullptr,
      .scale = AxisScale::linear,
@@ -199,7 +176,6 @@ const std::array<ParameterRow, 13> kTable{{
      .name = "alpha",
      .symbol = "\\alpha",
      .unicode = "α",
-     .unit = "",
      .description = "B/C = mu R^2/kappa, set through B",
      .table = nullptr,
      .scale = AxisScale::linear,
@@ -219,7 +195,6 @@ const std::array<ParameterRow, 13> kTable{{
      .name = "lnB",
      .symbol = "\\ln \\mathcal{B}",
      .unicode = "ln B",
-     .unit = "",
      .description = "ln B, a log axis of the bending number",
      .table = nullptr,
      .scale = AxisScale::log,
@@ -228,17 +203,11 @@ const std::array<ParameterRow, 13> kTable{{
      .inputs = bit(P::B),
      .levels = kAboveTwo,
      .continuation = false,
-     .axis = true,
-     .definition = nullptr,
-     .physical = {},
-     .domain = nullptr,
-     .get = nullptr,
-     .set = nullptr},
+     .axis = true},
     {.id = P::lnC,
      .name = "lnC",
      .symbol = "\\ln \\mathcal{C}",
      .unicode = "ln C",
-     .unit = "",
      .description = "ln C, a log axis of the capillary number",
      .table = nullptr,
      .scale = AxisScale::log,
@@ -247,17 +216,11 @@ const std::array<ParameterRow, 13> kTable{{
      .inputs = bit(P::C),
      .levels = kEvery,
      .continuation = false,
-     .axis = true,
-     .definition = nullptr,
-     .physical = {},
-     .domain = nullptr,
-     .get = nullptr,
-     .set = nullptr},
+     .axis = true},
     {.id = P::beta,
      .name = "beta",
      .symbol = "\\beta",
      .unicode = "β",
-     .unit = "",
      .description = "rotation of the axisymmetric shapes about y (pi/2 = 1.5707963267948966)",
      .table = "initial",
      .scale = AxisScale::linear,
@@ -267,8 +230,6 @@ const std::array<ParameterRow, 13> kTable{{
      .levels = kEvery,
      .continuation = true,
      .axis = true,
-     .definition = nullptr,
-     .physical = {},
      .domain =
          [](const Parameters&) {
            return Domain{0, kPi, true, true, "", "pi", "", "0: rest shape out of plane, pi/2: in plane"};
@@ -279,7 +240,6 @@ const std::array<ParameterRow, 13> kTable{{
      .name = "delta",
      .symbol = "\\delta",
      .unicode = "δ",
-     .unit = "",
      .description = "perturbation Delta_l(0) put in f_{l,0} for every l = 3..L",
      .table = "initial",
      .scale = AxisScale::linear,
@@ -289,8 +249,6 @@ const std::array<ParameterRow, 13> kTable{{
      .levels = kAboveTwo,
      .continuation = false,
      .axis = false,
-     .definition = nullptr,
-     .physical = {},
      .domain = up_to_Delta,
      .get = [](const Scene& s) { return s.delta; },
      .set = [](Scene& s, double v) { s.delta = v; }},
@@ -310,8 +268,6 @@ const std::array<ParameterRow, 13> kTable{{
      .levels = kEvery,
      .continuation = true,
      .axis = true,
-     .definition = nullptr,
-     .physical = {},
      .domain = [](const Parameters&) { return Domain{0, kInf, false, false, "", "", "", "1/s"}; },
      .get = get_shear_rate,
      .set = set_shear_rate},

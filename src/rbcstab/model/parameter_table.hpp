@@ -86,7 +86,7 @@ struct ParameterRow {
   const char* name;         // the scene key, the flag --name, the continuation and axis name, the Python keyword
   const char* symbol;       // TeX, for figure labels
   const char* unicode;      // for text and HTML ("λ", "Δ₀")
-  const char* unit;         // of a dimensional value, for labels ("1/s"); "" for the dimensionless numbers
+  const char* unit = "";    // of a dimensional value, for labels ("1/s"); "" for the dimensionless numbers
   const char* description;  // one line for --help and docs/scenes.md
   const char* table;        // the scene file's table holding it ("parameters", "initial"); nullptr: derived
   AxisScale scale;          // log: the value is ln of `of`'s (lnB = ln B); get, set and domain follow from `of`
@@ -99,16 +99,16 @@ struct ParameterRow {
   bool continuation;  // usable as a continuation parameter
   bool axis;          // usable as a diagram axis
   // A derived row's definition from the stored ones ("B/C"); nullptr for a stored row.
-  const char* definition;
-  PhysicalFormula physical;
-  // Linear rows only (log rows take them from `of`):
+  const char* definition = nullptr;
+  PhysicalFormula physical = {};
+  // Linear rows only (log rows take them from `of` and leave them null):
   // Where the scene is valid: the range every scene key, flag, continuation bound, diagram axis and units
   // input enforces (beta in [0, pi]: pi - beta is the mirror image of beta).
-  Domain (*domain)(const Parameters& p);
-  double (*get)(const Scene& s);
+  Domain (*domain)(const Parameters& p) = nullptr;
+  double (*get)(const Scene& s) = nullptr;
   // Sets the value without checking it; throws InvalidArgument only when the composite cannot be moved from
   // this scene (S from an infinite S).
-  void (*set)(Scene& s, double value);
+  void (*set)(Scene& s, double value) = nullptr;
 };
 
 std::span<const ParameterRow> parameter_table();

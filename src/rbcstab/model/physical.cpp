@@ -237,6 +237,16 @@ CellNumbers cell_numbers(const PhysicalCell& c) {
   return n;
 }
 
+Parameters cell_parameters(const CellNumbers& n) {
+  Parameters p;
+  p.lambda = n.lambda;
+  p.Delta = n.Delta;
+  p.Delta0 = n.Delta0;
+  p.B = n.B;
+  p.C = n.C;
+  return p;
+}
+
 std::vector<DerivedParameter> derived_parameters(const PhysicalCell& c) {
   const std::string size = given(c.radius) ? "radius" : "volume";
   std::vector<DerivedParameter> out = {{"B", {"shear_rate", "viscosity", size, "bending_modulus"}},
@@ -349,13 +359,7 @@ UnitsAnswer convert_units(const UnitsQuery& q) {
   for (auto [number, input] : {std::pair{&n.lambda, q.lambda}, {&n.Delta, q.Delta}, {&n.Delta0, q.Delta0}})
     if (!given(*number)) *number = input;
   if (given(n.B) && given(n.C) && given(n.lambda) && given(n.Delta) && given(n.Delta0)) {
-    Parameters p;
-    p.B = n.B;
-    p.C = n.C;
-    p.lambda = n.lambda;
-    p.Delta = n.Delta;
-    p.Delta0 = n.Delta0;
-    a.parameters = p;
+    a.parameters = cell_parameters(n);
   }
   return a;
 }

@@ -76,6 +76,9 @@ struct CellNumbers {
   double time_unit = kNotGiven;  // s: 1/gamma, the model's unit of time
 };
 CellNumbers cell_numbers(const PhysicalCell& cell);
+// The material Parameters of these numbers, NaN where one is missing (so Lambda and S are NaN where an input of
+// theirs is).
+Parameters cell_parameters(const CellNumbers& n);
 // `p` with every number the cell determines replaced (validate_complete first).
 Parameters physical_parameters(const PhysicalCell& cell, Parameters p);
 // The shear rate as a path parameter: at a fixed cell and fluid B = b gamma and C = c gamma, so moving from the
