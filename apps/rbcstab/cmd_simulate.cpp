@@ -21,7 +21,7 @@ struct SimulateOptions {
 };
 
 int run(const SimulateOptions& o) {
-  SceneFile sf = o.scene.read();
+  SceneFile sf = o.scene.read_unchecked();  // simulate_scene checks it
   sf.options.trajectory_text = !o.trajectory.empty();
   sf.options.on_progress = o.progress.callback("simulate: t =", "");
   const SimulationResult r = simulate_scene(sf, sf.options);

@@ -18,7 +18,7 @@ struct SummaryOptions {
 };
 
 int run(const SummaryOptions& o) {
-  SceneFile sf = o.scene.read();
+  SceneFile sf = o.scene.read_unchecked();  // run_summary checks it
   sf.options.on_progress = o.progress.callback("summary: t =", "");
   const ShearRateSearchOptions search = shear_rate_search(sf.scene, o.shear_rate_range, "--shear-rate-range");
   const SummaryRun s = run_summary(std::move(sf), search);

@@ -62,6 +62,12 @@ void SceneOptions::add_to(CLI::App& app) {
 }
 
 SceneFile SceneOptions::read() const {
+  SceneFile f = read_unchecked();
+  validate_scene_file(f);
+  return f;
+}
+
+SceneFile SceneOptions::read_unchecked() const {
   SceneFile f;
   if (!scene_path.empty()) f = load_scene(scene_path);
   for (const Flag& flag : flags_) {
@@ -93,7 +99,6 @@ SceneFile SceneOptions::read() const {
     for (const SceneKey& k : scene_keys())
       if (k.path() == "run.full_horizon") apply_flag(f, k, true);
   resolve_physical(f);
-  validate_scene_file(f);
   return f;
 }
 

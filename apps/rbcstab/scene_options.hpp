@@ -29,6 +29,8 @@ struct SceneOptions {
   // The default scene (paper Fig. 3, out of plane), then the scene file, then the flags; SceneFile::origins
   // records which. L as they give it.
   SceneFile read() const;
+  // read() without its final check (validate_scene_file), for a library entry that checks the file itself.
+  SceneFile read_unchecked() const;
   // read(), then the truncation policy for this use (apply_truncation): scene.L and L_reason.
   SceneFile resolve(TruncationUse use) const;
   // The scene flags given on the command line, by name (e.g. "--lambda").

@@ -78,6 +78,27 @@ TEST(InitialState, AValidatedSceneIsTheSameSceneCheckedOnce) {
   EXPECT_THROW(make_scene_system(s), InvalidArgument);
 }
 
+// A lower L of a checked scene is checked only for what L decides; the copy is what validate() accepts.
+TEST(InitialState, AValidSceneAtAnotherLChecksOnlyWhatLDecides) {
+  Scene s;
+  s.L = 8;
+  s.delta_l[5] = 1e-3;
+  const ValidScene valid = validated(s);
+  Scene copy;
+  const ValidScene at6 = validated_at_L(valid, copy, 6);
+  EXPECT_EQ(&*at6, &copy);
+  EXPECT_EQ(copy.L, 6);
+  EXPECT_NO_THROW(copy.validate());
+  // Below a mode the scene sets, or outside L's range: refused, as validate() refuses that scene.
+  for (int L : {4, 1, kMaxL + 1}) {
+    Scene c;
+    EXPECT_THROW(validated_at_L(valid, c, L), InvalidArgument) << "L = " << L;
+    Scene direct = s;
+    direct.L = L;
+    EXPECT_THROW(direct.validate(), InvalidArgument) << "L = " << L;
+  }
+}
+
 TEST(LevelChoice, SmallestExactLevel) {
   {
     const Scene s = fig3_scene(0.001);

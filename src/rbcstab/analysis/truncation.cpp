@@ -34,8 +34,12 @@ double log_area_gain(double d, double G) { return std::log(d) + 2 * G + std::log
 }  // namespace
 
 ReducedTransient truncation_transient(const Scene& scene, const TruncationOptions& options) {
+  return truncation_transient(validated(scene), options);
+}
+
+ReducedTransient truncation_transient(const ValidScene& valid, const TruncationOptions& options) {
   options.validate();
-  return reduced_transient(validated(scene), scene.T, options.checkpoints, options.predictor);
+  return reduced_transient(valid, valid->T, options.checkpoints, options.predictor);
 }
 
 namespace {
@@ -431,9 +435,8 @@ CheckedRun check_candidate(const ValidScene& valid, int L_candidate, const Simul
   require(L_candidate >= L_explicit && L_candidate < scene.L, "L_candidate", L_candidate,
           "an integer in [" + std::to_string(L_explicit) + ", " + std::to_string(scene.L - 1) +
               "]: below the scene's L and keeping every mode the scene sets explicitly");
-  Scene candidate = scene;
-  candidate.L = L_candidate;
-  const ValidScene valid_candidate = validated(candidate);
+  Scene candidate;
+  const ValidScene valid_candidate = validated_at_L(valid, candidate, L_candidate);
   StepRecorder recorder(valid_candidate, options.integrator.atol);
   SimulationOptions o = options;
   o.on_step = [&recorder, &options](double t, const Observation& ob) {
@@ -449,11 +452,10 @@ CheckedRun check_candidate(const ValidScene& valid, int L_candidate, const Simul
 
 // resolve_truncation for a simulation, then the candidate's run and check when it is below the scene's L: sets
 // file.scene.L, L_reason and truncation_check. Returns the candidate's run when it passed (the run at file.scene.L).
-std::optional<SimulationResult> decide_simulation(SceneFile& file, const SimulationOptions& options,
-                                                  const ReducedTransient* transient) {
-  // The scene is validated once here: without a check d.L is the scene's L, and with one the candidate (the scene
-  // at d.L) is validated for its run, so neither outcome needs another check.
-  const ValidScene valid = validated(file.scene);
+std::optional<SimulationResult> decide_simulation(SceneFile& file, const ValidScene& valid,
+                                                  const SimulationOptions& options, const ReducedTransient* transient) {
+  // Without a check d.L is the scene's L, and with one the candidate (the scene at d.L) is validated_at_L for its
+  // run, so neither outcome needs another check.
   const TruncationDecision d = resolve_valid(valid, file.origin("run.L"), TruncationUse::simulation, {}, transient);
   file.truncation_check.reset();
   if (!d.check) {
@@ -487,16 +489,22 @@ CheckedRun run_and_check(const Scene& scene, int L_candidate, const SimulationOp
 
 SimulationResult simulate_truncated(SceneFile& file, const SimulationOptions& options,
                                     const ReducedTransient* transient, const SceneRunner& run_full) {
-  std::optional<SimulationResult> run = decide_simulation(file, options, transient);
+  return simulate_truncated(file, validated(file), options, transient, run_full);
+}
+
+SimulationResult simulate_truncated(SceneFile& file, const ValidScene& valid, const SimulationOptions& options,
+                                    const ReducedTransient* transient, const SceneRunner& run_full) {
+  if (&*valid != &file.scene) throw InvalidArgument("valid", "valid must prove this file's own scene: validated(file)");
+  std::optional<SimulationResult> run = decide_simulation(file, valid, options, transient);
   if (run) return std::move(*run);
-  return run_full ? run_full(file.scene, options) : simulate(file.scene, options);
+  return run_full ? run_full(valid, options) : simulate(valid, options);
 }
 
 void apply_truncation(SceneFile& file, TruncationUse use, const ReducedTransient* transient) {
   if (use == TruncationUse::simulation) {
     SimulationOptions o = file.options;
     o.record_trajectory = false;
-    (void)decide_simulation(file, o, transient);
+    (void)decide_simulation(file, validated(file), o, transient);
     return;
   }
   const TruncationDecision d = resolve_truncation(file.scene, file.origin("run.L"), use, {}, transient);

@@ -54,6 +54,7 @@ TruncationChoice choose_truncation(const Scene& scene, const TruncationOptions& 
 // The reduced transient the rule reads: over [0, scene.T] at options.checkpoints, with options.predictor's
 // integrator. The finite-horizon predictor can share it (finite_horizon_growth(scene, transient)).
 ReducedTransient truncation_transient(const Scene& scene, const TruncationOptions& options = {});
+ReducedTransient truncation_transient(const ValidScene& scene, const TruncationOptions& options = {});
 // The rule from that transient: bit for bit choose_truncation(scene, options). Throws
 // InvalidArgument("transient", ...) if it is another scene's or has another horizon or checkpoint count.
 TruncationChoice choose_truncation(const Scene& scene, const ReducedTransient& transient,
@@ -101,8 +102,11 @@ CheckedRun run_and_check(const Scene& scene, int L_candidate, const SimulationOp
 // L run, file.L_reason, and file.truncation_check when a candidate was checked. Every front end that simulates
 // one scene calls this. The candidate runs to T with simulate (its check reads sigma(t) at every t); the run at
 // the scene's L is `run_full` (empty: simulate), which verdict's simulate_scene makes certified.
-using SceneRunner = std::function<SimulationResult(const Scene&, const SimulationOptions&)>;
+// `valid` (validated(file), io) refers to file.scene and stays valid: the L set is the scene's or a checked one.
+using SceneRunner = std::function<SimulationResult(const ValidScene&, const SimulationOptions&)>;
 SimulationResult simulate_truncated(SceneFile& file, const SimulationOptions& options,
+                                    const ReducedTransient* transient = nullptr, const SceneRunner& run_full = {});
+SimulationResult simulate_truncated(SceneFile& file, const ValidScene& valid, const SimulationOptions& options,
                                     const ReducedTransient* transient = nullptr, const SceneRunner& run_full = {});
 
 // The policy applied to a scene file (its L's origin) for a front end that integrates the scene itself: sets

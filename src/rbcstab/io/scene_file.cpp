@@ -416,6 +416,11 @@ void validate_scene_file(const SceneFile& file) {
   }
 }
 
+ValidScene validated(const SceneFile& file) {
+  validate_scene_file(file);
+  return ValidScene(file.scene);
+}
+
 namespace {
 // How a message names where a key's value came from: its flag when a flag gave it, else its path.
 std::string given_as(const SceneFile& file, const SceneKey& k) {

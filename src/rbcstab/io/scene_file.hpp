@@ -95,6 +95,9 @@ void apply_unit_flag(SceneFile& file, const SceneKey& key, const std::string& te
 // the whole text must parse and each mode appear once, else InvalidArgument(flag, ...).
 std::map<int, double> parse_modes(const std::vector<std::string>& items, const std::string& flag);
 void validate_scene_file(const SceneFile& file);  // the scene and the simulation options
+// validate_scene_file, then the proof of it (model/scene.hpp): a library entry that takes a scene file checks it
+// once here, naming in its messages the flag or file each value came from.
+ValidScene validated(const SceneFile& file);
 
 // A physical scene ([physical] keys or their flags): derives the parameters its cell determines
 // (physical_parameters, model/physical.hpp) after the last key or flag is set. A parameter given too (in the file

@@ -65,6 +65,16 @@ ValidScene validated(const Scene& scene) {
   return ValidScene(scene);
 }
 
+ValidScene validated_at_L(const ValidScene& valid, Scene& copy, int L) {
+  require_L(L);
+  for (const auto* modes : {&valid->delta_l, &valid->rest_delta_l})
+    for (const auto& [l, d] : *modes)
+      require(l <= L, "L", L, "at least " + std::to_string(l) + ": the scene sets the mode l = " + std::to_string(l));
+  copy = *valid;
+  copy.L = L;
+  return ValidScene(copy);
+}
+
 InitialState initial_state(const Scene& scene) { return initial_state(validated(scene)); }
 
 InitialState initial_state(const ValidScene& valid) {

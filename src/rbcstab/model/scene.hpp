@@ -44,10 +44,12 @@ struct Scene {
   double rest_perturbation(int l) const;
 };
 
+struct SceneFile;  // io/scene_file.hpp
+
 // A scene that passed validate(): the calls a computation makes on its scene take one and do not check it again,
 // while a library caller with a plain Scene gets every check (each such call has a Scene overload that validates).
-// Only validated() makes one, so holding one means this very scene was checked; it refers to the scene, which
-// must outlive it and not change while it is used.
+// Only the validated() functions make one, so holding one means this very scene was checked; it refers to the
+// scene, which must outlive it and not change while it is used (except to an L that validated_at_L accepted).
 class ValidScene {
  public:
   const Scene& operator*() const { return *scene_; }
@@ -56,9 +58,14 @@ class ValidScene {
  private:
   explicit ValidScene(const Scene& scene) : scene_(&scene) {}
   friend ValidScene validated(const Scene& scene);
+  friend ValidScene validated(const SceneFile& file);  // io: the check whose messages name flags and files
+  friend ValidScene validated_at_L(const ValidScene& valid, Scene& copy, int L);
   const Scene* scene_;
 };
 ValidScene validated(const Scene& scene);  // scene.validate(), then the proof of it
+// The valid scene at another L: copy = *valid with copy.L = L, checking only what L decides (its range, and the
+// modes delta_l and rest_delta_l set below it), since every other key is the valid scene's.
+ValidScene validated_at_L(const ValidScene& valid, Scene& copy, int L);
 
 struct InitialState {
   ModeAmplitudes f;  // current shape f_{l,m}(0)

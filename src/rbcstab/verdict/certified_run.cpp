@@ -288,13 +288,23 @@ class SceneCertifier final : public AttractorCertifier {
 
 SimulationResult simulate_certified(const Scene& scene, const SimulationOptions& options,
                                     const EarlyTerminationOptions& early) {
+  return simulate_certified(validated(scene), options, early);
+}
+
+SimulationResult simulate_certified(const ValidScene& valid, const SimulationOptions& options,
+                                    const EarlyTerminationOptions& early) {
   early.validate();
-  SceneCertifier certifier(scene, options, early);
-  return simulate(scene, options, &certifier);
+  SceneCertifier certifier(*valid, options, early);
+  return simulate(valid, options, &certifier);
 }
 
 SimulationResult simulate_scene(SceneFile& file, const SimulationOptions& options, const ReducedTransient* transient) {
-  return simulate_truncated(file, options, transient, [](const Scene& scene, const SimulationOptions& o) {
+  return simulate_scene(file, validated(file), options, transient);
+}
+
+SimulationResult simulate_scene(SceneFile& file, const ValidScene& valid, const SimulationOptions& options,
+                                const ReducedTransient* transient) {
+  return simulate_truncated(file, valid, options, transient, [](const ValidScene& scene, const SimulationOptions& o) {
     return simulate_certified(scene, o);
   });
 }

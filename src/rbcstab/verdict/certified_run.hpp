@@ -48,11 +48,16 @@ struct EarlyTerminationOptions {
 // with the note saying so). Throws what simulate throws.
 SimulationResult simulate_certified(const Scene& scene, const SimulationOptions& options = {},
                                     const EarlyTerminationOptions& early = {});
+SimulationResult simulate_certified(const ValidScene& scene, const SimulationOptions& options = {},
+                                    const EarlyTerminationOptions& early = {});
 
 // One scene file run as every front end runs it (simulate, summary, Python): the checked automatic L
 // (simulate_truncated, whose candidate runs to T), then the run at the L kept, certified (simulate_certified).
 // Sets file.scene.L, L_reason and truncation_check as simulate_truncated does.
 SimulationResult simulate_scene(SceneFile& file, const SimulationOptions& options,
+                                const ReducedTransient* transient = nullptr);
+// The same for a file already checked: valid = validated(file) (io), which the run does not check again.
+SimulationResult simulate_scene(SceneFile& file, const ValidScene& valid, const SimulationOptions& options,
                                 const ReducedTransient* transient = nullptr);
 
 }  // namespace rbcstab

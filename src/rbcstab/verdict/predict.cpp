@@ -93,12 +93,18 @@ ModePrediction simulation_prediction(const SimulationResult* simulated) {
 
 ScenePrediction predict(const Scene& scene, const SimulationResult* simulated, const PredictorOptions& options,
                         const OrbitAverageOptions& orbit) {
-  return predict(scene, reduced_transient(scene, scene.T, 1, options), simulated, options, orbit);
+  const ValidScene valid = validated(scene);
+  return predict(valid, reduced_transient(valid, scene.T, 1, options), simulated, options, orbit);
 }
 
 ScenePrediction predict(const Scene& scene, const ReducedTransient& transient, const SimulationResult* simulated,
                         const PredictorOptions& options, const OrbitAverageOptions& orbit) {
-  const ValidScene valid = validated(scene);
+  return predict(validated(scene), transient, simulated, options, orbit);
+}
+
+ScenePrediction predict(const ValidScene& valid, const ReducedTransient& transient, const SimulationResult* simulated,
+                        const PredictorOptions& options, const OrbitAverageOptions& orbit) {
+  const Scene& scene = *valid;
   options.validate();
   if (!transient.of(scene) || transient.T != scene.T)
     throw InvalidArgument("transient",

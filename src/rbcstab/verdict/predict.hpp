@@ -61,5 +61,7 @@ ScenePrediction predict(const Scene& scene, const SimulationResult* simulated, c
 // if it is another scene's or has another horizon).
 ScenePrediction predict(const Scene& scene, const ReducedTransient& transient, const SimulationResult* simulated,
                         const PredictorOptions& options = {}, const OrbitAverageOptions& orbit = {});
+ScenePrediction predict(const ValidScene& scene, const ReducedTransient& transient, const SimulationResult* simulated,
+                        const PredictorOptions& options = {}, const OrbitAverageOptions& orbit = {});
 
 }  // namespace rbcstab

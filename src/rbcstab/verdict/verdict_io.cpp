@@ -357,12 +357,14 @@ std::string thresholds_text(const SceneFile& file, const ThresholdReport& t) {
 }
 
 SummaryRun run_summary(SceneFile file, const ShearRateSearchOptions& search) {
-  const ReducedTransient transient = truncation_transient(file.scene);
   SummaryRun out{std::move(file), {}, {}};
+  // The one check of the scene (naming flags and files in its messages); the run may lower L to a checked one.
+  const ValidScene valid = validated(out.file);
+  const ReducedTransient transient = truncation_transient(valid);
   SimulationOptions options = out.file.options;
   options.record_trajectory = false;  // the summary reports the run at T and its tail, not its samples
-  out.run = simulate_scene(out.file, options, &transient);
-  out.prediction = predict(out.file.scene, transient, &out.run);
+  out.run = simulate_scene(out.file, valid, options, &transient);
+  out.prediction = predict(valid, transient, &out.run);
   if (out.file.scene.physical) out.prediction.shear_rate_thresholds = shear_rate_thresholds(out.file.scene, search);
   return out;
 }

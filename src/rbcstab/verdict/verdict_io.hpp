@@ -43,7 +43,8 @@ struct SummaryRun {
   SimulationResult run;
   ScenePrediction prediction;
 };
-// The run, the prediction and, on a physical scene, the shear-rate thresholds searched over `search`.
+// The run, the prediction and, on a physical scene, the shear-rate thresholds searched over `search`. Checks the
+// file once (validated(SceneFile), io): its caller need not.
 SummaryRun run_summary(SceneFile file, const ShearRateSearchOptions& search = {});
 
 }  // namespace rbcstab
