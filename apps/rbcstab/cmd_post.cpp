@@ -42,7 +42,7 @@ int run_fig6e(const PostOptions& o) {
 
 int run(const PostOptions& o) {
   if (o.fig6e) return run_fig6e(o);
-  SceneFile sf = o.scene.read();
+  SceneFile sf = o.scene.read_unchecked();  // run_post checks it
   sf.options.on_progress = o.progress.callback("post: t =", "");
   const PostRun p = run_post(std::move(sf));
   if (o.json)

@@ -17,8 +17,10 @@ struct ThresholdsOptions {
 };
 
 int run(const ThresholdsOptions& o) {
-  const SceneFile sf = o.scene.resolve(TruncationUse::analysis);
-  const ThresholdReport t = threshold_report(sf.scene, o.exact_C_star);
+  SceneFile sf = o.scene.read_unchecked();
+  const ValidScene valid = validated(sf);  // the one check, for the truncation and the report
+  apply_truncation(sf, valid, TruncationUse::analysis);
+  const ThresholdReport t = threshold_report(valid, o.exact_C_star);
   if (o.json)
     std::cout << thresholds_json(sf, t).dump(2) << "\n";
   else

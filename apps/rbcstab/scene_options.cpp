@@ -110,7 +110,7 @@ std::vector<std::string> SceneOptions::given_flags() const {
 }
 
 SceneFile SceneOptions::resolve(TruncationUse use) const {
-  SceneFile f = read();
+  SceneFile f = read_unchecked();  // apply_truncation checks it
   apply_truncation(f, use);
   return f;
 }

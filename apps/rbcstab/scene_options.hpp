@@ -31,7 +31,8 @@ struct SceneOptions {
   SceneFile read() const;
   // read() without its final check (validate_scene_file), for a library entry that checks the file itself.
   SceneFile read_unchecked() const;
-  // read(), then the truncation policy for this use (apply_truncation): scene.L and L_reason.
+  // The file read, then the truncation policy for this use (apply_truncation, which checks it once): scene.L and
+  // L_reason.
   SceneFile resolve(TruncationUse use) const;
   // The scene flags given on the command line, by name (e.g. "--lambda").
   std::vector<std::string> given_flags() const;

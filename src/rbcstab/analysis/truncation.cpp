@@ -501,17 +501,23 @@ SimulationResult simulate_truncated(SceneFile& file, const ValidScene& valid, co
 }
 
 void apply_truncation(SceneFile& file, TruncationUse use, const ReducedTransient* transient) {
+  apply_truncation(file, validated(file), use, transient);
+}
+
+void apply_truncation(SceneFile& file, const ValidScene& valid, TruncationUse use, const ReducedTransient* transient) {
+  if (&*valid != &file.scene) throw InvalidArgument("valid", "valid must prove this file's own scene: validated(file)");
   if (use == TruncationUse::simulation) {
     SimulationOptions o = file.options;
     o.record_trajectory = false;
-    (void)decide_simulation(file, validated(file), o, transient);
+    (void)decide_simulation(file, valid, o, transient);
     return;
   }
-  const TruncationDecision d = resolve_truncation(file.scene, file.origin("run.L"), use, {}, transient);
+  const TruncationDecision d = resolve_valid(valid, file.origin("run.L"), use, {}, transient);
+  Scene at_L;
+  (void)validated_at_L(valid, at_L, d.L);  // the L set: checked alone, so valid stays valid
   file.scene.L = d.L;
   file.L_reason = d.reason;
   file.truncation_check.reset();
-  file.scene.validate();
 }
 
 }  // namespace rbcstab

@@ -113,5 +113,8 @@ SimulationResult simulate_truncated(SceneFile& file, const ValidScene& valid, co
 // scene.L, L_reason (and for a simulation, by simulate_truncated without a trajectory, truncation_check), then
 // validates the scene. A simulation's L is then the one whose run was checked.
 void apply_truncation(SceneFile& file, TruncationUse use, const ReducedTransient* transient = nullptr);
+// The same for a file already checked (valid = validated(file)), which stays valid: the L set is checked alone.
+void apply_truncation(SceneFile& file, const ValidScene& valid, TruncationUse use,
+                      const ReducedTransient* transient = nullptr);
 
 }  // namespace rbcstab

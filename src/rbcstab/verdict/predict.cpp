@@ -93,8 +93,12 @@ ModePrediction simulation_prediction(const SimulationResult* simulated) {
 
 ScenePrediction predict(const Scene& scene, const SimulationResult* simulated, const PredictorOptions& options,
                         const OrbitAverageOptions& orbit) {
-  const ValidScene valid = validated(scene);
-  return predict(valid, reduced_transient(valid, scene.T, 1, options), simulated, options, orbit);
+  return predict(validated(scene), simulated, options, orbit);
+}
+
+ScenePrediction predict(const ValidScene& valid, const SimulationResult* simulated, const PredictorOptions& options,
+                        const OrbitAverageOptions& orbit) {
+  return predict(valid, reduced_transient(valid, valid->T, 1, options), simulated, options, orbit);
 }
 
 ScenePrediction predict(const Scene& scene, const ReducedTransient& transient, const SimulationResult* simulated,

@@ -57,6 +57,8 @@ struct ScenePrediction {
 // scene (pass nullptr to skip it).
 ScenePrediction predict(const Scene& scene, const SimulationResult* simulated, const PredictorOptions& options = {},
                         const OrbitAverageOptions& orbit = {});
+ScenePrediction predict(const ValidScene& scene, const SimulationResult* simulated,
+                        const PredictorOptions& options = {}, const OrbitAverageOptions& orbit = {});
 // The same with (b) from a given transient of the scene over [0, scene.T] (throws InvalidArgument("transient", ...)
 // if it is another scene's or has another horizon).
 ScenePrediction predict(const Scene& scene, const ReducedTransient& transient, const SimulationResult* simulated,

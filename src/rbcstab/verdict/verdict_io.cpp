@@ -222,12 +222,17 @@ std::string summary_text(const SceneFile& file, const SimulationResult& r, const
 }
 
 ThresholdReport threshold_report(const Scene& scene, bool exact_C_star_roots) {
+  return threshold_report(validated(scene), exact_C_star_roots);
+}
+
+ThresholdReport threshold_report(const ValidScene& valid, bool exact_C_star_roots) {
+  const Scene& scene = *valid;
   const Parameters& p = scene.parameters;
   const double alpha = p.alpha();
   ThresholdReport t;
-  t.r0 = stress_free_r0(scene);
+  t.r0 = stress_free_r0(valid);
   t.criterion = out_of_plane_criterion(p, scene.L);
-  t.prediction = predict(scene, nullptr);
+  t.prediction = predict(valid, nullptr);
   t.lambda_star_minus = std::isfinite(p.C) && alpha > 0 ? lambda_star_minus(alpha, p.C, p.Delta)
                                                         : Quantity::outside("needs finite C (alpha > 0)");
   t.has_exact_C_star = exact_C_star_roots;

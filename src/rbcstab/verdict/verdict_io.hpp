@@ -33,6 +33,7 @@ struct ThresholdReport {
   std::vector<double> exact_C_star;  // the roots on the paper's range [e^-5.5, e^2] when has_exact_C_star
 };
 ThresholdReport threshold_report(const Scene& scene, bool exact_C_star);
+ThresholdReport threshold_report(const ValidScene& scene, bool exact_C_star);
 nlohmann::json thresholds_json(const SceneFile& file, const ThresholdReport& t);
 std::string thresholds_text(const SceneFile& file, const ThresholdReport& t);
 
