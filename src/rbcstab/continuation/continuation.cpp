@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>  // TMP-REMOVE
 #include <utility>
 
 #include "rbcstab/continuation/dense.hpp"
@@ -226,7 +225,7 @@ Branch Engine::run(const Eigen::VectorXd& x0, double p0, double sign) {
       } catch (const InvalidArgument&) {
         detected = false;  // a user event left the domain: the bracketing endpoints are still valid points
       }
-      if (o_.confirm_special_points && !std::getenv("RBCSTAB_TMP_NO_GUARD")) {  // TMP-REMOVE
+      if (o_.confirm_special_points) {
         std::string why = unconfirmed_change(a, b, found);
         if (!detected && why.empty() && a.n_unstable != b.n_unstable)
           why = "changed the unstable count (" + std::to_string(a.n_unstable) + " -> " + std::to_string(b.n_unstable) +
