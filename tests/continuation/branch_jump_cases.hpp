@@ -99,8 +99,8 @@ inline Outcome run_case(const Case& c) {
     out.wrong_stability += !stability_ok;
     if ((!state_ok || !stability_ok) && out.first.empty()) {
       std::ostringstream os;
-      os << "point " << i << " at Lambda = " << pt.p << ": off the reference by " << d << ", unstable "
-         << pt.n_unstable << " (reference " << n << ")";
+      os << "point " << i << " at Lambda = " << pt.p << ": off the reference by " << d << ", unstable " << pt.n_unstable
+         << " (reference " << n << ")";
       out.first = os.str();
     }
   }

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <string>
 
-#include "rbcstab/continuation/continuation.hpp"
 #include "continuation/branch_jump_cases.hpp"
+#include "rbcstab/continuation/continuation.hpp"
 
 namespace rbcstab {
 namespace {
