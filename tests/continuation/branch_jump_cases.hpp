@@ -1,5 +1,5 @@
 #pragma once
-// The large-S out-of-plane equilibrium branch continued in Lambda (issue 29): one run of the grid (level, S,
+// The large-S out-of-plane equilibrium branch continued in Lambda: one run of the grid (level, S,
 // start Lambda0, max step) and its comparison, point by point, with the reference at the same Lambda: the
 // closed-form state of the stable branch (the reduced state; the modal one is it with v = a_l = 0) and the
 // spectrum there. The closed form is the oracle rather than a small-step run because a
@@ -40,7 +40,7 @@ struct Outcome {
   bool followed() const { return wrong_state == 0 && wrong_stability == 0; }
 };
 
-// The issue's runs: Lambda over [0.01, 10], moved through Delta at fixed lambda (Lambda = 3 sqrt(Delta)),
+// The reported runs: Lambda over [0.01, 10], moved through Delta at fixed lambda (Lambda = 3 sqrt(Delta)),
 // Delta0 = 1e-5 (Delta stays in [Delta0, 4 pi)), beta = 0 (out of plane); C sets S (S ~ C at fixed Delta0).
 inline Scene scene_of(const Case& c) {
   Scene s;

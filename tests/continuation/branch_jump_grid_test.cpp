@@ -1,4 +1,4 @@
-// The grid of issue 29, point 1 (label slow): the out-of-plane equilibrium branch continued in Lambda over
+// The branch-jump grid (label slow): the out-of-plane equilibrium branch continued in Lambda over
 // [0.01, 10] for S log-spaced from 1 to 1e6, starts on both sides of Lambda = 1, the reduced and modal levels
 // and max steps from 0.05 to 2, each run compared point by point with the closed-form reference
 // (branch_jump_cases.hpp): it follows its branch or ends branch_lost, never a different branch called

@@ -1,5 +1,5 @@
 // The branch-jump guard (ContinuationOptions::confirm_special_points): two branches that nearly touch, in
-// closed form, and the large-S out-of-plane branches of the reduced model continued in Lambda (issue 29),
+// closed form, and the large-S out-of-plane branches of the reduced model continued in Lambda,
 // each against its own closed form or a small-step reference branch.
 #include <gtest/gtest.h>
 
@@ -106,7 +106,7 @@ TEST(BranchJump, BranchThatCannotBeFollowedEndsBranchLost) {
   EXPECT_GT(jump_on_other_branch(unguarded), 0);
 }
 
-// The issue's cases: S = 1e3 and 1e4, starts at Lambda = 0.5 and 3, max step 0.5 and 2, Lambda over
+// The reported cases: S = 1e3 and 1e4, starts at Lambda = 0.5 and 3, max step 0.5 and 2, Lambda over
 // [0.01, 10], reduced level. Without the guard they jump onto the unstable mirror branch (Psi -> -Psi,
 // w -> -w) near Lambda = 1 and end completed; with it every point is the stable branch's closed-form state
 // (1e-8) with the reference's unstable count, or the run ends branch_lost.
