@@ -83,7 +83,7 @@ TEST(EnumTable, EveryLibraryTableKeepsItsNames) {
       {"success", "step_size_underflow", "non_finite_state", "step_limit", "time_limit", "solver_error"});
   expect_table<SpecialPointType>({"LP", "BP", "HB", "LPC", "PD", "NS", "UZ", "EP"});
   expect_table<LocationStatus>({"located", "guess"});
-  expect_table<ContinuationStatus>({"completed", "step_too_small", "outside_domain", "start_failed"});
+  expect_table<ContinuationStatus>({"completed", "step_too_small", "outside_domain", "start_failed", "branch_lost"});
   expect_table<Direction>({"forward", "backward", "both"});
   expect_table<ArpackWhich>({"largest_real", "largest_magnitude", "nearest_shift"});
   expect_table<ArpackStatus>({"converged", "max_iterations", "solve_failed", "failed"});

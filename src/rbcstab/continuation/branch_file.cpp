@@ -364,6 +364,8 @@ MeasuredBranch read_branch(const Reader& rd, const json& j, const std::string& p
   n.residual_evaluations = rd.index(c, "residual_evaluations", cp);
   n.jacobian_evaluations = rd.index(c, "jacobian_evaluations", cp);
   n.location_iterations = rd.index(c, "location_iterations", cp);
+  // Files written before the branch-jump guard have no such count.
+  n.unconfirmed_steps = c.contains("unconfirmed_steps") ? rd.index(c, "unconfirmed_steps", cp) : 0;
   return m;
 }
 

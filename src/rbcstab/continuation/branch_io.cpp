@@ -280,6 +280,7 @@ nlohmann::json to_json(const MeasuredBranch& m) {
           {"counters",
            {{"steps", c.steps},
             {"rejected_steps", c.rejected_steps},
+            {"unconfirmed_steps", c.unconfirmed_steps},
             {"newton_iterations", c.newton_iterations},
             {"residual_evaluations", c.residual_evaluations},
             {"jacobian_evaluations", c.jacobian_evaluations},

@@ -128,13 +128,19 @@ Pt Engine::finish(const Eigen::VectorXd& X, const Eigen::VectorXd& t_prev, int i
   return q;
 }
 
-// The point at arclength s along a's tangent (corrected), or nullopt-like failure.
+// The point at arclength s along a's tangent (corrected), or false. A corrector that wanders out of the
+// problem's domain is a failed probe like any other: the detection around it goes on (its special points
+// stay guesses, which the branch-jump guard sees) instead of being abandoned.
 bool Engine::probe(const Pt& a, double s, Pt& out) {
-  Eigen::VectorXd X = a.X + s * a.t;
-  int it = 0;
-  if (!correct(X, a.t, a.X, s, it)) return false;
-  out = finish(X, a.t, it);
-  return true;
+  try {
+    Eigen::VectorXd X = a.X + s * a.t;
+    int it = 0;
+    if (!correct(X, a.t, a.X, s, it)) return false;
+    out = finish(X, a.t, it);
+    return true;
+  } catch (const InvalidArgument&) {
+    return false;
+  }
 }
 
 BranchPoint Engine::to_branch_point(const Pt& q, double arclength) {
@@ -180,6 +186,7 @@ Branch Engine::run(const Eigen::VectorXd& x0, double p0, double sign) {
   }
   double ds = o_.initial_step;
   std::string last_domain_error;
+  std::string unconfirmed;  // why the branch-jump guard rejected a step since the last accepted point
   while (br.points.size() < o_.max_points) {
     ++counters.steps;
     Pt b;
@@ -209,23 +216,49 @@ Branch Engine::run(const Eigen::VectorXd& x0, double p0, double sign) {
       ok = false;
       last_domain_error = e.what();
     }
+    std::vector<SpecialPoint> found;
+    const std::size_t after = br.points.size() - 1;
+    if (ok) {
+      bool detected = true;
+      try {
+        detect(a, b, after, 0, found);
+      } catch (const InvalidArgument&) {
+        detected = false;  // a user event left the domain: the bracketing endpoints are still valid points
+      }
+      if (o_.confirm_special_points) {
+        std::string why = unconfirmed_change(a, b, found);
+        if (!detected && why.empty() && a.n_unstable != b.n_unstable)
+          why = "changed the unstable count (" + std::to_string(a.n_unstable) + " -> " + std::to_string(b.n_unstable) +
+                ") where detection could not run";
+        if (!why.empty()) {
+          ok = false;
+          unconfirmed = why;
+          ++counters.unconfirmed_steps;
+        }
+      }
+    }
     if (!ok) {
       ++counters.rejected_steps;
       ds *= o_.step_shrink;
       if (ds < o_.min_step) {
-        br.status = last_domain_error.empty() ? ContinuationStatus::step_too_small : ContinuationStatus::outside_domain;
-        br.message = last_domain_error.empty() ? "the corrector failed down to min_step" : last_domain_error;
+        if (!unconfirmed.empty()) {
+          br.status = ContinuationStatus::branch_lost;
+          br.message = "lost the branch after point " + std::to_string(after) + " from the start (" +
+                       pr_.parameter_name() + " = " + format_value(a.X[n_]) +
+                       "): every step down to min_step = " + format_value(o_.min_step) + " " + unconfirmed +
+                       " (a nearby branch?)";
+        } else {
+          br.status =
+              last_domain_error.empty() ? ContinuationStatus::step_too_small : ContinuationStatus::outside_domain;
+          br.message = last_domain_error.empty() ? "the corrector failed down to min_step" : last_domain_error;
+        }
         break;
       }
       continue;
     }
     last_domain_error.clear();
-    const std::size_t after = br.points.size() - 1;
-    try {
-      detect(a, b, after, 0, br.special_points);
-    } catch (const InvalidArgument&) {
-      // A probe left the domain inside the step: the bracketing endpoints are still valid points.
-    }
+    unconfirmed.clear();
+    br.special_points.insert(br.special_points.end(), found.begin(), found.end());
     arclength += sign * std::abs(a.t.dot(b.X - a.X));
     br.points.push_back(to_branch_point(b, arclength));
     if (o_.on_progress) o_.on_progress(double(br.points.size()), double(o_.max_points));
@@ -277,6 +310,7 @@ using detail::Engine;
 void add_counters(ContinuationCounters& a, const ContinuationCounters& b) {
   a.steps += b.steps;
   a.rejected_steps += b.rejected_steps;
+  a.unconfirmed_steps += b.unconfirmed_steps;
   a.newton_iterations += b.newton_iterations;
   a.residual_evaluations += b.residual_evaluations;
   a.jacobian_evaluations += b.jacobian_evaluations;

@@ -39,14 +39,17 @@ enum class ContinuationStatus {
   completed,       // a stop condition was met (bound, max points, user stop)
   step_too_small,  // the corrector failed down to min_step
   outside_domain,  // the problem rejected a parameter value (message says which)
-  start_failed     // Newton did not converge at the starting point
+  start_failed,    // Newton did not converge at the starting point
+  branch_lost      // every step down to min_step reached a point that no located special point joins to the
+                   // last one (a jump to a nearby branch): the message says after which point
 };
 template <>
 struct EnumTable<ContinuationStatus> {
   static constexpr EnumName<ContinuationStatus> entries[] = {{ContinuationStatus::completed, "completed"},
                                                              {ContinuationStatus::step_too_small, "step_too_small"},
                                                              {ContinuationStatus::outside_domain, "outside_domain"},
-                                                             {ContinuationStatus::start_failed, "start_failed"}};
+                                                             {ContinuationStatus::start_failed, "start_failed"},
+                                                             {ContinuationStatus::branch_lost, "branch_lost"}};
 };
 
 enum class Direction { forward, backward, both };  // forward: p increasing at the start
@@ -113,6 +116,10 @@ struct ContinuationOptions {
   // state moved by its error: one more corrector step, at least newton_tol; one more spectrum); special
   // points always do. 0: never (special points still do); inf: every point.
   double certificate_refine_margin = 1e-6;
+  // Branch-jump guard: a step whose test functions or unstable count change is accepted only when every
+  // special point found in it is located (a jump to a nearby branch leaves an unlocatable change); else it is
+  // halved and retried, down to min_step (then status branch_lost). false: the old rule (for diagnosis).
+  bool confirm_special_points = true;
   std::vector<UserEvent> events;  // user zero crossings -> UZ
   // Optional user stop: return true to end the branch after this point.
   std::function<bool(const Eigen::VectorXd& x, double p)> stop;
@@ -158,6 +165,7 @@ struct SpecialPoint {
 struct ContinuationCounters {
   std::size_t steps = 0, rejected_steps = 0, newton_iterations = 0, residual_evaluations = 0, jacobian_evaluations = 0,
               spectra = 0, location_iterations = 0;
+  std::size_t unconfirmed_steps = 0;  // of rejected_steps: by the branch-jump guard (confirm_special_points)
 };
 
 struct Branch {

@@ -8,6 +8,8 @@
 #include <complex>
 #include <cstddef>
 #include <limits>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace rbcstab::detail {
@@ -209,6 +211,22 @@ void Engine::detect(const Pt& a, const Pt& b, std::size_t after, int depth, std:
     return a.t.dot(Xu - a.X) < a.t.dot(Xv - a.X);
   });
   out.insert(out.end(), found.begin(), found.end());
+}
+
+// The branch-jump guard: why the step a -> b is not one piece of a branch, or "" when it is. A step that jumps
+// to a nearby branch changes the unstable count or a test function's sign with no zero in between: the
+// bracket of the change cannot shrink below the distance between the branches, so the special point that
+// detect reports for it stays a guess. Located points (and UZ events, which may jump by themselves) pass.
+std::string Engine::unconfirmed_change(const Pt& a, const Pt& b, const std::vector<SpecialPoint>& found) const {
+  for (const auto& sp : found) {
+    if (sp.type == SpecialPointType::UZ || sp.status == LocationStatus::located) continue;
+    std::ostringstream os;
+    os << "changed the unstable count (" << a.n_unstable << " -> " << b.n_unstable << ") or a test function's sign ("
+       << to_string(sp.type) << ") with no located special point between (bracket " << sp.precision << " in (x, "
+       << pr_.parameter_name() << "))";
+    return os.str();
+  }
+  return "";
 }
 
 }  // namespace rbcstab::detail

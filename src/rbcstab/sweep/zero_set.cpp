@@ -347,6 +347,7 @@ class Tracer {
   static void add(ContinuationCounters& a, const ContinuationCounters& b) {
     a.steps += b.steps;
     a.rejected_steps += b.rejected_steps;
+    a.unconfirmed_steps += b.unconfirmed_steps;
     a.newton_iterations += b.newton_iterations;
     a.residual_evaluations += b.residual_evaluations;
     a.jacobian_evaluations += b.jacobian_evaluations;

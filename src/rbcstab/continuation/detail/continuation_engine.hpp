@@ -4,6 +4,7 @@
 // (special_point_detection.cpp) and the points' stability certificates (stability_certificate.cpp).
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 #include "rbcstab/continuation/dense.hpp"
 
@@ -47,6 +48,7 @@ class Engine {
   static int crossings(SpecialPointType type);
   SpecialPointType unresolved_type(const Pt& a, const Pt& b) const;
   void detect(const Pt& a, const Pt& b, std::size_t after, int depth, std::vector<SpecialPoint>& out);
+  std::string unconfirmed_change(const Pt& a, const Pt& b, const std::vector<SpecialPoint>& found) const;
   StabilityCertificate certificate(const Pt& q, bool special);
   void set_certificate(SpecialPoint& sp, const Pt& q, double m_lo, double m_hi);
   double margin(const Pt& q) const;
