@@ -4,6 +4,7 @@
 // (special_point_detection.cpp) and the points' stability certificates (stability_certificate.cpp).
 #include <array>
 #include <cstddef>
+#include <string>
 #include <vector>
 #include "rbcstab/continuation/dense.hpp"
 
@@ -47,6 +48,10 @@ class Engine {
   static int crossings(SpecialPointType type);
   SpecialPointType unresolved_type(const Pt& a, const Pt& b) const;
   void detect(const Pt& a, const Pt& b, std::size_t after, int depth, std::vector<SpecialPoint>& out);
+  // The first special point from index `first` on that is a stop event's UZ (UserEvent::stop): the points
+  // after it are dropped and `end` is it, as a point of the branch (tangent oriented by a's). Returns its
+  // name, or "" when there is none.
+  std::string stop_event(std::vector<SpecialPoint>& special, std::size_t first, const Pt& a, Pt& end);
   StabilityCertificate certificate(const Pt& q, bool special);
   void set_certificate(SpecialPoint& sp, const Pt& q, double m_lo, double m_hi);
   double margin(const Pt& q) const;
