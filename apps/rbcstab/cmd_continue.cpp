@@ -203,7 +203,9 @@ Runner add_continue(CLI::App& app) {
   // (the library checks the value and names the option).
   for (const TunableOption& t : tunable_options())
     o->o_tuned[t.name] =
-        app.add_option(t.flag, o->tuned[t.name], tunable_help(t))->check(t.integer ? integer_text(t.range()) : number_text(t.range()));
+        app.add_option(t.flag, o->tuned[t.name], tunable_help(t))
+            ->check(t.integer ? integer_text(t.range()) : number_text(t.range()))
+            ->type_name(t.integer ? "INT" : "FLOAT");
   app.add_option("--monitor", o->monitors,
                  "label a UZ point where a parameter or a measure of the branch reaches each value: NAME=V1,V2,... "
                  "(e.g. Delta_2=0.5,0.8; repeatable; the point is named NAME=V)")

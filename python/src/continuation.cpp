@@ -100,18 +100,10 @@ RestartChanges restart_changes(Given& g) {
   return ch;
 }
 
-// The Python keyword of a tunable option: its flag in snake_case (--newton-tol: newton_tol, --step: step).
-std::string keyword_of(const TunableOption& t) {
-  std::string k = std::string(t.flag).substr(2);
-  for (char& c : k)
-    if (c == '-') c = '_';
-  return k;
-}
-
 // The tunable options given, checked by their declaration (naming the keyword's option) and set.
 void tune(Given& g, ContinuationOptions& engine, OrbitOptions& orbit) {
   for (const TunableOption& t : tunable_options())
-    if (const auto v = g.take<double>(keyword_of(t).c_str())) {
+    if (const auto v = g.take<double>(t.keyword().c_str())) {
       t.check(*v);
       t.set(engine, orbit, *v);
     }
@@ -417,7 +409,7 @@ void bind_continuation(py::module_& m) {
       [] {
         py::list l;
         for (const TunableOption& t : tunable_options())
-          l.append(py::make_tuple(keyword_of(t), t.integer, t.range(), t.default_value(), t.help));
+          l.append(py::make_tuple(t.keyword(), t.integer, t.range(), t.default_value(), t.help));
         return l;
       },
       "The tunable options (keyword, integer, range, default, help), as --help lists them.");

@@ -81,13 +81,21 @@ const std::array<TunableOption, 10>& options_table() {
     {"orbit_atol", "--orbit-atol", "orbits: the absolute tolerance of each segment's integration (states are O(1))",
      Domain{0, 1e-6, false, true, {}, {}, {}, {}}, false, true, get_o<&TunedOrbit::atol>, set_o<&TunedOrbit::atol>},
     {"orbit_samples", "--orbit-samples",
-     "orbits: dense samples per segment that seed r_min, r_max, Psi_min, Psi_max", closed(4, 100000), true, true,
+     "orbits: dense samples per segment that seed r_min, r_max, Psi_min, Psi_max",
+     Domain{4, 100000, true, true, {}, "100000", {}, {}}, true, true,
      get_oi<&TunedOrbit::samples_per_segment>, set_oi<&TunedOrbit::samples_per_segment>},
   }};
   return kOptions;
 }
 
 }  // namespace
+
+std::string TunableOption::keyword() const {
+  std::string k = std::string(flag).substr(2);
+  for (char& c : k)
+    if (c == '-') c = '_';
+  return k;
+}
 
 std::string TunableOption::range() const {
   const std::string d = domain.text();

@@ -22,6 +22,9 @@ struct TunableOption {
   bool orbit;        // an OrbitOptions field (else ContinuationOptions)
   double (*get)(const ContinuationOptions& engine, const OrbitOptions& orbit);
   void (*set)(ContinuationOptions& engine, OrbitOptions& orbit, double value);
+  // The keyword of Python and of a scene's [continuation] table: the flag in snake_case (--newton-tol:
+  // newton_tol, --step: step).
+  std::string keyword() const;
   // The accepted values in words: the domain, "an integer" for integer options.
   std::string range() const;
   // The default (of a default-constructed options struct).
