@@ -139,7 +139,9 @@ TEST(TunableOptions, EachIsRefusedOutsideItsRangeNamingIt) {
     EXPECT_NE(msg.find(t.range()), std::string::npos) << msg;
     t.set(e, o, bad);
     EXPECT_EQ(invalid_parameter([&] { t.orbit ? o.validate() : e.validate(); }), t.name);
-    if (t.integer) EXPECT_EQ(invalid_parameter([&] { t.check(t.default_value() + 0.5); }), t.name);
+    if (t.integer) {
+      EXPECT_EQ(invalid_parameter([&] { t.check(t.default_value() + 0.5); }), t.name);
+    }
   }
   std::string msg;
   EXPECT_EQ(invalid_parameter([] { tunable_option("ntst"); }, &msg), "option");
