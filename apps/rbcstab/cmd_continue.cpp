@@ -4,11 +4,11 @@
 #include <cmath>
 #include <iostream>
 #include <map>
-#include <string>
-#include <vector>
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "checks.hpp"
 #include "commands.hpp"
@@ -116,8 +116,8 @@ int run_restart(const ContinueOptions& o, const std::optional<CurveSpec>& curve)
   // Only the steps may change on a restart (RestartChanges); the rest are the file's.
   for (const TunableOption& t : tunable_options())
     if (o.given(t.name) && std::string(t.name) != "initial_step" && std::string(t.name) != "max_step")
-      throw InvalidArgument("restart", std::string("--restart continues with the file's options: ") + t.flag +
-                                           " cannot change");
+      throw InvalidArgument("restart",
+                            std::string("--restart continues with the file's options: ") + t.flag + " cannot change");
   if (!o.monitors.empty() || !o.stops.empty())
     throw InvalidArgument("monitor", "--monitor and --stop-at apply to a new branch, not to --restart");
   const ContinuationRun run = load_branch(o.restart);
@@ -202,10 +202,9 @@ Runner add_continue(CLI::App& app) {
   // Steps, tolerances and the orbits' discretisation: one flag per tunable option, its range from the table
   // (the library checks the value and names the option).
   for (const TunableOption& t : tunable_options())
-    o->o_tuned[t.name] =
-        app.add_option(t.flag, o->tuned[t.name], tunable_help(t))
-            ->check(t.integer ? integer_text(t.range()) : number_text(t.range()))
-            ->type_name(t.integer ? "INT" : "FLOAT");
+    o->o_tuned[t.name] = app.add_option(t.flag, o->tuned[t.name], tunable_help(t))
+                             ->check(t.integer ? integer_text(t.range()) : number_text(t.range()))
+                             ->type_name(t.integer ? "INT" : "FLOAT");
   app.add_option("--monitor", o->monitors,
                  "label a UZ point where a parameter or a measure of the branch reaches each value: NAME=V1,V2,... "
                  "(e.g. Delta_2=0.5,0.8; repeatable; the point is named NAME=V)")

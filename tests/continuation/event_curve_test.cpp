@@ -279,7 +279,7 @@ TEST(TransitionCurve, IsTheEventSystemWithOrbitMeasures) {
   for (std::size_t k = 0; k < pts.size(); ++k) {
     EXPECT_TRUE(pts[k].stable) << k;
     // Certified from the orbit's multipliers (the curve system's own Jacobian has none): margin ~0.95,
-    // its error far below it (issue 29: every point was uncertain with no error bound).
+    // its error far below it (certified from the curve Jacobian instead, every point was uncertain, no bound).
     EXPECT_EQ(pts[k].stability, Stability::stable) << k << " " << to_string(pts[k].uncertain_because);
     EXPECT_GT(pts[k].margin, 0.5) << k;
     EXPECT_LT(pts[k].margin_error, 1e-6) << k;

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <map>
 #include <optional>
-#include <variant>
 #include <utility>
+#include <variant>
 
 #include "rbcstab/continuation/detail/scene_problem.hpp"
 #include "rbcstab/core/error.hpp"
@@ -26,8 +26,8 @@ Monitor parse_monitor(std::string_view text, bool stop, const std::string& what)
   const std::size_t eq = t.find('=');
   const std::string form = stop ? "NAME=VALUE" : "NAME=V1,V2,...";
   if (eq == std::string::npos || eq == 0 || eq + 1 == t.size())
-    throw InvalidArgument(what, "'" + t + "' is not " + form + " (a parameter or measure, '=', its value" +
-                                    (stop ? ")" : "s)"));
+    throw InvalidArgument(
+        what, "'" + t + "' is not " + form + " (a parameter or measure, '=', its value" + (stop ? ")" : "s)"));
   Monitor m;
   m.name = t.substr(0, eq);
   m.stop = stop;
@@ -37,8 +37,8 @@ Monitor parse_monitor(std::string_view text, bool stop, const std::string& what)
     const std::string item = t.substr(from, comma - from);
     const std::optional<double> v = read_number(item);
     if (!v || !std::isfinite(*v))
-      throw InvalidArgument(what, "'" + t + "': " + (v ? "'" + item + "' is not finite" : number_error(item)) +
-                                      " (" + form + ")");
+      throw InvalidArgument(
+          what, "'" + t + "': " + (v ? "'" + item + "' is not finite" : number_error(item)) + " (" + form + ")");
     m.values.push_back(*v);
     from = comma + 1;
   }

@@ -215,7 +215,8 @@ std::string Engine::stop_event(std::vector<SpecialPoint>& special, std::size_t f
   for (std::size_t k = first; k < special.size(); ++k) {
     const SpecialPoint& sp = special[k];
     if (sp.type != SpecialPointType::UZ) continue;
-    const auto e = std::find_if(o_.events.begin(), o_.events.end(), [&](const UserEvent& u) { return u.name == sp.name; });
+    const auto e =
+        std::find_if(o_.events.begin(), o_.events.end(), [&](const UserEvent& u) { return u.name == sp.name; });
     if (e == o_.events.end() || !e->stop) continue;
     Eigen::VectorXd X(N_);
     X << sp.x, sp.p;

@@ -171,8 +171,8 @@ ContinuationPanel continuation_panel(const SceneFile& sf) {
   if (!sf.continuation) return c;
   c.engine.direction = Direction::both;
   const SceneTable& t = *sf.continuation;
-  std::set<std::string> keys{"parameter", "min", "max", "direction", "measure", "max_points", "relax_T", "monitor",
-                              "stop_at"};
+  std::set<std::string> keys{"parameter",  "min",     "max",     "direction", "measure",
+                             "max_points", "relax_T", "monitor", "stop_at"};
   for (const TunableOption& o : tunable_options())
     if (!o.orbit) keys.insert(o.keyword());  // the panel's branch is of equilibria: no shooting options
   t.allow_only(keys);

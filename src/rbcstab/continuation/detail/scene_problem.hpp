@@ -8,8 +8,8 @@
 
 #include "rbcstab/continuation/branch_spec.hpp"
 #include "rbcstab/continuation/continuation.hpp"
-#include "rbcstab/continuation/monitors.hpp"
 #include "rbcstab/continuation/detail/scene_measures.hpp"
+#include "rbcstab/continuation/monitors.hpp"
 #include "rbcstab/continuation/problem.hpp"
 #include "rbcstab/continuation/scene_branch.hpp"
 #include "rbcstab/continuation/scene_start.hpp"
