@@ -208,8 +208,11 @@ ContinuationPanel continuation_panel(const SceneFile& sf) {
   }
   for (const auto& [key, stop] : {std::pair{"monitor", false}, std::pair{"stop_at", true}}) {
     if (!t.has(key)) continue;
-    for (const std::string& m : t.texts(key, 0, "a list of \"NAME=V1,V2,...\" strings"))
-      c.monitors.push_back(parse_monitor(m, stop, t.path(key)));
+    for (const std::string& m : t.texts(key, 0, "a list of \"NAME=V1,V2,...\" strings")) try {
+        c.monitors.push_back(parse_monitor(m, stop, t.path(key)));
+      } catch (const InvalidArgument& e) {
+        throw InvalidArgument(t.path(key), t.path(key) + ": " + e.what());
+      }
   }
   if (t.has("max_points")) {
     const long long n = t.integer("max_points");
