@@ -3,9 +3,12 @@
 // loads (branch_file.hpp).
 #include <cmath>
 #include <iostream>
+#include <map>
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "checks.hpp"
 #include "commands.hpp"
@@ -13,6 +16,7 @@
 #include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
+#include "rbcstab/continuation/tunable_options.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "scene_options.hpp"
@@ -28,7 +32,11 @@ struct ContinueOptions {
   std::string direction = "both";
   ContinuationOptions engine;
   double relax_T = 200;
-  OrbitOptions orbit;  // --segments
+  OrbitOptions orbit;
+  // The tunable options (tunable_options.hpp) by name, as given; their flags by name.
+  std::map<std::string, double> tuned;
+  std::map<std::string, CLI::Option*> o_tuned;
+  std::vector<std::string> monitors, stops;  // --monitor, --stop-at
   bool json = false;
   std::string csv;
   bool switch_at_bp = false;
@@ -46,9 +54,23 @@ struct ContinueOptions {
   int label = 0, switch_at = 0;
   // Flags a restart takes from the command line only when given (else from the file).
   ProgressOutput progress;
-  CLI::Option *o_kind{}, *o_parameter{}, *o_min{}, *o_max{}, *o_direction{}, *o_step{}, *o_max_step{}, *o_max_points{},
-      *o_label_every{}, *o_segments{}, *o_relax_T{}, *o_label{}, *o_switch_at{};
+  CLI::Option *o_kind{}, *o_parameter{}, *o_min{}, *o_max{}, *o_direction{}, *o_max_points{}, *o_label_every{},
+      *o_relax_T{}, *o_label{}, *o_switch_at{};
+  bool given(const std::string& name) const { return o_tuned.at(name)->count() > 0; }
+  // The tunable options given, set on the engine and the orbit options.
+  void tune(ContinuationOptions& e, OrbitOptions& orbit_options) const {
+    for (const TunableOption& t : tunable_options())
+      if (given(t.name)) {
+        t.check(tuned.at(t.name));  // before the integer ones are cast
+        t.set(e, orbit_options, tuned.at(t.name));
+      }
+  }
 };
+
+// --help for a tunable option: its line, range and default.
+std::string tunable_help(const TunableOption& t) {
+  return std::string(t.help) + "; " + t.range() + " (default " + format_value(t.default_value()) + ")";
+}
 
 // The continuation parameters' names, from the parameter table.
 std::string parameter_names() {
@@ -89,9 +111,15 @@ int run_restart(const ContinueOptions& o, const std::optional<CurveSpec>& curve)
   if (!o.scene.scene_path.empty()) throw InvalidArgument("restart", from_file + "--scene cannot change it");
   for (const std::string& flag : o.scene.given_flags())
     throw InvalidArgument("restart", from_file + flag + " cannot change it");
-  for (const CLI::Option* f : {o.o_segments, o.o_relax_T})
-    if (f->count() > 0)
-      throw InvalidArgument("restart", "--restart continues the file's states: " + f->get_name() + " cannot change");
+  if (o.o_relax_T->count() > 0)
+    throw InvalidArgument("restart", "--restart continues the file's states: --relax-T cannot change");
+  // Only the steps may change on a restart (RestartChanges); the rest are the file's.
+  for (const TunableOption& t : tunable_options())
+    if (o.given(t.name) && std::string(t.name) != "initial_step" && std::string(t.name) != "max_step")
+      throw InvalidArgument("restart",
+                            std::string("--restart continues with the file's options: ") + t.flag + " cannot change");
+  if (!o.monitors.empty() || !o.stops.empty())
+    throw InvalidArgument("monitor", "--monitor and --stop-at apply to a new branch, not to --restart");
   const ContinuationRun run = load_branch(o.restart);
   RestartChanges& ch = q.changes;
   if (o.o_kind->count() > 0) ch.kind = problem_kind_from_string(o.kind);
@@ -99,8 +127,8 @@ int run_restart(const ContinueOptions& o, const std::optional<CurveSpec>& curve)
   if (o.o_min->count() > 0) ch.p_min = o.p_min;
   if (o.o_max->count() > 0) ch.p_max = o.p_max;
   if (o.o_direction->count() > 0) ch.direction = direction_from_string(o.direction);
-  if (o.o_step->count() > 0) ch.initial_step = o.engine.initial_step;
-  if (o.o_max_step->count() > 0) ch.max_step = o.engine.max_step;
+  if (o.given("initial_step")) ch.initial_step = o.tuned.at("initial_step");
+  if (o.given("max_step")) ch.max_step = o.tuned.at("max_step");
   if (o.o_max_points->count() > 0) ch.max_points = o.engine.max_points;
   if (o.o_label_every->count() > 0) ch.label_every = o.label_every;
   ch.switch_at_bp = o.switch_at_bp;
@@ -123,12 +151,15 @@ int run(const ContinueOptions& o) {
   SceneFile file = o.scene.read();
   spec.parameter = continuation_parameter_from_string(o.parameter);
   spec.engine = o.engine;
+  spec.orbit = o.orbit;
+  o.tune(spec.engine, spec.orbit);
+  for (const std::string& m : o.monitors) spec.monitors.push_back(parse_monitor(m, false, "monitor"));
+  for (const std::string& m : o.stops) spec.monitors.push_back(parse_monitor(m, true, "stop_at"));
   spec.engine.on_progress = o.progress.callback("continue:", "points (this direction)");
   spec.engine.p_min = o.p_min;
   spec.engine.p_max = o.p_max;
   spec.engine.direction = direction_from_string(o.direction);
   spec.relax_T = o.relax_T;
-  spec.orbit = o.orbit;
   spec.switch_at_bp = o.switch_at_bp;
   spec.label_every = o.label_every;
   spec.allow_unstable_start = o.allow_unstable_start;
@@ -144,9 +175,6 @@ Runner add_continue(CLI::App& app) {
                              "what to continue: equilibrium (reduced system), modal, full (L <= 16: stress-free l >= 3 "
                              "content), orbit (in-plane reduced orbits) or modal-orbit (docs/continuation.md)")
                   ->capture_default_str();
-  o->o_segments = app.add_option("--segments", o->orbit.segments,
-                                 "orbit: number of multiple-shooting segments, an integer in [1, 1000]")
-                      ->capture_default_str();
   app.add_flag("--switch-at-bp", o->switch_at_bp,
                "equilibrium, modal, full, modal-orbit: also continue the branch that bifurcates at the first BP met "
                "from the start in the continuation direction (--direction both: the BP nearest the start in "
@@ -171,12 +199,22 @@ Runner add_continue(CLI::App& app) {
   o->o_direction = app.add_option("--direction", o->direction, "forward (parameter increasing), backward or both")
                        ->check(CLI::IsMember({"forward", "backward", "both"}))
                        ->capture_default_str();
-  o->o_step = app.add_option("--step", o->engine.initial_step, "first arclength step, > 0")
-                  ->check(positive())
-                  ->capture_default_str();
-  o->o_max_step = app.add_option("--max-step", o->engine.max_step, "largest arclength step, > 0")
-                      ->check(positive())
-                      ->capture_default_str();
+  // Steps, tolerances and the orbits' discretisation: one flag per tunable option, its range from the table
+  // (the library checks the value and names the option).
+  for (const TunableOption& t : tunable_options())
+    o->o_tuned[t.name] = app.add_option(t.flag, o->tuned[t.name], tunable_help(t))
+                             ->check(t.integer ? integer_text(t.range()) : number_text(t.range()))
+                             ->type_name(t.integer ? "INT" : "FLOAT");
+  app.add_option("--monitor", o->monitors,
+                 "label a UZ point where a parameter or a measure of the branch reaches each value: NAME=V1,V2,... "
+                 "(e.g. Delta_2=0.5,0.8; repeatable; the point is named NAME=V)")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
+  app.add_option("--stop-at", o->stops,
+                 "end the branch (each direction) where a parameter or a measure reaches VALUE: NAME=VALUE "
+                 "(repeatable: the first reached ends it; status completed, message 'stopped at NAME=VALUE')")
+      ->expected(1)
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   o->o_max_points =
       app.add_option("--max-points", o->engine.max_points, "points per direction, an integer in [2, 100000000]")
           ->check(integer_in(2, 100000000))

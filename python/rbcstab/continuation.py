@@ -24,7 +24,7 @@ from ._drawing import drawing_module
 from ._rbcstab import Scene
 
 __all__ = ["continuation", "load_branch", "plot_branches", "Branch", "Curve", "ContinuationError",
-           "ContinuationWarning"]
+           "ContinuationWarning", "TUNABLE_OPTIONS"]
 
 
 class ContinuationError(RuntimeError):
@@ -44,10 +44,35 @@ _flag = _args.flag
 _name = _args.text
 
 
-_KINDS = {"min": _number, "max": _number, "step": _number, "max_step": _number, "relax_T": _number,
-          "min2": _number, "max2": _number, "max_points": _integer, "segments": _integer, "label_every": _integer,
+# The tunable options (steps, Newton, location, the orbits' shooting) as the library declares them: keyword,
+# whether an integer, range, default, help (``rbcstab continue --help`` lists the same).
+TUNABLE_OPTIONS = tuple(_rbcstab.tunable_options())
+
+_KINDS = {"min": _number, "max": _number, "relax_T": _number,
+          "min2": _number, "max2": _number, "max_points": _integer, "label_every": _integer,
           "point": _integer, "switch_at_bp": _flag, "allow_unstable_start": _flag, "direction": _name,
-          "curve": _name, "parameter2": _name, "kind": _name, "parameter": _name}
+          "curve": _name, "parameter2": _name, "kind": _name, "parameter": _name,
+          **{k: _integer if integer else _number for k, integer, *_ in TUNABLE_OPTIONS}}
+
+
+def _monitors(monitor, stop_at):
+    """monitor={name: value, [values] or callable(point) -> float}, stop_at={name: value or callable} as the
+    library's (name, values, stop, callable or None) list."""
+    out = []
+    for stop, key, given in ((False, "monitor", monitor), (True, "stop_at", stop_at)):
+        if given is None:
+            continue
+        if not isinstance(given, dict):
+            raise TypeError(f"{key} must be a dict {{name: value(s) or callable}}, got {type(given).__name__}")
+        for name, v in given.items():
+            _name(key, name)
+            if callable(v):
+                out.append((name, [], stop, v))
+            elif isinstance(v, (list, tuple)):
+                out.append((name, _args.numbers_(key, v), stop, None))
+            else:
+                out.append((name, [_number(key, v)], stop, None))
+    return out
 
 
 def _options(**given):
@@ -110,7 +135,8 @@ def _wrap(run):
 def continuation(scene, kind="equilibrium", parameter="lambda", min=None, max=None, *, direction=None, step=None,
                  max_step=None, max_points=None, relax_T=None, segments=None, switch_at_bp=False,
                  allow_unstable_start=False, label_every=None, curve=None, parameter2=None, min2=None, max2=None,
-                 point=None, progress=False):
+                 point=None, min_step=None, newton_tol=None, max_newton=None, location_tol=None, orbit_rtol=None,
+                 orbit_atol=None, orbit_samples=None, monitor=None, stop_at=None, progress=False):
     """Continues a branch from the scene's state (``rbcstab continue``; each keyword is the CLI's flag of the
     same name in snake_case, None its default; docs/continuation.md).
 
@@ -122,6 +148,12 @@ def continuation(scene, kind="equilibrium", parameter="lambda", min=None, max=No
     allow_unstable_start: orbits, continue from an unstable start; label_every: label every N-th point.
     curve ('LP', 'BP', 'HB', 'LPC', 'PD', 'NS', 'UZ') with parameter2, min2, max2 and point: the curve of the
     point-th special point of that type in (parameter, parameter2) instead (a :class:`Curve`).
+    min_step, newton_tol, max_newton, location_tol, orbit_rtol, orbit_atol, orbit_samples: the numerical
+    options (:data:`TUNABLE_OPTIONS` lists each with its range and default). monitor: {name: value, [values] or
+    callable}: a UZ point named 'name=value' where a parameter or a numeric measure of the branch reaches each
+    value; a callable f(point) -> float (point: a dict of the point's parameters and numeric measures) gives
+    UZ points named 'name' at its zeros. stop_at: {name: value or callable}: end the branch (each direction)
+    where it is reached (message 'stopped at name=value').
     progress=True shows the points computed. Ctrl-C stops it (KeyboardInterrupt); the GIL is released.
 
     Returns a :class:`Branch` (or a :class:`Curve`). Raises ValueError for bad input (naming the parameter, its
@@ -132,7 +164,12 @@ def continuation(scene, kind="equilibrium", parameter="lambda", min=None, max=No
     options = _options(min=min, max=max, direction=direction, step=step, max_step=max_step, max_points=max_points,
                        relax_T=relax_T, segments=segments, switch_at_bp=switch_at_bp,
                        allow_unstable_start=allow_unstable_start, label_every=label_every, curve=curve,
-                       parameter2=parameter2, min2=min2, max2=max2, point=point)
+                       parameter2=parameter2, min2=min2, max2=max2, point=point, min_step=min_step,
+                       newton_tol=newton_tol, max_newton=max_newton, location_tol=location_tol, orbit_rtol=orbit_rtol,
+                       orbit_atol=orbit_atol, orbit_samples=orbit_samples)
+    monitors = _monitors(monitor, stop_at)
+    if monitors:
+        options["monitors"] = monitors
     what = f"continuation in {parameter}" if isinstance(parameter, str) else "continuation"
     return _run(_rbcstab.continue_scene, what, progress, scene, _name("kind", kind), _name("parameter", parameter),
                 options)

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -26,6 +27,7 @@
 #include "rbcstab/continuation/scene_measures.hpp"
 #include "rbcstab/continuation/scene_restart.hpp"
 #include "rbcstab/continuation/scene_run.hpp"
+#include "rbcstab/continuation/tunable_options.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/core/progress.hpp"
 #include "rbcstab/io/files.hpp"
@@ -98,6 +100,40 @@ RestartChanges restart_changes(Given& g) {
   return ch;
 }
 
+// The tunable options given, checked by their declaration (naming the keyword's option) and set.
+void tune(Given& g, ContinuationOptions& engine, OrbitOptions& orbit) {
+  for (const TunableOption& t : tunable_options())
+    if (const auto v = g.take<double>(t.keyword().c_str())) {
+      t.check(*v);
+      t.set(engine, orbit, *v);
+    }
+}
+
+// monitors: a list of (name, values, stop, function or None) from the Python layer. A function is called
+// under the GIL with the point's parameters and measures (a dict); it is held borrowed: the caller keeps it
+// alive for the run and detach() drops it from the result.
+std::vector<Monitor> monitors_of(Given& g) {
+  std::vector<Monitor> out;
+  const auto list = g.take<py::list>("monitors");
+  if (!list) return out;
+  for (const py::handle item : *list) {
+    const auto t = item.cast<py::tuple>();
+    Monitor m;
+    m.name = t[0].cast<std::string>();
+    m.values = t[1].cast<std::vector<double>>();
+    m.stop = t[2].cast<bool>();
+    if (!t[3].is_none()) {
+      PyObject* f = t[3].ptr();
+      m.function = [f](const std::map<std::string, double>& point) {
+        py::gil_scoped_acquire gil;
+        return py::handle(f)(point).cast<double>();
+      };
+    }
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
 // ---- Ctrl-C and progress while the GIL is released ----
 
 // The engine's stop callback: runs Python's signal handlers (signal_poll: Ctrl-C raises out of the run) and,
@@ -141,6 +177,7 @@ Run detach(ContinuationRun&& run, std::string L_reason) {
   BranchSpec& spec = spec_of(run);
   spec.engine.stop = nullptr;
   spec.orbit.poll = nullptr;
+  for (Monitor& m : spec.monitors) m.function = nullptr;
   return {std::move(run), std::move(L_reason)};
 }
 
@@ -156,11 +193,10 @@ Run continue_from_scene(const py::handle& scene, const std::string& kind, const 
   spec.engine.p_min = g.take<double>("min").value_or(spec.engine.p_min);
   spec.engine.p_max = g.take<double>("max").value_or(spec.engine.p_max);
   if (const auto d = g.take<std::string>("direction")) spec.engine.direction = direction_from_string(*d);
-  set_if(spec.engine.initial_step, g.take<double>("step"));
-  set_if(spec.engine.max_step, g.take<double>("max_step"));
+  tune(g, spec.engine, spec.orbit);
+  spec.monitors = monitors_of(g);
   set_if(spec.engine.max_points, as_count(g.take<long long>("max_points"), "max_points"));
   set_if(spec.relax_T, g.take<double>("relax_T"));
-  set_if(spec.orbit.segments, as_int(g.take<long long>("segments"), "segments"));
   set_if(spec.switch_at_bp, g.take<bool>("switch_at_bp"));
   set_if(spec.allow_unstable_start, g.take<bool>("allow_unstable_start"));
   set_if(spec.label_every, as_int(g.take<long long>("label_every"), "label_every"));
@@ -368,6 +404,15 @@ void bind_continuation(py::module_& m) {
   m.def("curve", &curve_py, py::arg("run"), py::arg("label"), py::arg("type"), py::arg("parameter2"), py::arg("min2"),
         py::arg("max2"), py::arg("options"), py::arg("progress") = py::none(),
         "rbcstab continue --restart FILE --label N --curve TYPE --parameter2 P2");
+  m.def(
+      "tunable_options",
+      [] {
+        py::list l;
+        for (const TunableOption& t : tunable_options())
+          l.append(py::make_tuple(t.keyword(), t.integer, t.range(), t.default_value(), t.help));
+        return l;
+      },
+      "The tunable options (keyword, integer, range, default, help), as --help lists them.");
   m.def("load_branch", &load_py, py::arg("path"), "Reads a branch file (rbcstab continue --save).");
   m.def("plot_spec", &plot_spec_py, py::arg("runs"), py::arg("sources"), py::arg("x") = "", py::arg("y") = "",
         py::arg("title") = "", py::arg("all_labels") = false,

@@ -170,6 +170,39 @@ def test_orbit_options_equal_the_cli(cli):
     assert b["kind"].dtype.kind == "U" and b["winding"].dtype.kind == "i"
 
 
+def test_tunables_and_monitors_equal_the_cli_and_a_callable_monitor_finds_the_same_point(cli):
+    scene = rbcstab.Scene(lambda_=2.0, B=1.5, C=0.05)
+    b = rbcstab.continuation(scene, parameter="lambda", min=0.5, max=4, direction="forward", newton_tol=1e-11,
+                             max_newton=10, min_step=1e-9, location_tol=1e-10, monitor={"lambda": [2.5, 3.2]},
+                             stop_at={"lambda": 3.5})
+    expected = cli("continue", "--lambda", 2, "--B", 1.5, "--C", 0.05, "--parameter", "lambda", "--min", 0.5,
+                   "--max", 4, "--direction", "forward", "--newton-tol", 1e-11, "--max-newton", 10, "--min-step",
+                   1e-9, "--location-tol", 1e-10, "--monitor", "lambda=2.5,3.2", "--stop-at", "lambda=3.5")
+    assert without_timing(b.to_dict()) == without_timing(expected)
+    uz = {p["name"]: p["lambda"] for p in b.special_points if p["type"] == "UZ"}
+    assert set(uz) == {"lambda=2.5", "lambda=3.2", "lambda=3.5"}
+    assert b.to_dict()["message"] == "stopped at lambda=3.5" and b.to_dict()["status"] == "completed"
+    assert abs(b["lambda"][-1] - 3.5) <= 1e-9  # located to location_tol = 1e-10 in (x, p)
+    # A callable of the point's parameters and measures: its zero is the same point as the value monitor's.
+    c = rbcstab.continuation(scene, parameter="lambda", min=0.5, max=4, direction="forward",
+                             monitor={"g": lambda point: point["lambda"] - 3.2})
+    g = [p for p in c.special_points if p["type"] == "UZ" and p["name"] == "g"]
+    assert len(g) == 1 and abs(g[0]["lambda"] - uz["lambda=3.2"]) <= 1e-9
+    names = {k for k, *_ in rbcstab.TUNABLE_OPTIONS}
+    assert {"step", "min_step", "max_step", "newton_tol", "max_newton", "location_tol", "segments", "orbit_rtol",
+            "orbit_atol", "orbit_samples"} == names
+    with pytest.raises(ValueError, match=r"newton_tol = 0.5 is out of range: must be in \(0, 0.01\)"):
+        rbcstab.continuation(scene, newton_tol=0.5)
+    with pytest.raises(ValueError, match=r"orbit_samples = 2 is out of range"):
+        rbcstab.continuation(scene, kind="orbit", orbit_samples=2)
+    with pytest.raises(TypeError, match="max_newton"):
+        rbcstab.continuation(scene, max_newton=2.5)
+    with pytest.raises(TypeError, match="monitor"):
+        rbcstab.continuation(scene, monitor="lambda=1")
+    with pytest.raises(ValueError, match="unknown monitor 'sigma'"):
+        rbcstab.continuation(scene, monitor={"sigma": 1.0})
+
+
 # ------------------------------------------------------------------------------------- closed forms
 def test_modal_branch_in_lambda_equals_the_closed_form(cli):
     scene = rbcstab.Scene(lambda_=1.0, B=1.0, Delta=1.0, Delta0=0.01, C=0.08, beta=0.0, L=4)

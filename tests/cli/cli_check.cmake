@@ -287,6 +287,18 @@ elseif(CASE STREQUAL "name")
 elseif(CASE STREQUAL "library_messages")
   # A library check names the flag that set the value, also when the names differ.
   expect_refused_cmd(ARGS continue --step 1e308 NAMES "--step: initial_step = 1e+308" "max_step = 0.5")
+  # The tunable options (continuation/tunable_options.hpp): the flag, the value and the declared range.
+  expect_refused_cmd(ARGS continue --newton-tol 0.5 NAMES "--newton-tol: newton_tol = 0.5" "must be in (0, 0.01)")
+  expect_refused_cmd(ARGS continue --max-newton 1 NAMES "--max-newton: max_newton = 1" "an integer in [2, 100]")
+  expect_refused_cmd(ARGS continue --max-newton 1e12 NAMES "--max-newton" "'1e12' is not an integer")
+  expect_refused_cmd(ARGS continue --min-step 0 NAMES "--min-step: min_step = 0" "finite and > 0")
+  expect_refused_cmd(ARGS continue --location-tol 1 NAMES "--location-tol: location_tol = 1" "in (0, 0.01]")
+  expect_refused_cmd(ARGS continue --kind orbit --orbit-rtol 1e-3 NAMES "--orbit-rtol: orbit_rtol = 0.001"
+                     "in [1e-15, 1e-06]")
+  expect_refused_cmd(ARGS continue --segments 0 NAMES "--segments: segments = 0" "an integer in [1, 1000]")
+  expect_refused_cmd(ARGS continue --monitor Psi NAMES "--monitor" "'Psi' is not NAME=V1,V2,...")
+  expect_refused_cmd(ARGS continue --stop-at Psi=1,2 NAMES "--stop-at" "a stop takes one value")
+  expect_refused_cmd(ARGS continue --monitor sigma=1 NAMES "--monitor" "unknown monitor 'sigma'")
   expect_refused_cmd(ARGS diagram --x-range=-1e308,1e308 --counts 2,2 --no-journal NAMES "--x-range" "finite width")
   expect_refused_cmd(ARGS diagram --x-range=1,800 --counts 2,2 --no-journal NAMES "--x-range" "lnB = 800" "B = inf" "finite and > 0")
   expect_refused_cmd(ARGS trace --x-range=-1e308,1e308 NAMES "--x-range" "finite width")

@@ -22,6 +22,7 @@
 #include "continuation/wrong_start_fixture.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/continuation/branch_spec.hpp"
+#include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/continuation/modal_orbit.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/scene_branch.hpp"
@@ -113,8 +114,10 @@ TEST(StabilityCertificate, LabelsFromTheMarginAndItsError) {
   EXPECT_EQ(s.stability, Stability::stable);
   EXPECT_DOUBLE_EQ(s.margin, 0.5);
   EXPECT_NEAR(s.margin_error, 1e-12, 1e-16);
+  EXPECT_EQ(s.uncertain_because, CertificateTerm::none);
   s = certify(spectrum({-1.0, 1e-13}, {1e-12, 1e-12}), StabilityKind::eigenvalues);
   EXPECT_EQ(s.stability, Stability::uncertain);
+  EXPECT_EQ(s.uncertain_because, CertificateTerm::spectral_error);
   s = certify(spectrum({-1.0, 2e-12}, {1e-12, 1e-12}), StabilityKind::eigenvalues);
   EXPECT_EQ(s.stability, Stability::unstable);
   // A value whose error reaches past the critical one widens the margin's range.
@@ -124,6 +127,11 @@ TEST(StabilityCertificate, LabelsFromTheMarginAndItsError) {
   EXPECT_EQ(s.stability, Stability::uncertain);
   s = certify(spectrum({-1.0}, {std::nan("")}), StabilityKind::eigenvalues);
   EXPECT_EQ(s.stability, Stability::uncertain);
+  EXPECT_EQ(s.uncertain_because, CertificateTerm::error_bound);
+  s = certify(spectrum({-1.0}, {INFINITY}), StabilityKind::eigenvalues);  // a defective value: no bound
+  EXPECT_EQ(s.uncertain_because, CertificateTerm::error_bound);
+  s = certify(spectrum({{NAN, 0}}, {1e-12}), StabilityKind::eigenvalues);
+  EXPECT_EQ(s.uncertain_because, CertificateTerm::spectrum);
   s = certify(spectrum({{0.6, 0.6}, 0.3}, {1e-9, 1e-9}), StabilityKind::multipliers);
   EXPECT_NEAR(s.margin, 1 - std::sqrt(0.72), 1e-15);
   EXPECT_EQ(s.stability, Stability::stable);
@@ -187,8 +195,19 @@ TEST(Certificate, ModalEquilibriumAgainstTheModalSpectrum) {
   EXPECT_NEAR(bp->p, C_bp, 1e-9);
   EXPECT_EQ(bp->stability, Stability::uncertain);
   EXPECT_LE(std::abs(bp->margin), bp->margin_error);
-  std::printf("modal BP at C = %.12f: margin %.3g +- %.3g (%s)\n", bp->p, bp->margin, bp->margin_error,
-              to_string(bp->stability).c_str());
+  // Which quantity reaches the margin: a term of the error, never "no bound" at a regular spectrum.
+  EXPECT_TRUE(bp->uncertain_because == CertificateTerm::spectral_error ||
+              bp->uncertain_because == CertificateTerm::state_error ||
+              bp->uncertain_because == CertificateTerm::location)
+      << to_string(bp->uncertain_because);
+  std::printf("modal BP at C = %.12f: margin %.3g +- %.3g (%s: %s)\n", bp->p, bp->margin, bp->margin_error,
+              to_string(bp->stability).c_str(), to_string(bp->uncertain_because).c_str());
+  // A branch point certified at the BP's parameter and state (certify_solution, the start's certificate):
+  // deliberately near-neutral, it is uncertain too.
+  const ModalEquilibriumProblem pr(with_parameter(spec.scene, P::C, bp->p), P::C);
+  const StabilityCertificate at_bp = certify_solution(pr, bp->x, bp->p, spec.engine.newton_tol);
+  EXPECT_EQ(at_bp.stability, Stability::uncertain) << at_bp.margin << " +- " << at_bp.margin_error;
+  EXPECT_NE(at_bp.uncertain_because, CertificateTerm::none);
 }
 
 // ---- orbits ----

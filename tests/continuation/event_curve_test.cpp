@@ -278,6 +278,11 @@ TEST(TransitionCurve, IsTheEventSystemWithOrbitMeasures) {
   };
   for (std::size_t k = 0; k < pts.size(); ++k) {
     EXPECT_TRUE(pts[k].stable) << k;
+    // Certified from the orbit's multipliers (the curve system's own Jacobian has none): margin ~0.95,
+    // its error far below it (certified from the curve Jacobian instead, every point was uncertain, no bound).
+    EXPECT_EQ(pts[k].stability, Stability::stable) << k << " " << to_string(pts[k].uncertain_because);
+    EXPECT_GT(pts[k].margin, 0.5) << k;
+    EXPECT_LT(pts[k].margin_error, 1e-6) << k;
     const double t = c.curve.number(k, "t_passage");
     EXPECT_TRUE(t > -kTwoPi && t < 2 * kTwoPi) << t;
     EXPECT_NEAR(Lambda_at(k), Lambda_at(0), 1e-11) << k;  // measured 1e-15
@@ -316,6 +321,15 @@ TEST(TransitionCurve, MatchesTheUZOfOneParameterBranchesAtFixedLambda) {
     std::printf("lambda = %.10f: curve Delta = %.13f, one-parameter UZ %.13f, difference %.1e\n", lambda, Delta_c,
                 uz->p, uz->p - Delta_c);
     EXPECT_NEAR(uz->p, Delta_c, 1e-10) << lambda;
+    // The same orbit certified the same way: the same label, and margins (1 - max |mu| of the same
+    // multipliers, from 4 and 8 shooting segments) within the sum of their errors plus the margin's change
+    // over the 1e-10 between the two parameter values (|d margin / d Delta| = O(1)).
+    const BranchPoint& q = pts[k];
+    std::printf("  margins: curve %.12f +- %.1e, branch UZ %.12f +- %.1e\n", q.margin, q.margin_error, uz->margin,
+                uz->margin_error);
+    EXPECT_EQ(q.stability, uz->stability) << lambda;
+    EXPECT_EQ(q.stability, Stability::stable) << lambda;
+    EXPECT_NEAR(q.margin, uz->margin, q.margin_error + uz->margin_error + 1e-9) << lambda;
   }
 }
 
@@ -432,6 +446,10 @@ TEST(TransitionCurve, LambdaStarOfSMatchesTheUZOfABranchInLambdaAtFixedS) {
   ASSERT_NE(uz, nullptr);
   std::printf("S = 3: curve Lambda* = %.13f, one-parameter UZ %.13f\n", Lambda_c, uz->p);
   EXPECT_NEAR(uz->p, Lambda_c, 1e-10);
+  // Certified as the branch's UZ at the same parameters (see MatchesTheUZOfOneParameterBranchesAtFixedLambda).
+  for (const BranchPoint& q : b.points) EXPECT_NE(q.stability, Stability::uncertain) << q.p;
+  EXPECT_EQ(b.points.back().stability, uz->stability);
+  EXPECT_NEAR(b.points.back().margin, uz->margin, b.points.back().margin_error + uz->margin_error + 1e-9);
 }
 
 TEST(TransitionCurve, NoUZOnTheBranchIsAReasonAndEquilibriaHaveNoEvents) {

@@ -122,19 +122,32 @@ TEST(ContinuationTable, ParsesAndNamesBadKeys) {
   const ContinuationPanel c =
       continuation_panel(parse_scene(
           kBase + "[continuation]\nparameter = \"C\"\nmin = 0.01\nmax = 2.0\ndirection = \"forward\"\nmeasure = \"r\"\n"
-                  "max_points = 50\n"));
+                  "max_points = 50\nnewton_tol = 1e-11\nmax_newton = 20\nmonitor = [\"Psi=0.5,0.6\"]\n"
+                  "stop_at = [\"r=0.9\"]\n"));
   EXPECT_EQ(c.parameter, ContinuationParameter::C);
   EXPECT_EQ(c.engine.p_min, 0.01);
   EXPECT_EQ(c.engine.p_max, 2.0);
   EXPECT_EQ(c.engine.direction, Direction::forward);
   EXPECT_EQ(c.measure, "r");
   EXPECT_EQ(c.engine.max_points, 50u);
+  // The tunable options by their keywords (tunable_options.hpp) and the monitors.
+  EXPECT_EQ(c.engine.newton_tol, 1e-11);
+  EXPECT_EQ(c.engine.max_newton, 20);
+  ASSERT_EQ(c.monitors.size(), 2u);
+  EXPECT_EQ(c.monitors[0].name, "Psi");
+  EXPECT_EQ(c.monitors[0].values, (std::vector<double>{0.5, 0.6}));
+  EXPECT_FALSE(c.monitors[0].stop);
+  EXPECT_TRUE(c.monitors[1].stop);
+  EXPECT_EQ(branch_spec(c, Scene{}).monitors.size(), 2u);
   for (const auto& [table, name] :
        {std::pair{"measure = \"Q\"\n", "continuation.measure"},
         std::pair{"parameter = \"kappa\"\n", "continuation.parameter"},
         std::pair{"direction = \"up\"\n", "continuation.direction"},
         std::pair{"min = 2.0\nmax = 1.0\n", "continuation.max"},
-        std::pair{"max_points = 1\n", "continuation.max_points"}, std::pair{"colour = 1\n", "continuation.colour"}}) {
+        std::pair{"max_points = 1\n", "continuation.max_points"}, std::pair{"colour = 1\n", "continuation.colour"},
+        std::pair{"newton_tol = 0.5\n", "continuation.newton_tol: newton_tol = 0.5 is out of range"},
+        std::pair{"monitor = [\"Psi\"]\n", "continuation.monitor"},
+        std::pair{"segments = 4\n", "continuation.segments"}}) {
     const std::string m =
         expect_invalid([&] { (void)continuation_panel(parse_scene(kBase + "[continuation]\n" + table)); });
     EXPECT_NE(m.find(name), std::string::npos) << table << ": " << m;

@@ -39,6 +39,8 @@ void put_stability(nlohmann::json& j, const Point& pt) {
   j["stability"] = to_string(pt.stability);
   j["margin"] = number_or_null(pt.margin);
   j["margin_error"] = number_or_null(pt.margin_error);
+  // Only where the label is uncertain: which quantity made it so (CertificateTerm).
+  if (pt.stability == Stability::uncertain) j["uncertain_because"] = to_string(pt.uncertain_because);
 }
 
 // The parameters by name and the measures by name of one point (its row k).
@@ -213,7 +215,7 @@ void b_table(std::ostream& os, const std::vector<const MeasuredBranch*>& branche
         const BranchPoint& q = m.branch.points[k];
         // The certified label: a margin within its error reads "uncertain", whatever the count says.
         if (q.stability == Stability::uncertain)
-          os << "  uncertain (" << stability_word(q.n_unstable) << ")\n";
+          os << "  uncertain (" << stability_word(q.n_unstable) << "; " << to_string(q.uncertain_because) << ")\n";
         else
           os << "  " << (q.stable ? "stable" : stability_word(q.n_unstable)) << '\n';
       }

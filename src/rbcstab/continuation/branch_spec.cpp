@@ -62,6 +62,16 @@ void BranchSpec::validate() const {
     throw InvalidArgument("min", m.str());
   }
   e.validate();
+  std::vector<std::string> names;
+  for (const Monitor& m : monitors) {
+    m.validate();
+    for (double v : m.values.empty() ? std::vector<double>{0.0} : m.values) {
+      const std::string n = monitor_event_name(m, v);
+      if (std::find(names.begin(), names.end(), n) != names.end())
+        throw InvalidArgument("monitor", "monitor " + n + " is given twice");
+      names.push_back(n);
+    }
+  }
 }
 
 }  // namespace rbcstab

@@ -3,10 +3,12 @@
 // closed domain edges are landed on exactly, a bound beyond one is refused.
 #include <optional>
 #include <string>
+#include <vector>
 #include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/continuation_parameter.hpp"
+#include "rbcstab/continuation/monitors.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/scene_kinds.hpp"
 #include "rbcstab/model/scene.hpp"
@@ -46,9 +48,12 @@ struct BranchSpec {
   // the kind's start, and the scene is the problem's scene as it is (modal_orbit: not rescaled to the
   // total excess area, which it already is).
   std::optional<Eigen::VectorXd> start_state;
+  // Label (UZ) or stop where a parameter or measure reaches given values (monitors.hpp). Not saved in a
+  // branch file; a curve run refuses them.
+  std::vector<Monitor> monitors;
   // Throws InvalidArgument naming the field: switch_at_bp for kinds that cannot switch, the orbit
   // options, the scene's model level against the kind (model), relax_T, relax_tol, relax_max_periods,
-  // label_every, the engine options,
+  // label_every, the engine options, the monitors (monitor: a duplicate target),
   // and a start value (the scene's parameter) outside the bounds (min).
   void validate() const;
 };

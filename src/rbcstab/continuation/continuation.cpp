@@ -10,6 +10,7 @@
 #include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/detail/continuation_engine.hpp"
+#include "rbcstab/continuation/tunable_options.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
@@ -21,19 +22,17 @@ const SpecialPoint* find_special_point(const Branch& b, SpecialPointType type, i
 }
 
 void ContinuationOptions::validate() const {
-  require(std::isfinite(max_step) && max_step > 0, "max_step", max_step, "a finite number > 0");
-  require(std::isfinite(initial_step) && initial_step > 0 && initial_step <= max_step, "initial_step", initial_step,
+  // Each tunable option's domain (tunable_options.hpp), then how they relate.
+  for (const TunableOption& o : tunable_options())
+    if (!o.orbit) o.check(o.get(*this, OrbitOptions{}));
+  require(initial_step <= max_step, "initial_step", initial_step,
           "in (0, max_step] with max_step = " + format_value(max_step));
-  require(std::isfinite(min_step) && min_step > 0 && min_step <= initial_step, "min_step", min_step,
-          "a number in (0, initial_step]");
+  require(min_step <= initial_step, "min_step", min_step, "a number in (0, initial_step]");
   require(step_growth >= 1 && step_growth <= 10, "step_growth", step_growth, "[1, 10]");
   require(step_shrink > 0 && step_shrink < 1, "step_shrink", step_shrink, "(0, 1)");
   require(easy_iterations >= 1, "easy_iterations", easy_iterations, "an integer >= 1");
-  require(max_newton >= 2 && max_newton <= 100, "max_newton", max_newton, "an integer in [2, 100]");
-  require(newton_tol > 0 && newton_tol < 1e-2, "newton_tol", newton_tol, "(0, 1e-2)");
   require(!std::isnan(p_min) && !std::isnan(p_max) && p_min < p_max, "p_min", p_min, "a number < p_max");
   require(max_points >= 2, "max_points", static_cast<double>(max_points), "an integer >= 2");
-  require(location_tol > 0, "location_tol", location_tol, "a number > 0");
   require(max_location_iterations >= 1, "max_location_iterations", max_location_iterations, "an integer >= 1");
   require(stability_tol >= 0, "stability_tol", stability_tol, "a number >= 0");
   require(certificate_refine_margin >= 0, "certificate_refine_margin", certificate_refine_margin,
@@ -155,6 +154,7 @@ BranchPoint Engine::to_branch_point(const Pt& q, double arclength) {
   bp.stability = c.stability;
   bp.margin = c.margin;
   bp.margin_error = c.margin_error;
+  bp.uncertain_because = c.uncertain_because;
   bp.arclength = arclength;
   bp.newton_iterations = q.iterations;
   return bp;
@@ -258,12 +258,18 @@ Branch Engine::run(const Eigen::VectorXd& x0, double p0, double sign) {
     }
     last_domain_error.clear();
     unconfirmed.clear();
+    const std::size_t known = br.special_points.size();
     br.special_points.insert(br.special_points.end(), found.begin(), found.end());
+    const std::string stopped = stop_event(br.special_points, known, a, b);  // b: the stop's point, if any
     arclength += sign * std::abs(a.t.dot(b.X - a.X));
     br.points.push_back(to_branch_point(b, arclength));
     if (o_.on_progress) o_.on_progress(double(br.points.size()), double(o_.max_points));
     const int iters = b.iterations;
     a = std::move(b);
+    if (!stopped.empty()) {
+      br.message = "stopped at " + stopped;
+      break;
+    }
     if (at_bound) {
       br.message = "reached the parameter bound";
       break;

@@ -68,6 +68,21 @@ struct EnumTable<Stability> {
       {Stability::stable, "stable"}, {Stability::unstable, "unstable"}, {Stability::uncertain, "uncertain"}};
 };
 
+// What made a label uncertain (none: it is not): the spectrum is empty or not finite (no margin), a
+// spectral value has no finite error bound, or the largest term of margin_error reaches |margin|: the
+// spectrum's own error, the margin's change when the state moves by its error, or (special points) its
+// change across the located bracket.
+enum class CertificateTerm { none, spectrum, error_bound, spectral_error, state_error, location };
+template <>
+struct EnumTable<CertificateTerm> {
+  static constexpr EnumName<CertificateTerm> entries[] = {{CertificateTerm::none, "none"},
+                                                          {CertificateTerm::spectrum, "spectrum"},
+                                                          {CertificateTerm::error_bound, "error_bound"},
+                                                          {CertificateTerm::spectral_error, "spectral_error"},
+                                                          {CertificateTerm::state_error, "state_error"},
+                                                          {CertificateTerm::location, "location"}};
+};
+
 // margin: the signed distance of the critical spectral value from the stability boundary, > 0 on the
 // stable side: -max Re(lambda) for eigenvalues, 1 - max |mu| over the nontrivial Floquet multipliers.
 // margin_error: an estimate of its error (docs/continuation.md, "Stability certificates").
@@ -75,6 +90,7 @@ struct StabilityCertificate {
   Stability stability = Stability::uncertain;
   double margin = std::numeric_limits<double>::quiet_NaN();
   double margin_error = std::numeric_limits<double>::quiet_NaN();
+  CertificateTerm uncertain_because = CertificateTerm::spectrum;
 };
 // From a certified spectrum: the margin and the range of the critical value the errors allow,
 // [max(a_i - e_i), max(a_i + e_i)] with a_i = Re(lambda_i) or |mu_i| - 1, so margin_error is the larger
@@ -87,10 +103,12 @@ StabilityCertificate certify(const CertifiedSpectrum& spectrum, StabilityKind ki
 StabilityCertificate certify_solution(const ContinuationProblem& problem, const Eigen::VectorXd& x, double p,
                                       double newton_tol = 1e-12);
 
-// A zero of g(x, p) along the branch is reported as a UZ point named `name`.
+// A zero of g(x, p) along the branch is reported as a UZ point named `name`; a stop event also ends the
+// direction at it (the located point is the branch's last; message "stopped at NAME").
 struct UserEvent {
   std::string name;
   std::function<double(const Eigen::VectorXd& x, double p)> g;
+  bool stop = false;
 };
 
 struct ContinuationOptions {
@@ -138,6 +156,7 @@ struct BranchPoint {
   Stability stability = Stability::uncertain;  // the certified label (certify); margin and its error:
   double margin = std::numeric_limits<double>::quiet_NaN();
   double margin_error = std::numeric_limits<double>::quiet_NaN();
+  CertificateTerm uncertain_because = CertificateTerm::spectrum;
   double arclength = 0;  // signed arclength from the start point
   int newton_iterations = 0;
 };
@@ -160,6 +179,7 @@ struct SpecialPoint {
   Stability stability = Stability::uncertain;
   double margin = std::numeric_limits<double>::quiet_NaN();
   double margin_error = std::numeric_limits<double>::quiet_NaN();
+  CertificateTerm uncertain_because = CertificateTerm::spectrum;
 };
 
 struct ContinuationCounters {

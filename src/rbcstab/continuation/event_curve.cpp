@@ -118,4 +118,8 @@ Eigen::VectorXcd EventCurveProblem::spectrum(const Eigen::VectorXd& X, double p2
   return base_.spectrum(X.head(n_), X[n_], p2);
 }
 
+CertifiedSpectrum EventCurveProblem::certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const {
+  return base_.certified_spectrum(X.head(n_), X[n_], p2, refine);
+}
+
 }  // namespace rbcstab

@@ -112,6 +112,8 @@ class EventCurveProblem final : public ContinuationProblem {
   void jacobian(const Eigen::VectorXd& X, double p2, Eigen::MatrixXd& J) const override;
   // The base problem's spectrum and stability (orbits: Floquet multipliers).
   Eigen::VectorXcd spectrum(const Eigen::VectorXd& X, double p2) const override;
+  // The base problem's, as spectrum (not the curve system's Jacobian, whose eigenvalues are not these).
+  CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& X, double p2, bool refine) const override;
   StabilityKind stability_kind() const override { return base_.stability_kind(); }
   std::string parameter_name() const override { return base_.name2(); }
   std::vector<std::string> parameter_names() const override { return {base_.name1(), base_.name2()}; }

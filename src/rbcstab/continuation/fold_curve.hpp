@@ -43,6 +43,12 @@ class SliceProblem final : public ContinuationProblem {
     base_.parameter_derivative(x, p, p2_, Fp);
   }
   std::string parameter_name() const override { return base_.name1(); }
+  // The base problem's dynamics at p2, so its points are certified as the curves' are.
+  Eigen::VectorXcd spectrum(const Eigen::VectorXd& x, double p) const override { return base_.spectrum(x, p, p2_); }
+  CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& x, double p, bool refine) const override {
+    return base_.certified_spectrum(x, p, p2_, refine);
+  }
+  StabilityKind stability_kind() const override { return base_.stability_kind(); }
 
  private:
   const TwoParameterProblem& base_;

@@ -1,6 +1,7 @@
 // Periodic orbits by multiple shooting: the shooting problem, its Floquet data, the relaxation to an
 // orbit, an orbit's summary over one period and its state at any time.
 #include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/continuation/tunable_options.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -40,12 +41,8 @@ IntegratorOptions integrator_options(const OrbitOptions& o) {
 // ---------------------------------------------------------------- options, names
 
 void OrbitOptions::validate() const {
-  require(segments >= 1 && segments <= 1000, "segments", segments, "an integer in [1, 1000]");
-  require(std::isfinite(rtol) && rtol >= 1e-15 && rtol <= 1e-6, "rtol", rtol,
-          "[1e-15, 1e-6] (Floquet multipliers need a tight tolerance)");
-  require(std::isfinite(atol) && atol > 0 && atol <= 1e-6, "atol", atol, "(0, 1e-6]");
-  require(samples_per_segment >= 4 && samples_per_segment <= 100000, "samples_per_segment", samples_per_segment,
-          "an integer in [4, 100000]");
+  for (const TunableOption& o : tunable_options())  // each field's domain (tunable_options.hpp)
+    if (o.orbit) o.check(o.get(ContinuationOptions{}, *this));
 }
 
 // ---------------------------------------------------------------- the shooting problem

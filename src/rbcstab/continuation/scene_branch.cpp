@@ -42,6 +42,9 @@ SceneBranch continue_scene(const BranchSpec& spec) {
   if (r.start.converged && !r.start.refused) {
     ContinuationOptions engine = r.spec.engine;
     for (UserEvent& e : sp->events()) engine.events.push_back(std::move(e));
+    for (UserEvent& e :
+         detail::monitor_events(*sp, measure_names(spec.kind, r.problem_scene.L), spec.monitors, r.start.x, r.start.p))
+      engine.events.push_back(std::move(e));
     b = continue_branch(sp->problem(), r.start.x, r.start.p, engine);
   } else {
     b.parameter_names = sp->problem().parameter_names();

@@ -256,6 +256,9 @@ void CurveSpec::validate(const BranchSpec& branch) const {
                                        (orbit ? "LPC, PD, NS, BP or UZ" : "LP, BP or HB"));
   if (!parameter2) throw InvalidArgument("parameter2", "--curve needs --parameter2 (the second free parameter)");
   if (branch.switch_at_bp) throw InvalidArgument("switch_at_bp", "--switch-at-bp and --curve cannot be combined");
+  // A monitor's UZ points would mix with the events a UZ curve starts from; curves have none.
+  if (!branch.monitors.empty())
+    throw InvalidArgument("monitor", "monitors (--monitor, --stop-at) label one-parameter branches: not with --curve");
   require_independent(branch.parameter, *parameter2, "parameter2");
   if (!(p2_min < p2_max))
     throw InvalidArgument("min2", "min2 = " + std::to_string(p2_min) + " must be < max2 = " + std::to_string(p2_max));

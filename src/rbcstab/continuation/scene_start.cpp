@@ -84,6 +84,7 @@ StartPoint assessed_start(const SceneProblem& sp, const BranchSpec& spec, const 
   s.stability = c.stability;
   s.margin = c.margin;
   s.margin_error = c.margin_error;
+  s.uncertain_because = c.uncertain_because;
   if (c.stability == Stability::stable) return s;
   const bool orbit = is_orbit(spec.kind);
   std::ostringstream m;

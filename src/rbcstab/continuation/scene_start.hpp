@@ -43,6 +43,7 @@ struct StartPoint {
   Stability stability = Stability::uncertain;
   double margin = std::numeric_limits<double>::quiet_NaN();
   double margin_error = std::numeric_limits<double>::quiet_NaN();
+  CertificateTerm uncertain_because = CertificateTerm::spectrum;
   bool refused = false;  // an orbit certified unstable without spec.allow_unstable_start: not continued
   // Why it failed or was refused; else a note (an unstable or uncertain start, a relaxation that
   // reached its bound), or empty.

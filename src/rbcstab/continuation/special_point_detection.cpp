@@ -229,4 +229,21 @@ std::string Engine::unconfirmed_change(const Pt& a, const Pt& b, const std::vect
   return "";
 }
 
+std::string Engine::stop_event(std::vector<SpecialPoint>& special, std::size_t first, const Pt& a, Pt& end) {
+  for (std::size_t k = first; k < special.size(); ++k) {
+    const SpecialPoint& sp = special[k];
+    if (sp.type != SpecialPointType::UZ) continue;
+    const auto e =
+        std::find_if(o_.events.begin(), o_.events.end(), [&](const UserEvent& u) { return u.name == sp.name; });
+    if (e == o_.events.end() || !e->stop) continue;
+    Eigen::VectorXd X(N_);
+    X << sp.x, sp.p;
+    end = finish(X, a.t, 0);
+    const std::string name = sp.name + (sp.status == LocationStatus::located ? "" : " (not located: a guess)");
+    special.erase(special.begin() + static_cast<std::ptrdiff_t>(k) + 1, special.end());
+    return name;
+  }
+  return {};
+}
+
 }  // namespace rbcstab::detail

@@ -31,6 +31,21 @@ Stability label(double margin, double margin_error) {
   return margin > 0 ? Stability::stable : Stability::unstable;
 }
 
+// c's label after margin_error grew by a term of size `term`: an uncertain label names the largest term
+// (`largest` when this one is, else the one named before; a label made uncertain only now: this one).
+void relabel(StabilityCertificate& c, double previous_error, double term, CertificateTerm kind) {
+  const Stability before = c.stability;
+  c.stability = label(c.margin, c.margin_error);
+  if (c.stability != Stability::uncertain)
+    c.uncertain_because = CertificateTerm::none;
+  else if (!std::isfinite(c.margin))
+    c.uncertain_because = CertificateTerm::spectrum;
+  else if (!(c.margin_error < std::numeric_limits<double>::infinity()))
+    c.uncertain_because = CertificateTerm::error_bound;
+  else if (before != Stability::uncertain || term > previous_error)
+    c.uncertain_because = kind;
+}
+
 // How far a Newton solution may be off: the next Newton step, but at least the accuracy the corrector
 // accepts (tol: newton_tol (1 + |X|)), since a residual that rounds to 0 gives a zero step without an
 // exact state (e.g. a spectrum that cancels to 1e-32 at a degenerate point). Along a zero step the
@@ -57,8 +72,10 @@ void add_state_term(StabilityCertificate& c, const ContinuationProblem& problem,
   } catch (const InvalidArgument&) {
     return;  // the step left the problem's domain
   }
-  if (std::isfinite(m)) c.margin_error = std::max(c.margin_error, std::abs(m - c.margin));
-  c.stability = label(c.margin, c.margin_error);
+  if (!std::isfinite(m)) return;
+  const double previous = c.margin_error, term = std::abs(m - c.margin);
+  c.margin_error = std::max(previous, term);
+  relabel(c, previous, term, CertificateTerm::state_error);
 }
 
 }  // namespace
@@ -81,6 +98,10 @@ StabilityCertificate certify(const CertifiedSpectrum& spectrum, StabilityKind ki
   c.margin_error =
       known && std::isfinite(c.margin) ? std::max(hi - a, a - lo) : std::numeric_limits<double>::quiet_NaN();
   c.stability = label(c.margin, c.margin_error);
+  c.uncertain_because = c.stability != Stability::uncertain ? CertificateTerm::none
+                        : !std::isfinite(c.margin)          ? CertificateTerm::spectrum
+                        : !(c.margin_error < inf)           ? CertificateTerm::error_bound
+                                                            : CertificateTerm::spectral_error;
   return c;
 }
 
@@ -124,9 +145,16 @@ StabilityCertificate Engine::certificate(const Pt& q, bool special) {
 // its certificate, whose error also covers the margin's change across the bracket.
 void Engine::set_certificate(SpecialPoint& sp, const Pt& q, double m_lo, double m_hi) {
   const StabilityCertificate c = certificate(q, true);
-  sp.margin = c.margin;
-  sp.margin_error = c.margin_error + std::abs(m_hi - m_lo);
-  sp.stability = label(sp.margin, sp.margin_error);
+  StabilityCertificate w = c;
+  const double bracket = std::abs(m_hi - m_lo);
+  // A bracket whose margins are unknown leaves the error unknown (NaN), as the sum did.
+  w.margin_error = c.margin_error + bracket;
+  relabel(w, c.margin_error, std::isnan(bracket) ? std::numeric_limits<double>::infinity() : bracket,
+          CertificateTerm::location);
+  sp.margin = w.margin;
+  sp.margin_error = w.margin_error;
+  sp.stability = w.stability;
+  sp.uncertain_because = w.uncertain_because;
 }
 
 double Engine::margin(const Pt& q) const { return margin_of(q.spectrum, pr_.stability_kind()); }

@@ -15,6 +15,7 @@
 
 #include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/continuation/scene_run.hpp"
+#include "rbcstab/continuation/tunable_options.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
@@ -170,7 +171,11 @@ ContinuationPanel continuation_panel(const SceneFile& sf) {
   if (!sf.continuation) return c;
   c.engine.direction = Direction::both;
   const SceneTable& t = *sf.continuation;
-  t.allow_only({"parameter", "min", "max", "direction", "measure", "step", "max_step", "max_points", "relax_T"});
+  std::set<std::string> keys{"parameter",  "min",     "max",     "direction", "measure",
+                             "max_points", "relax_T", "monitor", "stop_at"};
+  for (const TunableOption& o : tunable_options())
+    if (!o.orbit) keys.insert(o.keyword());  // the panel's branch is of equilibria: no shooting options
+  t.allow_only(keys);
   if (t.has("parameter")) {
     try {
       c.parameter = continuation_parameter_from_string(t.text("parameter"));
@@ -190,8 +195,25 @@ ContinuationPanel continuation_panel(const SceneFile& sf) {
     if (c.measure != "r" && c.measure != "Psi")
       throw InvalidArgument("continuation.measure", "continuation.measure = '" + c.measure + "' must be r or Psi");
   }
-  if (t.has("step")) c.engine.initial_step = t.number("step");
-  if (t.has("max_step")) c.engine.max_step = t.number("max_step");
+  OrbitOptions unused;
+  for (const TunableOption& o : tunable_options()) {
+    if (o.orbit || !t.has(o.keyword())) continue;
+    const double v = t.number(o.keyword());
+    try {
+      o.check(v);
+    } catch (const InvalidArgument& e) {
+      throw InvalidArgument(t.path(o.keyword()), t.path(o.keyword()) + ": " + e.what());
+    }
+    o.set(c.engine, unused, v);
+  }
+  for (const auto& [key, stop] : {std::pair{"monitor", false}, std::pair{"stop_at", true}}) {
+    if (!t.has(key)) continue;
+    for (const std::string& m : t.texts(key, 0, "a list of \"NAME=V1,V2,...\" strings")) try {
+        c.monitors.push_back(parse_monitor(m, stop, t.path(key)));
+      } catch (const InvalidArgument& e) {
+        throw InvalidArgument(t.path(key), t.path(key) + ": " + e.what());
+      }
+  }
   if (t.has("max_points")) {
     const long long n = t.integer("max_points");
     require(n >= 2 && n <= 1'000'000, "continuation.max_points", double(n), "an integer in [2, 1000000]");
@@ -213,6 +235,7 @@ BranchSpec branch_spec(const ContinuationPanel& panel, const Scene& scene) {
   spec.kind = ProblemKind::equilibrium;
   spec.parameter = panel.parameter;
   spec.engine = panel.engine;
+  spec.monitors = panel.monitors;
   spec.relax_T = panel.relax_T;
   return spec;
 }

@@ -57,9 +57,10 @@ std::string fig6e_csv(const Fig6eOptions& options, const std::vector<Fig6eRow>& 
 // InvalidArgument naming "continuation.<key>".
 struct ContinuationPanel {
   ContinuationParameter parameter = ContinuationParameter::lambda;
-  std::string measure = "Psi";  // the tank-treading angle shows the fold at Lambda = 1; r is 1 on that branch
-  double relax_T = 200;         // relaxation that gives the start state (as `rbcstab continue --relax-T`)
-  ContinuationOptions engine;   // p_min, p_max, direction, steps; validated by continue_branch
+  std::string measure = "Psi";    // the tank-treading angle shows the fold at Lambda = 1; r is 1 on that branch
+  double relax_T = 200;           // relaxation that gives the start state (as `rbcstab continue --relax-T`)
+  ContinuationOptions engine;     // p_min, p_max, direction, steps; validated by continue_branch
+  std::vector<Monitor> monitors;  // monitor = ["NAME=V1,V2"], stop_at = ["NAME=V"]
 };
 ContinuationPanel continuation_panel(const SceneFile& scene);
 // The panel's branch: reduced-system equilibria from the scene, as `rbcstab continue` (same start, bounds).

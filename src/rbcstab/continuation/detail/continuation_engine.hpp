@@ -49,6 +49,10 @@ class Engine {
   SpecialPointType unresolved_type(const Pt& a, const Pt& b) const;
   void detect(const Pt& a, const Pt& b, std::size_t after, int depth, std::vector<SpecialPoint>& out);
   std::string unconfirmed_change(const Pt& a, const Pt& b, const std::vector<SpecialPoint>& found) const;
+  // The first special point from index `first` on that is a stop event's UZ (UserEvent::stop): the points
+  // after it are dropped and `end` is it, as a point of the branch (tangent oriented by a's). Returns its
+  // name, or "" when there is none.
+  std::string stop_event(std::vector<SpecialPoint>& special, std::size_t first, const Pt& a, Pt& end);
   StabilityCertificate certificate(const Pt& q, bool special);
   void set_certificate(SpecialPoint& sp, const Pt& q, double m_lo, double m_hi);
   double margin(const Pt& q) const;

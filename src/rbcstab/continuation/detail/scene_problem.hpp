@@ -9,6 +9,7 @@
 #include "rbcstab/continuation/branch_spec.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/detail/scene_measures.hpp"
+#include "rbcstab/continuation/monitors.hpp"
 #include "rbcstab/continuation/problem.hpp"
 #include "rbcstab/continuation/scene_branch.hpp"
 #include "rbcstab/continuation/scene_start.hpp"
@@ -29,6 +30,12 @@ class SceneProblem {
 
 std::unique_ptr<SceneProblem> make_problem(const BranchSpec& spec, const Scene& scene);
 MeasuredBranch measure_branch(const SceneProblem& sp, const SceneBranch& r, Branch b);
+
+// The events of `monitors` over sp's parameters and measures (measure_names: aligned with sp.measures);
+// (x0, p0), the start, shows which measures are numbers. Throws InvalidArgument("monitor", ...) for an
+// unknown name or one that is not a continuous number.
+std::vector<UserEvent> monitor_events(const SceneProblem& sp, const std::vector<std::string>& measure_names,
+                                      const std::vector<Monitor>& monitors, const Eigen::VectorXd& x0, double p0);
 
 StartPoint given_start(StartMethod method, Eigen::VectorXd x, double p);
 // Newton at fixed p from `guess`; `what` names the solution sought in the failure message.
