@@ -109,6 +109,10 @@ BranchSpec restart_spec(const ContinuationRun& run, int label, const RestartChan
   s.start_state = labelled_state(run, lp);
   s.switch_at_bp = false;
   apply_changes(s, changes);
+  // The point's own value of the parameter continued in, when it is one of the point's parameters.
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (continuation_parameter_from_string(m.branch.parameter_names.at(i)) == s.parameter)
+      s.start_parameter = values[i];
   s.validate();
   return s;
 }
@@ -190,7 +194,7 @@ SceneCurve restart_curve(const ContinuationRun& run, int label, const CurveSpec&
   one.problem_scene = one.spec.scene;
   one.start.method = StartMethod::restart;
   one.start.x = *one.spec.start_state;
-  one.start.p = get_parameter(one.problem_scene, one.spec.parameter);
+  one.start.p = start_value(one.spec);
   one.branch.measure_names = measure_names(one.spec.kind, one.problem_scene.L);
   one.branch.branch.parameter_names = {to_string(one.spec.parameter)};
   curve.validate(one.spec);
