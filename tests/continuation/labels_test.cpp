@@ -4,14 +4,17 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
+#include "continuation/fig2_fixture.hpp"
 #include "continuation/modal_fixtures.hpp"
 #include "continuation/scene_spec_fixture.hpp"
 #include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/continuation/branch_labels.hpp"
+#include "rbcstab/continuation/scene_curve.hpp"
 #include "rbcstab/continuation/scene_restart.hpp"
 #include "rbcstab/io/json.hpp"
 
@@ -124,6 +127,95 @@ TEST(BranchPointMode, DocsSwitchAtTheOnsetIsTheL3BP) {
   ASSERT_GE(sw.branch.special_points.size(), 1u);
   EXPECT_NEAR(sw.branch.special_points[0].p, 1.0 / 60, 1e-9);
   EXPECT_EQ(sw.branch.special_points[0].mode_l, std::optional<int>(4));
+}
+
+// A restart in a composite parameter (Lambda, moved through Delta) to the value of one of the run's own
+// labels: the start is the label's value, bit for bit, and the branch reaches it. Rebuilding Lambda from
+// the scene's Delta (what a restart did) lands off it by rounding for some labels, and a bound set to the
+// label's value then refused the start: counted here, so this test would fail if that never happened.
+TEST(LabelRestart, ReachesALabelsValueInACompositeParameter) {
+  Scene scene = modal_fixtures::scene(0.04, 2);
+  const SceneBranch r =
+      continue_scene(test::spec_of(scene, ProblemKind::equilibrium, P::Lambda, 0.5, 3, Direction::both));
+  const ContinuationRun run = round_trip(r);
+  int rebuilt_off = 0, restarts = 0;
+  for (const LabelledPoint& lp : labelled_points(run)) {
+    if (lp.special || !lp.type.empty()) continue;  // the regular labels (the ends are the bounds)
+    const double v = r.branch.branch.points[lp.index].p;
+    for (const bool up : {true, false}) {
+      RestartChanges ch;
+      (up ? ch.p_max : ch.p_min) = v;
+      BranchSpec spec = restart_spec(run, lp.label, ch);
+      ASSERT_TRUE(spec.start_parameter.has_value());
+      EXPECT_EQ(*spec.start_parameter, v);
+      const SceneBranch again = continue_scene(spec);
+      ASSERT_TRUE(again.start.converged) << lp.label;
+      EXPECT_EQ(again.start.p, v);
+      EXPECT_EQ(up ? again.branch.branch.points.back().p : again.branch.branch.points.front().p, v) << lp.label;
+      ++restarts;
+      spec.start_parameter.reset();
+      try {
+        spec.validate();
+      } catch (const InvalidArgument&) {
+        ++rebuilt_off;
+      }
+    }
+  }
+  EXPECT_GE(restarts, 6);
+  EXPECT_GE(rebuilt_off, 1);
+  std::printf("%d of %d restarts refused with Lambda rebuilt from Delta\n", rebuilt_off, restarts);
+}
+
+// A branch continued to a BP's own value (the onset's C, from a regular label of the same run) stops within
+// rounding of the crossing: the BP is the end point, at the label's value exactly, not a secant probe up to
+// location_tol (1e-11) before it; and it names its mode.
+TEST(LabelRestart, ABPAtTheRangeEndIsTheEndPoint) {
+  const ContinuationRun run = round_trip(onset_run());
+  const Branch& b = onset_run().branch.branch;
+  RestartChanges ch;
+  ch.p_min = b.special_points[2].p;  // the l = 4 BP
+  ch.p_max = b.special_points[3].p;  // the onset
+  const SceneBranch again = restart(run, onset_run().branch.point_labels[10], ch);
+  ASSERT_TRUE(again.start.converged);
+  const auto& sps = again.branch.branch.special_points;
+  ASSERT_FALSE(sps.empty());
+  const SpecialPoint& last = sps.back();
+  EXPECT_EQ(last.type, SpecialPointType::BP);
+  EXPECT_EQ(last.p, b.special_points[3].p);
+  // Against the closed form: the root of sigma_eq(C) = sigma_3^c(B/C) (bisection to the last bit), 1e-13.
+  const double root = modal_fixtures::threshold_root(modal_fixtures::scene(0.04, 6).parameters, P::C, 3, 0.03, 0.04);
+  EXPECT_NEAR(last.p, root, 1e-13);
+  std::printf("onset at the range end: %.3e from the closed-form root\n", last.p - root);
+  EXPECT_EQ(last.mode_l, std::optional<int>(3));
+  EXPECT_EQ(last.status, LocationStatus::located);
+}
+
+// The points of a UZ curve's own file start that curve again: a regular point of the curve and its far
+// end (outside the one-parameter branch's bounds in Delta), each giving a curve through the same points
+// (Delta at the curve's lambda bounds to 1e-9: both converged to 1e-12 on a regular curve).
+TEST(LabelRestart, UZCurvePointsRestartTheirCurve) {
+  BranchSpec spec =
+      test::spec_of(test::fig2_in_plane(0.3), ProblemKind::orbit, P::Delta, 0.3, 0.45, Direction::forward);
+  const SceneCurve c = continue_curve(spec, test::curve_of(CurveKind::UZ, P::lambda, 4.8, 5.6));
+  ASSERT_TRUE(c.started) << c.message;
+  const ContinuationRun run = round_trip(c);
+  const MeasuredBranch& m = c.curve;
+  ASSERT_GE(m.branch.points.size(), 3u);
+  auto Delta_at = [](const MeasuredBranch& k, double lambda) {
+    for (const BranchPoint& q : k.branch.points)
+      if (q.parameters.at(1) == lambda) return q.parameters.at(0);
+    return std::nan("");
+  };
+  int tried = 0;
+  for (const LabelledPoint& lp : labelled_points(run)) {
+    if (lp.branch != 2 || lp.special) continue;
+    const SceneCurve again = restart_curve(run, lp.label, test::curve_of(CurveKind::UZ, P::lambda, 4.8, 5.6));
+    ASSERT_TRUE(again.started) << lp.label << ": " << again.message;
+    for (const double lambda : {4.8, 5.6})
+      EXPECT_NEAR(Delta_at(again.curve, lambda), Delta_at(m, lambda), 1e-9) << lp.label;
+    ++tried;
+  }
+  EXPECT_GE(tried, 2);
 }
 
 }  // namespace

@@ -357,14 +357,17 @@ TEST(OrbitNormalForms, PeriodDoublingCurveInTwoParameters) {
               c.special_points.size());
 }
 
-// x' = -(x - x_q(t)) + x_q'(t): the orbit x_q(t) = (2 + cos t, sin t + 0.3 p sin 2t) attracts
-// (multipliers e^{-2 pi}) and does not wind around 0, so r = |x| and Psi = -arg x have interior extrema.
+// x' = -(x - x_q(t)) + x_q'(t): the orbit x_q(t) = (2 + cos(t + 0.37), sin t + 0.3 p sin 2t) attracts
+// (multipliers e^{-2 pi}) and does not wind around 0, so r = |x| and Psi = -arg x have extrema between
+// the samples (the phase 0.37 keeps r's off t = 0).
 class ForcedOffset final : public ForcedSystem {
  public:
-  static Eigen::Vector2d xq(double t, double p) { return {2 + std::cos(t), std::sin(t) + 0.3 * p * std::sin(2 * t)}; }
+  static Eigen::Vector2d xq(double t, double p) {
+    return {2 + std::cos(t + 0.37), std::sin(t) + 0.3 * p * std::sin(2 * t)};
+  }
   Eigen::Index dimension() const override { return 2; }
   void rhs(double t, std::span<const double> x, double p, std::span<double> f) const override {
-    const Eigen::Vector2d q = xq(t, p), dq(-std::sin(t), std::cos(t) + 0.6 * p * std::cos(2 * t));
+    const Eigen::Vector2d q = xq(t, p), dq(-std::sin(t + 0.37), std::cos(t) + 0.6 * p * std::cos(2 * t));
     f[0] = -(x[0] - q[0]) + dq[0];
     f[1] = -(x[1] - q[1]) + dq[1];
   }

@@ -150,8 +150,7 @@ std::string mode_text(const SpecialPoint& sp) {
 void special_lines(std::ostream& os, const Branch& b, const std::string& parameter, const char* indent) {
   for (const auto& sp : b.special_points)
     os << indent << sp.name << " " << parameter << " = " << sp.p << " (" << to_string(sp.status) << ", precision "
-       << sp.precision << ", unstable " << sp.unstable_before << " -> " << sp.unstable_after << mode_text(sp)
-       << ")\n";
+       << sp.precision << ", unstable " << sp.unstable_before << " -> " << sp.unstable_after << mode_text(sp) << ")\n";
 }
 
 // The text table's measures: the chosen ones, or the default list those of the branch.

@@ -160,8 +160,9 @@ int resolve_label(const ContinuationRun& run, const std::string& selector, const
   std::string list;
   for (const LabelledPoint& p : hits.empty() ? of_type : hits) list += (list.empty() ? "" : ", ") + described(run, p);
   if (hits.empty())
-    throw InvalidArgument(flag, flag + " = '" + selector + "' matches no labelled point of this run: " +
-                                    (list.empty() ? "it has no point of type " + type : "its " + type + " labels are " + list));
+    throw InvalidArgument(
+        flag, flag + " = '" + selector + "' matches no labelled point of this run: " +
+                  (list.empty() ? "it has no point of type " + type : "its " + type + " labels are " + list));
   throw InvalidArgument(flag, flag + " = '" + selector + "' matches " + std::to_string(hits.size()) +
                                   " labelled points, " + list + ": give the label or the mode (:l=L, :m=M)");
 }

@@ -54,9 +54,9 @@ void BranchSpec::validate() const {
   ContinuationOptions e = engine;
   set_domain_bounds(e, parameter, engine.p_min, engine.p_max);
   if (start_parameter && !start_state)
-    throw InvalidArgument("start_parameter", "start_parameter needs start_state (the labelled point it is the value of)");
-  if (start_parameter)
-    require(std::isfinite(*start_parameter), "start_parameter", *start_parameter, "a finite number");
+    throw InvalidArgument("start_parameter",
+                          "start_parameter needs start_state (the labelled point it is the value of)");
+  if (start_parameter) require(std::isfinite(*start_parameter), "start_parameter", *start_parameter, "a finite number");
   const double p_start = start_value(*this);
   if (!(p_start >= e.p_min && p_start <= e.p_max)) {
     std::ostringstream m;

@@ -442,7 +442,8 @@ OrbitPoint PeriodicOrbitProblem::point_at(const Eigen::VectorXd& X, double p, do
 }
 
 UserEvent PeriodicOrbitProblem::transition_event(const std::string& name) const {
-  return UserEvent{name, [this](const Eigen::VectorXd& X, double p) { return summary(X, p, false).transition_function; }};
+  return UserEvent{name,
+                   [this](const Eigen::VectorXd& X, double p) { return summary(X, p, false).transition_function; }};
 }
 
 }  // namespace rbcstab

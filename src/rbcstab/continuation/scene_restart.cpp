@@ -190,7 +190,12 @@ SceneCurve restart_curve(const ContinuationRun& run, int label, const CurveSpec&
                                        ": --curve " + T + " starts from a point of type " + T + " or a point of a " +
                                        T + " curve");
   SceneBranch one;
-  one.spec = restart_spec(run, label, changes);
+  // The curve leaves its first parameter free (the run's bounds in it bounded the branch the curve
+  // started from, not the curve): a point of the curve outside them is still a start for it.
+  RestartChanges free_p1 = changes;
+  if (curve_point && !changes.p_min) free_p1.p_min = -std::numeric_limits<double>::infinity();
+  if (curve_point && !changes.p_max) free_p1.p_max = std::numeric_limits<double>::infinity();
+  one.spec = restart_spec(run, label, free_p1);
   one.problem_scene = one.spec.scene;
   one.start.method = StartMethod::restart;
   one.start.x = *one.spec.start_state;
@@ -205,7 +210,7 @@ SceneCurve restart_curve(const ContinuationRun& run, int label, const CurveSpec&
     // A point of a curve is a located point of its type at the curve's value of the second parameter.
     sp = SpecialPoint{};
     sp.type = type;
-    sp.name = T;
+    sp.name = on->start.name;  // a UZ curve's event (its point's own type name otherwise)
     sp.status = LocationStatus::located;
     sp.p = one.start.p;
     sp.parameters = {sp.p};

@@ -91,6 +91,15 @@ bool Engine::locate(const Pt& a, const Pt& b, int slot, int event, std::size_t a
       side = 1;
     }
   }
+  // A zero within location_tol in p of a step end that lies on a parameter bound (a branch continued to a
+  // special point's own value, stopping within rounding of it): the secant cannot tell the two apart (its
+  // bracket there is as wide as the tolerance; measured 5.6e-12 short of a BP at the end), and the end is
+  // the point computed at that value, so the end is reported.
+  const double bp = b.X[n_];
+  if ((bp == o_.p_max || bp == o_.p_min) && std::abs(bp - best.X[n_]) <= o_.location_tol) {
+    best = b;
+    X_hi = b.X;
+  }
   sp.type = event >= 0 ? SpecialPointType::UZ : slot_type(slot);
   sp.name = event >= 0 ? o_.events[static_cast<std::size_t>(event)].name : to_string(sp.type);
   sp.x = best.X.head(n_);
