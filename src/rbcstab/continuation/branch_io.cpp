@@ -138,7 +138,7 @@ std::string mode_direction(const SpecialPoint& sp) {
   return sp.unstable_after > sp.unstable_before ? "unstable" : "stable";
 }
 
-// ", mode l = 3 (m = 0) becoming stable" for a BP whose mode is known, else "".
+// ", mode l = 4 m = 0 becoming stable" for a BP whose mode is known, else "".
 std::string mode_text(const SpecialPoint& sp) {
   if (!sp.mode_l) return "";
   std::string t = ", mode l = " + std::to_string(*sp.mode_l);
