@@ -51,7 +51,7 @@ struct ContinueOptions {
   std::string measures;  // text table: comma-separated measure names
   // A restart: the run in this branch file, from label N (--label) or switching at BP label N (--switch-at).
   std::string restart;
-  int label = 0, switch_at = 0;
+  std::string label, switch_at;  // a label's number or TYPE[:l=L][:m=M] (resolve_label)
   // Flags a restart takes from the command line only when given (else from the file).
   ProgressOutput progress;
   CLI::Option *o_kind{}, *o_parameter{}, *o_min{}, *o_max{}, *o_direction{}, *o_max_points{}, *o_label_every{},
@@ -105,7 +105,8 @@ int report(const ContinueOptions& o, const std::string& L_reason, const Continua
 // --restart FILE: from --label N (a branch in --parameter, or with --curve that point's curve) or
 // --switch-at N. The scene, kind and segments are the file's.
 int run_restart(const ContinueOptions& o, const std::optional<CurveSpec>& curve) {
-  RestartRequest q{o.label, o.switch_at, curve, {}};
+  // The flags' combination checked before the file is read; the labels resolved in the file's run.
+  RestartRequest q{o.o_label->count() > 0 ? 1 : 0, o.o_switch_at->count() > 0 ? 1 : 0, curve, {}};
   q.validate();
   const std::string from_file = "--restart takes the scene from the branch file: ";
   if (!o.scene.scene_path.empty()) throw InvalidArgument("restart", from_file + "--scene cannot change it");
@@ -121,6 +122,8 @@ int run_restart(const ContinueOptions& o, const std::optional<CurveSpec>& curve)
   if (!o.monitors.empty() || !o.stops.empty())
     throw InvalidArgument("monitor", "--monitor and --stop-at apply to a new branch, not to --restart");
   const ContinuationRun run = load_branch(o.restart);
+  if (q.label > 0) q.label = resolve_label(run, o.label, "label");
+  if (q.switch_at > 0) q.switch_at = resolve_label(run, o.switch_at, "switch_at");
   RestartChanges& ch = q.changes;
   if (o.o_kind->count() > 0) ch.kind = problem_kind_from_string(o.kind);
   if (o.o_parameter->count() > 0) ch.parameter = continuation_parameter_from_string(o.parameter);
@@ -261,12 +264,12 @@ Runner add_continue(CLI::App& app) {
   app.add_option("--restart", o->restart,
                  "continue from a labelled point of this branch file (--save): with --label N in --parameter (default: "
                  "the file's) or, with --curve, that point's curve; or --switch-at N. Scene and kind are the file's");
-  o->o_label = app.add_option("--label", o->label, "--restart: the label to start from, an integer in [1, 1000000000]")
-                   ->check(integer_in(1, 1000000000));
+  o->o_label = app.add_option("--label", o->label,
+                              "--restart: the label to start from, an integer in [1, 1000000000], or the one special "
+                              "point of a type and mode, TYPE[:l=L][:m=M] (e.g. BP:l=3: the BP of mode l = 3)");
   o->o_switch_at = app.add_option("--switch-at", o->switch_at,
                                   "--restart: switch onto the other branch at the BP with this label (equilibrium, "
-                                  "modal, full, modal-orbit), an integer in [1, 1000000000]")
-                       ->check(integer_in(1, 1000000000));
+                                  "modal, full, modal-orbit), an integer in [1, 1000000000] or BP:l=L[:m=M]");
   o->progress.add_flags(app);
   return [o] { return run(*o); };
 }

@@ -238,6 +238,11 @@ def test_the_l4_branch_point_lies_at_the_closed_form_threshold(full_branch):
     # located to a bracket < 1e-11; 1e-8 as the C++ test (the closed form's root is exact to the last bit)
     assert bp["status"] == "located" and bp["C"] == pytest.approx(C4, abs=1e-8)
     assert bp["label"] in full_branch.labels("BP")
+    # its mode: l = 4, m = 0 (the full model's real mode crossing 0; m != 0 cross as pairs +- i m / 2), the
+    # ellipsoid stabilising as C grows (branch order: C decreasing here, so it becomes unstable)
+    assert (bp["mode_l"], bp["mode_m"], bp["mode_direction"]) == (4, 0, "unstable")
+    assert full_branch.labels("BP", l=4) == [bp["label"]] == full_branch.labels("BP", l=4, m=0)
+    assert full_branch.labels("BP", l=3) == [] and full_branch.labels("BP", l=4, m=1) == []
     assert set(bp) >= {"type", "label", "C", "precision", "stability", "margin", "margin_error"}
     # the branch itself against the closed form: sigma and Delta_l at every point, 1e-10
     for k, C in enumerate(full_branch["C"]):
@@ -498,3 +503,18 @@ def test_shear_rate_continuation_needs_a_physical_scene_and_matches_the_converte
         bq = 1 + Lam**2 + S**-2
         u = 2 / (bq + math.sqrt(bq * bq - 4 * Lam**2))
         assert r == pytest.approx(math.sqrt(u), abs=1e-10)
+
+
+def test_the_quickstart_switches_at_the_onset():
+    # docs/python.md's quickstart: labels("BP", l=3) is the onset at C = 0.0362, where sigma = sigma_3^c(B / C)
+    # (closed form; located to ~1e-11 in C, d sigma / dC ~ 1e3: 1e-8), not the l = 6 BP at C = 0.0137.
+    scene = rbcstab.Scene(lambda_=5, B=2, C=0.04, Delta=1, Delta0=0.01)
+    branch = rbcstab.continuation(scene.replace(lambda_=1, B=1, L=6), kind="modal", parameter="C", min=0.01, max=0.1)
+    assert [sp["mode_l"] for sp in branch.special_points] == [6, 5, 4, 3]
+    bp = branch.labels("BP", l=3)[0]
+    sp = next(sp for sp in branch.special_points if sp["label"] == bp)
+    assert sp["C"] == pytest.approx(0.0361689, abs=1e-6)
+    assert sp["sigma"] == pytest.approx(sigma_c(3, 1 / sp["C"]), abs=1e-8)
+    post = branch.switch(bp).switched
+    for C, sigma in zip(post["C"], post["sigma"]):
+        assert sigma == pytest.approx(sigma_c(3, 1 / C), abs=1e-10)

@@ -143,6 +143,20 @@ elseif(CASE STREQUAL "switch_onset")
   run_ok(again continue --restart ${WORK}/o.json --switch-at ${lbp} --json --save ${WORK}/o2.json)
   string(JSON s2 GET "${again}" switched_branch branch ${last} sigma)
   expect_close("sigma at C = 0.01 (--switch-at)" "${s2}" "-45.333333333333" 100)
+  # The onset BP names its mode (l = 3, the modal a_3 has no m, stabilising as C grows), and
+  # --switch-at BP:l=3 (docs/continuation.md's walk-through) is that same switch.
+  string(JSON ml GET "${out}" special_points 3 mode_l)
+  string(JSON mm TYPE "${out}" special_points 3 mode_m)
+  string(JSON md GET "${out}" special_points 3 mode_direction)
+  if(NOT ml EQUAL 3 OR NOT mm STREQUAL "NULL" OR NOT md STREQUAL "stable")
+    fail("onset BP mode: l = ${ml}, m ${mm}, direction ${md}")
+  endif()
+  run_ok(by_mode continue --restart ${WORK}/o.json --switch-at BP:l=3 --json)
+  string(JSON bm GET "${by_mode}" switched_branch bp_label)
+  string(JSON s3 GET "${by_mode}" switched_branch branch ${last} sigma)
+  if(NOT bm EQUAL lbp OR NOT s3 STREQUAL s2)
+    fail("--switch-at BP:l=3 switched at label ${bm} (sigma ${s3}), the onset is ${lbp} (sigma ${s2})")
+  endif()
   special_label("${out}" BP C 0.0262 0.0264 l4 C4)
   run_ok(text continue --restart ${WORK}/o.json --switch-at ${l4} --measures sigma)
   string(REGEX MATCH "switched at BP label ${l4} at C = 0\\.02629320026; [0-9]+ points in C from 0\\.0262[0-9]* to 0\\.01," sw "${text}")
@@ -197,6 +211,11 @@ elseif(CASE STREQUAL "restart_bad_input")
   file(WRITE ${WORK}/cut.json "${cut}")
   expect_bad_input("label = 99 is not a label of this run: its labels are 1 to" continue --restart ${WORK}/m.json --label 99)
   expect_bad_input("switch_at = 1 is a point of type EP, not a BP" continue --restart ${WORK}/m.json --switch-at 1)
+  expect_bad_input("switch_at = 'BP' matches 3 labelled points" continue --restart ${WORK}/m.json --switch-at BP)
+  expect_bad_input("label = 'BP:l=9' matches no labelled point of this run: its BP labels are"
+                   continue --restart ${WORK}/m.json --label BP:l=9)
+  expect_bad_input("label = '0' must be a label, an integer in [1, 1000000000], or TYPE[:l=L][:m=M]"
+                   continue --restart ${WORK}/m.json --label 0)
   expect_bad_input("restart = '${WORK}/plain.json' is not a valid branch file: it has no \"format\": \"rbcstab-branch\""
                  continue --restart ${WORK}/plain.json --label 1)
   expect_bad_input("restart = '${WORK}/cut.json' is not a valid branch file: it is not JSON (a truncated"

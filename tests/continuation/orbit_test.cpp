@@ -357,6 +357,69 @@ TEST(OrbitNormalForms, PeriodDoublingCurveInTwoParameters) {
               c.special_points.size());
 }
 
+// x' = -(x - x_q(t)) + x_q'(t): the orbit x_q(t) = (2 + cos(t + 0.37), sin t + 0.3 p sin 2t) attracts
+// (multipliers e^{-2 pi}) and does not wind around 0, so r = |x| and Psi = -arg x have extrema between
+// the samples (the phase 0.37 keeps r's off t = 0).
+class ForcedOffset final : public ForcedSystem {
+ public:
+  static Eigen::Vector2d xq(double t, double p) {
+    return {2 + std::cos(t + 0.37), std::sin(t) + 0.3 * p * std::sin(2 * t)};
+  }
+  Eigen::Index dimension() const override { return 2; }
+  void rhs(double t, std::span<const double> x, double p, std::span<double> f) const override {
+    const Eigen::Vector2d q = xq(t, p), dq(-std::sin(t + 0.37), std::cos(t) + 0.6 * p * std::cos(2 * t));
+    f[0] = -(x[0] - q[0]) + dq[0];
+    f[1] = -(x[1] - q[1]) + dq[1];
+  }
+  void jacobian(double, std::span<const double>, double, Eigen::MatrixXd& J) const override {
+    J = -Eigen::MatrixXd::Identity(2, 2);
+  }
+};
+
+// The maximum over t of g (a smooth 2 pi-periodic function): a 20000-point grid, then golden section
+// to 1e-13 in t around the best grid point.
+template <class G>
+double closed_form_max(const G& g) {
+  constexpr int n = 20000;
+  int best = 0;
+  for (int k = 1; k < n; ++k)
+    if (g(kTwoPi * k / n) > g(kTwoPi * best / n)) best = k;
+  double a = kTwoPi * (best - 1) / n, b = kTwoPi * (best + 1) / n;
+  const double phi = (std::sqrt(5.0) - 1) / 2;
+  while (b - a > 1e-13) {
+    const double c = b - phi * (b - a), d = a + phi * (b - a);
+    (g(c) > g(d) ? b : a) = g(c) > g(d) ? d : c;
+  }
+  return g(0.5 * (a + b));
+}
+
+// The orbit's r_max, r_min, Psi_min, Psi_max are the solution's extrema, not the samples': against the
+// closed-form orbit's to 1e-10 (the shooting's rtol 1e-12 and the refinement's 1e-10 in t, which moves an
+// extremum's value by ~1e-20; measured ~1e-15). The sampled values (summary(..., false) keeps them for r_max
+// and Psi; 64 samples per segment, h = 0.012) miss by 2e-6 (r_max) and 8e-9 (Psi_min), checked > 1e-9.
+TEST(OrbitSummaryTest, ExtremaAreTheSolutionsNotTheSamples) {
+  const ForcedOffset sys;
+  const PeriodicOrbitProblem pr(sys, OrbitOptions{});
+  const double p = 1;
+  const NewtonResult nr = solve_fixed_parameter(pr, pr.shooting_guess(ForcedOffset::xq(0, p), p), p);
+  ASSERT_TRUE(nr.converged);
+  const OrbitSummary s = pr.summary(nr.x, p), sampled = pr.summary(nr.x, p, false);
+  auto r = [&](double t) { return ForcedOffset::xq(t, p).norm(); };
+  auto Psi = [&](double t) { return -std::atan2(ForcedOffset::xq(t, p)[1], ForcedOffset::xq(t, p)[0]); };
+  const double r_max = closed_form_max(r), r_min = -closed_form_max([&](double t) { return -r(t); });
+  const double Psi_max = closed_form_max(Psi), Psi_min = -closed_form_max([&](double t) { return -Psi(t); });
+  EXPECT_EQ(s.winding, 0);
+  EXPECT_NEAR(s.r_max, r_max, 1e-10);
+  EXPECT_NEAR(s.r_min, r_min, 1e-10);
+  EXPECT_NEAR(s.Psi_max, Psi_max, 1e-10);
+  EXPECT_NEAR(s.Psi_min, Psi_min, 1e-10);
+  // The check can tell: the samples' extrema miss by far more than its bound.
+  EXPECT_GT(r_max - sampled.r_max, 1e-9);
+  EXPECT_GT(sampled.Psi_min - Psi_min, 1e-9);
+  std::printf("r_max %.3e (samples %.3e)  Psi_min %.3e (samples %.3e)\n", s.r_max - r_max, sampled.r_max - r_max,
+              s.Psi_min - Psi_min, sampled.Psi_min - Psi_min);
+}
+
 TEST(OrbitOptionsTest, ValidateNamesTheField) {
   OrbitOptions o;
   o.segments = 0;

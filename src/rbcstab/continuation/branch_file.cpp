@@ -98,6 +98,7 @@ json spec_json(const BranchSpec& s) {
          {"switch_at_bp", s.switch_at_bp},
          {"start_state", s.start_state ? vector_json(*s.start_state) : json(nullptr)}};
   if (!s.start_state) j["start_state_reason"] = "none: the start is computed from the scene";
+  if (s.start_parameter) j["start_parameter"] = *s.start_parameter;
   return j;
 }
 
@@ -114,7 +115,9 @@ json special_point_json(const SpecialPoint& sp) {
           {"unstable_after", sp.unstable_after},
           {"test_value", number_or_null(sp.test_value)},
           {"after_index", sp.after_index},
-          {"eigenvalue", complex_json(sp.eigenvalue)}};
+          {"eigenvalue", complex_json(sp.eigenvalue)},
+          {"mode_l", sp.mode_l ? json(*sp.mode_l) : json(nullptr)},
+          {"mode_m", sp.mode_m ? json(*sp.mode_m) : json(nullptr)}};
 }
 
 // ---- reading: every access names the key path and the file ----
@@ -278,6 +281,9 @@ SpecialPoint read_special_point(const Reader& rd, const json& o, const std::stri
   sp.test_value = rd.number(o, "test_value", at, true);
   sp.after_index = rd.index(o, "after_index", at);
   sp.eigenvalue = rd.complex(rd.at(o, "eigenvalue", at), Reader::join(at, "eigenvalue"));
+  // A BP's mode (files before it was reported have none: the mode stays unknown).
+  for (const auto& [key, mode] : {std::pair{"mode_l", &sp.mode_l}, std::pair{"mode_m", &sp.mode_m}})
+    if (o.contains(key) && !o.at(key).is_null()) *mode = rd.small_int(o, key, at);
   return sp;
 }
 
@@ -426,6 +432,7 @@ BranchSpec read_spec(const Reader& rd, const json& j) {
   s.switch_at_bp = rd.boolean(j, "switch_at_bp", path);
   const json& start = rd.at(j, "start_state", path);
   if (!start.is_null()) s.start_state = rd.vector(start, "spec.start_state");
+  if (j.contains("start_parameter")) s.start_parameter = rd.number(j, "start_parameter", path);
   rd.checked(path, [&] { s.validate(); });
   return s;
 }

@@ -133,10 +133,26 @@ void branch_line(std::ostream& os, const Branch& b, const std::string& parameter
   os << ", status " << to_string(b.status) << " (" << b.message << ")\n";
 }
 
+// A BP's mode change in branch order: "unstable" when the unstable count rises across it, "stable" when
+// it falls, "" when it does not change.
+std::string mode_direction(const SpecialPoint& sp) {
+  if (sp.unstable_after == sp.unstable_before) return "";
+  return sp.unstable_after > sp.unstable_before ? "unstable" : "stable";
+}
+
+// ", mode l = 4 m = 0 becoming stable" for a BP whose mode is known, else "".
+std::string mode_text(const SpecialPoint& sp) {
+  if (!sp.mode_l) return "";
+  std::string t = ", mode l = " + std::to_string(*sp.mode_l);
+  if (sp.mode_m) t += " m = " + std::to_string(*sp.mode_m);
+  const std::string d = mode_direction(sp);
+  return d.empty() ? t : t + " becoming " + d;
+}
+
 void special_lines(std::ostream& os, const Branch& b, const std::string& parameter, const char* indent) {
   for (const auto& sp : b.special_points)
     os << indent << sp.name << " " << parameter << " = " << sp.p << " (" << to_string(sp.status) << ", precision "
-       << sp.precision << ", unstable " << sp.unstable_before << " -> " << sp.unstable_after << ")\n";
+       << sp.precision << ", unstable " << sp.unstable_before << " -> " << sp.unstable_after << mode_text(sp) << ")\n";
 }
 
 // The text table's measures: the chosen ones, or the default list those of the branch.
@@ -208,9 +224,11 @@ void b_table(std::ostream& os, const std::vector<const MeasuredBranch*>& branche
         const SpecialPoint& sp = m.branch.special_points[k];
         os << "  ";
         if (sp.unstable_after == sp.unstable_before)
-          os << stability_word(sp.unstable_before) << '\n';
+          os << stability_word(sp.unstable_before);
         else
-          os << "unstable " << sp.unstable_before << " -> " << sp.unstable_after << '\n';
+          os << "unstable " << sp.unstable_before << " -> " << sp.unstable_after;
+        if (sp.mode_l) os << " (l = " << *sp.mode_l << (sp.mode_m ? " m = " + std::to_string(*sp.mode_m) : "") << ')';
+        os << '\n';
       } else {
         const BranchPoint& q = m.branch.points[k];
         // The certified label: a margin within its error reads "uncertain", whatever the count says.
@@ -271,6 +289,12 @@ nlohmann::json to_json(const MeasuredBranch& m) {
     j["status"] = to_string(sp.status);
     j["unstable_before"] = sp.unstable_before;
     j["unstable_after"] = sp.unstable_after;
+    if (sp.type == SpecialPointType::BP) {
+      j["mode_l"] = sp.mode_l ? nlohmann::json(*sp.mode_l) : nlohmann::json(nullptr);
+      j["mode_m"] = sp.mode_m ? nlohmann::json(*sp.mode_m) : nlohmann::json(nullptr);
+      const std::string d = mode_direction(sp);
+      j["mode_direction"] = sp.mode_l && !d.empty() ? nlohmann::json(d) : nlohmann::json(nullptr);
+    }
     put_stability(j, sp);
     sps.push_back(j);
   }

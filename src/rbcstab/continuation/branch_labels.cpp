@@ -2,6 +2,8 @@
 #include "rbcstab/continuation/branch_labels.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <optional>
 #include <string>
 #include <variant>
 #include <vector>
@@ -24,6 +26,26 @@ std::string label_list(const std::vector<LabelledPoint>& all) {
   std::string list;
   for (const LabelledPoint& p : all) list += (list.empty() ? "" : ", ") + std::to_string(p.label);
   return "its labels are " + list;
+}
+
+// "6 (BP l = 3)": a label with its type and mode, for the lists of resolve_label's messages.
+std::string described(const ContinuationRun& run, const LabelledPoint& p) {
+  std::string t = std::to_string(p.label) + " (" + (p.type.empty() ? "regular" : p.type);
+  if (p.special) {
+    const SpecialPoint& sp = branch_of(run, p.branch)->branch.special_points[p.index];
+    if (sp.mode_l) t += " l = " + std::to_string(*sp.mode_l);
+    if (sp.mode_m) t += " m = " + std::to_string(*sp.mode_m);
+  }
+  return t + ")";
+}
+
+// A selector's integer field ("l=3"): an integer in [0, 1000].
+int selector_int(const std::string& text, const std::string& flag, const std::string& selector) {
+  const bool digits = !text.empty() && text.size() <= 4 &&
+                      std::all_of(text.begin(), text.end(), [](unsigned char c) { return std::isdigit(c) != 0; });
+  if (!digits || std::stoi(text) > 1000)
+    throw InvalidArgument(flag, flag + " = '" + selector + "': '" + text + "' must be an integer in [0, 1000]");
+  return std::stoi(text);
 }
 
 }  // namespace
@@ -99,6 +121,50 @@ LabelledPoint find_label(const ContinuationRun& run, int label, const std::strin
   for (const LabelledPoint& p : all)
     if (p.label == label) return p;
   throw InvalidArgument(flag, flag + " = " + std::to_string(label) + " is not a label of this run: " + label_list(all));
+}
+
+int resolve_label(const ContinuationRun& run, const std::string& selector, const std::string& flag) {
+  const std::string form = "a label, an integer in [1, 1000000000], or TYPE[:l=L][:m=M] (e.g. BP:l=3)";
+  if (!selector.empty() &&
+      std::all_of(selector.begin(), selector.end(), [](unsigned char c) { return std::isdigit(c) != 0; })) {
+    if (selector.size() > 10 || std::stoll(selector) < 1 || std::stoll(selector) > 1000000000)
+      throw InvalidArgument(flag, flag + " = '" + selector + "' must be " + form);
+    return static_cast<int>(std::stoll(selector));
+  }
+  std::vector<std::string> parts;
+  for (std::size_t a = 0, b = 0; b != std::string::npos; a = b + 1) {
+    b = selector.find(':', a);
+    parts.push_back(selector.substr(a, b == std::string::npos ? std::string::npos : b - a));
+  }
+  const std::string& type = parts.front();
+  if (type.empty() || !std::all_of(type.begin(), type.end(), [](unsigned char c) { return std::isupper(c) != 0; }))
+    throw InvalidArgument(flag, flag + " = '" + selector + "' must be " + form);
+  std::optional<int> l, m;
+  for (std::size_t i = 1; i < parts.size(); ++i) {
+    const std::string& f = parts[i];
+    std::optional<int>& field = f.rfind("l=", 0) == 0 ? l : m;
+    if ((f.rfind("l=", 0) != 0 && f.rfind("m=", 0) != 0) || field)
+      throw InvalidArgument(flag, flag + " = '" + selector + "': '" + f + "' must be l=L or m=M, each at most once");
+    field = selector_int(f.substr(2), flag, selector);
+  }
+  const std::vector<LabelledPoint> all = labelled_points(run);
+  std::vector<LabelledPoint> hits, of_type;
+  for (const LabelledPoint& p : all) {
+    if (p.type != type) continue;
+    of_type.push_back(p);
+    const SpecialPoint* sp = p.special ? &branch_of(run, p.branch)->branch.special_points[p.index] : nullptr;
+    if ((l && (!sp || sp->mode_l != l)) || (m && (!sp || sp->mode_m != m))) continue;
+    hits.push_back(p);
+  }
+  if (hits.size() == 1) return hits.front().label;
+  std::string list;
+  for (const LabelledPoint& p : hits.empty() ? of_type : hits) list += (list.empty() ? "" : ", ") + described(run, p);
+  if (hits.empty())
+    throw InvalidArgument(
+        flag, flag + " = '" + selector + "' matches no labelled point of this run: " +
+                  (list.empty() ? "it has no point of type " + type : "its " + type + " labels are " + list));
+  throw InvalidArgument(flag, flag + " = '" + selector + "' matches " + std::to_string(hits.size()) +
+                                  " labelled points, " + list + ": give the label or the mode (:l=L, :m=M)");
 }
 
 }  // namespace rbcstab

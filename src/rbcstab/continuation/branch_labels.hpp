@@ -28,5 +28,9 @@ struct LabelledPoint {
 std::vector<LabelledPoint> labelled_points(const ContinuationRun& run);
 // Throws InvalidArgument("label", ...) listing the run's labels when it has no such label.
 LabelledPoint find_label(const ContinuationRun& run, int label, const std::string& flag = "label");
+// A label given by its number ("6") or by type and mode, TYPE[:l=L][:m=M] ("BP:l=3", "BP:l=2:m=0", "LP"):
+// the one labelled special point of that type whose BP mode is (L, M). Throws InvalidArgument(flag, ...)
+// for a malformed selector, and when no point or several points match (listing them with their modes).
+int resolve_label(const ContinuationRun& run, const std::string& selector, const std::string& flag = "label");
 
 }  // namespace rbcstab

@@ -53,8 +53,11 @@ void BranchSpec::validate() const {
           "an integer in [1, 1e7]");
   ContinuationOptions e = engine;
   set_domain_bounds(e, parameter, engine.p_min, engine.p_max);
-  // Every branch starts at the scene's value (modal_orbit: its total excess area's scene).
-  const double p_start = get_parameter(problem_scene_of(*this), parameter);
+  if (start_parameter && !start_state)
+    throw InvalidArgument("start_parameter",
+                          "start_parameter needs start_state (the labelled point it is the value of)");
+  if (start_parameter) require(std::isfinite(*start_parameter), "start_parameter", *start_parameter, "a finite number");
+  const double p_start = start_value(*this);
   if (!(p_start >= e.p_min && p_start <= e.p_max)) {
     std::ostringstream m;
     m << std::setprecision(10) << "the branch starts at the scene's " << to_string(parameter) << " = " << p_start
@@ -72,6 +75,10 @@ void BranchSpec::validate() const {
       names.push_back(n);
     }
   }
+}
+
+double start_value(const BranchSpec& spec) {
+  return spec.start_parameter ? *spec.start_parameter : get_parameter(problem_scene_of(spec), spec.parameter);
 }
 
 }  // namespace rbcstab

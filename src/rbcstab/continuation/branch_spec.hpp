@@ -51,12 +51,19 @@ struct BranchSpec {
   // Label (UZ) or stop where a parameter or measure reaches given values (monitors.hpp). Not saved in a
   // branch file; a curve run refuses them.
   std::vector<Monitor> monitors;
+  // A restart in the labelled point's own parameter: that point's value, exactly as it was computed (a
+  // composite parameter rebuilt from the scene, Lambda from Delta, can differ from it by an ulp, and a
+  // bound set to the label's value would then refuse the start). Unset: the scene's value.
+  std::optional<double> start_parameter;
   // Throws InvalidArgument naming the field: switch_at_bp for kinds that cannot switch, the orbit
   // options, the scene's model level against the kind (model), relax_T, relax_tol, relax_max_periods,
   // label_every, the engine options, the monitors (monitor: a duplicate target),
   // and a start value (the scene's parameter) outside the bounds (min).
   void validate() const;
 };
+
+// Where the branch starts: start_parameter, else the scene's value (modal_orbit: its total excess area's).
+double start_value(const BranchSpec& spec);
 
 // The bounds the engine uses for parameter q from the requested [lo, hi]: lambda >= 0 and beta in
 // [0, pi] are closed domain edges, landed on exactly instead of failing beyond them.

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 #include "rbcstab/continuation/dense.hpp"
@@ -180,6 +181,9 @@ struct SpecialPoint {
   double margin = std::numeric_limits<double>::quiet_NaN();
   double margin_error = std::numeric_limits<double>::quiet_NaN();
   CertificateTerm uncertain_because = CertificateTerm::spectrum;
+  // A BP of modal/full equilibria: the mode (l, and m where the coordinates resolve it) carrying the
+  // critical eigenvector; unset where no mode carries 90 % of it (or for other problems).
+  std::optional<int> mode_l, mode_m;
 };
 
 struct ContinuationCounters {

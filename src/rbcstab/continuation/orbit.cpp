@@ -254,7 +254,7 @@ OrbitRelaxation PeriodicOrbitProblem::relax(const Eigen::VectorXd& x0, double p,
   return r;
 }
 
-OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p) const {
+OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p, bool extrema) const {
   const auto n = static_cast<std::size_t>(n_);
   const int S = o_.samples_per_segment;
   const double h = kTwoPi / (N_ * S);
@@ -321,14 +321,14 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p) c
   o.r_min = o.r_max = o.r0;
   o.Psi_min = o.Psi_max = o.Psi0;
   o.mean = Eigen::VectorXd::Zero(n_);
-  std::size_t kmin = 0;
+  std::size_t k_rmin = 0, k_rmax = 0, k_Pmin = 0, k_Pmax = 0;
   for (std::size_t k = 0; k < xs.size(); ++k) {
     const double r = r_of(xs[k]);
-    if (r < o.r_min) o.r_min = r, kmin = k, o.t_r_min = static_cast<double>(k) * h;
-    o.r_max = std::max(o.r_max, r);
+    if (r < o.r_min) o.r_min = r, k_rmin = k, o.t_r_min = static_cast<double>(k) * h;
+    if (r > o.r_max) o.r_max = r, k_rmax = k;
     const double Psi = o.Psi0 - (theta[k] - theta0);
-    o.Psi_min = std::min(o.Psi_min, Psi);
-    o.Psi_max = std::max(o.Psi_max, Psi);
+    if (Psi < o.Psi_min) o.Psi_min = Psi, k_Pmin = k;
+    if (Psi > o.Psi_max) o.Psi_max = Psi, k_Pmax = k;
     o.mean += xs[k];
   }
   o.mean /= static_cast<double>(xs.size());
@@ -336,39 +336,47 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p) c
   o.Psi_min = std::min(o.Psi_min, o.Psi0 - total);
   o.Psi_max = std::max(o.Psi_max, o.Psi0 - total);
 
-  // Refine r_min: the zero of g(t) = d/dt |z|^2 / 2 = x0 f0 + x1 f1 between the neighbouring samples
-  // (Illinois secant; each trial integrates from the left sample). A smooth function of p, so the
-  // transition function below is continuous and its zero can be located as a UZ event.
+  // The extrema are the solution's, not the samples': each sampled extremum is refined to the zero of
+  // g(t), the quantity's time derivative up to a positive factor, between the neighbouring samples
+  // (Illinois secant to 1e-10 in t; each trial integrates from the left sample), every trial state
+  // updating the extremum. r_min is a smooth function of p, so the transition function below is
+  // continuous and its zero can be located as a UZ event.
   const std::size_t K = xs.size();
-  const std::size_t kl = (kmin + K - 1) % K, kr = (kmin + 1) % K;
-  const double ta = static_cast<double>(kmin) * h - h, tb = static_cast<double>(kmin) * h + h;
-  const Eigen::VectorXd xa = xs[kl];
-  auto state_at = [&](double t, Eigen::VectorXd& x) {
-    x = xa;
-    if (t == ta) return true;
-    const double grid[1] = {t};
-    const IntegrationResult r = integrate(plain, std::span<const double>(xa.data(), n), ta, grid, io, {});
-    ++integrations_;
-    if (r.status != IntegrationStatus::success) return false;
-    x = Eigen::Map<const Eigen::VectorXd>(r.y.data(), n_);
-    return true;
-  };
-  auto g_at = [&](double t, const Eigen::VectorXd& x) {
+  auto f_at = [&](double t, const Eigen::VectorXd& x) {
     Eigen::VectorXd f(n_);
     sys_.rhs(t, std::span<const double>(x.data(), n), p, std::span<double>(f.data(), n));
+    return f;
+  };
+  // d/dt |z|^2 / 2 (r's direction: |x| is conserved where r is normalised) and -d(arg z)/dt |z|^2 (Psi's).
+  auto g_r = [&](double t, const Eigen::VectorXd& x) {
+    const Eigen::VectorXd f = f_at(t, x);
     return x[0] * f[0] + x[1] * f[1];
   };
-  double a = ta, b = tb;
-  double ga = g_at(ta, xa), gb = g_at(tb, xs[kr]);
-  if (ga < 0 && gb > 0) {
+  auto g_Psi = [&](double t, const Eigen::VectorXd& x) {
+    const Eigen::VectorXd f = f_at(t, x);
+    return -(x[0] * f[1] - x[1] * f[0]);
+  };
+  // sign: +1 at a minimum (g from - to +), -1 at a maximum; visit(t, x, theta) at every trial state.
+  auto refine = [&](std::size_t kext, double sign, const auto& g_of, const auto& visit) {
+    const std::size_t kl = (kext + K - 1) % K, kr = (kext + 1) % K;
+    const double ta = static_cast<double>(kext) * h - h, tb = static_cast<double>(kext) * h + h;
+    const Eigen::VectorXd xa = xs[kl];
+    // The continuous angle at the left sample (at t = -h: the last sample's, one period earlier).
+    const double theta_a = theta[kl] - (kext == 0 ? total : 0.0);
+    double a = ta, b = tb;
+    double ga = sign * g_of(ta, xa), gb = sign * g_of(tb, xs[kr]);
+    if (!(ga < 0 && gb > 0)) return;
     int side = 0;
-    Eigen::VectorXd x;
     for (int it = 0; it < 60 && b - a > 1e-10; ++it) {
       double t = a - ga * (b - a) / (gb - ga);
       if (!(t > a && t < b) || it % 4 == 3) t = 0.5 * (a + b);
-      if (!state_at(t, x)) break;
-      if (r_of(x) < o.r_min) o.r_min = r_of(x), o.t_r_min = std::fmod(t + kTwoPi, kTwoPi);
-      const double g = g_at(t, x);
+      const double grid[1] = {t};
+      const IntegrationResult res = integrate(plain, std::span<const double>(xa.data(), n), ta, grid, io, {});
+      ++integrations_;
+      if (res.status != IntegrationStatus::success) break;
+      const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(res.y.data(), n_);
+      visit(t, x, theta_a + std::remainder(std::atan2(x[1], x[0]) - theta_a, kTwoPi));
+      const double g = sign * g_of(t, x);
       if (g == 0) break;
       if (g < 0) {
         a = t, ga = g;
@@ -380,6 +388,22 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p) c
         side = 1;
       }
     }
+  };
+  refine(k_rmin, 1.0, g_r, [&](double t, const Eigen::VectorXd& x, double) {
+    if (r_of(x) < o.r_min) o.r_min = r_of(x), o.t_r_min = std::fmod(t + kTwoPi, kTwoPi);
+  });
+  if (extrema) {
+    refine(k_rmax, -1.0, g_r, [&](double, const Eigen::VectorXd& x, double) { o.r_max = std::max(o.r_max, r_of(x)); });
+    // Psi near t = 0 of a tumbling orbit: its range is the continuous Psi over [0, 2 pi], not a window
+    // shifted before 0, so only interior samples are refined there.
+    const bool wraps = o.winding != 0;
+    auto Psi_of = [&](double th_x) { return o.Psi0 - (th_x - theta0); };
+    if (!(wraps && (k_Pmin == 0 || k_Pmin + 1 == K)))
+      refine(k_Pmin, 1.0, g_Psi,
+             [&](double, const Eigen::VectorXd&, double th_x) { o.Psi_min = std::min(o.Psi_min, Psi_of(th_x)); });
+    if (!(wraps && (k_Pmax == 0 || k_Pmax + 1 == K)))
+      refine(k_Pmax, -1.0, g_Psi,
+             [&](double, const Eigen::VectorXd&, double th_x) { o.Psi_max = std::max(o.Psi_max, Psi_of(th_x)); });
   }
   o.transition_function = o.winding == 0 ? o.r_min : -o.r_min;
   return o;
@@ -415,7 +439,8 @@ OrbitPoint PeriodicOrbitProblem::point_at(const Eigen::VectorXd& X, double p, do
 }
 
 UserEvent PeriodicOrbitProblem::transition_event(const std::string& name) const {
-  return UserEvent{name, [this](const Eigen::VectorXd& X, double p) { return summary(X, p).transition_function; }};
+  return UserEvent{name,
+                   [this](const Eigen::VectorXd& X, double p) { return summary(X, p, false).transition_function; }};
 }
 
 }  // namespace rbcstab

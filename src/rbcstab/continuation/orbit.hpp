@@ -63,9 +63,9 @@ inline constexpr std::string_view kTransitionEventName = "swing_tumble";
 // What an orbit looks like over one period (reduced system: r, Psi of z = r e^{-i Psi}).
 struct OrbitSummary {
   double r0 = 0, Psi0 = 0;          // at t = 0 (Psi0 in (-pi, pi])
-  double r_min = 0, r_max = 0;      // r_min refined to the integration tolerance; r_max over the samples
+  double r_min = 0, r_max = 0;      // the solution's (refined between samples to the integration tolerance)
   double t_r_min = 0;               // the time of r_min in [0, 2 pi)
-  double Psi_min = 0, Psi_max = 0;  // of the continuous Psi(t) started at Psi0, over the samples
+  double Psi_min = 0, Psi_max = 0;  // of the continuous Psi(t) started at Psi0 over [0, 2 pi], refined so
   int winding = 0;                  // turns of z around 0 per period (counter-clockwise); Psi advances -2 pi winding
   OrbitKind kind = OrbitKind::swinging;
   double transition_function = 0;  // +r_min when swinging, -r_min when tumbling: continuous, 0 at the transition
@@ -125,7 +125,8 @@ class PeriodicOrbitProblem final : public ContinuationProblem {
   OrbitRelaxation relax(const Eigen::VectorXd& x0, double p, double tol, int max_periods, int chunk = 10) const;
   Floquet floquet(const Eigen::VectorXd& X, double p) const;
   // Integrates the orbit densely from the segments' states (winding via the integrated angle of z).
-  OrbitSummary summary(const Eigen::VectorXd& X, double p) const;
+  // extrema = false: r_max and the Psi range stay the sampled ones (the transition event needs r_min only).
+  OrbitSummary summary(const Eigen::VectorXd& X, double p, bool extrema = true) const;
   // The swinging <-> tumbling transition as a UZ event: summary().transition_function. Located along a
   // branch; its curve in two parameters uses the smooth form OrbitPassageEvent (event_curve.hpp).
   UserEvent transition_event(const std::string& name = std::string(kTransitionEventName)) const;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
+#include <map>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -50,6 +51,23 @@ StartPoint equilibrium_start(const FullEquilibriumProblem& pr, const BranchSpec&
                       "full-model equilibrium near the ellipsoid");
 }
 
+// The (l, m) of each unknown: none for the reduced system (its unknowns are the l = 2 block's only, no BP
+// of another mode exists), (Re z, Im z, w, Re v, Im v, a_3..a_L) for the modal level, x_{l,m} for the full.
+std::vector<detail::ShapeMode> modes_of(const ReducedEquilibriumProblem&) { return {}; }
+std::vector<detail::ShapeMode> modes_of(const ModalEquilibriumProblem& pr) {
+  std::vector<detail::ShapeMode> out{{2, 2}, {2, 2}, {2, 0}, {2, 1}, {2, 1}};
+  for (int l = 3; l <= pr.L(); ++l) out.push_back({l, -1});  // a_l: the amplitude of every m of mode l
+  return out;
+}
+std::vector<detail::ShapeMode> modes_of(const FullEquilibriumProblem& pr) {
+  std::vector<detail::ShapeMode> out(static_cast<std::size_t>(pr.dimension()));
+  for (int l = 2; l <= pr.L(); ++l)
+    for (int m = 0; m <= l; ++m)
+      for (int k = 0; k < (m == 0 ? 1 : 2); ++k)
+        out[static_cast<std::size_t>(FullEquilibriumProblem::index(l, m) + k)] = {l, m};
+  return out;
+}
+
 // Equilibria of one level (Problem: ReducedEquilibriumProblem, ModalEquilibriumProblem, FullEquilibriumProblem).
 template <class Problem>
 class Equilibrium final : public SceneProblem {
@@ -58,6 +76,7 @@ class Equilibrium final : public SceneProblem {
   const ContinuationProblem& problem() const override { return pr_; }
   StartPoint start(const BranchSpec& spec) const override { return equilibrium_start(pr_, spec); }
   Values measures(const Eigen::VectorXd& x, double p) const override { return equilibrium_values(pr_, x, p); }
+  std::vector<detail::ShapeMode> unknown_modes() const override { return modes_of(pr_); }
 
  private:
   Problem pr_;
@@ -135,7 +154,36 @@ std::unique_ptr<SceneProblem> make_problem(const BranchSpec& spec, const Scene& 
   throw std::logic_error("unknown problem kind");
 }
 
+void identify_mode(const ContinuationProblem& problem, const std::vector<ShapeMode>& modes, SpecialPoint& sp) {
+  sp.mode_l.reset();
+  sp.mode_m.reset();
+  if (modes.empty() || static_cast<Eigen::Index>(modes.size()) != sp.x.size() || !sp.x.allFinite()) return;
+  Eigen::MatrixXd J;
+  problem.jacobian(sp.x, sp.p, J);
+  if (!J.allFinite()) return;
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(J);
+  if (es.info() != Eigen::Success) return;
+  Eigen::Index k = 0;
+  es.eigenvalues().cwiseAbs().minCoeff(&k);
+  const Eigen::VectorXd w = es.eigenvectors().col(k).cwiseAbs2();
+  const double total = w.sum();
+  std::map<int, double> by_l;
+  std::map<std::pair<int, int>, double> by_lm;
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    by_l[modes[i].l] += w[static_cast<Eigen::Index>(i)];
+    if (modes[i].m >= 0) by_lm[{modes[i].l, modes[i].m}] += w[static_cast<Eigen::Index>(i)];
+  }
+  constexpr double dominant = 0.9;
+  for (const auto& [l, weight] : by_l)
+    if (weight >= dominant * total) sp.mode_l = l;
+  for (const auto& [lm, weight] : by_lm)
+    if (weight >= dominant * total && sp.mode_l == lm.first) sp.mode_m = lm.second;
+}
+
 MeasuredBranch measure_branch(const SceneProblem& sp, const SceneBranch& r, Branch b) {
+  if (const std::vector<ShapeMode> modes = sp.unknown_modes(); !modes.empty())
+    for (SpecialPoint& s : b.special_points)
+      if (s.type == SpecialPointType::BP) identify_mode(sp.problem(), modes, s);
   return measured(std::move(b), measure_names(r.spec.kind, r.problem_scene.L), sp.problem().stability_kind(),
                   [&](const Eigen::VectorXd& x, double p) { return sp.measures(x, p); });
 }

@@ -109,6 +109,10 @@ BranchSpec restart_spec(const ContinuationRun& run, int label, const RestartChan
   s.start_state = labelled_state(run, lp);
   s.switch_at_bp = false;
   apply_changes(s, changes);
+  // The point's own value of the parameter continued in, when it is one of the point's parameters.
+  for (std::size_t i = 0; i < values.size(); ++i)
+    if (continuation_parameter_from_string(m.branch.parameter_names.at(i)) == s.parameter)
+      s.start_parameter = values[i];
   s.validate();
   return s;
 }
@@ -186,11 +190,16 @@ SceneCurve restart_curve(const ContinuationRun& run, int label, const CurveSpec&
                                        ": --curve " + T + " starts from a point of type " + T + " or a point of a " +
                                        T + " curve");
   SceneBranch one;
-  one.spec = restart_spec(run, label, changes);
+  // The curve leaves its first parameter free (the run's bounds in it bounded the branch the curve
+  // started from, not the curve): a point of the curve outside them is still a start for it.
+  RestartChanges free_p1 = changes;
+  if (curve_point && !changes.p_min) free_p1.p_min = -std::numeric_limits<double>::infinity();
+  if (curve_point && !changes.p_max) free_p1.p_max = std::numeric_limits<double>::infinity();
+  one.spec = restart_spec(run, label, free_p1);
   one.problem_scene = one.spec.scene;
   one.start.method = StartMethod::restart;
   one.start.x = *one.spec.start_state;
-  one.start.p = get_parameter(one.problem_scene, one.spec.parameter);
+  one.start.p = start_value(one.spec);
   one.branch.measure_names = measure_names(one.spec.kind, one.problem_scene.L);
   one.branch.branch.parameter_names = {to_string(one.spec.parameter)};
   curve.validate(one.spec);
@@ -201,7 +210,7 @@ SceneCurve restart_curve(const ContinuationRun& run, int label, const CurveSpec&
     // A point of a curve is a located point of its type at the curve's value of the second parameter.
     sp = SpecialPoint{};
     sp.type = type;
-    sp.name = T;
+    sp.name = on->start.name;  // a UZ curve's event (its point's own type name otherwise)
     sp.status = LocationStatus::located;
     sp.p = one.start.p;
     sp.parameters = {sp.p};

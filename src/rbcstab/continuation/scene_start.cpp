@@ -28,7 +28,8 @@ StartPoint start_of(const SceneProblem& sp, const BranchSpec& spec, const Scene&
                                              " entries: must be " + std::to_string(n) +
                                              " finite numbers (the problem's unknowns for --kind " +
                                              to_string(spec.kind) + ")");
-  return newton_start(sp.problem(), StartMethod::restart, *spec.start_state, get_parameter(scene, spec.parameter),
+  return newton_start(sp.problem(), StartMethod::restart, *spec.start_state,
+                      spec.start_parameter ? *spec.start_parameter : get_parameter(scene, spec.parameter),
                       "solution near the labelled point's state",
                       "the labelled point is not a solution of this problem");
 }

@@ -178,8 +178,24 @@ void Engine::detect(const Pt& a, const Pt& b, std::size_t after, int depth, std:
     const double s = a.t.dot(b.X - a.X);
     Pt m;
     if (depth < 60 && std::abs(s) > o_.location_tol && probe(a, 0.5 * s, m)) {
+      const std::size_t before = out.size();
       detect(a, m, after, depth + 1, out);
       detect(m, b, after, depth + 1, out);
+      // A count change the test functions did not see, within location_tol in p of a step end on a bound:
+      // the branch stopped within rounding of the crossing (the test function is ~0 there, the count flips
+      // where the eigenvalue passes stability_tol, measured 5.8e-12 short of a BP), so it is that end.
+      const double pb = b.X[n_];
+      if (depth == 0 && (pb == o_.p_max || pb == o_.p_min))
+        for (std::size_t k = before; k < out.size(); ++k)
+          if (SpecialPoint& q = out[k]; std::abs(q.p - pb) <= o_.location_tol && q.p != pb) {
+            q.precision =
+                std::max(q.precision, std::max((q.x - b.X.head(n_)).lpNorm<Eigen::Infinity>(), std::abs(q.p - pb)));
+            q.x = b.X.head(n_);
+            q.p = pb;
+            q.parameters = pr_.parameter_values(q.x, q.p);
+            q.p_lo = std::min(q.p_lo, pb);
+            q.p_hi = std::max(q.p_hi, pb);
+          }
       return;  // the halves find the test-function zeros and the user events again
     }
     SpecialPoint sp;

@@ -18,6 +18,10 @@
 namespace rbcstab::detail {
 
 // A kind's problem with its own start and its measures (Equilibrium, Orbit in scene_problem.cpp).
+struct ShapeMode {
+  int l = 0, m = -1;
+};
+
 class SceneProblem {
  public:
   virtual ~SceneProblem() = default;
@@ -26,7 +30,15 @@ class SceneProblem {
   virtual Values measures(const Eigen::VectorXd& x, double p) const = 0;
   virtual std::vector<UserEvent> events() const { return {}; }
   virtual const char* solution_name() const { return "equilibrium"; }
+  // The shape mode of each unknown, (l, m) with m = -1 where the coordinates do not resolve m; empty for
+  // a problem whose unknowns are not shape modes (the BP's mode is then not reported).
+  virtual std::vector<ShapeMode> unknown_modes() const { return {}; }
 };
+
+// A BP's critical mode: the mode carrying >= 90 % of the kernel vector of the Jacobian at the point (the
+// eigenvector of its eigenvalue nearest 0), m unset where the coordinates do not resolve it. Sets
+// sp.mode_l/mode_m; leaves them unset when no mode dominates.
+void identify_mode(const ContinuationProblem& problem, const std::vector<ShapeMode>& modes, SpecialPoint& sp);
 
 std::unique_ptr<SceneProblem> make_problem(const BranchSpec& spec, const Scene& scene);
 MeasuredBranch measure_branch(const SceneProblem& sp, const SceneBranch& r, Branch b);
