@@ -294,7 +294,8 @@ void read_stability(const Reader& rd, const json& o, const std::string& at, Poin
                             [&] { return from_string<Stability>(rd.string(o, "stability", at), "stability"); });
   pt.margin = rd.number(o, "margin", at, true);
   pt.margin_error = rd.number(o, "margin_error", at, true);
-  // Files written before the key existed: an uncertain label's reason is unknown to them; read as "spectrum".
+  // Files written before the key existed: an uncertain label's reason is unknown to them, and stays so (not
+  // written back).
   pt.uncertain_because = CertificateTerm::none;
   if (pt.stability == Stability::uncertain)
     pt.uncertain_because = o.contains("uncertain_because")
@@ -303,7 +304,7 @@ void read_stability(const Reader& rd, const json& o, const std::string& at, Poin
                                               return from_string<CertificateTerm>(rd.string(o, "uncertain_because", at),
                                                                                   "uncertain_because");
                                             })
-                               : CertificateTerm::spectrum;
+                               : CertificateTerm::unknown;
 }
 
 // A branch object back into a MeasuredBranch: parameter and measure names as the run's, states of

@@ -40,7 +40,8 @@ void put_stability(nlohmann::json& j, const Point& pt) {
   j["margin"] = number_or_null(pt.margin);
   j["margin_error"] = number_or_null(pt.margin_error);
   // Only where the label is uncertain: which quantity made it so (CertificateTerm).
-  if (pt.stability == Stability::uncertain) j["uncertain_because"] = to_string(pt.uncertain_because);
+  if (pt.stability == Stability::uncertain && pt.uncertain_because != CertificateTerm::unknown)
+    j["uncertain_because"] = to_string(pt.uncertain_because);
 }
 
 // The parameters by name and the measures by name of one point (its row k).

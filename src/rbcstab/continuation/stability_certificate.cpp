@@ -1,5 +1,7 @@
 // Stability certificates: a spectrum's margin from the stability boundary with its error (certify), widened
 // by the margin's change when the state moves by its error (certify_solution, the engine's points).
+#include "rbcstab/continuation/stability_certificate.hpp"
+
 #include "rbcstab/continuation/continuation.hpp"
 
 #include <algorithm>
