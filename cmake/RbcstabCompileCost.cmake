@@ -5,6 +5,8 @@
 # module's files in batches of RBCSTAB_UNITY_BATCH does that once per batch. A batch of 8 keeps the rebuild after
 # touching one library file under a minute. Names private to a file must therefore be unique within its module
 # (anonymous namespaces are shared by the batch); a file that cannot be merged sets SKIP_UNITY_BUILD_INCLUSION.
+# RBCSTAB_UNITY_BATCH=0 compiles each module as one batch (and drops the modules' own batch sizes): the 'asan'
+# preset does, since CI builds it once and cold, where the fewest instantiations matter and no rebuild does.
 option(RBCSTAB_UNITY "Compile each target's sources in unity batches" ON)
 set(RBCSTAB_UNITY_BATCH 8 CACHE STRING "Sources per unity batch")
 if(RBCSTAB_UNITY)
