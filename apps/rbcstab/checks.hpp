@@ -46,6 +46,15 @@ inline CLI::Validator integer_in(long long lo, long long hi) {
       range, "INT");
 }
 
+// An integer option in [lo, hi] with its default shown: the range is checked and written once, into the help
+// ("<help>, an integer in [lo, hi]<note>").
+template <class T>
+CLI::Option* add_integer(CLI::App& app, const std::string& flag, T& value, long long lo, long long hi,
+                         const std::string& help, const std::string& note = "") {
+  const std::string range = "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+  return app.add_option(flag, value, help + ", " + range + note)->check(integer_in(lo, hi))->capture_default_str();
+}
+
 // Finite numbers above `bound` (strict) or at least `bound`.
 inline CLI::Validator number_above(double bound, bool strict) {
   const std::string range = (strict ? "> " : ">= ") + CLI::detail::to_string(bound);

@@ -38,15 +38,9 @@ int run(const DiagramCliOptions& o) {
   DiagramOptions ro;
   ro.threads = o.threads;
   ro.dynamic_schedule = o.schedule == "dynamic";
-  ro.shard = shard_from_string(o.shard);
-  if (mpi.size() > 1) {
-    if (ro.shard.n > 1)
-      throw InvalidArgument("--shard", "--shard cannot be combined with mpirun (ranks already split the grid)");
-    ro.shard = Shard{mpi.rank(), mpi.size()};
-  }
+  ro.shard = mpi.shard(shard_from_string(o.shard));
   ro.sync_interval = o.sync_interval;
-  const std::string suffix =
-      ro.shard.n > 1 ? ".shard" + std::to_string(ro.shard.k) + "of" + std::to_string(ro.shard.n) : "";
+  const std::string suffix = shard_suffix(ro.shard);
   const std::string prefix = mpi.size() > 1 ? o.out : o.out + suffix;
   if (!o.no_journal) ro.journal = (o.journal.empty() ? o.out : o.journal) + suffix + ".journal";
   const bool show = !o.quiet && mpi.rank() == 0;
@@ -79,9 +73,7 @@ Runner add_diagram(CLI::App& app) {
   auto o = std::make_shared<DiagramCliOptions>();
   o->scene.add_to(app);
   o->plane.add_to(app, true);
-  app.add_option("--threads", o->threads, "worker threads, integer in [0, 4096] (0: all cores)")
-      ->check(integer_in(0, 4096))
-      ->capture_default_str();
+  add_integer(app, "--threads", o->threads, 0, 4096, "worker threads", " (0: all cores)");
   app.add_option("--schedule", o->schedule, "point scheduling over threads")
       ->check(CLI::IsMember({"dynamic", "static"}))
       ->capture_default_str();

@@ -52,10 +52,8 @@ Runner add_paper(CLI::App& app) {
       ->required();
   app.add_flag("--overwrite", p.overwrite, "replace an existing output folder (swapped in whole at the end)");
   app.add_flag("--quick", p.quick, "coarse grids: 12 x 12 phase diagrams and a 3 x 2 Fig. 6e grid per lambda");
-  app.add_option("--threads", p.threads,
-                 "worker threads for the runs and diagram points, integer in [0, 4096] (0: all cores)")
-      ->check(integer_in(0, 4096))
-      ->capture_default_str();
+  add_integer(app, "--threads", p.threads, 0, 4096, "worker threads for the runs and diagram points",
+              " (0: all cores)");
   app.add_option("--python", p.python, "python3 interpreter with matplotlib (Debian python3-matplotlib)")
       ->capture_default_str();
   app.add_option("--data-dir", p.script_dir,

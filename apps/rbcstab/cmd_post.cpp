@@ -32,11 +32,8 @@ int run_fig6e(const PostOptions& o) {
   if (!o.fig6e_C.empty()) f.C = o.fig6e_C;
   f.on_progress = o.progress.callback("post --fig6e:", "runs");
   const std::vector<Fig6eRow> rows = fig6e_table(f);
-  if (o.json) {
-    std::cout << fig6e_json(sf, rows).dump(2) << "\n";
-    return kOk;
-  }
-  std::cout << fig6e_csv(f, rows);  // the same CSV a Fig. 6e panel report draws (report/panels.hpp)
+  // The CSV is the one a Fig. 6e panel report draws (report/panels.hpp).
+  std::cout << (o.json ? fig6e_json(sf, rows).dump(2) + "\n" : fig6e_csv(f, rows));
   return kOk;
 }
 
@@ -45,10 +42,7 @@ int run(const PostOptions& o) {
   SceneFile sf = o.scene.read_unchecked();  // run_post checks it
   sf.options.on_progress = o.progress.callback("post: t =", "");
   const PostRun p = run_post(std::move(sf));
-  if (o.json)
-    std::cout << post_json(p.file, p.post, p.run).dump(2) << "\n";
-  else
-    std::cout << post_text(p.file, p.post, p.run);
+  std::cout << (o.json ? post_json(p.file, p.post, p.run).dump(2) + "\n" : post_text(p.file, p.post, p.run));
   return p.run.status == IntegrationStatus::success ? kOk : kRunFailed;
 }
 

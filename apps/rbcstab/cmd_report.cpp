@@ -84,18 +84,14 @@ Runner add_report(CLI::App& app) {
   add_shear_rate_range(app, o->shear_rate_range);
   app.add_option("--python", r.python, "python3 interpreter with matplotlib (Debian python3-matplotlib)")
       ->capture_default_str();
-  app.add_option("--frames", r.frames, "animation frames, integer in [2, 2000]")
-      ->check(integer_in(2, 2000))
-      ->capture_default_str();
+  add_integer(app, "--frames", r.frames, 2, 2000, "animation frames");
   app.add_option("--frame-window", r.frame_window,
                  "animate the last W time units [T - W, T], >= 0; 0 = auto: one period of r(t) at the end if the run "
                  "oscillates (swinging, tumbling), else the whole run")
       ->check(non_negative())
       ->capture_default_str();
-  app.add_option("--shape-resolution", o->n_theta,
-                 "polar grid points n_theta of the exported and rendered shape (n_phi = 2 n_theta), in [2, 4096]")
-      ->check(integer_in(2, 4096))
-      ->capture_default_str();
+  add_integer(app, "--shape-resolution", o->n_theta, 2, 4096,
+              "polar grid points n_theta of the exported and rendered shape (n_phi = 2 n_theta)");
   app.add_flag("--no-reduced", o->no_reduced,
                "skip the reduced-system companion run (Fig. 2 r, Psi from the l = 2 block only)");
   app.add_option("--phase-diagram", r.phase_diagram,
@@ -112,18 +108,14 @@ Runner add_report(CLI::App& app) {
                  "r_max for orbits, r otherwise; curves: p2)");
   app.add_option("--data-dir", r.script_dir,
                  "folder holding rbcstab_report.py (default: $RBCSTAB_DATA_DIR, <prefix>/share/rbcstab/python)");
-  app.add_option("--threads", o->panel.threads,
-                 "[diagram] scenes: worker threads for the grid, integer in [0, 4096] (0: all cores)")
-      ->check(integer_in(0, 4096))
-      ->capture_default_str();
+  add_integer(app, "--threads", o->panel.threads, 0, 4096, "[diagram] scenes: worker threads for the grid",
+              " (0: all cores)");
   add_counts(app, o->counts,
              "[diagram] scenes: override the grid's nx,ny (or NxM), integers in [1, 1000000], for a quick look "
              "(default: the scene's counts)");
-  app.add_option("--trace-lines", o->panel.trace.lines,
-                 "[diagram] scenes: interior lines (x fixed) searched for starts of the traced boundary besides the "
-                 "plane's edges, integer in [0, 10000]")
-      ->check(integer_in(0, 10000))
-      ->capture_default_str();
+  add_integer(app, "--trace-lines", o->panel.trace.lines, 0, 10000,
+              "[diagram] scenes: interior lines (x fixed) searched for starts of the traced boundary besides the "
+              "plane's edges");
   app.add_flag("--quiet", o->quiet, "no progress on stderr");
   o->progress.add_flags(app, &o->quiet);
   app.add_flag("--json", o->json, "print one JSON object (files, summaries) on stdout");

@@ -50,9 +50,7 @@ Runner add_shape(CLI::App& app) {
   app.add_option("--format", o->formats, "formats, any of vtk (legacy), vtp (VTK XML), ply, csv (theta, phi grid)")
       ->check(CLI::IsMember({"vtk", "vtp", "ply", "csv"}))
       ->capture_default_str();
-  app.add_option("--resolution", o->n_theta, "polar grid points n_theta (n_phi = 2 n_theta), integer in [2, 4096]")
-      ->check(integer_in(2, 4096))
-      ->capture_default_str();
+  add_integer(app, "--resolution", o->n_theta, 2, 4096, "polar grid points n_theta (n_phi = 2 n_theta)");
   app.add_flag("--json", o->json, "print one JSON object (files, rho range, status) on stdout");
   return [o] { return run(*o); };
 }

@@ -11,6 +11,7 @@
 #include "progress.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
+#include "rbcstab/io/json.hpp"
 #include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
 #include "scene_options.hpp"
@@ -38,15 +39,9 @@ int run(const TraceCliOptions& o) {
   const TraceResult t = trace_boundary(sf.scene, spec, to);
 
   nlohmann::json doc = trace_json(sf, spec, to, t);
-  if (!o.diagram.empty()) {
-    nlohmann::json dj;
-    try {
-      dj = nlohmann::json::parse(read_file(o.diagram));
-    } catch (const nlohmann::json::exception& e) {
-      throw InvalidArgument("--diagram", "'" + o.diagram + "' is not JSON: " + e.what());
-    }
-    doc["agreement"] = trace_agreement_json(dj, o.diagram, spec, to, o.threads);
-  }
+  if (!o.diagram.empty())
+    doc["agreement"] = trace_agreement_json(parse_json_text(read_file(o.diagram), o.diagram, "diagram"), o.diagram,
+                                            spec, to, o.threads);
   write_files_atomic({{o.out + ".csv", trace_csv(spec, t), "--out"}, {o.out + ".json", doc.dump(1) + "\n", "--out"}});
   for (const std::string& line : trace_summary_lines(t, doc, o.out)) std::cerr << "rbcstab: " << line << "\n";
   if (o.json) std::cout << trace_brief_json(doc, o.out).dump(2) << "\n";
@@ -67,20 +62,13 @@ Runner add_trace(CLI::App& app) {
   app.add_option("--horizon", o->trace.T, "finite-horizon T, >= 0 (0: the scene's T)")
       ->check(non_negative())
       ->capture_default_str();
-  app.add_option("--lines", o->trace.lines,
-                 "interior lines (x fixed) searched for starting points besides the edges, integer in [0, 10000]")
-      ->check(integer_in(0, 10000))
-      ->capture_default_str();
-  app.add_option("--samples", o->trace.samples,
-                 "brackets per edge or line when searching for starts, integer in [2, 1000000]")
-      ->check(integer_in(2, 1000000))
-      ->capture_default_str();
+  add_integer(app, "--lines", o->trace.lines, 0, 10000,
+              "interior lines (x fixed) searched for starting points besides the edges");
+  add_integer(app, "--samples", o->trace.samples, 2, 1000000, "brackets per edge or line when searching for starts");
   app.add_option("--max-step", o->trace.max_step, "continuation step cap in the unit square (curve resolution), > 0")
       ->capture_default_str();
-  app.add_option("--threads", o->threads,
-                 "threads for the per-point predictor verdicts of --diagram, integer in [0, 4096] (0: all cores)")
-      ->check(integer_in(0, 4096))
-      ->capture_default_str();
+  add_integer(app, "--threads", o->threads, 0, 4096, "threads for the per-point predictor verdicts of --diagram",
+              " (0: all cores)");
   app.add_option("--diagram", o->diagram, "diagram JSON of the same plane: measure the criterion's agreement")
       ->check(CLI::ExistingFile);
   app.add_option("--out", o->out, "output prefix: PREFIX.csv and PREFIX.json")

@@ -16,6 +16,7 @@
 #include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
+#include "rbcstab/io/json.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/report/report.hpp"
 #include "rbcstab/sweep/diagram_document.hpp"
@@ -250,13 +251,7 @@ std::shared_ptr<TraceData> trace_scene(const py::handle& scene, const TraceArgs&
   require(threads >= 0 && threads <= 4096, "threads", threads, "an integer in [0, 4096] (0: all cores)");
   to.validate();
   nlohmann::json dj;
-  if (a.diagram) {
-    try {
-      dj = nlohmann::json::parse(*a.diagram);
-    } catch (const nlohmann::json::exception& e) {
-      throw InvalidArgument("diagram", "'" + a.diagram_source + "' is not JSON: " + e.what());
-    }
-  }
+  if (a.diagram) dj = parse_json_text(*a.diagram, a.diagram_source, "diagram");
   TraceOptions polled = to;  // the criteria's reduced runs answer Ctrl-C (this thread runs them)
   polled.predictor.integrator.poll = signal_poll();
   {

@@ -108,6 +108,14 @@ nlohmann::json to_json(const Scene& s) {
           {"dt", s.dt},     {"model", to_string(s.model)}};
 }
 
+nlohmann::json parse_json_text(const std::string& text, const std::string& source, const std::string& parameter) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::exception& e) {
+    throw InvalidArgument(parameter, "'" + source + "' is not JSON: " + e.what());
+  }
+}
+
 nlohmann::json to_json(const PhysicalCell& c) {
   SceneFile f;
   f.scene.physical = c;

@@ -39,6 +39,8 @@ nlohmann::json to_json(const PhysicalCell& c);
 void put_truncation(nlohmann::json& j, int L, const std::string& L_reason);
 // A double, or null when not finite.
 nlohmann::json number_or_null(double v);
+// `text` parsed as JSON; text that is not JSON throws InvalidArgument(parameter, "'<source>' is not JSON: ...").
+nlohmann::json parse_json_text(const std::string& text, const std::string& source, const std::string& parameter);
 // A complex number as [re, im], each part as number_or_null writes it.
 nlohmann::json complex_json(std::complex<double> z);
 // The CSV counterpart: the shortest text that reads back exactly, or an empty field when not finite -- never "nan";

@@ -78,6 +78,10 @@ void Shard::validate() const {
   require(k >= 0 && k < n, "shard", k, "k/n with 0 <= k < n");
 }
 
+std::string shard_suffix(const Shard& s) {
+  return s.n > 1 ? ".shard" + std::to_string(s.k) + "of" + std::to_string(s.n) : "";
+}
+
 Shard shard_from_string(const std::string& text) {
   const auto slash = text.find('/');
   Shard s;

@@ -116,6 +116,8 @@ struct Shard {
   void validate() const;
 };
 Shard shard_from_string(const std::string& text);  // "k/n", 0 <= k < n
+// The file-name suffix of a shard's outputs and journal: ".shardKofN", "" for the whole grid.
+std::string shard_suffix(const Shard& s);
 
 struct Progress {
   std::size_t done = 0;     // finished points of this job, resumed ones included

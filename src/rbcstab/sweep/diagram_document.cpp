@@ -449,11 +449,7 @@ MergeResult merge_diagrams(const std::vector<MergeInput>& inputs) {
   std::vector<nlohmann::json> docs;
   std::vector<Where> where;
   for (const MergeInput& in : inputs) {
-    try {
-      docs.push_back(nlohmann::json::parse(in.text));
-    } catch (const nlohmann::json::exception& e) {
-      throw InvalidArgument("merge", "'" + in.name + "' is not JSON: " + e.what());
-    }
+    docs.push_back(parse_json_text(in.text, in.name, "merge"));
     where.push_back([&in](std::size_t k, const std::string& field) {
       const std::size_t line = point_line(in.text, k, field);
       return in.name + ":" + (line ? std::to_string(line) : "?") + ": points[" + std::to_string(k) + "]." + field;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "rbcstab/core/error.hpp"
 #include "rbcstab/sweep/point_record.hpp"
 
 #ifdef RBCSTAB_WITH_MPI
@@ -36,6 +37,14 @@ MpiSession::~MpiSession() {
 #ifdef RBCSTAB_WITH_MPI
   if (owner_) MPI_Finalize();
 #endif
+}
+
+Shard MpiSession::shard(const Shard& given) const {
+  if (size_ == 1) return given;
+  if (given.n > 1)
+    throw InvalidArgument("shard", "shard = " + std::to_string(given.k) + "/" + std::to_string(given.n) +
+                                       " cannot be combined with mpirun (the ranks already split the grid)");
+  return Shard{rank_, size_};
 }
 
 DiagramRun MpiSession::gather(const DiagramRun& mine, const DiagramSpec& spec) const {

@@ -15,6 +15,9 @@ class MpiSession {
   MpiSession& operator=(const MpiSession&) = delete;
   int rank() const { return rank_; }
   int size() const { return size_; }
+  // The slice of the grid this process computes: its rank's under mpirun (where a shard of its own is refused:
+  // the ranks already split the grid), else `given`.
+  Shard shard(const Shard& given) const;
   // Rank 0 gets every rank's points in index order (complete iff every rank completed); other
   // ranks get their own run back, with `complete` as the global value.
   DiagramRun gather(const DiagramRun& mine, const DiagramSpec& spec) const;
