@@ -2,11 +2,14 @@
 // they render (keys of the shared schema, every value, the columns and rows of the CSV).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <iomanip>
 #include <sstream>
 
 #include "continuation/scene_spec_fixture.hpp"
 #include "rbcstab/continuation/branch_io.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
+#include "rbcstab/continuation/scene_run.hpp"
 
 namespace rbcstab {
 namespace {
@@ -275,5 +278,39 @@ TEST(CurveOutput, JsonCsvAndTextOfAModalBPCurve) {
   EXPECT_EQ(to_text(c).rfind("BP curve from BP (C = 0.03616893", 0), 0u) << to_text(c);
 }
 
+}  // namespace
+}  // namespace rbcstab
+
+namespace rbcstab {
+namespace {
+// The largest change of the state along a branch, relative to the start's size.
+double state_spread(const Branch& b) {
+  double spread = 0;
+  for (const BranchPoint& pt : b.points) spread = std::max(spread, (pt.x - b.points.front().x).norm());
+  return spread / b.points.front().x.norm();
+}
+
+// A parameter the run's model does not contain (the table's levels: B at the reduced level) gives a branch of one
+// state repeated, and the outcome says so; where it enters (modal) the states move and there is no note. The
+// oracle is the branch itself: its states, not the table.
+TEST(LevelNote, BranchInAParameterTheLevelLeavesAloneSaysSo) {
+  const Scene scene = modal_fixtures::scene(0.08, 4);
+  const SceneBranch reduced = continue_scene(
+      test::spec_of(scene, ProblemKind::equilibrium, ContinuationParameter::B, 0.5, 3, Direction::forward));
+  ASSERT_GE(reduced.branch.branch.points.size(), 3u);
+  EXPECT_LT(state_spread(reduced.branch.branch), 1e-12);
+  EXPECT_NE(outcome(reduced).note.find("B does not enter the reduced model"), std::string::npos)
+      << outcome(reduced).note;
+  EXPECT_NE(outcome(reduced).note.find("moves the modal and full models"), std::string::npos);
+
+  const SceneBranch modal =
+      continue_scene(test::spec_of(scene, ProblemKind::modal, ContinuationParameter::B, 0.5, 3, Direction::forward));
+  ASSERT_GE(modal.branch.branch.points.size(), 3u);
+  EXPECT_GT(state_spread(modal.branch.branch), 1e-3);
+  EXPECT_EQ(outcome(modal).note.find("does not enter"), std::string::npos) << outcome(modal).note;
+  // Every continuation parameter moves the levels its row says; lambda moves every level.
+  EXPECT_EQ(unmoved_level_note(ContinuationParameter::lambda, ModelLevel::reduced), "");
+  EXPECT_EQ(unmoved_level_note(ContinuationParameter::C, ModelLevel::reduced), "");
+}
 }  // namespace
 }  // namespace rbcstab

@@ -11,6 +11,7 @@
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
+#include "rbcstab/report/detail/parameter_labels.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/sweep/diagram_document.hpp"
 #include "rbcstab/sweep/diagram_table.hpp"
@@ -293,3 +294,14 @@ TEST(PanelReport, SceneWithoutPanelTableIsRefused) {
 
 }  // namespace
 }  // namespace rbcstab
+
+// Figure labels write a parameter with its symbol from the parameter table, and scientific notation as mathematics:
+// a caption such as Fig. 6's "delta = 10^{-10}" is the table's symbol and this rule, not text typed in the figure.
+TEST(ParameterLabels, TexValueUsesTheTableSymbolAndPowersOfTen) {
+  EXPECT_EQ(rbcstab::detail::tex_value(rbcstab::SceneParameter::delta, 1e-10), "$\\delta = 10^{-10}$");
+  EXPECT_EQ(rbcstab::detail::tex_value(rbcstab::SceneParameter::delta, 1e-3), "$\\delta = 0.001$");
+  EXPECT_EQ(rbcstab::detail::tex_value(rbcstab::SceneParameter::lambda, 2.5e6), "$\\lambda = 2.5 \\times 10^{6}$");
+  EXPECT_EQ(rbcstab::detail::tex_value(rbcstab::SceneParameter::alpha, 50), "$\\alpha = 50$");
+  EXPECT_EQ(rbcstab::detail::tex_value(rbcstab::SceneParameter::Delta, -INFINITY), "$\\Delta = -\\infty$");
+  EXPECT_EQ(rbcstab::detail::tex_value(rbcstab::SceneParameter::lnC, -1e-5), "$\\ln \\mathcal{C} = -10^{-5}$");
+}

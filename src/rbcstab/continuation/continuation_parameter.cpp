@@ -74,4 +74,14 @@ InitialState oriented_initial_state(Scene s) {
   return initial_state(s);
 }
 
+std::string unmoved_level_note(ContinuationParameter q, ModelLevel level) {
+  const ParameterRow& row = parameter_row(q);
+  if (row.levels & level_bit(level)) return "";
+  std::string moved;
+  for (ModelLevel m : {ModelLevel::reduced, ModelLevel::modal, ModelLevel::full})
+    if (row.levels & level_bit(m)) moved += (moved.empty() ? "" : " and ") + to_string(m);
+  return std::string(row.name) + " does not enter the " + to_string(level) +
+         " model: every point in it is the same state (" + row.name + " moves the " + moved + " models)";
+}
+
 }  // namespace rbcstab

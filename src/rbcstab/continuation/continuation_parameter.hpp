@@ -17,6 +17,11 @@ using ContinuationParameter = SceneParameter;  // one of the rows usable_as(q, P
 ContinuationParameter continuation_parameter_from_string(const std::string& name);
 const std::vector<std::string>& continuation_parameter_names();
 
+// "" when q moves the model `level` (the parameter table's levels); else a note that a branch in q at that level
+// repeats one state, naming the levels q does move (B leaves the reduced level alone: it takes Upsilon_2 itself as
+// its multiplier).
+std::string unmoved_level_note(ContinuationParameter q, ModelLevel level);
+
 // The material parameters only: beta throws InvalidArgument("parameter", ...) (use the Scene overloads).
 double get_parameter(const Parameters& p, ContinuationParameter q);
 // p with q set to value, validated (throws InvalidArgument naming q outside its domain).

@@ -19,6 +19,8 @@ RunOutcome outcome(const SceneBranch& r) {
   RunOutcome o;
   if (!r.start.converged || r.start.refused) return {false, "", r.start.message};
   o.note = r.start.message;
+  const std::string level = unmoved_level_note(r.spec.parameter, model_level(r.spec.kind));
+  if (!level.empty()) o.note += (o.note.empty() ? "" : "; ") + level;
   const Branch& b = r.branch.branch;
   if (r.switched && !r.switched->switched)
     o.failure = "branch switching failed: " + r.switched->message;
@@ -30,6 +32,10 @@ RunOutcome outcome(const SceneBranch& r) {
 RunOutcome outcome(const SceneCurve& r) {
   RunOutcome o;
   if (!r.started) return {false, "", r.message};
+  const ModelLevel level = model_level(r.one.spec.kind);
+  for (ContinuationParameter q : {r.one.spec.parameter, r.spec.parameter2.value_or(r.one.spec.parameter)})
+    if (const std::string note = unmoved_level_note(q, level); !note.empty() && o.note.find(note) == std::string::npos)
+      o.note += (o.note.empty() ? "" : "; ") + note;
   const Branch& c = r.curve.branch;
   if (!ended_normally(c.status)) o.failure = "curve continuation stopped: " + to_string(c.status) + ": " + c.message;
   return o;

@@ -11,6 +11,7 @@
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/report/detail/paper_draw_spec.hpp"
 #include "rbcstab/report/detail/paper_figures.hpp"
+#include "rbcstab/report/detail/parameter_labels.hpp"
 
 namespace rbcstab::detail::paper {
 
@@ -40,7 +41,7 @@ void app_vesicle(Composer& c, bool ip, int k, int n) {
       sr.push_back(series(l.csv, "r", cases[i], colors[i], styles[i], i == 2 ? 1.8 : 1.4));
       sp.push_back(psi_series(l, cases[i], colors[i], styles[i], i == 2 ? 1.8 : 1.4));
     }
-    const std::string lam = std::to_string(2 * j + 1);
+    const std::string lam = tex_value(SceneParameter::lambda, 2 * j + 1);
     std::pair<double, double> xlim;
     std::vector<Curve> rs;
     for (int i = 0; i < 3; ++i) {
@@ -48,9 +49,9 @@ void app_vesicle(Composer& c, bool ip, int k, int n) {
       rs.push_back({&l.t(), &l.run.trajectory.r});
     }
     const std::string xs = time_axis(rs, xlim);
-    top.push_back(lines_panel(std::string("(") + letters[j] + ") $r(t)$, $\\lambda=" + lam + "$", "$r$", sr, xs, xlim));
-    bottom.push_back(lines_panel(std::string("(") + letters[j + 3] + ") $\\Psi(t)$, $\\lambda=" + lam + "$",
-                                 "$\\Psi$ (rad)", sp, xs, xlim));
+    top.push_back(lines_panel(std::string("(") + letters[j] + ") $r(t)$, " + lam, "$r$", sr, xs, xlim));
+    bottom.push_back(
+        lines_panel(std::string("(") + letters[j + 3] + ") $\\Psi(t)$, " + lam, "$\\Psi$ (rad)", sp, xs, xlim));
   }
   auto at = [&](int lam, int cs) -> const Line& { return runs[std::size_t(3 * (lam / 2) + cs)]; };
   auto turn = [](const Line& l) { return net_turn(l.run.trajectory.Psi); };

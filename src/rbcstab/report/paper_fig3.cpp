@@ -12,6 +12,7 @@
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/report/detail/paper_draw_spec.hpp"
 #include "rbcstab/report/detail/paper_figures.hpp"
+#include "rbcstab/report/detail/parameter_labels.hpp"
 
 namespace rbcstab::detail::paper {
 
@@ -70,7 +71,7 @@ void fig3(Composer& c, int k, int n) {
   const UnstableBand band = unstable_band(s_below, alpha);
   const double ls = l_star(alpha);
   json pa = {{"kind", "lines"},
-             {"title", "(a) criterion at $\\alpha=" + num(alpha) + "$"},
+             {"title", "(a) criterion at " + tex_value(SceneParameter::alpha, alpha)},
              {"xlabel", "$l$"},
              {"ylabel", "$-\\Pi^2-\\sigma\\Pi-4\\alpha$"},
              {"xscale", "linear"},

@@ -5,8 +5,10 @@
 #include <utility>
 #include <vector>
 
+#include "rbcstab/report/bifurcation_plot.hpp"
 #include "rbcstab/report/detail/paper_composer.hpp"
 #include "rbcstab/report/detail/paper_figures.hpp"
+#include "rbcstab/report/detail/parameter_labels.hpp"
 #include "rbcstab/sweep/trace.hpp"
 
 namespace rbcstab::detail::paper {
@@ -31,7 +33,7 @@ void fig5(Composer& c, int k, int n) {
       halves[{panel, alphas[i]}] = {d.unstable([](const PointResult& p) { return p.y < 5; }),
                                     d.unstable([](const PointResult& p) { return p.y >= 5; })};
       sets.push_back({{"data", d.csv},
-                      {"label", "unstable, $\\alpha=" + std::to_string(alphas[i]) + "$"},
+                      {"label", "unstable, " + tex_value(SceneParameter::alpha, alphas[i])},
                       {"color", colors[i]},
                       {"marker", markers[i]}});
       for (const Overlay& o : analytic_overlays(d.file.scene, d.spec, 200))
@@ -40,16 +42,17 @@ void fig5(Composer& c, int k, int n) {
                             {"y", o.y},
                             {"color", colors[i]},
                             {"style", "dashed"},
-                            {"label", "$\\lambda_*^-$, $\\alpha=" + std::to_string(alphas[i]) + "$"}});
+                            {"label", "$\\lambda_*^-$, " + tex_value(SceneParameter::alpha, alphas[i])}});
     }
     const std::string curves_file =
         c.put(std::string("fig5") + panel + "_lambda_star.json", json{{"curves", curves}}.dump(1) + "\n");
     panels.push_back({{"kind", "markers"},
-                      {"title", panel == 'a' ? "(a) $\\Delta=1$" : "(b) $\\Delta=0.1$"},
+                      {"title", std::string(panel == 'a' ? "(a) " : "(b) ") +
+                                    tex_value(SceneParameter::Delta, panel == 'a' ? 1 : 0.1)},
                       {"sets", sets},
                       {"overlay", curves_file},
-                      {"xlabel", "$\\ln\\mathcal{C}$"},
-                      {"ylabel", "$\\lambda$"}});
+                      {"xlabel", tex_symbol("lnC")},
+                      {"ylabel", tex_symbol("lambda")}});
   }
   auto counts = [&](char p) {
     return std::to_string(count[{p, 40}]) + ", " + std::to_string(count[{p, 100}]) + ", " +

@@ -12,6 +12,7 @@
 #include "rbcstab/model/scene.hpp"
 #include "rbcstab/report/detail/paper_draw_spec.hpp"
 #include "rbcstab/report/detail/paper_figures.hpp"
+#include "rbcstab/report/detail/parameter_labels.hpp"
 #include "rbcstab/report/shape.hpp"
 #include "rbcstab/sweep/fig6e.hpp"
 
@@ -88,8 +89,8 @@ void fig6(Composer& c, int k, int n) {
     const std::string pre = lam == 5 ? "fig6_ab_lambda5_" : "fig6_cd_lambda1_";
     const std::vector<std::string> names{pre + "op_delta1e-3", pre + "op_delta1e-10", pre + "ip_delta1e-3",
                                          pre + "ip_delta1e-10"};
-    const char* rlabel[] = {"OP, $\\delta=10^{-3}$", "OP, $\\delta=10^{-10}$", "IP, $\\delta=10^{-3}$",
-                            "IP, $\\delta=10^{-10}$"};
+    const std::string d3 = tex_value(SceneParameter::delta, 1e-3), d10 = tex_value(SceneParameter::delta, 1e-10);
+    const std::string rlabel[] = {"OP, " + d3, "OP, " + d10, "IP, " + d3, "IP, " + d10};
     const std::vector<Line> runs = c.lines(names);
     const Parameters& p = runs[0].file.scene.parameters;
     const PostInstability post = post_instability(p, runs[0].file.scene.L);
@@ -109,14 +110,15 @@ void fig6(Composer& c, int k, int n) {
       ss.push_back(series(runs[i].csv, "sigma", rlabel[i], rcolor[i], "-", 1.2));
     }
     const std::string a = lam == 5 ? "(a)" : "(c)", b = lam == 5 ? "(b)" : "(d)";
-    json pd = lines_panel(a + " $\\Delta_l(t)$, $\\lambda=" + std::to_string(lam) +
-                              "$ (solid $l=2$, dashed 3, dash-dot 4; runs as in " + b + ")",
+    json pd = lines_panel(a + " $\\Delta_l(t)$, " + tex_value(SceneParameter::lambda, lam) +
+                              " (solid $l=2$, dashed 3, dash-dot 4; runs as in " + b + ")",
                           "$\\Delta_l$", sd, "log", {1, T}, "log");
     pd["hlines"] = {hline(tilde, "$\\tilde\\Delta_2$ (theory)", "black", "-", 3),
                     hline(mean_bar, "$\\bar\\Delta_2$ (simulations)", "tab:green", "--", 2)};
     // The runs' legend is (b)'s and (d)'s, as in the paper; the right half below the curves holds the shapes.
     pd["legend_loc"] = "center left";
-    json ps = lines_panel(b + " $\\sigma(t)$, $\\lambda=" + std::to_string(lam) + "$", "$\\sigma$", ss, "log", {1, T});
+    json ps =
+        lines_panel(b + " $\\sigma(t)$, " + tex_value(SceneParameter::lambda, lam), "$\\sigma$", ss, "log", {1, T});
     ps["hlines"] = {hline(s_star, "$\\sigma_*$", "black", "-", 3)};
     const std::string how = "means over t in [" + num(T - w) + ", " + num(T) + "]";
     const std::string tag = "lambda = " + std::to_string(lam);
@@ -170,7 +172,10 @@ void fig6(Composer& c, int k, int n) {
     for (auto& v : out) rows.insert(rows.end(), v.begin(), v.end());
   }
   const std::string table = c.put("fig6e.csv", fig6e_csv(f, rows));
-  panels.push_back({{"kind", "fig6e"}, {"title", "(e) $\\tilde\\Delta_2$ against $\\bar\\Delta_2$"}, {"data", table}});
+  panels.push_back({{"kind", "fig6e"},
+                    {"title", "(e) $\\tilde\\Delta_2$ against $\\bar\\Delta_2$"},
+                    {"data", table},
+                    {"lambda_symbol", parameter_row(SceneParameter::lambda).symbol}});
   std::vector<double> dev;
   std::map<double, std::vector<std::pair<double, double>>> by_lambda;  // (ln alpha, |ratio - 1|)
   for (const auto& r : rows)

@@ -23,6 +23,7 @@
 #include "rbcstab/io/simulation_io.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/report/bifurcation_plot.hpp"
+#include "rbcstab/report/detail/parameter_labels.hpp"
 #include "rbcstab/report/detail/report_pages.hpp"
 #include "rbcstab/report/detail/staging.hpp"
 #include "rbcstab/verdict/verdict_io.hpp"
@@ -42,6 +43,22 @@ namespace {
 bool has_script(const fs::path& dir) {
   std::error_code ec;
   return !dir.empty() && fs::is_regular_file(dir / kReportScript, ec);
+}
+
+// The figures' title: the scene's name, then its parameters in the parameter table's symbols (mathtext).
+std::string figure_title(const Scene& s) {
+  std::string t = s.name + ":";
+  for (SceneParameter q : {SceneParameter::lambda, SceneParameter::Delta, SceneParameter::Delta0, SceneParameter::B,
+                           SceneParameter::C, SceneParameter::beta})
+    t += (q == SceneParameter::lambda ? " " : ", ") + detail::tex_value(q, get_parameter(s, q));
+  return t;
+}
+
+// Every parameter's TeX symbol by name, for the labels the drawing script writes.
+nlohmann::json parameter_symbols() {
+  nlohmann::json j = nlohmann::json::object();
+  for (const ParameterRow& row : parameter_table()) j[row.name] = row.symbol;
+  return j;
 }
 
 std::string grid_csv(const ShapeGrid& g) {
@@ -318,6 +335,8 @@ ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, con
     nlohmann::json manifest;
     manifest["scene"] = to_json(sf.scene);
     put_truncation(manifest, sf);
+    manifest["title"] = figure_title(sf.scene);
+    manifest["symbols"] = parameter_symbols();
     manifest["parameters"] = to_json(sf.scene.parameters);
     nlohmann::json panel;
     panel["summary"] = o.panel_summary;
@@ -544,6 +563,8 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     nlohmann::json manifest;
     manifest["scene"] = to_json(sf.scene);
     put_truncation(manifest, sf);
+    manifest["title"] = figure_title(sf.scene);
+    manifest["symbols"] = parameter_symbols();
     manifest["parameters"] = to_json(p);
     manifest["summary"] = to_json(res.run, p);
     manifest["summary"].erase("trajectory");

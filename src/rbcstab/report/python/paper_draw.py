@@ -138,7 +138,7 @@ def draw_fig6e(ax, p, folder):
     for n, lam in enumerate(lams):
         idx = [k for k in keep if d["lambda"][k] == lam]
         ax.scatter([d["Delta2_bar"][k] for k in idx], [d["Delta2_tilde"][k] for k in idx], marker=MARKERS[n],
-                   facecolors="none" if n else "0.3", edgecolors="black", s=36, label=rf"$\lambda={lam:g}$")
+                   facecolors="none" if n else "0.3", edgecolors="black", s=36, label=rf"${p['lambda_symbol']} = {lam:g}$")
     vals = [d[c][k] for k in keep for c in ("Delta2_tilde", "Delta2_bar")]
     if vals:
         ax.plot([min(vals), max(vals)], [min(vals), max(vals)], color="0.5", ls="--", lw=1, label="diagonal")

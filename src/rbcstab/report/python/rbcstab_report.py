@@ -387,9 +387,10 @@ def plot_phase_diagram(csv_path, out, overlay_json=None, size_px=(900, 750), x=N
     return save(fig, out, size_px)
 
 
-def plot_delta2_comparison(csv_path, out, size_px=(750, 750), title=None):
+def plot_delta2_comparison(csv_path, out, symbols, size_px=(750, 750), title=None):
     """Fig. 6e: theoretical Delta~_2 against the simulated mean Delta-bar_2, a diagonal guide, and (when the
     CSV has an alpha column) an inset of the ratio theory/simulation against ln alpha.
+    `symbols`: the parameters' TeX symbols by name (report.json "symbols": the parameter table's).
     CSV columns: Delta2_theory, Delta2_simulation[, alpha][, lambda], or the CSV of `rbcstab post --fig6e`
     (Delta2_tilde, Delta2_bar, alpha, lambda, ...; rows with n/a are skipped)."""
     d = read_csv(csv_path)
@@ -404,7 +405,7 @@ def plot_delta2_comparison(csv_path, out, size_px=(750, 750), title=None):
         groups.setdefault(key, []).append(k)
     fig, ax = new_figure(size_px)
     for n, (key, idx) in enumerate(sorted(groups.items(), key=lambda kv: (kv[0] is None, kv[0]))):
-        lab = rf"$\lambda = {key:g}$" if key is not None else "simulations"
+        lab = rf"${symbols['lambda']} = {key:g}$" if key is not None else "simulations"
         ax.scatter([sim[i] for i in idx], [th[i] for i in idx], marker=MARKERS[n % len(MARKERS)],
                    facecolors="none" if n % 2 else greys(max(2, len(groups)))[n], edgecolors="black",
                    s=36, label=lab, zorder=2)
@@ -443,11 +444,8 @@ def plot_bifurcation(spec_json, out, size_px=(900, 675)):
 # ---------------------------------------------------------------------------------------- drivers
 def draw_report(folder):
     m = read_json(os.path.join(folder, "report.json"))
-    p = m["parameters"]
     scene = m["scene"]
-    tag = (rf"{scene['name']}: $\lambda={p['lambda']:g}$, $\Delta={p['Delta']:g}$, $\Delta_0={p['Delta0']:g}$, "
-           rf"$\mathcal{{B}}={p['B']:g}$, $\mathcal{{C}}={p['C'] if p['C'] is not None else math.inf:g}$, "
-           rf"$\beta={scene['beta']:.4g}$")
+    tag = m["title"]  # the scene's name and parameters in the parameter table's symbols (report.cpp)
     path = lambda name: os.path.join(folder, name)  # noqa: E731
     drawn = []
     for f in m["figures"]:
@@ -474,7 +472,7 @@ def draw_report(folder):
             drawn.append(plot_phase_diagram(path(data[0]), out, path(data[1]) if len(data) > 1 else None, size,
                                             title=f.get("title")))
         elif kind == "delta2_comparison":
-            drawn.append(plot_delta2_comparison(path(data[0]), out, size, title=f.get("title")))
+            drawn.append(plot_delta2_comparison(path(data[0]), out, m["symbols"], size, title=f.get("title")))
         elif kind == "bifurcation":
             drawn.append(plot_bifurcation(path(data[0]), out, size))
         else:
@@ -537,7 +535,7 @@ def selftest(folder):
                    "points": [], "styles": []}, f)
     out = [plot_bifurcation(p("curve_plot.json"), p("fig_bifurcation_continue.png")),
            plot_phase_diagram(p("phase_diagram.csv"), p("fig_phase_diagram.png"), p("phase_diagram_overlay.json")),
-           plot_delta2_comparison(p("delta2_comparison.csv"), p("fig_delta2_theory.png")),
+           plot_delta2_comparison(p("delta2_comparison.csv"), p("fig_delta2_theory.png"), {"lambda": r"\lambda"}),
            plot_bifurcation(p("bifurcation_plot.json"), p("fig_bifurcation.png"))]
     with open(p("figures.json"), "w") as f:
         json.dump(out, f, indent=2)
