@@ -27,12 +27,14 @@ std::string keyword_of(const std::string& key) { return key == "lambda" ? "lambd
 
 namespace {
 
+using python::keyword_of;  // beside the overload below, not hidden by it
 std::string keyword_of(const SceneKey& k) { return keyword_of(k.key); }
 
 // The keywords beside the scene keys: the panel tables ([diagram], [fig6e], [continuation]) as dicts, and the
 // file the scene came from (messages name it).
 constexpr const char* kPanels[] = {"diagram", "fig6e", "continuation"};
-std::optional<SceneTable> SceneFile::*panel_field(const std::string& name) {
+using PanelField = std::optional<SceneTable> SceneFile::*;
+PanelField panel_field(const std::string& name) {
   return name == "diagram" ? &SceneFile::diagram : name == "fig6e" ? &SceneFile::fig6e : &SceneFile::continuation;
 }
 bool is_panel(const std::string& word) {
@@ -49,7 +51,7 @@ std::string allowed_keywords() {
   std::string out;
   for (const SceneKey& k : scene_keys()) out += (out.empty() ? "" : ", ") + keyword_of(k);
   for (const char* p : kPanels) out += std::string(", ") + p;
-  return out + ", source";
+  return out + ", source, set_by_keyword";
 }
 
 [[noreturn]] void type_error(const std::string& keyword, const std::string& want, const py::handle& v) {
@@ -83,7 +85,7 @@ Integer integer_of(const std::string& keyword, const py::handle& v) {
   int overflow = 0;
   const long long x = PyLong_AsLongLongAndOverflow(i.ptr(), &overflow);
   if (overflow == 0 && x == -1 && PyErr_Occurred()) throw py::error_already_set();
-  return {overflow > 0 ? LLONG_MAX : overflow < 0 ? LLONG_MIN : x, overflow != 0, py::str(i)};
+  return {overflow > 0 ? LLONG_MAX : overflow < 0 ? LLONG_MIN : x, overflow != 0, i.attr("__str__")().cast<std::string>()};
 }
 
 SceneValue value_of(const SceneKey& k, const std::string& keyword, const py::handle& v) {
@@ -237,8 +239,19 @@ void set_key(SceneFile& file, const SceneKey& k, const std::string& word, const 
 // Applies keyword values on top of `file`, then validates. Messages name the keyword, in Python's words.
 SceneFile with_keywords(SceneFile file, const py::kwargs& kwargs) {
   std::vector<std::pair<const SceneKey*, std::string>> given;
+  std::optional<std::set<std::string>> by_keyword;
   for (const auto& [name, value] : kwargs) {
     const std::string word = name.cast<std::string>();
+    if (word == "set_by_keyword") {
+      if (!py::isinstance<py::list>(value) && !py::isinstance<py::tuple>(value))
+        type_error(word, "a list of key paths ('run.L')", value);
+      by_keyword.emplace();
+      for (const py::handle path : value) {
+        if (!py::isinstance<py::str>(path)) type_error(word, "a list of key paths ('run.L')", path);
+        by_keyword->insert(path.cast<std::string>());
+      }
+      continue;
+    }
     if (word == "source") {
       if (!value.is_none() && !py::isinstance<py::str>(value)) type_error(word, "a string (a file name)", value);
       file.source = value.is_none() ? "" : value.cast<std::string>();
@@ -257,6 +270,11 @@ SceneFile with_keywords(SceneFile file, const py::kwargs& kwargs) {
       throw py::value_error(python_words(e.what()) + " (keyword " + word + ")");
     }
   }
+  // A file scene's to_dict(): its values came from the file, but for those a keyword set after (the L_reason of
+  // a result says which: "given by the scene file's run.L" or by the keyword).
+  if (by_keyword && !file.source.empty())
+    for (const auto& [k, word] : given)
+      if (file.origin(k->path()) == Origin::flag && !by_keyword->count(k->path())) file.origins[k->path()] = Origin::file;
   try {
     resolve_physical(file);
     file.scene.validate();
@@ -277,7 +295,8 @@ SceneFile from_dict(const py::handle& d) {
 }
 
 // Every keyword's value: the scene keys (those a physical scene derives left out: its physical keys give them),
-// the panel tables (None when absent) and the source file ('' without one). Scene.from_dict(d) rebuilds it.
+// the panel tables (None when absent), the source file ('' without one) and, for a file scene, the keys a keyword
+// set after it was read (set_by_keyword). Scene.from_dict(d) rebuilds it.
 py::dict to_dict(const SceneFile& f) {
   py::dict out;
   for (const SceneKey& k : scene_keys())
@@ -287,6 +306,11 @@ py::dict to_dict(const SceneFile& f) {
     out[py::str(p)] = panel ? py::object(table_python(*panel)) : py::object(py::none());
   }
   out["source"] = f.source;
+  py::list by_keyword;  // a file scene's keys set by a keyword after it was read (their origin shows in results)
+  for (const SceneKey& k : scene_keys())
+    if (!f.source.empty() && f.origin(k.path()) == Origin::flag && !derived_from_physical(f, k))
+      by_keyword.append(k.path());
+  out["set_by_keyword"] = by_keyword;
   return out;
 }
 
@@ -314,7 +338,8 @@ std::string repr(const SceneFile& f) {
   std::string out;
   for (const auto& [key, value] : d) {
     const std::string k = key.cast<std::string>();
-    if (!always.count(k) && defaults.contains(key) && value.equal(defaults[key])) continue;
+    const bool file_marks = k == "set_by_keyword" && !f.source.empty();  // eval needs them to mark file values
+    if (!always.count(k) && !file_marks && defaults.contains(key) && value.equal(defaults[key])) continue;
     out += (out.empty() ? "" : ", ") + keyword_of(k) + "=" + std::string(py::repr(value));
   }
   return "rbcstab.Scene(" + out + ")";
@@ -371,7 +396,8 @@ a TypeError. Scenes are immutable and hashable: ``replace(**changes)`` returns a
       "A copy with the given keywords changed (the same keywords as Scene()).");
   cls.def("to_dict", &to_dict,
           "Every keyword's value (keys a physical scene derives left out; L, beta: None when not given; panel\n"
-          "tables: None when absent; source: '' without a file); Scene.from_dict(d) and Scene(**d) rebuild it.");
+          "tables: None when absent; source: '' without a file; set_by_keyword: a file scene's keys a keyword set\n"
+          "after it was read); Scene.from_dict(d) and Scene(**d) rebuild it.");
   cls.def(
       "to_toml", [](const SceneFile& f) { return to_toml(f); }, "The scene as scene-file text.");
   cls.def(
