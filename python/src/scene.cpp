@@ -85,7 +85,10 @@ Integer integer_of(const std::string& keyword, const py::handle& v) {
   int overflow = 0;
   const long long x = PyLong_AsLongLongAndOverflow(i.ptr(), &overflow);
   if (overflow == 0 && x == -1 && PyErr_Occurred()) throw py::error_already_set();
-  return {overflow > 0 ? LLONG_MAX : overflow < 0 ? LLONG_MIN : x, overflow != 0, i.attr("__str__")().cast<std::string>()};
+  return {overflow > 0   ? LLONG_MAX
+          : overflow < 0 ? LLONG_MIN
+                         : x,
+          overflow != 0, i.attr("__str__")().cast<std::string>()};
 }
 
 SceneValue value_of(const SceneKey& k, const std::string& keyword, const py::handle& v) {
@@ -274,7 +277,8 @@ SceneFile with_keywords(SceneFile file, const py::kwargs& kwargs) {
   // a result says which: "given by the scene file's run.L" or by the keyword).
   if (by_keyword && !file.source.empty())
     for (const auto& [k, word] : given)
-      if (file.origin(k->path()) == Origin::flag && !by_keyword->count(k->path())) file.origins[k->path()] = Origin::file;
+      if (file.origin(k->path()) == Origin::flag && !by_keyword->count(k->path()))
+        file.origins[k->path()] = Origin::file;
   try {
     resolve_physical(file);
     file.scene.validate();

@@ -400,8 +400,8 @@ void bind_sweep(py::module_& m) {
       // scene goes as a Scene (its pickle keeps what the document's scene_toml does not: which keys were given).
       .def(py::pickle(
           [](const DiagramData& d) {
-            return py::make_tuple(py::cast(d.file), d.document.dump(), d.overlay.dump(), d.run.computed,
-                                  d.run.resumed, d.run.rejected, d.run.seconds, d.output.include_seconds);
+            return py::make_tuple(py::cast(d.file), d.document.dump(), d.overlay.dump(), d.run.computed, d.run.resumed,
+                                  d.run.rejected, d.run.seconds, d.output.include_seconds);
           },
           [](const py::tuple& t) {
             auto d = std::make_shared<DiagramData>();
