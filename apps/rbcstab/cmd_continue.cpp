@@ -219,8 +219,8 @@ Runner add_continue(CLI::App& app) {
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   o->o_max_points =
-      app.add_option("--max-points", o->engine.max_points, "points per direction, an integer in [2, 100000000]")
-          ->check(integer_in(2, 100000000))
+      app.add_option("--max-points", o->engine.max_points, "points per direction, " + integer_range(2, kMaxPointsLimit))
+          ->check(integer_in(2, kMaxPointsLimit))
           ->capture_default_str();
   o->o_relax_T =
       app.add_option("--relax-T", o->relax_T,
@@ -245,8 +245,8 @@ Runner add_continue(CLI::App& app) {
                  "--curve: upper bound of --parameter2 (the curve ends there exactly; default: none)")
       ->check(number_text("within --parameter2's domain"));
   app.add_option("--point", o->point,
-                 "--curve: start from the K-th located special point of that type, an integer in [1, 1000000]")
-      ->check(integer_in(1, 1000000))
+                 "--curve: start from the K-th located point of that type, " + integer_range(1, kCurvePointLimit))
+      ->check(integer_in(1, kCurvePointLimit))
       ->capture_default_str();
   app.add_flag("--json", o->json, "print one JSON object (branch, special_points) on stdout");
   app.add_option("--csv", o->csv, "write the branch as CSV to this file");
@@ -254,9 +254,9 @@ Runner add_continue(CLI::App& app) {
                  "write a branch file (the JSON plus every point's state and what a restart needs) to this file");
   o->o_label_every =
       app.add_option("--label-every", o->label_every,
-                     "label every N-th point of a branch (AUTO's NPR), an integer in [0, 100000000]; special points "
-                     "and the two ends are always labelled")
-          ->check(integer_in(0, 100000000))
+                     "label every N-th point of a branch (AUTO's NPR), " + integer_range(0, kLabelEveryLimit) +
+                         "; special points and the two ends are always labelled")
+          ->check(integer_in(0, kLabelEveryLimit))
           ->capture_default_str();
   app.add_option("--measures", o->measures,
                  "text output: the measures of the labelled-point table, comma-separated (e.g. r,Psi,sigma); "

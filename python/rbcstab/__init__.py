@@ -17,5 +17,15 @@ from .continuation import __all__ as _continuation_all  # rbcstab.continuation i
 from .sweep import *  # noqa: F401,F403 (diagram, trace)
 from . import model as _model, sweep as _sweep
 
+
+def _scene_signature():
+    """Scene(**keywords): every keyword with its default, from the library's key table (Scene._keywords())."""
+    import inspect
+    return inspect.Signature([inspect.Parameter(keyword, inspect.Parameter.KEYWORD_ONLY, default=default)
+                              for keyword, default in Scene._keywords()])
+
+
+Scene.__signature__ = _scene_signature()
+
 __all__ = (["__version__", "Scene", "parameter_table", "scene_keys", "Report", "Simulation", "simulate", "thresholds", "post",
             "summary"] + _model.__all__ + _continuation_all + _sweep.__all__)

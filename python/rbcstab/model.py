@@ -66,19 +66,29 @@ class Model(_rbcstab.Model):
         """The modes l = 2..L (the index of observables' Delta is l - 2)."""
         return list(range(2, self.L + 1))
 
+    def __reduce__(self):
+        # Rebuilt from its scene (which holds the level asked for): the same system, without a second warning.
+        return (_rebuilt, (self.scene,))
+
     def __repr__(self):
         exact = "exact" if self.exact else "approximate"
-        return (f"<rbcstab Model of {self.scene.name!r}: {self.level} ({exact}), n={self.n}, L={self.L}>")
+        return f"<rbcstab Model of {self.scene.label}: {self.level} ({exact}), n={self.n}, L={self.L}>"
 
     def _repr_html_(self):
         names = self.state_names
         shown = ", ".join(names[:12]) + (f", ... ({len(names)} in all)" if len(names) > 12 else "")
-        rows = [("scene", self.scene.name), ("level", f"{self.level}: {self.level_reason}"),
+        rows = [("scene", self.scene.label), ("level", f"{self.level}: {self.level_reason}"),
                 ("L", f"{self.L}: {self.L_reason}"), ("n", str(self.n)), ("state", shown)]
         rows += [("warning", w) for w in self.warnings]
         body = "".join(f"<tr><th style='text-align:left'>{html.escape(k)}</th><td style='text-align:left'>"
                        f"{html.escape(v)}</td></tr>" for k, v in rows)
         return f"<table>{body}</table>"
+
+
+def _rebuilt(scene):
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", ModelWarning)
+        return Model(scene)
 
 
 def initial_state(scene, level=None):

@@ -30,6 +30,13 @@ std::function<void()> signal_poll();
 // The Python type name of v ("float", "str"), for TypeError messages.
 std::string type_name(const py::handle& v);
 
+// A scene key's Python keyword: the key itself, but lambda_ for lambda (a Python reserved word).
+std::string keyword_of(const std::string& key);
+
+// A library message in Python's words: each CLI flag it names becomes the keyword (--max-points: max_points,
+// --L: L, --lambda: lambda_; "[--min, --max]": "[min, max]"), as docs/python.md maps them (snake_case).
+std::string python_words(const std::string& message);
+
 // The SceneFile behind a rbcstab.Scene (TypeError for anything else).
 const SceneFile& scene_file(const py::handle& scene);
 

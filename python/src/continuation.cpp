@@ -384,7 +384,7 @@ void bind_continuation(py::module_& m) {
       "Writes the CLI's branch file (`rbcstab continue --save`), atomically.");
   run.def("outcome", [](const Run& r) {
     const RunOutcome o = outcome(r.run);
-    return py::make_tuple(o.has_output, o.note, o.failure);
+    return py::make_tuple(o.has_output, python_words(o.note), python_words(o.failure));
   });
   run.def(
       "label_type", [](const Run& r, int label) { return find_label(r.run, label).type; }, py::arg("label"),

@@ -1,3 +1,4 @@
+#include <cctype>
 #include <memory>
 
 #include "bindings.hpp"
@@ -35,6 +36,30 @@ py::object to_python(const nlohmann::json& j) {
       break;
   }
   throw std::logic_error("to_python: a binary JSON value");
+}
+
+std::string python_words(const std::string& message) {
+  auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
+  auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '-'; };
+  std::string out;
+  for (std::size_t i = 0; i < message.size(); ++i) {
+    const bool starts = message.compare(i, 2, "--") == 0 && i + 2 < message.size() && letter(message[i + 2]) &&
+                        (i == 0 || !(word(message[i - 1]) || message[i - 1] == '/' || message[i - 1] == '_'));
+    if (!starts) {
+      out += message[i];
+      continue;
+    }
+    std::size_t end = i + 2;
+    while (end < message.size() && word(message[end])) ++end;
+    while (message[end - 1] == '-') --end;  // "--max-": the dash is punctuation
+    std::string flag = message.substr(i + 2, end - i - 2);
+    for (char& c : flag)
+      if (c == '-') c = '_';
+    if (out.size() >= 5 && out.compare(out.size() - 5, 5, "from ") == 0) out += "keyword ";  // "T from --T"
+    out += keyword_of(flag);
+    i = end - 1;
+  }
+  return out;
 }
 
 std::string type_name(const py::handle& v) { return py::str(py::type::handle_of(v).attr("__name__")); }

@@ -11,13 +11,14 @@ PYBIND11_MODULE(_rbcstab, m) {
   namespace py = pybind11;
   m.doc() = "rbcstab's C++ library (use the rbcstab package, not this module)";
   m.attr("__version__") = RBCSTAB_VERSION;
-  // Invalid input names the parameter, its value and the allowed range: ValueError, as for any Python API.
+  // Invalid input names the parameter, its value and the allowed range: ValueError, as for any Python API, in
+  // Python's words (keywords, not the CLI's flags).
   // An output that cannot be written is an OSError; anything else the library throws is a RuntimeError.
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const rbcstab::InvalidArgument& e) {
-      PyErr_SetString(PyExc_ValueError, e.what());
+      PyErr_SetString(PyExc_ValueError, rbcstab::python::python_words(e.what()).c_str());
     } catch (const rbcstab::OutputError& e) {
       PyErr_SetString(PyExc_OSError, e.what());
     }

@@ -178,19 +178,23 @@ std::shared_ptr<DiagramData> run_diagram_scene(const py::handle& scene, const Di
   return d;
 }
 
-// A traced boundary and its document, as `rbcstab trace`.
+// A traced boundary and its document, as `rbcstab trace`: what the result shows, as plain values (its CSV made
+// once), so that a pickle holds all of it.
 struct TraceData {
-  DiagramSpec plane;
-  TraceResult result;
+  std::string x_axis, y_axis;
+  double x_min = 0, x_max = 0, y_min = 0, y_max = 0;
+  std::vector<TraceCurve> curves_;
+  std::vector<TraceCorner> corners_;
+  std::string csv_text;
   nlohmann::json document;
   nlohmann::json overlay;  // the report's overlay: the traced pieces and the paper's analytic lines
 
-  std::string csv() const { return trace_csv(plane, result); }
+  const std::string& csv() const { return csv_text; }
   std::string json_text() const { return document.dump(1) + "\n"; }
   void save(const std::string& prefix) const { save_files(prefix, csv(), json_text()); }
   py::list curves() const {
     py::list out;
-    for (const TraceCurve& c : result.curves) {
+    for (const TraceCurve& c : curves_) {
       std::vector<double> x, y, mu, sigma_R, sigma_c;
       for (const TracePoint& p : c.points) {
         x.push_back(p.x), y.push_back(p.y), mu.push_back(p.mu);
@@ -211,18 +215,56 @@ struct TraceData {
   }
   py::dict corners() const {
     std::vector<double> x, y;
-    const py::ssize_t n = py::ssize_t(result.corners.size());
+    const py::ssize_t n = py::ssize_t(corners_.size());
     py::array_t<long long> l_from{n}, l_to{n};
-    for (std::size_t k = 0; k < result.corners.size(); ++k) {
-      x.push_back(result.corners[k].x), y.push_back(result.corners[k].y);
-      l_from.mutable_at(py::ssize_t(k)) = result.corners[k].l_from;
-      l_to.mutable_at(py::ssize_t(k)) = result.corners[k].l_to;
+    for (std::size_t k = 0; k < corners_.size(); ++k) {
+      x.push_back(corners_[k].x), y.push_back(corners_[k].y);
+      l_from.mutable_at(py::ssize_t(k)) = corners_[k].l_from;
+      l_to.mutable_at(py::ssize_t(k)) = corners_[k].l_to;
     }
     py::dict d;
     d["x"] = own(std::move(x));
     d["y"] = own(std::move(y));
     d["l_from"] = l_from;
     d["l_to"] = l_to;
+    return d;
+  }
+
+  // Pickling: every field as plain Python values (points and corners as tuples of numbers).
+  py::tuple state() const {
+    py::list cs, ks;
+    for (const TraceCurve& c : curves_) {
+      py::list pts;
+      for (const TracePoint& p : c.points) pts.append(py::make_tuple(p.x, p.y, p.l, p.sigma_R, p.sigma_c, p.mu));
+      cs.append(py::make_tuple(c.l, c.criterion, c.chain, pts));
+    }
+    for (const TraceCorner& k : corners_) ks.append(py::make_tuple(k.x, k.y, k.l_from, k.l_to));
+    return py::make_tuple(py::make_tuple(x_axis, y_axis, x_min, x_max, y_min, y_max), cs, ks, csv_text, document.dump(),
+                          overlay.dump());
+  }
+  static std::shared_ptr<TraceData> from_state(const py::tuple& t) {
+    auto d = std::make_shared<TraceData>();
+    const auto plane = t[0].cast<py::tuple>();
+    d->x_axis = plane[0].cast<std::string>(), d->y_axis = plane[1].cast<std::string>();
+    d->x_min = plane[2].cast<double>(), d->x_max = plane[3].cast<double>();
+    d->y_min = plane[4].cast<double>(), d->y_max = plane[5].cast<double>();
+    for (const py::handle c : t[1]) {
+      const auto ct = c.cast<py::tuple>();
+      TraceCurve curve{ct[0].cast<int>(), ct[1].cast<std::string>(), {}, ct[2].cast<std::size_t>()};
+      for (const py::handle p : ct[3]) {
+        const auto pt = p.cast<py::tuple>();
+        curve.points.push_back({pt[0].cast<double>(), pt[1].cast<double>(), pt[2].cast<int>(), pt[3].cast<double>(),
+                                pt[4].cast<double>(), pt[5].cast<double>()});
+      }
+      d->curves_.push_back(std::move(curve));
+    }
+    for (const py::handle k : t[2]) {
+      const auto kt = k.cast<py::tuple>();
+      d->corners_.push_back({kt[0].cast<double>(), kt[1].cast<double>(), kt[2].cast<int>(), kt[3].cast<int>()});
+    }
+    d->csv_text = t[3].cast<std::string>();
+    d->document = nlohmann::json::parse(t[4].cast<std::string>());
+    d->overlay = nlohmann::json::parse(t[5].cast<std::string>());
     return d;
   }
 };
@@ -239,7 +281,9 @@ struct TraceArgs {
 std::shared_ptr<TraceData> trace_scene(const py::handle& scene, const TraceArgs& a) {
   const SceneFile f = grid_scene(scene);
   auto d = std::make_shared<TraceData>();
-  d->plane = plane_spec(f, a.plane);
+  const DiagramSpec plane = plane_spec(f, a.plane);
+  d->x_axis = to_string(plane.x.axis), d->y_axis = to_string(plane.y.axis);
+  d->x_min = plane.x.min, d->x_max = plane.x.max, d->y_min = plane.y.min, d->y_max = plane.y.max;
   TraceOptions to;
   to.criterion = trace_criterion_from_string(a.criterion);
   to.method = trace_method_from_string(a.method);
@@ -256,10 +300,13 @@ std::shared_ptr<TraceData> trace_scene(const py::handle& scene, const TraceArgs&
   polled.predictor.integrator.poll = signal_poll();
   {
     py::gil_scoped_release release;
-    d->result = trace_boundary(f.scene, d->plane, polled);
-    d->document = trace_json(f, d->plane, to, d->result);
-    if (a.diagram) d->document["agreement"] = trace_agreement_json(dj, a.diagram_source, d->plane, polled, threads);
-    d->overlay = phase_overlay_json(d->plane, d->result.curves, analytic_overlays(f.scene, d->plane, 200));
+    const TraceResult result = trace_boundary(f.scene, plane, polled);
+    d->document = trace_json(f, plane, to, result);
+    if (a.diagram) d->document["agreement"] = trace_agreement_json(dj, a.diagram_source, plane, polled, threads);
+    d->overlay = phase_overlay_json(plane, result.curves, analytic_overlays(f.scene, plane, 200));
+    d->csv_text = trace_csv(plane, result);
+    d->curves_ = result.curves;
+    d->corners_ = result.corners;
   }
   return d;
 }
@@ -343,7 +390,32 @@ void bind_sweep(py::module_& m) {
       .def_property_readonly("resumed", [](const DiagramData& d) { return d.run.resumed; })
       .def_property_readonly("rejected", [](const DiagramData& d) { return d.run.rejected; })
       .def_property_readonly("seconds", [](const DiagramData& d) { return d.run.seconds; })
-      .def_property_readonly("L", [](const DiagramData& d) { return d.file.scene.L; });
+      .def_property_readonly("L", [](const DiagramData& d) { return d.file.scene.L; })
+      // The document holds the spec and every point (spec_from_json, points_from_json: merge's readers); the
+      // scene goes as a Scene (its pickle keeps what the document's scene_toml does not: which keys were given).
+      .def(py::pickle(
+          [](const DiagramData& d) {
+            return py::make_tuple(py::cast(d.file), d.document.dump(), d.overlay.dump(), d.run.computed, d.run.resumed,
+                                  d.run.rejected, d.run.seconds, d.output.include_seconds);
+          },
+          [](const py::tuple& t) {
+            auto d = std::make_shared<DiagramData>();
+            d->file = t[0].cast<SceneFile>();
+            d->document = nlohmann::json::parse(t[1].cast<std::string>());
+            d->overlay = nlohmann::json::parse(t[2].cast<std::string>());
+            d->spec = spec_from_json(d->document);
+            d->run.points = points_from_json(d->document, d->spec);
+            d->run.computed = t[3].cast<std::size_t>();
+            d->run.resumed = t[4].cast<std::size_t>();
+            d->run.rejected = t[5].cast<std::vector<std::string>>();
+            d->run.seconds = t[6].cast<double>();
+            d->run.complete = true;
+            d->run.config_hash = d->document.value("config_hash", "");
+            d->output.include_seconds = t[7].cast<bool>();
+            if (const auto s = d->document.find("shard"); s != d->document.end())
+              d->shard = {s->at("k").get<int>(), s->at("n").get<int>()};
+            return d;
+          }));
 
   m.def(
       "diagram",
@@ -378,12 +450,10 @@ void bind_sweep(py::module_& m) {
       .def("csv", &TraceData::csv)
       .def("json_text", &TraceData::json_text)
       .def("save", &TraceData::save, py::arg("prefix"))
-      .def_property_readonly(
-          "axes",
-          [](const TraceData& d) { return py::make_tuple(to_string(d.plane.x.axis), to_string(d.plane.y.axis)); })
-      .def_property_readonly("x_range", [](const TraceData& d) { return py::make_tuple(d.plane.x.min, d.plane.x.max); })
-      .def_property_readonly("y_range",
-                             [](const TraceData& d) { return py::make_tuple(d.plane.y.min, d.plane.y.max); });
+      .def_property_readonly("axes", [](const TraceData& d) { return py::make_tuple(d.x_axis, d.y_axis); })
+      .def_property_readonly("x_range", [](const TraceData& d) { return py::make_tuple(d.x_min, d.x_max); })
+      .def_property_readonly("y_range", [](const TraceData& d) { return py::make_tuple(d.y_min, d.y_max); })
+      .def(py::pickle([](const TraceData& d) { return d.state(); }, &TraceData::from_state));
 
   m.def(
       "trace",

@@ -8,6 +8,7 @@
 
 #include "rbcstab/continuation/detail/scene_switch.hpp"
 #include "rbcstab/continuation/scene_start.hpp"
+#include "rbcstab/continuation/tunable_options.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
@@ -46,7 +47,8 @@ void BranchSpec::validate() const {
     throw InvalidArgument("model", "model = " + to_string(scene.model) + " is not available for --kind " +
                                        to_string(kind) + ": must be " + to_string(level) + " (or auto)");
   require(std::isfinite(relax_T) && relax_T >= 0, "relax_T", relax_T, "a finite number >= 0");
-  require(label_every >= 0, "label_every", label_every, "an integer >= 0 (0: label only the ends and special points)");
+  require(label_every >= 0 && label_every <= kLabelEveryLimit, "label_every", label_every,
+          integer_range(0, kLabelEveryLimit) + " (0: label only the ends and special points)");
   require(std::isfinite(relax_tol) && relax_tol > 0 && relax_tol <= 1, "relax_tol", relax_tol,
           "(0, 1] (the periodicity defect of a unit-norm state)");
   require(relax_max_periods >= 1 && relax_max_periods <= 10000000, "relax_max_periods", relax_max_periods,

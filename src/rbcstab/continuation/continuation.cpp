@@ -32,7 +32,8 @@ void ContinuationOptions::validate() const {
   require(step_shrink > 0 && step_shrink < 1, "step_shrink", step_shrink, "(0, 1)");
   require(easy_iterations >= 1, "easy_iterations", easy_iterations, "an integer >= 1");
   require(!std::isnan(p_min) && !std::isnan(p_max) && p_min < p_max, "p_min", p_min, "a number < p_max");
-  require(max_points >= 2, "max_points", static_cast<double>(max_points), "an integer >= 2");
+  require(max_points >= 2 && max_points <= std::size_t(kMaxPointsLimit), "max_points", static_cast<double>(max_points),
+          integer_range(2, kMaxPointsLimit));
   require(max_location_iterations >= 1, "max_location_iterations", max_location_iterations, "an integer >= 1");
   require(stability_tol >= 0, "stability_tol", stability_tol, "a number >= 0");
   require(certificate_refine_margin >= 0, "certificate_refine_margin", certificate_refine_margin,

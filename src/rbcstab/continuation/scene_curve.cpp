@@ -23,6 +23,7 @@
 #include "rbcstab/continuation/modal_orbit_bp_curve.hpp"
 #include "rbcstab/continuation/ns_curve.hpp"
 #include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/continuation/tunable_options.hpp"
 #include "rbcstab/continuation/two_parameter.hpp"
 #include "rbcstab/core/error.hpp"
 
@@ -262,7 +263,7 @@ void CurveSpec::validate(const BranchSpec& branch) const {
   require_independent(branch.parameter, *parameter2, "parameter2");
   if (!(p2_min < p2_max))
     throw InvalidArgument("min2", "min2 = " + std::to_string(p2_min) + " must be < max2 = " + std::to_string(p2_max));
-  require(point >= 1, "point", point, "an integer >= 1");
+  require(point >= 1 && point <= kCurvePointLimit, "point", point, integer_range(1, kCurvePointLimit));
   require(std::isfinite(symmetric_tol) && symmetric_tol >= 0, "symmetric_tol", symmetric_tol, "a finite number >= 0");
 }
 

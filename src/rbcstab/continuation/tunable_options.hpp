@@ -34,6 +34,17 @@ struct TunableOption {
 };
 
 std::span<const TunableOption> tunable_options();
+
+// The run sizes a front end may ask for, each checked by the validate() of its struct (the CLI's flags and
+// Python's keywords state these ranges): beyond them a value is a slip, not a run (1e8 points per direction is
+// days of work and gigabytes of states).
+inline constexpr long long kMaxPointsLimit = 100000000;   // ContinuationOptions::max_points in [2, this]
+inline constexpr long long kLabelEveryLimit = 100000000;  // BranchSpec::label_every in [0, this]
+inline constexpr long long kCurvePointLimit = 1000000;    // CurveSpec::point in [1, this]
+// "an integer in [lo, hi]": how messages and --help state these ranges.
+inline std::string integer_range(long long lo, long long hi) {
+  return "an integer in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+}
 // The row of `name`; InvalidArgument("option", ...) listing the names for an unknown one.
 const TunableOption& tunable_option(std::string_view name);
 
