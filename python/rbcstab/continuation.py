@@ -19,7 +19,7 @@ import time
 import warnings
 
 
-from . import _args, _rbcstab
+from . import _args, _rbcstab, _tables
 from ._drawing import drawing_module
 from ._rbcstab import Scene
 
@@ -256,6 +256,13 @@ class Branch(_args.Columns):
 
     def __len__(self):
         return len(self._part()["branch"])
+
+    def to_pandas(self):
+        """The branch as a DataFrame: the rows and columns of its CSV (:meth:`to_csv`: every computed point and, in
+        their place along the branch, the located special points), ``type`` and ``label`` naming the special
+        points, ``mode_l``/``mode_m`` the mode a BP's eigenvalue crosses with; attrs: kind, free_parameter,
+        status."""
+        return _tables.branch_frame(self)
 
     @property
     def stable(self):

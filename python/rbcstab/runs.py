@@ -1,7 +1,7 @@
 """One scene's runs: simulate, thresholds, post, summary (the CLI subcommands of the same names)."""
 import html
 
-from . import _args, _rbcstab
+from . import _args, _rbcstab, _tables
 
 _UNSET = object()
 
@@ -71,6 +71,12 @@ class Simulation:
     def ls(self):
         """The modes l = 2..L of the columns of Delta."""
         return list(range(2, self.Delta.shape[1] + 2))
+
+    def to_pandas(self):
+        """A DataFrame, one row per sample: t, Delta_2 .. Delta_L, sigma, r, Psi (attrs: scene, model, L, status)."""
+        return _tables.frame([("t", self.t), (("Delta", [f"Delta_{l}" for l in self.ls]), self.Delta),
+                              ("sigma", self.sigma), ("r", self.r), ("Psi", self.Psi)],
+                             {k: self._data[k] for k in ("scene", "model", "L", "status")})
 
     def __repr__(self):
         d = self._data

@@ -11,7 +11,7 @@ import os
 
 import numpy as np
 
-from . import _args, _rbcstab
+from . import _args, _rbcstab, _tables
 from ._drawing import drawing_module
 from .progress import progress_bar
 
@@ -119,6 +119,15 @@ class Diagram(_Document):
 
     def __dir__(self):
         return sorted(set(super().__dir__()) | set(self._arrays) | set(self.axes))
+
+    def to_pandas(self):
+        """A tidy DataFrame, one row per grid point: the two axes' values, then every per-point array."""
+        return _tables.diagram_frame(self)
+
+    def to_xarray(self):
+        """An xarray Dataset over dimensions (y-axis, x-axis): the axes as coordinates (units and descriptions
+        from the parameter table in attrs), every per-point array as a data variable."""
+        return _tables.diagram_dataset(self)
 
     @property
     def shape(self):
@@ -300,6 +309,20 @@ class Trace(_Document):
         self.corners = data.corners()
         self.analytic_lines = [{"name": o["name"], "x": np.asarray(o["x"], dtype=float),
                                 "y": np.asarray(o["y"], dtype=float)} for o in self._doc["analytic_lines"]]
+
+    def to_pandas(self):
+        """A DataFrame, one row per traced point: l, chain, piece (the index in ``curves``), x, y (named after the
+        axes), mu, sigma_R, sigma_c."""
+        pieces = [(k, c) for k, c in enumerate(self.curves)]
+        def column(f):
+            return np.concatenate([f(k, c) for k, c in pieces]) if pieces else np.array([])
+        return _tables.frame([("l", column(lambda k, c: np.full(len(c), c.l))),
+                              ("chain", column(lambda k, c: np.full(len(c), c.chain))),
+                              ("piece", column(lambda k, c: np.full(len(c), k))),
+                              (self.axes[0], column(lambda k, c: c.x)), (self.axes[1], column(lambda k, c: c.y)),
+                              ("mu", column(lambda k, c: c.mu)), ("sigma_R", column(lambda k, c: c.sigma_R)),
+                              ("sigma_c", column(lambda k, c: c.sigma_c))],
+                             {"axes": self.axes, "criterion": self.criterion})
 
     @property
     def criterion(self):

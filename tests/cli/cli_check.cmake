@@ -160,8 +160,8 @@ elseif(CASE STREQUAL "bench_threshold_bad_range")
   if(NOT rc EQUAL 2)
     message(FATAL_ERROR "exit code ${rc} (expected 2) for --lnC-range 3 2\nstderr: ${err}")
   endif()
-  expect_contains("${err}" "--lnC-range = 3 2" "stderr")
-  expect_contains("${err}" "lo < hi" "stderr")
+  expect_contains("${err}" "--lnC-range: ln_C_lo = 3" "stderr")
+  expect_contains("${err}" "below ln_C_hi = 2" "stderr")
 elseif(CASE STREQUAL "strict_parse")
   # Every value is read in full: trailing text, a second '=', a non-integer mode and a repeated mode are refused
   # naming the flag and the value as given (empty values: strict_parse_commands).
