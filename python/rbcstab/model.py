@@ -46,7 +46,16 @@ class Model(_rbcstab.Model):
     anything else convertible is converted; a wrong shape or a non-finite value is a ValueError, a non-numeric
     value a TypeError):
 
-    - ``rhs(t, y)``: F(t, y), shape (n,).
+    - ``rhs(t, y)``: F(t, y), shape (n,); with ``y`` of shape (n, k) (k states as columns) F of each column,
+      shape (n, k): pass ``vectorized=True`` to ``solve_ivp``.
+    - ``jacobian_p(parameter, t, y)``: dF/dq for a continuation parameter q (``"lambda"``, ``"C"``, ``"B"``,
+      ``"Delta"``, ``"Lambda"``, ...; a composite moves as in continuation: Lambda through Delta), shape (n,): a
+      central difference of the systems the library builds at q +- h, same level and L (relative error about
+      eps^(2/3): 4e-11..4e-10 of its scale measured; one-sided at the edge of q's domain).
+    - ``jacobian_sparsity()``: a bool array (n, n), True where dF/dy can be nonzero (for ``solve_ivp``'s
+      ``jac_sparsity``): the 1x1/2x2 blocks of J = M + v w^T and the rank-one tension coupling's rows x columns.
+      The tension couples every mode that holds area, so at the modal and full levels it is mostly dense; a zero
+      it shows is zero at the initial state and at a perturbed one (structural, not a coincidence of y0).
     - ``jacobian(t, y)``: dF/dy, dense, shape (n, n) (the library's analytic Jacobian; n^2 doubles, so mind the full
       level at large L).
     - ``observables(t, y)``: dict with ``Delta`` (Delta_l at index l - 2), ``sigma``, ``r``, ``Psi``, as simulate

@@ -5,6 +5,7 @@
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <span>
@@ -13,6 +14,7 @@
 
 #include "bindings.hpp"
 #include "rbcstab/analysis/truncation.hpp"
+#include "rbcstab/continuation/continuation_parameter.hpp"
 #include "rbcstab/model/modal_model.hpp"
 #include "rbcstab/model/scene.hpp"
 
@@ -120,15 +122,76 @@ class Model {
 
   py::array_t<double> y0() const { return own(system().initial_state()); }
 
+  // One state y (n,) gives F (n,); k states as the columns of y (n, k) give F column by column (n, k), as SciPy's
+  // solve_ivp(..., vectorized=True) calls it.
   py::array_t<double> rhs(const py::handle& t, const py::handle& y) const {
     const double tt = time_of(t);
-    const Array a = state_of(y, n());
-    py::array_t<double> out{py::ssize_t(n())};
-    const std::span<const double> in(a.data(), n());
-    const std::span<double> dydt(out.mutable_data(), n());
-    {
+    const Array a = real_array(y, "y");
+    if (a.ndim() == 1) {
+      state_of(y, n());  // the shape and finiteness checks, with their messages
+      py::array_t<double> out{py::ssize_t(n())};
+      const std::span<const double> in(a.data(), n());
+      const std::span<double> dydt(out.mutable_data(), n());
       py::gil_scoped_release release;
       system().rhs(tt, in, dydt);
+      return out;
+    }
+    if (a.ndim() != 2 || std::size_t(a.shape(0)) != n())
+      throw py::value_error("y must have shape (" + std::to_string(n()) + ",) (one state) or (" + std::to_string(n()) +
+                            ", k) (k states as columns), got shape " + shape_text(a));
+    require_finite(a, "y");
+    const std::size_t k = std::size_t(a.shape(1));
+    py::array_t<double> out({py::ssize_t(n()), py::ssize_t(k)});
+    {
+      py::gil_scoped_release release;
+      std::vector<double> column(n()), dydt(n());
+      const double* ys = a.data();
+      double* F = out.mutable_data();
+      for (std::size_t j = 0; j < k; ++j) {
+        for (std::size_t i = 0; i < n(); ++i) column[i] = ys[i * k + j];
+        system().rhs(tt, column, dydt);
+        for (std::size_t i = 0; i < n(); ++i) F[i * k + j] = dydt[i];
+      }
+    }
+    return out;
+  }
+
+  // dF/dq at (t, y): the library's difference of the systems built at q +- h (the same level and L).
+  py::array_t<double> jacobian_p(const std::string& parameter, const py::handle& t, const py::handle& y) const {
+    const double tt = time_of(t);
+    const Array a = state_of(y, n());
+    const ContinuationParameter q = continuation_parameter_from_string(parameter);
+    Scene scene = file_.scene;
+    scene.model = built_.level.level;
+    py::array_t<double> out{py::ssize_t(n())};
+    {
+      py::gil_scoped_release release;
+      rhs_parameter_derivative(scene, q, tt, std::span<const double>(a.data(), n()),
+                               std::span<double>(out.mutable_data(), n()));
+    }
+    return out;
+  }
+
+  // Where dF/dy can be nonzero: the 1x1 and 2x2 blocks of J = M + v w^T and the rank-one part's rows (v_i != 0)
+  // times columns (w_j != 0), at the initial state and at a perturbed one (so a component that vanishes at y0
+  // alone is not taken for a structural zero).
+  py::array_t<bool> jacobian_sparsity() const {
+    const std::size_t N = n();
+    py::array_t<bool> out({py::ssize_t(N), py::ssize_t(N)});
+    bool* P = out.mutable_data();
+    std::fill(P, P + N * N, false);
+    std::vector<double> y = system().initial_state(), dfdt(N);
+    for (int pass = 0; pass < 2; ++pass) {
+      if (pass == 1)
+        for (std::size_t i = 0; i < N; ++i) y[i] += 1e-3 * (1.0 + 0.37 * double(i % 7)) * (i % 2 ? -1 : 1);
+      StructuredJacobian J;
+      system().jacobian(0.25, y, J, dfdt);
+      for (std::size_t i = 0; i < N; ++i) {
+        P[i * N + i] = true;
+        if (J.block_start[i] == 2) P[i * N + i + 1] = P[(i + 1) * N + i] = true;
+        if (J.v.empty() || J.v[i] == 0) continue;
+        for (std::size_t j = 0; j < N; ++j) P[i * N + j] = P[i * N + j] || J.w[j] != 0;
+      }
     }
     return out;
   }
@@ -230,7 +293,11 @@ void bind_model(py::module_& m) {
       "L_reason", [](const Model& s) { return s.file().L_reason; }, "why this L (as L_reason in simulate's output)");
   cls.def_property_readonly("y0", &Model::y0, "the initial state (a new array on each access)");
   cls.def_property_readonly("state_names", &Model::names, "the name of each state component, in order");
-  cls.def("rhs", &Model::rhs, py::arg("t"), py::arg("y"), "F(t, y): a new array of shape (n,).");
+  cls.def("rhs", &Model::rhs, py::arg("t"), py::arg("y"),
+          "F(t, y): a new array of shape (n,), or (n, k) for k states as the columns of y (n, k).");
+  cls.def("jacobian_p", &Model::jacobian_p, py::arg("parameter"), py::arg("t"), py::arg("y"),
+          "dF/dq at (t, y) for a continuation parameter q: a new array of shape (n,).");
+  cls.def("jacobian_sparsity", &Model::jacobian_sparsity, "where dF/dy can be nonzero: a bool array (n, n).");
   cls.def("jacobian", &Model::jacobian, py::arg("t"), py::arg("y"), "dF/dy at (t, y): a new array of shape (n, n).");
   cls.def("observables", &Model::observables, py::arg("t"), py::arg("y"),
           "Delta_l (index l - 2), sigma, r and Psi at one state y (n,) or at the columns of y (n, k) at times t (k,).");

@@ -290,3 +290,76 @@ def test_bad_inputs_raise():
         model.observables(np.zeros(2), np.tile(y[:, None], (1, 3)))
     with pytest.raises(ValueError, match="finite"):
         model.observables(np.array([0.0, np.nan]), np.tile(y[:, None], (1, 2)))
+
+
+# --- more of the model for users' own tools: batches, dF/dq, the sparsity pattern ------------------------------
+
+@pytest.mark.parametrize("level", LEVELS)
+def test_rhs_over_a_batch_of_states_is_rhs_of_each(level):
+    model = quiet_model(rbcstab.Scene(L=4), level)
+    rng = np.random.default_rng(7)
+    Y = model.y0[:, None] * (1 + 0.05 * rng.standard_normal((model.n, 5)))
+    F = model.rhs(1.5, Y)
+    assert F.shape == (model.n, 5)
+    for j in range(5):  # the same library call per column: bitwise
+        assert np.array_equal(F[:, j], model.rhs(1.5, np.ascontiguousarray(Y[:, j])))
+    # SciPy's vectorized=True (its finite-difference Jacobian calls rhs on a batch) gives the same solution as
+    # the column-by-column calls: the same numbers in the same order.
+    a = solve_ivp(model.rhs, (0.0, 5.0), model.y0, method="Radau", vectorized=True, rtol=1e-8, atol=1e-10)
+    b = solve_ivp(lambda t, y: model.rhs(t, y), (0.0, 5.0), model.y0, method="Radau", vectorized=False,
+                  rtol=1e-8, atol=1e-10)
+    assert a.status == b.status == 0 and np.array_equal(a.y, b.y)
+    with pytest.raises(ValueError, match=r"shape \(" + str(model.n) + r",\) \(one state\) or"):
+        model.rhs(0.0, np.zeros((model.n + 1, 2)))
+
+
+def five_point(models, t, y, h):
+    """dF/dq from the Models at q - 2h, q - h, q + h, q + 2h: error O(h^4)."""
+    fm2, fm1, fp1, fp2 = (m.rhs(t, y) for m in models)
+    return (fm2 - 8 * fm1 + 8 * fp1 - fp2) / (12 * h)
+
+
+@pytest.mark.parametrize("level,keyword,parameter", [("modal", "C", "C"), ("modal", "lambda_", "lambda"),
+                                                     ("modal", "B", "B"), ("full", "C", "C"),
+                                                     ("reduced", "lambda_", "lambda")])
+def test_jacobian_p_against_models_built_at_shifted_parameters(level, keyword, parameter):
+    # The oracle builds four Models from Scenes with the parameter shifted (Python's Scene.replace, a path apart
+    # from the library's with_parameter) and takes a five-point difference: error ~ h^4 |F^(5)| ~ 1e-12 at
+    # h = 1e-3 q, rounding ~ eps |F| / h ~ 1e-13 |F| / q. The library's central difference errs by ~ eps^(2/3) ~
+    # 4e-11 of F's scale (measured 4e-11..4e-10). 1e-8 of max |dF/dq| allows that; a step not scaled with q (the
+    # 1 + |q| of the continuation's own differences) measured 2.5e-8 at C = 0.04, and a wrong factor or sign O(1).
+    scene = rbcstab.Scene(L=4, model=level)
+    model = quiet_model(scene, level)
+    q = getattr(scene, keyword)
+    h = 1e-3 * q
+    models = [quiet_model(scene.replace(**{keyword: q + k * h}), level) for k in (-2, -1, 1, 2)]
+    rng = np.random.default_rng(11)
+    y = model.y0 * (1 + 0.05 * rng.standard_normal(model.n))
+    dq = model.jacobian_p(parameter, 2.0, y)
+    ref = five_point(models, 2.0, y, h)
+    assert dq.shape == (model.n,) and np.max(np.abs(ref)) > 0
+    assert np.max(np.abs(dq - ref)) <= 1e-8 * np.max(np.abs(ref)), np.max(np.abs(dq - ref)) / np.max(np.abs(ref))
+
+
+def test_jacobian_p_of_a_parameter_the_level_leaves_alone_is_zero():
+    # B does not enter the reduced model: the systems at B +- h are the same, and the difference is exactly 0.
+    model = quiet_model(rbcstab.Scene(L=4), "reduced")
+    assert np.array_equal(model.jacobian_p("B", 0.0, model.y0), np.zeros(model.n))
+    with pytest.raises(ValueError, match="parameter"):
+        model.jacobian_p("nonsense", 0.0, model.y0)
+
+
+@pytest.mark.parametrize("level", LEVELS)
+def test_jacobian_sparsity_covers_every_nonzero_of_the_jacobian(level):
+    model = quiet_model(rbcstab.Scene(L=4, beta=0.7), level)
+    P = model.jacobian_sparsity()
+    assert P.shape == (model.n, model.n) and P.dtype == np.bool_ and P.diagonal().all()
+    rng = np.random.default_rng(3)
+    for _ in range(3):
+        y = model.y0 * (1 + 0.1 * rng.standard_normal(model.n)) + 1e-3 * rng.standard_normal(model.n)
+        J = model.jacobian(rng.uniform(0, 10), y)
+        assert not np.any((J != 0) & ~P), np.argwhere((J != 0) & ~P)[:5]
+    sol = solve_ivp(model.rhs, (0.0, 3.0), model.y0, method="BDF", jac_sparsity=P, rtol=1e-9, atol=1e-12)
+    ref = solve_ivp(model.rhs, (0.0, 3.0), model.y0, method="BDF", jac=model.jacobian, rtol=1e-9, atol=1e-12)
+    assert sol.status == ref.status == 0
+    assert np.max(np.abs(sol.y[:, -1] - ref.y[:, -1])) <= 1e-6 * max(1.0, np.max(np.abs(ref.y[:, -1])))

@@ -1,6 +1,10 @@
 #include "rbcstab/continuation/continuation_parameter.hpp"
 
 #include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
 
 #include "rbcstab/core/error.hpp"
 
@@ -82,6 +86,45 @@ std::string unmoved_level_note(ContinuationParameter q, ModelLevel level) {
     if (row.levels & level_bit(m)) moved += (moved.empty() ? "" : " and ") + to_string(m);
   return std::string(row.name) + " does not enter the " + to_string(level) +
          " model: every point in it is the same state (" + row.name + " moves the " + moved + " models)";
+}
+
+void rhs_parameter_derivative(const Scene& scene, ContinuationParameter q, double t, std::span<const double> y,
+                              std::span<double> dfdq) {
+  if (scene.model == ModelLevel::automatic)
+    throw std::logic_error("rhs_parameter_derivative: the scene's level must be concrete (the system's own)");
+  // A step relative to q (C, B and the others act as scales: a step of 1 + |q| would be 25x too coarse at C = 0.04).
+  const double p = get_parameter(scene, q);
+  const double h = std::cbrt(std::numeric_limits<double>::epsilon()) * (p != 0 ? std::abs(p) : 1.0);
+  const std::size_t n = y.size();
+  // F at q = v on the same state layout, or false where v leaves q's domain.
+  auto rhs_at = [&](double v, std::vector<double>& f) {
+    Scene s;
+    try {
+      s = with_parameter(scene, q, v);
+    } catch (const InvalidArgument&) {
+      return false;
+    }
+    const SceneSystem built = make_scene_system(s);
+    if (built.system->dimension() != n)
+      throw InvalidArgument("y", "y has " + std::to_string(n) + " components: the system at " + to_string(q) + " = " +
+                                     std::to_string(v) + " has " + std::to_string(built.system->dimension()));
+    f.assign(n, 0.0);
+    built.system->rhs(t, y, f);
+    return true;
+  };
+  if (dfdq.size() != n) throw std::logic_error("rhs_parameter_derivative: dfdq and y differ in size");
+  std::vector<double> plus, minus, f0, f2;
+  const bool up = rhs_at(p + h, plus), down = rhs_at(p - h, minus);
+  if (up && down) {
+    for (std::size_t i = 0; i < n; ++i) dfdq[i] = (plus[i] - minus[i]) / (2 * h);
+    return;
+  }
+  const double s = up ? 1.0 : -1.0;  // one-sided, into the domain: (-3 f0 + 4 f1 - f2) / (2 h s)
+  if (!(up || down) || !rhs_at(p, f0) || !rhs_at(p + 2 * s * h, f2))
+    throw InvalidArgument(to_string(q), to_string(q) + " = " + std::to_string(p) +
+                                            " leaves room for no difference on either side within its domain");
+  const std::vector<double>& f1 = up ? plus : minus;
+  for (std::size_t i = 0; i < n; ++i) dfdq[i] = (-3 * f0[i] + 4 * f1[i] - f2[i]) / (2 * s * h);
 }
 
 }  // namespace rbcstab

@@ -3,6 +3,7 @@
 // (model/parameter_table.hpp) marked for continuation. They are the five material and shape numbers, the
 // composites Lambda, S of the reduced system (Eq. Lambda_S), and the orientation beta of the stress-free
 // (and initial) shape, which lives in the Scene.
+#include <span>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,13 @@ Scene with_parameter(Scene s, ContinuationParameter q, double value);
 // InvalidArgument("rest_delta_l") for a stress-free shape with l >= 3 content: those problems (reduced,
 // modal) cannot hold it, and silently dropping it would continue a different cell.
 InitialState oriented_initial_state(Scene s);
+
+// dF/dq at (t, y) of the scene's system F (make_scene_system(scene): its level and L, which must be concrete), by
+// central differences of the systems built at q +- h (h = cbrt(eps)|q|: relative error ~ eps^(2/3)), or a
+// second-order one-sided difference where q - h or q + h leaves q's domain. Throws InvalidArgument("y", ...) if
+// y is not of the system's dimension.
+void rhs_parameter_derivative(const Scene& scene, ContinuationParameter q, double t, std::span<const double> y,
+                              std::span<double> dfdq);
 
 // Throws InvalidArgument(name, ...) unless p2 can be set independently of p1 (not equal, not Lambda with
 // Delta or lambda, not S with C or Delta0: independent() of the table): the pairs of a two-parameter curve.
