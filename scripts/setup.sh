@@ -53,8 +53,8 @@ packages=(build-essential cmake ninja-build pkg-config
   python3-nbclient python3-nbformat python3-ipykernel python3-tqdm)
 # The test suite also checks the source format (layout.format); the other modes do not need the formatter.
 [ "$mode" = test ] && packages+=(clang-format)
-# pandas and xarray are optional for users (to_pandas/to_xarray import them); the suite tests those views.
-[ "$mode" = test ] && packages+=(python3-pandas python3-xarray)
+# pandas and xarray are optional for users (to_pandas/to_xarray import them), mypy too (the stubs): the suite tests both.
+[ "$mode" = test ] && packages+=(python3-pandas python3-xarray python3-mypy)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")

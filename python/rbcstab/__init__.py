@@ -25,7 +25,7 @@ def _scene_signature():
                               for keyword, default in Scene._keywords()])
 
 
-Scene.__signature__ = _scene_signature()
+setattr(Scene, "__signature__", _scene_signature())  # inspect.signature reads it (not a declared attribute)
 
 __all__ = (["__version__", "Scene", "parameter_table", "scene_keys", "Report", "Simulation", "simulate", "thresholds", "post",
             "summary"] + _model.__all__ + _continuation_all + _sweep.__all__)

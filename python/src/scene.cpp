@@ -30,6 +30,31 @@ namespace {
 using python::keyword_of;  // beside the overload below, not hidden by it
 std::string keyword_of(const SceneKey& k) { return keyword_of(k.key); }
 
+// The type a keyword takes, as a Python annotation: a name's allowed values as a Literal (editors complete them),
+// a quantity a number in SI units or text with a unit.
+std::string python_type(const SceneKey& k) {
+  switch (k.kind) {
+    case ValueKind::number:
+      return "float";
+    case ValueKind::integer:
+      return "int";
+    case ValueKind::name: {
+      std::string names;
+      for (const std::string& n : k.names) names += (names.empty() ? "" : ", ") + ("\"" + n + "\"");
+      return names.empty() ? "str" : "Literal[" + names + "]";
+    }
+    case ValueKind::text:
+      return "str";
+    case ValueKind::modes:
+      return "Mapping[int, float]";
+    case ValueKind::boolean:
+      return "bool";
+    case ValueKind::quantity:
+      return "float | str";
+  }
+  return "object";
+}
+
 // The keywords beside the scene keys: the panel tables ([diagram], [fig6e], [continuation]) as dicts, and the
 // file the scene came from (messages name it).
 constexpr const char* kPanels[] = {"diagram", "fig6e", "continuation"};
@@ -478,11 +503,13 @@ a TypeError. Scenes are immutable and hashable: ``replace(**changes)`` returns a
           d["help"] = k.help;
           d["names"] = k.names;
           d["default"] = value_or_none(defaults, k);
+          d["type"] = python_type(k);
           out.append(d);
         }
         return out;
       },
-      "Every scene key: keyword, TOML path, CLI flag, help (meaning and range), allowed names, default.");
+      "Every scene key: keyword, TOML path, CLI flag, help (meaning and range), allowed names, default, and the\n"
+      "Python type it takes as an annotation (the stubs' source: python/tools/stubs.py).");
 
   m.def(
       "parameter_table",

@@ -48,3 +48,48 @@ def test_every_python_block_of_the_docs_runs(tmp_path):
         script.write_text(block)
         out = subprocess.run([sys.executable, str(script)], cwd=ROOT, env=env, capture_output=True, text=True)
         assert out.returncode == 0, f"docs/python.md block {k + 1} failed:\n{block}\n{out.stderr[-3000:]}"
+
+
+def test_the_stub_of_the_compiled_module_is_current():
+    import stubs
+    with open(os.path.join(ROOT, "python", "rbcstab", "_rbcstab.pyi")) as f:
+        text = f.read()
+    assert stubs.render() == text, (
+        "python/rbcstab/_rbcstab.pyi is out of date: run PYTHONPATH=build/release/python /usr/bin/python3 "
+        "python/tools/stubs.py --write python/rbcstab/_rbcstab.pyi")
+    assert os.path.exists(os.path.join(ROOT, "python", "rbcstab", "py.typed"))
+
+
+def test_a_type_checker_sees_every_keyword_and_its_type(tmp_path):
+    """mypy over the package as built (its .py files and the stub) accepts the documented calls and flags a wrong
+    type, a name outside a keyword's allowed values and an unknown keyword, each on its line."""
+    import subprocess
+    import pytest
+    pytest.importorskip("mypy")
+    import rbcstab
+    package = os.path.dirname(os.path.dirname(rbcstab.__file__))
+    (tmp_path / "good.py").write_text(
+        "import rbcstab\n"
+        "s = rbcstab.Scene(lambda_=5.0, B=2, model='modal', radius='3.9um', delta_l={3: 0.01})\n"
+        "m = rbcstab.Model(s, 'modal')\n"
+        "y = m.rhs(0.0, m.y0)\n"
+        "x: float = s.Lambda\n")
+    (tmp_path / "bad.py").write_text(
+        "import rbcstab\n"
+        "a = rbcstab.Scene(lambda_='five')\n"
+        "b = rbcstab.Scene(model='bogus')\n"
+        "c = rbcstab.Scene(nonsense=1)\n")
+    env = dict(os.environ, MYPYPATH=package)
+
+    def mypy(name):
+        return subprocess.run([sys.executable, "-m", "mypy", "--no-incremental", "--cache-dir", os.devnull,
+                               "--ignore-missing-imports", name], cwd=tmp_path, env=env, capture_output=True,
+                              text=True)
+
+    good = mypy("good.py")
+    assert good.returncode == 0, good.stdout + good.stderr
+    bad = mypy("bad.py")
+    assert bad.returncode == 1
+    for line, what in ((2, '"lambda_"'), (3, '"model"'), (4, '"nonsense"')):
+        assert any(out.startswith(f"bad.py:{line}: error") and what in out for out in bad.stdout.splitlines()), \
+            bad.stdout
