@@ -14,13 +14,12 @@ arguments, ``Branch.save(path)`` writes the CLI's branch file (``--save``; ``--r
 """
 import html
 import os
-import sys
-import time
 import warnings
 
 
 from . import _args, _rbcstab, _tables
 from ._drawing import drawing_module
+from .progress import progress_bar
 from ._rbcstab import Scene
 
 __all__ = ["continuation", "load_branch", "plot_branches", "Branch", "Curve", "ContinuationError",
@@ -80,41 +79,14 @@ def _options(**given):
     return {k: _KINDS[k](k, v) for k, v in given.items() if v is not None}
 
 
-class _Progress:
-    """progress=True: a tqdm bar of the points computed (python3-tqdm), else a line on stderr every second."""
-
-    def __init__(self, what):
-        self.what = what
-        self.points = 0
-        self._last = time.monotonic()
-        try:
-            from tqdm.auto import tqdm
-        except ImportError:
-            self._bar = None
-        else:
-            self._bar = tqdm(desc=what, unit=" points")
-
-    def __call__(self, points, p):
-        self.points = points
-        if self._bar is not None:
-            self._bar.update(points - self._bar.n)
-            self._bar.set_postfix_str(f"at {p:.6g}", refresh=False)
-        elif time.monotonic() - self._last >= 1.0:
-            self._last = time.monotonic()
-            sys.stderr.write(f"{self.what}: {points} points, at {p:.6g}\n")
-            sys.stderr.flush()
-
-    def close(self):
-        if self._bar is not None:
-            self._bar.close()
-
-
 def _run(call, what, progress, *args):
     """call(*args, progress=callable or None) with the bar shown and closed, and the run's outcome applied: a
     run without output raises ContinuationError, a note or an early end is a ContinuationWarning."""
-    bar = _Progress(what) if _flag("progress", progress) else None
+    bar = progress_bar(progress, what, "points")
     try:
-        run = call(*args, progress=bar)
+        # The library reports (points, parameter value) as it goes and the final count at the end; the bar counts
+        # points, with no known end.
+        run = call(*args, progress=None if bar is None else lambda points, p: bar(points, 0, 0.0))
     finally:
         if bar is not None:
             bar.close()
@@ -154,7 +126,9 @@ def continuation(scene, kind="equilibrium", parameter="lambda", min=None, max=No
     value; a callable f(point) -> float (point: a dict of the point's parameters and numeric measures) gives
     UZ points named 'name' at its zeros. stop_at: {name: value or callable}: end the branch (each direction)
     where it is reached (message 'stopped at name=value').
-    progress=True shows the points computed. Ctrl-C stops it (KeyboardInterrupt); the GIL is released.
+    progress: True shows the points computed (tqdm if importable, else a line on stderr every second); a callable
+    f(done, total, eta) is called with the points so far (total 0: a branch's end is not known in advance); a
+    tqdm bar of yours is updated. Ctrl-C stops it (KeyboardInterrupt); the GIL is released.
 
     Returns a :class:`Branch` (or a :class:`Curve`). Raises ValueError for bad input (naming the parameter, its
     value and the allowed range), TypeError for a value of the wrong type, ContinuationError when the start

@@ -1,8 +1,10 @@
-"""Progress of long calls: a callable ``bar(done, total, eta)`` that rbcstab's long calls update.
+"""Progress of long calls: a callable ``bar(done, total, eta)`` that rbcstab's long calls update, counting the
+call's own unit of work (diagram points, branch points); ``total`` is 0 when the end is not known in advance (a
+continuation ends where its branch does) and ``eta`` then 0.
 
 ``progress_bar(True)`` gives a tqdm bar (Debian's python3-tqdm) when tqdm can be imported, else a plain-text
 line on stderr at most once a second; ``progress_bar(False)`` (or None) gives None; any other callable is used
-as it is. A bar is a context manager: leaving it closes it (tqdm draws its last state, the text bar prints the
+as it is; a tqdm bar of the user's is updated (and left open). A bar is a context manager: leaving it closes it (tqdm draws its last state, the text bar prints the
 final line once).
 """
 import sys
@@ -57,10 +59,12 @@ class TextProgress(_Bar):
 
     def _print(self):
         done, total, eta = self._state
-        percent = 100.0 * done / total if total else 100.0
-        line = f"{self.description}: {done}/{total} {self.unit} ({percent:.0f}%)"
-        if done < total:
-            line += f", ETA {_duration(eta)}" if eta > 0 else ", ETA ?"
+        if not total:  # a count without a known end (continuation points)
+            line = f"{self.description}: {done} {self.unit}"
+        else:
+            line = f"{self.description}: {done}/{total} {self.unit} ({100.0 * done / total:.0f}%)"
+            if done < total:
+                line += f", ETA {_duration(eta)}" if eta and eta > 0 else ", ETA ?"
         stream = self.stream if self.stream is not None else sys.stderr
         stream.write(line + "\n")
         stream.flush()
@@ -82,13 +86,27 @@ class _TqdmProgress(_Bar):
 
     def __call__(self, done, total, eta):
         if self._bar is None:
-            self._bar = self._tqdm(total=total, desc=self._description, unit=self._unit, initial=done)
+            self._bar = self._tqdm(total=total or None, desc=self._description, unit=self._unit, initial=done)
         elif done > self._bar.n:
             self._bar.update(done - self._bar.n)
 
     def close(self):
         if self._bar is not None:
             self._bar.close()
+
+
+class _TqdmInstance(_Bar):
+    """The user's own tqdm bar: its count (and total, when known) follow the call; the user closes it."""
+
+    def __init__(self, bar):
+        self._bar = bar
+
+    def __call__(self, done, total, eta):
+        if total and self._bar.total != total:
+            self._bar.total = total
+            self._bar.refresh()
+        if done > self._bar.n:
+            self._bar.update(done - self._bar.n)
 
 
 class _Passive(_Bar):
@@ -121,5 +139,7 @@ def progress_bar(progress, description="rbcstab", unit="points", use_tqdm=None):
         return TextProgress(description, unit)
     if callable(progress):
         return _Passive(progress)
-    raise TypeError(f"progress must be True, False, None or a callable f(done, total, eta), got "
+    if all(hasattr(progress, a) for a in ("update", "n", "total", "refresh")):  # a tqdm bar (or one like it)
+        return _TqdmInstance(progress)
+    raise TypeError(f"progress must be True, False, None, a callable f(done, total, eta) or a tqdm bar, got "
                     f"{type(progress).__name__}")

@@ -137,33 +137,43 @@ std::vector<Monitor> monitors_of(Given& g) {
 // ---- Ctrl-C and progress while the GIL is released ----
 
 // The engine's stop callback: runs Python's signal handlers (signal_poll: Ctrl-C raises out of the run) and,
-// at most every 0.1 s, calls progress(points, p) under the GIL. It holds no Python reference (the library
-// copies its options without the GIL): the caller keeps `progress` alive for the run and detach() drops the
+// at most every 0.1 s, calls progress(points, p) under the GIL, points counted by the engine's on_progress (every
+// point stepped to, bound and stop points included; finish() reports the last count). It holds no Python reference (the
+// library copies its options without the GIL): the caller keeps `progress` alive for the run and detach() drops the
 // callbacks from the result.
 struct Watch {
+  struct State {
+    PyObject* progress = nullptr;  // borrowed; nullptr: none
+    std::size_t points = 0, reported = 0;
+    double p = 0;
+    Throttle throttle{0.1, true};  // the first point reports at once
+  };
   std::function<void()> poll = signal_poll();
   std::function<bool(const Eigen::VectorXd&, double)> stop;
+  ProgressCallback point;  // after every point a branch gains (both directions, every part of the run)
+  std::shared_ptr<State> state = std::make_shared<State>();
   explicit Watch(const py::object& progress) {
-    struct State {
-      PyObject* progress = nullptr;  // borrowed; nullptr: none
-      std::size_t points = 0;
-      Throttle throttle{0.1, true};  // the first point reports at once
-    };
-    auto state = std::make_shared<State>();
     if (!progress.is_none()) state->progress = progress.ptr();
-    stop = [poll = poll, state](const Eigen::VectorXd&, double p) {
+    stop = [poll = poll, state = state](const Eigen::VectorXd&, double p) {
       poll();
-      ++state->points;
+      state->p = p;
       if (state->progress && state->throttle.due()) {
         py::gil_scoped_acquire gil;
+        state->reported = state->points;
         py::handle(state->progress)(state->points, p);
       }
       return false;
     };
+    point = [state = state](double, double) { ++state->points; };
   }
   void attach(BranchSpec& spec) const {
     spec.engine.stop = stop;
+    spec.engine.on_progress = point;
     spec.orbit.poll = poll;
+  }
+  // After the run, with the GIL: the final count, which the throttle may have held back.
+  void finish() const {
+    if (state->progress && state->points != state->reported) py::handle(state->progress)(state->points, state->p);
   }
 };
 
@@ -176,6 +186,7 @@ BranchSpec& spec_of(ContinuationRun& run) {
 Run detach(ContinuationRun&& run, std::string L_reason) {
   BranchSpec& spec = spec_of(run);
   spec.engine.stop = nullptr;
+  spec.engine.on_progress = nullptr;
   spec.orbit.poll = nullptr;
   for (Monitor& m : spec.monitors) m.function = nullptr;
   return {std::move(run), std::move(L_reason)};
@@ -213,11 +224,15 @@ Run continue_from_scene(const py::handle& scene, const std::string& kind, const 
   }
   g.finish("continuation");
   const Watch watch(progress);
-  py::gil_scoped_release release;
-  SceneRun sr = scene_run(std::move(file), std::move(spec), std::move(curve));
-  watch.attach(sr.spec);
-  ContinuationRun r = continue_run(sr);
-  return detach(std::move(r), sr.L_reason);
+  Run out = [&] {
+    py::gil_scoped_release release;
+    SceneRun sr = scene_run(std::move(file), std::move(spec), std::move(curve));
+    watch.attach(sr.spec);
+    ContinuationRun r = continue_run(sr);
+    return detach(std::move(r), sr.L_reason);
+  }();
+  watch.finish();
+  return out;
 }
 
 // A restart (label), a switch (switch_at) or a curve (label with curve) from a run, as `continue --restart`.
@@ -228,11 +243,15 @@ Run restart_from(const Run& from, RestartRequest q, const py::dict& options, con
   g.finish(what);
   q.validate();
   const Watch watch(progress);
-  py::gil_scoped_release release;
-  ContinuationRun run = from.run;  // the callbacks go on a copy of its spec, which the restart takes
-  watch.attach(spec_of(run));
-  ContinuationRun r = restart(run, q);
-  return detach(std::move(r), saved_run_L_reason(from.run));
+  Run out = [&] {
+    py::gil_scoped_release release;
+    ContinuationRun run = from.run;  // the callbacks go on a copy of its spec, which the restart takes
+    watch.attach(spec_of(run));
+    ContinuationRun r = restart(run, q);
+    return detach(std::move(r), saved_run_L_reason(from.run));
+  }();
+  watch.finish();
+  return out;
 }
 
 Run restart_py(const Run& from, int label, const py::dict& options, const py::object& progress) {

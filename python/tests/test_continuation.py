@@ -7,6 +7,7 @@ f_{l,m} = -S_{l,m} / (i m/2 + Upsilon_l(sigma)) and sigma is the root of
 sum_{l,m} a_l |S_{l,m}|^2 / (m^2/4 + Upsilon_l(sigma)^2) = Delta above every forced sigma_l^c. It is written here
 from the paper's coefficients (Eq. gammas), not from rbcstab.
 """
+import io
 import math
 import os
 import pathlib
@@ -365,6 +366,24 @@ def test_columns_text_csv_and_repr(full_branch):
 def test_progress_runs_with_the_bar():
     b = rbcstab.continuation(rbcstab.Scene(), parameter="lambda", min=4, max=6, progress=True)
     assert len(b) > 2
+
+
+def test_progress_callable_and_tqdm_bar_count_every_point():
+    # The library reports at most every 0.1 s; the final count is reported at the end whatever the throttle held
+    # back: one per point computed (the branch's points but its start, which is solved, not stepped to).
+    calls = []
+    b = rbcstab.continuation(rbcstab.Scene(), parameter="lambda", min=4, max=6,
+                             progress=lambda done, total, eta: calls.append((done, total, eta)))
+    assert calls and all(total == 0 for _, total, _ in calls)
+    counts = [done for done, _, _ in calls]
+    assert counts == sorted(counts) and counts[-1] == len(b) - 1, (counts, len(b))
+    tqdm = pytest.importorskip("tqdm")
+    with tqdm.tqdm(file=io.StringIO()) as bar:
+        end = int(b["label"][b["label"] != 0][-1])  # the EP at lambda = 6
+        b2 = b.restart(end, max=7, progress=bar)
+        assert bar.n == len(b2) - 1
+    with pytest.raises(TypeError, match="a tqdm bar"):
+        rbcstab.continuation(rbcstab.Scene(), progress=object())
 
 
 # ------------------------------------------------------------------------------------- bad input
