@@ -379,7 +379,7 @@ class Trace(_Document):
 
 
 def trace(scene, criterion="asymptotic", *, axes=None, x_range=None, y_range=None, alpha_fixed=None, horizon=0.0,
-          lines=4, samples=128, max_step=0.02, method="auto", diagram=None, threads=1):
+          lines=4, samples=128, max_step=0.02, method="auto", diagram=None, threads=1, progress=False):
     """The stability boundary of a parameter plane traced as curves (``rbcstab trace``).
 
     criterion  'asymptotic' (mu_l = Upsilon_l(<sigma_R>) = 0) or 'finite-horizon' (G_l(T) = 0)
@@ -394,6 +394,8 @@ def trace(scene, criterion="asymptotic", *, axes=None, x_range=None, y_range=Non
     diagram    a Diagram of the same plane (or its to_dict(), or the path of a diagram JSON file): measures
                every predictor's agreement with its simulations (the CLI's --diagram)
     threads    threads for the agreement's per-point verdicts, an integer in [0, 4096] (0: all cores)
+    progress   True: a bar of the criterion evaluations (tqdm if importable, else text on stderr; the total is
+               not known in advance); a callable f(done, total, eta) or a tqdm bar; False: none
 
     Ctrl-C raises KeyboardInterrupt (the criteria's reduced runs poll it). The GIL is released meanwhile."""
     scene = _scene(scene)
@@ -408,13 +410,17 @@ def trace(scene, criterion="asymptotic", *, axes=None, x_range=None, y_range=Non
             text = f.read()
     elif diagram is not None:
         raise TypeError(f"diagram must be a rbcstab.Diagram, its to_dict() or a path, got {type(diagram).__name__}")
-    data = _rbcstab.trace(
-        scene, axes=_names("axes", axes), x_range=_numbers("x_range", x_range), y_range=_numbers("y_range", y_range),
-        alpha_fixed=None if alpha_fixed is None else _number("alpha_fixed", alpha_fixed),
-        criterion=_text("criterion", criterion), method=_text("method", method), horizon=_number("horizon", horizon), lines=_integer("lines", lines),
-        samples=_integer("samples", samples), max_step=_number("max_step", max_step),
-        threads=_integer("threads", threads), diagram=text, diagram_source=source)
-    return Trace(data)
+    args = dict(axes=_names("axes", axes), x_range=_numbers("x_range", x_range), y_range=_numbers("y_range", y_range),
+                alpha_fixed=None if alpha_fixed is None else _number("alpha_fixed", alpha_fixed),
+                criterion=_text("criterion", criterion), method=_text("method", method),
+                horizon=_number("horizon", horizon), lines=_integer("lines", lines),
+                samples=_integer("samples", samples), max_step=_number("max_step", max_step),
+                threads=_integer("threads", threads), diagram=text, diagram_source=source)
+    bar = progress_bar(progress, "rbcstab trace", "criterion evaluations")
+    if bar is None:
+        return Trace(_rbcstab.trace(scene, **args))
+    with bar:
+        return Trace(_rbcstab.trace(scene, progress=bar, **args))
 
 
 # ------------------------------------------------------------------------------------------- Fig. 6e
@@ -459,13 +465,19 @@ class Fig6eTable(_args.Columns):
         return f"<b>rbcstab Fig. 6e table</b><table><tr>{head}</tr>{body}</table>"
 
 
-def fig6e(scene, lambdas=None, B=None, C=None):
+def fig6e(scene, lambdas=None, B=None, C=None, progress=False):
     """The Fig. 6e table (``rbcstab post --fig6e``): the post-instability Delta~2 (Eq. ss) against the simulated
     long-time mean, one run per (lambda, B, C). Delta, Delta0, beta, delta, L, T and the integrator come from
     the scene; lambdas, B, C (each > 0; default: the scene's [fig6e] table, else the paper's 1, 5 / 1..10 /
-    0.01..0.08) choose the grid. Ctrl-C raises KeyboardInterrupt; the GIL is released meanwhile."""
+    0.01..0.08) choose the grid. progress: True, a callable f(done, total, eta) or a tqdm bar, counting the runs
+    of the grid. Ctrl-C raises KeyboardInterrupt; the GIL is released meanwhile."""
     scene = _scene(scene)
     grid = {name: None if v is None else _numbers(name, v) for name, v in (("lambdas", lambdas), ("B", B), ("C", C))}
-    data, columns, csv = _rbcstab.fig6e(scene, **grid)
+    bar = progress_bar(progress, "rbcstab fig6e", "runs")
+    if bar is None:
+        data, columns, csv = _rbcstab.fig6e(scene, **grid)
+    else:
+        with bar:
+            data, columns, csv = _rbcstab.fig6e(scene, progress=bar, **grid)
     return Fig6eTable(data, columns, csv)
 

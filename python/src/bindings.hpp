@@ -5,10 +5,12 @@
 #include <pybind11/pybind11.h>
 
 #include <functional>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "rbcstab/core/progress.hpp"
 #include "rbcstab/io/scene_file.hpp"
 
 namespace rbcstab::python {
@@ -26,6 +28,22 @@ py::array_t<double> own(std::vector<double>&& v);
 // takes the GIL and runs Python's signal handlers, so that Ctrl-C raises KeyboardInterrupt out of the C++ call.
 // Call it only on the thread that released the GIL.
 std::function<void()> signal_poll();
+
+// A long call's on_progress (core/progress.hpp) as calls of a Python progress(done, total, eta), made on the
+// thread that released the GIL (the library's calls come from there) at most every 0.1 s, with the GIL; finish()
+// reports the last count if the throttle held it back. done and total in the call's unit (total 0: not known;
+// eta 0 then). It borrows `progress`: the caller keeps it alive for the call.
+class PythonProgress {
+ public:
+  explicit PythonProgress(const py::object& progress);
+  ProgressCallback callback() const;  // empty for None: the library then skips the work
+  void finish() const;                // with the GIL, after the call
+
+ private:
+  static py::object count(double v);
+  struct State;
+  std::shared_ptr<State> state_;
+};
 
 // The Python type name of v ("float", "str"), for TypeError messages.
 std::string type_name(const py::handle& v);

@@ -1,4 +1,5 @@
 #include <cctype>
+#include <cmath>
 #include <memory>
 
 #include "bindings.hpp"
@@ -77,6 +78,40 @@ std::function<void()> signal_poll() {
     py::gil_scoped_acquire gil;
     if (PyErr_CheckSignals() != 0) throw py::error_already_set();
   };
+}
+
+struct PythonProgress::State {
+  PyObject* progress = nullptr;  // borrowed; nullptr: none
+  double done = 0, total = 0, reported = -1;
+  Throttle throttle{0.1, true};  // the first report at once
+};
+
+PythonProgress::PythonProgress(const py::object& progress) : state_(std::make_shared<State>()) {
+  if (!progress.is_none()) state_->progress = progress.ptr();
+}
+
+ProgressCallback PythonProgress::callback() const {
+  if (!state_->progress) return nullptr;
+  return [state = state_](double done, double total) {
+    state->done = done, state->total = total;
+    if (!state->throttle.due()) return;
+    const double elapsed = state->throttle.elapsed();
+    const double eta = total > 0 && done > 0 ? elapsed * (total - done) / done : 0.0;
+    py::gil_scoped_acquire gil;
+    state->reported = done;
+    py::handle(state->progress)(count(done), count(total), eta);
+  };
+}
+
+void PythonProgress::finish() const {
+  if (state_->progress && state_->done != state_->reported)
+    py::handle(state_->progress)(count(state_->done), count(state_->total), 0.0);
+}
+
+// A whole number as a Python int (points, runs, evaluations), a time as a float.
+py::object PythonProgress::count(double v) {
+  if (v == std::floor(v) && std::abs(v) < 1e15) return py::int_(static_cast<long long>(v));
+  return py::float_(v);
 }
 
 }  // namespace rbcstab::python

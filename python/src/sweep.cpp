@@ -278,7 +278,7 @@ struct TraceArgs {
   std::string diagram_source = "diagram";
 };
 
-std::shared_ptr<TraceData> trace_scene(const py::handle& scene, const TraceArgs& a) {
+std::shared_ptr<TraceData> trace_scene(const py::handle& scene, const TraceArgs& a, const py::object& progress) {
   const SceneFile f = grid_scene(scene);
   auto d = std::make_shared<TraceData>();
   const DiagramSpec plane = plane_spec(f, a.plane);
@@ -298,6 +298,8 @@ std::shared_ptr<TraceData> trace_scene(const py::handle& scene, const TraceArgs&
   if (a.diagram) dj = parse_json_text(*a.diagram, a.diagram_source, "diagram");
   TraceOptions polled = to;  // the criteria's reduced runs answer Ctrl-C (this thread runs them)
   polled.predictor.integrator.poll = signal_poll();
+  const PythonProgress bar(progress);
+  polled.on_progress = bar.callback();
   {
     py::gil_scoped_release release;
     const TraceResult result = trace_boundary(f.scene, plane, polled);
@@ -308,12 +310,14 @@ std::shared_ptr<TraceData> trace_scene(const py::handle& scene, const TraceArgs&
     d->curves_ = result.curves;
     d->corners_ = result.corners;
   }
+  bar.finish();
   return d;
 }
 
 // The Fig. 6e table as `rbcstab post --fig6e --json`, and its columns.
 py::tuple fig6e_scene(const py::handle& scene, const std::optional<std::vector<double>>& lambdas,
-                      const std::optional<std::vector<double>>& B, const std::optional<std::vector<double>>& C) {
+                      const std::optional<std::vector<double>>& B, const std::optional<std::vector<double>>& C,
+                      const py::object& progress) {
   const SceneFile f = grid_scene(scene);
   Fig6eOptions o = fig6e_options(f);
   if (lambdas) o.lambdas = *lambdas;
@@ -322,11 +326,14 @@ py::tuple fig6e_scene(const py::handle& scene, const std::optional<std::vector<d
   o.validate();
   Fig6eOptions polled = o;
   polled.simulation.integrator.poll = signal_poll();
+  const PythonProgress runs(progress);
+  polled.on_progress = runs.callback();
   std::vector<Fig6eRow> rows;
   {
     py::gil_scoped_release release;
     rows = fig6e_table(polled);
   }
+  runs.finish();
   const std::size_t n = rows.size();
   std::vector<double> lambda(n), Bs(n), Cs(n), alpha(n), ln_alpha(n), tilde(n), tilde_int(n), bar(n), ratio(n),
       ratio_int(n);
@@ -460,7 +467,7 @@ void bind_sweep(py::module_& m) {
       [](const py::handle& scene, std::vector<std::string> axes, std::vector<double> x_range,
          std::vector<double> y_range, std::optional<double> alpha_fixed, std::string criterion, std::string method,
          double horizon, long long lines, long long samples, double max_step, long long threads,
-         std::optional<std::string> diagram, std::string diagram_source) {
+         std::optional<std::string> diagram, std::string diagram_source, const py::object& progress) {
         TraceArgs a;
         a.plane = plane_choice(std::move(axes), std::move(x_range), std::move(y_range), {}, {}, alpha_fixed);
         a.criterion = std::move(criterion);
@@ -472,14 +479,16 @@ void bind_sweep(py::module_& m) {
         a.threads = threads;
         a.diagram = std::move(diagram);
         a.diagram_source = std::move(diagram_source);
-        return trace_scene(scene, a);
+        return trace_scene(scene, a, progress);
       },
       py::arg("scene"), py::arg("axes"), py::arg("x_range"), py::arg("y_range"), py::arg("alpha_fixed"),
       py::arg("criterion"), py::arg("method"), py::arg("horizon"), py::arg("lines"), py::arg("samples"),
       py::arg("max_step"), py::arg("threads"), py::arg("diagram"), py::arg("diagram_source"),
+      py::arg("progress") = py::none(),
       "rbcstab trace: the traced boundary as a _Trace (diagram: a diagram document's JSON text, for the agreement).");
 
   m.def("fig6e", &fig6e_scene, py::arg("scene"), py::arg("lambdas"), py::arg("B"), py::arg("C"),
+        py::arg("progress") = py::none(),
         "(json dict, columns dict, csv text): rbcstab post --fig6e --json, its columns, and the CSV of post --fig6e.");
 }
 

@@ -169,6 +169,20 @@ def test_trace_agreement_with_a_diagram_equals_the_cli(diagram_8x8, tmp_path):
         rbcstab.trace(rbcstab.Scene(**SCENE), diagram=diagram_8x8, axes=("lnC", "lnB"))
 
 
+def test_trace_and_fig6e_progress_count_their_unit_of_work():
+    # The final report equals the count each document states: the trace's criterion evaluations, the table's runs.
+    calls = []
+    t = rbcstab.trace(rbcstab.Scene(**SCENE), progress=lambda d, n, eta: calls.append((d, n)), **PLANE)
+    assert calls and [d for d, _ in calls] == sorted(d for d, _ in calls)
+    assert calls[-1][0] == t.evaluations and all(n == 0 for _, n in calls)  # its total is not known in advance
+    calls.clear()
+    table = rbcstab.fig6e(rbcstab.Scene(T=20.0, L=5), lambdas=[5.0], B=[2.0, 8.0], C=[0.04],
+                          progress=lambda d, n, eta: calls.append((d, n)))
+    assert calls[-1] == (len(table), len(table)) == (2, 2)
+    with pytest.raises(TypeError, match="progress"):
+        rbcstab.fig6e(rbcstab.Scene(T=20.0, L=5), lambdas=[5.0], B=[2.0], C=[0.04], progress="yes")
+
+
 def test_fig6e_equals_the_cli():
     scene = rbcstab.Scene(T=100.0, L=6)
     table = rbcstab.fig6e(scene, lambdas=[5.0], B=[2.0, 8.0], C=[0.04])
