@@ -23,3 +23,18 @@ def drawing_module(name):
         spec.loader.exec_module(module)
         sys.modules[key] = module
     return module
+
+
+def keep_legends_inside(ax):
+    """Makes room for a legend drawn outside the axes (the phase diagram's, right of the plane): when one would
+    fall outside the figure and the figure has no layout engine of its own, constrained layout takes over (it
+    places legends too). A figure the user laid out (a layout engine set) is left as it is. Returns ax."""
+    figure = ax.figure
+    legend = ax.get_legend()
+    if legend is None or figure.get_layout_engine() is not None:
+        return ax
+    renderer = figure.canvas.get_renderer()
+    box, page = legend.get_window_extent(renderer), figure.bbox
+    if box.x0 < page.x0 or box.y0 < page.y0 or box.x1 > page.x1 or box.y1 > page.y1:
+        figure.set_layout_engine("constrained")
+    return ax

@@ -12,7 +12,7 @@ import os
 import numpy as np
 
 from . import _args, _rbcstab, _tables
-from ._drawing import drawing_module
+from ._drawing import drawing_module, keep_legends_inside
 from .progress import progress_bar
 
 __all__ = ["Diagram", "Trace", "Fig6eTable", "diagram", "trace", "fig6e"]
@@ -224,7 +224,7 @@ class Diagram(_Document):
         phase_draw().draw_phase_diagram(ax, xs.ravel().tolist(), ys.ravel().tolist(),
                                             self.l_Delta.ravel().tolist(), self.axes[0], self.axes[1], curves,
                                             title=title, labels=labels)
-        return ax
+        return keep_legends_inside(ax)
 
     def _overlay(self):
         if "_overlay_cache" not in self.__dict__:
@@ -375,7 +375,7 @@ class Trace(_Document):
         if corners and len(self.corners["x"]):
             ax.plot(self.corners["x"], self.corners["y"], "o", color="black", mfc="white", ms=6, zorder=5,
                     label="mode corners")
-        return ax
+        return keep_legends_inside(ax)
 
 
 def trace(scene, criterion="asymptotic", *, axes=None, x_range=None, y_range=None, alpha_fixed=None, horizon=0.0,

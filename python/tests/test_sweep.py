@@ -169,6 +169,30 @@ def test_trace_agreement_with_a_diagram_equals_the_cli(diagram_8x8, tmp_path):
         rbcstab.trace(rbcstab.Scene(**SCENE), diagram=diagram_8x8, axes=("lnC", "lnB"))
 
 
+def _legends_inside(figure):
+    figure.canvas.draw()
+    renderer, page = figure.canvas.get_renderer(), figure.bbox
+    boxes = [a.get_legend().get_window_extent(renderer) for a in figure.axes if a.get_legend() is not None]
+    return boxes and all(b.x0 >= page.x0 and b.y0 >= page.y0 and b.x1 <= page.x1 and b.y1 <= page.y1 for b in boxes)
+
+
+def test_plots_keep_their_legends_inside_the_figure(diagram_8x8):
+    # The phase diagram's legend sits right of the plane: on pyplot's default figure it used to fall off the page.
+    figure = plt.figure(figsize=(6.4, 4.8))
+    diagram_8x8.plot()
+    assert _legends_inside(figure)
+    plt.close(figure)
+    figure = plt.figure(figsize=(6.4, 4.8))  # the oracle: the same drawing without the fit does fall off
+    rbcstab.sweep.phase_draw().draw_phase_diagram(plt.gca(), [], [], [], "lnB", "lnC", diagram_8x8._overlay()["curves"],
+                                                  limits=((-1.0, 5.0), (-5.0, 1.0)))
+    assert not _legends_inside(figure)
+    plt.close(figure)
+    figure, ax = plt.subplots(layout="tight")  # a figure laid out by its user is left alone
+    diagram_8x8.plot(ax=ax)
+    assert figure.get_layout_engine().__class__.__name__ == "TightLayoutEngine"
+    plt.close(figure)
+
+
 def test_trace_and_fig6e_progress_count_their_unit_of_work():
     # The final report equals the count each document states: the trace's criterion evaluations, the table's runs.
     calls = []
