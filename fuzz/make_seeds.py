@@ -20,7 +20,7 @@ CORPUS = ROOT / "fuzz" / "corpus"
 
 
 def fnv1a_hex(text: bytes) -> str:
-    h = 1469598103934665603
+    h = 14695981039346656037  # the FNV-1a 64 offset basis
     for c in text:
         h ^= c
         h = (h * 1099511628211) % (1 << 64)

@@ -14,6 +14,7 @@
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/model/coefficients.hpp"
+#include "rbcstab/report/detail/provenance.hpp"
 #include "rbcstab/report/report.hpp"
 #include "report/png_size.hpp"
 #include "test_files.hpp"
@@ -94,6 +95,11 @@ void check_figures(const Built& b) {
   const auto manifest = nlohmann::json::parse(read_file((out / "report.json").string()));
   const auto drawn = nlohmann::json::parse(read_file((out / "figures.json").string()));
   ASSERT_GE(manifest.at("figures").size(), 5u);
+  // The stamp: on the page and in the manifest, hashing the scene.toml the folder holds.
+  const detail::Provenance stamp = detail::provenance_from_json(manifest.at("provenance"));
+  EXPECT_EQ(stamp.scene_hash,
+            detail::make_provenance({read_file((out / "scene.toml").string())}, "scene.toml").scene_hash);
+  EXPECT_NE(read_file((out / "index.html").string()).find(detail::provenance_html(stamp)), std::string::npos);
   std::size_t checked = 0;
   for (const auto& f : manifest.at("figures")) {
     const fs::path png = out / f.at("png").get<std::string>();

@@ -3,6 +3,7 @@
 // python/paper_draw.py draw them, writes the page (paper_page.cpp) and publishes the folder whole.
 #include "rbcstab/report/paper.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include "rbcstab/report/detail/paper_composer.hpp"
 #include "rbcstab/report/detail/paper_figures.hpp"
 #include "rbcstab/report/detail/paper_page.hpp"
+#include "rbcstab/report/detail/provenance.hpp"
 #include "rbcstab/report/detail/staging.hpp"
 #include "rbcstab/report/report.hpp"
 
@@ -43,6 +45,19 @@ void PaperOptions::validate() const {
   require(threads >= 0 && threads <= 4096, "threads", threads, "an integer in [0, 4096] (0: all cores)");
   if (python.empty()) throw InvalidArgument("python", "python: an interpreter path is required");
 }
+
+namespace {
+// The stamp of the paper's pages: its scenes are every scene file of the folder, hashed in name order.
+detail::Provenance paper_provenance(const std::string& scene_dir) {
+  std::vector<fs::path> files;
+  for (const auto& e : fs::directory_iterator(scene_dir))
+    if (e.path().extension() == ".toml") files.push_back(e.path());
+  std::sort(files.begin(), files.end());
+  std::vector<std::string> texts;
+  for (const fs::path& f : files) texts.push_back(read_file(f.string()));
+  return detail::make_provenance(texts, "the " + std::to_string(files.size()) + " scene files of " + scene_dir);
+}
+}  // namespace
 
 std::string find_scene_dir(const std::string& executable_path) {
   constexpr const char* probe = "fig3_b_op.toml";
@@ -98,6 +113,7 @@ PaperResult build_paper(const PaperOptions& options) {
       }
       for (const auto& cl : res.claims) (cl.passed ? res.passed : res.failed) += 1;
       json spec{{"format", "rbcstab-paper"}, {"version", 1}, {"quick", o.quick}, {"figures", c.figures}};
+      spec["provenance"] = detail::provenance_json(paper_provenance(o.scene_dir));
       json claims = json::array();
       for (const auto& cl : res.claims)
         claims.push_back({{"figure", cl.figure},

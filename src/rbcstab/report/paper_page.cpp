@@ -4,25 +4,14 @@
 #include <sstream>
 
 #include "rbcstab/report/detail/paper_composer.hpp"
+#include "rbcstab/report/detail/provenance.hpp"
+#include "rbcstab/report/detail/report_pages.hpp"
 
 namespace rbcstab::detail::paper {
 
 namespace {
 
-std::string esc(const std::string& s) {
-  std::string o;
-  for (char ch : s) {
-    if (ch == '<')
-      o += "&lt;";
-    else if (ch == '>')
-      o += "&gt;";
-    else if (ch == '&')
-      o += "&amp;";
-    else
-      o += ch;
-  }
-  return o;
-}
+std::string esc(const std::string& s) { return html_escape(s); }
 
 }  // namespace
 
@@ -58,8 +47,8 @@ std::string paper_html(const json& spec, const PaperResult& r, const PaperOption
       h << "<a href=\"" << d.get<std::string>() << "\">" << d.get<std::string>() << "</a> ";
     h << "</p><p>Computed in " << num(f["seconds"].get<double>(), 3) << " s.</p></div></div>\n";
   }
-  h << "<p>Drawing spec: <a href=\"paper.json\">paper.json</a>; claims: <a href=\"claims.json\">claims.json</a>.</p>"
-       "</body></html>\n";
+  h << "<p>Drawing spec: <a href=\"paper.json\">paper.json</a>; claims: <a href=\"claims.json\">claims.json</a>.</p>\n"
+    << provenance_html(provenance_from_json(spec.at("provenance"))) << "</body></html>\n";
   return h.str();
 }
 

@@ -24,6 +24,7 @@
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/report/bifurcation_plot.hpp"
 #include "rbcstab/report/detail/parameter_labels.hpp"
+#include "rbcstab/report/detail/provenance.hpp"
 #include "rbcstab/report/detail/report_pages.hpp"
 #include "rbcstab/report/detail/staging.hpp"
 #include "rbcstab/verdict/verdict_io.hpp"
@@ -328,7 +329,8 @@ ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, con
                           "or a bifurcation to draw");
   ReportResult res;
   detail::in_staging_folder(target, [&](const fs::path& tmp) {
-    write_file_atomic((tmp / "scene.toml").string(), o.scene_toml.empty() ? to_toml(sf) : o.scene_toml);
+    const std::string scene_text = o.scene_toml.empty() ? to_toml(sf) : o.scene_toml;
+    write_file_atomic((tmp / "scene.toml").string(), scene_text);
     res.files.push_back("scene.toml");
     nlohmann::json figs = nlohmann::json::array();
     add_hook_figures(o, bifurcation, tmp, res.files, figs);
@@ -343,6 +345,7 @@ ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, con
     panel["facts"] = nlohmann::json::array();
     for (const auto& [k, v] : o.panel_facts) panel["facts"].push_back({k, v});
     manifest["panel"] = panel;
+    manifest["provenance"] = detail::provenance_json(detail::make_provenance({scene_text}, "scene.toml"));
     manifest["warnings"] = nlohmann::json::array();
     manifest["figures"] = figs;
     write_file_atomic((tmp / "report.json").string(), manifest.dump(2) + "\n");
@@ -566,6 +569,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     manifest["title"] = figure_title(sf.scene);
     manifest["symbols"] = parameter_symbols();
     manifest["parameters"] = to_json(p);
+    manifest["provenance"] = detail::provenance_json(detail::make_provenance({to_toml(sf)}, "scene.toml"));
     manifest["summary"] = to_json(res.run, p);
     manifest["summary"].erase("trajectory");
     if (res.has_reduced) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "rbcstab/model/parameter_table.hpp"
+#include "rbcstab/report/detail/provenance.hpp"
 
 namespace rbcstab::detail {
 
@@ -125,6 +126,15 @@ Page make_page(const nlohmann::json& m) {
   return p;
 }
 
+const nlohmann::json* figure_of(const nlohmann::json& m, const std::string& png) {
+  for (const auto& f : m.at("figures"))
+    if (f.at("png") == png) return &f;
+  return nullptr;
+}
+
+const char* kShapeFiles = "shape_T.vtk (VTK legacy), shape_T.vtp (VTK XML PolyData), shape_T.ply, shape_T.csv (grid)";
+}  // namespace
+
 std::string html_escape(const std::string& s) {
   std::string o;
   for (char c : s) {
@@ -148,13 +158,14 @@ std::string html_escape(const std::string& s) {
   return o;
 }
 
-const nlohmann::json* figure_of(const nlohmann::json& m, const std::string& png) {
-  for (const auto& f : m.at("figures"))
-    if (f.at("png") == png) return &f;
-  return nullptr;
+namespace {
+// The stamp of a manifest that carries one (every report written since it was added), else nothing.
+std::string provenance_footer_html(const nlohmann::json& m) {
+  return m.contains("provenance") ? provenance_html(provenance_from_json(m.at("provenance"))) : "";
 }
-
-const char* kShapeFiles = "shape_T.vtk (VTK legacy), shape_T.vtp (VTK XML PolyData), shape_T.ply, shape_T.csv (grid)";
+std::string provenance_footer_markdown(const nlohmann::json& m) {
+  return m.contains("provenance") ? "\n" + provenance_markdown(provenance_from_json(m.at("provenance"))) : "";
+}
 }  // namespace
 
 std::string report_markdown(const nlohmann::json& m, const nlohmann::json& drawn) {
@@ -193,14 +204,16 @@ std::string report_markdown(const nlohmann::json& m, const nlohmann::json& drawn
   }
   if (m.contains("panel")) {
     md << "## Reproduce\n\n```\nrbcstab report --scene scene.toml --output DIR\n```\n\nThe numbers are in report.json "
-       << "(manifest) and the data files beside each figure.\n";
+       << "(manifest) and the data files beside each figure.\n"
+       << provenance_footer_markdown(m);
     return md.str();
   }
   md << "## Shape files\n\n" << kShapeFiles << ": open the .vtk or .vtp in ParaView, colour by `rho`.\n\n";
   md << "## Reproduce\n\n```\nrbcstab report --scene scene.toml --output "
      << "DIR\n```\n\n"
      << "The numbers above are in report.json (manifest), trajectory.csv (t, Delta_2..Delta_L, sigma, r, Psi) and "
-     << "thresholds.json.\n";
+     << "thresholds.json.\n"
+     << provenance_footer_markdown(m);
   return md.str();
 }
 
@@ -241,14 +254,16 @@ std::string report_html(const nlohmann::json& m, const nlohmann::json& drawn) {
   if (m.contains("panel")) {
     h << "<h2>Reproduce</h2>\n<pre>rbcstab report --scene scene.toml --output DIR</pre>\n"
       << "<p>Numbers: <a href=\"report.json\">report.json</a> and the data files beside each "
-         "figure.</p>\n</body></html>\n";
+         "figure.</p>\n"
+      << provenance_footer_html(m) << "</body></html>\n";
     return h.str();
   }
   h << "<h2>Shape files</h2>\n<p>" << html_escape(kShapeFiles)
     << ": open the .vtk or .vtp in ParaView, colour by <code>rho</code>.</p>\n"
     << "<h2>Reproduce</h2>\n<pre>rbcstab report --scene scene.toml --output DIR</pre>\n"
     << "<p>Numbers: <a href=\"report.json\">report.json</a>, <a href=\"trajectory.csv\">trajectory.csv</a>, "
-       "<a href=\"thresholds.json\">thresholds.json</a>.</p>\n</body></html>\n";
+       "<a href=\"thresholds.json\">thresholds.json</a>.</p>\n"
+    << provenance_footer_html(m) << "</body></html>\n";
   return h.str();
 }
 

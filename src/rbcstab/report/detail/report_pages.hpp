@@ -8,5 +8,7 @@ namespace rbcstab::detail {
 
 std::string report_markdown(const nlohmann::json& manifest, const nlohmann::json& drawn);
 std::string report_html(const nlohmann::json& manifest, const nlohmann::json& drawn);
+// Text for HTML: < > & " escaped (every page the report module writes).
+std::string html_escape(const std::string& s);
 
 }  // namespace rbcstab::detail
