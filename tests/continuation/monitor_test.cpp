@@ -6,21 +6,21 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <variant>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "continuation/invalid_argument_fixture.hpp"
 #include "continuation/modal_fixtures.hpp"
 #include "continuation/scene_spec_fixture.hpp"
+#include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/continuation/branch_spec.hpp"
 #include "rbcstab/continuation/monitors.hpp"
 #include "rbcstab/continuation/scene_branch.hpp"
 #include "rbcstab/continuation/scene_curve.hpp"
 #include "rbcstab/continuation/scene_measures.hpp"
-#include "rbcstab/continuation/tunable_options.hpp"
-#include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/continuation/scene_restart.hpp"
+#include "rbcstab/continuation/tunable_options.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
@@ -182,7 +182,9 @@ TEST(Monitor, OnACurveLabelsWhereAParameterOrAMeasureReachesItsValue) {
       const SpecialPoint& sp = m.branch.special_points[f];
       EXPECT_EQ(sp.status, LocationStatus::located);
       EXPECT_GT(m.special_label(f), 0);
-      const double at = j == 0 ? sp.parameters[1] : j == 1 ? sp.parameters[0] : std::get<double>(m.special_measures[f][0]);
+      const double at = j == 0   ? sp.parameters[1]
+                        : j == 1 ? sp.parameters[0]
+                                 : std::get<double>(m.special_measures[f][0]);
       std::printf("curve monitor %s = %.15g: located %.15g (%.1e)\n", spec.monitors[j].name.c_str(), targets[j], at,
                   at - targets[j]);
       EXPECT_NEAR(at, targets[j], 1e-9);

@@ -123,8 +123,9 @@ std::vector<UserEvent> monitor_events(const SceneProblem& sp, const std::vector<
                                       const std::vector<Monitor>& monitors, const Eigen::VectorXd& x0, double p0) {
   const ContinuationProblem& pr = sp.problem();
   return monitor_events(
-      MonitoredPoint{pr.parameter_names(), [&pr](const Eigen::VectorXd& x, double p) { return pr.parameter_values(x, p); },
-                     measure_names, [&sp](const Eigen::VectorXd& x, double p) { return sp.measures(x, p); }},
+      MonitoredPoint{pr.parameter_names(),
+                     [&pr](const Eigen::VectorXd& x, double p) { return pr.parameter_values(x, p); }, measure_names,
+                     [&sp](const Eigen::VectorXd& x, double p) { return sp.measures(x, p); }},
       monitors, x0, p0);
 }
 

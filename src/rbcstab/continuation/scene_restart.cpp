@@ -79,8 +79,7 @@ void apply_changes(BranchSpec& s, const RestartChanges& c) {
     t.check(v);
     if (std::string_view(t.name) == "segments" && v != s.orbit.segments)
       throw InvalidArgument(t.name, std::string(t.name) + " = " + format_value(v) +
-                                        " cannot change on a restart (the run's: " +
-                                        std::to_string(s.orbit.segments) +
+                                        " cannot change on a restart (the run's: " + std::to_string(s.orbit.segments) +
                                         "): an orbit's labelled state lies on the run's mesh of shooting segments");
     t.set(s.engine, s.orbit, v);
   }

@@ -57,8 +57,8 @@ SwitchedBranch switch_with(const SceneProblem& sp, const SceneBranch& from, cons
   s.bp_label = on.special_labels.at(static_cast<std::size_t>(bp - b.special_points.data()));
   // The run's monitors label (or stop) the switched branch too.
   BranchSwitchOptions o = options;
-  for (UserEvent& e : monitor_events(sp, measure_names(from.spec.kind, from.problem_scene.L), from.spec.monitors,
-                                     bp->x, bp->p))
+  for (UserEvent& e :
+       monitor_events(sp, measure_names(from.spec.kind, from.problem_scene.L), from.spec.monitors, bp->x, bp->p))
     o.continuation.events.push_back(std::move(e));
   BranchSwitchResult sw = switch_branch(sp.problem(), b, *bp, o);
   s.switched = sw.switched;
