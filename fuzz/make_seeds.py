@@ -244,10 +244,11 @@ def branch_seeds(work, cli):
     run(cli, *modal, "--switch-at-bp", "--save", "switch.json", cwd=work)
     run(cli, *modal, "--curve", "BP", "--parameter2", "B", "--min2", "0.8", "--max2", "1.2", "--max-points", "20",
         "--save", "curve.json", cwd=work)
+    run(cli, *modal, "--monitor", "C=0.05,0.04", "--stop-at", "C=0.03", "--save", "monitors.json", cwd=work)
     run(cli, "continue", "--max-points", "8", "--save", "equilibrium.json", cwd=work)
     run(cli, "continue", "--kind", "orbit", "--max-points", "4", "--save", "orbit.json", cwd=work)
     docs = {}
-    for name in ["modal", "switch", "curve", "equilibrium", "orbit"]:
+    for name in ["modal", "switch", "curve", "equilibrium", "orbit", "monitors"]:
         text = (work / f"{name}.json").read_text()
         docs[name] = json.loads(text)
         w.put(f"{name}.json", text)
@@ -274,6 +275,9 @@ def branch_seeds(work, cli):
     w.put("spec_scene_invalid.json", edited("equilibrium", lambda d: d["spec"].__setitem__("scene", "[run]\nL = 1\n")))
     w.put("engine_negative_step.json", edited("equilibrium", lambda d: d["spec"]["engine"].__setitem__("max_step", -1)))
     w.put("direction_unknown.json", edited("equilibrium", lambda d: d["spec"]["engine"].__setitem__("direction", "up")))
+    w.put("monitor_malformed.json", edited("monitors", lambda d: d["spec"].__setitem__("monitor", ["C"])))
+    w.put("monitor_not_text.json", edited("monitors", lambda d: d["spec"].__setitem__("stop_at", [0.03])))
+    w.put("monitor_unknown.json", edited("monitors", lambda d: d["spec"].__setitem__("monitor", ["nope=1"])))
     w.put("special_after_last.json", edited("modal", lambda d: d["special_points"][0].__setitem__("after_index", 10**6)
                                             if d["special_points"] else None))
 

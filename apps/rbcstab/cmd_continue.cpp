@@ -114,13 +114,6 @@ int run_restart(const ContinueOptions& o, const std::optional<CurveSpec>& curve)
     throw InvalidArgument("restart", from_file + flag + " cannot change it");
   if (o.o_relax_T->count() > 0)
     throw InvalidArgument("restart", "--restart continues the file's states: --relax-T cannot change");
-  // Only the steps may change on a restart (RestartChanges); the rest are the file's.
-  for (const TunableOption& t : tunable_options())
-    if (o.given(t.name) && std::string(t.name) != "initial_step" && std::string(t.name) != "max_step")
-      throw InvalidArgument("restart",
-                            std::string("--restart continues with the file's options: ") + t.flag + " cannot change");
-  if (!o.monitors.empty() || !o.stops.empty())
-    throw InvalidArgument("monitor", "--monitor and --stop-at apply to a new branch, not to --restart");
   const ContinuationRun run = load_branch(o.restart);
   if (q.label > 0) q.label = resolve_label(run, o.label, "label");
   if (q.switch_at > 0) q.switch_at = resolve_label(run, o.switch_at, "switch_at");
@@ -130,8 +123,9 @@ int run_restart(const ContinueOptions& o, const std::optional<CurveSpec>& curve)
   if (o.o_min->count() > 0) ch.p_min = o.p_min;
   if (o.o_max->count() > 0) ch.p_max = o.p_max;
   if (o.o_direction->count() > 0) ch.direction = direction_from_string(o.direction);
-  if (o.given("initial_step")) ch.initial_step = o.tuned.at("initial_step");
-  if (o.given("max_step")) ch.max_step = o.tuned.at("max_step");
+  for (const TunableOption& t : tunable_options())
+    if (o.given(t.name)) ch.tuned[t.name] = o.tuned.at(t.name);
+  if (!o.monitors.empty() || !o.stops.empty()) ch.monitors = parse_monitors(o.monitors, o.stops);
   if (o.o_max_points->count() > 0) ch.max_points = o.engine.max_points;
   if (o.o_label_every->count() > 0) ch.label_every = o.label_every;
   ch.switch_at_bp = o.switch_at_bp;
@@ -156,8 +150,7 @@ int run(const ContinueOptions& o) {
   spec.engine = o.engine;
   spec.orbit = o.orbit;
   o.tune(spec.engine, spec.orbit);
-  for (const std::string& m : o.monitors) spec.monitors.push_back(parse_monitor(m, false, "monitor"));
-  for (const std::string& m : o.stops) spec.monitors.push_back(parse_monitor(m, true, "stop_at"));
+  spec.monitors = parse_monitors(o.monitors, o.stops);
   spec.engine.on_progress = o.progress.callback("continue:", "points (this direction)");
   spec.engine.p_min = o.p_min;
   spec.engine.p_max = o.p_max;
@@ -209,8 +202,9 @@ Runner add_continue(CLI::App& app) {
                              ->check(t.integer ? integer_text(t.range()) : number_text(t.range()))
                              ->type_name(t.integer ? "INT" : "FLOAT");
   app.add_option("--monitor", o->monitors,
-                 "label a UZ point where a parameter or a measure of the branch reaches each value: NAME=V1,V2,... "
-                 "(e.g. Delta_2=0.5,0.8; repeatable; the point is named NAME=V)")
+                 "label a UZ point where a parameter or a measure of the branch (--curve: the curve) reaches each "
+                 "value: NAME=V1,V2,... (e.g. Delta_2=0.5,0.8; repeatable; the point is named NAME=V); --restart: "
+                 "--monitor/--stop-at replace the file's, 'none' drops them")
       ->expected(1)
       ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
   app.add_option("--stop-at", o->stops,

@@ -56,7 +56,9 @@ _KINDS = {"min": _number, "max": _number, "relax_T": _number,
 
 def _monitors(monitor, stop_at):
     """monitor={name: value, [values] or callable(point) -> float}, stop_at={name: value or callable} as the
-    library's (name, values, stop, callable or None) list."""
+    library's (name, values, stop, callable or None) list; None when neither is given (a restart keeps the run's)."""
+    if monitor is None and stop_at is None:
+        return None
     out = []
     for stop, key, given in ((False, "monitor", monitor), (True, "stop_at", stop_at)):
         if given is None:
@@ -74,9 +76,14 @@ def _monitors(monitor, stop_at):
     return out
 
 
-def _options(**given):
-    """The given options (None: not given, the library's default) checked for their types, as a dict."""
-    return {k: _KINDS[k](k, v) for k, v in given.items() if v is not None}
+def _options(monitor=None, stop_at=None, **given):
+    """The given options (None: not given, the library's default) checked for their types, as a dict; monitor and
+    stop_at as the library's "monitors" list when either is given (an empty dict: none)."""
+    options = {k: _KINDS[k](k, v) for k, v in given.items() if v is not None}
+    monitors = _monitors(monitor, stop_at)
+    if monitors is not None:
+        options["monitors"] = monitors
+    return options
 
 
 def _run(call, what, progress, *args):
@@ -125,7 +132,8 @@ def continuation(scene, kind="equilibrium", parameter="lambda", min=None, max=No
     callable}: a UZ point named 'name=value' where a parameter or a numeric measure of the branch reaches each
     value; a callable f(point) -> float (point: a dict of the point's parameters and numeric measures) gives
     UZ points named 'name' at its zeros. stop_at: {name: value or callable}: end the branch (each direction)
-    where it is reached (message 'stopped at name=value').
+    where it is reached (message 'stopped at name=value'). With curve, the monitors read the curve (its two
+    parameters and measures). A callable is not kept with the run (restarts, save, pickle go without it).
     progress: True shows the points computed (tqdm if importable, else a line on stderr every second); a callable
     f(done, total, eta) is called with the points so far (total 0: a branch's end is not known in advance); a
     tqdm bar of yours is updated. Ctrl-C stops it (KeyboardInterrupt); the GIL is released.
@@ -140,10 +148,7 @@ def continuation(scene, kind="equilibrium", parameter="lambda", min=None, max=No
                        allow_unstable_start=allow_unstable_start, label_every=label_every, curve=curve,
                        parameter2=parameter2, min2=min2, max2=max2, point=point, min_step=min_step,
                        newton_tol=newton_tol, max_newton=max_newton, location_tol=location_tol, orbit_rtol=orbit_rtol,
-                       orbit_atol=orbit_atol, orbit_samples=orbit_samples)
-    monitors = _monitors(monitor, stop_at)
-    if monitors:
-        options["monitors"] = monitors
+                       orbit_atol=orbit_atol, orbit_samples=orbit_samples, monitor=monitor, stop_at=stop_at)
     what = f"continuation in {parameter}" if isinstance(parameter, str) else "continuation"
     return _run(_rbcstab.continue_scene, what, progress, scene, _name("kind", kind), _name("parameter", parameter),
                 options)
@@ -285,31 +290,50 @@ class Branch(_args.Columns):
 
     # ---- more runs from labelled points
     def restart(self, label, parameter=None, *, kind=None, min=None, max=None, direction=None, step=None,
-                max_step=None, max_points=None, label_every=None, switch_at_bp=False, progress=False):
+                max_step=None, max_points=None, label_every=None, switch_at_bp=False, min_step=None, newton_tol=None,
+                max_newton=None, location_tol=None, segments=None, orbit_rtol=None, orbit_atol=None,
+                orbit_samples=None, monitor=None, stop_at=None, progress=False):
         """Continues again from the point labelled `label` (``continue --restart FILE --label N``): in
         `parameter` (default: the run's) with the run's scene, kind and options, those given here changed (the
-        bounds: the run's when the parameter is the run's, none otherwise)."""
+        bounds: the run's when the parameter is the run's, none otherwise). The numerical options are those of
+        :func:`continuation` (segments: only the run's own for orbits, the labelled state is on its mesh);
+        monitor, stop_at (as :func:`continuation`'s) replace the run's monitors and stops, {} drops them."""
         options = _options(parameter=parameter, kind=kind, min=min, max=max, direction=direction, step=step,
                            max_step=max_step, max_points=max_points, label_every=label_every,
-                           switch_at_bp=switch_at_bp)
+                           switch_at_bp=switch_at_bp, min_step=min_step, newton_tol=newton_tol,
+                           max_newton=max_newton, location_tol=location_tol, segments=segments,
+                           orbit_rtol=orbit_rtol, orbit_atol=orbit_atol, orbit_samples=orbit_samples,
+                           monitor=monitor, stop_at=stop_at)
         return _run(_rbcstab.restart, f"restart from label {label}", progress, self._run,
                     _integer("label", label), options)
 
     def switch(self, label, *, min=None, max=None, direction=None, step=None, max_step=None, max_points=None,
-               label_every=None, progress=False):
+               label_every=None, min_step=None, newton_tol=None, max_newton=None, location_tol=None, segments=None,
+               orbit_rtol=None, orbit_atol=None, orbit_samples=None, monitor=None, stop_at=None, progress=False):
         """Switches onto the branch bifurcating at the BP labelled `label` (``continue --restart FILE --switch-at
-        N``): the returned run holds this run's branch with the new branch as its ``switched``."""
+        N``): the returned run holds this run's branch with the new branch as its ``switched``. The numerical
+        options, monitor and stop_at as :meth:`restart` (the monitors label the new branch)."""
         options = _options(min=min, max=max, direction=direction, step=step, max_step=max_step,
-                           max_points=max_points, label_every=label_every)
+                           max_points=max_points, label_every=label_every, min_step=min_step, newton_tol=newton_tol,
+                           max_newton=max_newton, location_tol=location_tol, segments=segments,
+                           orbit_rtol=orbit_rtol, orbit_atol=orbit_atol, orbit_samples=orbit_samples,
+                           monitor=monitor, stop_at=stop_at)
         return _run(_rbcstab.switch, f"switch at label {label}", progress, self._run, _integer("label", label),
                     options)
 
     def curve(self, label, parameter2, min2=None, max2=None, *, type=None, step=None, max_step=None,
-              max_points=None, label_every=None, progress=False):
+              max_points=None, label_every=None, min_step=None, newton_tol=None, max_newton=None, location_tol=None,
+              segments=None, orbit_rtol=None, orbit_atol=None, orbit_samples=None, monitor=None, stop_at=None,
+              progress=False):
         """The curve of the special point labelled `label` (LP, BP, HB; LPC, PD, NS, BP, UZ of orbits) in (the
         run's parameter, parameter2), bounded by [min2, max2] (``continue --restart FILE --label N --curve TYPE
-        --parameter2 P2``). type: the point's type, checked when given. Returns a :class:`Curve`."""
-        options = _options(step=step, max_step=max_step, max_points=max_points, label_every=label_every)
+        --parameter2 P2``). type: the point's type, checked when given. The numerical options, monitor and
+        stop_at as :meth:`restart` (the monitors read the curve's two parameters and measures). Returns a
+        :class:`Curve`."""
+        options = _options(step=step, max_step=max_step, max_points=max_points, label_every=label_every,
+                           min_step=min_step, newton_tol=newton_tol, max_newton=max_newton,
+                           location_tol=location_tol, segments=segments, orbit_rtol=orbit_rtol,
+                           orbit_atol=orbit_atol, orbit_samples=orbit_samples, monitor=monitor, stop_at=stop_at)
         lo = -float("inf") if min2 is None else _number("min2", min2)
         hi = float("inf") if max2 is None else _number("max2", max2)
         return _run(_rbcstab.curve, f"curve from label {label}", progress, self._run, _integer("label", label),

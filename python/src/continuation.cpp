@@ -58,6 +58,7 @@ class Given {
     PyDict_DelItemString(d_.ptr(), key);
     return v;
   }
+  bool has(const char* key) const { return d_.contains(key); }
   void finish(const char* what) const {
     for (const auto& [key, value] : d_)
       throw py::type_error(std::string(what) + ": unexpected option '" + py::str(key).cast<std::string>() + "'");
@@ -82,7 +83,10 @@ std::optional<std::size_t> as_count(const std::optional<long long>& n, const cha
   return n ? std::optional<std::size_t>(static_cast<std::size_t>(*n)) : std::nullopt;
 }
 
-// What a restart, a switch or a curve from a label may change (RestartChanges), by keyword.
+std::vector<Monitor> monitors_of(Given& g);
+
+// What a restart, a switch or a curve from a label may change (RestartChanges), by keyword: monitors given
+// (even none) replace the run's.
 RestartChanges restart_changes(Given& g) {
   RestartChanges ch;
   if (const auto k = g.take<std::string>("kind")) ch.kind = problem_kind_from_string(*k);
@@ -92,8 +96,9 @@ RestartChanges restart_changes(Given& g) {
   for (const auto& [key, bound] : {std::pair{"min", ch.p_min}, std::pair{"max", ch.p_max}})
     if (bound) require(!std::isnan(*bound), key, *bound, "a number (-inf / inf: no bound)");
   if (const auto d = g.take<std::string>("direction")) ch.direction = direction_from_string(*d);
-  ch.initial_step = g.take<double>("step");
-  ch.max_step = g.take<double>("max_step");
+  for (const TunableOption& t : tunable_options())
+    if (const auto v = g.take<double>(t.keyword().c_str())) ch.tuned[t.name] = *v;
+  if (g.has("monitors")) ch.monitors = monitors_of(g);
   ch.max_points = as_count(g.take<long long>("max_points"), "max_points");
   ch.label_every = as_int(g.take<long long>("label_every"), "label_every");
   ch.switch_at_bp = g.take<bool>("switch_at_bp").value_or(false);
@@ -182,13 +187,14 @@ BranchSpec& spec_of(ContinuationRun& run) {
   return std::get<SceneCurve>(run).one.spec;
 }
 
-// The run as it is kept: without the callbacks of the call that made it.
+// The run as it is kept: without the callbacks of the call that made it (a function monitor too: its points stay
+// labelled, but a restart, a branch file or a pickle goes without it).
 Run detach(ContinuationRun&& run, std::string L_reason) {
   BranchSpec& spec = spec_of(run);
   spec.engine.stop = nullptr;
   spec.engine.on_progress = nullptr;
   spec.orbit.poll = nullptr;
-  for (Monitor& m : spec.monitors) m.function = nullptr;
+  std::erase_if(spec.monitors, [](const Monitor& m) { return bool(m.function); });
   return {std::move(run), std::move(L_reason)};
 }
 

@@ -204,6 +204,47 @@ def test_tunables_and_monitors_equal_the_cli_and_a_callable_monitor_finds_the_sa
         rbcstab.continuation(scene, monitor={"sigma": 1.0})
 
 
+def test_restart_switch_and_curve_take_the_tunables_and_monitors(cli, tmp_path):
+    # The branch file keeps the run's monitors; a restart's monitor/stop_at replace them ({} drops them), as
+    # --restart's --monitor (the CLI's JSON on the same flags); a callable's zero is the value monitor's point
+    # (located to location_tol = 1e-10 in (x, p): 1e-9).
+    scene = rbcstab.Scene(lambda_=2.0, B=1.5, C=0.05)
+    b = rbcstab.continuation(scene, parameter="lambda", min=0.5, max=4, direction="forward", monitor={"lambda": 2.5})
+    path = tmp_path / "b.json"
+    b.save(path)
+
+    def uz(run):
+        return {p["name"]: p["lambda"] for p in run.special_points if p["type"] == "UZ"}
+
+    assert set(uz(b.restart(1))) == {"lambda=2.5"}
+    assert set(uz(rbcstab.load_branch(path).restart(1))) == {"lambda=2.5"}
+    r = b.restart(1, newton_tol=1e-11, max_newton=10, location_tol=1e-10, max_step=0.2, monitor={"lambda": 3.2})
+    expected = cli("continue", "--restart", path, "--label", 1, "--newton-tol", 1e-11, "--max-newton", 10,
+                   "--location-tol", 1e-10, "--max-step", 0.2, "--monitor", "lambda=3.2")
+    assert without_timing(r.to_dict()) == without_timing(expected)
+    assert set(uz(r)) == {"lambda=3.2"}
+    assert uz(b.restart(1, monitor={})) == {}
+    g = b.restart(1, location_tol=1e-10, monitor={"g": lambda point: point["lambda"] - 3.2})
+    assert set(uz(g)) == {"g"} and abs(uz(g)["g"] - uz(r)["lambda=3.2"]) <= 1e-9
+    assert uz(g.restart(1)) == {}  # a callable is not kept with the run
+    s = b.restart(1, stop_at={"lambda": 3.0})
+    assert s.to_dict()["message"] == "stopped at lambda=3" and abs(s["lambda"][-1] - 3.0) <= 1e-9
+    with pytest.raises(ValueError, match=r"newton_tol = 0.5 is out of range: must be in \(0, 0.01\)"):
+        b.restart(1, newton_tol=0.5)
+    with pytest.raises(ValueError, match=r"segments = 4 cannot change on a restart \(the run's: 8\)"):
+        b.restart(1, segments=4)
+    with pytest.raises(TypeError, match="max_newton"):
+        b.restart(1, max_newton=2.5)
+    # A curve from a labelled BP with a callable monitor of its second parameter: B = 1.1 where it is zero.
+    m = rbcstab.continuation(rbcstab.Scene(lambda_=1.0, B=1.0, C=0.08, Delta=1.0, Delta0=0.01, L=4), kind="modal",
+                             parameter="C", min=0.015, max=0.08, direction="backward")
+    c = m.curve(m.labels("BP")[0], "B", 0.8, 1.2, location_tol=1e-10, monitor={"f": lambda point: point["B"] - 1.1})
+    f = [p for p in c.special_points if p["type"] == "UZ" and p["name"] == "f"]
+    assert len(f) >= 1 and all(abs(p["B"] - 1.1) <= 1e-9 for p in f), f
+    sw = m.switch(m.labels("BP")[0], newton_tol=1e-11, monitor={"C": 0.03})
+    assert sw.switched is not None
+
+
 # ------------------------------------------------------------------------------------- closed forms
 def test_modal_branch_in_lambda_equals_the_closed_form(cli):
     scene = rbcstab.Scene(lambda_=1.0, B=1.0, Delta=1.0, Delta0=0.01, C=0.08, beta=0.0, L=4)

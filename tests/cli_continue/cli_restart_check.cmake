@@ -226,12 +226,49 @@ elseif(CASE STREQUAL "restart_bad_input")
   expect_bad_input("--restart needs --label N" continue --restart ${WORK}/m.json)
   expect_bad_input("--switch-at and --curve cannot be combined" continue --restart ${WORK}/m.json --switch-at 2 --curve BP
                    --parameter2 B)
-  expect_bad_input("--segments cannot change" continue --restart ${WORK}/m.json --label 1 --segments 4)
+  expect_bad_input("segments = 4 cannot change on a restart (the run's: 8)" continue --restart ${WORK}/m.json --label 1
+                   --segments 4)
+  # Every other tunable option may change on a restart, checked against its range and named.
+  expect_bad_input("--newton-tol: newton_tol = 0.5 is out of range: must be in (0, 0.01)"
+                   continue --restart ${WORK}/m.json --label 1 --newton-tol 0.5)
+  expect_bad_input("--orbit-rtol: orbit_rtol = 0.001 is out of range" continue --restart ${WORK}/m.json --label 1
+                   --orbit-rtol 1e-3)
+  expect_bad_input("--monitor: 'C' is not NAME=V1,V2,..." continue --restart ${WORK}/m.json --label 1 --monitor C)
   expect_bad_input("kind = orbit is not the kind of the run restarted from, modal" continue --restart ${WORK}/m.json --label 1
                  --kind orbit)
   special_label("${out}" BP C 0.036 0.037 lbp Cbp)
   expect_bad_input("parameter = B cannot switch at switch_at = ${lbp}" continue --restart ${WORK}/m.json --switch-at ${lbp}
                  --parameter B)
+elseif(CASE STREQUAL "restart_monitors")
+  # The branch file keeps the run's monitors: a restart labels the same UZ point unless --monitor/--stop-at
+  # replace them ('none' drops them); tunable options change on a restart (--newton-tol, --max-step). Oracle:
+  # the located point's C equals the target to the location tolerance (1e-11 in (x, p)): 1e-10.
+  run_ok(out ${MODAL_ARGS} --monitor C=0.05 --json --save ${WORK}/m.json)
+  special_label("${out}" UZ C 0.049 0.051 l0 C0)
+  expect_close("--monitor C=0.05: the UZ point's C" "${C0}" 0.05 100)
+  run_ok(kept continue --restart ${WORK}/m.json --label 1 --json)
+  special_label("${kept}" UZ C 0.049 0.051 l1 C1)
+  expect_close("the restart's UZ point (the file's monitor)" "${C1}" 0.05 100)
+  run_ok(repl continue --restart ${WORK}/m.json --label 1 --monitor C=0.03 --newton-tol 1e-10 --max-step 0.2 --json)
+  special_label("${repl}" UZ C 0.029 0.031 l2 C2)
+  expect_close("the replaced monitor's UZ point" "${C2}" 0.03 100)
+  foreach(run IN ITEMS repl none)
+    if(run STREQUAL "none")
+      run_ok(none continue --restart ${WORK}/m.json --label 1 --monitor none --json)
+    endif()
+    string(JSON n LENGTH "${${run}}" special_points)
+    math(EXPR last "${n} - 1")
+    set(uz 0)
+    foreach(i RANGE ${last})
+      string(JSON t GET "${${run}}" special_points ${i} type)
+      if(t STREQUAL "UZ")
+        math(EXPR uz "${uz} + 1")
+      endif()
+    endforeach()
+    if((run STREQUAL "repl" AND NOT uz EQUAL 1) OR (run STREQUAL "none" AND NOT uz EQUAL 0))
+      fail("restart with monitors ${run}: ${uz} UZ points")
+    endif()
+  endforeach()
 else()
   fail("unknown case")
 endif()

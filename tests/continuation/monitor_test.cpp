@@ -2,19 +2,24 @@
 // options (tunable_options.hpp: each refused naming the option, its value and its range).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "continuation/invalid_argument_fixture.hpp"
 #include "continuation/modal_fixtures.hpp"
 #include "continuation/scene_spec_fixture.hpp"
+#include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/continuation/branch_spec.hpp"
 #include "rbcstab/continuation/monitors.hpp"
 #include "rbcstab/continuation/scene_branch.hpp"
 #include "rbcstab/continuation/scene_curve.hpp"
 #include "rbcstab/continuation/scene_measures.hpp"
+#include "rbcstab/continuation/scene_restart.hpp"
 #include "rbcstab/continuation/tunable_options.hpp"
 #include "rbcstab/core/error.hpp"
 
@@ -119,9 +124,78 @@ TEST(Monitor, RefusesWhatItCannotMonitor) {
   spec.monitors = {parse_monitor("sigma=1", false)};  // not a measure of the reduced equilibrium
   EXPECT_EQ(invalid_parameter([&] { (void)continue_scene(spec); }, &msg), "monitor");
   EXPECT_NE(msg.find("unknown monitor 'sigma' (this branch has: lambda"), std::string::npos) << msg;
-  CurveSpec c = test::curve_of(CurveKind::LP, P::Delta, 0.1, 2);
-  spec.monitors = {parse_monitor("Psi=1", false)};
-  EXPECT_EQ(invalid_parameter([&] { c.validate(spec); }), "monitor");
+  EXPECT_EQ(parse_monitors({"Psi=1,2", "none"}, {"r=0.5"}).size(), 2u);
+  EXPECT_TRUE(parse_monitors({"none"}, {}).empty());
+  EXPECT_EQ(monitor_text(parse_monitor("Delta_2=0.5,0.8", false)), "Delta_2=0.5,0.8");
+  EXPECT_EQ(invalid_parameter([] { parse_monitors({}, {"r=1,2"}, "m", "continuation.stop_at"); }),
+            "continuation.stop_at");
+}
+
+// The midpoint of a measure between two consecutive points of one direction of m (a value crossed between them:
+// the monitor's event changes sign there), the middle such pair; k_out: its first point. NaN if m has none.
+double crossed_between(const MeasuredBranch& m, const std::string& name, std::size_t* k_out = nullptr) {
+  std::vector<std::size_t> pairs;
+  const auto& pts = m.branch.points;
+  for (std::size_t i = 0; i + 1 < pts.size(); ++i)
+    if (pts[i].arclength * pts[i + 1].arclength > 0 && std::abs(pts[i + 1].arclength) > std::abs(pts[i].arclength))
+      pairs.push_back(i);
+  if (pairs.empty()) return NAN;
+  const std::size_t k = pairs[pairs.size() / 2];
+  if (k_out) *k_out = k;
+  return 0.5 * (m.number(k, name) + m.number(k + 1, name));
+}
+
+// Monitors on a curve (the modal BP curve of l = 4 in (C, B)): a UZ point where the curve's second parameter B,
+// its first parameter C or a measure (r) reaches the value; the branch the curve starts from has none. Oracle:
+// the located point's parameters and its measures evaluated afresh equal the targets; the point is located
+// until its bracket spans < 1e-11 in (X, B) with O(1) gradients: 1e-9. A wrong point fails it: the nearest
+// regular curve points are farther than that from the target.
+TEST(Monitor, OnACurveLabelsWhereAParameterOrAMeasureReachesItsValue) {
+  BranchSpec spec = test::modal_spec(4, 0.02);
+  const CurveSpec cs = test::curve_of(CurveKind::BP, P::B, 0.8, 1.2);
+  const SceneCurve plain = continue_curve(spec, cs);
+  ASSERT_TRUE(plain.started) << plain.message;
+  const MeasuredBranch& m0 = plain.curve;
+  ASSERT_GT(m0.branch.points.size(), 6u);
+  ASSERT_EQ(m0.branch.parameter_names, (std::vector<std::string>{"C", "B"}));
+  ASSERT_EQ(m0.measure_names.at(0), "r");
+  std::size_t k = 0;
+  const double r = crossed_between(m0, "r", &k);
+  ASSERT_TRUE(std::isfinite(r));
+  const double C = 0.5 * (m0.branch.points[k].parameters[0] + m0.branch.points[k + 1].parameters[0]);
+  const double B = 0.5 * (m0.branch.points[k].parameters[1] + m0.branch.points[k + 1].parameters[1]);
+  ASSERT_GT(std::abs(m0.number(k, "r") - r), 1e-7);
+  ASSERT_GT(std::abs(m0.branch.points[k].parameters[0] - C), 1e-7);
+  spec.monitors = {parse_monitor("B=" + format_value(B), false), parse_monitor("C=" + format_value(C), false),
+                   parse_monitor("r=" + format_value(r), false)};
+  const SceneCurve c = continue_curve(spec, cs);
+  ASSERT_TRUE(c.started) << c.message;
+  for (std::size_t i = 0; i < c.one.branch.branch.special_points.size(); ++i)
+    EXPECT_NE(c.one.branch.branch.special_points[i].type, SpecialPointType::UZ);
+  const MeasuredBranch& m = c.curve;
+  EXPECT_EQ(m.branch.points.size(), m0.branch.points.size());  // monitors only label
+  const double targets[] = {B, C, r};
+  for (std::size_t j = 0; j < 3; ++j) {
+    const std::vector<std::size_t> found = uz_named(m, monitor_event_name(spec.monitors[j], targets[j]));
+    ASSERT_GE(found.size(), 1u) << spec.monitors[j].name;
+    for (std::size_t f : found) {
+      const SpecialPoint& sp = m.branch.special_points[f];
+      EXPECT_EQ(sp.status, LocationStatus::located);
+      EXPECT_GT(m.special_label(f), 0);
+      const double at = j == 0   ? sp.parameters[1]
+                        : j == 1 ? sp.parameters[0]
+                                 : std::get<double>(m.special_measures[f][0]);
+      std::printf("curve monitor %s = %.15g: located %.15g (%.1e)\n", spec.monitors[j].name.c_str(), targets[j], at,
+                  at - targets[j]);
+      EXPECT_NEAR(at, targets[j], 1e-9);
+    }
+  }
+  // Stopped where B reaches the value: both directions end there or at their own end.
+  spec.monitors = {parse_monitor("B=" + format_value(B), true)};
+  const SceneCurve stopped = continue_curve(spec, cs);
+  ASSERT_TRUE(stopped.started);
+  EXPECT_EQ(stopped.curve.branch.status, ContinuationStatus::completed) << stopped.curve.branch.message;
+  EXPECT_LT(stopped.curve.branch.points.size(), m0.branch.points.size());
 }
 
 // Each tunable option: the default valid, a value outside its range refused naming the option, the value and
@@ -150,6 +224,76 @@ TEST(TunableOptions, EachIsRefusedOutsideItsRangeNamingIt) {
   e.newton_tol = 0.5;
   EXPECT_EQ(invalid_parameter([&] { e.validate(); }, &msg), "newton_tol");
   EXPECT_NE(msg.find("newton_tol = 0.5 is out of range: must be in (0, 0.01)"), std::string::npos) << msg;
+}
+
+// A branch file keeps the run's monitors (not a function's: it cannot be saved); a restart labels the same
+// points, replaces them when given others and drops them when given none; it takes any tunable option, checked
+// against its range, but no other number of segments. A function monitor (a front end's callable) labels its
+// zero: lambda = 1.2 to the location tolerance (1e-11 in (x, p); lambda is the point's own coordinate: 1e-10).
+TEST(Monitor, RestartKeepsReplacesOrDropsTheRunsMonitors) {
+  BranchSpec spec = equilibrium_spec();
+  Monitor f;
+  f.name = "f";
+  f.function = [](const std::map<std::string, double>& point) { return point.at("lambda") - 1.2; };
+  spec.monitors = {parse_monitor("lambda=1.7", false), parse_monitor("lambda=2.9", true), f};
+  const SceneBranch run = continue_scene(spec);
+  ASSERT_EQ(uz_named(run.branch, "f").size(), 1u);
+  EXPECT_NEAR(run.branch.branch.special_points[uz_named(run.branch, "f")[0]].p, 1.2, 1e-10);
+  const ContinuationRun saved = parse_branch_file(branch_file_json(run).dump(), "test");
+  const std::vector<Monitor>& kept = std::get<SceneBranch>(saved).spec.monitors;
+  ASSERT_EQ(kept.size(), 2u);
+  EXPECT_EQ(monitor_text(kept[0]), "lambda=1.7");
+  EXPECT_TRUE(kept[1].stop && !kept[0].stop);
+  const auto top = [](const SceneBranch& b) {
+    double p = -INFINITY;
+    for (const BranchPoint& q : b.branch.branch.points) p = std::max(p, q.p);
+    return p;
+  };
+  const SceneBranch again = restart(saved, 1);
+  EXPECT_EQ(uz_named(again.branch, "lambda=1.7").size(), 1u);
+  EXPECT_NEAR(top(again), 2.9, 1e-10);  // the saved stop
+  RestartChanges ch;
+  ch.monitors = std::vector<Monitor>{parse_monitor("lambda=2.2", false)};
+  ch.tuned = {{"newton_tol", 1e-10}, {"max_step", 0.2}, {"segments", 8}};
+  const SceneBranch replaced = restart(saved, 1, ch);
+  EXPECT_TRUE(uz_named(replaced.branch, "lambda=1.7").empty());
+  EXPECT_EQ(uz_named(replaced.branch, "lambda=2.2").size(), 1u);
+  EXPECT_EQ(top(replaced), 3);  // no stop: the bound
+  EXPECT_EQ(replaced.spec.engine.newton_tol, 1e-10);
+  EXPECT_EQ(replaced.spec.engine.max_step, 0.2);
+  ch.monitors = std::vector<Monitor>{};
+  const SceneBranch dropped = restart(saved, 1, ch);
+  for (const SpecialPoint& sp : dropped.branch.branch.special_points) EXPECT_NE(sp.type, SpecialPointType::UZ);
+  std::string msg;
+  ch.tuned = {{"newton_tol", 0.5}};
+  EXPECT_EQ(invalid_parameter([&] { (void)restart_spec(saved, 1, ch); }, &msg), "newton_tol");
+  EXPECT_NE(msg.find("newton_tol = 0.5 is out of range: must be in (0, 0.01)"), std::string::npos) << msg;
+  ch.tuned = {{"segments", 4}};
+  EXPECT_EQ(invalid_parameter([&] { (void)restart_spec(saved, 1, ch); }, &msg), "segments");
+  EXPECT_NE(msg.find("segments = 4 cannot change on a restart (the run's: 8)"), std::string::npos) << msg;
+  ch.tuned = {{"ntst", 4}};
+  EXPECT_EQ(invalid_parameter([&] { (void)restart_spec(saved, 1, ch); }), "option");
+}
+
+// The run's monitors label the branch switched to at its BP too. Oracle as above (r afresh at the located
+// point, 1e-9).
+TEST(Monitor, LabelsTheSwitchedBranch) {
+  BranchSpec spec = test::modal_spec(4, 0.02);
+  spec.switch_at_bp = true;
+  const SceneBranch plain = continue_scene(spec);
+  ASSERT_TRUE(plain.switched && plain.switched->switched) << (plain.switched ? plain.switched->message : "");
+  const double r = crossed_between(plain.switched->branch, "r");
+  ASSERT_TRUE(std::isfinite(r));
+  spec.monitors = {parse_monitor("r=" + format_value(r), false)};
+  const SceneBranch run = continue_scene(spec);
+  ASSERT_TRUE(run.switched && run.switched->switched);
+  const MeasuredBranch& m = run.switched->branch;
+  const std::vector<std::size_t> found = uz_named(m, monitor_event_name(spec.monitors[0], r));
+  ASSERT_GE(found.size(), 1u);
+  for (std::size_t f : found) {
+    EXPECT_NEAR(std::get<double>(m.special_measures[f][0]), r, 1e-9);
+    EXPECT_GT(m.special_label(f), 0);
+  }
 }
 
 }  // namespace

@@ -99,6 +99,8 @@ json spec_json(const BranchSpec& s) {
          {"start_state", s.start_state ? vector_json(*s.start_state) : json(nullptr)}};
   if (!s.start_state) j["start_state_reason"] = "none: the start is computed from the scene";
   if (s.start_parameter) j["start_parameter"] = *s.start_parameter;
+  for (const Monitor& m : s.monitors)  // a function (Python's) cannot be saved: a restart goes without it
+    if (!m.function) j[m.stop ? "stop_at" : "monitor"].push_back(monitor_text(m));
   return j;
 }
 
@@ -434,6 +436,14 @@ BranchSpec read_spec(const Reader& rd, const json& j) {
   const json& start = rd.at(j, "start_state", path);
   if (!start.is_null()) s.start_state = rd.vector(start, "spec.start_state");
   if (j.contains("start_parameter")) s.start_parameter = rd.number(j, "start_parameter", path);
+  for (const bool stop : {false, true}) {
+    const std::string key = stop ? "stop_at" : "monitor", at = Reader::join(path, key);
+    if (!j.contains(key)) continue;  // optional: a run without monitors
+    for (const json& t : rd.array(j, key, path)) {
+      if (!t.is_string()) rd.fail(at + " must be an array of \"NAME=V1,V2,...\" strings, got " + t.dump());
+      s.monitors.push_back(rd.checked(at, [&] { return parse_monitor(t.get<std::string>(), stop, key); }));
+    }
+  }
   rd.checked(path, [&] { s.validate(); });
   return s;
 }

@@ -9,7 +9,8 @@
 //   point "x", "p", "after_index", "test_value", "eigenvalue"; "switched_branch" also "bp_number";
 //   "spec": {"scene" (TOML, io/scene_file.hpp), "kind", "parameter", "engine" (every number of
 //   ContinuationOptions, the direction by name, unbounded limits null), "relax_T", "orbit", "label_every",
-//   "switch_at_bp", "start_state" (null, or a restart's start)};
+//   "switch_at_bp", "start_state" (null, or a restart's start), "monitor" and "stop_at" (the monitors' texts,
+//   NAME=V1,V2,...; absent when none)};
 //   "start": the start point (method, p, newton, converged, iterations, residual_norm, message);
 //   a curve: "curve_spec" {"type", "parameter2", "p2_min", "p2_max", "point", "symmetric_tol"},
 //   "curve_start" (the special point it started from, with "x", "p", "eigenvalue"), "start_p2",

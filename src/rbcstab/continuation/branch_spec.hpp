@@ -48,8 +48,9 @@ struct BranchSpec {
   // the kind's start, and the scene is the problem's scene as it is (modal_orbit: not rescaled to the
   // total excess area, which it already is).
   std::optional<Eigen::VectorXd> start_state;
-  // Label (UZ) or stop where a parameter or measure reaches given values (monitors.hpp). Not saved in a
-  // branch file; a curve run refuses them.
+  // Label (UZ) or stop where a parameter or measure reaches given values (monitors.hpp): on the branch and
+  // its switched branch; with a curve, on the curve only (its two parameters and measures). Saved in a branch
+  // file (but a function's), so a restart keeps them unless it replaces them (RestartChanges::monitors).
   std::vector<Monitor> monitors;
   // A restart in the labelled point's own parameter: that point's value, exactly as it was computed (a
   // composite parameter rebuilt from the scene, Lambda from Delta, can differ from it by an ulp, and a

@@ -29,6 +29,17 @@ struct Monitor {
 // and one or more numbers. Throws InvalidArgument(what, ...) naming the text for anything else.
 Monitor parse_monitor(std::string_view text, bool stop, const std::string& what = "monitor");
 
+// The monitors of the text forms: each of `monitor` parsed as a monitor, each of `stop_at` as a stop, in that
+// order (the CLI's flags, a scene's [continuation] keys; monitor_name / stop_name name them in messages). "none"
+// gives nothing: on a restart, monitors given replace the run's and `--monitor none` drops them.
+std::vector<Monitor> parse_monitors(const std::vector<std::string>& monitor, const std::vector<std::string>& stop_at,
+                                    const std::string& monitor_name = "monitor",
+                                    const std::string& stop_name = "stop_at");
+
+// m's text form, "NAME=V1,V2,..." (shortest round-trip numbers): parse_monitor reads it back. A function has none
+// (InvalidArgument("monitor")).
+std::string monitor_text(const Monitor& m);
+
 // The name of the UZ point (and event) of target `value` of monitor m: "Delta_2=0.5"; m.name for a
 // function's zeros.
 std::string monitor_event_name(const Monitor& m, double value);

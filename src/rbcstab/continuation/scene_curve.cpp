@@ -14,6 +14,7 @@
 #include "rbcstab/continuation/detail/branch_labels.hpp"
 #include "rbcstab/continuation/detail/scene_curve.hpp"
 #include "rbcstab/continuation/detail/scene_measures.hpp"
+#include "rbcstab/continuation/detail/scene_problem.hpp"
 #include "rbcstab/continuation/event_curve.hpp"
 #include "rbcstab/continuation/fold_curve.hpp"
 #include "rbcstab/continuation/full_equilibrium.hpp"
@@ -47,12 +48,19 @@ struct CurveRun {
   double p2_0;
   const ContinuationOptions& engine;
   std::vector<std::string> names;
+  const std::vector<Monitor>& monitors;  // over the curve's two parameters and its measures
 
   MeasuredBranch trace(const ContinuationProblem& curve, const Eigen::VectorXd& X0, const CurveMeasure& values) const {
-    Branch c = continue_branch(curve, X0, p2_0, engine);
-    return measured(std::move(c), names, curve.stability_kind(), [&](const Eigen::VectorXd& X, double p2) {
+    const detail::Measure measure = [&](const Eigen::VectorXd& X, double p2) {
       return values(X, curve.parameter_values(X, p2)[0], p2);
-    });
+    };
+    ContinuationOptions e = engine;
+    const detail::MonitoredPoint point{
+        curve.parameter_names(),
+        [&curve](const Eigen::VectorXd& X, double p2) { return curve.parameter_values(X, p2); }, names, measure};
+    for (UserEvent& ev : detail::monitor_events(point, monitors, X0, p2_0)) e.events.push_back(std::move(ev));
+    Branch c = continue_branch(curve, X0, p2_0, e);
+    return measured(std::move(c), names, curve.stability_kind(), measure);
   }
 };
 
@@ -200,7 +208,8 @@ void trace_curve(SceneCurve& r, const SpecialPoint& sp, int first_label) {
   const Scene scene = with_parameter(one.problem_scene, q1, sp.p);  // the curve's start
   r.start_p2 = get_parameter(scene, q2);
   r.system = curve_system(one.spec.kind, r.spec.type, scene, q1, q2, sp, r.spec.symmetric_tol);
-  const CurveRun run{r.start, r.start_p2, engine, curve_measure_names(one.spec.kind, r.system, scene.L)};
+  const CurveRun run{r.start, r.start_p2, engine, curve_measure_names(one.spec.kind, r.system, scene.L),
+                     one.spec.monitors};
   switch (one.spec.kind) {
     case ProblemKind::orbit:
       r.curve = cycle_curve(run, r.system, ReducedForcedSystem2(scene, q1, q2), one.spec.orbit);
@@ -257,9 +266,6 @@ void CurveSpec::validate(const BranchSpec& branch) const {
                                        (orbit ? "LPC, PD, NS, BP or UZ" : "LP, BP or HB"));
   if (!parameter2) throw InvalidArgument("parameter2", "--curve needs --parameter2 (the second free parameter)");
   if (branch.switch_at_bp) throw InvalidArgument("switch_at_bp", "--switch-at-bp and --curve cannot be combined");
-  // A monitor's UZ points would mix with the events a UZ curve starts from; curves have none.
-  if (!branch.monitors.empty())
-    throw InvalidArgument("monitor", "monitors (--monitor, --stop-at) label one-parameter branches: not with --curve");
   require_independent(branch.parameter, *parameter2, "parameter2");
   if (!(p2_min < p2_max))
     throw InvalidArgument("min2", "min2 = " + std::to_string(p2_min) + " must be < max2 = " + std::to_string(p2_max));
@@ -298,7 +304,13 @@ CurveSystem curve_system(ProblemKind kind, CurveKind type, const Scene& scene, C
 SceneCurve continue_curve(const BranchSpec& branch, const CurveSpec& curve) {
   branch.validate();
   curve.validate(branch);
-  return continue_curve(continue_scene(branch), curve);
+  // The monitors are the curve's: the branch it starts from has none (their UZ points would mix with the
+  // points a UZ curve starts from).
+  BranchSpec plain = branch;
+  plain.monitors.clear();
+  SceneBranch one = continue_scene(plain);
+  one.spec.monitors = branch.monitors;
+  return continue_curve(one, curve);
 }
 
 SceneCurve continue_curve(const SceneBranch& one, const CurveSpec& spec) {

@@ -50,7 +50,7 @@ struct SceneCurve {
   MeasuredBranch curve;  // points carry (parameter, parameter2)
 };
 
-// Validates both specs (before any work), runs the branch, then its curve.
+// Validates both specs (before any work), runs the branch (without branch.monitors), then its curve (with them).
 SceneCurve continue_curve(const BranchSpec& branch, const CurveSpec& curve);
 // The curve from a branch already run (no re-run; its switched branch, if any, does not matter).
 SceneCurve continue_curve(const SceneBranch& one, const CurveSpec& curve);

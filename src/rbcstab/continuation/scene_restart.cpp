@@ -9,12 +9,14 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <variant>
 
 #include "rbcstab/continuation/detail/branch_labels.hpp"
 #include "rbcstab/continuation/detail/scene_curve.hpp"
 #include "rbcstab/continuation/detail/scene_problem.hpp"
 #include "rbcstab/continuation/detail/scene_switch.hpp"
+#include "rbcstab/continuation/tunable_options.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
@@ -72,8 +74,16 @@ void apply_changes(BranchSpec& s, const RestartChanges& c) {
   if (c.p_min) s.engine.p_min = *c.p_min;
   if (c.p_max) s.engine.p_max = *c.p_max;
   if (c.direction) s.engine.direction = *c.direction;
-  if (c.initial_step) s.engine.initial_step = *c.initial_step;
-  if (c.max_step) s.engine.max_step = *c.max_step;
+  for (const auto& [name, v] : c.tuned) {
+    const TunableOption& t = tunable_option(name);
+    t.check(v);
+    if (std::string_view(t.name) == "segments" && v != s.orbit.segments)
+      throw InvalidArgument(t.name, std::string(t.name) + " = " + format_value(v) +
+                                        " cannot change on a restart (the run's: " + std::to_string(s.orbit.segments) +
+                                        "): an orbit's labelled state lies on the run's mesh of shooting segments");
+    t.set(s.engine, s.orbit, v);
+  }
+  if (c.monitors) s.monitors = *c.monitors;
   if (c.max_points) s.engine.max_points = *c.max_points;
   if (c.label_every) s.label_every = *c.label_every;
   s.switch_at_bp = c.switch_at_bp;
@@ -151,6 +161,7 @@ SceneBranch switch_at_label(const ContinuationRun& run, int label, const Restart
   apply_changes(r.spec, changes);
   set_domain_bounds(r.spec.engine, r.spec.parameter, r.spec.engine.p_min, r.spec.engine.p_max);
   r.spec.engine.validate();
+  r.spec.orbit.validate();
   r.problem_scene = ctx.problem_scene;
   r.start = ctx.start;
   r.branch = *branch_of(run, lp.branch);

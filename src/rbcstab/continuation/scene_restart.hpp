@@ -2,13 +2,17 @@
 // Restarts from a labelled point of a run (AUTO's IRS): a branch (restart), a switch at a labelled BP
 // (switch_at_label) or a special point's curve (restart_curve), and the request that picks one.
 #include <cstddef>
+#include <map>
 #include <optional>
+#include <string>
+#include <vector>
 #include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/branch_labels.hpp"
 #include "rbcstab/continuation/branch_spec.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/continuation_parameter.hpp"
+#include "rbcstab/continuation/monitors.hpp"
 #include "rbcstab/continuation/scene_branch.hpp"
 #include "rbcstab/continuation/scene_curve.hpp"
 #include "rbcstab/continuation/scene_kinds.hpp"
@@ -22,10 +26,15 @@ struct RestartChanges {
   std::optional<ContinuationParameter> parameter;  // default: the run's (a curve run: its first parameter)
   std::optional<double> p_min, p_max;
   std::optional<Direction> direction;
-  std::optional<double> initial_step, max_step;
+  // Tunable options by name (tunable_options.hpp: steps, Newton, location, the orbits' integration), each
+  // checked against its range. segments cannot change (an orbit's labelled state lies on the run's mesh):
+  // InvalidArgument("segments", ...) for another number.
+  std::map<std::string, double> tuned;
   std::optional<std::size_t> max_points;
   std::optional<int> label_every;
   bool switch_at_bp = false;
+  // Set: these replace the run's monitors and stops (empty: drops them); unset: the run's are kept.
+  std::optional<std::vector<Monitor>> monitors;
 };
 
 // The spec that continues from label `label` of `run`: the run's kind, engine and orbit options, its

@@ -55,7 +55,12 @@ SwitchedBranch switch_with(const SceneProblem& sp, const SceneBranch& from, cons
     return s;
   }
   s.bp_label = on.special_labels.at(static_cast<std::size_t>(bp - b.special_points.data()));
-  BranchSwitchResult sw = switch_branch(sp.problem(), b, *bp, options);
+  // The run's monitors label (or stop) the switched branch too.
+  BranchSwitchOptions o = options;
+  for (UserEvent& e :
+       monitor_events(sp, measure_names(from.spec.kind, from.problem_scene.L), from.spec.monitors, bp->x, bp->p))
+    o.continuation.events.push_back(std::move(e));
+  BranchSwitchResult sw = switch_branch(sp.problem(), b, *bp, o);
   s.switched = sw.switched;
   s.message = sw.message;
   s.branch = measure_branch(sp, from, std::move(sw.branch));

@@ -74,8 +74,10 @@ const std::array<TunableOption, 10>& options_table() {
        "special points and monitors are located until their bracket spans less than this in (x, p) (EPSS)",
        Domain{0, 1e-2, false, true, {}, {}, {}, {}}, false, false, get_e<&TunedEngine::location_tol>,
        set_e<&TunedEngine::location_tol>},
-      {"segments", "--segments", "orbits: multiple-shooting segments (AUTO's NTST)", closed(1, 1000), true, true,
-       get_oi<&TunedOrbit::segments>, set_oi<&TunedOrbit::segments>},
+      {"segments", "--segments",
+       "orbits: multiple-shooting segments (AUTO's NTST; there is no NCOL: inside a segment the integration tolerance "
+       "sets the resolution); a restart keeps the run's",
+       closed(1, 1000), true, true, get_oi<&TunedOrbit::segments>, set_oi<&TunedOrbit::segments>},
       {"orbit_rtol", "--orbit-rtol",
        "orbits: the relative tolerance of each segment's integration (with its variational equations)",
        Domain{1e-15, 1e-6, true, true, {}, {}, {}, "Floquet multipliers need a tight tolerance"}, false, true,

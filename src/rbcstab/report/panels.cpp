@@ -206,13 +206,13 @@ ContinuationPanel continuation_panel(const SceneFile& sf) {
     }
     o.set(c.engine, unused, v);
   }
-  for (const auto& [key, stop] : {std::pair{"monitor", false}, std::pair{"stop_at", true}}) {
-    if (!t.has(key)) continue;
-    for (const std::string& m : t.texts(key, 0, "a list of \"NAME=V1,V2,...\" strings")) try {
-        c.monitors.push_back(parse_monitor(m, stop, t.path(key)));
-      } catch (const InvalidArgument& e) {
-        throw InvalidArgument(t.path(key), t.path(key) + ": " + e.what());
-      }
+  const auto texts = [&t](const char* key) {
+    return t.has(key) ? t.texts(key, 0, "a list of \"NAME=V1,V2,...\" strings") : std::vector<std::string>{};
+  };
+  try {
+    c.monitors = parse_monitors(texts("monitor"), texts("stop_at"), t.path("monitor"), t.path("stop_at"));
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(e.parameter(), e.parameter() + ": " + e.what());
   }
   if (t.has("max_points")) {
     const long long n = t.integer("max_points");

@@ -1,6 +1,7 @@
 #pragma once
 // Module-private: the problem behind a scene branch (SceneProblem, make_problem: scene_problem.cpp) and the
 // starts every kind shares (scene_start.cpp).
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -43,9 +44,18 @@ void identify_mode(const ContinuationProblem& problem, const std::vector<ShapeMo
 std::unique_ptr<SceneProblem> make_problem(const BranchSpec& spec, const Scene& scene);
 MeasuredBranch measure_branch(const SceneProblem& sp, const SceneBranch& r, Branch b);
 
-// The events of `monitors` over sp's parameters and measures (measure_names: aligned with sp.measures);
-// (x0, p0), the start, shows which measures are numbers. Throws InvalidArgument("monitor", ...) for an
-// unknown name or one that is not a continuous number.
+// What a monitor may read at a point (x, p) of a branch or curve: its parameters and its measures by name.
+struct MonitoredPoint {
+  std::vector<std::string> parameters;
+  std::function<std::vector<double>(const Eigen::VectorXd& x, double p)> parameter_values;
+  std::vector<std::string> measure_names;  // aligned with measures' values
+  Measure measures;
+};
+// The events of `monitors` over q; (x0, p0), the start, shows which measures are numbers. Throws
+// InvalidArgument("monitor", ...) for an unknown name or one that is not a continuous number.
+std::vector<UserEvent> monitor_events(const MonitoredPoint& q, const std::vector<Monitor>& monitors,
+                                      const Eigen::VectorXd& x0, double p0);
+// The same over sp's parameters and measures (measure_names: aligned with sp.measures); sp outlives the events.
 std::vector<UserEvent> monitor_events(const SceneProblem& sp, const std::vector<std::string>& measure_names,
                                       const std::vector<Monitor>& monitors, const Eigen::VectorXd& x0, double p0);
 
