@@ -223,6 +223,7 @@ Branch Engine::run(const Eigen::VectorXd& x0, double p0, double sign) {
       bool detected = true;
       try {
         detect(a, b, after, 0, found);
+        if (at_bound) detect_at_bound(a, b, after, found);
       } catch (const InvalidArgument&) {
         detected = false;  // a user event left the domain: the bracketing endpoints are still valid points
       }
@@ -336,6 +337,13 @@ NewtonResult solve_fixed_parameter(const ContinuationProblem& problem, const Eig
   Eigen::MatrixXd J;
   for (int it = 0; it < max_iterations; ++it) {
     problem.residual(r.x, p, F);
+    // A given state that already solves F = 0 to 1e-2 tol (a labelled point, stored as computed) is kept as
+    // it is: at a fold or BP the Jacobian is singular there and a Newton step would throw it off.
+    if (it == 0 && F.allFinite() && F.lpNorm<Eigen::Infinity>() <= 1e-2 * tol * (1 + r.x.lpNorm<Eigen::Infinity>())) {
+      r.residual_norm = F.lpNorm<Eigen::Infinity>();
+      r.converged = true;
+      return r;
+    }
     problem.jacobian(r.x, p, J);
     const Eigen::VectorXd dx = J.partialPivLu().solve(-F);
     ++r.iterations;

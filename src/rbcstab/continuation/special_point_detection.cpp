@@ -211,6 +211,8 @@ void Engine::detect(const Pt& a, const Pt& b, std::size_t after, int depth, std:
     sp.unstable_before = a.n_unstable;
     sp.unstable_after = b.n_unstable;
     sp.after_index = after;
+    // The pair (multiplier) that crossed, which an HB (NS) curve starts from; never 0 for a located HB.
+    if (sp.type == SpecialPointType::HB || sp.type == SpecialPointType::NS) sp.eigenvalue = critical_value(b, sp.type);
     set_certificate(sp, b, margin(a), margin(b));
     found.push_back(sp);
   }
@@ -227,6 +229,65 @@ void Engine::detect(const Pt& a, const Pt& b, std::size_t after, int depth, std:
     return a.t.dot(Xu - a.X) < a.t.dot(Xv - a.X);
   });
   out.insert(out.end(), found.begin(), found.end());
+}
+
+// The eigenvalue (multiplier) of q nearest the crossing of a special point of this type: a pair with Im > 0
+// nearest the imaginary axis (HB) or the unit circle (NS), a real one nearest 0 (BP, LP; 1 for cycles) or -1 (PD).
+std::complex<double> Engine::critical_value(const Pt& q, SpecialPointType type) const {
+  const bool pair = type == SpecialPointType::HB || type == SpecialPointType::NS;
+  std::complex<double> best{};
+  double dist = std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < q.spectrum.size(); ++i) {
+    const std::complex<double> z = q.spectrum[i];
+    if (pair ? !(z.imag() > 0) : z.imag() != 0) continue;
+    double d = 0;
+    if (!cycles_)
+      d = std::abs(z.real());
+    else if (pair)
+      d = std::abs(std::abs(z) - 1);
+    else
+      d = std::abs(z - (type == SpecialPointType::PD ? -1.0 : 1.0));
+    if (d < dist) dist = d, best = z;
+  }
+  return best;
+}
+
+// A special point within rounding of a bound the step b landed on: the branch stops there before the test
+// function changes sign (or the critical eigenvalue passes stability_tol), e.g. continued to a label's own
+// value. Reported at b, located, when the secant of a test function through a and b has its zero at most
+// location_tol beyond b in p (the distance is the precision); a type already found at b is not repeated.
+void Engine::detect_at_bound(const Pt& a, const Pt& b, std::size_t after, std::vector<SpecialPoint>& out) {
+  if (!o_.detect_bifurcations) return;
+  const double pa = a.X[n_], pb = b.X[n_];
+  if (pa == pb) return;
+  for (int k = 0; k < kSlots; ++k) {
+    const double ga = a.tests[static_cast<std::size_t>(k)], gb = b.tests[static_cast<std::size_t>(k)];
+    if (!std::isfinite(ga) || !std::isfinite(gb) || ga == 0 || ga * gb < 0) continue;
+    if (k >= 2 && (!o_.compute_stability || (neutral(a, k) && neutral(b, k)))) continue;
+    const double beyond = gb == 0 ? 0.0 : -gb * (pb - pa) / (gb - ga);  // root - pb along the step
+    if (!(beyond * (pb - pa) >= 0 && std::abs(beyond) <= o_.location_tol)) continue;
+    const SpecialPointType type = slot_type(k);
+    if (std::any_of(out.begin(), out.end(),
+                    [&](const SpecialPoint& q) { return q.type == type && std::abs(q.p - pb) <= o_.location_tol; }))
+      continue;
+    SpecialPoint sp;
+    sp.type = type;
+    sp.name = to_string(type);
+    sp.x = b.X.head(n_);
+    sp.p = pb;
+    sp.parameters = pr_.parameter_values(sp.x, sp.p);
+    sp.p_lo = std::min(pb, pb + beyond);
+    sp.p_hi = std::max(pb, pb + beyond);
+    sp.precision = std::abs(beyond);
+    sp.status = LocationStatus::located;
+    sp.unstable_before = a.n_unstable;
+    sp.unstable_after = b.n_unstable;
+    sp.test_value = gb;
+    sp.after_index = after;
+    if (k >= 2) sp.eigenvalue = critical_value(b, type);
+    set_certificate(sp, b, margin(a), margin(b));
+    out.push_back(sp);
+  }
 }
 
 // The branch-jump guard: why the step a -> b is not one piece of a branch, or "" when it is. A step that jumps

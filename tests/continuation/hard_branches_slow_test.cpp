@@ -1,0 +1,48 @@
+// The swinging <-> tumbling boundary Lambda*(S) to S = 200 (issue 29 point 6; label slow: the orbits at large S
+// relax over hundreds of periods). Reference: the UZ of one-parameter branches in Lambda at fixed S, each from its
+// own relaxation and shooting start.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+
+#include "continuation/fig2_fixture.hpp"
+#include "continuation/scene_spec_fixture.hpp"
+#include "rbcstab/continuation/scene_curve.hpp"
+
+namespace rbcstab {
+namespace {
+
+using P = ContinuationParameter;
+
+// The curve from the Lambda branch of Fig. 2's cell at Delta = 1 (UZ at Lambda* = 1.17408, S = 1.96) in S to
+// S_end, and the UZ of a branch in Lambda at S = S_end: both converged to 1e-12 and located to 1e-11, 1e-9.
+void expect_curve_end_is_the_branch_uz(double S_end) {
+  BranchSpec spec = test::spec_of(test::fig2_in_plane(1.0), ProblemKind::orbit, P::Lambda, 1, 2, Direction::backward);
+  spec.orbit.segments = 4;
+  const SceneCurve c = continue_curve(spec, test::curve_of(CurveKind::UZ, P::S, 1.9, S_end));
+  ASSERT_TRUE(c.started) << c.message;
+  const Branch& b = c.curve.branch;
+  ASSERT_EQ(b.status, ContinuationStatus::completed) << b.message;
+  ASSERT_EQ(b.points.back().p, S_end);
+  const double Lambda_c = b.points.back().parameters[0];
+  BranchSpec at = spec;
+  at.scene = with_parameter(spec.scene, P::S, S_end);
+  at.engine.p_min = Lambda_c - 0.05;
+  at.engine.p_max = Lambda_c + 0.05;
+  at.scene = with_parameter(at.scene, P::Lambda, Lambda_c + 0.04);
+  at.engine.max_step = 0.01;
+  const SceneBranch one = continue_scene(at);
+  ASSERT_EQ(one.branch.branch.status, ContinuationStatus::completed) << one.branch.branch.message;
+  const SpecialPoint* uz = find_special_point(one.branch.branch, SpecialPointType::UZ);
+  ASSERT_NE(uz, nullptr);
+  std::printf("S = %g: curve Lambda* = %.13f (%zu points), one-parameter UZ %.13f\n", S_end, Lambda_c, b.points.size(),
+              uz->p);
+  EXPECT_EQ(uz->status, LocationStatus::located);
+  EXPECT_NEAR(uz->p, Lambda_c, 1e-9);
+}
+
+TEST(HardBranchesSlow, SwingTumbleCurveToS20) { expect_curve_end_is_the_branch_uz(20); }
+TEST(HardBranchesSlow, SwingTumbleCurveToS200) { expect_curve_end_is_the_branch_uz(200); }
+
+}  // namespace
+}  // namespace rbcstab

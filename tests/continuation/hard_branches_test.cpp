@@ -1,0 +1,147 @@
+// Hard branches (issue 29 point 6), each against a reference computed another way and with the status the run
+// must end with: a BP pair far closer than any step, a fold on or within rounding of the range end (closed
+// forms), and a special point at the range end of a physical branch (the run that located it). The large-S
+// out-of-plane branches are branch_jump_test.cpp's (closed form; the grid is slow), the swinging-tumbling
+// curve to S = 200 is hard_branches_slow_test.cpp's.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <vector>
+
+#include "continuation/full_fixtures.hpp"
+#include "continuation/scene_spec_fixture.hpp"
+#include "rbcstab/continuation/branch_file.hpp"
+#include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/scene_curve.hpp"
+#include "rbcstab/continuation/scene_restart.hpp"
+
+namespace rbcstab {
+namespace {
+
+using P = ContinuationParameter;
+
+class Fn final : public ContinuationProblem {
+ public:
+  using F = std::function<void(const Eigen::VectorXd&, double, Eigen::VectorXd&)>;
+  Fn(Eigen::Index n, F f) : n_(n), f_(std::move(f)) {}
+  Eigen::Index dimension() const override { return n_; }
+  void residual(const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) const override {
+    F.resize(n_);
+    f_(x, p, F);
+  }
+
+ private:
+  Eigen::Index n_;
+  F f_;
+};
+
+std::vector<SpecialPoint> of_type(const Branch& b, SpecialPointType t) {
+  std::vector<SpecialPoint> out;
+  for (const SpecialPoint& s : b.special_points)
+    if (s.type == t) out.push_back(s);
+  return out;
+}
+
+// Pitchforks at p = 0.3 and 0.3 + 1e-9 (x' = (p - 0.3) x - x^3, y' = (p - 0.3 - 1e-9) y - y^3), one step of 0.5
+// over both: 1e-9 is 100 location_tol, so they are two located BPs at their closed-form values (to 1e-11, the
+// bracket), in order, 0 -> 1 -> 2 unstable; ends completed on the bound. With the pair 1e-12 apart (below
+// location_tol) they are one located point carrying 0 -> 2 (engine_test's coincident case), so the count of
+// BPs is what separates the two regimes.
+TEST(HardBranches, BranchPointPairCloserThanAnyStepIsTwoLocatedPoints) {
+  for (const double gap : {1e-9, 1e-12}) {
+    const Fn pr(2, [gap](const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) {
+      F[0] = (p - 0.3) * x[0] - x[0] * x[0] * x[0];
+      F[1] = (p - 0.3 - gap) * x[1] - x[1] * x[1] * x[1];
+    });
+    ContinuationOptions o;
+    o.initial_step = o.max_step = 0.5;
+    o.p_max = 0.6;
+    const Branch b = continue_branch(pr, Eigen::VectorXd::Zero(2), 0.1, o);
+    EXPECT_EQ(b.status, ContinuationStatus::completed) << b.message;
+    EXPECT_EQ(b.points.back().p, 0.6);
+    const std::vector<SpecialPoint> bp = of_type(b, SpecialPointType::BP);
+    for (const SpecialPoint& q : bp) EXPECT_EQ(q.status, LocationStatus::located) << gap;
+    if (gap > o.location_tol) {
+      ASSERT_EQ(bp.size(), 2u) << gap;
+      EXPECT_NEAR(bp[0].p, 0.3, 1e-11);
+      EXPECT_NEAR(bp[1].p, 0.3 + gap, 1e-11);
+      EXPECT_LT(bp[0].p, bp[1].p);
+      EXPECT_EQ(bp[0].unstable_after, 1);
+      EXPECT_EQ(bp[1].unstable_after, 2);
+    } else {
+      ASSERT_EQ(bp.size(), 1u) << gap;
+      EXPECT_NEAR(bp[0].p, 0.3, 1e-11);
+      EXPECT_EQ(bp[0].unstable_after - bp[0].unstable_before, 2);
+    }
+  }
+}
+
+// The fold p = x^2 (F = p - x^2, fold at p = 0, x = 0) continued from p = 1 (x = 1) towards p_min = the fold's value
+// and within rounding of it: with p_min <= 0 the run passes the fold, locates it (closed form: p = 0, x = 0 to the
+// bracket, 1e-11 in x hence 1e-22 in p) and ends completed on p_max on the other half; with p_min = +1e-14 the
+// fold lies outside the range (1e-7 in x from the end, far beyond location_tol): the run ends completed on the
+// bound, x = 1e-7, with no LP.
+TEST(HardBranches, FoldAtOrWithinRoundingOfTheRangeEnd) {
+  const Fn pr(1, [](const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) { F[0] = p - x[0] * x[0]; });
+  for (const double p_min : {0.0, -1e-14, 1e-14}) {
+    ContinuationOptions o;
+    o.p_min = p_min;
+    o.p_max = 1;
+    o.max_step = 0.3;
+    o.direction = Direction::backward;
+    const Branch b = continue_branch(pr, Eigen::VectorXd::Ones(1), 1.0, o);
+    EXPECT_EQ(b.status, ContinuationStatus::completed) << p_min << ": " << b.message;
+    const std::vector<SpecialPoint> lp = of_type(b, SpecialPointType::LP);
+    if (p_min <= 0) {
+      ASSERT_EQ(lp.size(), 1u) << p_min;
+      EXPECT_EQ(lp[0].status, LocationStatus::located);
+      EXPECT_NEAR(lp[0].x[0], 0.0, 1e-11);
+      EXPECT_NEAR(lp[0].p, 0.0, 1e-20);
+      EXPECT_EQ(b.points.back().p, 1.0);
+      EXPECT_NEAR(b.points.back().x[0], -1.0, 1e-12);
+    } else {
+      EXPECT_TRUE(lp.empty()) << lp.size();
+      EXPECT_EQ(b.points.back().p, p_min);
+      EXPECT_NEAR(b.points.back().x[0], 1e-7, 1e-12);
+    }
+    std::printf("fold, p_min = %g: %zu points, %zu LP, %d rejected steps, ended %s\n", p_min, b.points.size(),
+                lp.size(), b.counters.rejected_steps, b.message.c_str());
+  }
+}
+
+// The full model's l = 4 crossing (ForcedRun of full_equilibrium_test.cpp: a BP and an HB carrying 0 -> 9 at the
+// same C, against the nested closed form there) is a range end when a branch is continued to its value: the
+// branch ends on it and reports both, at the bound, located, the HB with its pair's frequency (omega = 1/2 ..
+// 2, not 0: the HB curve starts from it). Reference: the run that located them.
+TEST(HardBranches, FullModelCrossingAtTheRangeEndIsReportedThere) {
+  BranchSpec spec = test::spec_of(full_fixtures::forced_scene(0.08, 5, 1e-3), ProblemKind::full, P::C, 0.012, 0.08,
+                                  Direction::backward);
+  spec.engine.max_step = 0.05;
+  const SceneBranch first = continue_scene(spec);
+  const SpecialPoint* hb = find_special_point(first.branch.branch, SpecialPointType::HB);
+  ASSERT_NE(hb, nullptr);
+  EXPECT_GT(std::abs(hb->eigenvalue.imag()), 0.4);  // the unresolved HB names its pair
+  const ContinuationRun run = parse_branch_file(branch_file_json(first).dump(1), "t.json");
+  RestartChanges ch;
+  ch.p_min = hb->p;
+  const SceneBranch to = restart(run, first.branch.point_labels.front(), ch);
+  ASSERT_EQ(to.branch.branch.status, ContinuationStatus::completed) << to.branch.branch.message;
+  EXPECT_EQ(to.branch.branch.points.back().p, hb->p);
+  for (const SpecialPointType t : {SpecialPointType::BP, SpecialPointType::HB}) {
+    const SpecialPoint* q = find_special_point(to.branch.branch, t);
+    ASSERT_NE(q, nullptr) << to_string(t);
+    EXPECT_EQ(q->p, hb->p) << to_string(t);
+    EXPECT_EQ(q->status, LocationStatus::located);
+    if (t == SpecialPointType::HB) EXPECT_GT(std::abs(q->eigenvalue.imag()), 0.4);
+  }
+  // ... and the HB curve starts from the restarted branch's HB as from the first run's.
+  const auto k = static_cast<std::size_t>(hb - first.branch.branch.special_points.data());
+  const SceneCurve c =
+      restart_curve(run, first.branch.special_labels.at(k), test::curve_of(CurveKind::HB, P::B, 0.9, 1.1));
+  EXPECT_TRUE(c.started) << c.message;
+}
+
+}  // namespace
+}  // namespace rbcstab
