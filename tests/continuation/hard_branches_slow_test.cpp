@@ -1,11 +1,13 @@
 // The swinging <-> tumbling boundary Lambda*(S) to S = 200 (issue 29 point 6; label slow: the orbits at large S
 // relax over hundreds of periods). Reference: the UZ of one-parameter branches in Lambda at fixed S, each from its
-// own relaxation and shooting start.
+// own relaxation and shooting start. And restart_table.hpp's runs, every label restarted to every other label's
+// value (the default suite's restart_table_test.cpp goes to the next label's only).
 #include <gtest/gtest.h>
 
 #include <cstdio>
 
 #include "continuation/fig2_fixture.hpp"
+#include "continuation/restart_table.hpp"
 #include "continuation/scene_spec_fixture.hpp"
 #include "rbcstab/continuation/scene_curve.hpp"
 
@@ -40,6 +42,12 @@ void expect_curve_end_is_the_branch_uz(double S_end) {
   EXPECT_EQ(uz->status, LocationStatus::located);
   EXPECT_NEAR(uz->p, Lambda_c, 1e-9);
 }
+
+class RestartTableAll : public ::testing::TestWithParam<std::size_t> {};
+
+TEST_P(RestartTableAll, EveryLabelRestartsToEveryLabelsValue) { restart_table::check_row(GetParam(), true); }
+
+INSTANTIATE_TEST_SUITE_P(Runs, RestartTableAll, ::testing::Range<std::size_t>(0, restart_table::rows().size()));
 
 TEST(HardBranchesSlow, SwingTumbleCurveToS20) { expect_curve_end_is_the_branch_uz(20); }
 TEST(HardBranchesSlow, SwingTumbleCurveToS200) { expect_curve_end_is_the_branch_uz(200); }

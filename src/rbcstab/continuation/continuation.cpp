@@ -263,6 +263,7 @@ Branch Engine::run(const Eigen::VectorXd& x0, double p0, double sign) {
     const std::size_t known = br.special_points.size();
     br.special_points.insert(br.special_points.end(), found.begin(), found.end());
     const std::string stopped = stop_event(br.special_points, known, a, b);  // b: the stop's point, if any
+    const bool fold_end = stopped.empty() && !at_bound && fold_at_bound(br.special_points, known, a, b);
     arclength += sign * std::abs(a.t.dot(b.X - a.X));
     br.points.push_back(to_branch_point(b, arclength));
     if (o_.on_progress) o_.on_progress(double(br.points.size()), double(o_.max_points));
@@ -272,8 +273,9 @@ Branch Engine::run(const Eigen::VectorXd& x0, double p0, double sign) {
       br.message = "stopped at " + stopped;
       break;
     }
-    if (at_bound) {
-      br.message = "reached the parameter bound";
+    if (at_bound || fold_end) {
+      br.message = fold_end ? "reached the parameter bound at a fold (turning within location_tol of it)"
+                            : "reached the parameter bound";
       break;
     }
     if (o_.stop && o_.stop(a.X.head(n_), a.X[n_])) {

@@ -255,7 +255,7 @@ std::complex<double> Engine::critical_value(const Pt& q, SpecialPointType type) 
 // A special point within rounding of a bound the step b landed on: the branch stops there before the test
 // function changes sign (or the critical eigenvalue passes stability_tol), e.g. continued to a label's own
 // value. Reported at b, located, when the secant of a test function through a and b has its zero at most
-// location_tol beyond b in p (the distance is the precision); a type already found at b is not repeated.
+// location_tol beyond b (the distance is the precision); a type already found at b is not repeated.
 void Engine::detect_at_bound(const Pt& a, const Pt& b, std::size_t after, std::vector<SpecialPoint>& out) {
   if (!o_.detect_bifurcations) return;
   const double pa = a.X[n_], pb = b.X[n_];
@@ -264,8 +264,11 @@ void Engine::detect_at_bound(const Pt& a, const Pt& b, std::size_t after, std::v
     const double ga = a.tests[static_cast<std::size_t>(k)], gb = b.tests[static_cast<std::size_t>(k)];
     if (!std::isfinite(ga) || !std::isfinite(gb) || ga == 0 || ga * gb < 0) continue;
     if (k >= 2 && (!o_.compute_stability || (neutral(a, k) && neutral(b, k)))) continue;
-    const double beyond = gb == 0 ? 0.0 : -gb * (pb - pa) / (gb - ga);  // root - pb along the step
-    if (!(beyond * (pb - pa) >= 0 && std::abs(beyond) <= o_.location_tol)) continue;
+    // The secant's zero beyond b along the step, in (x, p) max norm like location_tol (not in p alone: p is
+    // quadratic in the arclength at a fold).
+    const double f = gb == 0 ? 0.0 : gb / (ga - gb);
+    const double beyond = f * (b.X - a.X).lpNorm<Eigen::Infinity>();
+    if (!(f >= 0 && beyond <= o_.location_tol)) continue;
     const SpecialPointType type = slot_type(k);
     if (std::any_of(out.begin(), out.end(),
                     [&](const SpecialPoint& q) { return q.type == type && std::abs(q.p - pb) <= o_.location_tol; }))
@@ -276,9 +279,9 @@ void Engine::detect_at_bound(const Pt& a, const Pt& b, std::size_t after, std::v
     sp.x = b.X.head(n_);
     sp.p = pb;
     sp.parameters = pr_.parameter_values(sp.x, sp.p);
-    sp.p_lo = std::min(pb, pb + beyond);
-    sp.p_hi = std::max(pb, pb + beyond);
-    sp.precision = std::abs(beyond);
+    sp.p_lo = std::min(pb, pb + f * (pb - pa));
+    sp.p_hi = std::max(pb, pb + f * (pb - pa));
+    sp.precision = beyond;
     sp.status = LocationStatus::located;
     sp.unstable_before = a.n_unstable;
     sp.unstable_after = b.n_unstable;
@@ -304,6 +307,30 @@ std::string Engine::unconfirmed_change(const Pt& a, const Pt& b, const std::vect
     return os.str();
   }
   return "";
+}
+
+// A fold (LP, LPC) located within location_tol of a bound: the branch turns back within rounding of the range
+// end (e.g. continued to an LP label's own value), so the fold is that end. The branch ends on it: end is the
+// fold's state with p on the bound (the fold's precision covers the shift), the points found after it dropped.
+bool Engine::fold_at_bound(std::vector<SpecialPoint>& special, std::size_t first, const Pt& a, Pt& end) {
+  for (std::size_t k = first; k < special.size(); ++k) {
+    SpecialPoint& sp = special[k];
+    if ((sp.type != SpecialPointType::LP && sp.type != SpecialPointType::LPC) || sp.status != LocationStatus::located)
+      continue;
+    const double bound = std::abs(sp.p - o_.p_max) <= std::abs(sp.p - o_.p_min) ? o_.p_max : o_.p_min;
+    if (!(std::abs(sp.p - bound) <= o_.location_tol)) continue;
+    sp.precision = std::max(sp.precision, std::abs(sp.p - bound));
+    sp.p_lo = std::min(sp.p_lo, bound);
+    sp.p_hi = std::max(sp.p_hi, bound);
+    sp.p = bound;
+    sp.parameters = pr_.parameter_values(sp.x, sp.p);
+    Eigen::VectorXd X(N_);
+    X << sp.x, bound;
+    end = finish(X, a.t, 0);
+    special.erase(special.begin() + static_cast<std::ptrdiff_t>(k) + 1, special.end());
+    return true;
+  }
+  return false;
 }
 
 std::string Engine::stop_event(std::vector<SpecialPoint>& special, std::size_t first, const Pt& a, Pt& end) {

@@ -49,6 +49,7 @@ class Engine {
   static int crossings(SpecialPointType type);
   SpecialPointType unresolved_type(const Pt& a, const Pt& b) const;
   void detect(const Pt& a, const Pt& b, std::size_t after, int depth, std::vector<SpecialPoint>& out);
+  bool fold_at_bound(std::vector<SpecialPoint>& special, std::size_t first, const Pt& a, Pt& end);
   void detect_at_bound(const Pt& a, const Pt& b, std::size_t after, std::vector<SpecialPoint>& out);
   std::complex<double> critical_value(const Pt& q, SpecialPointType type) const;
   std::string unconfirmed_change(const Pt& a, const Pt& b, const std::vector<SpecialPoint>& found) const;
