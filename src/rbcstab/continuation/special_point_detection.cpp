@@ -14,6 +14,10 @@
 
 namespace rbcstab::detail {
 
+namespace {
+constexpr double kVerticalTangent = 1e-12;  // |t_p| of a unit tangent below this: the branch is at fixed p
+}  // namespace
+
 double Engine::test_value(const Pt& q, int slot, int event) const {
   return event >= 0 ? q.events[static_cast<std::size_t>(event)] : q.tests[static_cast<std::size_t>(slot)];
 }
@@ -166,6 +170,9 @@ void Engine::detect(const Pt& a, const Pt& b, std::size_t after, int depth, std:
       // A neutral spectrum on both sides (a centre, e.g. the conservative S = inf reduced system)
       // makes the spectral products pure rounding noise: no crossing can be read from them.
       if (k >= 2 && a.n_unstable == b.n_unstable && neutral(a, k) && neutral(b, k)) continue;
+      // Likewise the tangent's p component on a branch at fixed p (a vertical bifurcating set): rounding noise
+      // at both ends; a fold inside a step has |t_p| of the order of the step at its ends.
+      if (k == 0 && std::max(std::abs(ga), std::abs(gb)) <= kVerticalTangent) continue;
       SpecialPoint sp;
       if (locate(a, b, k, -1, after, sp)) {
         explained += crossings(sp.type);
@@ -264,6 +271,7 @@ void Engine::detect_at_bound(const Pt& a, const Pt& b, std::size_t after, std::v
     const double ga = a.tests[static_cast<std::size_t>(k)], gb = b.tests[static_cast<std::size_t>(k)];
     if (!std::isfinite(ga) || !std::isfinite(gb) || ga == 0 || ga * gb < 0) continue;
     if (k >= 2 && (!o_.compute_stability || (neutral(a, k) && neutral(b, k)))) continue;
+    if (k == 0 && std::max(std::abs(ga), std::abs(gb)) <= kVerticalTangent) continue;
     // The secant's zero beyond b along the step, in (x, p) max norm like location_tol (not in p alone: p is
     // quadratic in the arclength at a fold).
     const double f = gb == 0 ? 0.0 : gb / (ga - gb);
