@@ -11,8 +11,10 @@
 #include <vector>
 
 #include "continuation/full_fixtures.hpp"
+#include "continuation/modal_fixtures.hpp"
 #include "continuation/scene_spec_fixture.hpp"
 #include "rbcstab/continuation/branch_file.hpp"
+#include "rbcstab/continuation/branch_labels.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/scene_curve.hpp"
 #include "rbcstab/continuation/scene_restart.hpp"
@@ -164,6 +166,39 @@ TEST(HardBranches, FullModelCrossingAtTheRangeEndIsReportedThere) {
   const SceneCurve c =
       restart_curve(run, first.branch.special_labels.at(k), test::curve_of(CurveKind::HB, P::B, 0.9, 1.1));
   EXPECT_TRUE(c.started) << c.message;
+}
+
+}  // namespace
+}  // namespace rbcstab
+
+namespace rbcstab {
+namespace {
+
+// The post-instability branch's own BP at alpha = 60 (sigma_3^c = sigma_4^c, C = B/60 exactly): the states with
+// both a_3 and a_4 exist only there, so the branch switched onto is vertical (closed form: C = 1/60 at every
+// point, B = 1). The start (residual at rounding, Jacobian singular) is kept, the run ends completed at
+// max_points, every point at C = 1/60 to 1e-12, and the tangent's p component (rounding noise, measured 1e-16)
+// is not read as folds: no LP (before, an LP every few points).
+TEST(HardBranches, SwitchOntoAVerticalSetHasNoFolds) {
+  BranchSpec spec = test::spec_of(modal_fixtures::scene(0.04, 6), ProblemKind::modal, P::C, 0.01, 0.1, Direction::both);
+  const ContinuationRun onset = parse_branch_file(branch_file_json(continue_scene(spec)).dump(1), "t.json");
+  const SceneBranch post = switch_at_label(onset, resolve_label(onset, "BP:l=3", "switch_at"));
+  ASSERT_TRUE(post.switched && post.switched->switched);
+  const ContinuationRun run = parse_branch_file(branch_file_json(post).dump(1), "t.json");
+  int bp4 = 0;
+  for (const LabelledPoint& lp : labelled_points(run))
+    if (lp.branch == 2 && lp.type == "BP" && bp4 == 0) bp4 = lp.label;
+  ASSERT_GT(bp4, 0);
+  RestartChanges ch;
+  ch.max_points = 40;
+  const SceneBranch v = switch_at_label(run, bp4, ch);
+  ASSERT_TRUE(v.switched.has_value());
+  ASSERT_TRUE(v.switched->switched) << v.switched->message;
+  const Branch& b = v.switched->branch.branch;
+  EXPECT_EQ(b.status, ContinuationStatus::completed) << b.message;
+  EXPECT_GE(b.points.size(), 20u);
+  for (const BranchPoint& q : b.points) EXPECT_NEAR(q.p, 1.0 / 60, 1e-12);
+  EXPECT_TRUE(of_type(b, SpecialPointType::LP).empty()) << of_type(b, SpecialPointType::LP).size();
 }
 
 }  // namespace
