@@ -1,7 +1,7 @@
-// The swinging <-> tumbling boundary Lambda*(S) to S = 200 (issue 29 point 6; label slow: the orbits at large S
-// relax over hundreds of periods). Reference: the UZ of one-parameter branches in Lambda at fixed S, each from its
-// own relaxation and shooting start. And restart_table.hpp's runs, every label restarted to every other label's
-// value (the default suite's restart_table_test.cpp goes to the next label's only).
+// The swinging <-> tumbling boundary to S = 200 (label slow: hundreds of shooting steps). Reference: the UZ of
+// one-parameter branches at fixed S, each from its own relaxation and shooting start. And restart_table.hpp's runs,
+// every label restarted to every other label's value (the default suite's restart_table_test.cpp goes to the next
+// label's only).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -17,10 +17,10 @@ namespace {
 using P = ContinuationParameter;
 
 // The curve from the branch of Fig. 2's cell at Delta = 1 in q1 (Lambda over [1, 2]: UZ at Lambda* = 1.17408;
-// lambda over [2, 5]: UZ at lambda* = 2.57327; S = 1.96) in S to S_end, and the UZ of a branch in q1 at S = S_end from its own relaxation and start:
-// both converged to 1e-12 and located to 1e-11, 1e-9. Lambda is moved through Delta (Lambda ~ sqrt(Delta) at
-// fixed lambda), which leaves its domain (0, 4 pi) before S = 200 (Lambda* ~ 10 there: outside_domain, measured);
-// lambda is not bounded, so the curve to S = 200 is continued in (lambda, S).
+// lambda over [2, 5]: UZ at lambda* = 2.57327; S = 1.96) in S to S_end, and the UZ of a branch in q1 at S = S_end from
+// its own relaxation and start: both converged to 1e-12 and located to 1e-11, 1e-9. Lambda is moved through Delta
+// (Lambda ~ sqrt(Delta) at fixed lambda), which leaves its domain (0, 4 pi) before S = 200 (Lambda* ~ 10 there:
+// outside_domain, measured); lambda is not bounded, so the curve to S = 200 is continued in (lambda, S).
 void expect_curve_end_is_the_branch_uz(P q1, double lo, double hi, double S_end, double half_width) {
   BranchSpec spec = test::spec_of(test::fig2_in_plane(1.0), ProblemKind::orbit, q1, lo, hi, Direction::backward);
   spec.orbit.segments = 4;

@@ -1,4 +1,4 @@
-// Hard branches (issue 29 point 6), each against a reference computed another way and with the status the run
+// Hard branches, each against a reference computed another way and with the status the run
 // must end with: a BP pair far closer than any step, a fold on or within rounding of the range end (closed
 // forms), and a special point at the range end of a physical branch (the run that located it). The large-S
 // out-of-plane branches are branch_jump_test.cpp's (closed form; the grid is slow), the swinging-tumbling

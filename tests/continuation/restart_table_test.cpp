@@ -1,4 +1,4 @@
-// Every run kind restarts from each of its own labels and continues to a label's value (issue 29 point 3): the
+// Every run kind restarts from each of its own labels and continues to a label's value: the
 // runs of restart_table.hpp (reduced, modal and full equilibria, the in-plane orbit; LP, BP, HB and UZ curves),
 // each round-tripped through its branch file, each labelled point restarted with a bound set to the next label's
 // value (every label restarted from, every label's value reached once; every pair is hard_branches_slow_test's).
