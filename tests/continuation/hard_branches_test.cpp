@@ -135,9 +135,12 @@ TEST(HardBranches, FoldAtOrWithinRoundingOfTheRangeEnd) {
 }
 
 // The full model's l = 4 crossing (ForcedRun of full_equilibrium_test.cpp: a BP and an HB carrying 0 -> 9 at the
-// same C, against the nested closed form there) is a range end when a branch is continued to its value: the
-// branch ends on it and reports both, at the bound, located, the HB with its pair's frequency (omega = 1/2 ..
-// 2, not 0: the HB curve starts from it). Reference: the run that located them.
+// same C, against the nested closed form there) is a range end when a branch is continued to its value.
+// From above (the start, C = 0.08, down to it) the unstable count flips at the end and both are reported there
+// (as before). From below (the last label, C = 0.012, up to it) the count stays 9 at the end: the HB product's
+// secant has its zero within location_tol beyond the end, so the HB is reported there, located (before: no
+// special point at all). The HB carries its pair's frequency (omega = 1/2 .. 2, not 0: the HB curve starts from
+// it). Reference: the run that located the crossing.
 TEST(HardBranches, FullModelCrossingAtTheRangeEndIsReportedThere) {
   BranchSpec spec = test::spec_of(full_fixtures::forced_scene(0.08, 5, 1e-3), ProblemKind::full, P::C, 0.012, 0.08,
                                   Direction::backward);
@@ -147,18 +150,24 @@ TEST(HardBranches, FullModelCrossingAtTheRangeEndIsReportedThere) {
   ASSERT_NE(hb, nullptr);
   EXPECT_GT(std::abs(hb->eigenvalue.imag()), 0.4);  // the unresolved HB names its pair
   const ContinuationRun run = parse_branch_file(branch_file_json(first).dump(1), "t.json");
-  RestartChanges ch;
-  ch.p_min = hb->p;
-  const SceneBranch to = restart(run, first.branch.point_labels.front(), ch);
-  ASSERT_EQ(to.branch.branch.status, ContinuationStatus::completed) << to.branch.branch.message;
-  EXPECT_EQ(to.branch.branch.points.back().p, hb->p);
-  for (const SpecialPointType t : {SpecialPointType::BP, SpecialPointType::HB}) {
-    const SpecialPoint* q = find_special_point(to.branch.branch, t);
-    ASSERT_NE(q, nullptr) << to_string(t);
-    EXPECT_EQ(q->p, hb->p) << to_string(t);
+  for (const bool from_above : {true, false}) {
+    RestartChanges ch;
+    (from_above ? ch.p_min : ch.p_max) = hb->p;
+    ch.direction = from_above ? Direction::backward : Direction::forward;
+    const std::vector<int>& labels = first.branch.point_labels;
+    const SceneBranch to = restart(run, from_above ? labels.front() : labels.back(), ch);
+    const Branch& b = to.branch.branch;
+    ASSERT_EQ(b.status, ContinuationStatus::completed) << b.message;
+    EXPECT_EQ(b.points.back().p, hb->p);
+    const SpecialPoint* q = find_special_point(b, SpecialPointType::HB);
+    ASSERT_NE(q, nullptr) << from_above;
+    EXPECT_EQ(q->p, hb->p);
     EXPECT_EQ(q->status, LocationStatus::located);
-    if (t == SpecialPointType::HB) {
-      EXPECT_GT(std::abs(q->eigenvalue.imag()), 0.4);
+    EXPECT_GT(std::abs(q->eigenvalue.imag()), 0.4);
+    if (from_above) {
+      const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP);
+      ASSERT_NE(bp, nullptr);
+      EXPECT_EQ(bp->p, hb->p);
     }
   }
   // ... and the HB curve starts from the restarted branch's HB as from the first run's.
