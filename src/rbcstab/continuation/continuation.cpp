@@ -223,6 +223,7 @@ Branch Engine::run(const Eigen::VectorXd& x0, double p0, double sign) {
       bool detected = true;
       try {
         detect(a, b, after, 0, found);
+        if (at_bound) detect_at_bound(a, b, after, found);
       } catch (const InvalidArgument&) {
         detected = false;  // a user event left the domain: the bracketing endpoints are still valid points
       }
@@ -262,6 +263,7 @@ Branch Engine::run(const Eigen::VectorXd& x0, double p0, double sign) {
     const std::size_t known = br.special_points.size();
     br.special_points.insert(br.special_points.end(), found.begin(), found.end());
     const std::string stopped = stop_event(br.special_points, known, a, b);  // b: the stop's point, if any
+    const bool fold_end = stopped.empty() && !at_bound && fold_at_bound(br.special_points, known, a, b);
     arclength += sign * std::abs(a.t.dot(b.X - a.X));
     br.points.push_back(to_branch_point(b, arclength));
     if (o_.on_progress) o_.on_progress(double(br.points.size()), double(o_.max_points));
@@ -271,8 +273,9 @@ Branch Engine::run(const Eigen::VectorXd& x0, double p0, double sign) {
       br.message = "stopped at " + stopped;
       break;
     }
-    if (at_bound) {
-      br.message = "reached the parameter bound";
+    if (at_bound || fold_end) {
+      br.message = fold_end ? "reached the parameter bound at a fold (turning within location_tol of it)"
+                            : "reached the parameter bound";
       break;
     }
     if (o_.stop && o_.stop(a.X.head(n_), a.X[n_])) {
@@ -336,6 +339,13 @@ NewtonResult solve_fixed_parameter(const ContinuationProblem& problem, const Eig
   Eigen::MatrixXd J;
   for (int it = 0; it < max_iterations; ++it) {
     problem.residual(r.x, p, F);
+    // A given state that already solves F = 0 to 1e-2 tol (a labelled point, stored as computed) is kept as
+    // it is: at a fold or BP the Jacobian is singular there and a Newton step would throw it off.
+    if (it == 0 && F.allFinite() && F.lpNorm<Eigen::Infinity>() <= 1e-2 * tol * (1 + r.x.lpNorm<Eigen::Infinity>())) {
+      r.residual_norm = F.lpNorm<Eigen::Infinity>();
+      r.converged = true;
+      return r;
+    }
     problem.jacobian(r.x, p, J);
     const Eigen::VectorXd dx = J.partialPivLu().solve(-F);
     ++r.iterations;

@@ -168,6 +168,9 @@ struct NewtonResult {
   int iterations = 0;
   double residual_norm = 0;
 };
+// Newton at fixed p. An x0 that already solves F = 0 to 1e-2 tol (1 + |x0|) (max norms; a labelled point, stored
+// as computed) is returned as it is, with 0 iterations: at a fold or BP a Newton step through the singular
+// Jacobian would throw it off.
 NewtonResult solve_fixed_parameter(const ContinuationProblem& problem, const Eigen::VectorXd& x0, double p,
                                    double tol = 1e-12, int max_iterations = 30);
 

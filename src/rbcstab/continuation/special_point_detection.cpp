@@ -14,6 +14,10 @@
 
 namespace rbcstab::detail {
 
+namespace {
+constexpr double kVerticalTangent = 1e-12;  // |t_p| of a unit tangent below this: the branch is at fixed p
+}  // namespace
+
 double Engine::test_value(const Pt& q, int slot, int event) const {
   return event >= 0 ? q.events[static_cast<std::size_t>(event)] : q.tests[static_cast<std::size_t>(slot)];
 }
@@ -166,6 +170,9 @@ void Engine::detect(const Pt& a, const Pt& b, std::size_t after, int depth, std:
       // A neutral spectrum on both sides (a centre, e.g. the conservative S = inf reduced system)
       // makes the spectral products pure rounding noise: no crossing can be read from them.
       if (k >= 2 && a.n_unstable == b.n_unstable && neutral(a, k) && neutral(b, k)) continue;
+      // Likewise the tangent's p component on a branch at fixed p (a vertical bifurcating set): rounding noise
+      // at both ends; a fold inside a step has |t_p| of the order of the step at its ends.
+      if (k == 0 && std::max(std::abs(ga), std::abs(gb)) <= kVerticalTangent) continue;
       SpecialPoint sp;
       if (locate(a, b, k, -1, after, sp)) {
         explained += crossings(sp.type);
@@ -211,6 +218,8 @@ void Engine::detect(const Pt& a, const Pt& b, std::size_t after, int depth, std:
     sp.unstable_before = a.n_unstable;
     sp.unstable_after = b.n_unstable;
     sp.after_index = after;
+    // The pair (multiplier) that crossed, which an HB (NS) curve starts from; never 0 for a located HB.
+    if (sp.type == SpecialPointType::HB || sp.type == SpecialPointType::NS) sp.eigenvalue = critical_value(b, sp.type);
     set_certificate(sp, b, margin(a), margin(b));
     found.push_back(sp);
   }
@@ -229,6 +238,69 @@ void Engine::detect(const Pt& a, const Pt& b, std::size_t after, int depth, std:
   out.insert(out.end(), found.begin(), found.end());
 }
 
+// The eigenvalue (multiplier) of q nearest the crossing of a special point of this type: a pair with Im > 0
+// nearest the imaginary axis (HB) or the unit circle (NS), a real one nearest 0 (BP, LP; 1 for cycles) or -1 (PD).
+std::complex<double> Engine::critical_value(const Pt& q, SpecialPointType type) const {
+  const bool pair = type == SpecialPointType::HB || type == SpecialPointType::NS;
+  std::complex<double> best{};
+  double dist = std::numeric_limits<double>::infinity();
+  for (Eigen::Index i = 0; i < q.spectrum.size(); ++i) {
+    const std::complex<double> z = q.spectrum[i];
+    if (pair ? !(z.imag() > 0) : z.imag() != 0) continue;
+    double d = 0;
+    if (!cycles_)
+      d = std::abs(z.real());
+    else if (pair)
+      d = std::abs(std::abs(z) - 1);
+    else
+      d = std::abs(z - (type == SpecialPointType::PD ? -1.0 : 1.0));
+    if (d < dist) dist = d, best = z;
+  }
+  return best;
+}
+
+// A special point within rounding of a bound the step b landed on: the branch stops there before the test
+// function changes sign (or the critical eigenvalue passes stability_tol), e.g. continued to a label's own
+// value. Reported at b, located, when the secant of a test function through a and b has its zero at most
+// location_tol beyond b (the distance is the precision); a type already found at b is not repeated.
+void Engine::detect_at_bound(const Pt& a, const Pt& b, std::size_t after, std::vector<SpecialPoint>& out) {
+  if (!o_.detect_bifurcations) return;
+  const double pa = a.X[n_], pb = b.X[n_];
+  if (pa == pb) return;
+  for (int k = 0; k < kSlots; ++k) {
+    const double ga = a.tests[static_cast<std::size_t>(k)], gb = b.tests[static_cast<std::size_t>(k)];
+    if (!std::isfinite(ga) || !std::isfinite(gb) || ga == 0 || ga * gb < 0) continue;
+    if (k >= 2 && (!o_.compute_stability || (neutral(a, k) && neutral(b, k)))) continue;
+    if (k == 0 && std::max(std::abs(ga), std::abs(gb)) <= kVerticalTangent) continue;
+    // The secant's zero beyond b along the step, in (x, p) max norm like location_tol (not in p alone: p is
+    // quadratic in the arclength at a fold).
+    const double f = gb == 0 ? 0.0 : gb / (ga - gb);
+    const double beyond = f * (b.X - a.X).lpNorm<Eigen::Infinity>();
+    if (!(f >= 0 && beyond <= o_.location_tol)) continue;
+    const SpecialPointType type = slot_type(k);
+    if (std::any_of(out.begin(), out.end(),
+                    [&](const SpecialPoint& q) { return q.type == type && std::abs(q.p - pb) <= o_.location_tol; }))
+      continue;
+    SpecialPoint sp;
+    sp.type = type;
+    sp.name = to_string(type);
+    sp.x = b.X.head(n_);
+    sp.p = pb;
+    sp.parameters = pr_.parameter_values(sp.x, sp.p);
+    sp.p_lo = std::min(pb, pb + f * (pb - pa));
+    sp.p_hi = std::max(pb, pb + f * (pb - pa));
+    sp.precision = beyond;
+    sp.status = LocationStatus::located;
+    sp.unstable_before = a.n_unstable;
+    sp.unstable_after = b.n_unstable;
+    sp.test_value = gb;
+    sp.after_index = after;
+    if (k >= 2) sp.eigenvalue = critical_value(b, type);
+    set_certificate(sp, b, margin(a), margin(b));
+    out.push_back(sp);
+  }
+}
+
 // The branch-jump guard: why the step a -> b is not one piece of a branch, or "" when it is. A step that jumps
 // to a nearby branch changes the unstable count or a test function's sign with no zero in between: the
 // bracket of the change cannot shrink below the distance between the branches, so the special point that
@@ -243,6 +315,30 @@ std::string Engine::unconfirmed_change(const Pt& a, const Pt& b, const std::vect
     return os.str();
   }
   return "";
+}
+
+// A fold (LP, LPC) located within location_tol of a bound: the branch turns back within rounding of the range
+// end (e.g. continued to an LP label's own value), so the fold is that end. The branch ends on it: end is the
+// fold's state with p on the bound (the fold's precision covers the shift), the points found after it dropped.
+bool Engine::fold_at_bound(std::vector<SpecialPoint>& special, std::size_t first, const Pt& a, Pt& end) {
+  for (std::size_t k = first; k < special.size(); ++k) {
+    SpecialPoint& sp = special[k];
+    if ((sp.type != SpecialPointType::LP && sp.type != SpecialPointType::LPC) || sp.status != LocationStatus::located)
+      continue;
+    const double bound = std::abs(sp.p - o_.p_max) <= std::abs(sp.p - o_.p_min) ? o_.p_max : o_.p_min;
+    if (!(std::abs(sp.p - bound) <= o_.location_tol)) continue;
+    sp.precision = std::max(sp.precision, std::abs(sp.p - bound));
+    sp.p_lo = std::min(sp.p_lo, bound);
+    sp.p_hi = std::max(sp.p_hi, bound);
+    sp.p = bound;
+    sp.parameters = pr_.parameter_values(sp.x, sp.p);
+    Eigen::VectorXd X(N_);
+    X << sp.x, bound;
+    end = finish(X, a.t, 0);
+    special.erase(special.begin() + static_cast<std::ptrdiff_t>(k) + 1, special.end());
+    return true;
+  }
+  return false;
 }
 
 std::string Engine::stop_event(std::vector<SpecialPoint>& special, std::size_t first, const Pt& a, Pt& end) {

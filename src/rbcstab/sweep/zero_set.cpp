@@ -302,7 +302,7 @@ class Tracer {
         // Left through an edge of the unknown coordinate: replace the point outside by the crossing.
         h.pieces.back().w.back() = edge_crossing(k, h.pieces.back().w, swapped, xl[0] < 0 ? 0.0 : 1.0);
         h.end = End::edge;
-      } else if (br.message == "reached the parameter bound") {
+      } else if (br.message.rfind("reached the parameter bound", 0) == 0) {  // also "... at a fold"
         h.end = End::edge;
       } else if (closed) {
         h.pieces.back().w.push_back(origin);

@@ -3,6 +3,7 @@
 // predictor-corrector steps (continuation.cpp), the special points between two accepted points
 // (special_point_detection.cpp) and the points' stability certificates (stability_certificate.cpp).
 #include <array>
+#include <complex>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -48,6 +49,9 @@ class Engine {
   static int crossings(SpecialPointType type);
   SpecialPointType unresolved_type(const Pt& a, const Pt& b) const;
   void detect(const Pt& a, const Pt& b, std::size_t after, int depth, std::vector<SpecialPoint>& out);
+  bool fold_at_bound(std::vector<SpecialPoint>& special, std::size_t first, const Pt& a, Pt& end);
+  void detect_at_bound(const Pt& a, const Pt& b, std::size_t after, std::vector<SpecialPoint>& out);
+  std::complex<double> critical_value(const Pt& q, SpecialPointType type) const;
   std::string unconfirmed_change(const Pt& a, const Pt& b, const std::vector<SpecialPoint>& found) const;
   // The first special point from index `first` on that is a stop event's UZ (UserEvent::stop): the points
   // after it are dropped and `end` is it, as a point of the branch (tangent oriented by a's). Returns its

@@ -1,0 +1,214 @@
+// Hard branches, each against a reference computed another way and with the status the run
+// must end with: a BP pair far closer than any step, a fold on or within rounding of the range end (closed
+// forms), and a special point at the range end of a physical branch (the run that located it). The large-S
+// out-of-plane branches are branch_jump_test.cpp's (closed form; the grid is slow), the swinging-tumbling
+// curve to S = 200 is hard_branches_slow_test.cpp's.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <vector>
+
+#include "continuation/full_fixtures.hpp"
+#include "continuation/modal_fixtures.hpp"
+#include "continuation/scene_spec_fixture.hpp"
+#include "rbcstab/continuation/branch_file.hpp"
+#include "rbcstab/continuation/branch_labels.hpp"
+#include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/scene_curve.hpp"
+#include "rbcstab/continuation/scene_restart.hpp"
+
+namespace rbcstab {
+namespace {
+
+using P = ContinuationParameter;
+
+// A closed-form problem with its exact Jacobian (central differences would shift a pitchfork of -x^3 by h^2 ~ 4e-11).
+class Fn final : public ContinuationProblem {
+ public:
+  using Body = std::function<void(const Eigen::VectorXd&, double, Eigen::VectorXd&)>;
+  using Jac = std::function<void(const Eigen::VectorXd&, double, Eigen::MatrixXd&)>;
+  Fn(Eigen::Index n, Body f, Jac j) : n_(n), f_(std::move(f)), j_(std::move(j)) {}
+  Eigen::Index dimension() const override { return n_; }
+  void residual(const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) const override {
+    F.resize(n_);
+    f_(x, p, F);
+  }
+  void jacobian(const Eigen::VectorXd& x, double p, Eigen::MatrixXd& J) const override {
+    J = Eigen::MatrixXd::Zero(n_, n_);
+    j_(x, p, J);
+  }
+
+ private:
+  Eigen::Index n_;
+  Body f_;
+  Jac j_;
+};
+
+std::vector<SpecialPoint> of_type(const Branch& b, SpecialPointType t) {
+  std::vector<SpecialPoint> out;
+  for (const SpecialPoint& s : b.special_points)
+    if (s.type == t) out.push_back(s);
+  return out;
+}
+
+// Pitchforks at p = 0.3 and 0.3 + gap (x' = (p - 0.3) x - x^3, y' = (p - 0.3 - gap) y - y^3, exact Jacobian), one
+// step of 0.5 over both. gap = 1e-6 and 1e-8: two located BPs at their closed-form values (to 1e-11, the bracket),
+// in order, 0 -> 1 -> 2 unstable; gap = 1e-12 (below location_tol): one located point carrying 0 -> 2
+// (engine_test's coincident case). Each ends completed on the bound. Not asserted, a limit (docs/continuation.md):
+// at gap = 1e-9 = stability_tol the counts flip 1e-9 past each root, and the run reports three BPs (0 -> 0 at 0.3,
+// 0 -> 1 at 0.3 + 1e-9, 1 -> 2 at 0.3 + 2e-9).
+TEST(HardBranches, BranchPointPairCloserThanAnyStepIsTwoLocatedPoints) {
+  for (const double gap : {1e-6, 1e-8, 1e-12}) {
+    const Fn pr(
+        2,
+        [gap](const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) {
+          F[0] = (p - 0.3) * x[0] - x[0] * x[0] * x[0];
+          F[1] = (p - 0.3 - gap) * x[1] - x[1] * x[1] * x[1];
+        },
+        [gap](const Eigen::VectorXd& x, double p, Eigen::MatrixXd& J) {
+          J(0, 0) = p - 0.3 - 3 * x[0] * x[0];
+          J(1, 1) = p - 0.3 - gap - 3 * x[1] * x[1];
+        });
+    ContinuationOptions o;
+    o.initial_step = o.max_step = 0.5;
+    o.p_max = 0.6;
+    const Branch b = continue_branch(pr, Eigen::VectorXd::Zero(2), 0.1, o);
+    EXPECT_EQ(b.status, ContinuationStatus::completed) << b.message;
+    EXPECT_EQ(b.points.back().p, 0.6);
+    const std::vector<SpecialPoint> bp = of_type(b, SpecialPointType::BP);
+    for (const SpecialPoint& q : b.special_points)
+      std::printf("gap %g: %s at p = %.15g (%s, %d -> %d, precision %g)\n", gap, q.name.c_str(), q.p,
+                  to_string(q.status).c_str(), q.unstable_before, q.unstable_after, q.precision);
+    for (const SpecialPoint& q : bp) EXPECT_EQ(q.status, LocationStatus::located) << gap;
+    if (gap > o.location_tol) {
+      ASSERT_EQ(bp.size(), 2u) << gap;
+      EXPECT_NEAR(bp[0].p, 0.3, 1e-11);  // the bracket (location_tol) with the exact Jacobian
+      EXPECT_NEAR(bp[1].p, 0.3 + gap, 1e-11);
+      EXPECT_LT(bp[0].p, bp[1].p);
+      EXPECT_EQ(bp[0].unstable_after, 1);
+      EXPECT_EQ(bp[1].unstable_after, 2);
+    } else {
+      // One crossing of both (unresolved by the test functions): placed where the unstable count flips, that is
+      // where the eigenvalues pass stability_tol (1e-9 past the root: |d lambda/dp| = 1).
+      ASSERT_EQ(bp.size(), 1u) << gap;
+      EXPECT_NEAR(bp[0].p, 0.3 + o.stability_tol, 1e-11);
+      EXPECT_EQ(bp[0].unstable_after - bp[0].unstable_before, 2);
+    }
+  }
+}
+
+// The fold p = x^2 (F = p - x^2, fold at p = 0, x = 0) continued from p = 1 (x = 1) towards p_min = the fold's value
+// and within rounding of it: with p_min <= 0 the run passes the fold, locates it (closed form: p = 0, x = 0 to the
+// bracket, 1e-11 in x hence 1e-22 in p) and ends completed on p_max on the other half; with p_min = +1e-14 the
+// fold lies outside the range (1e-7 in x from the end, far beyond location_tol): the run ends completed on the
+// bound, x = 1e-7, with no LP.
+TEST(HardBranches, FoldAtOrWithinRoundingOfTheRangeEnd) {
+  const Fn pr(
+      1, [](const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) { F[0] = p - x[0] * x[0]; },
+      [](const Eigen::VectorXd& x, double, Eigen::MatrixXd& J) { J(0, 0) = -2 * x[0]; });
+  for (const double p_min : {0.0, -1e-14, 1e-14}) {
+    ContinuationOptions o;
+    o.p_min = p_min;
+    o.p_max = 1;
+    o.max_step = 0.3;
+    o.direction = Direction::backward;
+    const Branch b = continue_branch(pr, Eigen::VectorXd::Ones(1), 1.0, o);
+    EXPECT_EQ(b.status, ContinuationStatus::completed) << p_min << ": " << b.message;
+    const std::vector<SpecialPoint> lp = of_type(b, SpecialPointType::LP);
+    if (p_min <= 0) {
+      ASSERT_EQ(lp.size(), 1u) << p_min;
+      EXPECT_EQ(lp[0].status, LocationStatus::located);
+      EXPECT_NEAR(lp[0].x[0], 0.0, 1e-11);
+      EXPECT_EQ(lp[0].p, p_min);
+      EXPECT_EQ(b.points.back().p, p_min);
+      EXPECT_NEAR(b.points.back().x[0], 0.0, 1e-11);
+    } else {
+      EXPECT_TRUE(lp.empty()) << lp.size() << " LP at p = " << lp[0].p << ", x = " << lp[0].x[0];
+      EXPECT_EQ(b.points.back().p, p_min);
+      EXPECT_NEAR(b.points.back().x[0], 1e-7, 1e-12);
+    }
+    std::printf("fold, p_min = %g: %zu points, %zu LP, %zu rejected steps, ended %s\n", p_min, b.points.size(),
+                lp.size(), b.counters.rejected_steps, b.message.c_str());
+  }
+}
+
+// The full model's l = 4 crossing (ForcedRun of full_equilibrium_test.cpp: a BP and an HB carrying 0 -> 9 at the
+// same C, against the nested closed form there) is a range end when a branch is continued to its value.
+// From above (the start, C = 0.08, down to it) the unstable count flips at the end and both are reported there
+// (as before). From below (the last label, C = 0.012, up to it) the count stays 9 at the end: the HB product's
+// secant has its zero within location_tol beyond the end, so the HB is reported there, located (before: no
+// special point at all). The HB carries its pair's frequency (omega = 1/2 .. 2, not 0: the HB curve starts from
+// it). Reference: the run that located the crossing.
+TEST(HardBranches, FullModelCrossingAtTheRangeEndIsReportedThere) {
+  BranchSpec spec = test::spec_of(full_fixtures::forced_scene(0.08, 5, 1e-3), ProblemKind::full, P::C, 0.012, 0.08,
+                                  Direction::backward);
+  spec.engine.max_step = 0.05;
+  const SceneBranch first = continue_scene(spec);
+  const SpecialPoint* hb = find_special_point(first.branch.branch, SpecialPointType::HB);
+  ASSERT_NE(hb, nullptr);
+  EXPECT_GT(std::abs(hb->eigenvalue.imag()), 0.4);  // the unresolved HB names its pair
+  const ContinuationRun run = parse_branch_file(branch_file_json(first).dump(1), "t.json");
+  for (const bool from_above : {true, false}) {
+    RestartChanges ch;
+    (from_above ? ch.p_min : ch.p_max) = hb->p;
+    ch.direction = from_above ? Direction::backward : Direction::forward;
+    const std::vector<int>& labels = first.branch.point_labels;
+    const SceneBranch to = restart(run, from_above ? labels.front() : labels.back(), ch);
+    const Branch& b = to.branch.branch;
+    ASSERT_EQ(b.status, ContinuationStatus::completed) << b.message;
+    EXPECT_EQ(b.points.back().p, hb->p);
+    const SpecialPoint* q = find_special_point(b, SpecialPointType::HB);
+    ASSERT_NE(q, nullptr) << from_above;
+    EXPECT_EQ(q->p, hb->p);
+    EXPECT_EQ(q->status, LocationStatus::located);
+    EXPECT_GT(std::abs(q->eigenvalue.imag()), 0.4);
+    if (from_above) {
+      const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP);
+      ASSERT_NE(bp, nullptr);
+      EXPECT_EQ(bp->p, hb->p);
+    }
+  }
+  // ... and the HB curve starts from the restarted branch's HB as from the first run's.
+  const auto k = static_cast<std::size_t>(hb - first.branch.branch.special_points.data());
+  const SceneCurve c =
+      restart_curve(run, first.branch.special_labels.at(k), test::curve_of(CurveKind::HB, P::B, 0.9, 1.1));
+  EXPECT_TRUE(c.started) << c.message;
+}
+
+}  // namespace
+}  // namespace rbcstab
+
+namespace rbcstab {
+namespace {
+
+// The post-instability branch's own BP at alpha = 60 (sigma_3^c = sigma_4^c, C = B/60 exactly): the states with
+// both a_3 and a_4 exist only there, so the branch switched onto is vertical (closed form: C = 1/60 at every
+// point, B = 1). The start (residual at rounding, Jacobian singular) is kept, the run ends completed at
+// max_points, every point at C = 1/60 to 1e-12, and the tangent's p component (rounding noise, measured 1e-16)
+// is not read as folds: no LP (before, an LP every few points).
+TEST(HardBranches, SwitchOntoAVerticalSetHasNoFolds) {
+  BranchSpec spec = test::spec_of(modal_fixtures::scene(0.04, 6), ProblemKind::modal, P::C, 0.01, 0.1, Direction::both);
+  const ContinuationRun onset = parse_branch_file(branch_file_json(continue_scene(spec)).dump(1), "t.json");
+  const SceneBranch post = switch_at_label(onset, resolve_label(onset, "BP:l=3", "switch_at"));
+  ASSERT_TRUE(post.switched && post.switched->switched);
+  const ContinuationRun run = parse_branch_file(branch_file_json(post).dump(1), "t.json");
+  int bp4 = 0;
+  for (const LabelledPoint& lp : labelled_points(run))
+    if (lp.branch == 2 && lp.type == "BP" && bp4 == 0) bp4 = lp.label;
+  ASSERT_GT(bp4, 0);
+  RestartChanges ch;
+  ch.max_points = 40;
+  const SceneBranch v = switch_at_label(run, bp4, ch);
+  ASSERT_TRUE(v.switched.has_value());
+  ASSERT_TRUE(v.switched->switched) << v.switched->message;
+  const Branch& b = v.switched->branch.branch;
+  EXPECT_EQ(b.status, ContinuationStatus::completed) << b.message;
+  EXPECT_GE(b.points.size(), 20u);
+  for (const BranchPoint& q : b.points) EXPECT_NEAR(q.p, 1.0 / 60, 1e-12);
+  EXPECT_TRUE(of_type(b, SpecialPointType::LP).empty()) << of_type(b, SpecialPointType::LP).size();
+}
+
+}  // namespace
+}  // namespace rbcstab
