@@ -140,6 +140,9 @@ py::object value_or_none(const SceneFile& f, const SceneKey& k) {
   const SceneValue v = k.get(f);
   if (k.kind == ValueKind::quantity && std::holds_alternative<double>(v) && std::isnan(std::get<double>(v)))
     return py::none();
+  // A value a bare number would not give back (implausible in SI, given with a unit): its text with the SI unit.
+  if (k.kind == ValueKind::quantity && needs_unit_text(k.key, std::get<double>(v)))
+    return py::str(with_si_unit(k.key, std::get<double>(v)));
   return python_value(v);
 }
 
