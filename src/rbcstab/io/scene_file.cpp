@@ -84,7 +84,8 @@ void add_physical_keys(std::vector<SceneKey>& k) {
          r.key,
          ValueKind::quantity,
          "",
-         help + "; a number in " + si_unit(unit) + " or with a unit (" + accepted_units(unit) + ")",
+         help + "; a number in " + si_unit(unit) + " (bare: only in [" + format_value(plausible_range(r.key).min) +
+             ", " + format_value(plausible_range(r.key).max) + "]) or with a unit (" + accepted_units(unit) + ")",
          {},
          [field](const SceneFile& f) { return SceneValue{f.scene.physical ? (*f.scene.physical).*field : kNotGiven}; },
          [field, unit, key, parameter](SceneFile& f, const SceneValue& v) {

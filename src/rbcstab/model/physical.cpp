@@ -223,7 +223,7 @@ void require_plausible_bare(std::string_view key, double value) {
   throw InvalidArgument(k, k + " = " + v + " (a bare number, read as " + v + " " + unit + ") is not a plausible " +
                                k + ": a bare number must be in [" + format_value(f.min) + ", " +
                                format_value(f.max) + "] " + unit +
-                               (suggestion.empty() ? "" : "; did you mean " + v + " " + suggestion + "?") +
+                               (suggestion.empty() ? "." : "; did you mean " + v + " " + suggestion + "?") +
                                " Give the unit to state any other value (" + accepted_units(f.unit) + ")");
 }
 

@@ -188,13 +188,13 @@ std::string shear_rate_text(const std::vector<ShearRateThreshold>& thresholds) {
   for (const ShearRateThreshold& t : thresholds) {
     out << "             " << (t.orientation == "out_of_plane" ? "out of plane: " : "in plane:     ");
     // The window's upper end, or why none was found.
-    const std::string end = t.end_found ? " to " + format_value(t.end_shear_rate) + " 1/s (stable again above)"
-                                        : "; no upper end: " + t.end_reason;
+    const std::string end = t.end_found ? "; upper end " + format_value(t.end_shear_rate) + " 1/s (stable above)"
+                                        : "; upper end: none found, " + t.end_reason;
     if (t.found)
-      out << "unstable from " << t.shear_rate << " 1/s" << end << " (B = " << t.B << ", C = " << t.C
-          << " at the lower end), mode l = " << t.l << " -> " << t.shape << "\n";
+      out << "unstable from " << t.shear_rate << " 1/s (B = " << t.B << ", C = " << t.C << "), mode l = " << t.l
+          << " -> " << t.shape << end << "\n";
     else
-      out << t.reason << (t.l >= 3 ? end + " (mode l = " + std::to_string(t.l) + " -> " + t.shape + ")" : "")
+      out << t.reason << (t.l >= 3 ? " (mode l = " + std::to_string(t.l) + " -> " + t.shape + ")" + end : "")
           << "\n";
   }
   return out.str();
@@ -229,7 +229,7 @@ std::string summary_text(const SceneFile& file, const SimulationResult& r, const
   if (s.physical) {
     out << "Physical     shear rate " << s.physical->shear_rate << " 1/s: time unit 1/gamma = " << u.cell->time_unit
         << " s, tension unit kappa/R^2 = " << u.cell->tension_unit << " N/m\n";
-    out << "Threshold    first unstable shear rate along B/C = alpha fixed (asymptotic verdict):\n"
+    out << "Threshold    unstable window in shear rate along B/C = alpha fixed (asymptotic verdict):\n"
         << shear_rate_text(pr.shear_rate_thresholds);
   }
   out << "Truncation   " << file.L_reason << "\n";
