@@ -95,18 +95,22 @@ TEST(Physical, ImplausibleBareNumbersAreRefusedWithTheRangeAndASuggestion) {
             std::string::npos);
   EXPECT_NE(message_of([] { require_plausible_bare("bending_modulus", 50); }).find("did you mean 50 kBT"),
             std::string::npos);
-  EXPECT_NE(message_of([] { require_plausible_bare("volume", 94); }).find("did you mean 94 um^3?"),
-            std::string::npos);
+  EXPECT_NE(message_of([] { require_plausible_bare("volume", 94); }).find("did you mean 94 um^3?"), std::string::npos);
   // No unit of the temperature's brings 37 into range: refused without a suggestion.
   const std::string t = message_of([] { require_plausible_bare("temperature", 37); });
   EXPECT_NE(t.find("temperature = 37"), std::string::npos) << t;
   EXPECT_EQ(t.find("did you mean"), std::string::npos) << t;
   // Plausible SI values pass: the docs' typical cell, field by field.
   const PhysicalCell c = typical_cell();
-  for (auto [key, v] : {std::pair{"temperature", c.temperature}, {"shear_rate", c.shear_rate},
-                        {"viscosity", c.viscosity}, {"inner_viscosity", c.inner_viscosity}, {"area", c.area},
-                        {"volume", c.volume}, {"stress_free_volume", c.stress_free_volume},
-                        {"bending_modulus", c.bending_modulus}, {"shear_modulus", c.shear_modulus}}) {
+  for (auto [key, v] : {std::pair{"temperature", c.temperature},
+                        {"shear_rate", c.shear_rate},
+                        {"viscosity", c.viscosity},
+                        {"inner_viscosity", c.inner_viscosity},
+                        {"area", c.area},
+                        {"volume", c.volume},
+                        {"stress_free_volume", c.stress_free_volume},
+                        {"bending_modulus", c.bending_modulus},
+                        {"shear_modulus", c.shear_modulus}}) {
     EXPECT_TRUE(plausible_bare(key, v)) << key;
     EXPECT_EQ(message_of([&] { require_plausible_bare(key, v); }), "") << key;
   }

@@ -4,6 +4,8 @@
 // the out-of-plane shape's name follows its parity).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <iomanip>
 #include <regex>
@@ -53,10 +55,12 @@ std::set<std::string> summary_terms(const std::string& text) {
     for (std::sregex_iterator it(line.begin(), line.end(), symbol), end; it != end; ++it) {
       std::string t = (*it)[1];
       while (!t.empty() && std::string("([|").find(t.front()) != std::string::npos) t.erase(0, 1);
-      while (!t.empty() && std::string(",:|)").find(t.back()) != std::string::npos) t.pop_back();
+      while (!t.empty() && std::string(",:|").find(t.back()) != std::string::npos) t.pop_back();
       for (const char* arg : {"(T)", "(0)", "(t)"})
         if (t.size() > 3 && t.ends_with(arg)) t.resize(t.size() - 3);
-      if (!t.empty() && !std::isdigit(static_cast<unsigned char>(t.front()))) terms.insert(t);
+      if (t.ends_with(")") && t.find('(') == std::string::npos) t.pop_back();
+      if (std::any_of(t.begin(), t.end(), [](char c) { return std::isalpha(static_cast<unsigned char>(c)); }))
+        terms.insert(t);  // a symbol, not a number
     }
   }
   return terms;
@@ -134,9 +138,9 @@ TEST(SummaryTerms, EveryTermTheSummaryPrintsIsInTheGlossary) {
     terms.merge(summary_terms(text));
   }
   // The names the summary can print beyond these runs: every regime, model level, status and shape.
-  for (const auto& e : EnumTable<Regime>::entries) terms.insert(e.name);
-  for (const auto& e : EnumTable<ModelLevel>::entries) terms.insert(e.name);
-  for (const auto& e : EnumTable<IntegrationStatus>::entries) terms.insert(e.name);
+  for (const auto& e : EnumTable<Regime>::entries) terms.insert(std::string(e.name));
+  for (const auto& e : EnumTable<ModelLevel>::entries) terms.insert(std::string(e.name));
+  for (const auto& e : EnumTable<IntegrationStatus>::entries) terms.insert(std::string(e.name));
   for (int l = 3; l <= 12; ++l)
     for (bool op : {true, false}) {
       const std::string name = shape_of_mode(l, op);
@@ -144,7 +148,7 @@ TEST(SummaryTerms, EveryTermTheSummaryPrintsIsInTheGlossary) {
     }
   EXPECT_GT(terms.size(), 50u);  // the extraction found the summary's vocabulary
   for (const char* t : {"Parameters", "Regime", "sigma_*", "<sigma_R>", "sigma_l^c", "Psi", "tail mean",
-                        "finite horizon", "rolling", "stomatocyte"})
+                        "finite horizon", "rolling", "stomatocyte", "1/gamma", "kappa/R^2", "Excess-area drift"})
     EXPECT_TRUE(terms.contains(t)) << t;
   const std::set<std::string> missing = undefined_terms(terms, g);
   std::string list;

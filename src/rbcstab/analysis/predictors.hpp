@@ -90,12 +90,10 @@ FiniteHorizon finite_horizon_growth(const Scene& scene, double T, const Predicto
 enum class Regime { rolling, tank_treading, swinging, oscillating_out_of_plane, tumbling, undetermined };
 template <>
 struct EnumTable<Regime> {
-  static constexpr EnumName<Regime> entries[] = {{Regime::rolling, "rolling"},
-                                                 {Regime::tank_treading, "tank-treading"},
-                                                 {Regime::swinging, "swinging"},
-                                                 {Regime::oscillating_out_of_plane, "oscillating-out-of-plane"},
-                                                 {Regime::tumbling, "tumbling"},
-                                                 {Regime::undetermined, "undetermined"}};
+  static constexpr EnumName<Regime> entries[] = {
+      {Regime::rolling, "rolling"},   {Regime::tank_treading, "tank-treading"},
+      {Regime::swinging, "swinging"}, {Regime::oscillating_out_of_plane, "oscillating-out-of-plane"},
+      {Regime::tumbling, "tumbling"}, {Regime::undetermined, "undetermined"}};
 };
 struct RegimeResult {
   Regime regime = Regime::undetermined;

@@ -53,11 +53,9 @@ void add_physical_keys(std::vector<SceneKey>& k) {
     const char* help;
   };
   const Row rows[] = {
-      {"temperature", "--temperature", &PhysicalCell::temperature,
-       "temperature [K] at which energies in kBT are read"},
+      {"temperature", "--temperature", &PhysicalCell::temperature, "temperature [K] at which energies in kBT are read"},
       {parameter_row(SceneParameter::shear_rate).name, "--shear-rate", &PhysicalCell::shear_rate, nullptr},
-      {"viscosity", "--viscosity", &PhysicalCell::viscosity,
-       "external (plasma) viscosity eta_ex [Pa s]"},
+      {"viscosity", "--viscosity", &PhysicalCell::viscosity, "external (plasma) viscosity eta_ex [Pa s]"},
       {"inner_viscosity", "--inner-viscosity", &PhysicalCell::inner_viscosity,
        "internal (cytoplasm) viscosity eta_in [Pa s]: lambda = eta_in/eta_ex (else --lambda)"},
       {"radius", "--radius", &PhysicalCell::radius, "radius R [m] (or --area with --volume)"},
@@ -66,10 +64,8 @@ void add_physical_keys(std::vector<SceneKey>& k) {
       {"volume", "--volume", &PhysicalCell::volume, "cell volume V [m^3], with --area"},
       {"stress_free_volume", "--stress-free-volume", &PhysicalCell::stress_free_volume,
        "stress-free volume V0 [m^3], with --area: Delta0 = A/R0^2 - 4 pi, R0 = (3 V0/4 pi)^(1/3)"},
-      {"bending_modulus", "--bending-modulus", &PhysicalCell::bending_modulus,
-       "bending modulus kappa [J]"},
-      {"shear_modulus", "--shear-modulus", &PhysicalCell::shear_modulus,
-       "(2D) shear modulus mu [N/m]"},
+      {"bending_modulus", "--bending-modulus", &PhysicalCell::bending_modulus, "bending modulus kappa [J]"},
+      {"shear_modulus", "--shear-modulus", &PhysicalCell::shear_modulus, "(2D) shear modulus mu [N/m]"},
   };
   for (const Row& r : rows) {
     double PhysicalCell::*const field = r.field;

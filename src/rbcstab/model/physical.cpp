@@ -106,10 +106,16 @@ const Field& field_of(std::string_view key) {
   throw InvalidArgument(std::string(key), std::string(key) + " is not a physical key");
 }
 
+// The shortest of 15..17 significant digits that reads back as v ("2.8", not "2.7999999999999998").
 std::string full_precision(double v) {
-  std::ostringstream s;
-  s << std::setprecision(17) << v;
-  return s.str();
+  std::string out;
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::ostringstream s;
+    s << std::setprecision(digits) << v;
+    out = s.str();
+    if (std::strtod(out.c_str(), nullptr) == v) break;
+  }
+  return out;
 }
 
 // R from the radius, or from the volume when the area and volume give the size.
@@ -220,9 +226,9 @@ void require_plausible_bare(std::string_view key, double value) {
       suggestion = spelling.ends_with("Pas") ? spelling.substr(0, spelling.size() - 1) + " s" : spelling;
     }
   }
-  throw InvalidArgument(k, k + " = " + v + " (a bare number, read as " + v + " " + unit + ") is not a plausible " +
-                               k + ": a bare number must be in [" + format_value(f.min) + ", " +
-                               format_value(f.max) + "] " + unit +
+  throw InvalidArgument(k, k + " = " + v + " (a bare number, read as " + v + " " + unit + ") is not a plausible " + k +
+                               ": a bare number must be in [" + format_value(f.min) + ", " + format_value(f.max) +
+                               "] " + unit +
                                (suggestion.empty() ? "." : "; did you mean " + v + " " + suggestion + "?") +
                                " Give the unit to state any other value (" + accepted_units(f.unit) + ")");
 }

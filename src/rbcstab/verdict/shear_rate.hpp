@@ -42,13 +42,13 @@ struct ShearRateThreshold {
   // samples after the crossing, then bisection), bracketed by end_bracket (unstable, stable; hi/lo - 1 <= rtol).
   // A stable gap narrower than one sample bracket can be missed, as a window can.
   bool end_found = false;
-  double end_shear_rate = 0;               // 1/s
-  double end_bracket[2] = {0, 0};          // 1/s
-  std::string end_reason;                  // why not found (still unstable at max_rate, verdict failed)
-  double alpha = 0;       // B/C, fixed along the path
-  int l = 0;              // the surviving mode just above the threshold (asymptotic_verdict)
-  std::string shape;      // the shape the paper associates with it (Sec. V, Fig. 6)
-  int evaluations = 0;    // asymptotic verdicts evaluated
+  double end_shear_rate = 0;       // 1/s
+  double end_bracket[2] = {0, 0};  // 1/s
+  std::string end_reason;          // why not found (still unstable at max_rate, verdict failed)
+  double alpha = 0;                // B/C, fixed along the path
+  int l = 0;                       // the surviving mode just above the threshold (asymptotic_verdict)
+  std::string shape;               // the shape the paper associates with it (Sec. V, Fig. 6)
+  int evaluations = 0;             // asymptotic verdicts evaluated
 };
 
 // The scene's shear rate moved along [min_rate, max_rate] (at_shear_rate: B and C together at fixed alpha), with

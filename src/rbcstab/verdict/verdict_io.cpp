@@ -79,8 +79,8 @@ void analysis_text(std::ostream& out, const SceneFile& file, const SimulationRes
       << pr.asymptotic_source << "): unstable " << mode_list(pr.asymptotic.unstable)
       << ", l_Delta = " << pr.asymptotic.l_Delta << "\n";
   out << "             (b) finite horizon <sigma_R>_T = " << pr.horizon.mean_sigma_R << " over [0, "
-      << u.time(pr.horizon.T) << "]: unstable " << mode_list(pr.finite_horizon.unstable) << ", l_Delta = " << pr.finite_horizon.l_Delta
-      << " (linear growth exp(2 G_l))\n";
+      << u.time(pr.horizon.T) << "]: unstable " << mode_list(pr.finite_horizon.unstable)
+      << ", l_Delta = " << pr.finite_horizon.l_Delta << " (linear growth exp(2 G_l))\n";
   out << "             (c) simulation     unstable " << mode_list(pr.simulation.unstable)
       << ", l_Delta = " << pr.simulation.l_Delta << "\n";
   if (s.L >= 3) {
@@ -194,8 +194,7 @@ std::string shear_rate_text(const std::vector<ShearRateThreshold>& thresholds) {
       out << "unstable from " << t.shear_rate << " 1/s (B = " << t.B << ", C = " << t.C << "), mode l = " << t.l
           << " -> " << t.shape << end << "\n";
     else
-      out << t.reason << (t.l >= 3 ? " (mode l = " + std::to_string(t.l) + " -> " + t.shape + ")" + end : "")
-          << "\n";
+      out << t.reason << (t.l >= 3 ? " (mode l = " + std::to_string(t.l) + " -> " + t.shape + ")" + end : "") << "\n";
   }
   return out.str();
 }
