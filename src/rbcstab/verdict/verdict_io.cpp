@@ -39,13 +39,13 @@ struct Units {
   }
   std::string time(double t) const { return with_unit(t, cell ? cell->time_unit : kNotGiven, " s"); }
   std::string seconds(double t) const {  // " (t s)", or "" when not physical
-    std::ostringstream o;
+    TextStream o;
     if (cell) o << std::setprecision(6) << " (" << t * cell->time_unit << " s)";
     return o.str();
   }
   std::string tension(double sigma) const { return with_unit(sigma, cell ? cell->tension_unit : kNotGiven, " N/m"); }
   static std::string with_unit(double x, double unit, const char* name) {
-    std::ostringstream o;
+    TextStream o;
     o << std::setprecision(6) << x;
     if (!std::isnan(unit)) o << " (" << x * unit << name << ")";
     return o.str();
@@ -53,7 +53,7 @@ struct Units {
 };
 
 std::string degrees(double radians) {
-  std::ostringstream o;
+  TextStream o;
   o << std::setprecision(6) << radians << " rad (" << radians * 180 / kPi << " deg)";
   return o.str();
 }
