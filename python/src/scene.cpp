@@ -328,8 +328,16 @@ SceneFile from_dict(const py::handle& d) {
 // set after it was read (set_by_keyword). Scene.from_dict(d) rebuilds it.
 py::dict to_dict(const SceneFile& f) {
   py::dict out;
-  for (const SceneKey& k : scene_keys())
-    if (!derived_from_physical(f, k)) out[py::str(k.key)] = value_or_none(f, k);
+  for (const SceneKey& k : scene_keys()) {
+    if (derived_from_physical(f, k)) continue;
+    // A quantity a bare number would not give back (implausible in SI, given with a unit): its text with the SI
+    // unit, so from_dict reads it as itself.
+    const SceneValue v = k.get(f);
+    if (k.kind == ValueKind::quantity && needs_unit_text(k.key, std::get<double>(v)))
+      out[py::str(k.key)] = with_si_unit(k.key, std::get<double>(v));
+    else
+      out[py::str(k.key)] = value_or_none(f, k);
+  }
   for (const char* p : kPanels) {
     const auto& panel = f.*panel_field(p);
     out[py::str(p)] = panel ? py::object(table_python(*panel)) : py::object(py::none());

@@ -296,3 +296,19 @@ def test_messages_name_the_scene_by_its_file_or_the_scene():
     assert rbcstab.Scene(name="mine").label == "scene 'mine'"
     assert rbcstab.Scene(source="x.toml").label == "the scene of x.toml"
     assert "fig3_op" not in repr(rbcstab.Model(rbcstab.Scene(), "modal"))
+
+
+def test_implausible_bare_physical_numbers_are_refused_and_units_are_kept():
+    # A bare number is SI (the path the CLI flags and the [physical] table share): 2.8 is no radius in metres.
+    cell = dict(shear_rate=100, viscosity=1e-3, bending_modulus=2e-19, shear_modulus=2.5e-6)
+    for radius in (2.8, "2.8"):
+        with pytest.raises(ValueError, match=r"radius = 2\.8 \(a bare number, read as 2\.8 m\).*did you mean 2\.8 um\?"):
+            rbcstab.Scene(radius=radius, **cell)
+    assert rbcstab.Scene(radius=2.8e-6, **cell).radius == 2.8e-6
+    assert rbcstab.Scene(radius="2.8 um", **cell).radius == 2.8e-6
+    # With its unit it is taken as given; to_dict and pickle keep the unit, so the value reads back as itself.
+    big = rbcstab.Scene(radius="2.8 m", **cell)
+    assert big.radius == 2.8
+    assert big.to_dict()["radius"] == "2.8 m"
+    assert rbcstab.Scene.from_dict(big.to_dict()) == big
+    assert pickle.loads(pickle.dumps(big)) == big

@@ -10,6 +10,7 @@
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/model/coefficients.hpp"
@@ -143,6 +144,19 @@ TEST(Regime, Figure2) {
     const RegimeResult op = reduced_regime(s);
     EXPECT_EQ(op.regime, Regime::rolling) << Delta << ": " << op.reason;
   }
+}
+
+// An out-of-plane start whose Psi and r oscillate (lambda = 10, C = 1: Psi range 0.08, measured) is not called
+// swinging, the paper's in-plane motion (Sec. IV): the same oscillation's name says it started out of plane.
+TEST(Regime, OutOfPlaneOscillationIsNotSwinging) {
+  Scene s = fig3(10, 1e-3);
+  s.parameters.C = 1;
+  const RegimeResult op = reduced_regime(s);
+  EXPECT_EQ(op.regime, Regime::oscillating_out_of_plane) << op.reason;
+  EXPECT_GT(op.Psi_range, 1e-2) << op.reason;  // a real oscillation, far above the steady threshold 1e-4
+  EXPECT_LT(op.Psi_range, kTwoPi) << op.reason;
+  EXPECT_NE(op.reason.find("out-of-plane start"), std::string::npos) << op.reason;
+  EXPECT_NE(to_string(op.regime), "swinging");
 }
 
 TEST(PredictorOptions, DefaultsAreValidAndBadFieldsAreNamed) {

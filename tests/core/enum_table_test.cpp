@@ -94,7 +94,8 @@ TEST(EnumTable, EveryLibraryTableKeepsItsNames) {
   expect_table<SigmaSource>({"equilibrium", "periodic_orbit", "time_average"});
   expect_table<Classifier>({"auto", "final", "tail"});
   expect_table<Verdict>({"stable", "unstable", "failed"});
-  expect_table<Regime>({"rolling", "tank-treading", "swinging", "tumbling", "undetermined"});
+  expect_table<Regime>(
+      {"rolling", "tank-treading", "swinging", "oscillating-out-of-plane", "tumbling", "undetermined"});
   expect_table<DomainStatus>({"ok", "limit", "outside_domain"});
 }
 

@@ -217,6 +217,30 @@ TEST(SceneFile, OutOfRangeValuesNameKeyValueAndRange) {
   expect_refused("[integrator]\nstepper = 'euler'", "integrator.stepper", {"euler", "rk8pd"});
 }
 
+// The [physical] table (the path the CLI flags and Python keywords share): a bare number, TOML number or text
+// without a unit, only within the key's plausible SI range; with a unit as given, and written back with it.
+TEST(SceneFile, ImplausibleBarePhysicalNumbersAreRefused) {
+  const std::string cell = "shear_rate = 1000\nviscosity = 1e-3\nbending_modulus = 2e-19\nshear_modulus = 6e-6\n";
+  for (const std::string radius : {"2.8", "'2.8'"}) {
+    try {
+      (void)parse_scene("[physical]\n" + cell + "radius = " + radius + "\n");
+      ADD_FAILURE() << radius << " accepted as 2.8 m";
+    } catch (const InvalidArgument& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find("radius = 2.8 (a bare number, read as 2.8 m)"), std::string::npos) << m;
+      EXPECT_NE(m.find("did you mean 2.8 um?"), std::string::npos) << m;
+    }
+  }
+  EXPECT_EQ(parse_scene("[physical]\n" + cell + "radius = 2.8e-6\n").scene.physical->radius, 2.8e-6);
+  EXPECT_EQ(parse_scene("[physical]\n" + cell + "radius = '2.8um'\n").scene.physical->radius, 2.8e-6);
+  // Stated in metres it is taken as given, and to_toml writes it with its unit so it reads back.
+  const SceneFile big = parse_scene("[physical]\n" + cell + "radius = '2.8 m'\n");
+  EXPECT_EQ(big.scene.physical->radius, 2.8);
+  const std::string text = to_toml(big);
+  EXPECT_NE(text.find("2.8 m"), std::string::npos) << text;
+  EXPECT_EQ(parse_scene(text).scene.physical->radius, 2.8);
+}
+
 TEST(SceneFile, SyntaxErrorNamesSourceAndLine) {
   try {
     parse_scene("[parameters]\nB = = 2\n", "broken.toml");

@@ -76,6 +76,64 @@ TEST(Physical, MalformedOrOutOfRangeQuantitiesAreRefusedNamingTheKey) {
   EXPECT_NE(message_of([] { parse_quantity("nan", PhysicalUnit::metre, "radius"); }), "");
 }
 
+// A bare number is read in SI, so it is accepted only within its key's plausible range: "--radius 2.8" (2.8 m) is
+// refused naming the key, the value, the range and the unit that was likely meant; a number with a unit is not
+// checked.
+TEST(Physical, ImplausibleBareNumbersAreRefusedWithTheRangeAndASuggestion) {
+  const std::string m = message_of([] { require_plausible_bare("radius", 2.8); });
+  EXPECT_EQ(m.rfind("radius: radius = 2.8 (a bare number, read as 2.8 m) is not a plausible radius: a bare number "
+                    "must be in [",
+                    0),
+            0u)
+      << m;
+  EXPECT_NE(m.find("] m; did you mean 2.8 um?"), std::string::npos) << m;
+  EXPECT_NE(m.find("(m, cm, mm, um, nm)"), std::string::npos) << m;
+  // The suggestion is the unit that lands nearest the red cell's typical value.
+  EXPECT_NE(message_of([] { require_plausible_bare("shear_modulus", 6); }).find("did you mean 6 uN/m?"),
+            std::string::npos);
+  EXPECT_NE(message_of([] { require_plausible_bare("viscosity", 1.2); }).find("did you mean 1.2 mPa s?"),
+            std::string::npos);
+  EXPECT_NE(message_of([] { require_plausible_bare("bending_modulus", 50); }).find("did you mean 50 kBT"),
+            std::string::npos);
+  EXPECT_NE(message_of([] { require_plausible_bare("volume", 94); }).find("did you mean 94 um^3?"), std::string::npos);
+  // No unit of the temperature's brings 37 into range: refused without a suggestion.
+  const std::string t = message_of([] { require_plausible_bare("temperature", 37); });
+  EXPECT_NE(t.find("temperature = 37"), std::string::npos) << t;
+  EXPECT_EQ(t.find("did you mean"), std::string::npos) << t;
+  // Plausible SI values pass: the docs' typical cell, field by field.
+  const PhysicalCell c = typical_cell();
+  for (auto [key, v] : {std::pair{"temperature", c.temperature},
+                        {"shear_rate", c.shear_rate},
+                        {"viscosity", c.viscosity},
+                        {"inner_viscosity", c.inner_viscosity},
+                        {"area", c.area},
+                        {"volume", c.volume},
+                        {"stress_free_volume", c.stress_free_volume},
+                        {"bending_modulus", c.bending_modulus},
+                        {"shear_modulus", c.shear_modulus}}) {
+    EXPECT_TRUE(plausible_bare(key, v)) << key;
+    EXPECT_EQ(message_of([&] { require_plausible_bare(key, v); }), "") << key;
+  }
+  EXPECT_EQ(message_of([] { require_plausible_bare("radius", 2.8e-6); }), "");
+  // Not > 0: left to the positivity checks, which say "finite and > 0".
+  EXPECT_EQ(message_of([] { require_plausible_bare("radius", -3); }), "");
+  EXPECT_THROW(plausible_range("furlongs"), InvalidArgument);
+  EXPECT_TRUE(has_unit("2.8um"));
+  EXPECT_TRUE(has_unit("2.8 m"));
+  EXPECT_FALSE(has_unit("2.8e-6"));
+  EXPECT_FALSE(has_unit(" 2.8 "));
+}
+
+// Writers put an implausible value with its SI unit, so it reads back as itself and is not refused as bare.
+TEST(Physical, ImplausibleValuesAreWrittenWithTheirUnit) {
+  EXPECT_FALSE(needs_unit_text("radius", 2.8e-6));
+  EXPECT_FALSE(needs_unit_text("radius", kNotGiven));
+  EXPECT_TRUE(needs_unit_text("radius", 2.8));
+  EXPECT_EQ(with_si_unit("radius", 2.8), "2.8 m");
+  const double x = 0.1 + 0.2;  // needs 17 digits
+  EXPECT_EQ(parse_quantity(with_si_unit("viscosity", x), PhysicalUnit::pascal_second, "viscosity"), x);
+}
+
 TEST(Physical, TypicalCellGivesTheHandComputedNumbers) {
   // Hand-computed (Sec. II): R = (3 x 94e-18/(4 pi))^(1/3) = 2.8206319097606938e-6 m; Delta = A/R^2 - 4 pi;
   // Delta0 likewise with V0 = 100 um^3; B = eta gamma R^3/kappa; C = eta gamma R/mu; alpha = mu R^2/kappa.

@@ -66,6 +66,11 @@ TEST(ShearRate, ThresholdIsWhereTheTracedBoundaryMeetsTheAlphaLine) {
   hi.parameters = at_shear_rate(*s.physical, s.parameters, t.hi);
   EXPECT_FALSE(asymptotic_verdict(lo).unstable);
   EXPECT_TRUE(asymptotic_verdict(hi).unstable);
+  // This window stays open to the search's end (measured), and says so.
+  EXPECT_FALSE(t.end_found);
+  EXPECT_NE(t.end_reason.find("unstable up to max_rate"), std::string::npos) << t.end_reason;
+  hi.parameters = at_shear_rate(*s.physical, s.parameters, ShearRateSearchOptions{}.max_rate);
+  EXPECT_TRUE(asymptotic_verdict(hi).unstable);
 
   Scene base = s;
   base.beta = kInPlane;
@@ -89,6 +94,32 @@ TEST(ShearRate, ThresholdIsWhereTheTracedBoundaryMeetsTheAlphaLine) {
   const double b = s.parameters.B / s.physical->shear_rate;  // B = b gamma
   const double gamma_traced = std::exp(*x_cross) / b;
   EXPECT_NEAR(gamma_traced / t.shear_rate, 1, 1e-4) << "traced " << gamma_traced << ", searched " << t.shear_rate;
+}
+
+// The unstable window's upper end: R = 3 um, kappa = 2e-19 J, mu = 2.5 uN/m, eta = 1 mPa s, lambda = 1, Delta = 0.5,
+// Delta0 = 0.01 out of plane is unstable from the search's lower end (1/s) up to ~68/s (measured). The end's
+// bracket is checked independently of the search: the verdict is unstable at its lower and stable at its upper end.
+TEST(ShearRate, WindowEndIsWhereTheVerdictTurnsStableAgain) {
+  Scene s = physical_scene();
+  s.physical->shear_rate = 100;
+  s.parameters.lambda = 1;
+  s.parameters.Delta = 0.5;
+  s.parameters.Delta0 = 0.01;
+  s.parameters = physical_parameters(*s.physical, s.parameters);
+  const ShearRateThreshold t = shear_rate_threshold(s, 1e-3);
+  EXPECT_FALSE(t.found);
+  EXPECT_NE(t.reason.find("unstable already at min_rate"), std::string::npos) << t.reason;
+  ASSERT_TRUE(t.end_found) << t.end_reason;
+  EXPECT_EQ(t.end_shear_rate, t.end_bracket[1]);
+  EXPECT_LE(t.end_bracket[1] / t.end_bracket[0] - 1, 1e-6);
+  EXPECT_GT(t.end_shear_rate, 10);
+  EXPECT_LT(t.end_shear_rate, 1000);
+  Scene below = s, above = s;
+  below.beta = above.beta = 1e-3;
+  below.parameters = at_shear_rate(*s.physical, s.parameters, t.end_bracket[0]);
+  above.parameters = at_shear_rate(*s.physical, s.parameters, t.end_bracket[1]);
+  EXPECT_TRUE(asymptotic_verdict(below).unstable);
+  EXPECT_FALSE(asymptotic_verdict(above).unstable);
 }
 
 // A diagram with a shear_rate axis: its grid is geometric, and every point's result is that of the plain scene

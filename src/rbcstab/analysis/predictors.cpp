@@ -124,9 +124,10 @@ RegimeResult regime_from(const ReducedRun& run, bool out_of_plane) {
     g.regime = Regime::tumbling;
     g.reason = "Psi rotates by " + format_value(run.Psi.back() - run.Psi.front()) + " over the window";
   } else if (g.Psi_range > kSteady || g.r_range > kSteady) {
-    g.regime = Regime::swinging;
+    g.regime = out_of_plane ? Regime::oscillating_out_of_plane : Regime::swinging;
     g.reason = "Psi oscillates within a range of " + format_value(g.Psi_range) + " (r range " +
-               format_value(g.r_range) + ") without net rotation";
+               format_value(g.r_range) + ") without net rotation" +
+               (out_of_plane ? ", from an out-of-plane start" : ", from an in-plane start");
   } else {
     g.regime = out_of_plane ? Regime::rolling : Regime::tank_treading;
     g.reason = out_of_plane ? "out-of-plane steady state: fixed shape and angle, membrane rolling (Sec. III)"

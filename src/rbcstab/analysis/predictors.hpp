@@ -5,7 +5,8 @@
 //  - the reduced transient over [0, T] from the scene's own initial state, integrated once and shared by the
 //    finite-horizon predictor G_l(T) = int_0^T Upsilon_l(sigma_R(t)) dt (the linear prediction
 //    Delta_l(T)/Delta_l(0) = exp(2 G_l(T))) and the truncation rule (analysis/truncation.hpp);
-//  - the regime of the reduced (ellipsoidal) dynamics: rolling, tank-treading, swinging or tumbling.
+//  - the regime of the reduced (ellipsoidal) dynamics: rolling, tank-treading, swinging, oscillating out of plane or
+//    tumbling.
 #include <array>
 #include <string>
 #include <vector>
@@ -86,14 +87,13 @@ FiniteHorizon finite_horizon_growth(const ValidScene& scene, const ReducedTransi
 // The same on its own run with one checkpoint (T only).
 FiniteHorizon finite_horizon_growth(const Scene& scene, double T, const PredictorOptions& options = {});
 
-enum class Regime { rolling, tank_treading, swinging, tumbling, undetermined };
+enum class Regime { rolling, tank_treading, swinging, oscillating_out_of_plane, tumbling, undetermined };
 template <>
 struct EnumTable<Regime> {
-  static constexpr EnumName<Regime> entries[] = {{Regime::rolling, "rolling"},
-                                                 {Regime::tank_treading, "tank-treading"},
-                                                 {Regime::swinging, "swinging"},
-                                                 {Regime::tumbling, "tumbling"},
-                                                 {Regime::undetermined, "undetermined"}};
+  static constexpr EnumName<Regime> entries[] = {
+      {Regime::rolling, "rolling"},   {Regime::tank_treading, "tank-treading"},
+      {Regime::swinging, "swinging"}, {Regime::oscillating_out_of_plane, "oscillating-out-of-plane"},
+      {Regime::tumbling, "tumbling"}, {Regime::undetermined, "undetermined"}};
 };
 struct RegimeResult {
   Regime regime = Regime::undetermined;
@@ -101,7 +101,9 @@ struct RegimeResult {
   double Psi_range = 0, r_range = 0;  // over the regime window (transient .. transient + window)
 };
 // rolling: out-of-plane steady state (the paper's deformed rolling); tank_treading: in-plane steady state;
-// swinging: Psi oscillates with no net rotation; tumbling: Psi decreases without bound.
+// swinging: from an in-plane start Psi oscillates with no net rotation (the paper's swinging, Sec. IV);
+// oscillating_out_of_plane: the same oscillation from an out-of-plane start, where swinging (an in-plane
+// motion) is the wrong name; tumbling: Psi decreases without bound.
 RegimeResult reduced_regime(const Scene& scene, const PredictorOptions& options = {});
 RegimeResult reduced_regime(const ValidScene& scene, const PredictorOptions& options = {});
 

@@ -131,6 +131,7 @@ void put_physical(nlohmann::json& j, const Scene& s) {
   const CellNumbers n = cell_numbers(*s.physical);
   o["R_m"] = n.R;
   o["time_unit_s"] = n.time_unit;
+  o["tension_unit_N_per_m"] = n.tension_unit;
   o["T_s"] = s.T * n.time_unit;
   o["dt_s"] = s.dt * n.time_unit;
   j["physical"] = o;

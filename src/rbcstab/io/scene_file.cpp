@@ -49,33 +49,27 @@ void add_physical_keys(std::vector<SceneKey>& k) {
   struct Row {
     const char* key;
     const char* flag;
-    PhysicalUnit unit;
     double PhysicalCell::*field;
     const char* help;
   };
   const Row rows[] = {
-      {"temperature", "--temperature", PhysicalUnit::kelvin, &PhysicalCell::temperature,
-       "temperature [K] at which energies in kBT are read"},
-      {parameter_row(SceneParameter::shear_rate).name, "--shear-rate", PhysicalUnit::per_second,
-       &PhysicalCell::shear_rate, nullptr},
-      {"viscosity", "--viscosity", PhysicalUnit::pascal_second, &PhysicalCell::viscosity,
-       "external (plasma) viscosity eta_ex [Pa s]"},
-      {"inner_viscosity", "--inner-viscosity", PhysicalUnit::pascal_second, &PhysicalCell::inner_viscosity,
+      {"temperature", "--temperature", &PhysicalCell::temperature, "temperature [K] at which energies in kBT are read"},
+      {parameter_row(SceneParameter::shear_rate).name, "--shear-rate", &PhysicalCell::shear_rate, nullptr},
+      {"viscosity", "--viscosity", &PhysicalCell::viscosity, "external (plasma) viscosity eta_ex [Pa s]"},
+      {"inner_viscosity", "--inner-viscosity", &PhysicalCell::inner_viscosity,
        "internal (cytoplasm) viscosity eta_in [Pa s]: lambda = eta_in/eta_ex (else --lambda)"},
-      {"radius", "--radius", PhysicalUnit::metre, &PhysicalCell::radius, "radius R [m] (or --area with --volume)"},
-      {"area", "--area", PhysicalUnit::square_metre, &PhysicalCell::area,
+      {"radius", "--radius", &PhysicalCell::radius, "radius R [m] (or --area with --volume)"},
+      {"area", "--area", &PhysicalCell::area,
        "membrane area A [m^2], with --volume: R = (3V/4 pi)^(1/3), Delta = A/R^2 - 4 pi"},
-      {"volume", "--volume", PhysicalUnit::cubic_metre, &PhysicalCell::volume, "cell volume V [m^3], with --area"},
-      {"stress_free_volume", "--stress-free-volume", PhysicalUnit::cubic_metre, &PhysicalCell::stress_free_volume,
+      {"volume", "--volume", &PhysicalCell::volume, "cell volume V [m^3], with --area"},
+      {"stress_free_volume", "--stress-free-volume", &PhysicalCell::stress_free_volume,
        "stress-free volume V0 [m^3], with --area: Delta0 = A/R0^2 - 4 pi, R0 = (3 V0/4 pi)^(1/3)"},
-      {"bending_modulus", "--bending-modulus", PhysicalUnit::joule, &PhysicalCell::bending_modulus,
-       "bending modulus kappa [J]"},
-      {"shear_modulus", "--shear-modulus", PhysicalUnit::newton_per_metre, &PhysicalCell::shear_modulus,
-       "(2D) shear modulus mu [N/m]"},
+      {"bending_modulus", "--bending-modulus", &PhysicalCell::bending_modulus, "bending modulus kappa [J]"},
+      {"shear_modulus", "--shear-modulus", &PhysicalCell::shear_modulus, "(2D) shear modulus mu [N/m]"},
   };
   for (const Row& r : rows) {
     double PhysicalCell::*const field = r.field;
-    const PhysicalUnit unit = r.unit;
+    const PhysicalUnit unit = plausible_range(r.key).unit;
     const std::string key = r.key;
     const ParameterRow* parameter = nullptr;
     for (const ParameterRow& p : parameter_table())
@@ -86,15 +80,20 @@ void add_physical_keys(std::vector<SceneKey>& k) {
          r.key,
          ValueKind::quantity,
          "",
-         help + "; a number in " + si_unit(unit) + " or with a unit (" + accepted_units(unit) + ")",
+         help + "; a number in " + si_unit(unit) + " (bare: only in [" + format_value(plausible_range(r.key).min) +
+             ", " + format_value(plausible_range(r.key).max) + "]) or with a unit (" + accepted_units(unit) + ")",
          {},
          [field](const SceneFile& f) { return SceneValue{f.scene.physical ? (*f.scene.physical).*field : kNotGiven}; },
          [field, unit, key, parameter](SceneFile& f, const SceneValue& v) {
            double x = kNotGiven;
-           if (const auto* text = std::get_if<std::string>(&v))
+           // A bare number (a TOML or Python number, or text without a unit) only within the plausible range.
+           if (const auto* text = std::get_if<std::string>(&v)) {
              x = parse_quantity(*text, unit, key, f.scene.physical ? f.scene.physical->temperature : kNotGiven);
-           else
+             if (!has_unit(*text)) require_plausible_bare(key, x);
+           } else {
              x = number_of(v);
+             require_plausible_bare(key, x);
+           }
            if (std::isnan(x)) {
              if (f.scene.physical) (*f.scene.physical).*field = x;
              return;
@@ -536,8 +535,11 @@ std::string to_toml(const SceneFile& file) {
       case ValueKind::number:
         t->insert(k.key, number_of(v));
         break;
-      case ValueKind::quantity:
-        if (!std::isnan(number_of(v))) t->insert(k.key, number_of(v));
+      case ValueKind::quantity:  // with its unit where a bare number would be refused on reading
+        if (needs_unit_text(k.key, number_of(v)))
+          t->insert(k.key, with_si_unit(k.key, number_of(v)));
+        else if (!std::isnan(number_of(v)))
+          t->insert(k.key, number_of(v));
         break;
       case ValueKind::integer:
         t->insert(k.key, static_cast<int64_t>(integer_of(v)));

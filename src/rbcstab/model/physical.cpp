@@ -1,8 +1,11 @@
 #include "rbcstab/model/physical.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdlib>
+#include <iomanip>
 #include <numbers>
+#include <sstream>
 #include <utility>
 
 #include "rbcstab/core/constants.hpp"
@@ -76,21 +79,44 @@ std::string strip_separators(std::string_view s) {
 
 bool given(double v) { return !std::isnan(v); }
 
-// The physical keys of the cell, in PhysicalCell order, with their values.
+// The physical keys of the cell, in PhysicalCell order, with their values, units and the range a bare SI number
+// must lie in (wide: vesicles and cells from ~10 nm to 1 mm, fluids from gases to glycerol mixtures; outside, a
+// unit must be stated), and the red cell's typical value, the centre a suggested unit aims at.
 struct Field {
   const char* key;
   double PhysicalCell::*value;
+  PhysicalUnit unit;
+  double min, max, typical;
 };
-constexpr Field kFields[] = {{"temperature", &PhysicalCell::temperature},
-                             {"shear_rate", &PhysicalCell::shear_rate},
-                             {"viscosity", &PhysicalCell::viscosity},
-                             {"inner_viscosity", &PhysicalCell::inner_viscosity},
-                             {"radius", &PhysicalCell::radius},
-                             {"area", &PhysicalCell::area},
-                             {"volume", &PhysicalCell::volume},
-                             {"stress_free_volume", &PhysicalCell::stress_free_volume},
-                             {"bending_modulus", &PhysicalCell::bending_modulus},
-                             {"shear_modulus", &PhysicalCell::shear_modulus}};
+constexpr Field kFields[] = {
+    {"temperature", &PhysicalCell::temperature, PhysicalUnit::kelvin, 200, 400, 310},
+    {"shear_rate", &PhysicalCell::shear_rate, PhysicalUnit::per_second, 1e-6, 1e9, 100},
+    {"viscosity", &PhysicalCell::viscosity, PhysicalUnit::pascal_second, 1e-5, 0.5, 1.2e-3},
+    {"inner_viscosity", &PhysicalCell::inner_viscosity, PhysicalUnit::pascal_second, 1e-5, 0.5, 6e-3},
+    {"radius", &PhysicalCell::radius, PhysicalUnit::metre, 1e-8, 1e-3, 2.8e-6},
+    {"area", &PhysicalCell::area, PhysicalUnit::square_metre, 1e-15, 1e-5, 134e-12},
+    {"volume", &PhysicalCell::volume, PhysicalUnit::cubic_metre, 1e-24, 1e-8, 94e-18},
+    {"stress_free_volume", &PhysicalCell::stress_free_volume, PhysicalUnit::cubic_metre, 1e-24, 1e-8, 94e-18},
+    {"bending_modulus", &PhysicalCell::bending_modulus, PhysicalUnit::joule, 1e-21, 1e-16, 2e-19},
+    {"shear_modulus", &PhysicalCell::shear_modulus, PhysicalUnit::newton_per_metre, 1e-9, 1e-3, 6e-6}};
+
+const Field& field_of(std::string_view key) {
+  for (const Field& f : kFields)
+    if (key == f.key) return f;
+  throw InvalidArgument(std::string(key), std::string(key) + " is not a physical key");
+}
+
+// The shortest of 15..17 significant digits that reads back as v ("2.8", not "2.7999999999999998").
+std::string full_precision(double v) {
+  std::string out;
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::ostringstream s;
+    s << std::setprecision(digits) << v;
+    out = s.str();
+    if (std::strtod(out.c_str(), nullptr) == v) break;
+  }
+  return out;
+}
 
 // R from the radius, or from the volume when the area and volume give the size.
 double radius_of(const PhysicalCell& c) { return given(c.radius) ? c.radius : equivalent_radius(c.volume); }
@@ -171,6 +197,55 @@ double parse_quantity(std::string_view text, PhysicalUnit unit, std::string_view
   return value;
 }
 
+PlausibleRange plausible_range(std::string_view key) {
+  const Field& f = field_of(key);
+  return {f.unit, f.min, f.max};
+}
+
+bool plausible_bare(std::string_view key, double value) {
+  const Field& f = field_of(key);
+  return value >= f.min && value <= f.max;
+}
+
+void require_plausible_bare(std::string_view key, double value) {
+  const Field& f = field_of(key);
+  // Not finite or <= 0: the positivity checks refuse it with their own message.
+  if (!(std::isfinite(value) && value > 0) || plausible_bare(key, value)) return;
+  const std::string unit = si_unit(f.unit), k(key), v = format_value(value);
+  std::string suggestion;
+  double best = kNotGiven;
+  auto candidates = suffixes(f.unit);
+  if (f.unit == PhysicalUnit::joule)  // a modulus given as a multiple of kBT, at the typical temperature
+    candidates.emplace_back("kBT (with a temperature)", kBoltzmann * field_of("temperature").typical);
+  for (const auto& [spelling, factor] : candidates) {
+    const double x = value * factor;
+    const bool ascii = std::all_of(spelling.begin(), spelling.end(), [](char c) { return (c & 0x80) == 0; });
+    const double distance = std::abs(std::log(x / f.typical));
+    if (factor != 1 && ascii && x >= f.min && x <= f.max && !(distance >= best)) {
+      best = distance;
+      suggestion = spelling.ends_with("Pas") ? spelling.substr(0, spelling.size() - 1) + " s" : spelling;
+    }
+  }
+  throw InvalidArgument(k, k + " = " + v + " (a bare number, read as " + v + " " + unit + ") is not a plausible " + k +
+                               ": a bare number must be in [" + format_value(f.min) + ", " + format_value(f.max) +
+                               "] " + unit +
+                               (suggestion.empty() ? "." : "; did you mean " + v + " " + suggestion + "?") +
+                               " Give the unit to state any other value (" + accepted_units(f.unit) + ")");
+}
+
+bool has_unit(std::string_view text) {
+  const std::string s(text);
+  char* end = nullptr;
+  std::strtod(s.c_str(), &end);
+  return !strip_separators(std::string_view(end)).empty();
+}
+
+bool needs_unit_text(std::string_view key, double value) { return !std::isnan(value) && !plausible_bare(key, value); }
+
+std::string with_si_unit(std::string_view key, double value) {
+  return full_precision(value) + " " + si_unit(field_of(key).unit);
+}
+
 namespace {
 void require_positive(const PhysicalCell& c) {
   for (const Field& f : kFields) {
@@ -234,6 +309,7 @@ CellNumbers cell_numbers(const PhysicalCell& c) {
   n.Delta = excess_area(c.area, c.volume);
   n.Delta0 = excess_area(c.area, c.stress_free_volume);
   n.time_unit = 1 / c.shear_rate;
+  n.tension_unit = c.bending_modulus / (n.R * n.R);
   return n;
 }
 

@@ -39,6 +39,27 @@ std::string accepted_units(PhysicalUnit unit);
 // not finite and > 0.
 double parse_quantity(std::string_view text, PhysicalUnit unit, std::string_view name, double temperature = kNotGiven);
 
+// A bare number (no unit) for a physical key is read in SI, so a radius of "2.8" is 2.8 m. It is accepted only
+// within the key's plausible SI range (the field table in physical.cpp, the one place these ranges live); a number
+// with a unit is taken as given. key: a PhysicalCell field name ("radius").
+struct PlausibleRange {
+  PhysicalUnit unit;
+  double min, max;  // SI
+};
+PlausibleRange plausible_range(std::string_view key);  // throws InvalidArgument for an unknown key
+bool plausible_bare(std::string_view key, double value);
+// Throws InvalidArgument(key, "<key> = <value> (a bare number, read as <value> <SI unit>) is not a plausible
+// <key>: ... in [min, max] <SI unit>; did you mean <value> <unit>? ...") outside the range; the suggestion is
+// the accepted unit that puts the number in range nearest the key's typical red-cell value (none when no unit
+// does).
+void require_plausible_bare(std::string_view key, double value);
+// Whether a quantity's text ends in a unit ("3um": true, "3e-6": false).
+bool has_unit(std::string_view text);
+// A value as a writer puts it so it reads back as itself: the bare SI number when plausible, else the text
+// "<value> <SI unit>" at full precision.
+bool needs_unit_text(std::string_view key, double value);
+std::string with_si_unit(std::string_view key, double value);
+
 // The physical inputs; NaN: not given. A scene holding one derives its B, C (and lambda, Delta, Delta0 when
 // their inputs are given) from it (physical_parameters).
 struct PhysicalCell {
@@ -73,7 +94,8 @@ double elasticity_ratio(double mu, double R, double kappa);                     
 struct CellNumbers {
   double R = kNotGiven;  // m
   double B = kNotGiven, C = kNotGiven, lambda = kNotGiven, alpha = kNotGiven, Delta = kNotGiven, Delta0 = kNotGiven;
-  double time_unit = kNotGiven;  // s: 1/gamma, the model's unit of time
+  double time_unit = kNotGiven;     // s: 1/gamma, the model's unit of time
+  double tension_unit = kNotGiven;  // N/m: kappa/R^2, the unit of the tension sigma (sigma_l^c = -(Pi + 4 alpha/Pi))
 };
 CellNumbers cell_numbers(const PhysicalCell& cell);
 // The material Parameters of these numbers, NaN where one is missing (so Lambda and S are NaN where an input of

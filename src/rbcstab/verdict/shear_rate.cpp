@@ -43,7 +43,15 @@ void set_search_range(ShearRateSearchOptions& options, std::string_view text, co
 
 std::string shape_of_mode(int l, bool out_of_plane) {
   const std::string mode = "l = " + std::to_string(l);
-  if (out_of_plane) return (l == 3 ? "stomatocyte (" : "axisymmetric cup (") + mode + ", out of plane)";
+  // Out of plane the mode is axisymmetric about the vorticity axis z (m = 0: the start's symmetry, Sec. V), and
+  // Y_l0 has parity (-1)^l under z -> -z: odd l bulge one way (a cup; l = 3 the paper's stomatocyte), even l are
+  // mirror-symmetric about the shear plane (no cup).
+  if (out_of_plane) {
+    const std::string name = l == 3       ? "stomatocyte"
+                             : l % 2 == 1 ? "axisymmetric cup"
+                                          : "mirror-symmetric axisymmetric shape";
+    return name + " (" + mode + ", out of plane)";
+  }
   return l == 3 ? "trilobe (" + mode + ", in plane)" : "multilobe (" + mode + ", in plane)";
 }
 
@@ -69,11 +77,54 @@ ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const S
       return std::nullopt;
     }
   };
+  // Bisection in ln gamma of [a, b] whose ends differ in stability, to hi/lo - 1 <= rtol; the unstable end's
+  // verdict kept in `at_unstable`. False (t.reason set) where a verdict fails.
+  auto bisect = [&](double& a, double& b, bool a_unstable, AsymptoticVerdict& at_unstable, std::string& why) {
+    while (b / a - 1 > options.rtol) {
+      const double mid = std::sqrt(a * b);
+      const auto m = verdict(mid, why);
+      if (!m) return false;
+      if (m->unstable) at_unstable = *m;
+      (m->unstable == a_unstable ? a : b) = mid;
+    }
+    return true;
+  };
   const double a = std::log(options.min_rate), b = std::log(options.max_rate);
+  auto sample = [&](int k) {
+    return k + 1 == options.samples ? options.max_rate : std::exp(a + (b - a) * k / (options.samples - 1));
+  };
   std::string why;
+  // The window's upper end, from sample k (unstable) on: the first later sample found stable again, then
+  // bisection down to the flip.
+  auto find_end = [&](int k) {
+    double last_unstable = sample(k);
+    for (int j = k + 1; j < options.samples; ++j) {
+      const double r = sample(j);
+      const auto w = verdict(r, why);
+      if (!w) {
+        t.end_reason = why;
+        return;
+      }
+      if (w->unstable) {
+        last_unstable = r;
+        continue;
+      }
+      double end_lo = last_unstable, end_hi = r;
+      AsymptoticVerdict at_end = *w;
+      if (!bisect(end_lo, end_hi, true, at_end, why)) {
+        t.end_reason = why;
+        return;
+      }
+      t.end_found = true;
+      t.end_bracket[0] = end_lo;
+      t.end_bracket[1] = t.end_shear_rate = end_hi;
+      return;
+    }
+    t.end_reason = "unstable up to max_rate = " + format_value(options.max_rate) + " 1/s (the search's end)";
+  };
   double lo = options.min_rate;
   for (int k = 0; k < options.samples; ++k) {
-    const double rate = k + 1 == options.samples ? options.max_rate : std::exp(a + (b - a) * k / (options.samples - 1));
+    const double rate = sample(k);
     const auto v = verdict(rate, why);
     if (!v) {
       t.reason = why;
@@ -87,23 +138,14 @@ ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const S
       t.reason = "unstable already at min_rate = " + format_value(options.min_rate) + " 1/s";
       t.l = v->l;
       t.shape = shape_of_mode(v->l, t.orientation == "out_of_plane");
+      find_end(0);
       return t;
     }
     double hi = rate;
     AsymptoticVerdict at_hi = *v;
-    while (hi / lo - 1 > options.rtol) {
-      const double mid = std::sqrt(lo * hi);
-      const auto m = verdict(mid, why);
-      if (!m) {
-        t.reason = why;
-        return t;
-      }
-      if (m->unstable) {
-        hi = mid;
-        at_hi = *m;
-      } else {
-        lo = mid;
-      }
+    if (!bisect(lo, hi, false, at_hi, why)) {
+      t.reason = why;
+      return t;
     }
     s = base;
     set_parameter(s, SceneParameter::shear_rate, hi);
@@ -114,6 +156,7 @@ ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const S
     t.C = s.parameters.C;
     t.l = at_hi.l;
     t.shape = shape_of_mode(t.l, t.orientation == "out_of_plane");
+    find_end(k);
     return t;
   }
   t.reason = "stable up to max_rate = " + format_value(options.max_rate) + " 1/s";

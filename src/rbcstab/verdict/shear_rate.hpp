@@ -38,10 +38,17 @@ struct ShearRateThreshold {
   double shear_rate = 0;  // 1/s: the crossing (the bracket's upper end: the first rate found unstable)
   double lo = 0, hi = 0;  // the final bracket: stable at lo, unstable at hi (hi/lo - 1 <= rtol)
   double B = 0, C = 0;    // at shear_rate
-  double alpha = 0;       // B/C, fixed along the path
-  int l = 0;              // the surviving mode just above the threshold (asymptotic_verdict)
-  std::string shape;      // the shape the paper associates with it (Sec. V, Fig. 6)
-  int evaluations = 0;    // asymptotic verdicts evaluated
+  // The unstable window's upper end, when found: the first rate above shear_rate found stable again (the
+  // samples after the crossing, then bisection), bracketed by end_bracket (unstable, stable; hi/lo - 1 <= rtol).
+  // A stable gap narrower than one sample bracket can be missed, as a window can.
+  bool end_found = false;
+  double end_shear_rate = 0;       // 1/s
+  double end_bracket[2] = {0, 0};  // 1/s
+  std::string end_reason;          // why not found (still unstable at max_rate, verdict failed)
+  double alpha = 0;                // B/C, fixed along the path
+  int l = 0;                       // the surviving mode just above the threshold (asymptotic_verdict)
+  std::string shape;               // the shape the paper associates with it (Sec. V, Fig. 6)
+  int evaluations = 0;             // asymptotic verdicts evaluated
 };
 
 // The scene's shear rate moved along [min_rate, max_rate] (at_shear_rate: B and C together at fixed alpha), with
@@ -49,7 +56,8 @@ struct ShearRateThreshold {
 ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const ShearRateSearchOptions& options = {});
 // Out of plane, then in plane.
 std::vector<ShearRateThreshold> shear_rate_thresholds(const Scene& scene, const ShearRateSearchOptions& options = {});
-// "stomatocyte (l = 3, out of plane)", "trilobe (l = 3, in plane)", "multilobe (l = 5 lobes, in plane)".
+// "stomatocyte (l = 3, out of plane)", "axisymmetric cup (l = 5, ...)", "mirror-symmetric axisymmetric shape
+// (l = 4, out of plane)", "trilobe (l = 3, in plane)", "multilobe (l = 5, in plane)".
 std::string shape_of_mode(int l, bool out_of_plane);
 
 }  // namespace rbcstab

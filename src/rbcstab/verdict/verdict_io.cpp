@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 #include "rbcstab/analysis/analysis_io.hpp"
@@ -9,6 +10,7 @@
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/analysis/truncation.hpp"
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/model/coefficients.hpp"
@@ -29,6 +31,33 @@ nlohmann::json to_json(const ModePrediction& m) {
 
 namespace {
 
+// The summary's physical units: a model time also in s, a tension also in N/m (kappa/R^2), on a physical scene.
+struct Units {
+  std::optional<CellNumbers> cell;
+  explicit Units(const Scene& s) {
+    if (s.physical) cell = cell_numbers(*s.physical);
+  }
+  std::string time(double t) const { return with_unit(t, cell ? cell->time_unit : kNotGiven, " s"); }
+  std::string seconds(double t) const {  // " (t s)", or "" when not physical
+    TextStream o;
+    if (cell) o << std::setprecision(6) << " (" << t * cell->time_unit << " s)";
+    return o.str();
+  }
+  std::string tension(double sigma) const { return with_unit(sigma, cell ? cell->tension_unit : kNotGiven, " N/m"); }
+  static std::string with_unit(double x, double unit, const char* name) {
+    TextStream o;
+    o << std::setprecision(6) << x;
+    if (!std::isnan(unit)) o << " (" << x * unit << name << ")";
+    return o.str();
+  }
+};
+
+std::string degrees(double radians) {
+  TextStream o;
+  o << std::setprecision(6) << radians << " rad (" << radians * 180 / kPi << " deg)";
+  return o.str();
+}
+
 bool has_post_instability_state(const SimulationResult& r) {
   return r.l_Delta >= 3 && r.status == IntegrationStatus::success;
 }
@@ -38,9 +67,10 @@ void analysis_text(std::ostream& out, const SceneFile& file, const SimulationRes
   const Scene& s = file.scene;
   const Parameters& p = s.parameters;
   const double alpha = p.alpha();
+  const Units u(s);
   out << "\nAnalysis (docs/theory.md)\n";
   out << "Regime       " << to_string(pr.regime.regime) << " -- " << pr.regime.reason << " (reduced dynamics)\n";
-  out << "Thresholds   sigma_* = " << sigma_star(alpha) << ", l_* = " << l_star(alpha)
+  out << "Thresholds   sigma_* = " << u.tension(sigma_star(alpha)) << ", l_* = " << l_star(alpha)
       << (l_star_criterion(alpha) ? " (>= 2.5: an integer mode l >= 3 can be excited)" : " (< 2.5: no l >= 3 band)")
       << ", alpha_*^init = " << to_text(alpha_init(p)) << "\n";
   if (s.L >= 3)
@@ -48,9 +78,9 @@ void analysis_text(std::ostream& out, const SceneFile& file, const SimulationRes
   out << "Predictors   (a) asymptotic     <sigma_R> = " << to_text(pr.sigma_R_asymptotic) << " ("
       << pr.asymptotic_source << "): unstable " << mode_list(pr.asymptotic.unstable)
       << ", l_Delta = " << pr.asymptotic.l_Delta << "\n";
-  out << "             (b) finite horizon <sigma_R>_T = " << pr.horizon.mean_sigma_R << " over [0, " << pr.horizon.T
-      << "]: unstable " << mode_list(pr.finite_horizon.unstable) << ", l_Delta = " << pr.finite_horizon.l_Delta
-      << " (linear growth exp(2 G_l))\n";
+  out << "             (b) finite horizon <sigma_R>_T = " << pr.horizon.mean_sigma_R << " over [0, "
+      << u.time(pr.horizon.T) << "]: unstable " << mode_list(pr.finite_horizon.unstable)
+      << ", l_Delta = " << pr.finite_horizon.l_Delta << " (linear growth exp(2 G_l))\n";
   out << "             (c) simulation     unstable " << mode_list(pr.simulation.unstable)
       << ", l_Delta = " << pr.simulation.l_Delta << "\n";
   if (s.L >= 3) {
@@ -59,7 +89,7 @@ void analysis_text(std::ostream& out, const SceneFile& file, const SimulationRes
         << ", integer l_s = " << post.surviving_mode << " " << to_text(post.integer_mode.Delta2_tilde) << "\n";
     if (has_post_instability_state(r))
       out << "             simulated Delta-bar_2 = " << r.Delta_tail_mean[0] << " (tail mean over the last "
-          << file.options.tail_window << ")\n";
+          << u.time(file.options.tail_window) << ")\n";
     else
       out << "             simulated: no post-instability state (l_Delta = " << r.l_Delta << ")\n";
   }
@@ -102,6 +132,15 @@ nlohmann::json summary_json(const SceneFile& file, const SimulationResult& r, co
     }
   }
   j["tail_window"] = file.options.tail_window;
+  j["Psi_final_deg"] = number_or_null(r.Psi_final * 180 / kPi);
+  if (s.physical) {  // sigma in N/m: times the tension unit kappa/R^2
+    const double unit = cell_numbers(*s.physical).tension_unit;
+    j["sigma_final_N_per_m"] = number_or_null(r.sigma_final * unit);
+    j["sigma_tail_mean_N_per_m"] = number_or_null(r.sigma_tail_mean * unit);
+    j["sigma_initial_N_per_m"] = number_or_null(r.sigma_initial * unit);
+    j["sigma_star_N_per_m"] = number_or_null(sigma_star(alpha) * unit);
+  }
+  j["glossary"] = kGlossary;
   put_truncation(j, file);
   put_physical(j, s);
   if (s.physical) j["shear_rate_thresholds"] = to_json(pr.shear_rate_thresholds);
@@ -125,6 +164,15 @@ nlohmann::json to_json(const std::vector<ShearRateThreshold>& thresholds) {
     } else {
       o["reason"] = t.reason;
     }
+    if (t.found || t.l >= 3) {  // the window's upper end: found, or why not
+      if (t.end_found) {
+        o["end_shear_rate"] = t.end_shear_rate;
+        o["end_bracket"] = {t.end_bracket[0], t.end_bracket[1]};
+      } else {
+        o["end_shear_rate"] = nullptr;
+        o["end_reason"] = t.end_reason;
+      }
+    }
     if (t.l >= 3) {
       o["l"] = t.l;
       o["shape"] = t.shape;
@@ -139,11 +187,14 @@ std::string shear_rate_text(const std::vector<ShearRateThreshold>& thresholds) {
   out << std::setprecision(6);
   for (const ShearRateThreshold& t : thresholds) {
     out << "             " << (t.orientation == "out_of_plane" ? "out of plane: " : "in plane:     ");
+    // The window's upper end, or why none was found.
+    const std::string end = t.end_found ? "; upper end " + format_value(t.end_shear_rate) + " 1/s (stable above)"
+                                        : "; upper end: none found, " + t.end_reason;
     if (t.found)
       out << "unstable from " << t.shear_rate << " 1/s (B = " << t.B << ", C = " << t.C << "), mode l = " << t.l
-          << " -> " << t.shape << "\n";
+          << " -> " << t.shape << end << "\n";
     else
-      out << t.reason << (t.l >= 3 ? " (mode l = " + std::to_string(t.l) + " -> " + t.shape + ")" : "") << "\n";
+      out << t.reason << (t.l >= 3 ? " (mode l = " + std::to_string(t.l) + " -> " + t.shape + ")" + end : "") << "\n";
   }
   return out.str();
 }
@@ -151,9 +202,11 @@ std::string shear_rate_text(const std::vector<ShearRateThreshold>& thresholds) {
 std::string summary_text(const SceneFile& file, const SimulationResult& r, const ScenePrediction& pr) {
   const Scene& s = file.scene;
   const Parameters& p = s.parameters;
+  const Units u(s);
   TextStream out;
   out << std::setprecision(6);
-  out << "rbcstab " << RBCSTAB_VERSION << " -- scene '" << s.name << "'\n\n";
+  out << "rbcstab " << RBCSTAB_VERSION << " -- scene '" << s.name << "'\n";
+  out << "Glossary     every term below: " << kGlossary << "\n\n";
   // The rows of the parameter table: a scene file's two tables, then the composites (a short definition shown).
   auto values = [&](const std::vector<SceneParameter>& rows) {
     for (std::size_t k = 0; k < rows.size(); ++k) {
@@ -168,15 +221,14 @@ std::string summary_text(const SceneFile& file, const SimulationResult& r, const
   values(stored_parameters("parameters"));
   out << "\n             ";
   values(stored_parameters("initial"));
-  out << ", L = " << s.L << ", T = " << s.T << "\n";
+  out << ", L = " << s.L << ", T = " << u.time(s.T) << "\n";
   out << "Derived      ";
   values(composite_parameters());
   out << "\n";
   if (s.physical) {
-    const double unit = 1 / s.physical->shear_rate;
-    out << "Physical     shear rate " << s.physical->shear_rate << " 1/s: time unit 1/gamma = " << unit
-        << " s, T = " << s.T * unit << " s\n";
-    out << "Threshold    first unstable shear rate along B/C = alpha fixed (asymptotic verdict):\n"
+    out << "Physical     shear rate " << s.physical->shear_rate << " 1/s: time unit 1/gamma = " << u.cell->time_unit
+        << " s, tension unit kappa/R^2 = " << u.cell->tension_unit << " N/m\n";
+    out << "Threshold    unstable window in shear rate along B/C = alpha fixed (asymptotic verdict):\n"
         << shear_rate_text(pr.shear_rate_thresholds);
   }
   out << "Truncation   " << file.L_reason << "\n";
@@ -198,10 +250,10 @@ std::string summary_text(const SceneFile& file, const SimulationResult& r, const
   else
     out << ": mode l = " << r.l_Delta << " took the most excess area from the ellipsoid ("
         << (r.oscillating ? "from the tail mean over the last " : "at T; tail window ") << file.options.tail_window
-        << " time units)\n";
-  out << "sigma(T) = " << r.sigma_final << " (tail mean " << r.sigma_tail_mean << "), sigma(0) = " << r.sigma_initial
-      << "\n";
-  out << "r(T) = " << r.r_final << ", Psi(T) = " << r.Psi_final << "\n";
+        << " time units" << u.seconds(file.options.tail_window) << ")\n";
+  out << "sigma(T) = " << u.tension(r.sigma_final) << ", tail mean " << u.tension(r.sigma_tail_mean)
+      << ", sigma(0) = " << u.tension(r.sigma_initial) << "\n";
+  out << "r(T) = " << r.r_final << ", Psi(T) = " << degrees(r.Psi_final) << "\n";
   out << "Excess-area drift max_t |Delta(t) - Delta(0)| = " << r.excess_area_drift << "\n";
   analysis_text(out, file, r, pr);
   out << "Cost: " << r.counters.steps << " steps (" << r.counters.failed_steps << " rejected), "
@@ -209,13 +261,14 @@ std::string summary_text(const SceneFile& file, const SimulationResult& r, const
       << r.seconds << " s with " << to_string(file.options.integrator.stepper) << " at rtol "
       << file.options.integrator.rtol << "\n";
   if (r.early.terminated)
-    out << "Early stop: at t = " << r.early.terminated_at << " the state was certified on an attracting "
+    out << "Early stop: at t = " << u.time(r.early.terminated_at) << " the state was certified on an attracting "
         << r.early.kind << " (margin 1 - max |mu| = " << r.early.margin << " +- " << r.early.margin_error
-        << ", distance " << r.early.distance << "); the run resumed on it at t = " << r.early.resumed_at << "\n";
+        << ", distance " << r.early.distance << "); the run resumed on it at t = " << u.time(r.early.resumed_at)
+        << "\n";
   else if (!r.early.note.empty())
     out << "Full horizon: " << r.early.note << "\n";
   if (r.status != IntegrationStatus::success)
-    out << "Status: " << to_string(r.status) << " at t = " << r.t_reached << ": " << r.reason << "\n";
+    out << "Status: " << to_string(r.status) << " at t = " << u.time(r.t_reached) << ": " << r.reason << "\n";
   else
     out << "Status: success\n";
   return out.str();

@@ -11,6 +11,9 @@
 
 namespace rbcstab {
 
+// The glossary defining every term the summary prints; the summary names it (text and JSON "glossary").
+inline constexpr const char* kGlossary = "docs/glossary.md";
+
 nlohmann::json to_json(const ModePrediction& m);
 // Each orientation's first unstable shear rate: orientation, beta, found, alpha, evaluations, then shear_rate
 // [1/s], bracket, B, C when found (else reason), and l, shape when a mode is named.
