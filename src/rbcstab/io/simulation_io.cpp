@@ -39,12 +39,13 @@ std::string trajectory_csv(const SimulationResult& r) {
   std::ostringstream ss;
   ss << "t";
   for (int l = 2; l <= r.L; ++l) ss << ",Delta_" << l;
-  ss << ",sigma,r,Psi\n";
+  ss << ",sigma,r,Psi,integrated\n";
   const Trajectory& tr = r.trajectory;
   for (std::size_t k = 0; k < tr.t.size(); ++k) {
     ss << csv_number(tr.t[k]);
     for (double d : tr.Delta_l[k]) ss << ',' << csv_number(d);
-    ss << ',' << csv_number(tr.sigma[k]) << ',' << csv_number(tr.r[k]) << ',' << csv_number(tr.Psi[k]) << '\n';
+    ss << ',' << csv_number(tr.sigma[k]) << ',' << csv_number(tr.r[k]) << ',' << csv_number(tr.Psi[k]) << ','
+       << (tr.integrated[k] ? 1 : 0) << '\n';
   }
   return ss.str();
 }
