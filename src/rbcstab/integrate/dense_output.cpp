@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include "rbcstab/core/error.hpp"
 
@@ -47,7 +48,7 @@ std::vector<double> DenseOutput::operator()(double t) const {
       return out;
     }
     const std::size_t n = std::min(kDenseNodes, b - a);
-    const std::size_t lo = std::clamp(i >= n / 2 ? i - n / 2 : 0, a, b - n);
+    const std::size_t lo = std::clamp(i >= n / 2 ? i - n / 2 : std::size_t{0}, a, b - n);
     // Lagrange weights at t.
     std::vector<double> w(n, 1.0);
     for (std::size_t j = 0; j < n; ++j)

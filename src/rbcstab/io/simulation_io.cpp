@@ -2,6 +2,7 @@
 
 #include <iomanip>
 #include <sstream>
+#include <string>
 
 #include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"
@@ -31,7 +32,11 @@ std::string simulation_text(const SceneFile& file, const SimulationResult& r) {
         << file.scene.T / file.scene.physical->shear_rate << " s\n";
   if (r.early.terminated)
     out << "terminated early at t = " << r.early.terminated_at << " on a certified " << r.early.kind
-        << " (margin 1 - max |mu| = " << r.early.margin << "), resumed at t = " << r.early.resumed_at << "\n";
+        << " (margin 1 - max |mu| = " << r.early.margin << "), resumed at t = " << r.early.resumed_at
+        << (r.trajectory.t.empty() ? std::string()
+                                   : ": " + std::to_string(r.trajectory.integrated_count()) + " of " +
+                                         std::to_string(r.trajectory.t.size()) + " samples integrated")
+        << "\n";
   return out.str();
 }
 

@@ -200,7 +200,7 @@ class SceneCertifier final : public AttractorCertifier {
     const Eigen::VectorXd xc = sub.restrict(x);
     if (!screened(sub, p_, t, xc, record)) return false;
     const Quadrature integrands =
-        orbit_integrands([&sub](double t, std::span<const double> x) { return sub.sigma(t, x); });
+        orbit_integrands([&sub](double s, std::span<const double> z) { return sub.sigma(s, z); });
     const PeriodicRefinement ref = refine_periodic_orbit(sub, p_, t, xc, o_.refinement, integrands);
     record.work += ref.work;
     if (!ref.converged) {
