@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -514,6 +515,23 @@ TEST(CertifiedRun, AutomaticLCandidateStopsEarly) {
   for (std::size_t j = 0; j < r.Delta_final.size(); ++j)
     EXPECT_NEAR(r.Delta_final[j], full.Delta_final[j], 100 * 1e-8 * full.Delta_final[j]) << "l = " << j + 2;
   EXPECT_NEAR(r.sigma_final, full.sigma_final, 100 * 1e-8 * std::abs(full.sigma_final));
+
+  // The check reads the skip's integral of sigma: without it the candidate fails, saying why, and a wrong one
+  // (sigma lower by 1 on average over the skip, which the dropped modes would grow on) fails it too.
+  for (const double shift : {std::numeric_limits<double>::quiet_NaN(), -(r.early.resumed_at - r.early.terminated_at)}) {
+    SceneFile h;
+    h.scene = s;
+    (void)simulate_truncated(h, h.options, nullptr, [shift](const ValidScene& v, const SimulationOptions& o) {
+      SimulationResult run = simulate_certified(v, o);
+      run.early.sigma_integral += shift;
+      return run;
+    });
+    ASSERT_TRUE(h.truncation_check);
+    EXPECT_FALSE(h.truncation_check->passed) << "shift " << shift;
+    if (std::isnan(shift))
+      EXPECT_NE(h.truncation_check->verdict.find("without the integral of sigma"), std::string::npos)
+          << h.truncation_check->verdict;
+  }
 }
 
 }  // namespace
