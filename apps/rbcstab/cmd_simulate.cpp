@@ -22,7 +22,7 @@ struct SimulateOptions {
 
 int run(const SimulateOptions& o) {
   SceneFile sf = o.scene.read_unchecked();  // simulate_scene checks it
-  sf.options.record_trajectory = sf.options.trajectory_text = !o.trajectory.empty();
+  sf.options.trajectory_text = !o.trajectory.empty();
   sf.options.on_progress = o.progress.callback("simulate: t =", "");
   const SimulationResult r = simulate_scene(sf, sf.options);
   if (!o.trajectory.empty()) write_file_atomic(o.trajectory, trajectory_csv(r), "--trajectory");

@@ -109,7 +109,7 @@ def test_the_gil_is_released_while_simulating():
 
 def test_early_stop_samples_are_masked_not_joined():
     """A certified early stop keeps every grid time: the skipped samples are NaN with integrated False, as the
-    JSON counts them; every integrated sample is finite (issue 30: the start, then a jump to the last period)."""
+    JSON counts them; every integrated sample is finite (no silent jump from the stop to the last period)."""
     run = rbcstab.simulate(rbcstab.Scene(T=500.0, dt=1.0))
     assert run.terminated_at is not None
     assert len(run.t) == 501 and run.samples == 501
