@@ -89,3 +89,17 @@ class Columns:
         except KeyError:
             raise KeyError(f"{name!r} is not a column of {self._what}: must be one of {', '.join(self._columns)}") \
                 from None
+
+
+def times(name, value, ndim=None):
+    """A float array of times from a number or an array-like (TypeError otherwise, naming the argument); with
+    ndim, of that many dimensions (ValueError). Their values are the library's to range-check."""
+    if isinstance(value, (str, bytes, bool, np.bool_)):
+        raise TypeError(f"{name} must be a number or an array of numbers, got {type(value).__name__} {value!r}")
+    try:
+        a = np.asarray(value, dtype=float)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be a number or an array of numbers, got {type(value).__name__} {value!r}") from None
+    if ndim is not None and a.ndim != ndim:
+        raise ValueError(f"{name} must be a {ndim}-D array of times, got shape {a.shape}")
+    return a

@@ -39,9 +39,23 @@ class Report(dict):
         return "<pre>" + html.escape(self.text) + "</pre>"
 
 
+class _DenseSolution:
+    """``run.sol(t)``: the run's observables at any time t in [0, T] (a number or an array), as a dict of numpy
+    arrays ``Delta`` (shape t.shape + (L - 1,), column l - 2), ``sigma``, ``r``, ``Psi``: a polynomial of degree 7
+    through the nearest accepted steps of the integrator, NaN in a span a certified early stop skipped."""
+
+    def __init__(self, dense):
+        self._dense = dense
+
+    def __call__(self, t):
+        values = self._dense(_args.times("t", t))
+        return {"Delta": values[..., :-3], "sigma": values[..., -3], "r": values[..., -2], "Psi": values[..., -1]}
+
+
 class Simulation:
     """One run (rbcstab simulate): numpy arrays ``t``, ``Delta`` (shape (len(t), L - 1), column l - 2),
-    ``sigma``, ``r``, ``Psi`` on the sampling grid, and every scalar of ``rbcstab simulate --json`` as an
+    ``sigma``, ``r``, ``Psi`` on the sampling grid, ``integrated`` (bool per sample: False where a certified
+    early stop skipped it, whose values are NaN), and every scalar of ``rbcstab simulate --json`` as an
     attribute (``model``, ``status``, ``l_Delta``, ``excess_area_drift``, ``rhs_evaluations``, ``seconds``, ...)."""
 
     def __init__(self, data, arrays, text):
@@ -51,6 +65,9 @@ class Simulation:
         self.sigma = arrays["sigma"]
         self.r = arrays["r"]
         self.Psi = arrays["Psi"]
+        self.integrated = arrays["integrated"]
+        dense = arrays.get("dense")
+        self.sol = _DenseSolution(dense) if dense is not None else None
         self.y_final = arrays["y_final"]
         self.text = text
 
@@ -88,7 +105,8 @@ class Simulation:
         return "<pre>" + html.escape(self.text) + "</pre>"
 
     def plot(self, ax=None, modes=None, sigma=False):
-        """Delta_l(t) for the given modes (default all), log scale; sigma=True draws sigma(t) instead."""
+        """Delta_l(t) for the given modes (default all), log scale; sigma=True draws sigma(t) instead. The lines
+        break over samples a certified early stop skipped (NaN): no line across a span that was not computed."""
         import matplotlib.pyplot as plt
         ax = ax if ax is not None else plt.gca()
         if sigma:
@@ -104,14 +122,20 @@ class Simulation:
         return ax
 
 
-def simulate(scene, model=None, stepper=None, rtol=None, atol=None):
+def simulate(scene, model=None, stepper=None, rtol=None, atol=None, t_eval=None, dense_output=False):
     """Integrates the scene (rbcstab simulate). model ('auto', 'full', 'modal', 'reduced'), stepper, rtol and
-    atol override the scene's (whose defaults are 'auto', 'rk8pd', 1e-8, 1e-12). The run may stop early on a
-    certified attractor (``terminated_at``, ``early_termination``; no samples in the skipped span);
+    atol override the scene's (whose defaults are 'auto', 'rk8pd', 1e-8, 1e-12). t_eval: the sample times
+    (finite, increasing, in [0, T]; default the scene's grid 0, dt, ..., T), at which the integrator stops.
+    dense_output=True: ``run.sol(t)`` gives the observables at any t (else ``run.sol`` is None). The run may stop early on a
+    certified attractor (``terminated_at``, ``early_termination``; the skipped samples are NaN with
+    ``integrated`` False);
     ``Scene(full_horizon=True)`` integrates to T. Ctrl-C stops it (KeyboardInterrupt); the GIL is released
     while it runs."""
     scene = _scene_with(scene, model=model, stepper=stepper, rtol=rtol, atol=atol)
-    data, arrays, text = _rbcstab.simulate(scene)
+    times = [] if t_eval is None else _args.times("t_eval", t_eval, ndim=1).tolist()
+    if t_eval is not None and not times:
+        raise ValueError("t_eval is empty: give at least one time in [0, T], or None for the scene's grid")
+    data, arrays, text = _rbcstab.simulate(scene, times, _args.flag("dense_output", dense_output))
     return Simulation(data, arrays, text)
 
 

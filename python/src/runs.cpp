@@ -4,11 +4,13 @@
 #include <pybind11/stl.h>
 
 #include <chrono>
+#include <cmath>
 #include <memory>
 
 #include "bindings.hpp"
 #include "rbcstab/analysis/analysis_io.hpp"
 #include "rbcstab/analysis/truncation.hpp"
+#include "rbcstab/core/error.hpp"
 #include "rbcstab/io/simulation_io.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
 #include "rbcstab/verdict/verdict_io.hpp"
@@ -34,8 +36,10 @@ SceneFile interruptible(const py::handle& scene) {
   return f;
 }
 
-py::tuple simulate_file(const py::handle& scene) {
+py::tuple simulate_file(const py::handle& scene, std::vector<double> t_eval, bool dense_output) {
   SceneFile f = interruptible(scene);
+  f.options.t_eval = std::move(t_eval);
+  f.options.dense_output = dense_output;
   SimulationResult r;
   {
     py::gil_scoped_release release;
@@ -48,7 +52,12 @@ py::tuple simulate_file(const py::handle& scene) {
   arrays["sigma"] = own(std::move(r.trajectory.sigma));
   arrays["r"] = own(std::move(r.trajectory.r));
   arrays["Psi"] = own(std::move(r.trajectory.Psi));
+  py::array_t<bool> integrated(py::ssize_t(r.trajectory.integrated.size()));
+  for (std::size_t k = 0; k < r.trajectory.integrated.size(); ++k)
+    integrated.mutable_data()[k] = r.trajectory.integrated[k];
+  arrays["integrated"] = integrated;
   arrays["y_final"] = own(std::move(r.y_final));
+  if (dense_output) arrays["dense"] = std::move(r.dense);
   return py::make_tuple(to_python(j), arrays, simulation_text(f, r));
 }
 
@@ -102,11 +111,43 @@ std::vector<double> time_simulate_cpp(const py::handle& scene, int repeats) {
   return seconds;
 }
 
+// DenseOutput at the times t (any shape): an array of shape t.shape + (columns,). ValueError for a time that is
+// not finite or outside the run's [first, last] time.
+py::array_t<double> dense_at(const DenseOutput& d, const py::array_t<double, py::array::forcecast>& t) {
+  std::vector<py::ssize_t> shape(t.shape(), t.shape() + t.ndim());
+  shape.push_back(py::ssize_t(d.columns()));
+  py::array_t<double> out(shape);
+  const double* in = t.data();
+  double* o = out.mutable_data();
+  const double lo = d.empty() ? 0.0 : d.t().front(), hi = d.empty() ? 0.0 : d.t().back();
+  for (py::ssize_t k = 0; k < t.size(); ++k) {
+    if (!(std::isfinite(in[k]) && in[k] >= lo && in[k] <= hi))
+      throw py::value_error("t = " + format_value(in[k]) + " is out of range: must be finite and in [" +
+                            format_value(lo) + ", " + format_value(hi) + "] (the run's span)");
+    const std::vector<double> v = d(in[k]);
+    std::copy(v.begin(), v.end(), o + k * py::ssize_t(d.columns()));
+  }
+  return out;
+}
+
 }  // namespace
 
 void bind_runs(py::module_& m) {
-  m.def("simulate", &simulate_file, py::arg("scene"),
-        "(json dict, arrays dict, text): rbcstab simulate --json, the trajectory, the CLI's text.");
+  py::class_<DenseOutput>(m, "DenseOutput",
+                          "The observables Delta_2..Delta_L, sigma, r, Psi (columns) at every accepted step of a run, "
+                          "interpolated between them (degree 7 through the nearest steps); NaN in a certified skip.")
+      .def("__call__", &dense_at, py::arg("t"))
+      .def_property_readonly("columns", &DenseOutput::columns)
+      .def(py::pickle(
+          [](const DenseOutput& d) { return py::make_tuple(d.columns(), d.t(), d.values(), d.segment_starts()); },
+          [](const py::tuple& s) {
+            return DenseOutput(s[0].cast<std::size_t>(), s[1].cast<std::vector<double>>(),
+                               s[2].cast<std::vector<double>>(), s[3].cast<std::vector<std::size_t>>());
+          }));
+  m.def("simulate", &simulate_file, py::arg("scene"), py::arg("t_eval") = std::vector<double>{},
+        py::arg("dense_output") = false,
+        "(json dict, arrays dict, text): rbcstab simulate --json, the trajectory, the CLI's text; t_eval: the output "
+        "grid (empty: the scene's); dense_output: arrays['dense'], a DenseOutput.");
   m.def("thresholds", &thresholds_scene, py::arg("scene"), py::arg("exact_C_star") = false,
         "(json dict, text): rbcstab thresholds [--exact-C-star] --json and its text.");
   m.def("post", &post_scene, py::arg("scene"), "(json dict, text): rbcstab post --json and its text.");

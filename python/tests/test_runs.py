@@ -105,3 +105,43 @@ def test_the_gil_is_released_while_simulating():
     t.join()
     during = [x for x in ticks if start < x < end]
     assert end - start > 0.05 and len(during) >= 3
+
+
+def test_early_stop_samples_are_masked_not_joined():
+    """A certified early stop keeps every grid time: the skipped samples are NaN with integrated False, as the
+    JSON counts them; every integrated sample is finite (no silent jump from the stop to the last period)."""
+    run = rbcstab.simulate(rbcstab.Scene(T=500.0, dt=1.0))
+    assert run.terminated_at is not None
+    assert len(run.t) == 501 and run.samples == 501
+    assert run.samples_integrated == int(run.integrated.sum()) < 501
+    skipped = ~run.integrated
+    assert np.all((run.t[skipped] > run.terminated_at) & (run.t[skipped] < run.early_termination["resumed_at"]))
+    assert np.all(np.isnan(run.sigma[skipped])) and np.all(np.isnan(run.Delta[skipped]))
+    assert np.all(np.isfinite(run.sigma[run.integrated])) and np.all(np.isfinite(run.Delta[run.integrated]))
+
+
+def test_t_eval_and_dense_output():
+    times = [0.0, 0.3, 7.25, 19.9]
+    run = rbcstab.simulate(rbcstab.Scene(**SHORT), t_eval=np.array(times), dense_output=True)
+    assert run.t.tolist() == times and run.integrated.all()
+    # The dense output through the accepted steps agrees with the samples the integrator stopped at, to its
+    # error (rtol 1e-8 of O(1) values: 1e-6 leaves room for both runs' global errors).
+    at = run.sol(np.array(times))
+    assert at["Delta"].shape == (4, run.L - 1) and at["sigma"].shape == (4,)
+    assert np.allclose(at["sigma"], run.sigma, rtol=1e-6, atol=0)
+    assert np.allclose(at["Delta"], run.Delta, rtol=1e-6, atol=1e-12)
+    assert np.isclose(run.sol(20.0)["sigma"], run.sigma_final, rtol=1e-14)
+    assert rbcstab.simulate(rbcstab.Scene(**SHORT)).sol is None
+    import pickle
+    assert np.array_equal(pickle.loads(pickle.dumps(run)).sol(3.0)["Delta"], run.sol(3.0)["Delta"])
+
+
+def test_t_eval_bad_values_name_it():
+    scene = rbcstab.Scene(**SHORT)
+    for bad, error in (([0.0, 2.0, 1.0], ValueError), ([0.0, 21.0], ValueError), ([np.nan], ValueError),
+                       ([], ValueError), ([[0.0, 1.0]], ValueError), ("0 1", TypeError), ([0.0, "x"], TypeError)):
+        with pytest.raises(error, match="t_eval"):
+            rbcstab.simulate(scene, t_eval=bad)
+    run = rbcstab.simulate(scene, dense_output=True)
+    with pytest.raises(ValueError, match="t = 25"):
+        run.sol(25.0)

@@ -25,7 +25,7 @@ TEST(SimulationIo, JsonTextAndCsvReadBackTheRun) {
   EXPECT_EQ(j["parameters"]["lambda"].get<double>(), sf.scene.parameters.lambda);
   EXPECT_EQ(simulation_text(sf, r).substr(0, 6), "model ");
   const std::string csv = trajectory_csv(r);
-  EXPECT_EQ(csv.substr(0, csv.find('\n')), "t,Delta_2,Delta_3,Delta_4,sigma,r,Psi");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "t,Delta_2,Delta_3,Delta_4,sigma,r,Psi,integrated");
   std::istringstream in(csv);
   std::string line;
   std::size_t rows = 0;

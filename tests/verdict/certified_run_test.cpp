@@ -16,18 +16,21 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <numbers>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "model/test_scenes.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/io/simulation_io.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/diagram_document.hpp"
@@ -354,19 +357,36 @@ TEST(CertifiedRun, FullHorizonSceneKeyAndDiagramPoints) {
     }
 }
 
-// A recorded trajectory holds every sample up to terminated_at and from resumed_at on, none in between.
-TEST(CertifiedRun, TrajectoryHasNoSamplesInTheSkippedSpan) {
+// A recorded trajectory keeps every sample of the grid: integrated up to terminated_at and from resumed_at on,
+// NaN and flagged as skipped in between (so that no plot joins across the skip).
+TEST(CertifiedRun, TrajectoryMasksTheSkippedSpan) {
   Scene s;
   s.dt = 0.5;
   const SimulationResult r = simulate_certified(s);
   ASSERT_TRUE(r.early.terminated);
   const std::vector<double> grid = sampling_grid(s.T, s.dt);
-  std::size_t expected = 0;
-  for (double t : grid) expected += t <= r.early.terminated_at || t >= r.early.resumed_at ? 1 : 0;
-  EXPECT_EQ(r.trajectory.t.size(), expected);
-  for (double t : r.trajectory.t) EXPECT_TRUE(t <= r.early.terminated_at || t >= r.early.resumed_at) << t;
-  EXPECT_EQ(r.trajectory.t.back(), s.T);
-  EXPECT_EQ(r.trajectory.Delta_l.back(), r.Delta_final);
+  const Trajectory& tr = r.trajectory;
+  ASSERT_EQ(tr.t, grid);
+  ASSERT_EQ(tr.integrated.size(), grid.size());
+  std::size_t skipped = 0;
+  for (std::size_t k = 0; k < grid.size(); ++k) {
+    const bool integrated = grid[k] <= r.early.terminated_at || grid[k] >= r.early.resumed_at;
+    EXPECT_EQ(tr.integrated[k], integrated) << grid[k];
+    EXPECT_EQ(std::isnan(tr.sigma[k]), !integrated) << grid[k];
+    EXPECT_EQ(std::isnan(tr.Delta_l[k][0]), !integrated) << grid[k];
+    EXPECT_EQ(std::isnan(tr.Psi[k]), !integrated) << grid[k];
+    skipped += integrated ? 0 : 1;
+  }
+  EXPECT_GT(skipped, 0u);
+  EXPECT_EQ(tr.integrated_count(), grid.size() - skipped);
+  EXPECT_EQ(tr.Delta_l.back(), r.Delta_final);
+  const nlohmann::json j = to_json(r);
+  EXPECT_EQ(j["samples"], grid.size());
+  EXPECT_EQ(j["samples_integrated"], grid.size() - skipped);
+  // The CSV: empty fields and integrated = 0 on the skipped rows.
+  const std::string csv = trajectory_csv(r);
+  EXPECT_NE(csv.find(",,"), std::string::npos);
+  EXPECT_NE(csv.find(",0\n"), std::string::npos);
 }
 
 // The reduced level (in plane, no perturbation) and the modal level at L = 2 (out of plane: m = 1 content)
@@ -435,6 +455,81 @@ TEST(CertifiedRun, FullHorizonFlag) {
   std::filesystem::remove_all(dir);
 }
 #endif
+
+// The skip's error against the full run, relative, over Delta_l(T) (every mode) and sigma(T).
+double skip_error(const Scene& s, double rtol, const EarlyTerminationOptions& early = {}) {
+  SimulationOptions o;
+  o.integrator.rtol = rtol;
+  o.integrator.atol = rtol * 1e-4;
+  const SimulationResult certified = simulate_certified(s, o, early);
+  EXPECT_TRUE(certified.early.terminated) << "rtol " << rtol << ": " << certified.early.note;
+  o.full_horizon = true;
+  const SimulationResult full = simulate(s, o);
+  double err = std::abs(certified.sigma_final - full.sigma_final) / std::abs(full.sigma_final);
+  for (std::size_t j = 0; j < full.Delta_final.size(); ++j)
+    err = std::max(err, std::abs(certified.Delta_final[j] - full.Delta_final[j]) / full.Delta_final[j]);
+  return err;
+}
+
+// Fig. 3 (Delta_4 decays on the l = 3 orbit): the skip's error falls with rtol, as the full runs' own error
+// does (at a fixed radius 1e-3 it stays at ~1e-6 relative for every rtol, below). Tolerance: 100 rtol,
+// the full runs' own global error at these rtols being ~10 rtol.
+TEST(CertifiedRun, SkipErrorFallsWithRtol) {
+  Scene s = testing::fig3_scene(0.0);
+  s.T = 300;
+  const double coarse = skip_error(s, 1e-8), fine = skip_error(s, 1e-10);
+  std::cout << "skip error: rtol 1e-8 " << coarse << ", rtol 1e-10 " << fine << "\n";
+  EXPECT_LT(coarse, 100 * 1e-8);
+  EXPECT_LT(fine, 100 * 1e-10);
+  EXPECT_LT(fine, coarse / 10);
+  // A fixed state tolerance (the radius stays 1e-3): the error no longer follows rtol, which the check sees.
+  EarlyTerminationOptions fixed;
+  fixed.state_tolerance = 1e-6;
+  const double fixed_fine = skip_error(s, 1e-10, fixed);
+  std::cout << "fixed radius 1e-3: rtol 1e-10 " << fixed_fine << "\n";
+  EXPECT_FALSE(fixed_fine < 100 * 1e-10);
+}
+
+// The automatic L's candidate run stops early too (it used to run to T: 22 s of 36 s at T = 1e7), and its check
+// bounds the dropped modes over the skip: the default scene seeded with delta = 1e-10 (whose candidate L = 4
+// passes) decides as the full-horizon candidate does, with a bound at least the one the full run's steps give,
+// and outputs within 100 rtol of the full run's.
+TEST(CertifiedRun, AutomaticLCandidateStopsEarly) {
+  Scene s;
+  s.delta = 1e-10;
+  s.T = 3000;
+  SceneFile f, g;
+  f.scene = g.scene = s;
+  g.options.full_horizon = true;
+  const SimulationResult r = simulate_scene(f, f.options), full = simulate_scene(g, g.options);
+  ASSERT_TRUE(f.truncation_check && g.truncation_check);
+  ASSERT_TRUE(f.truncation_check->passed) << f.truncation_check->verdict;
+  ASSERT_TRUE(g.truncation_check->passed) << g.truncation_check->verdict;
+  EXPECT_EQ(f.scene.L, g.scene.L);
+  EXPECT_LT(f.scene.L, s.L);
+  ASSERT_TRUE(r.early.terminated) << r.early.note;
+  EXPECT_FALSE(full.early.terminated);
+  EXPECT_LT(r.counters.steps, full.counters.steps / 2);
+  for (std::size_t i = 0; i < f.truncation_check->dropped.size(); ++i)
+    EXPECT_GE(f.truncation_check->dropped[i].Delta_max, g.truncation_check->dropped[i].Delta_max * (1 - 1e-6));
+  for (std::size_t j = 0; j < r.Delta_final.size(); ++j)
+    EXPECT_NEAR(r.Delta_final[j], full.Delta_final[j], 100 * 1e-8 * full.Delta_final[j]) << "l = " << j + 2;
+  EXPECT_NEAR(r.sigma_final, full.sigma_final, 100 * 1e-8 * std::abs(full.sigma_final));
+
+  // A skip the run cannot account for fails the check, saying why: the recorded integral of sigma over it
+  // (used where no kept mode gives the integral exactly) missing.
+  SceneFile h;
+  h.scene = s;
+  (void)simulate_truncated(h, h.options, nullptr, [](const ValidScene& v, const SimulationOptions& o) {
+    SimulationResult run = simulate_certified(v, o);
+    run.early.sigma_integral = std::numeric_limits<double>::quiet_NaN();
+    return run;
+  });
+  ASSERT_TRUE(h.truncation_check);
+  EXPECT_FALSE(h.truncation_check->passed);
+  EXPECT_NE(h.truncation_check->verdict.find("without the integral of sigma"), std::string::npos)
+      << h.truncation_check->verdict;
+}
 
 }  // namespace
 }  // namespace rbcstab

@@ -243,8 +243,9 @@ class StepRecorder {
     }
     steps.push_back(r);
   }
-  // Puts the t = 0 state first and fills the integrals no reference mode gave.
-  void finish(const std::vector<double>& Delta_initial, double sigma_initial) {
+  // Puts the t = 0 state first and fills the integrals no reference mode gave; across a certified skip (the
+  // steps at terminated_at and resumed_at) the integral is the orbit's, early.sigma_integral.
+  void finish(const std::vector<double>& Delta_initial, double sigma_initial, const EarlyTermination& early) {
     std::vector<StepRecord> accepted = std::move(steps);
     steps.clear();
     add(0.0, Delta_initial, sigma_initial);
@@ -255,7 +256,9 @@ class StepRecorder {
       steps.push_back(r);
       StepRecord& cur = steps.back();
       const StepRecord& prev = steps[steps.size() - 2];
-      if (!cur.J_exact) cur.J = prev.J + 0.5 * (cur.t - prev.t) * (prev.sigma + cur.sigma);
+      const bool skip = early.terminated && prev.t == early.terminated_at && cur.t == early.resumed_at;
+      if (!cur.J_exact)
+        cur.J = prev.J + (skip ? early.sigma_integral : 0.5 * (cur.t - prev.t) * (prev.sigma + cur.sigma));
     }
   }
   std::vector<StepRecord> steps;
@@ -299,6 +302,8 @@ TruncationCheck check_run(const Scene& scene, int Lc, const SimulationResult& ru
   if (run.status != IntegrationStatus::success)
     failed << "the candidate run stopped at t = " << format_value(run.t_reached) << " (" << run.reason << "); ";
   if (steps.size() < 2) failed << "the candidate run has no accepted step; ";
+  if (run.early.terminated && !std::isfinite(run.early.sigma_integral))
+    failed << "the candidate run skipped periods on an attractor without the integral of sigma over them; ";
 
   auto u_at = [](const Mode& m, const StepRecord& r) { return m.u0 + 2 * m.U.slope * (r.J - m.U.sigma_c * r.t); };
   double sigma_scale = 0;
@@ -313,8 +318,44 @@ TruncationCheck check_run(const Scene& scene, int Lc, const SimulationResult& ru
     double lo, hi;
     std::vector<double> ub;  // per dropped mode: a bound on ln Delta_l over the interval (-inf without area)
   };
+  // A certified skip (steps at terminated_at and resumed_at): sigma follows the attracting orbit there, so it
+  // stays in the range the run shows over a period before the skip and after it (widened by half that range on
+  // each side, as the endpoints' difference widens a step), and ln Delta_l departs from the line through its
+  // ends by at most 2 |slope| P (hi - lo): the integral of sigma's periodic part over any span is below P (hi - lo).
+  const EarlyTermination& early = run.early;
+  double gap_lo = std::numeric_limits<double>::infinity(), gap_hi = -gap_lo;
+  if (early.terminated) {
+    for (const StepRecord& r : steps)
+      if ((r.t >= early.terminated_at - early.period && r.t <= early.terminated_at) ||
+          (r.t >= early.resumed_at && r.t <= early.resumed_at + early.period)) {
+        gap_lo = std::min(gap_lo, r.sigma);
+        gap_hi = std::max(gap_hi, r.sigma);
+      }
+    const double widen = 0.5 * (gap_hi - gap_lo);
+    gap_lo -= widen;
+    gap_hi += widen;
+    if (!(gap_hi >= gap_lo)) {  // no step near the skip: nothing bounds sigma there, and the check fails
+      gap_lo = -std::numeric_limits<double>::infinity();
+      gap_hi = std::numeric_limits<double>::infinity();
+    }
+  }
+  auto skip_interval = [&](const StepRecord& r, const StepRecord& n) {
+    Interval in{gap_lo, gap_hi, std::vector<double>(modes.size(), -std::numeric_limits<double>::infinity())};
+    for (std::size_t i = 0; i < modes.size(); ++i) {
+      Mode& m = modes[i];
+      if (m.delta <= 0) continue;
+      const double uk = u_at(m, r), un = u_at(m, n);
+      in.ub[i] = std::max(uk, un) + 2 * std::abs(m.U.slope) * early.period * (gap_hi - gap_lo);
+      if (!(in.ub[i] <= m.u_max)) {
+        m.u_max = in.ub[i];
+        m.t_max = uk >= un ? r.t : n.t;
+      }
+    }
+    return in;
+  };
   auto interval = [&](std::size_t k) {
     const StepRecord &r = steps[k], &n = steps[k + 1];
+    if (early.terminated && r.t == early.terminated_at && n.t == early.resumed_at) return skip_interval(r, n);
     const double h = n.t - r.t;
     double margin = std::abs(n.sigma - r.sigma);
     if (r.J_exact && n.J_exact && h > 0) margin += 1.5 * std::abs((n.J - r.J) / h - 0.5 * (r.sigma + n.sigma));
@@ -425,7 +466,7 @@ TruncationCheck check_run(const Scene& scene, int Lc, const SimulationResult& ru
 
 // run_and_check on a scene already validated: the candidate copy is validated once, for its run and its recorder.
 CheckedRun check_candidate(const ValidScene& valid, int L_candidate, const SimulationOptions& options,
-                           const TruncationOptions& truncation) {
+                           const TruncationOptions& truncation, const SceneRunner& runner = {}) {
   const Scene& scene = *valid;
   options.validate();
   truncation.validate();
@@ -444,8 +485,8 @@ CheckedRun check_candidate(const ValidScene& valid, int L_candidate, const Simul
     if (options.on_step) options.on_step(t, ob);
   };
   CheckedRun out;
-  out.run = simulate(valid_candidate, o);
-  recorder.finish(out.run.Delta_initial, out.run.sigma_initial);
+  out.run = runner ? runner(valid_candidate, o) : simulate(valid_candidate, o);
+  recorder.finish(out.run.Delta_initial, out.run.sigma_initial, out.run.early);
   out.check = check_run(scene, L_candidate, out.run, recorder.steps, truncation);
   return out;
 }
@@ -453,7 +494,8 @@ CheckedRun check_candidate(const ValidScene& valid, int L_candidate, const Simul
 // resolve_truncation for a simulation, then the candidate's run and check when it is below the scene's L: sets
 // file.scene.L, L_reason and truncation_check. Returns the candidate's run when it passed (the run at file.scene.L).
 std::optional<SimulationResult> decide_simulation(SceneFile& file, const ValidScene& valid,
-                                                  const SimulationOptions& options, const ReducedTransient* transient) {
+                                                  const SimulationOptions& options, const ReducedTransient* transient,
+                                                  const SceneRunner& run) {
   // Without a check d.L is the scene's L, and with one the candidate (the scene at d.L) is validated_at_L for its
   // run, so neither outcome needs another check.
   const TruncationDecision d = resolve_valid(valid, file.origin("run.L"), TruncationUse::simulation, {}, transient);
@@ -463,7 +505,7 @@ std::optional<SimulationResult> decide_simulation(SceneFile& file, const ValidSc
     file.L_reason = d.reason;
     return std::nullopt;
   }
-  CheckedRun c = check_candidate(valid, d.L, options, {});
+  CheckedRun c = check_candidate(valid, d.L, options, {}, run);
   const std::string dropped = "l = " + mode_range(d.L + 1, file.scene.L);
   std::optional<SimulationResult> out;
   if (c.check.passed) {
@@ -495,7 +537,7 @@ SimulationResult simulate_truncated(SceneFile& file, const SimulationOptions& op
 SimulationResult simulate_truncated(SceneFile& file, const ValidScene& valid, const SimulationOptions& options,
                                     const ReducedTransient* transient, const SceneRunner& run_full) {
   if (&*valid != &file.scene) throw InvalidArgument("valid", "valid must prove this file's own scene: validated(file)");
-  std::optional<SimulationResult> run = decide_simulation(file, valid, options, transient);
+  std::optional<SimulationResult> run = decide_simulation(file, valid, options, transient, run_full);
   if (run) return std::move(*run);
   return run_full ? run_full(valid, options) : simulate(valid, options);
 }
@@ -509,7 +551,7 @@ void apply_truncation(SceneFile& file, const ValidScene& valid, TruncationUse us
   if (use == TruncationUse::simulation) {
     SimulationOptions o = file.options;
     o.record_trajectory = false;
-    (void)decide_simulation(file, valid, o, transient);
+    (void)decide_simulation(file, valid, o, transient, {});
     return;
   }
   const TruncationDecision d = resolve_valid(valid, file.origin("run.L"), use, {}, transient);

@@ -100,8 +100,10 @@ CheckedRun run_and_check(const Scene& scene, int L_candidate, const SimulationOp
 // The policy for one scene simulated over [0, T], and its run: resolve_truncation; a candidate below the scene's
 // L is run and checked (run_and_check) and kept if it passes, else the scene's L is run. Sets file.scene.L to the
 // L run, file.L_reason, and file.truncation_check when a candidate was checked. Every front end that simulates
-// one scene calls this. The candidate runs to T with simulate (its check reads sigma(t) at every t); the run at
-// the scene's L is `run_full` (empty: simulate), which verdict's simulate_scene makes certified.
+// one scene calls this. The candidate and the run at the scene's L are `run_full` (empty: simulate), which
+// verdict's simulate_scene makes certified: the check reads sigma(t) at every accepted step, and over periods a
+// certified run skipped it bounds the dropped modes from the orbit's tension (EarlyTermination::sigma_integral
+// and the range of sigma over a period on each side of the skip).
 // `valid` (validated(file), io) refers to file.scene and stays valid: the L set is the scene's or a checked one.
 using SceneRunner = std::function<SimulationResult(const ValidScene&, const SimulationOptions&)>;
 SimulationResult simulate_truncated(SceneFile& file, const SimulationOptions& options,

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 
 #include "rbcstab/core/error.hpp"
@@ -27,6 +28,10 @@ ModeAmplitudes final_amplitudes(const Scene& scene, const SimulationResult& resu
       ->amplitudes(result.t_reached, result.y_final);
 }
 
+std::size_t Trajectory::integrated_count() const {
+  return std::size_t(std::count(integrated.begin(), integrated.end(), true));
+}
+
 std::vector<double> sampling_grid(double T, double dt) {
   std::vector<double> g;
   const auto n = static_cast<std::size_t>(std::floor(T / dt * (1 + 1e-12)));
@@ -37,9 +42,27 @@ std::vector<double> sampling_grid(double T, double dt) {
   return g;
 }
 
+std::vector<double> output_grid(const Scene& scene, const SimulationOptions& options) {
+  if (options.t_eval.empty()) return sampling_grid(scene.T, scene.dt);
+  const std::vector<double>& g = options.t_eval;
+  for (std::size_t k = 0; k < g.size(); ++k) {
+    const std::string at = "t_eval[" + std::to_string(k) + "]";
+    if (!(std::isfinite(g[k]) && g[k] >= 0 && g[k] <= scene.T))
+      throw InvalidArgument("t_eval", at + " = " + format_value(g[k]) +
+                                          " is out of range: must be finite and in [0, T = " + format_value(scene.T) +
+                                          "]");
+    if (k > 0 && !(g[k] - g[k - 1] > 1e-12 * scene.T))
+      throw InvalidArgument("t_eval", at + " = " + format_value(g[k]) + " does not follow t_eval[" +
+                                          std::to_string(k - 1) + "] = " + format_value(g[k - 1]) +
+                                          ": the times must increase (by more than 1e-12 T)");
+  }
+  return g;
+}
+
 double trajectory_bytes(const Scene& scene, const SimulationOptions& options) {
   if (!options.record_trajectory) return 0;
-  const double samples = std::floor(scene.T / scene.dt) + 2, L = scene.L;
+  const double samples = options.t_eval.empty() ? std::floor(scene.T / scene.dt) + 2 : double(options.t_eval.size()),
+               L = scene.L;
   return samples * (8 * (L + 8) + (options.trajectory_text ? 25 * (L + 4) : 0));
 }
 
@@ -50,6 +73,10 @@ void require_memory(const Scene& scene, const SimulationOptions& options, ModelL
                           "the " + to_string(level) + " level at L = " + std::to_string(scene.L));
   const double bytes = trajectory_bytes(scene, options);
   if (bytes <= kMaxTrajectoryBytes) return;
+  if (!options.t_eval.empty())
+    throw InvalidArgument("t_eval", "t_eval has " + std::to_string(options.t_eval.size()) + " times: about " +
+                                        format_bytes(bytes) + " of trajectory, more than the limit " +
+                                        format_bytes(kMaxTrajectoryBytes) + ": give fewer times");
   const double samples = std::floor(scene.T / scene.dt) + 2;
   throw InvalidArgument("dt", "dt = " + format_value(scene.dt) + " gives T/dt = " + format_value(scene.T / scene.dt) +
                                   " output samples of about " + format_bytes(bytes / samples) + " each at L = " +
@@ -122,11 +149,12 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
   // Output grid, plus the fine grid over the tail window for grid means or the window's start for quadrature
   // means (there the integrator switches to the system with the quadratures). Samples that are not recorded are
   // not integrated to (T is: the state there is reported).
-  const std::vector<double> user_grid = sampling_grid(scene.T, scene.dt);
+  const std::vector<double> user_grid = output_grid(scene, options);
   const double tail_start = std::max(0.0, scene.T - options.tail_window);
   const bool grid_means = options.tail_means == TailMeans::grid;
   const bool quadrature_means = options.tail_means == TailMeans::quadrature;
-  std::vector<double> grid = options.record_trajectory ? user_grid : std::vector<double>{scene.T};
+  std::vector<double> grid = options.record_trajectory ? user_grid : std::vector<double>{};
+  grid.push_back(scene.T);  // the state there is reported
   if (grid_means)
     for (int k = 0; k <= kTailIntervals; ++k) grid.push_back(tail_start + (scene.T - tail_start) * k / kTailIntervals);
   if (quadrature_means) grid.push_back(tail_start);
@@ -143,6 +171,14 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
   // Psi in (-pi, pi] at t = 0, then unwrapped along the accepted steps.
   double Psi = o0.Psi();
   auto unwrap = [&](const Observation& o) { return Psi = o.Psi_near(Psi); };
+  if (options.dense_output) res.dense = DenseOutput(o0.Delta_l.size() + 3);
+  auto keep_dense = [&](double t, const Observation& o, double psi) {
+    if (!options.dense_output) return;
+    std::vector<double> v = o.Delta_l;
+    v.insert(v.end(), {o.sigma, o.r(), psi});
+    res.dense.add(t, v);
+  };
+  keep_dense(0, o0, Psi);
 
   std::size_t user_index = 0;
   std::vector<double> tail_t;
@@ -162,7 +198,7 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
     const Observation o = system->observe(t, y.first(n));
     const double total = std::accumulate(o.Delta_l.begin(), o.Delta_l.end(), 0.0);
     res.excess_area_drift = std::max(res.excess_area_drift, std::abs(total - res.Delta_total_initial));
-    unwrap(o);
+    keep_dense(t, o, unwrap(o));
     if (!grid_means && t >= tail_start - 1e-12 * scene.T) step_Delta2.push_back(o.Delta_l[0]);
     if (options.on_step) options.on_step(t, o);
     if (options.on_progress) options.on_progress(t, scene.T);
@@ -179,6 +215,7 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
         res.trajectory.sigma.push_back(o.sigma);
         res.trajectory.r.push_back(o.r());
         res.trajectory.Psi.push_back(psi);
+        res.trajectory.integrated.push_back(true);
       }
     }
     // Only the uniform tail grid feeds the averages: user samples inside the window (dt not a
@@ -246,8 +283,24 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
     res.early.terminated_at = ir.t_reached;
     res.early.resumed_at = jump.t;
     Psi += jump.Psi_advance;
-    user_index =
+    const auto resume_index =
         std::size_t(std::lower_bound(user_grid.begin(), user_grid.end(), jump.t - 1e-12 * scene.T) - user_grid.begin());
+    // The skipped samples: rows of NaN, so that the trajectory keeps the grid and no plot joins across the skip.
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+    Trajectory& tr = res.trajectory;
+    for (; options.record_trajectory && user_index < resume_index; ++user_index) {
+      tr.t.push_back(user_grid[user_index]);
+      tr.Delta_l.emplace_back(o0.Delta_l.size(), nan);
+      tr.sigma.push_back(nan);
+      tr.r.push_back(nan);
+      tr.Psi.push_back(nan);
+      tr.integrated.push_back(false);
+    }
+    user_index = resume_index;
+    const Observation resumed = system->observe(jump.t, jump.y);
+    if (options.dense_output) res.dense.start_segment();
+    keep_dense(jump.t, resumed, resumed.Psi_near(Psi));
+    if (options.on_step) options.on_step(jump.t, resumed);
     const std::vector<double> rest(std::lower_bound(grid.begin(), grid.end(), jump.t), grid.end());
     append(ir, run(jump.t, jump.y, rest, remaining(options.integrator, ir), {}));
   }

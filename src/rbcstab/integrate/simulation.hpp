@@ -1,6 +1,7 @@
 #pragma once
 // A scene run end to end: initial state, smallest exact level, integration, and the paper's
 // observables (Delta_l, sigma, r, Psi, l_Delta) on the output grid.
+#include <cstddef>
 #include <functional>
 #include <limits>
 #include <span>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "rbcstab/core/progress.hpp"
+#include "rbcstab/integrate/dense_output.hpp"
 #include "rbcstab/integrate/integrator.hpp"
 #include "rbcstab/model/scene.hpp"
 
@@ -38,8 +40,14 @@ struct SimulationOptions {
   IntegratorOptions integrator;   // stepper, tolerances, limits
   double tail_window = 10;        // Delta_l averaged over [T - tail_window, T] (Appendix E)
   bool record_trajectory = true;  // keep the samples on the output grid
+  // The output grid: empty, the scene's 0, dt, 2 dt, ..., T; else these times, finite, in [0, T] and increasing
+  // by more than 1e-12 T (checked by simulate, which knows T: InvalidArgument("t_eval", ...)). The integrator
+  // stops at each, so the samples carry its own error (no interpolation).
+  std::vector<double> t_eval{};
+  // Keep the observables at every accepted step for SimulationResult::dense (memory: 8 (L + 2) bytes a step).
+  bool dense_output = false;
   // Called after every accepted step with the observables there (the truncation check reads sigma(t) from
-  // them); empty: not called.
+  // them), and at the resumed state after a certified skip (EarlyTermination); empty: not called.
   std::function<void(double t, const Observation& o)> on_step{};
   bool trajectory_text = false;  // the caller also renders the samples as CSV text (counted by the memory bound)
   ProgressCallback on_progress;  // t of T, after every accepted step
@@ -50,16 +58,25 @@ struct SimulationOptions {
   void validate() const;
 };
 
+// The output grid of a run: options.t_eval, or sampling_grid(scene.T, scene.dt). Throws InvalidArgument("t_eval")
+// for times that are not finite, outside [0, T] or not increasing by more than 1e-12 T.
+std::vector<double> output_grid(const Scene& scene, const SimulationOptions& options);
+
 // The samples kept on the output grid are bounded before a run starts: measured 8 (L + 8) bytes each in memory
 // (Delta_2..Delta_L, t, sigma, r, Psi and the vectors' overhead), plus up to 25 (L + 4) bytes each as CSV text
 // (trajectory_text); a run whose samples would take more than kMaxTrajectoryBytes is refused.
 constexpr double kMaxTrajectoryBytes = 2.0 * 1024 * 1024 * 1024;
 double trajectory_bytes(const Scene& scene, const SimulationOptions& options);
 
+// One row per time of the output grid. A run that stopped early on a certified attractor did not integrate
+// the rows strictly between terminated_at and resumed_at: they hold NaN (a plot breaks its lines there) and
+// integrated = false.
 struct Trajectory {
   std::vector<double> t;
   std::vector<std::vector<double>> Delta_l;  // [sample][l - 2]
   std::vector<double> sigma, r, Psi;         // Psi unwrapped along the accepted steps
+  std::vector<bool> integrated;              // [sample]: false where a certified early stop skipped it
+  std::size_t integrated_count() const;
 };
 
 // Certified early termination: the run stopped integrating at terminated_at, where its state was certified
@@ -70,17 +87,18 @@ struct EarlyTermination {
   static constexpr double nan = std::numeric_limits<double>::quiet_NaN();
   bool terminated = false;
   double terminated_at = nan, resumed_at = nan;
-  std::string note;           // why the run was integrated to T (empty when it terminated early)
-  std::string kind;           // "periodic_orbit" or "equilibrium" (time-independent forcing)
-  double period = nan;        // of the forcing (the orbit's period or a multiple of it)
-  double margin = nan;        // 1 - max |mu| over the nontrivial Floquet multipliers
-  double margin_error = nan;  // its error bound (certify, continuation.hpp)
-  double rate = nan;          // -ln(max |mu|) / period: the slowest decay rate
-  double residual = nan;      // periodicity defect |phi(x*) - x*| of the refined state x*
-  double distance = nan;      // |x(terminated_at) - x*| in the level's regular coordinates (|x| = 1)
-  double decay_bound = nan;   // linear bound on |x - x*| at resumed_at (the error the skip makes)
-  int attempts = 0;           // certification attempts, failed ones included
-  IntegrationCounters work;   // the attempts' integrations (not in SimulationResult::counters)
+  std::string note;             // why the run was integrated to T (empty when it terminated early)
+  std::string kind;             // "periodic_orbit" or "equilibrium" (time-independent forcing)
+  double period = nan;          // of the forcing (the orbit's period or a multiple of it)
+  double margin = nan;          // 1 - max |mu| over the nontrivial Floquet multipliers
+  double margin_error = nan;    // its error bound (certify, continuation.hpp)
+  double rate = nan;            // -ln(max |mu|) / period: the slowest decay rate
+  double residual = nan;        // periodicity defect |phi(x*) - x*| of the refined state x*
+  double distance = nan;        // |x(terminated_at) - x*| in the level's regular coordinates (|x| = 1)
+  double decay_bound = nan;     // linear bound on |x - x*| at resumed_at (the error the skip makes)
+  double sigma_integral = nan;  // int sigma dt over [terminated_at, resumed_at] along the orbit (first order)
+  int attempts = 0;             // certification attempts, failed ones included
+  IntegrationCounters work;     // the attempts' integrations (not in SimulationResult::counters)
 };
 
 // Where the run resumes after a certified attractor, and how the unwrapped Psi moved meanwhile.
@@ -117,6 +135,8 @@ struct SimulationResult {
   double r_final = 0, Psi_final = 0;
   double excess_area_drift = 0;  // max over accepted steps of |sum_l Delta_l(t) - sum_l Delta_l(0)|
   Trajectory trajectory;
+  // With options.dense_output: Delta_2..Delta_L, sigma, r, Psi (columns) at any t, NaN in a certified skip.
+  DenseOutput dense;
   EarlyTermination early;  // empty unless an attractor certifier was given
   IntegrationCounters counters;
   double seconds = 0;
@@ -128,7 +148,7 @@ struct SimulationResult {
 // and the samples, kMaxTrajectoryBytes; throws InvalidArgument on bad input). Numerical failure is a
 // status in the result, with everything computed up to t_reached. With a certifier (and not
 // options.full_horizon) the run may skip whole periods on a certified attractor (SimulationResult::early): the
-// trajectory then holds no samples strictly between terminated_at and resumed_at.
+// trajectory's samples strictly between terminated_at and resumed_at are then NaN with integrated = false.
 SimulationResult simulate(const Scene& scene, const SimulationOptions& options = {},
                           AttractorCertifier* certifier = nullptr);
 SimulationResult simulate(const ValidScene& scene, const SimulationOptions& options = {},

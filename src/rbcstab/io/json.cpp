@@ -185,6 +185,7 @@ nlohmann::json to_json(const EarlyTermination& e) {
   j["residual"] = e.residual;
   j["distance"] = e.distance;
   j["decay_bound"] = e.decay_bound;
+  j["sigma_integral"] = e.sigma_integral;
   return j;
 }
 
@@ -216,7 +217,9 @@ nlohmann::json to_json(const SimulationResult& r) {
                       {"rhs_evaluations", r.counters.rhs_evaluations},
                       {"jacobian_evaluations", r.counters.jacobian_evaluations},
                       {"seconds", r.seconds},
-                      {"warnings", r.warnings}};
+                      {"warnings", r.warnings},
+                      {"samples", r.trajectory.t.size()},
+                      {"samples_integrated", r.trajectory.integrated_count()}};
   j["terminated_at"] = number_or_null(r.early.terminated_at);
   if (!r.early.terminated)
     j["terminated_at_reason"] =

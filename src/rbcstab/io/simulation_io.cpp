@@ -2,6 +2,7 @@
 
 #include <iomanip>
 #include <sstream>
+#include <string>
 
 #include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"
@@ -31,7 +32,11 @@ std::string simulation_text(const SceneFile& file, const SimulationResult& r) {
         << file.scene.T / file.scene.physical->shear_rate << " s\n";
   if (r.early.terminated)
     out << "terminated early at t = " << r.early.terminated_at << " on a certified " << r.early.kind
-        << " (margin 1 - max |mu| = " << r.early.margin << "), resumed at t = " << r.early.resumed_at << "\n";
+        << " (margin 1 - max |mu| = " << r.early.margin << "), resumed at t = " << r.early.resumed_at
+        << (r.trajectory.t.empty() ? std::string()
+                                   : ": " + std::to_string(r.trajectory.integrated_count()) + " of " +
+                                         std::to_string(r.trajectory.t.size()) + " samples integrated")
+        << "\n";
   return out.str();
 }
 
@@ -39,12 +44,13 @@ std::string trajectory_csv(const SimulationResult& r) {
   std::ostringstream ss;
   ss << "t";
   for (int l = 2; l <= r.L; ++l) ss << ",Delta_" << l;
-  ss << ",sigma,r,Psi\n";
+  ss << ",sigma,r,Psi,integrated\n";
   const Trajectory& tr = r.trajectory;
   for (std::size_t k = 0; k < tr.t.size(); ++k) {
     ss << csv_number(tr.t[k]);
     for (double d : tr.Delta_l[k]) ss << ',' << csv_number(d);
-    ss << ',' << csv_number(tr.sigma[k]) << ',' << csv_number(tr.r[k]) << ',' << csv_number(tr.Psi[k]) << '\n';
+    ss << ',' << csv_number(tr.sigma[k]) << ',' << csv_number(tr.r[k]) << ',' << csv_number(tr.Psi[k]) << ','
+       << (tr.integrated[k] ? 1 : 0) << '\n';
   }
   return ss.str();
 }

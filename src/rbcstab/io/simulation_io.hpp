@@ -13,7 +13,8 @@ nlohmann::json simulation_json(const SceneFile& file, const SimulationResult& r)
 // One line (model, status, l_Delta, sigma(T), drift, steps), then the truncation reason, then the early
 // termination when the run stopped early.
 std::string simulation_text(const SceneFile& file, const SimulationResult& r);
-// t, Delta_2..Delta_L, sigma, r, Psi on the sampling grid, round-trip digits.
+// t, Delta_2..Delta_L, sigma, r, Psi, integrated on the sampling grid, round-trip digits; a sample a certified
+// early stop skipped has empty fields and integrated = 0 (Trajectory).
 std::string trajectory_csv(const SimulationResult& r);
 
 }  // namespace rbcstab

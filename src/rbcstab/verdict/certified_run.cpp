@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <optional>
 
@@ -43,13 +44,15 @@ double power_norm(const Eigen::MatrixXd& A, int k) {
 }
 
 // The quadratures along a refined orbit: the angle of z = x_0 + i x_1 (Psi = -arg f_{2,2} = -arg z advances by
-// minus it), and for the modal level the tension (the decayed modes' rates are affine in it).
-Quadrature orbit_integrands(const ModalSubsystem* modal) {
+// minus it), and the tension (the decayed modes' rates are affine in it; its integral over the skip is recorded).
+using Tension = std::function<double(double, std::span<const double>)>;
+Quadrature orbit_integrands(Tension sigma) {
   Quadrature q;
-  q.count = modal ? 2 : 1;
-  q.rate = [modal](double t, std::span<const double> x, std::span<const double> f, std::span<double> rate) {
+  q.count = 2;
+  q.rate = [sigma = std::move(sigma)](double t, std::span<const double> x, std::span<const double> f,
+                                      std::span<double> rate) {
     rate[0] = (x[0] * f[1] - x[1] * f[0]) / (x[0] * x[0] + x[1] * x[1]);
-    if (modal) rate[1] = modal->sigma(t, x);
+    rate[1] = sigma(t, x);
   };
   return q;
 }
@@ -60,6 +63,16 @@ class SceneCertifier final : public AttractorCertifier {
       : scene_(scene), o_(o), next_(o.first_attempt) {
     o_.refinement.period = 2 * kPi;  // the forcing period of the modal and reduced levels
     tolerance_ = o.state_tolerance > 0 ? o.state_tolerance : sim.integrator.rtol / 10;
+    // The skip is exact to first order in the distance; the second order (the decayed modes' area acting on
+    // sigma, the curvature along the approach) is kept below the state tolerance by the radius.
+    radius_ = std::min(o.max_distance, std::sqrt(tolerance_));
+    // The resumed state is the refined orbit's: its residual, and the period map it is computed with, within
+    // the state tolerance too.
+    o_.refinement.residual_tol = std::min(o_.refinement.residual_tol, tolerance_);
+    o_.refinement.plain.rtol = std::max(1e-14, std::min(o_.refinement.plain.rtol, tolerance_ / 10));
+    o_.refinement.plain.atol = std::min(o_.refinement.plain.atol, o_.refinement.plain.rtol / 10);
+    // The screen cannot resolve a defect much below its own tolerance.
+    screen_radius_ = std::max(radius_, 10 * o.screen.rtol);
   }
 
   bool certify(const System& system, double t, std::span<const double> y, double t_max, AttractorJump& jump,
@@ -107,10 +120,10 @@ class SceneCertifier final : public AttractorCertifier {
     const PeriodRun run = run_period(sys, p, t, x, o_.refinement.period, o_.screen);
     record.work += run.work;
     const double defect = run.ok ? (run.x - x).norm() : std::numeric_limits<double>::quiet_NaN();
-    const bool small = defect <= o_.max_distance;
+    const bool small = defect <= screen_radius_;
     if (!small && std::isfinite(defect) && last_defect_ > defect && t > last_t_) {
       const double rate = std::log(last_defect_ / defect) / (t - last_t_);
-      const double predicted = t + std::log(defect / (0.1 * o_.max_distance)) / rate;
+      const double predicted = t + std::log(defect / (0.1 * screen_radius_)) / rate;
       next_ = std::max(t + o_.refinement.period, std::min(predicted, next_ + (predicted - next_) / 2));
     }
     last_t_ = t;
@@ -118,7 +131,7 @@ class SceneCertifier final : public AttractorCertifier {
     if (!small)
       fail(record, t,
            "the periodicity defect over one period is " + format_value(defect) + " (above " +
-               format_value(o_.max_distance) + ")");
+               format_value(screen_radius_) + ")");
     return small;
   }
 
@@ -136,10 +149,9 @@ class SceneCertifier final : public AttractorCertifier {
               " +- " + format_value(c.margin_error) + ", needed " + format_value(needed) + ")");
     }
     const double distance = std::hypot(ref.distance, decayed_distance);
-    if (distance > o_.max_distance)
-      return fail(
-          record, t,
-          "the state is " + format_value(distance) + " from the orbit (above " + format_value(o_.max_distance) + ")");
+    if (distance > radius_)
+      return fail(record, t,
+                  "the state is " + format_value(distance) + " from the orbit (above " + format_value(radius_) + ")");
     const double bound = power_norm(ref.monodromy, k) * ref.distance;
     if (!(bound <= tolerance_)) {
       // In the linear regime the bound at the (fixed) resume time does not improve with later attempts.
@@ -177,7 +189,7 @@ class SceneCertifier final : public AttractorCertifier {
     double decayed2 = 0;
     for (std::size_t j = 0; j < active.size(); ++j) {
       const double a = x[ModalEquilibriumProblem::index_of_mode(active[j])];
-      if (a > o_.max_distance) {
+      if (a > radius_) {
         carried.push_back(active[j]);
       } else {
         decayed.push_back(j);
@@ -187,7 +199,8 @@ class SceneCertifier final : public AttractorCertifier {
     const ModalSubsystem sub(*modal_, p_, carried);
     const Eigen::VectorXd xc = sub.restrict(x);
     if (!screened(sub, p_, t, xc, record)) return false;
-    const Quadrature integrands = orbit_integrands(&sub);
+    const Quadrature integrands =
+        orbit_integrands([&sub](double s, std::span<const double> z) { return sub.sigma(s, z); });
     const PeriodicRefinement ref = refine_periodic_orbit(sub, p_, t, xc, o_.refinement, integrands);
     record.work += ref.work;
     if (!ref.converged) {
@@ -220,7 +233,7 @@ class SceneCertifier final : public AttractorCertifier {
     // x* to x* + deviation_sum, by a difference with its step capped where the linearisation holds).
     double approach = 0;
     const double y_norm = ref.deviation_sum.norm();
-    if (!decayed.empty() && y_norm > 0) {
+    if (y_norm > 0) {
       const double s = std::min(1.0, kDifferenceStep / y_norm);
       const PeriodRun run = run_period(sub, p_, t, ref.x + s * ref.deviation_sum, P, o_.refinement.plain, integrands);
       record.work += run.work;
@@ -249,6 +262,7 @@ class SceneCertifier final : public AttractorCertifier {
       if (std::find(carried.begin(), carried.end(), active[j]) != carried.end())
         jump.y[5 + j] = lab[static_cast<std::size_t>(5 + active[j] - 3)];
     jump.Psi_advance = -2 * kPi * std::round(ref.integrals[0] / (2 * kPi)) * k;
+    record.sigma_integral = k * ref.integrals[1] + approach;
     return true;
   }
 
@@ -260,7 +274,10 @@ class SceneCertifier final : public AttractorCertifier {
     }
     const Eigen::VectorXd x = Eigen::Map<const Eigen::VectorXd>(y.data(), 3);
     if (!screened(*reduced_, p_, t, x, record)) return false;
-    const PeriodicRefinement ref = refine_periodic_orbit(*reduced_, p_, t, x, o_.refinement, orbit_integrands(nullptr));
+    const ReducedModel& model = reduced_->model(p_);
+    const PeriodicRefinement ref = refine_periodic_orbit(
+        *reduced_, p_, t, x, o_.refinement,
+        orbit_integrands([&model](double s, std::span<const double> z) { return model.sigma(s, z); }));
     record.work += ref.work;
     if (!ref.converged) {
       backoff();
@@ -270,12 +287,15 @@ class SceneCertifier final : public AttractorCertifier {
     jump.t = t + k * o_.refinement.period;
     jump.y.assign(ref.x.data(), ref.x.data() + 3);
     jump.Psi_advance = -2 * kPi * std::round(ref.integrals[0] / (2 * kPi)) * k;
+    record.sigma_integral = k * ref.integrals[1];  // first order in the distance, as the state
     return true;
   }
 
   Scene scene_;
   EarlyTerminationOptions o_;
   double tolerance_ = 0;
+  double radius_ = 0;         // the linearisation radius used: max_distance, at most sqrt(tolerance_)
+  double screen_radius_ = 0;  // the one-period defect that lets a refinement go ahead
   double next_ = 0;
   double attempt_t_ = 0, last_t_ = 0, last_defect_ = 0;
   std::optional<ModalForcedSystem> modal_;

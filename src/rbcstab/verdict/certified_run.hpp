@@ -14,7 +14,11 @@
 //  - every nontrivial Floquet multiplier of the refined orbit, and exp(2 pi <Upsilon_l(sigma)>) of every
 //    decayed mode, below exp(-min_rate 2 pi) by more than its error bound (certify, continuation.hpp): a
 //    near-neutral direction (|Upsilon_l| small, a multiplier near 1) gives no certificate;
-//  - the linear decay bound |M^k| |x - x*| after the k skipped periods below the state tolerance.
+//  - the linear decay bound |M^k| |x - x*| after the k skipped periods below the state tolerance;
+//  - the distance (decayed modes included) below sqrt(state tolerance) as well: the skip is exact to first order
+//    in it, so its second-order error (a decayed mode's area acting on sigma, the curvature along the approach)
+//    stays within the state tolerance and the outputs converge with rtol. The refined orbit's residual and its
+//    period map follow the state tolerance too.
 // The resumed state is the refined orbit's (scaled to the area the decayed modes leave), and each decayed
 // mode's ln Delta_l advanced by 2 k 2 pi Upsilon_l(<sigma>) over the orbit: exact to first order, so Delta_l(T)
 // of a decayed mode keeps its relative accuracy.
@@ -34,7 +38,9 @@ namespace rbcstab {
 struct EarlyTerminationOptions {
   // Slowest decay rate a certificate accepts: every multiplier |mu| + error <= exp(-min_rate period).
   double min_rate = 1e-3;
-  double max_distance = 1e-3;      // linearisation radius |x - x*| (|x| = 1), decayed modes included
+  // Linearisation radius |x - x*| (|x| = 1), decayed modes included; the radius used is at most
+  // sqrt(state tolerance), so that the skip's second-order error stays below that tolerance.
+  double max_distance = 1e-3;
   double state_tolerance = 0;      // decay bound at the resume time; 0: the run's rtol / 10 (the factor 10
                                    // covers growth within a period, which the bound at whole periods misses)
   double first_attempt = 4 * kPi;  // no attempt before this time
@@ -52,7 +58,7 @@ SimulationResult simulate_certified(const ValidScene& scene, const SimulationOpt
                                     const EarlyTerminationOptions& early = {});
 
 // One scene file run as every front end runs it (simulate, summary, Python): the checked automatic L
-// (simulate_truncated, whose candidate runs to T), then the run at the L kept, certified (simulate_certified).
+// (simulate_truncated), the candidate and then the run at the L kept both certified (simulate_certified).
 // Sets file.scene.L, L_reason and truncation_check as simulate_truncated does.
 SimulationResult simulate_scene(SceneFile& file, const SimulationOptions& options,
                                 const ReducedTransient* transient = nullptr);

@@ -132,12 +132,13 @@ class Composer {
   // The named scenes (and, with companions, each one's reduced companion after them) run to T in parallel.
   std::vector<Line> lines(const std::vector<std::string>& names, bool companions = false) {
     std::vector<Line> out;
+    // Built member by member: GCC 12 warns (maybe-uninitialized, a false positive) on {file, {}, {}}.
     for (const auto& n : names) {
-      out.push_back({scene(n), {}, {}});
+      out.emplace_back().file = scene(n);
       if (companions) {
-        Line c{out.back().file, {}, {}};
-        c.file.scene = reduced_scene(c.file.scene);
-        out.push_back(c);
+        SceneFile c = out.back().file;
+        c.scene = reduced_scene(c.scene);
+        out.emplace_back().file = std::move(c);
       }
     }
     parallel_for(out.size(), threads_, [&](std::size_t k) {
