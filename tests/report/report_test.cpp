@@ -143,9 +143,11 @@ void check_trajectories(const Built& b) {
   std::vector<std::string> header;
   const auto rows = read_csv_rows(parent_ / "out" / "trajectory.csv", &header);
   ASSERT_EQ(rows.size(), again.trajectory.t.size());
-  ASSERT_EQ(header.size(), std::size_t(1 + 3 + 3));  // t, Delta_2..4, sigma, r, Psi
+  ASSERT_EQ(header.size(), std::size_t(1 + 3 + 3 + 1));  // t, Delta_2..4, sigma, r, Psi, integrated
   for (std::size_t k = 0; k < rows.size(); ++k) {
     ASSERT_EQ(rows[k].size(), header.size());
+    ASSERT_EQ(rows[k][7], again.trajectory.integrated[k] ? 1.0 : 0.0);
+    if (!again.trajectory.integrated[k]) continue;  // a skipped sample: its fields are empty
     EXPECT_EQ(rows[k][0], again.trajectory.t[k]);
     for (std::size_t j = 0; j < 3; ++j) EXPECT_EQ(rows[k][1 + j], again.trajectory.Delta_l[k][j]);
     EXPECT_EQ(rows[k][4], again.trajectory.sigma[k]);
@@ -159,7 +161,8 @@ void check_trajectories(const Built& b) {
   const auto rrows = read_csv_rows(parent_ / "out" / "reduced_trajectory.csv");
   ASSERT_EQ(rrows.size(), red.trajectory.t.size());
   for (std::size_t k = 0; k < rrows.size(); ++k) {
-    ASSERT_EQ(rrows[k].size(), 5u);  // t, Delta_2, sigma, r, Psi
+    ASSERT_EQ(rrows[k].size(), 6u);  // t, Delta_2, sigma, r, Psi, integrated
+    if (!red.trajectory.integrated[k]) continue;
     EXPECT_EQ(rrows[k][2], red.trajectory.sigma[k]);
     EXPECT_EQ(rrows[k][3], red.trajectory.r[k]);
     EXPECT_EQ(rrows[k][4], red.trajectory.Psi[k]);
