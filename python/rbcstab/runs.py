@@ -2,6 +2,7 @@
 import html
 
 from . import _args, _rbcstab, _tables
+from .progress import progress_bar
 
 _UNSET = object()
 
@@ -122,20 +123,26 @@ class Simulation:
         return ax
 
 
-def simulate(scene, model=None, stepper=None, rtol=None, atol=None, t_eval=None, dense_output=False):
+def simulate(scene, model=None, stepper=None, rtol=None, atol=None, t_eval=None, dense_output=False, progress=False):
     """Integrates the scene (rbcstab simulate). model ('auto', 'full', 'modal', 'reduced'), stepper, rtol and
     atol override the scene's (whose defaults are 'auto', 'rk8pd', 1e-8, 1e-12). t_eval: the sample times
     (finite, increasing, in [0, T]; default the scene's grid 0, dt, ..., T), at which the integrator stops.
     dense_output=True: ``run.sol(t)`` gives the observables at any t (else ``run.sol`` is None). The run may stop early on a
     certified attractor (``terminated_at``, ``early_termination``; the skipped samples are NaN with
     ``integrated`` False);
-    ``Scene(full_horizon=True)`` integrates to T. Ctrl-C stops it (KeyboardInterrupt); the GIL is released
-    while it runs."""
+    ``Scene(full_horizon=True)`` integrates to T. progress: True (a bar of the time integrated, t of T, in the
+    time unit 1/shear rate), a callable f(done, total, eta) or a tqdm bar. Ctrl-C stops it (KeyboardInterrupt);
+    the GIL is released while it runs."""
     scene = _scene_with(scene, model=model, stepper=stepper, rtol=rtol, atol=atol)
     times = [] if t_eval is None else _args.times("t_eval", t_eval, ndim=1).tolist()
     if t_eval is not None and not times:
         raise ValueError("t_eval is empty: give at least one time in [0, T], or None for the scene's grid")
-    data, arrays, text = _rbcstab.simulate(scene, times, _args.flag("dense_output", dense_output))
+    bar = progress_bar(progress, "rbcstab simulate", "time units")
+    if bar is None:
+        data, arrays, text = _rbcstab.simulate(scene, times, _args.flag("dense_output", dense_output))
+    else:
+        with bar:
+            data, arrays, text = _rbcstab.simulate(scene, times, _args.flag("dense_output", dense_output), bar)
     return Simulation(data, arrays, text)
 
 

@@ -36,15 +36,19 @@ SceneFile interruptible(const py::handle& scene) {
   return f;
 }
 
-py::tuple simulate_file(const py::handle& scene, std::vector<double> t_eval, bool dense_output) {
+py::tuple simulate_file(const py::handle& scene, std::vector<double> t_eval, bool dense_output,
+                        const py::object& progress) {
   SceneFile f = interruptible(scene);
   f.options.t_eval = std::move(t_eval);
   f.options.dense_output = dense_output;
+  const PythonProgress time(progress);  // t of T, after every accepted step
+  f.options.on_progress = time.callback();
   SimulationResult r;
   {
     py::gil_scoped_release release;
     r = simulate_scene(f, f.options);
   }
+  time.finish();
   const nlohmann::json j = simulation_json(f, r);
   py::dict arrays;
   arrays["Delta"] = Delta_matrix(r.trajectory, r.L);
@@ -145,7 +149,7 @@ void bind_runs(py::module_& m) {
                                s[2].cast<std::vector<double>>(), s[3].cast<std::vector<std::size_t>>());
           }));
   m.def("simulate", &simulate_file, py::arg("scene"), py::arg("t_eval") = std::vector<double>{},
-        py::arg("dense_output") = false,
+        py::arg("dense_output") = false, py::arg("progress") = py::none(),
         "(json dict, arrays dict, text): rbcstab simulate --json, the trajectory, the CLI's text; t_eval: the output "
         "grid (empty: the scene's); dense_output: arrays['dense'], a DenseOutput.");
   m.def("thresholds", &thresholds_scene, py::arg("scene"), py::arg("exact_C_star") = false,

@@ -145,3 +145,14 @@ def test_t_eval_bad_values_name_it():
     run = rbcstab.simulate(scene, dense_output=True)
     with pytest.raises(ValueError, match="t = 25"):
         run.sol(25.0)
+
+
+def test_simulate_progress_counts_time_to_T():
+    # t of T after the accepted steps, throttled; the final report is the end of the run: T.
+    for scene in (rbcstab.Scene(T=60.0), rbcstab.Scene(T=60.0, full_horizon=True)):
+        calls = []
+        run = rbcstab.simulate(scene, progress=lambda done, total, eta: calls.append((done, total)))
+        assert calls and calls[-1] == (scene.T, scene.T) and run.t[-1] == scene.T
+        assert all(0 <= d <= scene.T for d, _ in calls)
+    with pytest.raises(TypeError, match="progress"):
+        rbcstab.simulate(rbcstab.Scene(T=1.0), progress="yes")
