@@ -2,6 +2,7 @@
 import html
 
 from . import _args, _rbcstab, _tables
+from ._drawing import drawing_module
 from .progress import progress_bar
 
 _UNSET = object()
@@ -114,8 +115,12 @@ class Simulation:
             ax.plot(self.t, self.sigma, label=r"$\sigma$")
             ax.set_ylabel(r"$\sigma$")
         else:
-            for l in modes if modes is not None else self.ls:
+            shown = list(modes if modes is not None else self.ls)
+            for l in shown:
                 ax.semilogy(self.t, self.Delta[:, l - 2], label=rf"$\Delta_{{{l}}}$")
+            limits = drawing_module("axis_rules").excess_area_limits([self.Delta[:, l - 2] for l in shown])
+            if limits:  # the report's rule: decayed modes leave the axis instead of stretching it to 1e-100
+                ax.set_ylim(*limits)
             ax.set_ylabel(r"$\Delta_l$")
         ax.set_xlabel(r"$t\dot\gamma$")
         ax.set_title(self._data["scene"])

@@ -156,3 +156,19 @@ def test_simulate_progress_counts_time_to_T():
         assert all(0 <= d <= scene.T for d, _ in calls)
     with pytest.raises(TypeError, match="progress"):
         rbcstab.simulate(rbcstab.Scene(T=1.0), progress="yes")
+
+
+def test_plot_keeps_the_log_axis_to_the_data_that_matter():
+    # The Fig. 3 run's l >= 4 modes decay by dozens of decades: autoscaled, the axis would reach their floor and
+    # squeeze Delta_2, Delta_3 into a few pixels. The report's rule (axis_rules.py) keeps 12 decades below the top.
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    run = rbcstab.simulate(rbcstab.Scene(L=6))
+    finite = run.Delta[np.isfinite(run.Delta) & (run.Delta > 0)]
+    assert finite.min() < 1e-12 * finite.max()  # the oracle: the data do span more than the axis will
+    fig, ax = plt.subplots()
+    run.plot(ax=ax)
+    bottom, top = ax.get_ylim()
+    assert bottom >= 1e-12 * finite.max() * (1 - 1e-12) and top == pytest.approx(3 * finite.max())
+    plt.close(fig)

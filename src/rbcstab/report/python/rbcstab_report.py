@@ -22,6 +22,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib import colors as mcolors  # noqa: E402
+from axis_rules import excess_area_limits  # noqa: E402 (beside this script, on sys.path)
 from phase_draw import draw_phase_diagram, greys  # noqa: E402 (beside this script, on sys.path)
 
 DPI = 100
@@ -132,11 +133,9 @@ def plot_excess_areas(trajectory_csv, out, size_px=(900, 600), title=None):
         ax.plot(data["t"], positive(data[key]), color=cols[k], ls=LINESTYLES[k % len(LINESTYLES)],
                 lw=2.0 if l == 2 else 1.5, label=rf"$\Delta_{{{l}}}$")
     ax.set_yscale("log")
-    # Decayed modes fall by hundreds of decades: keep the axis to 1e-4 below the smallest start.
-    start = [data[key][0] for _, key in modes if data[key] and data[key][0] > 0]
-    top = max([v for _, key in modes for v in data[key] if math.isfinite(v)] + [1e-300])
-    if start:
-        ax.set_ylim(max(min(start) * 1e-4, top * 1e-12), top * 3)
+    limits = excess_area_limits([data[key] for _, key in modes])
+    if limits:
+        ax.set_ylim(*limits)
     ax.set_xlabel("$t$")
     ax.set_ylabel(r"$\Delta_l(t)$")
     ax.legend(ncol=2 if len(modes) > 5 else 1, loc="best")
