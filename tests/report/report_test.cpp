@@ -117,6 +117,15 @@ void check_figures(const Built& b) {
   // Every drawn file is linked from index.html and README.md.
   const std::string html = read_file((out / "index.html").string());
   const std::string md = read_file((out / "README.md").string());
+  std::size_t vectors = 0;
+  for (const auto& d : drawn) {
+    if (!d.contains("svg")) continue;  // the shaded shape and its animation frames: PNG only
+    const std::string svg = d.at("svg");
+    EXPECT_NE(read_file((out / svg).string()).find("<svg"), std::string::npos) << svg;
+    EXPECT_NE(html.find("<a href=\"" + svg + "\""), std::string::npos) << svg;  // a click opens it
+    ++vectors;
+  }
+  EXPECT_EQ(vectors, 3u);  // Figs. 2 and 3: reduced dynamics, excess areas, tension
   for (const auto& d : drawn) {
     const std::string file = d.at("file");
     if (file.ends_with(".png")) {

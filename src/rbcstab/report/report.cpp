@@ -310,7 +310,10 @@ void draw_and_publish(const ReportOptions& o, const nlohmann::json& manifest, co
     throw ReportError("the plotting script failed (exit " + std::to_string(rc) + "): " + detail::log_tail(log, 1500));
   files.push_back("plot.log");
   const nlohmann::json drawn = nlohmann::json::parse(read_file((tmp / "figures.json").string()));
-  for (const auto& f : drawn) files.push_back(f.at("file").get<std::string>());
+  for (const auto& f : drawn) {
+    files.push_back(f.at("file").get<std::string>());
+    if (f.contains("svg")) files.push_back(f.at("svg").get<std::string>());
+  }
   files.push_back("figures.json");
   for (const auto& [name, text] : {std::pair{"README.md", detail::report_markdown(manifest, drawn)},
                                    std::pair{"index.html", detail::report_html(manifest, drawn)}}) {

@@ -242,8 +242,11 @@ std::string report_html(const nlohmann::json& m, const nlohmann::json& drawn) {
     const std::string file = d.at("file");
     const nlohmann::json* f = figure_of(m, file);
     if (!f) continue;
-    h << "<figure><img src=\"" << html_escape(file) << "\" alt=\"" << html_escape(f->at("kind").get<std::string>())
-      << "\"><figcaption>" << html_escape(f->at("caption").get<std::string>()) << ". Data:";
+    // A click opens the figure whole: its SVG where there is one (it scales without blur), else the PNG.
+    const std::string whole = d.contains("svg") ? d.at("svg").get<std::string>() : file;
+    h << "<figure><a href=\"" << html_escape(whole) << "\" title=\"open the figure whole\"><img src=\""
+      << html_escape(file) << "\" alt=\"" << html_escape(f->at("kind").get<std::string>()) << "\"></a><figcaption>"
+      << html_escape(f->at("caption").get<std::string>()) << ". Data:";
     for (const auto& x : f->at("data"))
       h << " <a href=\"" << html_escape(x.get<std::string>()) << "\">" << html_escape(x.get<std::string>()) << "</a>";
     if (f->contains("gif"))

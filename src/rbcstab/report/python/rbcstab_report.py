@@ -66,10 +66,17 @@ def new_figure(size_px, ncols=1, **kw):
     return fig, axes
 
 
-def save(fig, out, size_px):
+def save(fig, out, size_px, svg=True):
+    """The PNG at size_px and, for line and map figures (svg=True), an SVG beside it that the page opens on a click
+    (it scales without blur). Shaded 3-D surfaces stay PNG only: as vectors they would be megabytes of polygons."""
     fig.savefig(out, dpi=DPI)
+    entry = {"file": os.path.basename(out), "size_px": list(size_px)}
+    if svg:
+        vector = os.path.splitext(out)[0] + ".svg"
+        fig.savefig(vector, dpi=DPI, metadata={"Date": None})  # no date inside: the same figure, the same file
+        entry["svg"] = os.path.basename(vector)
     plt.close(fig)
-    return {"file": os.path.basename(out), "size_px": list(size_px)}
+    return entry
 
 
 def positive(values):
@@ -305,7 +312,7 @@ def plot_shape(shape_csv, out, size_px=(750, 750), title=None, elev=25.0, azim=-
         fig.text(0.02, 0.02, rf"drawn as $1 + {k:g}\,(\rho - 1)$: deformation exaggerated $\times{k:g}$", fontsize=10)
     if title:
         fig.suptitle(title, fontsize=11)
-    return save(fig, out, size_px)
+    return save(fig, out, size_px, svg=False)
 
 
 def plot_animation(animation_json, out_png, out_gif=None, size_px=(1500, 375), gif_size_px=(400, 400),
@@ -332,7 +339,7 @@ def plot_animation(animation_json, out_png, out_gif=None, size_px=(1500, 375), g
     note = rf"; deformation exaggerated $\times{gain:g}$" if gain != 1 else ""
     fig.text(0.5, 0.01, rf"viewed from $+z$: flow $x$ to the right, gradient $y$ up; colour: $\rho$ from "
              rf"{norm.vmin:.3f} (dark) to {norm.vmax:.3f} (light){note}", ha="center", fontsize=10)
-    drawn.append(save(fig, out_png, size_px))
+    drawn.append(save(fig, out_png, size_px, svg=False))
     if out_gif:
         try:
             from matplotlib.animation import FuncAnimation, PillowWriter
