@@ -66,9 +66,10 @@ def new_figure(size_px, ncols=1, **kw):
     return fig, axes
 
 
-def save(fig, out, size_px, svg=True):
-    """The PNG at size_px and, for line and map figures (svg=True), an SVG beside it that the page opens on a click
-    (it scales without blur). Shaded 3-D surfaces stay PNG only: as vectors they would be megabytes of polygons."""
+def save(fig, out, size_px, svg=False):
+    """The PNG at size_px and, with svg=True, an SVG beside it that the report's page opens on a click (it scales
+    without blur): the report asks for it on its line and map figures, in its own staging folder. Shaded 3-D
+    surfaces stay PNG only (as vectors, megabytes of polygons); `plot` writes only the file it was asked for."""
     fig.savefig(out, dpi=DPI)
     entry = {"file": os.path.basename(out), "size_px": list(size_px)}
     if svg:
@@ -84,7 +85,7 @@ def positive(values):
 
 
 # ------------------------------------------------------------------------------ Fig. 2: r(t), Psi(t)
-def plot_reduced_dynamics(reduced_csv, full_csv, out, size_px=(1200, 450), title=None, full_label=None):
+def plot_reduced_dynamics(reduced_csv, full_csv, out, size_px=(1200, 450), title=None, full_label=None, svg=False):
     """(a) r(t) and (b) Psi(t): the reduced system (solid) and the l = 2 block of the full run (dashed).
     With only full_csv (a run at the reduced level) it is drawn solid, labelled full_label."""
     fig, (ax_r, ax_p) = new_figure(size_px, ncols=2)
@@ -121,7 +122,7 @@ def plot_reduced_dynamics(reduced_csv, full_csv, out, size_px=(1200, 450), title
     ax_r.legend(loc="best")
     if title:
         fig.suptitle(title, fontsize=11)
-    return save(fig, out, size_px)
+    return save(fig, out, size_px, svg)
 
 
 # ------------------------------------------------------------------------------- Fig. 3b/c: Delta_l(t)
@@ -129,7 +130,7 @@ def mode_columns(data):
     return sorted((int(k.split("_")[1]), k) for k in data if k.startswith("Delta_"))
 
 
-def plot_excess_areas(trajectory_csv, out, size_px=(900, 600), title=None):
+def plot_excess_areas(trajectory_csv, out, size_px=(900, 600), title=None, svg=False):
     """Delta_l(t), l = 2..L, on a log axis (the perturbations start at delta ~ 1e-3 or smaller)."""
     data = read_csv(trajectory_csv)
     modes = mode_columns(data)
@@ -148,12 +149,12 @@ def plot_excess_areas(trajectory_csv, out, size_px=(900, 600), title=None):
     ax.legend(ncol=2 if len(modes) > 5 else 1, loc="best")
     if title:
         ax.set_title(title, fontsize=11)
-    return save(fig, out, size_px)
+    return save(fig, out, size_px, svg)
 
 
 # ---------------------------------------------------------------------------- Fig. 3d/e: sigma(t)
 def plot_tension(trajectory_csv, thresholds_json, out, reduced_csv=None, size_px=(900, 600), title=None,
-                 modes=None):
+                 modes=None, svg=False):
     """sigma(t) (black), the reduced system's sigma_R(t) (thick grey) and sigma_l^c (dashed, labelled).
 
     modes: the l whose sigma_l^c to draw; default: those inside the plotted tension range, at least l = 3, 4."""
@@ -201,7 +202,7 @@ def plot_tension(trajectory_csv, thresholds_json, out, reduced_csv=None, size_px
     ax.legend(loc="best")
     if title:
         ax.set_title(title, fontsize=11)
-    return save(fig, out, size_px)
+    return save(fig, out, size_px, svg)
 
 
 # --------------------------------------------------------------------------------- shapes (Fig. 6)
@@ -312,7 +313,7 @@ def plot_shape(shape_csv, out, size_px=(750, 750), title=None, elev=25.0, azim=-
         fig.text(0.02, 0.02, rf"drawn as $1 + {k:g}\,(\rho - 1)$: deformation exaggerated $\times{k:g}$", fontsize=10)
     if title:
         fig.suptitle(title, fontsize=11)
-    return save(fig, out, size_px, svg=False)
+    return save(fig, out, size_px)
 
 
 def plot_animation(animation_json, out_png, out_gif=None, size_px=(1500, 375), gif_size_px=(400, 400),
@@ -339,7 +340,7 @@ def plot_animation(animation_json, out_png, out_gif=None, size_px=(1500, 375), g
     note = rf"; deformation exaggerated $\times{gain:g}$" if gain != 1 else ""
     fig.text(0.5, 0.01, rf"viewed from $+z$: flow $x$ to the right, gradient $y$ up; colour: $\rho$ from "
              rf"{norm.vmin:.3f} (dark) to {norm.vmax:.3f} (light){note}", ha="center", fontsize=10)
-    drawn.append(save(fig, out_png, size_px, svg=False))
+    drawn.append(save(fig, out_png, size_px))
     if out_gif:
         try:
             from matplotlib.animation import FuncAnimation, PillowWriter
@@ -373,7 +374,7 @@ def _pick(cols, names, fallback_index=None):
     return keys[fallback_index] if fallback_index is not None and fallback_index < len(keys) else None
 
 
-def plot_phase_diagram(csv_path, out, overlay_json=None, size_px=(900, 750), x=None, y=None, title=None):
+def plot_phase_diagram(csv_path, out, overlay_json=None, size_px=(900, 750), x=None, y=None, title=None, svg=False):
     """Points (x, y) coloured by l_Delta (l_Delta = 2, stable, left white), with curves overlaid.
 
     CSV: the output of `rbcstab diagram` (index,i,j,<x>,<y>,verdict,l_Delta,...), or any CSV with two axis
@@ -390,10 +391,10 @@ def plot_phase_diagram(csv_path, out, overlay_json=None, size_px=(900, 750), x=N
     fig, ax = new_figure(size_px)
     overlay = read_json(overlay_json) if overlay_json else {}
     draw_phase_diagram(ax, d[x], d[y], ld, x, y, overlay.get("curves", []), title=title, labels=overlay.get("axes"))
-    return save(fig, out, size_px)
+    return save(fig, out, size_px, svg)
 
 
-def plot_delta2_comparison(csv_path, out, symbols, size_px=(750, 750), title=None):
+def plot_delta2_comparison(csv_path, out, symbols, size_px=(750, 750), title=None, svg=False):
     """Fig. 6e: theoretical Delta~_2 against the simulated mean Delta-bar_2, a diagonal guide, and (when the
     CSV has an alpha column) an inset of the ratio theory/simulation against ln alpha.
     `symbols`: the parameters' TeX symbols by name (report.json "symbols": the parameter table's).
@@ -434,17 +435,17 @@ def plot_delta2_comparison(csv_path, out, symbols, size_px=(750, 750), title=Non
         ins.tick_params(labelsize=8)
     if title:
         ax.set_title(title, fontsize=11)
-    return save(fig, out, size_px)
+    return save(fig, out, size_px, svg)
 
 
-def plot_bifurcation(spec_json, out, size_px=(900, 675)):
+def plot_bifurcation(spec_json, out, size_px=(900, 675), svg=False):
     """Renders the diagram a PlotSpec describes (`rbcstab plot`'s JSON, format "rbcstab-plot", decided by
     report/bifurcation_plot.cpp) into a PNG: bifurcation_draw.draw_bifurcation on a new figure."""
     from bifurcation_draw import draw_bifurcation  # beside this script, whose folder is on sys.path
 
     fig, ax = new_figure(size_px)
     draw_bifurcation(ax, read_json(spec_json), spec_json)
-    return save(fig, out, size_px)
+    return save(fig, out, size_px, svg)
 
 
 # ---------------------------------------------------------------------------------------- drivers
@@ -461,12 +462,13 @@ def draw_report(folder):
             red = path("reduced_trajectory.csv") if "reduced_trajectory.csv" in data else None
             level = m["summary"]["model"]
             label = ("reduced system ($l=2$ only)" if level == "reduced" else f"{level} run, $l=2$ block")
-            drawn.append(plot_reduced_dynamics(red, path("trajectory.csv"), out, size, title=tag, full_label=label))
+            drawn.append(plot_reduced_dynamics(red, path("trajectory.csv"), out, size, title=tag, full_label=label,
+                                                svg=True))
         elif kind == "excess_areas":
-            drawn.append(plot_excess_areas(path(data[0]), out, size, title=tag))
+            drawn.append(plot_excess_areas(path(data[0]), out, size, title=tag, svg=True))
         elif kind == "tension":
             red = path("reduced_trajectory.csv") if "reduced_trajectory.csv" in data else None
-            drawn.append(plot_tension(path(data[0]), path(data[1]), out, red, size, title=tag))
+            drawn.append(plot_tension(path(data[0]), path(data[1]), out, red, size, title=tag, svg=True))
         elif kind == "shape":
             elev, azim = shape_view(m["shape"].get("in_plane", False))
             drawn.append(plot_shape(path(data[0]), out, size, title=f"{scene['name']}: shape at $t = {f['t']:.4g}$",
@@ -476,11 +478,12 @@ def draw_report(folder):
                                         tuple(f.get("gif_size_px", (400, 400)))))
         elif kind == "phase_diagram":
             drawn.append(plot_phase_diagram(path(data[0]), out, path(data[1]) if len(data) > 1 else None, size,
-                                            title=f.get("title")))
+                                            title=f.get("title"), svg=True))
         elif kind == "delta2_comparison":
-            drawn.append(plot_delta2_comparison(path(data[0]), out, m["symbols"], size, title=f.get("title")))
+            drawn.append(plot_delta2_comparison(path(data[0]), out, m["symbols"], size, title=f.get("title"),
+                                                 svg=True))
         elif kind == "bifurcation":
-            drawn.append(plot_bifurcation(path(data[0]), out, size))
+            drawn.append(plot_bifurcation(path(data[0]), out, size, svg=True))
         else:
             raise ValueError(f"unknown figure kind {kind!r}")
     with open(path("figures.json"), "w") as f:
