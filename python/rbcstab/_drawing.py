@@ -33,8 +33,10 @@ def keep_legends_inside(ax):
     legend = ax.get_legend()
     if legend is None or figure.get_layout_engine() is not None:
         return ax
-    renderer = figure.canvas.get_renderer()
-    box, page = legend.get_window_extent(renderer), figure.bbox
+    get_renderer = getattr(figure.canvas, "get_renderer", None)  # Agg-based canvases (inline, Qt, Tk, files)
+    if get_renderer is None:
+        return ax
+    box, page = legend.get_window_extent(get_renderer()), figure.bbox
     if box.x0 < page.x0 or box.y0 < page.y0 or box.x1 > page.x1 or box.y1 > page.y1:
         figure.set_layout_engine("constrained")
     return ax
