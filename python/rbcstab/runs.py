@@ -92,9 +92,11 @@ class Simulation:
         return list(range(2, self.Delta.shape[1] + 2))
 
     def to_pandas(self):
-        """A DataFrame, one row per sample: t, Delta_2 .. Delta_L, sigma, r, Psi (attrs: scene, model, L, status)."""
+        """A DataFrame, one row per sample: t, Delta_2 .. Delta_L, sigma, r, Psi, integrated (False: a sample a
+        certified early stop skipped, NaN in the other columns); attrs: scene, model, L, status."""
         return _tables.frame([("t", self.t), (("Delta", [f"Delta_{l}" for l in self.ls]), self.Delta),
-                              ("sigma", self.sigma), ("r", self.r), ("Psi", self.Psi)],
+                              ("sigma", self.sigma), ("r", self.r), ("Psi", self.Psi),
+                              ("integrated", self.integrated)],
                              {k: self._data[k] for k in ("scene", "model", "L", "status")})
 
     def __repr__(self):

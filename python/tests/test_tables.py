@@ -20,14 +20,17 @@ def _csv_frame(text):
 
 
 def test_simulation_one_row_per_sample():
-    run = rbcstab.simulate(rbcstab.Scene(T=40.0, L=5))
+    run = rbcstab.simulate(rbcstab.Scene(T=200.0, L=5))  # stops early: some samples are skipped
     df = run.to_pandas()
+    assert not run.integrated.all()
     assert list(df.columns[:1]) == ["t"] and len(df) == len(run.t)
     assert [f"Delta_{l}" for l in run.ls] == [c for c in df.columns if c.startswith("Delta_")]
     for l in run.ls:
         assert np.array_equal(df[f"Delta_{l}"].to_numpy(), run.Delta[:, l - 2], equal_nan=True)
     for name in ("t", "sigma", "r", "Psi"):
         assert np.array_equal(df[name].to_numpy(), getattr(run, name), equal_nan=True), name
+    assert np.array_equal(df["integrated"].to_numpy(), run.integrated)
+    assert df["sigma"][~df["integrated"]].isna().all()  # skipped samples: no number where none was computed
     assert df.attrs["model"] == run.model and df.attrs["L"] == run.L
 
 
