@@ -91,9 +91,8 @@ def _run(call, what, progress, *args):
     run without output raises ContinuationError, a note or an early end is a ContinuationWarning."""
     bar = progress_bar(progress, what, "points")
     try:
-        # The library reports (points, parameter value) as it goes and the final count at the end; the bar counts
-        # points, with no known end.
-        run = call(*args, progress=None if bar is None else lambda points, p: bar(points, 0, 0.0))
+        # The library reports (points, 0, 0) as it goes and the final count at the end: no known end.
+        run = call(*args, progress=bar)
     finally:
         if bar is not None:
             bar.close()

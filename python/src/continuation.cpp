@@ -141,45 +141,27 @@ std::vector<Monitor> monitors_of(Given& g) {
 
 // ---- Ctrl-C and progress while the GIL is released ----
 
-// The engine's stop callback: runs Python's signal handlers (signal_poll: Ctrl-C raises out of the run) and,
-// at most every 0.1 s, calls progress(points, p) under the GIL, points counted by the engine's on_progress (every
-// point stepped to, bound and stop points included; finish() reports the last count). It holds no Python reference (the
-// library copies its options without the GIL): the caller keeps `progress` alive for the run and detach() drops the
-// callbacks from the result.
+// The engine's callbacks while the GIL is released: its stop runs Python's signal handlers (signal_poll: Ctrl-C
+// raises out of the run); its on_progress counts every point stepped to (both directions, every part of the run)
+// and hands the count to a PythonProgress (progress(done, 0, 0): a branch's end is not known in advance), whose
+// finish() reports the last count. The caller keeps `progress` alive for the run; detach() drops the callbacks from
+// the result.
 struct Watch {
-  struct State {
-    PyObject* progress = nullptr;  // borrowed; nullptr: none
-    std::size_t points = 0, reported = 0;
-    double p = 0;
-    Throttle throttle{0.1, true};  // the first point reports at once
-  };
   std::function<void()> poll = signal_poll();
-  std::function<bool(const Eigen::VectorXd&, double)> stop;
-  ProgressCallback point;  // after every point a branch gains (both directions, every part of the run)
-  std::shared_ptr<State> state = std::make_shared<State>();
-  explicit Watch(const py::object& progress) {
-    if (!progress.is_none()) state->progress = progress.ptr();
-    stop = [poll = poll, state = state](const Eigen::VectorXd&, double p) {
+  PythonProgress progress;
+  explicit Watch(const py::object& p) : progress(p) {}
+  void attach(BranchSpec& spec) const {
+    spec.engine.stop = [poll = poll](const Eigen::VectorXd&, double) {
       poll();
-      state->p = p;
-      if (state->progress && state->throttle.due()) {
-        py::gil_scoped_acquire gil;
-        state->reported = state->points;
-        py::handle(state->progress)(state->points, p);
-      }
       return false;
     };
-    point = [state = state](double, double) { ++state->points; };
-  }
-  void attach(BranchSpec& spec) const {
-    spec.engine.stop = stop;
-    spec.engine.on_progress = point;
+    if (ProgressCallback report = progress.callback())
+      spec.engine.on_progress = [report, points = std::make_shared<std::size_t>(0)](double, double) {
+        report(double(++*points), 0);
+      };
     spec.orbit.poll = poll;
   }
-  // After the run, with the GIL: the final count, which the throttle may have held back.
-  void finish() const {
-    if (state->progress && state->points != state->reported) py::handle(state->progress)(state->points, state->p);
-  }
+  void finish() const { progress.finish(); }
 };
 
 BranchSpec& spec_of(ContinuationRun& run) {
