@@ -10,11 +10,13 @@
 #include <cmath>
 #include <optional>
 #include <stdexcept>
+#include <tuple>
 #include <utility>
 
 #include "bindings.hpp"
 #include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/io/experiments.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/report/panels.hpp"
@@ -22,6 +24,7 @@
 #include "rbcstab/sweep/diagram_document.hpp"
 #include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
+#include "rbcstab/verdict/verdict_io.hpp"
 
 namespace rbcstab::python {
 
@@ -363,6 +366,44 @@ py::tuple fig6e_scene(const py::handle& scene, const std::optional<std::vector<d
   return py::make_tuple(to_python(fig6e_json(f, rows)), cols, fig6e_csv(o, rows));
 }
 
+// The physical phase diagram (verdict/physical_map.hpp) as its JSON, with the published observations beside it
+// ("experiments": the shipped data/experiments.csv, or the file given).
+py::object physical_map_scene(const py::handle& scene, double min_viscosity, double max_viscosity,
+                              long long viscosities, double min_rate, double max_rate, long long samples_per_decade,
+                              double rtol, bool onset, bool healthy_spreads,
+                              const std::vector<std::tuple<std::string, double, double, std::string>>& spreads,
+                              long long threads, const std::string& experiments, const py::object& progress) {
+  const SceneFile& f = scene_file(scene);
+  PhysicalMapOptions o;
+  o.min_viscosity = min_viscosity;
+  o.max_viscosity = max_viscosity;
+  o.viscosities = narrow(viscosities, "viscosities");
+  o.min_rate = min_rate;
+  o.max_rate = max_rate;
+  o.samples_per_decade = narrow(samples_per_decade, "samples_per_decade");
+  o.rtol = rtol;
+  o.onset = onset;
+  o.threads = narrow(threads, "threads");
+  if (healthy_spreads) o.spreads = healthy_cell_spreads(f.scene);
+  for (const auto& [key, lo, hi, source] : spreads) o.spreads.push_back({key, lo, hi, source});
+  const std::string path = experiments.empty() ? shipped_observations(executable_path()) : experiments;
+  const std::vector<PublishedObservation> observed =
+      path.empty() ? std::vector<PublishedObservation>{} : read_observations(path);
+  o.validate();
+  o.predictor.integrator.poll = signal_poll();
+  const PythonProgress bar(progress);
+  o.on_progress = bar.callback();
+  nlohmann::json j;
+  {
+    py::gil_scoped_release release;
+    j = to_json(physical_map(f.scene, o));
+  }
+  bar.finish();
+  j["experiments"] = to_json(observed);
+  j["experiments_file"] = path;
+  return to_python(j);
+}
+
 PlaneChoice plane_choice(std::vector<std::string> axes, std::vector<double> x_range, std::vector<double> y_range,
                          std::vector<long long> counts, std::string classifier, std::optional<double> alpha_fixed) {
   return {std::move(axes),   std::move(x_range),    std::move(y_range),
@@ -486,6 +527,12 @@ void bind_sweep(py::module_& m) {
       py::arg("max_step"), py::arg("threads"), py::arg("diagram"), py::arg("diagram_source"),
       py::arg("progress") = py::none(),
       "rbcstab trace: the traced boundary as a _Trace (diagram: a diagram document's JSON text, for the agreement).");
+
+  m.def("physical_map", &physical_map_scene, py::arg("scene"), py::arg("min_viscosity"), py::arg("max_viscosity"),
+        py::arg("viscosities"), py::arg("min_rate"), py::arg("max_rate"), py::arg("samples_per_decade"),
+        py::arg("rtol"), py::arg("onset"), py::arg("healthy_spreads"), py::arg("spreads"), py::arg("threads"),
+        py::arg("experiments"), py::arg("progress") = py::none(),
+        "The physical phase diagram's JSON (verdict/physical_map.hpp) with the observations beside it.");
 
   m.def("fig6e", &fig6e_scene, py::arg("scene"), py::arg("lambdas"), py::arg("B"), py::arg("C"),
         py::arg("progress") = py::none(),

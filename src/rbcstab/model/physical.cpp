@@ -202,6 +202,8 @@ PlausibleRange plausible_range(std::string_view key) {
   return {f.unit, f.min, f.max};
 }
 
+double& physical_value(PhysicalCell& cell, std::string_view key) { return cell.*field_of(key).value; }
+
 bool plausible_bare(std::string_view key, double value) {
   const Field& f = field_of(key);
   return value >= f.min && value <= f.max;

@@ -82,6 +82,9 @@ struct PhysicalCell {
   void validate_complete() const;
 };
 
+// The field of `cell` a key names (SI); throws InvalidArgument for an unknown key.
+double& physical_value(PhysicalCell& cell, std::string_view key);
+
 // The paper's symbols, each from its physical inputs (Sec. II).
 double equivalent_radius(double volume);         // R = (3V/4 pi)^(1/3)
 double excess_area(double area, double volume);  // A/R^2 - 4 pi, R from the volume (Delta; Delta0 from V0)

@@ -148,6 +148,60 @@ nlohmann::json summary_json(const SceneFile& file, const SimulationResult& r, co
   return j;
 }
 
+namespace {
+nlohmann::json crossing_json(const RateCrossing& c, const RateBand& band) {
+  nlohmann::json o = {{"found", c.found}};
+  if (c.found) {
+    o["shear_rate"] = c.rate;
+    o["bracket"] = {c.lo, c.hi};
+  } else {
+    o["reason"] = c.reason;
+  }
+  if (c.l >= 3) o["l"] = c.l;
+  o["band"] = {{"cells", band.cells}, {"found", band.found}};
+  if (band.found > 0) {
+    o["band"]["lo"] = band.lo;
+    o["band"]["hi"] = band.hi;
+    o["band"]["lo_from"] = band.lo_key.empty() ? "nominal" : band.lo_key;
+    o["band"]["hi_from"] = band.hi_key.empty() ? "nominal" : band.hi_key;
+  }
+  return o;
+}
+}  // namespace
+
+nlohmann::json to_json(const PhysicalMap& map) {
+  nlohmann::json cell = nlohmann::json::object();
+  for (const char* key : {"viscosity", "inner_viscosity", "radius", "area", "volume", "stress_free_volume",
+                          "bending_modulus", "shear_modulus"}) {
+    PhysicalCell c = map.cell;
+    if (const double v = physical_value(c, key); !std::isnan(v)) cell[key] = v;
+  }
+  nlohmann::json spreads = nlohmann::json::array();
+  for (const PhysicalSpread& s : map.spreads)
+    spreads.push_back({{"key", s.key}, {"lo", s.lo}, {"hi", s.hi}, {"source", s.source}});
+  nlohmann::json columns = nlohmann::json::array();
+  for (const PhysicalMapColumn& c : map.columns)
+    columns.push_back({{"viscosity", c.viscosity},
+                       {"lambda", c.lambda},
+                       {"Lambda", c.Lambda},
+                       {"tumbling_to_swinging", crossing_json(c.tumbling_to_swinging, c.tumbling_band)},
+                       {"onset_out_of_plane", crossing_json(c.onset[0], c.onset_band[0])},
+                       {"onset_in_plane", crossing_json(c.onset[1], c.onset_band[1])}});
+  nlohmann::json checks = nlohmann::json::array();
+  for (const AssumptionCheck& a : map.assumptions)
+    checks.push_back({{"assumption", a.assumption},
+                      {"quantity", a.quantity},
+                      {"value", a.value},
+                      {"bound", a.bound},
+                      {"holds", a.holds},
+                      {"meaning", a.meaning}});
+  return {{"cell", cell},
+          {"spreads", spreads},
+          {"columns", columns},
+          {"assumptions", checks},
+          {"evaluations", map.evaluations}};
+}
+
 nlohmann::json to_json(const std::vector<ShearRateThreshold>& thresholds) {
   nlohmann::json a = nlohmann::json::array();
   for (const ShearRateThreshold& t : thresholds) {

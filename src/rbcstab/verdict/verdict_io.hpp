@@ -7,6 +7,7 @@
 
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/verdict/physical_map.hpp"
 #include "rbcstab/verdict/predict.hpp"
 
 namespace rbcstab {
@@ -18,6 +19,10 @@ nlohmann::json to_json(const ModePrediction& m);
 // Each orientation's first unstable shear rate: orientation, beta, found, alpha, evaluations, then shear_rate
 // [1/s], bracket, B, C when found (else reason), and l, shape when a mode is named.
 nlohmann::json to_json(const std::vector<ShearRateThreshold>& thresholds);
+// The physical phase diagram: the cell (SI), the spreads, per viscosity [Pa s] lambda, Lambda and each boundary
+// (tumbling_to_swinging, onset_out_of_plane, onset_in_plane: found, shear_rate [1/s], bracket, l or reason; and its
+// band: cells, found, lo, hi, lo_from, hi_from), then the assumption checks.
+nlohmann::json to_json(const PhysicalMap& map);
 
 // The summary of a scene file's run r and its prediction (predict(scene, transient, &r)): the keys of
 // to_json(SimulationResult) (without the trajectory), the truncation, then the analysis.

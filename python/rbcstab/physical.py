@@ -1,0 +1,161 @@
+"""The physical phase diagram: a cell given by its measured properties, its regimes in the plane of the outer
+viscosity (mPa s) and the shear rate (1/s), with bands from the published ranges of its properties and the
+published observations drawn over it (library: verdict/physical_map.hpp; docs/units.md)."""
+
+import json
+import math
+
+import numpy as np
+
+from . import _args, _rbcstab
+from ._drawing import keep_legends_inside
+from .progress import progress_bar
+
+__all__ = ["PhysicalMap", "physical_map"]
+
+_BOUNDARIES = ("tumbling_to_swinging", "onset_out_of_plane", "onset_in_plane")
+
+
+def _range(name, v):
+    try:
+        lo, hi = (float(x) for x in v)
+    except (TypeError, ValueError):
+        raise TypeError(f"{name} must be a pair (min, max) of numbers, not {v!r}") from None
+    return lo, hi
+
+
+def physical_map(scene, viscosity=(1e-3, 5e-2), viscosities=9, shear_rate=(1e-2, 1e5), samples_per_decade=6,
+                 rtol=1e-3, onset=True, spreads="healthy", threads=0, experiments=None, progress=False):
+    """The regimes of a physical scene's cell over outer viscosity x shear rate.
+
+    scene: a Scene with a complete [physical] cell including inner_viscosity (lambda follows eta_ex).
+    viscosity: (min, max) outer viscosity eta_ex in Pa s, > 0; viscosities: how many, log-spaced (1..1000).
+    shear_rate: (min, max) in 1/s, 0 < min < max: the range both searches scan, samples_per_decade (1..100)
+    log-spaced samples, then bisection in ln(shear rate) to hi/lo - 1 <= rtol (1e-12..0.1).
+    Per viscosity: the tumbling -> swinging shear rate of the in-plane cell (reduced dynamics) and, with
+    onset=True, the l >= 3 onset for each rest orientation (the summary's search). spreads: "healthy" (the
+    healthy-cell ranges of docs/units.md for the inputs the cell has), None, or a list of (key, lo, hi[, source])
+    with key a [physical] key (SI) or "Delta"/"Delta0": each boundary's band is its min and max over the cell at
+    each range's ends, one key at a time. experiments: a CSV of observations (default: the shipped
+    data/experiments.csv). threads: 0 = all cores (the result does not depend on it). progress: True, a callable
+    f(done, total, eta) or a tqdm bar, counting cells x viscosities. Ctrl-C raises KeyboardInterrupt.
+    Cost: about 0.1-1 s of CPU per cell and viscosity for the tumbling search; the onset search costs more."""
+    _args.scene(scene)
+    lo_v, hi_v = _range("viscosity", viscosity)
+    lo_r, hi_r = _range("shear_rate", shear_rate)
+    healthy = False
+    extra = []
+    if isinstance(spreads, str):
+        if spreads != "healthy":
+            raise ValueError(f"spreads = {spreads!r}: must be 'healthy', None or a list of (key, lo, hi[, source])")
+        healthy = True
+    elif spreads is not None:
+        for s in spreads:
+            if not isinstance(s, (tuple, list)) or len(s) not in (3, 4):
+                raise TypeError(f"spreads: each item must be (key, lo, hi[, source]), not {s!r}")
+            extra.append((str(s[0]), float(s[1]), float(s[2]), str(s[3]) if len(s) == 4 else ""))
+    args = dict(min_viscosity=lo_v, max_viscosity=hi_v, viscosities=int(viscosities), min_rate=lo_r, max_rate=hi_r,
+                samples_per_decade=int(samples_per_decade), rtol=float(rtol), onset=bool(onset),
+                healthy_spreads=healthy, spreads=extra, threads=int(threads),
+                experiments="" if experiments is None else str(experiments))
+    bar = progress_bar(progress, "rbcstab physical_map", "cells")
+    if bar is None:
+        data = _rbcstab.physical_map(scene, **args)
+    else:
+        with bar:
+            data = _rbcstab.physical_map(scene, progress=bar, **args)
+    return PhysicalMap(data)
+
+
+class PhysicalMap:
+    """The physical phase diagram (``rbcstab.physical_map``). ``viscosity`` (Pa s) and, per boundary name
+    (tumbling_to_swinging, onset_out_of_plane, onset_in_plane), ``rate(name)`` in 1/s (NaN where not found) and
+    ``band(name)`` (lo, hi; NaN where no cell found it); ``assumptions``: where the model's assumptions fail
+    (value, bound, holds, meaning); ``experiments``: the observations drawn over it. ``to_dict()`` is the JSON."""
+
+    def __init__(self, data):
+        self._data = data
+
+    def to_dict(self):
+        return json.loads(json.dumps(self._data))
+
+    @property
+    def viscosity(self):
+        return np.array([c["viscosity"] for c in self._data["columns"]])
+
+    def _check(self, name):
+        if name not in _BOUNDARIES:
+            raise ValueError(f"boundary {name!r}: must be one of {', '.join(_BOUNDARIES)}")
+
+    def rate(self, name):
+        self._check(name)
+        return np.array([c[name]["shear_rate"] if c[name]["found"] else math.nan for c in self._data["columns"]])
+
+    def band(self, name):
+        self._check(name)
+        cols = self._data["columns"]
+        lo = np.array([c[name]["band"]["lo"] if c[name]["band"]["found"] else math.nan for c in cols])
+        hi = np.array([c[name]["band"]["hi"] if c[name]["band"]["found"] else math.nan for c in cols])
+        return lo, hi
+
+    @property
+    def assumptions(self):
+        return [dict(a) for a in self._data["assumptions"]]
+
+    @property
+    def experiments(self):
+        return [dict(e) for e in self._data["experiments"]]
+
+    def __repr__(self):
+        v = self.viscosity * 1e3
+        found = int(np.sum(np.isfinite(self.rate("tumbling_to_swinging"))))
+        failing = [a["assumption"] for a in self._data["assumptions"] if not a["holds"]]
+        return (f"<rbcstab PhysicalMap: {len(v)} viscosities in [{v.min():.3g}, {v.max():.3g}] mPa s, "
+                f"tumbling->swinging found at {found}; assumptions failing: {', '.join(failing) or 'none'}>")
+
+    def plot(self, ax=None, experiments=True, bands=True, title=None):
+        """Outer viscosity (mPa s) against shear rate (1/s), both logarithmic: each boundary where it was found
+        (no line across a viscosity where it was not), its band shaded, the published observations over it
+        (order-of-magnitude statements as a factor-3 band). Returns the Axes."""
+        import matplotlib.pyplot as plt
+
+        if ax is None:
+            _, ax = plt.subplots(figsize=(6.4, 4.8))
+        eta = self.viscosity * 1e3
+        styles = {"tumbling_to_swinging": ("C0", "tumbling \u2192 swinging (in plane)"),
+                  "onset_out_of_plane": ("C3", "l \u2265 3 onset, out of plane"),
+                  "onset_in_plane": ("C1", "l \u2265 3 onset, in plane")}
+        for name, (color, label) in styles.items():
+            rate = self.rate(name)
+            if not np.any(np.isfinite(rate)) and not np.any(np.isfinite(self.band(name)[0])):
+                continue
+            ax.plot(eta, rate, "-o", color=color, ms=3, label=label)
+            if bands:
+                lo, hi = self.band(name)
+                ax.fill_between(eta, lo, hi, color=color, alpha=0.15, lw=0)
+        if experiments:
+            markers = iter("sD^v<>")
+            for e in self._data["experiments"]:
+                label = f"{e['source']}: {e['observation']}"
+                if e["kind"] == "stress":
+                    x = np.geomspace(eta.min(), eta.max(), 50)
+                    y = e["stress"] / (x * 1e-3)
+                    ax.plot(x, y, "k--", lw=1, label=label)
+                    if e["precision"] == "order":
+                        ax.fill_between(x, y / 3, y * 3, color="k", alpha=0.06, lw=0)
+                else:
+                    x = e["viscosity"] * 1e3
+                    lo, hi = e["shear_rate_lo"], e["shear_rate_hi"]
+                    if e["precision"] == "order":
+                        lo, hi = lo / 3, hi * 3
+                    mid = math.sqrt(lo * hi) if e["kind"] == "rate_range" else e["shear_rate_lo"]
+                    ax.errorbar([x], [mid], yerr=[[mid - lo], [hi - mid]], fmt=next(markers, "o"), color="k",
+                                capsize=3, ms=5, label=label)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("outer viscosity \u03b7_ex [mPa s]")
+        ax.set_ylabel("shear rate \u03b3\u0307 [1/s]")
+        ax.set_title(title or "Physical phase diagram (bands: published ranges of the cell's properties)", fontsize=9)
+        ax.legend(fontsize=7, loc="best")
+        keep_legends_inside(ax.figure)
+        return ax

@@ -1,0 +1,149 @@
+// The physical phase diagram (verdict/physical_map.hpp) against identities of the model's scaling: the reduced
+// flow depends on lambda, Delta, Delta0, C and beta only, so at fixed lambda the tumbling -> swinging boundary sits
+// at one C = eta_ex gamma R / mu: its rate scales as mu/(eta_ex R) exactly.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/verdict/physical_map.hpp"
+
+namespace rbcstab {
+namespace {
+
+// A cell near the perturbative regime (Delta = 1) whose in-plane motion turns from tumbling to swinging within
+// 0.1..1e3 1/s at 25-50 mPa s (Lambda < 1 there: the vesicle limit tank-treads).
+Scene cell(double eta_in = 6e-3) {
+  SceneFile sf = parse_scene(
+      "name = 'cell'\n[physical]\nshear_rate = 10\nviscosity = '25 mPa s'\nradius = '2.8 um'\n"
+      "bending_modulus = '2e-19 J'\nshear_modulus = '6 uN/m'\ninner_viscosity = '" +
+      std::to_string(eta_in * 1e3) + " mPa s'\n[parameters]\nDelta = 1\nDelta0 = 0.5\n");
+  return sf.scene;
+}
+
+PhysicalMapOptions fast(double eta_lo, double eta_hi, int n) {
+  PhysicalMapOptions o;
+  o.min_viscosity = eta_lo;
+  o.max_viscosity = eta_hi;
+  o.viscosities = n;
+  o.min_rate = 0.1;
+  o.max_rate = 1e3;
+  o.samples_per_decade = 3;
+  o.rtol = 1e-4;
+  o.onset = false;
+  o.threads = 2;
+  // The identities below hold for any classifier settings: a shorter regime window keeps the tests fast.
+  o.predictor.transient = 200;
+  o.predictor.window = 400;
+  return o;
+}
+
+// Doubling eta_in and eta_ex together keeps lambda, so the boundary keeps its C: the rate halves.
+TEST(PhysicalMap, TumblingBoundaryKeepsItsStressAtFixedLambda) {
+  const PhysicalMap a = physical_map(cell(6e-3), fast(25e-3, 25e-3, 1));
+  const PhysicalMap b = physical_map(cell(12e-3), fast(50e-3, 50e-3, 1));
+  const RateCrossing& x = a.columns[0].tumbling_to_swinging;
+  const RateCrossing& y = b.columns[0].tumbling_to_swinging;
+  ASSERT_TRUE(x.found) << x.reason;
+  ASSERT_TRUE(y.found) << y.reason;
+  EXPECT_DOUBLE_EQ(a.columns[0].lambda, b.columns[0].lambda);
+  // Each rate is the upper end of a bracket hi/lo - 1 <= rtol = 1e-4: the ratio is 0.5 to about 2e-4.
+  EXPECT_NEAR(y.rate / x.rate, 0.5, 1e-4);
+  // And the bracket is a true bracket: tumbling at lo, not at hi (the crossing is where the regime changes).
+  EXPECT_LT(x.lo, x.rate);
+  EXPECT_LE(x.rate / x.lo - 1, 1e-4);
+}
+
+// A spread in mu moves only C's scale: the band's ends are the nominal rate times mu_end/mu (to the bisection).
+TEST(PhysicalMap, ShearModulusBandScalesTheBoundary) {
+  PhysicalMapOptions o = fast(25e-3, 25e-3, 1);
+  o.spreads = {{"shear_modulus", 3e-6, 12e-6, "test"}};
+  const PhysicalMap m = physical_map(cell(), o);
+  const PhysicalMapColumn& c = m.columns[0];
+  ASSERT_TRUE(c.tumbling_to_swinging.found);
+  EXPECT_EQ(c.tumbling_band.cells, 3);
+  EXPECT_EQ(c.tumbling_band.found, 3);
+  EXPECT_NEAR(c.tumbling_band.lo / c.tumbling_to_swinging.rate, 0.5, 1e-4);
+  EXPECT_NEAR(c.tumbling_band.hi / c.tumbling_to_swinging.rate, 2.0, 4e-4);
+  EXPECT_EQ(c.tumbling_band.lo_key, "shear_modulus = 3e-06");
+  EXPECT_EQ(c.tumbling_band.hi_key, "shear_modulus = 1.2e-05");
+}
+
+// The onset equals the summary's search at the column's viscosity (one search, two callers), and the threads do
+// not change the map.
+TEST(PhysicalMap, OnsetIsTheSummarysSearchAndThreadsDoNotMatter) {
+  PhysicalMapOptions o = fast(1e-3, 2e-3, 2);
+  o.onset = true;
+  o.min_rate = 10;
+  o.max_rate = 1e5;
+  o.rtol = 1e-3;
+  const PhysicalMap m = physical_map(cell(), o);
+  o.threads = 1;
+  const PhysicalMap one = physical_map(cell(), o);
+  ASSERT_EQ(m.columns.size(), 2u);
+  for (std::size_t v = 0; v < 2; ++v) {
+    const PhysicalMapColumn& c = m.columns[v];
+    Scene s = with_physical_value(cell(), "viscosity", c.viscosity);
+    ShearRateSearchOptions search;
+    search.min_rate = 10;
+    search.max_rate = 1e5;
+    search.samples = 13;
+    search.rtol = 1e-3;
+    search.predictor = o.predictor;
+    const auto t = shear_rate_thresholds(s, search);
+    for (int k = 0; k < 2; ++k) {
+      EXPECT_EQ(c.onset[k].found, t[std::size_t(k)].found) << v << " " << k;
+      EXPECT_EQ(c.onset[k].rate, t[std::size_t(k)].shear_rate);
+      EXPECT_EQ(c.onset[k].l, t[std::size_t(k)].l);
+      EXPECT_EQ(one.columns[v].onset[k].rate, c.onset[k].rate);
+    }
+    EXPECT_EQ(one.columns[v].tumbling_to_swinging.rate, c.tumbling_to_swinging.rate);
+  }
+}
+
+TEST(PhysicalMap, AssumptionsSayHowFarOff) {
+  PhysicalMapOptions o = fast(25e-3, 25e-3, 1);
+  const PhysicalMap m = physical_map(cell(), o);
+  ASSERT_EQ(m.assumptions.size(), 3u);
+  EXPECT_EQ(m.assumptions[0].value, 1.0);  // Delta
+  EXPECT_TRUE(m.assumptions[0].holds);
+  const double rate = m.columns[0].tumbling_to_swinging.rate, R = 2.8e-6;
+  EXPECT_NEAR(m.assumptions[1].value, 1000 * rate * R * R / 25e-3, 1e-12 * m.assumptions[1].value);
+  EXPECT_NEAR(m.assumptions[2].value, 25e-3 * rate * R / 6e-6, 1e-12 * m.assumptions[2].value);
+  // A real cell's excess area fails the first check, saying by how much.
+  Scene real = cell();
+  real.parameters.Delta = 4.3;
+  const PhysicalMap r = physical_map(real, o);
+  EXPECT_FALSE(r.assumptions[0].holds);
+  EXPECT_NE(r.assumptions[0].meaning.find("4.3"), std::string::npos);
+}
+
+TEST(PhysicalMap, BadInputNamesTheParameter) {
+  auto thrown_key = [](auto&& f) {
+    try {
+      f();
+    } catch (const InvalidArgument& e) {
+      return e.parameter();
+    }
+    return std::string("nothing thrown");
+  };
+  Scene plain = cell();
+  plain.physical.reset();
+  EXPECT_EQ(thrown_key([&] { physical_map(plain); }), "viscosity");
+  Scene no_inner = cell();
+  no_inner.physical->inner_viscosity = kNotGiven;
+  EXPECT_EQ(thrown_key([&] { physical_map(no_inner); }), "viscosity");
+  PhysicalMapOptions o = fast(25e-3, 25e-3, 1);
+  o.spreads = {{"stiffness", 1, 2, ""}};
+  EXPECT_EQ(thrown_key([&] { physical_map(cell(), o); }), "stiffness");
+  o.spreads = {{"shear_modulus", 2e-6, 1e-6, ""}};
+  EXPECT_EQ(thrown_key([&] { physical_map(cell(), o); }), "shear_modulus");
+  o.spreads = {{"area", 1e-10, 2e-10, ""}};  // this cell has a radius, not an area
+  EXPECT_EQ(thrown_key([&] { physical_map(cell(), o); }), "area");
+  o = fast(25e-3, 1e-3, 2);
+  EXPECT_EQ(thrown_key([&] { physical_map(cell(), o); }), "max_viscosity");
+}
+
+}  // namespace
+}  // namespace rbcstab
