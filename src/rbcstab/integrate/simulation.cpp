@@ -28,15 +28,15 @@ ModeAmplitudes final_amplitudes(const Scene& scene, const SimulationResult& resu
       ->amplitudes(result.t_reached, result.y_final);
 }
 
-std::size_t Trajectory::integrated_count() const {
-  return std::size_t(std::count(integrated.begin(), integrated.end(), true));
+double SkippedSamples::time(std::size_t k) const {
+  return times.empty() ? sampling_time(k, dt) : times[k - first];
 }
 
 std::vector<double> sampling_grid(double T, double dt) {
   std::vector<double> g;
   const auto n = static_cast<std::size_t>(std::floor(T / dt * (1 + 1e-12)));
   g.reserve(n + 2);
-  for (std::size_t k = 0; k <= n; ++k) g.push_back(std::min(T, double(k) * dt));
+  for (std::size_t k = 0; k <= n; ++k) g.push_back(std::min(T, sampling_time(k, dt)));
   if (T - g.back() > 1e-12 * T) g.push_back(T);
   g.back() = T;
   return g;
@@ -215,7 +215,6 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
         res.trajectory.sigma.push_back(o.sigma);
         res.trajectory.r.push_back(o.r());
         res.trajectory.Psi.push_back(psi);
-        res.trajectory.integrated.push_back(true);
       }
     }
     // Only the uniform tail grid feeds the averages: user samples inside the window (dt not a
@@ -285,16 +284,14 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
     Psi += jump.Psi_advance;
     const auto resume_index =
         std::size_t(std::lower_bound(user_grid.begin(), user_grid.end(), jump.t - 1e-12 * scene.T) - user_grid.begin());
-    // The skipped samples: rows of NaN, so that the trajectory keeps the grid and no plot joins across the skip.
-    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-    Trajectory& tr = res.trajectory;
-    for (; options.record_trajectory && user_index < resume_index; ++user_index) {
-      tr.t.push_back(user_grid[user_index]);
-      tr.Delta_l.emplace_back(o0.Delta_l.size(), nan);
-      tr.sigma.push_back(nan);
-      tr.r.push_back(nan);
-      tr.Psi.push_back(nan);
-      tr.integrated.push_back(false);
+    // The skipped samples: described, not stored (Trajectory::skipped), so that a long skip costs nothing.
+    if (options.record_trajectory && user_index < resume_index) {
+      SkippedSamples& gap = res.trajectory.skipped;
+      gap.first = user_index;
+      gap.count = resume_index - user_index;
+      gap.dt = scene.dt;
+      if (!options.t_eval.empty())
+        gap.times.assign(user_grid.begin() + std::ptrdiff_t(user_index), user_grid.begin() + std::ptrdiff_t(resume_index));
     }
     user_index = resume_index;
     const Observation resumed = system->observe(jump.t, jump.y);
