@@ -422,6 +422,45 @@ TEST(CertifiedRun, TrajectoryMasksTheSkippedSpanOfTEval) {
   }
 }
 
+// The automatic L's reduced transient with the certified early stop, against the one integrated to T (the oracle):
+// every checkpoint's int_0^t sigma_R agrees to within the skip's error, the decision and the run are the same, and
+// its work no longer grows with T.
+constexpr double kTransientTolerance = 1e-6;  // TODO measured
+TEST(CertifiedRun, TransientStopsEarlyAndAgreesWithTheFullHorizon) {
+  Scene s;  // the default scene (Fig. 3's material, in plane): its reduced run settles on an attracting orbit
+  s.T = 2000;
+  const TruncationOptions o;
+  const ReducedTransient full = truncation_transient(s, o);
+  const ReducedTransient early = certified_transient(validated(s), o);
+  ASSERT_EQ(early.status, IntegrationStatus::success) << early.reason;
+  ASSERT_EQ(early.t, full.t);
+  EXPECT_EQ(early.t_end, full.t_end);
+  double worst = 0;
+  for (std::size_t k = 0; k < full.t.size(); ++k)
+    worst = std::max(worst, std::abs(early.integral[k] - full.integral[k]) / std::abs(full.integral[k]));
+  EXPECT_LT(worst, kTransientTolerance);
+  EXPECT_EQ(early.integral_end, early.integral.back());
+  EXPECT_LT(5 * early.counters.rhs_evaluations, full.counters.rhs_evaluations);  // it did stop early
+
+  // The decision and everything reported, with the full transient given instead.
+  SceneFile a, b;
+  a.scene = b.scene = s;
+  const SimulationResult ra = simulate_scene(a, a.options), rb = simulate_scene(b, b.options, &full);
+  EXPECT_EQ(a.scene.L, b.scene.L);
+  EXPECT_EQ(a.L_reason, b.L_reason);
+  nlohmann::json ja = simulation_json(a, ra), jb = simulation_json(b, rb);
+  ja.erase("seconds");
+  jb.erase("seconds");
+  EXPECT_EQ(ja, jb);
+
+  // Its work: about the same at T = 1e5 as at T = 2000 (integrated to T it grows 50 times).
+  Scene far = s;
+  far.T = 1e5;
+  const ReducedTransient longer = certified_transient(validated(far), o);
+  ASSERT_EQ(longer.status, IntegrationStatus::success);
+  EXPECT_LT(longer.counters.rhs_evaluations, 2 * early.counters.rhs_evaluations);
+}
+
 // The reduced level (in plane, no perturbation) and the modal level at L = 2 (out of plane: m = 1 content)
 // stop early and match; the full level (stress-free l >= 3 content) never does and says why.
 TEST(CertifiedRun, EveryLevel) {

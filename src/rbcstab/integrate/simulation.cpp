@@ -28,9 +28,7 @@ ModeAmplitudes final_amplitudes(const Scene& scene, const SimulationResult& resu
       ->amplitudes(result.t_reached, result.y_final);
 }
 
-double SkippedSamples::time(std::size_t k) const {
-  return times.empty() ? sampling_time(k, dt) : times[k - first];
-}
+double SkippedSamples::time(std::size_t k) const { return times.empty() ? sampling_time(k, dt) : times[k - first]; }
 
 std::vector<double> sampling_grid(double T, double dt) {
   std::vector<double> g;
@@ -149,16 +147,20 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
   // Output grid, plus the fine grid over the tail window for grid means or the window's start for quadrature
   // means (there the integrator switches to the system with the quadratures). Samples that are not recorded are
   // not integrated to (T is: the state there is reported).
-  const std::vector<double> user_grid = output_grid(scene, options);
+  const std::vector<double> user_grid =
+      options.record_trajectory || !options.t_eval.empty() ? output_grid(scene, options) : std::vector<double>{};
   const double tail_start = std::max(0.0, scene.T - options.tail_window);
   const bool grid_means = options.tail_means == TailMeans::grid;
   const bool quadrature_means = options.tail_means == TailMeans::quadrature;
   std::vector<double> grid = options.record_trajectory ? user_grid : std::vector<double>{};
+  const auto recorded = std::ptrdiff_t(grid.size());
   grid.push_back(scene.T);  // the state there is reported
   if (grid_means)
     for (int k = 0; k <= kTailIntervals; ++k) grid.push_back(tail_start + (scene.T - tail_start) * k / kTailIntervals);
   if (quadrature_means) grid.push_back(tail_start);
-  std::sort(grid.begin(), grid.end());
+  // The output grid is sorted already: sort only the few times added, then merge (linear in the samples).
+  std::sort(grid.begin() + recorded, grid.end());
+  std::inplace_merge(grid.begin(), grid.begin() + recorded, grid.end());
   grid.erase(std::unique(grid.begin(), grid.end(), [&](double a, double b) { return b - a <= 1e-12 * scene.T; }),
              grid.end());
 
@@ -291,7 +293,8 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
       gap.count = resume_index - user_index;
       gap.dt = scene.dt;
       if (!options.t_eval.empty())
-        gap.times.assign(user_grid.begin() + std::ptrdiff_t(user_index), user_grid.begin() + std::ptrdiff_t(resume_index));
+        gap.times.assign(user_grid.begin() + std::ptrdiff_t(user_index),
+                         user_grid.begin() + std::ptrdiff_t(resume_index));
     }
     user_index = resume_index;
     const Observation resumed = system->observe(jump.t, jump.y);

@@ -72,8 +72,8 @@ double trajectory_bytes(const Scene& scene, const SimulationOptions& options);
 // described, not stored (a run to T = 1e7 at dt = 1 skips ~1e7 of them): their times are the grid's.
 struct SkippedSamples {
   std::size_t first = 0, count = 0;
-  double dt = 0;              // the regular grid's spacing: row k at sampling_time(k, dt) (times empty)
-  std::vector<double> times;  // a t_eval grid: the skipped times themselves (the caller's array holds them too)
+  double dt = 0;                     // the regular grid's spacing: row k at sampling_time(k, dt) (times empty)
+  std::vector<double> times;         // a t_eval grid: the skipped times themselves (the caller's array holds them too)
   double time(std::size_t k) const;  // of grid row k in [first, first + count)
 };
 

@@ -34,8 +34,8 @@ std::string simulation_text(const SceneFile& file, const SimulationResult& r) {
     out << "terminated early at t = " << r.early.terminated_at << " on a certified " << r.early.kind
         << " (margin 1 - max |mu| = " << r.early.margin << "), resumed at t = " << r.early.resumed_at
         << (r.trajectory.rows() == 0 ? std::string()
-                                   : ": " + std::to_string(r.trajectory.integrated_count()) + " of " +
-                                         std::to_string(r.trajectory.rows()) + " samples integrated")
+                                     : ": " + std::to_string(r.trajectory.integrated_count()) + " of " +
+                                           std::to_string(r.trajectory.rows()) + " samples integrated")
         << "\n";
   return out.str();
 }
