@@ -373,7 +373,9 @@ TEST(CertifiedRun, TrajectoryMasksTheSkippedSpan) {
     const bool integrated = grid[k] <= r.early.terminated_at || grid[k] >= r.early.resumed_at;
     EXPECT_EQ(tr.integrated(k), integrated) << grid[k];
     EXPECT_EQ(tr.time(k), grid[k]) << k;  // bit for bit, skipped rows included
-    if (integrated) EXPECT_EQ(tr.t[tr.sample(k)], grid[k]) << k;
+    if (integrated) {
+      EXPECT_EQ(tr.t[tr.sample(k)], grid[k]) << k;
+    }
     skipped += integrated ? 0 : 1;
   }
   EXPECT_GT(skipped, 0u);
