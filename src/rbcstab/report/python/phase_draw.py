@@ -1,7 +1,8 @@
 """Draws a phase diagram into a matplotlib Axes: grid points coloured by l_Delta (white: stable) with the overlay
 curves (traced boundaries, the paper's analytic lines) that report/panels.cpp's phase_overlay_json styles; and the
 Fig. 6(e) comparison of the post-instability Delta~2 with the simulated mean. Shared by rbcstab_report.py (the
-report's figures) and the Python package (Diagram.plot, Trace.plot, Fig6eTable.plot), so both draw by the same rules. No backend or rcParams are set here: the caller owns the figure."""
+report's figures) and the Python package (Diagram.plot, Trace.plot, Fig6eTable.plot), so both draw by the same
+rules. No backend or rcParams are set here: the caller owns the figure."""
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.patches import Patch
