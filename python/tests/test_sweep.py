@@ -224,11 +224,11 @@ def test_fig6e_equals_the_cli():
 
 
 def test_fig6e_plot_draws_the_table_on_the_given_axes():
-    # One row per (lambda, B, C); B = 0.5 at lambda = 1 is stable (l_Delta = 2): NaN, not drawn.
-    table = rbcstab.fig6e(rbcstab.Scene(T=60.0, L=4), lambdas=[1.0, 5.0], B=[0.5, 4.0, 8.0], C=[0.04])
+    # One row per (lambda, B, C); B = 0.5 is stable at both lambdas (l_Delta = 2): NaN, not drawn.
+    table = rbcstab.fig6e(rbcstab.Scene(T=60.0, L=4), lambdas=[1.0, 5.0], B=[0.5, 8.0], C=[0.04])
     compared = np.isfinite(table["Delta2_tilde"]) & np.isfinite(table["Delta2_simulated"])
     assert 0 < compared.sum() < len(table)  # the oracle: some rows have a value to draw, some do not
-    fig, (ax, other) = plt.subplots(1, 2)
+    fig, (ax, other, bare) = plt.subplots(1, 3)
     assert table.plot(ax=ax) is ax and not other.collections and not other.lines
     drawn = np.concatenate([c.get_offsets() for c in ax.collections])
     expected = np.column_stack([table["Delta2_simulated"][compared], table["Delta2_tilde"][compared]])
@@ -236,12 +236,10 @@ def test_fig6e_plot_draws_the_table_on_the_given_axes():
     assert len(ax.collections) == len(set(table["lambda"][compared]))  # one marker set per lambda
     assert [line.get_label() for line in ax.lines] == ["diagonal"]  # no line joins the rows
     assert len(ax.child_axes) == 1  # the ratio inset
-    fig2, ax2 = plt.subplots()
-    table.plot(ax=ax2, ratio_inset=False)
-    assert not ax2.child_axes
-    plt.close(fig2)
+    table.plot(ax=bare, ratio_inset=False)
+    assert not bare.child_axes
     with pytest.raises(TypeError, match="ratio_inset"):
-        table.plot(ax=ax, ratio_inset="no")
+        table.plot(ax=bare, ratio_inset="no")
     plt.close(fig)
 
 
