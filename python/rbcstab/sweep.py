@@ -3,7 +3,7 @@ by continuation (``rbcstab trace``) and the Fig. 6e table (``rbcstab post --fig6
 
 Each result's ``to_dict()`` is the document the CLI writes for the same call (``diagram``: its PREFIX.json;
 ``trace``: its PREFIX.json; ``fig6e``: ``post --fig6e --json``), ``save(prefix)`` writes the CLI's two files, and
-``plot(ax=None)`` draws with the report's drawing code (the report's phase-diagram colouring and lines).
+``plot(ax=None)`` draws with the report's drawing code (the report's phase-diagram colouring and lines, its Fig. 6(e)).
 """
 import html
 import json
@@ -463,6 +463,18 @@ class Fig6eTable(_args.Columns):
                                          for v in (self._columns[c][k].item() for c in self._columns)) + "</tr>"
                        for k in range(len(self)))
         return f"<b>rbcstab Fig. 6e table</b><table><tr>{head}</tr>{body}</table>"
+
+    def plot(self, ax=None, ratio_inset=True, title=None):
+        """The report's Fig. 6(e) on ax (default: the current axes): Delta2_tilde (theory) against
+        Delta2_simulated as markers, one marker per lambda, a diagonal guide, and (ratio_inset=False: none) an
+        inset of their ratio against ln alpha. Rows where either is NaN (a stable run, outside the domain) are
+        not drawn, and no line joins the rows. Returns ax."""
+        ax = _axes(ax)
+        c = self._columns
+        symbols = {row["name"]: row["symbol"] for row in _rbcstab.parameter_table()}
+        phase_draw().draw_delta2_comparison(ax, c["Delta2_tilde"], c["Delta2_simulated"], symbols, c["lambda"],
+                                            c["alpha"] if _flag("ratio_inset", ratio_inset) else None, title=title)
+        return keep_legends_inside(ax)
 
 
 def fig6e(scene, lambdas=None, B=None, C=None, progress=False):

@@ -5,6 +5,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <memory>
 
 #include "bindings.hpp"
@@ -19,14 +20,30 @@ namespace rbcstab::python {
 
 namespace {
 
-// Delta_l(t) as a (samples, L - 1) array, column l - 2 (the trajectory keeps one row per sample).
-py::array_t<double> Delta_matrix(const Trajectory& tr, int L) {
-  const py::ssize_t rows = py::ssize_t(tr.t.size()), cols = L - 1;
-  py::array_t<double> out({rows, cols});
-  auto a = out.mutable_unchecked<2>();
-  for (py::ssize_t i = 0; i < rows; ++i)
-    for (py::ssize_t j = 0; j < cols; ++j) a(i, j) = tr.Delta_l[std::size_t(i)][std::size_t(j)];
-  return out;
+// Every row of the output grid (Trajectory::rows), NaN where a certified early stop skipped it: t, sigma, r, Psi,
+// integrated and Delta_l(t) as a (rows, L - 1) array, column l - 2.
+void trajectory_arrays(const Trajectory& tr, int L, py::dict& arrays) {
+  constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+  const py::ssize_t rows = py::ssize_t(tr.rows()), cols = L - 1;
+  py::array_t<double> Delta({rows, cols}), t(rows), sigma(rows), r(rows), Psi(rows);
+  py::array_t<bool> integrated(rows);
+  auto D = Delta.mutable_unchecked<2>();
+  for (py::ssize_t i = 0; i < rows; ++i) {
+    const std::size_t row = std::size_t(i), k = tr.sample(row);
+    const bool in = tr.integrated(row);
+    t.mutable_data()[i] = tr.time(row);
+    integrated.mutable_data()[i] = in;
+    sigma.mutable_data()[i] = in ? tr.sigma[k] : nan;
+    r.mutable_data()[i] = in ? tr.r[k] : nan;
+    Psi.mutable_data()[i] = in ? tr.Psi[k] : nan;
+    for (py::ssize_t j = 0; j < cols; ++j) D(i, j) = in ? tr.Delta_l[k][std::size_t(j)] : nan;
+  }
+  arrays["Delta"] = Delta;
+  arrays["t"] = t;
+  arrays["sigma"] = sigma;
+  arrays["r"] = r;
+  arrays["Psi"] = Psi;
+  arrays["integrated"] = integrated;
 }
 
 // The scene with Ctrl-C wired into its integrator.
@@ -51,15 +68,7 @@ py::tuple simulate_file(const py::handle& scene, std::vector<double> t_eval, boo
   time.finish();
   const nlohmann::json j = simulation_json(f, r);
   py::dict arrays;
-  arrays["Delta"] = Delta_matrix(r.trajectory, r.L);
-  arrays["t"] = own(std::move(r.trajectory.t));
-  arrays["sigma"] = own(std::move(r.trajectory.sigma));
-  arrays["r"] = own(std::move(r.trajectory.r));
-  arrays["Psi"] = own(std::move(r.trajectory.Psi));
-  py::array_t<bool> integrated(py::ssize_t(r.trajectory.integrated.size()));
-  for (std::size_t k = 0; k < r.trajectory.integrated.size(); ++k)
-    integrated.mutable_data()[k] = r.trajectory.integrated[k];
-  arrays["integrated"] = integrated;
+  trajectory_arrays(r.trajectory, r.L, arrays);
   arrays["y_final"] = own(std::move(r.y_final));
   if (dense_output) arrays["dense"] = std::move(r.dense);
   return py::make_tuple(to_python(j), arrays, simulation_text(f, r));

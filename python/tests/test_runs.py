@@ -118,6 +118,43 @@ def test_early_stop_samples_are_masked_not_joined():
     assert np.all((run.t[skipped] > run.terminated_at) & (run.t[skipped] < run.early_termination["resumed_at"]))
     assert np.all(np.isnan(run.sigma[skipped])) and np.all(np.isnan(run.Delta[skipped]))
     assert np.all(np.isfinite(run.sigma[run.integrated])) and np.all(np.isfinite(run.Delta[run.integrated]))
+    np.testing.assert_array_equal(run.t, np.arange(501.0))  # the grid's times, skipped rows included
+
+
+def test_early_stop_arrays_equal_the_cli_csv(tmp_path):
+    """The arrays and the CLI's --trajectory CSV walk the same rows: equal bit for bit (round-trip digits), NaN
+    (empty fields) on the same skipped rows, the same integrated column."""
+    from conftest import _cli_path
+    import subprocess
+    run = rbcstab.simulate(rbcstab.Scene(T=500.0, dt=1.0, L=6))
+    assert not run.integrated.all()
+    csv = tmp_path / "t.csv"
+    subprocess.run([_cli_path(), "simulate", "--T", "500", "--dt", "1", "--L", "6", "--trajectory", str(csv)],
+                   check=True, capture_output=True)
+    rows = np.genfromtxt(csv, delimiter=",", names=True)
+    np.testing.assert_array_equal(rows["t"], run.t)
+    np.testing.assert_array_equal(rows["integrated"].astype(bool), run.integrated)
+    for name in ("sigma", "r", "Psi"):
+        np.testing.assert_array_equal(rows[name], getattr(run, name))
+    for l in run.ls:
+        np.testing.assert_array_equal(rows[f"Delta_{l}"], run.Delta[:, l - 2])
+
+
+def test_plot_draws_on_the_given_axes_and_breaks_at_the_skip():
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    run = rbcstab.simulate(rbcstab.Scene(T=500.0, dt=1.0, L=4))
+    skipped = ~run.integrated
+    assert skipped.any()
+    fig, (ax, other) = plt.subplots(1, 2)
+    for sigma in (False, True):
+        ax.clear()
+        assert run.plot(ax=ax, sigma=sigma) is ax and not other.lines
+        assert ax.lines
+        for line in ax.lines:  # a NaN on every skipped row: matplotlib draws no segment across the span
+            assert np.all(np.isnan(np.asarray(line.get_ydata(), dtype=float)[skipped]))
+    plt.close(fig)
 
 
 def test_t_eval_and_dense_output():

@@ -223,6 +223,34 @@ def test_fig6e_equals_the_cli():
     assert "\n" not in repr(table) and "<table>" in table._repr_html_()
 
 
+def test_fig6e_plot_draws_the_table_on_the_given_axes():
+    # One row per (lambda, B, C); B = 0.5 is stable at both lambdas (l_Delta = 2): NaN, not drawn.
+    table = rbcstab.fig6e(rbcstab.Scene(T=60.0, L=4), lambdas=[1.0, 5.0], B=[0.5, 8.0], C=[0.04])
+    compared = np.isfinite(table["Delta2_tilde"]) & np.isfinite(table["Delta2_simulated"])
+    assert 0 < compared.sum() < len(table)  # the oracle: some rows have a value to draw, some do not
+    fig, (ax, other, bare) = plt.subplots(1, 3)
+    assert table.plot(ax=ax) is ax and not other.collections and not other.lines
+    drawn = np.concatenate([c.get_offsets() for c in ax.collections])
+    expected = np.column_stack([table["Delta2_simulated"][compared], table["Delta2_tilde"][compared]])
+    np.testing.assert_array_equal(np.sort(drawn, axis=0), np.sort(expected, axis=0))
+    assert len(ax.collections) == len(set(table["lambda"][compared]))  # one marker set per lambda
+    assert [line.get_label() for line in ax.lines] == ["diagonal"]  # no line joins the rows
+    assert len(ax.child_axes) == 1  # the ratio inset
+    table.plot(ax=bare, ratio_inset=False)
+    assert not bare.child_axes
+    with pytest.raises(TypeError, match="ratio_inset"):
+        table.plot(ax=bare, ratio_inset="no")
+    plt.close(fig)
+
+
+def test_every_result_plot_takes_ax_first():
+    import inspect
+    for f in (rbcstab.Simulation.plot, rbcstab.Branch.plot, rbcstab.Curve.plot, rbcstab.Diagram.plot,
+              rbcstab.Trace.plot, rbcstab.Fig6eTable.plot, rbcstab.plot_branches):
+        first = list(inspect.signature(f).parameters)[1]  # after self, or plot_branches' branches
+        assert first == "ax" and inspect.signature(f).parameters["ax"].default is None, f.__qualname__
+
+
 def test_progress_plain_text_goes_to_stderr(capsys, monkeypatch):
     monkeypatch.setattr(rbcstab.progress, "_tqdm", lambda: None)
     rbcstab.diagram(rbcstab.Scene(**SCENE), counts=(3, 2), threads=1, progress=True, **PLANE)

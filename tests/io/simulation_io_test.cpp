@@ -30,7 +30,7 @@ TEST(SimulationIo, JsonTextAndCsvReadBackTheRun) {
   std::string line;
   std::size_t rows = 0;
   while (std::getline(in, line)) ++rows;
-  EXPECT_EQ(rows, r.trajectory.t.size() + 1);
+  EXPECT_EQ(rows, r.trajectory.rows() + 1);
 }
 
 }  // namespace

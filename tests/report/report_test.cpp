@@ -151,30 +151,34 @@ void check_trajectories(const Built& b) {
   const SimulationResult again = simulate(scene_.scene, scene_.options);
   std::vector<std::string> header;
   const auto rows = read_csv_rows(parent_ / "out" / "trajectory.csv", &header);
-  ASSERT_EQ(rows.size(), again.trajectory.t.size());
+  const Trajectory& tr = again.trajectory;
+  ASSERT_EQ(rows.size(), tr.rows());
   ASSERT_EQ(header.size(), std::size_t(1 + 3 + 3 + 1));  // t, Delta_2..4, sigma, r, Psi, integrated
-  for (std::size_t k = 0; k < rows.size(); ++k) {
-    ASSERT_EQ(rows[k].size(), header.size());
-    ASSERT_EQ(rows[k][7], again.trajectory.integrated[k] ? 1.0 : 0.0);
-    if (!again.trajectory.integrated[k]) continue;  // a skipped sample: its fields are empty
-    EXPECT_EQ(rows[k][0], again.trajectory.t[k]);
-    for (std::size_t j = 0; j < 3; ++j) EXPECT_EQ(rows[k][1 + j], again.trajectory.Delta_l[k][j]);
-    EXPECT_EQ(rows[k][4], again.trajectory.sigma[k]);
-    EXPECT_EQ(rows[k][5], again.trajectory.r[k]);
-    EXPECT_EQ(rows[k][6], again.trajectory.Psi[k]);
+  for (std::size_t row = 0; row < rows.size(); ++row) {
+    ASSERT_EQ(rows[row].size(), header.size());
+    ASSERT_EQ(rows[row][7], tr.integrated(row) ? 1.0 : 0.0);
+    EXPECT_EQ(rows[row][0], tr.time(row));
+    if (!tr.integrated(row)) continue;  // a skipped sample: its fields are empty
+    const std::size_t k = tr.sample(row);
+    for (std::size_t j = 0; j < 3; ++j) EXPECT_EQ(rows[row][1 + j], tr.Delta_l[k][j]);
+    EXPECT_EQ(rows[row][4], tr.sigma[k]);
+    EXPECT_EQ(rows[row][5], tr.r[k]);
+    EXPECT_EQ(rows[row][6], tr.Psi[k]);
   }
   Scene reduced = scene_.scene;
   reduced.model = ModelLevel::reduced;
   reduced.L = 2;
   const SimulationResult red = simulate(reduced, scene_.options);
   const auto rrows = read_csv_rows(parent_ / "out" / "reduced_trajectory.csv");
-  ASSERT_EQ(rrows.size(), red.trajectory.t.size());
-  for (std::size_t k = 0; k < rrows.size(); ++k) {
-    ASSERT_EQ(rrows[k].size(), 6u);  // t, Delta_2, sigma, r, Psi, integrated
-    if (!red.trajectory.integrated[k]) continue;
-    EXPECT_EQ(rrows[k][2], red.trajectory.sigma[k]);
-    EXPECT_EQ(rrows[k][3], red.trajectory.r[k]);
-    EXPECT_EQ(rrows[k][4], red.trajectory.Psi[k]);
+  const Trajectory& rt = red.trajectory;
+  ASSERT_EQ(rrows.size(), rt.rows());
+  for (std::size_t row = 0; row < rrows.size(); ++row) {
+    ASSERT_EQ(rrows[row].size(), 6u);  // t, Delta_2, sigma, r, Psi, integrated
+    if (!rt.integrated(row)) continue;
+    const std::size_t k = rt.sample(row);
+    EXPECT_EQ(rrows[row][2], rt.sigma[k]);
+    EXPECT_EQ(rrows[row][3], rt.r[k]);
+    EXPECT_EQ(rrows[row][4], rt.Psi[k]);
   }
   // Thresholds behind the sigma_l^c lines.
   const auto th = nlohmann::json::parse(read_file((parent_ / "out" / "thresholds.json").string()));

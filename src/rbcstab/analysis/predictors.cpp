@@ -180,35 +180,44 @@ ReducedTransient reduced_transient(const Scene& scene, double T, int checkpoints
   return reduced_transient(validated(scene), T, checkpoints, options);
 }
 
-ReducedTransient reduced_transient(const ValidScene& valid, double T, int checkpoints,
+ReducedIntegralSystem::ReducedIntegralSystem(const ValidScene& scene)
+    : model_(scene->parameters, initial_state(scene)), with_integral_(model_, tension_integral(model_)) {}
+
+ReducedTransient reduced_integrals(const ValidScene& valid, std::span<const double> times,
                                    const PredictorOptions& options) {
   const Scene& scene = *valid;
   options.validate();
-  require(std::isfinite(T) && T > 0, "T", T, "finite and > 0");
-  require(checkpoints >= 1 && checkpoints <= 10000, "checkpoints", checkpoints, "an integer in [1, 10000]");
-  const ReducedModel reduced(scene.parameters, initial_state(valid));
-  const WithQuadratures sys(reduced, tension_integral(reduced));
+  const ReducedIntegralSystem reduced(valid);
+  const System& sys = reduced.system();
   ReducedTransient tr;
   tr.parameters = scene.parameters;
   tr.beta = scene.beta;
-  tr.T = T;
-  tr.checkpoints = checkpoints;
-  std::vector<double> grid;
-  for (int k = 1; k <= checkpoints; ++k) grid.push_back(T * k / checkpoints);
   auto on_sample = [&](double t, std::span<const double> y) {
     tr.t.push_back(t);
     tr.integral.push_back(y[3]);
   };
-  const IntegrationResult res = integrate(sys, sys.initial_state(), 0.0, grid, options.integrator, on_sample);
+  const IntegrationResult res = integrate(sys, sys.initial_state(), 0.0, times, options.integrator, on_sample);
   tr.status = res.status;
   tr.reason = res.reason;
   tr.counters = res.counters;
-  if (res.status == IntegrationStatus::success) {
+  tr.t_end = res.t_reached;
+  tr.integral_end = res.y.size() > 3 ? res.y[3] : 0.0;
+  return tr;
+}
+
+ReducedTransient reduced_transient(const ValidScene& valid, double T, int checkpoints,
+                                   const PredictorOptions& options) {
+  options.validate();
+  require(std::isfinite(T) && T > 0, "T", T, "finite and > 0");
+  require(checkpoints >= 1 && checkpoints <= 10000, "checkpoints", checkpoints, "an integer in [1, 10000]");
+  std::vector<double> grid;
+  for (int k = 1; k <= checkpoints; ++k) grid.push_back(T * k / checkpoints);
+  ReducedTransient tr = reduced_integrals(valid, grid, options);
+  tr.T = T;
+  tr.checkpoints = checkpoints;
+  if (tr.status == IntegrationStatus::success) {
     tr.t_end = T;
     tr.integral_end = tr.integral.back();
-  } else {
-    tr.t_end = res.t_reached;
-    tr.integral_end = res.y.size() > 3 ? res.y[3] : 0.0;
   }
   return tr;
 }

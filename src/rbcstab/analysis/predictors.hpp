@@ -8,12 +8,14 @@
 //  - the regime of the reduced (ellipsoidal) dynamics: rolling, tank-treading, swinging, oscillating out of plane or
 //    tumbling.
 #include <array>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "rbcstab/analysis/quantity.hpp"
 #include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/integrate/integrator.hpp"
+#include "rbcstab/integrate/quadrature.hpp"
 #include "rbcstab/model/scene.hpp"
 
 namespace rbcstab {
@@ -63,6 +65,22 @@ struct ReducedTransient {
 ReducedTransient reduced_transient(const ValidScene& scene, double T, int checkpoints = 1,
                                    const PredictorOptions& options = {});
 ReducedTransient reduced_transient(const Scene& scene, double T, int checkpoints = 1,
+                                   const PredictorOptions& options = {});
+// The system of that run: the scene's ReducedModel with int_0^t sigma_R appended as state 3.
+class ReducedIntegralSystem {
+ public:
+  explicit ReducedIntegralSystem(const ValidScene& scene);
+  ReducedIntegralSystem(const ReducedIntegralSystem&) = delete;  // the quadrature refers to model_
+  ReducedIntegralSystem& operator=(const ReducedIntegralSystem&) = delete;
+  const System& system() const { return with_integral_; }
+
+ private:
+  ReducedModel model_;
+  WithQuadratures with_integral_;
+};
+// The run behind it, stopped at `times` (increasing, in (0, ...)): t and integral at each time reached, t_end and
+// integral_end where it ended, status and counters; T and checkpoints are left to the caller.
+ReducedTransient reduced_integrals(const ValidScene& scene, std::span<const double> times,
                                    const PredictorOptions& options = {});
 
 // The transient of a scene that differs from the transient's only in B, without a run: the reduced flow holds no B

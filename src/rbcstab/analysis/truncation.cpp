@@ -136,7 +136,8 @@ TruncationChoice choose_from_transient(const ValidScene& valid, const ReducedTra
 }
 
 TruncationDecision resolve_valid(const ValidScene& valid, Origin L_origin, TruncationUse use,
-                                 const TruncationOptions& options, const ReducedTransient* transient) {
+                                 const TruncationOptions& options, const ReducedTransient* transient,
+                                 const TransientRunner& transient_run = {}) {
   const Scene& scene = *valid;
   TruncationDecision d;
   d.L = scene.L;
@@ -164,7 +165,7 @@ TruncationDecision resolve_valid(const ValidScene& valid, Origin L_origin, Trunc
       o.L_max = scene.L;
       o.validate();
       std::optional<ReducedTransient> own;
-      if (!transient) own = reduced_transient(valid, scene.T, o.checkpoints, o.predictor);
+      if (!transient) own = transient_run ? transient_run(valid, o) : truncation_transient(valid, o);
       const TruncationChoice c = choose_from_transient(valid, transient ? *transient : *own, o);
       d.L = c.L;
       d.reason = c.reason;
@@ -495,10 +496,11 @@ CheckedRun check_candidate(const ValidScene& valid, int L_candidate, const Simul
 // file.scene.L, L_reason and truncation_check. Returns the candidate's run when it passed (the run at file.scene.L).
 std::optional<SimulationResult> decide_simulation(SceneFile& file, const ValidScene& valid,
                                                   const SimulationOptions& options, const ReducedTransient* transient,
-                                                  const SceneRunner& run) {
+                                                  const SceneRunner& run, const TransientRunner& transient_run) {
   // Without a check d.L is the scene's L, and with one the candidate (the scene at d.L) is validated_at_L for its
   // run, so neither outcome needs another check.
-  const TruncationDecision d = resolve_valid(valid, file.origin("run.L"), TruncationUse::simulation, {}, transient);
+  const TruncationDecision d =
+      resolve_valid(valid, file.origin("run.L"), TruncationUse::simulation, {}, transient, transient_run);
   file.truncation_check.reset();
   if (!d.check) {
     file.scene.L = d.L;
@@ -530,14 +532,16 @@ CheckedRun run_and_check(const Scene& scene, int L_candidate, const SimulationOp
 }
 
 SimulationResult simulate_truncated(SceneFile& file, const SimulationOptions& options,
-                                    const ReducedTransient* transient, const SceneRunner& run_full) {
-  return simulate_truncated(file, validated(file), options, transient, run_full);
+                                    const ReducedTransient* transient, const SceneRunner& run_full,
+                                    const TransientRunner& transient_run) {
+  return simulate_truncated(file, validated(file), options, transient, run_full, transient_run);
 }
 
 SimulationResult simulate_truncated(SceneFile& file, const ValidScene& valid, const SimulationOptions& options,
-                                    const ReducedTransient* transient, const SceneRunner& run_full) {
+                                    const ReducedTransient* transient, const SceneRunner& run_full,
+                                    const TransientRunner& transient_run) {
   if (&*valid != &file.scene) throw InvalidArgument("valid", "valid must prove this file's own scene: validated(file)");
-  std::optional<SimulationResult> run = decide_simulation(file, valid, options, transient, run_full);
+  std::optional<SimulationResult> run = decide_simulation(file, valid, options, transient, run_full, transient_run);
   if (run) return std::move(*run);
   return run_full ? run_full(valid, options) : simulate(valid, options);
 }
@@ -551,7 +555,7 @@ void apply_truncation(SceneFile& file, const ValidScene& valid, TruncationUse us
   if (use == TruncationUse::simulation) {
     SimulationOptions o = file.options;
     o.record_trajectory = false;
-    (void)decide_simulation(file, valid, o, transient, {});
+    (void)decide_simulation(file, valid, o, transient, {}, {});
     return;
   }
   const TruncationDecision d = resolve_valid(valid, file.origin("run.L"), use, {}, transient);

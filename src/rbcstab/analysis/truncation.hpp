@@ -105,11 +105,17 @@ CheckedRun run_and_check(const Scene& scene, int L_candidate, const SimulationOp
 // certified run skipped it bounds the dropped modes from the orbit's tension (EarlyTermination::sigma_integral
 // and the range of sigma over a period on each side of the skip).
 // `valid` (validated(file), io) refers to file.scene and stays valid: the L set is the scene's or a checked one.
+// Without a `transient`, the automatic choice reads `transient_run(valid, options)`: the scene's transient over
+// [0, T] at options.checkpoints (empty: truncation_transient; verdict's simulate_scene: certified_transient,
+// which stops integrating once the reduced run is certified on its attractor).
 using SceneRunner = std::function<SimulationResult(const ValidScene&, const SimulationOptions&)>;
+using TransientRunner = std::function<ReducedTransient(const ValidScene&, const TruncationOptions&)>;
 SimulationResult simulate_truncated(SceneFile& file, const SimulationOptions& options,
-                                    const ReducedTransient* transient = nullptr, const SceneRunner& run_full = {});
+                                    const ReducedTransient* transient = nullptr, const SceneRunner& run_full = {},
+                                    const TransientRunner& transient_run = {});
 SimulationResult simulate_truncated(SceneFile& file, const ValidScene& valid, const SimulationOptions& options,
-                                    const ReducedTransient* transient = nullptr, const SceneRunner& run_full = {});
+                                    const ReducedTransient* transient = nullptr, const SceneRunner& run_full = {},
+                                    const TransientRunner& transient_run = {});
 
 // The policy applied to a scene file (its L's origin) for a front end that integrates the scene itself: sets
 // scene.L, L_reason (and for a simulation, by simulate_truncated without a trajectory, truncation_check), then

@@ -28,15 +28,13 @@ ModeAmplitudes final_amplitudes(const Scene& scene, const SimulationResult& resu
       ->amplitudes(result.t_reached, result.y_final);
 }
 
-std::size_t Trajectory::integrated_count() const {
-  return std::size_t(std::count(integrated.begin(), integrated.end(), true));
-}
+double SkippedSamples::time(std::size_t k) const { return times.empty() ? sampling_time(k, dt) : times[k - first]; }
 
 std::vector<double> sampling_grid(double T, double dt) {
   std::vector<double> g;
   const auto n = static_cast<std::size_t>(std::floor(T / dt * (1 + 1e-12)));
   g.reserve(n + 2);
-  for (std::size_t k = 0; k <= n; ++k) g.push_back(std::min(T, double(k) * dt));
+  for (std::size_t k = 0; k <= n; ++k) g.push_back(std::min(T, sampling_time(k, dt)));
   if (T - g.back() > 1e-12 * T) g.push_back(T);
   g.back() = T;
   return g;
@@ -149,16 +147,20 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
   // Output grid, plus the fine grid over the tail window for grid means or the window's start for quadrature
   // means (there the integrator switches to the system with the quadratures). Samples that are not recorded are
   // not integrated to (T is: the state there is reported).
-  const std::vector<double> user_grid = output_grid(scene, options);
+  const std::vector<double> user_grid =
+      options.record_trajectory || !options.t_eval.empty() ? output_grid(scene, options) : std::vector<double>{};
   const double tail_start = std::max(0.0, scene.T - options.tail_window);
   const bool grid_means = options.tail_means == TailMeans::grid;
   const bool quadrature_means = options.tail_means == TailMeans::quadrature;
   std::vector<double> grid = options.record_trajectory ? user_grid : std::vector<double>{};
+  const auto recorded = std::ptrdiff_t(grid.size());
   grid.push_back(scene.T);  // the state there is reported
   if (grid_means)
     for (int k = 0; k <= kTailIntervals; ++k) grid.push_back(tail_start + (scene.T - tail_start) * k / kTailIntervals);
   if (quadrature_means) grid.push_back(tail_start);
-  std::sort(grid.begin(), grid.end());
+  // The output grid is sorted already: sort only the few times added, then merge (linear in the samples).
+  std::sort(grid.begin() + recorded, grid.end());
+  std::inplace_merge(grid.begin(), grid.begin() + recorded, grid.end());
   grid.erase(std::unique(grid.begin(), grid.end(), [&](double a, double b) { return b - a <= 1e-12 * scene.T; }),
              grid.end());
 
@@ -215,7 +217,6 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
         res.trajectory.sigma.push_back(o.sigma);
         res.trajectory.r.push_back(o.r());
         res.trajectory.Psi.push_back(psi);
-        res.trajectory.integrated.push_back(true);
       }
     }
     // Only the uniform tail grid feeds the averages: user samples inside the window (dt not a
@@ -285,16 +286,15 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
     Psi += jump.Psi_advance;
     const auto resume_index =
         std::size_t(std::lower_bound(user_grid.begin(), user_grid.end(), jump.t - 1e-12 * scene.T) - user_grid.begin());
-    // The skipped samples: rows of NaN, so that the trajectory keeps the grid and no plot joins across the skip.
-    constexpr double nan = std::numeric_limits<double>::quiet_NaN();
-    Trajectory& tr = res.trajectory;
-    for (; options.record_trajectory && user_index < resume_index; ++user_index) {
-      tr.t.push_back(user_grid[user_index]);
-      tr.Delta_l.emplace_back(o0.Delta_l.size(), nan);
-      tr.sigma.push_back(nan);
-      tr.r.push_back(nan);
-      tr.Psi.push_back(nan);
-      tr.integrated.push_back(false);
+    // The skipped samples: described, not stored (Trajectory::skipped), so that a long skip costs nothing.
+    if (options.record_trajectory && user_index < resume_index) {
+      SkippedSamples& gap = res.trajectory.skipped;
+      gap.first = user_index;
+      gap.count = resume_index - user_index;
+      gap.dt = scene.dt;
+      if (!options.t_eval.empty())
+        gap.times.assign(user_grid.begin() + std::ptrdiff_t(user_index),
+                         user_grid.begin() + std::ptrdiff_t(resume_index));
     }
     user_index = resume_index;
     const Observation resumed = system->observe(jump.t, jump.y);

@@ -68,15 +68,30 @@ std::vector<double> output_grid(const Scene& scene, const SimulationOptions& opt
 constexpr double kMaxTrajectoryBytes = 2.0 * 1024 * 1024 * 1024;
 double trajectory_bytes(const Scene& scene, const SimulationOptions& options);
 
-// One row per time of the output grid. A run that stopped early on a certified attractor did not integrate
-// the rows strictly between terminated_at and resumed_at: they hold NaN (a plot breaks its lines there) and
-// integrated = false.
+// The rows of the output grid a certified early stop skipped: [first, first + count), none integrated. They are
+// described, not stored (a run to T = 1e7 at dt = 1 skips ~1e7 of them): their times are the grid's.
+struct SkippedSamples {
+  std::size_t first = 0, count = 0;
+  double dt = 0;                     // the regular grid's spacing: row k at sampling_time(k, dt) (times empty)
+  std::vector<double> times;         // a t_eval grid: the skipped times themselves (the caller's array holds them too)
+  double time(std::size_t k) const;  // of grid row k in [first, first + count)
+};
+
+// The samples on the output grid. Only integrated samples are stored (t, Delta_l, sigma, r, Psi); a run that
+// stopped early on a certified attractor skipped the rows strictly between terminated_at and resumed_at, which
+// `skipped` describes. An output that needs every row (the CSV, Python's arrays) walks rows 0..rows() - 1: a
+// skipped row is shown as NaN (a plot breaks its lines there) with integrated = false.
 struct Trajectory {
-  std::vector<double> t;
+  std::vector<double> t;                     // integrated samples only
   std::vector<std::vector<double>> Delta_l;  // [sample][l - 2]
   std::vector<double> sigma, r, Psi;         // Psi unwrapped along the accepted steps
-  std::vector<bool> integrated;              // [sample]: false where a certified early stop skipped it
-  std::size_t integrated_count() const;
+  SkippedSamples skipped;
+  std::size_t rows() const { return t.size() + skipped.count; }  // of the output grid
+  std::size_t integrated_count() const { return t.size(); }
+  bool integrated(std::size_t row) const { return row < skipped.first || row >= skipped.first + skipped.count; }
+  // Grid row -> its index in the stored samples (integrated(row)) and its time (any row).
+  std::size_t sample(std::size_t row) const { return row < skipped.first ? row : row - skipped.count; }
+  double time(std::size_t row) const { return integrated(row) ? t[sample(row)] : skipped.time(row); }
 };
 
 // Certified early termination: the run stopped integrating at terminated_at, where its state was certified
@@ -148,7 +163,7 @@ struct SimulationResult {
 // and the samples, kMaxTrajectoryBytes; throws InvalidArgument on bad input). Numerical failure is a
 // status in the result, with everything computed up to t_reached. With a certifier (and not
 // options.full_horizon) the run may skip whole periods on a certified attractor (SimulationResult::early): the
-// trajectory's samples strictly between terminated_at and resumed_at are then NaN with integrated = false.
+// trajectory's samples strictly between terminated_at and resumed_at are then not stored (Trajectory::skipped).
 SimulationResult simulate(const Scene& scene, const SimulationOptions& options = {},
                           AttractorCertifier* certifier = nullptr);
 SimulationResult simulate(const ValidScene& scene, const SimulationOptions& options = {},
@@ -157,8 +172,9 @@ SimulationResult simulate(const ValidScene& scene, const SimulationOptions& opti
 // f_{l,m}(t_reached): the shape a run of `scene` ends in, rebuilt from its final state on the level it ran.
 ModeAmplitudes final_amplitudes(const Scene& scene, const SimulationResult& result);
 
-// Regular-grid helper: 0, dt, 2 dt, ..., T (T always included).
+// Regular-grid helper: 0, dt, 2 dt, ..., T (T always included); sample k < n at sampling_time(k, dt).
 std::vector<double> sampling_grid(double T, double dt);
+inline double sampling_time(std::size_t k, double dt) { return double(k) * dt; }
 
 // r.reason, and for a run whose state became non-finite, the inputs that made it overflow (nonfinite_reason).
 std::string run_reason(const SimulationResult& r, const Parameters& p);

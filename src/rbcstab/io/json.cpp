@@ -218,7 +218,7 @@ nlohmann::json to_json(const SimulationResult& r) {
                       {"jacobian_evaluations", r.counters.jacobian_evaluations},
                       {"seconds", r.seconds},
                       {"warnings", r.warnings},
-                      {"samples", r.trajectory.t.size()},
+                      {"samples", r.trajectory.rows()},
                       {"samples_integrated", r.trajectory.integrated_count()}};
   j["terminated_at"] = number_or_null(r.early.terminated_at);
   if (!r.early.terminated)

@@ -33,9 +33,9 @@ std::string simulation_text(const SceneFile& file, const SimulationResult& r) {
   if (r.early.terminated)
     out << "terminated early at t = " << r.early.terminated_at << " on a certified " << r.early.kind
         << " (margin 1 - max |mu| = " << r.early.margin << "), resumed at t = " << r.early.resumed_at
-        << (r.trajectory.t.empty() ? std::string()
-                                   : ": " + std::to_string(r.trajectory.integrated_count()) + " of " +
-                                         std::to_string(r.trajectory.t.size()) + " samples integrated")
+        << (r.trajectory.rows() == 0 ? std::string()
+                                     : ": " + std::to_string(r.trajectory.integrated_count()) + " of " +
+                                           std::to_string(r.trajectory.rows()) + " samples integrated")
         << "\n";
   return out.str();
 }
@@ -46,11 +46,16 @@ std::string trajectory_csv(const SimulationResult& r) {
   for (int l = 2; l <= r.L; ++l) ss << ",Delta_" << l;
   ss << ",sigma,r,Psi,integrated\n";
   const Trajectory& tr = r.trajectory;
-  for (std::size_t k = 0; k < tr.t.size(); ++k) {
-    ss << csv_number(tr.t[k]);
+  const std::string skipped_fields(std::size_t(r.L) + 3, ',');  // Delta_2..Delta_L, sigma, r, Psi empty; then 0
+  for (std::size_t row = 0; row < tr.rows(); ++row) {
+    ss << csv_number(tr.time(row));
+    if (!tr.integrated(row)) {
+      ss << skipped_fields << "0\n";
+      continue;
+    }
+    const std::size_t k = tr.sample(row);
     for (double d : tr.Delta_l[k]) ss << ',' << csv_number(d);
-    ss << ',' << csv_number(tr.sigma[k]) << ',' << csv_number(tr.r[k]) << ',' << csv_number(tr.Psi[k]) << ','
-       << (tr.integrated[k] ? 1 : 0) << '\n';
+    ss << ',' << csv_number(tr.sigma[k]) << ',' << csv_number(tr.r[k]) << ',' << csv_number(tr.Psi[k]) << ",1\n";
   }
   return ss.str();
 }

@@ -169,4 +169,14 @@ SceneSystem make_scene_system(const ValidScene& valid) {
   return s;
 }
 
+Scene reduced_scene(const Scene& s) {
+  Scene r = s;
+  r.name = s.name + "_reduced";
+  r.model = ModelLevel::reduced;
+  r.L = 2;
+  r.delta_l.clear();
+  r.rest_delta_l.clear();
+  return r;
+}
+
 }  // namespace rbcstab

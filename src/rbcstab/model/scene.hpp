@@ -66,6 +66,9 @@ ValidScene validated(const Scene& scene);  // scene.validate(), then the proof o
 // The valid scene at another L: copy = *valid with copy.L = L, checking only what L decides (its range, and the
 // modes delta_l and rest_delta_l set below it), since every other key is the valid scene's.
 ValidScene validated_at_L(const ValidScene& valid, Scene& copy, int L);
+// The reduced companion of a scene: same material and orientation, only the l = 2 block, perturbations
+// dropped (Sec. III): the Fig. 2 r, Psi, the sigma_R(t) of Fig. 3, the truncation rule's certified transient.
+Scene reduced_scene(const Scene& s);
 
 struct InitialState {
   ModeAmplitudes f;  // current shape f_{l,m}(0)

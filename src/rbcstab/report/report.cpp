@@ -360,16 +360,6 @@ ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, con
 }
 }  // namespace
 
-Scene reduced_scene(const Scene& s) {
-  Scene r = s;
-  r.name = s.name + "_reduced";
-  r.model = ModelLevel::reduced;
-  r.L = 2;
-  r.delta_l.clear();
-  r.rest_delta_l.clear();
-  return r;
-}
-
 std::string executable_path() {
   std::error_code ec;
   const auto p = std::filesystem::read_symlink("/proc/self/exe", ec);

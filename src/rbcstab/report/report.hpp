@@ -74,10 +74,6 @@ struct AmplitudeSeries {
 };
 AmplitudeSeries amplitudes_at(const SceneFile& scene, const std::vector<double>& times);
 
-// The reduced companion of a scene: same material and orientation, only the l = 2 block, perturbations
-// dropped (Sec. III): the Fig. 2 r, Psi and the sigma_R(t) of Fig. 3.
-Scene reduced_scene(const Scene& s);
-
 namespace detail {
 // Mean spacing of the maxima of x(t) over the second half of the samples (maxima reaching the
 // upper third of the swing); 0 when x is flat there or has fewer than 3 such maxima.

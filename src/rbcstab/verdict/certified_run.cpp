@@ -318,15 +318,105 @@ SimulationResult simulate_certified(const ValidScene& valid, const SimulationOpt
   return simulate(valid, options, &certifier);
 }
 
+ReducedTransient certified_transient(const ValidScene& valid, const TruncationOptions& options,
+                                     const EarlyTerminationOptions& early) {
+  options.validate();
+  early.validate();
+  const Scene& scene = *valid;
+  const double T = scene.T;
+  const int K = options.checkpoints;
+  std::vector<double> checkpoints;
+  for (int k = 1; k <= K; ++k) checkpoints.push_back(T * k / K);
+  const double P = 2 * kPi;  // the reduced level's forcing period (SceneCertifier)
+  if (T < early.first_attempt + 2 * P) return truncation_transient(valid, options);
+
+  // Integrate to the checkpoints until the state is certified, leaving a period before T for the partial ones.
+  SimulationOptions run;
+  run.integrator = options.predictor.integrator;
+  SceneCertifier certifier(reduced_scene(scene), run, early);
+  const ReducedIntegralSystem reduced(valid);
+  const System& sys = reduced.system();
+  ReducedTransient tr;
+  tr.parameters = scene.parameters;
+  tr.beta = scene.beta;
+  tr.T = T;
+  tr.checkpoints = K;
+  auto on_sample = [&](double t, std::span<const double> y) {
+    tr.t.push_back(t);
+    tr.integral.push_back(y[3]);
+  };
+  AttractorJump jump;
+  EarlyTermination record;
+  const StopCondition stop = [&](double t, std::span<const double> y) {
+    return certifier.certify(sys, t, y.first(3), T - P, jump, record);
+  };
+  IntegrationResult first = integrate(sys, sys.initial_state(), 0.0, checkpoints, run.integrator, on_sample, {}, stop);
+  tr.counters = first.counters;
+  tr.counters += record.work;
+  if (!first.stopped) {
+    tr.status = first.status;
+    tr.reason = first.reason;
+    tr.t_end = first.status == IntegrationStatus::success ? T : first.t_reached;
+    tr.integral_end = first.status == IntegrationStatus::success ? tr.integral.back() : first.y[3];
+    return tr;
+  }
+  // From the resume state on the orbit (jump.y at jump.t, k whole periods after the stop at t_s): a checkpoint t
+  // skipped, t = t_s + m P + rem, gets J(t_s) + m I + [J(jump.t + rem) - J(jump.t)], I = the orbit's integral over
+  // one period (record.sigma_integral / k); the later checkpoints are integrated.
+  const double t_s = first.t_reached, J_s = first.y[3];
+  const double k = std::round((jump.t - t_s) / P), I = record.sigma_integral / k;
+  std::vector<double> resumed(jump.y.begin(), jump.y.end());
+  resumed.push_back(J_s + record.sigma_integral);
+  const std::size_t skipped_from = tr.t.size();
+  const auto later = std::lower_bound(checkpoints.begin(), checkpoints.end(), jump.t);
+  std::vector<double> times;
+  std::vector<std::pair<double, double>> partial;  // skipped checkpoint: (m, rem)
+  for (auto c = checkpoints.begin() + std::ptrdiff_t(skipped_from); c != later; ++c) {
+    const double m = std::floor((*c - t_s) / P);
+    partial.emplace_back(m, *c - t_s - m * P);
+    times.push_back(jump.t + partial.back().second);
+  }
+  times.insert(times.end(), later, checkpoints.end());
+  std::vector<double> grid = times;
+  std::sort(grid.begin(), grid.end());
+  grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+  if (!grid.empty() && grid.front() <= jump.t) grid.erase(grid.begin());  // rem = 0: J(jump.t) is known
+  std::vector<double> at_J;                                               // at each time of grid
+  const IntegrationResult second = integrate(sys, resumed, jump.t, grid, run.integrator,
+                                             [&](double, std::span<const double> y) { at_J.push_back(y[3]); });
+  tr.counters += second.counters;
+  if (second.status != IntegrationStatus::success || at_J.size() != grid.size())
+    return truncation_transient(valid, options);
+  auto J_at = [&](double t) {
+    return t <= jump.t ? resumed[3] : at_J[std::size_t(std::lower_bound(grid.begin(), grid.end(), t) - grid.begin())];
+  };
+  for (std::size_t j = 0; j < partial.size(); ++j) {
+    tr.t.push_back(checkpoints[skipped_from + j]);
+    tr.integral.push_back(J_s + partial[j].first * I + (J_at(times[j]) - resumed[3]));
+  }
+  for (auto c = later; c != checkpoints.end(); ++c) {
+    tr.t.push_back(*c);
+    tr.integral.push_back(J_at(*c));
+  }
+  tr.t_end = T;
+  tr.integral_end = tr.integral.back();
+  return tr;
+}
+
 SimulationResult simulate_scene(SceneFile& file, const SimulationOptions& options, const ReducedTransient* transient) {
   return simulate_scene(file, validated(file), options, transient);
 }
 
 SimulationResult simulate_scene(SceneFile& file, const ValidScene& valid, const SimulationOptions& options,
                                 const ReducedTransient* transient) {
-  return simulate_truncated(file, valid, options, transient, [](const ValidScene& scene, const SimulationOptions& o) {
+  const SceneRunner certified = [](const ValidScene& scene, const SimulationOptions& o) {
     return simulate_certified(scene, o);
-  });
+  };
+  // A full-horizon run skips no work: its automatic L reads the reduced transient integrated to T as well.
+  TransientRunner transient_run;
+  if (!options.full_horizon)
+    transient_run = [](const ValidScene& scene, const TruncationOptions& o) { return certified_transient(scene, o); };
+  return simulate_truncated(file, valid, options, transient, certified, transient_run);
 }
 
 }  // namespace rbcstab

@@ -57,8 +57,18 @@ SimulationResult simulate_certified(const Scene& scene, const SimulationOptions&
 SimulationResult simulate_certified(const ValidScene& scene, const SimulationOptions& options = {},
                                     const EarlyTerminationOptions& early = {});
 
+// truncation_transient (analysis/truncation.hpp) with the certified early stop: the reduced run stops integrating
+// once this module's certifier (the main run's, on the reduced level) certifies its attractor, and resumes on the
+// orbit at most a period before T. A checkpoint t it skipped, t = t_s + m P + rem after the stop at t_s, gets
+// J(t_s) + m I + [J(t_r + rem) - J(t_r)] with I the orbit's integral of sigma over a period and t_r the resume time:
+// exact to first order in the certified distance, as the skip of a run. Its cost no longer grows with T. Without a
+// certificate (or T below the first attempt plus two periods) it is truncation_transient.
+ReducedTransient certified_transient(const ValidScene& scene, const TruncationOptions& options = {},
+                                     const EarlyTerminationOptions& early = {});
+
 // One scene file run as every front end runs it (simulate, summary, Python): the checked automatic L
-// (simulate_truncated), the candidate and then the run at the L kept both certified (simulate_certified).
+// (simulate_truncated) from the certified_transient (the full one when options.full_horizon), the candidate and then
+// the run at the L kept both certified (simulate_certified).
 // Sets file.scene.L, L_reason and truncation_check as simulate_truncated does.
 SimulationResult simulate_scene(SceneFile& file, const SimulationOptions& options,
                                 const ReducedTransient* transient = nullptr);

@@ -1,12 +1,14 @@
 """Draws a phase diagram into a matplotlib Axes: grid points coloured by l_Delta (white: stable) with the overlay
-curves (traced boundaries, the paper's analytic lines) that report/panels.cpp's phase_overlay_json styles. Shared
-by rbcstab_report.py (the report's phase-diagram figure) and the Python package (Diagram.plot, Trace.plot), so
-both draw by the same rules. No backend or rcParams are set here: the caller owns the figure."""
+curves (traced boundaries, the paper's analytic lines) that report/panels.cpp's phase_overlay_json styles; and the
+Fig. 6(e) comparison of the post-instability Delta~2 with the simulated mean. Shared by rbcstab_report.py (the
+report's figures) and the Python package (Diagram.plot, Trace.plot, Fig6eTable.plot), so both draw by the same
+rules. No backend or rcParams are set here: the caller owns the figure."""
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.patches import Patch
 
 LINE_STYLES = {"solid": "-", "dashed": "--", "dotted": ":", "dashdot": "-."}
+MARKERS = ["o", "s", "^", "v", "D", "P", "X", "*"]
 
 
 def greys(n, lo=0.0, hi=0.75):
@@ -104,4 +106,43 @@ def draw_phase_diagram(ax, xs, ys, ld, x, y, curves=(), limits=None, title=None,
     ax.legend(extra + handles, [h.get_label() for h in extra] + labels, loc="center left",
               bbox_to_anchor=(1.01, 0.5), fontsize=9)
     ax.set_title(title or r"$l_\Delta$ (white: stable, $l_\Delta = 2$)", fontsize=11)
+    return ax
+
+
+def draw_delta2_comparison(ax, theory, simulated, symbols, lam=None, alpha=None, title=None):
+    """Fig. 6(e) on ax: theoretical Delta~_2 against the simulated mean Delta-bar_2 as markers (one marker per
+    lambda), a diagonal guide, and given alpha an inset of the ratio theory/simulation against ln alpha. Rows where
+    either value is not finite (a stable run, outside the domain) are left out: nothing joins across them.
+    symbols: the parameters' TeX symbols by name (the parameter table's). Returns ax."""
+    th, sim = np.asarray(theory, dtype=float), np.asarray(simulated, dtype=float)
+    keep = np.isfinite(th) & np.isfinite(sim)
+    th, sim = th[keep], sim[keep]
+    lam = None if lam is None else np.asarray(lam, dtype=float)[keep]
+    alpha = None if alpha is None else np.asarray(alpha, dtype=float)[keep]
+    keys = [None] if lam is None else sorted(set(lam.tolist()))
+    groups = [(key, np.arange(len(th)) if key is None else np.flatnonzero(lam == key)) for key in keys]
+    for n, (key, idx) in enumerate(groups):
+        lab = rf"${symbols['lambda']} = {key:g}$" if key is not None else "simulations"
+        ax.scatter(sim[idx], th[idx], marker=MARKERS[n % len(MARKERS)],
+                   facecolors="none" if n % 2 else greys(max(2, len(groups)))[n], edgecolors="black",
+                   s=36, label=lab, zorder=2)
+    if len(th):
+        lo, hi = float(min(th.min(), sim.min())), float(max(th.max(), sim.max()))
+        ax.plot([lo, hi], [lo, hi], color="0.4", ls="--", lw=1, label="diagonal", zorder=1)
+        if lo > 0 and hi / lo > 10:  # values over more than a decade: log axes keep the small ones apart
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+    ax.set_xlabel(r"simulation $\bar{\Delta}_2$")
+    ax.set_ylabel(r"theory $\tilde{\Delta}_2$")
+    ax.legend(loc="upper left")
+    if alpha is not None and len(th):
+        ins = ax.inset_axes([0.58, 0.1, 0.38, 0.32])
+        for n, (key, idx) in enumerate(groups):
+            ins.plot(np.log(alpha[idx]), th[idx] / sim[idx], MARKERS[n % len(MARKERS)], ms=3.5, color="black",
+                     mfc="none" if n % 2 else "black")
+        ins.set_xlabel(r"$\ln\alpha$", fontsize=9)
+        ins.set_ylabel(r"$\tilde{\Delta}_2/\bar{\Delta}_2$", fontsize=9)
+        ins.tick_params(labelsize=8)
+    if title:
+        ax.set_title(title, fontsize=11)
     return ax

@@ -23,11 +23,10 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib import colors as mcolors  # noqa: E402
 from axis_rules import excess_area_limits  # noqa: E402 (beside this script, on sys.path)
-from phase_draw import draw_phase_diagram, greys  # noqa: E402 (beside this script, on sys.path)
+from phase_draw import draw_delta2_comparison, draw_phase_diagram  # noqa: E402 (beside this script, on sys.path)
 
 DPI = 100
 LINESTYLES = ["-", "--", "-.", ":", (0, (5, 1, 1, 1, 1, 1)), (0, (8, 2)), (0, (1, 1)), (0, (3, 1, 1, 1))]
-MARKERS = ["o", "s", "^", "v", "D", "P", "X", "*"]
 
 plt.rcParams.update({
     "font.size": 11,
@@ -403,38 +402,8 @@ def plot_delta2_comparison(csv_path, out, symbols, size_px=(750, 750), title=Non
     d = read_csv(csv_path)
     th = d[_pick(d, ["Delta2_theory", "Delta2_tilde"])]  # `rbcstab post --fig6e` names: Delta2_tilde, Delta2_bar
     sim = d[_pick(d, ["Delta2_simulation", "Delta2_bar"])]
-    keep = [k for k in range(len(th)) if math.isfinite(th[k]) and math.isfinite(sim[k])]  # n/a: stable or outside
-    d = {key: [v[k] for k in keep] for key, v in d.items()}
-    th, sim = [th[k] for k in keep], [sim[k] for k in keep]
-    groups = {}
-    for k in range(len(th)):
-        key = d["lambda"][k] if "lambda" in d else None
-        groups.setdefault(key, []).append(k)
     fig, ax = new_figure(size_px)
-    for n, (key, idx) in enumerate(sorted(groups.items(), key=lambda kv: (kv[0] is None, kv[0]))):
-        lab = rf"${symbols['lambda']} = {key:g}$" if key is not None else "simulations"
-        ax.scatter([sim[i] for i in idx], [th[i] for i in idx], marker=MARKERS[n % len(MARKERS)],
-                   facecolors="none" if n % 2 else greys(max(2, len(groups)))[n], edgecolors="black",
-                   s=36, label=lab, zorder=2)
-    vals = [v for v in th + sim if math.isfinite(v)]
-    lo, hi = min(vals), max(vals)
-    ax.plot([lo, hi], [lo, hi], color="0.4", ls="--", lw=1, label="diagonal", zorder=1)
-    if lo > 0 and hi / lo > 10:  # values over more than a decade: log axes keep the small ones apart
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-    ax.set_xlabel(r"simulation $\bar{\Delta}_2$")
-    ax.set_ylabel(r"theory $\tilde{\Delta}_2$")
-    ax.legend(loc="upper left")
-    if "alpha" in d:
-        ins = ax.inset_axes([0.58, 0.1, 0.38, 0.32])
-        for n, (key, idx) in enumerate(sorted(groups.items(), key=lambda kv: (kv[0] is None, kv[0]))):
-            ins.plot([math.log(d["alpha"][i]) for i in idx], [th[i] / sim[i] for i in idx],
-                     MARKERS[n % len(MARKERS)], ms=3.5, color="black", mfc="none" if n % 2 else "black")
-        ins.set_xlabel(r"$\ln\alpha$", fontsize=9)
-        ins.set_ylabel(r"$\tilde{\Delta}_2/\bar{\Delta}_2$", fontsize=9)
-        ins.tick_params(labelsize=8)
-    if title:
-        ax.set_title(title, fontsize=11)
+    draw_delta2_comparison(ax, th, sim, symbols, d.get("lambda"), d.get("alpha"), title)
     return save(fig, out, size_px, svg)
 
 
