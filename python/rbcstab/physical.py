@@ -157,5 +157,5 @@ class PhysicalMap:
         ax.set_ylabel("shear rate \u03b3\u0307 [1/s]")
         ax.set_title(title or "Physical phase diagram (bands: published ranges of the cell's properties)", fontsize=9)
         ax.legend(fontsize=7, loc="best")
-        keep_legends_inside(ax.figure)
+        keep_legends_inside(ax)
         return ax
