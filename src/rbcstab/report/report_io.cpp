@@ -21,13 +21,18 @@ nlohmann::json report_json(const SceneFile& file, const ReportOptions& options, 
   put_truncation(j, file);
   put_physical(j, file.scene);
   if (file.scene.physical) j["shear_rate_thresholds"] = to_json(r.shear_rate_thresholds);
+  j["convergence"] = convergence_json(r.convergence, options.convergence);
   return j;
 }
 
 std::string report_text(const ReportOptions& options, const ReportResult& r) {
   TextStream s;
   s << "report written to " << options.output << " (" << r.files.size()
-    << " files, open index.html); l_Delta = " << r.run.l_Delta << ", status " << to_string(r.run.status) << "\n";
+    << " files, open index.html); l_Delta = " << r.run.l_Delta << ", status " << to_string(r.run.status);
+  if (r.convergence)
+    s << "; convergence: " << r.convergence->flagged() << " of " << r.convergence->rows.size() << " numbers flagged ("
+      << r.convergence->runs.size() << " refined runs, " << duration_text(r.convergence->seconds) << ")";
+  s << "\n";
   return s.str();
 }
 
