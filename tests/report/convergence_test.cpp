@@ -115,8 +115,8 @@ TEST(ConvergenceTolerance, FollowsTheStatedRule) {
 TEST(ConvergenceCheck, BadInputIsNamed) {
   const SceneFile sf = small_scene();
   const SimulationResult base = simulate(sf.scene, sf.options);
-  for (const ConvergenceOptions& o : {ConvergenceOptions{true, {}},
-                                      ConvergenceOptions{true, {Refinement::T_twice, Refinement::T_twice}}}) {
+  for (const ConvergenceOptions& o :
+       {ConvergenceOptions{true, {}}, ConvergenceOptions{true, {Refinement::T_twice, Refinement::T_twice}}}) {
     try {
       convergence_check(sf.scene, sf.options, base, o);
       ADD_FAILURE() << "expected InvalidArgument";
