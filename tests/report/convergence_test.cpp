@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/report/convergence.hpp"
 
 namespace rbcstab {
@@ -40,7 +41,7 @@ TEST(ConvergenceCheck, ChangesEqualIndependentRunsOfTheRefinedScenes) {
   const ConvergenceCheck c = convergence_check(sf.scene, sf.options, base);
   ASSERT_EQ(c.runs.size(), 4u);
   // The refined scenes, spelled out here.
-  std::vector<std::pair<Scene, SimulationOptions>> refined(4, {sf.scene, sf.options});
+  std::vector<std::pair<Scene, SimulationOptions>> refined(4, std::pair{sf.scene, sf.options});
   refined[0].first.L = 6;
   refined[1].first.T = 12;
   refined[2].first.delta = 1e-4;
