@@ -21,16 +21,16 @@ const char* const kConvergenceRule =
 
 namespace {
 // rtol / 100, kept at the integrator's floor (IntegratorOptions::validate: rtol >= 1e-15).
-constexpr double kMinRtol = 1e-15;
+constexpr double kConvergenceRtolFloor = 1e-15;
 
-struct Quantity {
+struct ReportedNumber {
   std::string name;
   QuantityKind kind;
   std::function<double(const SimulationResult&)> of;
 };
 
-std::vector<Quantity> reported_quantities(int L) {
-  std::vector<Quantity> q{
+std::vector<ReportedNumber> reported_quantities(int L) {
+  std::vector<ReportedNumber> q{
       {"l_Delta", QuantityKind::discrete, [](const SimulationResult& r) { return double(r.l_Delta); }},
       {"l_Delta_final", QuantityKind::discrete, [](const SimulationResult& r) { return double(r.l_Delta_final); }},
       {"oscillating", QuantityKind::discrete, [](const SimulationResult& r) { return r.oscillating ? 1.0 : 0.0; }},
@@ -48,7 +48,7 @@ std::vector<Quantity> reported_quantities(int L) {
   return q;
 }
 
-std::string change_text(const Scene& from, const SimulationOptions& o, const RefinedRun& to, Refinement r) {
+std::string refinement_change_text(const Scene& from, const SimulationOptions& o, const RefinedRun& to, Refinement r) {
   TextStream s;
   switch (r) {
     case Refinement::L_plus_2:
@@ -62,7 +62,7 @@ std::string change_text(const Scene& from, const SimulationOptions& o, const Ref
       break;
     case Refinement::rtol_hundredth:
       s << "rtol = " << o.integrator.rtol << " -> " << to.options.integrator.rtol
-        << (to.options.integrator.rtol == kMinRtol ? " (the integrator's floor)" : "");
+        << (to.options.integrator.rtol == kConvergenceRtolFloor ? " (the integrator's floor)" : "");
       break;
   }
   return s.str();
@@ -92,7 +92,7 @@ RefinedRun refine(const Scene& scene, const SimulationOptions& options, Refineme
       for (auto& [l, d] : out.scene.delta_l) d /= 10;
       break;
     case Refinement::rtol_hundredth:
-      out.options.integrator.rtol = std::max(kMinRtol, options.integrator.rtol / 100);
+      out.options.integrator.rtol = std::max(kConvergenceRtolFloor, options.integrator.rtol / 100);
       break;
   }
   return out;
@@ -134,7 +134,7 @@ ConvergenceCheck convergence_check(const Scene& scene, const SimulationOptions& 
     run.refinement = r;
     try {
       const RefinedRun spec = refine(scene, quiet, r);
-      run.change = change_text(scene, options, spec, r);
+      run.change = refinement_change_text(scene, options, spec, r);
       SimulationResult res = simulate(spec.scene, spec.options);
       run.status = res.status;
       run.reason = res.reason;
@@ -150,7 +150,7 @@ ConvergenceCheck convergence_check(const Scene& scene, const SimulationOptions& 
     }
     c.runs.push_back(run);
   }
-  for (const Quantity& q : reported_quantities(scene.L)) {
+  for (const ReportedNumber& q : reported_quantities(scene.L)) {
     ConvergenceRow row;
     row.quantity = q.name;
     row.value = q.of(base);
