@@ -193,13 +193,13 @@ nlohmann::json to_json(const ConvergenceCheck& c) {
     rows.push_back({{"quantity", row.quantity},
                     {"value", number_or_null(row.value)},
                     {"changes", changes},
-                    {"tolerance", row.tolerance},
+                    {"tolerance", number_or_null(row.tolerance)},
                     {"flagged", row.flagged()},
                     {"moved_by", names(row.moved_by)},
                     {"not_shown_by", names(row.failed_by)}});
   }
   return {{"checked", true},        {"rule", kConvergenceRule},
-          {"rtol", c.rtol},         {"Delta_total", c.Delta_total},
+          {"rtol", c.rtol},         {"Delta_total", number_or_null(c.Delta_total)},
           {"runs", runs},           {"rows", rows},
           {"flagged", c.flagged()}, {"seconds", c.seconds}};
 }
