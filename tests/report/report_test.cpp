@@ -236,8 +236,23 @@ void check_convergence(const Built& b) {
   const fs::path out = b.parent_ / "out";
   const auto c = nlohmann::json::parse(read_file((out / "report.json").string())).at("convergence");
   ASSERT_TRUE(c.at("checked").get<bool>());
-  ASSERT_TRUE(b.result_.convergence.has_value());
-  EXPECT_EQ(c.at("flagged").get<std::size_t>(), b.result_.convergence->flagged());
+  ASSERT_TRUE(b.result_.convergence.run.has_value());
+  EXPECT_EQ(c.at("flagged").get<std::size_t>(), b.result_.convergence.run->flagged());
+  // The reduced companion: 2T and rtol/100 only, its 2T change that of an independent run of the companion.
+  ASSERT_TRUE(b.result_.convergence.reduced.has_value());
+  const auto& rc = c.at("reduced_companion");
+  ASSERT_EQ(rc.at("runs").size(), 2u);
+  Scene companion_twice = reduced_scene(b.scene_.scene);
+  companion_twice.T *= 2;
+  const SimulationResult companion = simulate(reduced_scene(b.scene_.scene), b.scene_.options),
+                         companion_2T = simulate(companion_twice, b.scene_.options);
+  std::size_t compared = 0;
+  for (const auto& row : rc.at("rows"))
+    if (row.at("quantity") == "r_final") {
+      EXPECT_EQ(row.at("changes").at("2T").get<double>(), companion_2T.r_final - companion.r_final);
+      ++compared;
+    }
+  EXPECT_EQ(compared, 1u);
   Scene twice = b.scene_.scene;
   twice.T *= 2;
   const SimulationResult base = simulate(b.scene_.scene, b.scene_.options), r = simulate(twice, b.scene_.options);

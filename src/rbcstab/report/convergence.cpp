@@ -204,8 +204,30 @@ nlohmann::json to_json(const ConvergenceCheck& c) {
           {"flagged", c.flagged()}, {"seconds", c.seconds}};
 }
 
-nlohmann::json convergence_json(const std::optional<ConvergenceCheck>& c, const ConvergenceOptions& asked) {
-  if (c) return to_json(*c);
+std::size_t ReportConvergence::flagged() const {
+  return (run ? run->flagged() : 0) + (reduced ? reduced->flagged() : 0);
+}
+
+ReportConvergence report_convergence(const Scene& scene, const SimulationOptions& options, const SimulationResult& run,
+                                     const Scene* reduced_scene, const SimulationResult* reduced,
+                                     const ConvergenceOptions& asked) {
+  ReportConvergence out;
+  if (!asked.enabled || run.status != IntegrationStatus::success) return out;
+  out.run = convergence_check(scene, options, run, asked);
+  ConvergenceOptions companion = asked;
+  std::erase_if(companion.refinements,
+                [](Refinement r) { return r == Refinement::L_plus_2 || r == Refinement::delta_tenth; });
+  if (reduced_scene && reduced && reduced->status == IntegrationStatus::success && !companion.refinements.empty())
+    out.reduced = convergence_check(*reduced_scene, options, *reduced, companion);
+  return out;
+}
+
+nlohmann::json convergence_json(const ReportConvergence& c, const ConvergenceOptions& asked) {
+  if (c.run) {
+    nlohmann::json j = to_json(*c.run);
+    if (c.reduced) j["reduced_companion"] = to_json(*c.reduced);
+    return j;
+  }
   return {{"checked", false},
           {"reason", asked.enabled ? "the run stopped before T: there is no result to refine"
                                    : "not asked for (rbcstab report --no-convergence)"}};

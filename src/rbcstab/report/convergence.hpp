@@ -76,9 +76,21 @@ struct ConvergenceCheck {
 ConvergenceCheck convergence_check(const Scene& scene, const SimulationOptions& options, const SimulationResult& base,
                                    const ConvergenceOptions& check = {});
 
+// A scene report's check: its run, and its reduced companion under the refinements that apply to it (2T and
+// rtol/100: it has no l >= 3 modes and no seeds). Each is empty when not asked for or when its run stopped early.
+struct ReportConvergence {
+  std::optional<ConvergenceCheck> run, reduced;
+  std::size_t flagged() const;
+};
+// reduced_scene/reduced: the companion and its run, or nullptr when there is none.
+ReportConvergence report_convergence(const Scene& scene, const SimulationOptions& options, const SimulationResult& run,
+                                     const Scene* reduced_scene, const SimulationResult* reduced,
+                                     const ConvergenceOptions& asked);
+
 nlohmann::json to_json(const ConvergenceCheck& c);
-// A report's "convergence" entry: the check, or {"checked": false, "reason"} (not asked for, or the run stopped).
-nlohmann::json convergence_json(const std::optional<ConvergenceCheck>& c, const ConvergenceOptions& asked);
+// A report's "convergence" entry: the run's check (its companion's under "reduced_companion"), or {"checked": false,
+// "reason"} (not asked for, or the run stopped before T).
+nlohmann::json convergence_json(const ReportConvergence& c, const ConvergenceOptions& asked);
 // The rule behind the tolerances, as docs/report.md and the page state it.
 extern const char* const kConvergenceRule;
 

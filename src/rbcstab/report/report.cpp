@@ -477,10 +477,12 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     res.reduced = simulate(reduced_scene(sf.scene), run_options);
     res.has_reduced = true;
   }
-  if (o.convergence.enabled && res.run.status == IntegrationStatus::success) {
+  if (o.convergence.enabled) {
     if (o.on_step) o.on_step("checking convergence: the scene again with L + 2, 2T, delta/10, rtol/100");
-    res.convergence = convergence_check(sf.scene, sf.options, res.run, o.convergence);
-    if (const std::size_t n = res.convergence->flagged())
+    const Scene companion = reduced_scene(sf.scene);
+    res.convergence = report_convergence(sf.scene, sf.options, res.run, res.has_reduced ? &companion : nullptr,
+                                         res.has_reduced ? &res.reduced : nullptr, o.convergence);
+    if (const std::size_t n = res.convergence.flagged())
       res.warnings.push_back(std::to_string(n) +
                              " reported number(s) moved by more than their tolerance under a "
                              "refinement (see the Convergence table)");

@@ -63,7 +63,7 @@ struct ReportResult {
   std::vector<std::string> warnings;
   ShapeGrid shape;                                        // rho at the end of the run
   std::vector<ShearRateThreshold> shear_rate_thresholds;  // a physical scene: per orientation (else empty)
-  std::optional<ConvergenceCheck> convergence;            // none: not asked for, or the run stopped before T
+  ReportConvergence convergence;                          // empty: not asked for, or the run stopped before T
   double seconds = 0;
 };
 

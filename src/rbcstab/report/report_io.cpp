@@ -29,9 +29,13 @@ std::string report_text(const ReportOptions& options, const ReportResult& r) {
   TextStream s;
   s << "report written to " << options.output << " (" << r.files.size()
     << " files, open index.html); l_Delta = " << r.run.l_Delta << ", status " << to_string(r.run.status);
-  if (r.convergence)
-    s << "; convergence: " << r.convergence->flagged() << " of " << r.convergence->rows.size() << " numbers flagged ("
-      << r.convergence->runs.size() << " refined runs, " << duration_text(r.convergence->seconds) << ")";
+  if (const auto& c = r.convergence; c.run) {
+    const std::size_t rows = c.run->rows.size() + (c.reduced ? c.reduced->rows.size() : 0);
+    const std::size_t runs = c.run->runs.size() + (c.reduced ? c.reduced->runs.size() : 0);
+    const double seconds = c.run->seconds + (c.reduced ? c.reduced->seconds : 0);
+    s << "; convergence: " << c.flagged() << " of " << rows << " numbers flagged (" << runs << " refined runs, "
+      << duration_text(seconds) << ")";
+  }
   s << "\n";
   return s.str();
 }

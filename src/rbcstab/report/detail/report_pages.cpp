@@ -58,7 +58,7 @@ std::string regime_text(const nlohmann::json& m) {
 
 // The convergence check (report/convergence.hpp): each number, its change under each refinement, the tolerance
 // and the flag; then the refined runs themselves.
-void add_convergence(const nlohmann::json& c, Page& p) {
+void add_convergence(const nlohmann::json& c, Page& p, const std::string& what = "Convergence") {
   if (!c.at("checked").get<bool>()) {
     p.tables.push_back({"Convergence", {{"checked", "why"}, {{"no", c.at("reason").get<std::string>()}}}});
     return;
@@ -84,7 +84,7 @@ void add_convergence(const nlohmann::json& c, Page& p) {
     cells.push_back(flag);
     t.rows.push_back(cells);
   }
-  p.tables.push_back({"Convergence: " + num(c.at("flagged")) + " of " + std::to_string(c.at("rows").size()) +
+  p.tables.push_back({what + ": " + num(c.at("flagged")) + " of " + std::to_string(c.at("rows").size()) +
                           " numbers flagged. " + c.at("rule").get<std::string>(),
                       t});
   Table runs{{"refinement", "change", "status", "seconds"}, {}};
@@ -94,7 +94,11 @@ void add_convergence(const nlohmann::json& c, Page& p) {
          r.at("status").get<std::string>() +
              (r.at("reason").get<std::string>().empty() ? "" : ": " + r.at("reason").get<std::string>()),
          num(r.at("seconds"), 3)});
-  p.tables.push_back({"Convergence runs (the scene again, one refinement each)", runs});
+  p.tables.push_back({what + " runs (the scene again, one refinement each)", runs});
+  if (c.contains("reduced_companion"))
+    add_convergence(
+        c.at("reduced_companion"), p,
+        "Convergence of the reduced companion (L + 2 and delta/10 do not apply: no l >= 3 modes, no seeds)");
 }
 
 Page make_page(const nlohmann::json& m) {
