@@ -58,7 +58,8 @@ std::string regime_text(const nlohmann::json& m) {
 
 // The convergence check (report/convergence.hpp): each number, its change under each refinement, the tolerance
 // and the flag; then the refined runs themselves.
-void add_convergence(const nlohmann::json& c, Page& p, const std::string& what = "Convergence") {
+void add_convergence(const nlohmann::json& c, Page& p, const std::string& what = "Convergence",
+                     const std::string& note = "") {
   if (!c.at("checked").get<bool>()) {
     p.tables.push_back({"Convergence", {{"checked", "why"}, {{"no", c.at("reason").get<std::string>()}}}});
     return;
@@ -85,7 +86,7 @@ void add_convergence(const nlohmann::json& c, Page& p, const std::string& what =
     t.rows.push_back(cells);
   }
   p.tables.push_back({what + ": " + num(c.at("flagged")) + " of " + std::to_string(c.at("rows").size()) +
-                          " numbers flagged. " + c.at("rule").get<std::string>(),
+                          " numbers flagged. " + (note.empty() ? c.at("rule").get<std::string>() : note),
                       t});
   Table runs{{"refinement", "change", "status", "seconds"}, {}};
   for (const auto& r : c.at("runs"))
@@ -96,9 +97,8 @@ void add_convergence(const nlohmann::json& c, Page& p, const std::string& what =
          num(r.at("seconds"), 3)});
   p.tables.push_back({what + " runs (the scene again, one refinement each)", runs});
   if (c.contains("reduced_companion"))
-    add_convergence(
-        c.at("reduced_companion"), p,
-        "Convergence of the reduced companion (L + 2 and delta/10 do not apply: no l >= 3 modes, no seeds)");
+    add_convergence(c.at("reduced_companion"), p, "Convergence of the reduced companion",
+                    "The same rule; L + 2 and delta/10 do not apply (no l >= 3 modes, no seeds).");
 }
 
 Page make_page(const nlohmann::json& m) {
