@@ -18,8 +18,7 @@ struct ReportCliOptions {
   SceneOptions scene;
   ReportOptions report;
   int n_theta = 64;
-  bool no_reduced = false;
-  bool json = false;
+  bool no_reduced = false, json = false;
   PanelOptions panel;
   std::vector<std::string> counts;  // checks.hpp counts_of
   std::string shear_rate_range;     // LO,HI (1/s): the threshold search of a physical scene
@@ -92,6 +91,7 @@ Runner add_report(CLI::App& app) {
       ->capture_default_str();
   add_integer(app, "--shape-resolution", o->n_theta, 2, 4096,
               "polar grid points n_theta of the exported and rendered shape (n_phi = 2 n_theta)");
+  app.add_flag("!--no-convergence", r.convergence.enabled, "skip re-running with L+2, 2T, delta/10, rtol/100");
   app.add_flag("--no-reduced", o->no_reduced,
                "skip the reduced-system companion run (Fig. 2 r, Psi from the l = 2 block only)");
   app.add_option("--phase-diagram", r.phase_diagram,

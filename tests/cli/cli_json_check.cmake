@@ -217,6 +217,7 @@ elseif(CASE STREQUAL "truncation_report")
   # A scene report: the automatic choice, in --json and in the report's data (report.json).
   expect_json(ARGS report --T 5 --frames 2 --shape-resolution 8 --no-reduced --output r --json KEYS files)
   expect_truncation("${out}" report "the smallest L")
+  expect_key("convergence;checked" ON)  # on by default (docs/report.md: Convergence)
   expect_file_truncation("${WORK}/r/report.json" "the smallest L")
   # A diagram panel: the scene file's L, in --json, report.json and diagram.json.
   expect_json(ARGS report --scene "${tiny}" --output panel --counts 2x2 --quiet --json KEYS panel)

@@ -235,6 +235,43 @@ void check_shape_files(const Built& b) {
                   1e-6);
 }
 
+// The convergence table of report.json: its 2T change equals an independent run at 2T, and the page shows it.
+void check_convergence(const Built& b) {
+  const fs::path out = b.parent_ / "out";
+  const auto c = nlohmann::json::parse(read_file((out / "report.json").string())).at("convergence");
+  ASSERT_TRUE(c.at("checked").get<bool>());
+  ASSERT_TRUE(b.result_.convergence.run.has_value());
+  EXPECT_EQ(c.at("flagged").get<std::size_t>(), b.result_.convergence.run->flagged());
+  // The reduced companion: 2T and rtol/100 only, its 2T change that of an independent run of the companion.
+  ASSERT_TRUE(b.result_.convergence.reduced.has_value());
+  const auto& rc = c.at("reduced_companion");
+  ASSERT_EQ(rc.at("runs").size(), 2u);
+  Scene companion_twice = reduced_scene(b.scene_.scene);
+  companion_twice.T *= 2;
+  const SimulationResult companion = simulate(reduced_scene(b.scene_.scene), b.scene_.options),
+                         companion_2T = simulate(companion_twice, b.scene_.options);
+  std::size_t compared = 0;
+  for (const auto& row : rc.at("rows"))
+    if (row.at("quantity") == "r_final") {
+      EXPECT_EQ(row.at("changes").at("2T").get<double>(), companion_2T.r_final - companion.r_final);
+      ++compared;
+    }
+  EXPECT_EQ(compared, 1u);
+  Scene twice = b.scene_.scene;
+  twice.T *= 2;
+  const SimulationResult base = simulate(b.scene_.scene, b.scene_.options), r = simulate(twice, b.scene_.options);
+  bool found = false;
+  for (const auto& row : c.at("rows"))
+    if (row.at("quantity") == "sigma_final") {
+      found = true;
+      EXPECT_EQ(row.at("changes").at("2T").get<double>(), r.sigma_final - base.sigma_final);
+    }
+  EXPECT_TRUE(found);
+  const std::string html = read_file((out / "index.html").string());
+  EXPECT_NE(html.find("Convergence runs"), std::string::npos);
+  EXPECT_NE(html.find("change rtol/100"), std::string::npos);
+}
+
 TEST(ReportEndToEnd, SmallInPlaneSceneBuildsAndItsDataReproduceTheFigures) {
   Built b;
   b.parent_ = test::fresh_dir("report_test", "e2e");
@@ -245,6 +282,7 @@ TEST(ReportEndToEnd, SmallInPlaneSceneBuildsAndItsDataReproduceTheFigures) {
   check_figures(b);
   check_trajectories(b);
   check_shape_files(b);
+  check_convergence(b);
 }
 
 // The animation window: period of a sampled oscillation, none for a steady or monotonic signal.
@@ -389,6 +427,11 @@ TEST(ReportCli, ExitCodes) {
       std::system((base + "--python /nonexistent/python3 --output '" + (parent / "a").string() + "'" + quiet).c_str());
   EXPECT_EQ(WEXITSTATUS(rc), 3);
   EXPECT_FALSE(fs::exists(parent / "a"));
+  // --no-convergence is a flag of its own (an unknown one would exit 2 before python is looked for).
+  rc = std::system(
+      (base + "--no-convergence --python /nonexistent/python3 --output '" + (parent / "a").string() + "'" + quiet)
+          .c_str());
+  EXPECT_EQ(WEXITSTATUS(rc), 3);
   fs::create_directories(parent / "b");
   rc = std::system((base + "--output '" + (parent / "b").string() + "'" + quiet).c_str());
   EXPECT_EQ(WEXITSTATUS(rc), 2);

@@ -392,6 +392,7 @@ void ReportOptions::validate() const {
   if (output.empty()) throw InvalidArgument("output", "output: a folder path is required");
   shape.validate();
   frame_shape.validate();
+  convergence.validate();
   require(frames >= 2 && frames <= 2000, "frames", frames, "an integer in [2, 2000]");
   require(std::isfinite(frame_window) && frame_window >= 0, "frame_window", frame_window, "finite and >= 0 (0: auto)");
   if (python.empty()) throw InvalidArgument("python", "python: an interpreter path is required");
@@ -465,6 +466,16 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     if (o.on_step) o.on_step("running the reduced companion");
     res.reduced = simulate(reduced_scene(sf.scene), run_options);
     res.has_reduced = true;
+  }
+  if (o.convergence.enabled) {
+    if (o.on_step) o.on_step("checking convergence: the scene again with L + 2, 2T, delta/10, rtol/100");
+    const Scene companion = reduced_scene(sf.scene);
+    res.convergence = report_convergence(sf.scene, sf.options, res.run, res.has_reduced ? &companion : nullptr,
+                                         res.has_reduced ? &res.reduced : nullptr, o.convergence);
+    if (const std::size_t n = res.convergence.flagged())
+      res.warnings.push_back(std::to_string(n) +
+                             " reported number(s) moved by more than their tolerance under a "
+                             "refinement (see the Convergence table)");
   }
   // Animate one period of r(t) at the end when the run oscillates (swinging, tumbling: the GIF then
   // loops seamlessly and the strip shows one cycle), else the whole run.
@@ -570,6 +581,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
       manifest["reduced_summary"].erase("trajectory");
     }
     manifest["thresholds"] = thresholds;
+    manifest["convergence"] = convergence_json(res.convergence, o.convergence);
     put_physical(manifest, sf.scene);
     if (sf.scene.physical) manifest["shear_rate_thresholds"] = to_json(res.shear_rate_thresholds);
     manifest["shape"] = {{"t", res.run.t_reached},       {"rho_min", res.shape.rho_min}, {"rho_max", res.shape.rho_max},

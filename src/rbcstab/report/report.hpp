@@ -3,6 +3,7 @@
 // behind every figure (CSV/JSON), the shape at T (VTK, VTP, PLY), figures drawn by matplotlib
 // (python/rbcstab_report.py), index.html and README.md. The folder appears whole or not at all.
 #include <functional>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -10,6 +11,7 @@
 #include "rbcstab/integrate/simulation.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/scene_file.hpp"
+#include "rbcstab/report/convergence.hpp"
 #include "rbcstab/report/shape.hpp"
 #include "rbcstab/verdict/shear_rate.hpp"
 
@@ -33,6 +35,7 @@ struct ReportOptions {
   double frame_window = 0;        // 0: auto (one period of r(t) at the end if the run oscillates, else [0, T])
   bool reduced_companion = true;  // also run the reduced level (Fig. 2 r, Psi; Fig. 3 sigma_R)
   ShearRateSearchOptions shear_rate_search;  // a physical scene: the thresholds' search (summary's)
+  ConvergenceOptions convergence;            // the run's numbers re-measured under each refinement (convergence.hpp)
   // Hooks for data other modules produce; drawn when given (formats in docs/report.md).
   std::string phase_diagram;      // CSV with columns x, y, l_Delta (+ optional overlay JSON beside it)
   std::string delta2_comparison;  // CSV with columns Delta2_theory, Delta2_simulation[, alpha]
@@ -60,6 +63,7 @@ struct ReportResult {
   std::vector<std::string> warnings;
   ShapeGrid shape;                                        // rho at the end of the run
   std::vector<ShearRateThreshold> shear_rate_thresholds;  // a physical scene: per orientation (else empty)
+  ReportConvergence convergence;                          // empty: not asked for, or the run stopped before T
   double seconds = 0;
 };
 

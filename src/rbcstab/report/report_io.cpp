@@ -21,13 +21,22 @@ nlohmann::json report_json(const SceneFile& file, const ReportOptions& options, 
   put_truncation(j, file);
   put_physical(j, file.scene);
   if (file.scene.physical) j["shear_rate_thresholds"] = to_json(r.shear_rate_thresholds);
+  j["convergence"] = convergence_json(r.convergence, options.convergence);
   return j;
 }
 
 std::string report_text(const ReportOptions& options, const ReportResult& r) {
   TextStream s;
   s << "report written to " << options.output << " (" << r.files.size()
-    << " files, open index.html); l_Delta = " << r.run.l_Delta << ", status " << to_string(r.run.status) << "\n";
+    << " files, open index.html); l_Delta = " << r.run.l_Delta << ", status " << to_string(r.run.status);
+  if (const auto& c = r.convergence; c.run) {
+    const std::size_t rows = c.run->rows.size() + (c.reduced ? c.reduced->rows.size() : 0);
+    const std::size_t runs = c.run->runs.size() + (c.reduced ? c.reduced->runs.size() : 0);
+    const double seconds = c.run->seconds + (c.reduced ? c.reduced->seconds : 0);
+    s << "; convergence: " << c.flagged() << " of " << rows << " numbers flagged (" << runs << " refined runs, "
+      << duration_text(seconds) << ")";
+  }
+  s << "\n";
   return s.str();
 }
 

@@ -56,6 +56,51 @@ std::string regime_text(const nlohmann::json& m) {
   return ss.str();
 }
 
+// The convergence check (report/convergence.hpp): each number, its change under each refinement, the tolerance
+// and the flag; then the refined runs themselves.
+void add_convergence(const nlohmann::json& c, Page& p, const std::string& what = "Convergence",
+                     const std::string& note = "") {
+  if (!c.at("checked").get<bool>()) {
+    p.tables.push_back({"Convergence", {{"checked", "why"}, {{"no", c.at("reason").get<std::string>()}}}});
+    return;
+  }
+  Table t{{"quantity", "value"}, {}};
+  for (const auto& r : c.at("runs")) t.header.push_back("change " + r.at("refinement").get<std::string>());
+  t.header.insert(t.header.end(), {"tolerance", "flag"});
+  auto list = [](const nlohmann::json& a) {
+    std::string s;
+    for (const auto& x : a) s += (s.empty() ? "" : ", ") + x.get<std::string>();
+    return s;
+  };
+  for (const auto& row : c.at("rows")) {
+    std::vector<std::string> cells{row.at("quantity").get<std::string>(), num(row.at("value"))};
+    for (const auto& r : c.at("runs"))
+      cells.push_back(num(row.at("changes").at(r.at("refinement").get<std::string>()), 3));
+    cells.push_back(num(row.at("tolerance"), 3));
+    std::string flag = row.at("flagged").get<bool>() ? "" : "ok";
+    if (!row.at("moved_by").empty()) flag = "MOVED by " + list(row.at("moved_by"));
+    if (!row.at("not_shown_by").empty())
+      flag +=
+          (flag.empty() ? "" : "; ") + std::string("not shown: ") + list(row.at("not_shown_by")) + " did not finish";
+    cells.push_back(flag);
+    t.rows.push_back(cells);
+  }
+  p.tables.push_back({what + ": " + num(c.at("flagged")) + " of " + std::to_string(c.at("rows").size()) +
+                          " numbers flagged. " + (note.empty() ? c.at("rule").get<std::string>() : note),
+                      t});
+  Table runs{{"refinement", "change", "status", "seconds"}, {}};
+  for (const auto& r : c.at("runs"))
+    runs.rows.push_back(
+        {r.at("refinement").get<std::string>(), r.at("change").get<std::string>(),
+         r.at("status").get<std::string>() +
+             (r.at("reason").get<std::string>().empty() ? "" : ": " + r.at("reason").get<std::string>()),
+         num(r.at("seconds"), 3)});
+  p.tables.push_back({what + " runs (the scene again, one refinement each)", runs});
+  if (c.contains("reduced_companion"))
+    add_convergence(c.at("reduced_companion"), p, "Convergence of the reduced companion",
+                    "The same rule; L + 2 and delta/10 do not apply (no l >= 3 modes, no seeds).");
+}
+
 Page make_page(const nlohmann::json& m) {
   Page p;
   const auto& sc = m.at("scene");
@@ -122,6 +167,7 @@ Page make_page(const nlohmann::json& m) {
     p.tables.push_back(
         {"Shear-rate thresholds (asymptotic verdict along B, C proportional to gamma at fixed alpha)", rates});
   }
+  if (m.contains("convergence")) add_convergence(m.at("convergence"), p);
   for (const auto& w : m.at("warnings")) p.warnings.push_back(w.get<std::string>());
   return p;
 }
