@@ -42,6 +42,10 @@ std::vector<Case> cases() {
   const Series lower = of(t, [](double s) { return 0.4 + 0.3 * std::exp(-s / 5); });   // settles lower
   const Series slow = of(t, [](double s) { return 0.5 + 0.3 * std::exp(-s / 10); });   // settles by t ~ 60
   const Series never = of(t, [](double s) { return 0.5 + 0.3 * std::exp(-s / 40); });  // still moving at T
+  // Damped oscillations (rates 0.03 and 0.25, the App. C runs'), and an undamped one.
+  const Series ring_slow = of(t, [](double s) { return 0.7 + 0.5 * std::exp(-0.03 * s) * std::cos(2 * s); });
+  const Series ring_fast = of(t, [](double s) { return 0.7 + 0.5 * std::exp(-0.25 * s) * std::cos(2 * s); });
+  const Series ring_none = of(t, [](double s) { return 0.7 + 0.5 * std::cos(2 * s); });
   const Series wobble = of(t, [](double s) { return 0.5 + 0.01 * std::sin(s); });
   const Series swing = of(t, [](double s) { return 0.3 + 0.2 * std::sin(s); });
   const Series tumble = of(t, [](double s) { return -0.2 * s; });  // Psi falling: a tumble every 10 pi
@@ -95,9 +99,9 @@ std::vector<Case> cases() {
       {"settles_near",
        settles_near(t, relax, 1e-3, 30),
        {settles_near(t, never, 1e-3, 30), settles_near(t, relax, 1e-3, 5)}},
-      {"settles_more_slowly",
-       settles_more_slowly(t, slow, t, relax, 1e-3),
-       {settles_more_slowly(t, relax, t, slow, 1e-3), settles_more_slowly(t, never, t, relax, 1e-3)}},
+      {"damped_more_slowly",
+       damped_more_slowly(t, ring_slow, t, ring_fast, 10),
+       {damped_more_slowly(t, ring_fast, t, ring_slow, 10), damped_more_slowly(t, ring_none, t, ring_fast, 10)}},
       {"swings_more",
        swings_more(t, swing, t, wobble, 20),
        {swings_more(t, wobble, t, swing, 20), swings_more(t, flat, t, flat, 20)}},

@@ -44,7 +44,7 @@ const std::vector<std::string>& names() {
                                                "settles_at",
                                                "follows",
                                                "settles_near",
-                                               "settles_more_slowly",
+                                               "damped_more_slowly",
                                                "swings_more",
                                                "tank_treads",
                                                "steady_state",
@@ -149,14 +149,35 @@ Check settles_near(const Series& t, const Series& x, double tol, double paper_ti
           "settled before 0.8 T, within a factor 2 of t = " + num(paper_time)};
 }
 
-Check settles_more_slowly(const Series& t_slow, const Series& slow, const Series& t_fast, const Series& fast,
-                          double tol) {
-  const double ts = settle_time(t_slow, slow, tol), tf = settle_time(t_fast, fast, tol);
-  const bool both = settled_early(t_slow, ts) && settled_early(t_fast, tf);
-  return {"settles_more_slowly", both && ts > tf,
-          "settling times (within " + num(tol) + "): " + num(ts, 3) + " against " + num(tf, 3) +
-              " (T = " + num(t_slow.back()) + ")",
-          "both settled before 0.8 T, the first later"};
+namespace {
+struct Damping {
+  double rate = 0, fall = 1;  // mean decay rate of the amplitude, A_last / A_first
+};
+Damping damping(const Series& t, const Series& x, double window) {
+  std::vector<std::pair<double, double>> amp;  // (window start, range)
+  for (double a = t.front(); a + window <= t.back() + 1e-9 * window; a += window) {
+    double lo = 1e300, hi = -1e300;
+    for (std::size_t k = 0; k < t.size(); ++k)
+      if (t[k] >= a && t[k] < a + window) lo = std::min(lo, x[k]), hi = std::max(hi, x[k]);
+    if (hi < lo) continue;
+    amp.push_back({a, hi - lo});
+    if (hi - lo < 1e-6) break;
+  }
+  if (amp.size() < 2 || amp.front().second <= 0) return {};
+  std::size_t last = amp.size() - 1;
+  if (amp[last].second < 1e-6 && last > 1) --last;
+  const double fall = amp[last].second / amp.front().second;
+  return {-std::log(fall) / (amp[last].first - amp.front().first), fall};
+}
+}  // namespace
+
+Check damped_more_slowly(const Series& t_slow, const Series& slow, const Series& t_fast, const Series& fast,
+                         double window) {
+  const Damping s = damping(t_slow, slow, window), f = damping(t_fast, fast, window);
+  return {"damped_more_slowly", s.fall < std::exp(-1.0) && f.fall < std::exp(-1.0) && s.rate < f.rate,
+          "amplitude decay rates " + num(s.rate, 3) + " against " + num(f.rate, 3) + " (amplitude falls to " +
+              pct(s.fall) + ", " + pct(f.fall) + " of its first window)",
+          "both fall below 1/e, the first rate smaller"};
 }
 
 Check swings_more(const Series& t_a, const Series& Psi_a, const Series& t_b, const Series& Psi_b, double window) {

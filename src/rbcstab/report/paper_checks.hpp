@@ -45,9 +45,11 @@ Check follows(const Series& t, const Series& x, const Series& y, double t_max, d
 // x settles within tol of its final value at a time within a factor 2 of `paper_time`, and the last fifth of
 // the run stays within tol (the run settles before T, not at it).
 Check settles_near(const Series& t, const Series& x, double tol, double paper_time);
-// Both runs settle (within tol before the last fifth of the run) and `slow` settles later than `fast`.
-Check settles_more_slowly(const Series& t_slow, const Series& slow, const Series& t_fast, const Series& fast,
-                          double tol);
+// Oscillations damped more slowly: the amplitude of x (its range over consecutive windows of width `window`)
+// falls by at least a factor e over the run for both, and its mean decay rate ln(A_first / A_last) / time is
+// smaller for `slow` (A_last: the last window above 1e-6, the runs' noise floor).
+Check damped_more_slowly(const Series& t_slow, const Series& slow, const Series& t_fast, const Series& fast,
+                         double window);
 // Swinging amplitude: the tail range of Psi_a above 1e-3 and above that of Psi_b.
 Check swings_more(const Series& t_a, const Series& Psi_a, const Series& t_b, const Series& Psi_b, double window);
 // Tank-treading at a fixed angle: |<Psi> - Psi_target| < psi_tol and tail range of r < r_tol for every run.
