@@ -47,9 +47,13 @@ json shape_insets(Composer& c, const std::vector<const Line*>& runs, const std::
       if (f.excess_area(m) > f.excess_area(top)) top = m;
     const std::vector<double> end = azimuthal_shares(f, top);
     const std::vector<double> start = azimuthal_shares(initial_state(l.file.scene).f, top);
-    const std::string how = "final amplitudes f_{l,m}(T) of the delta = 1e-3 run (dominant mode Delta_" +
-                            std::to_string(top) + " = " + num(f.excess_area(top), 3) +
-                            "); m about the vorticity axis z; shares at t = 0 from the scene's initial state";
+    const std::string how =
+        "final amplitudes f_{l,m}(T) of the delta = 1e-3 run (dominant mode Delta_" + std::to_string(top) + " = " +
+        num(f.excess_area(top), 3) +
+        "); m about the vorticity axis z; shares at t = 0 from the scene's initial state. The |m| shares of a "
+        "mode l >= 3 keep their t = 0 values exactly in this model (f_{l,m}(t) = f_{l,m}(0) "
+        "e^{i omega m t} sqrt(Delta_l(t) / Delta_l(0))): the inherited symmetry is the model's, "
+        "what the run decides is the dominant mode";
     if (!ip)
       c.claim(tag +
                   ", OP: the cell evolves into a stomatocyte: its dominant l >= 3 mode is odd (a cup) and "
