@@ -44,7 +44,9 @@ void app_suppressed(Composer& c, int k, int n) {
             paper_check::grows_then_suppressed(Delta, l.Delta_above2(), 2),
             "run to T = " + num(l.t().back()) + " sampled every " + num(l.t()[1]) +
                 "; l_Delta = " + std::to_string(l.run.l_Delta) +
-                "; a factor 2 is the least rise seen as growth on the figure's logarithmic Delta_l axis");
+                "; a factor 2 is the least rise seen as growth on the figure's logarithmic Delta_l axis; beta = " +
+                num(l.file.scene.beta) + " and delta = " + num(l.file.scene.delta) +
+                " are this repository's choice (the caption prints neither)");
   }
   c.end(panels, 1, 2, 1300, 500,
         "Delta = 0.1, Delta0 = 0.01, lambda = 5, B = e^4, C = e^-2.7 (a) and e^-1 (b): an initial growth suppressed by "
