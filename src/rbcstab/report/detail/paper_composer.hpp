@@ -119,6 +119,9 @@ class Composer {
                            check.passed ? "" : inconsistency});
   }
 
+  // A run made outside lines() and diagram(): counted in failed_runs unless it reached T.
+  void count_run(bool reached_T) { res_.failed_runs += !reached_T; }
+
   std::string put(const std::string& name, const std::string& text) {
     const std::string rel = current_.id + "/" + name;
     write_file_atomic((dir_ / rel).string(), text);
