@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "rbcstab/report/paper.hpp"
+#include "rbcstab/report/paper_checks.hpp"
 
 namespace rbcstab {
 namespace {
@@ -45,15 +46,25 @@ TEST(PaperQuick, EveryFigureDrawnEveryClaimEvaluated) {
   const std::string html = slurp(parent / "paper" / "index.html");
   const nlohmann::json claims = nlohmann::json::parse(slurp(parent / "paper" / "claims.json"));
   ASSERT_EQ(claims.size(), r.claims.size());
-  std::size_t failed_rows = 0;
+  std::size_t failed_rows = 0, inconsistent_rows = 0;
+  const auto& checks = paper_check::names();
   for (std::size_t k = 0; k < r.claims.size(); ++k) {
     const ClaimCheck& c = r.claims[k];
     EXPECT_FALSE(c.measured.empty()) << c.claim;
     EXPECT_FALSE(c.expected.empty()) << c.claim;
     EXPECT_NE(html.find(html_escaped(c.claim)), std::string::npos) << c.claim;
     EXPECT_EQ(claims[k]["passed"].get<bool>(), c.passed);
+    // Every claim is decided by a check that paper_checks_test shows failing on wrong inputs.
+    EXPECT_NE(std::find(checks.begin(), checks.end(), c.check), checks.end()) << c.claim << ": " << c.check;
+    EXPECT_EQ(claims[k]["check"].get<std::string>(), c.check);
     failed_rows += !c.passed;
+    if (!c.inconsistency.empty()) {
+      EXPECT_FALSE(c.passed) << c.claim;  // an inconsistency is a failed claim, with its evidence on the page
+      EXPECT_NE(html.find(html_escaped(c.inconsistency)), std::string::npos) << c.claim;
+      ++inconsistent_rows;
+    }
   }
+  EXPECT_EQ(r.inconsistent, inconsistent_rows);
   // Each failed claim is shown as failed on the page.
   std::size_t shown = 0;
   for (std::size_t at = html.find("<b>FAILED</b>"); at != std::string::npos; at = html.find("<b>FAILED</b>", at + 1))

@@ -111,7 +111,10 @@ PaperResult build_paper(const PaperOptions& options) {
           throw Stopped{};  // removes the staging folder; caught below
         }
       }
-      for (const auto& cl : res.claims) (cl.passed ? res.passed : res.failed) += 1;
+      for (const auto& cl : res.claims) {
+        (cl.passed ? res.passed : res.failed) += 1;
+        res.inconsistent += !cl.passed && !cl.inconsistency.empty();
+      }
       json spec{{"format", "rbcstab-paper"}, {"version", 1}, {"quick", o.quick}, {"figures", c.figures}};
       spec["provenance"] = detail::provenance_json(paper_provenance(o.scene_dir));
       json claims = json::array();
@@ -121,7 +124,9 @@ PaperResult build_paper(const PaperOptions& options) {
                           {"measured", cl.measured},
                           {"expected", cl.expected},
                           {"passed", cl.passed},
-                          {"how", cl.how}});
+                          {"how", cl.how},
+                          {"check", cl.check},
+                          {"inconsistency", cl.inconsistency}});
       write_file_atomic((tmp / "paper.json").string(), spec.dump(1) + "\n");
       write_file_atomic((tmp / "claims.json").string(), claims.dump(1) + "\n");
       res.files.insert(res.files.end(), {"paper.json", "claims.json"});

@@ -41,7 +41,10 @@ struct ClaimCheck {
   std::string measured;  // the value computed from the runs
   std::string expected;  // the condition the value must meet
   bool passed = false;
-  std::string how;  // how the value is measured (window, tolerance, which runs)
+  std::string how;    // how the value is measured (window, tolerance, which runs)
+  std::string check;  // the check applied (paper_check::names(), paper_checks.hpp)
+  // Set on a failed claim where the model, run as the paper states, contradicts the paper: the evidence.
+  std::string inconsistency;
 };
 
 struct PaperFigure {
@@ -55,6 +58,7 @@ struct PaperResult {
   std::vector<PaperFigure> figures;
   std::vector<ClaimCheck> claims;
   std::size_t passed = 0, failed = 0;
+  std::size_t inconsistent = 0;    // of the failed: paper/model inconsistencies (ClaimCheck::inconsistency)
   std::size_t failed_runs = 0;     // runs or diagram points that did not reach T
   bool complete = true;            // false: stopped (options.stop) and nothing was written
   std::vector<std::string> files;  // relative to the output folder

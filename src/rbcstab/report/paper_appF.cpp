@@ -36,22 +36,17 @@ void app_suppressed(Composer& c, int k, int n) {
     // The growth lasts a fraction of a time unit: a log time axis from the first sample.
     panels.push_back(lines_panel(std::string(i ? "(b)" : "(a)") + " " + tex_params(l.file.scene), "$\\Delta_l$", s,
                                  "log", {l.t()[1], l.t().back()}, "log"));
-    int grown = 3;
-    double factor = 0;
-    for (int m = 3; m <= l.run.L; ++m) {
-      const std::vector<double> d = l.Delta(m);
-      const double f = *std::max_element(d.begin(), d.end()) / d.front();
-      if (f > factor) factor = f, grown = m;
-    }
-    const std::vector<double> above = l.Delta_above2();
+    std::vector<std::vector<double>> Delta;
+    for (int m = 3; m <= l.run.L; ++m) Delta.push_back(l.Delta(m));
     c.claim(std::string(i ? "(b)" : "(a)") +
                 ": an initial growth of the perturbations, suppressed by the reduced "
                 "dynamics",
-            "largest growth max_t Delta_l / Delta_l(0) = " + num(factor, 4) + " (l = " + std::to_string(grown) +
-                "); sum_{l>=3} Delta_l: start " + num(above.front(), 3) + ", end " + num(above.back(), 3) +
-                "; l_Delta = " + std::to_string(l.run.l_Delta),
-            "growth factor > 1 and the sum at T below its start", factor > 1 + 1e-9 && above.back() < above.front(),
-            "run to T = " + num(l.t().back()) + " sampled every " + num(l.t()[1]));
+            paper_check::grows_then_suppressed(Delta, l.Delta_above2(), 2),
+            "run to T = " + num(l.t().back()) + " sampled every " + num(l.t()[1]) +
+                "; l_Delta = " + std::to_string(l.run.l_Delta) +
+                "; a factor 2 is the least rise seen as growth on the figure's logarithmic Delta_l axis; beta = " +
+                num(l.file.scene.beta) + " and delta = " + num(l.file.scene.delta) +
+                " are this repository's choice (the caption prints neither)");
   }
   c.end(panels, 1, 2, 1300, 500,
         "Delta = 0.1, Delta0 = 0.01, lambda = 5, B = e^4, C = e^-2.7 (a) and e^-1 (b): an initial growth suppressed by "

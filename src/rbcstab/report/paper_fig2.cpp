@@ -37,37 +37,21 @@ void fig2(Composer& c, int k, int n) {
   for (int op = 0; op < 2; ++op) {
     const Line& small = runs[std::size_t(2 * op)];
     const Line& large = runs[std::size_t(2 * op + 1)];
-    const double r_small = tail_mean(small.t(), small.run.trajectory.r, w);
-    const double r_large = tail_mean(large.t(), large.run.trajectory.r, w);
     c.claim(std::string(op ? "IP" : "OP") + ": increasing Delta lowers r at long times (a less elongated cell)",
-            "mean r = " + num(r_small) + " (Delta = 0.01), " + num(r_large) + " (Delta = 1)",
-            "r(Delta = 1) < r(Delta = 0.01)", r_large < r_small, how);
+            paper_check::lower_at_long_times(small.t(), small.run.trajectory.r, large.t(), large.run.trajectory.r, w),
+            how + "; r at Delta = 1 against r at Delta = 0.01");
   }
   for (int i = 0; i < 2; ++i) {
     const Line& l = runs[std::size_t(i)];
-    const double range_r = tail_range(l.t(), l.run.trajectory.r, w),
-                 range_p = tail_range(l.t(), l.run.trajectory.Psi, w);
     c.claim(std::string("OP, ") + (i ? "Delta = 1" : "Delta = 0.01") +
                 ": r saturates to a fixed value at a fixed angle Psi (steady state)",
-            "tail range of r = " + num(range_r, 3) + ", of Psi = " + num(range_p, 3), "both < 1e-3",
-            range_r < 1e-3 && range_p < 1e-3, how);
+            paper_check::steady(l.t(), l.run.trajectory.r, l.run.trajectory.Psi, w, 1e-3), how);
   }
-  {
-    const Line& l = runs[2];
-    const double drift = l.run.trajectory.Psi.back() - tail_mean(l.t(), l.run.trajectory.Psi, T / 2 + w);
-    const double range = tail_range(l.t(), l.run.trajectory.Psi, w);
-    c.claim("IP, Delta = 0.01: swinging, Psi oscillates about a fixed angle",
-            "tail range of Psi = " + num(range, 3) + ", Psi(T) minus its mean over the second half = " + num(drift, 3),
-            "range > 1e-3 (oscillates) and |drift| < pi/2 (no rotation)", range > 1e-3 && std::abs(drift) < kPi / 2,
-            how);
-  }
-  {
-    const Line& l = runs[3];
-    const double turn = net_turn(l.run.trajectory.Psi);
-    c.claim("IP, Delta = 1: r oscillates with a continuous rotation (Psi decreases): the cell deforms and tumbles",
-            "net turn of Psi = " + num(turn), "< -2 pi (at least one tumble)", turn < -2 * kPi,
-            "Psi unwrapped along the run, steps modulo pi (r -> -r, Psi -> Psi + pi is the same shape)");
-  }
+  c.claim("IP, Delta = 0.01: swinging, Psi oscillates about a fixed angle",
+          paper_check::swings(runs[2].t(), runs[2].run.trajectory.Psi, w), how);
+  c.claim("IP, Delta = 1: r oscillates with a continuous rotation (Psi decreases): the cell deforms and tumbles",
+          paper_check::tumbles(runs[3].run.trajectory.Psi),
+          "Psi unwrapped along the run, steps modulo pi (r -> -r, Psi -> Psi + pi is the same shape)");
   c.end(panels, 1, 2, 1300, 500,
         "Reduced dynamics r(t), Psi(t) at C = 0.04, lambda = 5, Delta0 = 0.01, for beta = 0.001 (OP) and pi/2 (IP), "
         "Delta = 0.01 and 1. OP: steady r and Psi; IP: swinging at Delta = 0.01, tumbling at Delta = 1.");

@@ -30,10 +30,13 @@ void fig3(Composer& c, int k, int n) {
   };
   // The paper does not print its sigma below sigma_*: the first sigma in (3 sigma_*, sigma_*) (steps of 0.01 sigma_*)
   // at which l_c rounds to another mode than the fastest-growing one, as its panel illustrates; 1.25 sigma_* if none.
+  auto rate = [&](int l, double s) {
+    return (Gamma1(p.lambda, l) + s * Gamma2(p.lambda, l)) / p.B + Gamma3(p.lambda, l) / p.C;
+  };
   auto fastest_mode = [&](double s) {
     int best_mode = 2;
     for (int l = 3; l <= 40; ++l)
-      if (Upsilon_l(p, l, s) > Upsilon_l(p, best_mode, s)) best_mode = l;
+      if (rate(l, s) > rate(best_mode, s)) best_mode = l;
     return best_mode;
   };
   double s_below = 1.25 * s_star;
@@ -47,26 +50,13 @@ void fig3(Composer& c, int k, int n) {
   const std::string s_text = "sigma = " + num(s_below / s_star, 3) + " sigma_*";
   std::ostringstream ca, cb;
   ca << "l,criterion_sigma_star,criterion_below\n";
-  double best = -1e300, best_l = 0;
   for (int i = 0; i <= 400; ++i) {
     const double l = 1 + 7.0 * i / 400;
     ca << csv_number(l) << ',' << csv_number(crit(l, s_star)) << ',' << csv_number(crit(l, s_below)) << '\n';
-    if (crit(l, s_star) > best) best = crit(l, s_star), best_l = l;
-  }
-  // A finer search for the maximum than the drawn grid.
-  for (int i = 0; i <= 20000; ++i) {
-    const double l = best_l - 0.02 + 0.04 * i / 20000;
-    if (crit(l, s_star) > best) best = crit(l, s_star), best_l = l;
   }
   cb << "l,B_Upsilon\n";
-  int mismatches = 0;
   const int fastest = fastest_mode(s_below);
-  for (int l = 2; l <= 8; ++l) {
-    const double rate = p.B * Upsilon_l(p, l, s_below);
-    cb << l << ',' << csv_number(rate) << '\n';
-    mismatches += (rate > 0) != (crit(l, s_below) > 0);
-  }
-  for (int l = 9; l <= 40; ++l) mismatches += (Upsilon_l(p, l, s_below) > 0) != (crit(l, s_below) > 0);
+  for (int l = 2; l <= 8; ++l) cb << l << ',' << csv_number(p.B * Upsilon_l(p, l, s_below)) << '\n';
   const std::string fa = c.put("criterion.csv", ca.str()), fb = c.put("growth_rates.csv", cb.str());
   const UnstableBand band = unstable_band(s_below, alpha);
   const double ls = l_star(alpha);
@@ -108,16 +98,27 @@ void fig3(Composer& c, int k, int n) {
                {{"x", ls}, {"label", "$l_*$"}, {"color", "0.4"}, {"ls", ":"}},
                {{"x", band.l_plus.value}, {"label", "$l_+$"}, {"color", "0.4"}, {"ls", "-."}},
                {{"x", double(fastest)}, {"label", "fastest $\\Upsilon_l$"}, {"color", "tab:green"}, {"ls", "--"}}}}};
+  // The closed forms drawn (sigma_*, l_* of the thresholds module) against a numerical maximisation of the criterion.
   c.claim("(a) At sigma = sigma_* = -4 sqrt(alpha) the criterion is marginal: its maximum over l is 0, at l_*",
-          "max = " + num(best, 3) + " at l = " + num(best_l, 5) + " (l_* = " + num(ls, 5) + ")",
-          "|max| < 1e-6 4 alpha and |l - l_*| < 1e-3", std::abs(best) < 4e-6 * alpha && std::abs(best_l - ls) < 1e-3,
-          "alpha = B/C = " + num(alpha) + " from fig3a_criterion.toml");
+          paper_check::marginal(alpha, s_star, ls),
+          "alpha = B/C = " + num(alpha) + " from fig3a_criterion.toml; sigma_* = " + num(s_star) +
+              " and l_* from their closed forms, the maximum found on a grid of continuous l refined to 1e-7");
+  // The growth rates built from the paper's coefficients Gamma_1..3 as Eq. (growth) writes them, not from the
+  // simplified form: the claim is that the two share their roots.
+  std::vector<double> rates, criteria;
+  for (double s : {s_below, s_star, 0.5 * s_star})
+    for (int l = 2; l <= 40; ++l) {
+      rates.push_back(rate(l, s));
+      criteria.push_back(crit(l, s));
+    }
   c.claim("(a) The roots of B Upsilon_l are those of the simplified criterion (same sign at every l)",
-          std::to_string(mismatches) + " sign mismatches over l = 2..40", "0", mismatches == 0,
-          s_text + " (the paper does not print its value below sigma_*)");
+          paper_check::same_signs(rates, criteria, "l = 2..40 at three sigma"),
+          s_text +
+              ", sigma_* and sigma_* / 2 (the paper does not print its value below sigma_*); Upsilon_l = "
+              "[Gamma_1 + sigma Gamma_2] / B + Gamma_3 / C");
   c.claim("(a) l_c can differ from the fastest-growing mode",
-          "l_c = " + num(band.l_c.value) + ", fastest-growing integer mode " + std::to_string(fastest),
-          "round(l_c) != fastest mode at some sigma < sigma_*", int(std::lround(band.l_c.value)) != fastest,
+          paper_check::modes_differ(int(std::lround(band.l_c.value)), fastest,
+                                    "round(l_c) (closed form) and the fastest-growing integer mode (Gamma_1..3)"),
           s_text +
               ": the first sigma below sigma_* (steps of 0.01 sigma_*, down to 3 sigma_*) where they differ; "
               "integer l only (Upsilon_l is defined at integer l)");
@@ -156,40 +157,31 @@ void fig3(Composer& c, int k, int n) {
     sigma_panels.push_back(ps);
 
     const double T = l.t().back(), w = 50;
+    const std::string run = "fig3_" + std::string(ip ? "c_ip" : "b_op") + ".toml run to T = " + num(T);
     c.claim(tag + ": Delta_2 decreases while Delta_3 and Delta_4 grow initially",
-            "Delta_2: " + num(D[0].front()) + " -> " + num(D[0].back()) +
-                "; max Delta_3 / Delta_3(0) = " + num(*std::max_element(D[1].begin(), D[1].end()) / D[1].front()) +
-                ", max Delta_4 / Delta_4(0) = " + num(*std::max_element(D[2].begin(), D[2].end()) / D[2].front()),
-            "Delta_2(T) < Delta_2(0); both ratios > 1",
-            D[0].back() < D[0].front() && *std::max_element(D[1].begin(), D[1].end()) > D[1].front() &&
-                *std::max_element(D[2].begin(), D[2].end()) > D[2].front(),
-            "fig3_" + std::string(ip ? "c_ip" : "b_op") + ".toml run to T = " + num(T));
-    const auto peak4 = std::max_element(D[2].begin(), D[2].end());
+            paper_check::redistributes(D[0], D[1], D[2]), run);
     c.claim(tag + ": Delta_4 first grows, then decays (l = 4 is stabilised)",
-            "max Delta_4 = " + num(*peak4, 3) + " at t = " + num(l.t()[std::size_t(peak4 - D[2].begin())]) +
-                ", Delta_4(T) = " + num(D[2].back(), 3),
-            "interior maximum, Delta_4(T) < max / 2", grows_then_decays(D[2], 0.5),
-            "samples on the scene's output grid");
+            paper_check::grows_then_decays(D[2], 2, 0.5),
+            run +
+                "; samples on the scene's output grid; a factor 2 is the least rise seen as growth on the paper's "
+                "logarithmic Delta_l axis");
     const std::vector<double> above = l.Delta_above2();
-    const double share = tail_mean(l.t(), D[1], w) / tail_mean(l.t(), above, w);
     c.claim(tag + ": Delta_3 takes the area (l = 3 keeps growing and holds the excess area beyond l = 2)",
-            "Delta_3 / sum_{l>=3} Delta_l = " + pct(share), ">= 90%", share >= 0.9,
-            "means over t in [" + num(T - w) + ", " + num(T) + "]");
-    const double s_end = tail_mean(l.t(), l.run.trajectory.sigma, w);
-    const double gap = std::abs(s_end - sc3) / std::abs(sc3);
+            paper_check::takes_share(l.t(), D[1], above, w, 0.9),
+            "Delta_3 / sum_{l>=3} Delta_l, means over t in [" + num(T - w) + ", " + num(T) + "]");
     c.claim(tag + (ip ? ": the period-averaged sigma settles at sigma_3^c" : ": sigma settles at sigma_3^c"),
-            "mean sigma = " + num(s_end) + ", sigma_3^c = " + num(sc3) + " (gap " + pct(gap) + ")", "gap < 2%",
-            gap < 0.02, "mean over t in [" + num(T - w) + ", " + num(T) + "]");
+            paper_check::settles_at(l.t(), l.run.trajectory.sigma, sc3, w, 0.02),
+            "sigma_3^c = " + num(sc3) + " (closed form); means over the last two windows of " + num(w) + " of " + run);
     double onset = T;
     for (std::size_t i = 0; i < above.size(); ++i)
       if (above[i] > 10 * above.front()) {
         onset = l.t()[i];
         break;
       }
-    const double follow = max_relative_gap(l.t(), l.run.trajectory.sigma, red.run.trajectory.sigma, onset);
     c.claim(tag + ": sigma(t) initially follows the reduced system's sigma_R(t)",
-            "max |sigma - sigma_R| / |sigma_R| = " + pct(follow) + " for t <= " + num(onset), "< 5%", follow < 0.05,
-            "while the instability develops: until sum_{l>=3} Delta_l has grown tenfold");
+            paper_check::follows(l.t(), l.run.trajectory.sigma, red.run.trajectory.sigma, onset, 0.05),
+            "sigma of the full run against sigma_R of its reduced companion (another model level), while the "
+            "instability develops: until sum_{l>=3} Delta_l has grown tenfold");
   }
   panels.push_back(delta_panels[0]);
   panels.push_back(delta_panels[1]);

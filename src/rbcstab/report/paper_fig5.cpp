@@ -54,28 +54,19 @@ void fig5(Composer& c, int k, int n) {
                       {"xlabel", tex_symbol("lnC")},
                       {"ylabel", tex_symbol("lambda")}});
   }
-  auto counts = [&](char p) {
-    return std::to_string(count[{p, 40}]) + ", " + std::to_string(count[{p, 100}]) + ", " +
-           std::to_string(count[{p, 500}]);
-  };
+  auto counts = [&](char p) { return std::vector<std::size_t>{count[{p, 40}], count[{p, 100}], count[{p, 500}]}; };
   c.claim("(b) alpha = 40 is below alpha_*^init: the whole ln C - lambda plane is stable",
-          "unstable points at alpha = 40, Delta = 0.1: " + std::to_string(count[{'b', 40}]), "0", count[{'b', 40}] == 0,
-          grid);
+          paper_check::none(count[{'b', 40}], "unstable points at alpha = 40, Delta = 0.1"), grid);
   for (char p : {'a', 'b'})
     c.claim(std::string("(") + p + ") Increasing alpha pushes the boundary to higher C (more of the plane unstable)",
-            "unstable points at alpha = 40, 100, 500: " + counts(p),
-            "non-decreasing in alpha, alpha = 500 > alpha = 40",
-            count[{p, 40}] <= count[{p, 100}] && count[{p, 100}] <= count[{p, 500}] && count[{p, 500}] > count[{p, 40}],
-            grid);
-  bool delta_effect = true;
-  for (int a : alphas) delta_effect = delta_effect && count[{'a', a}] >= count[{'b', a}];
-  c.claim("A similar effect for increased Delta: (a) Delta = 1 at least as unstable as (b) Delta = 0.1 at every alpha",
-          "unstable points (a): " + counts('a') + "; (b): " + counts('b'), "(a) >= (b) at each alpha", delta_effect,
-          grid);
+            paper_check::increasing(counts(p), "unstable points at alpha = 40, 100, 500"), grid);
+  c.claim(
+      "A similar effect for increased Delta: (a) Delta = 1 at least as unstable as (b) Delta = 0.1 at every alpha",
+      paper_check::at_least_each(counts('a'), counts('b'), "unstable points at alpha = 40, 100, 500, (a) against (b)"),
+      grid);
   const auto [low, high] = halves[{'a', 500}];
   c.claim("Increasing lambda destabilises RBCs with large C (panel (a), alpha = 500)",
-          "unstable points at lambda < 5: " + std::to_string(low) + ", lambda >= 5: " + std::to_string(high),
-          "lambda >= 5 > lambda < 5", high > low, grid);
+          paper_check::more_than(high, low, "unstable points at lambda >= 5 against lambda < 5"), grid);
   c.end(
       panels, 1, 2, 1500, 650,
       "OP stability in ln C - lambda at alpha = 40, 100, 500 for Delta = 1 (a) and 0.1 (b); markers: unstable points; "

@@ -24,9 +24,10 @@ std::string paper_html(const json& spec, const PaperResult& r, const PaperOption
        ".fig{display:flex;gap:1em;flex-wrap:wrap}.fig>div{flex:1 1 600px}</style></head><body>\n";
   h << "<h1>Moriel, Stone &amp; Mendez: the figures recomputed by rbcstab</h1>\n<p>"
     << (o.quick ? "Quick mode (coarse grids: 12 x 12 phase diagrams, a reduced Fig. 6e grid). " : "Full grids. ")
-    << "Claims checked: " << r.passed << " passed, " << r.failed
-    << " failed. Runs that did not reach T: " << r.failed_runs
-    << ". A failed claim is shown as measured, not tuned away.</p>\n<ul>";
+    << "Claims checked: " << r.passed << " passed, " << r.failed << " failed (" << r.inconsistent
+    << " of them paper/model inconsistencies: the model run as the paper states contradicts the paper; the evidence "
+       "is in the row). Runs that did not reach T: "
+    << r.failed_runs << ". A failed claim is shown as measured, not tuned away.</p>\n<ul>";
   for (const auto& f : spec["figures"])
     h << "<li><a href=\"#" << f["id"].get<std::string>() << "\">" << esc(f["title"].get<std::string>()) << "</a></li>";
   h << "</ul>\n";
@@ -41,7 +42,9 @@ std::string paper_html(const json& spec, const PaperResult& r, const PaperOption
       if (c.figure == label)
         h << "<tr class=\"" << (c.passed ? "pass" : "fail") << "\"><td>" << esc(c.claim) << "</td><td>"
           << esc(c.measured) << "</td><td>" << esc(c.expected) << "</td><td>" << (c.passed ? "passed" : "<b>FAILED</b>")
-          << "</td><td>" << esc(c.how) << "</td></tr>\n";
+          << (c.inconsistency.empty() ? "" : " (paper/model inconsistency)") << "</td><td>" << esc(c.how)
+          << (c.inconsistency.empty() ? "" : "<br><b>Paper/model inconsistency:</b> " + esc(c.inconsistency))
+          << " <small>[check: " << esc(c.check) << "]</small></td></tr>\n";
     h << "</table><p>Data: ";
     for (const auto& d : f["data"])
       h << "<a href=\"" << d.get<std::string>() << "\">" << d.get<std::string>() << "</a> ";

@@ -82,12 +82,17 @@ nlohmann::json paper_json(const PaperOptions& options, const PaperResult& r) {
   j["claims"] = r.claims.size();
   j["passed"] = r.passed;
   j["failed"] = r.failed;
+  j["inconsistent"] = r.inconsistent;
   j["failed_runs"] = r.failed_runs;
   j["seconds"] = r.seconds;
   nlohmann::json failed = nlohmann::json::array();
   for (const auto& c : r.claims)
     if (!c.passed)
-      failed.push_back({{"figure", c.figure}, {"claim", c.claim}, {"measured", c.measured}, {"expected", c.expected}});
+      failed.push_back({{"figure", c.figure},
+                        {"claim", c.claim},
+                        {"measured", c.measured},
+                        {"expected", c.expected},
+                        {"inconsistency", c.inconsistency}});
   j["failed_claims"] = failed;
   return j;
 }
@@ -95,11 +100,13 @@ nlohmann::json paper_json(const PaperOptions& options, const PaperResult& r) {
 std::string paper_text(const PaperOptions& options, const PaperResult& r) {
   TextStream s;
   s << "paper written to " << options.output << " (" << r.figures.size() << " figures, open index.html) in "
-    << duration_text(r.seconds) << "; claims: " << r.passed << " passed, " << r.failed << " failed\n";
+    << duration_text(r.seconds) << "; claims: " << r.passed << " passed, " << r.failed << " failed (" << r.inconsistent
+    << " of them paper/model inconsistencies)\n";
   for (const auto& c : r.claims)
     if (!c.passed)
       s << "  FAILED " << c.figure << ": " << c.claim << "\n    measured " << c.measured << "; expected " << c.expected
-        << "\n";
+        << "\n"
+        << (c.inconsistency.empty() ? "" : "    paper/model inconsistency: " + c.inconsistency + "\n");
   return s.str();
 }
 

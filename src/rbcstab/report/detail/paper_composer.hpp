@@ -22,6 +22,7 @@
 #include "rbcstab/io/simulation_io.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/report/paper.hpp"
+#include "rbcstab/report/paper_checks.hpp"
 #include "rbcstab/report/report.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram.hpp"
@@ -111,10 +112,15 @@ class Composer {
     res_.figures.push_back(current_);
   }
 
-  void claim(const std::string& text, const std::string& measured, const std::string& expected, bool passed,
-             const std::string& how) {
-    res_.claims.push_back({label_, text, measured, expected, passed, how});
+  // A claim and its check; `inconsistency` (the evidence) is kept only if the check fails.
+  void claim(const std::string& text, const paper_check::Check& check, const std::string& how,
+             const std::string& inconsistency = "") {
+    res_.claims.push_back({label_, text, check.measured, check.expected, check.passed, how, check.name,
+                           check.passed ? "" : inconsistency});
   }
+
+  // A run made outside lines() and diagram(): counted in failed_runs unless it reached T.
+  void count_run(bool reached_T) { res_.failed_runs += !reached_T; }
 
   std::string put(const std::string& name, const std::string& text) {
     const std::string rel = current_.id + "/" + name;
