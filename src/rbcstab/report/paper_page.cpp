@@ -3,6 +3,7 @@
 
 #include <sstream>
 
+#include "rbcstab/report/detail/html_text.hpp"
 #include "rbcstab/report/detail/paper_composer.hpp"
 #include "rbcstab/report/detail/provenance.hpp"
 #include "rbcstab/report/detail/report_pages.hpp"
@@ -33,15 +34,16 @@ std::string paper_html(const json& spec, const PaperResult& r, const PaperOption
   for (const auto& f : spec["figures"]) {
     const std::string label = f["label"];
     h << "<h2 id=\"" << f["id"].get<std::string>() << "\">" << esc(f["title"].get<std::string>()) << "</h2>\n"
-      << "<div class=\"fig\"><div><img src=\"" << f["png"].get<std::string>() << "\" alt=\"" << esc(label)
-      << "\"></div><div><p>" << esc(f["caption"].get<std::string>())
+      << "<div class=\"fig\"><div><a href=\"" << esc(f.value("svg", f["png"].get<std::string>()))
+      << "\" title=\"open the figure whole\"><img src=\"" << esc(f["png"].get<std::string>()) << "\" alt=\""
+      << esc(label) << "\"></a></div><div><p>" << html_text(f["caption"].get<std::string>())
       << "</p>\n<table><tr><th>claim</th><th>measured</th>"
       << "<th>expected</th><th></th><th>how</th></tr>\n";
     for (const ClaimCheck& c : r.claims)
       if (c.figure == label)
-        h << "<tr class=\"" << (c.passed ? "pass" : "fail") << "\"><td>" << esc(c.claim) << "</td><td>"
-          << esc(c.measured) << "</td><td>" << esc(c.expected) << "</td><td>" << (c.passed ? "passed" : "<b>FAILED</b>")
-          << "</td><td>" << esc(c.how) << "</td></tr>\n";
+        h << "<tr class=\"" << (c.passed ? "pass" : "fail") << "\"><td>" << html_text(c.claim) << "</td><td>"
+          << html_text(c.measured) << "</td><td>" << html_text(c.expected) << "</td><td>"
+          << (c.passed ? "passed" : "<b>FAILED</b>") << "</td><td>" << html_text(c.how) << "</td></tr>\n";
     h << "</table><p>Data: ";
     for (const auto& d : f["data"])
       h << "<a href=\"" << d.get<std::string>() << "\">" << d.get<std::string>() << "</a> ";
