@@ -55,11 +55,15 @@ def test_hover_places_points_where_matplotlib_drew_them(tmp_path, xscale):
 
 
 def test_phase_diagram_and_bifurcation_carry_their_points(tmp_path):
-    report.selftest(str(tmp_path))
-    import json
-    drawn = {d["file"]: d for d in json.load(open(tmp_path / "figures.json"))}
-    phase = drawn["fig_phase_diagram.png"]["hover"]
-    assert phase["columns"] == ["ln_B", "ln_C", "l_Delta"] and len(phase["points"]) == 120  # every cell
-    bif = drawn["fig_bifurcation.png"]["hover"]
-    assert ["BP 3"] == [p[3] for p in bif["points"] if p[3] == "BP 3"]  # the special point, by its text
-    assert "hover" not in drawn["fig_delta2_theory.png"]
+    csv = tmp_path / "phase.csv"
+    csv.write_text("index,i,j,ln_B,ln_C,verdict,l_Delta\n" + "".join(
+        f"{3 * i + j},{i},{j},{i},{j - 2},x,{2 + (i > j)}\n" for i in range(3) for j in range(3)))
+    phase = report.plot_phase_diagram(str(csv), str(tmp_path / "p.png"), size_px=(400, 300))["hover"]
+    assert phase["columns"] == ["ln_B", "ln_C", "l_Delta"]
+    assert sorted(map(tuple, phase["points"])) == sorted((i, j - 2, 2 + (i > j)) for i in range(3) for j in range(3))
+    spec = {"x": {"name": "C"}, "y": {"name": "r"},
+            "series": [{"name": "eq", "segments": [{"stability": "stable", "x": [0, 1, None], "y": [0.5, 0.6, 0.7]}]}],
+            "points": [{"x": 1, "y": 0.6, "series": 0, "text": "BP 3", "type": "BP"}]}
+    columns, points = report.bifurcation_points(spec)
+    assert columns == ["C", "r", "branch", "point"]
+    assert points == [[0, 0.5, "eq", "stable"], [1, 0.6, "eq", "stable"], [1, 0.6, "eq", "BP 3"]]  # no None vertex
