@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "rbcstab/report/detail/html_text.hpp"
 #include "rbcstab/report/paper.hpp"
 
 namespace rbcstab {
@@ -19,12 +20,6 @@ std::string slurp(const fs::path& p) {
   std::stringstream ss;
   ss << in.rdbuf();
   return ss.str();
-}
-
-std::string html_escaped(const std::string& s) {
-  std::string o;
-  for (char c : s) o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
-  return o;
 }
 
 TEST(PaperQuick, EveryFigureDrawnEveryClaimEvaluated) {
@@ -50,7 +45,7 @@ TEST(PaperQuick, EveryFigureDrawnEveryClaimEvaluated) {
     const ClaimCheck& c = r.claims[k];
     EXPECT_FALSE(c.measured.empty()) << c.claim;
     EXPECT_FALSE(c.expected.empty()) << c.claim;
-    EXPECT_NE(html.find(html_escaped(c.claim)), std::string::npos) << c.claim;
+    EXPECT_NE(html.find(detail::html_text(c.claim)), std::string::npos) << c.claim;
     EXPECT_EQ(claims[k]["passed"].get<bool>(), c.passed);
     failed_rows += !c.passed;
   }
@@ -62,6 +57,9 @@ TEST(PaperQuick, EveryFigureDrawnEveryClaimEvaluated) {
   for (const PaperFigure& f : r.figures) {
     EXPECT_TRUE(fs::is_regular_file(parent / "paper" / (f.id + ".png"))) << f.id;
     EXPECT_GT(fs::file_size(parent / "paper" / (f.id + ".png")), 10000u) << f.id;
+    // Its SVG too, which a click on the image opens.
+    EXPECT_NE(slurp(parent / "paper" / (f.id + ".svg")).find("<svg"), std::string::npos) << f.id;
+    EXPECT_NE(html.find("<a href=\"" + f.id + ".svg\""), std::string::npos) << f.id;
     EXPECT_FALSE(f.data.empty()) << f.id;
     for (const std::string& d : f.data) EXPECT_TRUE(fs::is_regular_file(parent / "paper" / d)) << d;
   }

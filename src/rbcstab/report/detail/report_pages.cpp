@@ -202,7 +202,7 @@ std::string report_markdown(const nlohmann::json& m, const nlohmann::json& drawn
     const nlohmann::json* f = figure_of(m, file);
     if (!f) continue;
     md << "### " << f->at("kind").get<std::string>() << "\n\n![" << file << "](" << file << ")\n\n"
-       << f->at("caption").get<std::string>() << ". Data: ";
+       << plain_text(f->at("caption").get<std::string>()) << ". Data: ";
     bool first = true;
     for (const auto& x : f->at("data")) {
       md << (first ? "" : ", ") << "[" << x.get<std::string>() << "](" << x.get<std::string>() << ")";
