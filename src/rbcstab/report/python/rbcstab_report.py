@@ -22,7 +22,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib import colors as mcolors  # noqa: E402
-from axis_rules import excess_area_limits  # noqa: E402 (beside this script, on sys.path)
+from axis_rules import excess_area_limits, transient_time_scale  # noqa: E402 (beside this script, on sys.path)
 from phase_draw import draw_phase_diagram, greys  # noqa: E402 (beside this script, on sys.path)
 
 DPI = 100
@@ -151,7 +151,8 @@ def mode_columns(data):
 
 
 def plot_excess_areas(trajectory_csv, out, size_px=(900, 600), title=None, svg=False):
-    """Delta_l(t), l = 2..L, on a log axis (the perturbations start at delta ~ 1e-3 or smaller)."""
+    """Delta_l(t), l = 2..L, on a log axis (the perturbations start at delta ~ 1e-3 or smaller); the time axis is
+    logarithmic above the first sample when the transient spans decades (axis_rules.transient_time_scale)."""
     data = read_csv(trajectory_csv)
     modes = mode_columns(data)
     fig, ax = new_figure(size_px)
@@ -164,7 +165,11 @@ def plot_excess_areas(trajectory_csv, out, size_px=(900, 600), title=None, svg=F
     limits = excess_area_limits([data[key] for _, key in modes])
     if limits:
         ax.set_ylim(*limits)
-    ax.set_xlabel("$t$")
+    scale, t1 = transient_time_scale(data["t"], [data[key] for _, key in modes], limits)
+    if scale == "symlog":  # the transient spans decades (axis_rules): t = 0 linear, the rest logarithmic
+        ax.set_xscale("symlog", linthresh=t1, linscale=0.25)
+        ax.set_xlim(0, max(data["t"]))
+    ax.set_xlabel("$t$" + (" (symmetric log: linear below %g)" % t1 if scale == "symlog" else ""))
     ax.set_ylabel(r"$\Delta_l(t)$")
     ax.legend(ncol=2 if len(modes) > 5 else 1, loc="best")
     if title:
