@@ -74,5 +74,18 @@ TEST(MathML, SymbolsOfThePages) {
   EXPECT_EQ(detail::plain_text("mode $l$ grows while $sigma < sigma_l^c$"), "mode l grows while σ < σ_l^c");
 }
 
+TEST(HtmlText, AsciiSymbolsInRunningTextBecomeMathML) {
+  // The paper's claims and the parameter table's meanings are plain text: their symbols are found as words.
+  EXPECT_EQ(detail::html_text("max Delta_3 / Delta_3(0)"),
+            "max " + detail::mathml("Delta_3") + " / " + detail::mathml("Delta_3") + "(0)");
+  EXPECT_EQ(detail::html_text("l_Delta = 4, alpha"), detail::mathml("l_Delta") + " = 4, " + detail::mathml("alpha"));
+  EXPECT_EQ(detail::html_text("in f_{l,0} at sigma_l^c."),
+            "in " + detail::mathml("f_{l,0}") + " at " + detail::mathml("sigma_l^c") + ".");
+  // Not symbols: names of fields and files, plain words, single letters without scripts, a Greek prefix.
+  for (const char* plain :
+       {"sigma_initial", "phase_diagram.csv", "l_Delta_final", "a tail mean", "Delta0", "alphabet", "x_min"})
+    EXPECT_EQ(detail::html_text(plain), plain) << plain;
+}
+
 }  // namespace
 }  // namespace rbcstab

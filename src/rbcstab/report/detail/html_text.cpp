@@ -16,6 +16,48 @@ bool is_digit(char c) { return std::isdigit(static_cast<unsigned char>(c)) != 0;
 bool is_alpha(char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; }
 bool is_word(char c) { return is_digit(c) || is_alpha(c) || c == '_'; }
 
+const std::map<std::string, std::string>& greek();
+std::string mathml_of(const std::string& expr);
+
+// An ASCII symbol in running text, at s[i] (a word start): a Greek name, or a Greek name or single letter with
+// sub/superscripts that are each a Greek name, one letter, digits, * or a {group} ("Delta_3", "sigma_l^c",
+// "l_Delta", "f_{l,0}"). Its length, or 0 when the word is not one ("phase_diagram", "sigma_initial", "a").
+std::size_t symbol_length(const std::string& s, std::size_t i) {
+  auto letters = [&](std::size_t k) {
+    std::size_t j = k;
+    while (j < s.size() && is_alpha(s[j])) ++j;
+    return j;
+  };
+  const std::size_t base_end = letters(i);
+  const std::string base = s.substr(i, base_end - i);
+  const bool base_greek = greek().count(base) != 0;
+  if (!base_greek && base.size() != 1) return 0;
+  std::size_t k = base_end;
+  int scripts = 0;
+  while (scripts < 2 && k + 1 < s.size() && (s[k] == '_' || s[k] == '^')) {
+    const std::size_t a = k + 1;
+    std::size_t e = a;
+    if (s[a] == '{') {
+      e = s.find('}', a);
+      if (e == std::string::npos) return 0;
+      ++e;
+    } else if (s[a] == '*') {
+      e = a + 1;
+    } else if (is_digit(s[a])) {
+      while (e < s.size() && is_digit(s[e])) ++e;
+    } else if (is_alpha(s[a])) {
+      e = letters(a);
+      if (e - a != 1 && greek().count(s.substr(a, e - a)) == 0) return 0;
+    } else {
+      return 0;
+    }
+    k = e;
+    ++scripts;
+  }
+  if (k < s.size() && (is_word(s[k]) || s[k] == '^')) return 0;
+  return (base_greek || scripts > 0) ? k - i : 0;
+}
+
 // A number written with an exponent: its mantissa as written, then x10 and the exponent raised, U+2212 for minus.
 std::string with_power(const std::string& mantissa, const std::string& exponent) {
   const bool negative = exponent[0] == '-';
@@ -24,12 +66,23 @@ std::string with_power(const std::string& mantissa, const std::string& exponent)
   return mantissa + "\u2009\u00d7\u200910<sup>" + (negative ? "\u2212" : "") + exponent.substr(k) + "</sup>";
 }
 
-// Escaped text with every number that carries an exponent raised (one pass: a number starts after a non-word
-// character and ends before one, so "fig_3e2" is left alone).
+// Escaped text with every number that carries an exponent raised and every ASCII symbol (symbol_length) as MathML,
+// in one pass: a number or a symbol starts after a non-word character and ends before one, so "fig_3e2" and
+// "phase_diagram" are left alone.
 std::string text_html(const std::string& s) {
   std::string o;
   std::size_t i = 0;
   while (i < s.size()) {
+    if (is_alpha(s[i]) && (i == 0 || !is_word(s[i - 1]))) {
+      const std::size_t n = symbol_length(s, i);
+      if (n > 0) {
+        o += mathml_of(s.substr(i, n));
+        i += n;
+        continue;
+      }
+      while (i < s.size() && is_word(s[i])) o += s[i++];  // a plain word, whole (no number read inside it)
+      continue;
+    }
     const bool starts = is_digit(s[i]) && (i == 0 || (!is_word(s[i - 1]) && s[i - 1] != '.'));
     if (starts) {
       std::size_t j = i;
@@ -146,6 +199,11 @@ struct MathReader {
   }
 };
 
+std::string mathml_of(const std::string& expr) {
+  MathReader r{expr};
+  return "<math>" + r.row('\0') + "</math>";
+}
+
 }  // namespace
 
 std::string html_number(double v, int digits) {
@@ -156,10 +214,7 @@ std::string html_number(double v, int digits) {
   return text_html(ss.str());
 }
 
-std::string mathml(const std::string& expr) {
-  MathReader r{expr};
-  return "<math>" + r.row('\0') + "</math>";
-}
+std::string mathml(const std::string& expr) { return mathml_of(expr); }
 
 std::string html_text(const std::string& text) {
   std::string o;
