@@ -29,11 +29,12 @@ std::string paper_html(const json& spec, const PaperResult& r, const PaperOption
     << " failed. Runs that did not reach T: " << r.failed_runs
     << ". A failed claim is shown as measured, not tuned away.</p>\n<ul>";
   for (const auto& f : spec["figures"])
-    h << "<li><a href=\"#" << f["id"].get<std::string>() << "\">" << esc(f["title"].get<std::string>()) << "</a></li>";
+    h << "<li><a href=\"#" << f["id"].get<std::string>() << "\">" << html_text(f["title"].get<std::string>())
+      << "</a></li>";
   h << "</ul>\n";
   for (const auto& f : spec["figures"]) {
     const std::string label = f["label"];
-    h << "<h2 id=\"" << f["id"].get<std::string>() << "\">" << esc(f["title"].get<std::string>()) << "</h2>\n"
+    h << "<h2 id=\"" << f["id"].get<std::string>() << "\">" << html_text(f["title"].get<std::string>()) << "</h2>\n"
       << "<div class=\"fig\"><div><a href=\"" << esc(f.value("svg", f["png"].get<std::string>()))
       << "\" title=\"open the figure whole\"><img src=\"" << esc(f["png"].get<std::string>()) << "\" alt=\""
       << esc(label) << "\"></a></div><div><p>" << html_text(f["caption"].get<std::string>())
