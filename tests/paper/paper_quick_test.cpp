@@ -8,7 +8,6 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "rbcstab/report/detail/html_text.hpp"
 #include "rbcstab/report/paper.hpp"
 
 namespace rbcstab {
@@ -45,11 +44,15 @@ TEST(PaperQuick, EveryFigureDrawnEveryClaimEvaluated) {
     const ClaimCheck& c = r.claims[k];
     EXPECT_FALSE(c.measured.empty()) << c.claim;
     EXPECT_FALSE(c.expected.empty()) << c.claim;
-    EXPECT_NE(html.find(detail::html_text(c.claim)), std::string::npos) << c.claim;
     EXPECT_EQ(claims[k]["passed"].get<bool>(), c.passed);
     failed_rows += !c.passed;
   }
-  // Each failed claim is shown as failed on the page.
+  // One row per claim on the page (their text is written with MathML symbols: report/detail/html_text, tested in
+  // tests/report), each failed one shown as failed.
+  std::size_t rows = 0;
+  for (const char* tag : {"<tr class=\"pass\">", "<tr class=\"fail\">"})
+    for (std::size_t at = html.find(tag); at != std::string::npos; at = html.find(tag, at + 1)) ++rows;
+  EXPECT_EQ(rows, r.claims.size());
   std::size_t shown = 0;
   for (std::size_t at = html.find("<b>FAILED</b>"); at != std::string::npos; at = html.find("<b>FAILED</b>", at + 1))
     ++shown;
