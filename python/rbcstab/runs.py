@@ -110,7 +110,9 @@ class Simulation:
 
     def plot(self, ax=None, modes=None, sigma=False):
         """Delta_l(t) for the given modes (default all), log scale; sigma=True draws sigma(t) instead. The lines
-        break over samples a certified early stop skipped (NaN): no line across a span that was not computed."""
+        break over samples a certified early stop skipped (NaN): no line across a span that was not computed. As in
+        the report, a transient that is over in the first tenth of a run spanning decades of t gets a symlog time
+        axis (linear below the first sample, logarithmic above)."""
         import matplotlib.pyplot as plt
         ax = ax if ax is not None else plt.gca()
         if sigma:
@@ -120,9 +122,13 @@ class Simulation:
             shown = list(modes if modes is not None else self.ls)
             for l in shown:
                 ax.semilogy(self.t, self.Delta[:, l - 2], label=rf"$\Delta_{{{l}}}$")
-            limits = drawing_module("axis_rules").excess_area_limits([self.Delta[:, l - 2] for l in shown])
+            rules = drawing_module("axis_rules")
+            limits = rules.excess_area_limits([self.Delta[:, l - 2] for l in shown])
             if limits:  # the report's rule: decayed modes leave the axis instead of stretching it to 1e-100
                 ax.set_ylim(*limits)
+            scale, t1 = rules.transient_time_scale(self.t, [self.Delta[:, l - 2] for l in shown], limits)
+            if scale == "symlog":  # the report's rule too: a transient over decades of t is not squeezed
+                ax.set_xscale("symlog", linthresh=t1, linscale=0.25)
             ax.set_ylabel(r"$\Delta_l$")
         ax.set_xlabel(r"$t\dot\gamma$")
         ax.set_title(self._data["scene"])

@@ -22,12 +22,6 @@ std::string slurp(const fs::path& p) {
   return ss.str();
 }
 
-std::string html_escaped(const std::string& s) {
-  std::string o;
-  for (char c : s) o += c == '<' ? "&lt;" : c == '>' ? "&gt;" : c == '&' ? "&amp;" : std::string(1, c);
-  return o;
-}
-
 TEST(PaperQuick, EveryFigureDrawnEveryClaimEvaluated) {
   const fs::path parent = fs::temp_directory_path() / ("rbcstab_paper_quick_" + std::to_string(::getpid()));
   fs::remove_all(parent);
@@ -52,7 +46,6 @@ TEST(PaperQuick, EveryFigureDrawnEveryClaimEvaluated) {
     const ClaimCheck& c = r.claims[k];
     EXPECT_FALSE(c.measured.empty()) << c.claim;
     EXPECT_FALSE(c.expected.empty()) << c.claim;
-    EXPECT_NE(html.find(html_escaped(c.claim)), std::string::npos) << c.claim;
     EXPECT_EQ(claims[k]["passed"].get<bool>(), c.passed);
     // Every claim is decided by a check that paper_checks_test shows failing on wrong inputs.
     EXPECT_NE(std::find(checks.begin(), checks.end(), c.check), checks.end()) << c.claim << ": " << c.check;
@@ -65,7 +58,12 @@ TEST(PaperQuick, EveryFigureDrawnEveryClaimEvaluated) {
     }
   }
   EXPECT_EQ(r.inconsistent, inconsistent_rows);
-  // Each failed claim is shown as failed on the page.
+  // One row per claim on the page (their text is written with MathML symbols: report/detail/html_text, tested in
+  // tests/report), each failed one shown as failed.
+  std::size_t rows = 0;
+  for (const char* tag : {"<tr class=\"pass\">", "<tr class=\"fail\">"})
+    for (std::size_t at = html.find(tag); at != std::string::npos; at = html.find(tag, at + 1)) ++rows;
+  EXPECT_EQ(rows, r.claims.size());
   std::size_t shown = 0;
   for (std::size_t at = html.find("<b>FAILED</b>"); at != std::string::npos; at = html.find("<b>FAILED</b>", at + 1))
     ++shown;
@@ -73,6 +71,9 @@ TEST(PaperQuick, EveryFigureDrawnEveryClaimEvaluated) {
   for (const PaperFigure& f : r.figures) {
     EXPECT_TRUE(fs::is_regular_file(parent / "paper" / (f.id + ".png"))) << f.id;
     EXPECT_GT(fs::file_size(parent / "paper" / (f.id + ".png")), 10000u) << f.id;
+    // Its SVG too, which a click on the image opens.
+    EXPECT_NE(slurp(parent / "paper" / (f.id + ".svg")).find("<svg"), std::string::npos) << f.id;
+    EXPECT_NE(html.find("<a href=\"" + f.id + ".svg\""), std::string::npos) << f.id;
     EXPECT_FALSE(f.data.empty()) << f.id;
     for (const std::string& d : f.data) EXPECT_TRUE(fs::is_regular_file(parent / "paper" / d)) << d;
   }

@@ -136,7 +136,10 @@ PaperResult build_paper(const PaperOptions& options) {
       if (rc != 0)
         throw ReportError("the plotting script failed (exit " + std::to_string(rc) +
                           "): " + detail::log_tail(log, 1500));
-      for (const auto& f : c.figures) res.files.push_back(f["png"].get<std::string>());
+      for (const auto& f : c.figures) {
+        res.files.push_back(f["png"].get<std::string>());
+        if (f.contains("svg")) res.files.push_back(f["svg"].get<std::string>());
+      }
       res.files.push_back("plot.log");
       write_file_atomic((tmp / "index.html").string(), paper_html(spec, res, o));
       res.files.push_back("index.html");

@@ -3,6 +3,7 @@
 
 #include <sstream>
 
+#include "rbcstab/report/detail/html_text.hpp"
 #include "rbcstab/report/detail/paper_composer.hpp"
 #include "rbcstab/report/detail/provenance.hpp"
 #include "rbcstab/report/detail/report_pages.hpp"
@@ -29,21 +30,24 @@ std::string paper_html(const json& spec, const PaperResult& r, const PaperOption
        "is in the row). Runs that did not reach T: "
     << r.failed_runs << ". A failed claim is shown as measured, not tuned away.</p>\n<ul>";
   for (const auto& f : spec["figures"])
-    h << "<li><a href=\"#" << f["id"].get<std::string>() << "\">" << esc(f["title"].get<std::string>()) << "</a></li>";
+    h << "<li><a href=\"#" << f["id"].get<std::string>() << "\">" << html_text(f["title"].get<std::string>())
+      << "</a></li>";
   h << "</ul>\n";
   for (const auto& f : spec["figures"]) {
     const std::string label = f["label"];
-    h << "<h2 id=\"" << f["id"].get<std::string>() << "\">" << esc(f["title"].get<std::string>()) << "</h2>\n"
-      << "<div class=\"fig\"><div><img src=\"" << f["png"].get<std::string>() << "\" alt=\"" << esc(label)
-      << "\"></div><div><p>" << esc(f["caption"].get<std::string>())
+    h << "<h2 id=\"" << f["id"].get<std::string>() << "\">" << html_text(f["title"].get<std::string>()) << "</h2>\n"
+      << "<div class=\"fig\"><div><a href=\"" << esc(f.value("svg", f["png"].get<std::string>()))
+      << "\" title=\"open the figure whole\"><img src=\"" << esc(f["png"].get<std::string>()) << "\" alt=\""
+      << esc(label) << "\"></a></div><div><p>" << html_text(f["caption"].get<std::string>())
       << "</p>\n<table><tr><th>claim</th><th>measured</th>"
       << "<th>expected</th><th></th><th>how</th></tr>\n";
     for (const ClaimCheck& c : r.claims)
       if (c.figure == label)
-        h << "<tr class=\"" << (c.passed ? "pass" : "fail") << "\"><td>" << esc(c.claim) << "</td><td>"
-          << esc(c.measured) << "</td><td>" << esc(c.expected) << "</td><td>" << (c.passed ? "passed" : "<b>FAILED</b>")
-          << (c.inconsistency.empty() ? "" : " (paper/model inconsistency)") << "</td><td>" << esc(c.how)
-          << (c.inconsistency.empty() ? "" : "<br><b>Paper/model inconsistency:</b> " + esc(c.inconsistency))
+        h << "<tr class=\"" << (c.passed ? "pass" : "fail") << "\"><td>" << html_text(c.claim) << "</td><td>"
+          << html_text(c.measured) << "</td><td>" << html_text(c.expected) << "</td><td>"
+          << (c.passed ? "passed" : "<b>FAILED</b>")
+          << (c.inconsistency.empty() ? "" : " (paper/model inconsistency)") << "</td><td>" << html_text(c.how)
+          << (c.inconsistency.empty() ? "" : "<br><b>Paper/model inconsistency:</b> " + html_text(c.inconsistency))
           << " <small>[check: " << esc(c.check) << "]</small></td></tr>\n";
     h << "</table><p>Data: ";
     for (const auto& d : f["data"])

@@ -276,13 +276,13 @@ void add_hook_figures(const ReportOptions& o, const std::optional<PlotSpec>& bif
       data.push_back(import_hook(overlay.string(), dir, "phase_diagram_overlay.json"));
     files.insert(files.end(), data.begin(), data.end());
     figs.push_back(titled(figure("phase_diagram", "fig_phase_diagram.png", 900, 750, data,
-                                 "Phase diagram coloured by l_Delta with the traced boundaries and analytic lines")));
+                                 "Phase diagram coloured by $l_Delta$ with the traced boundaries and analytic lines")));
   }
   if (!o.delta2_comparison.empty()) {
     const std::string d = import_hook(o.delta2_comparison, dir, "delta2_comparison.csv");
     files.push_back(d);
     figs.push_back(titled(figure("delta2_comparison", "fig_delta2_theory.png", 750, 750, {d},
-                                 "Fig. 6e-type: post-instability Delta~_2 from theory against the simulated mean")));
+                                 "Fig. 6e-type: post-instability $~Delta_2$ from theory against the simulated mean")));
   }
   if (bifurcation) {
     const std::string d = import_hook(o.bifurcation, dir, "bifurcation.json");
@@ -530,39 +530,39 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
     // Times stay in model units; a physical scene's captions say what that unit is in seconds.
     const std::string t_unit =
         sf.scene.physical
-            ? " (t in units of 1/gamma = " + format_value(cell_numbers(*sf.scene.physical).time_unit) + " s)"
+            ? " ($t$ in units of $1/gamma$ = " + format_value(cell_numbers(*sf.scene.physical).time_unit) + " s)"
             : "";
     nlohmann::json figs = nlohmann::json::array();
-    figs.push_back(
-        figure("reduced_dynamics", "fig_reduced_r_Psi.png", 1200, 450,
-               res.has_reduced ? std::vector<std::string>{"reduced_trajectory.csv", "trajectory.csv"}
-                               : std::vector<std::string>{"trajectory.csv"},
-               std::string(res.has_reduced ? "Fig. 2-type: ellipsoidal amplitude r(t) and angle Psi(t), reduced system "
-                                             "(l = 2 only, perturbations dropped) and the l = 2 block of this run"
-                                           : "Fig. 2-type: ellipsoidal amplitude r(t) and angle Psi(t) of this run "
-                                             "(reduced level)") +
-                   t_unit));
+    figs.push_back(figure(
+        "reduced_dynamics", "fig_reduced_r_Psi.png", 1200, 450,
+        res.has_reduced ? std::vector<std::string>{"reduced_trajectory.csv", "trajectory.csv"}
+                        : std::vector<std::string>{"trajectory.csv"},
+        std::string(res.has_reduced ? "Fig. 2-type: ellipsoidal amplitude $r(t)$ and angle $Psi(t)$, reduced system "
+                                      "($l = 2$ only, perturbations dropped) and the $l = 2$ block of this run"
+                                    : "Fig. 2-type: ellipsoidal amplitude $r(t)$ and angle $Psi(t)$ of this run "
+                                      "(reduced level)") +
+            t_unit));
     figs.push_back(figure("excess_areas", "fig_excess_areas.png", 900, 600, {"trajectory.csv"},
-                          "Fig. 3b/c-type: excess area per mode Delta_l(t), l = 2..L (log scale)" + t_unit));
+                          "Fig. 3b/c-type: excess area per mode $Delta_l(t)$, $l$ = 2..$L$ (log scale)" + t_unit));
     figs.push_back(figure("tension", "fig_tension.png", 900, 600,
                           res.has_reduced
                               ? std::vector<std::string>{"trajectory.csv", "thresholds.json", "reduced_trajectory.csv"}
                               : std::vector<std::string>{"trajectory.csv", "thresholds.json"},
-                          "Fig. 3d/e-type: membrane tension sigma(t), the reduced system's sigma_R(t), and the "
-                          "critical tensions sigma_l^c of the modes that can grow" +
+                          "Fig. 3d/e-type: membrane tension $sigma(t)$, the reduced system's $sigma_R(t)$, and the "
+                          "critical tensions $sigma_l^c$ of the modes that can grow" +
                               t_unit));
     nlohmann::json shape_fig =
         figure("shape", "fig_shape_T.png", 750, 750, {"shape_T.csv"},
-               std::string("Fig. 6-inset-type: the shape at t = ") + format_value(res.run.t_reached) +
-                   ", coloured by the distance from the origin rho (" +
+               std::string("Fig. 6-inset-type: the shape at $t$ = ") + format_value(res.run.t_reached) +
+                   ", coloured by the distance from the origin $rho$ (" +
                    (in_plane ? "in-plane start" : "out-of-plane start") + ")");
     shape_fig["t"] = res.run.t_reached;
     figs.push_back(shape_fig);
-    nlohmann::json anim = figure("animation", "fig_animation_strip.png", 1500, 375, {"animation.json"},
-                                 "Shape over t in [" + format_value(sf.scene.T - window) + ", " +
-                                     format_value(sf.scene.T) + "] (frames of animation.gif" +
-                                     (window < sf.scene.T ? ": one period of r(t), so the GIF loops" : "") +
-                                     "), seen from above the shear plane (flow along x, gradient along y)" + t_unit);
+    nlohmann::json anim = figure(
+        "animation", "fig_animation_strip.png", 1500, 375, {"animation.json"},
+        "Shape over $t$ in [" + format_value(sf.scene.T - window) + ", " + format_value(sf.scene.T) +
+            "] (frames of animation.gif" + (window < sf.scene.T ? ": one period of r(t), so the GIF loops" : "") +
+            "), seen from above the shear plane (flow along $x$, gradient along $y$)" + t_unit);
     anim["gif"] = "animation.gif";
     anim["gif_size_px"] = {400, 400};
     figs.push_back(anim);

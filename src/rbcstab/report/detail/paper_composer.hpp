@@ -101,6 +101,7 @@ class Composer {
     figures.push_back({{"id", current_.id},
                        {"title", current_.title},
                        {"png", current_.id + ".png"},
+                       {"svg", current_.id + ".svg"},  // the page opens it on a click (scales without blur)
                        {"size_px", {width, height}},
                        {"nrows", nrows},
                        {"ncols", ncols},

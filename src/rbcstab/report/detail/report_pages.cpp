@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "rbcstab/model/parameter_table.hpp"
+#include "rbcstab/report/detail/html_text.hpp"
 #include "rbcstab/report/detail/provenance.hpp"
 
 namespace rbcstab::detail {
@@ -33,25 +34,27 @@ struct Page {
   std::vector<std::string> warnings;
 };
 
+// Maths between $...$ (html_text: MathML on the page; plain_text: the README).
 std::string regime_text(const nlohmann::json& m) {
   const auto& s = m.at("summary");
   std::ostringstream ss;
   const int lD = s.at("l_Delta").get<int>();
   ss << "Model level " << num(s.at("model")) << " (" << num(s.at("model_reason")) << "), run status "
-     << num(s.at("status")) << " at t = " << num(s.at("t_reached")) << ". ";
+     << num(s.at("status")) << " at $t$ = " << num(s.at("t_reached")) << ". ";
   if (lD == 2)
-    ss << "No mode l >= 3 gained excess area: l_Delta = 2, the ellipsoidal dynamics are stable to the perturbations. ";
+    ss << "No mode $l >= 3$ gained excess area: $l_Delta = 2$, the ellipsoidal dynamics are stable to the "
+          "perturbations. ";
   else
-    ss << "Shape instability: mode l_Delta = " << lD << " gained the most excess area ("
-       << (s.at("oscillating").get<bool>() ? "tail mean over the last window, oscillating run" : "at t = T") << "). ";
+    ss << "Shape instability: mode $l_Delta$ = " << lD << " gained the most excess area ("
+       << (s.at("oscillating").get<bool>() ? "tail mean over the last window, oscillating run" : "at $t = T$") << "). ";
   const auto& th = m.at("thresholds");
-  ss << "alpha = B/C = " << num(th.at("alpha"))
-     << ": the most dangerous continuous mode is l_* = " << num(th.at("l_star"))
-     << " with sigma_* = -4 sqrt(alpha) = " << num(th.at("sigma_star")) << "; sigma(T) = " << num(s.at("sigma_final"))
-     << " (tail mean " << num(s.at("sigma_tail_mean")) << "). ";
+  ss << "$alpha = B/C$ = " << num(th.at("alpha"))
+     << ": the most dangerous continuous mode is $l_*$ = " << num(th.at("l_star"))
+     << " with $sigma_* = -4 sqrt(alpha)$ = " << num(th.at("sigma_star"))
+     << "; $sigma(T)$ = " << num(s.at("sigma_final")) << " (tail mean " << num(s.at("sigma_tail_mean")) << "). ";
   if (m.contains("reduced_summary")) {
     const auto& r = m.at("reduced_summary");
-    ss << "Reduced system: r(T) = " << num(r.at("r_final")) << ", Psi(T) = " << num(r.at("Psi_final")) << ".";
+    ss << "Reduced system: $r(T)$ = " << num(r.at("r_final")) << ", $Psi(T)$ = " << num(r.at("Psi_final")) << ".";
   }
   return ss.str();
 }
@@ -131,7 +134,7 @@ Page make_page(const nlohmann::json& m) {
   }
   const auto& s = m.at("summary");
 
-  Table modes{{"l", "Delta_l(0)", "Delta_l(T)", "tail mean", "sigma_l^c"}, {}};
+  Table modes{{"$l$", "$Delta_l(0)$", "$Delta_l(T)$", "tail mean", "$sigma_l^c$"}, {}};
   const auto& sigc = m.at("thresholds").at("sigma_c");
   // Numeric order (JSON object keys sort as strings: "10" < "2").
   const auto& init = s.at("excess_area_initial");
@@ -140,7 +143,7 @@ Page make_page(const nlohmann::json& m) {
     modes.rows.push_back({k, num(init.at(k)), num(s.at("excess_area_final").at(k)),
                           num(s.at("excess_area_tail_mean").at(k)), sigc.contains(k) ? num(sigc.at(k)) : "n/a"});
   }
-  p.tables.push_back({"Excess area per mode (mode l grows while sigma < sigma_l^c)", modes});
+  p.tables.push_back({"Excess area per mode (mode $l$ grows while $sigma < sigma_l^c$)", modes});
 
   Table run{{"quantity", "value"}, {}};
   for (const char* k :
@@ -205,6 +208,13 @@ std::string html_escape(const std::string& s) {
 }
 
 namespace {
+// JSON inside <script>: "</" written "<\/" so that no string in it can close the element.
+std::string script_json(const nlohmann::json& j) {
+  std::string s = j.dump();
+  for (std::size_t k = s.find("</"); k != std::string::npos; k = s.find("</", k + 3)) s.insert(k + 1, "\\");
+  return s;
+}
+
 // The stamp of a manifest that carries one (every report written since it was added), else nothing.
 std::string provenance_footer_html(const nlohmann::json& m) {
   return m.contains("provenance") ? provenance_html(provenance_from_json(m.at("provenance"))) : "";
@@ -217,17 +227,17 @@ std::string provenance_footer_markdown(const nlohmann::json& m) {
 std::string report_markdown(const nlohmann::json& m, const nlohmann::json& drawn) {
   const Page p = make_page(m);
   std::ostringstream md;
-  md << "# " << p.title << "\n\n" << p.regime << "\n\n";
-  for (const auto& w : p.warnings) md << "> warning: " << w << "\n\n";
+  md << "# " << p.title << "\n\n" << plain_text(p.regime) << "\n\n";
+  for (const auto& w : p.warnings) md << "> warning: " << plain_text(w) << "\n\n";
   for (const auto& [title, t] : p.tables) {
-    md << "## " << title << "\n\n|";
-    for (const auto& h : t.header) md << ' ' << h << " |";
+    md << "## " << plain_text(title) << "\n\n|";
+    for (const auto& h : t.header) md << ' ' << plain_text(h) << " |";
     md << "\n|";
     for (std::size_t k = 0; k < t.header.size(); ++k) md << " --- |";
     md << "\n";
     for (const auto& r : t.rows) {
       md << "|";
-      for (const auto& c : r) md << ' ' << c << " |";
+      for (const auto& c : r) md << ' ' << plain_text(c) << " |";
       md << "\n";
     }
     md << "\n";
@@ -238,7 +248,7 @@ std::string report_markdown(const nlohmann::json& m, const nlohmann::json& drawn
     const nlohmann::json* f = figure_of(m, file);
     if (!f) continue;
     md << "### " << f->at("kind").get<std::string>() << "\n\n![" << file << "](" << file << ")\n\n"
-       << f->at("caption").get<std::string>() << ". Data: ";
+       << plain_text(f->at("caption").get<std::string>()) << ". Data: ";
     bool first = true;
     for (const auto& x : f->at("data")) {
       md << (first ? "" : ", ") << "[" << x.get<std::string>() << "](" << x.get<std::string>() << ")";
@@ -269,42 +279,53 @@ std::string report_html(const nlohmann::json& m, const nlohmann::json& drawn) {
   h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html_escape(p.title)
     << "</title>\n<style>body{font-family:sans-serif;max-width:70em;margin:auto;padding:1em}"
        "table{border-collapse:collapse;margin:0.5em 0}td,th{border:1px solid #999;padding:2px 8px;text-align:right}"
-       "figure{margin:1.5em 0}img{max-width:100%;border:1px solid #ddd}.warn{color:#a00}</style></head><body>\n";
-  h << "<h1>" << html_escape(p.title) << "</h1>\n<p>" << html_escape(p.regime) << "</p>\n";
-  for (const auto& w : p.warnings) h << "<p class=\"warn\">warning: " << html_escape(w) << "</p>\n";
+       "figure{margin:1.5em 0}img{max-width:100%;border:1px solid #ddd}.warn{color:#a00}"
+       ".hover-tip{position:fixed;background:#fff;border:1px solid #666;padding:2px 6px;font-size:0.85em;"
+       "pointer-events:none}</style></head><body>\n";
+  h << "<h1>" << html_escape(p.title) << "</h1>\n<p>" << html_text(p.regime) << "</p>\n";
+  for (const auto& w : p.warnings) h << "<p class=\"warn\">warning: " << html_text(w) << "</p>\n";
   for (const auto& [title, t] : p.tables) {
-    h << "<h2>" << html_escape(title) << "</h2>\n<table><tr>";
-    for (const auto& c : t.header) h << "<th>" << html_escape(c) << "</th>";
+    h << "<h2>" << html_text(title) << "</h2>\n<table><tr>";
+    for (const auto& c : t.header) h << "<th>" << html_text(c) << "</th>";
     h << "</tr>\n";
     for (const auto& r : t.rows) {
       h << "<tr>";
-      for (const auto& c : r) h << "<td>" << html_escape(c) << "</td>";
+      for (const auto& c : r) h << "<td>" << html_text(c) << "</td>";
       h << "</tr>\n";
     }
     h << "</table>\n";
   }
   h << "<h2>Figures</h2>\n";
+  std::string data_scripts;  // the values behind the figures that show them on hover, and the script, at the end
   for (const auto& d : drawn) {
     const std::string file = d.at("file");
     const nlohmann::json* f = figure_of(m, file);
     if (!f) continue;
     // A click opens the figure whole: its SVG where there is one (it scales without blur), else the PNG.
     const std::string whole = d.contains("svg") ? d.at("svg").get<std::string>() : file;
+    std::string hover;
+    if (d.contains("hover")) {
+      const std::string id = "hover-" + std::to_string(data_scripts.size());
+      hover = " data-hover=\"" + id + "\"";
+      data_scripts +=
+          "<script type=\"application/json\" id=\"" + id + "\">" + script_json(d.at("hover")) + "</script>\n";
+    }
     h << "<figure><a href=\"" << html_escape(whole) << "\" title=\"open the figure whole\"><img src=\""
-      << html_escape(file) << "\" alt=\"" << html_escape(f->at("kind").get<std::string>()) << "\"></a><figcaption>"
-      << html_escape(f->at("caption").get<std::string>()) << ". Data:";
+      << html_escape(file) << "\" alt=\"" << html_escape(f->at("kind").get<std::string>()) << "\"" << hover
+      << "></a><figcaption>" << html_text(f->at("caption").get<std::string>()) << ". Data:";
     for (const auto& x : f->at("data"))
       h << " <a href=\"" << html_escape(x.get<std::string>()) << "\">" << html_escape(x.get<std::string>()) << "</a>";
     if (f->contains("gif"))
       h << ". Animation: <a href=\"" << html_escape(f->at("gif").get<std::string>()) << "\">"
         << html_escape(f->at("gif").get<std::string>()) << "</a>";
-    h << ".</figcaption></figure>\n";
+    h << (hover.empty() ? "" : ". Values on hover: the nearest point's") << ".</figcaption></figure>\n";
   }
+  if (!data_scripts.empty()) data_scripts += std::string("<script>") + hover_script() + "</script>\n";
   if (m.contains("panel")) {
     h << "<h2>Reproduce</h2>\n<pre>rbcstab report --scene scene.toml --output DIR</pre>\n"
       << "<p>Numbers: <a href=\"report.json\">report.json</a> and the data files beside each "
          "figure.</p>\n"
-      << provenance_footer_html(m) << "</body></html>\n";
+      << provenance_footer_html(m) << data_scripts << "</body></html>\n";
     return h.str();
   }
   h << "<h2>Shape files</h2>\n<p>" << html_escape(kShapeFiles)
@@ -312,7 +333,7 @@ std::string report_html(const nlohmann::json& m, const nlohmann::json& drawn) {
     << "<h2>Reproduce</h2>\n<pre>rbcstab report --scene scene.toml --output DIR</pre>\n"
     << "<p>Numbers: <a href=\"report.json\">report.json</a>, <a href=\"trajectory.csv\">trajectory.csv</a>, "
        "<a href=\"thresholds.json\">thresholds.json</a>.</p>\n"
-    << provenance_footer_html(m) << "</body></html>\n";
+    << provenance_footer_html(m) << data_scripts << "</body></html>\n";
   return h.str();
 }
 

@@ -2,7 +2,7 @@
 """The paper's figures as `rbcstab paper` composes them (report/paper*.cpp and report/detail/paper_* decide every
 run, window, scale and line; this script only renders DIR/paper.json with matplotlib, Agg backend).
 
-    paper_draw.py DIR     draw every figure of DIR/paper.json into DIR/<id>.png
+    paper_draw.py DIR     draw every figure of DIR/paper.json into DIR/<id>.png (and DIR/<id>.svg when the spec names it)
 
 Panel kinds: "lines" (series of CSV columns against t or l, horizontal and vertical reference lines, an optional
 right axis, optional 3-D shape insets), "phase" (a phase diagram: phase_draw.draw_phase_diagram with its overlay), "markers" (the unstable
@@ -174,6 +174,8 @@ def draw_paper(folder):
             ax.set_visible(False)
         fig.suptitle(f["title"], fontsize=12)
         fig.savefig(os.path.join(folder, f["png"]), dpi=DPI)
+        if f.get("svg"):  # no date inside: the same figure, the same file
+            fig.savefig(os.path.join(folder, f["svg"]), dpi=DPI, metadata={"Date": None})
         plt.close(fig)
 
 

@@ -22,8 +22,8 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib import colors as mcolors  # noqa: E402
-from axis_rules import excess_area_limits  # noqa: E402 (beside this script, on sys.path)
-from phase_draw import draw_delta2_comparison, draw_phase_diagram  # noqa: E402 (beside this script, on sys.path)
+from axis_rules import excess_area_limits, transient_time_scale  # noqa: E402 (beside this script, on sys.path)
+from phase_draw import draw_delta2_comparison, draw_phase_diagram, greys  # noqa: E402 (beside this script, on sys.path)
 
 DPI = 100
 LINESTYLES = ["-", "--", "-.", ":", (0, (5, 1, 1, 1, 1, 1)), (0, (8, 2)), (0, (1, 1)), (0, (3, 1, 1, 1))]
@@ -65,12 +65,32 @@ def new_figure(size_px, ncols=1, **kw):
     return fig, axes
 
 
-def save(fig, out, size_px, svg=False):
+def hover_data(ax, columns, points):
+    """What the page's hover script needs to place the drawn points in the PNG's pixels: the axes' box (left, top,
+    right, bottom, from the image's top left), each axis' limits and scale, and the points (x and y first, then
+    the other columns' values). Call after the figure was saved (the layout is final then). None for axes other
+    than linear or log."""
+    if ax.get_xscale() not in ("linear", "log") or ax.get_yscale() not in ("linear", "log"):
+        return None
+    box, height = ax.get_window_extent(), ax.figure.bbox.height  # display pixels = PNG pixels (dpi=DPI)
+    short = lambda v: float(f"{v:.7g}") if isinstance(v, float) else v  # noqa: E731
+    return {"axes_px": [round(box.x0, 2), round(height - box.y1, 2), round(box.x1, 2), round(height - box.y0, 2)],
+            "x": {"lim": list(ax.get_xlim()), "scale": ax.get_xscale()},
+            "y": {"lim": list(ax.get_ylim()), "scale": ax.get_yscale()},
+            "columns": list(columns), "points": [[short(v) for v in p] for p in points]}
+
+
+def save(fig, out, size_px, svg=False, hover=None):
     """The PNG at size_px and, with svg=True, an SVG beside it that the report's page opens on a click (it scales
     without blur): the report asks for it on its line and map figures, in its own staging folder. Shaded 3-D
-    surfaces stay PNG only (as vectors, megabytes of polygons); `plot` writes only the file it was asked for."""
+    surfaces stay PNG only (as vectors, megabytes of polygons); `plot` writes only the file it was asked for.
+    hover: (ax, columns, points) of a figure whose page shows the nearest point's values (hover_data)."""
     fig.savefig(out, dpi=DPI)
     entry = {"file": os.path.basename(out), "size_px": list(size_px)}
+    if hover is not None:
+        data = hover_data(*hover)
+        if data is not None:
+            entry["hover"] = data
     if svg:
         vector = os.path.splitext(out)[0] + ".svg"
         fig.savefig(vector, dpi=DPI, metadata={"Date": None})  # no date inside: the same figure, the same file
@@ -130,7 +150,8 @@ def mode_columns(data):
 
 
 def plot_excess_areas(trajectory_csv, out, size_px=(900, 600), title=None, svg=False):
-    """Delta_l(t), l = 2..L, on a log axis (the perturbations start at delta ~ 1e-3 or smaller)."""
+    """Delta_l(t), l = 2..L, on a log axis (the perturbations start at delta ~ 1e-3 or smaller); the time axis is
+    logarithmic above the first sample when the transient spans decades (axis_rules.transient_time_scale)."""
     data = read_csv(trajectory_csv)
     modes = mode_columns(data)
     fig, ax = new_figure(size_px)
@@ -143,7 +164,11 @@ def plot_excess_areas(trajectory_csv, out, size_px=(900, 600), title=None, svg=F
     limits = excess_area_limits([data[key] for _, key in modes])
     if limits:
         ax.set_ylim(*limits)
-    ax.set_xlabel("$t$")
+    scale, t1 = transient_time_scale(data["t"], [data[key] for _, key in modes], limits)
+    if scale == "symlog":  # the transient spans decades (axis_rules): t = 0 linear, the rest logarithmic
+        ax.set_xscale("symlog", linthresh=t1, linscale=0.25)
+        ax.set_xlim(0, max(data["t"]))
+    ax.set_xlabel("$t$" + (" (symmetric log: linear below %g)" % t1 if scale == "symlog" else ""))
     ax.set_ylabel(r"$\Delta_l(t)$")
     ax.legend(ncol=2 if len(modes) > 5 else 1, loc="best")
     if title:
@@ -390,7 +415,8 @@ def plot_phase_diagram(csv_path, out, overlay_json=None, size_px=(900, 750), x=N
     fig, ax = new_figure(size_px)
     overlay = read_json(overlay_json) if overlay_json else {}
     draw_phase_diagram(ax, d[x], d[y], ld, x, y, overlay.get("curves", []), title=title, labels=overlay.get("axes"))
-    return save(fig, out, size_px, svg)
+    finite = [(a, b, lv) for a, b, lv in zip(d[x], d[y], ld) if math.isfinite(a) and math.isfinite(b)]
+    return save(fig, out, size_px, svg, hover=(ax, [x, y, "l_Delta"], finite))
 
 
 def plot_delta2_comparison(csv_path, out, symbols, size_px=(750, 750), title=None, svg=False):
@@ -413,8 +439,22 @@ def plot_bifurcation(spec_json, out, size_px=(900, 675), svg=False):
     from bifurcation_draw import draw_bifurcation  # beside this script, whose folder is on sys.path
 
     fig, ax = new_figure(size_px)
-    draw_bifurcation(ax, read_json(spec_json), spec_json)
-    return save(fig, out, size_px, svg)
+    spec = read_json(spec_json)
+    draw_bifurcation(ax, spec, spec_json)
+    return save(fig, out, size_px, svg, hover=(ax, *bifurcation_points(spec)))
+
+
+def bifurcation_points(spec):
+    """The drawn vertices of a PlotSpec (x, y, branch, stability) and its marked points (x, y, branch, text)."""
+    columns = [spec["x"]["name"], spec["y"]["name"], "branch", "point"]
+    points = []
+    for sr in spec["series"]:
+        for seg in sr["segments"]:
+            points += [[a, b, sr["name"], seg["stability"]] for a, b in zip(seg["x"], seg["y"])
+                       if a is not None and b is not None]
+    points += [[p["x"], p["y"], spec["series"][p["series"]]["name"], p["text"] or p["type"]] for p in spec["points"]
+               if p["x"] is not None and p["y"] is not None]
+    return columns, points
 
 
 # ---------------------------------------------------------------------------------------- drivers
