@@ -68,6 +68,23 @@ TEST(BranchJumpGrid, EveryRunFollowsItsBranchOrSaysItLostIt) {
   run_grid(Level::modal);
 }
 
+// Two cells of the grid at the full level (L = 4, n = 21; 14 s, too slow for the default suite): with the guard each
+// follows the closed form (every point to 1e-8 with the reference's unstable count) and ends completed; without it the
+// same cells jump (so the comparison can fail).
+TEST(BranchJumpGrid, FullLevelLargeShearCells) {
+  using namespace jump_cases;
+  int jumped_unguarded = 0;
+  for (double L0 : {0.5, 3.0}) {
+    Case c{Level::full, 1e5, L0, 1.0, true};
+    const Outcome g = run_case(c);
+    EXPECT_TRUE(g.followed()) << describe(c) << ": " << g.first << "; " << g.branch.message;
+    EXPECT_EQ(g.branch.status, ContinuationStatus::completed) << describe(c) << ": " << g.branch.message;
+    c.guard = false;
+    jumped_unguarded += !run_case(c).honest();
+  }
+  EXPECT_GT(jumped_unguarded, 0);
+}
+
 TEST(BranchJumpGrid, FullLevelFollowsItsBranchOrSaysItLostIt) { run_grid(Level::full); }
 
 }  // namespace

@@ -142,13 +142,15 @@ TEST(HardBranches, FoldAtOrWithinRoundingOfTheRangeEnd) {
   }
 }
 
-// The full model's l = 4 crossing (ForcedRun of full_equilibrium_test.cpp: a BP and an HB carrying 0 -> 9 at the
+// The full model's l = 4 crossing (ForcedRun of full_equilibrium_test.cpp: a BP (0 -> 1) and four HBs (to 9) at the
 // same C, against the nested closed form there) is a range end when a branch is continued to its value.
 // From above (the start, C = 0.08, down to it) the unstable count flips at the end and both are reported there
 // (as before). From below (the last label, C = 0.012, up to it) the count stays 9 at the end: the HB product's
 // secant has its zero within location_tol beyond the end, so the HB is reported there, located (before: no
-// special point at all). The HB carries its pair's frequency (omega = 1/2 .. 2, not 0: the HB curve starts from
-// it). Reference: the run that located the crossing.
+// special point at all), and so is the BP now: the first run places the HBs at the BP's zero of the determinant
+// (before: where the count flipped, 2e-12 in C short of it, and the BP's zero lay beyond location_tol). The HB carries
+// its pair's frequency (omega = 1/2 .. 2, not 0: the HB curve starts from it). Reference: the run that located the
+// crossing.
 TEST(HardBranches, FullModelCrossingAtTheRangeEndIsReportedThere) {
   BranchSpec spec = test::spec_of(full_fixtures::forced_scene(0.08, 5, 1e-3), ProblemKind::full, P::C, 0.012, 0.08,
                                   Direction::backward);
@@ -172,11 +174,10 @@ TEST(HardBranches, FullModelCrossingAtTheRangeEndIsReportedThere) {
     EXPECT_EQ(q->p, hb->p);
     EXPECT_EQ(q->status, LocationStatus::located);
     EXPECT_GT(std::abs(q->eigenvalue.imag()), 0.4);
-    if (from_above) {
-      const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP);
-      ASSERT_NE(bp, nullptr);
-      EXPECT_EQ(bp->p, hb->p);
-    }
+    const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP);
+    ASSERT_NE(bp, nullptr) << from_above;  // from below: none before the coincident crossings were merged
+    EXPECT_EQ(bp->p, hb->p);
+    EXPECT_EQ(bp->status, LocationStatus::located);
   }
   // ... and the HB curve starts from the restarted branch's HB as from the first run's.
   const auto k = static_cast<std::size_t>(hb - first.branch.branch.special_points.data());
