@@ -280,14 +280,18 @@ def test_the_l4_branch_point_lies_at_the_closed_form_threshold(full_branch):
     # located to a bracket < 1e-11; 1e-8 as the C++ test (the closed form's root is exact to the last bit)
     assert bp["status"] == "located" and bp["C"] == pytest.approx(C4, abs=1e-8)
     assert bp["label"] in full_branch.labels("BP")
-    # its mode: l = 4, m = 0 (the full model's real mode crossing 0). The m != 0 modes cross at the same C as
-    # pairs +- i m / 2: the HB located there carries the unstable count's change (0 -> 9), so the BP's own
-    # count does not change and it states no direction (None), rather than one it did not see.
-    assert (bp["mode_l"], bp["mode_m"], bp["mode_direction"]) == (4, 0, None)
-    assert bp["unstable_before"] == bp["unstable_after"]
+    # its mode: l = 4, m = 0 (the full model's real mode crossing 0), carrying that one mode. The m != 0 modes
+    # cross at the same C as pairs +- i m / 2: one HB each, at the BP's C, with its mode l = 4 and m, carrying
+    # two; the count chained through the five points (before: the BP carried no change, one HB all nine).
+    assert (bp["mode_l"], bp["mode_m"]) == (4, 0) and bp["mode_direction"] in ("stable", "unstable")
+    assert abs(bp["unstable_after"] - bp["unstable_before"]) == 1
     hb = [sp for sp in full_branch.special_points if sp["type"] == "HB"]
-    assert len(hb) == 1 and hb[0]["C"] == pytest.approx(bp["C"], abs=1e-8)
-    assert (hb[0]["unstable_before"], hb[0]["unstable_after"]) == (0, 9)
+    assert sorted(h["mode_m"] for h in hb) == [1, 2, 3, 4] and all(h["mode_l"] == 4 for h in hb)
+    assert all(h["C"] == bp["C"] and abs(h["unstable_after"] - h["unstable_before"]) == 2 for h in hb)
+    crossing = [sp for sp in full_branch.special_points if sp["C"] == bp["C"]]
+    assert len(crossing) == 5
+    assert all(a["unstable_after"] == b["unstable_before"] for a, b in zip(crossing, crossing[1:]))
+    assert {crossing[0]["unstable_before"], crossing[-1]["unstable_after"]} == {0, 9}
     assert full_branch.labels("BP", l=4) == [bp["label"]] == full_branch.labels("BP", l=4, m=0)
     assert full_branch.labels("BP", l=3) == [] and full_branch.labels("BP", l=4, m=1) == []
     assert set(bp) >= {"type", "label", "C", "precision", "stability", "margin", "margin_error"}

@@ -1,9 +1,13 @@
 #pragma once
 // The large-S out-of-plane equilibrium branch continued in Lambda: one run of the grid (level, S,
 // start Lambda0, max step) and its comparison, point by point, with the reference at the same Lambda: the
-// closed-form state of the stable branch (the reduced state; the modal one is it with v = a_l = 0) and the
-// spectrum there. The closed form is the oracle rather than a small-step run because a
-// small step is exactly what can jump here (at S = 1e6 the branches pass within ~3e-3 of each other).
+// closed-form state of the stable branch (the reduced state; the modal one is it with v = a_l = 0; the full one
+// is it as x_{2,0} = -w, x_{2,2} = z with every other coordinate 0) and the spectrum there. At the modal and full
+// levels the closed form holds on the whole branch, past the l >= 3 onsets too: with delta = 0 and no
+// rest_delta_l nothing drives the l >= 3 modes (nor v, nor m != 0 of l >= 3), so the ellipsoidal states are an
+// invariant set of the equations and of Newton; past an onset they are the same equilibria, unstable. The closed form
+// is the oracle rather than a small-step run because a small step is exactly what can jump here (at S = 1e6 the
+// branches pass within ~3e-3 of each other).
 #include <cmath>
 #include <cstddef>
 #include <memory>
@@ -13,12 +17,13 @@
 
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/equilibrium.hpp"
+#include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/core/constants.hpp"
 
 namespace rbcstab::jump_cases {
 
-enum class Level { reduced, modal };
+enum class Level { reduced, modal, full };
 
 struct Case {
   Level level = Level::reduced;
@@ -57,29 +62,37 @@ inline Scene scene_of(const Case& c) {
 
 inline constexpr double kLambdaMin = 0.01, kLambdaMax = 10;
 
-inline Outcome run_case(const Case& c) {
+inline std::unique_ptr<ContinuationProblem> problem_of(const Case& c) {
   const Scene scene = scene_of(c);
-  const ModalEquilibriumProblem modal(scene, ContinuationParameter::Lambda);
-  std::unique_ptr<ContinuationProblem> reduced;
   if (c.level == Level::reduced)
-    reduced = std::make_unique<ReducedEquilibriumProblem>(scene, ContinuationParameter::Lambda);
-  const ContinuationProblem& pr = reduced ? *reduced : static_cast<const ContinuationProblem&>(modal);
-  auto reference = [&](double p) -> Eigen::VectorXd {
-    // The closed form (docs/theory.md): u = r^2 the smaller root of Lambda^2 u^2 - b u + 1, b = 1 + Lambda^2 +
-    // S^-2, w = sqrt(1 - u) > 0, sin Psi = sqrt(1 - Lambda^2 u), cos Psi = Lambda r; z = r e^{-i Psi}; modes
-    // l >= 3 and v at 0. 1 - u and 1 - Lambda^2 u from t = sqrt(D) - |1 - Lambda^2| without cancellation (both
-    // are ~S^-2 on one side of Lambda = 1), as in out_of_plane_equilibrium — which would do, but it validates a
-    // default Scene, whose delta = 1e-3 exceeds Delta below Lambda = 0.095 here.
-    const double L2 = p * p, s2 = 1 / (c.S * c.S), e = std::abs(1 - L2), q = s2 * (2 + 2 * L2 + s2);
-    const double sqrtD = std::sqrt(e * e + q), t = sqrtD + e > 0 ? q / (sqrtD + e) : 0.0;
-    const double den = 1 + L2 + s2 + sqrtD, small = (s2 + t) / den, large = (2 * e + s2 + t) / den;
-    const double r = std::sqrt(2 / den), w = std::sqrt(L2 <= 1 ? small : large);
-    const double Psi = std::atan2(std::sqrt(L2 <= 1 ? large : small), p * r);
-    // (Through a std::vector: GCC 12 flags writes into a fresh dynamic Eigen vector as null dereferences.)
-    std::vector<double> x = {r * std::cos(Psi), -r * std::sin(Psi), w};
-    x.resize(static_cast<std::size_t>(pr.dimension()), 0.0);
-    return Eigen::Map<const Eigen::VectorXd>(x.data(), pr.dimension());
-  };
+    return std::make_unique<ReducedEquilibriumProblem>(scene, ContinuationParameter::Lambda);
+  if (c.level == Level::modal) return std::make_unique<ModalEquilibriumProblem>(scene, ContinuationParameter::Lambda);
+  return std::make_unique<FullEquilibriumProblem>(scene, ContinuationParameter::Lambda);
+}
+
+// The stable branch's state at Lambda = p in the level's coordinates (n of them).
+inline Eigen::VectorXd reference_state(const Case& c, Eigen::Index n, double p) {
+  // The closed form (docs/theory.md): u = r^2 the smaller root of Lambda^2 u^2 - b u + 1, b = 1 + Lambda^2 +
+  // S^-2, w = sqrt(1 - u) > 0, sin Psi = sqrt(1 - Lambda^2 u), cos Psi = Lambda r; z = r e^{-i Psi}; modes
+  // l >= 3 and v at 0. 1 - u and 1 - Lambda^2 u from t = sqrt(D) - |1 - Lambda^2| without cancellation (both
+  // are ~S^-2 on one side of Lambda = 1), as in out_of_plane_equilibrium — which would do, but it validates a
+  // default Scene, whose delta = 1e-3 exceeds Delta below Lambda = 0.095 here.
+  const double L2 = p * p, s2 = 1 / (c.S * c.S), e = std::abs(1 - L2), q = s2 * (2 + 2 * L2 + s2);
+  const double sqrtD = std::sqrt(e * e + q), t = sqrtD + e > 0 ? q / (sqrtD + e) : 0.0;
+  const double den = 1 + L2 + s2 + sqrtD, small = (s2 + t) / den, large = (2 * e + s2 + t) / den;
+  const double r = std::sqrt(2 / den), w = std::sqrt(L2 <= 1 ? small : large);
+  const double Psi = std::atan2(std::sqrt(L2 <= 1 ? large : small), p * r);
+  // (Through a std::vector: GCC 12 flags writes into a fresh dynamic Eigen vector as null dereferences.)
+  std::vector<double> x = {r * std::cos(Psi), -r * std::sin(Psi), w};
+  if (c.level == Level::full) x = {-w, 0.0, 0.0, r * std::cos(Psi), -r * std::sin(Psi)};  // index(l, m)
+  x.resize(static_cast<std::size_t>(n), 0.0);
+  return Eigen::Map<const Eigen::VectorXd>(x.data(), n);
+}
+
+inline Outcome run_case(const Case& c) {
+  const std::unique_ptr<ContinuationProblem> problem = problem_of(c);
+  const ContinuationProblem& pr = *problem;
+  auto reference = [&](double p) { return reference_state(c, pr.dimension(), p); };
   ContinuationOptions o;
   o.p_min = kLambdaMin;
   o.p_max = kLambdaMax;
@@ -107,10 +120,13 @@ inline Outcome run_case(const Case& c) {
   return out;
 }
 
+inline const char* level_name(Level l) {
+  return l == Level::reduced ? "reduced" : l == Level::modal ? "modal" : "full";
+}
+
 inline std::string describe(const Case& c) {
   std::ostringstream os;
-  os << (c.level == Level::reduced ? "reduced" : "modal") << " S = " << c.S << " Lambda0 = " << c.Lambda0
-     << " max_step = " << c.max_step;
+  os << level_name(c.level) << " S = " << c.S << " Lambda0 = " << c.Lambda0 << " max_step = " << c.max_step;
   return os.str();
 }
 

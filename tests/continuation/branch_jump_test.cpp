@@ -5,10 +5,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <string>
 
 #include "continuation/branch_jump_cases.hpp"
 #include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/full_equilibrium.hpp"
 
 namespace rbcstab {
 namespace {
@@ -137,6 +139,32 @@ TEST(BranchJump, ModalLevelLargeShearCells) {
     const Outcome g = run_case(c);
     EXPECT_TRUE(g.honest()) << describe(c) << ": " << g.first << "; " << g.branch.message;
     EXPECT_TRUE(g.followed()) << describe(c) << ": " << g.first << "; " << g.branch.message;
+  }
+}
+
+// The full level's reference (x_{2,0} = -w, x_{2,2} = z, the rest 0) is the full model's equilibrium on the whole
+// branch, past any l >= 3 onset too (nothing drives those modes): the full residual vanishes at it to rounding,
+// and it is the problem's own embedding of the out-of-plane closed form (another code path: analysis/
+// steady_states) to 1e-12. The mirror state (Psi -> -Psi, w -> -w) is also an equilibrium: the comparison
+// against the reference tells them apart (1e-8 is far below their distance ~2 sqrt(2/S)).
+TEST(BranchJump, FullLevelReferenceIsTheEllipsoidalEquilibrium) {
+  using namespace jump_cases;
+  const Case c{Level::full, 1e3, 0.5, 1.0, true};
+  const std::unique_ptr<ContinuationProblem> pr = problem_of(c);
+  const auto& full = dynamic_cast<const FullEquilibriumProblem&>(*pr);
+  EXPECT_EQ(pr->dimension(), 21);  // (L + 1)^2 - 4, L = 4
+  for (double p : {0.3, 0.99, 1.01, 5.0}) {
+    const Eigen::VectorXd x = reference_state(c, pr->dimension(), p);
+    Eigen::VectorXd G;
+    pr->residual(x, p, G);
+    EXPECT_LT(G.lpNorm<Eigen::Infinity>(), 1e-13) << p;
+    EXPECT_LT((x - full.ellipsoidal_state(p)).lpNorm<Eigen::Infinity>(), 1e-12) << p;
+    Eigen::VectorXd mirror = x;
+    mirror[0] = -mirror[0];  // w -> -w
+    mirror[4] = -mirror[4];  // Im z = -r sin Psi -> r sin Psi
+    pr->residual(mirror, p, G);
+    EXPECT_LT(G.lpNorm<Eigen::Infinity>(), 1e-13) << p;
+    EXPECT_GT((mirror - x).lpNorm<Eigen::Infinity>(), 1e-2) << p;
   }
 }
 

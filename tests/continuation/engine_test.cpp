@@ -200,10 +200,11 @@ TEST(ContinuationEngine, TwoRealCrossingsInOneStepAreBothFound) {
   EXPECT_EQ(b.points.back().n_unstable, 2);
 }
 
-TEST(ContinuationEngine, CoincidentRealCrossingsAreOneLocatedBranchPoint) {
+TEST(ContinuationEngine, CoincidentRealCrossingsAreOneBranchPointEachAtOnePoint) {
   // x' = px - x^3, y' = py - y^3: two real eigenvalues cross together at p = 0 (a BP of multiplicity
-  // two). No test function changes sign; splitting cannot separate them, so the engine reports one
-  // BP whose bracket shrinks below location_tol, typed from the spectrum (real crossing, not HB).
+  // two). No test function changes sign; splitting cannot separate them: the bracket shrinks below
+  // location_tol and the engine reports one BP per real eigenvalue that crossed (from the spectrum: real, not
+  // HB) at that one point, the count chained 0 -> 1 -> 2 (before: one BP carrying 0 -> 2).
   const Lambda pr(2, [](const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) {
     F[0] = p * x[0] - x[0] * x[0] * x[0];
     F[1] = p * x[1] - x[1] * x[1] * x[1];
@@ -215,12 +216,17 @@ TEST(ContinuationEngine, CoincidentRealCrossingsAreOneLocatedBranchPoint) {
   const Branch b = continue_branch(pr, vec({0, 0}), -0.5, o);
   EXPECT_TRUE(of_type(b, SpecialPointType::HB).empty());
   const auto bp = of_type(b, SpecialPointType::BP);
-  ASSERT_EQ(bp.size(), 1u);
-  EXPECT_NEAR(bp[0].p, 0.0, kLocated);
-  EXPECT_EQ(bp[0].status, LocationStatus::located);
-  EXPECT_LE(bp[0].precision, o.location_tol);
+  ASSERT_EQ(bp.size(), 2u);
+  for (const auto& q : bp) {
+    EXPECT_NEAR(q.p, 0.0, kLocated);
+    EXPECT_EQ(q.p, bp[0].p);
+    EXPECT_EQ(q.status, LocationStatus::located);
+    EXPECT_LE(q.precision, o.location_tol);
+  }
   EXPECT_EQ(bp[0].unstable_before, 0);
-  EXPECT_EQ(bp[0].unstable_after, 2);
+  EXPECT_EQ(bp[0].unstable_after, 1);
+  EXPECT_EQ(bp[1].unstable_before, 1);
+  EXPECT_EQ(bp[1].unstable_after, 2);
 }
 
 TEST(ContinuationEngine, NeutralSaddleIsNotReportedAsHopf) {

@@ -258,12 +258,24 @@ TEST(FullEquilibrium, UnforcedModeCrossingIsLocatedAsBranchPointWithCoincidentHo
   // Coincident crossings: at Upsilon_4 = 0 the m = 0 real eigenvalue (the Z2 pitchfork f_{4,0} -> -f_{4,0})
   // and the four pairs Upsilon_4 +- i m/2 (m = 1..4, rotating l = 4 waves) cross together. det[J F_p; t^T]
   // changes sign once (BP); the Hopf product changes sign four times (no net change), so the engine
-  // bisects for the unexplained change of the unstable count, cannot separate the crossings, and
-  // reports one HB at the same parameter carrying the whole change 0 -> 9 (= 1 + 2 * 4).
-  EXPECT_EQ(hb->status, LocationStatus::located);
-  EXPECT_NEAR(hb->p, C4, 1e-8);
-  EXPECT_EQ(hb->unstable_before, 0);
-  EXPECT_EQ(hb->unstable_after, 9);
+  // bisects for the unexplained change of the unstable count 0 -> 9 (= 1 + 2 * 4) to a bracket below
+  // location_tol, reads from its ends' spectra what crossed and reports each at the BP (where the pairs' real
+  // parts equal the BP's eigenvalue): the BP carries the real eigenvalue (0 -> 1), one HB per pair omega = m/2,
+  // m = 1..4, carries 2 (1 -> 3 -> 5 -> 7 -> 9). Before: the BP carried 0 -> 0 and one HB the whole 0 -> 9.
+  EXPECT_EQ(bp->unstable_before, 0);
+  EXPECT_EQ(bp->unstable_after, 1);
+  int count = 1, pairs = 0;
+  for (const SpecialPoint& h : run.branch.special_points) {
+    if (h.type != SpecialPointType::HB) continue;
+    ++pairs;
+    EXPECT_EQ(h.status, LocationStatus::located);
+    EXPECT_EQ(h.p, bp->p);
+    EXPECT_EQ(h.unstable_before, count);
+    EXPECT_EQ(h.unstable_after, count += 2);
+    EXPECT_NEAR(h.eigenvalue.imag(), 0.5 * pairs, 1e-9);
+  }
+  EXPECT_EQ(pairs, 4);
+  EXPECT_EQ(run.branch.special_points.size(), 5u);
   // The crossing spectrum itself: at the BP, 9 eigenvalues on the imaginary axis (|Re| < 1e-7, the
   // location bracket times |dUpsilon_4/dC|), at 0 and +- i m/2, m = 1..4.
   const Eigen::VectorXcd ev = run.pr.spectrum(bp->x, bp->p);

@@ -5,9 +5,12 @@
 // curve to S = 200 is hard_branches_slow_test.cpp's.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <sstream>
+#include <string>
 #include <vector>
 
 #include "continuation/full_fixtures.hpp"
@@ -55,7 +58,7 @@ std::vector<SpecialPoint> of_type(const Branch& b, SpecialPointType t) {
 
 // Pitchforks at p = 0.3 and 0.3 + gap (x' = (p - 0.3) x - x^3, y' = (p - 0.3 - gap) y - y^3, exact Jacobian), one
 // step of 0.5 over both. gap = 1e-6 and 1e-8: two located BPs at their closed-form values (to 1e-11, the bracket),
-// in order, 0 -> 1 -> 2 unstable; gap = 1e-12 (below location_tol): one located point carrying 0 -> 2
+// in order, 0 -> 1 -> 2 unstable; gap = 1e-12 (below location_tol): two located BPs at one point, 0 -> 1 -> 2
 // (engine_test's coincident case). Each ends completed on the bound. Not asserted, a limit (docs/continuation.md):
 // at gap = 1e-9 = stability_tol the counts flip 1e-9 past each root, and the run reports three BPs (0 -> 0 at 0.3,
 // 0 -> 1 at 0.3 + 1e-9, 1 -> 2 at 0.3 + 2e-9).
@@ -90,11 +93,16 @@ TEST(HardBranches, BranchPointPairCloserThanAnyStepIsTwoLocatedPoints) {
       EXPECT_EQ(bp[0].unstable_after, 1);
       EXPECT_EQ(bp[1].unstable_after, 2);
     } else {
-      // One crossing of both (unresolved by the test functions): placed where the unstable count flips, that is
-      // where the eigenvalues pass stability_tol (1e-9 past the root: |d lambda/dp| = 1).
-      ASSERT_EQ(bp.size(), 1u) << gap;
-      EXPECT_NEAR(bp[0].p, 0.3 + o.stability_tol, 1e-11);
-      EXPECT_EQ(bp[0].unstable_after - bp[0].unstable_before, 2);
+      // Both crossings in one bracket (unresolved by the test functions, whose signs cancel): placed where the
+      // unstable count flips, that is where the eigenvalues pass stability_tol (1e-9 past the root:
+      // |d lambda/dp| = 1), one BP per real eigenvalue that crossed, 0 -> 1 -> 2 (before: one BP carrying 0 -> 2).
+      ASSERT_EQ(bp.size(), 2u) << gap;
+      for (const SpecialPoint& q : bp) EXPECT_NEAR(q.p, 0.3 + o.stability_tol, 1e-11);
+      EXPECT_EQ(bp[0].p, bp[1].p);
+      EXPECT_EQ(bp[0].unstable_before, 0);
+      EXPECT_EQ(bp[0].unstable_after, 1);
+      EXPECT_EQ(bp[1].unstable_before, 1);
+      EXPECT_EQ(bp[1].unstable_after, 2);
     }
   }
 }
@@ -134,13 +142,15 @@ TEST(HardBranches, FoldAtOrWithinRoundingOfTheRangeEnd) {
   }
 }
 
-// The full model's l = 4 crossing (ForcedRun of full_equilibrium_test.cpp: a BP and an HB carrying 0 -> 9 at the
+// The full model's l = 4 crossing (ForcedRun of full_equilibrium_test.cpp: a BP (0 -> 1) and four HBs (to 9) at the
 // same C, against the nested closed form there) is a range end when a branch is continued to its value.
 // From above (the start, C = 0.08, down to it) the unstable count flips at the end and both are reported there
 // (as before). From below (the last label, C = 0.012, up to it) the count stays 9 at the end: the HB product's
 // secant has its zero within location_tol beyond the end, so the HB is reported there, located (before: no
-// special point at all). The HB carries its pair's frequency (omega = 1/2 .. 2, not 0: the HB curve starts from
-// it). Reference: the run that located the crossing.
+// special point at all), and so is the BP now: the first run places the HBs at the BP's zero of the determinant
+// (before: where the count flipped, 2e-12 in C short of it, and the BP's zero lay beyond location_tol). The HB carries
+// its pair's frequency (omega = 1/2 .. 2, not 0: the HB curve starts from it). Reference: the run that located the
+// crossing.
 TEST(HardBranches, FullModelCrossingAtTheRangeEndIsReportedThere) {
   BranchSpec spec = test::spec_of(full_fixtures::forced_scene(0.08, 5, 1e-3), ProblemKind::full, P::C, 0.012, 0.08,
                                   Direction::backward);
@@ -164,11 +174,10 @@ TEST(HardBranches, FullModelCrossingAtTheRangeEndIsReportedThere) {
     EXPECT_EQ(q->p, hb->p);
     EXPECT_EQ(q->status, LocationStatus::located);
     EXPECT_GT(std::abs(q->eigenvalue.imag()), 0.4);
-    if (from_above) {
-      const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP);
-      ASSERT_NE(bp, nullptr);
-      EXPECT_EQ(bp->p, hb->p);
-    }
+    const SpecialPoint* bp = find_special_point(b, SpecialPointType::BP);
+    ASSERT_NE(bp, nullptr) << from_above;  // from below: none before the coincident crossings were merged
+    EXPECT_EQ(bp->p, hb->p);
+    EXPECT_EQ(bp->status, LocationStatus::located);
   }
   // ... and the HB curve starts from the restarted branch's HB as from the first run's.
   const auto k = static_cast<std::size_t>(hb - first.branch.branch.special_points.data());
@@ -208,6 +217,92 @@ TEST(HardBranches, SwitchOntoAVerticalSetHasNoFolds) {
   EXPECT_GE(b.points.size(), 20u);
   for (const BranchPoint& q : b.points) EXPECT_NEAR(q.p, 1.0 / 60, 1e-12);
   EXPECT_TRUE(of_type(b, SpecialPointType::LP).empty()) << of_type(b, SpecialPointType::LP).size();
+}
+
+}  // namespace
+}  // namespace rbcstab
+
+namespace rbcstab {
+namespace {
+
+// Whether the special points of b at the full model's l-crossing near C (Upsilon_l = 0: the real m = 0 eigenvalue
+// and the pairs Upsilon_l +- i m/2, m = 1..l, cross together) say what crossed: one BP, mode l m = 0, carrying
+// one unstable mode, and one HB per pair, mode l and its m, omega = m/2, carrying two, all at the BP's value,
+// located, the count chained through them. "" when they do, else what is wrong.
+std::string crossing_defect(const Branch& b, int l, double C) {
+  std::vector<const SpecialPoint*> at;
+  for (const SpecialPoint& q : b.special_points)
+    if (std::abs(q.p - C) < 1e-6) at.push_back(&q);
+  std::ostringstream os;
+  const SpecialPoint* bp = nullptr;
+  std::vector<int> ms;
+  for (const SpecialPoint* q : at) {
+    if (q->type == SpecialPointType::BP) {
+      if (bp) os << "two BPs; ";
+      bp = q;
+    } else if (q->type == SpecialPointType::HB) {
+      ms.push_back(q->mode_m.value_or(-1));
+      if (std::abs(q->unstable_after - q->unstable_before) != 2)
+        os << "HB carries " << q->unstable_before << " -> " << q->unstable_after << "; ";
+      if (q->mode_l != l || std::abs(q->eigenvalue.imag() - 0.5 * q->mode_m.value_or(-1)) > 1e-6)
+        os << "HB omega " << q->eigenvalue.imag() << " mode l " << q->mode_l.value_or(-1) << " m " << ms.back() << "; ";
+    }
+  }
+  if (!bp) return os.str() + "no BP";
+  if (bp->mode_l != l || bp->mode_m != 0) os << "BP mode not l = " << l << " m = 0; ";
+  if (std::abs(bp->unstable_after - bp->unstable_before) != 1)
+    os << "BP carries " << bp->unstable_before << " -> " << bp->unstable_after << "; ";
+  std::sort(ms.begin(), ms.end());
+  std::vector<int> want;
+  for (int m = 1; m <= l; ++m) want.push_back(m);
+  if (ms != want) os << ms.size() << " HBs, not one per m = 1.." << l << "; ";
+  for (std::size_t k = 0; k < at.size(); ++k) {
+    if (at[k]->p != bp->p || at[k]->status != LocationStatus::located) os << "point " << k << " off the BP; ";
+    if (k > 0 && at[k]->unstable_before != at[k - 1]->unstable_after) os << "count not chained at " << k << "; ";
+  }
+  return os.str();
+}
+
+// The unforced full model (L = 4, the modal scene): its ellipsoidal branch in C over [0.02, 0.08] crosses
+// l = 3 and l = 4 (Upsilon_l(sigma) = 0), each a real eigenvalue and l pairs at once. Continued down (stable
+// first) and up (from the unstable end), each crossing is one BP (l, m = 0, one mode) and l HBs (their m),
+// at the value where the modal level (another model level: one real eigenvalue per l) locates its BP (1e-9:
+// both brackets are 1e-11 in (x, p)). Before, the crossing was a BP carrying no change (0 -> 0) and one HB
+// carrying 1 + 2l with no mode; crossing_defect reports that output (the check can fail).
+TEST(HardBranches, FullModelOnsetIsABranchPointWithItsHopfPairs) {
+  for (const Direction d : {Direction::backward, Direction::forward}) {
+    const double C0 = d == Direction::backward ? 0.08 : 0.02;
+    BranchSpec spec = test::spec_of(modal_fixtures::scene(C0, 4), ProblemKind::full, P::C, 0.02, 0.08, d);
+    const Branch full = continue_scene(spec).branch.branch;
+    spec.kind = ProblemKind::modal;
+    const Branch modal = continue_scene(spec).branch.branch;
+    ASSERT_EQ(full.status, ContinuationStatus::completed) << full.message;
+    const std::vector<SpecialPoint> modal_bp = of_type(modal, SpecialPointType::BP);
+    ASSERT_EQ(modal_bp.size(), 2u);
+    for (const SpecialPoint& m : modal_bp) {
+      ASSERT_TRUE(m.mode_l.has_value());
+      EXPECT_EQ(crossing_defect(full, *m.mode_l, m.p), "") << "l = " << *m.mode_l << ", C = " << m.p;
+      const SpecialPoint* bp = nullptr;
+      for (const SpecialPoint& q : full.special_points)
+        if (q.type == SpecialPointType::BP && q.mode_l == m.mode_l) bp = &q;
+      ASSERT_NE(bp, nullptr);
+      EXPECT_NEAR(bp->p, m.p, 1e-9);
+    }
+    EXPECT_EQ(full.special_points.size(), 2u + 3u + 4u);
+  }
+  // The old output at the l = 4 crossing (FullEquilibrium's forced run, measured before the fix): BP 0 -> 0 with
+  // its mode, one HB 0 -> 9 without one, 2e-12 apart.
+  Branch old;
+  SpecialPoint bp, hb;
+  bp.type = SpecialPointType::BP, bp.p = 0.0152723447521286, bp.status = LocationStatus::located;
+  bp.mode_l = 4, bp.mode_m = 0;
+  hb.type = SpecialPointType::HB, hb.p = 0.0152723447499965, hb.status = LocationStatus::located;
+  hb.unstable_after = 9, hb.eigenvalue = {1.15e-9, 0.5};
+  old.special_points = {bp, hb};
+  const std::string defect = crossing_defect(old, 4, bp.p);
+  EXPECT_NE(defect.find("BP carries 0 -> 0"), std::string::npos) << defect;
+  EXPECT_NE(defect.find("HB carries 0 -> 9"), std::string::npos) << defect;
+  EXPECT_NE(defect.find("1 HBs, not one per m"), std::string::npos) << defect;
 }
 
 }  // namespace

@@ -290,7 +290,7 @@ nlohmann::json to_json(const MeasuredBranch& m) {
     j["status"] = to_string(sp.status);
     j["unstable_before"] = sp.unstable_before;
     j["unstable_after"] = sp.unstable_after;
-    if (sp.type == SpecialPointType::BP) {
+    if (sp.type == SpecialPointType::BP || sp.type == SpecialPointType::HB) {
       j["mode_l"] = sp.mode_l ? nlohmann::json(*sp.mode_l) : nlohmann::json(nullptr);
       j["mode_m"] = sp.mode_m ? nlohmann::json(*sp.mode_m) : nlohmann::json(nullptr);
       const std::string d = mode_direction(sp);

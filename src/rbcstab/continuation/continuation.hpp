@@ -138,8 +138,8 @@ struct SpecialPoint {
   double margin = std::numeric_limits<double>::quiet_NaN();
   double margin_error = std::numeric_limits<double>::quiet_NaN();
   CertificateTerm uncertain_because = CertificateTerm::spectrum;
-  // A BP of modal/full equilibria: the mode (l, and m where the coordinates resolve it) carrying the
-  // critical eigenvector; unset where no mode carries 90 % of it (or for other problems).
+  // A BP or HB of modal/full equilibria: the mode (l, and m where the coordinates resolve it) carrying the
+  // critical eigenvector (HB: its pair's); unset where no mode carries 90 % of it (or for other problems).
   std::optional<int> mode_l, mode_m;
 };
 

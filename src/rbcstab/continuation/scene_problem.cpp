@@ -164,7 +164,9 @@ void identify_mode(const ContinuationProblem& problem, const std::vector<ShapeMo
   const Eigen::EigenSolver<Eigen::MatrixXd> es(J);
   if (es.info() != Eigen::Success) return;
   Eigen::Index k = 0;
-  es.eigenvalues().cwiseAbs().minCoeff(&k);
+  (es.eigenvalues().array() - (sp.type == SpecialPointType::HB ? sp.eigenvalue : std::complex<double>(0.0)))
+      .abs()
+      .minCoeff(&k);
   const Eigen::VectorXd w = es.eigenvectors().col(k).cwiseAbs2();
   const double total = w.sum();
   std::map<int, double> by_l;
@@ -183,7 +185,7 @@ void identify_mode(const ContinuationProblem& problem, const std::vector<ShapeMo
 MeasuredBranch measure_branch(const SceneProblem& sp, const SceneBranch& r, Branch b) {
   if (const std::vector<ShapeMode> modes = sp.unknown_modes(); !modes.empty())
     for (SpecialPoint& s : b.special_points)
-      if (s.type == SpecialPointType::BP) identify_mode(sp.problem(), modes, s);
+      if (s.type == SpecialPointType::BP || s.type == SpecialPointType::HB) identify_mode(sp.problem(), modes, s);
   return measured(std::move(b), measure_names(r.spec.kind, r.problem_scene.L), sp.problem().stability_kind(),
                   [&](const Eigen::VectorXd& x, double p) { return sp.measures(x, p); });
 }

@@ -188,6 +188,7 @@ void Engine::detect(const Pt& a, const Pt& b, std::size_t after, int depth, std:
       const std::size_t before = out.size();
       detect(a, m, after, depth + 1, out);
       detect(m, b, after, depth + 1, out);
+      if (depth == 0) merge_coincident(out, before);
       // A count change the test functions did not see, within location_tol in p of a step end on a bound:
       // the branch stopped within rounding of the crossing (the test function is ~0 there, the count flips
       // where the eigenvalue passes stability_tol, measured 5.8e-12 short of a BP), so it is that end.
@@ -205,23 +206,8 @@ void Engine::detect(const Pt& a, const Pt& b, std::size_t after, int depth, std:
           }
       return;  // the halves find the test-function zeros and the user events again
     }
-    SpecialPoint sp;
-    sp.type = unresolved_type(a, b);
-    sp.name = to_string(sp.type);
-    sp.x = b.X.head(n_);
-    sp.p = b.X[n_];
-    sp.parameters = pr_.parameter_values(sp.x, sp.p);
-    sp.p_lo = std::min(a.X[n_], b.X[n_]);
-    sp.p_hi = std::max(a.X[n_], b.X[n_]);
-    sp.precision = (b.X - a.X).lpNorm<Eigen::Infinity>();
-    sp.status = sp.precision <= o_.location_tol ? LocationStatus::located : LocationStatus::guess;
-    sp.unstable_before = a.n_unstable;
-    sp.unstable_after = b.n_unstable;
-    sp.after_index = after;
-    // The pair (multiplier) that crossed, which an HB (NS) curve starts from; never 0 for a located HB.
-    if (sp.type == SpecialPointType::HB || sp.type == SpecialPointType::NS) sp.eigenvalue = critical_value(b, sp.type);
-    set_certificate(sp, b, margin(a), margin(b));
-    found.push_back(sp);
+    const std::vector<SpecialPoint> parts = unresolved_crossings(a, b, after);
+    found.insert(found.end(), parts.begin(), parts.end());
   }
   for (std::size_t e = 0; e < o_.events.size(); ++e) {
     if (!(a.events[e] * b.events[e] < 0) && !(b.events[e] == 0 && a.events[e] != 0)) continue;
@@ -229,13 +215,171 @@ void Engine::detect(const Pt& a, const Pt& b, std::size_t after, int depth, std:
     if (locate(a, b, -1, static_cast<int>(e), after, sp)) found.push_back(sp);
   }
   // Sort along the step by arclength rather than p (p may turn at an LP inside the step).
-  std::sort(found.begin(), found.end(), [&](const SpecialPoint& u, const SpecialPoint& v) {
+  std::stable_sort(found.begin(), found.end(), [&](const SpecialPoint& u, const SpecialPoint& v) {
     Eigen::VectorXd Xu(N_), Xv(N_);
     Xu << u.x, u.p;
     Xv << v.x, v.p;
     return a.t.dot(Xu - a.X) < a.t.dot(Xv - a.X);
   });
   out.insert(out.end(), found.begin(), found.end());
+}
+
+// The crossings between a and b (a bracket within location_tol) that the test functions did not resolve: one
+// point per real eigenvalue (BP) and per pair (HB) that changed side, BPs first, then pairs by frequency, the
+// unstable count chained through them. Several eigenvalues crossing at one parameter (the full model's
+// Upsilon_l + i m/2, m = 0..l, at sigma_l^c) are as many special points, each with its own eigenvalue, instead of
+// one HB carrying the real eigenvalue's change too. The test value is NaN: no test function saw them (what
+// merge_coincident reads). Cycles (multipliers), and a split that does not add up to the count change, keep one
+// point of unresolved_type carrying the whole change.
+std::vector<SpecialPoint> Engine::unresolved_crossings(const Pt& a, const Pt& b, std::size_t after) {
+  SpecialPoint sp;
+  sp.type = unresolved_type(a, b);
+  sp.x = b.X.head(n_);
+  sp.p = b.X[n_];
+  sp.parameters = pr_.parameter_values(sp.x, sp.p);
+  sp.p_lo = std::min(a.X[n_], b.X[n_]);
+  sp.p_hi = std::max(a.X[n_], b.X[n_]);
+  sp.precision = (b.X - a.X).lpNorm<Eigen::Infinity>();
+  sp.status = sp.precision <= o_.location_tol ? LocationStatus::located : LocationStatus::guess;
+  sp.unstable_before = a.n_unstable;
+  sp.unstable_after = b.n_unstable;
+  sp.test_value = std::numeric_limits<double>::quiet_NaN();
+  sp.after_index = after;
+  const double ma = margin(a), mb = margin(b);
+  auto finish_point = [&](SpecialPoint q) {
+    q.name = to_string(q.type);
+    set_certificate(q, b, ma, mb);
+    return q;
+  };
+  // The unstable real eigenvalues and the frequencies (Im > 0) of the unstable pairs of q.
+  auto unstable = [&](const Pt& q, std::vector<double>& omega) {
+    int real = 0;
+    for (Eigen::Index i = 0; i < q.spectrum.size(); ++i) {
+      const std::complex<double> z = q.spectrum[i];
+      if (z.real() <= o_.stability_tol) continue;
+      if (z.imag() == 0) ++real;
+      if (z.imag() > 0) omega.push_back(z.imag());
+    }
+    return real;
+  };
+  std::vector<double> wa, wb;
+  const int dr = cycles_ ? 0 : unstable(b, wb) - unstable(a, wa);
+  // A pair unstable at both ends is one pair: its frequency moves far less than 1e-6 across the bracket.
+  for (auto i = wa.begin(); i != wa.end();) {
+    const auto j = std::find_if(wb.begin(), wb.end(), [&](double w) { return std::abs(w - *i) <= 1e-6 * (1 + *i); });
+    if (j == wb.end()) {
+      ++i;
+      continue;
+    }
+    wb.erase(j);
+    i = wa.erase(i);
+  }
+  const int sign = b.n_unstable > a.n_unstable ? 1 : -1;
+  std::vector<double> pairs = sign > 0 ? wb : wa;
+  std::sort(pairs.begin(), pairs.end());
+  const bool adds_up = !cycles_ && (sign > 0 ? wa.empty() : wb.empty()) && dr * sign >= 0 &&
+                       a.n_unstable + dr + sign * 2 * static_cast<int>(pairs.size()) == b.n_unstable;
+  if (!adds_up) {
+    if (sp.type == SpecialPointType::HB || sp.type == SpecialPointType::NS) sp.eigenvalue = critical_value(b, sp.type);
+    return {finish_point(sp)};
+  }
+  std::vector<SpecialPoint> out;
+  int count = a.n_unstable;
+  for (int k = 0; k < std::abs(dr); ++k) {
+    SpecialPoint q = sp;
+    q.type = SpecialPointType::BP;
+    q.unstable_before = count;
+    q.unstable_after = count += sign;
+    out.push_back(finish_point(q));
+  }
+  for (const double w : pairs) {
+    SpecialPoint q = sp;
+    q.type = SpecialPointType::HB;
+    q.unstable_before = count;
+    q.unstable_after = count += 2 * sign;
+    // The pair's value at b: of those at this frequency (other l share it: Upsilon_l + i m/2) the one nearest the
+    // axis.
+    double best = std::numeric_limits<double>::infinity();
+    for (Eigen::Index i = 0; i < b.spectrum.size(); ++i)
+      if (const std::complex<double> z = b.spectrum[i];
+          z.imag() > 0 && std::abs(z.imag() - w) <= 1e-6 * (1 + w) && std::abs(z.real()) < best)
+        best = std::abs(z.real()), q.eigenvalue = z;
+    out.push_back(finish_point(q));
+  }
+  return out;
+}
+
+// Coincident crossings seen twice in one step: a located BP (a zero of the determinant) that carries no count
+// change, and unresolved points of one bracket of the same step (the count flips where the eigenvalues pass
+// stability_tol, outside the determinant's bracket: 2e-12 in C from it on the full model's l = 4 crossing).
+// They are one crossing when, at the BP, every one of them has its eigenvalue (pair) as near the axis as the BP's
+// own real eigenvalue, to stability_tol (the full model: all are Upsilon_l + i m/2, equal real parts). Then the BP
+// takes the unresolved BP's count change and the pairs move to it (located with it); a located HB with no count
+// change whose pair is one of theirs (an odd number of pairs changes the product's sign) is the same pair and goes.
+void Engine::merge_coincident(std::vector<SpecialPoint>& out, std::size_t first) {
+  if (cycles_) return;
+  auto unresolved = [](const SpecialPoint& q) { return std::isnan(q.test_value); };
+  for (std::size_t k = first; k < out.size(); ++k) {
+    const SpecialPoint v = out[k];
+    if (v.type != SpecialPointType::BP || unresolved(v) || v.status != LocationStatus::located ||
+        v.unstable_before != v.unstable_after)
+      continue;
+    std::size_t j = out.size();
+    for (std::size_t i = first; i < out.size(); ++i)
+      if (out[i].type == SpecialPointType::BP && unresolved(out[i]) &&
+          (j == out.size() || std::abs(out[i].p - v.p) < std::abs(out[j].p - v.p)))
+        j = i;
+    if (j == out.size()) continue;
+    const Eigen::VectorXd ux = out[j].x;
+    const double up = out[j].p;
+    const Eigen::VectorXcd ev = pr_.spectrum(v.x, v.p);
+    ++counters.spectra;
+    double real = std::numeric_limits<double>::infinity();  // the BP's own eigenvalue: the real one nearest 0
+    for (Eigen::Index i = 0; i < ev.size(); ++i)
+      if (ev[i].imag() == 0) real = std::min(real, std::abs(ev[i].real()));
+    auto with_bp = [&](const SpecialPoint& q) {
+      if (q.type == SpecialPointType::BP) return true;
+      for (Eigen::Index i = 0; i < ev.size(); ++i)
+        if (std::abs(ev[i].imag() - q.eigenvalue.imag()) <= 1e-6 * (1 + std::abs(q.eigenvalue.imag())) &&
+            std::abs(std::abs(ev[i].real()) - real) <= o_.stability_tol)
+          return true;
+      return false;
+    };
+    bool coincident = std::isfinite(real);
+    for (std::size_t i = first; i < out.size() && coincident; ++i)
+      if (unresolved(out[i]) && out[i].p == up && out[i].x == ux) coincident = with_bp(out[i]);
+    if (!coincident) continue;
+    for (std::size_t i = first; i < out.size(); ++i) {
+      SpecialPoint& q = out[i];
+      if (!unresolved(q) || q.p != up || q.x != ux) continue;
+      q.x = v.x;
+      q.p = v.p;
+      q.parameters = v.parameters;
+      q.precision = v.precision;
+      q.p_lo = v.p_lo;
+      q.p_hi = v.p_hi;
+      q.status = v.status;
+    }
+    SpecialPoint merged = v;
+    merged.unstable_before = out[j].unstable_before;
+    merged.unstable_after = out[j].unstable_after;
+    out[j] = merged;
+    out.erase(out.begin() + static_cast<std::ptrdiff_t>(k));
+    k = first - 1;  // the indices moved: start over (each pass removes one point)
+  }
+  for (std::size_t k = first; k < out.size();) {
+    const SpecialPoint& h = out[k];
+    const bool same_pair =
+        h.type == SpecialPointType::HB && !unresolved(h) && h.unstable_before == h.unstable_after &&
+        std::any_of(out.begin() + static_cast<std::ptrdiff_t>(first), out.end(), [&](const SpecialPoint& q) {
+          return q.type == SpecialPointType::HB && unresolved(q) &&
+                 std::abs(q.eigenvalue.imag() - h.eigenvalue.imag()) <= 1e-6 * (1 + std::abs(h.eigenvalue.imag()));
+        });
+    if (same_pair)
+      out.erase(out.begin() + static_cast<std::ptrdiff_t>(k));
+    else
+      ++k;
+  }
 }
 
 // The eigenvalue (multiplier) of q nearest the crossing of a special point of this type: a pair with Im > 0

@@ -49,6 +49,8 @@ class Engine {
   static int crossings(SpecialPointType type);
   SpecialPointType unresolved_type(const Pt& a, const Pt& b) const;
   void detect(const Pt& a, const Pt& b, std::size_t after, int depth, std::vector<SpecialPoint>& out);
+  std::vector<SpecialPoint> unresolved_crossings(const Pt& a, const Pt& b, std::size_t after);
+  void merge_coincident(std::vector<SpecialPoint>& out, std::size_t first);
   bool fold_at_bound(std::vector<SpecialPoint>& special, std::size_t first, const Pt& a, Pt& end);
   void detect_at_bound(const Pt& a, const Pt& b, std::size_t after, std::vector<SpecialPoint>& out);
   std::complex<double> critical_value(const Pt& q, SpecialPointType type) const;

@@ -36,8 +36,8 @@ class SceneProblem {
   virtual std::vector<ShapeMode> unknown_modes() const { return {}; }
 };
 
-// A BP's critical mode: the mode carrying >= 90 % of the kernel vector of the Jacobian at the point (the
-// eigenvector of its eigenvalue nearest 0), m unset where the coordinates do not resolve it. Sets
+// A BP's or HB's critical mode: the mode carrying >= 90 % of the eigenvector of the Jacobian's eigenvalue nearest
+// 0 (BP) or the HB's pair (sp.eigenvalue), m unset where the coordinates do not resolve it. Sets
 // sp.mode_l/mode_m; leaves them unset when no mode dominates.
 void identify_mode(const ContinuationProblem& problem, const std::vector<ShapeMode>& modes, SpecialPoint& sp);
 
