@@ -256,8 +256,9 @@ class Branch(_args.Columns):
 
     def labels(self, type=None, l=None, m=None):
         """The labels of the special points (of one type: 'BP', 'LP', ...), in order along the branch; l, m: only
-        the BPs of that mode (``mode_l``, ``mode_m`` of the special points: the mode l, and m where the model
-        resolves it, whose eigenvalue crosses 0 there), as ``--label BP:l=3`` selects on the command line."""
+        the BPs and HBs of that mode (``mode_l``, ``mode_m`` of the special points: the mode l, and m where the
+        model resolves it, whose eigenvalue (a BP) or pair (an HB, at frequency m/2 in the full model) crosses the
+        imaginary axis there), as ``--label BP:l=3`` selects on the command line."""
         return [sp["label"] for sp in self._part()["special_points"]
                 if sp["label"] is not None and (type is None or sp["type"] == type)
                 and (l is None or sp.get("mode_l") == l) and (m is None or sp.get("mode_m") == m)]

@@ -45,8 +45,8 @@ std::string paper_html(const json& spec, const PaperResult& r, const PaperOption
       if (c.figure == label)
         h << "<tr class=\"" << (c.passed ? "pass" : "fail") << "\"><td>" << html_text(c.claim) << "</td><td>"
           << html_text(c.measured) << "</td><td>" << html_text(c.expected) << "</td><td>"
-          << (c.passed ? "passed" : "<b>FAILED</b>")
-          << (c.inconsistency.empty() ? "" : " (paper/model inconsistency)") << "</td><td>" << html_text(c.how)
+          << (c.passed ? "passed" : "<b>FAILED</b>") << (c.inconsistency.empty() ? "" : " (paper/model inconsistency)")
+          << "</td><td>" << html_text(c.how)
           << (c.inconsistency.empty() ? "" : "<br><b>Paper/model inconsistency:</b> " + html_text(c.inconsistency))
           << " <small>[check: " << esc(c.check) << "]</small></td></tr>\n";
     h << "</table><p>Data: ";

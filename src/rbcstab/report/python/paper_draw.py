@@ -15,8 +15,8 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from phase_draw import draw_phase_diagram  # noqa: E402 (beside this script, on sys.path)
-from rbcstab_report import DPI, MARKERS, draw_shape, read_csv, read_json, shape_view  # noqa: E402
+from phase_draw import MARKERS, draw_phase_diagram  # noqa: E402 (beside this script, on sys.path)
+from rbcstab_report import DPI, draw_shape, read_csv, read_json, shape_view  # noqa: E402
 
 LS = {"solid": "-", "dashed": "--", "dotted": ":", "dashdot": "-."}
 
