@@ -77,10 +77,13 @@ class PhysicalMap:
         self._data = data
 
     def to_dict(self):
+        """The map's JSON: cell (SI), spreads, columns (per viscosity: lambda, Lambda and each boundary with its
+        bracket and band), assumptions, experiments, experiments_file, evaluations."""
         return json.loads(json.dumps(self._data))
 
     @property
     def viscosity(self):
+        """The outer viscosities eta_ex of the columns, in Pa s (increasing)."""
         return np.array([c["viscosity"] for c in self._data["columns"]])
 
     def _check(self, name):
@@ -88,10 +91,14 @@ class PhysicalMap:
             raise ValueError(f"boundary {name!r}: must be one of {', '.join(_BOUNDARIES)}")
 
     def rate(self, name):
+        """Per viscosity, the nominal cell's shear rate (1/s) at boundary `name` (tumbling_to_swinging,
+        onset_out_of_plane, onset_in_plane): the bracket's upper end; NaN where it was not found."""
         self._check(name)
         return np.array([c[name]["shear_rate"] if c[name]["found"] else math.nan for c in self._data["columns"]])
 
     def band(self, name):
+        """Per viscosity, (lo, hi) in 1/s: the boundary's min and max over the cells at the spreads' ends; NaN
+        where no cell found it."""
         self._check(name)
         cols = self._data["columns"]
         lo = np.array([c[name]["band"]["lo"] if c[name]["band"]["found"] else math.nan for c in cols])
@@ -100,10 +107,13 @@ class PhysicalMap:
 
     @property
     def assumptions(self):
+        """Where the model's assumptions fail: dicts with assumption, quantity, value, bound, holds, meaning."""
         return [dict(a) for a in self._data["assumptions"]]
 
     @property
     def experiments(self):
+        """The published observations drawn over the map (data/experiments.csv rows: source, reference,
+        observation, kind, viscosity [Pa s], shear_rate_lo/hi [1/s], stress [Pa], precision, basis)."""
         return [dict(e) for e in self._data["experiments"]]
 
     def __repr__(self):
@@ -133,6 +143,14 @@ class PhysicalMap:
             if bands:
                 lo, hi = self.band(name)
                 ax.fill_between(eta, lo, hi, color=color, alpha=0.15, lw=0)
+        # A boundary below the searched range: its upper regime holds at every rate searched there (hatched).
+        rmin, rmax = self._data["shear_rate_range"]
+        for name, (color, label) in styles.items():
+            below = np.array([c[name].get("side") == "below" for c in self._data["columns"]])
+            if below.any():
+                what = ("swinging at every rate searched" if name == "tumbling_to_swinging" else
+                        f"l \u2265 3 unstable at every rate searched ({label.split(', ')[-1]})")
+                ax.fill_between(eta, rmin, rmax, where=below, color=color, alpha=0.08, hatch="//", lw=0, label=what)
         if experiments:
             markers = iter("sD^v<>")
             for e in self._data["experiments"]:

@@ -114,9 +114,18 @@ TEST(PhysicalMap, AssumptionsSayHowFarOff) {
   // A real cell's excess area fails the first check, saying by how much.
   Scene real = cell();
   real.parameters.Delta = 4.3;
+  o.onset = true;
   const PhysicalMap r = physical_map(real, o);
   EXPECT_FALSE(r.assumptions[0].holds);
   EXPECT_NE(r.assumptions[0].meaning.find("4.3"), std::string::npos);
+  // There the l >= 3 modes grow at every rate searched: no crossing, the side says where the boundary lies, and
+  // the summary's search agrees (its reason).
+  for (const RateCrossing& c : r.columns[0].onset) {
+    EXPECT_FALSE(c.found);
+    EXPECT_EQ(c.side, "below") << c.reason;
+    EXPECT_EQ(c.reason.rfind("unstable already at min_rate", 0), 0u) << c.reason;
+  }
+  EXPECT_EQ(r.min_rate, 0.1);
 }
 
 TEST(PhysicalMap, BadInputNamesTheParameter) {

@@ -65,6 +65,7 @@ RateCrossing tumbling_crossing(const Scene& cell, const PhysicalMapOptions& o, i
       continue;
     }
     if (k == 0) {
+      c.side = "below";
       c.reason = "not tumbling already at " + format_value(o.min_rate) + " 1/s (the search's lower end)";
       return c;
     }
@@ -83,6 +84,7 @@ RateCrossing tumbling_crossing(const Scene& cell, const PhysicalMapOptions& o, i
     c.hi = c.rate = hi;
     return c;
   }
+  c.side = "above";
   c.reason = "tumbling up to " + format_value(o.max_rate) + " 1/s (the search's upper end)";
   return c;
 }
@@ -103,6 +105,9 @@ RateCrossing onset_crossing(const Scene& cell, double beta, const PhysicalMapOpt
   c.hi = t.hi;
   c.l = t.l;
   c.reason = t.reason;
+  // shear_rate_threshold names a mode without a crossing only when the cell is unstable at min_rate already.
+  if (!t.found && t.l >= 3) c.side = "below";
+  if (!t.found && t.l < 3 && t.reason.rfind("stable up to", 0) == 0) c.side = "above";
   return c;
 }
 
@@ -198,6 +203,8 @@ PhysicalMap physical_map(const Scene& scene, const PhysicalMapOptions& options) 
                           "follow it: give inner_viscosity (--inner-viscosity) instead of lambda");
   PhysicalMap map;
   map.cell = *scene.physical;
+  map.min_rate = options.min_rate;
+  map.max_rate = options.max_rate;
   map.spreads = options.spreads;
   // The cells: the nominal one, then each spread's two ends (one key at a time). A key must name an input this
   // cell has (checked at its nominal value, so the error names the key); an end the cell refuses (V0 < V) is

@@ -48,7 +48,10 @@ struct RateCrossing {
   double rate = 0;        // 1/s: the bracket's upper end (the first rate found past the boundary)
   double lo = 0, hi = 0;  // the final bracket, hi/lo - 1 <= rtol
   int l = 0;              // the onset's surviving mode (0 for the tumbling boundary)
-  std::string reason;     // why not found
+  // Not found because the boundary lies outside the searched range: "below" (the upper regime -- swinging,
+  // unstable -- holds already at min_rate), "above" (not reached by max_rate); "" when found or undetermined.
+  std::string side;
+  std::string reason;  // why not found
 };
 struct RateBand {
   int found = 0, cells = 0;    // cells whose crossing was found, out of the cells evaluated
@@ -76,7 +79,8 @@ struct PhysicalMap {
   std::vector<PhysicalSpread> spreads;
   std::vector<PhysicalMapColumn> columns;  // by increasing viscosity
   std::vector<AssumptionCheck> assumptions;
-  int evaluations = 0;  // regime and verdict evaluations in all
+  double min_rate = 0, max_rate = 0;  // 1/s: the searched range
+  int evaluations = 0;                // regime and verdict evaluations in all
 };
 
 // Throws InvalidArgument("viscosity", ...) for a scene that is not physical or whose lambda the cell does not

@@ -156,6 +156,7 @@ nlohmann::json crossing_json(const RateCrossing& c, const RateBand& band) {
     o["bracket"] = {c.lo, c.hi};
   } else {
     o["reason"] = c.reason;
+    if (!c.side.empty()) o["side"] = c.side;
   }
   if (c.l >= 3) o["l"] = c.l;
   o["band"] = {{"cells", band.cells}, {"found", band.found}};
@@ -195,11 +196,8 @@ nlohmann::json to_json(const PhysicalMap& map) {
                       {"bound", a.bound},
                       {"holds", a.holds},
                       {"meaning", a.meaning}});
-  return {{"cell", cell},
-          {"spreads", spreads},
-          {"columns", columns},
-          {"assumptions", checks},
-          {"evaluations", map.evaluations}};
+  return {{"cell", cell},       {"spreads", spreads},    {"shear_rate_range", {map.min_rate, map.max_rate}},
+          {"columns", columns}, {"assumptions", checks}, {"evaluations", map.evaluations}};
 }
 
 nlohmann::json to_json(const std::vector<ShearRateThreshold>& thresholds) {

@@ -20,8 +20,9 @@ nlohmann::json to_json(const ModePrediction& m);
 // [1/s], bracket, B, C when found (else reason), and l, shape when a mode is named.
 nlohmann::json to_json(const std::vector<ShearRateThreshold>& thresholds);
 // The physical phase diagram: the cell (SI), the spreads, per viscosity [Pa s] lambda, Lambda and each boundary
-// (tumbling_to_swinging, onset_out_of_plane, onset_in_plane: found, shear_rate [1/s], bracket, l or reason; and its
-// band: cells, found, lo, hi, lo_from, hi_from), then the assumption checks.
+// (tumbling_to_swinging, onset_out_of_plane, onset_in_plane: found, shear_rate [1/s], bracket, l, or reason and
+// side -- below/above the searched shear_rate_range; and its band: cells, found, lo, hi, lo_from, hi_from), then the
+// assumption checks.
 nlohmann::json to_json(const PhysicalMap& map);
 
 // The summary of a scene file's run r and its prediction (predict(scene, transient, &r)): the keys of
