@@ -24,14 +24,15 @@ def _range(name, v):
     return lo, hi
 
 
-def physical_map(scene, viscosity=(1e-3, 5e-2), viscosities=9, shear_rate=(1e-2, 1e5), samples_per_decade=6,
+def physical_map(scene, viscosity=(1e-3, 5e-2), viscosities=9, shear_rate=(1e-1, 1e5), samples_per_decade=6,
                  rtol=1e-3, onset=True, spreads="healthy", threads=0, experiments=None, progress=False):
     """The regimes of a physical scene's cell over outer viscosity x shear rate.
 
     scene: a Scene with a complete [physical] cell including inner_viscosity (lambda follows eta_ex).
     viscosity: (min, max) outer viscosity eta_ex in Pa s, > 0; viscosities: how many, log-spaced (1..1000).
     shear_rate: (min, max) in 1/s, 0 < min < max: the range both searches scan, samples_per_decade (1..100)
-    log-spaced samples, then bisection in ln(shear rate) to hi/lo - 1 <= rtol (1e-12..0.1).
+    log-spaced samples, then bisection in ln(shear rate) to hi/lo - 1 <= rtol (1e-12..0.1). The reduced regime
+    is stiff at small capillary number, so the cost grows as 1/min: the default starts at 0.1/s.
     Per viscosity: the tumbling -> swinging shear rate of the in-plane cell (reduced dynamics) and, with
     onset=True, the l >= 3 onset for each rest orientation (the summary's search). spreads: "healthy" (the
     healthy-cell ranges of docs/units.md for the inputs the cell has), None, or a list of (key, lo, hi[, source])

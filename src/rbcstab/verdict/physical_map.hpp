@@ -28,10 +28,13 @@ struct PhysicalSpread {
 // when Delta0 is a dimensionless input (no measurement bounds it).
 std::vector<PhysicalSpread> healthy_cell_spreads(const Scene& scene);
 
+// The reduced regime is stiff at small C (its relaxation rates grow as 1/C and its stepper is explicit), so a
+// search's cost grows as 1/min_rate: the default starts at 0.1/s, below the experiments' tumbling (~1/s in
+// 25-50 mPa s).
 struct PhysicalMapOptions {
   double min_viscosity = 1e-3, max_viscosity = 5e-2;  // Pa s: plasma to the dextran media of the experiments
   int viscosities = 9;                                // log-spaced over [min, max]
-  double min_rate = 1e-2, max_rate = 1e5;             // 1/s: both searches' range
+  double min_rate = 1e-1, max_rate = 1e5;             // 1/s: both searches' range (see below on min_rate)
   int samples_per_decade = 6;                         // scan density of both searches (a factor 1.47)
   double rtol = 1e-3;                                 // bisection in ln gamma until hi/lo - 1 <= rtol
   bool onset = true;                                  // also the l >= 3 onset (the costlier search)
