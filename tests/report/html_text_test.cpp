@@ -5,21 +5,41 @@
 
 #include <cmath>
 #include <cstdlib>
-#include <regex>
 #include <string>
 
 namespace rbcstab {
 namespace {
 
-// The oracle: reads an HTML number back (mantissa, then "×10<sup>−e</sup>" or nothing), independently of the
-// formatter; false when the text is not exactly one number (two run together, or a bare exponent left over).
+// The oracle: reads an HTML number back (mantissa, then thin space, times sign, thin space, "10<sup>", an optional
+// minus sign U+2212, the exponent, "</sup>"; or nothing), independently of the formatter; false when the text is not
+// exactly one number (two run together, or a bare exponent left over). A hand-written scanner, not std::regex:
+// GCC 12's <regex> trips -Wmaybe-uninitialized in the sanitized build.
 bool read_back(const std::string& html, double& value) {
-  // The UTF-8 bytes of the thin spaces, the times sign and the minus sign, literally (std::regex reads bytes).
-  static const std::regex one("^(-?\\d+(?:\\.\\d+)?)(?:\u2009\u00d7\u200910<sup>(\u2212)?(\\d+)</sup>)?$");
-  std::smatch m;
-  if (!std::regex_match(html, m, one)) return false;
-  const int e = m[3].matched ? std::stoi(m[3].str()) * (m[2].matched ? -1 : 1) : 0;
-  value = std::strtod((m[1].str() + "e" + std::to_string(e)).c_str(), nullptr);  // subnormals too
+  std::size_t i = 0;
+  auto digits = [&] {
+    const std::size_t start = i;
+    while (i < html.size() && html[i] >= '0' && html[i] <= '9') ++i;
+    return i > start;
+  };
+  auto take = [&](const std::string& literal) {
+    if (html.compare(i, literal.size(), literal) != 0) return false;
+    i += literal.size();
+    return true;
+  };
+  if (i < html.size() && html[i] == '-') ++i;
+  if (!digits()) return false;
+  if (take(".") && !digits()) return false;
+  const std::string mantissa = html.substr(0, i);
+  int e = 0;
+  if (take(" × 10<sup>")) {
+    const bool negative = take("−");
+    const std::size_t start = i;
+    if (!digits()) return false;
+    e = std::stoi(html.substr(start, i - start)) * (negative ? -1 : 1);
+    if (!take("</sup>")) return false;
+  }
+  if (i != html.size()) return false;
+  value = std::strtod((mantissa + "e" + std::to_string(e)).c_str(), nullptr);  // subnormals too
   return true;
 }
 
