@@ -21,6 +21,11 @@ constexpr double kReynoldsBound = 0.1;       // Stokes flow: inertia below 10 % 
 
 bool is_parameter_key(const std::string& key) { return key == "Delta" || key == "Delta0"; }
 
+// Log-spaced samples over [min_rate, max_rate], samples_per_decade of them per decade, both ends included.
+int sample_count(const PhysicalMapOptions& o) {
+  return int(std::ceil(std::log10(o.max_rate / o.min_rate) * o.samples_per_decade)) + 1;
+}
+
 // The cell with one spread end applied; nullopt (why set) where the cell refuses the value.
 std::optional<Scene> spread_cell(const Scene& scene, const std::string& key, double value, std::string& why) {
   try {
@@ -48,7 +53,7 @@ RateCrossing tumbling_crossing(const Scene& cell, const PhysicalMapOptions& o, i
     why = "regime " + to_string(r.regime) + " at " + format_value(rate) + " 1/s: " + r.reason;
     return std::nullopt;
   };
-  const int n = int(std::ceil(std::log10(o.max_rate / o.min_rate) * o.samples_per_decade)) + 1;
+  const int n = sample_count(o);
   auto sample = [&](int k) {
     return k + 1 == n ? o.max_rate : o.min_rate * std::pow(o.max_rate / o.min_rate, double(k) / (n - 1));
   };
@@ -93,7 +98,7 @@ RateCrossing onset_crossing(const Scene& cell, double beta, const PhysicalMapOpt
   ShearRateSearchOptions search;
   search.min_rate = o.min_rate;
   search.max_rate = o.max_rate;
-  search.samples = int(std::ceil(std::log10(o.max_rate / o.min_rate) * o.samples_per_decade)) + 1;
+  search.samples = sample_count(o);
   search.rtol = o.rtol;
   search.predictor = o.predictor;
   const ShearRateThreshold t = shear_rate_threshold(cell, beta, search);
