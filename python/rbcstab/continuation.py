@@ -265,10 +265,15 @@ class Branch(_args.Columns):
 
     @property
     def status(self):
+        """How the run ended: 'completed' (a bound, max_points or a stop_at monitor was reached), 'step_too_small'
+        (the corrector failed down to min_step), 'outside_domain' (a parameter value the model refuses),
+        'start_failed' (Newton did not converge at the start) or 'branch_lost' (every step down to min_step left
+        the branch: :attr:`message` says after which point)."""
         return self._part()["status"]
 
     @property
     def message(self):
+        """The status in words: where the run stopped and why (the CLI's summary line)."""
         return self._part()["message"]
 
     @property
@@ -279,6 +284,8 @@ class Branch(_args.Columns):
 
     @property
     def kind(self):
+        """The problem continued: 'equilibrium' or 'orbit' (reduced), 'modal', 'modal-orbit' or 'full' (the
+        ``kind`` keyword; the CLI's JSON "kind")."""
         return self._run_json()["kind"]
 
     @property

@@ -136,14 +136,17 @@ class Diagram(_Document):
 
     @property
     def complete(self):
+        """Whether every grid point is held (a shard holds only its own)."""
         return self._doc["complete"]
 
     @property
     def config_hash(self):
+        """FNV-1a 64 hash (hex) of what decides the points: a journal or shard with another hash is not merged."""
         return self._doc["config_hash"]
 
     @property
     def classifier(self):
+        """The l_Delta rule: 'final' (Fig. 4), 'tail' (App. E) or 'auto' (tail mean if the run oscillates)."""
         return self._doc["diagram"]["classifier"]
 
     @property
@@ -163,6 +166,7 @@ class Diagram(_Document):
 
     @property
     def resumed(self):
+        """How many points came back from the journal instead of being simulated in this call."""
         return self._data.resumed
 
     @property
