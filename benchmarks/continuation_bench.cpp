@@ -91,13 +91,13 @@ BENCHMARK(BM_FoldLocation)->Unit(benchmark::kMillisecond);
 // Precision of the UZ point: its bracket, and its distance to the same point located with N = 32.
 Scene fig2_in_plane(double Delta) { return test::fig2_in_plane(Delta); }
 
-Branch in_plane_branch(const PeriodicOrbitProblem& pr, const ReducedForcedSystem& sys) {
+Branch in_plane_branch(const PeriodicOrbitProblem& pr, const ReducedForcedSystem& sys, bool event = true) {
   const double p0 = sys.start_parameter();
   const NewtonResult nr = solve_fixed_parameter(pr, pr.shooting_guess(sys.relaxed_state(300), p0), p0);
   ContinuationOptions o;
   o.direction = Direction::forward;
   o.p_max = 0.5;
-  o.events.push_back(pr.transition_event());
+  if (event) o.events.push_back(pr.transition_event());
   return continue_branch(pr, nr.x, p0, o);
 }
 
@@ -137,6 +137,29 @@ void BM_InPlaneOrbitBranchDelta(benchmark::State& state) {
   state.counters["max_trivial_multiplier_error"] = trivial;
 }
 BENCHMARK(BM_InPlaneOrbitBranchDelta)->Arg(4)->Arg(8)->Arg(16)->Unit(benchmark::kMillisecond);
+
+// The same branch without the UZ event: the work AUTO-07p does per point (Newton, tangent, multipliers), for
+// benchmarks/auto/compare.py, with N = range(0) segments at rtol = 10^-range(1). The start (relaxation and the
+// first Newton) is timed too, as AUTO's start is.
+void BM_InPlaneOrbitBranchNoEvent(benchmark::State& state) {
+  const ReducedForcedSystem sys(fig2_in_plane(0.05), ContinuationParameter::Delta);
+  OrbitOptions oo;
+  oo.segments = static_cast<int>(state.range(0));
+  oo.rtol = std::pow(10.0, -static_cast<double>(state.range(1)));
+  oo.atol = oo.rtol / 10;
+  const PeriodicOrbitProblem pr(sys, oo);
+  std::size_t points = 0;
+  for (auto _ : state) points += in_plane_branch(pr, sys, false).points.size();
+  state.counters["points"] = static_cast<double>(points) / static_cast<double>(state.iterations());
+  state.counters["points_per_second"] = benchmark::Counter(static_cast<double>(points), benchmark::Counter::kIsRate);
+}
+BENCHMARK(BM_InPlaneOrbitBranchNoEvent)
+    ->Args({4, 12})
+    ->Args({8, 12})
+    ->Args({16, 12})
+    ->Args({4, 10})
+    ->Args({4, 8})
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace rbcstab

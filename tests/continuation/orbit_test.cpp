@@ -463,6 +463,42 @@ TEST(ReducedOrbit, ParameterDerivativeMatchesDifferences) {
   }
 }
 
+// flow_terms (one call per stage: f, the dense df/dx from ReducedModel::dense_terms, df/dp from the same phasor)
+// against the separate rhs, jacobian (the StructuredJacobian path) and parameter_derivative, for every
+// parameter, on and off the sphere: the same formulas in other code, so to rounding (1e-14 relative). Not
+// vacuous: the same terms at another time differ by more than 1e-3.
+TEST(ReducedOrbit, FlowTermsEqualTheSeparateCalls) {
+  for (const std::string& name : continuation_parameter_names()) {
+    const ContinuationParameter q = continuation_parameter_from_string(name);
+    Scene s = fig2_ip(0.3);
+    s.physical = unit_cell(s.parameters);
+    const ReducedForcedSystem sys(s, q);
+    const double p = sys.start_parameter();
+    for (double t : {0.0, 1.3, 4.0}) {
+      for (const Eigen::Vector3d& y : {Eigen::Vector3d(0.3, -0.5, 0.81), Eigen::Vector3d(0.9, 0.2, -0.3)}) {
+        const std::span<const double> ys(y.data(), 3);
+        double f[3], fp[3], f_ref[3], fp_ref[3], f_only[3];
+        Eigen::MatrixXd J, J_ref, J_only, J_later;
+        sys.flow_terms(t, ys, p, f, J, fp);
+        sys.flow_terms(t, ys, p, f_only, J_only, {});
+        sys.rhs(t, ys, p, f_ref);
+        sys.jacobian(t, ys, p, J_ref);
+        sys.parameter_derivative(t, ys, p, fp_ref);
+        for (int i = 0; i < 3; ++i) {
+          EXPECT_NEAR(f[i], f_ref[i], 1e-14 * (1 + std::abs(f_ref[i]))) << name;
+          EXPECT_NEAR(fp[i], fp_ref[i], 1e-14 * (1 + std::abs(fp_ref[i]))) << name;
+          EXPECT_EQ(f_only[i], f[i]);
+        }
+        EXPECT_LE((J - J_ref).norm(), 1e-14 * (1 + J_ref.norm())) << name;
+        EXPECT_EQ(J_only, J);
+        double f_later[3], fp_later[3];
+        sys.flow_terms(t + 1, ys, p, f_later, J_later, fp_later);
+        EXPECT_GT((J_later - J_ref).norm(), 1e-3) << name;
+      }
+    }
+  }
+}
+
 // Newton from the scene relaxed for T = 300 (a state at a multiple of 2 pi).
 Eigen::VectorXd reduced_orbit(const ReducedForcedSystem& sys, const PeriodicOrbitProblem& pr) {
   const double p0 = sys.start_parameter();

@@ -32,6 +32,13 @@ void ForcedSystem::parameter_derivative(double t, std::span<const double> x, dou
   for (std::size_t i = 0; i < fp.size(); ++i) fp[i] = (fp[i] - fm[i]) / (2 * h);
 }
 
+void ForcedSystem::flow_terms(double t, std::span<const double> x, double p, std::span<double> f, Eigen::MatrixXd& J,
+                              std::span<double> fp) const {
+  rhs(t, x, p, f);
+  jacobian(t, x, p, J);
+  if (!fp.empty()) parameter_derivative(t, x, p, fp);
+}
+
 // ---------------------------------------------------------------- reduced in-plane system
 
 ReducedForcedSystem::ReducedForcedSystem(const Scene& scene, ContinuationParameter free) : scene_(scene), free_(free) {
@@ -40,13 +47,22 @@ ReducedForcedSystem::ReducedForcedSystem(const Scene& scene, ContinuationParamet
 }
 
 const ReducedModel& ReducedForcedSystem::model(double p) const {
+  // An integration asks for the same p at every stage: the last lookup first (the map search was 5 % of a
+  // shooting's time). std::map's nodes stay put until clear(), which also resets last_.
+  if (last_ && last_->first == p) return last_->second;
   auto it = cache_.find(p);
-  if (it != cache_.end()) return it->second;
-  if (cache_.size() >= 8) cache_.clear();             // no reference is held across calls (see parameter_derivative)
-  const Scene at = with_parameter(scene_, free_, p);  // throws InvalidArgument outside p's domain
-  // beta turns the rest shape: its direction is rebuilt per value (cached with the model).
-  return cache_.try_emplace(p, at.parameters, free_ == ContinuationParameter::beta ? oriented_initial_state(at) : init_)
-      .first->second;
+  if (it == cache_.end()) {
+    if (cache_.size() >= 8) {  // no reference is held across calls (see parameter_derivative)
+      cache_.clear();
+      last_ = nullptr;
+    }
+    const Scene at = with_parameter(scene_, free_, p);  // throws InvalidArgument outside p's domain
+    // beta turns the rest shape: its direction is rebuilt per value (cached with the model).
+    it = cache_.try_emplace(p, at.parameters, free_ == ContinuationParameter::beta ? oriented_initial_state(at) : init_)
+             .first;
+  }
+  last_ = &*it;
+  return it->second;
 }
 
 void ReducedForcedSystem::rhs(double t, std::span<const double> x, double p, std::span<double> f) const {
@@ -63,8 +79,12 @@ void ReducedForcedSystem::jacobian(double t, std::span<const double> x, double p
 }
 
 ReducedForcedSystem::Slopes ReducedForcedSystem::coefficient_slopes(double p) const {
+  if (last_slopes_ && last_slopes_->first == p) return last_slopes_->second;
   auto it = slopes_.find(p);
-  if (it != slopes_.end()) return it->second;
+  if (it != slopes_.end()) {
+    last_slopes_ = &*it;
+    return it->second;
+  }
   // d(1/Lambda)/dp and d kappa/dp by central differences of two scalar functions of the parameters
   // (constants during an integration, so their rounding does not disturb the error control).
   auto coefficients = [&](double q) {
@@ -78,7 +98,10 @@ ReducedForcedSystem::Slopes ReducedForcedSystem::coefficient_slopes(double p) co
     d.kappa = coefficients(p).second;
     const detail::RestDirection r = detail::rest_direction(p, false);
     d.dz0 = r.dz0, d.dw0 = r.dw0;
-    if (slopes_.size() >= 8) slopes_.clear();
+    if (slopes_.size() >= 8) {
+      slopes_.clear();
+      last_slopes_ = nullptr;
+    }
     slopes_.emplace(p, d);
     return d;
   }
@@ -102,6 +125,14 @@ ReducedForcedSystem::Slopes ReducedForcedSystem::coefficient_slopes(double p) co
 
 void ReducedForcedSystem::parameter_derivative(double t, std::span<const double> x, double p,
                                                std::span<double> fp) const {
+  const ReducedModel& m = model(p);
+  const std::complex<double> z0 = m.z0(t);
+  const double g[3] = {z0.real(), z0.imag(), m.w0()};
+  parameter_derivative(t, x, p, g, fp);
+}
+
+void ReducedForcedSystem::parameter_derivative(double t, std::span<const double> x, double p, const double g[3],
+                                               std::span<double> fp) const {
   // f depends on p only through 1/Lambda and kappa = 1/(Lambda S) (ReducedModel::rhs):
   //   f = mu y + (-y1, y0, 0) - (0, 1/Lambda, 0) + kappa g(t),  mu = (y1/Lambda - kappa y.g) / |y|^2,
   // with g = (Re z0(t), Im z0(t), w0) the rest shape's direction, so df/dp is exact in y and t:
@@ -117,9 +148,6 @@ void ReducedForcedSystem::parameter_derivative(double t, std::span<const double>
     ForcedSystem::parameter_derivative(t, x, p, fp);
     return;
   }
-  const ReducedModel& m = model(p);
-  const std::complex<double> z0 = m.z0(t);
-  const double g[3] = {z0.real(), z0.imag(), m.w0()};
   double dg[3] = {0, 0, 0};
   if (beta) {
     const std::complex<double> dz0 = d.dz0 * unit_phasor(t);
@@ -134,6 +162,17 @@ void ReducedForcedSystem::parameter_derivative(double t, std::span<const double>
     const double dfdg = d.kappa * (dg[i] - ydg / Q * x[i]);
     fp[i] = d.dinvL * dfdinvL + d.dkappa * dfdkappa + dfdg;
   }
+}
+
+void ReducedForcedSystem::flow_terms(double t, std::span<const double> x, double p, std::span<double> f,
+                                     Eigen::MatrixXd& J, std::span<double> fp) const {
+  const ReducedModel::DenseTerms d = model(p).dense_terms(t, x);
+  J.resize(3, 3);
+  for (int i = 0; i < 3; ++i) {
+    f[i] = d.f[i];
+    for (int j = 0; j < 3; ++j) J(i, j) = d.J[3 * i + j];
+  }
+  if (!fp.empty()) parameter_derivative(t, x, p, d.direction, fp);
 }
 
 Eigen::VectorXd ReducedForcedSystem::relaxed_state(double T, const std::function<void()>& poll) const {

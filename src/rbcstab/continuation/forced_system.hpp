@@ -27,6 +27,11 @@ class ForcedSystem {
   // the difference (~eps |f| / h) enters the sensitivity equation, whose error control at rtol 1e-12
   // then forces small steps (measured: ~20x slower shooting on the test systems).
   virtual void parameter_derivative(double t, std::span<const double> x, double p, std::span<double> fp) const;
+  // f, df/dx and, when fp is not empty, df/dp at one (t, x, p): the variational equations' right-hand side
+  // (one call per integration stage). Default: rhs, jacobian and parameter_derivative; a system whose three
+  // share work (the forcing phasor, a cached model) overrides it with the same values.
+  virtual void flow_terms(double t, std::span<const double> x, double p, std::span<double> f, Eigen::MatrixXd& J,
+                          std::span<double> fp) const;
   // True when x . f(t, x, p) = 0 identically (Q = |x|^2 conserved, the reduced system's excess
   // area): the monodromy then has a trivial multiplier 1 and the shooting system is regularised.
   virtual bool conserves_norm() const { return false; }
@@ -37,10 +42,15 @@ class ForcedSystem {
 class ReducedForcedSystem final : public ForcedSystem {
  public:
   ReducedForcedSystem(const Scene& scene, ContinuationParameter free);
+  // A copy starts with empty caches (they hold pointers into their own maps).
+  ReducedForcedSystem(const ReducedForcedSystem& o) : scene_(o.scene_), free_(o.free_), init_(o.init_) {}
+  ReducedForcedSystem& operator=(const ReducedForcedSystem&) = delete;
   Eigen::Index dimension() const override { return 3; }
   void rhs(double t, std::span<const double> x, double p, std::span<double> f) const override;
   void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const override;
   void parameter_derivative(double t, std::span<const double> x, double p, std::span<double> fp) const override;
+  void flow_terms(double t, std::span<const double> x, double p, std::span<double> f, Eigen::MatrixXd& J,
+                  std::span<double> fp) const override;
   bool conserves_norm() const override { return true; }
   std::string parameter_name() const override { return to_string(free_); }
 
@@ -57,11 +67,16 @@ class ReducedForcedSystem final : public ForcedSystem {
     double dz0 = 0, dw0 = 0;                  // beta only: the rest direction's slope (z0 at t = 0)
   };
   Slopes coefficient_slopes(double p) const;
+  // df/dp given the forcing direction g = (Re z0(t), Im z0(t), w0) at t (the model's, at p).
+  void parameter_derivative(double t, std::span<const double> x, double p, const double g[3],
+                            std::span<double> fp) const;
   Scene scene_;
   ContinuationParameter free_;
   InitialState init_;
   mutable std::map<double, ReducedModel> cache_;
   mutable std::map<double, Slopes> slopes_;
+  mutable const std::pair<const double, ReducedModel>* last_ = nullptr;  // the last lookup's entry (or none)
+  mutable const std::pair<const double, Slopes>* last_slopes_ = nullptr;
 };
 
 }  // namespace rbcstab

@@ -40,27 +40,31 @@ std::complex<double> ReducedModel::z0(double t) const { return z00_ * unit_phaso
 
 // The area balance of tension.hpp with the multiplier mu as the one rate (slope 1, zero 0):
 // (1/2) Q' = mu Q + y.h with h = (kappa z0, -1/Lambda, kappa w0) (the rotation does no work).
-AreaBalance ReducedModel::balance(double t, std::span<const double> y) const {
-  const std::complex<double> zz0 = z0(t);
+// zz0 = z0(t): every evaluation at t computes the phasor once (it was a quarter of an orbit shooting's time).
+AreaBalance ReducedModel::balance(std::complex<double> zz0, std::span<const double> y) const {
   AreaBalance b;
   b.add_mode(GrowthRate{1.0, 0.0}, y[0] * y[0] + y[1] * y[1] + y[2] * y[2]);
   b.add_work(kappa_ * (y[0] * zz0.real() + y[1] * zz0.imag() + y[2] * w0_) - inv_Lambda_ * y[1]);
   return b;
 }
 
-double ReducedModel::mu(double t, std::span<const double> y) const { return balance(t, y).sigma(); }
+double ReducedModel::mu(double t, std::span<const double> y) const { return balance(z0(t), y).sigma(); }
 
-void ReducedModel::rhs(double t, std::span<const double> y, std::span<double> dydt) const {
-  const std::complex<double> zz0 = z0(t);
-  const double m = mu(t, y);
+void ReducedModel::rhs_at(std::complex<double> zz0, double m, std::span<const double> y, std::span<double> dydt) const {
   dydt[0] = m * y[0] - y[1] + kappa_ * zz0.real();
   dydt[1] = y[0] + m * y[1] - inv_Lambda_ + kappa_ * zz0.imag();
   dydt[2] = m * y[2] + kappa_ * w0_;
 }
 
+void ReducedModel::rhs(double t, std::span<const double> y, std::span<double> dydt) const {
+  const std::complex<double> zz0 = z0(t);
+  rhs_at(zz0, balance(zz0, y).sigma(), y, dydt);
+}
+
+// df/dy = mu I + (rotation) + y (grad mu)^T, grad mu_i = the change of mu when y_i moves (the area balance).
 void ReducedModel::jacobian(double t, std::span<const double> y, StructuredJacobian& J, std::span<double> dfdt) const {
   const std::complex<double> zz0 = z0(t);
-  const AreaBalance b = balance(t, y);
+  const AreaBalance b = balance(zz0, y);
   const double m = b.sigma();
   J.resize(3);
   J.block_start = {2, 0, 1};
@@ -68,14 +72,35 @@ void ReducedModel::jacobian(double t, std::span<const double> y, StructuredJacob
   J.upper[0] = -1;
   J.lower[0] = 1;
   J.v = {y[0], y[1], y[2]};
-  const double dwork[3] = {kappa_ * zz0.real(), kappa_ * zz0.imag() - inv_Lambda_, kappa_ * w0_};
-  for (int i = 0; i < 3; ++i) J.w[i] = b.sigma_change(dwork[i], 2 * y[i]);
+  grad_mu(zz0, b, y, J.w);
   // z0' = i z0
   const double dz0r = -zz0.imag(), dz0i = zz0.real();
   const double dmu_dt = b.sigma_change(kappa_ * (y[0] * dz0r + y[1] * dz0i), 0.0);
   dfdt[0] = kappa_ * dz0r + y[0] * dmu_dt;
   dfdt[1] = kappa_ * dz0i + y[1] * dmu_dt;
   dfdt[2] = y[2] * dmu_dt;
+}
+
+void ReducedModel::grad_mu(std::complex<double> zz0, const AreaBalance& b, std::span<const double> y,
+                           std::span<double> g) const {
+  const double dwork[3] = {kappa_ * zz0.real(), kappa_ * zz0.imag() - inv_Lambda_, kappa_ * w0_};
+  for (int i = 0; i < 3; ++i) g[i] = b.sigma_change(dwork[i], 2 * y[i]);
+}
+
+ReducedModel::DenseTerms ReducedModel::dense_terms(double t, std::span<const double> y) const {
+  DenseTerms d;
+  const std::complex<double> zz0 = z0(t);
+  const AreaBalance b = balance(zz0, y);
+  const double m = b.sigma();
+  rhs_at(zz0, m, y, d.f);
+  double g[3];
+  grad_mu(zz0, b, y, g);
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 3; ++j) d.J[3 * i + j] = (i == j ? m : 0.0) + y[i] * g[j];
+  d.J[1] -= 1;  // the rotation (-y1, y0, 0)
+  d.J[3] += 1;
+  d.direction[0] = zz0.real(), d.direction[1] = zz0.imag(), d.direction[2] = w0_;
+  return d;
 }
 
 Observation ReducedModel::observe(double t, std::span<const double> y) const {

@@ -33,9 +33,19 @@ class ReducedModel final : public System {
   const GrowthRate& Upsilon2() const { return Upsilon2_; }
   std::complex<double> z0(double t) const;
   double w0() const { return w0_; }  // rest shape's w component (with z0: the forcing direction)
+  // f, the dense df/dy (row-major) and the forcing direction (Re z0(t), Im z0(t), w0) of one state at once
+  // (the same terms as rhs and jacobian, the phasor computed once): the orbit shooting's variational equations.
+  struct DenseTerms {
+    double f[3];
+    double J[9];
+    double direction[3];
+  };
+  DenseTerms dense_terms(double t, std::span<const double> y) const;
 
  private:
-  AreaBalance balance(double t, std::span<const double> y) const;  // yields mu
+  AreaBalance balance(std::complex<double> zz0, std::span<const double> y) const;  // yields mu; zz0 = z0(t)
+  void rhs_at(std::complex<double> zz0, double mu, std::span<const double> y, std::span<double> dydt) const;
+  void grad_mu(std::complex<double> zz0, const AreaBalance& b, std::span<const double> y, std::span<double> g) const;
   Parameters p_;
   int L_;
   GrowthRate Upsilon2_;

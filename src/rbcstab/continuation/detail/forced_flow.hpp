@@ -38,14 +38,26 @@ class ForcedFlow final : public System {
   int L() const override { return 2; }
   void rhs(double t, std::span<const double> y, std::span<double> dydt) const override {
     const auto n = static_cast<std::size_t>(n_);
-    s_.rhs(t, y.first(n), p_, dydt.first(n));
-    if (mode_ == Mode::plain) return;
-    s_.jacobian(t, y.first(n), p_, J_);
+    if (mode_ == Mode::plain) {
+      s_.rhs(t, y.first(n), p_, dydt.first(n));
+      return;
+    }
+    const bool sensitivity = mode_ == Mode::variational;
+    fp_.resize(n_);
+    s_.flow_terms(t, y.first(n), p_, dydt.first(n), J_,
+                  sensitivity ? std::span<double>(fp_.data(), n) : std::span<double>());
+    if (n_ == 3) {
+      // The reduced system: fixed-size products (the dynamic ones were a tenth of a shooting's time).
+      const Eigen::Matrix3d J = J_;
+      Eigen::Map<Eigen::Matrix3d>(dydt.data() + n).noalias() = J * Eigen::Map<const Eigen::Matrix3d>(y.data() + n);
+      if (sensitivity)
+        Eigen::Map<Eigen::Vector3d>(dydt.data() + 12).noalias() =
+            J * Eigen::Map<const Eigen::Vector3d>(y.data() + 12) + Eigen::Map<const Eigen::Vector3d>(fp_.data());
+      return;
+    }
     Eigen::Map<const Eigen::MatrixXd> Phi(y.data() + n, n_, n_);
     Eigen::Map<Eigen::MatrixXd>(dydt.data() + n, n_, n_).noalias() = J_ * Phi;
-    if (mode_ == Mode::monodromy) return;
-    fp_.resize(n_);
-    s_.parameter_derivative(t, y.first(n), p_, std::span<double>(fp_.data(), n));
+    if (!sensitivity) return;
     Eigen::Map<const Eigen::VectorXd> sp(y.data() + n + n * n, n_);
     Eigen::Map<Eigen::VectorXd>(dydt.data() + n + n * n, n_).noalias() = J_ * sp + fp_;
   }
