@@ -14,9 +14,9 @@
 #include "rbcstab/continuation/autonomous_orbit.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/full_equilibrium.hpp"
-#include "rbcstab/continuation/scene_continuation.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/orbit_switch.hpp"
+#include "rbcstab/continuation/scene_continuation.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 
@@ -34,7 +34,7 @@ class HopfNormalForm final : public AutonomousSystem {
   Eigen::VectorXd x_of(const Eigen::VectorXd& y) const { return Ainv_ * y; }
   void rhs(std::span<const double> y, double p, std::span<double> f) const override {
     const Eigen::VectorXd x = x_of(Eigen::Map<const Eigen::VectorXd>(y.data(), dimension()));
-    Eigen::Map<Eigen::VectorXd>(f.data(), dimension()) = A_ * fx(x, p);
+    Eigen::Map<Eigen::VectorXd>(f.data(), dimension()) = A_ * fx(x, p).head(dimension());
   }
   void jacobian(std::span<const double> y, double p, Eigen::MatrixXd& J) const override {
     const Eigen::VectorXd x = x_of(Eigen::Map<const Eigen::VectorXd>(y.data(), dimension()));
@@ -53,13 +53,12 @@ class HopfNormalForm final : public AutonomousSystem {
   double a_prime(double rho) const { return s_ + 2 * c_ * rho; }
 
  private:
-  Eigen::VectorXd fx(const Eigen::VectorXd& x, double p) const {
-    const double rho = x.head(2).squaredNorm(), a = p + s_ * rho + c_ * rho * rho;
-    Eigen::VectorXd f(dimension());
-    f[0] = a * x[0] - w_ * x[1];
-    f[1] = w_ * x[0] + a * x[1];
-    if (dimension() == 3) f[2] = -x[2];
-    return f;
+  // In fixed size (z = 0 in dimension 2): the dynamic-size version trips GCC's -Wnull-dereference.
+  Eigen::Vector3d fx(const Eigen::VectorXd& xd, double p) const {
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    x.head(xd.size()) = xd;
+    const double rho = x.head<2>().squaredNorm(), a = p + s_ * rho + c_ * rho * rho;
+    return {a * x[0] - w_ * x[1], w_ * x[0] + a * x[1], -x[2]};
   }
   double s_, c_, w_;
   Eigen::MatrixXd A_, Ainv_;
@@ -94,7 +93,9 @@ void expect_closed_form(const HopfNormalForm& sys, const Branch& b, double s, do
     const Eigen::VectorXd x0 = sys.x_of(pt.x.head(sys.dimension()));
     const double rho = x0.head(2).squaredNorm();
     EXPECT_NEAR(pt.p + s * rho + c * rho * rho, 0, 1e-8) << pt.p;
-    if (sys.dimension() == 3) EXPECT_NEAR(x0[2], 0, 1e-8);
+    if (sys.dimension() == 3) {
+      EXPECT_NEAR(x0[2], 0, 1e-8);
+    }
     EXPECT_NEAR(AutonomousOrbitProblem::period(pt.x), T, 1e-8);
     ASSERT_EQ(pt.spectrum.size(), sys.dimension() - 1);
     std::vector<double> mu, ex = {std::exp(2 * rho * sys.a_prime(rho) * T)};

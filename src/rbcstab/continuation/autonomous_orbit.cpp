@@ -106,7 +106,8 @@ void AutonomousOrbitProblem::residual(const Eigen::VectorXd& X, double p, Eigen:
     F.setConstant(std::numeric_limits<double>::quiet_NaN());
     return;
   }
-  for (int j = 0; j < N_; ++j) F.segment(j * n_, n_) = sh.phi[static_cast<std::size_t>(j)] - X.segment(((j + 1) % N_) * n_, n_);
+  for (int j = 0; j < N_; ++j)
+    F.segment(j * n_, n_) = sh.phi[static_cast<std::size_t>(j)] - X.segment(((j + 1) % N_) * n_, n_);
   F[n_ * N_] = field(sys_, X.head(n_), p)[k_];
 }
 

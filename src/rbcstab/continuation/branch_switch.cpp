@@ -18,8 +18,8 @@ void BranchSwitchOptions::validate() const {
   continuation.validate();
 }
 
-bool correct_on_hyperplane(const ContinuationProblem& problem, const Eigen::VectorXd& X_base,
-                           const Eigen::VectorXd& d, double h, double tol, int max_newton, Eigen::VectorXd& X) {
+bool correct_on_hyperplane(const ContinuationProblem& problem, const Eigen::VectorXd& X_base, const Eigen::VectorXd& d,
+                           double h, double tol, int max_newton, Eigen::VectorXd& X) {
   const Eigen::Index n = problem.dimension(), N = n + 1;
   X = X_base + h * d;
   Eigen::MatrixXd J, A(N, N);

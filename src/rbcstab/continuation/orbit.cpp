@@ -94,7 +94,11 @@ void OrbitOptions::validate() const {
 // ---------------------------------------------------------------- the shooting problem
 
 PeriodicOrbitProblem::PeriodicOrbitProblem(const ForcedSystem& system, const OrbitOptions& options, int periods)
-    : sys_(system), o_(options), n_(system.dimension()), N_(options.segments), periods_(periods),
+    : sys_(system),
+      o_(options),
+      n_(system.dimension()),
+      N_(options.segments),
+      periods_(periods),
       length_(kTwoPi * periods) {
   o_.validate();
   require(periods >= 1 && periods <= 64, "periods", periods, "an integer in [1, 64]");
@@ -199,7 +203,8 @@ Eigen::VectorXd PeriodicOrbitProblem::variation(const Eigen::VectorXd& X, double
   Eigen::VectorXd V = Eigen::VectorXd::Constant(n_ * N_, std::numeric_limits<double>::quiet_NaN());
   if (!sh.ok) return V;
   V.head(n_) = v0;
-  for (int j = 1; j < N_; ++j) V.segment(j * n_, n_) = sh.M[static_cast<std::size_t>(j - 1)] * V.segment((j - 1) * n_, n_);
+  for (int j = 1; j < N_; ++j)
+    V.segment(j * n_, n_) = sh.M[static_cast<std::size_t>(j - 1)] * V.segment((j - 1) * n_, n_);
   return V;
 }
 

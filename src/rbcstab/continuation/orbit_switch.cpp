@@ -44,15 +44,16 @@ std::string labels_at(const Branch& branch, const SpecialPoint& point) {
     if (q.type != SpecialPointType::HB && q.type != SpecialPointType::BP) continue;
     if (std::abs(q.p - point.p) > 1e-8 * (1 + std::abs(point.p))) continue;
     s += (s.empty() ? "" : ", ") + std::string(to_string(q.type));
-    if (q.mode_l) s += " (l = " + std::to_string(*q.mode_l) + (q.mode_m ? ", m = " + std::to_string(*q.mode_m) : "") + ")";
+    if (q.mode_l)
+      s += " (l = " + std::to_string(*q.mode_l) + (q.mode_m ? ", m = " + std::to_string(*q.mode_m) : "") + ")";
     if (q.type == SpecialPointType::HB) s += " omega " + format_value(q.eigenvalue.imag());
   }
   return s;
 }
 
 // Newton off the point along d, then the engine away from p0.
-void start_branch(const ContinuationProblem& problem, const Eigen::VectorXd& X0, const Eigen::VectorXd& delta, double p0,
-                  const OrbitSwitchOptions& options, OrbitSwitchResult& out) {
+void start_branch(const ContinuationProblem& problem, const Eigen::VectorXd& X0, const Eigen::VectorXd& delta,
+                  double p0, const OrbitSwitchOptions& options, OrbitSwitchResult& out) {
   Eigen::VectorXd base(X0.size() + 1), d = Eigen::VectorXd::Zero(X0.size() + 1);
   base << X0, p0;
   d.head(delta.size()) = delta;
@@ -168,18 +169,19 @@ OrbitSwitchResult switch_at(const ContinuationProblem& problem, const Branch& br
     if (const auto* eq = dynamic_cast<const AutonomousEquilibriumProblem*>(&problem))
       return switch_at_hopf(eq->system(), point, options);
     OrbitSwitchResult out;
-    const auto critical = critical_values(problem.spectrum(point.x, point.p), StabilityKind::eigenvalues,
-                                          options.critical_tol);
+    const auto critical =
+        critical_values(problem.spectrum(point.x, point.p), StabilityKind::eigenvalues, options.critical_tol);
     if (critical.size() > 1) {
       out.message = "a multiple Hopf point at " + problem.parameter_name() + " = " + format_value(point.p) +
-                    ": eigenvalues on the imaginary axis " + list_values(critical) + "; labels there: " +
-                    labels_at(branch, point) +
+                    ": eigenvalues on the imaginary axis " + list_values(critical) +
+                    "; labels there: " + labels_at(branch, point) +
                     ". Switching needs one simple pair (the symmetric onset is a family of orbits, "
                     "docs/continuation.md)";
       return out;
     }
-    out.message = "switching at an HB of a " + problem.parameter_name() +
-                  " branch of this problem kind is not supported (only autonomous systems' equilibria)";
+    out.message =
+        "a simple HB, but switching at an HB is supported on branches of autonomous systems' equilibria "
+        "only (AutonomousEquilibriumProblem), not this problem kind";
     return out;
   }
   if (point.type == SpecialPointType::PD) {

@@ -146,8 +146,8 @@ SceneBranch switch_at_label(const ContinuationRun& run, int label, const Restart
     // The orbit switch's own verdict: a multiple Hopf point (the l >= 3 onset) named with its pairs, or not
     // supported for this problem kind (orbit_switch.hpp).
     const MeasuredBranch& m = *branch_of(run, lp.branch);
-    const OrbitSwitchResult o = switch_at(make_problem(ctx.spec, ctx.problem_scene)->problem(), m.branch,
-                                          m.branch.special_points[lp.index]);
+    const OrbitSwitchResult o =
+        switch_at(make_problem(ctx.spec, ctx.problem_scene)->problem(), m.branch, m.branch.special_points[lp.index]);
     throw InvalidArgument("switch_at", what + " is an HB: " + o.message);
   }
   if (lp.type != to_string(SpecialPointType::BP)) {
