@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <complex>
 #include <string>
@@ -156,6 +157,98 @@ TEST(HopfSwitch, FoldOfCyclesOnTheSwitchedBranch) {
   EXPECT_NEAR(sys.x_of(lpc->x.head(2)).squaredNorm(), 0.5, 1e-5);  // rho - 1/2 ~ sqrt(p error)
   expect_closed_form(sys, r.branch, 1, -1, 1.0);
   EXPECT_TRUE(r.branch.points.back().stable);
+}
+
+// The Brusselator x' = a - (b + 1) x + x^2 y, y' = b x - x^2 y (a = 1, free b): the equilibrium (a, b / a) has its
+// Hopf point at b = 1 + a^2 with omega = a; no closed form for the orbit, so the switched branch is checked against
+// a long simulation by an independent integrator (classical RK4).
+class Brusselator final : public AutonomousSystem {
+ public:
+  Eigen::Index dimension() const override { return 2; }
+  void rhs(std::span<const double> x, double b, std::span<double> f) const override {
+    f[0] = 1 - (b + 1) * x[0] + x[0] * x[0] * x[1];
+    f[1] = b * x[0] - x[0] * x[0] * x[1];
+  }
+  void jacobian(std::span<const double> x, double b, Eigen::MatrixXd& J) const override {
+    J.resize(2, 2);
+    J << -(b + 1) + 2 * x[0] * x[1], x[0] * x[0], b - 2 * x[0] * x[1], -x[0] * x[0];
+  }
+  void parameter_derivative(std::span<const double> x, double, std::span<double> fp) const override {
+    fp[0] = -x[0];
+    fp[1] = x[0];
+  }
+};
+
+// The attractor at b by RK4 (dt = 1e-3) from next to the equilibrium, relaxed for t = 400: the period between the
+// last two maxima of component k and the maximum and minimum of that component (parabolic interpolation).
+struct Simulated {
+  double period = 0, max = -1e300, min = 1e300;
+};
+Simulated simulate_brusselator(double b, int k) {
+  const Brusselator sys;
+  const double dt = 1e-3;
+  std::array<double, 2> x = {1.1, b - 0.1};
+  auto f = [&](const std::array<double, 2>& y) {
+    std::array<double, 2> d{};
+    sys.rhs(y, b, d);
+    return d;
+  };
+  std::vector<double> peaks;
+  double prev2 = 0, prev1 = 0;
+  Simulated s;
+  for (int i = 0; i < 460000; ++i) {
+    const auto k1 = f(x);
+    const auto k2 = f({x[0] + dt / 2 * k1[0], x[1] + dt / 2 * k1[1]});
+    const auto k3 = f({x[0] + dt / 2 * k2[0], x[1] + dt / 2 * k2[1]});
+    const auto k4 = f({x[0] + dt * k3[0], x[1] + dt * k3[1]});
+    for (int c = 0; c < 2; ++c) x[c] += dt / 6 * (k1[c] + 2 * k2[c] + 2 * k3[c] + k4[c]);
+    const double v = x[static_cast<std::size_t>(k)];
+    // prev1 (the state after step i - 1) is an extremum of the samples: the parabola through (prev2, prev1, v)
+    // gives its time and value.
+    if (i >= 400000 && ((prev1 > prev2 && prev1 >= v) || (prev1 < prev2 && prev1 <= v))) {
+      const double den = prev2 - 2 * prev1 + v;
+      const double shift = 0.5 * (prev2 - v) / den, value = prev1 - 0.25 * (prev2 - v) * shift;
+      if (prev1 > prev2) {
+        s.max = std::max(s.max, value);
+        peaks.push_back((i + shift) * dt);
+      } else {
+        s.min = std::min(s.min, value);
+      }
+    }
+    prev2 = prev1;
+    prev1 = v;
+  }
+  s.period = peaks.size() >= 2 ? peaks.back() - peaks[peaks.size() - 2] : 0;
+  return s;
+}
+
+TEST(HopfSwitch, BrusselatorAgainstSimulation) {
+  const Brusselator sys;
+  const AutonomousEquilibriumProblem eq(sys);
+  ContinuationOptions o;
+  o.p_min = 1.5;
+  o.p_max = 2.5;
+  o.max_step = 0.1;
+  const Branch e = continue_branch(eq, Eigen::Vector2d(1, 1.5), 1.5, o);
+  const SpecialPoint* hb = find_special_point(e, SpecialPointType::HB);
+  ASSERT_NE(hb, nullptr);
+  EXPECT_NEAR(hb->p, 2, 1e-9);                  // b = 1 + a^2
+  EXPECT_NEAR(hb->eigenvalue.imag(), 1, 1e-9);  // omega = a
+  const OrbitSwitchResult r = switch_at(eq, e, *hb, switch_options(1.5, 2.3));
+  ASSERT_TRUE(r.switched) << r.message;
+  const BranchPoint& last = r.branch.points.back();
+  ASSERT_NEAR(last.p, 2.3, 1e-12);
+  EXPECT_TRUE(last.stable);
+  const auto* orbit = dynamic_cast<const AutonomousOrbitProblem*>(r.problem.get());
+  ASSERT_NE(orbit, nullptr);
+  const int k = orbit->phase_component();
+  const Simulated s = simulate_brusselator(2.3, k);
+  // RK4 at dt = 1e-3 is accurate to ~1e-11 per unit time here, the parabolic interpolation of an extremum to
+  // ~dt^3 times the third derivative (~1e-8): 1e-6 leaves room for both. x_0 is an extremum of component k.
+  EXPECT_NEAR(AutonomousOrbitProblem::period(last.x), s.period, 1e-6);
+  const double xk = last.x[k];
+  EXPECT_NEAR(std::min(std::abs(xk - s.max), std::abs(xk - s.min)), 0, 1e-6) << xk << " " << s.max << " " << s.min;
+  EXPECT_GT(s.max - s.min, 0.1);  // a grown orbit, not the equilibrium
 }
 
 // Two pairs crossing at once (omega 1 and 2): refused, naming both pairs.
