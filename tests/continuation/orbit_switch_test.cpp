@@ -13,6 +13,7 @@
 #include "continuation/modal_fixtures.hpp"
 #include "continuation/scene_spec_fixture.hpp"
 #include "rbcstab/continuation/autonomous_orbit.hpp"
+#include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/continuation/orbit.hpp"
@@ -122,6 +123,16 @@ TEST(HopfSwitch, SupercriticalNormalForm) {
   EXPECT_NEAR(r.branch.points.back().p, 0.5, 1e-12);  // away from the HB: p increases (r^2 = p)
   expect_closed_form(sys, r.branch, -1, 0, 1.3);
   for (const BranchPoint& pt : r.branch.points) EXPECT_TRUE(pt.stable);
+  // The period is a column of the branch's JSON, after the parameter.
+  MeasuredBranch m;
+  m.branch = r.branch;
+  m.spectrum_kind = StabilityKind::multipliers;
+  m.point_measures.assign(r.branch.points.size(), {});
+  m.special_measures.assign(r.branch.special_points.size(), {});
+  const nlohmann::json j = to_json(m);
+  ASSERT_EQ(r.branch.parameter_names, (std::vector<std::string>{"p", "T"}));
+  EXPECT_NEAR(j["branch"][1]["T"].get<double>(), kTwoPi / 1.3, 1e-8);
+  EXPECT_EQ(j["branch"][1]["p"].get<double>(), r.branch.points[1].p);
 }
 
 TEST(HopfSwitch, SubcriticalNormalFormInSkewedCoordinates) {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 #include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/forced_system.hpp"
@@ -61,6 +62,9 @@ class AutonomousOrbitProblem final : public ContinuationProblem {
   // integration error the trivial eigenvector shows; at least rtol). refine is not implemented (no-op).
   CertifiedSpectrum certified_spectrum(const Eigen::VectorXd& X, double p, bool refine) const override;
   std::string parameter_name() const override { return sys_.parameter_name(); }
+  // Every point reports its period T after p: a column of the branch's JSON (to_json of a MeasuredBranch).
+  std::vector<std::string> parameter_names() const override { return {sys_.parameter_name(), "T"}; }
+  std::vector<double> parameter_values(const Eigen::VectorXd& X, double p) const override { return {p, period(X)}; }
 
   int segments() const { return N_; }
   int phase_component() const { return k_; }
