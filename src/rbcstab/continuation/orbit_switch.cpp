@@ -151,7 +151,7 @@ OrbitSwitchResult switch_at_period_doubling(const PeriodicOrbitProblem& problem,
   v /= v.norm();
   const Eigen::Index m = problem.dimension();
   const Eigen::VectorXd V = problem.variation(pd.x, pd.p, v);
-  OrbitOptions o = options.orbit;
+  OrbitOptions o = problem.options();  // the parent's tolerances, on the same segment times
   o.segments = 2 * problem.segments();
   auto doubled = std::make_unique<PeriodicOrbitProblem>(problem.system(), o, 2 * problem.periods());
   Eigen::VectorXd X0(2 * m), delta(2 * m);

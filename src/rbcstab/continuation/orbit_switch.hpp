@@ -24,7 +24,7 @@ struct OrbitSwitchOptions {
   double amplitude = 1e-3;           // eps: the predictor's amplitude in state units (max over the orbit ~ eps)
   double critical_tol = 1e-6;        // |Re lambda| (|mu| - 1) below this, relative to max(1, |lambda|): on the boundary
   int max_newton = 20;               // corrector iterations for the first point
-  OrbitOptions orbit;                // the new orbit problem's (PD: segments are doubled from the parent's)
+  OrbitOptions orbit;                // HB: the orbit problem's (PD: the parent's, twice its segments)
   ContinuationOptions continuation;  // for the new branch (its direction is chosen away from the point)
   void validate() const;             // throws InvalidArgument naming the field
 };
