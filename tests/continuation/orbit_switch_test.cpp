@@ -397,6 +397,16 @@ TEST(PeriodDoublingSwitch, DoubledOrbitInClosedForm) {
   EXPECT_LT(F.norm(), 1e-9);
   pr.residual(pr.shooting_guess(ForcedPitchFlip::xp(0) + Eigen::Vector2d(std::sqrt(p), 0), p), p, F);
   EXPECT_GT(F.norm(), 0.1);  // not 2 pi-periodic: the single-period problem rejects it
+  // A point of the branch that is not a PD (p = -0.2: multipliers -e^{-0.4 pi}, -e^{-2 pi}) is refused, and so is a
+  // type the orbit switch does not handle.
+  SpecialPoint not_pd = *pd;
+  not_pd.x = b.points.front().x;
+  not_pd.p = b.points.front().p;
+  const OrbitSwitchResult refused = switch_at(pr, b, not_pd, so);
+  EXPECT_FALSE(refused.switched);
+  EXPECT_NE(refused.message.find("not a simple period doubling"), std::string::npos) << refused.message;
+  not_pd.type = SpecialPointType::LPC;
+  EXPECT_NE(switch_at(pr, b, not_pd, so).message.find("no orbit switch at a LPC"), std::string::npos);
 }
 
 TEST(PeriodDoublingSwitch, RejectsBadPeriods) {
