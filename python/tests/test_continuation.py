@@ -339,6 +339,14 @@ def test_the_switched_branch_has_sigma_pinned_at_sigma4c(full_branch, tmp_path, 
     assert without_timing(s.to_dict()) == without_timing(expected)
 
 
+def test_switch_at_an_hb_of_the_onset_is_refused_naming_the_pairs(full_branch):
+    # The l = 4 onset: a BP and four Hopf pairs at once; the orbit switch refuses a multiple Hopf point.
+    hb = full_branch.labels("HB")
+    assert len(hb) == 4
+    with pytest.raises(ValueError, match="multiple Hopf point"):
+        full_branch.switch(hb[0])
+
+
 def test_switch_at_bp_continues_the_switched_branch_in_the_same_run(rest_scene):
     b = rbcstab.continuation(rest_scene, **dict(FULL_C, min=0.014), switch_at_bp=True)
     assert b.switched is not None and len(b.switched) > 2

@@ -212,6 +212,12 @@ elseif(CASE STREQUAL "restart_bad_input")
   expect_bad_input("label = 99 is not a label of this run: its labels are 1 to" continue --restart ${WORK}/m.json --label 99)
   expect_bad_input("switch_at = 1 is a point of type EP, not a BP" continue --restart ${WORK}/m.json --switch-at 1)
   expect_bad_input("switch_at = 'BP' matches 3 labelled points" continue --restart ${WORK}/m.json --switch-at BP)
+  # An HB of the full model's l >= 3 onset (a BP and l Hopf pairs at once) is refused by the orbit switch, naming the
+  # eigenvalues on the axis and the labels there with their modes.
+  run_ok(full continue --kind full --parameter C --min 0.02 --max 0.08 --direction backward --lambda 1 --B 1 --C 0.08
+         --Delta 1 --Delta0 0.01 --L 4 --save ${WORK}/f.json)
+  expect_bad_input("is an HB: a multiple Hopf point at C = " continue --restart ${WORK}/f.json --switch-at HB:l=3:m=1)
+  expect_bad_input("labels there: BP (l = 3, m = 0)" continue --restart ${WORK}/f.json --switch-at HB:l=3:m=2)
   expect_bad_input("label = 'BP:l=9' matches no labelled point of this run: its BP labels are"
                    continue --restart ${WORK}/m.json --label BP:l=9)
   expect_bad_input("label = '0' must be a label, an integer in [1, 1000000000], or TYPE[:l=L][:m=M]"

@@ -18,6 +18,29 @@ void BranchSwitchOptions::validate() const {
   continuation.validate();
 }
 
+bool correct_on_hyperplane(const ContinuationProblem& problem, const Eigen::VectorXd& X_base, const Eigen::VectorXd& d,
+                           double h, double tol, int max_newton, Eigen::VectorXd& X) {
+  const Eigen::Index n = problem.dimension(), N = n + 1;
+  X = X_base + h * d;
+  Eigen::MatrixXd J, A(N, N);
+  Eigen::VectorXd F(n), Fp(n), R(N);
+  for (int it = 0; it < max_newton; ++it) {
+    const Eigen::VectorXd x = X.head(n);
+    problem.residual(x, X[n], F);
+    problem.jacobian(x, X[n], J);
+    problem.parameter_derivative(x, X[n], Fp);
+    A.topLeftCorner(n, n) = J;
+    A.topRightCorner(n, 1) = Fp;
+    A.bottomRows(1) = d.transpose();
+    R << F, d.dot(X - X_base) - h;
+    const Eigen::VectorXd dX = A.partialPivLu().solve(-R);
+    if (!dX.allFinite()) return false;
+    X += dX;
+    if (dX.lpNorm<Eigen::Infinity>() <= tol * (1 + X.lpNorm<Eigen::Infinity>())) return true;
+  }
+  return false;
+}
+
 BranchSwitchResult switch_branch(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& bp,
                                  const BranchSwitchOptions& options) {
   options.validate();
@@ -74,25 +97,8 @@ BranchSwitchResult switch_branch(const ContinuationProblem& problem, const Branc
 
   // Corrector: Newton on [F(X); d.(X - X_bp) - h] from the predictor X_bp + h d.
   const double h = options.amplitude;
-  Eigen::VectorXd X = Xbp + h * d;
-  const double tol = options.continuation.newton_tol;
-  bool converged = false;
-  Eigen::VectorXd F(n), R(N);
-  for (int it = 0; it < options.max_newton && !converged; ++it) {
-    const Eigen::VectorXd x = X.head(n);
-    problem.residual(x, X[n], F);
-    problem.jacobian(x, X[n], J);
-    problem.parameter_derivative(x, X[n], Fp);
-    A.topLeftCorner(n, n) = J;
-    A.topRightCorner(n, 1) = Fp;
-    A.bottomRows(1) = d.transpose();
-    R << F, d.dot(X - Xbp) - h;
-    const Eigen::VectorXd dX = A.partialPivLu().solve(-R);
-    if (!dX.allFinite()) break;
-    X += dX;
-    converged = dX.lpNorm<Eigen::Infinity>() <= tol * (1 + X.lpNorm<Eigen::Infinity>());
-  }
-  if (!converged) {
+  Eigen::VectorXd X;
+  if (!correct_on_hyperplane(problem, Xbp, d, h, options.continuation.newton_tol, options.max_newton, X)) {
     out.message = "the corrector did not converge off the BP (try another amplitude)";
     return out;
   }

@@ -27,6 +27,11 @@ struct BranchSwitchResult {
   Branch branch;                            // the bifurcating branch, starting next to the BP
 };
 
+// Newton on [F(X); d.(X - X_base) - h] (X = (x, p)) from the predictor X_base + h d, to max|dX| <= tol (1 + |X|):
+// the first point of a branch that leaves X_base along d (BP, HB and PD switching). False: no convergence.
+bool correct_on_hyperplane(const ContinuationProblem& problem, const Eigen::VectorXd& X_base, const Eigen::VectorXd& d,
+                           double h, double tol, int max_newton, Eigen::VectorXd& X);
+
 // bp must be a special point of type BP of `branch` (continued with `problem`).
 BranchSwitchResult switch_branch(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& bp,
                                  const BranchSwitchOptions& options = {});

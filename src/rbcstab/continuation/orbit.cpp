@@ -14,6 +14,7 @@
 #include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/detail/forced_flow.hpp"
+#include "rbcstab/continuation/detail/shooting.hpp"
 #include "rbcstab/continuation/detail/sphere_constraint.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
@@ -22,12 +23,9 @@
 
 namespace rbcstab {
 
-namespace {
+namespace detail {
 
-using detail::ForcedFlow;
-using detail::winding_angle;
-
-IntegratorOptions integrator_options(const OrbitOptions& o) {
+IntegratorOptions orbit_integrator_options(const OrbitOptions& o) {
   IntegratorOptions io;
   io.stepper = Stepper::rk8pd;
   io.rtol = o.rtol;
@@ -35,6 +33,54 @@ IntegratorOptions integrator_options(const OrbitOptions& o) {
   io.poll = o.poll;
   return io;
 }
+
+std::size_t shoot_segments(const ForcedSystem& sys, const Eigen::VectorXd& X, double p, int N, double length,
+                           const IntegratorOptions& io, ShootingFlows& out) {
+  const Eigen::Index n_ = sys.dimension();
+  const auto n = static_cast<std::size_t>(n_);
+  const ForcedFlow aug(sys, p, ForcedFlow::Mode::variational);
+  out.ok = true;
+  out.phi.assign(static_cast<std::size_t>(N), Eigen::VectorXd());
+  out.s.assign(static_cast<std::size_t>(N), Eigen::VectorXd());
+  out.M.assign(static_cast<std::size_t>(N), Eigen::MatrixXd());
+  std::vector<double> y0(n + n * n + n, 0.0);
+  std::size_t count = 0;
+  for (int j = 0; j < N; ++j) {
+    const double t0 = length * j / N, t1 = length * (j + 1) / N;
+    std::fill(y0.begin(), y0.end(), 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+      y0[i] = X[static_cast<Eigen::Index>(static_cast<std::size_t>(j) * n + i)];
+      y0[n + i * n + i] = 1;  // Phi(t0) = I
+    }
+    const double grid[1] = {t1};
+    const IntegrationResult r = integrate(aug, y0, t0, grid, io, {});
+    ++count;
+    const auto js = static_cast<std::size_t>(j);
+    if (r.status != IntegrationStatus::success) {
+      out.ok = false;
+      break;
+    }
+    out.phi[js] = Eigen::Map<const Eigen::VectorXd>(r.y.data(), n_);
+    out.M[js] = Eigen::Map<const Eigen::MatrixXd>(r.y.data() + n, n_, n_);
+    out.s[js] = Eigen::Map<const Eigen::VectorXd>(r.y.data() + n + n * n, n_);
+  }
+  return count;
+}
+
+Eigen::MatrixXd monodromy_product(const ShootingFlows& sh) {
+  Eigen::MatrixXd M = sh.M[0];
+  for (std::size_t j = 1; j < sh.M.size(); ++j) M = sh.M[j] * M;
+  return M;
+}
+
+}  // namespace detail
+
+namespace {
+
+using detail::ForcedFlow;
+using detail::winding_angle;
+
+IntegratorOptions integrator_options(const OrbitOptions& o) { return detail::orbit_integrator_options(o); }
 
 }  // namespace
 
@@ -47,9 +93,15 @@ void OrbitOptions::validate() const {
 
 // ---------------------------------------------------------------- the shooting problem
 
-PeriodicOrbitProblem::PeriodicOrbitProblem(const ForcedSystem& system, const OrbitOptions& options)
-    : sys_(system), o_(options), n_(system.dimension()), N_(options.segments) {
+PeriodicOrbitProblem::PeriodicOrbitProblem(const ForcedSystem& system, const OrbitOptions& options, int periods)
+    : sys_(system),
+      o_(options),
+      n_(system.dimension()),
+      N_(options.segments),
+      periods_(periods),
+      length_(kTwoPi * periods) {
   o_.validate();
+  require(periods >= 1 && periods <= 64, "periods", periods, "an integer in [1, 64]");
   require(n_ >= 2, "dimension", static_cast<double>(n_), ">= 2 (components 0 and 1 are the winding plane)");
 }
 
@@ -58,33 +110,7 @@ const PeriodicOrbitProblem::Shooting& PeriodicOrbitProblem::shoot(const Eigen::V
   cache_.valid = false;
   cache_.X = X;
   cache_.p = p;
-  cache_.ok = true;
-  const auto n = static_cast<std::size_t>(n_);
-  const ForcedFlow aug(sys_, p, ForcedFlow::Mode::variational);
-  const IntegratorOptions io = integrator_options(o_);
-  cache_.phi.assign(static_cast<std::size_t>(N_), Eigen::VectorXd());
-  cache_.s.assign(static_cast<std::size_t>(N_), Eigen::VectorXd());
-  cache_.M.assign(static_cast<std::size_t>(N_), Eigen::MatrixXd());
-  std::vector<double> y0(n + n * n + n, 0.0);
-  for (int j = 0; j < N_; ++j) {
-    const double t0 = kTwoPi * j / N_, t1 = kTwoPi * (j + 1) / N_;
-    std::fill(y0.begin(), y0.end(), 0.0);
-    for (std::size_t i = 0; i < n; ++i) {
-      y0[i] = X[static_cast<Eigen::Index>(static_cast<std::size_t>(j) * n + i)];
-      y0[n + i * n + i] = 1;  // Phi(t0) = I
-    }
-    const double grid[1] = {t1};
-    const IntegrationResult r = integrate(aug, y0, t0, grid, io, {});
-    ++integrations_;
-    const auto js = static_cast<std::size_t>(j);
-    if (r.status != IntegrationStatus::success) {
-      cache_.ok = false;
-      break;
-    }
-    cache_.phi[js] = Eigen::Map<const Eigen::VectorXd>(r.y.data(), n_);
-    cache_.M[js] = Eigen::Map<const Eigen::MatrixXd>(r.y.data() + n, n_, n_);
-    cache_.s[js] = Eigen::Map<const Eigen::VectorXd>(r.y.data() + n + n * n, n_);
-  }
+  integrations_ += detail::shoot_segments(sys_, X, p, N_, length_, integrator_options(o_), cache_);
   cache_.valid = true;
   return cache_;
 }
@@ -158,8 +184,7 @@ Floquet PeriodicOrbitProblem::floquet(const Eigen::VectorXd& X, double p) const 
     fl.multipliers.setConstant(sys_.conserves_norm() ? n_ - 1 : n_, std::numeric_limits<double>::quiet_NaN());
     return fl;
   }
-  fl.monodromy = sh.M[0];
-  for (int j = 1; j < N_; ++j) fl.monodromy = sh.M[static_cast<std::size_t>(j)] * fl.monodromy;
+  fl.monodromy = detail::monodromy_product(sh);
   if (!sys_.conserves_norm()) {
     fl.multipliers = Eigen::EigenSolver<Eigen::MatrixXd>(fl.monodromy, false).eigenvalues();
     return fl;
@@ -170,6 +195,17 @@ Floquet PeriodicOrbitProblem::floquet(const Eigen::VectorXd& X, double p) const 
   fl.multipliers = detail::tangent_spectrum(fl.monodromy, x0);
   fl.trivial = x0.dot(fl.monodromy * x0) / x0.squaredNorm();
   return fl;
+}
+
+Eigen::VectorXd PeriodicOrbitProblem::variation(const Eigen::VectorXd& X, double p, const Eigen::VectorXd& v0) const {
+  require(v0.size() == n_, "v0", static_cast<double>(v0.size()), "a vector of the system's dimension");
+  const Shooting& sh = shoot(X, p);
+  Eigen::VectorXd V = Eigen::VectorXd::Constant(n_ * N_, std::numeric_limits<double>::quiet_NaN());
+  if (!sh.ok) return V;
+  V.head(n_) = v0;
+  for (int j = 1; j < N_; ++j)
+    V.segment(j * n_, n_) = sh.M[static_cast<std::size_t>(j - 1)] * V.segment((j - 1) * n_, n_);
+  return V;
 }
 
 Eigen::VectorXcd PeriodicOrbitProblem::spectrum(const Eigen::VectorXd& X, double p) const {
@@ -187,7 +223,7 @@ CertifiedSpectrum PeriodicOrbitProblem::certified_spectrum(const Eigen::VectorXd
   fine.segments = std::min(2 * N_, 1000);
   fine.rtol = std::max(o_.rtol / 100, 1e-15);
   fine.atol = o_.atol / 100;
-  const PeriodicOrbitProblem refined(sys_, fine);
+  const PeriodicOrbitProblem refined(sys_, fine, periods_);
   const Eigen::VectorXcd mu = refined.spectrum(refined.shooting_guess(X.head(n_), p), p);
   integrations_ += refined.integrations();
   for (Eigen::Index i = 0; i < c.values.size(); ++i) {
@@ -204,7 +240,7 @@ Eigen::VectorXd PeriodicOrbitProblem::shooting_guess(const Eigen::VectorXd& x0, 
   X.head(n_) = x0;
   if (N_ == 1) return X;
   std::vector<double> grid;
-  for (int j = 1; j < N_; ++j) grid.push_back(kTwoPi * j / N_);
+  for (int j = 1; j < N_; ++j) grid.push_back(length_ * j / N_);
   const ForcedFlow plain(sys_, p, ForcedFlow::Mode::plain);
   int k = 1;
   integrate(plain, std::span<const double>(x0.data(), static_cast<std::size_t>(n_)), 0.0, grid, integrator_options(o_),
@@ -231,7 +267,7 @@ OrbitRelaxation PeriodicOrbitProblem::relax(const Eigen::VectorXd& x0, double p,
     // The system is 2 pi-periodic in t: every chunk starts again at t = 0.
     const int k = std::min(chunk, max_periods - r.periods);
     std::vector<double> grid;
-    for (int j = 1; j <= k; ++j) grid.push_back(kTwoPi * j);
+    for (int j = 1; j <= k; ++j) grid.push_back(length_ * j);
     int done = 0;
     const IntegrationResult res = integrate(plain, std::span<const double>(r.x.data(), static_cast<std::size_t>(n_)),
                                             0.0, grid, io, [&](double, std::span<const double> y) {
@@ -257,7 +293,7 @@ OrbitRelaxation PeriodicOrbitProblem::relax(const Eigen::VectorXd& x0, double p,
 OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p, bool extrema) const {
   const auto n = static_cast<std::size_t>(n_);
   const int S = o_.samples_per_segment;
-  const double h = kTwoPi / (N_ * S);
+  const double h = length_ / (N_ * S);
   const ForcedFlow plain(sys_, p, ForcedFlow::Mode::plain);
   const WithQuadratures with_angle(plain, winding_angle());
   const IntegratorOptions io = integrator_options(o_);
@@ -277,12 +313,12 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p, b
     std::vector<double> y0(xj.data(), xj.data() + n_);
     y0.push_back(th);
     std::vector<double> grid;
-    for (int k = 1; k <= S; ++k) grid.push_back(kTwoPi * j / N_ + k * h);
+    for (int k = 1; k <= S; ++k) grid.push_back(length_ * j / N_ + k * h);
     xs.push_back(xj);
     theta.push_back(th);
     int k = 1;
     const IntegrationResult r =
-        integrate(with_angle, y0, kTwoPi * j / N_, grid, io, [&](double, std::span<const double> y) {
+        integrate(with_angle, y0, length_ * j / N_, grid, io, [&](double, std::span<const double> y) {
           if (k < S) {
             xs.emplace_back(Eigen::Map<const Eigen::VectorXd>(y.data(), n_));
             theta.push_back(y[n]);
@@ -296,7 +332,7 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p, b
       xs.resize(static_cast<std::size_t>(j * S + 1));
       theta.resize(static_cast<std::size_t>(j * S + 1));
       k = 1;
-      integrate(plain, std::span<const double>(xj.data(), n), kTwoPi * j / N_, grid, io,
+      integrate(plain, std::span<const double>(xj.data(), n), length_ * j / N_, grid, io,
                 [&](double, std::span<const double> y) {
                   if (k < S) {
                     xs.emplace_back(Eigen::Map<const Eigen::VectorXd>(y.data(), n_));
@@ -390,7 +426,7 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p, b
     }
   };
   refine(k_rmin, 1.0, g_r, [&](double t, const Eigen::VectorXd& x, double) {
-    if (r_of(x) < o.r_min) o.r_min = r_of(x), o.t_r_min = std::fmod(t + kTwoPi, kTwoPi);
+    if (r_of(x) < o.r_min) o.r_min = r_of(x), o.t_r_min = std::fmod(t + length_, length_);
   });
   if (extrema) {
     refine(k_rmax, -1.0, g_r, [&](double, const Eigen::VectorXd& x, double) { o.r_max = std::max(o.r_max, r_of(x)); });
@@ -411,11 +447,11 @@ OrbitSummary PeriodicOrbitProblem::summary(const Eigen::VectorXd& X, double p, b
 
 OrbitPoint PeriodicOrbitProblem::point_at(const Eigen::VectorXd& X, double p, double t) const {
   const auto n = static_cast<std::size_t>(n_);
-  double tw = std::fmod(t, kTwoPi);
-  if (tw < 0) tw += kTwoPi;
+  double tw = std::fmod(t, length_);
+  if (tw < 0) tw += length_;
   OrbitPoint o;
-  o.segment = std::min(N_ - 1, static_cast<int>(std::floor(tw * N_ / kTwoPi)));
-  const double tj = kTwoPi * o.segment / N_;
+  o.segment = std::min(N_ - 1, static_cast<int>(std::floor(tw * N_ / length_)));
+  const double tj = length_ * o.segment / N_;
   std::vector<double> y(n + n * n + n, 0.0);  // (x, Phi = I, s = 0) at t_j
   for (std::size_t i = 0; i < n; ++i) {
     y[i] = X[static_cast<Eigen::Index>(static_cast<std::size_t>(o.segment) * n + i)];

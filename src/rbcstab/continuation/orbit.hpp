@@ -64,8 +64,8 @@ inline constexpr std::string_view kTransitionEventName = "swing_tumble";
 struct OrbitSummary {
   double r0 = 0, Psi0 = 0;          // at t = 0 (Psi0 in (-pi, pi])
   double r_min = 0, r_max = 0;      // the solution's (refined between samples to the integration tolerance)
-  double t_r_min = 0;               // the time of r_min in [0, 2 pi)
-  double Psi_min = 0, Psi_max = 0;  // of the continuous Psi(t) started at Psi0 over [0, 2 pi], refined so
+  double t_r_min = 0;               // the time of r_min in [0, L) (L = 2 pi k, the orbit's period)
+  double Psi_min = 0, Psi_max = 0;  // of the continuous Psi(t) started at Psi0 over [0, L], refined so
   int winding = 0;                  // turns of z around 0 per period (counter-clockwise); Psi advances -2 pi winding
   OrbitKind kind = OrbitKind::swinging;
   double transition_function = 0;  // +r_min when swinging, -r_min when tumbling: continuous, 0 at the transition
@@ -85,21 +85,30 @@ struct OrbitRelaxation {
 // The orbit's state at a time t and its first derivatives (PeriodicOrbitProblem::point_at).
 struct OrbitPoint {
   bool ok = false;     // false: the integration failed (the other fields are then empty)
-  int segment = 0;     // j: t (mod 2 pi) lies in [t_j, t_{j+1}), the state is phi(t, t_j, x_j)
+  int segment = 0;     // j: t (mod L) lies in [t_j, t_{j+1}), the state is phi(t, t_j, x_j)
   Eigen::VectorXd x;   // the state
   Eigen::MatrixXd dx;  // d x / d x_j (the segment's variational matrix up to t)
   Eigen::VectorXd dt;  // d x / d t = f(t, x, p)
   Eigen::VectorXd dp;  // d x / d p (the parameter sensitivity from t_j)
 };
 
-// F(X, p) = 0 for X = (x_0, ..., x_{N-1}), x_j the state at t_j = 2 pi j / N:
+// The segment flows of a multiple shooting (detail/shooting.hpp): phi_j(x_j) at the segment's end, its
+// variational matrix and parameter sensitivity; ok = false after a failed integration.
+struct ShootingFlows {
+  bool ok = false;
+  std::vector<Eigen::VectorXd> phi, s;  // phi_j(x_j), d phi_j / dp
+  std::vector<Eigen::MatrixXd> M;       // d phi_j / d x_j
+};
+
+// F(X, p) = 0 for X = (x_0, ..., x_{N-1}), x_j the state at t_j = L j / N (L = 2 pi k):
 //   E_j = phi(t_{j+1}, t_j, x_j) - x_{j+1}  (x_N = x_0), and for conserves_norm systems
 //   E_0 = |x_0|^2 phi(t_1, t_0, x_0) - x_1, which forces |x_0| = 1 at a zero and makes the Jacobian
 //   regular where the trivial multiplier is simple (docs/continuation.md). The system must outlive
 //   the problem.
 class PeriodicOrbitProblem final : public ContinuationProblem {
  public:
-  PeriodicOrbitProblem(const ForcedSystem& system, const OrbitOptions& options = {});
+  // periods k >= 1: orbits of period 2 pi k (the doubled orbit past a PD: k = 2); t_j = 2 pi k j / N.
+  PeriodicOrbitProblem(const ForcedSystem& system, const OrbitOptions& options = {}, int periods = 1);
   Eigen::Index dimension() const override { return n_ * N_; }
   void residual(const Eigen::VectorXd& X, double p, Eigen::VectorXd& F) const override;
   void jacobian(const Eigen::VectorXd& X, double p, Eigen::MatrixXd& J) const override;
@@ -114,11 +123,16 @@ class PeriodicOrbitProblem final : public ContinuationProblem {
   std::string parameter_name() const override { return sys_.parameter_name(); }
 
   int segments() const { return N_; }
+  int periods() const { return periods_; }
+  const ForcedSystem& system() const { return sys_; }
+  // The linearised solution through v0 at t = 0, at the segments' starts (v_0 = v0, v_{j+1} = M_j v_j), as the
+  // unknowns' layout; the PD switch's direction (orbit_switch.hpp).
+  Eigen::VectorXd variation(const Eigen::VectorXd& X, double p, const Eigen::VectorXd& v0) const;
   const OrbitOptions& options() const { return o_; }
   // The shooting unknowns of the trajectory through x0 at t = 0 (a start for Newton).
   Eigen::VectorXd shooting_guess(const Eigen::VectorXd& x0, double p) const;
   Eigen::VectorXd state_at_zero(const Eigen::VectorXd& X) const { return X.head(n_); }
-  // Relaxes x' = f(t, x, p) from x0 (at t = 0 mod 2 pi) in chunks of `chunk` periods until the
+  // Relaxes x' = f(t, x, p) from x0 (at t = 0 mod 2 pi) in chunks of `chunk` orbit periods L until the
   // periodicity defect of the last period is below tol or max_periods have run (the shooting's
   // integrator options). Near an attracting orbit with leading multiplier rho the defect shrinks by
   // |rho| per period and the distance to the orbit is ~ defect / (1 - |rho|).
@@ -130,7 +144,7 @@ class PeriodicOrbitProblem final : public ContinuationProblem {
   // The swinging <-> tumbling transition as a UZ event: summary().transition_function. Located along a
   // branch; its curve in two parameters uses the smooth form OrbitPassageEvent (event_curve.hpp).
   UserEvent transition_event(const std::string& name = std::string(kTransitionEventName)) const;
-  // The state at time t (any real; taken mod 2 pi) integrated from its segment's start, with its
+  // The state at time t (any real; taken mod L) integrated from its segment's start, with its
   // derivatives by that start, by t and by p: smooth in (X, t, p) within a segment, and continuous
   // across segment ends at a solution (where the segments join).
   OrbitPoint point_at(const Eigen::VectorXd& X, double p, double t) const;
@@ -143,12 +157,10 @@ class PeriodicOrbitProblem final : public ContinuationProblem {
   void clear_cache() const { cache_.valid = false; }
 
  private:
-  struct Shooting {
+  struct Shooting : ShootingFlows {
     Eigen::VectorXd X;
     double p = 0;
-    bool valid = false, ok = false;
-    std::vector<Eigen::VectorXd> phi, s;  // phi_j(x_j), d phi_j / dp
-    std::vector<Eigen::MatrixXd> M;       // d phi_j / d x_j
+    bool valid = false;
   };
   const Shooting& shoot(const Eigen::VectorXd& X, double p) const;
   const Shooting& cyclic_jacobian(const Eigen::VectorXd& X, double p, double closing_sign, Eigen::MatrixXd& J) const;
@@ -156,6 +168,8 @@ class PeriodicOrbitProblem final : public ContinuationProblem {
   OrbitOptions o_;
   Eigen::Index n_;
   int N_;
+  int periods_;
+  double length_;  // 2 pi periods_
   mutable Shooting cache_;
   mutable std::size_t integrations_ = 0;
 };

@@ -16,6 +16,7 @@
 #include "rbcstab/continuation/detail/scene_curve.hpp"
 #include "rbcstab/continuation/detail/scene_problem.hpp"
 #include "rbcstab/continuation/detail/scene_switch.hpp"
+#include "rbcstab/continuation/orbit_switch.hpp"
 #include "rbcstab/continuation/tunable_options.hpp"
 #include "rbcstab/core/error.hpp"
 
@@ -141,6 +142,14 @@ SceneBranch switch_at_label(const ContinuationRun& run, int label, const Restart
                                            " curve, not a BP of a one-parameter branch: restart a branch from it "
                                            "(--label " +
                                            std::to_string(label) + ") and switch at that branch's BP");
+  if (lp.type == to_string(SpecialPointType::HB) && lp.special) {
+    // The orbit switch's own verdict: a multiple Hopf point (the l >= 3 onset) named with its pairs, or not
+    // supported for this problem kind (orbit_switch.hpp).
+    const MeasuredBranch& m = *branch_of(run, lp.branch);
+    const OrbitSwitchResult o =
+        switch_at(make_problem(ctx.spec, ctx.problem_scene)->problem(), m.branch, m.branch.special_points[lp.index]);
+    throw InvalidArgument("switch_at", what + " is an HB: " + o.message);
+  }
   if (lp.type != to_string(SpecialPointType::BP)) {
     std::string bps;
     for (const LabelledPoint& p : labelled_points(run))

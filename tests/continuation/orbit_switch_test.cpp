@@ -1,0 +1,442 @@
+// Orbit branches started at HB and PD points (orbit_switch.hpp) against closed forms: the Hopf normal form (super-
+// and subcritical, with a quintic term for a fold of cycles, and in non-normal coordinates), a forced system whose
+// doubled orbit is known, and the refusals of multiple points.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <string>
+#include <vector>
+
+#include "continuation/modal_fixtures.hpp"
+#include "continuation/scene_spec_fixture.hpp"
+#include "rbcstab/continuation/autonomous_orbit.hpp"
+#include "rbcstab/continuation/branch_io.hpp"
+#include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/full_equilibrium.hpp"
+#include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/continuation/orbit_switch.hpp"
+#include "rbcstab/continuation/scene_continuation.hpp"
+#include "rbcstab/core/constants.hpp"
+#include "rbcstab/core/error.hpp"
+
+namespace rbcstab {
+namespace {
+
+// u' = a(|u|^2) u + omega R u with a(rho) = p + s rho + c rho^2 (R the quarter turn), z' = -z (dim 3), seen in the
+// coordinates y = A x. Orbits: |u|^2 = rho with a(rho) = 0, period 2 pi / omega, z = 0; the radial multiplier is
+// e^{2 rho a'(rho) T}, the z one e^{-T}.
+class HopfNormalForm final : public AutonomousSystem {
+ public:
+  HopfNormalForm(double s, double c, double omega, Eigen::MatrixXd A)
+      : s_(s), c_(c), w_(omega), A_(std::move(A)), Ainv_(A_.inverse()) {}
+  Eigen::Index dimension() const override { return A_.rows(); }
+  Eigen::VectorXd x_of(const Eigen::VectorXd& y) const { return Ainv_ * y; }
+  void rhs(std::span<const double> y, double p, std::span<double> f) const override {
+    const Eigen::VectorXd x = x_of(Eigen::Map<const Eigen::VectorXd>(y.data(), dimension()));
+    Eigen::Map<Eigen::VectorXd>(f.data(), dimension()) = A_ * fx(x, p).head(dimension());
+  }
+  void jacobian(std::span<const double> y, double p, Eigen::MatrixXd& J) const override {
+    const Eigen::VectorXd x = x_of(Eigen::Map<const Eigen::VectorXd>(y.data(), dimension()));
+    const double rho = x.head(2).squaredNorm(), a = p + s_ * rho + c_ * rho * rho, da = s_ + 2 * c_ * rho;
+    Eigen::MatrixXd Jx = Eigen::MatrixXd::Zero(dimension(), dimension());
+    Jx.topLeftCorner(2, 2) << a, -w_, w_, a;
+    Jx.topLeftCorner(2, 2) += 2 * da * x.head(2) * x.head(2).transpose();
+    if (dimension() == 3) Jx(2, 2) = -1;
+    J = A_ * Jx * Ainv_;
+  }
+  void parameter_derivative(std::span<const double> y, double, std::span<double> fp) const override {
+    Eigen::VectorXd x = x_of(Eigen::Map<const Eigen::VectorXd>(y.data(), dimension()));
+    if (dimension() == 3) x[2] = 0;
+    Eigen::Map<Eigen::VectorXd>(fp.data(), dimension()) = A_ * x;
+  }
+  double a_prime(double rho) const { return s_ + 2 * c_ * rho; }
+
+ private:
+  // In fixed size (z = 0 in dimension 2): the dynamic-size version trips GCC's -Wnull-dereference.
+  Eigen::Vector3d fx(const Eigen::VectorXd& xd, double p) const {
+    Eigen::Vector3d x = Eigen::Vector3d::Zero();
+    x.head(xd.size()) = xd;
+    const double rho = x.head<2>().squaredNorm(), a = p + s_ * rho + c_ * rho * rho;
+    return {a * x[0] - w_ * x[1], w_ * x[0] + a * x[1], -x[2]};
+  }
+  double s_, c_, w_;
+  Eigen::MatrixXd A_, Ainv_;
+};
+
+// The equilibrium branch x = 0 over p in [-0.3, 0.3] and its HB at p = 0.
+Branch equilibrium_branch(const AutonomousEquilibriumProblem& eq) {
+  ContinuationOptions o;
+  o.p_min = -0.3;
+  o.p_max = 0.3;
+  o.max_step = 0.1;
+  return continue_branch(eq, Eigen::VectorXd::Zero(eq.dimension()), -0.3, o);
+}
+
+OrbitSwitchOptions switch_options(double p_lo, double p_hi) {
+  OrbitSwitchOptions so;
+  so.orbit.segments = 4;
+  so.continuation.p_min = p_lo;
+  so.continuation.p_max = p_hi;
+  so.continuation.max_step = 0.1;
+  so.continuation.max_points = 40;
+  return so;
+}
+
+// Every point of an orbit branch of sys against the closed form: a(|u_0|^2) = 0 (with z_0 = 0), T = 2 pi / omega,
+// the multipliers e^{2 rho a' T} (and e^{-T}). Tolerances: the shooting integrates at rtol 1e-12 and Newton stops
+// at 1e-12, so the orbit is exact to ~1e-11 per period; 1e-8 leaves room for the O(1) amplification in A.
+void expect_closed_form(const HopfNormalForm& sys, const Branch& b, double s, double c, double omega) {
+  ASSERT_GE(b.points.size(), 5u) << b.message;
+  const double T = kTwoPi / omega;
+  for (const BranchPoint& pt : b.points) {
+    const Eigen::VectorXd x0 = sys.x_of(pt.x.head(sys.dimension()));
+    const double rho = x0.head(2).squaredNorm();
+    EXPECT_NEAR(pt.p + s * rho + c * rho * rho, 0, 1e-8) << pt.p;
+    if (sys.dimension() == 3) {
+      EXPECT_NEAR(x0[2], 0, 1e-8);
+    }
+    EXPECT_NEAR(AutonomousOrbitProblem::period(pt.x), T, 1e-8);
+    ASSERT_EQ(pt.spectrum.size(), sys.dimension() - 1);
+    std::vector<double> mu, ex = {std::exp(2 * rho * sys.a_prime(rho) * T)};
+    for (const auto& m : pt.spectrum) mu.push_back(m.real());
+    if (sys.dimension() == 3) ex.push_back(std::exp(-T));
+    std::sort(mu.begin(), mu.end());
+    std::sort(ex.begin(), ex.end());
+    for (std::size_t i = 0; i < mu.size(); ++i) EXPECT_NEAR(mu[i], ex[i], 1e-8 * std::max(1.0, ex[i])) << pt.p;
+  }
+}
+
+TEST(HopfSwitch, SupercriticalNormalForm) {
+  const HopfNormalForm sys(-1, 0, 1.3, Eigen::MatrixXd::Identity(2, 2));
+  const AutonomousEquilibriumProblem eq(sys);
+  const Branch e = equilibrium_branch(eq);
+  const SpecialPoint* hb = find_special_point(e, SpecialPointType::HB);
+  ASSERT_NE(hb, nullptr);
+  EXPECT_NEAR(hb->p, 0, 1e-10);
+  const OrbitSwitchResult r = switch_at(eq, e, *hb, switch_options(-1, 0.5));
+  ASSERT_TRUE(r.switched) << r.message;
+  EXPECT_NEAR(r.period, kTwoPi / 1.3, 1e-12);
+  EXPECT_EQ(r.branch.status, ContinuationStatus::completed) << r.branch.message;
+  EXPECT_NEAR(r.branch.points.back().p, 0.5, 1e-12);  // away from the HB: p increases (r^2 = p)
+  expect_closed_form(sys, r.branch, -1, 0, 1.3);
+  for (const BranchPoint& pt : r.branch.points) EXPECT_TRUE(pt.stable);
+  // The period is a column of the branch's JSON, after the parameter.
+  MeasuredBranch m;
+  m.branch = r.branch;
+  m.spectrum_kind = StabilityKind::multipliers;
+  m.point_measures.assign(r.branch.points.size(), {});
+  m.special_measures.assign(r.branch.special_points.size(), {});
+  const nlohmann::json j = to_json(m);
+  ASSERT_EQ(r.branch.parameter_names, (std::vector<std::string>{"p", "T"}));
+  EXPECT_NEAR(j["branch"][1]["T"].get<double>(), kTwoPi / 1.3, 1e-8);
+  EXPECT_EQ(j["branch"][1]["p"].get<double>(), r.branch.points[1].p);
+}
+
+TEST(HopfSwitch, SubcriticalNormalFormInSkewedCoordinates) {
+  Eigen::MatrixXd A(3, 3);
+  A << 1, 0.5, 0.2, 0.3, 1, -0.4, 0.1, 0.2, 2;
+  const HopfNormalForm sys(1, 0, 0.7, A);
+  const AutonomousEquilibriumProblem eq(sys);
+  const Branch e = equilibrium_branch(eq);
+  const SpecialPoint* hb = find_special_point(e, SpecialPointType::HB);
+  ASSERT_NE(hb, nullptr);
+  const OrbitSwitchResult r = switch_at(eq, e, *hb, switch_options(-0.5, 1));
+  ASSERT_TRUE(r.switched) << r.message;
+  EXPECT_NEAR(r.branch.points.back().p, -0.5, 1e-12);  // the unstable orbits lie below the HB (r^2 = -p)
+  expect_closed_form(sys, r.branch, 1, 0, 0.7);
+  for (const BranchPoint& pt : r.branch.points) EXPECT_EQ(pt.n_unstable, 1);
+}
+
+// a(rho) = p + rho - rho^2: the subcritical orbits turn at the fold of cycles p = -1/4, rho = 1/2 (LPC) and come
+// back stable (rho = (1 + sqrt(1 + 4 p)) / 2).
+TEST(HopfSwitch, FoldOfCyclesOnTheSwitchedBranch) {
+  const HopfNormalForm sys(1, -1, 1.0, Eigen::MatrixXd::Identity(2, 2));
+  const AutonomousEquilibriumProblem eq(sys);
+  const Branch e = equilibrium_branch(eq);
+  const SpecialPoint* hb = find_special_point(e, SpecialPointType::HB);
+  ASSERT_NE(hb, nullptr);
+  OrbitSwitchOptions so = switch_options(-1, 0.2);
+  const OrbitSwitchResult r = switch_at(eq, e, *hb, so);
+  ASSERT_TRUE(r.switched) << r.message;
+  const SpecialPoint* lpc = find_special_point(r.branch, SpecialPointType::LPC);
+  ASSERT_NE(lpc, nullptr) << r.branch.message;
+  EXPECT_EQ(lpc->status, LocationStatus::located);
+  EXPECT_NEAR(lpc->p, -0.25, 1e-7);  // the fold of a(rho) = 0 (location tolerance 1e-11 in (X, p), curvature O(1))
+  EXPECT_NEAR(sys.x_of(lpc->x.head(2)).squaredNorm(), 0.5, 1e-5);  // rho - 1/2 ~ sqrt(p error)
+  expect_closed_form(sys, r.branch, 1, -1, 1.0);
+  EXPECT_TRUE(r.branch.points.back().stable);
+}
+
+// The Brusselator x' = a - (b + 1) x + x^2 y, y' = b x - x^2 y (a = 1, free b): the equilibrium (a, b / a) has its
+// Hopf point at b = 1 + a^2 with omega = a; no closed form for the orbit, so the switched branch is checked against
+// a long simulation by an independent integrator (classical RK4).
+class Brusselator final : public AutonomousSystem {
+ public:
+  Eigen::Index dimension() const override { return 2; }
+  void rhs(std::span<const double> x, double b, std::span<double> f) const override {
+    f[0] = 1 - (b + 1) * x[0] + x[0] * x[0] * x[1];
+    f[1] = b * x[0] - x[0] * x[0] * x[1];
+  }
+  void jacobian(std::span<const double> x, double b, Eigen::MatrixXd& J) const override {
+    J.resize(2, 2);
+    J << -(b + 1) + 2 * x[0] * x[1], x[0] * x[0], b - 2 * x[0] * x[1], -x[0] * x[0];
+  }
+  void parameter_derivative(std::span<const double> x, double, std::span<double> fp) const override {
+    fp[0] = -x[0];
+    fp[1] = x[0];
+  }
+};
+
+// The attractor at b by RK4 (dt = 1e-3) from next to the equilibrium, relaxed for t = 400: the period between the
+// last two maxima of component k and the maximum and minimum of that component (parabolic interpolation).
+struct Simulated {
+  double period = 0, max = -1e300, min = 1e300;
+};
+Simulated simulate_brusselator(double b, int k) {
+  const Brusselator sys;
+  const double dt = 1e-3;
+  std::array<double, 2> x = {1.1, b - 0.1};
+  auto f = [&](const std::array<double, 2>& y) {
+    std::array<double, 2> d{};
+    sys.rhs(y, b, d);
+    return d;
+  };
+  std::vector<double> peaks;
+  double prev2 = 0, prev1 = 0;
+  Simulated s;
+  for (int i = 0; i < 460000; ++i) {
+    const auto k1 = f(x);
+    const auto k2 = f({x[0] + dt / 2 * k1[0], x[1] + dt / 2 * k1[1]});
+    const auto k3 = f({x[0] + dt / 2 * k2[0], x[1] + dt / 2 * k2[1]});
+    const auto k4 = f({x[0] + dt * k3[0], x[1] + dt * k3[1]});
+    for (int c = 0; c < 2; ++c) x[c] += dt / 6 * (k1[c] + 2 * k2[c] + 2 * k3[c] + k4[c]);
+    const double v = x[static_cast<std::size_t>(k)];
+    // prev1 (the state after step i - 1) is an extremum of the samples: the parabola through (prev2, prev1, v)
+    // gives its time and value.
+    if (i >= 400000 && ((prev1 > prev2 && prev1 >= v) || (prev1 < prev2 && prev1 <= v))) {
+      const double den = prev2 - 2 * prev1 + v;
+      const double shift = 0.5 * (prev2 - v) / den, value = prev1 - 0.25 * (prev2 - v) * shift;
+      if (prev1 > prev2) {
+        s.max = std::max(s.max, value);
+        peaks.push_back((i + shift) * dt);
+      } else {
+        s.min = std::min(s.min, value);
+      }
+    }
+    prev2 = prev1;
+    prev1 = v;
+  }
+  s.period = peaks.size() >= 2 ? peaks.back() - peaks[peaks.size() - 2] : 0;
+  return s;
+}
+
+TEST(HopfSwitch, BrusselatorAgainstSimulation) {
+  const Brusselator sys;
+  const AutonomousEquilibriumProblem eq(sys);
+  ContinuationOptions o;
+  o.p_min = 1.5;
+  o.p_max = 2.5;
+  o.max_step = 0.1;
+  const Branch e = continue_branch(eq, Eigen::Vector2d(1, 1.5), 1.5, o);
+  const SpecialPoint* hb = find_special_point(e, SpecialPointType::HB);
+  ASSERT_NE(hb, nullptr);
+  EXPECT_NEAR(hb->p, 2, 1e-9);                  // b = 1 + a^2
+  EXPECT_NEAR(hb->eigenvalue.imag(), 1, 1e-9);  // omega = a
+  const OrbitSwitchResult r = switch_at(eq, e, *hb, switch_options(1.5, 2.3));
+  ASSERT_TRUE(r.switched) << r.message;
+  const BranchPoint& last = r.branch.points.back();
+  ASSERT_NEAR(last.p, 2.3, 1e-12);
+  EXPECT_TRUE(last.stable);
+  const auto* orbit = dynamic_cast<const AutonomousOrbitProblem*>(r.problem.get());
+  ASSERT_NE(orbit, nullptr);
+  const int k = orbit->phase_component();
+  const Simulated s = simulate_brusselator(2.3, k);
+  // RK4 at dt = 1e-3 is accurate to ~1e-11 per unit time here, the parabolic interpolation of an extremum to
+  // ~dt^3 times the third derivative (~1e-8): 1e-6 leaves room for both. x_0 is an extremum of component k.
+  EXPECT_NEAR(AutonomousOrbitProblem::period(last.x), s.period, 1e-6);
+  const double xk = last.x[k];
+  EXPECT_NEAR(std::min(std::abs(xk - s.max), std::abs(xk - s.min)), 0, 1e-6) << xk << " " << s.max << " " << s.min;
+  EXPECT_GT(s.max - s.min, 0.1);  // a grown orbit, not the equilibrium
+}
+
+// Two pairs crossing at once (omega 1 and 2): refused, naming both pairs.
+class DoubleHopf final : public AutonomousSystem {
+ public:
+  Eigen::Index dimension() const override { return 4; }
+  void rhs(std::span<const double> x, double p, std::span<double> f) const override {
+    for (int b = 0; b < 2; ++b) {
+      const double w = b + 1.0, r = x[2 * b] * x[2 * b] + x[2 * b + 1] * x[2 * b + 1];
+      f[2 * b] = (p - r) * x[2 * b] - w * x[2 * b + 1];
+      f[2 * b + 1] = w * x[2 * b] + (p - r) * x[2 * b + 1];
+    }
+  }
+  void jacobian(std::span<const double> x, double p, Eigen::MatrixXd& J) const override {
+    J.setZero(4, 4);
+    for (int b = 0; b < 2; ++b) {
+      const double w = b + 1.0;
+      const Eigen::Vector2d u(x[2 * b], x[2 * b + 1]);
+      Eigen::Matrix2d B;
+      B << p - u.squaredNorm(), -w, w, p - u.squaredNorm();
+      J.block(2 * b, 2 * b, 2, 2) = B - 2 * u * u.transpose();
+    }
+  }
+};
+
+TEST(HopfSwitch, MultipleHopfIsRefused) {
+  const DoubleHopf sys;
+  SpecialPoint hb;
+  hb.type = SpecialPointType::HB;
+  hb.x = Eigen::VectorXd::Zero(4);
+  hb.p = 0;
+  hb.eigenvalue = {0, 1};
+  const OrbitSwitchResult r = switch_at_hopf(sys, hb);
+  EXPECT_FALSE(r.switched);
+  EXPECT_EQ(r.problem, nullptr);
+  EXPECT_NE(r.message.find("not a simple Hopf point"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("1i"), std::string::npos) << r.message;
+  EXPECT_NE(r.message.find("2i"), std::string::npos) << r.message;
+  // Off the point (p = 0.1) no eigenvalue is critical: refused too (not an HB at all).
+  hb.p = 0.1;
+  EXPECT_NE(switch_at_hopf(sys, hb).message.find("none"), std::string::npos);
+  // A PD label is not an HB, and a PD on an equilibrium branch has no orbit to double.
+  hb.type = SpecialPointType::PD;
+  EXPECT_THROW(switch_at_hopf(sys, hb), InvalidArgument);
+  const AutonomousEquilibriumProblem eq(sys);
+  EXPECT_FALSE(switch_at(eq, Branch{}, hb).switched);
+}
+
+// x = x_p(t) + R(t/2) u with u' = (a u1 - u1^3, -u2), a = p, x_p = (cos t, sin t + 0.3 sin 2t): f is 2 pi-periodic
+// because g is odd and R(t/2 + pi) = -R(t/2). Orbits: x_p (multipliers -e^{2 pi p}, -e^{-2 pi}; PD at p = 0) and
+// for p > 0 the doubled orbits x_p(t) +- sqrt(p) R(t/2) e_1 (period 4 pi, multipliers e^{-8 pi p}, e^{-4 pi}).
+class ForcedPitchFlip final : public ForcedSystem {
+ public:
+  static Eigen::Vector2d xp(double t) { return {std::cos(t), std::sin(t) + 0.3 * std::sin(2 * t)}; }
+  static Eigen::Vector2d xp_dot(double t) { return {-std::sin(t), std::cos(t) + 0.6 * std::cos(2 * t)}; }
+  static Eigen::Matrix2d R(double t) {
+    Eigen::Matrix2d m;
+    m << std::cos(t / 2), -std::sin(t / 2), std::sin(t / 2), std::cos(t / 2);
+    return m;
+  }
+  Eigen::Index dimension() const override { return 2; }
+  void rhs(double t, std::span<const double> x, double p, std::span<double> f) const override {
+    const Eigen::Vector2d u = R(t).transpose() * (Eigen::Vector2d(x[0], x[1]) - xp(t));
+    Eigen::Matrix2d half;
+    half << 0, -0.5, 0.5, 0;
+    const Eigen::Vector2d F = xp_dot(t) + R(t) * (half * u + Eigen::Vector2d(p * u[0] - u[0] * u[0] * u[0], -u[1]));
+    f[0] = F[0];
+    f[1] = F[1];
+  }
+  void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const override {
+    const Eigen::Vector2d u = R(t).transpose() * (Eigen::Vector2d(x[0], x[1]) - xp(t));
+    Eigen::Matrix2d D;
+    D << p - 3 * u[0] * u[0], -0.5, 0.5, -1;
+    J = R(t) * D * R(t).transpose();
+  }
+  void parameter_derivative(double t, std::span<const double> x, double, std::span<double> fp) const override {
+    const Eigen::Vector2d u = R(t).transpose() * (Eigen::Vector2d(x[0], x[1]) - xp(t));
+    const Eigen::Vector2d F = R(t) * Eigen::Vector2d(u[0], 0);
+    fp[0] = F[0];
+    fp[1] = F[1];
+  }
+};
+
+TEST(PeriodDoublingSwitch, DoubledOrbitInClosedForm) {
+  const ForcedPitchFlip sys;
+  OrbitOptions oo;
+  oo.segments = 4;
+  const PeriodicOrbitProblem pr(sys, oo);
+  const double p0 = -0.2;
+  ContinuationOptions o;
+  o.p_min = p0;
+  o.p_max = 0.2;
+  o.max_step = 0.1;
+  const Branch b = continue_branch(pr, pr.shooting_guess(ForcedPitchFlip::xp(0), p0), p0, o);
+  const SpecialPoint* pd = find_special_point(b, SpecialPointType::PD);
+  ASSERT_NE(pd, nullptr) << b.message;
+  EXPECT_NEAR(pd->p, 0, 1e-8);
+  OrbitSwitchOptions so;
+  so.orbit = oo;
+  so.continuation = o;
+  so.continuation.max_points = 30;
+  const OrbitSwitchResult r = switch_at(pr, b, *pd, so);
+  ASSERT_TRUE(r.switched) << r.message;
+  EXPECT_NEAR(r.period, 4 * kPi, 1e-12);
+  const auto* doubled = dynamic_cast<const PeriodicOrbitProblem*>(r.problem.get());
+  ASSERT_NE(doubled, nullptr);
+  EXPECT_EQ(doubled->periods(), 2);
+  EXPECT_EQ(doubled->segments(), 8);
+  ASSERT_GE(r.branch.points.size(), 5u);
+  EXPECT_NEAR(r.branch.points.back().p, 0.2, 1e-12);
+  for (const BranchPoint& pt : r.branch.points) {
+    // The doubled orbit at every segment start t_j = pi j / 2 (1e-9: rtol 1e-12 over two periods), so its
+    // amplitude grows exactly like sqrt(p).
+    const double amp = std::sqrt(pt.p);
+    const double sign = pt.x[0] > ForcedPitchFlip::xp(0)[0] ? 1 : -1;
+    for (int j = 0; j < 8; ++j) {
+      const double t = kPi * j / 2;
+      const Eigen::Vector2d expected = ForcedPitchFlip::xp(t) + sign * amp * ForcedPitchFlip::R(t).col(0);
+      EXPECT_NEAR((pt.x.segment(2 * j, 2) - expected).norm(), 0, 1e-9) << pt.p << " " << j;
+    }
+    std::vector<double> mu = {pt.spectrum[0].real(), pt.spectrum[1].real()};
+    std::sort(mu.begin(), mu.end());
+    std::vector<double> ex = {std::exp(-8 * kPi * pt.p), std::exp(-4 * kPi)};
+    std::sort(ex.begin(), ex.end());
+    EXPECT_NEAR(mu[0], ex[0], 1e-9);
+    EXPECT_NEAR(mu[1], ex[1], 1e-9);
+    EXPECT_TRUE(pt.stable);
+  }
+  // The same orbit started as a period-2 orbit at the doubled problem's bare Newton: periods = 2 is a problem on
+  // its own (not only the switch's).
+  const double p = 0.1;
+  const Eigen::VectorXd X = doubled->shooting_guess(ForcedPitchFlip::xp(0) + Eigen::Vector2d(std::sqrt(p), 0), p);
+  Eigen::VectorXd F;
+  doubled->residual(X, p, F);
+  EXPECT_LT(F.norm(), 1e-9);
+  pr.residual(pr.shooting_guess(ForcedPitchFlip::xp(0) + Eigen::Vector2d(std::sqrt(p), 0), p), p, F);
+  EXPECT_GT(F.norm(), 0.1);  // not 2 pi-periodic: the single-period problem rejects it
+  // A point of the branch that is not a PD (p = -0.2: multipliers -e^{-0.4 pi}, -e^{-2 pi}) is refused, and so is a
+  // type the orbit switch does not handle.
+  SpecialPoint not_pd = *pd;
+  not_pd.x = b.points.front().x;
+  not_pd.p = b.points.front().p;
+  const OrbitSwitchResult refused = switch_at(pr, b, not_pd, so);
+  EXPECT_FALSE(refused.switched);
+  EXPECT_NE(refused.message.find("not a simple period doubling"), std::string::npos) << refused.message;
+  not_pd.type = SpecialPointType::LPC;
+  EXPECT_NE(switch_at(pr, b, not_pd, so).message.find("no orbit switch at a LPC"), std::string::npos);
+}
+
+TEST(PeriodDoublingSwitch, RejectsBadPeriods) {
+  const ForcedPitchFlip sys;
+  EXPECT_THROW(PeriodicOrbitProblem(sys, {}, 0), InvalidArgument);
+  OrbitSwitchOptions so;
+  so.amplitude = 0;
+  EXPECT_THROW(so.validate(), InvalidArgument);
+}
+
+// This model's l >= 3 onset (full model, L = 4, C from 0.08 down): every HB there is one of l pairs crossing with a
+// BP, and the switch refuses each, naming the eigenvalues on the axis and the labels with their modes.
+TEST(HopfSwitch, FullModelOnsetIsRefusedAsMultiple) {
+  const Scene scene = modal_fixtures::scene(0.08, 4);
+  const BranchSpec spec =
+      test::spec_of(scene, ProblemKind::full, ContinuationParameter::C, 0.02, 0.08, Direction::backward);
+  const Branch b = continue_scene(spec).branch.branch;
+  const FullEquilibriumProblem problem(scene, ContinuationParameter::C);
+  int hbs = 0;
+  for (const SpecialPoint& sp : b.special_points) {
+    if (sp.type != SpecialPointType::HB) continue;
+    ++hbs;
+    const OrbitSwitchResult r = switch_at(problem, b, sp);
+    EXPECT_FALSE(r.switched);
+    EXPECT_NE(r.message.find("a multiple Hopf point"), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find("BP (l = " + std::to_string(*sp.mode_l) + ", m = 0)"), std::string::npos) << r.message;
+    EXPECT_NE(r.message.find("0.5i"), std::string::npos) << r.message;  // the m = 1 pair of every l
+  }
+  EXPECT_EQ(hbs, 3 + 4);
+}
+
+}  // namespace
+}  // namespace rbcstab
