@@ -289,7 +289,8 @@ SpecialPoint read_special_point(const Reader& rd, const json& o, const std::stri
     if (o.contains(key) && !o.at(key).is_null()) *mode = rd.small_int(o, key, at);
   // The normal form (files before it was computed have none).
   if (o.contains("normal_form") && !o.at("normal_form").is_null())
-    sp.normal_form = rd.checked(Reader::join(at, "normal_form"), [&] { return normal_form_from_json(o.at("normal_form")); });
+    sp.normal_form =
+        rd.checked(Reader::join(at, "normal_form"), [&] { return normal_form_from_json(o.at("normal_form")); });
   return sp;
 }
 

@@ -45,8 +45,8 @@ NormalForm normal_form_from_json(const nlohmann::json& j) {
   nf.note = string("note");
   if (!j.contains("coefficients") || !j.at("coefficients").is_object()) fail("\"coefficients\" must be an object");
   for (const auto& [k, v] : j.at("coefficients").items()) nf.coefficients.emplace_back(k, number(v, k));
-  for (const auto& [key, field] : {std::pair{"amplitude", &nf.amplitude}, std::pair{"exponent", &nf.exponent},
-                                   std::pair{"side", &nf.side}}) {
+  for (const auto& [key, field] :
+       {std::pair{"amplitude", &nf.amplitude}, std::pair{"exponent", &nf.exponent}, std::pair{"side", &nf.side}}) {
     if (!j.contains(key)) fail(std::string("\"") + key + "\" is missing");
     *field = number(j.at(key), key);
   }

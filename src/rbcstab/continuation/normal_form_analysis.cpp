@@ -106,8 +106,7 @@ NormalForm fold_normal_form(const ContinuationProblem& problem, const Eigen::Vec
     return degenerate(nf, "<w, F_p> = 0: the branch is not a fold in this parameter (a BP or a transcritical point)");
   const double p2 = -a / wFp;
   nf.coefficients.emplace_back("p2", p2);
-  if (!(std::abs(a) > kVanish * w.norm() * J.norm()))
-    return degenerate(nf, "a = 0 to its accuracy: a cusp");
+  if (!(std::abs(a) > kVanish * w.norm() * J.norm())) return degenerate(nf, "a = 0 to its accuracy: a cusp");
   nf.amplitude = 1 / std::sqrt(std::abs(p2));
   nf.exponent = 0.5;
   nf.side = sign(p2);
@@ -128,9 +127,8 @@ NormalForm branch_point_normal_form(const ContinuationProblem& problem, const Ei
   const Eigen::VectorXd& psi = k.w;
   // [J F_p] must be rank deficient too (F_p in the range of J), else the point is a fold.
   if (!(std::abs(psi.dot(Fp)) <= kSingular * (J.norm() + Fp.norm())))
-    return not_computed(NormalFormKind::branch_point,
-                        "not a branch point: F_p is not in the range of J (psi . F_p = " + format_value(psi.dot(Fp)) +
-                            ")");
+    return not_computed(NormalFormKind::branch_point, "not a branch point: F_p is not in the range of J (psi . F_p = " +
+                                                          format_value(psi.dot(Fp)) + ")");
   const Eigen::VectorXd w1 = bordered_solve(J, v0, psi, -Fp);
   const Eigen::VectorXd e1 = extend(v0, 0.0), e2 = extend(w1, 1.0);
   const Multilinear D(problem, x, p);
@@ -139,7 +137,8 @@ NormalForm branch_point_normal_form(const ContinuationProblem& problem, const Ei
   nf.kind = NormalFormKind::branch_point;
   nf.coefficients = {{"a", a}, {"b", b}, {"c", c}};
   // The same coefficients on unit directions, for the relative tests.
-  const double E2 = e2.norm(), bh = b / E2, ch = c / E2 / E2, scale = std::max({std::abs(a), std::abs(bh), std::abs(ch)});
+  const double E2 = e2.norm(), bh = b / E2, ch = c / E2 / E2,
+               scale = std::max({std::abs(a), std::abs(bh), std::abs(ch)});
   const double disc = bh * bh - a * ch;
   if (!(scale > 0) || !(disc > kVanish * scale * scale))
     return degenerate(nf, "the algebraic bifurcation equation has no two distinct real roots (b^2 - ac = " +
@@ -225,7 +224,8 @@ NormalForm hopf_normal_form(const ContinuationProblem& problem, const Eigen::Vec
   const Eigen::VectorXcd r = Jc.partialPivLu().solve(g11);
   const Eigen::MatrixXcd R2 = cd(0, 2 * w) * Eigen::MatrixXcd::Identity(J.rows(), J.cols()) - Jc;
   const Eigen::VectorXcd s2 = R2.partialPivLu().solve(g20);
-  const cd t1 = pl.dot(g21), t2 = -2.0 * pl.dot(D.B(eq, extend_complex(r, 0.0))), t3 = pl.dot(D.B(eqb, extend_complex(s2, 0.0)));
+  const cd t1 = pl.dot(g21), t2 = -2.0 * pl.dot(D.B(eq, extend_complex(r, 0.0))),
+           t3 = pl.dot(D.B(eqb, extend_complex(s2, 0.0)));
   const double l1 = (t1 + t2 + t3).real() / (2 * w);
   // dRe(lambda)/dp = Re <p, (J_p + B(., x_p)) q> with x_p = -J^-1 F_p: the second derivative of the residual
   // in the directions (q, 0) and (x_p, 1).
@@ -259,8 +259,8 @@ NormalForm normal_form(const ContinuationProblem& problem, const Branch& branch,
     return not_computed(kind, "no normal form for " + to_string(sp.type));
   if (sp.status != LocationStatus::located) return not_computed(kind, "the point is not located (a guess)");
   if (problem.dimension() > kNormalFormMaxDimension)
-    return not_computed(kind, "dimension " + std::to_string(problem.dimension()) + " > " +
-                                  std::to_string(kNormalFormMaxDimension));
+    return not_computed(
+        kind, "dimension " + std::to_string(problem.dimension()) + " > " + std::to_string(kNormalFormMaxDimension));
   try {
     if (sp.type == SpecialPointType::LP) return fold_normal_form(problem, sp.x, sp.p);
     if (sp.type == SpecialPointType::HB) return hopf_normal_form(problem, sp.x, sp.p, std::abs(sp.eigenvalue.imag()));
