@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "continuation/modal_fixtures.hpp"
@@ -15,6 +16,7 @@
 #include "rbcstab/continuation/branch_switch.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/continuation/normal_form_analysis.hpp"
+#include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
 namespace {
@@ -275,6 +277,41 @@ TEST(NormalForm, EngineHopfAndTwoPairsAreDegenerate) {
   const NormalForm nf = hopf_normal_form(two, Eigen::VectorXd::Zero(4), 0.0, 2.0);
   EXPECT_EQ(nf.criticality, Criticality::degenerate);
   EXPECT_EQ(nf.note, "degenerate (2 pairs)");
+}
+
+TEST(NormalForm, JsonRoundTripAndRefusals) {
+  NormalForm nf;
+  nf.kind = NormalFormKind::pitchfork;
+  nf.criticality = Criticality::subcritical;
+  nf.coefficients = {{"a", 0.0}, {"p2", -0.5}};
+  nf.amplitude = std::sqrt(2.0);
+  nf.exponent = 0.5;
+  nf.side = -1;
+  const nlohmann::json j = to_json(nf);
+  const NormalForm back = normal_form_from_json(j);
+  EXPECT_EQ(back.kind, nf.kind);
+  EXPECT_EQ(back.criticality, nf.criticality);
+  EXPECT_EQ(back.coefficient("p2"), -0.5);
+  EXPECT_EQ(back.amplitude, nf.amplitude);
+  EXPECT_EQ(back.side, -1.0);
+  EXPECT_EQ(to_text(back, "C"), "pitchfork, subcritical (p2 = -0.5), |x - x*| ~ 1.414 |C - C*|^(1/2) for C < C*");
+  // Unknown amplitude: null in the JSON, NaN back, no law in the text.
+  nf.amplitude = std::nan("");
+  EXPECT_TRUE(to_json(nf)["amplitude"].is_null());
+  EXPECT_TRUE(std::isnan(normal_form_from_json(to_json(nf)).amplitude));
+  for (const char* key : {"kind", "criticality", "coefficients", "side", "note"}) {
+    nlohmann::json bad = j;
+    bad.erase(key);
+    EXPECT_THROW(normal_form_from_json(bad), InvalidArgument) << key;
+  }
+  nlohmann::json bad = j;
+  bad["criticality"] = "soft";
+  try {
+    normal_form_from_json(bad);
+    ADD_FAILURE() << "accepted criticality 'soft'";
+  } catch (const InvalidArgument& e) {
+    EXPECT_NE(std::string(e.what()).find("soft"), std::string::npos) << e.what();
+  }
 }
 
 TEST(NormalForm, ModalOnsetAgreesWithThePostInstabilityQuadratic) {

@@ -2,7 +2,9 @@
 #include "rbcstab/continuation/normal_form.hpp"
 
 #include <cmath>
+#include <iomanip>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"
@@ -53,17 +55,28 @@ NormalForm normal_form_from_json(const nlohmann::json& j) {
   return nf;
 }
 
+namespace {
+
+// Four significant digits: the coefficients are difference quotients accurate to ~1e-6 (multilinear.hpp).
+std::string short_number(double v) {
+  std::ostringstream os;
+  os << std::setprecision(4) << v;
+  return os.str();
+}
+
+}  // namespace
+
 std::string to_text(const NormalForm& nf, const std::string& parameter) {
   std::string t = to_string(nf.kind);
   if (nf.criticality != Criticality::not_applicable) t += ", " + to_string(nf.criticality);
   // The coefficient that decides: l1 (Hopf), p2 (pitchfork, fold), none (transcritical).
   const char* key = nf.kind == NormalFormKind::hopf ? "l1" : "p2";
   if (nf.kind != NormalFormKind::transcritical && !std::isnan(nf.coefficient(key)))
-    t += std::string(" (") + key + " = " + format_value(nf.coefficient(key)) + ")";
-  if (!nf.note.empty()) t += " (" + nf.note + ")";
+    t += std::string(" (") + key + " = " + short_number(nf.coefficient(key)) + ")";
+  if (!nf.note.empty()) t += ": " + nf.note;
   if (std::isfinite(nf.amplitude)) {
     const std::string& P = parameter;
-    t += std::string(nf.kind == NormalFormKind::hopf ? ", orbit" : ",") + " |x - x*| ~ " + format_value(nf.amplitude) +
+    t += std::string(nf.kind == NormalFormKind::hopf ? ", orbit" : ",") + " |x - x*| ~ " + short_number(nf.amplitude) +
          " |" + P + " - " + P + "*|" + (nf.exponent == 0.5 ? "^(1/2)" : "");
     if (nf.side > 0) t += " for " + P + " > " + P + "*";
     if (nf.side < 0) t += " for " + P + " < " + P + "*";

@@ -263,7 +263,11 @@ NormalForm normal_form(const ContinuationProblem& problem, const Branch& branch,
         kind, "dimension " + std::to_string(problem.dimension()) + " > " + std::to_string(kNormalFormMaxDimension));
   try {
     if (sp.type == SpecialPointType::LP) return fold_normal_form(problem, sp.x, sp.p);
-    if (sp.type == SpecialPointType::HB) return hopf_normal_form(problem, sp.x, sp.p, std::abs(sp.eigenvalue.imag()));
+    if (sp.type == SpecialPointType::HB) {
+      const double omega = std::abs(sp.eigenvalue.imag());
+      if (!(omega > 0)) return not_computed(kind, "the HB has no crossing frequency (omega = 0)");
+      return hopf_normal_form(problem, sp.x, sp.p, omega);
+    }
     // BP: the known branch's secant across the point, and the side of p where it gains the unstable mode.
     const std::size_t k = sp.after_index;
     if (k + 1 >= branch.points.size()) return not_computed(kind, "the point is not between two branch points");
