@@ -14,6 +14,7 @@
 #include "continuation/modal_fixtures.hpp"
 #include "rbcstab/analysis/post_instability.hpp"
 #include "rbcstab/continuation/branch_switch.hpp"
+#include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/continuation/modal_equilibrium.hpp"
 #include "rbcstab/continuation/normal_form_analysis.hpp"
 #include "rbcstab/core/error.hpp"
@@ -355,6 +356,42 @@ TEST(NormalForm, ModalOnsetAgreesWithThePostInstabilityQuadratic) {
   // On the other side the post-instability state does not exist (Delta~2 >= Delta: outside its domain): the law's
   // side is decisive.
   EXPECT_FALSE(post_Delta3(bp->p + 1e-3) > 0);
+}
+
+TEST(NormalForm, FullLevelOnsetIsTheModalPitchforkAndItsHopfsAreDegenerate) {
+  // The same scene at the full level (L = 4, n = 21, no rest l >= 3 content): its l = 3 onset is the modal BP (the
+  // full model's m = 0 subspace holds the modal model) with the same normal form, another level's difference
+  // quotients of another residual; the m = 1, 2, 3 pairs cross at the same C, so each HB there carries three
+  // pairs and gets no l1.
+  const Scene s = modal_fixtures::scene(0.037, 4);
+  const ModalEquilibriumProblem modal(s, ContinuationParameter::C);
+  const FullEquilibriumProblem full(s, ContinuationParameter::C);
+  ContinuationOptions o;
+  o.p_min = 0.0355;  // a short branch through C* = 0.0361689 (the full level's points cost 25x the modal's)
+  o.p_max = 0.04;
+  o.direction = Direction::backward;
+  const Branch bm = continue_branch(modal, modal.ellipsoidal_state(0.037), 0.037, o);
+  const Branch bf = continue_branch(full, full.ellipsoidal_state(0.037), 0.037, o);
+  const SpecialPoint* pm = find_special_point(bm, SpecialPointType::BP);
+  const SpecialPoint* pf = find_special_point(bf, SpecialPointType::BP);
+  ASSERT_NE(pm, nullptr);
+  ASSERT_NE(pf, nullptr);
+  ASSERT_TRUE(pm->normal_form && pf->normal_form);
+  EXPECT_EQ(pf->normal_form->kind, NormalFormKind::pitchfork);
+  EXPECT_EQ(pf->normal_form->criticality, Criticality::supercritical);
+  // Measured: 1.5e-8 relative (each level's quotients ~1e-8 of their scale). Bar 1e-6.
+  EXPECT_NEAR(pf->normal_form->coefficient("p2") / pm->normal_form->coefficient("p2"), 1.0, 1e-6);
+  EXPECT_NEAR(pf->normal_form->amplitude / pm->normal_form->amplitude, 1.0, 1e-6);
+  int hopfs = 0;
+  for (const SpecialPoint& sp : bf.special_points)
+    if (sp.type == SpecialPointType::HB) {
+      ++hopfs;
+      ASSERT_TRUE(sp.normal_form.has_value());
+      EXPECT_EQ(sp.normal_form->criticality, Criticality::degenerate);
+      EXPECT_EQ(sp.normal_form->note, "degenerate (3 pairs)");
+      EXPECT_EQ(to_text(*sp.normal_form, "C"), "hopf: degenerate (3 pairs)");
+    }
+  EXPECT_EQ(hopfs, 3);
 }
 
 }  // namespace

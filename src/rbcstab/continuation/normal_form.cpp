@@ -68,7 +68,9 @@ std::string short_number(double v) {
 
 std::string to_text(const NormalForm& nf, const std::string& parameter) {
   std::string t = to_string(nf.kind);
-  if (nf.criticality != Criticality::not_applicable) t += ", " + to_string(nf.criticality);
+  // A note that says "degenerate (k pairs)" already names the criticality.
+  const bool named = nf.note.rfind(to_string(nf.criticality), 0) == 0;
+  if (nf.criticality != Criticality::not_applicable && !named) t += ", " + to_string(nf.criticality);
   // The coefficient that decides: l1 (Hopf), p2 (pitchfork, fold), none (transcritical).
   const char* key = nf.kind == NormalFormKind::hopf ? "l1" : "p2";
   if (nf.kind != NormalFormKind::transcritical && !std::isnan(nf.coefficient(key)))
