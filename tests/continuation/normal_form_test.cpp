@@ -64,6 +64,11 @@ TEST(NormalForm, FoldCoefficientsAreThoseOfPMinusXSquared) {
   EXPECT_NEAR(nf.amplitude, 1.0, kTolB);
   EXPECT_EQ(nf.exponent, 0.5);
   EXPECT_EQ(nf.side, 1.0);
+  // A cusp (x' = p - x^3: B(v, v) = 0) is degenerate, with no amplitude law.
+  const Fn cusp(1, [](const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) { F[0] = p - x[0] * x[0] * x[0]; });
+  const NormalForm c = fold_normal_form(cusp, Eigen::VectorXd::Zero(1), 0.0);
+  EXPECT_EQ(c.criticality, Criticality::degenerate) << to_text(c, "p");
+  EXPECT_TRUE(std::isnan(c.amplitude));
   // The fold of p + x^2 opens the other way.
   const Fn flipped(1, [](const Eigen::VectorXd& x, double p, Eigen::VectorXd& F) { F[0] = p + x[0] * x[0]; });
   EXPECT_EQ(fold_normal_form(flipped, Eigen::VectorXd::Zero(1), 0.0).side, -1.0);

@@ -100,13 +100,17 @@ NormalForm fold_normal_form(const ContinuationProblem& problem, const Eigen::Vec
   }
   const Multilinear D(problem, x, p);
   const Eigen::VectorXd ev = extend(k.v, 0.0);
-  const double a = w.dot(D.B(ev, ev)) / 2;
+  const Eigen::VectorXd Bvv = D.B(ev, ev);
+  const double a = w.dot(Bvv) / 2;
   nf.coefficients = {{"a", a}, {"w_Fp", wFp}};
   if (!(wFp > kSingular * (Fp.norm() + 1e-300)))
     return degenerate(nf, "<w, F_p> = 0: the branch is not a fold in this parameter (a BP or a transcritical point)");
   const double p2 = -a / wFp;
   nf.coefficients.emplace_back("p2", p2);
-  if (!(std::abs(a) > kVanish * w.norm() * J.norm())) return degenerate(nf, "a = 0 to its accuracy: a cusp");
+  // A cusp: a vanishes against the size of B(v, v) and of the first derivatives [J F_p] (states here are O(1); at
+  // x' = p - x^3 everything but F_p vanishes, and a is difference noise).
+  const double scale = std::max(Bvv.norm() / 2, std::hypot(J.norm(), Fp.norm()));
+  if (!(std::abs(a) > kVanish * w.norm() * scale)) return degenerate(nf, "a = 0 to its accuracy: a cusp");
   nf.amplitude = 1 / std::sqrt(std::abs(p2));
   nf.exponent = 0.5;
   nf.side = sign(p2);
