@@ -50,12 +50,14 @@ struct Kernel {
   Eigen::VectorXd v, w;  // right and left null vectors, unit
   std::string why;       // non-empty: J is regular or its kernel is more than 1-D
 };
-Kernel kernel_of(const Eigen::MatrixXd& J) {
+// scale: what "zero" is measured against, at least J's largest singular value (a 1-D J that is zero to rounding has
+// only itself to compare with: the caller adds |F_p|).
+Kernel kernel_of(const Eigen::MatrixXd& J, double scale) {
   Kernel k;
   const Eigen::Index n = J.rows();
   const Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullU | Eigen::ComputeFullV);
   const Eigen::VectorXd& s = svd.singularValues();
-  if (!(s[n - 1] <= kSingular * s[0]))
+  if (!(s[n - 1] <= kSingular * std::max(s[0], scale)))
     k.why = "J is regular: smallest singular value " + format_value(s[n - 1]) + " of " + format_value(s[0]);
   else if (n >= 2 && !(s[n - 2] > kKernel * s[0]))
     k.why = "the kernel of J is more than 1-D (second singular value " + format_value(s[n - 2]) + ")";
@@ -84,7 +86,7 @@ NormalForm fold_normal_form(const ContinuationProblem& problem, const Eigen::Vec
   Eigen::VectorXd Fp;
   problem.jacobian(x, p, J);
   problem.parameter_derivative(x, p, Fp);
-  Kernel k = kernel_of(J);
+  Kernel k = kernel_of(J, Fp.norm());
   if (!k.why.empty()) return not_computed(NormalFormKind::fold, "not a simple fold: " + k.why);
   NormalForm nf;
   nf.kind = NormalFormKind::fold;
@@ -125,7 +127,7 @@ NormalForm branch_point_normal_form(const ContinuationProblem& problem, const Ei
   Eigen::VectorXd Fp;
   problem.jacobian(x, p, J);
   problem.parameter_derivative(x, p, Fp);
-  const Kernel k = kernel_of(J);
+  const Kernel k = kernel_of(J, Fp.norm());
   if (!k.why.empty()) return not_computed(NormalFormKind::branch_point, "not a simple branch point: " + k.why);
   const Eigen::VectorXd& v0 = k.v;
   const Eigen::VectorXd& psi = k.w;

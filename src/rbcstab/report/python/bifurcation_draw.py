@@ -23,7 +23,8 @@ def _renderer(fig):
 def draw_bifurcation(ax, s, source="plot spec"):
     """Renders the PlotSpec s (a dict) into ax: each series in its colour, its segments in their line styles
     (stable solid, unstable dashed, uncertain dotted), the points' markers (a normal form's supercritical point
-    filled, subcritical a diamond) and texts ("BP 3 super"), the axes' labels and the title. Nothing is decided here. Returns ax."""
+    filled, subcritical a diamond) and texts ("BP 3 super"), the axes' labels and the title. Nothing is decided
+    here. Returns ax."""
     if s.get("format") != "rbcstab-plot":
         raise ValueError(f"{source}: not a plot spec (format {s.get('format')!r}, expected 'rbcstab-plot')")
     fig = ax.figure
