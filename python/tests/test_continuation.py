@@ -563,6 +563,31 @@ def test_plot_draws_the_cli_plot_spec_on_agg(full_branch, tmp_path):
     plt.close(fig)
 
 
+def test_special_points_carry_their_normal_form_and_the_plot_marks_it():
+    """The l = 3 onset of the modal model in C: a supercritical pitchfork whose law |x - x*| ~ A |C - C*|^(1/2) holds
+    on the unstable side (C < C*); docs/continuation.md "Normal forms" has the C++ checks (closed forms, the
+    post-instability quadratic). Here: the JSON reaches Python and the plot spec, and a subcritical point would not be
+    drawn as a supercritical one."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    m = rbcstab.continuation(rbcstab.Scene(lambda_=1.0, B=1.0, C=0.08, Delta=1.0, Delta0=0.01, L=4), kind="modal",
+                             parameter="C", min=0.03, max=0.08, direction="backward")
+    (bp,) = [sp for sp in m.special_points if sp["type"] == "BP"]
+    nf = bp["normal_form"]
+    assert nf["kind"] == "pitchfork" and nf["criticality"] == "supercritical" and nf["side"] == -1
+    assert nf["exponent"] == 0.5 and nf["amplitude"] == pytest.approx(10.2206, rel=1e-5)
+    assert nf["coefficients"]["a"] == 0 and nf["coefficients"]["p2"] < 0
+    spec = m.plot_spec(y="Delta_2")
+    (point,) = [p for p in spec["points"] if p["type"] == "BP"]
+    assert point["criticality"] == "supercritical" and point["text"].endswith(" super")
+    ax = m.plot(y="Delta_2")
+    assert "supercritical" in [t.get_text() for t in ax.get_legend().get_texts()]
+    assert any(t.get_text().endswith(" super") for t in ax.texts)
+    plt.close(ax.figure)
+
+
 # ------------------------------------------------------------------------------------- shear_rate as a parameter
 def test_shear_rate_continuation_needs_a_physical_scene_and_matches_the_converted_scene():
     """shear_rate comes from the parameter table: on a physical scene the branch runs in 1/s and each point is

@@ -123,6 +123,19 @@ TEST(BranchFile, RefusesWhatIsNotABranchFileNamingTheKey) {
   EXPECT_EQ(test::invalid_parameter(parse(edited([](json& j) { j["branch"][0]["sigma"] = 4294967297LL; })), &m),
             "restart");
   EXPECT_NE(m.find("branch[0].sigma = 4294967297 is out of range"), std::string::npos) << m;
+  // A special point's normal form (docs/continuation.md "Normal forms"): refused when malformed, naming the key;
+  // a file written before it existed (no key) loads without one.
+  ASSERT_TRUE(std::get<SceneBranch>(round_trip(modal_run())).branch.branch.special_points[0].normal_form.has_value());
+  EXPECT_EQ(test::invalid_parameter(
+                parse(edited([](json& j) { j["special_points"][0]["normal_form"]["criticality"] = "soft"; })), &m),
+            "restart");
+  EXPECT_NE(m.find("normal_form"), std::string::npos) << m;
+  EXPECT_NE(m.find("'soft'"), std::string::npos) << m;
+  const ContinuationRun old = parse_branch_file(edited([](json& j) {
+                                                  for (json& sp : j["special_points"]) sp.erase("normal_form");
+                                                }),
+                                                "old.json");
+  EXPECT_FALSE(std::get<SceneBranch>(old).branch.branch.special_points[0].normal_form.has_value());
   EXPECT_EQ(test::invalid_parameter([] { (void)load_branch("/nonexistent/b.json"); }, &m), "restart");
   EXPECT_NE(m.find("restart = '/nonexistent/b.json'"), std::string::npos) << m;
 }

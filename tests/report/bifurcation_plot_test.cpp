@@ -109,6 +109,16 @@ TEST(PlotSpec, StabilitySegmentsSplitWhereStabilityChanges) {
   EXPECT_EQ(j.at("styles").size(), 3u);
   EXPECT_EQ(j.at("points")[0].at("label"), 3);
   EXPECT_EQ(j.at("x").at("label"), "$\\lambda$");
+  EXPECT_EQ(j.at("points")[0].at("criticality"), "");  // no normal form: nothing claimed
+  // A special point's normal form marks it: sub/supercritical in the text and the spec; degenerate is not marked.
+  for (const char* c : {"supercritical", "subcritical", "degenerate"}) {
+    json b = hand_branch();
+    b["special_points"][0]["normal_form"] = {{"kind", "pitchfork"}, {"criticality", c}};
+    const PlotSpec marked = plot_spec({plot_input(b, "hand.json")}, o);
+    const std::string want = std::string(c) == "degenerate" ? "" : c;
+    EXPECT_EQ(marked.points[0].criticality, want) << c;
+    EXPECT_EQ(marked.points[0].text, want.empty() ? "BP 3" : want == "supercritical" ? "BP 3 super" : "BP 3 sub") << c;
+  }
   // The default y of reduced-system equilibria is Psi; the fixed parameters title the figure.
   const PlotSpec def = plot_spec({plot_input(hand_branch(), "hand.json")});
   EXPECT_EQ(def.y.name, "Psi");

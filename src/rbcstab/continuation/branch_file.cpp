@@ -119,7 +119,8 @@ json special_point_json(const SpecialPoint& sp) {
           {"after_index", sp.after_index},
           {"eigenvalue", complex_json(sp.eigenvalue)},
           {"mode_l", sp.mode_l ? json(*sp.mode_l) : json(nullptr)},
-          {"mode_m", sp.mode_m ? json(*sp.mode_m) : json(nullptr)}};
+          {"mode_m", sp.mode_m ? json(*sp.mode_m) : json(nullptr)},
+          {"normal_form", sp.normal_form ? to_json(*sp.normal_form) : json(nullptr)}};
 }
 
 // ---- reading: every access names the key path and the file ----
@@ -286,6 +287,10 @@ SpecialPoint read_special_point(const Reader& rd, const json& o, const std::stri
   // A BP's mode (files before it was reported have none: the mode stays unknown).
   for (const auto& [key, mode] : {std::pair{"mode_l", &sp.mode_l}, std::pair{"mode_m", &sp.mode_m}})
     if (o.contains(key) && !o.at(key).is_null()) *mode = rd.small_int(o, key, at);
+  // The normal form (files before it was computed have none).
+  if (o.contains("normal_form") && !o.at("normal_form").is_null())
+    sp.normal_form =
+        rd.checked(Reader::join(at, "normal_form"), [&] { return normal_form_from_json(o.at("normal_form")); });
   return sp;
 }
 

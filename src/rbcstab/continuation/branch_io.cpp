@@ -153,7 +153,8 @@ std::string mode_text(const SpecialPoint& sp) {
 void special_lines(std::ostream& os, const Branch& b, const std::string& parameter, const char* indent) {
   for (const auto& sp : b.special_points)
     os << indent << sp.name << " " << parameter << " = " << sp.p << " (" << to_string(sp.status) << ", precision "
-       << sp.precision << ", unstable " << sp.unstable_before << " -> " << sp.unstable_after << mode_text(sp) << ")\n";
+       << sp.precision << ", unstable " << sp.unstable_before << " -> " << sp.unstable_after << mode_text(sp) << ")"
+       << (sp.normal_form ? "; " + to_text(*sp.normal_form, parameter) : "") << "\n";
 }
 
 // The text table's measures: the chosen ones, or the default list those of the branch.
@@ -296,6 +297,7 @@ nlohmann::json to_json(const MeasuredBranch& m) {
       const std::string d = mode_direction(sp);
       j["mode_direction"] = sp.mode_l && !d.empty() ? nlohmann::json(d) : nlohmann::json(nullptr);
     }
+    if (sp.normal_form) j["normal_form"] = to_json(*sp.normal_form);
     put_stability(j, sp);
     sps.push_back(j);
   }

@@ -10,6 +10,7 @@
 #include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/detail/continuation_engine.hpp"
+#include "rbcstab/continuation/normal_form_analysis.hpp"
 #include "rbcstab/continuation/tunable_options.hpp"
 #include "rbcstab/core/error.hpp"
 
@@ -392,12 +393,16 @@ Branch continue_branch(const ContinuationProblem& problem, const Eigen::VectorXd
     add_counters(out.counters, e.counters);
     return b;
   };
+  auto with_normal_forms = [&](Branch b) {
+    if (options.normal_forms && problem.stability_kind() == StabilityKind::eigenvalues) attach_normal_forms(problem, b);
+    return b;
+  };
   if (options.direction != Direction::both)
-    return [&] {
+    return with_normal_forms([&] {
       Branch b = run(options.direction == Direction::forward ? 1.0 : -1.0);
       b.counters = out.counters;
       return b;
-    }();
+    }());
   Branch back = run(-1.0);
   Branch fwd = run(1.0);
   // Backward part reversed (without its start point), then the forward part.
@@ -430,7 +435,7 @@ Branch continue_branch(const ContinuationProblem& problem, const Eigen::VectorXd
   out.status = fwd.status != ContinuationStatus::completed ? fwd.status : back.status;
   out.message = "backward: " + (back.message.empty() ? to_string(back.status) : back.message) +
                 "; forward: " + (fwd.message.empty() ? to_string(fwd.status) : fwd.message);
-  return out;
+  return with_normal_forms(std::move(out));
 }
 
 }  // namespace rbcstab

@@ -12,6 +12,7 @@
 #include <vector>
 #include "rbcstab/continuation/dense.hpp"
 
+#include "rbcstab/continuation/normal_form.hpp"
 #include "rbcstab/continuation/problem.hpp"
 #include "rbcstab/continuation/stability_certificate.hpp"
 #include "rbcstab/core/enum_table.hpp"
@@ -96,6 +97,9 @@ struct ContinuationOptions {
   // special point found in it is located (a jump to a nearby branch leaves an unlocatable change); else it is
   // halved and retried, down to min_step (then status branch_lost). false: the old rule (for diagnosis).
   bool confirm_special_points = true;
+  // The normal form of every located LP, BP and HB of an equilibrium branch (normal_form_analysis.hpp): a few
+  // hundred residuals and one dense SVD or eigen-decomposition per point.
+  bool normal_forms = true;
   std::vector<UserEvent> events;  // user zero crossings -> UZ
   // Optional user stop: return true to end the branch after this point.
   std::function<bool(const Eigen::VectorXd& x, double p)> stop;
@@ -141,6 +145,9 @@ struct SpecialPoint {
   // A BP or HB of modal/full equilibria: the mode (l, and m where the coordinates resolve it) carrying the
   // critical eigenvector (HB: its pair's); unset where no mode carries 90 % of it (or for other problems).
   std::optional<int> mode_l, mode_m;
+  // LP, BP, HB of equilibrium branches with ContinuationOptions::normal_forms (unset otherwise, and in files
+  // written before it was computed).
+  std::optional<NormalForm> normal_form;
 };
 
 struct ContinuationCounters {

@@ -56,7 +56,8 @@ json to_json(const PlotSpec& spec) {
                       {"stability", p.stability},
                       {"series", p.series},
                       {"marker", p.marker},
-                      {"text", p.text}});
+                      {"text", p.text},
+                      {"criticality", p.criticality}});
   // The legend's line-style key: the stabilities drawn, in a fixed order.
   json styles = json::array();
   for (const char* s : {"stable", "unstable", "uncertain"})

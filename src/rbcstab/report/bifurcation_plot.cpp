@@ -213,6 +213,14 @@ PlotSeries make_series(const SeriesSource& src, const Axes& axes, std::size_t in
     q.marker = marker;
     q.text = q.type.empty() ? (q.label ? std::to_string(*q.label) : "")
                             : q.type + (q.label ? " " + std::to_string(*q.label) : "");
+    // Sub/supercritical from the point's normal form (continuation/normal_form.hpp), marked in the text.
+    if (const auto nf = p.find("normal_form"); nf != p.end() && nf->is_object() && nf->contains("criticality")) {
+      const std::string c = nf->at("criticality").is_string() ? nf->at("criticality").get<std::string>() : "";
+      if (c == "supercritical" || c == "subcritical") {
+        q.criticality = c;
+        q.text += c == "supercritical" ? " super" : " sub";
+      }
+    }
     points.push_back(q);
   };
   auto mark = [&](const json& sp) {

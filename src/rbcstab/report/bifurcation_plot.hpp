@@ -72,6 +72,7 @@ struct PlotPoint {
   std::size_t series = 0;    // index into PlotSpec::series
   std::string marker;        // special, end (EP), regular
   std::string text;          // drawn beside the marker ("BP 3"; coinciding points share one: "LP 2, BP 3"; "" none)
+  std::string criticality;   // a special point's normal form: supercritical or subcritical ("" otherwise)
 };
 
 struct PlotAxis {

@@ -22,8 +22,9 @@ def _renderer(fig):
 
 def draw_bifurcation(ax, s, source="plot spec"):
     """Renders the PlotSpec s (a dict) into ax: each series in its colour, its segments in their line styles
-    (stable solid, unstable dashed, uncertain dotted), the points' markers and texts ("BP 3"), the axes'
-    labels and the title. Nothing is decided here. Returns ax."""
+    (stable solid, unstable dashed, uncertain dotted), the points' markers (a normal form's supercritical point
+    filled, subcritical a diamond) and texts ("BP 3 super"), the axes' labels and the title. Nothing is decided
+    here. Returns ax."""
     if s.get("format") != "rbcstab-plot":
         raise ValueError(f"{source}: not a plot spec (format {s.get('format')!r}, expected 'rbcstab-plot')")
     fig = ax.figure
@@ -41,10 +42,17 @@ def draw_bifurcation(ax, s, source="plot spec"):
     marker = {"special": dict(marker="o", ms=7, mfc="white", mew=1.6),
               "end": dict(marker="s", ms=5, mew=1.2, mfc="white"),
               "regular": dict(marker=".", ms=6)}
+    # A special point's normal form (the spec's "criticality"): supercritical filled, subcritical a diamond.
+    critical = {"supercritical": dict(marker="o", ms=7, mew=1.6), "subcritical": dict(marker="D", ms=6.5, mfc="white",
+                                                                                      mew=1.6)}
     shown = [p for p in s["points"] if p["x"] is not None and p["y"] is not None]
     for p in shown:
         c = colour(p["series"])
-        ax.plot([p["x"]], [p["y"]], ls="none", color=c, mec=c, zorder=4, **marker.get(p["marker"], marker["special"]))
+        style = critical.get(p.get("criticality", ""), marker.get(p["marker"], marker["special"]))
+        ax.plot([p["x"]], [p["y"]], ls="none", color=c, mec=c, zorder=4, **style)
+    for name in ("supercritical", "subcritical"):
+        if any(p.get("criticality") == name for p in shown):
+            handles.append(Line2D([], [], ls="none", color="0.4", mec="0.4", label=name, **critical[name]))
     ax.margins(x=0.04, y=0.06)
     x0, x1 = ax.get_xlim()
     renderer = _renderer(fig)
