@@ -5,6 +5,9 @@
 // whose branches cross at right angles in the kernel up to scaling; for a transcritical point it is
 // the component that leaves the known branch). Predictor X_bp + h d, Newton on [F; d.(X - X_bp) - h],
 // then the engine continues away from the BP.
+#include <array>
+#include <string>
+
 #include "rbcstab/continuation/continuation.hpp"
 
 namespace rbcstab {
@@ -27,7 +30,21 @@ struct BranchSwitchResult {
   Branch branch;                            // the bifurcating branch, starting next to the BP
 };
 
-// bp must be a special point of type BP of `branch` (continued with `problem`).
+// The first point of the bifurcating branch (the corrector's result) and the way away from the BP, before it is
+// continued: what recursive diagrams (bifurcation_tree.hpp) check for duplicates before following it.
+struct BranchSwitchStart {
+  bool found = false;  // false: message says why
+  std::string message;
+  Eigen::VectorXd direction;  // d in (x, p), unit
+  std::array<double, 3> singular_values{};
+  Eigen::VectorXd x;  // the first point
+  double p = 0;
+  Direction away = Direction::forward;  // the continuation direction that leaves the BP
+};
+BranchSwitchStart switch_start(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& bp,
+                               const BranchSwitchOptions& options = {});
+
+// bp must be a special point of type BP of `branch` (continued with `problem`): switch_start, then continued.
 BranchSwitchResult switch_branch(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& bp,
                                  const BranchSwitchOptions& options = {});
 
