@@ -31,7 +31,7 @@ BranchSpec onset_spec() {
 
 const BifurcationDiagram& onset_diagram() {
   static const BifurcationDiagram d = [] {
-    DiagramSpec s;
+    BifurcationDiagramSpec s;
     s.start = onset_spec();
     s.depth = 1;
     return bifurcation_diagram(s);
@@ -71,7 +71,9 @@ TEST(BifurcationDiagram, ModalOnsetDepthOneReproducesTheSwitchByHand) {
   for (const DiagramBranch& b : d.branches) {
     for (int l : b.branch.point_labels) n += l > 0 ? 1 : 0, labels.insert(l);
     for (int l : b.branch.special_labels) n += l > 0 ? 1 : 0, labels.insert(l);
-    if (b.number > 1) EXPECT_EQ(b.parent, 1);
+    if (b.number > 1) {
+      EXPECT_EQ(b.parent, 1);
+    }
   }
   labels.erase(0);
   EXPECT_EQ(labels.size(), n);
@@ -97,7 +99,8 @@ TEST(BifurcationDiagram, TreeJsonAndBranchFilesRestart) {
   // A child of the l = 3 BP, saved and loaded: its label of the l = 4 BP (C = 1/60) switches like any run's.
   std::size_t child = 0;
   for (std::size_t k = 1; k < d.branches.size(); ++k)
-    if (d.branches[k].side == 1 && std::abs(d.branches[k].branch.number(0, "sigma") - sigma_crit(3, 1 / 0.0361689)) < 1e-3)
+    if (d.branches[k].side == 1 &&
+        std::abs(d.branches[k].branch.number(0, "sigma") - sigma_crit(3, 1 / 0.0361689)) < 1e-3)
       child = k;
   ASSERT_GT(child, 0u);
   const nlohmann::json file = diagram_branch_file(d, child);
@@ -111,7 +114,7 @@ TEST(BifurcationDiagram, TreeJsonAndBranchFilesRestart) {
 
 // Bad input names the field; a spec that asks for switch_at_bp as well is refused.
 TEST(BifurcationDiagram, BadInputNamesTheField) {
-  DiagramSpec s;
+  BifurcationDiagramSpec s;
   s.start = onset_spec();
   s.depth = -1;
   try {

@@ -138,7 +138,9 @@ TEST(BranchTree, MirrorSymmetriesMarkTheCopiesInsteadOfFollowingThem) {
   ASSERT_EQ(t.branches.size(), 3u);
   EXPECT_EQ(count(t, EmanationOutcome::symmetric), 2);
   for (const TreeEmanation& e : t.emanations)
-    if (e.outcome == EmanationOutcome::symmetric) EXPECT_EQ(e.branch_to, e.branch + 1);
+    if (e.outcome == EmanationOutcome::symmetric) {
+      EXPECT_EQ(e.branch_to, e.branch + 1);
+    }
 }
 
 TEST(BranchTree, TheSameBranchReachedFromTwoBPsIsFollowedOnce) {

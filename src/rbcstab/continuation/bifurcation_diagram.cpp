@@ -6,6 +6,7 @@
 #include <cmath>
 #include <sstream>
 #include <utility>
+#include <variant>
 
 #include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/continuation/branch_io.hpp"
@@ -61,9 +62,15 @@ std::string range_text(const Branch& b) {
   return std::to_string(b.points.size()) + " points from " + format_value(lo->p) + " to " + format_value(hi->p);
 }
 
+// save_diagram's file of branch k beside the tree: "<stem>.b<K>.json".
+std::string branch_path(const std::string& path, std::size_t k) {
+  const bool json = path.size() > 5 && path.substr(path.size() - 5) == ".json";
+  return (json ? path.substr(0, path.size() - 5) : path) + ".b" + std::to_string(k + 1) + ".json";
+}
+
 }  // namespace
 
-void DiagramSpec::validate() const {
+void BifurcationDiagramSpec::validate() const {
   start.validate();
   require(!start.switch_at_bp, "switch_at_bp", 1, "false: the diagram switches at every BP");
   TreeOptions o;
@@ -80,7 +87,7 @@ bool BifurcationDiagram::complete() const {
   });
 }
 
-BifurcationDiagram bifurcation_diagram(const DiagramSpec& spec) {
+BifurcationDiagram bifurcation_diagram(const BifurcationDiagramSpec& spec) {
   spec.validate();
   BranchSpec start_spec = spec.start;
   if (spec.stop) {
@@ -140,11 +147,27 @@ BifurcationDiagram bifurcation_diagram(const DiagramSpec& spec) {
     e.message = t.message;
     if (t.branch_to >= 0) e.branch_to = t.branch_to + 1;
     if (t.point_to >= 0)
-      e.label_to = d.branches[static_cast<std::size_t>(t.branch_to)].branch.special_labels[static_cast<std::size_t>(
-          t.point_to)];
+      e.label_to =
+          d.branches[static_cast<std::size_t>(t.branch_to)].branch.special_labels[static_cast<std::size_t>(t.point_to)];
     d.emanations.push_back(std::move(e));
   }
   return d;
+}
+
+RunOutcome outcome(const BifurcationDiagram& d) {
+  RunOutcome o = outcome(d.start);
+  if (!o.has_output) return o;
+  const auto add = [&](const std::string& why) { o.failure += (o.failure.empty() ? "" : "; ") + why; };
+  for (std::size_t k = 1; k < d.branches.size(); ++k)
+    if (const Branch& b = d.branches[k].branch.branch; !ended_normally(b.status))
+      add("branch " + std::to_string(k + 1) + ": continuation stopped: " + to_string(b.status) + ": " + b.message);
+  for (const DiagramEmanation& e : d.emanations)
+    if (e.outcome == EmanationOutcome::failed)
+      add("switching at label " + std::to_string(e.label) + " (side " + side_text(e.side) + ") failed: " + e.message);
+  if (!d.complete())
+    add(d.interrupted ? "interrupted: the diagram is incomplete (it does not resume: run it again)"
+                      : "max_branches reached: the diagram is incomplete");
+  return o;
 }
 
 SceneBranch diagram_run(const BifurcationDiagram& d, std::size_t k) {
@@ -162,8 +185,7 @@ SceneBranch diagram_run(const BifurcationDiagram& d, std::size_t k) {
     const BranchPoint& p0 = br.points.front();
     r.spec.start_state = p0.x;
     r.spec.start_parameter = p0.p;
-    r.spec.engine.direction =
-        br.points.size() > 1 && br.points[1].p < p0.p ? Direction::backward : Direction::forward;
+    r.spec.engine.direction = br.points.size() > 1 && br.points[1].p < p0.p ? Direction::backward : Direction::forward;
     r.start.method = StartMethod::restart;
     r.start.x = p0.x;
     r.start.p = p0.p;
@@ -219,7 +241,8 @@ nlohmann::json to_json(const BifurcationDiagram& d) {
                      {"outcome", to_string(e.outcome)},
                      {"branch_to", e.branch_to > 0 ? nlohmann::json(e.branch_to) : nlohmann::json()},
                      {"label_to", e.label_to > 0 ? nlohmann::json(e.label_to) : nlohmann::json()},
-                     {"message", outcome_text(e)}};
+                     {"message", outcome_text(e)},
+                     {"detail", e.message}};
     points.push_back(std::move(j));
   }
   return {{"format", "rbcstab-diagram"},
@@ -250,7 +273,9 @@ std::string to_text(const BifurcationDiagram& d) {
   const std::string q = to_string(d.start.spec.parameter);
   out << "bifurcation diagram in " << q << " to depth " << d.depth << ": " << d.branches.size() << " branch"
       << (d.branches.size() == 1 ? "" : "es")
-      << (d.complete() ? "" : d.interrupted ? " (interrupted: incomplete)" : " (max_branches reached: incomplete)")
+      << (d.complete()    ? ""
+          : d.interrupted ? " (interrupted: incomplete)"
+                          : " (max_branches reached: incomplete)")
       << "\n";
   for (const DiagramBranch& b : d.branches) {
     const Branch& br = b.branch.branch;
@@ -273,16 +298,83 @@ std::string to_text(const BifurcationDiagram& d) {
 }
 
 std::vector<std::string> save_diagram(const std::string& path, const BifurcationDiagram& d, const std::string& flag) {
-  const std::string stem = path.size() > 5 && path.substr(path.size() - 5) == ".json" ? path.substr(0, path.size() - 5)
-                                                                                       : path;
   std::vector<OutputFile> files{{path, to_json(d).dump(1) + "\n", flag}};
   std::vector<std::string> paths;
   for (std::size_t k = 0; k < d.branches.size(); ++k) {
-    paths.push_back(stem + ".b" + std::to_string(k + 1) + ".json");
+    paths.push_back(branch_path(path, k));
     files.push_back({paths.back(), diagram_branch_file(d, k).dump(1) + "\n", flag});
   }
   write_files_atomic(files);
   return paths;
+}
+
+BifurcationDiagram parse_diagram(const std::string& tree, const std::vector<std::string>& branch_files,
+                                 const std::string& source, const std::string& name) {
+  const auto fail = [&](const std::string& why) -> void {
+    throw InvalidArgument(name, name + " = '" + source + "' is not a valid diagram: " + why);
+  };
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(tree);
+  } catch (const nlohmann::json::exception&) {
+    fail("it is not JSON (a truncated or corrupted file?)");
+  }
+  BifurcationDiagram d;
+  try {
+    if (j.value("format", "") != "rbcstab-diagram") fail("it has no \"format\": \"rbcstab-diagram\"");
+    if (j.at("version") != 1) fail("version " + j.at("version").dump() + ": this build reads version 1");
+    const nlohmann::json& bs = j.at("branches");
+    if (bs.size() != branch_files.size() || bs.empty())
+      fail(std::to_string(bs.size()) + " branches but " + std::to_string(branch_files.size()) + " branch files");
+    d.depth = j.at("depth").get<int>();
+    d.interrupted = j.at("interrupted").get<bool>();
+    for (std::size_t k = 0; k < bs.size(); ++k) {
+      const ContinuationRun run = parse_branch_file(branch_files[k], branch_path(source, k), name);
+      const SceneBranch* r = std::get_if<SceneBranch>(&run);
+      if (!r) fail("branch file " + std::to_string(k + 1) + " holds a curve");
+      if (k == 0) d.start = *r;
+      DiagramBranch b;
+      b.number = static_cast<int>(k) + 1;
+      b.parent = bs[k].at("parent").is_null() ? 0 : bs[k].at("parent").get<int>();
+      b.parent_label = bs[k].at("parent_label").is_null() ? 0 : bs[k].at("parent_label").get<int>();
+      b.side = bs[k].at("side").get<int>();
+      b.depth = bs[k].at("depth").get<int>();
+      if ((k == 0) != (b.parent == 0) || b.parent < 0 || b.parent > static_cast<int>(k))
+        fail("branches[" + std::to_string(k) + "].parent " + std::to_string(b.parent) + " is not an earlier branch");
+      b.branch = r->branch;
+      d.branches.push_back(std::move(b));
+    }
+    for (const nlohmann::json& e : j.at("special_points")) {
+      DiagramEmanation x;
+      x.branch = e.at("branch").get<int>();
+      x.label = e.at("label").get<int>();
+      const auto type = try_from_string<SpecialPointType>(e.at("type").get<std::string>());
+      const auto outcome = try_from_string<EmanationOutcome>(e.at("outcome").get<std::string>());
+      if (!type || !outcome || x.branch < 1 || x.branch > static_cast<int>(d.branches.size()))
+        fail("special point " + e.dump() + " names no branch, type or outcome of this build");
+      x.type = *type;
+      x.side = e.at("side").get<int>();
+      x.outcome = *outcome;
+      x.branch_to = e.at("branch_to").is_null() ? 0 : e.at("branch_to").get<int>();
+      x.label_to = e.at("label_to").is_null() ? 0 : e.at("label_to").get<int>();
+      x.message = e.at("detail").get<std::string>();
+      const auto& labels = d.branches[static_cast<std::size_t>(x.branch - 1)].branch.special_labels;
+      if (std::find(labels.begin(), labels.end(), x.label) == labels.end())
+        fail("special point label " + std::to_string(x.label) + " is not a special point of its branch");
+      d.emanations.push_back(std::move(x));
+    }
+  } catch (const nlohmann::json::exception& e) {
+    fail(std::string("a key is missing or of the wrong type (") + e.what() + ")");
+  }
+  return d;
+}
+
+BifurcationDiagram load_diagram(const std::string& path, const std::string& name) {
+  const std::string tree = read_file(path, name);
+  std::vector<std::string> files;
+  const std::size_t n = nlohmann::json::parse(tree, nullptr, false).value("branches", nlohmann::json::array()).size();
+  for (std::size_t k = 0; k < n; ++k) files.push_back(read_file(branch_path(path, k), name));
+  return parse_diagram(tree, files, path, name);
 }
 
 }  // namespace rbcstab

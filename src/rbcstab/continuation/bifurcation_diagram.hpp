@@ -19,17 +19,19 @@
 #include "rbcstab/continuation/branch_tree.hpp"
 #include "rbcstab/continuation/scene_branch.hpp"
 #include "rbcstab/continuation/scene_measures.hpp"
+#include "rbcstab/continuation/scene_run.hpp"
 
 namespace rbcstab {
 
-struct DiagramSpec {
+struct BifurcationDiagramSpec {
   BranchSpec start;  // the start branch (switch_at_bp must be false: the diagram switches at every BP)
   int depth = 1;     // 0: the start branch only; 1: and the branches emanating from its BPs; ... In [0, 20]
   double amplitude = BranchSwitchOptions{}.amplitude;  // the predictor step off a BP (branch_switch.hpp)
   double duplicate_tol = TreeOptions{}.duplicate_tol;  // same point / same branch (branch_tree.hpp)
   std::size_t max_branches = TreeOptions{}.max_branches;
-  const std::atomic<bool>* stop = nullptr;  // Ctrl-C (core/interrupt.hpp): the rest is marked interrupted
-  std::function<void(std::size_t done, std::size_t pending)> on_branch;  // progress, after each branch
+  std::function<void(std::size_t done, std::size_t pending)> on_branch = {};  // progress, after each branch
+  // Ctrl-C (core/interrupt.hpp): the rest is marked interrupted. Last: a front end sets start, depth and stop.
+  const std::atomic<bool>* stop = nullptr;
   void validate() const;  // throws InvalidArgument naming the field (and as BranchSpec::validate)
 };
 
@@ -64,7 +66,11 @@ struct BifurcationDiagram {
   bool complete() const;
 };
 
-BifurcationDiagram bifurcation_diagram(const DiagramSpec& spec);
+BifurcationDiagram bifurcation_diagram(const BifurcationDiagramSpec& spec);
+
+// How it ended, for a front end (scene_run.hpp): no output when the start failed; a failure when the diagram is
+// incomplete (interrupted, max_branches), a branch stopped before a normal end or a switch failed.
+RunOutcome outcome(const BifurcationDiagram& d);
 
 // Branch k (0-based) as a run of its own, for restarts, plots and branch files: the start branch is `start`;
 // an emanating branch has the start branch's spec with its first point as the start (StartMethod::restart)
@@ -87,5 +93,11 @@ std::string to_text(const BifurcationDiagram& d);
 // atomically together (io/files.hpp); returns the branch files' paths.
 std::vector<std::string> save_diagram(const std::string& path, const BifurcationDiagram& d,
                                       const std::string& flag = "save");
+// The diagram back from its tree JSON and its branch files (in branch order), each checked (parse_branch_file);
+// to_json of the result equals the saved tree. Throws InvalidArgument(name, ...) naming what is wrong.
+BifurcationDiagram parse_diagram(const std::string& tree, const std::vector<std::string>& branch_files,
+                                 const std::string& source, const std::string& name = "diagram");
+// save_diagram's files read back.
+BifurcationDiagram load_diagram(const std::string& path, const std::string& name = "diagram");
 
 }  // namespace rbcstab

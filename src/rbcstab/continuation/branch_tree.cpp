@@ -20,7 +20,9 @@ Eigen::VectorXd packed(const Eigen::VectorXd& x, double p) {
   return X;
 }
 
-double max_norm_distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b) { return (a - b).lpNorm<Eigen::Infinity>(); }
+double max_norm_distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return (a - b).lpNorm<Eigen::Infinity>();
+}
 
 bool same_point(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double tol) {
   return a.size() == b.size() && max_norm_distance(a, b) <= tol * (1 + a.lpNorm<Eigen::Infinity>());
@@ -71,8 +73,8 @@ bool lies_on(const ContinuationProblem& problem, const Branch& b, const Eigen::V
   Eigen::VectorXd foot, A, u;
   for (std::size_t k = 0; k + 1 < std::max<std::size_t>(pts.size(), 2); ++k) {
     Eigen::VectorXd a = packed(pts[k].x, pts[k].p);
-    const Eigen::VectorXd d = pts.size() > 1 ? Eigen::VectorXd(packed(pts[k + 1].x, pts[k + 1].p) - a)
-                                             : Eigen::VectorXd::Zero(X.size());
+    const Eigen::VectorXd d =
+        pts.size() > 1 ? Eigen::VectorXd(packed(pts[k + 1].x, pts[k + 1].p) - a) : Eigen::VectorXd::Zero(X.size());
     const double dd = d.squaredNorm();
     const double s = dd > 0 ? std::clamp(d.dot(X - a) / dd, 0.0, 1.0) : 0.0;
     const Eigen::VectorXd f = a + s * d;
@@ -230,9 +232,8 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
           tree.interrupted = true;
           child.message = "interrupted after " + std::to_string(child.points.size()) + " points";
         }
-        tree.branches.push_back(
-            {std::move(child), s.problem ? s.problem : tree.branches[i].problem, b, static_cast<int>(j), s.side,
-             tree.branches[i].depth + 1});
+        tree.branches.push_back({std::move(child), s.problem ? s.problem : tree.branches[i].problem, b,
+                                 static_cast<int>(j), s.side, tree.branches[i].depth + 1});
         mark(b, j, s.side, EmanationOutcome::followed, static_cast<int>(tree.branches.size()) - 1);
         if (options.on_branch) options.on_branch(tree.branches.size(), tree.branches.size() - i - 1);
       }

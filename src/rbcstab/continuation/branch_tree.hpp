@@ -32,7 +32,7 @@ struct EmanatingStart {
   std::shared_ptr<const ContinuationProblem> problem;
 };
 using Switcher = std::function<std::vector<EmanatingStart>(const ContinuationProblem&, const Branch&,
-                                                            const SpecialPoint&, const BranchSwitchOptions&)>;
+                                                           const SpecialPoint&, const BranchSwitchOptions&)>;
 // The switchers available: BP (both halves of the bifurcating branch, switch_start). HB, PD: none yet.
 std::map<SpecialPointType, Switcher> default_switchers();
 // Whether other branches emanate from a special point of this type (BP, HB, PD, NS), switcher or not.
@@ -53,35 +53,31 @@ enum class EmanationOutcome {
 };
 template <>
 struct EnumTable<EmanationOutcome> {
-  static constexpr EnumName<EmanationOutcome> entries[] = {{EmanationOutcome::followed, "followed"},
-                                                           {EmanationOutcome::duplicate, "duplicate"},
-                                                           {EmanationOutcome::symmetric, "symmetric"},
-                                                           {EmanationOutcome::already_switched, "already_switched"},
-                                                           {EmanationOutcome::not_available, "not_available"},
-                                                           {EmanationOutcome::not_located, "not_located"},
-                                                           {EmanationOutcome::depth_limit, "depth_limit"},
-                                                           {EmanationOutcome::failed, "failed"},
-                                                           {EmanationOutcome::interrupted, "interrupted"},
-                                                           {EmanationOutcome::branch_limit, "branch_limit"}};
+  static constexpr EnumName<EmanationOutcome> entries[] = {
+      {EmanationOutcome::followed, "followed"},           {EmanationOutcome::duplicate, "duplicate"},
+      {EmanationOutcome::symmetric, "symmetric"},         {EmanationOutcome::already_switched, "already_switched"},
+      {EmanationOutcome::not_available, "not_available"}, {EmanationOutcome::not_located, "not_located"},
+      {EmanationOutcome::depth_limit, "depth_limit"},     {EmanationOutcome::failed, "failed"},
+      {EmanationOutcome::interrupted, "interrupted"},     {EmanationOutcome::branch_limit, "branch_limit"}};
 };
 
 struct TreeBranch {
   Branch branch;
   std::shared_ptr<const ContinuationProblem> problem;  // null: the start branch's problem
-  int parent = -1;        // index of the branch it emanates from; -1: the start branch
-  int parent_point = -1;  // index of that special point in the parent's special_points
+  int parent = -1;                                     // index of the branch it emanates from; -1: the start branch
+  int parent_point = -1;                               // index of that special point in the parent's special_points
   int side = 0;
   int depth = 0;  // 0: the start branch
 };
 
 // One entry per emanating branch tried (side != 0) or per branching point not switched at (side 0).
 struct TreeEmanation {
-  int branch = 0;           // the branch the special point lies on
-  std::size_t point = 0;    // index in its special_points
+  int branch = 0;         // the branch the special point lies on
+  std::size_t point = 0;  // index in its special_points
   int side = 0;
   EmanationOutcome outcome = EmanationOutcome::followed;
-  int branch_to = -1;       // followed: the new branch; duplicate/symmetric/already_switched: the earlier one
-  int point_to = -1;        // already_switched: the earlier special point's index on branch_to
+  int branch_to = -1;  // followed: the new branch; duplicate/symmetric/already_switched: the earlier one
+  int point_to = -1;   // already_switched: the earlier special point's index on branch_to
   std::string message;
 };
 
@@ -98,7 +94,7 @@ struct TreeOptions {
   // Maps of the state that leave F invariant (x -> g x at the same p, e.g. a mirror): a branch whose first
   // point one of them maps onto an earlier branch is that branch's copy (EmanationOutcome::symmetric).
   std::vector<std::function<Eigen::VectorXd(const Eigen::VectorXd&)>> symmetries;
-  std::size_t max_branches = 200;  // the start branch included, in [1, 10000]
+  std::size_t max_branches = 200;                                        // the start branch included, in [1, 10000]
   std::map<SpecialPointType, Switcher> switchers = default_switchers();  // the dispatch point
   // Events of an emanating branch (monitors), built at its first point.
   std::function<std::vector<UserEvent>(const Eigen::VectorXd& x0, double p0)> events;
