@@ -23,7 +23,7 @@ from .progress import progress_bar
 from ._rbcstab import Scene
 
 __all__ = ["continuation", "load_branch", "plot_branches", "Branch", "Curve", "ContinuationError",
-           "ContinuationWarning", "TUNABLE_OPTIONS", "bifurcation_diagram", "load_diagram", "Diagram"]
+           "ContinuationWarning", "TUNABLE_OPTIONS", "bifurcation_diagram", "load_diagram", "BifurcationDiagram"]
 
 
 class ContinuationError(RuntimeError):
@@ -167,7 +167,7 @@ def bifurcation_diagram(scene, depth=1, kind="equilibrium", parameter="lambda", 
     step off a BP (1e-3); duplicate_tol: two points are the same within it (1e-7, below amplitude / 10);
     max_branches: at most this many branches (200). progress and Ctrl-C as :func:`continuation`.
 
-    Returns a :class:`Diagram`. Raises ValueError / TypeError for bad input, ContinuationError when the start
+    Returns a :class:`BifurcationDiagram`. Raises ValueError / TypeError for bad input, ContinuationError when the start
     fails; an incomplete diagram, a branch that ended early or a failed switch gives a ContinuationWarning."""
     if not isinstance(scene, Scene):
         raise TypeError(f"scene must be a rbcstab.Scene, got {type(scene).__name__}")
@@ -190,13 +190,13 @@ def bifurcation_diagram(scene, depth=1, kind="equilibrium", parameter="lambda", 
     for message in (note, failure):
         if message:
             warnings.warn(message, ContinuationWarning, stacklevel=2)
-    return Diagram(d)
+    return BifurcationDiagram(d)
 
 
 def load_diagram(path):
-    """The diagram ``rbcstab continue --diagram N --save path`` (or :meth:`Diagram.save`) wrote: the tree and its
+    """The diagram ``rbcstab continue --diagram N --save path`` (or :meth:`BifurcationDiagram.save`) wrote: the tree and its
     branch files beside it, each checked."""
-    return Diagram(_rbcstab.load_diagram(os.fspath(path)))
+    return BifurcationDiagram(_rbcstab.load_diagram(os.fspath(path)))
 
 
 def load_branch(path):
@@ -482,7 +482,7 @@ class Curve(Branch):
         return Branch(self._run, "one_parameter")
 
 
-class Diagram:
+class BifurcationDiagram:
     """A bifurcation diagram (:func:`bifurcation_diagram`, ``rbcstab continue --diagram``): its branches and the
     tree that joins them.
 
@@ -541,7 +541,7 @@ class Diagram:
 
     def __repr__(self):
         j = self._tree_json()
-        return (f"<rbcstab.Diagram {j['kind']} in {j['free_parameter']} to depth {j['depth']}: {len(self)} branches"
+        return (f"<rbcstab.BifurcationDiagram {j['kind']} in {j['free_parameter']} to depth {j['depth']}: {len(self)} branches"
                 + ("" if j["complete"] else ", incomplete") + ">")
 
     def plot(self, ax=None, y=None, x=None, title=None, all_labels=False):
@@ -552,4 +552,4 @@ class Diagram:
         return plot_branches(self.branches, ax=ax, x=x, y=y, title=title, all_labels=all_labels, names=names)
 
     def __reduce__(self):
-        return (Diagram, (self._d,))
+        return (BifurcationDiagram, (self._d,))
