@@ -20,19 +20,19 @@ namespace {
 
 using P = ContinuationParameter;
 
-double sigma_crit(int l, double alpha) {
+double diagram_sigma_crit(int l, double alpha) {
   const double Pi = l * (l + 1.0);
   return -(Pi + 4 * alpha / Pi);
 }
 
-BranchSpec onset_spec() {
+BranchSpec diagram_onset_spec() {
   return test::spec_of(modal_fixtures::scene(0.04, 6), ProblemKind::modal, P::C, 0.01, 0.1, Direction::both);
 }
 
 const BifurcationDiagram& onset_diagram() {
   static const BifurcationDiagram d = [] {
     BifurcationDiagramSpec s;
-    s.start = onset_spec();
+    s.start = diagram_onset_spec();
     s.depth = 1;
     return bifurcation_diagram(s);
   }();
@@ -45,7 +45,7 @@ const BifurcationDiagram& onset_diagram() {
 // BranchSwitch's tests).
 TEST(BifurcationDiagram, ModalOnsetDepthOneReproducesTheSwitchByHand) {
   const BifurcationDiagram& d = onset_diagram();
-  const SceneBranch by_hand = continue_scene(onset_spec());
+  const SceneBranch by_hand = continue_scene(diagram_onset_spec());
   ASSERT_EQ(d.branches.size(), 9u);
   EXPECT_TRUE(d.complete());
   const Branch& root = d.branches[0].branch.branch;
@@ -58,7 +58,7 @@ TEST(BifurcationDiagram, ModalOnsetDepthOneReproducesTheSwitchByHand) {
     if (b.parent != 1 || b.parent_label != sw.bp_label) continue;
     ++found;
     for (std::size_t i = 0; i < b.branch.branch.points.size(); ++i)
-      EXPECT_NEAR(b.branch.number(i, "sigma"), sigma_crit(3, 1.0 / b.branch.branch.points[i].p), 1e-10);
+      EXPECT_NEAR(b.branch.number(i, "sigma"), diagram_sigma_crit(3, 1.0 / b.branch.branch.points[i].p), 1e-10);
     if (b.side != 1) continue;
     ASSERT_EQ(b.branch.branch.points.size(), sw.branch.branch.points.size());
     for (std::size_t i = 0; i < sw.branch.branch.points.size(); ++i)
@@ -100,7 +100,7 @@ TEST(BifurcationDiagram, TreeJsonAndBranchFilesRestart) {
   std::size_t child = 0;
   for (std::size_t k = 1; k < d.branches.size(); ++k)
     if (d.branches[k].side == 1 &&
-        std::abs(d.branches[k].branch.number(0, "sigma") - sigma_crit(3, 1 / 0.0361689)) < 1e-3)
+        std::abs(d.branches[k].branch.number(0, "sigma") - diagram_sigma_crit(3, 1 / 0.0361689)) < 1e-3)
       child = k;
   ASSERT_GT(child, 0u);
   const nlohmann::json file = diagram_branch_file(d, child);
@@ -115,7 +115,7 @@ TEST(BifurcationDiagram, TreeJsonAndBranchFilesRestart) {
 // Bad input names the field; a spec that asks for switch_at_bp as well is refused.
 TEST(BifurcationDiagram, BadInputNamesTheField) {
   BifurcationDiagramSpec s;
-  s.start = onset_spec();
+  s.start = diagram_onset_spec();
   s.depth = -1;
   try {
     bifurcation_diagram(s);

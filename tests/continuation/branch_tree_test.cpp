@@ -15,7 +15,7 @@
 namespace rbcstab {
 namespace {
 
-constexpr double kA = 0.5;
+constexpr double kTreeA = 0.5;
 
 class TwoPitchforks final : public ContinuationProblem {
  public:
@@ -23,12 +23,12 @@ class TwoPitchforks final : public ContinuationProblem {
   void residual(const Eigen::VectorXd& v, double p, Eigen::VectorXd& F) const override {
     const double x = v[0], y = v[1];
     F.resize(2);
-    F << x * (p - x * x), y * (x * x - kA - y * y);
+    F << x * (p - x * x), y * (x * x - kTreeA - y * y);
   }
   void jacobian(const Eigen::VectorXd& v, double p, Eigen::MatrixXd& J) const override {
     const double x = v[0], y = v[1];
     J.resize(2, 2);
-    J << p - 3 * x * x, 0, 2 * x * y, x * x - kA - 3 * y * y;
+    J << p - 3 * x * x, 0, 2 * x * y, x * x - kTreeA - 3 * y * y;
   }
   void parameter_derivative(const Eigen::VectorXd& v, double, Eigen::VectorXd& Fp) const override {
     Fp.resize(2);
@@ -53,7 +53,7 @@ class Parabola final : public ContinuationProblem {
   }
 };
 
-TreeOptions options(int depth, double lo, double hi) {
+TreeOptions tree_options(int depth, double lo, double hi) {
   TreeOptions o;
   o.depth = depth;
   o.switching.continuation.p_min = lo;
@@ -62,7 +62,7 @@ TreeOptions options(int depth, double lo, double hi) {
   return o;
 }
 
-Branch trivial(const ContinuationProblem& pr, double lo, double hi) {
+Branch tree_trivial(const ContinuationProblem& pr, double lo, double hi) {
   ContinuationOptions o;
   o.p_min = lo;
   o.p_max = hi;
@@ -71,7 +71,7 @@ Branch trivial(const ContinuationProblem& pr, double lo, double hi) {
   return continue_branch(pr, Eigen::Vector2d::Zero(), 0.5 * (lo + hi) + 0.01, o);
 }
 
-int count(const BranchTree& t, EmanationOutcome o) {
+int count_outcomes(const BranchTree& t, EmanationOutcome o) {
   int n = 0;
   for (const TreeEmanation& e : t.emanations) n += e.outcome == o ? 1 : 0;
   return n;
@@ -79,7 +79,7 @@ int count(const BranchTree& t, EmanationOutcome o) {
 
 TEST(BranchTree, TwoPitchforksDepthOneFindsTheChildPair) {
   const TwoPitchforks pr;
-  const BranchTree t = grow_tree(pr, trivial(pr, -1, 1), options(1, -1, 1));
+  const BranchTree t = grow_tree(pr, tree_trivial(pr, -1, 1), tree_options(1, -1, 1));
   ASSERT_EQ(t.branches.size(), 3u);
   std::set<int> sides;
   for (std::size_t k = 1; k < 3; ++k) {
@@ -96,47 +96,47 @@ TEST(BranchTree, TwoPitchforksDepthOneFindsTheChildPair) {
     // Its own BP, at p = a (x^2 - a = 0), located to the engine's location tolerance; not followed at depth 1.
     const SpecialPoint* bp = find_special_point(c.branch, SpecialPointType::BP);
     ASSERT_NE(bp, nullptr);
-    EXPECT_NEAR(bp->p, kA, 1e-8);
-    EXPECT_NEAR(std::abs(bp->x[0]), std::sqrt(kA), 1e-8);
+    EXPECT_NEAR(bp->p, kTreeA, 1e-8);
+    EXPECT_NEAR(std::abs(bp->x[0]), std::sqrt(kTreeA), 1e-8);
   }
   EXPECT_EQ(sides, (std::set<int>{1, -1}));
-  EXPECT_EQ(count(t, EmanationOutcome::followed), 2);
-  EXPECT_EQ(count(t, EmanationOutcome::depth_limit), 2);
+  EXPECT_EQ(count_outcomes(t, EmanationOutcome::followed), 2);
+  EXPECT_EQ(count_outcomes(t, EmanationOutcome::depth_limit), 2);
   // The two children are on opposite sides: x > 0 on one, x < 0 on the other.
   EXPECT_LT(t.branches[1].branch.points.back().x[0] * t.branches[2].branch.points.back().x[0], 0);
 }
 
 TEST(BranchTree, TwoPitchforksDepthTwoFindsTheFourGrandchildren) {
   const TwoPitchforks pr;
-  const BranchTree t = grow_tree(pr, trivial(pr, -1, 1), options(2, -1, 1));
+  const BranchTree t = grow_tree(pr, tree_trivial(pr, -1, 1), tree_options(2, -1, 1));
   ASSERT_EQ(t.branches.size(), 7u);
   std::set<std::pair<int, int>> quadrants;
   for (const TreeBranch& g : t.branches) {
     if (g.depth != 2) continue;
-    EXPECT_NEAR(g.branch.points.front().p, kA, 1e-5);  // starts next to the secondary BP
+    EXPECT_NEAR(g.branch.points.front().p, kTreeA, 1e-5);  // starts next to the secondary BP
     EXPECT_DOUBLE_EQ(g.branch.points.back().p, 1.0);
     for (const BranchPoint& q : g.branch.points) {
       EXPECT_NEAR(q.x[0] * q.x[0], q.p, 1e-10);
-      EXPECT_NEAR(q.x[1] * q.x[1], q.p - kA, 1e-10);
+      EXPECT_NEAR(q.x[1] * q.x[1], q.p - kTreeA, 1e-10);
     }
     const auto& e = g.branch.points.back().x;
     quadrants.insert({e[0] > 0 ? 1 : -1, e[1] > 0 ? 1 : -1});
   }
   EXPECT_EQ(quadrants.size(), 4u);
-  EXPECT_EQ(count(t, EmanationOutcome::followed), 6);
-  EXPECT_EQ(count(t, EmanationOutcome::duplicate), 0);
+  EXPECT_EQ(count_outcomes(t, EmanationOutcome::followed), 6);
+  EXPECT_EQ(count_outcomes(t, EmanationOutcome::duplicate), 0);
 }
 
 TEST(BranchTree, MirrorSymmetriesMarkTheCopiesInsteadOfFollowingThem) {
   const TwoPitchforks pr;
-  TreeOptions o = options(2, -1, 1);
+  TreeOptions o = tree_options(2, -1, 1);
   o.symmetries = {[](const Eigen::VectorXd& v) { return Eigen::VectorXd(Eigen::Vector2d(-v[0], v[1])); },
                   [](const Eigen::VectorXd& v) { return Eigen::VectorXd(Eigen::Vector2d(v[0], -v[1])); }};
-  const BranchTree t = grow_tree(pr, trivial(pr, -1, 1), o);
+  const BranchTree t = grow_tree(pr, tree_trivial(pr, -1, 1), o);
   // Root, one child, one grandchild: the other child is the x-mirror of the first, the other grandchild the
   // y-mirror of the first; the mirror child's BP is never reached (it is not followed).
   ASSERT_EQ(t.branches.size(), 3u);
-  EXPECT_EQ(count(t, EmanationOutcome::symmetric), 2);
+  EXPECT_EQ(count_outcomes(t, EmanationOutcome::symmetric), 2);
   for (const TreeEmanation& e : t.emanations)
     if (e.outcome == EmanationOutcome::symmetric) {
       EXPECT_EQ(e.branch_to, e.branch + 1);
@@ -145,7 +145,7 @@ TEST(BranchTree, MirrorSymmetriesMarkTheCopiesInsteadOfFollowingThem) {
 
 TEST(BranchTree, TheSameBranchReachedFromTwoBPsIsFollowedOnce) {
   const Parabola pr;
-  const BranchTree t = grow_tree(pr, trivial(pr, -2, 2), options(2, -2, 2));
+  const BranchTree t = grow_tree(pr, tree_trivial(pr, -2, 2), tree_options(2, -2, 2));
   // The trivial branch and the two halves of the parabola from p = -1; from p = 1 both halves lie on the one
   // that passed through it, and that half's own BP at p = 1 is the trivial branch's.
   ASSERT_EQ(t.branches.size(), 3u);
@@ -155,7 +155,7 @@ TEST(BranchTree, TheSameBranchReachedFromTwoBPsIsFollowedOnce) {
     if (t.branches[k].branch.points.back().p > 1.5) through = static_cast<int>(k);
   }
   ASSERT_GT(through, 0);
-  EXPECT_EQ(count(t, EmanationOutcome::duplicate), 2);
+  EXPECT_EQ(count_outcomes(t, EmanationOutcome::duplicate), 2);
   for (const TreeEmanation& e : t.emanations) {
     if (e.outcome == EmanationOutcome::duplicate) {
       EXPECT_EQ(e.branch, 0);
@@ -167,14 +167,14 @@ TEST(BranchTree, TheSameBranchReachedFromTwoBPsIsFollowedOnce) {
       EXPECT_EQ(e.branch_to, 0);
     }
   }
-  EXPECT_EQ(count(t, EmanationOutcome::already_switched), 1);
+  EXPECT_EQ(count_outcomes(t, EmanationOutcome::already_switched), 1);
 }
 
 TEST(BranchTree, LiesOnSeparatesTheBranchFromOneNextToIt) {
   // The check the duplicates rest on can fail: a point of the parabola lies on the parabola's branch, not on the
   // trivial branch it crosses, and a point 1e-3 off the parabola (the switching amplitude) lies on neither.
   const Parabola pr;
-  const BranchTree t = grow_tree(pr, trivial(pr, -2, 2), options(1, -2, 2));
+  const BranchTree t = grow_tree(pr, tree_trivial(pr, -2, 2), tree_options(1, -2, 2));
   ASSERT_GE(t.branches.size(), 3u);
   const double p = 1.001, x = p * p - 1;
   const Eigen::Vector3d on(x, x, p), off(x + 1e-3, x + 1e-3, p), trivial_point(0, 0, 0.3);
@@ -188,13 +188,13 @@ TEST(BranchTree, LiesOnSeparatesTheBranchFromOneNextToIt) {
 
 TEST(BranchTree, DepthZeroAndUnavailableSwitchersAreListedNotFollowed) {
   const TwoPitchforks pr;
-  BranchTree t = grow_tree(pr, trivial(pr, -1, 1), options(0, -1, 1));
+  BranchTree t = grow_tree(pr, tree_trivial(pr, -1, 1), tree_options(0, -1, 1));
   ASSERT_EQ(t.branches.size(), 1u);
   ASSERT_EQ(t.emanations.size(), 1u);
   EXPECT_EQ(t.emanations[0].outcome, EmanationOutcome::depth_limit);
-  TreeOptions o = options(1, -1, 1);
+  TreeOptions o = tree_options(1, -1, 1);
   o.switchers.clear();  // as for HB and PD today
-  t = grow_tree(pr, trivial(pr, -1, 1), o);
+  t = grow_tree(pr, tree_trivial(pr, -1, 1), o);
   ASSERT_EQ(t.branches.size(), 1u);
   EXPECT_EQ(t.emanations[0].outcome, EmanationOutcome::not_available);
   EXPECT_EQ(t.emanations[0].message, "switching at BP is not available");
@@ -203,12 +203,12 @@ TEST(BranchTree, DepthZeroAndUnavailableSwitchersAreListedNotFollowed) {
 TEST(BranchTree, StopFlagMarksTheRestInterrupted) {
   const TwoPitchforks pr;
   std::atomic<bool> stop{true};
-  TreeOptions o = options(2, -1, 1);
+  TreeOptions o = tree_options(2, -1, 1);
   o.stop = &stop;
-  const BranchTree t = grow_tree(pr, trivial(pr, -1, 1), o);
+  const BranchTree t = grow_tree(pr, tree_trivial(pr, -1, 1), o);
   EXPECT_TRUE(t.interrupted);
   EXPECT_EQ(t.branches.size(), 1u);
-  EXPECT_EQ(count(t, EmanationOutcome::interrupted), 1);
+  EXPECT_EQ(count_outcomes(t, EmanationOutcome::interrupted), 1);
 }
 
 TEST(BranchTree, OptionsAreValidatedNamingTheField) {
