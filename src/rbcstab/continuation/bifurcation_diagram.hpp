@@ -26,9 +26,9 @@ namespace rbcstab {
 struct BifurcationDiagramSpec {
   BranchSpec start;  // the start branch (switch_at_bp must be false: the diagram switches at every BP)
   int depth = 1;     // 0: the start branch only; 1: and the branches emanating from its BPs; ... In [0, 20]
-  double amplitude = BranchSwitchOptions{}.amplitude;  // the predictor step off a BP (branch_switch.hpp)
-  double duplicate_tol = TreeOptions{}.duplicate_tol;  // same point / same branch (branch_tree.hpp)
-  std::size_t max_branches = TreeOptions{}.max_branches;
+  double amplitude = kDefaultSwitchAmplitude;   // the predictor step off a BP (branch_switch.hpp)
+  double duplicate_tol = kDefaultDuplicateTol;  // same point / same branch (branch_tree.hpp)
+  std::size_t max_branches = kDefaultMaxBranches;
   std::function<void(std::size_t done, std::size_t pending)> on_branch = {};  // progress, after each branch
   // Ctrl-C (core/interrupt.hpp): the rest is marked interrupted. Last: a front end sets start, depth and stop.
   const std::atomic<bool>* stop = nullptr;

@@ -12,10 +12,13 @@
 
 namespace rbcstab {
 
+// The default predictor step off a BP (BranchSwitchOptions::amplitude; the diagram's default too).
+inline constexpr double kDefaultSwitchAmplitude = 1e-3;
+
 struct BranchSwitchOptions {
-  double amplitude = 1e-3;           // |h|: predictor step off the BP; small enough for Newton, large enough
-                                     // that the corrector does not fall back onto the known branch
-  int side = 1;                      // +1 or -1: which of the two halves (+d or -d) of the new branch
+  double amplitude = kDefaultSwitchAmplitude;  // |h|: predictor step off the BP; small enough for Newton, large enough
+                                               // that the corrector does not fall back onto the known branch
+  int side = 1;                                // +1 or -1: which of the two halves (+d or -d) of the new branch
   double kernel_ratio = 1e-4;        // sigma_{n-1}/sigma_max of [J F_p] must exceed this: a 2-D kernel, not 3-D
   int max_newton = 20;               // corrector iterations for the first point
   ContinuationOptions continuation;  // for the new branch (its direction is chosen away from the BP)

@@ -81,6 +81,9 @@ struct TreeEmanation {
   std::string message;
 };
 
+inline constexpr double kDefaultDuplicateTol = 1e-7;     // TreeOptions::duplicate_tol (why: there)
+inline constexpr std::size_t kDefaultMaxBranches = 200;  // TreeOptions::max_branches
+
 struct TreeOptions {
   int depth = 1;  // switch on branches of depth < depth; 0: the start branch only. In [0, 20]
   // Amplitude and kernel check of the BP switch; continuation: the engine options of every emanating branch
@@ -90,11 +93,11 @@ struct TreeOptions {
   // to newton_tol (1e-12) and special points located to location_tol (1e-11), so the same point found twice
   // agrees to ~1e-10; a new branch's first point lies switching.amplitude (1e-3) from its BP, the distance
   // to the branch it leaves: the default is far from both. Must be below amplitude / 10.
-  double duplicate_tol = 1e-7;
+  double duplicate_tol = kDefaultDuplicateTol;
   // Maps of the state that leave F invariant (x -> g x at the same p, e.g. a mirror): a branch whose first
   // point one of them maps onto an earlier branch is that branch's copy (EmanationOutcome::symmetric).
   std::vector<std::function<Eigen::VectorXd(const Eigen::VectorXd&)>> symmetries;
-  std::size_t max_branches = 200;                                        // the start branch included, in [1, 10000]
+  std::size_t max_branches = kDefaultMaxBranches;                        // the start branch included, in [1, 10000]
   std::map<SpecialPointType, Switcher> switchers = default_switchers();  // the dispatch point
   // Events of an emanating branch (monitors), built at its first point.
   std::function<std::vector<UserEvent>(const Eigen::VectorXd& x0, double p0)> events;
