@@ -6,6 +6,7 @@
 //   and p = 1 joined by the parabola x = p^2 - 1, so from p = 1 both halves are the parabola found from p = -1.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <set>
 
@@ -46,6 +47,25 @@ class Parabola final : public ContinuationProblem {
   void jacobian(const Eigen::VectorXd& v, double p, Eigen::MatrixXd& J) const override {
     J.resize(2, 2);
     J << 2 * v[0] - (p * p - 1), 0, 1, -1;
+  }
+  void parameter_derivative(const Eigen::VectorXd& v, double p, Eigen::VectorXd& Fp) const override {
+    Fp.resize(2);
+    Fp << -2 * p * v[0], 0;
+  }
+};
+
+// x' = x (1 - x^2 - p^2), y' = x - y: the trivial branch with pitchforks at p = -1 and 1 joined by the circle
+// x^2 + p^2 = 1, a closed branch.
+class Circle final : public ContinuationProblem {
+ public:
+  Eigen::Index dimension() const override { return 2; }
+  void residual(const Eigen::VectorXd& v, double p, Eigen::VectorXd& F) const override {
+    F.resize(2);
+    F << v[0] * (1 - v[0] * v[0] - p * p), v[0] - v[1];
+  }
+  void jacobian(const Eigen::VectorXd& v, double p, Eigen::MatrixXd& J) const override {
+    J.resize(2, 2);
+    J << 1 - 3 * v[0] * v[0] - p * p, 0, 1, -1;
   }
   void parameter_derivative(const Eigen::VectorXd& v, double p, Eigen::VectorXd& Fp) const override {
     Fp.resize(2);
@@ -168,6 +188,29 @@ TEST(BranchTree, TheSameBranchReachedFromTwoBPsIsFollowedOnce) {
     }
   }
   EXPECT_EQ(count_outcomes(t, EmanationOutcome::already_switched), 1);
+}
+
+TEST(BranchTree, AClosedBranchEndsBackAtItsFirstPoint) {
+  // From p = -1 the circle goes round through the BP at p = 1 and back: it ends there (not at max_points = 1000),
+  // every point on x^2 + p^2 = 1; the other half and both halves at p = 1 lie on it, its BPs are the trivial
+  // branch's.
+  const Circle pr;
+  TreeOptions o = tree_options(2, -2, 2);
+  o.switching.continuation.max_step = 0.1;
+  const BranchTree t = grow_tree(pr, tree_trivial(pr, -2, 2), o);
+  ASSERT_EQ(t.branches.size(), 2u);
+  const Branch& c = t.branches[1].branch;
+  EXPECT_EQ(c.message, "closed: back at its first point");
+  EXPECT_LT(c.points.size(), 200u);
+  double p_min = 0, p_max = 0;
+  for (const BranchPoint& q : c.points) {
+    EXPECT_NEAR(q.x[0] * q.x[0] + q.p * q.p, 1.0, 1e-10);
+    p_min = std::min(p_min, q.p), p_max = std::max(p_max, q.p);
+  }
+  EXPECT_LT(p_min, -0.99);  // round the whole circle
+  EXPECT_GT(p_max, 0.99);
+  EXPECT_EQ(count_outcomes(t, EmanationOutcome::duplicate), 3);
+  EXPECT_GE(count_outcomes(t, EmanationOutcome::already_switched), 2);
 }
 
 TEST(BranchTree, LiesOnSeparatesTheBranchFromOneNextToIt) {

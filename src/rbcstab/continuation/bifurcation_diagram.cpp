@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <sstream>
 #include <utility>
 #include <variant>
@@ -59,7 +60,9 @@ std::string range_text(const Branch& b) {
   if (b.points.empty()) return "no points";
   const auto [lo, hi] = std::minmax_element(b.points.begin(), b.points.end(),
                                             [](const BranchPoint& a, const BranchPoint& c) { return a.p < c.p; });
-  return std::to_string(b.points.size()) + " points from " + format_value(lo->p) + " to " + format_value(hi->p);
+  std::ostringstream out;
+  out << std::setprecision(10) << b.points.size() << " points from " << lo->p << " to " << hi->p;
+  return out.str();
 }
 
 // save_diagram's file of branch k beside the tree: "<stem>.b<K>.json".
@@ -270,6 +273,7 @@ nlohmann::json diagram_branch_file(const BifurcationDiagram& d, std::size_t k) {
 
 std::string to_text(const BifurcationDiagram& d) {
   std::ostringstream out;
+  out << std::setprecision(10);
   const std::string q = to_string(d.start.spec.parameter);
   out << "bifurcation diagram in " << q << " to depth " << d.depth << ": " << d.branches.size() << " branch"
       << (d.branches.size() == 1 ? "" : "es")
@@ -290,7 +294,7 @@ std::string to_text(const BifurcationDiagram& d) {
   }
   for (const DiagramEmanation& e : d.emanations) {
     const SpecialPoint& sp = point_of(d, e);
-    out << to_string(e.type) << " " << e.label << " (BR " << e.branch << ", " << q << " = " << format_value(sp.p);
+    out << to_string(e.type) << " " << e.label << " (BR " << e.branch << ", " << q << " = " << sp.p;
     if (sp.mode_l) out << ", l = " << *sp.mode_l;
     out << ")" << (e.side != 0 ? " side " + side_text(e.side) : "") << ": " << outcome_text(e) << "\n";
   }

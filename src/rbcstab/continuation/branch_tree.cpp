@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 #include <utility>
 
 #include "rbcstab/continuation/dense.hpp"
@@ -221,13 +222,32 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
         o.direction = s.away;
         if (options.events)
           for (UserEvent& e : options.events(s.x, s.p)) o.events.push_back(std::move(e));
-        if (options.stop) {
-          auto user_stop = o.stop;
-          o.stop = [flag = options.stop, user_stop](const Eigen::VectorXd& x, double p) {
-            return flag->load() || (user_stop && user_stop(x, p));
-          };
-        }
+        // A closed branch (a loop through BPs) comes back through its first point: it ends there instead of going
+        // round to max_points. Its chord passes within the sagitta bound (a tangent turn <= 60 degrees per step)
+        // of the first point, once it has gone farther than the switching amplitude.
+        struct Loop {
+          Eigen::VectorXd X0, prev;
+          double travelled = 0;
+          bool closed = false;
+        };
+        const auto loop = std::make_shared<Loop>(Loop{packed(s.x, s.p), packed(s.x, s.p)});
+        const double far = 4 * options.switching.amplitude;
+        const auto returned = [loop, far](const Eigen::VectorXd& x, double p) {
+          const Eigen::VectorXd X = packed(x, p), d = X - loop->prev;
+          const double len = d.norm();
+          const double at = len > 0 ? std::clamp(d.dot(loop->X0 - loop->prev) / (len * len), 0.0, 1.0) : 0.0;
+          loop->closed =
+              loop->closed || (loop->travelled > far && (loop->prev + at * d - loop->X0).norm() <= 0.15 * len);
+          loop->travelled += len;
+          loop->prev = X;
+          return loop->closed;
+        };
+        auto user_stop = o.stop;
+        o.stop = [flag = options.stop, user_stop, returned](const Eigen::VectorXd& x, double p) {
+          return (flag && flag->load()) || returned(x, p) || (user_stop && user_stop(x, p));
+        };
         Branch child = continue_branch(child_problem, s.x, s.p, o);
+        if (loop->closed) child.message = "closed: back at its first point";
         if (stopped()) {
           tree.interrupted = true;
           child.message = "interrupted after " + std::to_string(child.points.size()) + " points";
