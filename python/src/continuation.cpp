@@ -467,7 +467,7 @@ void bind_continuation(py::module_& m) {
         return l;
       },
       "The tunable options (keyword, integer, range, default, help), as --help lists them.");
-  py::class_<Diagram> diagram(m, "_Diagram", "A bifurcation diagram (rbcstab.Diagram wraps it).");
+  py::class_<Diagram> diagram(m, "_BifurcationDiagram", "A bifurcation diagram (rbcstab.BifurcationDiagram wraps it).");
   diagram.def(
       "json", [](const Diagram& d) { return to_python(to_json(d.d)); },
       "The tree as `rbcstab continue --diagram N --json` prints it.");

@@ -199,6 +199,7 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
       }
       switched_at.emplace_back(b, j);
       const ContinuationProblem& pr = problem_of(b);
+      int closed_sibling = -1;
       for (EmanatingStart& s : sw->second(pr, tree.branches[i].branch, sp, options.switching)) {
         if (!s.found) {
           mark(b, j, s.side, EmanationOutcome::failed, -1, -1, s.message);
@@ -214,6 +215,11 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
           continue;
         }
         const ContinuationProblem& child_problem = s.problem ? *s.problem : pr;
+        // A closed branch from this point came back through it: the other half is the same loop.
+        if (closed_sibling >= 0 && !s.problem) {
+          mark(b, j, s.side, EmanationOutcome::duplicate, closed_sibling);
+          continue;
+        }
         if (const auto [outcome, k] = covered(b, s, child_problem); outcome != EmanationOutcome::followed) {
           mark(b, j, s.side, outcome, k);
           continue;
@@ -253,7 +259,8 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
           child.message = "interrupted after " + std::to_string(child.points.size()) + " points";
         }
         tree.branches.push_back({std::move(child), s.problem ? s.problem : tree.branches[i].problem, b,
-                                 static_cast<int>(j), s.side, tree.branches[i].depth + 1});
+                                 static_cast<int>(j), s.side, tree.branches[i].depth + 1, loop->closed});
+        if (loop->closed) closed_sibling = static_cast<int>(tree.branches.size()) - 1;
         mark(b, j, s.side, EmanationOutcome::followed, static_cast<int>(tree.branches.size()) - 1);
         if (options.on_branch) options.on_branch(tree.branches.size(), tree.branches.size() - i - 1);
       }

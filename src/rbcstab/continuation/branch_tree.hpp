@@ -41,7 +41,8 @@ bool is_branching(SpecialPointType type);
 // What was done with one emanating branch (or with a branching point as a whole, side 0).
 enum class EmanationOutcome {
   followed,          // continued: TreeEmanation::branch_to is the new branch
-  duplicate,         // its first point lies on branch_to (found before): not followed again
+  duplicate,         // its first point lies on branch_to (found before, or the closed branch from the same point
+                     // whose loop passes through it from the other side): not followed again
   symmetric,         // a symmetry maps its first point onto branch_to: the copy is not followed
   already_switched,  // the same point (within duplicate_tol) was switched at before, on branch_to
   not_available,     // no switcher for this type (HB, PD, NS): switching not available
@@ -67,7 +68,8 @@ struct TreeBranch {
   int parent = -1;                                     // index of the branch it emanates from; -1: the start branch
   int parent_point = -1;                               // index of that special point in the parent's special_points
   int side = 0;
-  int depth = 0;  // 0: the start branch
+  int depth = 0;        // 0: the start branch
+  bool closed = false;  // it came back through its first point (a loop): ended there
 };
 
 // One entry per emanating branch tried (side != 0) or per branching point not switched at (side 0).
