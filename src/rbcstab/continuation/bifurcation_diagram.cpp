@@ -199,8 +199,6 @@ SceneBranch diagram_run(const BifurcationDiagram& d, std::size_t k) {
     r.start.margin_error = p0.margin_error;
     r.start.uncertain_because = p0.uncertain_because;
   }
-  r.start.message = "the first point of the branch switched to at label " + std::to_string(b.parent_label) +
-                    " of diagram branch " + std::to_string(b.parent) + " (side " + side_text(b.side) + ")";
   return r;
 }
 
