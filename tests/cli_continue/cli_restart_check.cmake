@@ -295,7 +295,7 @@ elseif(CASE STREQUAL "diagram")
       fail("branch ${k} has parent ${parent}")
     endif()
   endforeach()
-  run_ok(sw continue --restart ${WORK}/d.b8.json --switch-at BP:l=4 --json)
+  run_ok(sw continue --restart ${WORK}/d.b8.json --switch-at BP:l=4 --max-points 5 --json)  # a vertical set: a few points
   special_label("${sw}" BP C 0.0166 0.0167 l60 C60)
   expect_close("the l = 4 BP of branch 8" "${C60}" "0.016666666667" 10)
   # Bad input: a depth outside [0, 20], --diagram with --csv.
