@@ -13,6 +13,7 @@
 #include "checks.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
+#include "rbcstab/continuation/bifurcation_diagram.hpp"
 #include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
@@ -46,7 +47,8 @@ struct ContinueOptions {
   std::string parameter2;
   double p2_min = -INFINITY, p2_max = INFINITY;
   int point = 1;
-  std::string save;  // branch file
+  std::string save;  // branch file (--diagram: the tree, its branch files beside it)
+  int diagram = -1;  // --diagram DEPTH: the whole diagram (bifurcation_diagram.hpp)
   int label_every = 10;
   std::string measures;  // text table: comma-separated measure names
   // A restart: the run in this branch file, from label N (--label) or switching at BP label N (--switch-at).
@@ -72,13 +74,6 @@ std::string tunable_help(const TunableOption& t) {
   return std::string(t.help) + "; " + t.range() + " (default " + format_value(t.default_value()) + ")";
 }
 
-// The continuation parameters' names, from the parameter table.
-std::string parameter_names() {
-  std::string names;
-  for (const auto& n : continuation_parameter_names()) names += (names.empty() ? "" : ", ") + n;
-  return names;
-}
-
 // Every output rendered first (a rendering error writes nothing), then the CSV and branch files, then JSON
 // or text.
 void print(const ContinueOptions& o, const std::string& L_reason, const ContinuationRun& r) {
@@ -93,7 +88,13 @@ void print(const ContinueOptions& o, const std::string& L_reason, const Continua
   std::cout << out;
 }
 
-int report(const ContinueOptions& o, const std::string& L_reason, const ContinuationRun& r) {
+void print(const ContinueOptions& o, const std::string&, const BifurcationDiagram& d) {
+  if (!o.save.empty()) save_diagram(o.save, d, "--save");
+  std::cout << (o.json ? to_json(d).dump(2) + "\n" : to_text(d));
+}
+
+template <class Run>
+int report(const ContinueOptions& o, const std::string& L_reason, const Run& r) {
   const RunOutcome out = outcome(r);
   if (!out.note.empty()) std::cerr << "rbcstab: note: " << out.note << "\n";
   if (out.has_output) print(o, L_reason, r);
@@ -161,6 +162,9 @@ int run(const ContinueOptions& o) {
   spec.allow_unstable_start = o.allow_unstable_start;
   const SceneRun sr = scene_run(std::move(file), spec, curve, "--min", "--max");
   if (!curve) TableOptions::from_list(o.measures).validate(measure_names(sr.spec.kind, sr.spec.scene.L));
+  if (o.diagram >= 0)
+    return report(o, sr.L_reason,
+                  bifurcation_diagram({.start = sr.spec, .depth = o.diagram, .stop = StopOnSignal().flag()}));
   return report(o, sr.L_reason, continue_run(sr));
 }
 
@@ -179,10 +183,10 @@ Runner add_continue(CLI::App& app) {
   app.add_flag("--allow-unstable-start", o->allow_unstable_start,
                "orbit, modal-orbit: continue even when the orbit found at the start is unstable (by default that is "
                "refused with exit 1: the scene does not relax to it)");
-  o->o_parameter =
-      app.add_option("--parameter", o->parameter,
-                     "free parameter: " + parameter_names() + " (beta: the rest shape's orientation, [0, pi])")
-          ->capture_default_str();
+  o->o_parameter = app.add_option("--parameter", o->parameter,
+                                  "free parameter: " + continuation_parameter_list() +
+                                      " (beta: the rest shape's orientation, [0, pi])")
+                       ->capture_default_str();
   o->o_min =
       app.add_option(
              "--min", o->p_min,
@@ -231,7 +235,7 @@ Runner add_continue(CLI::App& app) {
          "transition, the orbit passing through r = 0, as a curve); default: none (one-parameter run)")
       ->check(CLI::IsMember({"LP", "BP", "HB", "LPC", "PD", "NS", "UZ"}));
   app.add_option("--parameter2", o->parameter2,
-                 "--curve: second free parameter (" + parameter_names() + "), independent of --parameter");
+                 "--curve: second free parameter (" + continuation_parameter_list() + "), independent of --parameter");
   app.add_option("--min2", o->p2_min,
                  "--curve: lower bound of --parameter2 (the curve ends there exactly; default: none)")
       ->check(number_text("within --parameter2's domain"));
@@ -264,6 +268,12 @@ Runner add_continue(CLI::App& app) {
   o->o_switch_at = app.add_option("--switch-at", o->switch_at,
                                   "--restart: switch onto the other branch at the BP with this label (equilibrium, "
                                   "modal, full, modal-orbit), an integer in [1, 1000000000] or BP:l=L[:m=M]");
+  app.add_option("--diagram", o->diagram,
+                 "the whole bifurcation diagram to this depth, " + integer_range(0, 20) +
+                     ": every branch from every BP (both halves), recursively; HB, PD, NS listed, not followed; "
+                     "--save F: the tree F and its branch files F.b1.json, ...")
+      ->check(integer_in(0, 20))
+      ->excludes("--csv", "--curve", "--restart", "--switch-at-bp");
   o->progress.add_flags(app);
   return [o] { return run(*o); };
 }

@@ -23,7 +23,7 @@ from .progress import progress_bar
 from ._rbcstab import Scene
 
 __all__ = ["continuation", "load_branch", "plot_branches", "Branch", "Curve", "ContinuationError",
-           "ContinuationWarning", "TUNABLE_OPTIONS"]
+           "ContinuationWarning", "TUNABLE_OPTIONS", "bifurcation_diagram", "load_diagram", "BifurcationDiagram"]
 
 
 class ContinuationError(RuntimeError):
@@ -50,7 +50,8 @@ TUNABLE_OPTIONS = tuple(_rbcstab.tunable_options())
 _KINDS = {"min": _number, "max": _number, "relax_T": _number,
           "min2": _number, "max2": _number, "max_points": _integer, "label_every": _integer,
           "point": _integer, "switch_at_bp": _flag, "allow_unstable_start": _flag, "direction": _name,
-          "curve": _name, "parameter2": _name, "kind": _name, "parameter": _name,
+          "curve": _name, "parameter2": _name, "kind": _name, "parameter": _name, "amplitude": _number,
+          "duplicate_tol": _number, "max_branches": _integer,
           **{k: _integer if integer else _number for k, integer, *_ in TUNABLE_OPTIONS}}
 
 
@@ -151,6 +152,51 @@ def continuation(scene, kind="equilibrium", parameter="lambda", min=None, max=No
     what = f"continuation in {parameter}" if isinstance(parameter, str) else "continuation"
     return _run(_rbcstab.continue_scene, what, progress, scene, _name("kind", kind), _name("parameter", parameter),
                 options)
+
+
+def bifurcation_diagram(scene, depth=1, kind="equilibrium", parameter="lambda", min=None, max=None, *,
+                        direction=None, step=None, max_step=None, max_points=None, relax_T=None, segments=None,
+                        allow_unstable_start=False, label_every=None, min_step=None, newton_tol=None, max_newton=None,
+                        location_tol=None, orbit_rtol=None, orbit_atol=None, orbit_samples=None, monitor=None,
+                        stop_at=None, amplitude=None, duplicate_tol=None, max_branches=None, progress=False):
+    """The whole bifurcation diagram to `depth` (``rbcstab continue --diagram DEPTH``; docs/continuation.md): the
+    start branch as :func:`continuation` follows it (the same keywords), then at every located BP both halves of
+    the branch bifurcating there, recursively to `depth` (0: the start branch only), each with the start branch's
+    options. A branch reached twice is marked a duplicate, not followed again; a BP met again is not switched at
+    again; HB, PD and NS points are listed as not followed (switching not available). amplitude: the predictor
+    step off a BP (1e-3); duplicate_tol: two points are the same within it (1e-7, below amplitude / 10);
+    max_branches: at most this many branches (200). progress and Ctrl-C as :func:`continuation`.
+
+    Returns a :class:`BifurcationDiagram`. Raises ValueError / TypeError for bad input, ContinuationError when the start
+    fails; an incomplete diagram, a branch that ended early or a failed switch gives a ContinuationWarning."""
+    if not isinstance(scene, Scene):
+        raise TypeError(f"scene must be a rbcstab.Scene, got {type(scene).__name__}")
+    options = _options(min=min, max=max, direction=direction, step=step, max_step=max_step, max_points=max_points,
+                       relax_T=relax_T, segments=segments, allow_unstable_start=allow_unstable_start,
+                       label_every=label_every, min_step=min_step, newton_tol=newton_tol, max_newton=max_newton,
+                       location_tol=location_tol, orbit_rtol=orbit_rtol, orbit_atol=orbit_atol,
+                       orbit_samples=orbit_samples, monitor=monitor, stop_at=stop_at, amplitude=amplitude,
+                       duplicate_tol=duplicate_tol, max_branches=max_branches)
+    bar = progress_bar(progress, f"diagram in {parameter}", "points")
+    try:
+        d = _rbcstab.bifurcation_diagram(scene, _name("kind", kind), _name("parameter", parameter),
+                                         _integer("depth", depth), options, progress=bar)
+    finally:
+        if bar is not None:
+            bar.close()
+    has_output, note, failure = d.outcome()
+    if not has_output:
+        raise ContinuationError(failure)
+    for message in (note, failure):
+        if message:
+            warnings.warn(message, ContinuationWarning, stacklevel=2)
+    return BifurcationDiagram(d)
+
+
+def load_diagram(path):
+    """The diagram ``rbcstab continue --diagram N --save path`` (or :meth:`BifurcationDiagram.save`) wrote: the tree and its
+    branch files beside it, each checked."""
+    return BifurcationDiagram(_rbcstab.load_diagram(os.fspath(path)))
 
 
 def load_branch(path):
@@ -438,3 +484,76 @@ class Curve(Branch):
     @property
     def one_parameter_branch(self):
         return Branch(self._run, "one_parameter")
+
+
+class BifurcationDiagram:
+    """A bifurcation diagram (:func:`bifurcation_diagram`, ``rbcstab continue --diagram``): its branches and the
+    tree that joins them.
+
+    ``branches`` are :class:`Branch` objects (``branches[0]`` the start branch; labels are unique over the
+    diagram, so each restarts, switches and draws as any run); ``tree`` lists each branch's number, parent,
+    parent_label (the label of the BP it emanates from), side, depth, status and points; ``special_points`` the
+    branching points (BP, HB, PD, NS) with what was done at each (outcome: followed, duplicate, symmetric,
+    already_switched, not_available, not_located, depth_limit, failed, interrupted, branch_limit)."""
+
+    def __init__(self, diagram):
+        self._d = diagram
+        self._json = None
+
+    def _tree_json(self):
+        if self._json is None:
+            self._json = self._d.json()
+        return self._json
+
+    def to_dict(self):
+        """The tree as ``rbcstab continue --diagram N --json`` prints it (each branch's JSON under "data")."""
+        import copy
+        return copy.deepcopy(self._tree_json())
+
+    @property
+    def branches(self):
+        return [Branch(self._d.branch(k)) for k in range(self._d.size())]
+
+    @property
+    def tree(self):
+        return [{k: v for k, v in b.items() if k != "data"} for b in self._tree_json()["branches"]]
+
+    @property
+    def special_points(self):
+        import copy
+        return copy.deepcopy(self._tree_json()["special_points"])
+
+    @property
+    def complete(self):
+        """No branching point was left for want of time (interrupted) or room (max_branches)."""
+        return self._tree_json()["complete"]
+
+    def __len__(self):
+        return self._d.size()
+
+    def save(self, path):
+        """Writes the tree to path and each branch's file beside it (path's stem + .b1.json, .b2.json, ...),
+        atomically, as ``--diagram N --save path``; returns the branch files' paths."""
+        return self._d.save(os.fspath(path))
+
+    def text(self):
+        """The CLI's summary: one line per branch and per branching point."""
+        return self._d.text()
+
+    def __str__(self):
+        return self.text()
+
+    def __repr__(self):
+        j = self._tree_json()
+        return (f"<rbcstab.BifurcationDiagram {j['kind']} in {j['free_parameter']} to depth {j['depth']}: {len(self)} branches"
+                + ("" if j["complete"] else ", incomplete") + ">")
+
+    def plot(self, ax=None, y=None, x=None, title=None, all_labels=False):
+        """Every branch overlaid as ``rbcstab plot`` draws branch files (stable solid, unstable dashed, special
+        points marked with type and label), each named in the legend by its number and where it comes from."""
+        names = [f"BR {b['branch']}" + ("" if b["parent"] is None else f" (from label {b['parent_label']})")
+                 for b in self.tree]
+        return plot_branches(self.branches, ax=ax, x=x, y=y, title=title, all_labels=all_labels, names=names)
+
+    def __reduce__(self):
+        return (BifurcationDiagram, (self._d,))

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "bindings.hpp"
+#include "rbcstab/continuation/bifurcation_diagram.hpp"
 #include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/continuation/branch_labels.hpp"
@@ -182,10 +183,8 @@ Run detach(ContinuationRun&& run, std::string L_reason) {
 
 // ---- runs ----
 
-Run continue_from_scene(const py::handle& scene, const std::string& kind, const std::string& parameter,
-                        const py::dict& options, const py::object& progress) {
-  SceneFile file = scene_file(scene);
-  Given g(options);
+// The spec of a fresh run from the options: what continue_scene and bifurcation_diagram share.
+BranchSpec branch_spec_of(Given& g, const std::string& kind, const std::string& parameter) {
   BranchSpec spec;
   spec.kind = problem_kind_from_string(kind);
   spec.parameter = continuation_parameter_from_string(parameter);
@@ -199,6 +198,14 @@ Run continue_from_scene(const py::handle& scene, const std::string& kind, const 
   set_if(spec.switch_at_bp, g.take<bool>("switch_at_bp"));
   set_if(spec.allow_unstable_start, g.take<bool>("allow_unstable_start"));
   set_if(spec.label_every, as_int(g.take<long long>("label_every"), "label_every"));
+  return spec;
+}
+
+Run continue_from_scene(const py::handle& scene, const std::string& kind, const std::string& parameter,
+                        const py::dict& options, const py::object& progress) {
+  SceneFile file = scene_file(scene);
+  Given g(options);
+  BranchSpec spec = branch_spec_of(g, kind, parameter);
   std::optional<CurveSpec> curve;
   const auto type = g.take<std::string>("curve");
   const auto parameter2 = g.take<std::string>("parameter2");
@@ -258,6 +265,46 @@ Run curve_py(const Run& from, int label, const std::optional<std::string>& type,
     throw InvalidArgument("label", "label " + std::to_string(label) +
                                        " is not a special point: a curve starts from an LP, BP, HB, LPC, PD, NS or UZ");
   return restart_from(from, {label, 0, curve_spec(t, parameter2, p2_min, p2_max), {}}, options, progress, "curve");
+}
+
+// ---- diagrams ----
+
+struct Diagram {
+  BifurcationDiagram d;
+  std::string L_reason;
+};
+
+// rbcstab continue --diagram DEPTH: the start branch from the options as continue_scene's, the diagram's own
+// (amplitude, duplicate_tol, max_branches) by keyword. Ctrl-C raises out of any branch (the engine's stop).
+Diagram diagram_py(const py::handle& scene, const std::string& kind, const std::string& parameter, int depth,
+                   const py::dict& options, const py::object& progress) {
+  SceneFile file = scene_file(scene);
+  Given g(options);
+  BranchSpec spec = branch_spec_of(g, kind, parameter);
+  BifurcationDiagramSpec ds;
+  ds.depth = depth;
+  set_if(ds.amplitude, g.take<double>("amplitude"));
+  set_if(ds.duplicate_tol, g.take<double>("duplicate_tol"));
+  set_if(ds.max_branches, as_count(g.take<long long>("max_branches"), "max_branches"));
+  g.finish("bifurcation_diagram");
+  const Watch watch(progress);
+  Diagram out = [&] {
+    py::gil_scoped_release release;
+    SceneRun sr = scene_run(std::move(file), std::move(spec));
+    watch.attach(sr.spec);
+    ds.start = sr.spec;
+    BifurcationDiagram d = bifurcation_diagram(ds);
+    d.start = std::get<SceneBranch>(detach(ContinuationRun(std::move(d.start)), "").run);
+    return Diagram{std::move(d), sr.L_reason};
+  }();
+  watch.finish();
+  return out;
+}
+
+py::tuple diagram_state(const Diagram& d) {
+  std::vector<std::string> files;
+  for (std::size_t k = 0; k < d.d.branches.size(); ++k) files.push_back(diagram_branch_file(d.d, k).dump());
+  return py::make_tuple(to_json(d.d).dump(), files, d.L_reason);
 }
 
 Run load_py(const std::string& path) {
@@ -420,6 +467,42 @@ void bind_continuation(py::module_& m) {
         return l;
       },
       "The tunable options (keyword, integer, range, default, help), as --help lists them.");
+  py::class_<Diagram> diagram(m, "_BifurcationDiagram", "A bifurcation diagram (rbcstab.BifurcationDiagram wraps it).");
+  diagram.def(
+      "json", [](const Diagram& d) { return to_python(to_json(d.d)); },
+      "The tree as `rbcstab continue --diagram N --json` prints it.");
+  diagram.def(
+      "text", [](const Diagram& d) { return to_text(d.d); }, "The CLI's text summary.");
+  diagram.def("size", [](const Diagram& d) { return d.d.branches.size(); });
+  diagram.def(
+      "branch",
+      [](const Diagram& d, std::size_t k) {
+        return Run{diagram_run(d.d, k), d.L_reason};
+      },
+      py::arg("k"), "Branch k (0-based) as a run: restart, switch, curve, save and plot as any.");
+  diagram.def(
+      "save", [](const Diagram& d, const std::string& path) { return save_diagram(path, d.d, "path"); },
+      py::arg("path"), "Writes the tree and its branch files (`--diagram N --save path`), atomically.");
+  diagram.def("outcome", [](const Diagram& d) {
+    const RunOutcome o = outcome(d.d);
+    return py::make_tuple(o.has_output, python_words(o.note), python_words(o.failure));
+  });
+  diagram.def(py::pickle(&diagram_state, [](const py::tuple& t) {
+    return Diagram{parse_diagram(t[0].cast<std::string>(), t[1].cast<std::vector<std::string>>(), "pickle"),
+                   t[2].cast<std::string>()};
+  }));
+  m.def("bifurcation_diagram", &diagram_py, py::arg("scene"), py::arg("kind"), py::arg("parameter"), py::arg("depth"),
+        py::arg("options"), py::arg("progress") = py::none(),
+        "rbcstab continue --diagram DEPTH: the options as continue_scene's, plus amplitude, duplicate_tol, "
+        "max_branches.");
+  m.def(
+      "load_diagram",
+      [](const std::string& path) {
+        BifurcationDiagram d = load_diagram(path, "path");
+        std::string reason = saved_run_L_reason(ContinuationRun(d.start));
+        return Diagram{std::move(d), std::move(reason)};
+      },
+      py::arg("path"), "Reads a saved diagram (its tree and branch files).");
   m.def("load_branch", &load_py, py::arg("path"), "Reads a branch file (rbcstab continue --save).");
   m.def("plot_spec", &plot_spec_py, py::arg("runs"), py::arg("sources"), py::arg("x") = "", py::arg("y") = "",
         py::arg("title") = "", py::arg("all_labels") = false,

@@ -620,3 +620,41 @@ def test_the_quickstart_switches_at_the_onset():
     post = branch.switch(bp).switched
     for C, sigma in zip(post["C"], post["sigma"]):
         assert sigma == pytest.approx(sigma_c(3, 1 / C), abs=1e-10)
+
+
+# ------------------------------------------------------------------------------------- the whole diagram
+def test_bifurcation_diagram_equals_the_cli_and_pickles(cli, tmp_path):
+    # docs/continuation.md's diagram: the walk-through's scene to depth 1 (start branch + both halves at its 4 BPs).
+    scene = rbcstab.Scene(lambda_=1, B=1, L=6)
+    d = rbcstab.bifurcation_diagram(scene, depth=1, kind="modal", parameter="C", min=0.01, max=0.1)
+    expected = cli("continue", "--kind", "modal", "--parameter", "C", "--min", 0.01, "--max", 0.1, "--lambda", 1,
+                   "--B", 1, "--L", 6, "--diagram", 1)
+    assert without_timing(d.to_dict()) == without_timing(expected)
+    assert len(d) == 9 and d.complete
+    assert [b["parent"] for b in d.tree] == [None] + [1] * 8
+    onset = [b for b, t in zip(d.branches, d.tree) if t["parent_label"] == 6]
+    assert len(onset) == 2
+    for b in onset:  # the post-instability state: sigma = sigma_3^c = -(12 + 4 alpha / 12), alpha = B / C
+        np.testing.assert_allclose(b["sigma"], -(12 + 4 * (1 / b["C"]) / 12), rtol=1e-10)
+    copy = pickle.loads(pickle.dumps(d))
+    assert copy.to_dict() == d.to_dict() and repr(copy) == repr(d)
+    files = d.save(tmp_path / "d.json")
+    assert len(files) == 9 and rbcstab.load_diagram(tmp_path / "d.json").to_dict() == d.to_dict()
+    # the set bifurcating at the l = 4 BP is vertical (C = 1/60): a few points
+    assert rbcstab.load_branch(files[7]).switch(onset[0].labels("BP", l=4)[0], max_points=5).switched is not None
+    with pytest.raises(ValueError, match="depth"):
+        rbcstab.bifurcation_diagram(scene, depth=21, kind="modal", parameter="C", min=0.01, max=0.1)
+    with pytest.raises(TypeError):
+        rbcstab.bifurcation_diagram(scene, depth=1.5, kind="modal", parameter="C")
+
+
+def test_bifurcation_diagram_plot_labels_every_branch(tmp_path):
+    import matplotlib
+    matplotlib.use("Agg")
+    scene = rbcstab.Scene(lambda_=1, B=1, L=6)
+    with pytest.warns(rbcstab.ContinuationWarning, match="max_branches reached"):
+        d = rbcstab.bifurcation_diagram(scene, depth=1, kind="modal", parameter="C", min=0.01, max=0.1,
+                                        max_branches=3)
+    assert len(d) == 3 and not d.complete  # max_branches reached: said so
+    ax = d.plot(y="sigma")
+    assert len(ax.get_lines()) >= 3  # a series per branch (more where the stability changes along one)

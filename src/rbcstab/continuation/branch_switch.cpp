@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <utility>
 
 #include "rbcstab/continuation/dense.hpp"
 
@@ -41,16 +42,15 @@ bool correct_on_hyperplane(const ContinuationProblem& problem, const Eigen::Vect
   return false;
 }
 
-BranchSwitchResult switch_branch(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& bp,
-                                 const BranchSwitchOptions& options) {
+BranchSwitchStart switch_start(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& bp,
+                               const BranchSwitchOptions& options) {
   options.validate();
   require(bp.type == SpecialPointType::BP, "special_point", static_cast<double>(static_cast<int>(bp.type)),
           "a BP (branch point)");
   require(bp.after_index + 1 < branch.points.size(), "special_point", static_cast<double>(bp.after_index),
           "a special point between two points of the branch");
   const Eigen::Index n = problem.dimension(), N = n + 1;
-  BranchSwitchResult out;
-  out.branch.parameter_names = problem.parameter_names();
+  BranchSwitchStart out;
   Eigen::VectorXd Xbp(N);
   Xbp << bp.x, bp.p;
 
@@ -102,11 +102,27 @@ BranchSwitchResult switch_branch(const ContinuationProblem& problem, const Branc
     out.message = "the corrector did not converge off the BP (try another amplitude)";
     return out;
   }
-  // Continue away from the BP: along the new branch p moves from p_bp the way the first point did
+  // Away from the BP: along the new branch p moves from p_bp the way the first point did
   // (pitchfork: p - p_bp ~ s^2 has the sign of dp/ds at s = h; transcritical: that of d_p).
+  out.found = true;
+  out.x = X.head(n);
+  out.p = X[n];
+  out.away = X[n] >= bp.p ? Direction::forward : Direction::backward;
+  return out;
+}
+
+BranchSwitchResult switch_branch(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& bp,
+                                 const BranchSwitchOptions& options) {
+  BranchSwitchStart start = switch_start(problem, branch, bp, options);
+  BranchSwitchResult out;
+  out.branch.parameter_names = problem.parameter_names();
+  out.direction = std::move(start.direction);
+  out.singular_values = start.singular_values;
+  out.message = std::move(start.message);
+  if (!start.found) return out;
   ContinuationOptions o = options.continuation;
-  o.direction = X[n] >= bp.p ? Direction::forward : Direction::backward;
-  out.branch = continue_branch(problem, X.head(n), X[n], o);
+  o.direction = start.away;
+  out.branch = continue_branch(problem, start.x, start.p, o);
   out.switched = !out.branch.points.empty();
   out.message = out.branch.message;
   return out;

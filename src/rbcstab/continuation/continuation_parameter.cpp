@@ -15,6 +15,12 @@ const std::vector<std::string>& continuation_parameter_names() {
   return names;
 }
 
+std::string continuation_parameter_list() {
+  std::string names;
+  for (const auto& n : continuation_parameter_names()) names += (names.empty() ? "" : ", ") + n;
+  return names;
+}
+
 ContinuationParameter continuation_parameter_from_string(const std::string& name) {
   return parameter_from_string(name, ParameterUse::continuation);
 }

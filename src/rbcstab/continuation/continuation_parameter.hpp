@@ -17,6 +17,8 @@ using ContinuationParameter = SceneParameter;  // one of the rows usable_as(q, P
 // "lambda", "Delta", "Delta0", "B", "C", "Lambda", "S", "beta"; throws InvalidArgument("parameter", ...).
 ContinuationParameter continuation_parameter_from_string(const std::string& name);
 const std::vector<std::string>& continuation_parameter_names();
+// The same as one comma-separated list (help texts).
+std::string continuation_parameter_list();
 
 // "" when q moves the model `level` (the parameter table's levels); else a note that a branch in q at that level
 // repeats one state, naming the levels q does move (B leaves the reduced level alone: it takes Upsilon_2 itself as

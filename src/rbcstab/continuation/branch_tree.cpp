@@ -1,0 +1,272 @@
+// Recursive branch switching on one problem: the dispatch of special points to switchers, the duplicate and
+// symmetry checks of an emanating branch's first point, and the breadth-first growth of the tree.
+#include "rbcstab/continuation/branch_tree.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <utility>
+
+#include "rbcstab/continuation/dense.hpp"
+#include "rbcstab/core/error.hpp"
+
+namespace rbcstab {
+
+namespace {
+
+Eigen::VectorXd packed(const Eigen::VectorXd& x, double p) {
+  Eigen::VectorXd X(x.size() + 1);
+  X << x, p;
+  return X;
+}
+
+double max_norm_distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
+  return (a - b).lpNorm<Eigen::Infinity>();
+}
+
+bool same_point(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double tol) {
+  return a.size() == b.size() && max_norm_distance(a, b) <= tol * (1 + a.lpNorm<Eigen::Infinity>());
+}
+
+std::vector<EmanatingStart> bp_switcher(const ContinuationProblem& problem, const Branch& branch,
+                                        const SpecialPoint& bp, const BranchSwitchOptions& options) {
+  std::vector<EmanatingStart> out;
+  for (int side : {1, -1}) {
+    BranchSwitchOptions o = options;
+    o.side = side;
+    BranchSwitchStart s = switch_start(problem, branch, bp, o);
+    EmanatingStart e;
+    e.found = s.found;
+    e.message = std::move(s.message);
+    e.side = side;
+    e.x = std::move(s.x);
+    e.p = s.p;
+    e.away = s.away;
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
+}  // namespace
+
+std::map<SpecialPointType, Switcher> default_switchers() { return {{SpecialPointType::BP, bp_switcher}}; }
+
+bool is_branching(SpecialPointType type) {
+  return type == SpecialPointType::BP || type == SpecialPointType::HB || type == SpecialPointType::PD ||
+         type == SpecialPointType::NS;
+}
+
+void TreeOptions::validate() const {
+  require(depth >= 0 && depth <= 20, "depth", depth, "an integer in [0, 20]");
+  switching.validate();
+  require(std::isfinite(duplicate_tol) && duplicate_tol > 0 && duplicate_tol <= switching.amplitude / 10,
+          "duplicate_tol", duplicate_tol, "in (0, amplitude / 10 = " + format_value(switching.amplitude / 10) + "]");
+  require(max_branches >= 1 && max_branches <= 10000, "max_branches", static_cast<double>(max_branches),
+          "an integer in [1, 10000]");
+}
+
+bool lies_on(const ContinuationProblem& problem, const Branch& b, const Eigen::VectorXd& X, double tol) {
+  const auto& pts = b.points;
+  if (pts.empty() || pts.front().x.size() + 1 != X.size()) return false;
+  // The nearest segment [A, A + u] of the polyline (2-norm), and the foot of X on it.
+  double best = std::numeric_limits<double>::infinity(), along = 0;
+  Eigen::VectorXd foot, A, u;
+  for (std::size_t k = 0; k + 1 < std::max<std::size_t>(pts.size(), 2); ++k) {
+    Eigen::VectorXd a = packed(pts[k].x, pts[k].p);
+    const Eigen::VectorXd d =
+        pts.size() > 1 ? Eigen::VectorXd(packed(pts[k + 1].x, pts[k + 1].p) - a) : Eigen::VectorXd::Zero(X.size());
+    const double dd = d.squaredNorm();
+    const double s = dd > 0 ? std::clamp(d.dot(X - a) / dd, 0.0, 1.0) : 0.0;
+    const Eigen::VectorXd f = a + s * d;
+    const double dist = (X - f).norm();
+    if (dist < best) best = dist, foot = f, along = s * std::sqrt(dd), A = std::move(a), u = d;
+  }
+  if (same_point(X, foot, tol)) return true;
+  // A curve between two accepted points (its tangent turns by <= 60 degrees per step) stays within half a chord
+  // of it: farther away, X is on another curve.
+  const double length = u.norm();
+  if (!(length > 0) || best > 0.5 * length) return false;
+  // Nearer, the branch is followed from its point A along the chord to the hyperplane through X normal to it
+  // (which holds the foot), in steps that shrink by 4 towards it: near a BP close to X another branch crosses
+  // within ~ the distance to the BP, so Newton from the chord's foot alone could land on either.
+  const Eigen::Index n = X.size() - 1;
+  const Eigen::VectorXd t = u / length;
+  Eigen::VectorXd Y = A, F(n), Fp(n), R(n + 1);
+  Eigen::MatrixXd J, M(n + 1, n + 1);
+  const auto correct = [&](double at) {  // Newton on F = 0, t.(Y - A) = at
+    for (int it = 0; it < 30; ++it) {
+      const Eigen::VectorXd y = Y.head(n);
+      problem.residual(y, Y[n], F);
+      problem.jacobian(y, Y[n], J);
+      problem.parameter_derivative(y, Y[n], Fp);
+      M.topLeftCorner(n, n) = J;
+      M.topRightCorner(n, 1) = Fp;
+      M.bottomRows(1) = t.transpose();
+      R << F, t.dot(Y - A) - at;
+      const Eigen::VectorXd dY = M.partialPivLu().solve(-R);
+      if (!dY.allFinite()) return false;
+      Y += dY;
+      if (dY.lpNorm<Eigen::Infinity>() <= 1e-12 * (1 + Y.lpNorm<Eigen::Infinity>())) return true;
+    }
+    return false;
+  };
+  const double last = 100 * tol * (1 + X.lpNorm<Eigen::Infinity>());
+  double at = 0;
+  for (double rest = along; rest > 0;) {
+    rest = rest > last ? rest / 4 : 0.0;
+    Y += (along - rest - at) * t;  // predictor along the chord
+    at = along - rest;
+    if (!correct(at)) return false;
+  }
+  return same_point(X, Y, tol);
+}
+
+BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const TreeOptions& options) {
+  options.validate();
+  BranchTree tree;
+  tree.branches.push_back({std::move(root), nullptr, -1, -1, 0, 0});
+  const auto problem_of = [&](int k) -> const ContinuationProblem& {
+    const auto& p = tree.branches[static_cast<std::size_t>(k)].problem;
+    return p ? *p : root_problem;
+  };
+  const auto stopped = [&] { return options.stop && options.stop->load(); };
+  tree.interrupted = stopped();
+  // The branching points switched at so far: (branch, special point).
+  std::vector<std::pair<int, std::size_t>> switched_at;
+  const auto mark = [&](int b, std::size_t j, int side, EmanationOutcome o, int to = -1, int pt = -1,
+                        std::string message = "") {
+    tree.emanations.push_back({b, j, side, o, to, pt, std::move(message)});
+  };
+  // The earlier point (or its symmetric image) this one repeats: (branch, index), or (-1, -1).
+  const auto seen_before = [&](int b, const SpecialPoint& sp) -> std::pair<int, std::size_t> {
+    const Eigen::VectorXd X = packed(sp.x, sp.p);
+    for (const auto& [k, j] : switched_at) {
+      const SpecialPoint& q = tree.branches[static_cast<std::size_t>(k)].branch.special_points[j];
+      if (q.type != sp.type || &problem_of(k) != &problem_of(b)) continue;
+      const Eigen::VectorXd Q = packed(q.x, q.p);
+      if (same_point(Q, X, options.duplicate_tol)) return {k, j};
+      for (const auto& g : options.symmetries)
+        if (same_point(Q, packed(g(sp.x), sp.p), options.duplicate_tol)) return {k, j};
+    }
+    return {-1, 0};
+  };
+  // The earlier branch a start lies on (duplicate) or that a symmetry maps it onto (symmetric), never the
+  // branch it leaves: that one passes within the switching amplitude, through the BP where both cross.
+  const auto covered = [&](int from, const EmanatingStart& s, const ContinuationProblem& pr) {
+    const Eigen::VectorXd X = packed(s.x, s.p);
+    for (std::size_t k = 0; k < tree.branches.size(); ++k) {
+      if (static_cast<int>(k) == from || &problem_of(static_cast<int>(k)) != &pr) continue;
+      if (lies_on(pr, tree.branches[k].branch, X, options.duplicate_tol))
+        return std::pair{EmanationOutcome::duplicate, static_cast<int>(k)};
+    }
+    for (const auto& g : options.symmetries) {
+      const Eigen::VectorXd gX = packed(g(s.x), s.p);
+      for (std::size_t k = 0; k < tree.branches.size(); ++k)
+        if (static_cast<int>(k) != from && &problem_of(static_cast<int>(k)) == &pr &&
+            lies_on(pr, tree.branches[k].branch, gX, options.duplicate_tol))
+          return std::pair{EmanationOutcome::symmetric, static_cast<int>(k)};
+    }
+    return std::pair{EmanationOutcome::followed, -1};
+  };
+  for (std::size_t i = 0; i < tree.branches.size(); ++i) {
+    const int b = static_cast<int>(i);
+    const std::size_t n_special = tree.branches[i].branch.special_points.size();
+    for (std::size_t j = 0; j < n_special; ++j) {
+      const SpecialPoint sp = tree.branches[i].branch.special_points[j];  // a copy: branches grows below
+      if (!is_branching(sp.type)) continue;
+      if (tree.interrupted) {
+        mark(b, j, 0, EmanationOutcome::interrupted);
+        continue;
+      }
+      if (sp.status != LocationStatus::located) {
+        mark(b, j, 0, EmanationOutcome::not_located, -1, -1, "not located: its bracket did not converge");
+        continue;
+      }
+      if (const auto [k, jj] = seen_before(b, sp); k >= 0) {
+        mark(b, j, 0, EmanationOutcome::already_switched, k, static_cast<int>(jj));
+        continue;
+      }
+      if (tree.branches[i].depth >= options.depth) {
+        mark(b, j, 0, EmanationOutcome::depth_limit);
+        continue;
+      }
+      const auto sw = options.switchers.find(sp.type);
+      if (sw == options.switchers.end() || !sw->second) {
+        mark(b, j, 0, EmanationOutcome::not_available, -1, -1,
+             "switching at " + to_string(sp.type) + " is not available");
+        continue;
+      }
+      switched_at.emplace_back(b, j);
+      const ContinuationProblem& pr = problem_of(b);
+      int closed_sibling = -1;
+      for (EmanatingStart& s : sw->second(pr, tree.branches[i].branch, sp, options.switching)) {
+        if (!s.found) {
+          mark(b, j, s.side, EmanationOutcome::failed, -1, -1, s.message);
+          continue;
+        }
+        if (tree.interrupted || stopped()) {
+          tree.interrupted = true;
+          mark(b, j, s.side, EmanationOutcome::interrupted);
+          continue;
+        }
+        if (tree.branches.size() >= options.max_branches) {
+          mark(b, j, s.side, EmanationOutcome::branch_limit);
+          continue;
+        }
+        const ContinuationProblem& child_problem = s.problem ? *s.problem : pr;
+        // A closed branch from this point came back through it: the other half is the same loop.
+        if (closed_sibling >= 0 && !s.problem) {
+          mark(b, j, s.side, EmanationOutcome::duplicate, closed_sibling);
+          continue;
+        }
+        if (const auto [outcome, k] = covered(b, s, child_problem); outcome != EmanationOutcome::followed) {
+          mark(b, j, s.side, outcome, k);
+          continue;
+        }
+        ContinuationOptions o = options.switching.continuation;
+        o.direction = s.away;
+        if (options.events)
+          for (UserEvent& e : options.events(s.x, s.p)) o.events.push_back(std::move(e));
+        // A closed branch (a loop through BPs) comes back through its first point: it ends there instead of going
+        // round to max_points. Its chord passes within the sagitta bound (a tangent turn <= 60 degrees per step)
+        // of the first point, once it has gone farther than the switching amplitude.
+        struct Loop {
+          Eigen::VectorXd X0, prev;
+          double travelled = 0;
+          bool closed = false;
+        };
+        const auto loop = std::make_shared<Loop>(Loop{packed(s.x, s.p), packed(s.x, s.p)});
+        const double far = 4 * options.switching.amplitude;
+        const auto returned = [loop, far](const Eigen::VectorXd& x, double p) {
+          const Eigen::VectorXd X = packed(x, p), d = X - loop->prev;
+          const double len = d.norm();
+          const double at = len > 0 ? std::clamp(d.dot(loop->X0 - loop->prev) / (len * len), 0.0, 1.0) : 0.0;
+          loop->closed =
+              loop->closed || (loop->travelled > far && (loop->prev + at * d - loop->X0).norm() <= 0.15 * len);
+          loop->travelled += len;
+          loop->prev = X;
+          return loop->closed;
+        };
+        auto user_stop = o.stop;
+        o.stop = [flag = options.stop, user_stop, returned](const Eigen::VectorXd& x, double p) {
+          return (flag && flag->load()) || returned(x, p) || (user_stop && user_stop(x, p));
+        };
+        Branch child = continue_branch(child_problem, s.x, s.p, o);
+        if (loop->closed) child.message = "closed: back at its first point";
+        if (stopped()) {
+          tree.interrupted = true;
+          child.message = "interrupted after " + std::to_string(child.points.size()) + " points";
+        }
+        tree.branches.push_back({std::move(child), s.problem ? s.problem : tree.branches[i].problem, b,
+                                 static_cast<int>(j), s.side, tree.branches[i].depth + 1, loop->closed});
+        if (loop->closed) closed_sibling = static_cast<int>(tree.branches.size()) - 1;
+        mark(b, j, s.side, EmanationOutcome::followed, static_cast<int>(tree.branches.size()) - 1);
+        if (options.on_branch) options.on_branch(tree.branches.size(), tree.branches.size() - i - 1);
+      }
+    }
+  }
+  return tree;
+}
+
+}  // namespace rbcstab
