@@ -30,18 +30,20 @@ ModeAmplitudes final_amplitudes(const Scene& scene, const SimulationResult& resu
 
 double SkippedSamples::time(std::size_t k) const { return times.empty() ? sampling_time(k, dt) : times[k - first]; }
 
-std::vector<double> sampling_grid(double T, double dt) {
+namespace {
+// The output grid with room for `spare` more times, so that adding them does not copy it (80 MB at T = 1e7).
+std::vector<double> sampling_grid(double T, double dt, std::size_t spare) {
   std::vector<double> g;
   const auto n = static_cast<std::size_t>(std::floor(T / dt * (1 + 1e-12)));
-  g.reserve(n + 2);
+  g.reserve(n + 2 + spare);
   for (std::size_t k = 0; k <= n; ++k) g.push_back(std::min(T, sampling_time(k, dt)));
   if (T - g.back() > 1e-12 * T) g.push_back(T);
   g.back() = T;
   return g;
 }
 
-std::vector<double> output_grid(const Scene& scene, const SimulationOptions& options) {
-  if (options.t_eval.empty()) return sampling_grid(scene.T, scene.dt);
+std::vector<double> output_grid(const Scene& scene, const SimulationOptions& options, std::size_t spare) {
+  if (options.t_eval.empty()) return sampling_grid(scene.T, scene.dt, spare);
   const std::vector<double>& g = options.t_eval;
   for (std::size_t k = 0; k < g.size(); ++k) {
     const std::string at = "t_eval[" + std::to_string(k) + "]";
@@ -54,7 +56,17 @@ std::vector<double> output_grid(const Scene& scene, const SimulationOptions& opt
                                           std::to_string(k - 1) + "] = " + format_value(g[k - 1]) +
                                           ": the times must increase (by more than 1e-12 T)");
   }
-  return g;
+  std::vector<double> out;
+  out.reserve(g.size() + spare);
+  out.assign(g.begin(), g.end());
+  return out;
+}
+}  // namespace
+
+std::vector<double> sampling_grid(double T, double dt) { return sampling_grid(T, dt, 0); }
+
+std::vector<double> output_grid(const Scene& scene, const SimulationOptions& options) {
+  return output_grid(scene, options, 0);
 }
 
 double trajectory_bytes(const Scene& scene, const SimulationOptions& options) {
@@ -150,8 +162,9 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
   // The output grid is held once (at T = 1e7 it is 80 MB): the recorded samples are the grid times that are not
   // among the few the run adds (`added`, those within 1e-12 T of a sample dropped).
   const double tol = 1e-12 * scene.T;
-  std::vector<double> grid = options.record_trajectory ? output_grid(scene, options) : std::vector<double>{};
-  if (!options.record_trajectory && !options.t_eval.empty()) (void)output_grid(scene, options);  // checks t_eval
+  const std::size_t spare = kTailIntervals + 3;  // at most the times added below
+  std::vector<double> grid = options.record_trajectory ? output_grid(scene, options, spare) : std::vector<double>{};
+  if (!options.record_trajectory && !options.t_eval.empty()) (void)output_grid(scene, options, 0);  // checks t_eval
   const double tail_start = std::max(0.0, scene.T - options.tail_window);
   const bool grid_means = options.tail_means == TailMeans::grid;
   const bool quadrature_means = options.tail_means == TailMeans::quadrature;
