@@ -68,7 +68,7 @@ _KEYWORD_DOCS = (
     (("label_every",), "label_every: label every N-th point, an integer in [0, 100000000] (0: the ends and special "
                        "points only)"),
     (("point",), "point: the point-th special point of the curve's type along the branch, an integer in [1, 1000000]"),
-) + tuple(((k,), f"{k}: {limits}{'' if integer else ', dimensionless'}; default {default:g}: {text}")
+) + tuple(((k,), f"{k} ({limits}{'' if integer else ', dimensionless'}; default {default:g}): {text}")
           for k, integer, limits, default, text in TUNABLE_OPTIONS)
 
 
