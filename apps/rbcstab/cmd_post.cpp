@@ -6,9 +6,9 @@
 #include "checks.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
-#include "rbcstab/analysis/analysis_io.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
+#include "rbcstab/verdict/verdict_io.hpp"
 #include "scene_options.hpp"
 
 namespace rbcstab::cli {

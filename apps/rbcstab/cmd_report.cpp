@@ -52,7 +52,7 @@ int run_panel(ReportCliOptions& o, const SceneFile& sf, ReportOptions& ro) {
 int run(ReportCliOptions& o) {
   SceneFile sf = o.scene.read();
   const PanelKind kind = panel_kind(sf);
-  apply_truncation(sf, truncation_use(kind));
+  apply_scene_truncation(sf, truncation_use(kind));
   ReportOptions ro = o.report;
   ro.shape = {o.n_theta, 2 * o.n_theta};
   ro.reduced_companion = !o.no_reduced;

@@ -110,8 +110,8 @@ std::vector<std::string> SceneOptions::given_flags() const {
 }
 
 SceneFile SceneOptions::resolve(TruncationUse use) const {
-  SceneFile f = read_unchecked();  // apply_truncation checks it
-  apply_truncation(f, use);
+  SceneFile f = read_unchecked();  // apply_scene_truncation checks it
+  apply_scene_truncation(f, use);
   return f;
 }
 

@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "checks.hpp"
-#include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/diagram_table.hpp"
+#include "rbcstab/verdict/certified_run.hpp"
 #include "rbcstab/verdict/shear_rate.hpp"
 
 namespace rbcstab::cli {
@@ -31,8 +31,8 @@ struct SceneOptions {
   SceneFile read() const;
   // read() without its final check (validate_scene_file), for a library entry that checks the file itself.
   SceneFile read_unchecked() const;
-  // The file read, then the truncation policy for this use (apply_truncation, which checks it once): scene.L and
-  // L_reason.
+  // The file read, then the truncation policy for this use (apply_scene_truncation, which checks it once: a
+  // simulation's automatic L as simulate_scene decides it): scene.L and L_reason.
   SceneFile resolve(TruncationUse use) const;
   // The scene flags given on the command line, by name (e.g. "--lambda").
   std::vector<std::string> given_flags() const;

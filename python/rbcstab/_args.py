@@ -81,6 +81,7 @@ class Columns:
 
     @property
     def columns(self):
+        """The names of the columns, in order (``table[name]`` is each as a numpy array)."""
         return list(self._columns)
 
     def __getitem__(self, name):

@@ -55,6 +55,35 @@ _KINDS = {"min": _number, "max": _number, "relax_T": _number,
           **{k: _integer if integer else _number for k, integer, *_ in TUNABLE_OPTIONS}}
 
 
+# The numeric keywords of continuation, restart, switch and curve as their docstrings list them: the tunable options
+# from the library's declaration (TUNABLE_OPTIONS), the others with the library's limits
+# (continuation/tunable_options.hpp, branch_spec.cpp).
+_KEYWORD_DOCS = (
+    (("min", "max"), "min, max: the free parameter's bounds (the branch ends there exactly), finite and within its "
+                     "domain (parameter_table()'s 'domain'), in its unit (dimensionless; shear_rate in 1/s)"),
+    (("min2", "max2"), "min2, max2: parameter2's bounds, finite and within its domain, in its unit (dimensionless; "
+                       "shear_rate in 1/s)"),
+    (("max_points",), "max_points: points per direction, an integer in [2, 100000000]"),
+    (("relax_T",), "relax_T: the relaxation giving the start state, in the time unit 1/shear rate, finite and >= 0 "
+                   "(orbits: rounded up to whole periods 2 pi)"),
+    (("label_every",), "label_every: label every N-th point, an integer in [0, 100000000] (0: the ends and special "
+                       "points only)"),
+    (("point",), "point: the point-th special point of the curve's type along the branch, an integer in [1, 1000000]"),
+) + tuple(((k,), f"{k} ({limits}{'' if integer else ', dimensionless'}; default {default:g}): {text}")
+          for k, integer, limits, default, text in TUNABLE_OPTIONS)
+
+
+def _with_keyword_docs(fn):
+    """fn with the _KEYWORD_DOCS of its keywords appended to its docstring (one place for their ranges and units)."""
+    import inspect
+    params = inspect.signature(fn).parameters
+    lines = [text for names, text in _KEYWORD_DOCS if any(n in params for n in names)]
+    fn.__doc__ = (inspect.cleandoc(fn.__doc__) + "\n\nNumeric keywords (None: the library's default; arclength steps "
+                  "are measured in the dimensionless (state, parameter) space):\n\n" +
+                  "\n".join(f"- {line}" for line in lines))
+    return fn
+
+
 def _monitors(monitor, stop_at):
     """monitor={name: value, [values] or callable(point) -> float}, stop_at={name: value or callable} as the
     library's (name, values, stop, callable or None) list; None when neither is given (a restart keeps the run's)."""
@@ -111,6 +140,7 @@ def _wrap(run):
 
 
 # ------------------------------------------------------------------------------------------- entry points
+@_with_keyword_docs
 def continuation(scene, kind="equilibrium", parameter="lambda", min=None, max=None, *, direction=None, step=None,
                  max_step=None, max_points=None, relax_T=None, segments=None, switch_at_bp=False,
                  allow_unstable_start=False, label_every=None, curve=None, parameter2=None, min2=None, max2=None,
@@ -120,15 +150,12 @@ def continuation(scene, kind="equilibrium", parameter="lambda", min=None, max=No
     same name in snake_case, None its default; docs/continuation.md).
 
     kind: 'equilibrium' (reduced system), 'modal', 'full', 'orbit' or 'modal-orbit'; parameter: the free
-    parameter ('lambda', 'Delta', 'Delta0', 'B', 'C', 'Lambda', 'S', 'beta', 'shear_rate' on a physical scene); min, max: its bounds (the branch
-    ends there exactly); direction: 'forward', 'backward' or 'both' (default); step, max_step: the first and
-    largest arclength steps; max_points: points per direction; relax_T: the relaxation giving the start state;
-    segments: orbits' shooting segments; switch_at_bp: also continue the branch bifurcating at the first BP met;
-    allow_unstable_start: orbits, continue from an unstable start; label_every: label every N-th point.
-    curve ('LP', 'BP', 'HB', 'LPC', 'PD', 'NS', 'UZ') with parameter2, min2, max2 and point: the curve of the
-    point-th special point of that type in (parameter, parameter2) instead (a :class:`Curve`).
-    min_step, newton_tol, max_newton, location_tol, orbit_rtol, orbit_atol, orbit_samples: the numerical
-    options (:data:`TUNABLE_OPTIONS` lists each with its range and default). monitor: {name: value, [values] or
+    parameter ('lambda', 'Delta', 'Delta0', 'B', 'C', 'Lambda', 'S', 'beta', 'shear_rate' on a physical scene);
+    direction: 'forward', 'backward' or 'both' (default); switch_at_bp: also continue the branch bifurcating at the
+    first BP met; allow_unstable_start: orbits, continue from an unstable start. curve ('LP', 'BP', 'HB', 'LPC',
+    'PD', 'NS', 'UZ') with parameter2, min2, max2 and point: the curve of the point-th special point of that type
+    in (parameter, parameter2) instead (a :class:`Curve`). The numeric keywords (bounds, steps, the numerical
+    options of :data:`TUNABLE_OPTIONS`) are listed below with their ranges and units. monitor: {name: value, [values] or
     callable}: a UZ point named 'name=value' where a parameter or a numeric measure of the branch reaches each
     value; a callable f(point) -> float (point: a dict of the point's parameters and numeric measures) gives
     UZ points named 'name' at its zeros. stop_at: {name: value or callable}: end the branch (each direction)
@@ -346,6 +373,7 @@ class Branch(_args.Columns):
         return Branch(self._run, "switched")
 
     # ---- more runs from labelled points
+    @_with_keyword_docs
     def restart(self, label, parameter=None, *, kind=None, min=None, max=None, direction=None, step=None,
                 max_step=None, max_points=None, label_every=None, switch_at_bp=False, min_step=None, newton_tol=None,
                 max_newton=None, location_tol=None, segments=None, orbit_rtol=None, orbit_atol=None,
@@ -353,7 +381,8 @@ class Branch(_args.Columns):
         """Continues again from the point labelled `label` (``continue --restart FILE --label N``): in
         `parameter` (default: the run's) with the run's scene, kind and options, those given here changed (the
         bounds: the run's when the parameter is the run's, none otherwise). The numerical options are those of
-        :func:`continuation` (segments: only the run's own for orbits, the labelled state is on its mesh);
+        :func:`continuation` (segments: only the run's own for orbits, the labelled state is on its mesh: any
+        other value is refused);
         monitor, stop_at (as :func:`continuation`'s) replace the run's monitors and stops, {} drops them."""
         options = _options(parameter=parameter, kind=kind, min=min, max=max, direction=direction, step=step,
                            max_step=max_step, max_points=max_points, label_every=label_every,
@@ -364,6 +393,7 @@ class Branch(_args.Columns):
         return _run(_rbcstab.restart, f"restart from label {label}", progress, self._run,
                     _integer("label", label), options)
 
+    @_with_keyword_docs
     def switch(self, label, *, min=None, max=None, direction=None, step=None, max_step=None, max_points=None,
                label_every=None, min_step=None, newton_tol=None, max_newton=None, location_tol=None, segments=None,
                orbit_rtol=None, orbit_atol=None, orbit_samples=None, monitor=None, stop_at=None, progress=False):
@@ -378,6 +408,7 @@ class Branch(_args.Columns):
         return _run(_rbcstab.switch, f"switch at label {label}", progress, self._run, _integer("label", label),
                     options)
 
+    @_with_keyword_docs
     def curve(self, label, parameter2, min2=None, max2=None, *, type=None, step=None, max_step=None,
               max_points=None, label_every=None, min_step=None, newton_tol=None, max_newton=None, location_tol=None,
               segments=None, orbit_rtol=None, orbit_atol=None, orbit_samples=None, monitor=None, stop_at=None,
@@ -483,6 +514,7 @@ class Curve(Branch):
 
     @property
     def one_parameter_branch(self):
+        """The branch the curve started from (a Branch over the same run: its special point is the curve's start)."""
         return Branch(self._run, "one_parameter")
 
 

@@ -106,10 +106,12 @@ def initial_state(scene, level=None):
 
 
 def rhs(scene, level, t, y):
-    """F(t, y) of the scene at the level (``Model(scene, level).rhs(t, y)``; builds the Model on each call)."""
+    """F(t, y) of the scene at the level (``Model(scene, level).rhs(t, y)``; builds the Model on each call); t: the
+    time in the unit 1/shear rate, finite."""
     return Model(scene, level).rhs(t, y)
 
 
 def jacobian(scene, level, t, y):
-    """dF/dy at (t, y), dense (n, n) (``Model(scene, level).jacobian(t, y)``; builds the Model on each call)."""
+    """dF/dy at (t, y), dense (n, n) (``Model(scene, level).jacobian(t, y)``; builds the Model on each call); t: the
+    time in the unit 1/shear rate, finite."""
     return Model(scene, level).jacobian(t, y)

@@ -29,18 +29,20 @@ def physical_map(scene, viscosity=(1e-3, 5e-2), viscosities=9, shear_rate=(1e-1,
     """The regimes of a physical scene's cell over outer viscosity x shear rate.
 
     scene: a Scene with a complete [physical] cell including inner_viscosity (lambda follows eta_ex).
-    viscosity: (min, max) outer viscosity eta_ex in Pa s, > 0; viscosities: how many, log-spaced (1..1000).
-    shear_rate: (min, max) in 1/s, 0 < min < max: the range both searches scan, samples_per_decade (1..100)
-    log-spaced samples, then bisection in ln(shear rate) to hi/lo - 1 <= rtol (1e-12..0.1). The reduced regime
-    is stiff at small capillary number, so the cost grows as 1/min: the default starts at 0.1/s.
+    viscosity: (min, max) outer viscosity eta_ex in Pa s, > 0; viscosities: how many, log-spaced, an integer in
+    [1, 1000]. shear_rate: (min, max) in 1/s, 0 < min < max: the range both searches scan, samples_per_decade (an
+    integer in [1, 100]) log-spaced samples, then bisection in ln(shear rate) to hi/lo - 1 <= rtol (dimensionless,
+    in [1e-12, 0.1]). The reduced regime is stiff at small capillary number, so the cost grows as 1/min: the
+    default starts at 0.1/s.
     Per viscosity: the tumbling -> swinging shear rate of the in-plane cell (reduced dynamics) and, with
     onset=True, the l >= 3 onset for each rest orientation (the summary's search). spreads: "healthy" (the
     healthy-cell ranges of docs/units.md for the inputs the cell has), None, or a list of (key, lo, hi[, source])
     with key a [physical] key (SI) or "Delta"/"Delta0": each boundary's band is its min and max over the cell at
     each range's ends, one key at a time. experiments: a CSV of observations (default: the shipped
-    data/experiments.csv). threads: 0 = all cores (the result does not depend on it). progress: True, a callable
-    f(done, total, eta) or a tqdm bar, counting cells x viscosities. Ctrl-C raises KeyboardInterrupt.
-    Cost: about 0.1-1 s of CPU per cell and viscosity for the tumbling search; the onset search costs more."""
+    data/experiments.csv). threads: an integer in [0, 4096], 0 = all cores (the result does not depend on it).
+    progress: True, a callable f(done, total, eta) or a tqdm bar, counting cells x viscosities. Ctrl-C raises
+    KeyboardInterrupt. Cost: about 0.1-1 s of CPU per cell and viscosity for the tumbling search; the onset search
+    costs more."""
     _args.scene(scene)
     lo_v, hi_v = _range("viscosity", viscosity)
     lo_r, hi_r = _range("shear_rate", shear_rate)

@@ -30,6 +30,7 @@ class Report(dict):
         self.text = text
 
     def to_dict(self):
+        """The CLI's --json object as a plain dict."""
         return dict(self)
 
     def __repr__(self):
@@ -137,9 +138,11 @@ class Simulation:
 
 
 def simulate(scene, model=None, stepper=None, rtol=None, atol=None, t_eval=None, dense_output=False, progress=False):
-    """Integrates the scene (rbcstab simulate). model ('auto', 'full', 'modal', 'reduced'), stepper, rtol and
-    atol override the scene's (whose defaults are 'auto', 'rk8pd', 1e-8, 1e-12). t_eval: the sample times
-    (finite, increasing, in [0, T]; default the scene's grid 0, dt, ..., T), at which the integrator stops.
+    """Integrates the scene (rbcstab simulate). model ('auto', 'full', 'modal', 'reduced') and stepper override
+    the scene's (defaults 'auto', 'rk8pd'); rtol: the relative tolerance (dimensionless), in [1e-15, 0.1]; atol:
+    the absolute tolerance (in the state's dimensionless units), in [0, 1] (None: the scene's, default 1e-8 and
+    1e-12). t_eval: the sample times in the time unit 1/shear rate (finite, increasing, in [0, T]; default the
+    scene's grid 0, dt, ..., T), at which the integrator stops.
     dense_output=True: ``run.sol(t)`` gives the observables at any t (else ``run.sol`` is None). The run may stop early on a
     certified attractor (``terminated_at``, ``early_termination``; the skipped samples are NaN with
     ``integrated`` False);

@@ -255,7 +255,7 @@ def diagram(scene, axes=None, counts=None, threads=0, progress=True, *, x_range=
     shard              (k, n) or 'k/n': compute only the points with index % n == k (combine with rbcstab merge)
     journal            a checkpoint file (the CLI's PREFIX.journal): finished points are appended as they
                        complete, and a later call with the same journal and configuration resumes from them
-    sync_interval      fdatasync the journal at most this often [s]
+    sync_interval      fdatasync the journal at most this often [s], finite and >= 0
     include_seconds    False: no per-point wall-clock seconds (the CLI's --no-seconds)
     finite_horizon_agreement  False: skip the finite-horizon predictor in the agreement block
 
@@ -330,18 +330,22 @@ class Trace(_Document):
 
     @property
     def criterion(self):
+        """The criterion traced: 'asymptotic' or 'finite-horizon' (the ``criterion`` keyword of :func:`trace`)."""
         return self._doc["criterion"]
 
     @property
     def evaluations(self):
+        """How many times the criterion was evaluated (the unit of the progress count)."""
         return self._doc["evaluations"]
 
     @property
     def method(self):
+        """How the boundary was traced: "by continuation" or "in closed form in B" (the ``method`` keyword)."""
         return self._doc["method"]
 
     @property
     def notes(self):
+        """What the tracer says about its result (a list of lines, as the CLI's JSON "notes")."""
         return list(self._doc["notes"])
 
     @property
@@ -388,10 +392,10 @@ def trace(scene, criterion="asymptotic", *, axes=None, x_range=None, y_range=Non
 
     criterion  'asymptotic' (mu_l = Upsilon_l(<sigma_R>) = 0) or 'finite-horizon' (G_l(T) = 0)
     axes, x_range, y_range, alpha_fixed   the plane, as for diagram() (default: the scene's [diagram] table)
-    horizon    the finite horizon T (0: the scene's T)
+    horizon    the finite horizon T in the time unit 1/shear rate, in [0, 1e7] (0: the scene's T)
     lines      interior lines searched for starting points, an integer in [0, 10000]
     samples    brackets per edge or line when searching for starts, an integer in [2, 1000000]
-    max_step   continuation step cap in the unit square (the curve's resolution), > 0
+    max_step   continuation step cap in the unit square, dimensionless and > 0 (the curve's resolution)
     method     'auto' (on ln B planes the finite-horizon and in-plane asymptotic boundaries in closed form in B,
                one reduced transient or periodic orbit per value of the other axis; the rest by continuation) or
                'continuation' (every plane); the result's ``method`` says which was used
@@ -453,6 +457,7 @@ class Fig6eTable(_args.Columns):
         return json.loads(json.dumps(self._data))
 
     def to_csv(self):
+        """The CSV ``rbcstab post --fig6e`` prints (text)."""
         return self._csv
 
     def __repr__(self):
@@ -484,7 +489,7 @@ class Fig6eTable(_args.Columns):
 def fig6e(scene, lambdas=None, B=None, C=None, progress=False):
     """The Fig. 6e table (``rbcstab post --fig6e``): the post-instability Delta~2 (Eq. ss) against the simulated
     long-time mean, one run per (lambda, B, C). Delta, Delta0, beta, delta, L, T and the integrator come from
-    the scene; lambdas, B, C (each > 0; default: the scene's [fig6e] table, else the paper's 1, 5 / 1..10 /
+    the scene; lambdas, B, C (dimensionless, each > 0; default: the scene's [fig6e] table, else the paper's 1, 5 / 1..10 /
     0.01..0.08) choose the grid. progress: True, a callable f(done, total, eta) or a tqdm bar, counting the runs
     of the grid. Ctrl-C raises KeyboardInterrupt; the GIL is released meanwhile."""
     scene = _scene(scene)

@@ -275,7 +275,9 @@ class Model {
 void bind_model(py::module_& m) {
   py::class_<Model> cls(m, "Model", "The system a scene runs on (use rbcstab.Model, which documents it).");
   cls.def(py::init([](const py::handle& scene) { return std::make_unique<Model>(scene); }), py::arg("scene"));
-  cls.def_property_readonly("n", &Model::n, "the state's dimension");
+  // The time every method takes, once for all of them.
+  const std::string t_doc = " t: the time in the unit 1/shear rate, finite.";
+  cls.def_property_readonly("n", &Model::n, "the state's dimension, an integer >= 1");
   cls.def_property_readonly(
       "level", [](const Model& s) { return to_string(s.built().level.level); },
       "the model level: 'full', 'modal' or 'reduced'");
@@ -288,19 +290,21 @@ void bind_model(py::module_& m) {
   cls.def_property_readonly(
       "warnings", [](const Model& s) { return s.built().warnings; }, "the warnings a simulation of this scene reports");
   cls.def_property_readonly(
-      "L", [](const Model& s) { return s.file().scene.L; }, "the truncation: modes l = 2..L");
+      "L", [](const Model& s) { return s.file().scene.L; }, "the truncation: modes l = 2..L, an integer in [2, 100]");
   cls.def_property_readonly(
       "L_reason", [](const Model& s) { return s.file().L_reason; }, "why this L (as L_reason in simulate's output)");
   cls.def_property_readonly("y0", &Model::y0, "the initial state (a new array on each access)");
   cls.def_property_readonly("state_names", &Model::names, "the name of each state component, in order");
   cls.def("rhs", &Model::rhs, py::arg("t"), py::arg("y"),
-          "F(t, y): a new array of shape (n,), or (n, k) for k states as the columns of y (n, k).");
+          ("F(t, y): a new array of shape (n,), or (n, k) for k states as the columns of y (n, k)." + t_doc).c_str());
   cls.def("jacobian_p", &Model::jacobian_p, py::arg("parameter"), py::arg("t"), py::arg("y"),
-          "dF/dq at (t, y) for a continuation parameter q: a new array of shape (n,).");
+          ("dF/dq at (t, y) for a continuation parameter q: a new array of shape (n,)." + t_doc).c_str());
   cls.def("jacobian_sparsity", &Model::jacobian_sparsity, "where dF/dy can be nonzero: a bool array (n, n).");
-  cls.def("jacobian", &Model::jacobian, py::arg("t"), py::arg("y"), "dF/dy at (t, y): a new array of shape (n, n).");
+  cls.def("jacobian", &Model::jacobian, py::arg("t"), py::arg("y"),
+          ("dF/dy at (t, y): a new array of shape (n, n)." + t_doc).c_str());
   cls.def("observables", &Model::observables, py::arg("t"), py::arg("y"),
-          "Delta_l (index l - 2), sigma, r and Psi at one state y (n,) or at the columns of y (n, k) at times t (k,).");
+          "Delta_l (index l - 2), sigma, r and Psi at one state y (n,) or at the columns of y (n, k) at times t (k,): "
+          "t in the time unit 1/shear rate, finite.");
 }
 
 }  // namespace rbcstab::python

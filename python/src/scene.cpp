@@ -462,8 +462,12 @@ a TypeError. Scenes are immutable and hashable: ``replace(**changes)`` returns a
   }
   for (const SceneParameter q : composite_parameters()) {
     const ParameterRow& row = parameter_row(q);
+    // As the stored parameters' keys say it (io's scene_keys): the unit (or dimensionless) and the domain.
+    const std::string doc = std::string(row.description) +
+                            (*row.unit ? std::string(" [") + row.unit + "]" : " (dimensionless)") + ", " +
+                            parameter_domain(q, Parameters{}).text(false);
     cls.def_property_readonly(
-        row.name, [q](const SceneFile& f) { return get_parameter(f.scene, q); }, row.description);
+        row.name, [q](const SceneFile& f) { return get_parameter(f.scene, q); }, doc.c_str());
   }
   cls.def("__repr__", &repr);
   cls.def("__eq__", [](const SceneFile& a, const py::object& b) -> py::object {

@@ -24,8 +24,10 @@
 #include <vector>
 
 #include "model/test_scenes.hpp"
+#include "rbcstab/analysis/post_instability.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/analysis/thresholds.hpp"
+#include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/json.hpp"
@@ -471,6 +473,102 @@ TEST(CertifiedRun, TransientStopsEarlyAndAgreesWithTheFullHorizon) {
   const ReducedTransient longer = certified_transient(validated(far), o);
   ASSERT_EQ(longer.status, IntegrationStatus::success);
   EXPECT_LT(longer.counters.rhs_evaluations, 2 * early.counters.rhs_evaluations);
+}
+
+// The first number of `a` that differs from `b`'s by more than rel max(1, |b|), or another value that differs
+// (strings, structure), as "path: a vs b"; "" if none. Keys in `skip` (cost, the early stop's own report) are
+// not compared.
+std::string json_difference(const nlohmann::json& a, const nlohmann::json& b, double rel,
+                            const std::vector<std::string>& skip, const std::string& path = "") {
+  if (a.is_number() && b.is_number()) {
+    const double x = a.get<double>(), y = b.get<double>();
+    return std::abs(x - y) <= rel * std::max(1.0, std::abs(y)) ? "" : path + ": " + a.dump() + " vs " + b.dump();
+  }
+  if (a.is_object() && b.is_object()) {
+    for (const auto& [key, value] : b.items()) {
+      if (std::find(skip.begin(), skip.end(), key) != skip.end()) continue;
+      if (!a.contains(key)) return path + "/" + key + ": missing";
+      if (std::string d = json_difference(a[key], value, rel, skip, path + "/" + key); !d.empty()) return d;
+    }
+    return "";
+  }
+  if (a.is_array() && b.is_array() && a.size() == b.size()) {
+    for (std::size_t k = 0; k < a.size(); ++k)
+      if (std::string d = json_difference(a[k], b[k], rel, skip, path + "/" + std::to_string(k)); !d.empty()) return d;
+    return "";
+  }
+  return a == b ? "" : path + ": " + a.dump() + " vs " + b.dump();
+}
+
+TEST(CertifiedRun, JsonDifferenceFindsWhatDiffers) {
+  const nlohmann::json a = {{"x", 1.0}, {"s", "a"}, {"v", {1.0, 2.0}}, {"seconds", 1.0}};
+  nlohmann::json b = a;
+  EXPECT_EQ(json_difference(a, b, 1e-9, {}), "");
+  b["v"][1] = 2.0 + 1e-6;
+  EXPECT_EQ(json_difference(a, b, 1e-9, {}), "/v/1: 2.0 vs 2.000001");
+  EXPECT_EQ(json_difference(a, b, 1e-6, {}), "");
+  b["s"] = "b";
+  EXPECT_NE(json_difference(a, b, 1e-6, {}), "");
+  b = a;
+  b["seconds"] = 2.0;
+  EXPECT_EQ(json_difference(a, b, 1e-9, {"seconds"}), "");
+}
+
+// summary, post, report and shape stop integrating where the output needs only the attractor: the automatic L
+// (apply_scene_truncation, run_summary, run_post) from the certified transient and a certified candidate run, the
+// summary's finite-horizon predictor from the certified transient, post's run certified. The oracle: the same
+// computation from the transient integrated to T and plain (full-horizon) runs, as before. Everything reported
+// (but the cost and the early stop's own report) agrees to the run's rtol (relative, or absolute below 1): measured
+// 1.2e-9 in the summary (a finite-horizon rate), 1e-16 in post (its attractor is an equilibrium), and the same L and
+// L_reason. A transient one forcing period's integral off (2 pi / T = 3e-3 of <sigma_R>_T) fails that comparison.
+TEST(CertifiedRun, SummaryPostAndLDecisionAgreeWithTheFullHorizon) {
+  SceneFile file;
+  file.scene.T = 2000;
+  const double rtol = file.options.integrator.rtol;  // 1e-8
+  const std::vector<std::string> cost = {"seconds",
+                                         "rhs_evaluations",
+                                         "steps",
+                                         "failed_steps",
+                                         "jacobian_evaluations",
+                                         "terminated_at",
+                                         "terminated_at_reason",
+                                         "early_termination",
+                                         "samples",
+                                         "samples_integrated",
+                                         "counters"};
+
+  // The L decision of report and shape.
+  SceneFile certified = file, plain = file;
+  apply_scene_truncation(certified, TruncationUse::simulation);
+  apply_truncation(plain, TruncationUse::simulation);
+  EXPECT_EQ(certified.scene.L, plain.scene.L);
+  EXPECT_EQ(certified.L_reason, plain.L_reason);
+  EXPECT_TRUE(certified.truncation_check.has_value());  // a candidate was run and checked
+
+  // summary: its prediction from the certified transient against the one integrated to T, on the same run.
+  const SummaryRun s = run_summary(file);
+  EXPECT_EQ(s.file.scene.L, plain.scene.L);
+  const ValidScene valid = validated(s.file);
+  const ReducedTransient full = truncation_transient(valid);
+  const nlohmann::json early = summary_json(s.file, s.run, s.prediction);
+  const nlohmann::json oracle = summary_json(s.file, s.run, predict(valid, full, &s.run));
+  EXPECT_EQ(json_difference(early, oracle, rtol, cost), "");
+  ReducedTransient slipped = full;  // one forcing period's integral too many
+  slipped.integral_end += 2 * kPi * full.integral_end / full.T;
+  slipped.integral.back() = slipped.integral_end;
+  EXPECT_NE(json_difference(summary_json(s.file, s.run, predict(valid, slipped, &s.run)), oracle, rtol, cost), "");
+
+  // post: its certified run against the plain run at the plainly decided L (run_post before).
+  const PostRun p = run_post(file);
+  SimulationOptions o = plain.options;
+  o.record_trajectory = false;
+  SceneFile q = file;
+  const SimulationResult full_run = simulate_truncated(q, o);
+  ASSERT_EQ(p.file.scene.L, q.scene.L);
+  EXPECT_TRUE(p.run.early.terminated);
+  const nlohmann::json post_early = post_json(p.file, p.post, p.run);
+  const nlohmann::json post_oracle = post_json(q, post_instability(q.scene.parameters, q.scene.L, 0.0), full_run);
+  EXPECT_EQ(json_difference(post_early, post_oracle, rtol, cost), "");
 }
 
 // The reduced level (in plane, no perturbation) and the modal level at L = 2 (out of plane: m = 1 content)

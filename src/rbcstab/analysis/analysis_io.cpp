@@ -101,15 +101,6 @@ std::string post_text(const SceneFile& file, const PostInstability& post, const 
   return out.str();
 }
 
-PostRun run_post(SceneFile file) {
-  PostRun out{std::move(file), {}, {}};
-  SimulationOptions options = out.file.options;
-  options.record_trajectory = false;
-  out.run = simulate_truncated(out.file, options);
-  out.post = post_instability(out.file.scene.parameters, out.file.scene.L, 0.0);
-  return out;
-}
-
 std::string truncation_convergence_csv(const TruncationConvergence& t) {
   std::ostringstream csv;
   csv << std::setprecision(10) << "L,status,l_Delta,sigma_final,error_Delta,error_sigma,rhs_evaluations,seconds\n";

@@ -34,14 +34,13 @@ Quantity simulated_Delta2(const SimulationResult& r);
 nlohmann::json post_json(const SceneFile& file, const PostInstability& post, const SimulationResult& r);
 std::string post_text(const SceneFile& file, const PostInstability& post, const SimulationResult& r);
 
-// The post command's computation on a scene file (L as it gives it): the truncation for a simulation, the
-// out-of-plane Delta~2 (r0 = 0: the paper's case) and the run without its trajectory. Every front end calls this.
+// The post command's computation on a scene file: the out-of-plane Delta~2 beside the run (run_post,
+// verdict/verdict_io.hpp: the run is certified, which this module cannot do).
 struct PostRun {
   SceneFile file;
   PostInstability post;
   SimulationResult run;
 };
-PostRun run_post(SceneFile file);
 
 // The truncation study (analysis/truncation_convergence.hpp): one CSV row per L (L, status, l_Delta, sigma_final,
 // error_Delta, error_sigma, rhs_evaluations, seconds; an empty field for a missing number), which is also its text,

@@ -546,16 +546,18 @@ SimulationResult simulate_truncated(SceneFile& file, const ValidScene& valid, co
   return run_full ? run_full(valid, options) : simulate(valid, options);
 }
 
-void apply_truncation(SceneFile& file, TruncationUse use, const ReducedTransient* transient) {
-  apply_truncation(file, validated(file), use, transient);
+void apply_truncation(SceneFile& file, TruncationUse use, const ReducedTransient* transient,
+                      const SceneRunner& run_candidate, const TransientRunner& transient_run) {
+  apply_truncation(file, validated(file), use, transient, run_candidate, transient_run);
 }
 
-void apply_truncation(SceneFile& file, const ValidScene& valid, TruncationUse use, const ReducedTransient* transient) {
+void apply_truncation(SceneFile& file, const ValidScene& valid, TruncationUse use, const ReducedTransient* transient,
+                      const SceneRunner& run_candidate, const TransientRunner& transient_run) {
   if (&*valid != &file.scene) throw InvalidArgument("valid", "valid must prove this file's own scene: validated(file)");
   if (use == TruncationUse::simulation) {
     SimulationOptions o = file.options;
     o.record_trajectory = false;
-    (void)decide_simulation(file, valid, o, transient, {}, {});
+    (void)decide_simulation(file, valid, o, transient, run_candidate, transient_run);
     return;
   }
   const TruncationDecision d = resolve_valid(valid, file.origin("run.L"), use, {}, transient);

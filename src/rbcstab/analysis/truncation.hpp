@@ -119,10 +119,13 @@ SimulationResult simulate_truncated(SceneFile& file, const ValidScene& valid, co
 
 // The policy applied to a scene file (its L's origin) for a front end that integrates the scene itself: sets
 // scene.L, L_reason (and for a simulation, by simulate_truncated without a trajectory, truncation_check), then
-// validates the scene. A simulation's L is then the one whose run was checked.
-void apply_truncation(SceneFile& file, TruncationUse use, const ReducedTransient* transient = nullptr);
+// validates the scene. A simulation's L is then the one whose run was checked. run_candidate, transient_run: as
+// simulate_truncated's run_full and transient_run (verdict's apply_scene_truncation makes both certified).
+void apply_truncation(SceneFile& file, TruncationUse use, const ReducedTransient* transient = nullptr,
+                      const SceneRunner& run_candidate = {}, const TransientRunner& transient_run = {});
 // The same for a file already checked (valid = validated(file)), which stays valid: the L set is checked alone.
 void apply_truncation(SceneFile& file, const ValidScene& valid, TruncationUse use,
-                      const ReducedTransient* transient = nullptr);
+                      const ReducedTransient* transient = nullptr, const SceneRunner& run_candidate = {},
+                      const TransientRunner& transient_run = {});
 
 }  // namespace rbcstab

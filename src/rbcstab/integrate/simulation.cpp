@@ -30,18 +30,20 @@ ModeAmplitudes final_amplitudes(const Scene& scene, const SimulationResult& resu
 
 double SkippedSamples::time(std::size_t k) const { return times.empty() ? sampling_time(k, dt) : times[k - first]; }
 
-std::vector<double> sampling_grid(double T, double dt) {
+namespace {
+// The output grid with room for `spare` more times, so that adding them does not copy it (80 MB at T = 1e7).
+std::vector<double> sampling_grid(double T, double dt, std::size_t spare) {
   std::vector<double> g;
   const auto n = static_cast<std::size_t>(std::floor(T / dt * (1 + 1e-12)));
-  g.reserve(n + 2);
+  g.reserve(n + 2 + spare);
   for (std::size_t k = 0; k <= n; ++k) g.push_back(std::min(T, sampling_time(k, dt)));
   if (T - g.back() > 1e-12 * T) g.push_back(T);
   g.back() = T;
   return g;
 }
 
-std::vector<double> output_grid(const Scene& scene, const SimulationOptions& options) {
-  if (options.t_eval.empty()) return sampling_grid(scene.T, scene.dt);
+std::vector<double> output_grid(const Scene& scene, const SimulationOptions& options, std::size_t spare) {
+  if (options.t_eval.empty()) return sampling_grid(scene.T, scene.dt, spare);
   const std::vector<double>& g = options.t_eval;
   for (std::size_t k = 0; k < g.size(); ++k) {
     const std::string at = "t_eval[" + std::to_string(k) + "]";
@@ -54,7 +56,17 @@ std::vector<double> output_grid(const Scene& scene, const SimulationOptions& opt
                                           std::to_string(k - 1) + "] = " + format_value(g[k - 1]) +
                                           ": the times must increase (by more than 1e-12 T)");
   }
-  return g;
+  std::vector<double> out;
+  out.reserve(g.size() + spare);
+  out.assign(g.begin(), g.end());
+  return out;
+}
+}  // namespace
+
+std::vector<double> sampling_grid(double T, double dt) { return sampling_grid(T, dt, 0); }
+
+std::vector<double> output_grid(const Scene& scene, const SimulationOptions& options) {
+  return output_grid(scene, options, 0);
 }
 
 double trajectory_bytes(const Scene& scene, const SimulationOptions& options) {
@@ -147,22 +159,39 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
   // Output grid, plus the fine grid over the tail window for grid means or the window's start for quadrature
   // means (there the integrator switches to the system with the quadratures). Samples that are not recorded are
   // not integrated to (T is: the state there is reported).
-  const std::vector<double> user_grid =
-      options.record_trajectory || !options.t_eval.empty() ? output_grid(scene, options) : std::vector<double>{};
+  // The output grid is held once (at T = 1e7 it is 80 MB): the recorded samples are the grid times that are not
+  // among the few the run adds (`added`, those within 1e-12 T of a sample dropped).
+  const double tol = 1e-12 * scene.T;
+  const std::size_t spare = kTailIntervals + 3;  // at most the times added below
+  std::vector<double> grid = options.record_trajectory ? output_grid(scene, options, spare) : std::vector<double>{};
+  if (!options.record_trajectory && !options.t_eval.empty()) (void)output_grid(scene, options, 0);  // checks t_eval
   const double tail_start = std::max(0.0, scene.T - options.tail_window);
   const bool grid_means = options.tail_means == TailMeans::grid;
   const bool quadrature_means = options.tail_means == TailMeans::quadrature;
-  std::vector<double> grid = options.record_trajectory ? user_grid : std::vector<double>{};
-  const auto recorded = std::ptrdiff_t(grid.size());
-  grid.push_back(scene.T);  // the state there is reported
+  std::vector<double> added{scene.T};  // the state there is reported
   if (grid_means)
-    for (int k = 0; k <= kTailIntervals; ++k) grid.push_back(tail_start + (scene.T - tail_start) * k / kTailIntervals);
-  if (quadrature_means) grid.push_back(tail_start);
-  // The output grid is sorted already: sort only the few times added, then merge (linear in the samples).
-  std::sort(grid.begin() + recorded, grid.end());
+    for (int k = 0; k <= kTailIntervals; ++k) added.push_back(tail_start + (scene.T - tail_start) * k / kTailIntervals);
+  if (quadrature_means) added.push_back(tail_start);
+  std::sort(added.begin(), added.end());
+  added.erase(std::unique(added.begin(), added.end(), [&](double a, double b) { return b - a <= tol; }), added.end());
+  const auto recorded = std::ptrdiff_t(grid.size());
+  std::erase_if(added, [&](double a) {
+    const auto it = std::lower_bound(grid.begin(), grid.begin() + recorded, a - tol);
+    return it != grid.begin() + recorded && *it <= a + tol;
+  });
+  // The output grid is sorted already: merge the few times added (linear in the samples).
+  grid.insert(grid.end(), added.begin(), added.end());
   std::inplace_merge(grid.begin(), grid.begin() + recorded, grid.end());
-  grid.erase(std::unique(grid.begin(), grid.end(), [&](double a, double b) { return b - a <= 1e-12 * scene.T; }),
-             grid.end());
+  auto is_added = [&](double t) {
+    const auto it = std::lower_bound(added.begin(), added.end(), t - tol);
+    return it != added.end() && *it <= t + tol;
+  };
+  // Recorded samples before time t (exclusive of t - tol).
+  auto samples_before = [&](double t) {
+    const auto in_grid = std::lower_bound(grid.begin(), grid.end(), t - tol) - grid.begin();
+    const auto in_added = std::lower_bound(added.begin(), added.end(), t - tol) - added.begin();
+    return std::size_t(in_grid - in_added);
+  };
 
   const std::vector<double> y0 = system->initial_state();
   const Observation o0 = system->observe(0, y0);
@@ -209,15 +238,13 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
     const Observation o = system->observe(t, y.first(n));
     last = o;
     const double psi = t == 0 ? Psi : unwrap(o);
-    if (user_index < user_grid.size() && std::abs(user_grid[user_index] - t) <= 1e-12 * scene.T) {
+    if (options.record_trajectory && !is_added(t)) {
       ++user_index;
-      if (options.record_trajectory) {
-        res.trajectory.t.push_back(t);
-        res.trajectory.Delta_l.push_back(o.Delta_l);
-        res.trajectory.sigma.push_back(o.sigma);
-        res.trajectory.r.push_back(o.r());
-        res.trajectory.Psi.push_back(psi);
-      }
+      res.trajectory.t.push_back(t);
+      res.trajectory.Delta_l.push_back(o.Delta_l);
+      res.trajectory.sigma.push_back(o.sigma);
+      res.trajectory.r.push_back(o.r());
+      res.trajectory.Psi.push_back(psi);
     }
     // Only the uniform tail grid feeds the averages: user samples inside the window (dt not a
     // multiple of the tail spacing) would break Simpson's rule and drop it to the trapezoid rule.
@@ -284,24 +311,23 @@ SimulationResult simulate(const ValidScene& valid, const SimulationOptions& opti
     res.early.terminated_at = ir.t_reached;
     res.early.resumed_at = jump.t;
     Psi += jump.Psi_advance;
-    const auto resume_index =
-        std::size_t(std::lower_bound(user_grid.begin(), user_grid.end(), jump.t - 1e-12 * scene.T) - user_grid.begin());
+    const std::size_t resume_index = options.record_trajectory ? samples_before(jump.t) : 0;
     // The skipped samples: described, not stored (Trajectory::skipped), so that a long skip costs nothing.
     if (options.record_trajectory && user_index < resume_index) {
       SkippedSamples& gap = res.trajectory.skipped;
       gap.first = user_index;
       gap.count = resume_index - user_index;
       gap.dt = scene.dt;
-      if (!options.t_eval.empty())
-        gap.times.assign(user_grid.begin() + std::ptrdiff_t(user_index),
-                         user_grid.begin() + std::ptrdiff_t(resume_index));
+      if (!options.t_eval.empty())  // the recorded samples are t_eval's times
+        gap.times.assign(options.t_eval.begin() + std::ptrdiff_t(user_index),
+                         options.t_eval.begin() + std::ptrdiff_t(resume_index));
     }
     user_index = resume_index;
     const Observation resumed = system->observe(jump.t, jump.y);
     if (options.dense_output) res.dense.start_segment();
     keep_dense(jump.t, resumed, resumed.Psi_near(Psi));
     if (options.on_step) options.on_step(jump.t, resumed);
-    const std::vector<double> rest(std::lower_bound(grid.begin(), grid.end(), jump.t), grid.end());
+    const std::span<const double> rest(std::lower_bound(grid.begin(), grid.end(), jump.t), grid.end());
     append(ir, run(jump.t, jump.y, rest, remaining(options.integrator, ir), {}));
   }
   res.status = ir.status;

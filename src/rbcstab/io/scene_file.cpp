@@ -127,26 +127,29 @@ std::vector<SceneKey> make_scene_keys() {
                  r.name,
                  ValueKind::number,
                  std::string("--") + r.name,
-                 std::string(r.description) + ", " + parameter_domain(q, Parameters{}).text(false),
+                 std::string(r.description) + (*r.unit ? std::string(" [") + r.unit + "]" : " (dimensionless)") + ", " +
+                     parameter_domain(q, Parameters{}).text(false),
                  {},
                  [q](const SceneFile& f) { return SceneValue{get_parameter(f.scene, q)}; },
                  [q](SceneFile& f, const SceneValue& v) { set_parameter(f.scene, q, number_of(v)); }});
   }
-  k.push_back({"initial",
-               "delta_l",
-               ValueKind::modes,
-               "--delta-l",
-               "per-mode perturbation override, l=value or a comma list 3=1e-3,4=2e-3 (repeatable; each mode once)",
-               {},
-               [](const SceneFile& f) { return SceneValue{f.scene.delta_l}; },
-               [](SceneFile& f, const SceneValue& v) { merge_modes(f.scene.delta_l, v); }});
+  k.push_back(
+      {"initial",
+       "delta_l",
+       ValueKind::modes,
+       "--delta-l",
+       "per-mode perturbation override Delta_l(0) (dimensionless, in [0, Delta]; modes l in [3, L]), l=value or a "
+       "comma list 3=1e-3,4=2e-3 (repeatable; each mode once)",
+       {},
+       [](const SceneFile& f) { return SceneValue{f.scene.delta_l}; },
+       [](SceneFile& f, const SceneValue& v) { merge_modes(f.scene.delta_l, v); }});
   k.push_back(
       {"initial",
        "rest_delta_l",
        ValueKind::modes,
        "--rest-delta-l",
-       "stress-free l >= 3 content Delta0_l, l=value or a comma list (repeatable; each mode once; only the full "
-       "level holds it)",
+       "stress-free l >= 3 content Delta0_l (dimensionless, in [0, Delta0 + Delta]; modes l in [3, L]), l=value or a "
+       "comma list (repeatable; each mode once; only the full level holds it)",
        {},
        [](const SceneFile& f) { return SceneValue{f.scene.rest_delta_l}; },
        [](SceneFile& f, const SceneValue& v) { merge_modes(f.scene.rest_delta_l, v); }});
@@ -165,9 +168,11 @@ std::vector<SceneKey> make_scene_keys() {
                  f.scene.L = int(integer_of(v));
                }});
   k.push_back(number_key(
-      "run", "T", "--T", "horizon T, in (0, 1e7]", [](auto& f) -> auto& { return f.scene.T; }));
+      "run", "T", "--T", "horizon T in the time unit 1/shear rate, in (0, 1e7]",
+      [](auto& f) -> auto& { return f.scene.T; }));
   k.push_back(number_key(
-      "run", "dt", "--dt", "output sampling interval, in (0, T]", [](auto& f) -> auto& { return f.scene.dt; }));
+      "run", "dt", "--dt", "output sampling interval in the time unit 1/shear rate, in (0, T] with T/dt <= 1e7",
+      [](auto& f) -> auto& { return f.scene.dt; }));
   std::vector<std::string> levels;
   for (ModelLevel m : {ModelLevel::automatic, ModelLevel::full, ModelLevel::modal, ModelLevel::reduced})
     levels.push_back(to_string(m));
@@ -175,7 +180,8 @@ std::vector<SceneKey> make_scene_keys() {
                [](const SceneFile& f) { return SceneValue{to_string(f.scene.model)}; },
                [](SceneFile& f, const SceneValue& v) { f.scene.model = model_level_from_string(text_of(v)); }});
   k.push_back(number_key(
-      "run", "tail_window", "", "Delta_l are averaged over [T - tail_window, T], > 0",
+      "run", "tail_window", "",
+      "Delta_l are averaged over [T - tail_window, T] (time unit 1/shear rate), finite and > 0",
       [](auto& f) -> auto& { return f.options.tail_window; }));
   k.push_back({"run",
                "full_horizon",
@@ -190,21 +196,24 @@ std::vector<SceneKey> make_scene_keys() {
        [](const SceneFile& f) { return SceneValue{to_string(f.options.integrator.stepper)}; },
        [](SceneFile& f, const SceneValue& v) { f.options.integrator.stepper = stepper_from_string(text_of(v)); }});
   k.push_back(number_key(
-      "integrator", "rtol", "--rtol", "relative tolerance, in [1e-15, 0.1]",
+      "integrator", "rtol", "--rtol", "relative tolerance (dimensionless), in [1e-15, 0.1]",
       [](auto& f) -> auto& { return f.options.integrator.rtol; }));
   k.push_back(number_key(
-      "integrator", "atol", "--atol", "absolute tolerance, in [0, 1]",
+      "integrator", "atol", "--atol", "absolute tolerance (in the state's dimensionless units), in [0, 1]",
       [](auto& f) -> auto& { return f.options.integrator.atol; }));
   k.push_back(number_key(
-      "integrator", "h_init", "", "first trial step", [](auto& f) -> auto& { return f.options.integrator.h_init; }));
+      "integrator", "h_init", "", "first trial step (time unit 1/shear rate), finite and > 0",
+      [](auto& f) -> auto& { return f.options.integrator.h_init; }));
   k.push_back(number_key(
-      "integrator", "h_min", "", "a smaller step ends the run with status step_size_underflow",
+      "integrator", "h_min", "",
+      "smallest step (time unit 1/shear rate), in (0, h_init]: a smaller one ends the run with status "
+      "step_size_underflow",
       [](auto& f) -> auto& { return f.options.integrator.h_min; }));
   k.push_back({"integrator",
                "max_steps",
                ValueKind::integer,
                "",
-               "a run never hangs: it ends with status step_limit",
+               "most integrator steps of a run, an integer >= 1: a run never hangs, it ends with status step_limit",
                {},
                [](const SceneFile& f) { return SceneValue{static_cast<long long>(f.options.integrator.max_steps)}; },
                [](SceneFile& f, const SceneValue& v) {
@@ -212,7 +221,7 @@ std::vector<SceneKey> make_scene_keys() {
                  f.options.integrator.max_steps = std::size_t(integer_of(v));
                }});
   k.push_back(number_key(
-      "integrator", "max_seconds", "", "wall-clock budget (0 = none): status time_limit",
+      "integrator", "max_seconds", "", "wall-clock budget in seconds, finite and >= 0 (0 = none): status time_limit",
       [](auto& f) -> auto& { return f.options.integrator.max_seconds; }));
   return k;
 }

@@ -407,16 +407,30 @@ SimulationResult simulate_scene(SceneFile& file, const SimulationOptions& option
   return simulate_scene(file, validated(file), options, transient);
 }
 
+namespace {
+const SceneRunner kCertifiedRun = [](const ValidScene& scene, const SimulationOptions& o) {
+  return simulate_certified(scene, o);
+};
+
+// A full-horizon run skips no work: its automatic L reads the reduced transient integrated to T as well.
+TransientRunner transient_runner(bool full_horizon) {
+  if (full_horizon) return {};
+  return [](const ValidScene& scene, const TruncationOptions& o) { return certified_transient(scene, o); };
+}
+}  // namespace
+
 SimulationResult simulate_scene(SceneFile& file, const ValidScene& valid, const SimulationOptions& options,
                                 const ReducedTransient* transient) {
-  const SceneRunner certified = [](const ValidScene& scene, const SimulationOptions& o) {
-    return simulate_certified(scene, o);
-  };
-  // A full-horizon run skips no work: its automatic L reads the reduced transient integrated to T as well.
-  TransientRunner transient_run;
-  if (!options.full_horizon)
-    transient_run = [](const ValidScene& scene, const TruncationOptions& o) { return certified_transient(scene, o); };
-  return simulate_truncated(file, valid, options, transient, certified, transient_run);
+  return simulate_truncated(file, valid, options, transient, kCertifiedRun, transient_runner(options.full_horizon));
+}
+
+void apply_scene_truncation(SceneFile& file, TruncationUse use) {
+  const ValidScene valid = validated(file);
+  apply_truncation(file, valid, use, nullptr, kCertifiedRun, transient_runner(file.options.full_horizon));
+}
+
+ReducedTransient scene_transient(const ValidScene& scene, bool full_horizon) {
+  return full_horizon ? truncation_transient(scene) : certified_transient(scene);
 }
 
 }  // namespace rbcstab

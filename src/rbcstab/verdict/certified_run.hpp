@@ -76,4 +76,12 @@ SimulationResult simulate_scene(SceneFile& file, const SimulationOptions& option
 SimulationResult simulate_scene(SceneFile& file, const ValidScene& valid, const SimulationOptions& options,
                                 const ReducedTransient* transient = nullptr);
 
+// apply_truncation (analysis/truncation.hpp) deciding a simulation's automatic L as simulate_scene does: from the
+// certified_transient and a certified candidate run (the full-horizon ones when file.options.full_horizon). For a
+// front end that runs the scene itself afterwards (report, shape): the L and L_reason are simulate_scene's.
+void apply_scene_truncation(SceneFile& file, TruncationUse use);
+// The scene's reduced transient over [0, T] (TruncationOptions{} checkpoints), as the summary's finite-horizon
+// predictor and automatic L read it: certified_transient, or truncation_transient when full_horizon.
+ReducedTransient scene_transient(const ValidScene& scene, bool full_horizon);
+
 }  // namespace rbcstab

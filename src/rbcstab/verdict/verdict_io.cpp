@@ -470,12 +470,23 @@ SummaryRun run_summary(SceneFile file, const ShearRateSearchOptions& search) {
   SummaryRun out{std::move(file), {}, {}};
   // The one check of the scene (naming flags and files in its messages); the run may lower L to a checked one.
   const ValidScene valid = validated(out.file);
-  const ReducedTransient transient = truncation_transient(valid);
+  // Certified: the automatic L and the finite-horizon predictor read its integral to T (exact to first order in
+  // the certified distance, as a run's skip), so a long T costs no more than the transient to the attractor.
+  const ReducedTransient transient = scene_transient(valid, out.file.options.full_horizon);
   SimulationOptions options = out.file.options;
   options.record_trajectory = false;  // the summary reports the run at T and its tail, not its samples
   out.run = simulate_scene(out.file, valid, options, &transient);
   out.prediction = predict(valid, transient, &out.run);
   if (out.file.scene.physical) out.prediction.shear_rate_thresholds = shear_rate_thresholds(out.file.scene, search);
+  return out;
+}
+
+PostRun run_post(SceneFile file) {
+  PostRun out{std::move(file), {}, {}};
+  SimulationOptions options = out.file.options;
+  options.record_trajectory = false;
+  out.run = simulate_scene(out.file, options);
+  out.post = post_instability(out.file.scene.parameters, out.file.scene.L, 0.0);
   return out;
 }
 

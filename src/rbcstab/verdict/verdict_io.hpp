@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "rbcstab/analysis/analysis_io.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/verdict/physical_map.hpp"
@@ -56,5 +57,10 @@ struct SummaryRun {
 // The run, the prediction and, on a physical scene, the shear-rate thresholds searched over `search`. Checks the
 // file once (validated(SceneFile), io): its caller need not.
 SummaryRun run_summary(SceneFile file, const ShearRateSearchOptions& search = {});
+
+// The post command's computation on a scene file (L as it gives it): the run without its trajectory as
+// simulate_scene runs it (certified early stop: the tail means are integrated along the attractor), and the
+// out-of-plane Delta~2 (r0 = 0: the paper's case) at the L run. Every front end calls this.
+PostRun run_post(SceneFile file);
 
 }  // namespace rbcstab
