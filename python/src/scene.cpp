@@ -55,12 +55,15 @@ std::string python_type(const SceneKey& k) {
   return "object";
 }
 
-// The keywords beside the scene keys: the panel tables ([diagram], [fig6e], [continuation]) as dicts, and the
-// file the scene came from (messages name it).
-constexpr const char* kPanels[] = {"diagram", "fig6e", "continuation"};
+// The keywords beside the scene keys: the panel tables ([diagram], [fig6e], [continuation], [physical_map]) as
+// dicts, and the file the scene came from (messages name it).
+constexpr const char* kPanels[] = {"diagram", "fig6e", "continuation", "physical_map"};
 using PanelField = std::optional<SceneTable> SceneFile::*;
 PanelField panel_field(const std::string& name) {
-  return name == "diagram" ? &SceneFile::diagram : name == "fig6e" ? &SceneFile::fig6e : &SceneFile::continuation;
+  return name == "diagram"        ? &SceneFile::diagram
+         : name == "fig6e"        ? &SceneFile::fig6e
+         : name == "continuation" ? &SceneFile::continuation
+                                  : &SceneFile::physical_map;
 }
 bool is_panel(const std::string& word) {
   return std::find(std::begin(kPanels), std::end(kPanels), word) != std::end(kPanels);
