@@ -105,20 +105,15 @@ TEST(PhysicalMap, OnsetIsTheSummarysSearchAndThreadsDoNotMatter) {
   }
 }
 
-// The tumbling search's stiff stepper (regime_stepper, default rosenbrock) classifies the reduced regime as the
-// explicit rk8pd does, on both sides of the boundary and at small C (1 mPa s, 0.1/s: C ~ 5e-5, where rk8pd is
-// slowest); the two points flanking the boundary differ in regime, so agreement there is not agreement by default.
-// And the boundary found with either stepper is the same to the bisection (both brackets hold the crossing).
+// An implicit regime stepper (regime_stepper = rosenbrock) classifies the reduced regime as the explicit rk8pd
+// does, on both sides of the tumbling boundary the rk8pd map finds (the two points differ in regime, so agreement
+// there is not agreement by default), and at the smallest C of scenes/physical_map.toml (1 mPa s, 0.1/s: C ~ 5e-5).
+// Two regime runs per point: rosenbrock costs about 14x rk8pd here (docs/units.md, "Cost").
 TEST(PhysicalMap, StiffRegimeStepperKeepsTheClassification) {
   PhysicalMapOptions o = fast(25e-3, 25e-3, 1);
-  o.regime_stepper = Stepper::rk8pd;
-  const PhysicalMap explicit_map = physical_map(cell(), o);
-  o.regime_stepper = Stepper::rosenbrock;
-  const PhysicalMap stiff_map = physical_map(cell(), o);
-  const RateCrossing &e = explicit_map.columns[0].tumbling_to_swinging, &r = stiff_map.columns[0].tumbling_to_swinging;
+  ASSERT_EQ(o.regime_stepper, Stepper::rk8pd);
+  const RateCrossing e = physical_map(cell(), o).columns[0].tumbling_to_swinging;
   ASSERT_TRUE(e.found) << e.reason;
-  ASSERT_TRUE(r.found) << r.reason;
-  EXPECT_LE(std::max(e.lo, r.lo), std::min(e.hi, r.hi)) << e.lo << ".." << e.hi << " vs " << r.lo << ".." << r.hi;
   auto regime = [&](double eta, double rate, Stepper stepper) {
     Scene s = with_physical_value(cell(), "viscosity", eta);
     s.beta = std::acos(0.0);
@@ -127,12 +122,15 @@ TEST(PhysicalMap, StiffRegimeStepperKeepsTheClassification) {
     p.integrator.stepper = stepper;
     return reduced_regime(s, p).regime;
   };
-  const std::pair<double, double> points[] = {{25e-3, e.lo / 1.5}, {25e-3, e.hi * 1.5}, {1e-3, 0.1}, {5e-2, 100}};
-  for (const auto& [eta, rate] : points)
-    EXPECT_EQ(to_string(regime(eta, rate, Stepper::rosenbrock)), to_string(regime(eta, rate, Stepper::rk8pd)))
-        << eta << " Pa s, " << rate << " 1/s";
-  EXPECT_EQ(regime(25e-3, e.lo / 1.5, Stepper::rk8pd), Regime::tumbling);
-  EXPECT_NE(regime(25e-3, e.hi * 1.5, Stepper::rk8pd), Regime::tumbling);
+  const std::pair<double, double> points[] = {{25e-3, e.lo / 1.5}, {25e-3, e.hi * 1.5}, {1e-3, 0.1}};
+  Regime seen[3];
+  for (int k = 0; k < 3; ++k) {
+    const auto& [eta, rate] = points[k];
+    seen[k] = regime(eta, rate, Stepper::rk8pd);
+    EXPECT_EQ(to_string(regime(eta, rate, Stepper::rosenbrock)), to_string(seen[k])) << eta << " Pa s, " << rate;
+  }
+  EXPECT_EQ(seen[0], Regime::tumbling);
+  EXPECT_NE(seen[1], Regime::tumbling);
 }
 
 TEST(PhysicalMap, AssumptionsSayHowFarOff) {

@@ -29,9 +29,9 @@ struct PhysicalSpread {
 std::vector<PhysicalSpread> healthy_cell_spreads(const Scene& scene);
 
 // The reduced regime is stiff at small C (its relaxation rates grow as 1/C), so with an explicit stepper a
-// search's cost grows as 1/min_rate; the tumbling search's runs use regime_stepper (default: the linearly
-// implicit rosenbrock, docs/units.md "Cost"). The default range starts at 0.1/s, below the experiments' tumbling
-// (~1/s in 25-50 mPa s).
+// search's cost grows as 1/min_rate: the default range starts at 0.1/s, below the experiments' tumbling (~1/s in
+// 25-50 mPa s). Down to 0.1/s the explicit rk8pd is the cheaper regime stepper (measured, docs/units.md "Cost":
+// the linearly implicit rosenbrock took 14x its CPU time at the predictor's rtol 1e-10, 1.5x at rtol 1e-6).
 struct PhysicalMapOptions {
   double min_viscosity = 1e-3, max_viscosity = 5e-2;  // Pa s: plasma to the dextran media of the experiments
   int viscosities = 9;                                // log-spaced over [min, max]
@@ -43,8 +43,9 @@ struct PhysicalMapOptions {
   int threads = 0;                                    // 0: all cores; the result does not depend on it
   PredictorOptions predictor;
   // The stepper of the tumbling search's reduced runs (predictor.integrator's tolerances); the onset search's
-  // verdicts keep predictor.integrator.stepper.
-  Stepper regime_stepper = Stepper::rosenbrock;
+  // verdicts keep predictor.integrator.stepper. An implicit one (rosenbrock) classifies as rk8pd does (test
+  // StiffRegimeStepperKeepsTheClassification) and may pay off below 0.1/s, where C is smaller still.
+  Stepper regime_stepper = Stepper::rk8pd;
   ProgressCallback on_progress;  // (cells done, cells in all) after each cell at each viscosity
   void validate() const;         // throws InvalidArgument naming the field
 };
