@@ -3,44 +3,19 @@
 // at one C = eta_ex gamma R / mu: its rate scales as mu/(eta_ex R) exactly.
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
-#include <utility>
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/model/parameter_table.hpp"
 #include "rbcstab/verdict/physical_map.hpp"
+#include "verdict/physical_map_cell.hpp"
 
 namespace rbcstab {
 namespace {
 
-// A cell near the perturbative regime (Delta = 1) whose in-plane motion turns from tumbling to swinging within
-// 0.1..1e3 1/s at 25-50 mPa s (Lambda < 1 there: the vesicle limit tank-treads).
-Scene cell(double eta_in = 6e-3) {
-  SceneFile sf = parse_scene(
-      "name = 'cell'\n[physical]\nshear_rate = 10\nviscosity = '25 mPa s'\nradius = '2.8 um'\n"
-      "bending_modulus = '2e-19 J'\nshear_modulus = '6 uN/m'\ninner_viscosity = '" +
-      std::to_string(eta_in * 1e3) + " mPa s'\n[parameters]\nDelta = 1\nDelta0 = 0.5\n");
-  return sf.scene;
-}
-
-PhysicalMapOptions fast(double eta_lo, double eta_hi, int n) {
-  PhysicalMapOptions o;
-  o.min_viscosity = eta_lo;
-  o.max_viscosity = eta_hi;
-  o.viscosities = n;
-  o.min_rate = 0.1;
-  o.max_rate = 1e3;
-  o.samples_per_decade = 3;
-  o.rtol = 1e-4;
-  o.onset = false;
-  o.threads = 2;
-  // The identities below hold for any classifier settings: a shorter regime window keeps the tests fast.
-  o.predictor.transient = 200;
-  o.predictor.window = 400;
-  return o;
-}
+Scene cell(double eta_in = 6e-3) { return test::map_cell(eta_in); }
+PhysicalMapOptions fast(double eta_lo, double eta_hi, int n) { return test::fast_map(eta_lo, eta_hi, n); }
 
 // Doubling eta_in and eta_ex together keeps lambda, so the boundary keeps its C: the rate halves.
 TEST(PhysicalMap, TumblingBoundaryKeepsItsStressAtFixedLambda) {
@@ -103,34 +78,6 @@ TEST(PhysicalMap, OnsetIsTheSummarysSearchAndThreadsDoNotMatter) {
     }
     EXPECT_EQ(one.columns[v].tumbling_to_swinging.rate, c.tumbling_to_swinging.rate);
   }
-}
-
-// An implicit regime stepper (regime_stepper = rosenbrock) classifies the reduced regime as the explicit rk8pd
-// does, on both sides of the tumbling boundary the rk8pd map finds (the two points differ in regime, so agreement
-// there is not agreement by default), and at the smallest C of scenes/physical_map.toml (1 mPa s, 0.1/s: C ~ 5e-5).
-// Two regime runs per point: rosenbrock costs about 14x rk8pd here (docs/units.md, "Cost").
-TEST(PhysicalMap, StiffRegimeStepperKeepsTheClassification) {
-  PhysicalMapOptions o = fast(25e-3, 25e-3, 1);
-  ASSERT_EQ(o.regime_stepper, Stepper::rk8pd);
-  const RateCrossing e = physical_map(cell(), o).columns[0].tumbling_to_swinging;
-  ASSERT_TRUE(e.found) << e.reason;
-  auto regime = [&](double eta, double rate, Stepper stepper) {
-    Scene s = with_physical_value(cell(), "viscosity", eta);
-    s.beta = std::acos(0.0);
-    set_parameter(s, SceneParameter::shear_rate, rate);
-    PredictorOptions p = o.predictor;
-    p.integrator.stepper = stepper;
-    return reduced_regime(s, p).regime;
-  };
-  const std::pair<double, double> points[] = {{25e-3, e.lo / 1.5}, {25e-3, e.hi * 1.5}, {1e-3, 0.1}};
-  Regime seen[3];
-  for (int k = 0; k < 3; ++k) {
-    const auto& [eta, rate] = points[k];
-    seen[k] = regime(eta, rate, Stepper::rk8pd);
-    EXPECT_EQ(to_string(regime(eta, rate, Stepper::rosenbrock)), to_string(seen[k])) << eta << " Pa s, " << rate;
-  }
-  EXPECT_EQ(seen[0], Regime::tumbling);
-  EXPECT_NE(seen[1], Regime::tumbling);
 }
 
 TEST(PhysicalMap, AssumptionsSayHowFarOff) {
