@@ -4,10 +4,13 @@
 
 #include <cmath>
 #include <numbers>
+#include <string>
 
 #include "rbcstab/analysis/post_instability.hpp"
 #include "rbcstab/analysis/predictors.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
+#include "rbcstab/report/panels.hpp"
+#include "rbcstab/verdict/physical_map.hpp"
 #include "rbcstab/verdict/predict.hpp"
 
 namespace {
@@ -65,6 +68,34 @@ void BM_PostInstability(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_PostInstability);
+
+// The physical map's tumbling search (scenes/physical_map.toml's cell and grid, no onset, one thread) with the
+// regime stepper explicit (0: rk8pd) or linearly implicit (1: rosenbrock; 2: rosenbrock at rtol 1e-6, atol 1e-9):
+// the reduced regime is stiff at small C (docs/units.md, "Cost"). Counters: the boundaries found, the regime
+// evaluations and the first boundary's rate.
+void BM_PhysicalMapTumbling(benchmark::State& state) {
+  const rbcstab::SceneFile sf = rbcstab::load_scene(std::string(RBCSTAB_SCENES_DIR) + "/physical_map.toml");
+  rbcstab::PhysicalMapOptions o = rbcstab::physical_map_panel(sf).options;
+  o.onset = false;
+  o.threads = 1;
+  o.regime_stepper = state.range(0) == 0 ? rbcstab::Stepper::rk8pd : rbcstab::Stepper::rosenbrock;
+  if (state.range(0) == 2) {
+    o.predictor.integrator.rtol = 1e-6;
+    o.predictor.integrator.atol = 1e-9;
+  }
+  rbcstab::PhysicalMap m;
+  for (auto _ : state) m = rbcstab::physical_map(sf.scene, o);
+  int found = 0;
+  for (const rbcstab::PhysicalMapColumn& c : m.columns) found += c.tumbling_to_swinging.found;
+  state.counters["found"] = found;
+  state.counters["evaluations"] = m.evaluations;
+  for (const rbcstab::PhysicalMapColumn& c : m.columns)
+    if (c.tumbling_to_swinging.found) {
+      state.counters["first_rate"] = c.tumbling_to_swinging.rate;
+      break;
+    }
+}
+BENCHMARK(BM_PhysicalMapTumbling)->Arg(0)->Arg(1)->Arg(2)->Iterations(1)->Unit(benchmark::kSecond);
 
 }  // namespace
 BENCHMARK_MAIN();

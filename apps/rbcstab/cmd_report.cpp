@@ -26,7 +26,7 @@ struct ReportCliOptions {
   ProgressOutput progress;
 };
 
-// A scene file with a [diagram], [fig6e] or [continuation] table: compute the panel, then draw it.
+// A scene file with a panel table ([diagram], [fig6e], [continuation], [physical_map]): compute it, then draw it.
 int run_panel(ReportCliOptions& o, const SceneFile& sf, ReportOptions& ro) {
   if (const std::vector<long long> counts = counts_of(o.counts); !counts.empty()) {
     o.panel.nx = int(counts[0]);
@@ -126,7 +126,7 @@ Runner add_report(CLI::App& app) {
 }
 
 const RegisterCommand kRegisterReport{
-    "report", "Run a scene (or a figure panel: [diagram], [fig6e], [continuation]) and write a report folder",
+    "report", "Run a scene or a figure panel ([diagram], [fig6e], [continuation], [physical_map]) into a report",
     add_report, 60};
 }  // namespace
 

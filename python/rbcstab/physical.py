@@ -3,17 +3,14 @@ viscosity (mPa s) and the shear rate (1/s), with bands from the published ranges
 published observations drawn over it (library: verdict/physical_map.hpp; docs/units.md)."""
 
 import json
-import math
 
 import numpy as np
 
 from . import _args, _rbcstab
-from ._drawing import keep_legends_inside
+from ._drawing import drawing_module, keep_legends_inside
 from .progress import progress_bar
 
 __all__ = ["PhysicalMap", "physical_map"]
-
-_BOUNDARIES = ("tumbling_to_swinging", "onset_out_of_plane", "onset_in_plane")
 
 
 def _range(name, v):
@@ -90,23 +87,21 @@ class PhysicalMap:
         return np.array([c["viscosity"] for c in self._data["columns"]])
 
     def _check(self, name):
-        if name not in _BOUNDARIES:
-            raise ValueError(f"boundary {name!r}: must be one of {', '.join(_BOUNDARIES)}")
+        names = drawing_module("physical_draw").BOUNDARIES
+        if name not in names:
+            raise ValueError(f"boundary {name!r}: must be one of {', '.join(names)}")
 
     def rate(self, name):
         """Per viscosity, the nominal cell's shear rate (1/s) at boundary `name` (tumbling_to_swinging,
         onset_out_of_plane, onset_in_plane): the bracket's upper end; NaN where it was not found."""
         self._check(name)
-        return np.array([c[name]["shear_rate"] if c[name]["found"] else math.nan for c in self._data["columns"]])
+        return drawing_module("physical_draw").rates(self._data, name)[0]
 
     def band(self, name):
         """Per viscosity, (lo, hi) in 1/s: the boundary's min and max over the cells at the spreads' ends; NaN
         where no cell found it."""
         self._check(name)
-        cols = self._data["columns"]
-        lo = np.array([c[name]["band"]["lo"] if c[name]["band"]["found"] else math.nan for c in cols])
-        hi = np.array([c[name]["band"]["hi"] if c[name]["band"]["found"] else math.nan for c in cols])
-        return lo, hi
+        return drawing_module("physical_draw").rates(self._data, name)[1:]
 
     @property
     def assumptions(self):
@@ -134,49 +129,6 @@ class PhysicalMap:
 
         if ax is None:
             _, ax = plt.subplots(figsize=(6.4, 4.8))
-        eta = self.viscosity * 1e3
-        styles = {"tumbling_to_swinging": ("C0", "tumbling \u2192 swinging (in plane)"),
-                  "onset_out_of_plane": ("C3", "l \u2265 3 onset, out of plane"),
-                  "onset_in_plane": ("C1", "l \u2265 3 onset, in plane")}
-        for name, (color, label) in styles.items():
-            rate = self.rate(name)
-            if not np.any(np.isfinite(rate)) and not np.any(np.isfinite(self.band(name)[0])):
-                continue
-            ax.plot(eta, rate, "-o", color=color, ms=3, label=label)
-            if bands:
-                lo, hi = self.band(name)
-                ax.fill_between(eta, lo, hi, color=color, alpha=0.15, lw=0)
-        # A boundary below the searched range: its upper regime holds at every rate searched there (hatched).
-        rmin, rmax = self._data["shear_rate_range"]
-        for name, (color, label) in styles.items():
-            below = np.array([c[name].get("side") == "below" for c in self._data["columns"]])
-            if below.any():
-                what = ("swinging at every rate searched" if name == "tumbling_to_swinging" else
-                        f"l \u2265 3 unstable at every rate searched ({label.split(', ')[-1]})")
-                ax.fill_between(eta, rmin, rmax, where=below, color=color, alpha=0.08, hatch="//", lw=0, label=what)
-        if experiments:
-            markers = iter("sD^v<>")
-            for e in self._data["experiments"]:
-                label = f"{e['source']}: {e['observation']}"
-                if e["kind"] == "stress":
-                    x = np.geomspace(eta.min(), eta.max(), 50)
-                    y = e["stress"] / (x * 1e-3)
-                    ax.plot(x, y, "k--", lw=1, label=label)
-                    if e["precision"] == "order":
-                        ax.fill_between(x, y / 3, y * 3, color="k", alpha=0.06, lw=0)
-                else:
-                    x = e["viscosity"] * 1e3
-                    lo, hi = e["shear_rate_lo"], e["shear_rate_hi"]
-                    if e["precision"] == "order":
-                        lo, hi = lo / 3, hi * 3
-                    mid = math.sqrt(lo * hi) if e["kind"] == "rate_range" else e["shear_rate_lo"]
-                    ax.errorbar([x], [mid], yerr=[[mid - lo], [hi - mid]], fmt=next(markers, "o"), color="k",
-                                capsize=3, ms=5, label=label)
-        ax.set_xscale("log")
-        ax.set_yscale("log")
-        ax.set_xlabel("outer viscosity \u03b7_ex [mPa s]")
-        ax.set_ylabel("shear rate \u03b3\u0307 [1/s]")
-        ax.set_title(title or "Physical phase diagram (bands: published ranges of the cell's properties)", fontsize=9)
-        ax.legend(fontsize=7, loc="best")
+        drawing_module("physical_draw").draw_physical_map(ax, self._data, experiments, bands, title)
         keep_legends_inside(ax)
         return ax

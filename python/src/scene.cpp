@@ -55,12 +55,15 @@ std::string python_type(const SceneKey& k) {
   return "object";
 }
 
-// The keywords beside the scene keys: the panel tables ([diagram], [fig6e], [continuation]) as dicts, and the
-// file the scene came from (messages name it).
-constexpr const char* kPanels[] = {"diagram", "fig6e", "continuation"};
+// The keywords beside the scene keys: the panel tables ([diagram], [fig6e], [continuation], [physical_map]) as
+// dicts, and the file the scene came from (messages name it).
+constexpr const char* kPanels[] = {"diagram", "fig6e", "continuation", "physical_map"};
 using PanelField = std::optional<SceneTable> SceneFile::*;
 PanelField panel_field(const std::string& name) {
-  return name == "diagram" ? &SceneFile::diagram : name == "fig6e" ? &SceneFile::fig6e : &SceneFile::continuation;
+  return name == "diagram"        ? &SceneFile::diagram
+         : name == "fig6e"        ? &SceneFile::fig6e
+         : name == "continuation" ? &SceneFile::continuation
+                                  : &SceneFile::physical_map;
 }
 bool is_panel(const std::string& word) {
   return std::find(std::begin(kPanels), std::end(kPanels), word) != std::end(kPanels);
@@ -413,11 +416,11 @@ void bind_scene(py::module_& m) {
 Every key of a scene file (docs/scenes.md) is a keyword; ``lambda_`` (or ``**{"lambda": x}``) is lambda.
 Defaults are the paper's Fig. 3 out-of-plane case. ``L=None`` (the default) lets each computation choose the
 truncation and report why (``L_reason`` in every result); ``beta=None`` (the default) runs at 0.001 and lets a
-continuation take its kind's own (0; orbits pi/2). ``diagram``, ``fig6e``, ``continuation``: a scene file's panel
-tables as dicts (None: none); ``source``: the file it came from (messages name it). Values are checked as the
-CLI checks its flags: ValueError names the keyword, its value and the allowed range; a value of the wrong type is
-a TypeError. Scenes are immutable and hashable: ``replace(**changes)`` returns a new one; ``to_dict()``,
-``repr()``, ``==`` and ``hash()`` show everything a result depends on, and ``copy``, ``pickle`` and
+continuation take its kind's own (0; orbits pi/2). ``diagram``, ``fig6e``, ``continuation``, ``physical_map``: a
+scene file's panel tables as dicts (None: none); ``source``: the file it came from (messages name it). Values are
+checked as the CLI checks its flags: ValueError names the keyword, its value and the allowed range; a value of
+the wrong type is a TypeError. Scenes are immutable and hashable: ``replace(**changes)`` returns a new one;
+``to_dict()``, ``repr()``, ``==`` and ``hash()`` show everything a result depends on, and ``copy``, ``pickle`` and
 ``Scene.from_dict(s.to_dict())`` give a scene that behaves as ``s``.)");
   cls.def(py::init([](const py::kwargs& kwargs) { return with_keywords(SceneFile{}, kwargs); }));
   cls.def_static("from_toml", &from_toml, py::arg("path"),

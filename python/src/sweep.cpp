@@ -396,11 +396,9 @@ py::object physical_map_scene(const py::handle& scene, double min_viscosity, dou
   nlohmann::json j;
   {
     py::gil_scoped_release release;
-    j = to_json(physical_map(f.scene, o));
+    j = to_json(physical_map(f.scene, o), observed, path);
   }
   bar.finish();
-  j["experiments"] = to_json(observed);
-  j["experiments_file"] = path;
   return to_python(j);
 }
 

@@ -72,7 +72,7 @@ def _def(name, obj, indent="", method=False, static=False):
 
 def _scene_keyword_types(module):
     types = {k["keyword"]: k["type"] for k in module.scene_keys()}
-    types.update({panel: "Mapping[str, Any] | None" for panel in ("diagram", "fig6e", "continuation")})
+    types.update({panel: "Mapping[str, Any] | None" for panel in ("diagram", "fig6e", "continuation", "physical_map")})
     types.update({"source": "str", "set_by_keyword": "list[str]"})
     return types
 

@@ -89,7 +89,7 @@ TEST(EnumTable, EveryLibraryTableKeepsItsNames) {
   expect_table<ArpackStatus>({"converged", "max_iterations", "solve_failed", "failed"});
   expect_table<OrbitKind>({"swinging", "tumbling"});
   expect_table<SceneFloquetStatus>({"converged", "relaxation_failed", "not_periodic", "arpack_failed"});
-  expect_table<PanelKind>({"none", "diagram", "fig6e", "continuation"});
+  expect_table<PanelKind>({"none", "diagram", "fig6e", "continuation", "physical_map"});
   expect_table<TraceCriterion>({"asymptotic", "finite-horizon"});
   expect_table<SigmaSource>({"equilibrium", "periodic_orbit", "time_average"});
   expect_table<Classifier>({"auto", "final", "tail"});

@@ -1,6 +1,7 @@
-// Figure panels (report/panels.hpp): the [fig6e] and [continuation] tables, the bifurcation data against
-// the closed-form vesicle branch, the phase-diagram overlay against the traced boundary, and a tiny
-// diagram panel end to end (PNG of the declared size; its CSV equals an independent single-thread run).
+// Figure panels (report/panels.hpp): the [fig6e], [continuation] and [physical_map] tables, the bifurcation data
+// against the closed-form vesicle branch, the phase-diagram overlay against the traced boundary, and tiny diagram
+// and physical-map panels end to end (the diagram's data equal an independent run's, the map's boundary is a true
+// crossing of the reduced regime).
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -11,6 +12,7 @@
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
+#include "rbcstab/model/parameter_table.hpp"
 #include "rbcstab/report/detail/parameter_labels.hpp"
 #include "rbcstab/report/panels.hpp"
 #include "rbcstab/sweep/diagram_document.hpp"
@@ -278,6 +280,144 @@ TEST(PanelReport, HookFlagsStillDrawIntoASceneReport) {
   EXPECT_TRUE(fs::is_regular_file(parent / "scene" / "trajectory.csv"));
   EXPECT_EQ(read_file((parent / "scene" / "phase_diagram.csv").string()), read_file(csv.string()));
   EXPECT_GT(fs::file_size(parent / "scene" / "fig_phase_diagram.png"), 1000u);
+}
+
+// A physical cell for the [physical_map] table (the nominal healthy cell of docs/units.md, R = 2.8 um).
+const std::string kCell = R"(name = "cell"
+[physical]
+shear_rate = "10/s"
+viscosity = "25 mPa s"
+inner_viscosity = "6 mPa s"
+radius = "2.8 um"
+bending_modulus = "2e-19 J"
+shear_modulus = "6 uN/m"
+[parameters]
+Delta = 1.0
+Delta0 = 0.5
+)";
+
+// Quantities with or without units (a bare number only where plausible), and every bad key named.
+TEST(PhysicalMapTable, ReadsQuantitiesAndNamesBadKeys) {
+  const PhysicalMapPanel p =
+      physical_map_panel(parse_scene(
+          kCell + "[physical_map]\nviscosity = [\"2 mPa s\", 0.04]\nviscosities = 4\nshear_rate = [\"0.5/s\", 2000]\n"
+                  "samples_per_decade = 2\nrtol = 1e-3\nonset = false\nspreads = \"healthy\"\n"));
+  EXPECT_DOUBLE_EQ(p.options.min_viscosity, 2e-3);
+  EXPECT_EQ(p.options.max_viscosity, 0.04);
+  EXPECT_EQ(p.options.viscosities, 4);
+  EXPECT_EQ(p.options.min_rate, 0.5);
+  EXPECT_EQ(p.options.max_rate, 2000);
+  EXPECT_EQ(p.options.samples_per_decade, 2);
+  EXPECT_EQ(p.options.rtol, 1e-3);
+  EXPECT_FALSE(p.options.onset);
+  EXPECT_TRUE(p.healthy_spreads);
+  EXPECT_EQ(panel_kind(parse_scene(kCell + "[physical_map]\n")), PanelKind::physical_map);
+  EXPECT_EQ(truncation_use(PanelKind::physical_map), TruncationUse::analysis);
+  for (const auto& [table, name] :
+       {std::pair{"colour = 1\n", "physical_map.colour"},
+        // 2.8 Pa s is not a plausible viscosity as a bare number (mPa s meant): refused with the range.
+        std::pair{"viscosity = [2.8, 50.0]\n", "physical_map.viscosity: viscosity = 2.8 (a bare number"},
+        std::pair{"viscosity = [\"50 mPa s\", \"1 mPa s\"]\n", "physical_map.viscosity"},
+        std::pair{"viscosity = [\"1 mPa s\"]\n", "physical_map.viscosity must be [min, max]"},
+        std::pair{"shear_rate = [10, 10]\n", "physical_map.shear_rate"},
+        std::pair{"shear_rate = [1e-9, 10]\n", "physical_map.shear_rate: shear_rate = 1e-09"},
+        std::pair{"shear_rate = [\"1 m\", 10]\n", "physical_map.shear_rate"},
+        std::pair{"viscosities = 0\n", "physical_map.viscosities"},
+        std::pair{"viscosity = [0.01, 0.01]\nviscosities = 2\n", "physical_map.viscosities"},
+        std::pair{"samples_per_decade = 0\n", "physical_map.samples_per_decade"},
+        std::pair{"rtol = 1.0\n", "physical_map.rtol"}, std::pair{"onset = 1\n", "physical_map.onset"},
+        std::pair{"spreads = \"all\"\n", "physical_map.spreads"}}) {
+    const std::string m =
+        expect_invalid([&] { (void)physical_map_panel(parse_scene(kCell + "[physical_map]\n" + table)); });
+    EXPECT_NE(m.find(name), std::string::npos) << table << ": " << m;
+  }
+}
+
+// The page's tables say what the map holds: a boundary found as its rate, one outside the range on its side, a
+// failing assumption as NO with how far off, each observation with its source and the sentence it rests on.
+TEST(PhysicalMapTable, PageSaysWhatTheMapHolds) {
+  PhysicalMap map;
+  map.min_rate = 0.1;
+  map.max_rate = 1e5;
+  map.onset = true;
+  PhysicalMapColumn c;
+  c.viscosity = 0.025;
+  c.tumbling_to_swinging.found = true;
+  c.tumbling_to_swinging.rate = 8;
+  c.onset[0].side = "below";
+  c.onset[0].l = 4;
+  c.onset[1].side = "above";
+  map.columns = {c};
+  map.assumptions = {{"quasi-spherical expansion", "Delta", 4.28, 1, false, "m1"},
+                     {"Stokes flow", "Re", 1e-3, 0.1, true, "m2"}};
+  PublishedObservation o;
+  o.source = "Abkarian2007";
+  o.observation = "swinging";
+  o.kind = "stress";
+  o.stress = 0.1;
+  o.precision = "order";
+  o.reference = "PRL 98";
+  o.basis = "of the order of 0.1 Pa";
+  const PhysicalMapPage page = physical_map_page(map, {o}, "data/experiments.csv");
+  ASSERT_EQ(page.tables.size(), 3u);
+  const std::vector<std::string>& row = page.tables[0].rows.at(0);
+  ASSERT_EQ(row.size(), 7u);
+  EXPECT_EQ(row[0], "25");
+  EXPECT_EQ(row[3], "8 1/s");
+  EXPECT_EQ(row[4], "0.2");  // eta_ex gamma = 0.025 Pa s x 8/s
+  EXPECT_EQ(row[5].rfind("below 0.1 1/s", 0), 0u) << row[5];
+  EXPECT_NE(row[5].find("l = 4"), std::string::npos) << row[5];
+  EXPECT_EQ(row[6].rfind("above 1e+05 1/s", 0), 0u) << row[6];
+  const std::vector<std::string>& seen = page.tables[1].rows.at(0);
+  EXPECT_EQ(seen[0], "Abkarian2007");
+  EXPECT_EQ(seen[2], "shear stress eta_ex gamma = 0.1 Pa (order of magnitude)");
+  EXPECT_EQ(seen[4], "of the order of 0.1 Pa");
+  EXPECT_EQ(page.tables[2].rows.at(0)[4], "NO");
+  EXPECT_NE(page.tables[2].rows.at(0)[5].find("4.3 times the bound"), std::string::npos);
+  EXPECT_EQ(page.tables[2].rows.at(1)[4], "yes");
+  // Without the onset searched its columns are left out rather than shown empty.
+  map.onset = false;
+  EXPECT_EQ(physical_map_page(map, {o}, "").tables[0].rows.at(0).size(), 5u);
+}
+
+// A one-viscosity physical-map panel end to end: the page lists the boundaries, the observations and the assumption
+// checks, and the boundary drawn is a true crossing: independently of the search, the reduced regime tumbles at the
+// bracket's lower end and does not at its upper end.
+TEST(PanelReport, PhysicalMapBuildsItsPageAndItsBoundaryIsACrossing) {
+  const std::string text = kCell +
+                           "[physical_map]\nviscosity = [\"25 mPa s\", \"25 mPa s\"]\nviscosities = 1\n"
+                           "shear_rate = [\"0.1/s\", \"1000/s\"]\nsamples_per_decade = 1\nrtol = 0.1\nonset = false\n";
+  const SceneFile sf = parse_scene(text);
+  const fs::path parent = test::fresh_dir("panels_test", "physical_map");
+  ReportOptions ro;
+  ro.output = (parent / "panel").string();
+  PanelOptions po;
+  po.threads = 1;
+  const PanelReportResult r = build_panel_report(sf, po, ro);
+  EXPECT_EQ(r.kind, PanelKind::physical_map);
+  const fs::path dir = parent / "panel";
+  for (const char* f : {"index.html", "README.md", "report.json", "scene.toml", "physical_map.json",
+                        "fig_physical_map.png", "fig_physical_map.svg"})
+    EXPECT_TRUE(fs::is_regular_file(dir / f)) << f;
+  const std::string html = read_file((dir / "index.html").string());
+  for (const char* seen : {"Published observations drawn over the map", "Abkarian2007", "of the order of 0.1 Pa",
+                           "Lanotte2016", "quasi-spherical expansion", "Boundaries per outer viscosity"})
+    EXPECT_NE(html.find(seen), std::string::npos) << seen;
+  const nlohmann::json drawn = nlohmann::json::parse(read_file((dir / "physical_map.json").string()));
+  const nlohmann::json& t = drawn.at("columns").at(0).at("tumbling_to_swinging");
+  ASSERT_TRUE(t.at("found").get<bool>()) << t.dump();
+  EXPECT_GE(drawn.at("experiments").size(), 3u);
+  const double lo = t.at("bracket").at(0).get<double>(), hi = t.at("bracket").at(1).get<double>();
+  EXPECT_EQ(hi, t.at("shear_rate").get<double>());
+  EXPECT_LE(hi / lo - 1, 0.1);
+  auto regime = [&](double rate) {
+    Scene s = sf.scene;
+    s.beta = std::acos(0.0);
+    set_parameter(s, SceneParameter::shear_rate, rate);
+    return reduced_regime(s).regime;
+  };
+  EXPECT_EQ(regime(lo), Regime::tumbling);
+  EXPECT_NE(regime(hi), Regime::tumbling);
 }
 
 TEST(PanelReport, SceneWithoutPanelTableIsRefused) {

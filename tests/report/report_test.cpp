@@ -353,7 +353,7 @@ TEST(ReportFailures, ExistingOutputNeedsOverwriteAndBadOptionsAreNamed) {
   }
 }
 
-// The hook figures (phase diagram, Fig. 6e, bifurcation) drawn from the script's synthetic data.
+// The hook figures (phase diagram, Fig. 6e, bifurcation, physical map) drawn from the script's synthetic data.
 TEST(ReportHooks, SelftestDrawsHookFiguresOfTheDeclaredSize) {
   const fs::path dir = test::fresh_dir("report_test", "hooks");
   const Cleanup cleanup{dir};
@@ -365,7 +365,8 @@ TEST(ReportHooks, SelftestDrawsHookFiguresOfTheDeclaredSize) {
       {"fig_phase_diagram.png", {900, 750}},
       {"fig_delta2_theory.png", {750, 750}},
       {"fig_bifurcation.png", {900, 675}},
-      {"fig_bifurcation_continue.png", {900, 675}}};  // from the layout of `rbcstab continue --json`
+      {"fig_bifurcation_continue.png", {900, 675}},  // from the layout of `rbcstab continue --json`
+      {"fig_physical_map.png", {900, 700}}};
   for (const auto& [file, size] : expected) EXPECT_EQ(png_size(dir / file), size) << file;
 }
 

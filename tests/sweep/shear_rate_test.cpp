@@ -57,6 +57,7 @@ TEST(ShearRate, ThresholdIsWhereTheTracedBoundaryMeetsTheAlphaLine) {
   const Scene s = physical_scene();
   const ShearRateThreshold t = shear_rate_threshold(s, kInPlane);
   ASSERT_TRUE(t.found) << t.reason;
+  EXPECT_EQ(t.side, "");
   EXPECT_LE(t.hi / t.lo - 1, 1e-6);
   EXPECT_GE(t.l, 3);
   // Independently of the search: the verdict flips across the bracket.
@@ -109,6 +110,7 @@ TEST(ShearRate, WindowEndIsWhereTheVerdictTurnsStableAgain) {
   const ShearRateThreshold t = shear_rate_threshold(s, 1e-3);
   EXPECT_FALSE(t.found);
   EXPECT_NE(t.reason.find("unstable already at min_rate"), std::string::npos) << t.reason;
+  EXPECT_EQ(t.side, "below");
   ASSERT_TRUE(t.end_found) << t.end_reason;
   EXPECT_EQ(t.end_shear_rate, t.end_bracket[1]);
   EXPECT_LE(t.end_bracket[1] / t.end_bracket[0] - 1, 1e-6);
@@ -120,6 +122,32 @@ TEST(ShearRate, WindowEndIsWhereTheVerdictTurnsStableAgain) {
   above.parameters = at_shear_rate(*s.physical, s.parameters, t.end_bracket[1]);
   EXPECT_TRUE(asymptotic_verdict(below).unstable);
   EXPECT_FALSE(asymptotic_verdict(above).unstable);
+}
+
+// The side of a crossing outside the searched range is a field set where the search decides, not read from the
+// reason's text: the Sec. VI cell out of plane stays stable over the default range (measured) -> "above"; the
+// same cell in plane with the range starting past its crossing -> "below" (verdicts checked at the range's ends).
+TEST(ShearRate, SideOfACrossingOutsideTheRange) {
+  const Scene s = physical_scene();
+  const ShearRateThreshold op = shear_rate_threshold(s, 1e-3);
+  ASSERT_FALSE(op.found);
+  EXPECT_EQ(op.side, "above") << op.reason;
+  const ShearRateThreshold ip = shear_rate_threshold(s, kInPlane);
+  ASSERT_TRUE(ip.found) << ip.reason;
+  ShearRateSearchOptions past;
+  past.min_rate = 2 * ip.shear_rate;
+  past.max_rate = 4 * ip.shear_rate;
+  const ShearRateThreshold below = shear_rate_threshold(s, kInPlane, past);
+  EXPECT_FALSE(below.found);
+  EXPECT_EQ(below.side, "below") << below.reason;
+  Scene at = s;
+  at.beta = kInPlane;
+  at.parameters = at_shear_rate(*s.physical, s.parameters, past.min_rate);
+  EXPECT_TRUE(asymptotic_verdict(at).unstable);
+  // A range wholly under the crossing: "above".
+  past.min_rate = ip.shear_rate / 4;
+  past.max_rate = ip.shear_rate / 2;
+  EXPECT_EQ(shear_rate_threshold(s, kInPlane, past).side, "above");
 }
 
 // A diagram with a shear_rate axis: its grid is geometric, and every point's result is that of the plain scene

@@ -6,6 +6,7 @@
 #include "rbcstab/analysis/truncation.hpp"
 #include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"
+#include "rbcstab/io/units_io.hpp"
 
 namespace rbcstab {
 
@@ -85,6 +86,7 @@ nlohmann::json post_json(const SceneFile& file, const PostInstability& post, con
 std::string post_text(const SceneFile& file, const PostInstability& post, const SimulationResult& r) {
   const Scene& s = file.scene;
   const Parameters& p = s.parameters;
+  const UnitText u(s);  // on a physical scene tensions also in N/m, times in s
   TextStream out;
   out << std::setprecision(6);
   out << "Scene '" << s.name << "': lambda = " << p.lambda << ", Delta = " << p.Delta << ", Delta0 = " << p.Delta0
@@ -92,12 +94,13 @@ std::string post_text(const SceneFile& file, const PostInstability& post, const 
   out << "Truncation: " << file.L_reason << "\n";
   for (const Delta2Prediction* d : {&post.continuous, &post.integer_mode}) {
     out << (d->variant == "continuous" ? "Continuous l_* = " : "Integer surviving mode l_s = ") << d->l
-        << ", sigma = " << d->sigma_s << ": Delta~2 = " << to_text(d->Delta2_tilde) << ", r~ = " << to_text(d->r_tilde)
-        << ", Psi~ = " << to_text(d->Psi_tilde) << "\n";
+        << ", sigma = " << u.tension(d->sigma_s) << ": Delta~2 = " << to_text(d->Delta2_tilde)
+        << ", r~ = " << to_text(d->r_tilde)
+        << ", Psi~ = " << (d->Psi_tilde.valid() ? degrees_text(d->Psi_tilde.value) : to_text(d->Psi_tilde)) << "\n";
   }
-  out << "Simulated Delta-bar_2 (tail mean over the last " << file.options.tail_window << " of T = " << s.T
-      << ") = " << to_text(simulated_Delta2(r)) << ", l_Delta = " << r.l_Delta
-      << ", sigma tail mean = " << r.sigma_tail_mean << "\n";
+  out << "Simulated Delta-bar_2 (tail mean over the last " << u.time(file.options.tail_window)
+      << " of T = " << u.time(s.T) << ") = " << to_text(simulated_Delta2(r)) << ", l_Delta = " << r.l_Delta
+      << ", sigma tail mean = " << u.tension(r.sigma_tail_mean) << "\n";
   return out.str();
 }
 

@@ -7,6 +7,7 @@
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/integrate/quadrature.hpp"
+#include "rbcstab/io/units_io.hpp"
 #include "rbcstab/model/coefficients.hpp"
 
 namespace rbcstab {
@@ -122,10 +123,10 @@ RegimeResult regime_from(const ReducedRun& run, bool out_of_plane) {
   constexpr double kSteady = 1e-4;
   if (g.Psi_range > kTwoPi) {
     g.regime = Regime::tumbling;
-    g.reason = "Psi rotates by " + format_value(run.Psi.back() - run.Psi.front()) + " over the window";
+    g.reason = "Psi rotates by " + degrees_text(run.Psi.back() - run.Psi.front()) + " over the window";
   } else if (g.Psi_range > kSteady || g.r_range > kSteady) {
     g.regime = out_of_plane ? Regime::oscillating_out_of_plane : Regime::swinging;
-    g.reason = "Psi oscillates within a range of " + format_value(g.Psi_range) + " (r range " +
+    g.reason = "Psi oscillates within a range of " + degrees_text(g.Psi_range) + " (r range " +
                format_value(g.r_range) + ") without net rotation" +
                (out_of_plane ? ", from an out-of-plane start" : ", from an in-plane start");
   } else {

@@ -17,7 +17,7 @@
 namespace rbcstab {
 
 namespace {
-constexpr const char* kPanelTables[] = {"diagram", "fig6e", "continuation"};
+constexpr const char* kPanelTables[] = {"diagram", "fig6e", "continuation", "physical_map"};
 
 double number_of(const SceneValue& v) { return std::get<double>(v); }
 long long integer_of(const SceneValue& v) { return std::get<long long>(v); }
@@ -501,7 +501,10 @@ SceneFile parse_scene(const std::string& toml_text, const std::string& source_na
   for (auto& [name, t] : sub) {
     if (tables.count(name)) continue;
     for (const auto& [key, v] : t.values()) f.origins[t.path(key)] = Origin::file;
-    (name == "diagram" ? f.diagram : name == "fig6e" ? f.fig6e : f.continuation) = std::move(t);
+    (name == "diagram"        ? f.diagram
+     : name == "fig6e"        ? f.fig6e
+     : name == "continuation" ? f.continuation
+                              : f.physical_map) = std::move(t);
   }
   for (const std::string& name : tables) {
     const auto it = sub.find(name);

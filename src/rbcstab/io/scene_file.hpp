@@ -43,8 +43,8 @@ struct SceneFile {
   Scene scene;
   SimulationOptions options;  // run.tail_window and the [integrator] table
   // The figure-panel tables as the file gives them; the modules that run them read their keys
-  // (sweep/diagram_table.hpp: [diagram]; report/panels.hpp: [fig6e], [continuation]).
-  std::optional<SceneTable> diagram{}, fig6e{}, continuation{};
+  // (sweep/diagram_table.hpp: [diagram]; report/panels.hpp: [fig6e], [continuation], [physical_map]).
+  std::optional<SceneTable> diagram{}, fig6e{}, continuation{}, physical_map{};
   // Where each value came from, by its key ("parameters.B", "run.L", "name", "diagram.axes"): a key the file
   // or a flag gave; absent keys hold their default.
   std::map<std::string, Origin> origins{};

@@ -4,6 +4,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"
 #include "rbcstab/io/scene_file.hpp"
@@ -53,6 +54,34 @@ std::string units_text(const UnitsAnswer& a) {
         << f.formula << f.reference << "\n";
   }
   return out.str();
+}
+
+namespace {
+std::string with_unit(double x, double unit, const char* name) {
+  TextStream o;
+  o << std::setprecision(6) << x;
+  if (!std::isnan(unit)) o << " (" << x * unit << name << ")";
+  return o.str();
+}
+}  // namespace
+
+UnitText::UnitText(const Scene& scene) {
+  if (scene.physical) cell_ = cell_numbers(*scene.physical);
+}
+std::string UnitText::time(double t) const { return with_unit(t, cell_ ? cell_->time_unit : kNotGiven, " s"); }
+std::string UnitText::seconds(double t) const {
+  TextStream o;
+  if (cell_) o << std::setprecision(6) << " (" << t * cell_->time_unit << " s)";
+  return o.str();
+}
+std::string UnitText::rate(double r) const { return with_unit(r, cell_ ? 1 / cell_->time_unit : kNotGiven, " 1/s"); }
+std::string UnitText::tension(double sigma) const { return with_unit(sigma, tension_unit(), " N/m"); }
+double UnitText::tension_unit() const { return cell_ ? cell_->tension_unit : kNotGiven; }
+
+std::string degrees_text(double radians) {
+  TextStream o;
+  o << std::setprecision(6) << radians << " rad (" << radians * 180 / kPi << " deg)";
+  return o.str();
 }
 
 }  // namespace rbcstab

@@ -23,6 +23,7 @@
 #include "rbcstab/sweep/diagram_document.hpp"
 #include "rbcstab/sweep/diagram_table.hpp"
 #include "rbcstab/sweep/sweep_io.hpp"
+#include "rbcstab/verdict/verdict_io.hpp"
 
 namespace rbcstab {
 
@@ -111,11 +112,13 @@ std::string tex_parameters(const Scene& s, const std::set<std::string>& varied, 
 PanelKind panel_kind(const SceneFile& scene) {
   std::vector<PanelKind> found;
   for (auto [table, kind] : {std::pair{&scene.diagram, PanelKind::diagram}, std::pair{&scene.fig6e, PanelKind::fig6e},
-                             std::pair{&scene.continuation, PanelKind::continuation}})
+                             std::pair{&scene.continuation, PanelKind::continuation},
+                             std::pair{&scene.physical_map, PanelKind::physical_map}})
     if (table->has_value()) found.push_back(kind);
   if (found.size() > 1)
     throw InvalidArgument("scene", scene.source +
-                                       " holds more than one panel table ([diagram], [fig6e], [continuation]): "
+                                       " holds more than one panel table ([diagram], [fig6e], [continuation], "
+                                       "[physical_map]): "
                                        "one figure panel per scene file");
   return found.empty() ? PanelKind::none : found[0];
 }
@@ -129,6 +132,8 @@ TruncationUse truncation_use(PanelKind kind) {
       return TruncationUse::grid;
     case PanelKind::continuation:
       return TruncationUse::reduced;
+    case PanelKind::physical_map:  // the onset's asymptotic verdicts over l = 3..L, no simulation
+      return TruncationUse::analysis;
   }
   return TruncationUse::simulation;
 }
@@ -306,7 +311,8 @@ void PanelOptions::validate() const {
 
 PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& panel, const ReportOptions& options) {
   // The hooks draw other commands' data into a scene's report; a panel draws what it computes, in their place.
-  for (const std::string* hook : {&options.phase_diagram, &options.delta2_comparison, &options.bifurcation})
+  for (const std::string* hook :
+       {&options.phase_diagram, &options.delta2_comparison, &options.bifurcation, &options.physical_map})
     if (!hook->empty())
       throw InvalidArgument("phase_diagram",
                             "--phase-diagram, --delta2-comparison and --bifurcation draw data from "
@@ -318,7 +324,8 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
   PanelReportResult res;
   res.kind = panel_kind(sf);
   if (res.kind == PanelKind::none)
-    throw InvalidArgument("scene", sf.source + " holds no panel table ([diagram], [fig6e] or [continuation])");
+    throw InvalidArgument("scene",
+                          sf.source + " holds no panel table ([diagram], [fig6e], [continuation] or [physical_map])");
   // Refuse what build_report would refuse before computing anything (a grid can take hours).
   check_python(options.python);
   detail::output_target(options.output, options.overwrite);
@@ -431,6 +438,27 @@ PanelReportResult build_panel_report(const SceneFile& sf, const PanelOptions& pa
             << "long-time mean Delta-bar_2, over lambda, B and C (" << rows.size() << " runs, Delta = " << f.Delta
             << ", Delta0 = " << f.Delta0 << ", beta = " << f.beta << ").";
     ro.figure_title = sf.scene.name + ": " + tex_parameters(sf.scene, {"lambda"}, false);
+  } else if (res.kind == PanelKind::physical_map) {
+    const PhysicalMapPanel p = physical_map_panel(sf);
+    PhysicalMapOptions o = p.options;
+    o.threads = panel.threads;
+    if (p.healthy_spreads) o.spreads = healthy_cell_spreads(sf.scene);
+    const PhysicalMap map = physical_map(sf.scene, o);
+    const std::string file = shipped_observations(executable_path());
+    const std::vector<PublishedObservation> observed =
+        file.empty() ? std::vector<PublishedObservation>{} : read_observations(file);
+    ro.physical_map = staging.put("physical_map.json", to_json(map, observed, file).dump(1) + "\n");
+    PhysicalMapPage page = physical_map_page(map, observed, file);
+    res.facts = std::move(page.facts);
+    ro.panel_tables = std::move(page.tables);
+    res.status = "success";
+    summary << "Physical phase diagram of the scene's cell: where it tumbles, swings and where the l >= 3 modes "
+            << "grow, over outer viscosity and shear rate (" << map.columns.size() << " viscosities; bands: "
+            << (o.spreads.empty() ? "none computed" : "the published ranges of the cell's properties")
+            << "), with the published observations drawn over it and where the model's assumptions fail.";
+    ro.figure_title = sf.scene.name + ": physical phase diagram" +
+                      (o.spreads.empty() ? " (nominal cell; no bands computed)"
+                                         : " (bands: published ranges of the cell's properties)");
   } else {
     const ContinuationPanel c = continuation_panel(sf);
     const SceneBranch r = continue_scene(branch_spec(c, sf.scene));  // throws InvalidArgument("beta") if forced

@@ -4,7 +4,9 @@
 //                   with the traced boundary (out-of-plane scenes) and the paper's analytic lines on top;
 //   [fig6e]         the Fig. 6e table (sweep/fig6e.hpp): Delta~2 against the simulated mean;
 //   [continuation]  an equilibrium branch of the reduced system (continue_scene, as `rbcstab continue`), drawn
-//                   as a bifurcation diagram (stable solid, unstable dashed, special points labelled).
+//                   as a bifurcation diagram (stable solid, unstable dashed, special points labelled);
+//   [physical_map]  the physical phase diagram of the scene's cell (verdict/physical_map.hpp) with the published
+//                   observations (data/experiments.csv) drawn over it and the assumption checks listed.
 // build_panel_report computes the panel's data and hands it to build_report's hooks.
 #include <atomic>
 #include <functional>
@@ -20,22 +22,25 @@
 #include "rbcstab/continuation/scene_branch.hpp"
 #include "rbcstab/continuation/scene_kinds.hpp"
 #include "rbcstab/core/enum_table.hpp"
+#include "rbcstab/io/experiments.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/report/report.hpp"
 #include "rbcstab/sweep/agreement.hpp"
 #include "rbcstab/sweep/diagram.hpp"
 #include "rbcstab/sweep/fig6e.hpp"
 #include "rbcstab/sweep/trace.hpp"
+#include "rbcstab/verdict/physical_map.hpp"
 
 namespace rbcstab {
 
-enum class PanelKind { none, diagram, fig6e, continuation };  // names: the scene file's panel tables
+enum class PanelKind { none, diagram, fig6e, continuation, physical_map };  // names: the scene file's panel tables
 template <>
 struct EnumTable<PanelKind> {
   static constexpr EnumName<PanelKind> entries[] = {{PanelKind::none, "none"},
                                                     {PanelKind::diagram, "diagram"},
                                                     {PanelKind::fig6e, "fig6e"},
-                                                    {PanelKind::continuation, "continuation"}};
+                                                    {PanelKind::continuation, "continuation"},
+                                                    {PanelKind::physical_map, "physical_map"}};
 };
 // The panel table the scene file holds: none, or exactly one (two throw InvalidArgument("scene", ...)).
 PanelKind panel_kind(const SceneFile& scene);
@@ -68,6 +73,25 @@ BranchSpec branch_spec(const ContinuationPanel& panel, const Scene& scene);
 // The Branch JSON of `rbcstab continue --json` (continuation/branch_io.hpp) plus "measure", the quantity
 // rbcstab_report.py draws against the parameter.
 nlohmann::json bifurcation_json(const SceneBranch& branch, const std::string& measure);
+
+// [physical_map]: viscosity = [min, max] and shear_rate = [min, max] (each item a number in SI -- Pa s, 1/s --
+// within the quantity's plausible range, or a text with a unit: "1 mPa s", "0.1/s"), viscosities,
+// samples_per_decade, rtol, onset (true/false), spreads ("none" or "healthy": healthy_cell_spreads); the rest as
+// PhysicalMapOptions' defaults. Unknown keys and bad values throw InvalidArgument naming "physical_map.<key>".
+struct PhysicalMapPanel {
+  PhysicalMapOptions options;  // threads and progress: the caller's
+  bool healthy_spreads = false;
+};
+PhysicalMapPanel physical_map_panel(const SceneFile& scene);
+// What the page shows beside the figure, from the map and the observations drawn over it: the facts (rows of the
+// "Panel" table) and three tables -- the boundaries per viscosity, the observations with their sources and the
+// sentence each rests on, and the assumption checks with how far each is off.
+struct PhysicalMapPage {
+  std::vector<std::pair<std::string, std::string>> facts;
+  std::vector<ReportTable> tables;
+};
+PhysicalMapPage physical_map_page(const PhysicalMap& map, const std::vector<PublishedObservation>& observed,
+                                  const std::string& experiments_file);
 
 // The phase diagram's overlay {"axes": {"x", "y"}, "curves": [{"label", "x", "y", "style", "color"}]}: the
 // axes' TeX labels (tex_symbol: the parameter table's symbols), the traced boundary pieces (solid black, one

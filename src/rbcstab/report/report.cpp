@@ -294,6 +294,13 @@ void add_hook_figures(const ReportOptions& o, const std::optional<PlotSpec>& bif
                                      "with their type and label (bifurcation_plot.json: what was drawn)")));
   }
 
+  if (!o.physical_map.empty()) {
+    const std::string d = import_hook(o.physical_map, dir, "physical_map.json");
+    files.push_back(d);
+    figs.push_back(titled(figure("physical_map", "fig_physical_map.png", 900, 700, {d},
+                                 "Physical phase diagram: the regime boundaries over outer viscosity and shear rate, "
+                                 "their bands, and the published observations (physical_map.json: what was drawn)")));
+  }
   for (const std::string& a : o.attachments) files.push_back(import_hook(a, dir, fs::path(a).filename().string()));
 }
 
@@ -326,10 +333,10 @@ void draw_and_publish(const ReportOptions& o, const nlohmann::json& manifest, co
 // A figure-panel report: the scene as given, the hooks' data and figures, the attachments.
 ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, const std::optional<PlotSpec>& bifurcation,
                                 const fs::path& target, std::chrono::steady_clock::time_point start) {
-  if (o.phase_diagram.empty() && o.delta2_comparison.empty() && o.bifurcation.empty())
+  if (o.phase_diagram.empty() && o.delta2_comparison.empty() && o.bifurcation.empty() && o.physical_map.empty())
     throw InvalidArgument("run_scene",
-                          "run_scene = false (a figure panel) needs a phase diagram, a Fig. 6e table "
-                          "or a bifurcation to draw");
+                          "run_scene = false (a figure panel) needs a phase diagram, a Fig. 6e table, "
+                          "a bifurcation or a physical map to draw");
   ReportResult res;
   detail::in_staging_folder(target, [&](const fs::path& tmp) {
     const std::string scene_text = o.scene_toml.empty() ? to_toml(sf) : o.scene_toml;
@@ -347,6 +354,9 @@ ReportResult build_panel_folder(const SceneFile& sf, const ReportOptions& o, con
     panel["summary"] = o.panel_summary;
     panel["facts"] = nlohmann::json::array();
     for (const auto& [k, v] : o.panel_facts) panel["facts"].push_back({k, v});
+    panel["tables"] = nlohmann::json::array();
+    for (const ReportTable& t : o.panel_tables)
+      panel["tables"].push_back({{"title", t.title}, {"header", t.header}, {"rows", t.rows}});
     manifest["panel"] = panel;
     manifest["provenance"] = detail::provenance_json(detail::make_provenance({scene_text}, "scene.toml"));
     manifest["warnings"] = nlohmann::json::array();
@@ -442,7 +452,7 @@ ReportResult build_report(const SceneFile& sf, const ReportOptions& options) {
 
   const fs::path target = detail::output_target(o.output, o.overwrite);
   std::error_code ec;
-  for (const std::string* hook : {&o.phase_diagram, &o.delta2_comparison, &o.bifurcation})
+  for (const std::string* hook : {&o.phase_diagram, &o.delta2_comparison, &o.bifurcation, &o.physical_map})
     if (!hook->empty() && !fs::is_regular_file(*hook, ec))
       throw InvalidArgument("file", "data file '" + *hook + "' not found");
   // The script's readers (rbcstab_report.py: plot_phase_diagram, plot_delta2_comparison) take these columns.

@@ -24,6 +24,13 @@ class ReportError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// A table of plain-text cells a panel adds to its page (header, then rows of as many cells).
+struct ReportTable {
+  std::string title;
+  std::vector<std::string> header;
+  std::vector<std::vector<std::string>> rows;
+};
+
 struct ReportOptions {
   std::string output;                       // folder to create (its parent must exist)
   bool overwrite = false;                   // replace an existing folder; otherwise refuse (never merge)
@@ -41,12 +48,14 @@ struct ReportOptions {
   std::string delta2_comparison;  // CSV with columns Delta2_theory, Delta2_simulation[, alpha]
   std::string bifurcation;  // a branch JSON (continuation/branch_io.hpp), drawn by plot_spec (bifurcation_plot.hpp)
   std::string bifurcation_x, bifurcation_y;  // its axes ("": plot_spec's defaults)
+  std::string physical_map;                  // a physical-map JSON (verdict_io.hpp: to_json with the observations)
   // Figure panels (phase diagram, Fig. 6e, bifurcation; report/panels.hpp): no run of the scene itself,
   // whose time-dependent figures would mean nothing there; only the hooks are drawn (at least one is needed).
   bool run_scene = true;
   std::vector<std::string> attachments;  // files copied in as they are (the raw data behind a panel)
   std::string panel_summary;             // panel reports: what was computed, shown under the title
   std::vector<std::pair<std::string, std::string>> panel_facts;  // panel reports: rows of the "Panel" table
+  std::vector<ReportTable> panel_tables;                         // panel reports: more tables, after "Panel"
   std::string figure_title;                                      // panel reports: title drawn above the hook figures
   std::string scene_toml;  // panel reports: the scene file as read (its panel table kept) for scene.toml
   // Each step as it starts ("running the scene", "drawing the figures"), for progress; the runs themselves

@@ -41,13 +41,15 @@ RateCrossing tumbling_crossing(const Scene& cell, const PhysicalMapOptions& o, i
   RateCrossing c;
   Scene base = cell;
   base.beta = kPi / 2;
+  PredictorOptions regime = o.predictor;
+  regime.integrator.stepper = o.regime_stepper;
   std::string why;
   // +1 past the boundary (swinging or tank-treading), 0 tumbling, nullopt undetermined (why set).
   auto past = [&](double rate) -> std::optional<bool> {
     Scene s = base;
     set_parameter(s, SceneParameter::shear_rate, rate);
     ++evaluations;
-    const RegimeResult r = reduced_regime(s, o.predictor);
+    const RegimeResult r = reduced_regime(s, regime);
     if (r.regime == Regime::tumbling) return false;
     if (r.regime == Regime::swinging || r.regime == Regime::tank_treading) return true;
     why = "regime " + to_string(r.regime) + " at " + format_value(rate) + " 1/s: " + r.reason;
@@ -110,9 +112,7 @@ RateCrossing onset_crossing(const Scene& cell, double beta, const PhysicalMapOpt
   c.hi = t.hi;
   c.l = t.l;
   c.reason = t.reason;
-  // shear_rate_threshold names a mode without a crossing only when the cell is unstable at min_rate already.
-  if (!t.found && t.l >= 3) c.side = "below";
-  if (!t.found && t.l < 3 && t.reason.rfind("stable up to", 0) == 0) c.side = "above";
+  c.side = t.side;
   return c;
 }
 
@@ -210,6 +210,7 @@ PhysicalMap physical_map(const Scene& scene, const PhysicalMapOptions& options) 
   map.cell = *scene.physical;
   map.min_rate = options.min_rate;
   map.max_rate = options.max_rate;
+  map.onset = options.onset;
   map.spreads = options.spreads;
   // The cells: the nominal one, then each spread's two ends (one key at a time). A key must name an input this
   // cell has (checked at its nominal value, so the error names the key); an end the cell refuses (V0 < V) is

@@ -28,9 +28,10 @@ struct PhysicalSpread {
 // when Delta0 is a dimensionless input (no measurement bounds it).
 std::vector<PhysicalSpread> healthy_cell_spreads(const Scene& scene);
 
-// The reduced regime is stiff at small C (its relaxation rates grow as 1/C and its stepper is explicit), so a
-// search's cost grows as 1/min_rate: the default starts at 0.1/s, below the experiments' tumbling (~1/s in
-// 25-50 mPa s).
+// The reduced regime is stiff at small C (its relaxation rates grow as 1/C), so with an explicit stepper a
+// search's cost grows as 1/min_rate: the default range starts at 0.1/s, below the experiments' tumbling (~1/s in
+// 25-50 mPa s). Down to 0.1/s the explicit rk8pd is the cheaper regime stepper (measured, docs/units.md "Cost":
+// the linearly implicit rosenbrock took 14x its CPU time at the predictor's rtol 1e-10, 1.5x at rtol 1e-6).
 struct PhysicalMapOptions {
   double min_viscosity = 1e-3, max_viscosity = 5e-2;  // Pa s: plasma to the dextran media of the experiments
   int viscosities = 9;                                // log-spaced over [min, max]
@@ -41,6 +42,10 @@ struct PhysicalMapOptions {
   std::vector<PhysicalSpread> spreads;                // the bands; empty: no band
   int threads = 0;                                    // 0: all cores; the result does not depend on it
   PredictorOptions predictor;
+  // The stepper of the tumbling search's reduced runs (predictor.integrator's tolerances); the onset search's
+  // verdicts keep predictor.integrator.stepper. An implicit one (rosenbrock) classifies as rk8pd does (test
+  // StiffRegimeStepperKeepsTheClassification) and may pay off below 0.1/s, where C is smaller still.
+  Stepper regime_stepper = Stepper::rk8pd;
   ProgressCallback on_progress;  // (cells done, cells in all) after each cell at each viscosity
   void validate() const;         // throws InvalidArgument naming the field
 };
@@ -83,6 +88,7 @@ struct PhysicalMap {
   std::vector<PhysicalMapColumn> columns;  // by increasing viscosity
   std::vector<AssumptionCheck> assumptions;
   double min_rate = 0, max_rate = 0;  // 1/s: the searched range
+  bool onset = false;                 // the l >= 3 onset was searched (PhysicalMapOptions::onset)
   int evaluations = 0;                // regime and verdict evaluations in all
 };
 

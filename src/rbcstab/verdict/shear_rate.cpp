@@ -32,6 +32,8 @@ void set_search_range(ShearRateSearchOptions& options, std::string_view text, co
   for (int k = 0; k < 2; ++k) {
     try {
       range[k] = parse_quantity(parts[std::size_t(k)], PhysicalUnit::per_second, name);
+      // A bare number is a shear rate in 1/s only where one is plausible, as for --shear-rate.
+      if (!has_unit(parts[std::size_t(k)])) require_plausible_bare("shear_rate", range[k]);
     } catch (const InvalidArgument& e) {
       throw InvalidArgument(name, form + " (" + e.what() + ")");
     }
@@ -136,6 +138,7 @@ ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const S
     }
     if (k == 0) {
       t.reason = "unstable already at min_rate = " + format_value(options.min_rate) + " 1/s";
+      t.side = "below";
       t.l = v->l;
       t.shape = shape_of_mode(v->l, t.orientation == "out_of_plane");
       find_end(0);
@@ -160,6 +163,7 @@ ShearRateThreshold shear_rate_threshold(const Scene& scene, double beta, const S
     return t;
   }
   t.reason = "stable up to max_rate = " + format_value(options.max_rate) + " 1/s";
+  t.side = "above";
   return t;
 }
 

@@ -24,7 +24,8 @@ struct ShearRateSearchOptions {
   void validate() const;  // throws InvalidArgument naming the field
 };
 // "LO,HI" in 1/s, each with an optional unit as for the shear rate (parse_quantity: "10/s", "1e4Hz"), into
-// min_rate, max_rate. Throws InvalidArgument(name, "<name> = '<text>' ...") unless two quantities 0 < LO < HI.
+// min_rate, max_rate; a bare number only within the shear rate's plausible range (require_plausible_bare). Throws
+// InvalidArgument(name, "<name> = '<text>' ...") unless two such quantities 0 < LO < HI.
 void set_search_range(ShearRateSearchOptions& options, std::string_view text, const std::string& name);
 // The search options a range's text gives ("": the defaults), for the scene; refused (InvalidArgument(name, ...))
 // on a scene that is not physical or for a malformed or empty range.
@@ -33,8 +34,11 @@ ShearRateSearchOptions shear_rate_search(const Scene& scene, const std::string& 
 struct ShearRateThreshold {
   std::string orientation;  // "out_of_plane" (beta = 1e-3, the paper's OP) or "in_plane" (beta = pi/2)
   double beta = 0;
-  bool found = false;     // a stable-to-unstable crossing within [min_rate, max_rate]
-  std::string reason;     // why not found (unstable already at min_rate, stable up to max_rate, verdict failed)
+  bool found = false;  // a stable-to-unstable crossing within [min_rate, max_rate]
+  std::string reason;  // why not found (unstable already at min_rate, stable up to max_rate, verdict failed)
+  // Where the crossing lies when not found because it is outside [min_rate, max_rate]: "below" (unstable already
+  // at min_rate), "above" (stable up to max_rate); "" when found or when a verdict failed (undetermined).
+  std::string side;
   double shear_rate = 0;  // 1/s: the crossing (the bracket's upper end: the first rate found unstable)
   double lo = 0, hi = 0;  // the final bracket: stable at lo, unstable at hi (hi/lo - 1 <= rtol)
   double B = 0, C = 0;    // at shear_rate

@@ -1,6 +1,7 @@
 #include "rbcstab/verdict/verdict_io.hpp"
 
 #include <cmath>
+#include <complex>
 #include <iomanip>
 #include <optional>
 #include <sstream>
@@ -13,6 +14,7 @@
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/text.hpp"
 #include "rbcstab/io/json.hpp"
+#include "rbcstab/io/units_io.hpp"
 #include "rbcstab/model/coefficients.hpp"
 #include "rbcstab/model/parameter_table.hpp"
 #include "rbcstab/verdict/certified_run.hpp"
@@ -31,43 +33,19 @@ nlohmann::json to_json(const ModePrediction& m) {
 
 namespace {
 
-// The summary's physical units: a model time also in s, a tension also in N/m (kappa/R^2), on a physical scene.
-struct Units {
-  std::optional<CellNumbers> cell;
-  explicit Units(const Scene& s) {
-    if (s.physical) cell = cell_numbers(*s.physical);
-  }
-  std::string time(double t) const { return with_unit(t, cell ? cell->time_unit : kNotGiven, " s"); }
-  std::string seconds(double t) const {  // " (t s)", or "" when not physical
-    TextStream o;
-    if (cell) o << std::setprecision(6) << " (" << t * cell->time_unit << " s)";
-    return o.str();
-  }
-  std::string tension(double sigma) const { return with_unit(sigma, cell ? cell->tension_unit : kNotGiven, " N/m"); }
-  static std::string with_unit(double x, double unit, const char* name) {
-    TextStream o;
-    o << std::setprecision(6) << x;
-    if (!std::isnan(unit)) o << " (" << x * unit << name << ")";
-    return o.str();
-  }
-};
-
-std::string degrees(double radians) {
-  TextStream o;
-  o << std::setprecision(6) << radians << " rad (" << radians * 180 / kPi << " deg)";
-  return o.str();
-}
-
 bool has_post_instability_state(const SimulationResult& r) {
   return r.l_Delta >= 3 && r.status == IntegrationStatus::success;
 }
+
+// A tension Quantity in kappa/R^2 and N/m, or why it has no value.
+std::string tension_text(const UnitText& u, const Quantity& q) { return q.valid() ? u.tension(q.value) : to_text(q); }
 
 // The analysis part of the summary: regime, thresholds, the three predictors and Delta~2 predicted vs simulated.
 void analysis_text(std::ostream& out, const SceneFile& file, const SimulationResult& r, const ScenePrediction& pr) {
   const Scene& s = file.scene;
   const Parameters& p = s.parameters;
   const double alpha = p.alpha();
-  const Units u(s);
+  const UnitText u(s);
   out << "\nAnalysis (docs/theory.md)\n";
   out << "Regime       " << to_string(pr.regime.regime) << " -- " << pr.regime.reason << " (reduced dynamics)\n";
   out << "Thresholds   sigma_* = " << u.tension(sigma_star(alpha)) << ", l_* = " << l_star(alpha)
@@ -75,10 +53,10 @@ void analysis_text(std::ostream& out, const SceneFile& file, const SimulationRes
       << ", alpha_*^init = " << to_text(alpha_init(p)) << "\n";
   if (s.L >= 3)
     out << "             surviving integer mode (largest sigma_l^c) l_s = " << surviving_mode(alpha, s.L) << "\n";
-  out << "Predictors   (a) asymptotic     <sigma_R> = " << to_text(pr.sigma_R_asymptotic) << " ("
+  out << "Predictors   (a) asymptotic     <sigma_R> = " << tension_text(u, pr.sigma_R_asymptotic) << " ("
       << pr.asymptotic_source << "): unstable " << mode_list(pr.asymptotic.unstable)
       << ", l_Delta = " << pr.asymptotic.l_Delta << "\n";
-  out << "             (b) finite horizon <sigma_R>_T = " << pr.horizon.mean_sigma_R << " over [0, "
+  out << "             (b) finite horizon <sigma_R>_T = " << u.tension(pr.horizon.mean_sigma_R) << " over [0, "
       << u.time(pr.horizon.T) << "]: unstable " << mode_list(pr.finite_horizon.unstable)
       << ", l_Delta = " << pr.finite_horizon.l_Delta << " (linear growth exp(2 G_l))\n";
   out << "             (c) simulation     unstable " << mode_list(pr.simulation.unstable)
@@ -200,6 +178,14 @@ nlohmann::json to_json(const PhysicalMap& map) {
           {"columns", columns}, {"assumptions", checks}, {"evaluations", map.evaluations}};
 }
 
+nlohmann::json to_json(const PhysicalMap& map, const std::vector<PublishedObservation>& observed,
+                       const std::string& experiments_file) {
+  nlohmann::json j = to_json(map);
+  j["experiments"] = to_json(observed);
+  j["experiments_file"] = experiments_file;
+  return j;
+}
+
 nlohmann::json to_json(const std::vector<ShearRateThreshold>& thresholds) {
   nlohmann::json a = nlohmann::json::array();
   for (const ShearRateThreshold& t : thresholds) {
@@ -215,6 +201,7 @@ nlohmann::json to_json(const std::vector<ShearRateThreshold>& thresholds) {
       o["C"] = t.C;
     } else {
       o["reason"] = t.reason;
+      if (!t.side.empty()) o["side"] = t.side;
     }
     if (t.found || t.l >= 3) {  // the window's upper end: found, or why not
       if (t.end_found) {
@@ -254,7 +241,7 @@ std::string shear_rate_text(const std::vector<ShearRateThreshold>& thresholds) {
 std::string summary_text(const SceneFile& file, const SimulationResult& r, const ScenePrediction& pr) {
   const Scene& s = file.scene;
   const Parameters& p = s.parameters;
-  const Units u(s);
+  const UnitText u(s);
   TextStream out;
   out << std::setprecision(6);
   out << "rbcstab " << RBCSTAB_VERSION << " -- scene '" << s.name << "'\n";
@@ -278,8 +265,9 @@ std::string summary_text(const SceneFile& file, const SimulationResult& r, const
   values(composite_parameters());
   out << "\n";
   if (s.physical) {
-    out << "Physical     shear rate " << s.physical->shear_rate << " 1/s: time unit 1/gamma = " << u.cell->time_unit
-        << " s, tension unit kappa/R^2 = " << u.cell->tension_unit << " N/m\n";
+    out << "Physical     shear rate " << s.physical->shear_rate
+        << " 1/s: time unit 1/gamma = " << 1 / s.physical->shear_rate
+        << " s, tension unit kappa/R^2 = " << u.tension_unit() << " N/m\n";
     out << "Threshold    unstable window in shear rate along B/C = alpha fixed (asymptotic verdict):\n"
         << shear_rate_text(pr.shear_rate_thresholds);
   }
@@ -287,13 +275,15 @@ std::string summary_text(const SceneFile& file, const SimulationResult& r, const
   out << "Model level  " << to_string(r.level.level) << " -- " << r.level.reason << "\n";
   for (const auto& w : r.warnings) out << "Warning      " << w << "\n";
   out << "\nExcess area by mode (Delta_l):\n";
-  out << "    l      Delta_l(0)      Delta_l(T)   tail mean       change   sigma_l^c\n";
+  out << "    l      Delta_l(0)      Delta_l(T)   tail mean       change   sigma_l^c"
+      << (u.physical() ? "  sigma_l^c [N/m]" : "") << "\n";
   for (int l = 2; l <= r.L; ++l) {
     const std::size_t k = std::size_t(l - 2);
     const double d0 = r.Delta_initial[k], d1 = r.Delta_final[k];
     out << std::setw(5) << l << std::setw(16) << d0 << std::setw(16) << d1 << std::setw(12) << r.Delta_tail_mean[k]
         << std::setw(13) << (d1 - d0);
     if (l >= 3) out << std::setw(12) << sigma_c(l, p.alpha());
+    if (l >= 3 && u.physical()) out << std::setw(17) << sigma_c(l, p.alpha()) * u.tension_unit();
     out << "\n";
   }
   out << "\nl_Delta = " << r.l_Delta;
@@ -305,7 +295,7 @@ std::string summary_text(const SceneFile& file, const SimulationResult& r, const
         << " time units" << u.seconds(file.options.tail_window) << ")\n";
   out << "sigma(T) = " << u.tension(r.sigma_final) << ", tail mean " << u.tension(r.sigma_tail_mean)
       << ", sigma(0) = " << u.tension(r.sigma_initial) << "\n";
-  out << "r(T) = " << r.r_final << ", Psi(T) = " << degrees(r.Psi_final) << "\n";
+  out << "r(T) = " << r.r_final << ", Psi(T) = " << degrees_text(r.Psi_final) << "\n";
   out << "Excess-area drift max_t |Delta(t) - Delta(0)| = " << r.excess_area_drift << "\n";
   analysis_text(out, file, r, pr);
   out << "Cost: " << r.counters.steps << " steps (" << r.counters.failed_steps << " rejected), "
@@ -424,45 +414,63 @@ std::string thresholds_text(const SceneFile& file, const ThresholdReport& t) {
   const double alpha = p.alpha();
   const ScenePrediction& pr = t.prediction;
   const OutOfPlaneCriterion& crit = t.criterion;
+  const UnitText u(s);  // on a physical scene every tension also in N/m, time in s, rate in 1/s
   TextStream out;
   out << std::setprecision(6);
   out << "Scene '" << s.name << "': lambda = " << p.lambda << ", Delta = " << p.Delta << ", Delta0 = " << p.Delta0
-      << ", B = " << p.B << ", C = " << p.C << ", beta = " << s.beta << "\n";
+      << ", B = " << p.B << ", C = " << p.C << ", beta = " << degrees_text(s.beta) << "\n";
   out << "Lambda = " << p.Lambda() << ", S = " << p.S() << ", alpha = " << alpha << ", r0 = " << t.r0 << "\n";
+  if (s.physical)
+    out << "Physical: shear rate " << s.physical->shear_rate
+        << " 1/s; tensions in units of kappa/R^2 = " << u.tension_unit()
+        << " N/m, times in units of 1/gamma = " << 1 / s.physical->shear_rate << " s\n";
   out << "Truncation: " << file.L_reason << "\n\n";
-  out << "Continuous band (Eq. inst): l_* = " << l_star(alpha) << ", sigma_* = " << sigma_star(alpha)
+  out << "Continuous band (Eq. inst): l_* = " << l_star(alpha) << ", sigma_* = " << u.tension(sigma_star(alpha))
       << "; l_* >= 2.5 <=> alpha >= (35/8)^2 = " << alpha_for_l_star(2.5) << ": "
       << (l_star_criterion(alpha) ? "met" : "not met") << "\n";
   if (s.L >= 3) out << "Surviving integer mode (largest sigma_l^c): l = " << surviving_mode(alpha, s.L) << "\n";
-  out << "alpha_*^init = " << to_text(alpha_init(p)) << " (sigma_R(0) = " << sigma_R_initial(p) << ")\n";
-  out << "<sigma_R^-> = " << to_text(mean_sigma_R_minus(p)) << ", <sigma_R^+> = " << to_text(mean_sigma_R_plus(p, t.r0))
-      << "  (Eq. ss_st_red, S >> 1)\n";
+  out << "alpha_*^init = " << to_text(alpha_init(p)) << " (sigma_R(0) = " << u.tension(sigma_R_initial(p)) << ")\n";
+  out << "<sigma_R^-> = " << tension_text(u, mean_sigma_R_minus(p))
+      << ", <sigma_R^+> = " << tension_text(u, mean_sigma_R_plus(p, t.r0)) << "  (Eq. ss_st_red, S >> 1)\n";
   out << "C_*^- = " << to_text(C_star_minus(p)) << ", C_*^+ = " << to_text(C_star_plus(p, t.r0))
       << " (printed A^+: " << to_text(C_star_plus_printed(p, t.r0)) << ")\n";
+  // C = c gamma at this cell: each C threshold as the shear rate at which C reaches it (as the JSON's *_shear_rate).
+  const double per_C = s.physical ? s.physical->shear_rate / p.C : kNotGiven;
+  auto as_rate = [&](const Quantity& q) { return q.valid() ? format_value(q.value * per_C) + " 1/s" : to_text(q); };
+  if (s.physical)
+    out << "  as shear rates of this cell: C_*^- at " << as_rate(C_star_minus(p)) << ", C_*^+ at "
+        << as_rate(C_star_plus(p, t.r0)) << "\n";
   out << "lambda_*^- = " << to_text(t.lambda_star_minus) << "\n";
   if (t.has_exact_C_star) {
     out << "Exact out-of-plane C_* (sigma_R^eq = sigma_*, C in [e^-5.5, e^2]):";
-    for (double c : t.exact_C_star) out << " " << c;
+    for (double c : t.exact_C_star) out << " " << c << (s.physical ? " (" + format_value(c * per_C) + " 1/s)" : "");
     out << (t.exact_C_star.empty() ? " none\n" : "\n");
   }
   const OutOfPlaneEquilibrium& eq = crit.equilibrium;
-  out << "\nExact out-of-plane equilibrium (every S): r = " << eq.r << ", Psi = " << eq.Psi
-      << ", sigma_R = " << eq.sigma_R << ", ";
+  out << "\nExact out-of-plane equilibrium (every S): r = " << eq.r << ", Psi = " << degrees_text(eq.Psi)
+      << ", sigma_R = " << u.tension(eq.sigma_R) << ", ";
+  auto eigenvalue = [&](const std::complex<double>& e) {
+    TextStream o;
+    o << std::setprecision(6) << e;
+    if (s.physical) o << " (" << e * s.physical->shear_rate << " 1/s)";
+    return o.str();
+  };
   if (eq.stability_known())
-    out << (eq.stable ? "stable" : "unstable") << " (eigenvalues " << eq.eigenvalues[0] << ", " << eq.eigenvalues[1]
-        << ")\n";
+    out << (eq.stable ? "stable" : "unstable") << " (eigenvalues " << eigenvalue(eq.eigenvalues[0]) << ", "
+        << eigenvalue(eq.eigenvalues[1]) << ")\n";
   else
     out << "stability n/a (eigenvalues " << nonfinite_reason(p) << ")\n";
-  out << "  S >> 1 (Eq. ss_red): r = " << eq.r_large_S << ", Psi = " << eq.Psi_large_S
-      << ", <sigma_R> = " << to_text(eq.sigma_R_large_S) << "\n";
+  out << "  S >> 1 (Eq. ss_red): r = " << eq.r_large_S << ", Psi = " << degrees_text(eq.Psi_large_S)
+      << ", <sigma_R> = " << tension_text(u, eq.sigma_R_large_S) << "\n";
   out << "  unstable modes: exact " << mode_list(crit.unstable_exact) << "; S >> 1 " << mode_list(crit.unstable_large_S)
       << "\n";
   out << "\nReduced regime: " << to_string(pr.regime.regime) << " (" << pr.regime.reason << ")\n";
-  out << "Asymptotic predictor: <sigma_R> = " << to_text(pr.sigma_R_asymptotic) << " from " << pr.asymptotic_source
-      << "\n  unstable modes " << mode_list(pr.asymptotic.unstable) << ", l_Delta = " << pr.asymptotic.l_Delta << "\n";
-  out << "Finite-horizon predictor (T = " << pr.horizon.T << ", <sigma_R>_T = " << pr.horizon.mean_sigma_R
-      << "): unstable modes " << mode_list(pr.finite_horizon.unstable) << ", l_Delta = " << pr.finite_horizon.l_Delta
-      << "\n";
+  out << "Asymptotic predictor: <sigma_R> = " << tension_text(u, pr.sigma_R_asymptotic) << " from "
+      << pr.asymptotic_source << "\n  unstable modes " << mode_list(pr.asymptotic.unstable)
+      << ", l_Delta = " << pr.asymptotic.l_Delta << "\n";
+  out << "Finite-horizon predictor (T = " << u.time(pr.horizon.T)
+      << ", <sigma_R>_T = " << u.tension(pr.horizon.mean_sigma_R) << "): unstable modes "
+      << mode_list(pr.finite_horizon.unstable) << ", l_Delta = " << pr.finite_horizon.l_Delta << "\n";
   return out.str();
 }
 

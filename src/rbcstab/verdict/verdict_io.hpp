@@ -7,6 +7,7 @@
 
 #include "rbcstab/analysis/analysis_io.hpp"
 #include "rbcstab/analysis/steady_states.hpp"
+#include "rbcstab/io/experiments.hpp"
 #include "rbcstab/io/scene_file.hpp"
 #include "rbcstab/verdict/physical_map.hpp"
 #include "rbcstab/verdict/predict.hpp"
@@ -18,13 +19,17 @@ inline constexpr const char* kGlossary = "docs/glossary.md";
 
 nlohmann::json to_json(const ModePrediction& m);
 // Each orientation's first unstable shear rate: orientation, beta, found, alpha, evaluations, then shear_rate
-// [1/s], bracket, B, C when found (else reason), and l, shape when a mode is named.
+// [1/s], bracket, B, C when found (else reason and side: below/above the range), and l, shape when a mode is named.
 nlohmann::json to_json(const std::vector<ShearRateThreshold>& thresholds);
 // The physical phase diagram: the cell (SI), the spreads, per viscosity [Pa s] lambda, Lambda and each boundary
 // (tumbling_to_swinging, onset_out_of_plane, onset_in_plane: found, shear_rate [1/s], bracket, l, or reason and
 // side -- below/above the searched shear_rate_range; and its band: cells, found, lo, hi, lo_from, hi_from), then the
 // assumption checks.
 nlohmann::json to_json(const PhysicalMap& map);
+// The same with the published observations drawn over it: "experiments" (io/experiments.hpp's rows) and
+// "experiments_file" (where they were read; "" for none). What the report's and Python's drawing read.
+nlohmann::json to_json(const PhysicalMap& map, const std::vector<PublishedObservation>& observed,
+                       const std::string& experiments_file);
 
 // The summary of a scene file's run r and its prediction (predict(scene, transient, &r)): the keys of
 // to_json(SimulationResult) (without the trajectory), the truncation, then the analysis.

@@ -129,6 +129,11 @@ Page make_page(const nlohmann::json& m) {
     for (const auto& f : m.at("panel").at("facts"))
       facts.rows.push_back({f.at(0).get<std::string>(), f.at(1).get<std::string>()});
     p.tables.push_back({"Panel", facts});
+    for (const auto& t : m.at("panel").value("tables", nlohmann::json::array())) {
+      Table more{t.at("header").get<std::vector<std::string>>(), {}};
+      for (const auto& r : t.at("rows")) more.rows.push_back(r.get<std::vector<std::string>>());
+      p.tables.push_back({t.at("title").get<std::string>(), more});
+    }
     for (const auto& w : m.at("warnings")) p.warnings.push_back(w.get<std::string>());
     return p;
   }

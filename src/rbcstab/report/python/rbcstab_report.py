@@ -2,7 +2,7 @@
 """Figures of an rbcstab report, drawn with matplotlib only (Agg backend, Debian python3-matplotlib).
 
     rbcstab_report.py report DIR      draw every figure listed in DIR/report.json, write DIR/figures.json
-    rbcstab_report.py selftest DIR    draw the hook figures (phase diagram, Delta2 theory, bifurcation)
+    rbcstab_report.py selftest DIR    draw the hook figures (phase diagram, Delta2 theory, bifurcation, physical map)
                                       from small synthetic data into DIR
     rbcstab_report.py plot SPEC.json OUT.png [WIDTH HEIGHT]
                                       draw the bifurcation diagram a plot spec describes (`rbcstab plot`)
@@ -444,6 +444,17 @@ def plot_bifurcation(spec_json, out, size_px=(900, 675), svg=False):
     return save(fig, out, size_px, svg, hover=(ax, *bifurcation_points(spec)))
 
 
+def plot_physical_map(map_json, out, size_px=(900, 700), title=None, svg=False):
+    """The physical phase diagram of a map JSON (the [physical_map] panel's physical_map.json, or
+    PhysicalMap.to_dict()): physical_draw.draw_physical_map on a new figure, the boundaries' points on hover."""
+    from physical_draw import draw_physical_map, drawn_points  # beside this script, whose folder is on sys.path
+
+    fig, ax = new_figure(size_px)
+    data = read_json(map_json)
+    draw_physical_map(ax, data, title=title)
+    return save(fig, out, size_px, svg, hover=(ax, *drawn_points(data)))
+
+
 def bifurcation_points(spec):
     """The drawn vertices of a PlotSpec (x, y, branch, stability) and its marked points (x, y, branch, text)."""
     columns = [spec["x"]["name"], spec["y"]["name"], "branch", "point"]
@@ -493,6 +504,8 @@ def draw_report(folder):
                                                  svg=True))
         elif kind == "bifurcation":
             drawn.append(plot_bifurcation(path(data[0]), out, size, svg=True))
+        elif kind == "physical_map":
+            drawn.append(plot_physical_map(path(data[0]), out, size, title=f.get("title"), svg=True))
         else:
             raise ValueError(f"unknown figure kind {kind!r}")
     with open(path("figures.json"), "w") as f:
@@ -551,7 +564,19 @@ def selftest(folder):
                    "series": [{"name": "BP curve (modal model)", "kind": "curve",
                                "segments": [seg("curve", "solid", xs, [0.5 + x * x for x in xs])]}],
                    "points": [], "styles": []}, f)
-    out = [plot_bifurcation(p("curve_plot.json"), p("fig_bifurcation_continue.png")),
+    with open(p("physical_map.json"), "w") as f:  # two viscosities: a boundary found, then one below the range
+        found = {"found": True, "shear_rate": 30.0, "bracket": [29.9, 30.0],
+                 "band": {"cells": 3, "found": 3, "lo": 20.0, "hi": 45.0}}
+        below = {"found": False, "reason": "synthetic", "side": "below", "band": {"cells": 3, "found": 0}}
+        json.dump({"shear_rate_range": [0.1, 1e5], "experiments": [
+            {"source": "S", "observation": "swinging", "kind": "stress", "viscosity": None, "shear_rate_lo": None,
+             "shear_rate_hi": None, "stress": 0.1, "precision": "order"},
+            {"source": "P", "observation": "trilobes", "kind": "point", "viscosity": 1e-3, "shear_rate_lo": 1000,
+             "shear_rate_hi": 1000, "stress": None, "precision": "order"}],
+            "columns": [{"viscosity": v, "tumbling_to_swinging": found, "onset_out_of_plane": below,
+                         "onset_in_plane": below} for v in (1e-3, 5e-2)]}, f)
+    out = [plot_physical_map(p("physical_map.json"), p("fig_physical_map.png")),
+           plot_bifurcation(p("curve_plot.json"), p("fig_bifurcation_continue.png")),
            plot_phase_diagram(p("phase_diagram.csv"), p("fig_phase_diagram.png"), p("phase_diagram_overlay.json")),
            plot_delta2_comparison(p("delta2_comparison.csv"), p("fig_delta2_theory.png"), {"lambda": r"\lambda"}),
            plot_bifurcation(p("bifurcation_plot.json"), p("fig_bifurcation.png"))]
