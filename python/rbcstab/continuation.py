@@ -181,6 +181,7 @@ def continuation(scene, kind="equilibrium", parameter="lambda", min=None, max=No
                 options)
 
 
+@_with_keyword_docs
 def bifurcation_diagram(scene, depth=1, kind="equilibrium", parameter="lambda", min=None, max=None, *,
                         direction=None, step=None, max_step=None, max_points=None, relax_T=None, segments=None,
                         allow_unstable_start=False, label_every=None, min_step=None, newton_tol=None, max_newton=None,
@@ -188,11 +189,13 @@ def bifurcation_diagram(scene, depth=1, kind="equilibrium", parameter="lambda", 
                         stop_at=None, amplitude=None, duplicate_tol=None, max_branches=None, progress=False):
     """The whole bifurcation diagram to `depth` (``rbcstab continue --diagram DEPTH``; docs/continuation.md): the
     start branch as :func:`continuation` follows it (the same keywords), then at every located BP both halves of
-    the branch bifurcating there, recursively to `depth` (0: the start branch only), each with the start branch's
-    options. A branch reached twice is marked a duplicate, not followed again; a BP met again is not switched at
-    again; HB, PD and NS points are listed as not followed (switching not available). amplitude: the predictor
-    step off a BP (1e-3); duplicate_tol: two points are the same within it (1e-7, below amplitude / 10);
-    max_branches: at most this many branches (200). progress and Ctrl-C as :func:`continuation`.
+    the branch bifurcating there, recursively to `depth` (an integer in [0, 20]; 0: the start branch only), each
+    with the start branch's options. A branch reached twice is marked a duplicate, not followed again; a BP met
+    again is not switched at again; HB, PD and NS points are listed as not followed (switching not available).
+    amplitude: the predictor step off a BP, finite and > 0 (dimensionless, in the (state, parameter) space; default
+    1e-3); duplicate_tol: two points are the same within it, in (0, amplitude / 10] (dimensionless; default 1e-7);
+    max_branches: at most this many branches, an integer in [1, 10000] (default 200). progress and Ctrl-C as
+    :func:`continuation`.
 
     Returns a :class:`BifurcationDiagram`. Raises ValueError / TypeError for bad input, ContinuationError when the start
     fails; an incomplete diagram, a branch that ended early or a failed switch gives a ContinuationWarning."""
@@ -544,14 +547,19 @@ class BifurcationDiagram:
 
     @property
     def branches(self):
+        """Every branch of the diagram as a :class:`Branch`, in the order they were followed (the start branch first)."""
         return [Branch(self._d.branch(k)) for k in range(self._d.size())]
 
     @property
     def tree(self):
+        """Per branch: its number, parent branch and the parent's label it bifurcates at, depth, side, labels,
+        points, range, status and message (the JSON's "branches" without their data)."""
         return [{k: v for k, v in b.items() if k != "data"} for b in self._tree_json()["branches"]]
 
     @property
     def special_points(self):
+        """The diagram's special points (the JSON's "special_points": each with its branch, label, type and what the
+        diagram did at it)."""
         import copy
         return copy.deepcopy(self._tree_json()["special_points"])
 
