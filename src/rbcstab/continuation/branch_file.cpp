@@ -105,24 +105,24 @@ json spec_json(const BranchSpec& s) {
 }
 
 json special_point_json(const SpecialPoint& sp) {
-  json j = {{"type", to_string(sp.type)},
-            {"name", sp.name},
-            {"x", vector_json(sp.x)},
-            {"p", number_or_null(sp.p)},
-            {"parameters", sp.parameters},
-            {"bracket", {number_or_null(sp.p_lo), number_or_null(sp.p_hi)}},
-            {"precision", number_or_null(sp.precision)},
-            {"status", to_string(sp.status)},
-            {"unstable_before", sp.unstable_before},
-            {"unstable_after", sp.unstable_after},
-            {"test_value", number_or_null(sp.test_value)},
-            {"after_index", sp.after_index},
-            {"eigenvalue", complex_json(sp.eigenvalue)},
-            {"mode_l", sp.mode_l ? json(*sp.mode_l) : json(nullptr)},
-            {"mode_m", sp.mode_m ? json(*sp.mode_m) : json(nullptr)}};
+  json out = {{"type", to_string(sp.type)},
+              {"name", sp.name},
+              {"x", vector_json(sp.x)},
+              {"p", number_or_null(sp.p)},
+              {"parameters", sp.parameters},
+              {"bracket", {number_or_null(sp.p_lo), number_or_null(sp.p_hi)}},
+              {"precision", number_or_null(sp.precision)},
+              {"status", to_string(sp.status)},
+              {"unstable_before", sp.unstable_before},
+              {"unstable_after", sp.unstable_after},
+              {"test_value", number_or_null(sp.test_value)},
+              {"after_index", sp.after_index},
+              {"eigenvalue", complex_json(sp.eigenvalue)},
+              {"mode_l", sp.mode_l ? json(*sp.mode_l) : json(nullptr)},
+              {"mode_m", sp.mode_m ? json(*sp.mode_m) : json(nullptr)}};
   // Only where computed: files written before normal forms existed read back to themselves.
-  if (sp.normal_form) j["normal_form"] = to_json(*sp.normal_form);
-  return j;
+  if (sp.normal_form) out["normal_form"] = to_json(*sp.normal_form);
+  return out;
 }
 
 // ---- reading: every access names the key path and the file ----
