@@ -67,8 +67,8 @@ std::string range_text(const Branch& b) {
 
 // save_diagram's file of branch k beside the tree: "<stem>.b<K>.json".
 std::string branch_path(const std::string& path, std::size_t k) {
-  const bool json = path.size() > 5 && path.substr(path.size() - 5) == ".json";
-  return (json ? path.substr(0, path.size() - 5) : path) + ".b" + std::to_string(k + 1) + ".json";
+  const bool has_suffix = path.size() > 5 && path.substr(path.size() - 5) == ".json";
+  return (has_suffix ? path.substr(0, path.size() - 5) : path) + ".b" + std::to_string(k + 1) + ".json";
 }
 
 }  // namespace
