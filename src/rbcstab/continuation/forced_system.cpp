@@ -49,7 +49,6 @@ ReducedForcedSystem::ReducedForcedSystem(const Scene& scene, ContinuationParamet
 const ReducedModel& ReducedForcedSystem::model(double p) const {
   // An integration asks for the same p at every stage: the last lookup first (the map search was 5 % of a
   // shooting's time). std::map's nodes stay put until clear(), which also resets last_.
-  if (last_ && last_->first == p) return last_->second;
   auto it = cache_.find(p);
   if (it == cache_.end()) {
     if (cache_.size() >= 8) {  // no reference is held across calls (see parameter_derivative)
@@ -79,7 +78,6 @@ void ReducedForcedSystem::jacobian(double t, std::span<const double> x, double p
 }
 
 ReducedForcedSystem::Slopes ReducedForcedSystem::coefficient_slopes(double p) const {
-  if (last_slopes_ && last_slopes_->first == p) return last_slopes_->second;
   auto it = slopes_.find(p);
   if (it != slopes_.end()) {
     last_slopes_ = &*it;
