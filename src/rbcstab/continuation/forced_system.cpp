@@ -47,8 +47,6 @@ ReducedForcedSystem::ReducedForcedSystem(const Scene& scene, ContinuationParamet
 }
 
 const ReducedModel& ReducedForcedSystem::model(double p) const {
-  // An integration asks for the same p at every stage: the last lookup first (the map search was 5 % of a
-  // shooting's time). std::map's nodes stay put until clear(), which also resets last_.
   auto it = cache_.find(p);
   if (it == cache_.end()) {
     if (cache_.size() >= 8) {  // no reference is held across calls (see parameter_derivative)
