@@ -21,8 +21,13 @@ void BranchSwitchOptions::validate() const {
 
 bool correct_on_hyperplane(const ContinuationProblem& problem, const Eigen::VectorXd& X_base, const Eigen::VectorXd& d,
                            double h, double tol, int max_newton, Eigen::VectorXd& X) {
-  const Eigen::Index n = problem.dimension(), N = n + 1;
   X = X_base + h * d;
+  return newton_on_hyperplane(problem, X_base, d, h, tol, max_newton, X);
+}
+
+bool newton_on_hyperplane(const ContinuationProblem& problem, const Eigen::VectorXd& X_base, const Eigen::VectorXd& d,
+                          double h, double tol, int max_newton, Eigen::VectorXd& X) {
+  const Eigen::Index n = problem.dimension(), N = n + 1;
   Eigen::MatrixXd J, A(N, N);
   Eigen::VectorXd F(n), Fp(n), R(N);
   for (int it = 0; it < max_newton; ++it) {

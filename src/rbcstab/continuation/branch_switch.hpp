@@ -33,8 +33,12 @@ struct BranchSwitchResult {
   Branch branch;                            // the bifurcating branch, starting next to the BP
 };
 
-// Newton on [F(X); d.(X - X_base) - h] (X = (x, p)) from the predictor X_base + h d, to max|dX| <= tol (1 + |X|):
-// the first point of a branch that leaves X_base along d (BP, HB and PD switching). False: no convergence.
+// Newton on [F(X); d.(X - X_base) - h] (X = (x, p)) from X as given, to max|dX| <= tol (1 + |X|): the point of
+// the branch on the hyperplane at distance h from X_base along d. False: no convergence (X is then the last iterate).
+bool newton_on_hyperplane(const ContinuationProblem& problem, const Eigen::VectorXd& X_base, const Eigen::VectorXd& d,
+                          double h, double tol, int max_newton, Eigen::VectorXd& X);
+// newton_on_hyperplane from the predictor X_base + h d: the first point of a branch that leaves X_base along d
+// (BP, HB and PD switching).
 bool correct_on_hyperplane(const ContinuationProblem& problem, const Eigen::VectorXd& X_base, const Eigen::VectorXd& d,
                            double h, double tol, int max_newton, Eigen::VectorXd& X);
 

@@ -90,27 +90,9 @@ bool lies_on(const ContinuationProblem& problem, const Branch& b, const Eigen::V
   // Nearer, the branch is followed from its point A along the chord to the hyperplane through X normal to it
   // (which holds the foot), in steps that shrink by 4 towards it: near a BP close to X another branch crosses
   // within ~ the distance to the BP, so Newton from the chord's foot alone could land on either.
-  const Eigen::Index n = X.size() - 1;
   const Eigen::VectorXd t = u / length;
-  Eigen::VectorXd Y = A, F(n), Fp(n), R(n + 1);
-  Eigen::MatrixXd J, M(n + 1, n + 1);
-  const auto correct = [&](double at) {  // Newton on F = 0, t.(Y - A) = at
-    for (int it = 0; it < 30; ++it) {
-      const Eigen::VectorXd y = Y.head(n);
-      problem.residual(y, Y[n], F);
-      problem.jacobian(y, Y[n], J);
-      problem.parameter_derivative(y, Y[n], Fp);
-      M.topLeftCorner(n, n) = J;
-      M.topRightCorner(n, 1) = Fp;
-      M.bottomRows(1) = t.transpose();
-      R << F, t.dot(Y - A) - at;
-      const Eigen::VectorXd dY = M.partialPivLu().solve(-R);
-      if (!dY.allFinite()) return false;
-      Y += dY;
-      if (dY.lpNorm<Eigen::Infinity>() <= 1e-12 * (1 + Y.lpNorm<Eigen::Infinity>())) return true;
-    }
-    return false;
-  };
+  Eigen::VectorXd Y = A;
+  const auto correct = [&](double at) { return newton_on_hyperplane(problem, A, t, at, 1e-12, 30, Y); };
   const double last = 100 * tol * (1 + X.lpNorm<Eigen::Infinity>());
   double at = 0;
   for (double rest = along; rest > 0;) {

@@ -49,16 +49,12 @@ ReducedForcedSystem::ReducedForcedSystem(const Scene& scene, ContinuationParamet
 const ReducedModel& ReducedForcedSystem::model(double p) const {
   auto it = cache_.find(p);
   if (it == cache_.end()) {
-    if (cache_.size() >= 8) {  // no reference is held across calls (see parameter_derivative)
-      cache_.clear();
-      last_ = nullptr;
-    }
+    if (cache_.size() >= 8) cache_.clear();  // no reference is held across calls (see parameter_derivative)
     const Scene at = with_parameter(scene_, free_, p);  // throws InvalidArgument outside p's domain
     // beta turns the rest shape: its direction is rebuilt per value (cached with the model).
     it = cache_.try_emplace(p, at.parameters, free_ == ContinuationParameter::beta ? oriented_initial_state(at) : init_)
              .first;
   }
-  last_ = &*it;
   return it->second;
 }
 
@@ -77,10 +73,7 @@ void ReducedForcedSystem::jacobian(double t, std::span<const double> x, double p
 
 ReducedForcedSystem::Slopes ReducedForcedSystem::coefficient_slopes(double p) const {
   auto it = slopes_.find(p);
-  if (it != slopes_.end()) {
-    last_slopes_ = &*it;
-    return it->second;
-  }
+  if (it != slopes_.end()) return it->second;
   // d(1/Lambda)/dp and d kappa/dp by central differences of two scalar functions of the parameters
   // (constants during an integration, so their rounding does not disturb the error control).
   auto coefficients = [&](double q) {
@@ -94,10 +87,7 @@ ReducedForcedSystem::Slopes ReducedForcedSystem::coefficient_slopes(double p) co
     d.kappa = coefficients(p).second;
     const detail::RestDirection r = detail::rest_direction(p, false);
     d.dz0 = r.dz0, d.dw0 = r.dw0;
-    if (slopes_.size() >= 8) {
-      slopes_.clear();
-      last_slopes_ = nullptr;
-    }
+    if (slopes_.size() >= 8) slopes_.clear();
     slopes_.emplace(p, d);
     return d;
   }

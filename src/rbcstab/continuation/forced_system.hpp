@@ -42,9 +42,6 @@ class ForcedSystem {
 class ReducedForcedSystem final : public ForcedSystem {
  public:
   ReducedForcedSystem(const Scene& scene, ContinuationParameter free);
-  // A copy starts with empty caches (they hold pointers into their own maps).
-  ReducedForcedSystem(const ReducedForcedSystem& o) : scene_(o.scene_), free_(o.free_), init_(o.init_) {}
-  ReducedForcedSystem& operator=(const ReducedForcedSystem&) = delete;
   Eigen::Index dimension() const override { return 3; }
   void rhs(double t, std::span<const double> x, double p, std::span<double> f) const override;
   void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const override;
@@ -75,8 +72,6 @@ class ReducedForcedSystem final : public ForcedSystem {
   InitialState init_;
   mutable std::map<double, ReducedModel> cache_;
   mutable std::map<double, Slopes> slopes_;
-  mutable const std::pair<const double, ReducedModel>* last_ = nullptr;  // the last lookup's entry (or none)
-  mutable const std::pair<const double, Slopes>* last_slopes_ = nullptr;
 };
 
 }  // namespace rbcstab
