@@ -6,8 +6,8 @@
 #include "checks.hpp"
 #include "commands.hpp"
 #include "rbcstab/core/text.hpp"
-#include "rbcstab/io/files.hpp"
 #include "rbcstab/inverse/fit.hpp"
+#include "rbcstab/io/files.hpp"
 
 namespace rbcstab::cli {
 
@@ -46,8 +46,9 @@ std::string parameter_list() {
 
 Runner add_fit(CLI::App& app) {
   auto o = std::make_shared<FitCliOptions>();
-  app.add_option("--data", o->data, "observations CSV (docs/inverse.md: observable, shear_rate, viscosity, value, "
-                                    "uncertainty, unit[, regime, note])")
+  app.add_option("--data", o->data,
+                 "observations CSV (docs/inverse.md: observable, shear_rate, viscosity, value, "
+                 "uncertainty, unit[, regime, note])")
       ->required();
   app.add_option("--free", o->free, "comma list of the parameters to fit: " + parameter_list())->required();
   app.add_option("--fixed", o->fixed,
@@ -62,8 +63,9 @@ Runner add_fit(CLI::App& app) {
   return [o] { return run(*o); };
 }
 
-const RegisterCommand kRegisterFit{"fit", "Membrane properties (moduli, excess areas, viscosity ratio) from observed "
-                                          "motion, with 95 % intervals",
+const RegisterCommand kRegisterFit{"fit",
+                                   "Membrane properties (moduli, excess areas, viscosity ratio) from observed "
+                                   "motion, with 95 % intervals",
                                    add_fit, 97};
 }  // namespace
 

@@ -7,8 +7,8 @@
 namespace rbcstab::python {
 
 namespace {
-py::tuple fit_data(const std::string& data, const std::vector<std::string>& free, const std::string& fixed,
-                   int starts, int max_iterations, unsigned seed) {
+py::tuple fit_data(const std::string& data, const std::vector<std::string>& free, const std::string& fixed, int starts,
+                   int max_iterations, unsigned seed) {
   FitOptions o;
   o.starts = starts;
   o.max_iterations = max_iterations;

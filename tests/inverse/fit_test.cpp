@@ -21,11 +21,18 @@ CellModel start_of(const CellModel& truth) {
 
 TEST(Fit, NoiselessDataRecoverTheTruth) {
   const CellModel truth = synthetic_cell();
-  const ObservationData data = synthetic_data(truth, 0.0, 1);
+  ObservationData data = synthetic_data(truth, 0.0, 1);
+  // Two rows name the regime they were seen in: the right one and a wrong one (compared, not fitted).
+  data.rows[0].has_regime = data.rows[1].has_regime = true;
+  data.rows[0].regime = Regime::swinging;
+  data.rows[1].regime = Regime::tumbling;
   FitOptions o;
   o.starts = 1;
   const FitResult r = fit(data, {"mu", "lambda"}, start_of(truth), o);
   ASSERT_EQ(r.status, FitStatus::converged) << r.message;
+  EXPECT_TRUE(r.residuals[0].regime_agrees);
+  EXPECT_FALSE(r.residuals[1].regime_agrees);
+  EXPECT_NE(fit_text(r).find("(seen tumbling, predicted swinging)"), std::string::npos) << fit_text(r);
   EXPECT_NEAR(r.cell.shear_modulus / truth.shear_modulus, 1.0, 1e-6);
   EXPECT_NEAR(r.cell.lambda / truth.lambda, 1.0, 1e-6);
   EXPECT_LT(r.chi2, 1e-8);

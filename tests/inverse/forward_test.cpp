@@ -93,8 +93,7 @@ TEST(Forward, CentralDifferencesAgreeAtTwoSteps) {
   plus.shear_modulus *= std::exp(1e-4);
   const Linearisation p = linearise(data.rows, {}, plus, o, 1e-4);
   ASSERT_TRUE(p.ok);
-  for (std::size_t i = 0; i < a.J.size(); ++i)
-    EXPECT_NEAR((p.r[i] - a.r[i]) / 1e-4, a.J[i][0], 1e-3 * largest) << i;
+  for (std::size_t i = 0; i < a.J.size(); ++i) EXPECT_NEAR((p.r[i] - a.r[i]) / 1e-4, a.J[i][0], 1e-3 * largest) << i;
 }
 
 }  // namespace

@@ -219,8 +219,7 @@ std::string coordinate_name(const FitParameterInfo& i) { return i.log_scale ? "l
 void FitOptions::validate() const {
   require(starts >= 1 && starts <= 64, "starts", starts, "an integer in [1, 64]");
   require(start_spread > 0 && start_spread <= 10, "start_spread", start_spread, "in (0, 10]");
-  require(max_iterations >= 1 && max_iterations <= 10000, "max_iterations", max_iterations,
-          "an integer in [1, 10000]");
+  require(max_iterations >= 1 && max_iterations <= 10000, "max_iterations", max_iterations, "an integer in [1, 10000]");
   require(tol > 0 && tol <= 1e-2, "tol", tol, "in (0, 1e-2]");
   require(fd_step > 0 && fd_step <= 0.1, "fd_step", fd_step, "in (0, 0.1]");
   require(identifiability_ratio > 0 && identifiability_ratio < 1, "identifiability_ratio", identifiability_ratio,
@@ -246,8 +245,8 @@ Linearisation linearise(std::span<const ObservedRow> rows, std::span<const FitPa
     std::string why;
     if (!residuals_at(numeric_rows, cell_at(cell, info, xp), options.forward, plus, why) ||
         !residuals_at(numeric_rows, cell_at(cell, info, xm), options.forward, minus, why)) {
-      lin.reason = "the sensitivity to " + coordinate_name(info[j]) + " needs the model at +-" + format_value(step) +
-                   ": " + why;
+      lin.reason =
+          "the sensitivity to " + coordinate_name(info[j]) + " needs the model at +-" + format_value(step) + ": " + why;
       return lin;
     }
     for (std::size_t i = 0; i < lin.r.size(); ++i) lin.J[i][j] = (plus[i] - minus[i]) / (2 * step);
@@ -270,12 +269,14 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
   if (free.empty()) throw InvalidArgument("free", "no free parameter: name at least one (e.g. shear_modulus)");
   const bool has_lambda = std::find(free.begin(), free.end(), FitParameter::lambda) != free.end();
   if (has_lambda && !std::isnan(cell.inner_viscosity))
-    throw InvalidArgument("free", "lambda is free but inner_viscosity is given: lambda follows from it; free "
-                                  "inner_viscosity instead, or leave it out");
+    throw InvalidArgument("free",
+                          "lambda is free but inner_viscosity is given: lambda follows from it; free "
+                          "inner_viscosity instead, or leave it out");
   if (std::find(free.begin(), free.end(), FitParameter::inner_viscosity) != free.end() &&
       std::isnan(cell.inner_viscosity))
-    throw InvalidArgument("free", "inner_viscosity is free but has no start value: fix inner_viscosity=<value> "
-                                  "(e.g. 6mPa s) as its start");
+    throw InvalidArgument("free",
+                          "inner_viscosity is free but has no start value: fix inner_viscosity=<value> "
+                          "(e.g. 6mPa s) as its start");
   std::vector<ObservedRow> rows;
   for (const ObservedRow& o : data.rows)
     if (numeric(o)) rows.push_back(o);
@@ -306,8 +307,8 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
     if (s > 0)
       for (std::size_t j = 0; j < x0.size(); ++j) {
         // Linear coordinates (the excess areas) spread over a quarter of their range per unit of spread.
-        const double width = info[j].log_scale ? options.start_spread
-                                               : options.start_spread * 0.25 * (info[j].hi - info[j].lo);
+        const double width =
+            info[j].log_scale ? options.start_spread : options.start_spread * 0.25 * (info[j].hi - info[j].lo);
         const double margin = 1e-3 * std::min(1.0, hi[j] - lo[j]);
         st.start[j] = std::clamp(x0[j] + width * unit(rng), lo[j] + margin, hi[j] - margin);
       }
@@ -397,7 +398,8 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
     bool first = true;
     for (std::size_t j = 0; j < n; ++j)
       if (std::abs(V(j, k)) > 1e-3) {
-        s << (first ? " " : " + ") << format_value(std::round(V(j, k) * 1000) / 1000) << " " << coordinate_name(info[j]);
+        s << (first ? " " : " + ") << format_value(std::round(V(j, k) * 1000) / 1000) << " "
+          << coordinate_name(info[j]);
         first = false;
       }
     s << " changes no prediction (Fisher eigenvalue " << format_value(ev(k)) << ", largest " << format_value(largest)
@@ -408,8 +410,9 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
         s << ": no observable given depends on " << info[j].name;
         only_flat = true;
       }
-    if (!only_flat) s << ": only the combination orthogonal to it is measured; fix one of them or add an observable "
-                         "that separates them";
+    if (!only_flat)
+      s << ": only the combination orthogonal to it is measured; fix one of them or add an observable "
+           "that separates them";
     res.unidentifiable.push_back(s.str());
   }
   for (std::size_t j = 0; j < n; ++j) {
@@ -441,11 +444,10 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
     rr.reason = pred[i].reason;
     rr.predicted_regime = pred[i].regime;
     if (o.has_regime) rr.observed_regime = o.regime;
-    if (numeric(o)) {
-      rr.residual = (rr.predicted - rr.observed) / rr.uncertainty;
-    } else {
-      rr.regime_agrees = pred[i].ok() && pred[i].regime == o.regime;
-    }
+    if (numeric(o)) rr.residual = (rr.predicted - rr.observed) / rr.uncertainty;
+    // A regime row, or a numeric row that names the regime it was seen in (a transition row's regime is the
+    // swinging side of the transition).
+    if (o.has_regime) rr.regime_agrees = pred[i].regime == o.regime;
     res.residuals.push_back(rr);
   }
   return res;
@@ -496,7 +498,7 @@ nlohmann::json to_json(const FitResult& r) {
                         {"uncertainty", num(x.uncertainty)},
                         {"residual", num(x.residual)},
                         {"predicted_regime", to_string(x.predicted_regime)}};
-    if (x.observable == Observable::regime) {
+    if (x.observed_regime != Regime::undetermined) {
       j["observed_regime"] = to_string(x.observed_regime);
       j["regime_agrees"] = x.regime_agrees;
     }
@@ -550,6 +552,8 @@ std::string fit_text(const FitResult& r) {
       s << format_value(x.residual);
     else
       s << "n/a (" << x.reason << ")";
+    if (x.observable != Observable::regime && !x.regime_agrees)
+      s << "  (seen " << to_string(x.observed_regime) << ", predicted " << to_string(x.predicted_regime) << ")";
     s << "\n";
   }
   return s.str();

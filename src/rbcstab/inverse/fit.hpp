@@ -15,12 +15,12 @@
 namespace rbcstab {
 
 struct FitOptions {
-  int starts = 4;                // [1, 64]: the given start, then starts spread in the box (fixed seed)
-  double start_spread = 1.0;     // (0, 10]: half-width of the spread in the fitted coordinate (ln for moduli)
-  unsigned seed = 1;             // of the spread starts: a fit is deterministic
-  int max_iterations = 100;      // [1, 10000]: Ipopt iterations per start
-  double tol = 1e-8;             // (0, 1e-2]: Ipopt's tol (scaled KKT error of 1/2 chi^2)
-  double fd_step = 1e-4;         // (0, 0.1]: central-difference step in the fitted coordinate (docs/inverse.md)
+  int starts = 4;                       // [1, 64]: the given start, then starts spread in the box (fixed seed)
+  double start_spread = 1.0;            // (0, 10]: half-width of the spread in the fitted coordinate (ln for moduli)
+  unsigned seed = 1;                    // of the spread starts: a fit is deterministic
+  int max_iterations = 100;             // [1, 10000]: Ipopt iterations per start
+  double tol = 1e-8;                    // (0, 1e-2]: Ipopt's tol (scaled KKT error of 1/2 chi^2)
+  double fd_step = 1e-4;                // (0, 0.1]: central-difference step in the fitted coordinate (docs/inverse.md)
   double identifiability_ratio = 1e-8;  // (0, 1): a Fisher eigenvalue below ratio * largest is a flat direction
   ForwardOptions forward;
   void validate() const;  // throws InvalidArgument naming the field
@@ -45,8 +45,8 @@ struct FitStart {
 
 struct FitEstimate {
   FitParameterInfo parameter;
-  double value = kNotGiven;               // SI
-  double standard_error = kNotGiven;      // of the fitted coordinate (ln value for a log parameter)
+  double value = kNotGiven;                   // SI
+  double standard_error = kNotGiven;          // of the fitted coordinate (ln value for a log parameter)
   double lo95 = kNotGiven, hi95 = kNotGiven;  // SI: coordinate +- 1.96 se mapped back; NaN when not identifiable
   bool identifiable = true;
   bool at_bound = false;  // within 1e-6 (coordinate) of a bound: the interval assumes an interior optimum
@@ -58,7 +58,7 @@ struct RowResidual {
   double observed = kNotGiven, predicted = kNotGiven, uncertainty = kNotGiven;
   double residual = kNotGiven;  // (predicted - observed)/uncertainty
   Regime observed_regime = Regime::undetermined, predicted_regime = Regime::undetermined;
-  bool regime_agrees = true;  // a regime row: predicted == observed (not part of chi^2 in this slice)
+  bool regime_agrees = true;  // where the row names a regime: predicted == observed (not part of chi^2 yet)
   std::string reason;         // why no prediction
 };
 

@@ -20,17 +20,16 @@ namespace {
 struct FitKey {
   FitParameter id;
   const char* alias;
-  bool physical;  // a physical key (plausible_range) rather than a parameter-table row
-  SceneParameter row;
+  bool physical;       // a physical key (plausible_range) rather than a parameter-table row
+  SceneParameter row;  // the table row of a number (physical keys: the number they make, for reference only)
 };
-constexpr FitKey kFitKeys[] = {
-    {FitParameter::bending_modulus, "kappa", true, SceneParameter::B},
-    {FitParameter::shear_modulus, "mu", true, SceneParameter::C},
-    {FitParameter::radius, "", true, SceneParameter::B},
-    {FitParameter::inner_viscosity, "eta_in", true, SceneParameter::lambda},
-    {FitParameter::lambda, "", false, SceneParameter::lambda},
-    {FitParameter::Delta, "", false, SceneParameter::Delta},
-    {FitParameter::Delta0, "", false, SceneParameter::Delta0}};
+constexpr FitKey kFitKeys[] = {{FitParameter::bending_modulus, "kappa", true, SceneParameter::B},
+                               {FitParameter::shear_modulus, "mu", true, SceneParameter::C},
+                               {FitParameter::radius, "", true, SceneParameter::B},
+                               {FitParameter::inner_viscosity, "eta_in", true, SceneParameter::lambda},
+                               {FitParameter::lambda, "", false, SceneParameter::lambda},
+                               {FitParameter::Delta, "", false, SceneParameter::Delta},
+                               {FitParameter::Delta0, "", false, SceneParameter::Delta0}};
 
 const FitKey& key_of(FitParameter q) {
   for (const FitKey& k : kFitKeys)
@@ -68,23 +67,19 @@ double parabola_peak(const std::vector<double>& v, std::size_t k) {
 }  // namespace
 
 void CellModel::validate() const {
-  for (const char* key : {"bending_modulus", "shear_modulus", "radius"}) {
-    const double v = key == std::string("bending_modulus") ? bending_modulus
-                     : key == std::string("shear_modulus") ? shear_modulus
-                                                           : radius;
-    require(std::isfinite(v) && v > 0, key, v, "finite and > 0 (SI)");
+  for (const FitKey& k : kFitKeys) {
+    const double v = get_value(*this, k.id);
+    const std::string name = to_string(k.id);
+    if (!k.physical) continue;
+    if (k.id == FitParameter::inner_viscosity && std::isnan(v)) continue;  // not given: lambda is held instead
+    require(std::isfinite(v) && v > 0, name, v, "finite and > 0 [" + si_unit(plausible_range(name).unit) + "]");
   }
-  if (!std::isnan(inner_viscosity))
-    require(std::isfinite(inner_viscosity) && inner_viscosity > 0, "inner_viscosity", inner_viscosity,
-            "finite and > 0 [Pa s] (or not given: lambda fixed)");
   Parameters p;
   p.lambda = lambda;
   p.Delta = Delta;
   p.Delta0 = Delta0;
-  for (SceneParameter q : {SceneParameter::lambda, SceneParameter::Delta, SceneParameter::Delta0})
-    require_in(q, parameter_domain(q, p), get_value(*this, q == SceneParameter::lambda  ? FitParameter::lambda
-                                                           : q == SceneParameter::Delta ? FitParameter::Delta
-                                                                                        : FitParameter::Delta0));
+  for (const FitKey& k : kFitKeys)
+    if (!k.physical) require_in(k.row, parameter_domain(k.row, p), get_value(*this, k.id));
 }
 
 FitParameterInfo fit_parameter_info(FitParameter q, const CellModel& cell) {
@@ -347,8 +342,8 @@ Prediction predict_transition(const CellModel& cell, const ObservedRow& row, con
     hi = 2 * lo;
     if (hi > kShi / S1) {
       pr.reason = "no tumbling-to-swinging transition for S in [" + format_value(kSlo) + ", " + format_value(kShi) +
-                  "] at viscosity " + format_value(row.viscosity) + " Pa s (Lambda = " +
-                  format_value(condition_parameters(cell, 1.0, row.viscosity).Lambda()) + ")";
+                  "] at viscosity " + format_value(row.viscosity) +
+                  " Pa s (Lambda = " + format_value(condition_parameters(cell, 1.0, row.viscosity).Lambda()) + ")";
       return pr;
     }
     if (!tumbles(hi)) break;

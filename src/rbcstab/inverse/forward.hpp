@@ -37,11 +37,13 @@ struct CellModel {
 enum class FitParameter { bending_modulus, shear_modulus, radius, inner_viscosity, lambda, Delta, Delta0 };
 template <>
 struct EnumTable<FitParameter> {
-  static constexpr EnumName<FitParameter> entries[] = {
-      {FitParameter::bending_modulus, "bending_modulus"}, {FitParameter::shear_modulus, "shear_modulus"},
-      {FitParameter::radius, "radius"},                   {FitParameter::inner_viscosity, "inner_viscosity"},
-      {FitParameter::lambda, "lambda"},                   {FitParameter::Delta, "Delta"},
-      {FitParameter::Delta0, "Delta0"}};
+  static constexpr EnumName<FitParameter> entries[] = {{FitParameter::bending_modulus, "bending_modulus"},
+                                                       {FitParameter::shear_modulus, "shear_modulus"},
+                                                       {FitParameter::radius, "radius"},
+                                                       {FitParameter::inner_viscosity, "inner_viscosity"},
+                                                       {FitParameter::lambda, "lambda"},
+                                                       {FitParameter::Delta, "Delta"},
+                                                       {FitParameter::Delta0, "Delta0"}};
 };
 struct FitParameterInfo {
   FitParameter id;
@@ -70,8 +72,8 @@ struct ForwardOptions {
   // error jumps as an extremum moves between samples: 1024 keeps that below the finite-difference noise floor
   // (docs/inverse.md "Sensitivities"; 256 gives 1e-4 relative noise in J at a step of 1e-5).
   int samples_per_period = 1024;
-  int block_periods = 40;        // [2, 10000]: periods integrated between convergence checks
-  int max_blocks = 12;           // [1, 1000]: blocks before the orbit counts as not converged
+  int block_periods = 40;               // [2, 10000]: periods integrated between convergence checks
+  int max_blocks = 12;                  // [1, 1000]: blocks before the orbit counts as not converged
   double periodicity_tolerance = 1e-9;  // (0, 0.1]: max |Psi(t + 2 pi) - Psi(t)| [rad] of a converged orbit
   double rtol = 1e-11;                  // (0, 1e-3]: integrator tolerance (rk8pd; atol = rtol/10)
   double transition_rtol = 1e-7;        // (0, 0.1]: relative width of the bisected transition shear rate

@@ -53,8 +53,8 @@ std::string trim(const std::string& s) {
 // A condition column's header: its name and the factor to SI from the bracket ("viscosity[mPa s]").
 struct ConditionColumn {
   const char* name;
-  double default_factor;                     // without a bracket
-  std::vector<UnitFactor> bracket_units;     // accepted in the bracket
+  double default_factor;                  // without a bracket
+  std::vector<UnitFactor> bracket_units;  // accepted in the bracket
 };
 const ConditionColumn kConditions[] = {
     {"shear_rate", 1.0, {{"1/s", 1.0}}},
@@ -138,8 +138,10 @@ ObservationData parse_observation_data(const std::string& text, const std::strin
         column[name] = k;
       }
       for (const char* c : kRequired)
-        if (!column.count(c)) fail(c, "missing from the header (required: observable, shear_rate, viscosity, value, "
-                                      "uncertainty, unit; optional: regime, note)");
+        if (!column.count(c))
+          fail(c,
+               "missing from the header (required: observable, shear_rate, viscosity, value, "
+               "uncertainty, unit; optional: regime, note)");
       for (const ConditionColumn& c : kConditions)
         if (!factor.count(c.name)) factor[c.name] = c.default_factor;
       continue;
@@ -217,8 +219,9 @@ ObservationData parse_observation_data(const std::string& text, const std::strin
   }
   if (column.empty()) {
     number = std::max(number, 1);
-    fail("*", "the file is empty: no header row (required columns: observable, shear_rate, viscosity, value, "
-              "uncertainty, unit)");
+    fail("*",
+         "the file is empty: no header row (required columns: observable, shear_rate, viscosity, value, "
+         "uncertainty, unit)");
   }
   if (data.rows.empty()) fail("*", "no data rows after the header");
   return data;
