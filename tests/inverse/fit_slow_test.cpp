@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <iostream>
 
 #include "rbcstab/inverse/fit.hpp"
 #include "synthetic_cell.hpp"
@@ -26,6 +27,28 @@ TEST(FitSlow, NamesACombinationTheDataCannotSeparate) {
   // What the data do measure, mu sqrt(Delta0), is recovered wherever along the valley the fit ends.
   EXPECT_NEAR(r.cell.shear_modulus * std::sqrt(r.cell.Delta0) / (truth.shear_modulus * std::sqrt(truth.Delta0)), 1.0,
               1e-4);
+}
+
+// Coverage of the Fisher intervals over noise draws (a first look; many more draws are a later, longer study): of
+// 2 x 20 95 % intervals, at least 34 cover the truth (the chance of fewer than 34 at a true coverage of 95 % is
+// about 1 %), and none is at a bound.
+TEST(FitSlow, IntervalsCoverTheTruthOverNoiseDraws) {
+  const CellModel truth = synthetic_cell();
+  FitOptions o;
+  o.starts = 1;
+  int covered = 0, total = 0;
+  for (unsigned seed = 100; seed < 120; ++seed) {
+    const FitResult r = fit(synthetic_data(truth, 1.0, seed), {"mu", "lambda"}, truth, o);
+    ASSERT_EQ(r.status, FitStatus::converged) << "seed " << seed << ": " << r.message;
+    const double t[] = {truth.shear_modulus, truth.lambda};
+    for (std::size_t j = 0; j < 2; ++j) {
+      EXPECT_FALSE(r.estimates[j].at_bound);
+      covered += r.estimates[j].lo95 <= t[j] && t[j] <= r.estimates[j].hi95;
+      ++total;
+    }
+  }
+  EXPECT_GE(covered, 34) << covered << " of " << total;
+  std::cout << "coverage: " << covered << " of " << total << "\n";
 }
 
 }  // namespace
