@@ -1,5 +1,5 @@
-// A fit along a flat valley (seconds: Ipopt walks the valley to the barrier's centre): mu and Delta0 enter the
-// reduced motion only through S = C sqrt(15 pi/(2 Delta0)), i.e. through mu sqrt(Delta0), and kappa not at all.
+// The fits that take seconds to a minute of CPU: a flat valley (Ipopt walks it to the barrier's centre) and the
+// coverage of the intervals over noise draws.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -11,6 +11,8 @@
 namespace rbcstab {
 namespace {
 
+// mu and Delta0 enter the reduced motion only through S = C sqrt(15 pi/(2 Delta0)), i.e. through mu sqrt(Delta0),
+// and kappa not at all.
 TEST(FitSlow, NamesACombinationTheDataCannotSeparate) {
   const CellModel truth = synthetic_cell();
   const ObservationData data = synthetic_data(truth, 0.0, 1);
