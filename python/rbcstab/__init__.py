@@ -16,7 +16,8 @@ from .continuation import *  # noqa: F401,F403 (continuation, Branch, load_branc
 from .continuation import __all__ as _continuation_all  # rbcstab.continuation is the function, not the module
 from .sweep import *  # noqa: F401,F403 (diagram, trace)
 from .physical import *  # noqa: F401,F403 (physical_map)
-from . import model as _model, physical as _physical, sweep as _sweep
+from .inverse import *  # noqa: F401,F403 (fit, FitResult)
+from . import model as _model, physical as _physical, sweep as _sweep, inverse as _inverse
 
 
 def _scene_signature():
@@ -29,4 +30,5 @@ def _scene_signature():
 setattr(Scene, "__signature__", _scene_signature())  # inspect.signature reads it (not a declared attribute)
 
 __all__ = (["__version__", "Scene", "parameter_table", "scene_keys", "Report", "Simulation", "simulate", "thresholds", "post",
-            "summary"] + _model.__all__ + _continuation_all + _sweep.__all__ + _physical.__all__)
+            "summary"] + _model.__all__ + _continuation_all + _sweep.__all__ + _physical.__all__
+           + _inverse.__all__)

@@ -63,5 +63,6 @@ void bind_runs(py::module_& m);
 void bind_model(py::module_& m);
 void bind_continuation(py::module_& m);
 void bind_sweep(py::module_& m);
+void bind_inverse(py::module_& m);
 
 }  // namespace rbcstab::python

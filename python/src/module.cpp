@@ -32,4 +32,5 @@ PYBIND11_MODULE(_rbcstab, m) {
   rbcstab::python::bind_model(m);
   rbcstab::python::bind_continuation(m);
   rbcstab::python::bind_sweep(m);
+  rbcstab::python::bind_inverse(m);
 }

@@ -18,8 +18,10 @@ const std::vector<std::string> kColumns = {
     "source",    "reference", "observation", "kind", "viscosity_Pa_s", "shear_rate_lo_per_s", "shear_rate_hi_per_s",
     "stress_Pa", "precision", "basis"};
 
+}  // namespace
+
 // One CSV record: fields split at commas outside double quotes; "" inside quotes is a quote.
-std::vector<std::string> fields_of(const std::string& line) {
+std::vector<std::string> csv_fields(const std::string& line) {
   std::vector<std::string> out(1);
   bool quoted = false;
   for (std::size_t i = 0; i < line.size(); ++i) {
@@ -37,7 +39,6 @@ std::vector<std::string> fields_of(const std::string& line) {
   }
   return out;
 }
-}  // namespace
 
 std::vector<PublishedObservation> parse_observations(const std::string& text, const std::string& path) {
   std::istringstream in(text);
@@ -52,7 +53,7 @@ std::vector<PublishedObservation> parse_observations(const std::string& text, co
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
     if (line.empty() || line[0] == '#') continue;
-    const std::vector<std::string> f = fields_of(line);
+    const std::vector<std::string> f = csv_fields(line);
     if (column.empty()) {
       for (std::size_t k = 0; k < f.size(); ++k) column[f[k]] = k;
       for (const std::string& c : kColumns)

@@ -30,4 +30,8 @@ std::string shipped_observations(const std::string& executable_path);
 
 nlohmann::json to_json(const std::vector<PublishedObservation>& observations);
 
+// One CSV record: fields split at commas outside double quotes; "" inside quotes is a quote (every CSV data file
+// the library reads: this one and the fit's observations, inverse/observations.hpp).
+std::vector<std::string> csv_fields(const std::string& line);
+
 }  // namespace rbcstab

@@ -199,7 +199,7 @@ double parse_quantity(std::string_view text, PhysicalUnit unit, std::string_view
 
 PlausibleRange plausible_range(std::string_view key) {
   const Field& f = field_of(key);
-  return {f.unit, f.min, f.max};
+  return {f.unit, f.min, f.max, f.typical};
 }
 
 double& physical_value(PhysicalCell& cell, std::string_view key) { return cell.*field_of(key).value; }

@@ -45,6 +45,7 @@ double parse_quantity(std::string_view text, PhysicalUnit unit, std::string_view
 struct PlausibleRange {
   PhysicalUnit unit;
   double min, max;  // SI
+  double typical;   // SI: the red cell's typical value (a fit's default start, a suggested unit's centre)
 };
 PlausibleRange plausible_range(std::string_view key);  // throws InvalidArgument for an unknown key
 bool plausible_bare(std::string_view key, double value);

@@ -1,0 +1,72 @@
+// rbcstab fit: membrane properties from observed motion (inverse/fit.hpp, docs/inverse.md). Flags -> fit() -> the
+// result's text or JSON; --save writes the JSON.
+#include <iostream>
+#include <memory>
+
+#include "checks.hpp"
+#include "commands.hpp"
+#include "rbcstab/core/text.hpp"
+#include "rbcstab/inverse/fit.hpp"
+#include "rbcstab/io/files.hpp"
+
+namespace rbcstab::cli {
+
+namespace {
+struct FitCliOptions {
+  std::string data, free, fixed, save;
+  FitOptions fit;
+  bool json = false;
+};
+
+int run(const FitCliOptions& o) {
+  const ObservationData data = read_observation_data(o.data);
+  CellModel cell;
+  apply_assignments(cell, o.fixed, "fixed");
+  const FitResult r = fit(data, comma_items(o.free), cell, o.fit);
+  nlohmann::json doc = to_json(r);
+  doc["data"] = o.data;
+  if (!o.save.empty()) write_file_atomic(o.save, doc.dump(1) + "\n", "--save");
+  if (o.json)
+    std::cout << doc.dump(2) << "\n";
+  else
+    std::cout << fit_text(r);
+  return r.status == FitStatus::converged ? kOk : kRunFailed;
+}
+
+// "bending_modulus (kappa), shear_modulus (mu), ...": the fit's parameter names from its table.
+std::string parameter_list() {
+  std::string out;
+  const CellModel cell;
+  for (const auto& e : EnumTable<FitParameter>::entries) {
+    const FitParameterInfo i = fit_parameter_info(e.value, cell);
+    out += (out.empty() ? "" : ", ") + i.name + (i.alias.empty() ? "" : " (" + i.alias + ")");
+  }
+  return out;
+}
+
+Runner add_fit(CLI::App& app) {
+  auto o = std::make_shared<FitCliOptions>();
+  app.add_option("--data", o->data,
+                 "observations CSV (docs/inverse.md: observable, shear_rate, viscosity, value, "
+                 "uncertainty, unit[, regime, note])")
+      ->required();
+  app.add_option("--free", o->free, "comma list of the parameters to fit: " + parameter_list())->required();
+  app.add_option("--fixed", o->fixed,
+                 "comma list name=value: the fixed values and the free ones' start (moduli, radius and inner viscosity "
+                 "with units as the scene's [physical] keys: shear_modulus=6uN/m, radius=2.8um; the numbers bare: "
+                 "Delta=0.1); default: the red cell's typical values and the parameter table's defaults");
+  add_integer(app, "--starts", o->fit.starts, 1, 64, "Ipopt starts: the given one, then spread ones");
+  add_integer(app, "--max-iterations", o->fit.max_iterations, 1, 10000, "Ipopt iterations per start");
+  add_integer(app, "--seed", o->fit.seed, 0, 4294967295LL, "seed of the spread starts");
+  app.add_option("--save", o->save, "write the result as JSON to this file")->check(output_name());
+  app.add_flag("--json", o->json, "print one JSON object on stdout");
+  return [o] { return run(*o); };
+}
+
+const RegisterCommand kRegisterFit{"fit",
+                                   "Membrane properties (moduli, excess areas, viscosity ratio) from observed "
+                                   "motion, with 95 % intervals",
+                                   add_fit, 97};
+}  // namespace
+
+}  // namespace rbcstab::cli

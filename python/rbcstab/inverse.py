@@ -1,0 +1,61 @@
+"""The inverse problem: membrane properties from observed motion (rbcstab fit; docs/inverse.md)."""
+import numbers
+
+from . import _args, _rbcstab
+from .runs import Report
+
+__all__ = ["FitResult", "fit"]
+
+
+class FitResult(Report):
+    """A fit (rbcstab fit --json as a dict): ``status`` (converged, infeasible, maximum_iterations, failed),
+    ``estimates`` (per free parameter: value in SI units, 95 % interval ``lo95``/``hi95``, ``identifiable``),
+    ``chi2``, ``residuals`` per row, ``covariance`` and ``correlation`` of the fitted coordinates, and the
+    statements of what the data cannot identify (``unidentifiable``); the CLI's text in ``.text``."""
+
+    def estimate(self, name):
+        """The estimate of parameter `name` (a key such as "shear_modulus") as a dict; KeyError if not free."""
+        for e in self["estimates"]:
+            if e["name"] == name:
+                return e
+        raise KeyError(name)
+
+    def __repr__(self):
+        values = ", ".join(f"{e['name']}={e['value']:.4g}" for e in self["estimates"] if e["value"] is not None)
+        return f"<rbcstab fit: {self['status']}, chi2={self['chi2']}, {values}>"
+
+
+def _fixed_text(fixed):
+    """{name: value} as the CLI's --fixed list: numbers in SI units, strings as given (with their units)."""
+    if fixed is None:
+        return ""
+    if not isinstance(fixed, dict):
+        raise TypeError(f"fixed must be a dict of name: value, got {type(fixed).__name__} {fixed!r}")
+    items = []
+    for name, value in fixed.items():
+        _args.text("fixed key", name)
+        if isinstance(value, str):
+            items.append(f"{name}={value}")
+        elif isinstance(value, numbers.Real) and not isinstance(value, bool):
+            items.append(f"{name}={float(value)!r}")
+        else:
+            raise TypeError(f"fixed[{name!r}] must be a number or a string with a unit, got "
+                            f"{type(value).__name__} {value!r}")
+    return ",".join(items)
+
+
+def fit(data, free, fixed=None, starts=4, max_iterations=100, seed=1):
+    """Fits the free parameters to the observations in the CSV file `data` (rbcstab fit).
+
+    data: path of the observations CSV (docs/inverse.md "Data format"). free: names of the parameters to fit
+    (bending_modulus or kappa, shear_modulus or mu, radius, inner_viscosity or eta_in, lambda, Delta, Delta0).
+    fixed: dict of fixed values and starts, numbers in SI units (bending_modulus [J], shear_modulus [N/m],
+    radius [m], inner_viscosity in Pa s) or strings with a unit ("6uN/m"); lambda, Delta and Delta0 are
+    dimensionless. starts: Ipopt starts, an integer in [1, 64]. max_iterations: Ipopt iterations per start, an
+    integer in [1, 10000]. seed: seed of the spread starts, an integer in [0, 4294967295].
+    Returns a FitResult; ValueError for bad data (naming the file line and column) or a bad parameter."""
+    path = _args.text("data", data)
+    names = _args.names("free", free)
+    doc, text = _rbcstab.fit(path, names, _fixed_text(fixed), _args.integer("starts", starts),
+                             _args.integer("max_iterations", max_iterations), _args.integer("seed", seed))
+    return FitResult("fit", doc, text)

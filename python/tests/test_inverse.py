@@ -1,0 +1,58 @@
+"""rbcstab.fit against `rbcstab fit --json` on the same data, and bad data refused by both with the file line
+and column named."""
+import os
+import subprocess
+
+import pytest
+
+import rbcstab
+from conftest import _cli_path
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+EXAMPLE = os.path.join(ROOT, "data", "fit_synthetic.csv")
+
+
+@pytest.fixture
+def small(tmp_path):
+    """The example's 1 mPa s angles at 150 and 600 1/s: four rows, a fit of a fraction of a second."""
+    rows = [line for line in open(EXAMPLE) if line.startswith(("observable", "inclination_angle,150,1,",
+                                                                "swinging_amplitude,150,1,", "inclination_angle,600,1,",
+                                                                "swinging_amplitude,600,1,"))]
+    path = tmp_path / "obs.csv"
+    path.write_text("# four rows of data/fit_synthetic.csv\n" + "".join(rows))
+    return str(path)
+
+
+def test_fit_equals_the_cli(small, cli):
+    fixed = {"Delta": 0.1, "Delta0": 0.05}
+    r = rbcstab.fit(small, ["mu", "lambda"], fixed=fixed, starts=1)
+    assert isinstance(r, rbcstab.FitResult)
+    assert r["status"] == "converged"
+    assert r.to_dict() == cli("fit", "--data", small, "--free", "mu,lambda", "--fixed", "Delta=0.1,Delta0=0.05",
+                              "--starts", "1")
+    mu = r.estimate("shear_modulus")
+    assert mu["identifiable"] and mu["lo95"] < mu["value"] < mu["hi95"]
+    # The example was made at mu = 6 uN/m, lambda = 5 with 0.5 deg noise.
+    assert mu["lo95"] < 6e-6 < mu["hi95"]
+    assert "shear_modulus" in r.text and "95 % interval" in r.text
+
+
+def test_bad_data_names_line_and_column(tmp_path):
+    bad = tmp_path / "bad.csv"
+    bad.write_text("observable,shear_rate,viscosity,value,uncertainty,unit\ninclination_angle,100,1,10,-1,deg\n")
+    with pytest.raises(ValueError, match=r"bad.csv:2: column 'uncertainty'"):
+        rbcstab.fit(str(bad), ["mu"])
+    out = subprocess.run([_cli_path(), "fit", "--data", str(bad), "--free", "mu"], capture_output=True, text=True)
+    assert out.returncode == 2
+    assert "bad.csv:2: column 'uncertainty'" in out.stderr
+
+
+def test_wrong_types_are_type_errors(small):
+    with pytest.raises(TypeError):
+        rbcstab.fit(small, "mu")  # a string, not a list of names
+    with pytest.raises(TypeError):
+        rbcstab.fit(small, ["mu"], fixed={"Delta": [0.1]})
+    with pytest.raises(ValueError, match="starts"):
+        rbcstab.fit(small, ["mu"], starts=0)
+    with pytest.raises(ValueError, match="not a fit parameter"):
+        rbcstab.fit(small, ["stiffness"])

@@ -1,0 +1,562 @@
+#include "rbcstab/inverse/fit.hpp"
+
+#include <Eigen/Dense>
+#include <IpIpoptApplication.hpp>
+#include <IpSolveStatistics.hpp>
+#include <IpTNLP.hpp>
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <sstream>
+
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/core/text.hpp"
+
+namespace rbcstab {
+
+namespace {
+
+using Ipopt::Index;
+using Ipopt::Number;
+
+bool numeric(const ObservedRow& o) { return o.observable != Observable::regime; }
+
+// The cell at fitted coordinates x.
+CellModel cell_at(const CellModel& base, std::span<const FitParameterInfo> info, std::span<const double> x) {
+  CellModel c = base;
+  for (std::size_t j = 0; j < info.size(); ++j) set_value(c, info[j].id, info[j].log_scale ? std::exp(x[j]) : x[j]);
+  return c;
+}
+
+// The residuals of the numeric rows at a cell; ok false with the reason of the first row without a prediction.
+bool residuals_at(std::span<const ObservedRow> rows, const CellModel& cell, const ForwardOptions& options,
+                  std::vector<double>& r, std::string& reason) {
+  r.clear();
+  std::vector<Prediction> p;
+  try {
+    cell.validate();
+    p = predict_all(cell, rows, options);
+  } catch (const InvalidArgument& e) {
+    reason = e.what();
+    return false;
+  }
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if (!p[i].ok()) {
+      reason = "line " + std::to_string(rows[i].line) + ": " + p[i].reason;
+      return false;
+    }
+    r.push_back((p[i].value - rows[i].value) / rows[i].uncertainty);
+  }
+  return true;
+}
+
+std::vector<FitParameterInfo> infos_of(std::span<const FitParameter> free, const CellModel& cell) {
+  std::vector<FitParameterInfo> info;
+  for (FitParameter q : free) info.push_back(fit_parameter_info(q, cell));
+  return info;
+}
+
+std::vector<double> coordinates(const CellModel& cell, std::span<const FitParameterInfo> info) {
+  std::vector<double> x;
+  for (const FitParameterInfo& i : info) {
+    const double v = get_value(cell, i.id);
+    x.push_back(i.log_scale ? std::log(v) : v);
+  }
+  return x;
+}
+
+double coordinate_bound(const FitParameterInfo& i, double v) {
+  if (i.log_scale) return v > 0 ? std::log(v) : -1e19;
+  return std::isfinite(v) ? v : (v > 0 ? 1e19 : -1e19);
+}
+
+// 1/2 chi^2 over the numeric rows: Ipopt's NLP with the Gauss-Newton Hessian J^T J (exact up to the residuals'
+// curvature, which vanishes at a zero-residual fit and is what the Fisher information uses too).
+class LeastSquaresNlp final : public Ipopt::TNLP {
+ public:
+  LeastSquaresNlp(std::vector<ObservedRow> rows, std::vector<FitParameter> free, const CellModel& cell,
+                  const FitOptions& options, std::vector<double> start)
+      : rows_(std::move(rows)),
+        free_(std::move(free)),
+        cell_(cell),
+        options_(options),
+        info_(infos_of(free_, cell)),
+        start_(std::move(start)) {}
+
+  std::vector<double> solution;
+  Ipopt::SolverReturn solver_status = Ipopt::UNASSIGNED;
+  int evaluations = 0;
+
+  bool get_nlp_info(Index& n, Index& m, Index& nnz_jac_g, Index& nnz_h_lag, IndexStyleEnum& index_style) override {
+    n = static_cast<Index>(free_.size());
+    m = 0;
+    nnz_jac_g = 0;
+    nnz_h_lag = n * (n + 1) / 2;
+    index_style = TNLP::C_STYLE;
+    return true;
+  }
+  bool get_bounds_info(Index n, Number* x_l, Number* x_u, Index, Number*, Number*) override {
+    for (Index j = 0; j < n; ++j) {
+      x_l[j] = coordinate_bound(info_[j], info_[j].lo);
+      x_u[j] = coordinate_bound(info_[j], info_[j].hi);
+    }
+    return true;
+  }
+  bool get_starting_point(Index n, bool, Number* x, bool, Number*, Number*, Index, bool, Number*) override {
+    for (Index j = 0; j < n; ++j) x[j] = start_[j];
+    return true;
+  }
+  bool eval_f(Index n, const Number* x, bool, Number& f) override {
+    if (!update(n, x, false)) return false;
+    f = 0;
+    for (double v : lin_.r) f += 0.5 * v * v;
+    return true;
+  }
+  bool eval_grad_f(Index n, const Number* x, bool, Number* g) override {
+    if (!update(n, x, true)) return false;
+    for (Index j = 0; j < n; ++j) {
+      g[j] = 0;
+      for (std::size_t i = 0; i < lin_.r.size(); ++i) g[j] += lin_.J[i][j] * lin_.r[i];
+    }
+    return true;
+  }
+  bool eval_g(Index, const Number*, bool, Index, Number*) override { return true; }
+  bool eval_jac_g(Index, const Number*, bool, Index, Index, Index*, Index*, Number*) override { return true; }
+  bool eval_h(Index n, const Number* x, bool, Number obj_factor, Index, const Number*, bool, Index, Index* iRow,
+              Index* jCol, Number* values) override {
+    Index k = 0;
+    if (values == nullptr) {
+      for (Index i = 0; i < n; ++i)
+        for (Index j = 0; j <= i; ++j) {
+          iRow[k] = i;
+          jCol[k++] = j;
+        }
+      return true;
+    }
+    if (!update(n, x, true)) return false;
+    for (Index i = 0; i < n; ++i)
+      for (Index j = 0; j <= i; ++j) {
+        double s = 0;
+        for (std::size_t r = 0; r < lin_.r.size(); ++r) s += lin_.J[r][i] * lin_.J[r][j];
+        values[k++] = obj_factor * s;
+      }
+    return true;
+  }
+  void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*, const Number*, Index,
+                         const Number*, const Number*, Number, const Ipopt::IpoptData*,
+                         Ipopt::IpoptCalculatedQuantities*) override {
+    solver_status = status;
+    solution.assign(x, x + n);
+  }
+
+ private:
+  // The residuals (and the Jacobian when asked) at x, cached for the last x.
+  bool update(Index n, const Number* x, bool with_jacobian) {
+    const std::vector<double> at(x, x + n);
+    if (at == x_ && (have_J_ || !with_jacobian)) return lin_.ok;
+    x_ = at;
+    have_J_ = with_jacobian;
+    ++evaluations;
+    if (with_jacobian) {
+      lin_ = linearise(rows_, free_, cell_at(cell_, info_, at), options_, options_.fd_step);
+    } else {
+      lin_ = {};
+      lin_.ok = residuals_at(rows_, cell_at(cell_, info_, at), options_.forward, lin_.r, lin_.reason);
+    }
+    return lin_.ok;
+  }
+  std::vector<ObservedRow> rows_;
+  std::vector<FitParameter> free_;
+  CellModel cell_;
+  FitOptions options_;
+  std::vector<FitParameterInfo> info_;
+  std::vector<double> start_;
+  std::vector<double> x_;
+  bool have_J_ = false;
+  Linearisation lin_;
+};
+
+FitStatus status_of(Ipopt::ApplicationReturnStatus s) {
+  switch (s) {
+    case Ipopt::Solve_Succeeded:
+    case Ipopt::Solved_To_Acceptable_Level:
+      return FitStatus::converged;
+    case Ipopt::Infeasible_Problem_Detected:
+      return FitStatus::infeasible;
+    case Ipopt::Maximum_Iterations_Exceeded:
+    case Ipopt::Maximum_CpuTime_Exceeded:
+      return FitStatus::maximum_iterations;
+    default:
+      return FitStatus::failed;
+  }
+}
+
+std::string ipopt_name(Ipopt::ApplicationReturnStatus s) {
+  switch (s) {
+    case Ipopt::Solve_Succeeded:
+      return "Solve_Succeeded";
+    case Ipopt::Solved_To_Acceptable_Level:
+      return "Solved_To_Acceptable_Level";
+    case Ipopt::Infeasible_Problem_Detected:
+      return "Infeasible_Problem_Detected";
+    case Ipopt::Maximum_Iterations_Exceeded:
+      return "Maximum_Iterations_Exceeded";
+    case Ipopt::Restoration_Failed:
+      return "Restoration_Failed";
+    case Ipopt::Error_In_Step_Computation:
+      return "Error_In_Step_Computation";
+    case Ipopt::Invalid_Number_Detected:
+      return "Invalid_Number_Detected";
+    default:
+      return "Ipopt status " + std::to_string(static_cast<int>(s));
+  }
+}
+
+std::string coordinate_name(const FitParameterInfo& i) { return i.log_scale ? "ln " + i.name : i.name; }
+
+}  // namespace
+
+void FitOptions::validate() const {
+  require(starts >= 1 && starts <= 64, "starts", starts, "an integer in [1, 64]");
+  require(start_spread > 0 && start_spread <= 10, "start_spread", start_spread, "in (0, 10]");
+  require(max_iterations >= 1 && max_iterations <= 10000, "max_iterations", max_iterations, "an integer in [1, 10000]");
+  require(tol > 0 && tol <= 1e-2, "tol", tol, "in (0, 1e-2]");
+  require(fd_step > 0 && fd_step <= 0.1, "fd_step", fd_step, "in (0, 0.1]");
+  require(identifiability_ratio > 0 && identifiability_ratio < 1, "identifiability_ratio", identifiability_ratio,
+          "in (0, 1)");
+  forward.validate();
+}
+
+Linearisation linearise(std::span<const ObservedRow> rows, std::span<const FitParameter> free, const CellModel& cell,
+                        const FitOptions& options, double step) {
+  Linearisation lin;
+  std::vector<ObservedRow> numeric_rows;
+  for (const ObservedRow& o : rows)
+    if (numeric(o)) numeric_rows.push_back(o);
+  const std::vector<FitParameterInfo> info = infos_of(free, cell);
+  const std::vector<double> x = coordinates(cell, info);
+  if (!residuals_at(numeric_rows, cell, options.forward, lin.r, lin.reason)) return lin;
+  lin.J.assign(lin.r.size(), std::vector<double>(free.size(), 0.0));
+  std::vector<double> plus, minus;
+  for (std::size_t j = 0; j < free.size(); ++j) {
+    std::vector<double> xp = x, xm = x;
+    xp[j] += step;
+    xm[j] -= step;
+    std::string why;
+    if (!residuals_at(numeric_rows, cell_at(cell, info, xp), options.forward, plus, why) ||
+        !residuals_at(numeric_rows, cell_at(cell, info, xm), options.forward, minus, why)) {
+      lin.reason =
+          "the sensitivity to " + coordinate_name(info[j]) + " needs the model at +-" + format_value(step) + ": " + why;
+      return lin;
+    }
+    for (std::size_t i = 0; i < lin.r.size(); ++i) lin.J[i][j] = (plus[i] - minus[i]) / (2 * step);
+  }
+  lin.ok = true;
+  return lin;
+}
+
+FitResult fit(const ObservationData& data, const std::vector<std::string>& free_names, const CellModel& cell,
+              const FitOptions& options) {
+  options.validate();
+  cell.validate();
+  std::vector<FitParameter> free;
+  for (const std::string& name : free_names) {
+    const FitParameter q = fit_parameter_from_string(name, "free");
+    if (std::find(free.begin(), free.end(), q) != free.end())
+      throw InvalidArgument("free", "free = '" + name + "' is named twice");
+    free.push_back(q);
+  }
+  if (free.empty()) throw InvalidArgument("free", "no free parameter: name at least one (e.g. shear_modulus)");
+  const bool has_lambda = std::find(free.begin(), free.end(), FitParameter::lambda) != free.end();
+  if (has_lambda && !std::isnan(cell.inner_viscosity))
+    throw InvalidArgument("free",
+                          "lambda is free but inner_viscosity is given: lambda follows from it; free "
+                          "inner_viscosity instead, or leave it out");
+  if (std::find(free.begin(), free.end(), FitParameter::inner_viscosity) != free.end() &&
+      std::isnan(cell.inner_viscosity))
+    throw InvalidArgument("free",
+                          "inner_viscosity is free but has no start value: fix inner_viscosity=<value> "
+                          "(e.g. 6mPa s) as its start");
+  std::vector<ObservedRow> rows;
+  for (const ObservedRow& o : data.rows)
+    if (numeric(o)) rows.push_back(o);
+  if (rows.empty()) throw InvalidArgument("data", data.path + ": no numeric observations (regime rows alone)");
+
+  const std::vector<FitParameterInfo> info = infos_of(free, cell);
+  std::vector<double> x0 = coordinates(cell, info);
+  std::vector<double> lo, hi;
+  for (std::size_t j = 0; j < info.size(); ++j) {
+    lo.push_back(coordinate_bound(info[j], info[j].lo));
+    hi.push_back(coordinate_bound(info[j], info[j].hi));
+    if (!(x0[j] >= lo[j] && x0[j] <= hi[j]))
+      throw InvalidArgument(info[j].name, info[j].name + " = " + format_value(get_value(cell, info[j].id)) +
+                                              " (the start) is outside the fit's bounds [" + format_value(info[j].lo) +
+                                              ", " + format_value(info[j].hi) + "]");
+  }
+  FitResult res;
+  res.cell = cell;
+  res.rows = static_cast<int>(rows.size());
+  res.dof = res.rows - static_cast<int>(free.size());
+
+  std::mt19937_64 rng(options.seed);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  int best = -1;
+  for (int s = 0; s < options.starts; ++s) {
+    FitStart st;
+    st.start = x0;
+    if (s > 0)
+      for (std::size_t j = 0; j < x0.size(); ++j) {
+        // Linear coordinates (the excess areas) spread over a quarter of their range per unit of spread.
+        const double width =
+            info[j].log_scale ? options.start_spread : options.start_spread * 0.25 * (info[j].hi - info[j].lo);
+        const double margin = 1e-3 * std::min(1.0, hi[j] - lo[j]);
+        st.start[j] = std::clamp(x0[j] + width * unit(rng), lo[j] + margin, hi[j] - margin);
+      }
+    Ipopt::SmartPtr<LeastSquaresNlp> nlp = new LeastSquaresNlp(rows, free, cell, options, st.start);
+    Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
+    app->Options()->SetNumericValue("tol", options.tol);
+    app->Options()->SetIntegerValue("max_iter", options.max_iterations);
+    app->Options()->SetIntegerValue("print_level", 0);
+    app->Options()->SetStringValue("sb", "yes");  // no banner: only apps/ print
+    if (app->Initialize() != Ipopt::Solve_Succeeded) {
+      st.ipopt_status = "Ipopt could not be initialised";
+      res.starts.push_back(st);
+      continue;
+    }
+    const Ipopt::ApplicationReturnStatus rs = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(GetRawPtr(nlp)));
+    res.evaluations += nlp->evaluations;
+    st.status = status_of(rs);
+    st.ipopt_status = ipopt_name(rs);
+    if (Ipopt::IsValid(app->Statistics())) st.iterations = app->Statistics()->IterationCount();
+    st.end = nlp->solution.empty() ? st.start : nlp->solution;
+    std::vector<double> r;
+    std::string why;
+    if (!nlp->solution.empty() && residuals_at(rows, cell_at(cell, info, st.end), options.forward, r, why)) {
+      st.chi2 = 0;
+      for (double v : r) st.chi2 += v * v;
+    } else {
+      st.status = FitStatus::failed;
+      if (!why.empty()) st.ipopt_status += " (" + why + ")";
+    }
+    res.starts.push_back(st);
+    const int k = static_cast<int>(res.starts.size()) - 1;
+    auto rank = [](FitStatus f) { return f == FitStatus::converged ? 0 : f == FitStatus::maximum_iterations ? 1 : 2; };
+    if (std::isfinite(st.chi2) &&
+        (best < 0 || rank(st.status) < rank(res.starts[best].status) ||
+         (rank(st.status) == rank(res.starts[best].status) && st.chi2 < res.starts[best].chi2)))
+      best = k;
+  }
+  if (best < 0) {
+    res.status = FitStatus::failed;
+    res.message = "no start gave a fit:";
+    for (const FitStart& st : res.starts) res.message += " [" + st.ipopt_status + "]";
+    return res;
+  }
+  const FitStart& b = res.starts[best];
+  res.status = b.status;
+  res.chi2 = b.chi2;
+  res.cell = cell_at(cell, info, b.end);
+  if (res.status != FitStatus::converged)
+    res.message = "the best start did not converge (" + b.ipopt_status + "): the estimates are its last iterate";
+
+  // Fisher information J^T J at the estimate (uncertainties as given: no rescaling by chi^2/dof).
+  const Linearisation lin = linearise(rows, free, res.cell, options, options.fd_step);
+  const std::size_t n = free.size();
+  res.covariance.assign(n, std::vector<double>(n, kNotGiven));
+  res.correlation.assign(n, std::vector<double>(n, kNotGiven));
+  for (std::size_t j = 0; j < n; ++j) {
+    FitEstimate e;
+    e.parameter = info[j];
+    e.value = get_value(res.cell, info[j].id);
+    e.at_bound = b.end[j] - lo[j] < 1e-6 || hi[j] - b.end[j] < 1e-6;
+    res.estimates.push_back(e);
+  }
+  if (!lin.ok) {
+    res.message += (res.message.empty() ? "" : "; ") + std::string("no intervals: ") + lin.reason;
+    return res;
+  }
+  Eigen::MatrixXd J(lin.r.size(), n);
+  for (std::size_t i = 0; i < lin.r.size(); ++i)
+    for (std::size_t j = 0; j < n; ++j) J(i, j) = lin.J[i][j];
+  const Eigen::MatrixXd F = J.transpose() * J;
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eig(F);
+  const Eigen::VectorXd ev = eig.eigenvalues();
+  const Eigen::MatrixXd V = eig.eigenvectors();
+  const double largest = ev.maxCoeff();
+  Eigen::MatrixXd cov = Eigen::MatrixXd::Zero(n, n);
+  Eigen::VectorXd flat_weight = Eigen::VectorXd::Zero(n);
+  for (std::size_t k = 0; k < n; ++k) {
+    res.fisher_eigenvalues.push_back(ev(k));
+    const bool flat = !(largest > 0) || ev(k) <= options.identifiability_ratio * largest;
+    if (!flat) {
+      cov += V.col(k) * V.col(k).transpose() / ev(k);
+      continue;
+    }
+    flat_weight += V.col(k).cwiseAbs2();
+    std::ostringstream s;
+    s << "not identifiable from these data: the direction";
+    bool first = true;
+    for (std::size_t j = 0; j < n; ++j)
+      if (std::abs(V(j, k)) > 1e-3) {
+        s << (first ? " " : " + ") << format_value(std::round(V(j, k) * 1000) / 1000) << " "
+          << coordinate_name(info[j]);
+        first = false;
+      }
+    s << " changes no prediction (Fisher eigenvalue " << format_value(ev(k)) << ", largest " << format_value(largest)
+      << ")";
+    bool only_flat = false;
+    for (std::size_t j = 0; j < n; ++j)
+      if (std::abs(V(j, k)) > 0.999) {
+        s << ": no observable given depends on " << info[j].name;
+        only_flat = true;
+      }
+    if (!only_flat)
+      s << ": only the combination orthogonal to it is measured; fix one of them or add an observable "
+           "that separates them";
+    res.unidentifiable.push_back(s.str());
+  }
+  for (std::size_t j = 0; j < n; ++j) {
+    FitEstimate& e = res.estimates[j];
+    e.identifiable = flat_weight(j) < 1e-2;
+    for (std::size_t i = 0; i < n; ++i) res.covariance[j][i] = cov(j, i);
+    if (!e.identifiable) continue;
+    e.standard_error = std::sqrt(cov(j, j));
+    const double x = b.end[j], d = 1.959963984540054 * e.standard_error;
+    e.lo95 = info[j].log_scale ? std::exp(x - d) : x - d;
+    e.hi95 = info[j].log_scale ? std::exp(x + d) : x + d;
+  }
+  for (std::size_t j = 0; j < n; ++j)
+    for (std::size_t i = 0; i < n; ++i)
+      if (res.estimates[j].identifiable && res.estimates[i].identifiable)
+        res.correlation[j][i] = cov(j, i) / std::sqrt(cov(j, j) * cov(i, i));
+  for (const std::string& s : res.unidentifiable) res.message += (res.message.empty() ? "" : "; ") + s;
+
+  // Residuals per row, regime rows included (compared, not fitted).
+  const std::vector<Prediction> pred = predict_all(res.cell, data.rows, options.forward);
+  for (std::size_t i = 0; i < data.rows.size(); ++i) {
+    const ObservedRow& o = data.rows[i];
+    RowResidual rr;
+    rr.line = o.line;
+    rr.observable = o.observable;
+    rr.observed = o.value;
+    rr.uncertainty = o.uncertainty;
+    rr.predicted = pred[i].value;
+    rr.reason = pred[i].reason;
+    rr.predicted_regime = pred[i].regime;
+    if (o.has_regime) rr.observed_regime = o.regime;
+    if (numeric(o)) rr.residual = (rr.predicted - rr.observed) / rr.uncertainty;
+    // A regime row, or a numeric row that names the regime it was seen in (a transition row's regime is the
+    // swinging side of the transition).
+    if (o.has_regime) rr.regime_agrees = pred[i].regime == o.regime;
+    res.residuals.push_back(rr);
+  }
+  return res;
+}
+
+nlohmann::json to_json(const FitResult& r) {
+  auto num = [](double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); };
+  nlohmann::json out;
+  out["status"] = to_string(r.status);
+  out["message"] = r.message;
+  out["chi2"] = num(r.chi2);
+  out["rows"] = r.rows;
+  out["dof"] = r.dof;
+  out["evaluations"] = r.evaluations;
+  nlohmann::json est = nlohmann::json::array();
+  for (const FitEstimate& e : r.estimates)
+    est.push_back({{"name", e.parameter.name},
+                   {"symbol", e.parameter.unicode},
+                   {"unit", e.parameter.unit},
+                   {"scale", e.parameter.log_scale ? "log" : "linear"},
+                   {"value", num(e.value)},
+                   {"standard_error", num(e.standard_error)},
+                   {"lo95", num(e.lo95)},
+                   {"hi95", num(e.hi95)},
+                   {"identifiable", e.identifiable},
+                   {"at_bound", e.at_bound},
+                   {"bounds", {num(e.parameter.lo), num(e.parameter.hi)}}});
+  out["estimates"] = est;
+  auto matrix = [&](const std::vector<std::vector<double>>& m) {
+    nlohmann::json a = nlohmann::json::array();
+    for (const auto& row : m) {
+      nlohmann::json rj = nlohmann::json::array();
+      for (double v : row) rj.push_back(num(v));
+      a.push_back(rj);
+    }
+    return a;
+  };
+  out["covariance"] = matrix(r.covariance);
+  out["correlation"] = matrix(r.correlation);
+  out["fisher_eigenvalues"] = r.fisher_eigenvalues;
+  out["unidentifiable"] = r.unidentifiable;
+  nlohmann::json res = nlohmann::json::array();
+  for (const RowResidual& x : r.residuals) {
+    nlohmann::json j = {{"line", x.line},
+                        {"observable", to_string(x.observable)},
+                        {"observed", num(x.observed)},
+                        {"predicted", num(x.predicted)},
+                        {"uncertainty", num(x.uncertainty)},
+                        {"residual", num(x.residual)},
+                        {"predicted_regime", to_string(x.predicted_regime)}};
+    if (x.observed_regime != Regime::undetermined) {
+      j["observed_regime"] = to_string(x.observed_regime);
+      j["regime_agrees"] = x.regime_agrees;
+    }
+    if (!x.reason.empty()) j["reason"] = x.reason;
+    res.push_back(j);
+  }
+  out["residuals"] = res;
+  nlohmann::json starts = nlohmann::json::array();
+  for (const FitStart& s : r.starts)
+    starts.push_back({{"start", s.start},
+                      {"end", s.end},
+                      {"status", to_string(s.status)},
+                      {"ipopt", s.ipopt_status},
+                      {"chi2", num(s.chi2)},
+                      {"iterations", s.iterations}});
+  out["starts"] = starts;
+  return out;
+}
+
+std::string fit_text(const FitResult& r) {
+  std::ostringstream s;
+  s << "fit: " << to_string(r.status) << "   chi^2 = " << format_value(r.chi2) << " over " << r.rows << " rows ("
+    << r.dof << " degrees of freedom)\n";
+  if (!r.message.empty()) s << "  " << r.message << "\n";
+  s << "parameter            estimate      95 % interval\n";
+  for (const FitEstimate& e : r.estimates) {
+    s << "  " << e.parameter.name << std::string(e.parameter.name.size() < 18 ? 18 - e.parameter.name.size() : 1, ' ')
+      << format_value(e.value) << (e.parameter.unit.empty() ? "" : " " + e.parameter.unit) << "   ";
+    if (e.identifiable)
+      s << "[" << format_value(e.lo95) << ", " << format_value(e.hi95) << "]";
+    else
+      s << "not identifiable";
+    if (e.at_bound) s << "  (at a bound)";
+    s << "\n";
+  }
+  if (r.estimates.size() > 1) {
+    s << "correlation (fitted coordinates):\n";
+    for (const auto& row : r.correlation) {
+      s << " ";
+      for (double v : row) s << " " << (std::isfinite(v) ? format_value(std::round(v * 1000) / 1000) : "n/a");
+      s << "\n";
+    }
+  }
+  s << "residuals (predicted - observed)/uncertainty:\n";
+  for (const RowResidual& x : r.residuals) {
+    s << "  line " << x.line << " " << to_string(x.observable) << ": ";
+    if (x.observable == Observable::regime)
+      s << "observed " << to_string(x.observed_regime) << ", predicted " << to_string(x.predicted_regime)
+        << (x.regime_agrees ? "" : "  (disagrees)");
+    else if (std::isfinite(x.residual))
+      s << format_value(x.residual);
+    else
+      s << "n/a (" << x.reason << ")";
+    if (x.observable != Observable::regime && !x.regime_agrees)
+      s << "  (seen " << to_string(x.observed_regime) << ", predicted " << to_string(x.predicted_regime) << ")";
+    s << "\n";
+  }
+  return s.str();
+}
+
+}  // namespace rbcstab

@@ -1,0 +1,48 @@
+#pragma once
+// A synthetic cell and its observations, made by the forward model itself with noise from a fixed seed.
+#include <random>
+#include <string>
+
+#include "rbcstab/inverse/forward.hpp"
+
+namespace rbcstab {
+
+// Lambda = 0.6 (lambda = 5, Delta = 0.1): swinging exists; S = 1.6 at 150 1/s and 1 mPa s.
+inline CellModel synthetic_cell() {
+  CellModel c;
+  c.bending_modulus = 2e-19;
+  c.shear_modulus = 6e-6;
+  c.radius = 2.8e-6;
+  c.lambda = 5;
+  c.Delta = 0.1;
+  c.Delta0 = 0.05;
+  return c;
+}
+
+// Inclination angle and swinging amplitude at two shear rates and two viscosities, each with an uncertainty of
+// 0.5 degree; noise: `noise` times the uncertainty times a standard normal draw from `seed`.
+inline ObservationData synthetic_data(const CellModel& truth, double noise, unsigned seed) {
+  ObservationData d;
+  d.path = "synthetic";
+  std::mt19937_64 rng(seed);
+  std::normal_distribution<double> normal(0.0, 1.0);
+  const double sigma = 0.5 * 3.141592653589793 / 180;
+  int line = 2;
+  for (double viscosity : {1e-3, 2e-3})
+    for (double rate : {150.0, 600.0})
+      for (Observable o : {Observable::inclination_angle, Observable::swinging_amplitude}) {
+        ObservedRow row;
+        row.line = line++;
+        row.observable = o;
+        row.shear_rate = rate;
+        row.viscosity = viscosity;
+        row.unit = "rad";
+        row.uncertainty = sigma;
+        const Prediction p = predict(truth, row);
+        row.value = p.value + noise * sigma * normal(rng);
+        d.rows.push_back(row);
+      }
+  return d;
+}
+
+}  // namespace rbcstab
