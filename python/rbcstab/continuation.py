@@ -191,7 +191,9 @@ def bifurcation_diagram(scene, depth=1, kind="equilibrium", parameter="lambda", 
     start branch as :func:`continuation` follows it (the same keywords), then at every located BP both halves of
     the branch bifurcating there, recursively to `depth` (an integer in [0, 20]; 0: the start branch only), each
     with the start branch's options. A branch reached twice is marked a duplicate, not followed again; a BP met
-    again is not switched at again; HB, PD and NS points are listed as not followed (switching not available).
+    again is not switched at again; HB, PD and NS points are listed as not followed (switching not available), the
+    reason in their message (an HB of the model: a multiple Hopf point or a problem kind without an orbit switch; a
+    PD: the doubled orbit has no scene kind yet; NS: tori are not continued).
     amplitude: the predictor step off a BP, finite and > 0 (dimensionless, in the (state, parameter) space; default
     1e-3); duplicate_tol: two points are the same within it, in (0, amplitude / 10] (dimensionless; default 1e-7);
     max_branches: at most this many branches, an integer in [1, 10000] (default 200). progress and Ctrl-C as
