@@ -57,7 +57,7 @@ struct OrbitSwitchStart {
   // Newton starts); NaN without a usable law (no normal form, degenerate) and at a PD.
   double predicted_p = std::numeric_limits<double>::quiet_NaN();
   std::unique_ptr<ContinuationProblem> problem;  // refers to the system, which must outlive it; null unless found
-  Eigen::VectorXd x;  // the first point, of `problem`
+  Eigen::VectorXd x;                             // the first point, of `problem`
   double p = 0;
   Direction away = Direction::forward;  // the continuation direction that leaves the special point
 };

@@ -174,8 +174,7 @@ void identify_mode(const ContinuationProblem& problem, const std::vector<ShapeMo
   const double tol = 1e-6 * (1 + std::abs(target));
   const auto near_target = ((es.eigenvalues().array() - target).abs() <= tol).count();
   if (sp.type == SpecialPointType::HB && near_target > 1 && branch && sp.after_index + 1 < branch->points.size()) {
-    const BranchPoint& side =
-        branch->points[sp.after_index + (sp.unstable_after > sp.unstable_before ? 1 : 0)];
+    const BranchPoint& side = branch->points[sp.after_index + (sp.unstable_after > sp.unstable_before ? 1 : 0)];
     Eigen::MatrixXd Js;
     problem.jacobian(side.x, side.p, Js);
     if (!Js.allFinite()) return;
