@@ -100,6 +100,21 @@ TEST(BranchPointMode, HopfPairCoincidingWithANeutralPairNamesTheCrossingMode) {
   EXPECT_EQ(ms[4], (std::vector<int>{1, 2, 3, 4}));
 }
 
+// --switch-at at a PD label says why no doubled orbit starts there (no scene run of this model has a PD: the label
+// is the onset BP retyped, which reaches the same check).
+TEST(BranchPointMode, SwitchAtAPDLabelSaysWhy) {
+  SceneBranch run = onset_run();
+  const int label = run.branch.special_labels[3];
+  run.branch.branch.special_points[3].type = SpecialPointType::PD;
+  try {
+    switch_at_label(ContinuationRun(run), label);
+    FAIL() << "a PD label switched";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "switch_at");
+    EXPECT_NE(std::string(e.what()).find("is a PD: the doubled orbit of a scene's PD"), std::string::npos) << e.what();
+  }
+}
+
 // The mode survives the branch file; a file written before modes were reported (no mode keys) still loads,
 // its BPs without a mode.
 TEST(BranchPointMode, BranchFilesKeepTheModeAndOldFilesLoad) {
