@@ -314,6 +314,8 @@ TEST(HopfSwitch, MultipleHopfIsRefused) {
 // for p > 0 the doubled orbits x_p(t) +- sqrt(p) R(t/2) e_1 (period 4 pi, multipliers e^{-8 pi p}, e^{-4 pi}).
 class ForcedPitchFlip final : public ForcedSystem {
  public:
+  // cubic: the sign s of u1' = p u1 + s u1^3 (-1 above; +1 puts the doubled orbits at p < 0, unstable).
+  explicit ForcedPitchFlip(double cubic = -1) : s_(cubic) {}
   static Eigen::Vector2d xp(double t) { return {std::cos(t), std::sin(t) + 0.3 * std::sin(2 * t)}; }
   static Eigen::Vector2d xp_dot(double t) { return {-std::sin(t), std::cos(t) + 0.6 * std::cos(2 * t)}; }
   static Eigen::Matrix2d R(double t) {
@@ -326,14 +328,15 @@ class ForcedPitchFlip final : public ForcedSystem {
     const Eigen::Vector2d u = R(t).transpose() * (Eigen::Vector2d(x[0], x[1]) - xp(t));
     Eigen::Matrix2d half;
     half << 0, -0.5, 0.5, 0;
-    const Eigen::Vector2d F = xp_dot(t) + R(t) * (half * u + Eigen::Vector2d(p * u[0] - u[0] * u[0] * u[0], -u[1]));
+    const Eigen::Vector2d F =
+        xp_dot(t) + R(t) * (half * u + Eigen::Vector2d(p * u[0] + s_ * u[0] * u[0] * u[0], -u[1]));
     f[0] = F[0];
     f[1] = F[1];
   }
   void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const override {
     const Eigen::Vector2d u = R(t).transpose() * (Eigen::Vector2d(x[0], x[1]) - xp(t));
     Eigen::Matrix2d D;
-    D << p - 3 * u[0] * u[0], -0.5, 0.5, -1;
+    D << p + 3 * s_ * u[0] * u[0], -0.5, 0.5, -1;
     J = R(t) * D * R(t).transpose();
   }
   void parameter_derivative(double t, std::span<const double> x, double, std::span<double> fp) const override {
@@ -342,6 +345,9 @@ class ForcedPitchFlip final : public ForcedSystem {
     fp[0] = F[0];
     fp[1] = F[1];
   }
+
+ private:
+  double s_;
 };
 
 TEST(PeriodDoublingSwitch, DoubledOrbitInClosedForm) {
@@ -408,6 +414,33 @@ TEST(PeriodDoublingSwitch, DoubledOrbitInClosedForm) {
   EXPECT_NE(refused.message.find("not a simple period doubling"), std::string::npos) << refused.message;
   not_pd.type = SpecialPointType::LPC;
   EXPECT_NE(switch_at(pr, b, not_pd, so).message.find("no orbit switch at a LPC"), std::string::npos);
+}
+
+// The PD's flip coefficient against the closed form: the period map over 2 pi in x - x_p (= u at t = 0, R(pi) = -I)
+// is u1 -> -u1(2 pi) with u1' = s u1^3 at p = 0, u1(2 pi) = u1 + 2 pi s u1^3 + O(u1^5): c = -2 pi s. s = -1:
+// supercritical (the doubled orbit exists for p > 0, where x_p is unstable, and is stable); s = +1: subcritical.
+TEST(PeriodDoublingNormalForm, FlipCoefficientOfTheForcedSystem) {
+  for (const double s : {-1.0, 1.0}) {
+    const ForcedPitchFlip sys(s);
+    OrbitOptions oo;
+    oo.segments = 4;
+    const PeriodicOrbitProblem pr(sys, oo);
+    ContinuationOptions o;
+    o.p_min = -0.2;
+    o.p_max = 0.2;
+    o.max_step = 0.1;
+    const Branch b = continue_branch(pr, pr.shooting_guess(ForcedPitchFlip::xp(0), -0.2), -0.2, o);
+    const SpecialPoint* pd = find_special_point(b, SpecialPointType::PD);
+    ASSERT_NE(pd, nullptr) << b.message;
+    ASSERT_TRUE(pd->normal_form.has_value());
+    const NormalForm& nf = *pd->normal_form;
+    EXPECT_EQ(nf.kind, NormalFormKind::period_doubling);
+    EXPECT_NEAR(nf.coefficient("c"), -2 * kPi * s, 2e-3) << nf.note;
+    EXPECT_EQ(nf.criticality, s < 0 ? Criticality::supercritical : Criticality::subcritical);
+    EXPECT_NE(to_text(nf, "p").find(s < 0 ? "period_doubling, supercritical (c = 6.28" : "subcritical (c = -6.28"),
+              std::string::npos)
+        << to_text(nf, "p");
+  }
 }
 
 TEST(PeriodDoublingSwitch, RejectsBadPeriods) {
