@@ -267,10 +267,12 @@ Runner add_continue(CLI::App& app) {
                               "point of a type and mode, TYPE[:l=L][:m=M] (e.g. BP:l=3: the BP of mode l = 3)");
   o->o_switch_at = app.add_option("--switch-at", o->switch_at,
                                   "--restart: switch onto the other branch at the BP with this label (equilibrium, "
-                                  "modal, full, modal-orbit), an integer in [1, 1000000000] or BP:l=L[:m=M]");
+                                  "modal, full, modal-orbit), an integer in [1, 1000000000] or BP:l=L[:m=M]; at an "
+                                  "HB or PD label: exit 2 saying why no orbit branch starts there");
   app.add_option("--diagram", o->diagram,
                  "the whole bifurcation diagram to this depth, " + integer_range(0, 20) +
-                     ": every branch from every BP (both halves), recursively; HB, PD, NS listed, not followed; "
+                     ": every branch from every BP (both halves), recursively; HB, PD, NS listed with why they "
+                     "are not followed; "
                      "--save F: the tree F and its branch files F.b1.json, ...")
       ->check(integer_in(0, 20))
       ->excludes("--csv", "--curve", "--restart", "--switch-at-bp");

@@ -191,7 +191,9 @@ def bifurcation_diagram(scene, depth=1, kind="equilibrium", parameter="lambda", 
     start branch as :func:`continuation` follows it (the same keywords), then at every located BP both halves of
     the branch bifurcating there, recursively to `depth` (an integer in [0, 20]; 0: the start branch only), each
     with the start branch's options. A branch reached twice is marked a duplicate, not followed again; a BP met
-    again is not switched at again; HB, PD and NS points are listed as not followed (switching not available).
+    again is not switched at again; HB, PD and NS points are listed as not followed (switching not available), the
+    reason in their message (an HB of the model: a multiple Hopf point or a problem kind without an orbit switch; a
+    PD: the doubled orbit has no scene kind yet; NS: tori are not continued).
     amplitude: the predictor step off a BP, finite and > 0 (dimensionless, in the (state, parameter) space; default
     1e-3); duplicate_tol: two points are the same within it, in (0, amplitude / 10] (dimensionless; default 1e-7);
     max_branches: at most this many branches, an integer in [1, 10000] (default 200). progress and Ctrl-C as
@@ -327,9 +329,10 @@ class Branch(_args.Columns):
     def special_points(self):
         """The special points along the branch, as dicts of the CLI's JSON (type, name, label, the parameters,
         the measures, precision, status, unstable_before/after, stability, margin, margin_error, ...); an LP, BP or
-        HB of an equilibrium branch also has ``normal_form``: kind (fold, pitchfork, transcritical, hopf, ...),
-        criticality (supercritical, subcritical, degenerate, not_applicable, not_computed), coefficients by name
-        (l1 of a Hopf, p2 of a fold or pitchfork, ...), the amplitude law |x - x*| ~ amplitude |p - p*|^exponent on
+        HB of an equilibrium branch (and a PD of a forced orbit branch, where the model has one) also has
+        ``normal_form``: kind (fold, pitchfork, transcritical, hopf, period_doubling, ...), criticality
+        (supercritical, subcritical, degenerate, not_applicable, not_computed), coefficients by name (l1 of a Hopf,
+        c of a period doubling, p2 of a fold or pitchfork, ...), the amplitude law |x - x*| ~ amplitude |p - p*|^exponent on
         the side sign(p - p*) = side, and a note."""
         import copy
         return copy.deepcopy(self._part()["special_points"])

@@ -648,6 +648,20 @@ def test_bifurcation_diagram_equals_the_cli_and_pickles(cli, tmp_path):
         rbcstab.bifurcation_diagram(scene, depth=1.5, kind="modal", parameter="C")
 
 
+def test_bifurcation_diagram_says_why_the_onset_hbs_are_not_followed():
+    # The full model's l = 3 onset (L = 4): the BP's two halves are followed; its three HBs (m = 1, 2, 3 at the same
+    # C) are a multiple Hopf point, each listed as not followed with the pairs named, and not as a failure.
+    scene = rbcstab.Scene(lambda_=1, B=1, C=0.08, Delta=1, Delta0=0.01, L=4)
+    d = rbcstab.bifurcation_diagram(scene, depth=1, kind="full", parameter="C", min=0.03, max=0.08,
+                                    direction="backward")
+    assert len(d) == 3 and d.complete
+    hbs = [p for p in d.special_points if p["type"] == "HB"]
+    assert sorted(p["mode_m"] for p in hbs) == [1, 2, 3]
+    for p in hbs:
+        assert p["outcome"] == "not_available" and p["side"] == 0
+        assert "a multiple Hopf point" in p["detail"] and "0.5i" in p["detail"]
+
+
 def test_bifurcation_diagram_plot_labels_every_branch(tmp_path):
     import matplotlib
     matplotlib.use("Agg")

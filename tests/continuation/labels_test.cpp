@@ -3,6 +3,7 @@
 // and restarts from a label in its own (composite) parameter.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -69,6 +70,49 @@ TEST(BranchPointMode, ModalBPsNameTheCrossedThreshold) {
   const std::string text = to_text(ContinuationRun(onset_run()));
   EXPECT_NE(text.find("unstable 1 -> 0, mode l = 3 becoming stable)"), std::string::npos) << text;
   EXPECT_NE(text.find("unstable 1 -> 0 (l = 3)"), std::string::npos) << text;
+}
+
+// The full model at Delta0 = 0 (lambda = 5, Delta = 1, C = 0.04, L = 4) in B: the l = 3 onset at B = 0.72 and the
+// l = 4 one at B = 1.2 are a BP (m = 0) and l Hopf pairs i m / 2 each. The l = 2, m = 1 pair sits on the axis at
+// i / 2 all along, where each onset's m = 1 pair crosses: the nearest eigenvalue at the HB was that pair and the
+// m = 1 HB was reported as l = 2. Every HB names the onset's l, and the m = 1 .. l of an onset once each.
+TEST(BranchPointMode, HopfPairCoincidingWithANeutralPairNamesTheCrossingMode) {
+  Scene scene;
+  scene.parameters.Delta0 = 0;
+  scene.parameters.B = 1.5;
+  scene.L = 4;
+  const Branch b =
+      continue_scene(test::spec_of(scene, ProblemKind::full, P::B, 0.5, 1.5, Direction::backward)).branch.branch;
+  std::vector<std::vector<int>> ms(5);
+  int hbs = 0;
+  for (const SpecialPoint& sp : b.special_points) {
+    if (sp.type != SpecialPointType::HB) continue;
+    ++hbs;
+    const int l = std::abs(sp.p - 0.72) < 1e-6 ? 3 : std::abs(sp.p - 1.2) < 1e-6 ? 4 : 0;
+    ASSERT_NE(l, 0) << sp.p;
+    ASSERT_TRUE(sp.mode_l.has_value() && sp.mode_m.has_value()) << sp.p;
+    EXPECT_EQ(*sp.mode_l, l) << sp.p << " m = " << *sp.mode_m;
+    ms[static_cast<std::size_t>(l)].push_back(*sp.mode_m);
+  }
+  EXPECT_EQ(hbs, 3 + 4);
+  for (auto& v : ms) std::sort(v.begin(), v.end());
+  EXPECT_EQ(ms[3], (std::vector<int>{1, 2, 3}));
+  EXPECT_EQ(ms[4], (std::vector<int>{1, 2, 3, 4}));
+}
+
+// --switch-at at a PD label says why no doubled orbit starts there (no scene run of this model has a PD: the label
+// is the onset BP retyped, which reaches the same check).
+TEST(BranchPointMode, SwitchAtAPDLabelSaysWhy) {
+  SceneBranch run = onset_run();
+  const int label = run.branch.special_labels[3];
+  run.branch.branch.special_points[3].type = SpecialPointType::PD;
+  try {
+    switch_at_label(ContinuationRun(run), label);
+    FAIL() << "a PD label switched";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "switch_at");
+    EXPECT_NE(std::string(e.what()).find("is a PD: the doubled orbit of a scene's PD"), std::string::npos) << e.what();
+  }
 }
 
 // The mode survives the branch file; a file written before modes were reported (no mode keys) still loads,

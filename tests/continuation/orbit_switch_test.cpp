@@ -14,6 +14,7 @@
 #include "continuation/scene_spec_fixture.hpp"
 #include "rbcstab/continuation/autonomous_orbit.hpp"
 #include "rbcstab/continuation/branch_io.hpp"
+#include "rbcstab/continuation/branch_tree.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/continuation/orbit.hpp"
@@ -313,6 +314,8 @@ TEST(HopfSwitch, MultipleHopfIsRefused) {
 // for p > 0 the doubled orbits x_p(t) +- sqrt(p) R(t/2) e_1 (period 4 pi, multipliers e^{-8 pi p}, e^{-4 pi}).
 class ForcedPitchFlip final : public ForcedSystem {
  public:
+  // cubic: the sign s of u1' = p u1 + s u1^3 (-1 above; +1 puts the doubled orbits at p < 0, unstable).
+  explicit ForcedPitchFlip(double cubic = -1) : s_(cubic) {}
   static Eigen::Vector2d xp(double t) { return {std::cos(t), std::sin(t) + 0.3 * std::sin(2 * t)}; }
   static Eigen::Vector2d xp_dot(double t) { return {-std::sin(t), std::cos(t) + 0.6 * std::cos(2 * t)}; }
   static Eigen::Matrix2d R(double t) {
@@ -325,14 +328,15 @@ class ForcedPitchFlip final : public ForcedSystem {
     const Eigen::Vector2d u = R(t).transpose() * (Eigen::Vector2d(x[0], x[1]) - xp(t));
     Eigen::Matrix2d half;
     half << 0, -0.5, 0.5, 0;
-    const Eigen::Vector2d F = xp_dot(t) + R(t) * (half * u + Eigen::Vector2d(p * u[0] - u[0] * u[0] * u[0], -u[1]));
+    const Eigen::Vector2d F =
+        xp_dot(t) + R(t) * (half * u + Eigen::Vector2d(p * u[0] + s_ * u[0] * u[0] * u[0], -u[1]));
     f[0] = F[0];
     f[1] = F[1];
   }
   void jacobian(double t, std::span<const double> x, double p, Eigen::MatrixXd& J) const override {
     const Eigen::Vector2d u = R(t).transpose() * (Eigen::Vector2d(x[0], x[1]) - xp(t));
     Eigen::Matrix2d D;
-    D << p - 3 * u[0] * u[0], -0.5, 0.5, -1;
+    D << p + 3 * s_ * u[0] * u[0], -0.5, 0.5, -1;
     J = R(t) * D * R(t).transpose();
   }
   void parameter_derivative(double t, std::span<const double> x, double, std::span<double> fp) const override {
@@ -341,6 +345,9 @@ class ForcedPitchFlip final : public ForcedSystem {
     fp[0] = F[0];
     fp[1] = F[1];
   }
+
+ private:
+  double s_;
 };
 
 TEST(PeriodDoublingSwitch, DoubledOrbitInClosedForm) {
@@ -409,12 +416,143 @@ TEST(PeriodDoublingSwitch, DoubledOrbitInClosedForm) {
   EXPECT_NE(switch_at(pr, b, not_pd, so).message.find("no orbit switch at a LPC"), std::string::npos);
 }
 
+// The PD's flip coefficient against the closed form: the period map over 2 pi in x - x_p (= u at t = 0, R(pi) = -I)
+// is u1 -> -u1(2 pi) with u1' = s u1^3 at p = 0, u1(2 pi) = u1 + 2 pi s u1^3 + O(u1^5): c = -2 pi s. s = -1:
+// supercritical (the doubled orbit exists for p > 0, where x_p is unstable, and is stable); s = +1: subcritical.
+TEST(PeriodDoublingNormalForm, FlipCoefficientOfTheForcedSystem) {
+  for (const double s : {-1.0, 1.0}) {
+    const ForcedPitchFlip sys(s);
+    OrbitOptions oo;
+    oo.segments = 4;
+    const PeriodicOrbitProblem pr(sys, oo);
+    ContinuationOptions o;
+    o.p_min = -0.2;
+    o.p_max = 0.2;
+    o.max_step = 0.1;
+    const Branch b = continue_branch(pr, pr.shooting_guess(ForcedPitchFlip::xp(0), -0.2), -0.2, o);
+    const SpecialPoint* pd = find_special_point(b, SpecialPointType::PD);
+    ASSERT_NE(pd, nullptr) << b.message;
+    ASSERT_TRUE(pd->normal_form.has_value());
+    const NormalForm& nf = *pd->normal_form;
+    EXPECT_EQ(nf.kind, NormalFormKind::period_doubling);
+    EXPECT_NEAR(nf.coefficient("c"), -2 * kPi * s, 2e-3) << nf.note;
+    EXPECT_EQ(nf.criticality, s < 0 ? Criticality::supercritical : Criticality::subcritical);
+    EXPECT_NE(to_text(nf, "p").find(s < 0 ? "period_doubling, supercritical (c = 6.28" : "subcritical (c = -6.28"),
+              std::string::npos)
+        << to_text(nf, "p");
+  }
+}
+
 TEST(PeriodDoublingSwitch, RejectsBadPeriods) {
   const ForcedPitchFlip sys;
   EXPECT_THROW(PeriodicOrbitProblem(sys, {}, 0), InvalidArgument);
   OrbitSwitchOptions so;
   so.amplitude = 0;
   EXPECT_THROW(so.validate(), InvalidArgument);
+}
+
+// The diagram's dispatch (grow_tree with default_switchers): the HB of the skewed subcritical normal form starts its
+// orbit branch as a child with its own problem, every point on the closed form, and the first point where the HB's
+// normal form puts it: p - p_HB = side (peak / amplitude)^2 for the predictor's peak (measured 4.7e-10 relative;
+// bar 1e-6, l1 comes from finite differences to ~1e-7), the first point itself on the closed form a(rho) = 0.
+TEST(OrbitTree, HopfPointStartsTheOrbitBranchInTheTree) {
+  Eigen::MatrixXd A(3, 3);
+  A << 1, 0.5, 0.2, 0.3, 1, -0.4, 0.1, 0.2, 2;
+  const HopfNormalForm sys(1, 0, 0.7, A);
+  const AutonomousEquilibriumProblem eq(sys);
+  const Branch e = equilibrium_branch(eq);
+  const SpecialPoint* hb = find_special_point(e, SpecialPointType::HB);
+  ASSERT_NE(hb, nullptr);
+  ASSERT_TRUE(hb->normal_form.has_value());
+  EXPECT_EQ(hb->normal_form->side, -1);  // subcritical: the orbits lie below the HB
+  OrbitSwitchOptions so = switch_options(-0.5, 1);
+  const OrbitSwitchStart s = orbit_switch_start(eq, e, *hb, so);
+  ASSERT_TRUE(s.found) << s.message;
+  ASSERT_TRUE(std::isfinite(s.predicted_p));
+  const double rho = sys.x_of(s.x.head(3)).head(2).squaredNorm();
+  EXPECT_NEAR(s.p, -rho, 1e-12);  // on the closed form a(rho) = p + rho = 0
+  EXPECT_LT(s.predicted_p - hb->p, 0);
+  EXPECT_NEAR((s.p - hb->p) / (s.predicted_p - hb->p), 1, 1e-6) << s.p << " " << s.predicted_p;
+  EXPECT_EQ(s.away, Direction::backward);
+
+  TreeOptions o;
+  o.depth = 2;
+  o.switching.amplitude = so.amplitude;
+  o.switching.continuation = so.continuation;
+  o.switchers = default_switchers(so.orbit);
+  const BranchTree t = grow_tree(eq, e, o);
+  ASSERT_EQ(t.branches.size(), 2u);
+  const TreeBranch& c = t.branches[1];
+  EXPECT_EQ(c.parent, 0);
+  EXPECT_EQ(c.side, 1);
+  ASSERT_NE(c.problem, nullptr);
+  EXPECT_NE(dynamic_cast<const AutonomousOrbitProblem*>(c.problem.get()), nullptr);
+  EXPECT_NEAR(c.branch.points.back().p, -0.5, 1e-12);
+  expect_closed_form(sys, c.branch, 1, 0, 0.7);
+  ASSERT_EQ(t.emanations.size(), 1u);  // the HB; the orbit branch has no branching point
+  EXPECT_EQ(t.emanations[0].outcome, EmanationOutcome::followed);
+  EXPECT_EQ(t.emanations[0].branch_to, 1);
+}
+
+// The forced system's PD through the tree: the doubled orbit is a child with its own problem (2 periods, 8
+// segments), on the closed form x_p(t) +- sqrt(p) R(t/2) e_1 at every segment start.
+TEST(OrbitTree, PeriodDoublingStartsTheDoubledOrbitInTheTree) {
+  const ForcedPitchFlip sys;
+  OrbitOptions oo;
+  oo.segments = 4;
+  const PeriodicOrbitProblem pr(sys, oo);
+  ContinuationOptions co;
+  co.p_min = -0.2;
+  co.p_max = 0.2;
+  co.max_step = 0.1;
+  const Branch b = continue_branch(pr, pr.shooting_guess(ForcedPitchFlip::xp(0), -0.2), -0.2, co);
+  TreeOptions o;
+  o.depth = 3;
+  o.switching.continuation = co;
+  o.switching.continuation.max_points = 30;
+  const BranchTree t = grow_tree(pr, b, o);
+  ASSERT_EQ(t.branches.size(), 2u);
+  const auto* doubled = dynamic_cast<const PeriodicOrbitProblem*>(t.branches[1].problem.get());
+  ASSERT_NE(doubled, nullptr);
+  EXPECT_EQ(doubled->periods(), 2);
+  EXPECT_EQ(doubled->segments(), 8);
+  const Branch& c = t.branches[1].branch;
+  ASSERT_GE(c.points.size(), 5u);
+  EXPECT_NEAR(c.points.back().p, 0.2, 1e-12);
+  for (const BranchPoint& pt : c.points) {
+    const double sign = pt.x[0] > ForcedPitchFlip::xp(0)[0] ? 1 : -1;
+    for (int j = 0; j < 8; ++j) {
+      const double tj = kPi * j / 2;
+      const Eigen::Vector2d expected = ForcedPitchFlip::xp(tj) + sign * std::sqrt(pt.p) * ForcedPitchFlip::R(tj).col(0);
+      EXPECT_NEAR((pt.x.segment(2 * j, 2) - expected).norm(), 0, 1e-9) << pt.p << " " << j;
+    }
+  }
+  ASSERT_EQ(t.emanations.size(), 1u);
+  EXPECT_EQ(t.emanations[0].outcome, EmanationOutcome::followed);
+}
+
+// A double Hopf point in the tree: not followed, the reason named (both pairs), and not a failure.
+TEST(OrbitTree, MultipleHopfIsListedWithTheReason) {
+  const DoubleHopf sys;
+  const AutonomousEquilibriumProblem eq(sys);
+  ContinuationOptions co;
+  co.p_min = -0.3;
+  co.p_max = 0.3;
+  co.max_step = 0.1;
+  const Branch e = continue_branch(eq, Eigen::VectorXd::Zero(4), -0.3, co);
+  ASSERT_NE(find_special_point(e, SpecialPointType::HB), nullptr);
+  TreeOptions o;
+  o.switching.continuation = co;
+  const BranchTree t = grow_tree(eq, e, o);
+  EXPECT_EQ(t.branches.size(), 1u);
+  ASSERT_FALSE(t.emanations.empty());
+  for (const TreeEmanation& m : t.emanations) {
+    if (m.outcome == EmanationOutcome::already_switched) continue;  // the second pair's HB at the same point
+    EXPECT_EQ(m.outcome, EmanationOutcome::not_available);
+    EXPECT_EQ(m.side, 0);
+    EXPECT_NE(m.message.find("not a simple Hopf point"), std::string::npos) << m.message;
+    EXPECT_NE(m.message.find("2i"), std::string::npos) << m.message;
+  }
 }
 
 // This model's l >= 3 onset (full model, L = 4, C from 0.08 down): every HB there is one of l pairs crossing with a

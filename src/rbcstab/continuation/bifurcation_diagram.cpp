@@ -14,6 +14,7 @@
 #include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/continuation/detail/branch_labels.hpp"
 #include "rbcstab/continuation/detail/scene_problem.hpp"
+#include "rbcstab/continuation/detail/scene_switch.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
@@ -36,7 +37,7 @@ std::string outcome_text(const DiagramEmanation& e) {
       return "not switched at again: the point of label " + std::to_string(e.label_to) + " on branch " +
              std::to_string(e.branch_to);
     case EmanationOutcome::not_available:
-      return "not followed (switching not available)";
+      return "not followed (switching not available" + (e.message.empty() ? "" : ": " + e.message) + ")";
     case EmanationOutcome::not_located:
       return "not followed: " + e.message;
     case EmanationOutcome::depth_limit:
@@ -113,6 +114,16 @@ BifurcationDiagram bifurcation_diagram(const BifurcationDiagramSpec& spec) {
   o.max_branches = spec.max_branches;
   o.stop = spec.stop;
   o.on_branch = spec.on_branch;
+  // HB: orbit_switch_start refuses every HB of a scene's problem, naming why (none is an autonomous system's
+  // equilibrium problem; the model's l >= 3 onset is a multiple Hopf point). PD: the doubled orbit would be a
+  // problem of its own that the scene's measures, monitors and branch files do not describe.
+  o.switchers[SpecialPointType::PD] = [](const ContinuationProblem&, const Branch&, const SpecialPoint&,
+                                         const BranchSwitchOptions&) {
+    EmanatingStart e;
+    e.refused = true;
+    e.message = detail::kScenePeriodDoublingRefusal;
+    return std::vector<EmanatingStart>{std::move(e)};
+  };
   // The run's monitors label (or stop) every branch, as a switched branch's (scene_switch.cpp).
   const std::vector<std::string> names = measure_names(d.start.spec.kind, d.start.problem_scene.L);
   o.events = [&](const Eigen::VectorXd& x0, double p0) {
@@ -295,6 +306,7 @@ std::string to_text(const BifurcationDiagram& d) {
     const SpecialPoint& sp = point_of(d, e);
     out << to_string(e.type) << " " << e.label << " (BR " << e.branch << ", " << q << " = " << sp.p;
     if (sp.mode_l) out << ", l = " << *sp.mode_l;
+    if (sp.mode_l && sp.mode_m) out << ", m = " << *sp.mode_m;
     out << ")" << (e.side != 0 ? " side " + side_text(e.side) : "") << ": " << outcome_text(e) << "\n";
   }
   return out.str();

@@ -4,11 +4,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 #include <limits>
 #include <memory>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "rbcstab/continuation/dense.hpp"
+#include "rbcstab/continuation/orbit_switch.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
@@ -48,9 +52,43 @@ std::vector<EmanatingStart> bp_switcher(const ContinuationProblem& problem, cons
   return out;
 }
 
+// HB and PD: the one orbit branch born there (its other "half" is the same orbit shifted in phase), side +1.
+Switcher orbit_switcher(const OrbitOptions& orbit) {
+  return [orbit](const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& sp,
+                 const BranchSwitchOptions& options) {
+    OrbitSwitchOptions o;
+    o.amplitude = options.amplitude;
+    o.max_newton = options.max_newton;
+    o.orbit = orbit;
+    o.continuation = options.continuation;
+    OrbitSwitchStart s = orbit_switch_start(problem, branch, sp, o);
+    EmanatingStart e;
+    e.found = s.found;
+    e.refused = s.refused;
+    e.message = std::move(s.message);
+    e.side = s.refused ? 0 : 1;  // a refusal concerns the point, not one of its branches
+    e.x = std::move(s.x);
+    e.p = s.p;
+    e.away = s.away;
+    e.problem = std::move(s.problem);
+    return std::vector<EmanatingStart>{std::move(e)};
+  };
+}
+
+// Why a branching type has no switcher (the text of its not_available outcome).
+std::string no_switcher_text(SpecialPointType type) {
+  if (type == SpecialPointType::NS)
+    return "switching at NS is not available: an NS point starts an invariant torus, and tori are not continued";
+  return "switching at " + std::string(to_string(type)) + " is not available";
+}
+
 }  // namespace
 
-std::map<SpecialPointType, Switcher> default_switchers() { return {{SpecialPointType::BP, bp_switcher}}; }
+std::map<SpecialPointType, Switcher> default_switchers(const OrbitOptions& hb_orbit) {
+  return {{SpecialPointType::BP, bp_switcher},
+          {SpecialPointType::HB, orbit_switcher(hb_orbit)},
+          {SpecialPointType::PD, orbit_switcher(hb_orbit)}};
+}
 
 bool is_branching(SpecialPointType type) {
   return type == SpecialPointType::BP || type == SpecialPointType::HB || type == SpecialPointType::PD ||
@@ -126,6 +164,11 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
     for (const auto& [k, j] : switched_at) {
       const SpecialPoint& q = tree.branches[static_cast<std::size_t>(k)].branch.special_points[j];
       if (q.type != sp.type || &problem_of(k) != &problem_of(b)) continue;
+      // HBs (PDs, NSs) at one point with different critical values are different points (the l >= 3 onset's pairs
+      // i m / 2): each is switched at, or refused, on its own.
+      if (sp.type != SpecialPointType::BP &&
+          std::abs(q.eigenvalue - sp.eigenvalue) > options.duplicate_tol * (1 + std::abs(sp.eigenvalue)))
+        continue;
       const Eigen::VectorXd Q = packed(q.x, q.p);
       if (same_point(Q, X, options.duplicate_tol)) return {k, j};
       for (const auto& g : options.symmetries)
@@ -175,8 +218,7 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
       }
       const auto sw = options.switchers.find(sp.type);
       if (sw == options.switchers.end() || !sw->second) {
-        mark(b, j, 0, EmanationOutcome::not_available, -1, -1,
-             "switching at " + to_string(sp.type) + " is not available");
+        mark(b, j, 0, EmanationOutcome::not_available, -1, -1, no_switcher_text(sp.type));
         continue;
       }
       switched_at.emplace_back(b, j);
@@ -184,7 +226,7 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
       int closed_sibling = -1;
       for (EmanatingStart& s : sw->second(pr, tree.branches[i].branch, sp, options.switching)) {
         if (!s.found) {
-          mark(b, j, s.side, EmanationOutcome::failed, -1, -1, s.message);
+          mark(b, j, s.side, s.refused ? EmanationOutcome::not_available : EmanationOutcome::failed, -1, -1, s.message);
           continue;
         }
         if (tree.interrupted || stopped()) {

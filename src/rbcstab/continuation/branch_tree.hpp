@@ -1,10 +1,12 @@
 #pragma once
 // Recursive branch switching on one problem, the generic core of bifurcation diagrams (bifurcation_diagram.hpp):
-// from a continued start branch, at every located special point of a branching type (BP; HB and PD once they
-// have a switcher) every emanating branch is started, checked against the branches already found (a duplicate
-// or a symmetric copy is marked, not followed) and continued with the same engine options, to a given depth.
-// One dispatch point maps a special point's type to its switcher (TreeOptions::switchers): BP is the only one
-// today; a type without a switcher is listed as not followed.
+// from a continued start branch, at every located special point of a branching type (BP, HB, PD) every emanating
+// branch is started, checked against the branches already found (a duplicate or a symmetric copy is marked, not
+// followed) and continued with the same engine options, to a given depth. One dispatch point maps a special
+// point's type to its switcher (TreeOptions::switchers): BP (switch_start), HB and PD (orbit_switch_start: the
+// periodic orbits of an AutonomousEquilibriumProblem's HB, the doubled orbit of a PeriodicOrbitProblem's PD, each
+// with its own problem). A switcher's refusal (a multiple point, a problem kind it does not handle) and a type
+// without a switcher (NS) are listed as not followed, with the reason.
 #include <atomic>
 #include <cstddef>
 #include <functional>
@@ -15,6 +17,7 @@
 
 #include "rbcstab/continuation/branch_switch.hpp"
 #include "rbcstab/continuation/continuation.hpp"
+#include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/core/enum_table.hpp"
 
 namespace rbcstab {
@@ -22,19 +25,25 @@ namespace rbcstab {
 // The start of one branch emanating from a special point, before it is continued.
 struct EmanatingStart {
   bool found = false;  // false: message says why (not a simple BP, the corrector failed)
+  // Not found because the switch does not apply here (a multiple HB, an HB or PD of a problem kind without an orbit
+  // switch): listed as not_available with the message, not as a failure.
+  bool refused = false;
   std::string message;
-  int side = 0;  // which of the emanating branches (BP: +1 / -1, the two halves +d / -d)
+  int side = 0;  // which of the emanating branches (BP: +1 / -1, the two halves +d / -d; HB, PD: +1, the one orbit)
   Eigen::VectorXd x;
   double p = 0;
   Direction away = Direction::forward;  // the continuation direction that leaves the special point
   // The problem the branch belongs to; null: the same as the branch it emanates from (BP). An HB's periodic
-  // orbits would bring their own.
+  // orbits and a PD's doubled orbit bring their own.
   std::shared_ptr<const ContinuationProblem> problem;
 };
 using Switcher = std::function<std::vector<EmanatingStart>(const ContinuationProblem&, const Branch&,
                                                            const SpecialPoint&, const BranchSwitchOptions&)>;
-// The switchers available: BP (both halves of the bifurcating branch, switch_start). HB, PD: none yet.
-std::map<SpecialPointType, Switcher> default_switchers();
+// The switchers available: BP (both halves of the bifurcating branch, switch_start); HB and PD (one start each,
+// orbit_switch_start with the switching amplitude, corrector and engine options; hb_orbit: the HB orbit problem's
+// shooting options). The HB's orbit problem refers to the AutonomousSystem of the branch's problem, which must
+// outlive the tree.
+std::map<SpecialPointType, Switcher> default_switchers(const OrbitOptions& hb_orbit = {});
 // Whether other branches emanate from a special point of this type (BP, HB, PD, NS), switcher or not.
 bool is_branching(SpecialPointType type);
 
@@ -45,7 +54,7 @@ enum class EmanationOutcome {
                      // whose loop passes through it from the other side): not followed again
   symmetric,         // a symmetry maps its first point onto branch_to: the copy is not followed
   already_switched,  // the same point (within duplicate_tol) was switched at before, on branch_to
-  not_available,     // no switcher for this type (HB, PD, NS): switching not available
+  not_available,     // no switcher for this type (NS), or the switcher refused (message says why)
   not_located,       // the special point is a guess (its bracket did not converge): not switched at
   depth_limit,       // the branch is at the maximal depth
   failed,            // the switcher found no start (message says why)

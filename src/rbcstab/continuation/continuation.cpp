@@ -394,7 +394,7 @@ Branch continue_branch(const ContinuationProblem& problem, const Eigen::VectorXd
     return b;
   };
   auto with_normal_forms = [&](Branch b) {
-    if (options.normal_forms && problem.stability_kind() == StabilityKind::eigenvalues) attach_normal_forms(problem, b);
+    if (options.normal_forms) attach_normal_forms(problem, b);  // equilibria's LP, BP, HB; forced orbits' PD
     return b;
   };
   if (options.direction != Direction::both)

@@ -71,8 +71,8 @@ std::string to_text(const NormalForm& nf, const std::string& parameter) {
   // A note that says "degenerate (k pairs)" already names the criticality.
   const bool named = nf.note.rfind(to_string(nf.criticality), 0) == 0;
   if (nf.criticality != Criticality::not_applicable && !named) t += ", " + to_string(nf.criticality);
-  // The coefficient that decides: l1 (Hopf), p2 (pitchfork, fold), none (transcritical).
-  const char* key = nf.kind == NormalFormKind::hopf ? "l1" : "p2";
+  // The coefficient that decides: l1 (Hopf), c (period doubling), p2 (pitchfork, fold), none (transcritical).
+  const char* key = nf.kind == NormalFormKind::hopf ? "l1" : nf.kind == NormalFormKind::period_doubling ? "c" : "p2";
   if (nf.kind != NormalFormKind::transcritical && !std::isnan(nf.coefficient(key)))
     t += std::string(" (") + key + " = " + short_number(nf.coefficient(key)) + ")";
   if (!nf.note.empty()) t += ": " + nf.note;

@@ -12,14 +12,14 @@
 
 namespace rbcstab {
 
-enum class NormalFormKind { fold, transcritical, pitchfork, branch_point, hopf };  // branch_point: unclassified
+// branch_point: unclassified; period_doubling: a PD (flip) of a forced orbit's period map
+enum class NormalFormKind { fold, transcritical, pitchfork, branch_point, hopf, period_doubling };
 template <>
 struct EnumTable<NormalFormKind> {
-  static constexpr EnumName<NormalFormKind> entries[] = {{NormalFormKind::fold, "fold"},
-                                                         {NormalFormKind::transcritical, "transcritical"},
-                                                         {NormalFormKind::pitchfork, "pitchfork"},
-                                                         {NormalFormKind::branch_point, "branch_point"},
-                                                         {NormalFormKind::hopf, "hopf"}};
+  static constexpr EnumName<NormalFormKind> entries[] = {
+      {NormalFormKind::fold, "fold"},           {NormalFormKind::transcritical, "transcritical"},
+      {NormalFormKind::pitchfork, "pitchfork"}, {NormalFormKind::branch_point, "branch_point"},
+      {NormalFormKind::hopf, "hopf"},           {NormalFormKind::period_doubling, "period_doubling"}};
 };
 
 // supercritical: the emanating branch (orbit) exists where the known branch is unstable, and is stable in the

@@ -1,5 +1,6 @@
 // Normal forms at LP, BP and HB of equilibrium branches: null vectors by SVD, second and third derivatives of the
-// residual by central mixed differences (detail/multilinear.hpp), Kuznetsov's formulas. docs/continuation.md.
+// residual by central mixed differences (detail/multilinear.hpp), Kuznetsov's formulas; at PD of forced orbits the
+// flip coefficient of the period map from differences of shootings. docs/continuation.md.
 #include "rbcstab/continuation/normal_form_analysis.hpp"
 
 #include <algorithm>
@@ -255,10 +256,85 @@ NormalForm hopf_normal_form(const ContinuationProblem& problem, const Eigen::Vec
   return nf;
 }
 
+NormalForm period_doubling_normal_form(const PeriodicOrbitProblem& problem, const Eigen::VectorXd& X, double p) {
+  const NormalFormKind kind = NormalFormKind::period_doubling;
+  NormalForm pd;
+  pd.kind = kind;
+  if (problem.system().conserves_norm())
+    return not_computed(kind, "a norm-conserving system: its period map has the trivial multiplier 1");
+  const Eigen::Index n = problem.system().dimension(), N = problem.segments();
+  const Eigen::VectorXd x0 = problem.state_at_zero(X);
+  // P(y): the trajectory through y shot over the period; the last segment's defect is P(y) - y.
+  Eigen::VectorXd F;
+  const auto P = [&](const Eigen::VectorXd& y) {
+    problem.residual(problem.shooting_guess(y, p), p, F);
+    return Eigen::VectorXd(F.segment((N - 1) * n, n) + y);
+  };
+  const Eigen::MatrixXd A = problem.floquet(X, p).monodromy;
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(A, true), est(A.transpose(), true);
+  Eigen::Index i = 0, it = 0;
+  (es.eigenvalues().array() + 1.0).abs().minCoeff(&i);
+  (est.eigenvalues().array() + 1.0).abs().minCoeff(&it);
+  const auto near_minus_one = ((es.eigenvalues().array() + 1.0).abs() <= 1e-4).count();
+  if (near_minus_one != 1)
+    return degenerate(pd, "degenerate (" + std::to_string(near_minus_one) + " multipliers near -1)");
+  Eigen::VectorXd q = es.eigenvectors().col(i).real(), w = est.eigenvectors().col(it).real();
+  q /= q.norm();
+  if (!(std::abs(w.dot(q)) > kSingular * w.norm())) return degenerate(pd, "<w, q> = 0");
+  w /= w.dot(q);
+  const Eigen::MatrixXd I_A = Eigen::MatrixXd::Identity(n, n) - A;
+  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(I_A);
+  if (!(svd.singularValues()[n - 1] > kKernel * svd.singularValues()[0]))
+    return degenerate(pd, "a multiplier 1 besides -1 (I - A singular)");
+  // Steps: the shootings are accurate to ~1e-11 relative (rtol 1e-12); second differences at h = 1e-3 and third
+  // at 1e-2 (in units of 1 + |x0|) keep rounding near 1e-5 of the terms.
+  const double s = 1 + x0.lpNorm<Eigen::Infinity>(), h2 = 1e-3 * s, h3 = 1e-2 * s;
+  const Eigen::VectorXd P0 = P(x0);
+  const Eigen::VectorXd Bqq = (P(x0 + h2 * q) - 2 * P0 + P(x0 - h2 * q)) / (h2 * h2);
+  const Eigen::VectorXd y2 = I_A.fullPivLu().solve(Bqq);
+  // B(q, y2) by polarisation over unit directions (q and y2 have different scales).
+  const double ny = y2.norm();
+  Eigen::VectorXd Bqy = Eigen::VectorXd::Zero(n);
+  if (ny > 0) {
+    const Eigen::VectorXd u = q, v = y2 / ny;
+    Bqy = (P(x0 + h2 * (u + v)) - P(x0 + h2 * (u - v)) - P(x0 - h2 * (u - v)) + P(x0 - h2 * (u + v))) / (4 * h2 * h2) *
+          ny;
+  }
+  // Third differences extrapolated (Richardson, h3 and h3 / 2): their O(h^2) error carries the fifth derivative,
+  // which a period map of length 2 pi k makes large (u' = -u^3 over 2 pi: 2% at h3 alone).
+  const auto third = [&](double h) {
+    return Eigen::VectorXd((P(x0 + 2 * h * q) - 2 * P(x0 + h * q) + 2 * P(x0 - h * q) - P(x0 - 2 * h * q)) /
+                           (2 * h * h * h));
+  };
+  const Eigen::VectorXd Cqqq = (4 * third(h3 / 2) - third(h3)) / 3;
+  if (!Cqqq.allFinite() || !Bqy.allFinite())
+    return not_computed(kind, "a shooting of the period map failed near the point");
+  const double cubic = w.dot(Cqqq) / 6, quadratic = w.dot(Bqy) / 2, c = cubic + quadratic;
+  pd.coefficients = {{"c", c}, {"cubic", cubic}, {"quadratic", quadratic}};
+  if (std::abs(c) <= kVanish * std::max({std::abs(cubic), std::abs(quadratic), 1e-300}))
+    return degenerate(pd, "c = 0 to its accuracy");
+  pd.criticality = c > 0 ? Criticality::supercritical : Criticality::subcritical;
+  return pd;
+}
+
 NormalForm normal_form(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& sp) {
   const NormalFormKind kind = sp.type == SpecialPointType::LP   ? NormalFormKind::fold
                               : sp.type == SpecialPointType::HB ? NormalFormKind::hopf
+                              : sp.type == SpecialPointType::PD ? NormalFormKind::period_doubling
                                                                 : NormalFormKind::branch_point;
+  if (sp.type == SpecialPointType::PD) {
+    const auto* orbit = dynamic_cast<const PeriodicOrbitProblem*>(&problem);
+    if (!orbit) return not_computed(kind, "a PD normal form needs a forced orbit problem (PeriodicOrbitProblem)");
+    if (sp.status != LocationStatus::located) return not_computed(kind, "the point is not located (a guess)");
+    if (orbit->system().dimension() > kNormalFormMaxDimension)
+      return not_computed(kind, "dimension " + std::to_string(orbit->system().dimension()) + " > " +
+                                    std::to_string(kNormalFormMaxDimension));
+    try {
+      return period_doubling_normal_form(*orbit, sp.x, sp.p);
+    } catch (const InvalidArgument& e) {
+      return not_computed(kind, std::string("the system refused a difference step: ") + e.what());
+    }
+  }
   if (problem.stability_kind() != StabilityKind::eigenvalues)
     return not_computed(kind, "normal forms of orbit branches are not computed");
   if (sp.type != SpecialPointType::LP && sp.type != SpecialPointType::BP && sp.type != SpecialPointType::HB)
@@ -288,8 +364,12 @@ NormalForm normal_form(const ContinuationProblem& problem, const Branch& branch,
 }
 
 void attach_normal_forms(const ContinuationProblem& problem, Branch& branch) {
+  const bool equilibria = problem.stability_kind() == StabilityKind::eigenvalues;
+  const bool forced_orbits = dynamic_cast<const PeriodicOrbitProblem*>(&problem) != nullptr;
   for (SpecialPoint& sp : branch.special_points)
-    if (sp.type == SpecialPointType::LP || sp.type == SpecialPointType::BP || sp.type == SpecialPointType::HB)
+    if ((equilibria &&
+         (sp.type == SpecialPointType::LP || sp.type == SpecialPointType::BP || sp.type == SpecialPointType::HB)) ||
+        (forced_orbits && sp.type == SpecialPointType::PD))
       sp.normal_form = normal_form(problem, branch, sp);
 }
 

@@ -3,7 +3,9 @@
 
 #include <cmath>
 #include <complex>
+#include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "rbcstab/continuation/branch_switch.hpp"
@@ -51,27 +53,146 @@ std::string labels_at(const Branch& branch, const SpecialPoint& point) {
   return s;
 }
 
-// Newton off the point along d, then the engine away from p0.
-void start_branch(const ContinuationProblem& problem, const Eigen::VectorXd& X0, const Eigen::VectorXd& delta,
-                  double p0, const OrbitSwitchOptions& options, OrbitSwitchResult& out) {
+// Newton off the point along d (d has no p component, so the hyperplane d.(X - X_0) = h holds any p): from
+// p_guess when it is finite, then (or else) from p0.
+void first_point(const ContinuationProblem& problem, const Eigen::VectorXd& X0, const Eigen::VectorXd& delta, double p0,
+                 double p_guess, const OrbitSwitchOptions& options, OrbitSwitchStart& out) {
   Eigen::VectorXd base(X0.size() + 1), d = Eigen::VectorXd::Zero(X0.size() + 1);
   base << X0, p0;
   d.head(delta.size()) = delta;
   const double h = d.norm();
   d /= h;
   out.direction = d;
+  const Eigen::Index n = problem.dimension();
+  const auto solve = [&](double p_start, Eigen::VectorXd& X) {
+    X = base + h * d;
+    X[n] = p_start;
+    return newton_on_hyperplane(problem, base, d, h, options.continuation.newton_tol, options.max_newton, X);
+  };
   Eigen::VectorXd X;
-  if (!correct_on_hyperplane(problem, base, d, h, options.continuation.newton_tol, options.max_newton, X)) {
+  if (!(std::isfinite(p_guess) && solve(p_guess, X)) && !solve(p0, X)) {
     out.message = "the corrector did not converge off the point (try another amplitude)";
     return;
   }
-  const Eigen::Index n = problem.dimension();
+  out.found = true;
+  out.x = X.head(n);
+  out.p = X[n];
   // p - p0 ~ eps^2 near a generic HB or PD: its sign at the first point says which side the new branch lies on.
+  out.away = X[n] >= p0 ? Direction::forward : Direction::backward;
+}
+
+OrbitSwitchStart refusal(std::string message) {
+  OrbitSwitchStart out;
+  out.refused = true;
+  out.message = std::move(message);
+  return out;
+}
+
+// The parameter the HB's amplitude law (hopf_normal_form) gives for an orbit whose peak |x - x_HB|_2 is `peak`:
+// |x - x*| ~ amplitude |p - p*|^(1/2) on `side`. NaN without a usable law.
+double hopf_predicted_parameter(const SpecialPoint& hb, double peak) {
+  if (!hb.normal_form) return std::numeric_limits<double>::quiet_NaN();
+  const NormalForm& nf = *hb.normal_form;
+  if (nf.kind != NormalFormKind::hopf || nf.criticality == Criticality::degenerate || !(nf.amplitude > 0) ||
+      !std::isfinite(nf.amplitude) || nf.exponent != 0.5 || (nf.side != 1 && nf.side != -1))
+    return std::numeric_limits<double>::quiet_NaN();
+  const double r = peak / nf.amplitude;
+  return hb.p + nf.side * r * r;
+}
+
+OrbitSwitchStart hopf_start(const AutonomousSystem& system, const SpecialPoint& hb, const OrbitSwitchOptions& options) {
+  options.validate();
+  require(hb.type == SpecialPointType::HB, "special_point", static_cast<double>(static_cast<int>(hb.type)),
+          "an HB (Hopf point)");
+  const Eigen::Index n = system.dimension();
+  require(hb.x.size() == n, "special_point", static_cast<double>(hb.x.size()), "a state of the system's dimension");
+  Eigen::MatrixXd J;
+  system.jacobian(std::span<const double>(hb.x.data(), static_cast<std::size_t>(n)), hb.p, J);
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(J, true);
+  const auto critical = critical_values(es.eigenvalues(), StabilityKind::eigenvalues, options.critical_tol);
+  if (critical.size() != 1 || !(critical[0].imag() > 0))
+    return refusal("not a simple Hopf point at " + system.parameter_name() + " = " + format_value(hb.p) +
+                   ": the eigenvalues on the imaginary axis are " +
+                   (critical.empty() ? "none" : list_values(critical)) +
+                   " (a simple HB has one pair +- i omega and no zero eigenvalue)");
+  Eigen::Index i = 0;
+  (es.eigenvalues() - Eigen::VectorXcd::Constant(n, critical[0])).cwiseAbs().minCoeff(&i);
+  const double omega = es.eigenvalues()[i].imag();
+  Eigen::VectorXcd q = es.eigenvectors().col(i);
+  // Rotate q so that its largest component k is real: then x_k(t) ~ Re(q_k e^{i omega t}) has its extremum at
+  // t = 0, which is the orbit problem's phase condition f_k(x_0) = 0.
+  Eigen::Index k = 0;
+  q.cwiseAbs().maxCoeff(&k);
+  q *= std::conj(q[k]) / std::abs(q[k]);
+  q /= q.cwiseAbs().maxCoeff();
+  // The predictor's peak |x - x_HB|_2 over t: eps times the largest singular value of [Re q, Im q].
+  Eigen::MatrixXd reim(n, 2);
+  reim << q.real(), q.imag();
+  const double peak = options.amplitude * Eigen::JacobiSVD<Eigen::MatrixXd>(reim).singularValues()[0];
+  auto problem = std::make_unique<AutonomousOrbitProblem>(system, static_cast<int>(k), options.orbit);
+  const int N = problem->segments();
+  OrbitSwitchStart out;
+  out.period = kTwoPi / omega;
+  out.predicted_p = hopf_predicted_parameter(hb, peak);
+  Eigen::VectorXd X0(n * N + 1), delta = Eigen::VectorXd::Zero(n * N + 1);
+  for (int j = 0; j < N; ++j) {
+    X0.segment(j * n, n) = hb.x;
+    const std::complex<double> e = std::polar(1.0, kTwoPi * j / N);
+    delta.segment(j * n, n) = options.amplitude * (q * e).real();
+  }
+  X0[n * N] = out.period;
+  first_point(*problem, X0, delta, hb.p, out.predicted_p, options, out);
+  if (out.found) out.problem = std::move(problem);
+  return out;
+}
+
+OrbitSwitchStart period_doubling_start(const PeriodicOrbitProblem& problem, const SpecialPoint& pd,
+                                       const OrbitSwitchOptions& options) {
+  options.validate();
+  require(pd.type == SpecialPointType::PD, "special_point", static_cast<double>(static_cast<int>(pd.type)),
+          "a PD (period doubling)");
+  require(pd.x.size() == problem.dimension(), "special_point", static_cast<double>(pd.x.size()),
+          "a point of this orbit problem");
+  const Floquet fl = problem.floquet(pd.x, pd.p);
+  const auto critical = critical_values(fl.multipliers, StabilityKind::multipliers, options.critical_tol);
+  if (critical.size() != 1 || !(critical[0].real() < 0))
+    return refusal("not a simple period doubling at " + problem.parameter_name() + " = " + format_value(pd.p) +
+                   ": the multipliers on the unit circle are " + (critical.empty() ? "none" : list_values(critical)) +
+                   " (a simple PD has one multiplier -1)");
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(fl.monodromy, true);
+  Eigen::Index i = 0;
+  (es.eigenvalues() - Eigen::VectorXcd::Constant(es.eigenvalues().size(), -1.0)).cwiseAbs().minCoeff(&i);
+  Eigen::VectorXd v = es.eigenvectors().col(i).real();
+  v /= v.norm();
+  const Eigen::Index m = problem.dimension();
+  const Eigen::VectorXd V = problem.variation(pd.x, pd.p, v);
+  OrbitOptions o = problem.options();  // the parent's tolerances, on the same segment times
+  o.segments = 2 * problem.segments();
+  auto doubled = std::make_unique<PeriodicOrbitProblem>(problem.system(), o, 2 * problem.periods());
+  Eigen::VectorXd X0(2 * m), delta(2 * m);
+  X0 << pd.x, pd.x;
+  delta << options.amplitude * V, -options.amplitude * V;
+  OrbitSwitchStart out;
+  out.period = 2 * kTwoPi * problem.periods();
+  first_point(*doubled, X0, delta, pd.p, std::numeric_limits<double>::quiet_NaN(), options, out);
+  if (out.found) out.problem = std::move(doubled);
+  return out;
+}
+
+// The start continued away from the special point.
+OrbitSwitchResult continued(OrbitSwitchStart start, const OrbitSwitchOptions& options) {
+  OrbitSwitchResult out;
+  out.message = std::move(start.message);
+  out.direction = std::move(start.direction);
+  out.period = start.period;
+  if (!start.found) return out;
   ContinuationOptions o = options.continuation;
-  o.direction = X[n] >= p0 ? Direction::forward : Direction::backward;
-  out.branch = continue_branch(problem, X.head(n), X[n], o);
+  o.direction = start.away;
+  out.branch = continue_branch(*start.problem, start.x, start.p, o);
   out.switched = !out.branch.points.empty();
   out.message = out.branch.message;
+  out.problem = std::move(start.problem);
+  return out;
 }
 
 }  // namespace
@@ -87,114 +208,45 @@ void OrbitSwitchOptions::validate() const {
 
 OrbitSwitchResult switch_at_hopf(const AutonomousSystem& system, const SpecialPoint& hb,
                                  const OrbitSwitchOptions& options) {
-  options.validate();
-  require(hb.type == SpecialPointType::HB, "special_point", static_cast<double>(static_cast<int>(hb.type)),
-          "an HB (Hopf point)");
-  const Eigen::Index n = system.dimension();
-  require(hb.x.size() == n, "special_point", static_cast<double>(hb.x.size()), "a state of the system's dimension");
-  OrbitSwitchResult out;
-  Eigen::MatrixXd J;
-  system.jacobian(std::span<const double>(hb.x.data(), static_cast<std::size_t>(n)), hb.p, J);
-  const Eigen::EigenSolver<Eigen::MatrixXd> es(J, true);
-  const auto critical = critical_values(es.eigenvalues(), StabilityKind::eigenvalues, options.critical_tol);
-  if (critical.size() != 1 || !(critical[0].imag() > 0)) {
-    out.message = "not a simple Hopf point at " + system.parameter_name() + " = " + format_value(hb.p) +
-                  ": the eigenvalues on the imaginary axis are " + (critical.empty() ? "none" : list_values(critical)) +
-                  " (a simple HB has one pair +- i omega and no zero eigenvalue)";
-    return out;
-  }
-  Eigen::Index i = 0;
-  (es.eigenvalues() - Eigen::VectorXcd::Constant(n, critical[0])).cwiseAbs().minCoeff(&i);
-  const double omega = es.eigenvalues()[i].imag();
-  Eigen::VectorXcd q = es.eigenvectors().col(i);
-  // Rotate q so that its largest component k is real: then x_k(t) ~ Re(q_k e^{i omega t}) has its extremum at
-  // t = 0, which is the orbit problem's phase condition f_k(x_0) = 0.
-  Eigen::Index k = 0;
-  q.cwiseAbs().maxCoeff(&k);
-  q *= std::conj(q[k]) / std::abs(q[k]);
-  q /= q.cwiseAbs().maxCoeff();
-  auto problem = std::make_unique<AutonomousOrbitProblem>(system, static_cast<int>(k), options.orbit);
-  const int N = problem->segments();
-  out.period = kTwoPi / omega;
-  Eigen::VectorXd X0(n * N + 1), delta = Eigen::VectorXd::Zero(n * N + 1);
-  for (int j = 0; j < N; ++j) {
-    X0.segment(j * n, n) = hb.x;
-    const std::complex<double> e = std::polar(1.0, kTwoPi * j / N);
-    delta.segment(j * n, n) = options.amplitude * (q * e).real();
-  }
-  X0[n * N] = out.period;
-  start_branch(*problem, X0, delta, hb.p, options, out);
-  out.problem = std::move(problem);
-  return out;
+  return continued(hopf_start(system, hb, options), options);
 }
 
 OrbitSwitchResult switch_at_period_doubling(const PeriodicOrbitProblem& problem, const SpecialPoint& pd,
                                             const OrbitSwitchOptions& options) {
-  options.validate();
-  require(pd.type == SpecialPointType::PD, "special_point", static_cast<double>(static_cast<int>(pd.type)),
-          "a PD (period doubling)");
-  require(pd.x.size() == problem.dimension(), "special_point", static_cast<double>(pd.x.size()),
-          "a point of this orbit problem");
-  OrbitSwitchResult out;
-  const Floquet fl = problem.floquet(pd.x, pd.p);
-  const auto critical = critical_values(fl.multipliers, StabilityKind::multipliers, options.critical_tol);
-  if (critical.size() != 1 || !(critical[0].real() < 0)) {
-    out.message = "not a simple period doubling at " + problem.parameter_name() + " = " + format_value(pd.p) +
-                  ": the multipliers on the unit circle are " + (critical.empty() ? "none" : list_values(critical)) +
-                  " (a simple PD has one multiplier -1)";
-    return out;
+  return continued(period_doubling_start(problem, pd, options), options);
+}
+
+OrbitSwitchStart orbit_switch_start(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& point,
+                                    const OrbitSwitchOptions& options) {
+  if (point.type == SpecialPointType::HB) {
+    if (const auto* eq = dynamic_cast<const AutonomousEquilibriumProblem*>(&problem))
+      return hopf_start(eq->system(), point, options);
+    const auto critical =
+        critical_values(problem.spectrum(point.x, point.p), StabilityKind::eigenvalues, options.critical_tol);
+    if (critical.size() > 1)
+      return refusal("a multiple Hopf point at " + problem.parameter_name() + " = " + format_value(point.p) +
+                     ": eigenvalues on the imaginary axis " + list_values(critical) +
+                     "; labels there: " + labels_at(branch, point) +
+                     ". Switching needs one simple pair (the symmetric onset is a family of orbits, "
+                     "docs/continuation.md)");
+    return refusal(
+        "a simple HB, but switching at an HB is supported on branches of autonomous systems' equilibria "
+        "only (AutonomousEquilibriumProblem), not this problem kind");
   }
-  const Eigen::EigenSolver<Eigen::MatrixXd> es(fl.monodromy, true);
-  Eigen::Index i = 0;
-  (es.eigenvalues() - Eigen::VectorXcd::Constant(es.eigenvalues().size(), -1.0)).cwiseAbs().minCoeff(&i);
-  Eigen::VectorXd v = es.eigenvectors().col(i).real();
-  v /= v.norm();
-  const Eigen::Index m = problem.dimension();
-  const Eigen::VectorXd V = problem.variation(pd.x, pd.p, v);
-  OrbitOptions o = problem.options();  // the parent's tolerances, on the same segment times
-  o.segments = 2 * problem.segments();
-  auto doubled = std::make_unique<PeriodicOrbitProblem>(problem.system(), o, 2 * problem.periods());
-  Eigen::VectorXd X0(2 * m), delta(2 * m);
-  X0 << pd.x, pd.x;
-  delta << options.amplitude * V, -options.amplitude * V;
-  out.period = 2 * kTwoPi * problem.periods();
-  start_branch(*doubled, X0, delta, pd.p, options, out);
-  out.problem = std::move(doubled);
-  return out;
+  if (point.type == SpecialPointType::PD) {
+    if (const auto* orbit = dynamic_cast<const PeriodicOrbitProblem*>(&problem))
+      return period_doubling_start(*orbit, point, options);
+    return refusal(
+        "switching at a PD is supported on forced periodic-orbit branches only (PeriodicOrbitProblem), not this "
+        "problem kind");
+  }
+  return refusal(std::string("no orbit switch at a ") + std::string(to_string(point.type)) +
+                 " point (HB and PD only; BP: switch_branch)");
 }
 
 OrbitSwitchResult switch_at(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& point,
                             const OrbitSwitchOptions& options) {
-  if (point.type == SpecialPointType::HB) {
-    if (const auto* eq = dynamic_cast<const AutonomousEquilibriumProblem*>(&problem))
-      return switch_at_hopf(eq->system(), point, options);
-    OrbitSwitchResult out;
-    const auto critical =
-        critical_values(problem.spectrum(point.x, point.p), StabilityKind::eigenvalues, options.critical_tol);
-    if (critical.size() > 1) {
-      out.message = "a multiple Hopf point at " + problem.parameter_name() + " = " + format_value(point.p) +
-                    ": eigenvalues on the imaginary axis " + list_values(critical) +
-                    "; labels there: " + labels_at(branch, point) +
-                    ". Switching needs one simple pair (the symmetric onset is a family of orbits, "
-                    "docs/continuation.md)";
-      return out;
-    }
-    out.message =
-        "a simple HB, but switching at an HB is supported on branches of autonomous systems' equilibria "
-        "only (AutonomousEquilibriumProblem), not this problem kind";
-    return out;
-  }
-  if (point.type == SpecialPointType::PD) {
-    if (const auto* orbit = dynamic_cast<const PeriodicOrbitProblem*>(&problem))
-      return switch_at_period_doubling(*orbit, point, options);
-    OrbitSwitchResult out;
-    out.message = "switching at a PD is supported on forced periodic-orbit branches only";
-    return out;
-  }
-  OrbitSwitchResult out;
-  out.message = std::string("no orbit switch at a ") + std::string(to_string(point.type)) +
-                " point (HB and PD only; BP: switch_branch)";
-  return out;
+  return continued(orbit_switch_start(problem, branch, point, options), options);
 }
 
 }  // namespace rbcstab

@@ -6,10 +6,13 @@
 //    repeated plus eps times the linearised solution through the -1 Floquet vector v (+v over the first k periods,
 //    -v over the second): the period-1 orbit repeated is a solution of the doubled problem, from which the doubled
 //    orbit leaves in a pitchfork along that direction.
-// Either way Newton on the hyperplane d.(X - X_0) = h (correct_on_hyperplane) gives the first point and the engine
-// continues away from the special point. A multiple point (another eigenvalue on the imaginary axis, another
+// Either way Newton on the hyperplane d.(X - X_0) = h (newton_on_hyperplane) gives the first point and the engine
+// continues away from the special point. At an HB whose normal form (normal_form_analysis.hpp) gives an amplitude
+// law, Newton starts at the parameter that law predicts for the predictor's amplitude (at p_HB otherwise, and
+// again at p_HB when that fails). A multiple point (another eigenvalue on the imaginary axis, another
 // multiplier on the unit circle) is refused with the critical values named: the simple-pair direction would be
 // one arbitrary member of a larger family (docs/continuation.md "Orbits from HB and PD points").
+#include <limits>
 #include <memory>
 #include <string>
 #include "rbcstab/continuation/dense.hpp"
@@ -39,6 +42,27 @@ struct OrbitSwitchResult {
   std::unique_ptr<ContinuationProblem> problem;
   Branch branch;  // the new branch, starting next to the special point
 };
+
+// The first point of the orbit branch and the problem it solves, before it is continued: what a diagram checks for
+// duplicates and follows (branch_tree.hpp). switch_at = orbit_switch_start, then continued.
+struct OrbitSwitchStart {
+  bool found = false;
+  // Not found because the point is not one this switch starts from (a multiple point, off the boundary, a problem
+  // kind or type it does not handle): message says which. Otherwise (found false, refused false) the corrector failed.
+  bool refused = false;
+  std::string message;
+  Eigen::VectorXd direction;  // d in (X, p), unit
+  double period = 0;
+  // HB: p_HB + side (peak / amplitude)^2 from the HB's normal form for the predictor's peak |x - x_HB|_2 (where
+  // Newton starts); NaN without a usable law (no normal form, degenerate) and at a PD.
+  double predicted_p = std::numeric_limits<double>::quiet_NaN();
+  std::unique_ptr<ContinuationProblem> problem;  // refers to the system, which must outlive it; null unless found
+  Eigen::VectorXd x;                             // the first point, of `problem`
+  double p = 0;
+  Direction away = Direction::forward;  // the continuation direction that leaves the special point
+};
+OrbitSwitchStart orbit_switch_start(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& point,
+                                    const OrbitSwitchOptions& options = {});
 
 // hb: an HB special point of a branch of AutonomousEquilibriumProblem(system).
 OrbitSwitchResult switch_at_hopf(const AutonomousSystem& system, const SpecialPoint& hb,

@@ -154,19 +154,42 @@ std::unique_ptr<SceneProblem> make_problem(const BranchSpec& spec, const Scene& 
   throw std::logic_error("unknown problem kind");
 }
 
-void identify_mode(const ContinuationProblem& problem, const std::vector<ShapeMode>& modes, SpecialPoint& sp) {
+void identify_mode(const ContinuationProblem& problem, const std::vector<ShapeMode>& modes, SpecialPoint& sp,
+                   const Branch* branch) {
   sp.mode_l.reset();
   sp.mode_m.reset();
   if (modes.empty() || static_cast<Eigen::Index>(modes.size()) != sp.x.size() || !sp.x.allFinite()) return;
   Eigen::MatrixXd J;
   problem.jacobian(sp.x, sp.p, J);
   if (!J.allFinite()) return;
-  const Eigen::EigenSolver<Eigen::MatrixXd> es(J);
+  Eigen::EigenSolver<Eigen::MatrixXd> es(J);
   if (es.info() != Eigen::Success) return;
+  const std::complex<double> target = sp.type == SpecialPointType::HB ? sp.eigenvalue : std::complex<double>(0.0);
   Eigen::Index k = 0;
-  (es.eigenvalues().array() - (sp.type == SpecialPointType::HB ? sp.eigenvalue : std::complex<double>(0.0)))
-      .abs()
-      .minCoeff(&k);
+  (es.eigenvalues().array() - target).abs().minCoeff(&k);
+  // An HB whose pair coincides with another eigenvalue on the axis (at Delta0 = 0 the l = 2, m = 1 pair stays at
+  // +-i/2, where the l = 3, m = 1 pair crosses): the nearest eigenvalue may be the one that does not cross. The
+  // crossing one is off the axis at the neighbouring branch point on the side with more unstable eigenvalues:
+  // the nearest to the pair there among those with Re > 1e-6 (1 + |lambda|).
+  const double tol = 1e-6 * (1 + std::abs(target));
+  const auto near_target = ((es.eigenvalues().array() - target).abs() <= tol).count();
+  if (sp.type == SpecialPointType::HB && near_target > 1 && branch && sp.after_index + 1 < branch->points.size()) {
+    const BranchPoint& side = branch->points[sp.after_index + (sp.unstable_after > sp.unstable_before ? 1 : 0)];
+    Eigen::MatrixXd Js;
+    problem.jacobian(side.x, side.p, Js);
+    if (!Js.allFinite()) return;
+    Eigen::EigenSolver<Eigen::MatrixXd> es_side(Js);
+    if (es_side.info() != Eigen::Success) return;
+    Eigen::Index best = -1;
+    for (Eigen::Index i = 0; i < es_side.eigenvalues().size(); ++i) {
+      const std::complex<double> z = es_side.eigenvalues()[i];
+      if (!(z.real() > 1e-6 * (1 + std::abs(z)))) continue;
+      if (best < 0 || std::abs(z - target) < std::abs(es_side.eigenvalues()[best] - target)) best = i;
+    }
+    if (best < 0) return;  // no crossing eigenvalue to tell them apart: no mode reported
+    es = std::move(es_side);
+    k = best;
+  }
   const Eigen::VectorXd w = es.eigenvectors().col(k).cwiseAbs2();
   const double total = w.sum();
   std::map<int, double> by_l;
@@ -185,7 +208,7 @@ void identify_mode(const ContinuationProblem& problem, const std::vector<ShapeMo
 MeasuredBranch measure_branch(const SceneProblem& sp, const SceneBranch& r, Branch b) {
   if (const std::vector<ShapeMode> modes = sp.unknown_modes(); !modes.empty())
     for (SpecialPoint& s : b.special_points)
-      if (s.type == SpecialPointType::BP || s.type == SpecialPointType::HB) identify_mode(sp.problem(), modes, s);
+      if (s.type == SpecialPointType::BP || s.type == SpecialPointType::HB) identify_mode(sp.problem(), modes, s, &b);
   return measured(std::move(b), measure_names(r.spec.kind, r.problem_scene.L), sp.problem().stability_kind(),
                   [&](const Eigen::VectorXd& x, double p) { return sp.measures(x, p); });
 }

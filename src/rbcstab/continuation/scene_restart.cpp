@@ -150,6 +150,8 @@ SceneBranch switch_at_label(const ContinuationRun& run, int label, const Restart
         switch_at(make_problem(ctx.spec, ctx.problem_scene)->problem(), m.branch, m.branch.special_points[lp.index]);
     throw InvalidArgument("switch_at", what + " is an HB: " + o.message);
   }
+  if (lp.type == to_string(SpecialPointType::PD) && lp.special)
+    throw InvalidArgument("switch_at", what + " is a PD: " + detail::kScenePeriodDoublingRefusal);
   if (lp.type != to_string(SpecialPointType::BP)) {
     std::string bps;
     for (const LabelledPoint& p : labelled_points(run))

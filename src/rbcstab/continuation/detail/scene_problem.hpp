@@ -38,8 +38,11 @@ class SceneProblem {
 
 // A BP's or HB's critical mode: the mode carrying >= 90 % of the eigenvector of the Jacobian's eigenvalue nearest
 // 0 (BP) or the HB's pair (sp.eigenvalue), m unset where the coordinates do not resolve it. Sets
-// sp.mode_l/mode_m; leaves them unset when no mode dominates.
-void identify_mode(const ContinuationProblem& problem, const std::vector<ShapeMode>& modes, SpecialPoint& sp);
+// sp.mode_l/mode_m; leaves them unset when no mode dominates. An HB whose pair coincides with another eigenvalue
+// is told apart at the neighbouring point of `branch` (the branch sp lies on), where the crossing pair is off the
+// axis; without the branch such an HB gets the nearest eigenvalue's mode.
+void identify_mode(const ContinuationProblem& problem, const std::vector<ShapeMode>& modes, SpecialPoint& sp,
+                   const Branch* branch = nullptr);
 
 std::unique_ptr<SceneProblem> make_problem(const BranchSpec& spec, const Scene& scene);
 MeasuredBranch measure_branch(const SceneProblem& sp, const SceneBranch& r, Branch b);

@@ -21,4 +21,11 @@ SwitchedBranch switch_with(const SceneProblem& sp, const SceneBranch& from, cons
                            const BranchSwitchOptions& options, int first_label);
 BranchSwitchOptions switch_options(const SceneBranch& from);
 
+// Why a scene's PD is not switched at (the diagram's not_available outcome, --switch-at's refusal): the doubled
+// orbit is a PeriodicOrbitProblem of its own (2 periods) that the scene kinds, measures and branch files do not
+// describe. This model's reduced orbits have no PD at all (above).
+inline constexpr const char* kScenePeriodDoublingRefusal =
+    "the doubled orbit of a scene's PD (2 periods) has no scene kind, measures or branch file yet "
+    "(switch_at_period_doubling does it for a PeriodicOrbitProblem in C++)";
+
 }  // namespace rbcstab::detail
