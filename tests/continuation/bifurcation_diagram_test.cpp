@@ -14,6 +14,8 @@
 #include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/continuation/branch_labels.hpp"
 #include "rbcstab/continuation/scene_restart.hpp"
+#include "rbcstab/io/files.hpp"
+#include "test_files.hpp"
 
 namespace rbcstab {
 namespace {
@@ -112,6 +114,26 @@ TEST(BifurcationDiagram, TreeJsonAndBranchFilesRestart) {
   const SceneBranch s = switch_at_label(run, l4, few);
   ASSERT_TRUE(s.switched && s.switched->switched) << (s.switched ? s.switched->message : "");
   EXPECT_NEAR(s.branch.branch.special_points[0].p, 1.0 / 60, 1e-9);
+}
+
+// save_diagram then load_diagram gives the same tree; a save of a smaller diagram under the same name removes the
+// larger one's extra branch files (plot <stem>.b*.json would draw them) but no other file.
+TEST(BifurcationDiagram, SaveLoadAndASmallerSaveLeavesNoStaleBranchFile) {
+  const std::filesystem::path dir = test::fresh_dir("diagram_test", "save");
+  const std::string path = (dir / "d.json").string();
+  const BifurcationDiagram& d = onset_diagram();
+  ASSERT_EQ(save_diagram(path, d).size(), 9u);
+  EXPECT_EQ(to_json(load_diagram(path)), to_json(d));
+  BifurcationDiagram small = d;
+  small.branches.resize(7);
+  small.emanations.clear();
+  write_file_atomic((dir / "d.b11.json").string(), "not a branch file\n");  // after a gap, and not a diagram's
+  save_diagram(path, small);
+  EXPECT_TRUE(std::filesystem::exists(dir / "d.b7.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "d.b8.json"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "d.b9.json"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "d.b11.json"));
+  std::filesystem::remove_all(dir);
 }
 
 // Bad input names the field; a spec that asks for switch_at_bp as well is refused.

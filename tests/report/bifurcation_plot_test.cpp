@@ -344,6 +344,16 @@ TEST(DrawPlot, WritesThePngAndWhatWasDrawnOrNothing) {
 
   o.output = (dir / "b.png").string();  // its JSON would replace the input
   expect_invalid([&] { (void)draw_plot(spec, o); }, "output");
+  // A file sharing the stem that is not a plot's JSON (a diagram's tree d.json beside d.b1.json) is kept; an
+  // earlier plot's JSON is replaced.
+  const std::string tree = "{\"format\": \"rbcstab-diagram\"}\n";
+  write_file_atomic((dir / "d.json").string(), tree);
+  o.output = (dir / "d.png").string();
+  expect_invalid([&] { (void)draw_plot(spec, o); }, "output");
+  EXPECT_EQ(read_file((dir / "d.json").string()), tree);
+  fs::remove(dir / "d.json");
+  o.output = (dir / "fig.png").string();
+  EXPECT_EQ(draw_plot(spec, o).json, (dir / "fig.json").string());
   o.output = (dir / "fig.svg").string();
   expect_invalid([&] { (void)draw_plot(spec, o); }, "output");
   o.output = (dir / "none" / "fig.png").string();

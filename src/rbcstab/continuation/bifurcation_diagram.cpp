@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <iomanip>
 #include <sstream>
 #include <utility>
@@ -307,6 +308,16 @@ std::vector<std::string> save_diagram(const std::string& path, const Bifurcation
     files.push_back({paths.back(), diagram_branch_file(d, k).dump(1) + "\n", flag});
   }
   write_files_atomic(files);
+  // Branch files of an earlier, larger diagram saved under the same name would be drawn with this one by
+  // `plot <stem>.b*.json`: they go, but only files that are a diagram's branch files.
+  for (std::size_t k = d.branches.size();; ++k) {
+    const std::string stale = branch_path(path, k);
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(stale, ec)) break;
+    const nlohmann::json old = nlohmann::json::parse(read_file(stale, flag), nullptr, /*allow_exceptions=*/false);
+    if (!old.is_object() || !old.contains("diagram")) break;
+    std::filesystem::remove(stale, ec);
+  }
   return paths;
 }
 

@@ -90,7 +90,8 @@ nlohmann::json diagram_branch_file(const BifurcationDiagram& d, std::size_t k);
 // was done on each side).
 std::string to_text(const BifurcationDiagram& d);
 // `path` (to_json) and beside it one branch file per branch, "<stem>.b<K>.json" (K = 1, 2, ...), all written
-// atomically together (io/files.hpp); returns the branch files' paths.
+// atomically together (io/files.hpp); returns the branch files' paths. Branch files "<stem>.b<K>.json" beyond
+// these left by an earlier save of a larger diagram (files with a "diagram" key) are removed.
 std::vector<std::string> save_diagram(const std::string& path, const BifurcationDiagram& d,
                                       const std::string& flag = "save");
 // The diagram back from its tree JSON and its branch files (in branch order), each checked (parse_branch_file);

@@ -49,7 +49,7 @@ ReducedForcedSystem::ReducedForcedSystem(const Scene& scene, ContinuationParamet
 const ReducedModel& ReducedForcedSystem::model(double p) const {
   auto it = cache_.find(p);
   if (it == cache_.end()) {
-    if (cache_.size() >= 8) cache_.clear();  // no reference is held across calls (see parameter_derivative)
+    if (cache_.size() >= 8) cache_.clear();             // no reference is held across calls (see parameter_derivative)
     const Scene at = with_parameter(scene_, free_, p);  // throws InvalidArgument outside p's domain
     // beta turns the rest shape: its direction is rebuilt per value (cached with the model).
     it = cache_.try_emplace(p, at.parameters, free_ == ContinuationParameter::beta ? oriented_initial_state(at) : init_)

@@ -89,6 +89,15 @@ void PlotDrawOptions::validate() const {
   if (python.empty()) throw InvalidArgument("python", "python: an interpreter path is required");
 }
 
+namespace {
+bool is_plot_document(const fs::path& path) {
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) return false;
+  const json doc = json::parse(read_file(path.string(), "output"), nullptr, /*allow_exceptions=*/false);
+  return doc.is_object() && doc.value("format", std::string()) == "rbcstab-plot";
+}
+}  // namespace
+
 std::string plot_json_path(const std::string& png) { return fs::path(png).replace_extension(".json").string(); }
 
 PlotFiles draw_plot(const PlotSpec& spec, const PlotDrawOptions& o) {
@@ -105,6 +114,12 @@ PlotFiles draw_plot(const PlotSpec& spec, const PlotDrawOptions& o) {
     if (fs::equivalent(s.source, json_path, ec))
       throw InvalidArgument("output", "output = '" + o.output + "' would write " + json_path.string() +
                                           " over the input " + s.source + "; choose another name");
+  // The JSON of what was drawn may replace an earlier one, never another file that happens to share the stem
+  // (`continue --diagram --save d.json` then `plot d.b*.json --output d.png`).
+  if (fs::exists(json_path, ec) && !is_plot_document(json_path))
+    throw InvalidArgument("output", "output = '" + o.output + "' would write the JSON of what was drawn over " +
+                                        json_path.string() + ", which is not a plot's JSON (format rbcstab-plot); " +
+                                        "choose another name");
   check_python(o.python);
   // Drawn under hidden names beside the targets, renamed into place when both are complete.
   const fs::path dir = png.parent_path();
