@@ -2,10 +2,15 @@
 // requested grid over the rows' span, the residuals of the fit's rows, and bad requests refused by name.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <string>
 
+#include "png_size.hpp"
 #include "rbcstab/core/error.hpp"
+#include "rbcstab/io/files.hpp"
 #include "rbcstab/report/fit_page.hpp"
+#include "rbcstab/report/report.hpp"
+#include "test_files.hpp"
 
 namespace rbcstab {
 namespace {
@@ -63,6 +68,26 @@ TEST(FitPage, PanelsCurvesAndResiduals) {
   // A single shear rate: one curve point, the span a point.
   EXPECT_EQ(page.at("panels")[1].at("curve").at("shear_rate").size(), 1u);
   EXPECT_EQ(page.at("residuals").size(), 3u);
+}
+
+// The drawing script draws the page's JSON as given: one figure, every panel, each curve over its computed span.
+TEST(FitPage, DrawingScriptDrawsWhatTheJsonSays) {
+  const std::filesystem::path dir = test::fresh_dir("fit_page", "draw");
+  FitPageOptions o;
+  o.curve_points = 7;
+  const nlohmann::json page = fit_page_json(page_fit(), page_data(), o);
+  write_file_atomic((dir / "fit_page.json").string(), page.dump(1), "test");
+  const std::string cmd = "/usr/bin/python3 '" + find_script_dir("") + "/fit_draw.py' '" +
+                          (dir / "fit_page.json").string() + "' '" + (dir / "fig_fit.png").string() + "' > '" +
+                          (dir / "drawn.json").string() + "' 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << test::slurp(dir / "drawn.json");
+  const nlohmann::json drawn = nlohmann::json::parse(test::slurp(dir / "drawn.json"));
+  EXPECT_EQ(drawn.at("figures"), 1);
+  ASSERT_EQ(drawn.at("panels").size(), page.at("panels").size());
+  for (std::size_t k = 0; k < page.at("panels").size(); ++k)
+    EXPECT_EQ(drawn.at("panels")[k].at("curve_span"), page.at("panels")[k].at("curve").at("span")) << k;
+  EXPECT_GT(png_size(dir / "fig_fit.png").first, 0);
+  std::filesystem::remove_all(dir);
 }
 
 TEST(FitPage, BadRequestsAreRefusedByName) {
