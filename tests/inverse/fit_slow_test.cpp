@@ -40,8 +40,9 @@ TEST(FitSlow, ProfileOfAWellDeterminedParameterAgreesWithFisher) {
   // interval is the Fisher one. Here the model is smooth and the interval narrow (se of ln mu ~ 0.02), so the
   // profile departs from that parabola only by the residuals' curvature over +-1.96 se: a few per cent of the
   // half-width. The test asks for the parabola at one se to 10 % and the ends to 10 % of the half-width (the
-  // default nonlinearity tolerance); a profile that did not re-optimise the other parameter (the correlation is
-  // -0.18) or read the ends off the grid (one se apart) would be further off than that.
+  // default nonlinearity tolerance), and each end at Delta chi^2 = 3.84 to 2e-3: an end read off the one-se grid
+  // would sit at Delta chi^2 ~ 4. (Skipping the re-fit of the other parameter would narrow the interval by only
+  // 1 - sqrt(1 - 0.18^2) ~ 1.6 % here, below what this test resolves.)
   const CellModel truth = synthetic_cell();
   const ObservationData data = synthetic_data(truth, 1.0, 7);
   FitOptions o;
