@@ -58,6 +58,16 @@ Runner add_fit(CLI::App& app) {
   add_integer(app, "--starts", o->fit.starts, 1, 64, "Ipopt starts: the given one, then spread ones");
   add_integer(app, "--max-iterations", o->fit.max_iterations, 1, 10000, "Ipopt iterations per start");
   add_integer(app, "--seed", o->fit.seed, 0, 4294967295LL, "seed of the spread starts");
+  app.add_flag("--profiles", o->fit.profiles.enabled,
+               "profile likelihoods: each free parameter held on a grid while the others are re-fitted; 95 % "
+               "intervals where Delta chi^2 crosses 3.84, flat ones named (docs/inverse.md)");
+  add_integer(app, "--profile-points", o->fit.profiles.points, 1, 50,
+              "profile grid points on each side of the estimate within --profile-span");
+  app.add_option("--profile-span", o->fit.profiles.span,
+                 "reach of the profile grid in Fisher standard errors, in (0, 50] (beyond it doubling steps to the "
+                 "bound)")
+      ->check(number_above(0, true))
+      ->capture_default_str();
   app.add_option("--save", o->save, "write the result as JSON to this file")->check(output_name());
   app.add_flag("--json", o->json, "print one JSON object on stdout");
   return [o] { return run(*o); };

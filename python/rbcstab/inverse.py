@@ -10,7 +10,7 @@ __all__ = ["FitResult", "fit"]
 class FitResult(Report):
     """A fit (rbcstab fit --json as a dict): ``status`` (converged, infeasible, maximum_iterations, failed),
     ``estimates`` (per free parameter: value in SI units, 95 % interval ``lo95``/``hi95``, ``identifiable``),
-    ``chi2``, ``residuals`` per row, ``covariance`` and ``correlation`` of the fitted coordinates, and the
+    ``chi2``, ``residuals`` per row, each estimate's ``profile`` (with profiles=True), ``covariance`` and ``correlation`` of the fitted coordinates, and the
     statements of what the data cannot identify (``unidentifiable``); the CLI's text in ``.text``."""
 
     def estimate(self, name):
@@ -44,7 +44,8 @@ def _fixed_text(fixed):
     return ",".join(items)
 
 
-def fit(data, free, fixed=None, starts=4, max_iterations=100, seed=1):
+def fit(data, free, fixed=None, starts=4, max_iterations=100, seed=1, profiles=False, profile_points=4,
+        profile_span=4.0):
     """Fits the free parameters to the observations in the CSV file `data` (rbcstab fit).
 
     data: path of the observations CSV (docs/inverse.md "Data format"). free: names of the parameters to fit
@@ -52,10 +53,16 @@ def fit(data, free, fixed=None, starts=4, max_iterations=100, seed=1):
     fixed: dict of fixed values and starts, numbers in SI units (bending_modulus [J], shear_modulus [N/m],
     radius [m], inner_viscosity in Pa s) or strings with a unit ("6uN/m"); lambda, Delta and Delta0 are
     dimensionless. starts: Ipopt starts, an integer in [1, 64]. max_iterations: Ipopt iterations per start, an
-    integer in [1, 10000]. seed: seed of the spread starts, an integer in [0, 4294967295].
+    integer in [1, 10000]. seed: seed of the spread starts, an integer in [0, 4294967295]. profiles: True adds each free parameter's profile likelihood
+    (``estimate(name)["profile"]``: the grid, Delta chi^2, the 95 % profile interval, ``flat``, ``nonlinear`` and a
+    plain ``statement``; docs/inverse.md "Profile likelihoods"). profile_points: profile grid points on each side
+    of the estimate, an integer in [1, 50]. profile_span: reach of that grid in Fisher standard errors (of the
+    fitted coordinate, dimensionless), in (0, 50].
     Returns a FitResult; ValueError for bad data (naming the file line and column) or a bad parameter."""
     path = _args.text("data", data)
     names = _args.names("free", free)
     doc, text = _rbcstab.fit(path, names, _fixed_text(fixed), _args.integer("starts", starts),
-                             _args.integer("max_iterations", max_iterations), _args.integer("seed", seed))
+                             _args.integer("max_iterations", max_iterations), _args.integer("seed", seed), _args.flag("profiles", profiles),
+                             _args.integer("profile_points", profile_points),
+                             _args.number("profile_span", profile_span))
     return FitResult("fit", doc, text)

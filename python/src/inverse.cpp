@@ -8,8 +8,11 @@ namespace rbcstab::python {
 
 namespace {
 py::tuple fit_data(const std::string& data, const std::vector<std::string>& free, const std::string& fixed, int starts,
-                   int max_iterations, unsigned seed) {
+                   int max_iterations, unsigned seed, bool profiles, int profile_points, double profile_span) {
   FitOptions o;
+  o.profiles.enabled = profiles;
+  o.profiles.points = profile_points;
+  o.profiles.span = profile_span;
   o.starts = starts;
   o.max_iterations = max_iterations;
   o.seed = seed;
@@ -30,8 +33,9 @@ py::tuple fit_data(const std::string& data, const std::vector<std::string>& free
 
 void bind_inverse(py::module_& m) {
   m.def("fit", &fit_data, py::arg("data"), py::arg("free"), py::arg("fixed"), py::arg("starts"),
-        py::arg("max_iterations"), py::arg("seed"),
-        "(json dict, text): rbcstab fit --data DATA --free FREE --fixed FIXED --json and its text.");
+        py::arg("max_iterations"), py::arg("seed"), py::arg("profiles"), py::arg("profile_points"),
+        py::arg("profile_span"),
+        "(json dict, text): rbcstab fit --data DATA --free FREE --fixed FIXED [--profiles] --json and its text.");
 }
 
 }  // namespace rbcstab::python

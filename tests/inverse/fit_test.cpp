@@ -2,7 +2,10 @@
 // statuses, and the plain statement of what the data cannot identify.
 #include <gtest/gtest.h>
 
+#include <Eigen/Dense>
+
 #include <cmath>
+#include <cstdio>
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/inverse/fit.hpp"
@@ -97,6 +100,100 @@ TEST(Fit, StatusesAreNeverSilent) {
   EXPECT_NE(r.message.find("did not converge"), std::string::npos) << r.message;
 }
 
+TEST(Fit, ProfileOfOneParameterAgreesWithFisher) {
+  // One free parameter: the profile is chi^2 along it (nothing to re-fit). The same justification as
+  // FitSlow.ProfileOfAWellDeterminedParameterAgreesWithFisher: the parabola (x - xhat)^2/se^2 at one se to 10 %,
+  // the ends within 10 % of the Fisher half-width, each at Delta chi^2 = 3.84 (not a grid point).
+  const CellModel truth = synthetic_cell();
+  const ObservationData data = synthetic_data(truth, 1.0, 7);
+  FitOptions o;
+  o.starts = 1;
+  o.profiles.enabled = true;
+  const FitResult r = fit(data, {"lambda"}, truth, o);
+  ASSERT_EQ(r.status, FitStatus::converged) << r.message;
+  const FitEstimate& e = r.estimates[0];
+  const Profile& p = e.profile;
+  SCOPED_TRACE(p.statement);
+  ASSERT_TRUE(std::isfinite(p.lo95) && std::isfinite(p.hi95));
+  EXPECT_FALSE(p.flat);
+  const double x = std::log(e.value), se = e.standard_error;
+  for (double side : {-1.0, 1.0}) EXPECT_NEAR(profile_at(p, x + side * se), 1.0, 0.1);
+  EXPECT_NEAR(profile_at(p, std::log(p.lo95)), 3.841458820694124, 2e-3);
+  EXPECT_NEAR(profile_at(p, std::log(p.hi95)), 3.841458820694124, 2e-3);
+  EXPECT_LT(p.max_shift, 0.1);
+  EXPECT_FALSE(p.nonlinear);
+  std::printf("lambda alone: profile [%.6g, %.6g] Fisher [%.6g, %.6g] shift %.4f solves %d\n", p.lo95, p.hi95, e.lo95,
+              e.hi95, p.max_shift, p.solves);
+  EXPECT_NE(fit_text(r).find("profile of lambda: 95 % interval"), std::string::npos) << fit_text(r);
+  EXPECT_EQ(to_json(r)["estimates"][0]["profile"]["flat"], false);
+}
+
+TEST(Fit, ProfileOfKappaAloneIsFlat) {
+  const CellModel truth = synthetic_cell();
+  const ObservationData data = synthetic_data(truth, 0.0, 1);
+  FitOptions o;
+  o.starts = 1;
+  o.profiles.enabled = true;
+  const FitResult r = fit(data, {"kappa"}, truth, o);
+  const Profile& p = r.estimates[0].profile;
+  EXPECT_TRUE(p.flat) << p.statement;
+  EXPECT_TRUE(std::isnan(p.lo95) && std::isnan(p.hi95));
+  EXPECT_NEAR(p.coordinate.front(), std::log(r.estimates[0].parameter.lo), 1e-12);
+  EXPECT_NEAR(p.coordinate.back(), std::log(r.estimates[0].parameter.hi), 1e-12);
+  for (double d : p.delta_chi2) EXPECT_EQ(d, 0.0);
+  EXPECT_NE(p.statement.find("as the Fisher information says"), std::string::npos) << p.statement;
+  ASSERT_EQ(r.unidentifiable.size(), 1u);
+  EXPECT_NE(r.unidentifiable[0].find("an observation of the shape-instability onset"), std::string::npos)
+      << r.unidentifiable[0];
+}
+
+// Smallest over largest eigenvalue of the Fisher information J^T J at `cell`.
+double fisher_ratio(std::span<const ObservedRow> rows, std::span<const FitParameter> free, const CellModel& cell) {
+  const Linearisation lin = linearise(rows, free, cell, FitOptions{}, 1e-4);
+  EXPECT_TRUE(lin.ok) << lin.reason;
+  const std::size_t n = free.size();
+  Eigen::MatrixXd J(lin.r.size(), n);
+  for (std::size_t i = 0; i < lin.r.size(); ++i)
+    for (std::size_t j = 0; j < n; ++j) J(i, j) = lin.J[i][j];
+  const Eigen::VectorXd ev = Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(J.transpose() * J).eigenvalues();
+  double lo = kNotGiven, hi = kNotGiven;
+  for (Eigen::Index k = 0; k < ev.size(); ++k) {
+    lo = k == 0 ? ev(k) : std::min(lo, ev(k));
+    hi = k == 0 ? ev(k) : std::max(hi, ev(k));
+  }
+  return lo / hi;
+}
+
+TEST(Fit, SaysWhichObservationWouldPinAFlatDirection) {
+  // lambda and Delta enter only through Lambda: flat with lambda held across viscosities; the statement says that
+  // fitting the inner viscosity over two outer viscosities would pin it, and so it does (the Fisher information
+  // becomes regular), while one viscosity does not.
+  CellModel truth = synthetic_cell();
+  const ObservationData data = synthetic_data(truth, 0.0, 1);
+  FitOptions o;
+  o.starts = 1;
+  o.max_iterations = 2;  // the statement comes from the Fisher information wherever Ipopt stops in the valley
+  const FitResult r = fit(data, {"lambda", "Delta"}, truth, o);
+  ASSERT_EQ(r.unidentifiable.size(), 1u) << r.message;
+  EXPECT_NE(r.unidentifiable[0].find("Fitting inner_viscosity instead of lambda with rows at two or more outer"),
+            std::string::npos)
+      << r.unidentifiable[0];
+  const std::vector<FitParameter> by_lambda{FitParameter::lambda, FitParameter::Delta};
+  EXPECT_LT(fisher_ratio(data.rows, by_lambda, truth), 1e-8);
+
+  truth.inner_viscosity = 5e-3;  // lambda = 5 at 1 mPa s, 2.5 at 2 mPa s
+  const ObservationData two = synthetic_data(truth, 0.0, 1);
+  std::vector<ObservedRow> one;
+  for (const ObservedRow& row : two.rows)
+    if (row.viscosity == 1e-3) one.push_back(row);
+  const std::vector<FitParameter> by_eta_in{FitParameter::inner_viscosity, FitParameter::Delta};
+  const double ratio_two = fisher_ratio(two.rows, by_eta_in, truth), ratio_one = fisher_ratio(one, by_eta_in, truth);
+  std::printf("Fisher eigenvalue ratio: lambda, Delta %.3g; eta_in, Delta at two viscosities %.3g, at one %.3g\n",
+              fisher_ratio(data.rows, by_lambda, synthetic_cell()), ratio_two, ratio_one);
+  EXPECT_GT(ratio_two, 1e-4);
+  EXPECT_LT(ratio_one, 1e-8);
+}
+
 TEST(Fit, RefusesBadRequests) {
   const CellModel truth = synthetic_cell();
   const ObservationData data = synthetic_data(truth, 0.0, 1);
@@ -106,6 +203,12 @@ TEST(Fit, RefusesBadRequests) {
   FitOptions o;
   o.starts = 0;
   EXPECT_THROW(fit(data, {"mu"}, truth, o), InvalidArgument);
+  FitOptions bad_profile;
+  bad_profile.profiles.points = 0;
+  EXPECT_THROW(fit(data, {"mu"}, truth, bad_profile), InvalidArgument);
+  bad_profile.profiles.points = 4;
+  bad_profile.profiles.span = -1;
+  EXPECT_THROW(fit(data, {"mu"}, truth, bad_profile), InvalidArgument);
   CellModel outside = truth;
   outside.shear_modulus = 1.0;  // N/m: beyond plausible_range
   EXPECT_THROW(fit(data, {"mu"}, outside), InvalidArgument);

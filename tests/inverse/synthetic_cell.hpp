@@ -3,6 +3,7 @@
 #include <random>
 #include <string>
 
+#include "rbcstab/inverse/fit.hpp"
 #include "rbcstab/inverse/forward.hpp"
 
 namespace rbcstab {
@@ -43,6 +44,13 @@ inline ObservationData synthetic_data(const CellModel& truth, double noise, unsi
         d.rows.push_back(row);
       }
   return d;
+}
+
+// Delta chi^2 of the profile at coordinate x (exactly a recorded point).
+inline double profile_at(const Profile& p, double x) {
+  for (std::size_t k = 0; k < p.coordinate.size(); ++k)
+    if (std::abs(p.coordinate[k] - x) < 1e-12) return p.delta_chi2[k];
+  return kNotGiven;
 }
 
 }  // namespace rbcstab

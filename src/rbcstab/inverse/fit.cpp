@@ -75,13 +75,14 @@ double coordinate_bound(const FitParameterInfo& i, double v) {
 class LeastSquaresNlp final : public Ipopt::TNLP {
  public:
   LeastSquaresNlp(std::vector<ObservedRow> rows, std::vector<FitParameter> free, const CellModel& cell,
-                  const FitOptions& options, std::vector<double> start)
+                  const FitOptions& options, std::vector<double> start, int held = -1)
       : rows_(std::move(rows)),
         free_(std::move(free)),
         cell_(cell),
         options_(options),
         info_(infos_of(free_, cell)),
-        start_(std::move(start)) {}
+        start_(std::move(start)),
+        held_(held) {}
 
   std::vector<double> solution;
   Ipopt::SolverReturn solver_status = Ipopt::UNASSIGNED;
@@ -99,6 +100,8 @@ class LeastSquaresNlp final : public Ipopt::TNLP {
     for (Index j = 0; j < n; ++j) {
       x_l[j] = coordinate_bound(info_[j], info_[j].lo);
       x_u[j] = coordinate_bound(info_[j], info_[j].hi);
+      // A profile's held coordinate: equal bounds, which Ipopt turns into a parameter (fixed_variable_treatment).
+      if (j == held_) x_l[j] = x_u[j] = start_[j];
     }
     return true;
   }
@@ -171,6 +174,7 @@ class LeastSquaresNlp final : public Ipopt::TNLP {
   FitOptions options_;
   std::vector<FitParameterInfo> info_;
   std::vector<double> start_;
+  Index held_;
   std::vector<double> x_;
   bool have_J_ = false;
   Linearisation lin_;
@@ -214,6 +218,252 @@ std::string ipopt_name(Ipopt::ApplicationReturnStatus s) {
 
 std::string coordinate_name(const FitParameterInfo& i) { return i.log_scale ? "ln " + i.name : i.name; }
 
+double chi2_of(std::span<const double> r) {
+  double c = 0;
+  for (double v : r) c += v * v;
+  return c;
+}
+
+// One Ipopt solve from `start` (coordinate `held` fixed at its start when >= 0) and chi^2 at its end.
+struct Solve {
+  FitStatus status = FitStatus::failed;
+  std::string ipopt_status;
+  std::vector<double> end;
+  double chi2 = kNotGiven;
+  int iterations = 0, evaluations = 0;
+};
+Solve solve(const std::vector<ObservedRow>& rows, const std::vector<FitParameter>& free, const CellModel& cell,
+            const FitOptions& options, const std::vector<double>& start, int held = -1) {
+  Solve out;
+  Ipopt::SmartPtr<LeastSquaresNlp> nlp = new LeastSquaresNlp(rows, free, cell, options, start, held);
+  Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
+  app->Options()->SetNumericValue("tol", options.tol);
+  app->Options()->SetIntegerValue("max_iter", options.max_iterations);
+  app->Options()->SetIntegerValue("print_level", 0);
+  app->Options()->SetStringValue("sb", "yes");  // no banner: only apps/ print
+  if (held >= 0) {
+    // A profile point starts at its neighbour's optimum: a small initial barrier and bound push keep Ipopt there
+    // instead of first pushing the point into the interior and walking the barrier down from 0.1.
+    app->Options()->SetNumericValue("mu_init", 1e-7);
+    app->Options()->SetNumericValue("bound_push", 1e-9);
+    app->Options()->SetNumericValue("bound_frac", 1e-9);
+  }
+  if (app->Initialize() != Ipopt::Solve_Succeeded) {
+    out.ipopt_status = "Ipopt could not be initialised";
+    out.end = start;
+    return out;
+  }
+  const Ipopt::ApplicationReturnStatus rs = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(GetRawPtr(nlp)));
+  out.evaluations = nlp->evaluations;
+  out.status = status_of(rs);
+  out.ipopt_status = ipopt_name(rs);
+  if (Ipopt::IsValid(app->Statistics())) out.iterations = app->Statistics()->IterationCount();
+  out.end = nlp->solution.empty() ? start : nlp->solution;
+  std::vector<double> r;
+  std::string why;
+  if (!nlp->solution.empty() &&
+      residuals_at(rows, cell_at(cell, infos_of(free, cell), out.end), options.forward, r, why)) {
+    out.chi2 = chi2_of(r);
+  } else {
+    out.status = FitStatus::failed;
+    if (!why.empty()) out.ipopt_status += " (" + why + ")";
+  }
+  return out;
+}
+
+// Which observation would pin a flat direction, from what the forward model's observables depend on (docs/inverse.md
+// "What would pin a flat direction"): the reduced l = 2 motion holds Lambda(lambda, Delta) and S = C sqrt(15 pi /
+// (2 Delta0)), C = eta gamma R / mu, and nothing else.
+std::string what_would_pin(const std::vector<FitParameter>& involved) {
+  auto has = [&](FitParameter q) { return std::find(involved.begin(), involved.end(), q) != involved.end(); };
+  auto only = [&](std::initializer_list<FitParameter> set) {
+    return std::all_of(involved.begin(), involved.end(),
+                       [&](FitParameter q) { return std::find(set.begin(), set.end(), q) != set.end(); });
+  };
+  if (has(FitParameter::bending_modulus))
+    return "What would pin it: no in-plane observable depends on bending_modulus (B = eta gamma R^3/kappa enters "
+           "only the l >= 3 modes, which stay zero for an ellipsoidal cell until a shape instability grows); an "
+           "observation of the shape-instability onset or of the excited mode, whose criterion holds B, would, but "
+           "this model does not predict it yet; or a direct measurement of kappa (e.g. flicker spectroscopy)";
+  if (only({FitParameter::shear_modulus, FitParameter::Delta0, FitParameter::radius}))
+    return "What would pin it: these enter the motion only through S = C sqrt(15 pi/(2 Delta0)) with C = eta "
+           "gamma R/mu, i.e. through R/(mu sqrt(Delta0)), at every shear rate and viscosity, so no observable of "
+           "this model separates them; a direct measurement of the radius (images) or of the shear modulus "
+           "(micropipette aspiration, optical tweezers) would, or the shape-instability onset (its criterion holds C "
+           "and Delta0 separately), which this model does not "
+           "predict yet";
+  if (only({FitParameter::lambda, FitParameter::Delta}))
+    return "What would pin it: lambda and Delta enter the motion only through Lambda = sqrt(Delta) (23 lambda + "
+           "32)/(8 sqrt(30 pi)); with lambda held at one value for every viscosity no observable separates them. "
+           "Fitting inner_viscosity instead of lambda with rows at two or more outer viscosities would (lambda = "
+           "eta_in/eta then changes with eta at fixed Delta), as would a direct measurement of Delta (the cell's "
+           "area and volume)";
+  if (only({FitParameter::inner_viscosity, FitParameter::Delta}))
+    return "What would pin it: inner_viscosity and Delta enter the motion only through Lambda = sqrt(Delta) (23 "
+           "eta_in/eta + 32)/(8 sqrt(30 pi)); rows at two or more outer viscosities separate them, one viscosity "
+           "does not";
+  return "What would pin it: the flat direction mixes parameters of Lambda(lambda, Delta) and of S; rows at more "
+         "shear rates (S is proportional to the shear rate at fixed Lambda) separate the two groups";
+}
+
+constexpr double kChi2OneDof95 = 3.841458820694124;  // the 0.95 quantile of chi^2 with 1 degree of freedom
+constexpr double kZ95 = 1.959963984540054;
+
+// The profile of coordinate j through the estimate xhat (chi^2 = chi2_min): a side walks outward on the grid
+// (span * se / points per step within the span, then doubling steps to the bound; a flat parameter: points steps
+// to the bound), each point re-optimised from its neighbour's optimum; between the last point below 3.84 and the
+// first above, the crossing is found by the Illinois secant to |Delta chi^2 - 3.84| < 1e-3.
+Profile profile_of(const std::vector<ObservedRow>& rows, const std::vector<FitParameter>& free, const CellModel& cell,
+                   const FitOptions& options, std::span<const FitParameterInfo> info, std::span<const double> lo,
+                   std::span<const double> hi, const std::vector<double>& xhat, double chi2_min, std::size_t j,
+                   double se, int& evaluations) {
+  Profile p;
+  p.computed = true;
+  const ProfileOptions& po = options.profiles;
+  struct Point {
+    double delta = kNotGiven;
+    std::vector<double> x;
+    bool ok = false;
+    std::string why;
+  };
+  auto at = [&](double value, const std::vector<double>& warm) {
+    Point q;
+    q.x = warm;
+    q.x[j] = value;
+    ++p.solves;
+    if (free.size() == 1) {
+      std::vector<double> r;
+      ++evaluations;
+      q.ok = residuals_at(rows, cell_at(cell, info, q.x), options.forward, r, q.why);
+      if (q.ok) q.delta = chi2_of(r) - chi2_min;
+      return q;
+    }
+    const Solve s = solve(rows, free, cell, options, q.x, static_cast<int>(j));
+    evaluations += s.evaluations;
+    p.iterations += s.iterations;
+    q.ok = s.status != FitStatus::failed && std::isfinite(s.chi2);
+    q.why = s.ipopt_status;
+    if (q.ok) {
+      q.x = s.end;
+      q.delta = s.chi2 - chi2_min;
+    }
+    return q;
+  };
+  std::vector<std::pair<double, double>> curve{{xhat[j], 0.0}};
+  double ends[2] = {kNotGiven, kNotGiven};
+  std::string side_reason[2];
+  bool reached[2] = {false, false};  // walked to the bound without crossing
+  const bool identifiable = std::isfinite(se) && se > 0;
+  for (int side = 0; side < 2; ++side) {
+    const double dir = side == 0 ? -1.0 : 1.0;
+    const double bound = side == 0 ? lo[j] : hi[j];
+    const double room = std::abs(bound - xhat[j]);
+    if (room < 1e-12) {
+      reached[side] = true;
+      continue;
+    }
+    double step = identifiable ? std::min(po.span * se / po.points, room) : room / po.points;
+    Point prev{0.0, xhat, true, ""};
+    double travelled = 0;
+    for (int k = 0; k < 200 && travelled < room - 1e-12; ++k) {
+      if (identifiable && travelled >= po.span * se - 1e-12) step *= 2;
+      const double d = std::min(travelled + step, room);
+      const Point q = at(xhat[j] + dir * d, prev.x);
+      if (!q.ok) {
+        side_reason[side] =
+            "no fit at " + coordinate_name(info[j]) + " = " + format_value(xhat[j] + dir * d) + " (" + q.why + ")";
+        break;
+      }
+      curve.emplace_back(xhat[j] + dir * d, q.delta);
+      if (q.delta >= kChi2OneDof95) {
+        // Illinois: regula falsi on g = Delta chi^2 - 3.84 over [travelled, d], the retained end's g halved.
+        double a = travelled, ga = prev.delta - kChi2OneDof95, b = d, gb = q.delta - kChi2OneDof95;
+        std::vector<double> wa = prev.x, wb = q.x;
+        double c = b;
+        for (int it = 0; it < 30 && std::abs(gb) > 1e-3 && std::abs(b - a) > 1e-10; ++it) {
+          c = b - gb * (b - a) / (gb - ga);
+          const Point m = at(xhat[j] + dir * c, wa);
+          if (!m.ok) break;
+          curve.emplace_back(xhat[j] + dir * c, m.delta);
+          const double gc = m.delta - kChi2OneDof95;
+          if ((gc > 0) == (gb > 0)) {
+            ga *= 0.5;
+          } else {
+            a = b;
+            ga = gb;
+            wa = wb;
+          }
+          b = c;
+          gb = gc;
+          wb = m.x;
+        }
+        ends[side] = xhat[j] + dir * b;
+        break;
+      }
+      prev = q;
+      travelled = d;
+    }
+    reached[side] = !std::isfinite(ends[side]) && side_reason[side].empty();
+    if (reached[side])
+      side_reason[side] = "Delta chi^2 stays below 3.84 up to the " + std::string(side == 0 ? "lower" : "upper") +
+                          " bound " + coordinate_name(info[j]) + " = " + format_value(bound);
+  }
+  std::sort(curve.begin(), curve.end());
+  for (const auto& [x, d] : curve) {
+    p.coordinate.push_back(x);
+    p.delta_chi2.push_back(d);
+  }
+  auto si = [&](double x) { return info[j].log_scale ? std::exp(x) : x; };
+  if (std::isfinite(ends[0])) p.lo95 = si(ends[0]);
+  if (std::isfinite(ends[1])) p.hi95 = si(ends[1]);
+  p.flat = reached[0] && reached[1];
+  for (int side = 0; side < 2; ++side)
+    if (!side_reason[side].empty()) p.reason += (p.reason.empty() ? "" : "; ") + side_reason[side];
+
+  std::ostringstream s;
+  const std::string unit = info[j].unit.empty() ? "" : " " + info[j].unit;
+  s << "profile of " << info[j].name << ": ";
+  double lowest = 0;
+  for (double d : p.delta_chi2) lowest = std::min(lowest, d);
+  if (p.flat) {
+    double top = 0;
+    for (double d : p.delta_chi2) top = std::max(top, d);
+    s << "flat: Delta chi^2 stays below 3.84 (at most " << format_value(top) << ") over the whole range ["
+      << format_value(info[j].lo) << ", " << format_value(info[j].hi) << "]" << unit
+      << ": not identifiable from these data";
+    s << (identifiable ? "; the Fisher information called it identifiable: its quadratic approximation misleads here"
+                       : ", as the Fisher information says");
+  } else {
+    s << "95 % interval [" << (std::isfinite(p.lo95) ? format_value(p.lo95) : "none") << ", "
+      << (std::isfinite(p.hi95) ? format_value(p.hi95) : "none") << "]" << unit;
+    if (!p.reason.empty()) s << " (" << p.reason << ")";
+    if (!identifiable) {
+      s << "; the Fisher information called it not identifiable, but the profile rises: the data bound it through "
+           "the model's nonlinearity";
+    } else {
+      const double half = kZ95 * se;
+      double shift = 0;
+      if (std::isfinite(ends[0])) shift = std::max(shift, std::abs(ends[0] - (xhat[j] - half)) / half);
+      if (std::isfinite(ends[1])) shift = std::max(shift, std::abs(ends[1] - (xhat[j] + half)) / half);
+      p.max_shift = shift;
+      p.nonlinear = shift > po.nonlinearity_tolerance || !std::isfinite(ends[0]) || !std::isfinite(ends[1]);
+      if (p.nonlinear)
+        s << "; it differs from the Fisher interval [" << format_value(si(xhat[j] - half)) << ", "
+          << format_value(si(xhat[j] + half)) << "] by " << format_value(std::round(shift * 1000) / 10)
+          << " % of its half-width (tolerance " << format_value(po.nonlinearity_tolerance * 100)
+          << " %): the model is nonlinear over the interval, use the profile's";
+      else
+        s << "; agrees with the Fisher interval to " << format_value(std::round(shift * 1000) / 10)
+          << " % of its half-width";
+    }
+  }
+  if (lowest < -1e-6 * std::max(1.0, chi2_min))
+    s << "; the profile reached chi^2 " << format_value(chi2_min + lowest) << " below the fit's "
+      << format_value(chi2_min) << ": the fit stopped at a local minimum";
+  p.statement = s.str();
+  return p;
+}
+
 }  // namespace
 
 void FitOptions::validate() const {
@@ -225,6 +475,14 @@ void FitOptions::validate() const {
   require(identifiability_ratio > 0 && identifiability_ratio < 1, "identifiability_ratio", identifiability_ratio,
           "in (0, 1)");
   forward.validate();
+  profiles.validate();
+}
+
+void ProfileOptions::validate() const {
+  require(points >= 1 && points <= 50, "profile_points", points, "an integer in [1, 50]");
+  require(span > 0 && span <= 50, "profile_span", span, "in (0, 50] Fisher standard errors");
+  require(nonlinearity_tolerance > 0 && nonlinearity_tolerance <= 1, "profile_tolerance", nonlinearity_tolerance,
+          "in (0, 1] of the Fisher half-width");
 }
 
 Linearisation linearise(std::span<const ObservedRow> rows, std::span<const FitParameter> free, const CellModel& cell,
@@ -312,32 +570,13 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
         const double margin = 1e-3 * std::min(1.0, hi[j] - lo[j]);
         st.start[j] = std::clamp(x0[j] + width * unit(rng), lo[j] + margin, hi[j] - margin);
       }
-    Ipopt::SmartPtr<LeastSquaresNlp> nlp = new LeastSquaresNlp(rows, free, cell, options, st.start);
-    Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
-    app->Options()->SetNumericValue("tol", options.tol);
-    app->Options()->SetIntegerValue("max_iter", options.max_iterations);
-    app->Options()->SetIntegerValue("print_level", 0);
-    app->Options()->SetStringValue("sb", "yes");  // no banner: only apps/ print
-    if (app->Initialize() != Ipopt::Solve_Succeeded) {
-      st.ipopt_status = "Ipopt could not be initialised";
-      res.starts.push_back(st);
-      continue;
-    }
-    const Ipopt::ApplicationReturnStatus rs = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(GetRawPtr(nlp)));
-    res.evaluations += nlp->evaluations;
-    st.status = status_of(rs);
-    st.ipopt_status = ipopt_name(rs);
-    if (Ipopt::IsValid(app->Statistics())) st.iterations = app->Statistics()->IterationCount();
-    st.end = nlp->solution.empty() ? st.start : nlp->solution;
-    std::vector<double> r;
-    std::string why;
-    if (!nlp->solution.empty() && residuals_at(rows, cell_at(cell, info, st.end), options.forward, r, why)) {
-      st.chi2 = 0;
-      for (double v : r) st.chi2 += v * v;
-    } else {
-      st.status = FitStatus::failed;
-      if (!why.empty()) st.ipopt_status += " (" + why + ")";
-    }
+    const Solve sv = solve(rows, free, cell, options, st.start);
+    res.evaluations += sv.evaluations;
+    st.status = sv.status;
+    st.ipopt_status = sv.ipopt_status;
+    st.iterations = sv.iterations;
+    st.end = sv.end;
+    st.chi2 = sv.chi2;
     res.starts.push_back(st);
     const int k = static_cast<int>(res.starts.size()) - 1;
     auto rank = [](FitStatus f) { return f == FitStatus::converged ? 0 : f == FitStatus::maximum_iterations ? 1 : 2; };
@@ -413,6 +652,10 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
     if (!only_flat)
       s << ": only the combination orthogonal to it is measured; fix one of them or add an observable "
            "that separates them";
+    std::vector<FitParameter> involved;
+    for (std::size_t j = 0; j < n; ++j)
+      if (std::abs(V(j, k)) > 1e-3) involved.push_back(info[j].id);
+    s << ". " << what_would_pin(involved);
     res.unidentifiable.push_back(s.str());
   }
   for (std::size_t j = 0; j < n; ++j) {
@@ -430,6 +673,11 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
       if (res.estimates[j].identifiable && res.estimates[i].identifiable)
         res.correlation[j][i] = cov(j, i) / std::sqrt(cov(j, j) * cov(i, i));
   for (const std::string& s : res.unidentifiable) res.message += (res.message.empty() ? "" : "; ") + s;
+
+  if (options.profiles.enabled)
+    for (std::size_t j = 0; j < n; ++j)
+      res.estimates[j].profile = profile_of(rows, free, cell, options, info, lo, hi, b.end, res.chi2, j,
+                                            res.estimates[j].standard_error, res.evaluations);
 
   // Residuals per row, regime rows included (compared, not fitted).
   const std::vector<Prediction> pred = predict_all(res.cell, data.rows, options.forward);
@@ -463,7 +711,26 @@ nlohmann::json to_json(const FitResult& r) {
   out["dof"] = r.dof;
   out["evaluations"] = r.evaluations;
   nlohmann::json est = nlohmann::json::array();
-  for (const FitEstimate& e : r.estimates)
+  for (const FitEstimate& e : r.estimates) {
+    nlohmann::json pj;
+    if (e.profile.computed) {
+      nlohmann::json xs = nlohmann::json::array(), ds = nlohmann::json::array();
+      for (std::size_t k = 0; k < e.profile.coordinate.size(); ++k) {
+        xs.push_back(num(e.profile.coordinate[k]));
+        ds.push_back(num(e.profile.delta_chi2[k]));
+      }
+      pj = {{"coordinate", xs},
+            {"delta_chi2", ds},
+            {"lo95", num(e.profile.lo95)},
+            {"hi95", num(e.profile.hi95)},
+            {"flat", e.profile.flat},
+            {"nonlinear", e.profile.nonlinear},
+            {"max_shift", num(e.profile.max_shift)},
+            {"statement", e.profile.statement},
+            {"solves", e.profile.solves},
+            {"iterations", e.profile.iterations}};
+      if (!e.profile.reason.empty()) pj["reason"] = e.profile.reason;
+    }
     est.push_back({{"name", e.parameter.name},
                    {"symbol", e.parameter.unicode},
                    {"unit", e.parameter.unit},
@@ -474,7 +741,9 @@ nlohmann::json to_json(const FitResult& r) {
                    {"hi95", num(e.hi95)},
                    {"identifiable", e.identifiable},
                    {"at_bound", e.at_bound},
-                   {"bounds", {num(e.parameter.lo), num(e.parameter.hi)}}});
+                   {"bounds", {num(e.parameter.lo), num(e.parameter.hi)}},
+                   {"profile", pj}});
+  }
   out["estimates"] = est;
   auto matrix = [&](const std::vector<std::vector<double>>& m) {
     nlohmann::json a = nlohmann::json::array();
@@ -534,6 +803,8 @@ std::string fit_text(const FitResult& r) {
     if (e.at_bound) s << "  (at a bound)";
     s << "\n";
   }
+  for (const FitEstimate& e : r.estimates)
+    if (e.profile.computed) s << "  " << e.profile.statement << "\n";
   if (r.estimates.size() > 1) {
     s << "correlation (fitted coordinates):\n";
     for (const auto& row : r.correlation) {

@@ -14,6 +14,18 @@
 
 namespace rbcstab {
 
+// Profile likelihoods (docs/inverse.md "Profile likelihoods"): each free parameter held on a grid in its fitted
+// coordinate while the others are re-optimised (Ipopt, warm-started from the neighbouring point); the 95 % interval
+// is where Delta chi^2 = chi^2_profile - chi^2_min crosses 3.84 (chi^2 with 1 degree of freedom), located between
+// grid points by the Illinois secant.
+struct ProfileOptions {
+  bool enabled = false;
+  int points = 4;     // [1, 50]: grid points on each side of the estimate within `span`
+  double span = 4.0;  // (0, 50]: the grid reaches span Fisher standard errors; beyond it, doubling steps to the bound
+  double nonlinearity_tolerance = 0.1;  // (0, 1]: an end further than this * the Fisher half-width is reported
+  void validate() const;                // throws InvalidArgument naming the field
+};
+
 struct FitOptions {
   int starts = 4;                       // [1, 64]: the given start, then starts spread in the box (fixed seed)
   double start_spread = 1.0;            // (0, 10]: half-width of the spread in the fitted coordinate (ln for moduli)
@@ -23,6 +35,7 @@ struct FitOptions {
   double fd_step = 1e-4;                // (0, 0.1]: central-difference step in the fitted coordinate (docs/inverse.md)
   double identifiability_ratio = 1e-8;  // (0, 1): a Fisher eigenvalue below ratio * largest is a flat direction
   ForwardOptions forward;
+  ProfileOptions profiles;
   void validate() const;  // throws InvalidArgument naming the field
 };
 
@@ -43,6 +56,22 @@ struct FitStart {
   int iterations = 0;
 };
 
+// One parameter's profile. An end is NaN where Delta chi^2 stays below 3.84 up to the bound (or up to where the
+// model gives no prediction: `reason`).
+struct Profile {
+  bool computed = false;
+  std::vector<double> coordinate;  // fitted coordinate, ascending, the estimate included (crossings included)
+  std::vector<double> delta_chi2;  // chi^2 of the re-optimised fit there minus the fit's chi^2
+  double lo95 = kNotGiven, hi95 = kNotGiven;  // SI
+  bool flat = false;                          // Delta chi^2 < 3.84 over the whole bounded range: not identifiable
+  bool nonlinear = false;                     // an end differs from the Fisher one by more than the tolerance
+  double max_shift = kNotGiven;               // largest |profile end - Fisher end| / Fisher half-width (coordinate)
+  std::string statement;  // plain sentence: interval or flat, and its agreement with the Fisher statement
+  std::string reason;     // why a side stopped short of its bound without crossing
+  int solves = 0;         // re-optimisations (evaluations of chi^2 alone with one free parameter)
+  int iterations = 0;     // Ipopt iterations over them
+};
+
 struct FitEstimate {
   FitParameterInfo parameter;
   double value = kNotGiven;                   // SI
@@ -50,6 +79,7 @@ struct FitEstimate {
   double lo95 = kNotGiven, hi95 = kNotGiven;  // SI: coordinate +- 1.96 se mapped back; NaN when not identifiable
   bool identifiable = true;
   bool at_bound = false;  // within 1e-6 (coordinate) of a bound: the interval assumes an interior optimum
+  Profile profile;        // when FitOptions::profiles.enabled
 };
 
 struct RowResidual {
