@@ -9,6 +9,7 @@
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/inverse/fit.hpp"
+#include "rbcstab/model/physical.hpp"
 #include "synthetic_cell.hpp"
 
 namespace rbcstab {
@@ -87,6 +88,24 @@ TEST(Fit, NamesAParameterNoObservableDependsOn) {
   EXPECT_TRUE(std::isnan(r.correlation[0][1]));
   ASSERT_EQ(r.unidentifiable.size(), 1u) << r.message;
   EXPECT_NE(r.message.find("no observable given depends on bending_modulus"), std::string::npos) << r.message;
+}
+
+// Data made with mu at the lower end of its box: the optimum is on the bound, where an interior-point iterate stops
+// short of it by the barrier's distance (here 5 % in mu: the motion barely changes with mu at S ~ 10^4) and the
+// interval reaches past it; at_bound says so (a 1e-6 tolerance in ln missed it), while the noiseless interior fit
+// is not at a bound.
+TEST(Fit, AnEstimateOnABoundIsMarked) {
+  CellModel truth = synthetic_cell();
+  truth.shear_modulus = plausible_range("shear_modulus").min;
+  const ObservationData data = synthetic_data(truth, 0.0, 1);
+  FitOptions o;
+  o.starts = 1;
+  const FitResult r = fit(data, {"mu"}, synthetic_cell(), o);
+  ASSERT_EQ(r.estimates.size(), 1u) << r.message;
+  EXPECT_TRUE(r.estimates[0].at_bound) << r.estimates[0].value;
+  const FitResult interior = fit(synthetic_data(synthetic_cell(), 0.0, 1), {"mu"}, start_of(synthetic_cell()), o);
+  ASSERT_EQ(interior.estimates.size(), 1u) << interior.message;
+  EXPECT_FALSE(interior.estimates[0].at_bound);
 }
 
 TEST(Fit, StatusesAreNeverSilent) {

@@ -146,25 +146,6 @@ class SurvivingModesNlp final : public Ipopt::TNLP {
   Eigen::VectorXd start_;
 };
 
-std::string status_name(Ipopt::ApplicationReturnStatus s) {
-  switch (s) {
-    case Ipopt::Solve_Succeeded:
-      return "Solve_Succeeded";
-    case Ipopt::Solved_To_Acceptable_Level:
-      return "Solved_To_Acceptable_Level";
-    case Ipopt::Infeasible_Problem_Detected:
-      return "Infeasible_Problem_Detected";
-    case Ipopt::Maximum_Iterations_Exceeded:
-      return "Maximum_Iterations_Exceeded";
-    case Ipopt::Restoration_Failed:
-      return "Restoration_Failed";
-    case Ipopt::Error_In_Step_Computation:
-      return "Error_In_Step_Computation";
-    default:
-      return "Ipopt status " + std::to_string(static_cast<int>(s));
-  }
-}
-
 }  // namespace
 
 ComplementarityResult solve_surviving_modes(const ModalEquilibriumProblem& problem, double p,
@@ -199,7 +180,7 @@ ComplementarityResult solve_surviving_modes(const ModalEquilibriumProblem& probl
     return r;
   }
   const Ipopt::ApplicationReturnStatus st = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(GetRawPtr(nlp)));
-  r.status = status_name(st);
+  r.status = ipopt_status_name(static_cast<int>(st));
   r.converged = st == Ipopt::Solve_Succeeded || st == Ipopt::Solved_To_Acceptable_Level;
   if (Ipopt::IsValid(app->Statistics())) r.iterations = app->Statistics()->IterationCount();
   if (nlp->solution.size() != 6 + nl) {
@@ -233,6 +214,27 @@ ComplementarityResult solve_surviving_modes(const ModalEquilibriumProblem& probl
   r.max_constraint_violation = std::max({r.max_constraint_violation, F2.lpNorm<Eigen::Infinity>(), std::abs(area)});
   r.message = r.converged ? "" : "Ipopt did not converge: " + r.status;
   return r;
+}
+
+std::string ipopt_status_name(int status) {
+  switch (static_cast<Ipopt::ApplicationReturnStatus>(status)) {
+    case Ipopt::Solve_Succeeded:
+      return "Solve_Succeeded";
+    case Ipopt::Solved_To_Acceptable_Level:
+      return "Solved_To_Acceptable_Level";
+    case Ipopt::Infeasible_Problem_Detected:
+      return "Infeasible_Problem_Detected";
+    case Ipopt::Maximum_Iterations_Exceeded:
+      return "Maximum_Iterations_Exceeded";
+    case Ipopt::Restoration_Failed:
+      return "Restoration_Failed";
+    case Ipopt::Error_In_Step_Computation:
+      return "Error_In_Step_Computation";
+    case Ipopt::Invalid_Number_Detected:
+      return "Invalid_Number_Detected";
+    default:
+      return "Ipopt status " + std::to_string(status);
+  }
 }
 
 }  // namespace rbcstab

@@ -47,4 +47,8 @@ struct ComplementarityResult {
 ComplementarityResult solve_surviving_modes(const ModalEquilibriumProblem& problem, double p,
                                             const ComplementarityOptions& options = {});
 
+// The name of Ipopt's return status (Ipopt::ApplicationReturnStatus as an int), for every Ipopt caller's
+// result: "Solve_Succeeded", ...; an unnamed one as "Ipopt status N".
+std::string ipopt_status_name(int status);
+
 }  // namespace rbcstab

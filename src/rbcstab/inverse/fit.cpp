@@ -9,6 +9,7 @@
 #include <random>
 #include <sstream>
 
+#include "rbcstab/continuation/complementarity.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/core/text.hpp"
 
@@ -195,27 +196,6 @@ FitStatus status_of(Ipopt::ApplicationReturnStatus s) {
   }
 }
 
-std::string ipopt_name(Ipopt::ApplicationReturnStatus s) {
-  switch (s) {
-    case Ipopt::Solve_Succeeded:
-      return "Solve_Succeeded";
-    case Ipopt::Solved_To_Acceptable_Level:
-      return "Solved_To_Acceptable_Level";
-    case Ipopt::Infeasible_Problem_Detected:
-      return "Infeasible_Problem_Detected";
-    case Ipopt::Maximum_Iterations_Exceeded:
-      return "Maximum_Iterations_Exceeded";
-    case Ipopt::Restoration_Failed:
-      return "Restoration_Failed";
-    case Ipopt::Error_In_Step_Computation:
-      return "Error_In_Step_Computation";
-    case Ipopt::Invalid_Number_Detected:
-      return "Invalid_Number_Detected";
-    default:
-      return "Ipopt status " + std::to_string(static_cast<int>(s));
-  }
-}
-
 std::string coordinate_name(const FitParameterInfo& i) { return i.log_scale ? "ln " + i.name : i.name; }
 
 double chi2_of(std::span<const double> r) {
@@ -256,7 +236,7 @@ Solve solve(const std::vector<ObservedRow>& rows, const std::vector<FitParameter
   const Ipopt::ApplicationReturnStatus rs = app->OptimizeTNLP(Ipopt::SmartPtr<Ipopt::TNLP>(GetRawPtr(nlp)));
   out.evaluations = nlp->evaluations;
   out.status = status_of(rs);
-  out.ipopt_status = ipopt_name(rs);
+  out.ipopt_status = ipopt_status_name(static_cast<int>(rs));
   if (Ipopt::IsValid(app->Statistics())) out.iterations = app->Statistics()->IterationCount();
   out.end = nlp->solution.empty() ? start : nlp->solution;
   std::vector<double> r;
@@ -306,6 +286,7 @@ std::string what_would_pin(const std::vector<FitParameter>& involved) {
          "shear rates (S is proportional to the shear rate at fixed Lambda) separate the two groups";
 }
 
+constexpr double kAtBoundFraction = 1e-3;            // FitEstimate::at_bound: within this fraction of the box's width
 constexpr double kChi2OneDof95 = 3.841458820694124;  // the 0.95 quantile of chi^2 with 1 degree of freedom
 constexpr double kZ95 = 1.959963984540054;
 
@@ -607,7 +588,10 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
     FitEstimate e;
     e.parameter = info[j];
     e.value = get_value(res.cell, info[j].id);
-    e.at_bound = b.end[j] - lo[j] < 1e-6 || hi[j] - b.end[j] < 1e-6;
+    // An interior-point iterate stops short of an active bound by an amount set by the barrier and the slope
+    // there (1.7e-4 in ln for a modulus the data do not see), so "at" is relative to the box's width.
+    const double near = kAtBoundFraction * (hi[j] - lo[j]);
+    e.at_bound = b.end[j] - lo[j] < near || hi[j] - b.end[j] < near;
     res.estimates.push_back(e);
   }
   if (!lin.ok) {
@@ -664,7 +648,9 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
     for (std::size_t i = 0; i < n; ++i) res.covariance[j][i] = cov(j, i);
     if (!e.identifiable) continue;
     e.standard_error = std::sqrt(cov(j, j));
-    const double x = b.end[j], d = 1.959963984540054 * e.standard_error;
+    const double x = b.end[j], d = kZ95 * e.standard_error;
+    // An interval reaching past a bound: the box, not the data, limits the estimate there.
+    if (x - d < lo[j] || x + d > hi[j]) e.at_bound = true;
     e.lo95 = info[j].log_scale ? std::exp(x - d) : x - d;
     e.hi95 = info[j].log_scale ? std::exp(x + d) : x + d;
   }

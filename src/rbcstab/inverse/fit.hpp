@@ -78,8 +78,10 @@ struct FitEstimate {
   double standard_error = kNotGiven;          // of the fitted coordinate (ln value for a log parameter)
   double lo95 = kNotGiven, hi95 = kNotGiven;  // SI: coordinate +- 1.96 se mapped back; NaN when not identifiable
   bool identifiable = true;
-  bool at_bound = false;  // within 1e-6 (coordinate) of a bound: the interval assumes an interior optimum
-  Profile profile;        // when FitOptions::profiles.enabled
+  // Within 1e-3 of the box's width (coordinate) of a bound, or its 95 % interval reaches past one: the interval
+  // assumes an interior optimum, which the bound then breaks.
+  bool at_bound = false;
+  Profile profile;  // when FitOptions::profiles.enabled
 };
 
 struct RowResidual {
