@@ -416,6 +416,18 @@ TEST(PeriodDoublingSwitch, DoubledOrbitInClosedForm) {
   EXPECT_NE(switch_at(pr, b, not_pd, so).message.find("no orbit switch at a LPC"), std::string::npos);
 }
 
+// The forced pitch-flip's orbit branch over p in [-0.2, 0.2] from its closed-form orbit at p = -0.2 (one PD, at 0).
+ContinuationOptions pitch_flip_options() {
+  ContinuationOptions o;
+  o.p_min = -0.2;
+  o.p_max = 0.2;
+  o.max_step = 0.1;
+  return o;
+}
+Branch pitch_flip_branch(const PeriodicOrbitProblem& pr, const ContinuationOptions& o) {
+  return continue_branch(pr, pr.shooting_guess(ForcedPitchFlip::xp(0), -0.2), -0.2, o);
+}
+
 // The PD's flip coefficient against the closed form: the period map over 2 pi in x - x_p (= u at t = 0, R(pi) = -I)
 // is u1 -> -u1(2 pi) with u1' = s u1^3 at p = 0, u1(2 pi) = u1 + 2 pi s u1^3 + O(u1^5): c = -2 pi s. s = -1:
 // supercritical (the doubled orbit exists for p > 0, where x_p is unstable, and is stable); s = +1: subcritical.
@@ -425,11 +437,7 @@ TEST(PeriodDoublingNormalForm, FlipCoefficientOfTheForcedSystem) {
     OrbitOptions oo;
     oo.segments = 4;
     const PeriodicOrbitProblem pr(sys, oo);
-    ContinuationOptions o;
-    o.p_min = -0.2;
-    o.p_max = 0.2;
-    o.max_step = 0.1;
-    const Branch b = continue_branch(pr, pr.shooting_guess(ForcedPitchFlip::xp(0), -0.2), -0.2, o);
+    const Branch b = pitch_flip_branch(pr, pitch_flip_options());
     const SpecialPoint* pd = find_special_point(b, SpecialPointType::PD);
     ASSERT_NE(pd, nullptr) << b.message;
     ASSERT_TRUE(pd->normal_form.has_value());
@@ -501,11 +509,8 @@ TEST(OrbitTree, PeriodDoublingStartsTheDoubledOrbitInTheTree) {
   OrbitOptions oo;
   oo.segments = 4;
   const PeriodicOrbitProblem pr(sys, oo);
-  ContinuationOptions co;
-  co.p_min = -0.2;
-  co.p_max = 0.2;
-  co.max_step = 0.1;
-  const Branch b = continue_branch(pr, pr.shooting_guess(ForcedPitchFlip::xp(0), -0.2), -0.2, co);
+  const ContinuationOptions co = pitch_flip_options();
+  const Branch b = pitch_flip_branch(pr, co);
   TreeOptions o;
   o.depth = 3;
   o.switching.continuation = co;
