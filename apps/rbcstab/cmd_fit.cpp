@@ -1,13 +1,17 @@
 // rbcstab fit: membrane properties from observed motion (inverse/fit.hpp, docs/inverse.md). Flags -> fit() -> the
-// result's text or JSON; --save writes the JSON.
+// result's text or JSON; --save writes the JSON, --report the page (report/fit_page.hpp). Progress and Ctrl-C as
+// the other long commands.
 #include <iostream>
 #include <memory>
 
 #include "checks.hpp"
 #include "commands.hpp"
+#include "progress.hpp"
 #include "rbcstab/core/text.hpp"
 #include "rbcstab/inverse/fit.hpp"
 #include "rbcstab/io/files.hpp"
+#include "rbcstab/report/fit_page.hpp"
+#include "rbcstab/report/report.hpp"
 
 namespace rbcstab::cli {
 
@@ -15,21 +19,38 @@ namespace {
 struct FitCliOptions {
   std::string data, free, fixed, save;
   FitOptions fit;
+  FitReportOptions report;
   bool json = false;
+  ProgressOutput progress;
 };
 
-int run(const FitCliOptions& o) {
+int run(FitCliOptions& o) {
   const ObservationData data = read_observation_data(o.data);
   CellModel cell;
   apply_assignments(cell, o.fixed, "fixed");
+  const bool page = !o.report.output.empty();
+  if (o.report.script_dir.empty()) o.report.script_dir = find_script_dir(executable_path());
+  if (page) o.report = check_fit_report(o.report);  // before the fit: nothing computed for a folder refused
+  const ProgressCallback starts = o.progress.callback("fit:", "starts done"),
+                         points = o.progress.callback("fit: profiles:", "points done");
+  if (starts)
+    o.fit.on_progress = [=](const FitProgress& p) {
+      p.profile_points ? points(p.profile_points, 0) : starts(p.starts_done, p.starts);
+    };
+  const StopOnSignal interrupt;
+  o.fit.stop = interrupt.flag();
   const FitResult r = fit(data, comma_items(o.free), cell, o.fit);
   nlohmann::json doc = to_json(r);
   doc["data"] = o.data;
   if (!o.save.empty()) write_file_atomic(o.save, doc.dump(1) + "\n", "--save");
+  const bool drawn = page && r.status != FitStatus::failed && r.status != FitStatus::interrupted;
+  if (drawn) doc["report"] = write_fit_report(r, data, o.report).output;
+  if (page && !drawn) std::cerr << "rbcstab: no report written: the fit is " << to_string(r.status) << "\n";
+  if (r.status == FitStatus::interrupted) std::cerr << "rbcstab: interrupted: " << r.message << "\n";
   if (o.json)
     std::cout << doc.dump(2) << "\n";
   else
-    std::cout << fit_text(r);
+    std::cout << fit_text(r) << (drawn ? "report: " + doc["report"].get<std::string>() + "\n" : "");
   return r.status == FitStatus::converged ? kOk : kRunFailed;
 }
 
@@ -69,7 +90,11 @@ Runner add_fit(CLI::App& app) {
       ->check(number_above(0, true))
       ->capture_default_str();
   app.add_option("--save", o->save, "write the result as JSON to this file")->check(output_name());
+  app.add_option("--report", o->report.output,
+                 "write the fit's page to this folder (index.html, figures, parameters.csv; docs/report.md)");
+  app.add_flag("--overwrite", o->report.overwrite, "--report: replace an existing folder (swapped in whole)");
   app.add_flag("--json", o->json, "print one JSON object on stdout");
+  o->progress.add_flags(app);
   return [o] { return run(*o); };
 }
 

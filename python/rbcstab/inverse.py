@@ -2,16 +2,19 @@
 import numbers
 
 from . import _args, _rbcstab
+from .progress import progress_bar
 from .runs import Report
 
 __all__ = ["FitResult", "fit"]
 
 
 class FitResult(Report):
-    """A fit (rbcstab fit --json as a dict): ``status`` (converged, infeasible, maximum_iterations, failed),
+    """A fit (rbcstab fit --json as a dict): ``status`` (converged, infeasible, maximum_iterations, failed,
+    interrupted),
     ``estimates`` (per free parameter: value in SI units, 95 % interval ``lo95``/``hi95``, ``identifiable``),
     ``chi2``, ``residuals`` per row, each estimate's ``profile`` (with profiles=True), ``covariance`` and ``correlation`` of the fitted coordinates, and the
-    statements of what the data cannot identify (``unidentifiable``); the CLI's text in ``.text``."""
+    statements of what the data cannot identify (``unidentifiable``); ``report``, the page's folder, when
+    fit(report=...) wrote one; the CLI's text in ``.text``."""
 
     def estimate(self, name):
         """The estimate of parameter `name` (a key such as "shear_modulus") as a dict; KeyError if not free."""
@@ -45,7 +48,7 @@ def _fixed_text(fixed):
 
 
 def fit(data, free, fixed=None, starts=4, max_iterations=100, seed=1, profiles=False, profile_points=4,
-        profile_span=4.0):
+        profile_span=4.0, report=None, overwrite=False, progress=False):
     """Fits the free parameters to the observations in the CSV file `data` (rbcstab fit).
 
     data: path of the observations CSV (docs/inverse.md "Data format"). free: names of the parameters to fit
@@ -57,12 +60,24 @@ def fit(data, free, fixed=None, starts=4, max_iterations=100, seed=1, profiles=F
     (``estimate(name)["profile"]``: the grid, Delta chi^2, the 95 % profile interval, ``flat``, ``nonlinear`` and a
     plain ``statement``; docs/inverse.md "Profile likelihoods"). profile_points: profile grid points on each side
     of the estimate, an integer in [1, 50]. profile_span: reach of that grid in Fisher standard errors (of the
-    fitted coordinate, dimensionless), in (0, 50].
-    Returns a FitResult; ValueError for bad data (naming the file line and column) or a bad parameter."""
+    fitted coordinate, dimensionless), in (0, 50]. report: a folder to write the fit's page to (rbcstab fit
+    --report: index.html, the figures, parameters.csv, fit.json; docs/report.md "A fit's page"), written only when
+    the fit has an estimate; an existing folder is refused (ValueError) unless overwrite=True. progress: True (a bar
+    of the starts, then of the profile points), False, a callable f(done, total, eta) or a tqdm bar.
+    Ctrl-C stops the fit within an Ipopt iteration (KeyboardInterrupt).
+    Returns a FitResult; ValueError for bad data (naming the file line and column) or a bad parameter; RuntimeError
+    when python3 with matplotlib or the drawing script is missing for the page (checked before the fit runs)."""
     path = _args.text("data", data)
     names = _args.names("free", free)
-    doc, text = _rbcstab.fit(path, names, _fixed_text(fixed), _args.integer("starts", starts),
-                             _args.integer("max_iterations", max_iterations), _args.integer("seed", seed), _args.flag("profiles", profiles),
-                             _args.integer("profile_points", profile_points),
-                             _args.number("profile_span", profile_span))
+    folder = "" if report is None else _args.text("report", report)
+    args = (path, names, _fixed_text(fixed), _args.integer("starts", starts),
+            _args.integer("max_iterations", max_iterations), _args.integer("seed", seed),
+            _args.flag("profiles", profiles), _args.integer("profile_points", profile_points),
+            _args.number("profile_span", profile_span), folder, _args.flag("overwrite", overwrite))
+    bar = progress_bar(progress, "rbcstab fit", "starts and profile points")
+    if bar is None:
+        doc, text = _rbcstab.fit(*args, progress=None)
+    else:
+        with bar:
+            doc, text = _rbcstab.fit(*args, progress=bar)
     return FitResult("fit", doc, text)

@@ -56,3 +56,37 @@ def test_wrong_types_are_type_errors(small):
         rbcstab.fit(small, ["mu"], starts=0)
     with pytest.raises(ValueError, match="not a fit parameter"):
         rbcstab.fit(small, ["stiffness"])
+
+
+def test_report_folder_progress_and_refusal(small, tmp_path):
+    """fit(report=DIR) writes the page (its parameters.csv holds the result's numbers), progress counts the starts
+    then the profile points, and an existing folder is refused before the fit runs."""
+    calls = []
+    page = tmp_path / "page"
+    r = rbcstab.fit(small, ["lambda"], fixed={"Delta": 0.1, "Delta0": 0.05}, starts=2, profiles=True,
+                    profile_points=2, report=str(page), progress=lambda done, total, eta: calls.append((done, total)))
+    assert r["status"] == "converged"
+    assert r["report"] == str(page)
+    for name in ("index.html", "README.md", "fit.json", "parameters.csv", "fig_fit.png", "fig_profile_lambda.png"):
+        assert (page / name).exists(), name
+    header, row = (page / "parameters.csv").read_text().splitlines()
+    table = dict(zip(header.split(","), row.split(",")))
+    e = r.estimate("lambda")
+    assert float(table["value"]) == e["value"] and float(table["lo95"]) == e["lo95"]
+    assert float(table["profile_hi95"]) == e["profile"]["hi95"]
+    # Two starts, then at least one profile point on each side; total 0: not known in advance with profiles.
+    assert calls and calls[-1][0] >= 4 and all(total == 0 for _, total in calls)
+    assert [d for d, _ in calls] == sorted(d for d, _ in calls)
+    with pytest.raises(ValueError, match="exists; pass --overwrite|exists; pass overwrite"):
+        rbcstab.fit(small, ["lambda"], fixed={"Delta": 0.1, "Delta0": 0.05}, starts=1, report=str(page))
+    with pytest.raises(TypeError):
+        rbcstab.fit(small, ["lambda"], report=3)
+
+
+def test_progress_that_raises_stops_the_fit(small):
+    """What the progress callable raises (Ctrl-C's KeyboardInterrupt included) stops the fit and is raised."""
+    def interrupt(done, total, eta):
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        rbcstab.fit(small, ["lambda"], fixed={"Delta": 0.1, "Delta0": 0.05}, starts=4, progress=interrupt)

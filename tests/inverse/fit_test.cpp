@@ -4,8 +4,10 @@
 
 #include <Eigen/Dense>
 
+#include <atomic>
 #include <cmath>
 #include <cstdio>
+#include <vector>
 
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/inverse/fit.hpp"
@@ -117,6 +119,86 @@ TEST(Fit, StatusesAreNeverSilent) {
   const FitResult r = fit(data, {"mu", "lambda"}, start_of(truth), o);
   EXPECT_EQ(r.status, FitStatus::maximum_iterations);
   EXPECT_NE(r.message.find("did not converge"), std::string::npos) << r.message;
+}
+
+// FitOptions::stop set from the progress callback once the first of three starts has finished: the fit returns
+// `interrupted` with that start's estimate and no intervals, never `converged`; the same fit unstopped converges
+// (the control: the status is the stop's, not the data's).
+TEST(Fit, StopAfterTheFirstStartIsInterruptedNotConverged) {
+  const CellModel truth = synthetic_cell();
+  const ObservationData data = one_viscosity(synthetic_data(truth, 0.0, 1));
+  CellModel start = truth;
+  start.lambda *= std::exp(-0.3);
+  std::atomic<bool> stop{false};
+  std::vector<int> done;  // starts_done as reported
+  FitOptions o;
+  o.starts = 3;
+  o.stop = &stop;
+  o.on_progress = [&](const FitProgress& p) {
+    EXPECT_EQ(p.starts, 3);
+    if (done.empty() || done.back() != p.starts_done) done.push_back(p.starts_done);
+    if (p.starts_done == 1) stop = true;
+  };
+  const FitResult r = fit(data, {"lambda"}, start, o);
+  EXPECT_EQ(r.status, FitStatus::interrupted) << r.message;
+  EXPECT_EQ(done, (std::vector<int>{0, 1}));  // Ipopt iterations of the first start, then its end
+  ASSERT_EQ(r.starts.size(), 1u);
+  EXPECT_EQ(r.starts[0].status, FitStatus::converged);
+  ASSERT_EQ(r.estimates.size(), 1u);
+  EXPECT_NEAR(r.cell.lambda / truth.lambda, 1.0, 1e-6);  // the finished start's estimate is kept
+  EXPECT_TRUE(std::isnan(r.estimates[0].lo95)) << "an interval claimed after a stop";
+  EXPECT_NE(r.message.find("interrupted after 1 of 3 starts"), std::string::npos) << r.message;
+  EXPECT_EQ(r.residuals.size(), data.rows.size());
+  EXPECT_EQ(to_json(r).at("status"), "interrupted");
+  EXPECT_EQ(fit_text(r).rfind("fit: interrupted", 0), 0u) << fit_text(r);
+
+  o.stop = nullptr;
+  o.on_progress = nullptr;
+  o.starts = 1;
+  EXPECT_EQ(fit(data, {"lambda"}, start, o).status, FitStatus::converged);
+}
+
+// A stop within a solve ends it at the next Ipopt iteration (User_Requested_Stop): its last iterate is the best
+// so far, marked as such.
+TEST(Fit, StopWithinAStartEndsItAtTheNextIteration) {
+  const CellModel truth = synthetic_cell();
+  const ObservationData data = one_viscosity(synthetic_data(truth, 0.0, 1));
+  CellModel start = truth;
+  start.lambda *= std::exp(-0.3);
+  std::atomic<bool> stop{false};
+  FitOptions o;
+  o.starts = 2;
+  o.stop = &stop;
+  o.on_progress = [&](const FitProgress& p) {
+    if (p.iterations == 2) stop = true;
+  };
+  const FitResult r = fit(data, {"lambda"}, start, o);
+  EXPECT_EQ(r.status, FitStatus::interrupted);
+  ASSERT_EQ(r.starts.size(), 1u);
+  EXPECT_EQ(r.starts[0].status, FitStatus::interrupted);
+  EXPECT_EQ(r.starts[0].ipopt_status, "User_Requested_Stop");
+  EXPECT_LE(r.starts[0].iterations, 2);
+  EXPECT_NE(r.message.find("(interrupted, its last iterate)"), std::string::npos) << r.message;
+}
+
+// A stop during the profiles keeps the estimate and its Fisher interval and drops the unfinished profile.
+TEST(Fit, StopDuringTheProfileDropsIt) {
+  const CellModel truth = synthetic_cell();
+  const ObservationData data = one_viscosity(synthetic_data(truth, 1.0, 7));
+  std::atomic<bool> stop{false};
+  FitOptions o;
+  o.starts = 1;
+  o.profiles.enabled = true;
+  o.stop = &stop;
+  o.on_progress = [&](const FitProgress& p) {
+    if (p.profile_points == 3) stop = true;
+  };
+  const FitResult r = fit(data, {"lambda"}, truth, o);
+  EXPECT_EQ(r.status, FitStatus::interrupted);
+  ASSERT_EQ(r.estimates.size(), 1u);
+  EXPECT_TRUE(std::isfinite(r.estimates[0].lo95));
+  EXPECT_FALSE(r.estimates[0].profile.computed);
+  EXPECT_NE(r.message.find("interrupted before the profile of lambda was finished"), std::string::npos) << r.message;
 }
 
 TEST(Fit, ProfileOfOneParameterAgreesWithFisher) {

@@ -2,6 +2,7 @@
 // A synthetic cell and its observations, made by the forward model itself with noise from a fixed seed.
 #include <random>
 #include <string>
+#include <vector>
 
 #include "rbcstab/inverse/fit.hpp"
 #include "rbcstab/inverse/forward.hpp"
@@ -43,6 +44,13 @@ inline ObservationData synthetic_data(const CellModel& truth, double noise, unsi
         row.value = p.value + noise * sigma * normal(rng);
         d.rows.push_back(row);
       }
+  return d;
+}
+
+// The rows at the first viscosity (1 mPa s) only: four rows at two conditions, for the tests that need a fit but
+// not its statistics (a fit of lambda alone in well under a second).
+inline ObservationData one_viscosity(ObservationData d) {
+  std::erase_if(d.rows, [&](const ObservedRow& r) { return r.viscosity != d.rows.front().viscosity; });
   return d;
 }
 

@@ -1,10 +1,16 @@
 // The data of a fit's page (report/fit_page.hpp): one panel per observable and viscosity, the model curve on the
-// requested grid over the rows' span, the residuals of the fit's rows, and bad requests refused by name.
+// requested grid over the rows' span, the residuals of the fit's rows, and bad requests refused by name; the page's
+// folder (write_fit_report) from a real fit: its parameter table read back, the profile figure's drawn span.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdlib>
+#include <map>
+#include <sstream>
 #include <string>
+#include <vector>
 
+#include "inverse/synthetic_cell.hpp"
 #include "png_size.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
@@ -118,6 +124,125 @@ TEST(FitPage, BadRequestsAreRefusedByName) {
     EXPECT_EQ(e.parameter(), "data");
     EXPECT_NE(std::string(e.what()).find("t.csv"), std::string::npos) << e.what();
   }
+}
+
+// parameters.csv as rows of name -> field.
+std::vector<std::map<std::string, std::string>> read_csv(const std::string& text) {
+  std::istringstream in(text);
+  std::string line;
+  std::vector<std::string> header;
+  std::vector<std::map<std::string, std::string>> rows;
+  while (std::getline(in, line)) {
+    std::vector<std::string> fields;
+    std::stringstream ls(line);
+    std::string f;
+    while (std::getline(ls, f, ',')) fields.push_back(f);
+    if (!line.empty() && line.back() == ',') fields.emplace_back();
+    if (header.empty()) {
+      header = fields;
+      continue;
+    }
+    std::map<std::string, std::string> row;
+    for (std::size_t k = 0; k < header.size(); ++k) row[header[k]] = k < fields.size() ? fields[k] : "";
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// "" when the table holds exactly the numbers of the fit's JSON (to_json(FitResult)), else the first difference.
+std::string table_mismatch(const std::vector<std::map<std::string, std::string>>& table, const nlohmann::json& fit) {
+  const nlohmann::json& est = fit.at("estimates");
+  if (table.size() != est.size()) return "rows: " + std::to_string(table.size());
+  auto same = [](const std::string& field, const nlohmann::json& v) {
+    return v.is_null() ? field.empty() : !field.empty() && std::stod(field) == v.get<double>();
+  };
+  for (std::size_t j = 0; j < est.size(); ++j) {
+    const auto& row = table[j];
+    const nlohmann::json& e = est[j];
+    const nlohmann::json& p = e.at("profile");
+    if (row.at("name") != e.at("name")) return "name " + row.at("name");
+    for (const char* k : {"value", "standard_error", "lo95", "hi95"})
+      if (!same(row.at(k), e.at(k))) return std::string(k) + " of " + row.at("name");
+    if (!same(row.at("profile_lo95"), p.is_null() ? p : p.at("lo95")) ||
+        !same(row.at("profile_hi95"), p.is_null() ? p : p.at("hi95")))
+      return "profile interval of " + row.at("name");
+    if ((row.at("identifiable") == "true") != e.at("identifiable").get<bool>() ||
+        (row.at("at_bound") == "true") != e.at("at_bound").get<bool>() ||
+        (row.at("profile_flat") == "true") != (!p.is_null() && p.at("flat").get<bool>()))
+      return "flags of " + row.at("name");
+  }
+  return "";
+}
+
+// A real fit of lambda alone to the noisy synthetic rows at 1 mPa s, with its profile, written as a page: the table
+// holds the fit's numbers, the profile figure spans exactly the computed grid (and so does the Fisher parabola), an
+// existing folder is refused, and a fit that did not converge says so at the top.
+TEST(FitPage, ReportFolderHoldsTheFitsNumbers) {
+  const CellModel truth = synthetic_cell();
+  const ObservationData data = one_viscosity(synthetic_data(truth, 1.0, 7));
+  FitOptions fo;
+  fo.starts = 1;
+  fo.profiles.enabled = true;
+  fo.profiles.points = 2;
+  FitResult r = fit(data, {"lambda"}, truth, fo);
+  ASSERT_EQ(r.status, FitStatus::converged) << r.message;
+  const std::filesystem::path dir = test::fresh_dir("fit_page", "report");
+  FitReportOptions o;
+  o.output = (dir / "page").string();
+  o.page.curve_points = 3;
+  const FitReportResult w = write_fit_report(r, data, o);
+  const std::filesystem::path page = w.output;
+  for (const char* f : {"index.html", "README.md", "fit.json", "fit_page.json", "parameters.csv", "correlation.csv",
+                        "residuals.csv", "fig_fit.png", "fig_profile_lambda.png", "drawn.json"})
+    EXPECT_TRUE(std::filesystem::exists(page / f)) << f;
+
+  const nlohmann::json fj = to_json(r);
+  const auto table = read_csv(test::slurp(page / "parameters.csv"));
+  EXPECT_EQ(table_mismatch(table, fj), "");
+  EXPECT_EQ(nlohmann::json::parse(test::slurp(page / "fit.json")).at("estimates"), fj.at("estimates"));
+  nlohmann::json off = fj;  // the comparison sees a change in the last digits
+  off["estimates"][0]["hi95"] = std::nextafter(off["estimates"][0]["hi95"].get<double>(), 1e9);
+  EXPECT_NE(table_mismatch(table, off), "");
+
+  const Profile& pr = r.estimates[0].profile;
+  ASSERT_GE(pr.coordinate.size(), 3u);
+  const nlohmann::json drawn = nlohmann::json::parse(test::slurp(page / "drawn.json"));
+  ASSERT_EQ(drawn.at("profiles").size(), 1u);
+  const nlohmann::json& d = drawn.at("profiles")[0];
+  const std::vector<double> grid{std::exp(pr.coordinate.front()), std::exp(pr.coordinate.back())};
+  auto spans = [](const nlohmann::json& a, const std::vector<double>& b) {
+    return a.at(0).get<double>() == b[0] && a.at(1).get<double>() == b[1];
+  };
+  EXPECT_TRUE(spans(d.at("span"), grid)) << d.dump();
+  EXPECT_TRUE(spans(d.at("fisher_span"), grid)) << d.dump();
+  EXPECT_TRUE(spans(d.at("threshold_span"), grid)) << d.dump();
+  EXPECT_FALSE(spans(d.at("span"), {grid[0], std::exp(pr.coordinate[pr.coordinate.size() - 2])}));
+  EXPECT_EQ(d.at("points"), pr.coordinate.size());
+  EXPECT_EQ(d.at("flat"), false);
+
+  const std::string readme = test::slurp(page / "README.md");
+  EXPECT_NE(readme.find("Status: converged"), std::string::npos);
+  EXPECT_EQ(readme.find("warning"), std::string::npos);
+  EXPECT_NE(readme.find(pr.statement), std::string::npos);
+
+  try {
+    write_fit_report(r, data, o);
+    FAIL() << "an existing folder overwritten";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "output");
+  }
+  EXPECT_EQ(test::slurp(page / "README.md"), readme);
+
+  r.status = FitStatus::maximum_iterations;
+  r.message = "the best start did not converge";
+  r.estimates[0].profile = {};  // one figure: a quicker drawing
+  o.overwrite = true;
+  write_fit_report(r, data, o);
+  const std::string html = test::slurp(page / "index.html");
+  const std::size_t warn = html.find("warning: the fit did not converge (status maximum_iterations)");
+  ASSERT_NE(warn, std::string::npos);
+  EXPECT_LT(warn, html.find("<h2>"));
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

@@ -232,6 +232,8 @@ std::string ipopt_status_name(int status) {
       return "Error_In_Step_Computation";
     case Ipopt::Invalid_Number_Detected:
       return "Invalid_Number_Detected";
+    case Ipopt::User_Requested_Stop:
+      return "User_Requested_Stop";
     default:
       return "Ipopt status " + std::to_string(status);
   }

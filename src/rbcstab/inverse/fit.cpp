@@ -71,19 +71,49 @@ double coordinate_bound(const FitParameterInfo& i, double v) {
   return std::isfinite(v) ? v : (v > 0 ? 1e19 : -1e19);
 }
 
+// FitOptions::stop and on_progress for one fit: the counts so far, reported after each Ipopt iteration, start and
+// profile point; the stop flag read at the same places.
+class FitMonitor {
+ public:
+  explicit FitMonitor(const FitOptions& o) : stop_(o.stop), on_progress_(o.on_progress) { p_.starts = o.starts; }
+  bool stopped() const { return stop_ && stop_->load(); }
+  bool iteration() {  // false: stop the solve
+    ++p_.iterations;
+    report();
+    return !stopped();
+  }
+  void start_done() {
+    ++p_.starts_done;
+    report();
+  }
+  void profile_point_done() {
+    ++p_.profile_points;
+    report();
+  }
+
+ private:
+  void report() const {
+    if (on_progress_) on_progress_(p_);
+  }
+  const std::atomic<bool>* stop_;
+  const std::function<void(const FitProgress&)>& on_progress_;
+  FitProgress p_;
+};
+
 // 1/2 chi^2 over the numeric rows: Ipopt's NLP with the Gauss-Newton Hessian J^T J (exact up to the residuals'
 // curvature, which vanishes at a zero-residual fit and is what the Fisher information uses too).
 class LeastSquaresNlp final : public Ipopt::TNLP {
  public:
   LeastSquaresNlp(std::vector<ObservedRow> rows, std::vector<FitParameter> free, const CellModel& cell,
-                  const FitOptions& options, std::vector<double> start, int held = -1)
+                  const FitOptions& options, std::vector<double> start, int held, FitMonitor* monitor)
       : rows_(std::move(rows)),
         free_(std::move(free)),
         cell_(cell),
         options_(options),
         info_(infos_of(free_, cell)),
         start_(std::move(start)),
-        held_(held) {}
+        held_(held),
+        monitor_(monitor) {}
 
   std::vector<double> solution;
   Ipopt::SolverReturn solver_status = Ipopt::UNASSIGNED;
@@ -152,6 +182,10 @@ class LeastSquaresNlp final : public Ipopt::TNLP {
     solver_status = status;
     solution.assign(x, x + n);
   }
+  bool intermediate_callback(Ipopt::AlgorithmMode, Index, Number, Number, Number, Number, Number, Number, Number,
+                             Number, Index, const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
+    return monitor_ == nullptr || monitor_->iteration();
+  }
 
  private:
   // The residuals (and the Jacobian when asked) at x, cached for the last x.
@@ -176,6 +210,7 @@ class LeastSquaresNlp final : public Ipopt::TNLP {
   std::vector<FitParameterInfo> info_;
   std::vector<double> start_;
   Index held_;
+  FitMonitor* monitor_;
   std::vector<double> x_;
   bool have_J_ = false;
   Linearisation lin_;
@@ -191,6 +226,8 @@ FitStatus status_of(Ipopt::ApplicationReturnStatus s) {
     case Ipopt::Maximum_Iterations_Exceeded:
     case Ipopt::Maximum_CpuTime_Exceeded:
       return FitStatus::maximum_iterations;
+    case Ipopt::User_Requested_Stop:  // FitOptions::stop, the only user stop
+      return FitStatus::interrupted;
     default:
       return FitStatus::failed;
   }
@@ -213,9 +250,9 @@ struct Solve {
   int iterations = 0, evaluations = 0;
 };
 Solve solve(const std::vector<ObservedRow>& rows, const std::vector<FitParameter>& free, const CellModel& cell,
-            const FitOptions& options, const std::vector<double>& start, int held = -1) {
+            const FitOptions& options, const std::vector<double>& start, int held, FitMonitor& monitor) {
   Solve out;
-  Ipopt::SmartPtr<LeastSquaresNlp> nlp = new LeastSquaresNlp(rows, free, cell, options, start, held);
+  Ipopt::SmartPtr<LeastSquaresNlp> nlp = new LeastSquaresNlp(rows, free, cell, options, start, held, &monitor);
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetNumericValue("tol", options.tol);
   app->Options()->SetIntegerValue("max_iter", options.max_iterations);
@@ -297,7 +334,7 @@ constexpr double kZ95 = 1.959963984540054;
 Profile profile_of(const std::vector<ObservedRow>& rows, const std::vector<FitParameter>& free, const CellModel& cell,
                    const FitOptions& options, std::span<const FitParameterInfo> info, std::span<const double> lo,
                    std::span<const double> hi, const std::vector<double>& xhat, double chi2_min, std::size_t j,
-                   double se, int& evaluations) {
+                   double se, int& evaluations, FitMonitor& monitor) {
   Profile p;
   p.computed = true;
   const ProfileOptions& po = options.profiles;
@@ -311,18 +348,24 @@ Profile profile_of(const std::vector<ObservedRow>& rows, const std::vector<FitPa
     Point q;
     q.x = warm;
     q.x[j] = value;
+    if (monitor.stopped()) {
+      q.why = "interrupted";
+      return q;
+    }
     ++p.solves;
     if (free.size() == 1) {
       std::vector<double> r;
       ++evaluations;
       q.ok = residuals_at(rows, cell_at(cell, info, q.x), options.forward, r, q.why);
       if (q.ok) q.delta = chi2_of(r) - chi2_min;
+      monitor.profile_point_done();
       return q;
     }
-    const Solve s = solve(rows, free, cell, options, q.x, static_cast<int>(j));
+    const Solve s = solve(rows, free, cell, options, q.x, static_cast<int>(j), monitor);
+    monitor.profile_point_done();
     evaluations += s.evaluations;
     p.iterations += s.iterations;
-    q.ok = s.status != FitStatus::failed && std::isfinite(s.chi2);
+    q.ok = s.status != FitStatus::failed && s.status != FitStatus::interrupted && std::isfinite(s.chi2);
     q.why = s.ipopt_status;
     if (q.ok) {
       q.x = s.end;
@@ -445,6 +488,31 @@ Profile profile_of(const std::vector<ObservedRow>& rows, const std::vector<FitPa
   return p;
 }
 
+// Residuals per row at the estimate, regime rows included (compared, not fitted).
+std::vector<RowResidual> row_residuals(const ObservationData& data, const CellModel& cell,
+                                       const ForwardOptions& forward) {
+  std::vector<RowResidual> out;
+  const std::vector<Prediction> pred = predict_all(cell, data.rows, forward);
+  for (std::size_t i = 0; i < data.rows.size(); ++i) {
+    const ObservedRow& o = data.rows[i];
+    RowResidual rr;
+    rr.line = o.line;
+    rr.observable = o.observable;
+    rr.observed = o.value;
+    rr.uncertainty = o.uncertainty;
+    rr.predicted = pred[i].value;
+    rr.reason = pred[i].reason;
+    rr.predicted_regime = pred[i].regime;
+    if (o.has_regime) rr.observed_regime = o.regime;
+    if (numeric(o)) rr.residual = (rr.predicted - rr.observed) / rr.uncertainty;
+    // A regime row, or a numeric row that names the regime it was seen in (a transition row's regime is the
+    // swinging side of the transition).
+    if (o.has_regime) rr.regime_agrees = pred[i].regime == o.regime;
+    out.push_back(rr);
+  }
+  return out;
+}
+
 }  // namespace
 
 void FitOptions::validate() const {
@@ -537,10 +605,11 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
   res.rows = static_cast<int>(rows.size());
   res.dof = res.rows - static_cast<int>(free.size());
 
+  FitMonitor monitor(options);
   std::mt19937_64 rng(options.seed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   int best = -1;
-  for (int s = 0; s < options.starts; ++s) {
+  for (int s = 0; s < options.starts && !monitor.stopped(); ++s) {
     FitStart st;
     st.start = x0;
     if (s > 0)
@@ -551,7 +620,7 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
         const double margin = 1e-3 * std::min(1.0, hi[j] - lo[j]);
         st.start[j] = std::clamp(x0[j] + width * unit(rng), lo[j] + margin, hi[j] - margin);
       }
-    const Solve sv = solve(rows, free, cell, options, st.start);
+    const Solve sv = solve(rows, free, cell, options, st.start, -1, monitor);
     res.evaluations += sv.evaluations;
     st.status = sv.status;
     st.ipopt_status = sv.ipopt_status;
@@ -565,10 +634,13 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
         (best < 0 || rank(st.status) < rank(res.starts[best].status) ||
          (rank(st.status) == rank(res.starts[best].status) && st.chi2 < res.starts[best].chi2)))
       best = k;
+    monitor.start_done();
   }
+  const std::string stopped_after =
+      "interrupted after " + std::to_string(res.starts.size()) + " of " + std::to_string(options.starts) + " starts";
   if (best < 0) {
-    res.status = FitStatus::failed;
-    res.message = "no start gave a fit:";
+    res.status = monitor.stopped() ? FitStatus::interrupted : FitStatus::failed;
+    res.message = monitor.stopped() ? stopped_after + ": no estimate" : "no start gave a fit:";
     for (const FitStart& st : res.starts) res.message += " [" + st.ipopt_status + "]";
     return res;
   }
@@ -578,9 +650,15 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
   res.cell = cell_at(cell, info, b.end);
   if (res.status != FitStatus::converged)
     res.message = "the best start did not converge (" + b.ipopt_status + "): the estimates are its last iterate";
+  if (monitor.stopped()) {
+    res.status = FitStatus::interrupted;
+    res.message = stopped_after + ": the estimates are the best start's so far (" + to_string(b.status) +
+                  (b.status == FitStatus::converged ? "" : ", its last iterate") + "), without intervals";
+  }
 
   // Fisher information J^T J at the estimate (uncertainties as given: no rescaling by chi^2/dof).
-  const Linearisation lin = linearise(rows, free, res.cell, options, options.fd_step);
+  const Linearisation lin = monitor.stopped() ? Linearisation{false, "interrupted", {}, {}}
+                                              : linearise(rows, free, res.cell, options, options.fd_step);
   const std::size_t n = free.size();
   res.covariance.assign(n, std::vector<double>(n, kNotGiven));
   res.correlation.assign(n, std::vector<double>(n, kNotGiven));
@@ -595,7 +673,9 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
     res.estimates.push_back(e);
   }
   if (!lin.ok) {
-    res.message += (res.message.empty() ? "" : "; ") + std::string("no intervals: ") + lin.reason;
+    if (!monitor.stopped())
+      res.message += (res.message.empty() ? "" : "; ") + std::string("no intervals: ") + lin.reason;
+    res.residuals = row_residuals(data, res.cell, options.forward);
     return res;
   }
   Eigen::MatrixXd J(lin.r.size(), n);
@@ -661,29 +741,20 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
   for (const std::string& s : res.unidentifiable) res.message += (res.message.empty() ? "" : "; ") + s;
 
   if (options.profiles.enabled)
-    for (std::size_t j = 0; j < n; ++j)
-      res.estimates[j].profile = profile_of(rows, free, cell, options, info, lo, hi, b.end, res.chi2, j,
-                                            res.estimates[j].standard_error, res.evaluations);
+    for (std::size_t j = 0; j < n; ++j) {
+      if (!monitor.stopped())
+        res.estimates[j].profile = profile_of(rows, free, cell, options, info, lo, hi, b.end, res.chi2, j,
+                                              res.estimates[j].standard_error, res.evaluations, monitor);
+      if (!monitor.stopped()) continue;
+      res.estimates[j].profile = {};  // cut short or not begun: no interval to claim
+      if (res.status == FitStatus::interrupted) continue;
+      res.status = FitStatus::interrupted;
+      res.message += (res.message.empty() ? "" : "; ") + std::string("interrupted before the profile of ") +
+                     info[j].name + " was finished: the estimates and Fisher intervals stand; no profile from " +
+                     info[j].name + " on";
+    }
 
-  // Residuals per row, regime rows included (compared, not fitted).
-  const std::vector<Prediction> pred = predict_all(res.cell, data.rows, options.forward);
-  for (std::size_t i = 0; i < data.rows.size(); ++i) {
-    const ObservedRow& o = data.rows[i];
-    RowResidual rr;
-    rr.line = o.line;
-    rr.observable = o.observable;
-    rr.observed = o.value;
-    rr.uncertainty = o.uncertainty;
-    rr.predicted = pred[i].value;
-    rr.reason = pred[i].reason;
-    rr.predicted_regime = pred[i].regime;
-    if (o.has_regime) rr.observed_regime = o.regime;
-    if (numeric(o)) rr.residual = (rr.predicted - rr.observed) / rr.uncertainty;
-    // A regime row, or a numeric row that names the regime it was seen in (a transition row's regime is the
-    // swinging side of the transition).
-    if (o.has_regime) rr.regime_agrees = pred[i].regime == o.regime;
-    res.residuals.push_back(rr);
-  }
+  res.residuals = row_residuals(data, res.cell, options.forward);
   return res;
 }
 

@@ -3,6 +3,8 @@
 // free parameters (ln of the moduli and viscosities, the excess areas linearly) within the bounds of
 // fit_parameter_info, solved by Ipopt from several starts; the Fisher information J^T J at the estimate gives the
 // covariance, 95 % intervals and correlations, and names the directions the data cannot pin.
+#include <atomic>
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <span>
 #include <string>
@@ -26,6 +28,13 @@ struct ProfileOptions {
   void validate() const;                // throws InvalidArgument naming the field
 };
 
+// How far a fit has got (FitOptions::on_progress): reported after every Ipopt iteration, start and profile point.
+struct FitProgress {
+  int starts_done = 0, starts = 0;  // starts finished, of those asked
+  int profile_points = 0;           // profile points finished, every parameter's (the total is not known in advance)
+  int iterations = 0;               // Ipopt iterations so far, every solve's
+};
+
 struct FitOptions {
   int starts = 4;                       // [1, 64]: the given start, then starts spread in the box (fixed seed)
   double start_spread = 1.0;            // (0, 10]: half-width of the spread in the fitted coordinate (ln for moduli)
@@ -36,16 +45,21 @@ struct FitOptions {
   double identifiability_ratio = 1e-8;  // (0, 1): a Fisher eigenvalue below ratio * largest is a flat direction
   ForwardOptions forward;
   ProfileOptions profiles;
-  void validate() const;  // throws InvalidArgument naming the field
+  // Set (e.g. by Ctrl-C: core/interrupt.hpp) to stop: the fit returns within an Ipopt iteration with the status
+  // interrupted and the best start so far, if any (null: never stops).
+  const std::atomic<bool>* stop = nullptr;
+  std::function<void(const FitProgress&)> on_progress;  // on the calling thread; empty: none
+  void validate() const;                                // throws InvalidArgument naming the field
 };
 
-enum class FitStatus { converged, infeasible, maximum_iterations, failed };
+enum class FitStatus { converged, infeasible, maximum_iterations, failed, interrupted };
 template <>
 struct EnumTable<FitStatus> {
   static constexpr EnumName<FitStatus> entries[] = {{FitStatus::converged, "converged"},
                                                     {FitStatus::infeasible, "infeasible"},
                                                     {FitStatus::maximum_iterations, "maximum_iterations"},
-                                                    {FitStatus::failed, "failed"}};
+                                                    {FitStatus::failed, "failed"},
+                                                    {FitStatus::interrupted, "interrupted"}};
 };
 
 struct FitStart {

@@ -17,13 +17,54 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 bool page_angle(Observable o) { return o == Observable::inclination_angle || o == Observable::swinging_amplitude; }
 
-// The page shows angles in degrees (as labs report them); other values in their canonical unit.
-double page_value(Observable o, double v) { return page_angle(o) ? v * 180 / std::numbers::pi : v; }
-std::string page_unit(Observable o) { return page_angle(o) ? "deg" : canonical_unit(o); }
-
 nlohmann::json page_number(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(); }
 
+constexpr double kChi2OneDof95 = 3.841458820694124;  // the profile's threshold (inverse/fit.cpp)
+constexpr int kParabolaPoints = 101;
+
+// A computed profile as the figure draws it: the grid in SI, and the Fisher parabola over the same span (none where
+// the Fisher information gives no standard error).
+nlohmann::json profile_panel(const FitEstimate& e) {
+  const Profile& p = e.profile;
+  const bool log = e.parameter.log_scale;
+  auto si = [&](double x) { return log ? std::exp(x) : x; };
+  nlohmann::json x = nlohmann::json::array(), d = nlohmann::json::array();
+  for (std::size_t k = 0; k < p.coordinate.size(); ++k) {
+    x.push_back(si(p.coordinate[k]));
+    d.push_back(page_number(p.delta_chi2[k]));
+  }
+  nlohmann::json fisher;
+  const double se = e.standard_error;
+  if (!p.coordinate.empty() && std::isfinite(se) && se > 0) {
+    const double centre = log ? std::log(e.value) : e.value, a = p.coordinate.front(), b = p.coordinate.back();
+    nlohmann::json fx = nlohmann::json::array(), fd = nlohmann::json::array();
+    for (int k = 0; k < kParabolaPoints; ++k) {
+      const double c = a + (b - a) * k / (kParabolaPoints - 1);
+      fx.push_back(si(c));
+      fd.push_back((c - centre) * (c - centre) / (se * se));
+    }
+    fisher = {{"x", fx}, {"delta_chi2", fd}};
+  }
+  return {{"parameter", e.parameter.name},
+          {"symbol", e.parameter.unicode},
+          {"unit", e.parameter.unit},
+          {"scale", log ? "log" : "linear"},
+          {"value", page_number(e.value)},
+          {"threshold", kChi2OneDof95},
+          {"flat", p.flat},
+          {"statement", p.statement},
+          {"x", x},
+          {"delta_chi2", d},
+          {"span", p.coordinate.empty() ? nlohmann::json() : nlohmann::json::array({x.front(), x.back()})},
+          {"fisher", fisher}};
+}
+
 }  // namespace
+
+namespace detail {
+double fit_page_value(Observable o, double v) { return page_angle(o) ? v * 180 / std::numbers::pi : v; }
+std::string fit_page_unit(Observable o) { return page_angle(o) ? "deg" : canonical_unit(o); }
+}  // namespace detail
 
 void FitPageOptions::validate() const {
   require(curve_points >= 2 && curve_points <= 10000, "curve_points", curve_points, "an integer in [2, 10000]");
@@ -64,9 +105,9 @@ nlohmann::json fit_page_json(const FitResult& fit, const ObservationData& data, 
       any_fitted = any_fitted || q;
       points.push_back({{"line", r.line},
                         {"shear_rate", r.shear_rate},
-                        {"value", page_value(observable, r.value)},
-                        {"uncertainty", page_value(observable, r.uncertainty)},
-                        {"predicted", page_number(q ? page_value(observable, q->predicted) : kNaN)},
+                        {"value", detail::fit_page_value(observable, r.value)},
+                        {"uncertainty", detail::fit_page_value(observable, r.uncertainty)},
+                        {"predicted", page_number(q ? detail::fit_page_value(observable, q->predicted) : kNaN)},
                         {"residual", page_number(q ? q->residual : kNaN)}});
       if (q)
         residuals.push_back({{"line", r.line},
@@ -86,7 +127,7 @@ nlohmann::json fit_page_json(const FitResult& fit, const ObservationData& data, 
       row.viscosity = viscosity;
       const Prediction p = predict(fit.cell, row, options.forward);
       rates.push_back(rate);
-      values.push_back(p.ok() ? page_number(page_value(observable, p.value)) : nlohmann::json());
+      values.push_back(p.ok() ? page_number(detail::fit_page_value(observable, p.value)) : nlohmann::json());
       if (p.ok() && std::isfinite(p.value)) {
         if (!std::isfinite(first)) first = rate;
         last = rate;
@@ -95,7 +136,7 @@ nlohmann::json fit_page_json(const FitResult& fit, const ObservationData& data, 
       }
     }
     panels.push_back({{"observable", to_string(observable)},
-                      {"unit", page_unit(observable)},
+                      {"unit", detail::fit_page_unit(observable)},
                       {"viscosity", viscosity},
                       {"points", points},
                       {"curve",
@@ -107,15 +148,21 @@ nlohmann::json fit_page_json(const FitResult& fit, const ObservationData& data, 
   if (!any_fitted)
     throw InvalidArgument("data", data.path + " holds no row of this fit (no residual matches a row's line)");
   const nlohmann::json r = to_json(fit);
+  nlohmann::json profiles = nlohmann::json::array();
+  for (const FitEstimate& e : fit.estimates)
+    if (e.profile.computed) profiles.push_back(profile_panel(e));
   return {{"kind", "fit"},
           {"status", to_string(fit.status)},
+          {"message", fit.message},
           {"chi2", page_number(fit.chi2)},
           {"dof", fit.dof},
           {"rows", fit.rows},
           {"estimates", r.at("estimates")},
           {"unidentifiable", fit.unidentifiable},
+          {"correlation", r.at("correlation")},
           {"panels", panels},
-          {"residuals", residuals}};
+          {"residuals", residuals},
+          {"profiles", profiles}};
 }
 
 }  // namespace rbcstab

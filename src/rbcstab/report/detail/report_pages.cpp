@@ -189,6 +189,47 @@ const nlohmann::json* figure_of(const nlohmann::json& m, const std::string& png)
 const char* kShapeFiles = "shape_T.vtk (VTK legacy), shape_T.vtp (VTK XML PolyData), shape_T.ply, shape_T.csv (grid)";
 }  // namespace
 
+std::string page_head_html(const std::string& title) {
+  return "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" + html_escape(title) +
+         "</title>\n<style>body{font-family:sans-serif;max-width:70em;margin:auto;padding:1em}"
+         "table{border-collapse:collapse;margin:0.5em 0}td,th{border:1px solid #999;padding:2px 8px;text-align:right}"
+         "figure{margin:1.5em 0}img{max-width:100%;border:1px solid #ddd}.warn{color:#a00}"
+         ".hover-tip{position:fixed;background:#fff;border:1px solid #666;padding:2px 6px;font-size:0.85em;"
+         "pointer-events:none}</style></head><body>\n";
+}
+
+std::string table_markdown(const std::string& title, const std::vector<std::string>& header,
+                           const std::vector<std::vector<std::string>>& rows) {
+  std::ostringstream md;
+  md << "## " << plain_text(title) << "\n\n|";
+  for (const auto& h : header) md << ' ' << plain_text(h) << " |";
+  md << "\n|";
+  for (std::size_t k = 0; k < header.size(); ++k) md << " --- |";
+  md << "\n";
+  for (const auto& r : rows) {
+    md << "|";
+    for (const auto& c : r) md << ' ' << plain_text(c) << " |";
+    md << "\n";
+  }
+  md << "\n";
+  return md.str();
+}
+
+std::string table_html(const std::string& title, const std::vector<std::string>& header,
+                       const std::vector<std::vector<std::string>>& rows) {
+  std::ostringstream h;
+  h << "<h2>" << html_text(title) << "</h2>\n<table><tr>";
+  for (const auto& c : header) h << "<th>" << html_text(c) << "</th>";
+  h << "</tr>\n";
+  for (const auto& r : rows) {
+    h << "<tr>";
+    for (const auto& c : r) h << "<td>" << html_text(c) << "</td>";
+    h << "</tr>\n";
+  }
+  h << "</table>\n";
+  return h.str();
+}
+
 std::string html_escape(const std::string& s) {
   std::string o;
   for (char c : s) {
@@ -234,19 +275,7 @@ std::string report_markdown(const nlohmann::json& m, const nlohmann::json& drawn
   std::ostringstream md;
   md << "# " << p.title << "\n\n" << plain_text(p.regime) << "\n\n";
   for (const auto& w : p.warnings) md << "> warning: " << plain_text(w) << "\n\n";
-  for (const auto& [title, t] : p.tables) {
-    md << "## " << plain_text(title) << "\n\n|";
-    for (const auto& h : t.header) md << ' ' << plain_text(h) << " |";
-    md << "\n|";
-    for (std::size_t k = 0; k < t.header.size(); ++k) md << " --- |";
-    md << "\n";
-    for (const auto& r : t.rows) {
-      md << "|";
-      for (const auto& c : r) md << ' ' << plain_text(c) << " |";
-      md << "\n";
-    }
-    md << "\n";
-  }
+  for (const auto& [title, t] : p.tables) md << table_markdown(title, t.header, t.rows);
   md << "## Figures\n\n";
   for (const auto& d : drawn) {
     const std::string file = d.at("file");
@@ -281,25 +310,10 @@ std::string report_markdown(const nlohmann::json& m, const nlohmann::json& drawn
 std::string report_html(const nlohmann::json& m, const nlohmann::json& drawn) {
   const Page p = make_page(m);
   std::ostringstream h;
-  h << "<!DOCTYPE html>\n<html lang=\"en\"><head><meta charset=\"utf-8\"><title>" << html_escape(p.title)
-    << "</title>\n<style>body{font-family:sans-serif;max-width:70em;margin:auto;padding:1em}"
-       "table{border-collapse:collapse;margin:0.5em 0}td,th{border:1px solid #999;padding:2px 8px;text-align:right}"
-       "figure{margin:1.5em 0}img{max-width:100%;border:1px solid #ddd}.warn{color:#a00}"
-       ".hover-tip{position:fixed;background:#fff;border:1px solid #666;padding:2px 6px;font-size:0.85em;"
-       "pointer-events:none}</style></head><body>\n";
+  h << page_head_html(p.title);
   h << "<h1>" << html_escape(p.title) << "</h1>\n<p>" << html_text(p.regime) << "</p>\n";
   for (const auto& w : p.warnings) h << "<p class=\"warn\">warning: " << html_text(w) << "</p>\n";
-  for (const auto& [title, t] : p.tables) {
-    h << "<h2>" << html_text(title) << "</h2>\n<table><tr>";
-    for (const auto& c : t.header) h << "<th>" << html_text(c) << "</th>";
-    h << "</tr>\n";
-    for (const auto& r : t.rows) {
-      h << "<tr>";
-      for (const auto& c : r) h << "<td>" << html_text(c) << "</td>";
-      h << "</tr>\n";
-    }
-    h << "</table>\n";
-  }
+  for (const auto& [title, t] : p.tables) h << table_html(title, t.header, t.rows);
   h << "<h2>Figures</h2>\n";
   std::string data_scripts;  // the values behind the figures that show them on hover, and the script, at the end
   for (const auto& d : drawn) {

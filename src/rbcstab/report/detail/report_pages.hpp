@@ -3,6 +3,7 @@
 // figures the plotting script drew (figures.json).
 #include <nlohmann/json.hpp>
 #include <string>
+#include <vector>
 
 namespace rbcstab::detail {
 
@@ -10,5 +11,12 @@ std::string report_markdown(const nlohmann::json& manifest, const nlohmann::json
 std::string report_html(const nlohmann::json& manifest, const nlohmann::json& drawn);
 // Text for HTML: < > & " escaped (every page the report module writes).
 std::string html_escape(const std::string& s);
+// The pages' pieces: the head and opening body with the report's style; one titled table of text cells (maths
+// between $...$) as a Markdown section or as HTML.
+std::string page_head_html(const std::string& title);
+std::string table_markdown(const std::string& title, const std::vector<std::string>& header,
+                           const std::vector<std::vector<std::string>>& rows);
+std::string table_html(const std::string& title, const std::vector<std::string>& header,
+                       const std::vector<std::vector<std::string>>& rows);
 
 }  // namespace rbcstab::detail

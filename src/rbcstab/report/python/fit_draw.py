@@ -2,13 +2,20 @@
 the observations against shear rate (log axis) with their error bars, one colour per outer viscosity, and the model
 curve at the estimate drawn only over the span the model computed (the JSON's curve.span; grid points without a
 prediction are gaps); below, the normalised residuals (predicted - observed)/sigma against shear rate with the
-+-2 band. The parameter table and the identifiability statements are text on the page, not drawn here.
++-2 band. Each computed profile (the JSON's "profiles") gets its own figure beside it, fig_profile_<parameter>.png:
+Delta chi^2 against the parameter (log axis for a ln-fitted one), the 3.84 line and the Fisher parabola, all drawn
+over the profile's computed grid only; a flat profile says so on the figure. The parameter table and the
+identifiability statements are text on the page, not drawn here.
 
-    python3 fit_draw.py fit_page.json fig_fit.png
+    python3 fit_draw.py fit_page.json fig_fit.png [drawn.json]
 
-prints what was drawn as JSON: {"figures": 1, "panels": [{"observable", "viscosity", "points", "curve_span"}]}."""
+prints what was drawn as JSON (and writes it to drawn.json when given): {"figures": n, "panels": [{"observable",
+"viscosity", "points", "curve_span"}],
+"profiles": [{"parameter", "file", "points", "span", "fisher_span", "threshold_span", "xlim", "flat"}]}: the spans
+are read back from the lines matplotlib holds."""
 import json
 import math
+import os
 import sys
 
 import matplotlib
@@ -68,15 +75,69 @@ def draw_fit(data):
     return fig, drawn
 
 
+def _span(xs):
+    """[first, last] of the x values a line was drawn over (the grid is ascending)."""
+    xs = [float(x) for x in xs]
+    return [min(xs), max(xs)]
+
+
+def draw_profile(p):
+    """The figure of one profile (an entry of the JSON's "profiles") and the record of what was drawn."""
+    fig, ax = plt.subplots(figsize=(6, 4.5))
+    pts = [(x, d) for x, d in zip(p["x"], p["delta_chi2"]) if d is not None]
+    (line,) = ax.plot([x for x, _ in pts], [d for _, d in pts], "o-", ms=4, color="C0", label="profile (re-fitted)")
+    lo, hi = p["span"]
+    threshold = ax.hlines(p["threshold"], lo, hi, colors="C3", linestyles=":",
+                          label=f"$\\Delta\\chi^2$ = {p['threshold']:.2f} (95 %)")
+    fisher_span = None
+    if p["fisher"] is not None:
+        fx, fd = p["fisher"]["x"], p["fisher"]["delta_chi2"]
+        (parabola,) = ax.plot(fx, fd, "--", color="0.4", label="Fisher parabola")
+        fisher_span = _span(parabola.get_xdata())
+    if p["value"] is not None:
+        ax.axvline(p["value"], color="0.6", lw=0.8)
+    if p["scale"] == "log":
+        ax.set_xscale("log")
+    ax.set_xlim(lo, hi)
+    # The parabola can rise far above the profile where the grid doubles its steps: the profile sets the scale.
+    top = max([d for _, d in pts] + [2 * p["threshold"]])
+    ax.set_ylim(min([0.0] + [d for _, d in pts]) - 0.05 * top, 1.1 * top)
+    unit = f" [{p['unit']}]" if p["unit"] else ""
+    ax.set_xlabel(f"{p['parameter']}{unit}")
+    ax.set_ylabel("$\\Delta\\chi^2$ (profile $-$ minimum)")
+    title = f"profile of {p['parameter']}"
+    if p["flat"]:
+        title += ": flat, $\\Delta\\chi^2$ < 3.84 over the whole range (not identifiable)"
+    ax.set_title(title, fontsize=10)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    segment = threshold.get_segments()[0]
+    drawn = {"parameter": p["parameter"], "points": len(pts), "span": _span(line.get_xdata()),
+             "fisher_span": fisher_span, "threshold_span": _span([segment[0][0], segment[-1][0]]),
+             "xlim": list(ax.get_xlim()), "flat": p["flat"]}
+    return fig, drawn
+
+
 def main(argv):
-    if len(argv) != 3:
+    if len(argv) not in (3, 4):
         raise SystemExit(__doc__)
     with open(argv[1], encoding="utf-8") as f:
         data = json.load(f)
     fig, drawn = draw_fit(data)
     fig.savefig(argv[2], dpi=100)
     plt.close(fig)
-    print(json.dumps({"figures": 1, "panels": drawn}))
+    profiles = []
+    for p in data.get("profiles", []):
+        fig, record = draw_profile(p)
+        record["file"] = f"fig_profile_{p['parameter']}.png"
+        fig.savefig(os.path.join(os.path.dirname(os.path.abspath(argv[2])), record["file"]), dpi=100)
+        plt.close(fig)
+        profiles.append(record)
+    record = json.dumps({"figures": 1 + len(profiles), "panels": drawn, "profiles": profiles})
+    if len(argv) == 4:
+        with open(argv[3], "w", encoding="utf-8") as f:
+            f.write(record + "\n")
+    print(record)
 
 
 if __name__ == "__main__":
