@@ -62,25 +62,23 @@ def test_wrong_types_are_type_errors(small):
 
 
 def test_report_folder_progress_and_refusal(small, tmp_path):
-    """fit(report=DIR) writes the page (its parameters.csv holds the result's numbers), progress counts the starts
-    then the profile points, and an existing folder is refused before the fit runs."""
+    """fit(report=DIR) writes the page (its parameters.csv holds the result's numbers), progress counts the starts,
+    and an existing folder is refused before the fit runs. (The profile figures: report_tests and cli.fit.report.)"""
     calls = []
     page = tmp_path / "page"
-    r = rbcstab.fit(small, ["lambda"], fixed={"Delta": 0.1, "Delta0": 0.05}, starts=1, profiles=True,
-                    profile_points=2, report=str(page), progress=lambda done, total, eta: calls.append((done, total)))
+    r = rbcstab.fit(small, ["lambda"], fixed={"Delta": 0.1, "Delta0": 0.05}, starts=1, report=str(page),
+                    progress=lambda done, total, eta: calls.append((done, total)))
     assert r["status"] == "converged"
     assert r["report"] == str(page)
-    for name in ("index.html", "README.md", "fit.json", "parameters.csv", "fig_fit.png", "fig_profile_lambda.png"):
+    for name in ("index.html", "README.md", "fit.json", "parameters.csv", "fig_fit.png", "observations.csv"):
         assert (page / name).exists(), name
     header, row = (page / "parameters.csv").read_text().splitlines()
     table = dict(zip(header.split(","), row.split(",")))
     e = r.estimate("lambda")
     assert float(table["value"]) == e["value"] and float(table["lo95"]) == e["lo95"]
-    assert float(table["profile_hi95"]) == e["profile"]["hi95"]
-    # The start, then at least one profile point on each side; total 0: not known in advance with profiles.
-    assert calls and calls[-1][0] >= 3 and all(total == 0 for _, total in calls)
-    assert [d for d, _ in calls] == sorted(d for d, _ in calls)
-    with pytest.raises(ValueError, match="exists; pass --overwrite|exists; pass overwrite"):
+    assert float(table["hi95"]) == e["hi95"] and table["identifiable"] == "true"
+    assert calls[-1] == (1, 1) and all(total == 1 for _, total in calls)
+    with pytest.raises(ValueError, match="exists; pass overwrite"):
         rbcstab.fit(small, ["lambda"], fixed={"Delta": 0.1, "Delta0": 0.05}, starts=1, report=str(page))
     with pytest.raises(TypeError):
         rbcstab.fit(small, ["lambda"], report=3)
