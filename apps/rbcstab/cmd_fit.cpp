@@ -46,7 +46,7 @@ int run(FitCliOptions& o) {
   const bool drawn = page && r.status != FitStatus::failed && r.status != FitStatus::interrupted;
   if (drawn) doc["report"] = write_fit_report(r, data, o.report).output;
   if (page && !drawn) std::cerr << "rbcstab: no report written: the fit is " << to_string(r.status) << "\n";
-  if (r.status == FitStatus::interrupted) std::cerr << "rbcstab: interrupted: " << r.message << "\n";
+  if (r.status == FitStatus::interrupted) std::cerr << "rbcstab: stopped by a signal: " << r.message << "\n";
   if (o.json)
     std::cout << doc.dump(2) << "\n";
   else

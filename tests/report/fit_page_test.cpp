@@ -76,23 +76,50 @@ TEST(FitPage, PanelsCurvesAndResiduals) {
   EXPECT_EQ(page.at("residuals").size(), 3u);
 }
 
-// The drawing script draws the page's JSON as given: one figure, every panel, each curve over its computed span.
+// A flat profile as fit() leaves one for kappa (Fit.ProfileOfKappaAloneIsFlat): Delta chi^2 = 0 from bound to bound,
+// no Fisher standard error.
+FitEstimate flat_kappa() {
+  FitEstimate e;
+  e.parameter = fit_parameter_info(FitParameter::bending_modulus, CellModel{});
+  e.value = 2e-19;
+  e.identifiable = false;
+  e.profile.computed = true;
+  e.profile.flat = true;
+  e.profile.coordinate = {std::log(e.parameter.lo), std::log(e.value), std::log(e.parameter.hi)};
+  e.profile.delta_chi2 = {0, 0, 0};
+  e.profile.statement = "profile of bending_modulus: flat";
+  return e;
+}
+
+// The drawing script draws the page's JSON as given: the fit's figure with every panel, each curve over its computed
+// span, and the flat profile's figure over its grid (log axis: it spans decades), without a Fisher parabola, titled
+// flat.
 TEST(FitPage, DrawingScriptDrawsWhatTheJsonSays) {
   const std::filesystem::path dir = test::fresh_dir("fit_page", "draw");
   FitPageOptions o;
   o.curve_points = 7;
-  const nlohmann::json page = fit_page_json(page_fit(), page_data(), o);
+  FitResult fit = page_fit();
+  fit.estimates.push_back(flat_kappa());
+  const nlohmann::json page = fit_page_json(fit, page_data(), o);
   write_file_atomic((dir / "fit_page.json").string(), page.dump(1), "test");
   const std::string cmd = "/usr/bin/python3 '" + find_script_dir("") + "/fit_draw.py' '" +
                           (dir / "fit_page.json").string() + "' '" + (dir / "fig_fit.png").string() + "' > '" +
                           (dir / "drawn.json").string() + "' 2>&1";
   ASSERT_EQ(std::system(cmd.c_str()), 0) << test::slurp(dir / "drawn.json");
   const nlohmann::json drawn = nlohmann::json::parse(test::slurp(dir / "drawn.json"));
-  EXPECT_EQ(drawn.at("figures"), 1);
+  EXPECT_EQ(drawn.at("figures"), 2);
   ASSERT_EQ(drawn.at("panels").size(), page.at("panels").size());
   for (std::size_t k = 0; k < page.at("panels").size(); ++k)
     EXPECT_EQ(drawn.at("panels")[k].at("curve_span"), page.at("panels")[k].at("curve").at("span")) << k;
   EXPECT_GT(png_size(dir / "fig_fit.png").first, 0);
+  ASSERT_EQ(drawn.at("profiles").size(), 1u);
+  const nlohmann::json& d = drawn.at("profiles")[0];
+  const std::vector<double>& c = fit.estimates[0].profile.coordinate;
+  EXPECT_EQ(d.at("span"), nlohmann::json::array({std::exp(c.front()), std::exp(c.back())}));
+  EXPECT_TRUE(d.at("fisher_span").is_null());
+  EXPECT_EQ(d.at("xscale"), "log");
+  EXPECT_NE(d.at("title").get<std::string>().find("flat"), std::string::npos) << d.dump();
+  EXPECT_GT(png_size(dir / "fig_profile_bending_modulus.png").first, 0);
   std::filesystem::remove_all(dir);
 }
 

@@ -853,10 +853,12 @@ std::string fit_text(const FitResult& r) {
   for (const FitEstimate& e : r.estimates) {
     s << "  " << e.parameter.name << std::string(e.parameter.name.size() < 18 ? 18 - e.parameter.name.size() : 1, ' ')
       << format_value(e.value) << (e.parameter.unit.empty() ? "" : " " + e.parameter.unit) << "   ";
-    if (e.identifiable)
+    if (!e.identifiable)
+      s << "not identifiable";
+    else if (std::isfinite(e.standard_error))
       s << "[" << format_value(e.lo95) << ", " << format_value(e.hi95) << "]";
     else
-      s << "not identifiable";
+      s << "no interval (see the message above)";
     if (e.at_bound) s << "  (at a bound)";
     s << "\n";
   }

@@ -1,6 +1,7 @@
 // A fit's report folder (report/fit_page.hpp write_fit_report): the page's tables made from the FitResult, the
 // figures drawn by fit_draw.py from fit_page_json, and the data behind both, staged and published whole as
 // `rbcstab report` does (detail/staging.hpp).
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
@@ -56,13 +57,17 @@ FitPageText fit_page_text(const FitResult& fit, const ObservationData& data, con
   p.title = "rbcstab fit: " + data_name;
   std::ostringstream s;
   s << "Status: " << to_string(fit.status) << ". $chi^2$ = " << fit_cell(fit.chi2) << " over " << fit.rows
-    << " rows and " << fit.estimates.size() << " free parameters (" << fit.dof << " degrees of freedom)";
+    << " rows and " << fit.estimates.size() << " free parameter" << (fit.estimates.size() == 1 ? "" : "s") << " ("
+    << fit.dof << " degrees of freedom)";
   if (fit.dof > 0 && std::isfinite(fit.chi2)) s << ": $chi^2$/dof = " << fit_cell(fit.chi2 / fit.dof, 4);
   s << ". The 95 % intervals take the uncertainties as given (not rescaled by $chi^2$/dof); " << fit.evaluations
     << " evaluations of the model over all rows.";
   p.summary = s.str();
   if (fit.status != FitStatus::converged)
     p.warnings.push_back("the fit did not converge (status " + to_string(fit.status) + "): " + fit.message);
+  else if (std::any_of(fit.estimates.begin(), fit.estimates.end(),
+                       [](const FitEstimate& e) { return e.identifiable && !std::isfinite(e.standard_error); }))
+    p.warnings.push_back("no Fisher intervals at the estimate: " + fit.message);
 
   ReportTable params{
       "Parameters (95 % intervals: Fisher, from the Fisher information at the estimate; profile, "
@@ -73,15 +78,17 @@ FitPageText fit_page_text(const FitResult& fit, const ObservationData& data, con
   for (const FitEstimate& e : fit.estimates) {
     const std::string& u = e.parameter.unit;
     const Profile& pr = e.profile;
-    params.rows.push_back(
-        {e.parameter.name + " (" + e.parameter.unicode + ")", fit_with_unit(e.value, u),
-         e.identifiable ? "[" + fit_cell(e.lo95) + ", " + fit_cell(e.hi95) + "]" : "none: not identifiable",
-         !pr.computed ? "not computed"
-         : pr.flat    ? "none: flat"
-                      : "[" + (std::isfinite(pr.lo95) ? fit_cell(pr.lo95) : "open") + ", " +
-                         (std::isfinite(pr.hi95) ? fit_cell(pr.hi95) : "open") + "]",
-         fit_yes_no(e.identifiable), fit_yes_no(e.at_bound),
-         pr.computed ? pr.statement : "not computed (no --profiles)"});
+    const bool assessed = !e.identifiable || std::isfinite(e.standard_error);  // the Fisher test ran
+    params.rows.push_back({e.parameter.name + " (" + e.parameter.unicode + ")", fit_with_unit(e.value, u),
+                           !e.identifiable                   ? "none: not identifiable"
+                           : std::isfinite(e.standard_error) ? "[" + fit_cell(e.lo95) + ", " + fit_cell(e.hi95) + "]"
+                                                             : "none: no Fisher information (see the warning)",
+                           !pr.computed ? "not computed"
+                           : pr.flat    ? "none: flat"
+                                        : "[" + (std::isfinite(pr.lo95) ? fit_cell(pr.lo95) : "open") + ", " +
+                                           (std::isfinite(pr.hi95) ? fit_cell(pr.hi95) : "open") + "]",
+                           assessed ? fit_yes_no(e.identifiable) : "not assessed", fit_yes_no(e.at_bound),
+                           pr.computed ? pr.statement : "not computed (profiles not asked for)"});
   }
   p.tables.push_back(std::move(params));
 
@@ -195,7 +202,7 @@ std::vector<FitFigure> fit_figures(const FitResult& fit, const nlohmann::json& d
     out.push_back({d.at("file").get<std::string>(),
                    "Profile of " + d.at("parameter").get<std::string>() +
                        ": $Delta chi^2$ of the re-fitted profile (points), the 3.84 line and the Fisher parabola, "
-                       "over the computed grid only. " +
+                       "over the computed grid only; " +
                        statement + ". Data: fit_page.json"});
   }
   return out;

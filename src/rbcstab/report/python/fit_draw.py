@@ -3,7 +3,7 @@ the observations against shear rate (log axis) with their error bars, one colour
 curve at the estimate drawn only over the span the model computed (the JSON's curve.span; grid points without a
 prediction are gaps); below, the normalised residuals (predicted - observed)/sigma against shear rate with the
 +-2 band. Each computed profile (the JSON's "profiles") gets its own figure beside it, fig_profile_<parameter>.png:
-Delta chi^2 against the parameter (log axis for a ln-fitted one), the 3.84 line and the Fisher parabola, all drawn
+Delta chi^2 against the parameter (log axis for a ln-fitted one spanning more than a decade), the 3.84 line and the Fisher parabola, all drawn
 over the profile's computed grid only; a flat profile says so on the figure. The parameter table and the
 identifiability statements are text on the page, not drawn here.
 
@@ -11,7 +11,8 @@ identifiability statements are text on the page, not drawn here.
 
 prints what was drawn as JSON (and writes it to drawn.json when given): {"figures": n, "panels": [{"observable",
 "viscosity", "points", "curve_span"}],
-"profiles": [{"parameter", "file", "points", "span", "fisher_span", "threshold_span", "xlim", "flat"}]}: the spans
+"profiles": [{"parameter", "file", "points", "span", "fisher_span", "threshold_span", "xlim", "xscale", "title",
+"flat"}]}: the spans
 are read back from the lines matplotlib holds."""
 import json
 import math
@@ -85,7 +86,7 @@ def draw_profile(p):
     """The figure of one profile (an entry of the JSON's "profiles") and the record of what was drawn."""
     fig, ax = plt.subplots(figsize=(6, 4.5))
     pts = [(x, d) for x, d in zip(p["x"], p["delta_chi2"]) if d is not None]
-    (line,) = ax.plot([x for x, _ in pts], [d for _, d in pts], "o-", ms=4, color="C0", label="profile (re-fitted)")
+    (line,) = ax.plot([x for x, _ in pts], [d for _, d in pts], "o-", ms=4, color="C0", label="profile")
     lo, hi = p["span"]
     threshold = ax.hlines(p["threshold"], lo, hi, colors="C3", linestyles=":",
                           label=f"$\\Delta\\chi^2$ = {p['threshold']:.2f} (95 %)")
@@ -96,7 +97,7 @@ def draw_profile(p):
         fisher_span = _span(parabola.get_xdata())
     if p["value"] is not None:
         ax.axvline(p["value"], color="0.6", lw=0.8)
-    if p["scale"] == "log":
+    if p["scale"] == "log" and hi > 10 * lo:  # a narrower span reads better on a linear axis
         ax.set_xscale("log")
     ax.set_xlim(lo, hi)
     # The parabola can rise far above the profile where the grid doubles its steps: the profile sets the scale.
@@ -114,7 +115,7 @@ def draw_profile(p):
     segment = threshold.get_segments()[0]
     drawn = {"parameter": p["parameter"], "points": len(pts), "span": _span(line.get_xdata()),
              "fisher_span": fisher_span, "threshold_span": _span([segment[0][0], segment[-1][0]]),
-             "xlim": list(ax.get_xlim()), "flat": p["flat"]}
+             "xlim": list(ax.get_xlim()), "xscale": ax.get_xscale(), "title": ax.get_title(), "flat": p["flat"]}
     return fig, drawn
 
 
