@@ -140,6 +140,21 @@ TEST(FitPage, BadRequestsAreRefusedByName) {
   } catch (const InvalidArgument& e) {
     EXPECT_EQ(e.parameter(), "fit");
   }
+  // The page's folder: a path is required; python without matplotlib (here: none at all) is an output error, found
+  // before anything is computed or written.
+  FitReportOptions ro;
+  try {
+    check_fit_report(ro);
+    FAIL() << "no output folder accepted";
+  } catch (const InvalidArgument& e) {
+    EXPECT_EQ(e.parameter(), "output");
+  }
+  const std::filesystem::path dir = test::fresh_dir("fit_page", "refused");
+  ro.output = (dir / "page").string();
+  ro.python = (dir / "no-python3").string();
+  EXPECT_THROW(check_fit_report(ro), ReportError);
+  EXPECT_FALSE(std::filesystem::exists(dir / "page"));
+  std::filesystem::remove_all(dir);
   const ObservationData transitions = parse_observation_data(
       "observable,shear_rate,viscosity,value,uncertainty,unit\n"
       "transition_shear_rate,,1,40,4,1/s\n",
