@@ -34,8 +34,8 @@ int run(FitCliOptions& o) {
   const ProgressCallback starts = o.progress.callback("fit:", "starts done"),
                          points = o.progress.callback("fit: profiles:", "points done");
   if (starts)
-    o.fit.on_progress = [=](const FitProgress& p) {
-      p.profile_points ? points(p.profile_points, 0) : starts(p.starts_done, p.starts);
+    o.fit.on_progress = [=, profiles = o.fit.profiles.enabled](const FitProgress& p) {
+      p.starts_done < p.starts || !profiles ? starts(p.starts_done, p.starts) : points(p.profile_points, 0);
     };
   const StopOnSignal interrupt;
   o.fit.stop = interrupt.flag();
