@@ -1,6 +1,6 @@
-# cmake -DCLI=<rbcstab> -DCASE=<report|refused> -DWORK=<scratch folder> -P cli_fit_check.cmake
-# `rbcstab fit --report DIR`: the page's folder written whole (report), and an existing folder refused before the
-# fit runs, exit 2 naming the output and --overwrite, the folder left as it was (refused). The data: four angles the
+# cmake -DCLI=<rbcstab> -DCASE=<report|refused|interrupted> -DWORK=<scratch folder> -P cli_fit_check.cmake
+# `rbcstab fit --report DIR`: the page's folder written whole (report), an existing folder refused before the fit
+# runs, exit 2 naming the output and --overwrite, the folder left as it was (refused), and Ctrl-C (interrupted). The data: four angles the
 # model makes at lambda = 5, Delta = 0.1, Delta0 = 0.05 (data/fit_synthetic.csv's first rows), lambda fitted alone.
 cmake_minimum_required(VERSION 3.22)
 file(REMOVE_RECURSE "${WORK}")
@@ -45,6 +45,22 @@ elseif(CASE STREQUAL "refused")
   file(GLOB left RELATIVE "${WORK}/mine" "${WORK}/mine/*")
   if(NOT left STREQUAL "notes.txt")
     message(FATAL_ERROR "the refused folder changed: ${left}")
+  endif()
+elseif(CASE STREQUAL "interrupted")
+  # Ctrl-C (SIGINT after 3 s, by coreutils' timeout) during 64 starts: the result printed and marked, a message on
+  # stderr, exit 1, no page.
+  find_program(TIMEOUT timeout REQUIRED)
+  execute_process(COMMAND ${TIMEOUT} --preserve-status -s INT 3 "${CLI}" fit --data obs.csv --free mu,lambda
+                          --fixed Delta=0.1,Delta0=0.05 --starts 64 --report page
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY "${WORK}" TIMEOUT 100)
+  if(NOT rc EQUAL 1)
+    message(FATAL_ERROR "exit code ${rc} (expected 1)\nstderr: ${err}\nstdout: ${out}")
+  endif()
+  expect_contains("${out}" "fit: interrupted" "stdout")
+  expect_contains("${err}" "stopped by a signal: interrupted after" "stderr")
+  expect_contains("${err}" "no report written" "stderr")
+  if(EXISTS "${WORK}/page")
+    message(FATAL_ERROR "an interrupted fit wrote a page")
   endif()
 else()
   message(FATAL_ERROR "unknown CASE ${CASE}")
