@@ -56,11 +56,11 @@ FitPageText fit_page_text(const FitResult& fit, const ObservationData& data, con
   FitPageText p;
   p.title = "rbcstab fit: " + data_name;
   std::ostringstream s;
-  s << "Status: " << to_string(fit.status) << ". $chi^2$ = " << fit_cell(fit.chi2) << " over " << fit.rows
-    << " rows and " << fit.estimates.size() << " free parameter" << (fit.estimates.size() == 1 ? "" : "s") << " ("
-    << fit.dof << " degrees of freedom)";
-  if (fit.dof > 0 && std::isfinite(fit.chi2)) s << ": $chi^2$/dof = " << fit_cell(fit.chi2 / fit.dof, 4);
-  s << ". The 95 % intervals take the uncertainties as given (not rescaled by $chi^2$/dof); " << fit.evaluations
+  s << "Status: " << to_string(fit.status) << ". χ² = " << fit_cell(fit.chi2) << " over " << fit.rows << " rows and "
+    << fit.estimates.size() << " free parameter" << (fit.estimates.size() == 1 ? "" : "s") << " (" << fit.dof
+    << " degrees of freedom)";
+  if (fit.dof > 0 && std::isfinite(fit.chi2)) s << ": χ²/dof = " << fit_cell(fit.chi2 / fit.dof, 4);
+  s << ". The 95 % intervals take the uncertainties as given (not rescaled by χ²/dof); " << fit.evaluations
     << " evaluations of the model over all rows.";
   p.summary = s.str();
   if (fit.status != FitStatus::converged)
@@ -71,7 +71,7 @@ FitPageText fit_page_text(const FitResult& fit, const ObservationData& data, con
 
   ReportTable params{
       "Parameters (95 % intervals: Fisher, from the Fisher information at the estimate; profile, "
-      "where $Delta chi^2$ of the re-fitted profile crosses 3.84)",
+      "where Δχ² of the profile crosses 3.84)",
       {"parameter", "estimate", "95 % Fisher interval", "95 % profile interval", "identifiable", "at a bound",
        "profile"},
       {}};
@@ -79,7 +79,10 @@ FitPageText fit_page_text(const FitResult& fit, const ObservationData& data, con
     const std::string& u = e.parameter.unit;
     const Profile& pr = e.profile;
     const bool assessed = !e.identifiable || std::isfinite(e.standard_error);  // the Fisher test ran
-    params.rows.push_back({e.parameter.name + " (" + e.parameter.unicode + ")", fit_with_unit(e.value, u),
+    // A Greek name ("lambda") is written as its letter on the page: no symbol beside it then.
+    const bool greek = plain_text("$" + e.parameter.name + "$") == e.parameter.unicode;
+    params.rows.push_back({greek ? e.parameter.name : e.parameter.name + " (" + e.parameter.unicode + ")",
+                           fit_with_unit(e.value, u),
                            !e.identifiable                   ? "none: not identifiable"
                            : std::isfinite(e.standard_error) ? "[" + fit_cell(e.lo95) + ", " + fit_cell(e.hi95) + "]"
                                                              : "none: no Fisher information (see the warning)",
@@ -199,11 +202,11 @@ std::vector<FitFigure> fit_figures(const FitResult& fit, const nlohmann::json& d
     std::string statement;
     for (const FitEstimate& e : fit.estimates)
       if (e.parameter.name == d.at("parameter").get<std::string>()) statement = e.profile.statement;
-    out.push_back({d.at("file").get<std::string>(),
-                   "Profile of " + d.at("parameter").get<std::string>() +
-                       ": $Delta chi^2$ of the re-fitted profile (points), the 3.84 line and the Fisher parabola, "
-                       "over the computed grid only; " +
-                       statement + ". Data: fit_page.json"});
+    out.push_back(
+        {d.at("file").get<std::string>(), "Profile of " + d.at("parameter").get<std::string>() +
+                                              ": Δχ² of the profile (points), the 3.84 line and the Fisher parabola, "
+                                              "over the computed grid only; " +
+                                              statement + ". Data: fit_page.json"});
   }
   return out;
 }
