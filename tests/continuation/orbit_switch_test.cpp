@@ -585,6 +585,73 @@ TEST(OrbitTree, PeriodDoublingStartsTheDoubledOrbitInTheTree) {
   EXPECT_EQ(t.emanations[0].outcome, EmanationOutcome::followed);
 }
 
+// u' = (1 - p^2 - |u|^2) u + omega R u seen in x = D u, D = diag(2, 1) (so the Hopf vector's largest component, the
+// orbit problem's phase component, is the same at both HBs): the equilibrium x = 0 has HBs at p = -1 and p = 1, and
+// one family of orbits |u|^2 = 1 - p^2 (period 2 pi / omega) joins them.
+class TwoHopfs final : public AutonomousSystem {
+ public:
+  static constexpr double kW = 1.5;
+  Eigen::Index dimension() const override { return 2; }
+  void rhs(std::span<const double> x, double p, std::span<double> f) const override {
+    const Eigen::Vector2d u(x[0] / 2, x[1]);
+    const double a = 1 - p * p - u.squaredNorm();
+    f[0] = 2 * (a * u[0] - kW * u[1]);
+    f[1] = kW * u[0] + a * u[1];
+  }
+  void jacobian(std::span<const double> x, double p, Eigen::MatrixXd& J) const override {
+    const Eigen::Vector2d u(x[0] / 2, x[1]);
+    const double a = 1 - p * p - u.squaredNorm();
+    Eigen::Matrix2d Ju, D = Eigen::Vector2d(2, 1).asDiagonal();
+    Ju << a, -kW, kW, a;
+    Ju -= 2 * u * u.transpose();
+    J = D * Ju * D.inverse();
+  }
+  void parameter_derivative(std::span<const double> x, double p, std::span<double> fp) const override {
+    fp[0] = -2 * p * x[0];
+    fp[1] = -2 * p * x[1];
+  }
+};
+
+// The orbit branch from the first HB reaches the second one: the second HB's start lies on it (each switch built its
+// own orbit problem, on the same equations), so it is marked a duplicate of that branch and not followed again.
+TEST(OrbitTree, OrbitBranchJoiningTwoHopfPointsIsFollowedOnce) {
+  const TwoHopfs sys;
+  const AutonomousEquilibriumProblem eq(sys);
+  ContinuationOptions co;
+  co.p_min = -2;
+  co.p_max = 2;
+  co.max_step = 0.2;
+  const Branch e = continue_branch(eq, Eigen::Vector2d::Zero(), -2, co);
+  int hbs = 0;
+  for (const SpecialPoint& sp : e.special_points) hbs += sp.type == SpecialPointType::HB;
+  ASSERT_EQ(hbs, 2);
+  OrbitOptions oo;
+  oo.segments = 4;
+  TreeOptions o;
+  o.depth = 2;
+  o.switching.continuation = co;
+  o.switching.continuation.max_points = 200;
+  o.switchers = default_switchers(oo);
+  const BranchTree t = grow_tree(eq, e, o);
+  ASSERT_EQ(t.branches.size(), 2u) << t.branches.back().branch.message;
+  const Branch& orbit = t.branches[1].branch;
+  for (const BranchPoint& pt : orbit.points) {
+    const Eigen::Vector2d u(pt.x[0] / 2, pt.x[1]);
+    EXPECT_NEAR(u.squaredNorm(), 1 - pt.p * pt.p, 1e-8) << pt.p;
+  }
+  int followed = 0, duplicate = 0;
+  for (const TreeEmanation& m : t.emanations) {
+    if (m.branch != 0) continue;
+    followed += m.outcome == EmanationOutcome::followed;
+    if (m.outcome == EmanationOutcome::duplicate) {
+      ++duplicate;
+      EXPECT_EQ(m.branch_to, 1);
+    }
+  }
+  EXPECT_EQ(followed, 1);
+  EXPECT_EQ(duplicate, 1);
+}
+
 // A double Hopf point in the tree: not followed, the reason named (both pairs), and not a failure.
 TEST(OrbitTree, MultipleHopfIsListedWithTheReason) {
   const DoubleHopf sys;
