@@ -106,6 +106,7 @@ NormalForm fold_from_derivatives(const Eigen::MatrixXd& J, const Eigen::VectorXd
   }
   const Eigen::VectorXd ev = extend(k.v, 0.0);
   const Eigen::VectorXd Bvv = Bee(ev);
+  if (!Bvv.allFinite()) return not_computed(NormalFormKind::fold, "an evaluation near the point failed");
   const double a = w.dot(Bvv) / 2;
   nf.coefficients = {{"a", a}, {"w_Fp", wFp}};
   if (!(wFp > kSingular * (Fp.norm() + 1e-300)))
