@@ -260,5 +260,53 @@ TEST(PeriodMapNormalForm, StepsConverge) {
   }
 }
 
+// Another method: the period map of an autonomous flow near a Hopf point is its time-2 pi map, whose NS coefficient
+// is d = 2 pi omega l1 (z' = i omega z + c1 z |z|^2: |z| -> |z| (1 + 2 pi Re c1 |z|^2), l1 = Re c1 / omega) in the
+// flow's unit eigenvector, i.e. d = 2 pi omega l1 / |M q0|^2 in x0 = M y. l1 comes from hopf_normal_form (the vector
+// field's derivatives, Kuznetsov's ODE formula) of g below: quadratic terms, a cubic one and a slaved third
+// component, so no closed form is needed.
+constexpr double kQ1 = 0.8, kQ2 = -0.6, kQ3 = 0.5, kS = -0.4;
+Eigen::Vector3d hopf_g(const Eigen::Vector3d& y, double p) {
+  const double r = y[0] * y[0] + y[1] * y[1];
+  return {p * y[0] - kOmega * y[1] + kQ1 * y[0] * y[0] + kS * y[0] * r,
+          kOmega * y[0] + p * y[1] + kQ2 * y[0] * y[1] + kS * y[1] * r, -y[2] + kQ3 * y[0] * y[0]};
+}
+Autonomous hopf_flow() {
+  Autonomous a;
+  a.g = hopf_g;
+  a.dg = [](const Eigen::Vector3d& y, double p) {
+    Eigen::Matrix3d D;
+    D << p + 2 * kQ1 * y[0] + kS * (3 * y[0] * y[0] + y[1] * y[1]), -kOmega + 2 * kS * y[0] * y[1], 0,
+        kOmega + kQ2 * y[1] + 2 * kS * y[0] * y[1], p + kQ2 * y[0] + kS * (y[0] * y[0] + 3 * y[1] * y[1]), 0,
+        2 * kQ3 * y[0], 0, -1;
+    return D;
+  };
+  a.gp = [](const Eigen::Vector3d& y, double) { return Eigen::Vector3d(y[0], y[1], 0); };
+  return a;
+}
+// g as an equilibrium problem (central-difference Jacobian), for hopf_normal_form.
+class FlowOfG final : public ContinuationProblem {
+ public:
+  Eigen::Index dimension() const override { return 3; }
+  void residual(const Eigen::VectorXd& y, double p, Eigen::VectorXd& F) const override {
+    F = hopf_g(Eigen::Vector3d(y[0], y[1], y[2]), p);
+  }
+};
+
+TEST(PeriodMapNormalForm, NeimarkSackerOfATimeMapIsTheFlowsHopfCoefficient) {
+  const NormalForm hb = hopf_normal_form(FlowOfG(), Eigen::Vector3d::Zero(), 0, kOmega);
+  ASSERT_EQ(hb.criticality, Criticality::supercritical) << hb.note;
+  const double Mq0 = (kFrame.col(0).squaredNorm() + kFrame.col(1).squaredNorm()) / 2;
+  const double expected = kTwoPi * kOmega * hb.coefficient("l1") / Mq0;
+  const RotatingFrame sys(hopf_flow());
+  const PeriodicOrbitProblem pr(sys, four_segments());
+  const NormalForm ns = neimark_sacker_normal_form(pr, pr.shooting_guess(RotatingFrame::xp(0), 0), 0);
+  EXPECT_EQ(ns.criticality, Criticality::supercritical) << ns.note;
+  // l1 to ~1e-7, d to ~1e-5 relative (above): bar 1e-4 relative.
+  EXPECT_NEAR(ns.coefficient("d"), expected, 1e-4 * std::abs(expected)) << hb.coefficient("l1");
+  // The quadratic terms matter here: the cubic term alone is off by more than 10 % (so the check can fail).
+  EXPECT_GT(std::abs(ns.coefficient("cubic") - expected), 0.1 * std::abs(expected)) << ns.coefficient("cubic");
+}
+
 }  // namespace
 }  // namespace rbcstab
