@@ -464,6 +464,74 @@ TEST(PeriodDoublingNormalForm, FlipCoefficientOfTheForcedSystem) {
   }
 }
 
+// The pitch-flip seen through a near-identity change about its orbit: x = x_p(t) + h(z - x_p(t)), h(e) = e + Q(e),
+// Q(e) = (k1 e1^2, k2 e1 e2) (t-independent, so z' stays 2 pi-periodic). The period maps are conjugate by h, whose
+// linear part is I, so c = -2 pi s is unchanged while B(q, q) and the quadratic term of c are no longer zero.
+class BentPitchFlip final : public ForcedSystem {
+ public:
+  explicit BentPitchFlip(double cubic) : base_(cubic) {}
+  Eigen::Index dimension() const override { return 2; }
+  static Eigen::Matrix2d DQ(const Eigen::Vector2d& e) {
+    Eigen::Matrix2d D;
+    D << 2 * kK1 * e[0], 0, kK2 * e[1], kK2 * e[0];
+    return D;
+  }
+  // e = z - x_p(t), x = x_p + e + Q(e), K = I + DQ(e); e' = K^-1 (f(t, x) - x_p').
+  struct At {
+    Eigen::Vector2d x, de;
+    Eigen::Matrix2d Ki;
+  };
+  At at(double t, std::span<const double> z, double p) const {
+    const Eigen::Vector2d e = Eigen::Vector2d(z[0], z[1]) - ForcedPitchFlip::xp(t);
+    At a;
+    a.x = ForcedPitchFlip::xp(t) + e + Eigen::Vector2d(kK1 * e[0] * e[0], kK2 * e[0] * e[1]);
+    a.Ki = (Eigen::Matrix2d::Identity() + DQ(e)).inverse();
+    Eigen::Vector2d f;
+    base_.rhs(t, std::span<const double>(a.x.data(), 2), p, std::span<double>(f.data(), 2));
+    a.de = a.Ki * (f - ForcedPitchFlip::xp_dot(t));
+    return a;
+  }
+  void rhs(double t, std::span<const double> z, double p, std::span<double> out) const override {
+    Eigen::Map<Eigen::Vector2d>(out.data()) = ForcedPitchFlip::xp_dot(t) + at(t, z, p).de;
+  }
+  // K e' = f - x_p' differentiated in e: DQ(de) e' + K de' = J_f K de, and DQ(de) e' = DQ(e') de.
+  void jacobian(double t, std::span<const double> z, double p, Eigen::MatrixXd& J) const override {
+    const At a = at(t, z, p);
+    Eigen::MatrixXd Jf;
+    base_.jacobian(t, std::span<const double>(a.x.data(), 2), p, Jf);
+    J = a.Ki * (Jf * a.Ki.inverse() - DQ(a.de));
+  }
+  void parameter_derivative(double t, std::span<const double> z, double p, std::span<double> fp) const override {
+    const At a = at(t, z, p);
+    Eigen::Vector2d g;
+    base_.parameter_derivative(t, std::span<const double>(a.x.data(), 2), p, std::span<double>(g.data(), 2));
+    Eigen::Map<Eigen::Vector2d>(fp.data()) = a.Ki * g;
+  }
+
+ private:
+  static constexpr double kK1 = 0.7, kK2 = -0.5;
+  ForcedPitchFlip base_;
+};
+
+TEST(PeriodDoublingNormalForm, FlipCoefficientWithQuadraticTerms) {
+  for (const double s : {-1.0, 1.0}) {
+    const BentPitchFlip sys(s);
+    OrbitOptions oo;
+    oo.segments = 4;
+    const PeriodicOrbitProblem pr(sys, oo);
+    const Branch b = pitch_flip_branch(pr, pitch_flip_options());
+    const SpecialPoint* pd = find_special_point(b, SpecialPointType::PD);
+    ASSERT_NE(pd, nullptr) << b.message;
+    ASSERT_TRUE(pd->normal_form.has_value());
+    const NormalForm& nf = *pd->normal_form;
+    EXPECT_NEAR(nf.coefficient("c"), -2 * kPi * s, 1e-4) << nf.note;
+    EXPECT_EQ(nf.criticality, s < 0 ? Criticality::supercritical : Criticality::subcritical);
+    EXPECT_NEAR(nf.coefficient("mu_p"), -kTwoPi, 1e-4);
+    // The quadratic term is exercised: without it c would be off by far more than the bar.
+    EXPECT_GT(std::abs(nf.coefficient("quadratic")), 0.1) << nf.coefficient("quadratic");
+  }
+}
+
 // The PD's amplitude law against the switched doubled orbit: with u1' = p u1 - u1^3 - u1^5 the doubled orbit has
 // u1^2 = (sqrt(1 + 4 p) - 1) / 2 = p - p^2 + ..., so the law |x0 - x0*| = |p|^(1/2) (amplitude 1) is off by ~p / 2
 // relative: 5e-3 at p = 1e-2, 5e-5 at 1e-4. The switched branch ends exactly on its bound p_max.
