@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <functional>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "rbcstab/continuation/autonomous_orbit.hpp"
@@ -127,6 +128,7 @@ TEST(PeriodMapNormalForm, FoldOfCyclesAgainstTheClosedForm) {
   EXPECT_GT(std::abs(nf.coefficient("a") + a), 1.0);
   EXPECT_GT(std::abs(nf.coefficient("p2") - p2 / 2), 0.1 * p2);
   EXPECT_NE(to_text(nf, "p").find("fold_of_cycles (p2 = "), std::string::npos) << to_text(nf, "p");
+  EXPECT_EQ(normal_form_from_json(to_json(nf)).kind, NormalFormKind::fold_of_cycles);
 }
 
 TEST(PeriodMapNormalForm, FoldOfCyclesOpeningTheOtherWay) {
@@ -226,6 +228,12 @@ TEST(PeriodMapNormalForm, NeimarkSackerCriticalityAgainstTheClosedForm) {
     EXPECT_NE(to_text(nf, "p").find(s < 0 ? "neimark_sacker, supercritical (d = " : "neimark_sacker, subcritical"),
               std::string::npos)
         << to_text(nf, "p");
+    // The JSON of a branch file carries it and reads it back (the new kind names included).
+    const NormalForm back = normal_form_from_json(to_json(nf));
+    EXPECT_EQ(back.kind, NormalFormKind::neimark_sacker);
+    EXPECT_EQ(back.criticality, nf.criticality);
+    EXPECT_EQ(back.coefficient("d"), nf.coefficient("d"));
+    EXPECT_EQ(back.amplitude, nf.amplitude);
   }
 }
 
