@@ -329,10 +329,11 @@ class Branch(_args.Columns):
     def special_points(self):
         """The special points along the branch, as dicts of the CLI's JSON (type, name, label, the parameters,
         the measures, precision, status, unstable_before/after, stability, margin, margin_error, ...); an LP, BP or
-        HB of an equilibrium branch (and a PD of a forced orbit branch, where the model has one) also has
-        ``normal_form``: kind (fold, pitchfork, transcritical, hopf, period_doubling, ...), criticality
-        (supercritical, subcritical, degenerate, not_applicable, not_computed), coefficients by name (l1 of a Hopf,
-        c of a period doubling, p2 of a fold or pitchfork, ...), the amplitude law |x - x*| ~ amplitude |p - p*|^exponent on
+        HB of an equilibrium branch (and an LPC, PD or NS of a forced orbit branch, where the model has one) also
+        has ``normal_form``: kind (fold, pitchfork, transcritical, hopf, period_doubling, fold_of_cycles,
+        neimark_sacker, ...), criticality (supercritical, subcritical, degenerate, not_applicable, not_computed),
+        coefficients by name (l1 of a Hopf, c of a period doubling, d of a Neimark-Sacker point, p2 of a fold or
+        pitchfork, ...), the amplitude law |x - x*| ~ amplitude |p - p*|^exponent on
         the side sign(p - p*) = side, and a note."""
         import copy
         return copy.deepcopy(self._part()["special_points"])

@@ -68,6 +68,7 @@ class AutonomousOrbitProblem final : public ContinuationProblem {
 
   int segments() const { return N_; }
   int phase_component() const { return k_; }
+  const AutonomousSystem& system() const { return sys_; }
   const OrbitOptions& options() const { return o_; }
   static double period(const Eigen::VectorXd& X) { return X[X.size() - 1]; }
   Eigen::VectorXd state_at_zero(const Eigen::VectorXd& X) const { return X.head(n_); }

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "rbcstab/continuation/autonomous_orbit.hpp"
 #include "rbcstab/continuation/dense.hpp"
 #include "rbcstab/continuation/orbit_switch.hpp"
 #include "rbcstab/core/error.hpp"
@@ -31,6 +32,24 @@ double max_norm_distance(const Eigen::VectorXd& a, const Eigen::VectorXd& b) {
 
 bool same_point(const Eigen::VectorXd& a, const Eigen::VectorXd& b, double tol) {
   return a.size() == b.size() && max_norm_distance(a, b) <= tol * (1 + a.lpNorm<Eigen::Infinity>());
+}
+
+template <class Orbit>
+bool same_shooting(const Orbit& a, const Orbit& b) {
+  return &a.system() == &b.system() && a.segments() == b.segments() && a.options().rtol == b.options().rtol &&
+         a.options().atol == b.options().atol;
+}
+
+// Whether two problems solve the same equations in the same unknowns, so that their branches can be compared point
+// by point: the same object, or orbit problems that HB or PD switches built separately (each brings its own) on one
+// system with the same shooting (segments, tolerances), phase component (autonomous) and periods (forced).
+bool same_equations(const ContinuationProblem& a, const ContinuationProblem& b) {
+  if (&a == &b) return true;
+  const auto *aa = dynamic_cast<const AutonomousOrbitProblem*>(&a),
+             *ab = dynamic_cast<const AutonomousOrbitProblem*>(&b);
+  if (aa && ab) return same_shooting(*aa, *ab) && aa->phase_component() == ab->phase_component();
+  const auto *fa = dynamic_cast<const PeriodicOrbitProblem*>(&a), *fb = dynamic_cast<const PeriodicOrbitProblem*>(&b);
+  return fa && fb && same_shooting(*fa, *fb) && fa->periods() == fb->periods();
 }
 
 std::vector<EmanatingStart> bp_switcher(const ContinuationProblem& problem, const Branch& branch,
@@ -163,7 +182,7 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
     const Eigen::VectorXd X = packed(sp.x, sp.p);
     for (const auto& [k, j] : switched_at) {
       const SpecialPoint& q = tree.branches[static_cast<std::size_t>(k)].branch.special_points[j];
-      if (q.type != sp.type || &problem_of(k) != &problem_of(b)) continue;
+      if (q.type != sp.type || !same_equations(problem_of(k), problem_of(b))) continue;
       // HBs (PDs, NSs) at one point with different critical values are different points (the l >= 3 onset's pairs
       // i m / 2): each is switched at, or refused, on its own.
       if (sp.type != SpecialPointType::BP &&
@@ -181,14 +200,14 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
   const auto covered = [&](int from, const EmanatingStart& s, const ContinuationProblem& pr) {
     const Eigen::VectorXd X = packed(s.x, s.p);
     for (std::size_t k = 0; k < tree.branches.size(); ++k) {
-      if (static_cast<int>(k) == from || &problem_of(static_cast<int>(k)) != &pr) continue;
+      if (static_cast<int>(k) == from || !same_equations(problem_of(static_cast<int>(k)), pr)) continue;
       if (lies_on(pr, tree.branches[k].branch, X, options.duplicate_tol))
         return std::pair{EmanationOutcome::duplicate, static_cast<int>(k)};
     }
     for (const auto& g : options.symmetries) {
       const Eigen::VectorXd gX = packed(g(s.x), s.p);
       for (std::size_t k = 0; k < tree.branches.size(); ++k)
-        if (static_cast<int>(k) != from && &problem_of(static_cast<int>(k)) == &pr &&
+        if (static_cast<int>(k) != from && same_equations(problem_of(static_cast<int>(k)), pr) &&
             lies_on(pr, tree.branches[k].branch, gX, options.duplicate_tol))
           return std::pair{EmanationOutcome::symmetric, static_cast<int>(k)};
     }

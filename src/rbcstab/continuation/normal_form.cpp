@@ -71,15 +71,23 @@ std::string to_text(const NormalForm& nf, const std::string& parameter) {
   // A note that says "degenerate (k pairs)" already names the criticality.
   const bool named = nf.note.rfind(to_string(nf.criticality), 0) == 0;
   if (nf.criticality != Criticality::not_applicable && !named) t += ", " + to_string(nf.criticality);
-  // The coefficient that decides: l1 (Hopf), c (period doubling), p2 (pitchfork, fold), none (transcritical).
-  const char* key = nf.kind == NormalFormKind::hopf ? "l1" : nf.kind == NormalFormKind::period_doubling ? "c" : "p2";
+  // The coefficient that decides: l1 (Hopf), c (period doubling), d (Neimark-Sacker), p2 (pitchfork, folds), none
+  // (transcritical).
+  const char* key = nf.kind == NormalFormKind::hopf              ? "l1"
+                    : nf.kind == NormalFormKind::period_doubling ? "c"
+                    : nf.kind == NormalFormKind::neimark_sacker  ? "d"
+                                                                 : "p2";
   if (nf.kind != NormalFormKind::transcritical && !std::isnan(nf.coefficient(key)))
     t += std::string(" (") + key + " = " + short_number(nf.coefficient(key)) + ")";
   if (!nf.note.empty()) t += ": " + nf.note;
   if (std::isfinite(nf.amplitude)) {
     const std::string& P = parameter;
-    t += std::string(nf.kind == NormalFormKind::hopf ? ", orbit" : ",") + " |x - x*| ~ " + short_number(nf.amplitude) +
-         " |" + P + " - " + P + "*|" + (nf.exponent == 0.5 ? "^(1/2)" : "");
+    const char* what = nf.kind == NormalFormKind::hopf              ? ", orbit"
+                       : nf.kind == NormalFormKind::period_doubling ? ", doubled orbit"
+                       : nf.kind == NormalFormKind::neimark_sacker  ? ", invariant circle"
+                                                                    : ",";
+    t += std::string(what) + " |x - x*| ~ " + short_number(nf.amplitude) + " |" + P + " - " + P + "*|" +
+         (nf.exponent == 0.5 ? "^(1/2)" : "");
     if (nf.side > 0) t += " for " + P + " > " + P + "*";
     if (nf.side < 0) t += " for " + P + " < " + P + "*";
   }

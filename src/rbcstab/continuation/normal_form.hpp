@@ -12,19 +12,33 @@
 
 namespace rbcstab {
 
-// branch_point: unclassified; period_doubling: a PD (flip) of a forced orbit's period map
-enum class NormalFormKind { fold, transcritical, pitchfork, branch_point, hopf, period_doubling };
+// branch_point: unclassified; fold_of_cycles, period_doubling, neimark_sacker: an LPC, PD, NS of a forced orbit's
+// period map
+enum class NormalFormKind {
+  fold,
+  transcritical,
+  pitchfork,
+  branch_point,
+  hopf,
+  period_doubling,
+  fold_of_cycles,
+  neimark_sacker
+};
 template <>
 struct EnumTable<NormalFormKind> {
-  static constexpr EnumName<NormalFormKind> entries[] = {
-      {NormalFormKind::fold, "fold"},           {NormalFormKind::transcritical, "transcritical"},
-      {NormalFormKind::pitchfork, "pitchfork"}, {NormalFormKind::branch_point, "branch_point"},
-      {NormalFormKind::hopf, "hopf"},           {NormalFormKind::period_doubling, "period_doubling"}};
+  static constexpr EnumName<NormalFormKind> entries[] = {{NormalFormKind::fold, "fold"},
+                                                         {NormalFormKind::transcritical, "transcritical"},
+                                                         {NormalFormKind::pitchfork, "pitchfork"},
+                                                         {NormalFormKind::branch_point, "branch_point"},
+                                                         {NormalFormKind::hopf, "hopf"},
+                                                         {NormalFormKind::period_doubling, "period_doubling"},
+                                                         {NormalFormKind::fold_of_cycles, "fold_of_cycles"},
+                                                         {NormalFormKind::neimark_sacker, "neimark_sacker"}};
 };
 
-// supercritical: the emanating branch (orbit) exists where the known branch is unstable, and is stable in the
-// critical direction (a pitchfork) / soft (a Hopf with l1 < 0); subcritical: the opposite; degenerate: the
-// deciding coefficient vanishes to its accuracy, or the point is not simple (note says which); not_applicable: a
+// supercritical: the emanating branch (orbit, invariant circle) exists where the known branch is unstable, and is
+// stable in the critical direction (a pitchfork) / soft (a Hopf with l1 < 0); subcritical: the opposite; degenerate:
+// the deciding coefficient vanishes to its accuracy, or the point is not simple (note says which); not_applicable: a
 // fold or a transcritical point (no such notion); not_computed: note says why.
 enum class Criticality { supercritical, subcritical, degenerate, not_applicable, not_computed };
 template <>
@@ -40,7 +54,8 @@ struct NormalForm {
   NormalFormKind kind = NormalFormKind::branch_point;
   std::vector<std::pair<std::string, double>> coefficients;  // by name, in a fixed order per kind
   Criticality criticality = Criticality::not_computed;
-  // The amplitude law of the emanating branch (LP: the branch itself; HB: the orbit's peak |x - x*|_2):
+  // The amplitude law of the emanating branch (LP: the branch itself; HB: the orbit's peak |x - x*|_2; LPC, PD,
+  // NS: the orbit's, the doubled orbit's, the invariant circle's state at t = 0):
   //   |x - x*|_2 ~ amplitude |p - p*|^exponent   on the side sign(p - p*) = side (0: both sides).
   // NaN where unknown.
   double amplitude = std::numeric_limits<double>::quiet_NaN();

@@ -1,6 +1,6 @@
 // Normal forms at LP, BP and HB of equilibrium branches: null vectors by SVD, second and third derivatives of the
-// residual by central mixed differences (detail/multilinear.hpp), Kuznetsov's formulas; at PD of forced orbits the
-// flip coefficient of the period map from differences of shootings. docs/continuation.md.
+// residual by central mixed differences (detail/multilinear.hpp), Kuznetsov's formulas; the orbit branches' points
+// go to period_map_normal_form.cpp. docs/continuation.md.
 #include "rbcstab/continuation/normal_form_analysis.hpp"
 
 #include <algorithm>
@@ -8,9 +8,11 @@
 #include <complex>
 #include <string>
 
+#include "rbcstab/continuation/autonomous_orbit.hpp"
 #include "rbcstab/continuation/dense.hpp"
 
 #include "rbcstab/continuation/detail/multilinear.hpp"
+#include "rbcstab/continuation/detail/normal_form_core.hpp"
 #include "rbcstab/core/error.hpp"
 
 namespace rbcstab {
@@ -19,29 +21,17 @@ namespace {
 
 using detail::extend;
 using detail::extend_complex;
+using detail::kKernel;
+using detail::kSingular;
+using detail::kVanish;
 using detail::Multilinear;
 using cd = std::complex<double>;
 
-// Rank tests: a singular value below kSingular x the largest counts as zero (located points are singular to
-// ~1e-10); a second one must exceed kKernel x the largest (branch_switch's kernel_ratio) for a simple point.
-constexpr double kSingular = 1e-6;
-constexpr double kKernel = 1e-4;
-// A coefficient below kVanish x the scale of the terms it is made of vanishes: the third-derivative differences
-// are accurate to ~1e-6 of that scale, the second-derivative ones to ~1e-8 (multilinear.hpp).
-constexpr double kVanish = 1e-5;
-
 NormalForm not_computed(NormalFormKind kind, std::string why) {
-  NormalForm nf;
-  nf.kind = kind;
-  nf.criticality = Criticality::not_computed;
-  nf.note = std::move(why);
-  return nf;
+  return detail::normal_form_not_computed(kind, std::move(why));
 }
-
 NormalForm degenerate(NormalForm nf, std::string why) {
-  nf.criticality = Criticality::degenerate;
-  nf.note = std::move(why);
-  return nf;
+  return detail::normal_form_degenerate(std::move(nf), std::move(why));
 }
 
 double sign(double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); }
@@ -82,11 +72,24 @@ Eigen::VectorXd bordered_solve(const Eigen::MatrixXd& J, const Eigen::VectorXd& 
 
 }  // namespace
 
-NormalForm fold_normal_form(const ContinuationProblem& problem, const Eigen::VectorXd& x, double p) {
-  Eigen::MatrixXd J;
-  Eigen::VectorXd Fp;
-  problem.jacobian(x, p, J);
-  problem.parameter_derivative(x, p, Fp);
+namespace detail {
+
+NormalForm normal_form_not_computed(NormalFormKind kind, std::string why) {
+  NormalForm nf;
+  nf.kind = kind;
+  nf.criticality = Criticality::not_computed;
+  nf.note = std::move(why);
+  return nf;
+}
+
+NormalForm normal_form_degenerate(NormalForm nf, std::string why) {
+  nf.criticality = Criticality::degenerate;
+  nf.note = std::move(why);
+  return nf;
+}
+
+NormalForm fold_from_derivatives(const Eigen::MatrixXd& J, const Eigen::VectorXd& Fp,
+                                 const std::function<Eigen::VectorXd(const Eigen::VectorXd&)>& Bee) {
   Kernel k = kernel_of(J, Fp.norm());
   if (!k.why.empty()) return not_computed(NormalFormKind::fold, "not a simple fold: " + k.why);
   NormalForm nf;
@@ -101,9 +104,9 @@ NormalForm fold_normal_form(const ContinuationProblem& problem, const Eigen::Vec
     k.v = -k.v;
     wFp = -wFp;
   }
-  const Multilinear D(problem, x, p);
   const Eigen::VectorXd ev = extend(k.v, 0.0);
-  const Eigen::VectorXd Bvv = D.B(ev, ev);
+  const Eigen::VectorXd Bvv = Bee(ev);
+  if (!Bvv.allFinite()) return not_computed(NormalFormKind::fold, "an evaluation near the point failed");
   const double a = w.dot(Bvv) / 2;
   nf.coefficients = {{"a", a}, {"w_Fp", wFp}};
   if (!(wFp > kSingular * (Fp.norm() + 1e-300)))
@@ -118,6 +121,24 @@ NormalForm fold_normal_form(const ContinuationProblem& problem, const Eigen::Vec
   nf.exponent = 0.5;
   nf.side = sign(p2);
   return nf;
+}
+
+double circle_peak(const Eigen::VectorXcd& q) {
+  Eigen::Matrix2d G;
+  const Eigen::VectorXd qr = q.real(), qi = q.imag();
+  G << qr.dot(qr), -qr.dot(qi), -qr.dot(qi), qi.dot(qi);
+  return 2 * std::sqrt(Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(G).eigenvalues()[1]);
+}
+
+}  // namespace detail
+
+NormalForm fold_normal_form(const ContinuationProblem& problem, const Eigen::VectorXd& x, double p) {
+  Eigen::MatrixXd J;
+  Eigen::VectorXd Fp;
+  problem.jacobian(x, p, J);
+  problem.parameter_derivative(x, p, Fp);
+  const Multilinear D(problem, x, p);
+  return detail::fold_from_derivatives(J, Fp, [&](const Eigen::VectorXd& e) { return D.B(e, e); });
 }
 
 NormalForm branch_point_normal_form(const ContinuationProblem& problem, const Eigen::VectorXd& x, double p,
@@ -242,99 +263,21 @@ NormalForm hopf_normal_form(const ContinuationProblem& problem, const Eigen::Vec
   if (!(std::abs(l1) > kVanish * (std::abs(t1) + std::abs(t2) + std::abs(t3)) / (2 * w)))
     return degenerate(nf, "l1 = 0 to its accuracy: a Bautin point");
   nf.criticality = l1 < 0 ? Criticality::supercritical : Criticality::subcritical;
-  // x - x* = 2 Re(z q) with |z|^2 = -alpha1 (p - p*) / (omega l1): the peak of |2 Re(e^{it} q)| is 2 sqrt(g)
-  // with g the largest eigenvalue of the Gram matrix of (Re q, Im q).
-  Eigen::Matrix2d G;
-  const Eigen::VectorXd qr = q.real(), qi = q.imag();
-  G << qr.dot(qr), -qr.dot(qi), -qr.dot(qi), qi.dot(qi);
-  const double gmax = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(G).eigenvalues()[1];
+  // x - x* = 2 Re(z q) with |z|^2 = -alpha1 (p - p*) / (omega l1).
   if (std::abs(alpha1) > 0) {
-    nf.amplitude = 2 * std::sqrt(gmax) * std::sqrt(std::abs(alpha1 / (w * l1)));
+    nf.amplitude = detail::circle_peak(q) * std::sqrt(std::abs(alpha1 / (w * l1)));
     nf.exponent = 0.5;
     nf.side = -sign(alpha1 * l1);
   }
   return nf;
 }
 
-NormalForm period_doubling_normal_form(const PeriodicOrbitProblem& problem, const Eigen::VectorXd& X, double p) {
-  const NormalFormKind kind = NormalFormKind::period_doubling;
-  NormalForm pd;
-  pd.kind = kind;
-  if (problem.system().conserves_norm())
-    return not_computed(kind, "a norm-conserving system: its period map has the trivial multiplier 1");
-  const Eigen::Index n = problem.system().dimension(), N = problem.segments();
-  const Eigen::VectorXd x0 = problem.state_at_zero(X);
-  // P(y): the trajectory through y shot over the period; the last segment's defect is P(y) - y.
-  Eigen::VectorXd F;
-  const auto P = [&](const Eigen::VectorXd& y) {
-    problem.residual(problem.shooting_guess(y, p), p, F);
-    return Eigen::VectorXd(F.segment((N - 1) * n, n) + y);
-  };
-  const Eigen::MatrixXd A = problem.floquet(X, p).monodromy;
-  const Eigen::EigenSolver<Eigen::MatrixXd> es(A, true), est(A.transpose(), true);
-  Eigen::Index i = 0, it = 0;
-  (es.eigenvalues().array() + 1.0).abs().minCoeff(&i);
-  (est.eigenvalues().array() + 1.0).abs().minCoeff(&it);
-  const auto near_minus_one = ((es.eigenvalues().array() + 1.0).abs() <= 1e-4).count();
-  if (near_minus_one != 1)
-    return degenerate(pd, "degenerate (" + std::to_string(near_minus_one) + " multipliers near -1)");
-  Eigen::VectorXd q = es.eigenvectors().col(i).real(), w = est.eigenvectors().col(it).real();
-  q /= q.norm();
-  if (!(std::abs(w.dot(q)) > kSingular * w.norm())) return degenerate(pd, "<w, q> = 0");
-  w /= w.dot(q);
-  const Eigen::MatrixXd I_A = Eigen::MatrixXd::Identity(n, n) - A;
-  const Eigen::JacobiSVD<Eigen::MatrixXd> svd(I_A);
-  if (!(svd.singularValues()[n - 1] > kKernel * svd.singularValues()[0]))
-    return degenerate(pd, "a multiplier 1 besides -1 (I - A singular)");
-  // Steps: the shootings are accurate to ~1e-11 relative (rtol 1e-12); second differences at h = 1e-3 and third
-  // at 1e-2 (in units of 1 + |x0|) keep rounding near 1e-5 of the terms.
-  const double s = 1 + x0.lpNorm<Eigen::Infinity>(), h2 = 1e-3 * s, h3 = 1e-2 * s;
-  const Eigen::VectorXd P0 = P(x0);
-  const Eigen::VectorXd Bqq = (P(x0 + h2 * q) - 2 * P0 + P(x0 - h2 * q)) / (h2 * h2);
-  const Eigen::VectorXd y2 = I_A.fullPivLu().solve(Bqq);
-  // B(q, y2) by polarisation over unit directions (q and y2 have different scales).
-  const double ny = y2.norm();
-  Eigen::VectorXd Bqy = Eigen::VectorXd::Zero(n);
-  if (ny > 0) {
-    const Eigen::VectorXd u = q, v = y2 / ny;
-    Bqy = (P(x0 + h2 * (u + v)) - P(x0 + h2 * (u - v)) - P(x0 - h2 * (u - v)) + P(x0 - h2 * (u + v))) / (4 * h2 * h2) *
-          ny;
-  }
-  // Third differences extrapolated (Richardson, h3 and h3 / 2): their O(h^2) error carries the fifth derivative,
-  // which a period map of length 2 pi k makes large (u' = -u^3 over 2 pi: 2% at h3 alone).
-  const auto third = [&](double h) {
-    return Eigen::VectorXd((P(x0 + 2 * h * q) - 2 * P(x0 + h * q) + 2 * P(x0 - h * q) - P(x0 - 2 * h * q)) /
-                           (2 * h * h * h));
-  };
-  const Eigen::VectorXd Cqqq = (4 * third(h3 / 2) - third(h3)) / 3;
-  if (!Cqqq.allFinite() || !Bqy.allFinite())
-    return not_computed(kind, "a shooting of the period map failed near the point");
-  const double cubic = w.dot(Cqqq) / 6, quadratic = w.dot(Bqy) / 2, c = cubic + quadratic;
-  pd.coefficients = {{"c", c}, {"cubic", cubic}, {"quadratic", quadratic}};
-  if (std::abs(c) <= kVanish * std::max({std::abs(cubic), std::abs(quadratic), 1e-300}))
-    return degenerate(pd, "c = 0 to its accuracy");
-  pd.criticality = c > 0 ? Criticality::supercritical : Criticality::subcritical;
-  return pd;
-}
-
 NormalForm normal_form(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& sp) {
+  if (sp.type == SpecialPointType::LPC || sp.type == SpecialPointType::PD || sp.type == SpecialPointType::NS)
+    return period_map_normal_form(problem, sp);
   const NormalFormKind kind = sp.type == SpecialPointType::LP   ? NormalFormKind::fold
                               : sp.type == SpecialPointType::HB ? NormalFormKind::hopf
-                              : sp.type == SpecialPointType::PD ? NormalFormKind::period_doubling
                                                                 : NormalFormKind::branch_point;
-  if (sp.type == SpecialPointType::PD) {
-    const auto* orbit = dynamic_cast<const PeriodicOrbitProblem*>(&problem);
-    if (!orbit) return not_computed(kind, "a PD normal form needs a forced orbit problem (PeriodicOrbitProblem)");
-    if (sp.status != LocationStatus::located) return not_computed(kind, "the point is not located (a guess)");
-    if (orbit->system().dimension() > kNormalFormMaxDimension)
-      return not_computed(kind, "dimension " + std::to_string(orbit->system().dimension()) + " > " +
-                                    std::to_string(kNormalFormMaxDimension));
-    try {
-      return period_doubling_normal_form(*orbit, sp.x, sp.p);
-    } catch (const InvalidArgument& e) {
-      return not_computed(kind, std::string("the system refused a difference step: ") + e.what());
-    }
-  }
   if (problem.stability_kind() != StabilityKind::eigenvalues)
     return not_computed(kind, "normal forms of orbit branches are not computed");
   if (sp.type != SpecialPointType::LP && sp.type != SpecialPointType::BP && sp.type != SpecialPointType::HB)
@@ -365,11 +308,13 @@ NormalForm normal_form(const ContinuationProblem& problem, const Branch& branch,
 
 void attach_normal_forms(const ContinuationProblem& problem, Branch& branch) {
   const bool equilibria = problem.stability_kind() == StabilityKind::eigenvalues;
-  const bool forced_orbits = dynamic_cast<const PeriodicOrbitProblem*>(&problem) != nullptr;
+  const bool orbits = dynamic_cast<const PeriodicOrbitProblem*>(&problem) != nullptr ||
+                      dynamic_cast<const AutonomousOrbitProblem*>(&problem) != nullptr;
   for (SpecialPoint& sp : branch.special_points)
     if ((equilibria &&
          (sp.type == SpecialPointType::LP || sp.type == SpecialPointType::BP || sp.type == SpecialPointType::HB)) ||
-        (forced_orbits && sp.type == SpecialPointType::PD))
+        (orbits &&
+         (sp.type == SpecialPointType::LPC || sp.type == SpecialPointType::PD || sp.type == SpecialPointType::NS)))
       sp.normal_form = normal_form(problem, branch, sp);
 }
 

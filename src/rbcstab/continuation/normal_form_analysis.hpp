@@ -10,6 +10,7 @@
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/normal_form.hpp"
 #include "rbcstab/continuation/orbit.hpp"
+#include "rbcstab/continuation/period_map_normal_form.hpp"
 
 namespace rbcstab {
 
@@ -36,22 +37,13 @@ NormalForm branch_point_normal_form(const ContinuationProblem& problem, const Ei
 // when more than one pair is critical ("degenerate (k pairs)"), or J is singular (zero-Hopf).
 NormalForm hopf_normal_form(const ContinuationProblem& problem, const Eigen::VectorXd& x, double p, double omega);
 
-// PD at X (a point of a forced orbit branch, problem its PeriodicOrbitProblem): the flip normal form of the period map
-// P (x0 -> the state after the orbit's period), eta -> -eta + c eta^3 on its centre manifold, with Kuznetsov's
-// "c" = <w, C(q, q, q)> / 6 + <w, B(q, h2)> / 2, h2 = (I - A)^{-1} B(q, q) (A = DP, A q = -q, A^T w = -w, |q| = 1,
-// <w, q> = 1), B and C of P by central differences of shootings. c > 0: supercritical (the doubled orbit exists
-// where the orbit is unstable, and is stable); c < 0: subcritical. Not computed for norm-conserving systems (their
-// period map has the trivial multiplier 1 off the sphere). No amplitude law (NaN).
-NormalForm period_doubling_normal_form(const PeriodicOrbitProblem& problem, const Eigen::VectorXd& X, double p);
-
-// The normal form of a located LP, BP or HB of `branch` (continued with `problem`); not_computed (note says why)
-// for a guess, an orbit problem (except a PD of a PeriodicOrbitProblem), another type or a problem above
-// kNormalFormMaxDimension. Never throws for a
-// problem that rejects a difference step (the note says so).
+// The normal form of a located LP, BP or HB of `branch` (continued with `problem`), or of an LPC, PD or NS of an
+// orbit branch (period_map_normal_form); not_computed (note says why) for a guess, another type or a problem above
+// kNormalFormMaxDimension. Never throws for a problem that rejects a difference step (the note says so).
 NormalForm normal_form(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& sp);
 
-// Sets normal_form on every LP, BP and HB of an equilibrium branch and every PD of a forced orbit branch (what
-// continue_branch does with options.normal_forms).
+// Sets normal_form on every LP, BP and HB of an equilibrium branch and every LPC, PD and NS of a forced or
+// autonomous orbit branch (what continue_branch does with options.normal_forms).
 void attach_normal_forms(const ContinuationProblem& problem, Branch& branch);
 
 }  // namespace rbcstab

@@ -26,6 +26,11 @@ class Multilinear {
     hB_ = std::pow(std::numeric_limits<double>::epsilon(), 0.25) * scale;
     hC_ = std::pow(std::numeric_limits<double>::epsilon(), 0.2) * scale;
   }
+  // Given steps: a residual accurate to less than rounding (the period map's shootings) needs larger ones.
+  Multilinear(const ContinuationProblem& problem, const Eigen::VectorXd& x, double p, double hB, double hC)
+      : pr_(problem), n_(problem.dimension()), X0_(x.size() + 1), hB_(hB), hC_(hC) {
+    X0_ << x, p;
+  }
   Eigen::Index n() const { return n_; }
 
   Eigen::VectorXd B(const Eigen::VectorXd& u, const Eigen::VectorXd& v) const {
