@@ -468,6 +468,7 @@ void ProfileOptions::validate() const {
 
 Linearisation linearise(std::span<const ObservedRow> rows, std::span<const FitParameter> free, const CellModel& cell,
                         const FitOptions& options, double step) {
+  if (options.jacobian == JacobianMethod::variational) return variational_linearise(rows, free, cell, options, step);
   Linearisation lin;
   std::vector<ObservedRow> numeric_rows;
   for (const ObservedRow& o : rows)

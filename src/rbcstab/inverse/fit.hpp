@@ -11,6 +11,7 @@
 #include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/inverse/forward.hpp"
 #include "rbcstab/inverse/observations.hpp"
+#include "rbcstab/inverse/sensitivity.hpp"
 
 namespace rbcstab {
 
@@ -27,12 +28,14 @@ struct ProfileOptions {
 };
 
 struct FitOptions {
-  int starts = 4;                       // [1, 64]: the given start, then starts spread in the box (fixed seed)
-  double start_spread = 1.0;            // (0, 10]: half-width of the spread in the fitted coordinate (ln for moduli)
-  unsigned seed = 1;                    // of the spread starts: a fit is deterministic
-  int max_iterations = 100;             // [1, 10000]: Ipopt iterations per start
-  double tol = 1e-8;                    // (0, 1e-2]: Ipopt's tol (scaled KKT error of 1/2 chi^2)
-  double fd_step = 1e-4;                // (0, 0.1]: central-difference step in the fitted coordinate (docs/inverse.md)
+  int starts = 4;             // [1, 64]: the given start, then starts spread in the box (fixed seed)
+  double start_spread = 1.0;  // (0, 10]: half-width of the spread in the fitted coordinate (ln for moduli)
+  unsigned seed = 1;          // of the spread starts: a fit is deterministic
+  int max_iterations = 100;   // [1, 10000]: Ipopt iterations per start
+  double tol = 1e-8;          // (0, 1e-2]: Ipopt's tol (scaled KKT error of 1/2 chi^2)
+  double fd_step = 1e-4;      // (0, 0.1]: central-difference step in the fitted coordinate (docs/inverse.md)
+  // The in-plane rows' Jacobian: variational equations (the other rows by central differences) or differences.
+  JacobianMethod jacobian = JacobianMethod::variational;
   double identifiability_ratio = 1e-8;  // (0, 1): a Fisher eigenvalue below ratio * largest is a flat direction
   ForwardOptions forward;
   ProfileOptions profiles;
@@ -117,8 +120,8 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free,
               const FitOptions& options = {});
 
 // Gauss-Newton quantities at one point: residuals (predicted - observed)/sigma of the numeric rows and their
-// Jacobian in the fitted coordinates by central differences (options.fd_step); ok false with the reason when a
-// prediction fails.
+// Jacobian in the fitted coordinates by options.jacobian (central differences at `step`); ok false with the reason
+// when a prediction fails.
 struct Linearisation {
   bool ok = false;
   std::string reason;
@@ -127,6 +130,9 @@ struct Linearisation {
 };
 Linearisation linearise(std::span<const ObservedRow> rows, std::span<const FitParameter> free, const CellModel& cell,
                         const FitOptions& options, double step);
+// The variational route of linearise (inverse/sensitivity.cpp).
+Linearisation variational_linearise(std::span<const ObservedRow> rows, std::span<const FitParameter> free,
+                                    const CellModel& cell, const FitOptions& options, double step);
 
 nlohmann::json to_json(const FitResult& r);
 std::string fit_text(const FitResult& r);

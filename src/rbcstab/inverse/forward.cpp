@@ -275,8 +275,18 @@ InPlaneMotion in_plane_motion(const Parameters& p, const ForwardOptions& options
       std::vector<double> three = {last[(k + n - 1) % n], last[k], last[(k + 1) % n]};
       return parabola_peak(three, 1);
     };
-    const double range =
-        refined(static_cast<std::size_t>(hi - last.begin())) - refined(static_cast<std::size_t>(lo - last.begin()));
+    // The extremum's time after t: sample k is at t - 2 pi + 2 pi (k + 1)/n, moved by the parabola's vertex.
+    auto vertex_time = [&](std::size_t k) {
+      const double a = last[(k + n - 1) % n], b = last[k], c = last[(k + 1) % n], d = a - 2 * b + c;
+      const double x = d == 0 ? 0.0 : 0.5 * (a - c) / d;
+      return std::fmod(kTwoPi * (static_cast<double>(k) + 1 + x) / n + kTwoPi, kTwoPi);
+    };
+    const auto k_hi = static_cast<std::size_t>(hi - last.begin()), k_lo = static_cast<std::size_t>(lo - last.begin());
+    const double range = refined(k_hi) - refined(k_lo);
+    m.orbit_state = y;
+    m.orbit_time = t;
+    m.t_max = vertex_time(k_hi);
+    m.t_min = vertex_time(k_lo);
     const double shift = kTwoPi * std::round(mean / kTwoPi);  // Psi = 2 psi in (-pi, pi]
     m.mean_psi = 0.5 * (mean - shift);
     m.amplitude_psi = 0.25 * range;
@@ -289,9 +299,7 @@ InPlaneMotion in_plane_motion(const Parameters& p, const ForwardOptions& options
   return m;
 }
 
-namespace {
-
-Prediction from_motion(const InPlaneMotion& m, const ObservedRow& row) {
+Prediction predict_from_motion(const InPlaneMotion& m, const ObservedRow& row) {
   Prediction pr;
   pr.regime = m.regime;
   if (m.regime == Regime::undetermined) {
@@ -322,6 +330,8 @@ Prediction from_motion(const InPlaneMotion& m, const ObservedRow& row) {
   }
   return pr;
 }
+
+namespace {
 
 Prediction predict_transition(const CellModel& cell, const ObservedRow& row, const ForwardOptions& options) {
   Prediction pr;
@@ -377,7 +387,7 @@ Prediction predict_regime(const CellModel& cell, const ObservedRow& row, const F
 Prediction predict(const CellModel& cell, const ObservedRow& row, const ForwardOptions& options) {
   if (row.observable == Observable::transition_shear_rate) return predict_transition(cell, row, options);
   if (row.observable == Observable::regime) return predict_regime(cell, row, options);
-  return from_motion(in_plane_motion(condition_parameters(cell, row.shear_rate, row.viscosity), options), row);
+  return predict_from_motion(in_plane_motion(condition_parameters(cell, row.shear_rate, row.viscosity), options), row);
 }
 
 std::vector<Prediction> predict_all(const CellModel& cell, std::span<const ObservedRow> rows,
@@ -395,7 +405,7 @@ std::vector<Prediction> predict_all(const CellModel& cell, std::span<const Obser
     if (it == motions.end())
       it = motions.emplace(key, in_plane_motion(condition_parameters(cell, row.shear_rate, row.viscosity), options))
                .first;
-    out.push_back(from_motion(it->second, row));
+    out.push_back(predict_from_motion(it->second, row));
   }
   return out;
 }

@@ -87,6 +87,10 @@ struct InPlaneMotion {
   double mean_psi = kNotGiven;       // rad, in (-pi/2, pi/2]
   double amplitude_psi = kNotGiven;  // rad, half the peak-to-peak range
   double periods = 0;                // forcing periods integrated
+  // The converged orbit: its state at orbit_time (a multiple of 2 pi) and the times after it, in [0, 2 pi), of the
+  // sampled Psi maximum and minimum (parabola-refined): where inverse/sensitivity.hpp starts its variational run.
+  std::vector<double> orbit_state;
+  double orbit_time = 0, t_max = kNotGiven, t_min = kNotGiven;
 };
 InPlaneMotion in_plane_motion(const Parameters& p, const ForwardOptions& options = {});
 
@@ -97,6 +101,8 @@ struct Prediction {
   std::string reason;  // empty when predicted
   bool ok() const { return reason.empty(); }
 };
+// An in-plane observable's prediction (inclination, amplitude, frequencies) from the motion at the row's condition.
+Prediction predict_from_motion(const InPlaneMotion& m, const ObservedRow& row);
 // One observation's prediction (a regime row: the reduced_regime classifier of analysis/predictors.hpp, from the
 // in-plane start for in-plane names and from the paper's out-of-plane start for rolling and
 // oscillating-out-of-plane). transition_shear_rate: the in-plane motion along the shear rate, bracketed on a
