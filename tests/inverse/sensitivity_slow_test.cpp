@@ -59,10 +59,45 @@ TEST(SensitivitySlow, TransitionRowsKeepCentralDifferences) {
   d.rows.push_back(t);
   const std::vector<FitParameter> mu = {FitParameter::shear_modulus};
   const Linearisation v = linearise(d.rows, mu, k.cell, variational, 1e-4);
-  const Linearisation a = linearise(d.rows, mu, k.cell, fd, 1e-4);
-  ASSERT_TRUE(v.ok && a.ok) << v.reason << a.reason;
-  EXPECT_EQ(v.J.back()[0], a.J.back()[0]);
-  EXPECT_LT(column_gap(v.J, a.J), 1e-6);
+  const Linearisation t_only = linearise(std::vector<ObservedRow>{t}, mu, k.cell, fd, 1e-4);
+  fd.forward.samples_per_period = 8192;  // the in-plane rows' oracle, as above
+  const Linearisation a = linearise(k.data.rows, mu, k.cell, fd, 1e-4);
+  ASSERT_TRUE(v.ok && a.ok && t_only.ok) << v.reason << a.reason << t_only.reason;
+  EXPECT_EQ(v.r.back(), t_only.r[0]);
+  EXPECT_EQ(v.J.back()[0], t_only.J[0][0]);
+  std::vector<std::vector<double>> in_plane(v.J.begin(), v.J.end() - 1);
+  EXPECT_LT(column_gap(in_plane, a.J), 1e-6);
+}
+
+TEST(SensitivitySlow, WarmTransitionCostsLessAndAgrees) {
+  // A fit's sequence at one viscosity: the transition at a point, then at +-1e-4 in ln lambda and in ln mu (the
+  // central differences), cold (cache cleared before each) against warm; the same values.
+  const CellModel cell = synthetic_cell();
+  ObservedRow row;
+  row.observable = Observable::transition_shear_rate;
+  row.viscosity = 1e-3;
+  std::vector<CellModel> seq = {cell};
+  for (double h : {1e-4, -1e-4}) {
+    CellModel a = cell, b = cell;
+    a.lambda *= std::exp(h);
+    b.shear_modulus *= std::exp(h);
+    seq.push_back(a);
+    seq.push_back(b);
+  }
+  std::vector<double> cold, warm;
+  const double t_cold = seconds_of([&] {
+    for (const CellModel& c : seq) {
+      clear_transition_cache();
+      cold.push_back(predict(c, row).value);
+    }
+  });
+  clear_transition_cache();
+  const double t_warm = seconds_of([&] {
+    for (const CellModel& c : seq) warm.push_back(predict(c, row).value);
+  });
+  for (std::size_t i = 0; i < seq.size(); ++i) EXPECT_EQ(warm[i], cold[i]) << i;
+  std::printf("transition shear rate, %zu evaluations: cold %.3f s each, warm %.3f s each (the first one cold)\n",
+              seq.size(), t_cold / static_cast<double>(seq.size()), t_warm / static_cast<double>(seq.size()));
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <tuple>
 
 #include "rbcstab/core/constants.hpp"
@@ -333,37 +334,127 @@ Prediction predict_from_motion(const InPlaneMotion& m, const ObservedRow& row) {
 
 namespace {
 
+// The transition on a fixed grid in ln S: S_j = S_lo 2^(j / 2^m), m the coarsest level whose cell is within
+// transition_rtol. The answer is the cell [S_j, S_j+1] where tumbling gives way to swinging, whatever bracketed it:
+// the cold route scans j by whole factors 2 from S_lo and bisects on the integers; a warm start brackets around the
+// cell a previous call found at a nearby Lambda (the reduced motion depends on Lambda and S only), widening by
+// doubling steps. Both end on the same cell where the regime changes once along S, so the cache changes the cost,
+// never the value, and a fit stays deterministic.
+struct TransitionGrid {
+  int level = 0;
+  double lnS_lo = 0, step = 0;  // ln S_lo, ln 2 / 2^m
+  long top = 0;                 // the index of S_hi
+  double S(long j) const { return std::exp(lnS_lo + step * static_cast<double>(j)); }
+};
+
+struct TransitionCache {
+  std::mutex lock;
+  std::map<std::pair<int, double>, long> cell;  // (level, Lambda) -> the cell's lower index
+};
+TransitionCache& transition_cache() {
+  static TransitionCache c;
+  return c;
+}
+
+// The warm guess at Lambda: the cached cell at the same Lambda, else the secant through the two nearest cached
+// Lambdas of this level (the nearest alone when only one is cached). -1 when none.
+long transition_guess(int level, double Lambda) {
+  TransitionCache& c = transition_cache();
+  std::lock_guard<std::mutex> guard(c.lock);
+  std::vector<std::pair<double, long>> near;
+  for (const auto& [key, j] : c.cell)
+    if (key.first == level) near.emplace_back(key.second, j);
+  if (near.empty()) return -1;
+  std::sort(near.begin(), near.end(),
+            [&](const auto& a, const auto& b) { return std::abs(a.first - Lambda) < std::abs(b.first - Lambda); });
+  if (near[0].first == Lambda || near.size() == 1) return near[0].second;
+  const auto [L0, j0] = near[0];
+  const auto [L1, j1] = near[1];
+  const double slope = static_cast<double>(j1 - j0) / (L1 - L0);
+  return std::max(0L, j0 + std::lround(slope * (Lambda - L0)));
+}
+
+void remember_transition(int level, double Lambda, long j) {
+  TransitionCache& c = transition_cache();
+  std::lock_guard<std::mutex> guard(c.lock);
+  if (c.cell.size() >= 64) c.cell.clear();
+  c.cell[{level, Lambda}] = j;
+}
+
+}  // namespace
+
+void clear_transition_cache() {
+  TransitionCache& c = transition_cache();
+  std::lock_guard<std::mutex> guard(c.lock);
+  c.cell.clear();
+}
+
+namespace {
+
 Prediction predict_transition(const CellModel& cell, const ObservedRow& row, const ForwardOptions& options) {
   Prediction pr;
-  const double S1 = condition_parameters(cell, 1.0, row.viscosity).S();
-  auto tumbles = [&](double rate) {
-    return in_plane_motion(condition_parameters(cell, rate, row.viscosity), options).regime == Regime::tumbling;
-  };
+  const Parameters p1 = condition_parameters(cell, 1.0, row.viscosity);
+  const double S1 = p1.S(), Lambda = p1.Lambda();
   // S is proportional to gamma at a fixed viscosity: scan S in [1e-2, 1e3] (below, the elastic relaxation is too
   // stiff for the explicit run and the cell tumbles; above, the memory term is a small correction) by factors 2.
   constexpr double kSlo = 1e-2, kShi = 1e3;
-  double lo = kSlo / S1;
-  if (!tumbles(lo)) {
-    pr.reason = "no tumbling at S = " + format_value(kSlo) + " (gamma = " + format_value(lo) + " 1/s)";
-    return pr;
+  TransitionGrid g;
+  while (std::exp(std::log(2.0) / std::ldexp(1.0, g.level)) - 1 > options.transition_rtol) ++g.level;
+  g.lnS_lo = std::log(kSlo);
+  g.step = std::log(2.0) / std::ldexp(1.0, g.level);
+  const long per_octave = 1L << g.level;
+  g.top = static_cast<long>(std::floor(std::log(kShi / kSlo) / std::log(2.0))) * per_octave;
+  std::map<long, bool> seen;
+  auto tumbles = [&](long j) {
+    auto it = seen.find(j);
+    if (it != seen.end()) return it->second;
+    const bool t =
+        in_plane_motion(condition_parameters(cell, g.S(j) / S1, row.viscosity), options).regime == Regime::tumbling;
+    seen.emplace(j, t);
+    return t;
+  };
+  long lo = -1, hi = -1;
+  const long guess = transition_guess(g.level, Lambda);
+  if (guess >= 0 && guess < g.top) {
+    // Warm: widen around the guessed cell by doubling steps until [lo, hi] brackets the change.
+    lo = guess;
+    hi = guess + 1;
+    for (long w = 1;; w *= 2) {
+      const bool t_lo = tumbles(lo), t_hi = tumbles(hi);
+      if (t_lo && !t_hi) break;
+      const long from = t_lo ? hi : lo;  // the change lies above hi, or below lo
+      hi = t_lo ? std::min(g.top, hi + w) : lo;
+      lo = t_lo ? from : std::max(0L, lo - w);
+      if (lo == hi) {
+        lo = hi = -1;  // the grid's end: the cold scan says why
+        break;
+      }
+    }
   }
-  double hi = lo;
-  while (true) {
-    hi = 2 * lo;
-    if (hi > kShi / S1) {
-      pr.reason = "no tumbling-to-swinging transition for S in [" + format_value(kSlo) + ", " + format_value(kShi) +
-                  "] at viscosity " + format_value(row.viscosity) +
-                  " Pa s (Lambda = " + format_value(condition_parameters(cell, 1.0, row.viscosity).Lambda()) + ")";
+  if (lo < 0) {
+    // Cold: scan by factors 2 from S_lo.
+    if (!tumbles(0)) {
+      pr.reason = "no tumbling at S = " + format_value(kSlo) + " (gamma = " + format_value(kSlo / S1) + " 1/s)";
       return pr;
     }
-    if (!tumbles(hi)) break;
-    lo = hi;
+    lo = 0;
+    while (true) {
+      hi = lo + per_octave;
+      if (hi > g.top) {
+        pr.reason = "no tumbling-to-swinging transition for S in [" + format_value(kSlo) + ", " + format_value(kShi) +
+                    "] at viscosity " + format_value(row.viscosity) + " Pa s (Lambda = " + format_value(Lambda) + ")";
+        return pr;
+      }
+      if (!tumbles(hi)) break;
+      lo = hi;
+    }
   }
-  while (hi / lo - 1 > options.transition_rtol) {
-    const double mid = std::sqrt(lo * hi);
+  while (hi - lo > 1) {
+    const long mid = lo + (hi - lo) / 2;
     (tumbles(mid) ? lo : hi) = mid;
   }
-  pr.value = std::sqrt(lo * hi);
+  remember_transition(g.level, Lambda, lo);
+  pr.value = std::sqrt(g.S(lo) * g.S(hi)) / S1;
   pr.regime = Regime::swinging;
   return pr;
 }

@@ -106,8 +106,12 @@ Prediction predict_from_motion(const InPlaneMotion& m, const ObservedRow& row);
 // One observation's prediction (a regime row: the reduced_regime classifier of analysis/predictors.hpp, from the
 // in-plane start for in-plane names and from the paper's out-of-plane start for rolling and
 // oscillating-out-of-plane). transition_shear_rate: the in-plane motion along the shear rate, bracketed on a
-// geometric grid over plausible_range("shear_rate") and bisected in ln gamma to options.transition_rtol.
+// geometric grid in S in [1e-2, 1e3] (cold, or warm from a nearby Lambda's cell) and bisected on it in ln S to
+// options.transition_rtol.
 Prediction predict(const CellModel& cell, const ObservedRow& row, const ForwardOptions& options = {});
+// The transition shear rate's warm starts: the cell of its ln S grid found last at each Lambda (shared by every
+// thread; it changes the cost, never the value: docs/inverse.md). Clearing makes the next call cold.
+void clear_transition_cache();
 // Every row, sharing the in-plane run of rows at one condition.
 std::vector<Prediction> predict_all(const CellModel& cell, std::span<const ObservedRow> rows,
                                     const ForwardOptions& options = {});
