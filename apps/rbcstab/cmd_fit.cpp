@@ -13,7 +13,7 @@ namespace rbcstab::cli {
 
 namespace {
 struct FitCliOptions {
-  std::string data, free, fixed, save;
+  std::string data, free, fixed, save, jacobian = "variational";
   FitOptions fit;
   bool json = false;
 };
@@ -22,7 +22,9 @@ int run(const FitCliOptions& o) {
   const ObservationData data = read_observation_data(o.data);
   CellModel cell;
   apply_assignments(cell, o.fixed, "fixed");
-  const FitResult r = fit(data, comma_items(o.free), cell, o.fit);
+  FitOptions options = o.fit;
+  options.jacobian = from_string<JacobianMethod>(o.jacobian, "jacobian");
+  const FitResult r = fit(data, comma_items(o.free), cell, options);
   nlohmann::json doc = to_json(r);
   doc["data"] = o.data;
   if (!o.save.empty()) write_file_atomic(o.save, doc.dump(1) + "\n", "--save");
@@ -67,6 +69,10 @@ Runner add_fit(CLI::App& app) {
                  "reach of the profile grid in Fisher standard errors, in (0, 50] (beyond it doubling steps to the "
                  "bound)")
       ->check(number_above(0, true))
+      ->capture_default_str();
+  app.add_option("--jacobian", o->jacobian,
+                 "the in-plane rows' sensitivities: variational equations of the orbit, or finite_difference")
+      ->check(CLI::IsMember(enum_names<JacobianMethod>()))
       ->capture_default_str();
   app.add_option("--save", o->save, "write the result as JSON to this file")->check(output_name());
   app.add_flag("--json", o->json, "print one JSON object on stdout");

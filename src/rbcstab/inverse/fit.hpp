@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rbcstab/core/enum_table.hpp"
+#include "rbcstab/inverse/constraints.hpp"
 #include "rbcstab/inverse/forward.hpp"
 #include "rbcstab/inverse/observations.hpp"
 #include "rbcstab/inverse/sensitivity.hpp"
@@ -36,6 +37,8 @@ struct FitOptions {
   double fd_step = 1e-4;      // (0, 0.1]: central-difference step in the fitted coordinate (docs/inverse.md)
   // The in-plane rows' Jacobian: variational equations (the other rows by central differences) or differences.
   JacobianMethod jacobian = JacobianMethod::variational;
+  // In-plane regime rows as Ipopt constraints (inverse/constraints.hpp); false: compared only. Profiles ignore them.
+  bool regime_constraints = true;
   double identifiability_ratio = 1e-8;  // (0, 1): a Fisher eigenvalue below ratio * largest is a flat direction
   ForwardOptions forward;
   ProfileOptions profiles;
@@ -93,7 +96,7 @@ struct RowResidual {
   double observed = kNotGiven, predicted = kNotGiven, uncertainty = kNotGiven;
   double residual = kNotGiven;  // (predicted - observed)/uncertainty
   Regime observed_regime = Regime::undetermined, predicted_regime = Regime::undetermined;
-  bool regime_agrees = true;  // where the row names a regime: predicted == observed (not part of chi^2 yet)
+  bool regime_agrees = true;  // where the row names a regime: predicted == observed (regime rows: see constraints)
   std::string reason;         // why no prediction
 };
 
@@ -110,8 +113,14 @@ struct FitResult {
   std::vector<double> fisher_eigenvalues;        // ascending
   std::vector<std::string> unidentifiable;       // one plain sentence per flat direction
   std::vector<FitStart> starts;
-  int evaluations = 0;  // forward evaluations of all rows
+  std::vector<ConstraintResult> constraints;  // the regime rows fitted as constraints, at the estimate
+  int evaluations = 0;                        // forward evaluations of all rows
 };
+// The regime constraints at the estimate res.cell: margins, `multipliers` (the best start's), active and violated
+// rows; violated rows make the status infeasible, named in the message (inverse/constraints.cpp).
+void apply_constraints(FitResult& res, const std::vector<RegimeConstraint>& constraints,
+                       std::span<const FitParameter> free, const ForwardOptions& options,
+                       const std::vector<double>& multipliers);
 
 // The free parameters by name (fit_parameter_from_string), each once; `cell` holds the fixed values and the first
 // start. Throws InvalidArgument for no numeric rows, a free parameter named twice, lambda and inner_viscosity both
