@@ -68,9 +68,9 @@ void apply_assignments(CellModel& cell, const std::string& text, const std::stri
 Parameters condition_parameters(const CellModel& cell, double shear_rate, double viscosity);
 
 struct ForwardOptions {
-  // [16, 65536]: psi samples per period over the last two periods; extrema refined by a parabola, whose O(dt^3)
-  // error jumps as an extremum moves between samples: 1024 keeps that below the finite-difference noise floor
-  // (docs/inverse.md "Sensitivities"; 256 gives 1e-4 relative noise in J at a step of 1e-5).
+  // [16, 65536]: psi samples per period over the last two periods; extrema refined by the quartic through five
+  // samples, whose O(dt^5) error jumps as an extremum moves between samples: 1024 keeps it and its derivative far
+  // below the sensitivities' agreement (docs/inverse.md "Sensitivities").
   int samples_per_period = 1024;
   int block_periods = 40;               // [2, 10000]: periods integrated between convergence checks
   int max_blocks = 12;                  // [1, 1000]: blocks before the orbit counts as not converged
@@ -88,7 +88,7 @@ struct InPlaneMotion {
   double amplitude_psi = kNotGiven;  // rad, half the peak-to-peak range
   double periods = 0;                // forcing periods integrated
   // The converged orbit: its state at orbit_time (a multiple of 2 pi) and the times after it, in [0, 2 pi), of the
-  // sampled Psi maximum and minimum (parabola-refined): where inverse/sensitivity.hpp starts its variational run.
+  // sampled Psi maximum and minimum (quartic-refined): where inverse/sensitivity.hpp starts its variational run.
   std::vector<double> orbit_state;
   double orbit_time = 0, t_max = kNotGiven, t_min = kNotGiven;
 };
