@@ -110,7 +110,8 @@ nlohmann::json to_json(const ConstraintResult& c) {
 
 std::string constraint_text(const ConstraintResult& c) {
   return "line " + std::to_string(c.row.line) + " " + to_string(c.row.observed) + " at " +
-         format_value(c.row.shear_rate) + " 1/s: margin ln(gamma/gamma_c) " + (c.row.sign > 0 ? "" : "(negated) ") +
+         format_value(c.row.shear_rate) + " 1/s: margin " +
+         (c.row.sign > 0 ? "ln(gamma/gamma_c)" : "ln(gamma_c/gamma)") + " = " +
          (std::isfinite(c.margin) ? format_value(c.margin) : "n/a") +
          (c.violated ? "  (violated)"
           : c.active ? "  (active)"
