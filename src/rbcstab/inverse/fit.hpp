@@ -29,19 +29,19 @@ struct ProfileOptions {
 };
 
 struct FitOptions {
-  int starts = 4;             // [1, 64]: the given start, then starts spread in the box (fixed seed)
-  double start_spread = 1.0;  // (0, 10]: half-width of the spread in the fitted coordinate (ln for moduli)
-  unsigned seed = 1;          // of the spread starts: a fit is deterministic
-  int max_iterations = 100;   // [1, 10000]: Ipopt iterations per start
-  double tol = 1e-8;          // (0, 1e-2]: Ipopt's tol (scaled KKT error of 1/2 chi^2)
-  double fd_step = 1e-4;      // (0, 0.1]: central-difference step in the fitted coordinate (docs/inverse.md)
+  int starts = 4;                       // [1, 64]: the given start, then starts spread in the box (fixed seed)
+  double start_spread = 1.0;            // (0, 10]: half-width of the spread in the fitted coordinate (ln for moduli)
+  unsigned seed = 1;                    // of the spread starts: a fit is deterministic
+  int max_iterations = 100;             // [1, 10000]: Ipopt iterations per start
+  double tol = 1e-8;                    // (0, 1e-2]: Ipopt's tol (scaled KKT error of 1/2 chi^2)
+  double fd_step = 1e-4;                // (0, 0.1]: central-difference step in the fitted coordinate (docs/inverse.md)
+  double identifiability_ratio = 1e-8;  // (0, 1): a Fisher eigenvalue below ratio * largest is a flat direction
+  ForwardOptions forward;
+  ProfileOptions profiles;
   // The in-plane rows' Jacobian: variational equations (the other rows by central differences) or differences.
   JacobianMethod jacobian = JacobianMethod::variational;
   // In-plane regime rows as Ipopt constraints (inverse/constraints.hpp); false: compared only. Profiles ignore them.
   bool regime_constraints = true;
-  double identifiability_ratio = 1e-8;  // (0, 1): a Fisher eigenvalue below ratio * largest is a flat direction
-  ForwardOptions forward;
-  ProfileOptions profiles;
   void validate() const;  // throws InvalidArgument naming the field
 };
 
@@ -113,8 +113,9 @@ struct FitResult {
   std::vector<double> fisher_eigenvalues;        // ascending
   std::vector<std::string> unidentifiable;       // one plain sentence per flat direction
   std::vector<FitStart> starts;
-  std::vector<ConstraintResult> constraints;  // the regime rows fitted as constraints, at the estimate
-  int evaluations = 0;                        // forward evaluations of all rows
+  int evaluations = 0;  // forward evaluations of all rows
+  // The regime rows fitted as constraints, at the estimate.
+  std::vector<ConstraintResult> constraints;
 };
 // The regime constraints at the estimate res.cell: margins, `multipliers` (the best start's), active and violated
 // rows; violated rows make the status infeasible, named in the message (inverse/constraints.cpp).
