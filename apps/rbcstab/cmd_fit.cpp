@@ -17,7 +17,7 @@ namespace rbcstab::cli {
 
 namespace {
 struct FitCliOptions {
-  std::string data, free, fixed, save;
+  std::string data, free, fixed, save, jacobian = "variational";
   FitOptions fit;
   FitReportOptions report;
   bool json = false;
@@ -39,6 +39,7 @@ int run(FitCliOptions& o) {
     };
   const StopOnSignal interrupt;
   o.fit.stop = interrupt.flag();
+  o.fit.jacobian = from_string<JacobianMethod>(o.jacobian, "jacobian");
   const FitResult r = fit(data, comma_items(o.free), cell, o.fit);
   nlohmann::json doc = to_json(r);
   doc["data"] = o.data;
@@ -88,6 +89,10 @@ Runner add_fit(CLI::App& app) {
                  "reach of the profile grid in Fisher standard errors, in (0, 50] (beyond it doubling steps to the "
                  "bound)")
       ->check(number_above(0, true))
+      ->capture_default_str();
+  app.add_option("--jacobian", o->jacobian,
+                 "the in-plane rows' sensitivities: variational equations of the orbit, or finite_difference")
+      ->check(CLI::IsMember(enum_names<JacobianMethod>()))
       ->capture_default_str();
   app.add_option("--save", o->save, "write the result as JSON to this file")->check(output_name());
   app.add_option("--report", o->report.output,

@@ -70,6 +70,29 @@ TEST(Forward, TransitionSeparatesTumblingFromSwinging) {
   EXPECT_NE(none.reason.find("tumbles"), std::string::npos) << none.reason;
 }
 
+TEST(Forward, WarmTransitionIsTheColdCell) {
+  // The warm start (from the cell found at a nearby Lambda) ends on the same cell of the ln S grid as the cold scan
+  // and bisection: equal values. The check separates cells: lambda 1 % apart moves the value by ~25 cells.
+  const CellModel cell = synthetic_cell();
+  ObservedRow row;
+  row.observable = Observable::transition_shear_rate;
+  row.viscosity = 1e-3;
+  ForwardOptions o;
+  o.transition_rtol = 1e-4;
+  ForwardOptions warm = o;
+  warm.transition_memo = make_transition_memo();
+  CellModel moved = cell;
+  moved.lambda *= 1.01;
+  const Prediction cold_moved = predict(moved, row, o);  // no memo: cold
+  const Prediction cold = predict(cell, row, warm);      // cold, and remembered
+  const Prediction again = predict(cell, row, warm);     // the remembered cell: two runs
+  const Prediction warm_moved = predict(moved, row, warm);
+  ASSERT_TRUE(cold.ok() && cold_moved.ok()) << cold.reason << cold_moved.reason;
+  EXPECT_EQ(again.value, cold.value);
+  EXPECT_EQ(warm_moved.value, cold_moved.value);
+  EXPECT_GT(std::abs(std::log(cold_moved.value / cold.value)), 10 * o.transition_rtol);
+}
+
 TEST(Forward, CentralDifferencesAgreeAtTwoSteps) {
   // The fit's step 1e-4 (in ln mu and ln lambda) against 1e-5: the central differences agree to 1e-6 of the
   // largest entry (measured 2.7e-8), so neither the evaluation noise (integration to rtol 1e-11, extrema from 1024

@@ -1,5 +1,6 @@
 #pragma once
 // A synthetic cell and its observations, made by the forward model itself with noise from a fixed seed.
+#include <algorithm>
 #include <random>
 #include <string>
 #include <vector>
@@ -59,6 +60,45 @@ inline double profile_at(const Profile& p, double x) {
   for (std::size_t k = 0; k < p.coordinate.size(); ++k)
     if (std::abs(p.coordinate[k] - x) < 1e-12) return p.delta_chi2[k];
   return kNotGiven;
+}
+
+// Largest |a - b| over the largest |b| of each column (a column's scale is its parameter's).
+inline double column_gap(const std::vector<std::vector<double>>& a, const std::vector<std::vector<double>>& b) {
+  double worst = 0;
+  for (std::size_t j = 0; j < b.front().size(); ++j) {
+    double scale = 0, gap = 0;
+    for (std::size_t i = 0; i < b.size(); ++i) {
+      scale = std::max(scale, std::abs(b[i][j]));
+      gap = std::max(gap, std::abs(a[i][j] - b[i][j]));
+    }
+    worst = std::max(worst, gap / scale);
+  }
+  return worst;
+}
+
+struct SensitivityCase {
+  CellModel cell;
+  ObservationData data;
+  std::vector<FitParameter> free;
+};
+
+inline std::vector<SensitivityCase> sensitivity_cases() {
+  std::vector<SensitivityCase> out;
+  // The synthetic cell (Lambda = 0.6, S = 1.6 to 13): mu and lambda free.
+  out.push_back({synthetic_cell(),
+                 synthetic_data(synthetic_cell(), 0.0, 1),
+                 {FitParameter::shear_modulus, FitParameter::lambda}});
+  // Another cell with the inner viscosity given (lambda changes with eta), and Delta and Delta0 free.
+  CellModel c = synthetic_cell();
+  c.inner_viscosity = 4e-3;
+  c.Delta = 0.3;
+  c.Delta0 = 0.1;
+  c.shear_modulus = 3e-6;
+  ObservationData d = synthetic_data(c, 0.0, 2);
+  std::rotate(d.rows.begin(), d.rows.begin() + 6, d.rows.end());  // first: 600 1/s at 2 mPa s
+  out.push_back(
+      {c, d, {FitParameter::inner_viscosity, FitParameter::Delta, FitParameter::Delta0, FitParameter::radius}});
+  return out;
 }
 
 }  // namespace rbcstab

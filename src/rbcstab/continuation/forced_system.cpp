@@ -119,10 +119,8 @@ void ReducedForcedSystem::parameter_derivative(double t, std::span<const double>
 
 void ReducedForcedSystem::parameter_derivative(double t, std::span<const double> x, double p, const double g[3],
                                                std::span<double> fp) const {
-  // f depends on p only through 1/Lambda and kappa = 1/(Lambda S) (ReducedModel::rhs):
-  //   f = mu y + (-y1, y0, 0) - (0, 1/Lambda, 0) + kappa g(t),  mu = (y1/Lambda - kappa y.g) / |y|^2,
-  // with g = (Re z0(t), Im z0(t), w0) the rest shape's direction, so df/dp is exact in y and t:
-  //   df/d(1/Lambda) = (y1/Q) y - e_y,  df/dkappa = g - (y.g/Q) y.
+  // f depends on p only through 1/Lambda and kappa = 1/(Lambda S) (ReducedModel::coefficient_derivatives), with
+  // g = (Re z0(t), Im z0(t), w0) the rest shape's direction, so df/dp is exact in y and t.
   // Central differences of f itself would put rounding noise (~eps |f| / h) into the sensitivity
   // equation and force rk8pd at rtol 1e-12 into small steps (measured: ~6x slower shooting).
   // beta enters only through the direction g (1/Lambda and kappa fixed): df/dbeta = kappa (g' - (y.g'/Q) y)
@@ -140,13 +138,12 @@ void ReducedForcedSystem::parameter_derivative(double t, std::span<const double>
     dg[0] = dz0.real(), dg[1] = dz0.imag(), dg[2] = d.dw0;
   }
   const double Q = x[0] * x[0] + x[1] * x[1] + x[2] * x[2];
-  const double yg = x[0] * g[0] + x[1] * g[1] + x[2] * g[2];
   const double ydg = x[0] * dg[0] + x[1] * dg[1] + x[2] * dg[2];
+  double dfdinvL[3], dfdkappa[3];
+  ReducedModel::coefficient_derivatives(x, g, dfdinvL, dfdkappa);
   for (std::size_t i = 0; i < 3; ++i) {
-    const double dfdinvL = x[1] / Q * x[i] - (i == 1 ? 1.0 : 0.0);
-    const double dfdkappa = g[i] - yg / Q * x[i];
     const double dfdg = d.kappa * (dg[i] - ydg / Q * x[i]);
-    fp[i] = d.dinvL * dfdinvL + d.dkappa * dfdkappa + dfdg;
+    fp[i] = d.dinvL * dfdinvL[i] + d.dkappa * dfdkappa[i] + dfdg;
   }
 }
 

@@ -105,7 +105,8 @@ class FitMonitor {
 class LeastSquaresNlp final : public Ipopt::TNLP {
  public:
   LeastSquaresNlp(std::vector<ObservedRow> rows, std::vector<FitParameter> free, const CellModel& cell,
-                  const FitOptions& options, std::vector<double> start, int held, FitMonitor* monitor)
+                  const FitOptions& options, std::vector<double> start, int held, FitMonitor* monitor,
+                  std::vector<RegimeConstraint> constraints = {})
       : rows_(std::move(rows)),
         free_(std::move(free)),
         cell_(cell),
@@ -113,21 +114,23 @@ class LeastSquaresNlp final : public Ipopt::TNLP {
         info_(infos_of(free_, cell)),
         start_(std::move(start)),
         held_(held),
-        monitor_(monitor) {}
+        monitor_(monitor),
+        constraints_(std::move(constraints)) {}
 
-  std::vector<double> solution;
+  std::vector<double> solution, multipliers;
   Ipopt::SolverReturn solver_status = Ipopt::UNASSIGNED;
   int evaluations = 0;
 
   bool get_nlp_info(Index& n, Index& m, Index& nnz_jac_g, Index& nnz_h_lag, IndexStyleEnum& index_style) override {
     n = static_cast<Index>(free_.size());
-    m = 0;
-    nnz_jac_g = 0;
+    m = static_cast<Index>(constraints_.size());
+    nnz_jac_g = m * n;
     nnz_h_lag = n * (n + 1) / 2;
     index_style = TNLP::C_STYLE;
     return true;
   }
-  bool get_bounds_info(Index n, Number* x_l, Number* x_u, Index, Number*, Number*) override {
+  bool get_bounds_info(Index n, Number* x_l, Number* x_u, Index m, Number* g_l, Number* g_u) override {
+    for (Index k = 0; k < m; ++k) g_l[k] = 0, g_u[k] = 1e19;  // regime margins >= 0
     for (Index j = 0; j < n; ++j) {
       x_l[j] = coordinate_bound(info_[j], info_[j].lo);
       x_u[j] = coordinate_bound(info_[j], info_[j].hi);
@@ -154,8 +157,24 @@ class LeastSquaresNlp final : public Ipopt::TNLP {
     }
     return true;
   }
-  bool eval_g(Index, const Number*, bool, Index, Number*) override { return true; }
-  bool eval_jac_g(Index, const Number*, bool, Index, Index, Index*, Index*, Number*) override { return true; }
+  bool eval_g(Index n, const Number* x, bool, Index m, Number* g) override {
+    if (!update_constraints(n, x)) return false;
+    for (Index k = 0; k < m; ++k) g[k] = con_.margin[k];
+    return true;
+  }
+  bool eval_jac_g(Index n, const Number* x, bool, Index m, Index, Index* iRow, Index* jCol, Number* values) override {
+    for (Index k = 0, e = 0; k < m; ++k)
+      for (Index j = 0; j < n; ++j, ++e) {
+        if (values == nullptr) {
+          iRow[e] = k;
+          jCol[e] = j;
+        } else {
+          if (e == 0 && !update_constraints(n, x)) return false;
+          values[e] = con_.J[k][j];
+        }
+      }
+    return true;
+  }
   bool eval_h(Index n, const Number* x, bool, Number obj_factor, Index, const Number*, bool, Index, Index* iRow,
               Index* jCol, Number* values) override {
     Index k = 0;
@@ -176,11 +195,12 @@ class LeastSquaresNlp final : public Ipopt::TNLP {
       }
     return true;
   }
-  void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*, const Number*, Index,
-                         const Number*, const Number*, Number, const Ipopt::IpoptData*,
+  void finalize_solution(Ipopt::SolverReturn status, Index n, const Number* x, const Number*, const Number*, Index m,
+                         const Number*, const Number* lambda, Number, const Ipopt::IpoptData*,
                          Ipopt::IpoptCalculatedQuantities*) override {
     solver_status = status;
     solution.assign(x, x + n);
+    multipliers.assign(lambda, lambda + m);
   }
   bool intermediate_callback(Ipopt::AlgorithmMode, Index, Number, Number, Number, Number, Number, Number, Number,
                              Number, Index, const Ipopt::IpoptData*, Ipopt::IpoptCalculatedQuantities*) override {
@@ -203,6 +223,14 @@ class LeastSquaresNlp final : public Ipopt::TNLP {
     }
     return lin_.ok;
   }
+  // The regime margins and their Jacobian at x (inverse/constraints.hpp), cached for the last x.
+  bool update_constraints(Index n, const Number* x) {
+    const std::vector<double> at(x, x + n);
+    if (at == con_x_) return con_.ok;
+    con_x_ = at;
+    con_ = constraint_values(constraints_, free_, cell_at(cell_, info_, at), options_.forward, options_.fd_step);
+    return con_.ok;
+  }
   std::vector<ObservedRow> rows_;
   std::vector<FitParameter> free_;
   CellModel cell_;
@@ -214,6 +242,9 @@ class LeastSquaresNlp final : public Ipopt::TNLP {
   std::vector<double> x_;
   bool have_J_ = false;
   Linearisation lin_;
+  std::vector<RegimeConstraint> constraints_;
+  std::vector<double> con_x_;
+  ConstraintValues con_;
 };
 
 FitStatus status_of(Ipopt::ApplicationReturnStatus s) {
@@ -248,11 +279,14 @@ struct Solve {
   std::vector<double> end;
   double chi2 = kNotGiven;
   int iterations = 0, evaluations = 0;
+  std::vector<double> multipliers;  // of the regime constraints
 };
 Solve solve(const std::vector<ObservedRow>& rows, const std::vector<FitParameter>& free, const CellModel& cell,
-            const FitOptions& options, const std::vector<double>& start, int held, FitMonitor& monitor) {
+            const FitOptions& options, const std::vector<double>& start, int held, FitMonitor& monitor,
+            const std::vector<RegimeConstraint>& constraints = {}) {
   Solve out;
-  Ipopt::SmartPtr<LeastSquaresNlp> nlp = new LeastSquaresNlp(rows, free, cell, options, start, held, &monitor);
+  Ipopt::SmartPtr<LeastSquaresNlp> nlp =
+      new LeastSquaresNlp(rows, free, cell, options, start, held, &monitor, constraints);
   Ipopt::SmartPtr<Ipopt::IpoptApplication> app = IpoptApplicationFactory();
   app->Options()->SetNumericValue("tol", options.tol);
   app->Options()->SetIntegerValue("max_iter", options.max_iterations);
@@ -276,6 +310,7 @@ Solve solve(const std::vector<ObservedRow>& rows, const std::vector<FitParameter
   out.ipopt_status = ipopt_status_name(static_cast<int>(rs));
   if (Ipopt::IsValid(app->Statistics())) out.iterations = app->Statistics()->IterationCount();
   out.end = nlp->solution.empty() ? start : nlp->solution;
+  out.multipliers = nlp->multipliers;
   std::vector<double> r;
   std::string why;
   if (!nlp->solution.empty() &&
@@ -536,6 +571,7 @@ void ProfileOptions::validate() const {
 
 Linearisation linearise(std::span<const ObservedRow> rows, std::span<const FitParameter> free, const CellModel& cell,
                         const FitOptions& options, double step) {
+  if (options.jacobian == JacobianMethod::variational) return variational_linearise(rows, free, cell, options, step);
   Linearisation lin;
   std::vector<ObservedRow> numeric_rows;
   for (const ObservedRow& o : rows)
@@ -563,8 +599,11 @@ Linearisation linearise(std::span<const ObservedRow> rows, std::span<const FitPa
 }
 
 FitResult fit(const ObservationData& data, const std::vector<std::string>& free_names, const CellModel& cell,
-              const FitOptions& options) {
-  options.validate();
+              const FitOptions& given) {
+  given.validate();
+  // The transition's warm starts live for this fit only: its value never depends on what ran before it.
+  FitOptions options = given;
+  if (!options.forward.transition_memo) options.forward.transition_memo = make_transition_memo();
   cell.validate();
   std::vector<FitParameter> free;
   for (const std::string& name : free_names) {
@@ -606,6 +645,9 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
   res.dof = res.rows - static_cast<int>(free.size());
 
   FitMonitor monitor(options);
+  const std::vector<RegimeConstraint> constraints =
+      options.regime_constraints ? regime_constraints(data) : std::vector<RegimeConstraint>{};
+  std::vector<std::vector<double>> multipliers;  // per start
   std::mt19937_64 rng(options.seed);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   int best = -1;
@@ -620,7 +662,8 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
         const double margin = 1e-3 * std::min(1.0, hi[j] - lo[j]);
         st.start[j] = std::clamp(x0[j] + width * unit(rng), lo[j] + margin, hi[j] - margin);
       }
-    const Solve sv = solve(rows, free, cell, options, st.start, -1, monitor);
+    const Solve sv = solve(rows, free, cell, options, st.start, -1, monitor, constraints);
+    multipliers.push_back(sv.multipliers);
     res.evaluations += sv.evaluations;
     st.status = sv.status;
     st.ipopt_status = sv.ipopt_status;
@@ -650,6 +693,7 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
   res.cell = cell_at(cell, info, b.end);
   if (res.status != FitStatus::converged)
     res.message = "the best start did not converge (" + b.ipopt_status + "): the estimates are its last iterate";
+  if (!constraints.empty()) apply_constraints(res, constraints, free, options.forward, multipliers[best]);
   if (monitor.stopped()) {
     res.status = FitStatus::interrupted;
     res.message = stopped_after + ": the estimates are the best start's so far (" + to_string(b.status) +
@@ -832,6 +876,8 @@ nlohmann::json to_json(const FitResult& r) {
     res.push_back(j);
   }
   out["residuals"] = res;
+  out["constraints"] = nlohmann::json::array();
+  for (const ConstraintResult& c : r.constraints) out["constraints"].push_back(to_json(c));
   nlohmann::json starts = nlohmann::json::array();
   for (const FitStart& s : r.starts)
     starts.push_back({{"start", s.start},
@@ -872,6 +918,8 @@ std::string fit_text(const FitResult& r) {
       s << "\n";
     }
   }
+  if (!r.constraints.empty()) s << "regime constraints (observed regime against the transition shear rate):\n";
+  for (const ConstraintResult& c : r.constraints) s << "  " << constraint_text(c) << "\n";
   s << "residuals (predicted - observed)/uncertainty:\n";
   for (const RowResidual& x : r.residuals) {
     s << "  line " << x.line << " " << to_string(x.observable) << ": ";

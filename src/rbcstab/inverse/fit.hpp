@@ -11,8 +11,10 @@
 #include <vector>
 
 #include "rbcstab/core/enum_table.hpp"
+#include "rbcstab/inverse/constraints.hpp"
 #include "rbcstab/inverse/forward.hpp"
 #include "rbcstab/inverse/observations.hpp"
+#include "rbcstab/inverse/sensitivity.hpp"
 
 namespace rbcstab {
 
@@ -45,6 +47,10 @@ struct FitOptions {
   double identifiability_ratio = 1e-8;  // (0, 1): a Fisher eigenvalue below ratio * largest is a flat direction
   ForwardOptions forward;
   ProfileOptions profiles;
+  // The in-plane rows' Jacobian: variational equations (the other rows by central differences) or differences.
+  JacobianMethod jacobian = JacobianMethod::variational;
+  // In-plane regime rows as Ipopt constraints (inverse/constraints.hpp); false: compared only. Profiles ignore them.
+  bool regime_constraints = true;
   // Set (e.g. by Ctrl-C: core/interrupt.hpp) to stop: the fit returns within an Ipopt iteration with the status
   // interrupted and the best start so far, if any (null: never stops).
   const std::atomic<bool>* stop = nullptr;
@@ -104,7 +110,7 @@ struct RowResidual {
   double observed = kNotGiven, predicted = kNotGiven, uncertainty = kNotGiven;
   double residual = kNotGiven;  // (predicted - observed)/uncertainty
   Regime observed_regime = Regime::undetermined, predicted_regime = Regime::undetermined;
-  bool regime_agrees = true;  // where the row names a regime: predicted == observed (not part of chi^2 yet)
+  bool regime_agrees = true;  // where the row names a regime: predicted == observed (regime rows: see constraints)
   std::string reason;         // why no prediction
 };
 
@@ -122,7 +128,14 @@ struct FitResult {
   std::vector<std::string> unidentifiable;       // one plain sentence per flat direction
   std::vector<FitStart> starts;
   int evaluations = 0;  // forward evaluations of all rows
+  // The regime rows fitted as constraints, at the estimate.
+  std::vector<ConstraintResult> constraints;
 };
+// The regime constraints at the estimate res.cell: margins, `multipliers` (the best start's), active and violated
+// rows; violated rows make the status infeasible, named in the message (inverse/constraints.cpp).
+void apply_constraints(FitResult& res, const std::vector<RegimeConstraint>& constraints,
+                       std::span<const FitParameter> free, const ForwardOptions& options,
+                       const std::vector<double>& multipliers);
 
 // The free parameters by name (fit_parameter_from_string), each once; `cell` holds the fixed values and the first
 // start. Throws InvalidArgument for no numeric rows, a free parameter named twice, lambda and inner_viscosity both
@@ -131,8 +144,8 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free,
               const FitOptions& options = {});
 
 // Gauss-Newton quantities at one point: residuals (predicted - observed)/sigma of the numeric rows and their
-// Jacobian in the fitted coordinates by central differences (options.fd_step); ok false with the reason when a
-// prediction fails.
+// Jacobian in the fitted coordinates by options.jacobian (central differences at `step`); ok false with the reason
+// when a prediction fails.
 struct Linearisation {
   bool ok = false;
   std::string reason;
@@ -141,6 +154,9 @@ struct Linearisation {
 };
 Linearisation linearise(std::span<const ObservedRow> rows, std::span<const FitParameter> free, const CellModel& cell,
                         const FitOptions& options, double step);
+// The variational route of linearise (inverse/sensitivity.cpp).
+Linearisation variational_linearise(std::span<const ObservedRow> rows, std::span<const FitParameter> free,
+                                    const CellModel& cell, const FitOptions& options, double step);
 
 nlohmann::json to_json(const FitResult& r);
 std::string fit_text(const FitResult& r);

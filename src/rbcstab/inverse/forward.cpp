@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <mutex>
 #include <tuple>
 
 #include "rbcstab/core/constants.hpp"
@@ -55,13 +56,25 @@ const char* unicode_of(FitParameter q) {
 // Unwraps an angle sequence: each value moved by a multiple of 2 pi to within pi of the previous one.
 double unwrap(double previous, double raw) { return raw + kTwoPi * std::round((previous - raw) / kTwoPi); }
 
-// The extremum of samples v near index k (interior) refined by the parabola through k-1, k, k+1.
-double parabola_peak(const std::vector<double>& v, std::size_t k) {
-  if (k == 0 || k + 1 >= v.size()) return v[k];
-  const double a = v[k - 1], b = v[k], c = v[k + 1], d = a - 2 * b + c;
-  if (d == 0) return b;
-  const double x = 0.5 * (a - c) / d;
-  return b - 0.25 * (a - c) * x;
+// The extremum near the middle of five equally spaced samples v[0..4] of a smooth function: the interpolating
+// quartic's stationary point (Newton from the parabola's vertex) as (offset in samples, value). Its error is
+// O(dt^5), so the bias a sampled extremum carries (and its derivative in the parameters) stays far below the
+// finite-difference and variational sensitivities' agreement (docs/inverse.md "Sensitivities").
+std::pair<double, double> quartic_peak(const double v[5]) {
+  // The quartic's derivatives at 0 (five-point stencils, exact for degree <= 4).
+  const double d1 = (v[0] - 8 * v[1] + 8 * v[3] - v[4]) / 12;
+  const double d2 = (-v[0] + 16 * v[1] - 30 * v[2] + 16 * v[3] - v[4]) / 12;
+  const double d3 = (-v[0] + 2 * v[1] - 2 * v[3] + v[4]) / 2;
+  const double d4 = v[0] - 4 * v[1] + 6 * v[2] - 4 * v[3] + v[4];
+  double x = d2 != 0 ? std::clamp(-d1 / d2, -1.0, 1.0) : 0.0;
+  for (int it = 0; it < 20; ++it) {
+    const double f = d1 + x * (d2 + x * (d3 / 2 + x * d4 / 6)), fp = d2 + x * (d3 + x * d4 / 2);
+    if (fp == 0) break;
+    const double next = std::clamp(x - f / fp, -1.5, 1.5);
+    if (std::abs(next - x) < 1e-15) break;
+    x = next;
+  }
+  return {x, v[2] + x * (d1 + x * (d2 / 2 + x * (d3 / 6 + x * d4 / 24)))};
 }
 
 }  // namespace
@@ -271,12 +284,24 @@ InPlaneMotion in_plane_motion(const Parameters& p, const ForwardOptions& options
     mean /= n;
     const auto [lo, hi] = std::minmax_element(last.begin(), last.end());
     // Extrema refined on the cyclic sequence so an extremum at the window's edge keeps its neighbours.
-    auto refined = [&](std::size_t k) {
-      std::vector<double> three = {last[(k + n - 1) % n], last[k], last[(k + 1) % n]};
-      return parabola_peak(three, 1);
+    // Extrema refined on the cyclic sequence so an extremum at the window's edge keeps its neighbours; sample k is
+    // at t - 2 pi + 2 pi (k + 1)/n, so the extremum's time after t is 2 pi (k + 1 + offset)/n mod 2 pi.
+    auto peak = [&](std::size_t k) {
+      double five[5];
+      for (std::size_t i = 0; i < 5; ++i) five[i] = last[(k + n + i - 2) % n];
+      return quartic_peak(five);
     };
-    const double range =
-        refined(static_cast<std::size_t>(hi - last.begin())) - refined(static_cast<std::size_t>(lo - last.begin()));
+    const auto k_hi = static_cast<std::size_t>(hi - last.begin()), k_lo = static_cast<std::size_t>(lo - last.begin());
+    const auto [x_hi, v_hi] = peak(k_hi);
+    const auto [x_lo, v_lo] = peak(k_lo);
+    auto time_of = [&](std::size_t k, double x) {
+      return std::fmod(kTwoPi * (static_cast<double>(k) + 1 + x) / n + kTwoPi, kTwoPi);
+    };
+    const double range = v_hi - v_lo;
+    m.orbit_state = y;
+    m.orbit_time = t;
+    m.t_max = time_of(k_hi, x_hi);
+    m.t_min = time_of(k_lo, x_lo);
     const double shift = kTwoPi * std::round(mean / kTwoPi);  // Psi = 2 psi in (-pi, pi]
     m.mean_psi = 0.5 * (mean - shift);
     m.amplitude_psi = 0.25 * range;
@@ -289,9 +314,7 @@ InPlaneMotion in_plane_motion(const Parameters& p, const ForwardOptions& options
   return m;
 }
 
-namespace {
-
-Prediction from_motion(const InPlaneMotion& m, const ObservedRow& row) {
+Prediction predict_from_motion(const InPlaneMotion& m, const ObservedRow& row) {
   Prediction pr;
   pr.regime = m.regime;
   if (m.regime == Regime::undetermined) {
@@ -323,37 +346,122 @@ Prediction from_motion(const InPlaneMotion& m, const ObservedRow& row) {
   return pr;
 }
 
+namespace {
+
+// The transition on a fixed grid in ln S: S_j = S_lo 2^(j / 2^m), m the coarsest level whose cell is within
+// transition_rtol. The answer is the cell [S_j, S_j+1] where tumbling gives way to swinging, whatever bracketed it:
+// the cold route scans j by whole factors 2 from S_lo and bisects on the integers; a warm start brackets around the
+// cell a previous call found at a nearby Lambda (the reduced motion depends on Lambda and S only), widening by
+// doubling steps. Both end on the same cell where the regime changes once along S, so the memo changes the cost,
+// never the value.
+struct TransitionGrid {
+  int level = 0;
+  double lnS_lo = 0, step = 0;  // ln S_lo, ln 2 / 2^m
+  long top = 0;                 // the index of S_hi
+  double S(long j) const { return std::exp(lnS_lo + step * static_cast<double>(j)); }
+};
+
+}  // namespace
+
+// (level, Lambda) -> the lower index of the cell found there; at most 64 entries.
+struct TransitionMemo {
+  mutable std::mutex lock;
+  std::map<std::pair<int, double>, long> cell;
+};
+
+std::shared_ptr<TransitionMemo> make_transition_memo() { return std::make_shared<TransitionMemo>(); }
+
+namespace {
+
+// The warm guess at Lambda: the memo's cell at the same Lambda, else the secant through the two nearest Lambdas of
+// this level (the nearest alone when only one is known). -1 when none (or no memo).
+long transition_guess(const TransitionMemo* memo, int level, double Lambda) {
+  if (memo == nullptr) return -1;
+  std::lock_guard<std::mutex> guard(memo->lock);
+  std::vector<std::pair<double, long>> near;
+  for (const auto& [key, j] : memo->cell)
+    if (key.first == level) near.emplace_back(key.second, j);
+  if (near.empty()) return -1;
+  std::sort(near.begin(), near.end(),
+            [&](const auto& a, const auto& b) { return std::abs(a.first - Lambda) < std::abs(b.first - Lambda); });
+  if (near[0].first == Lambda || near.size() == 1) return near[0].second;
+  const auto [L0, j0] = near[0];
+  const auto [L1, j1] = near[1];
+  const double slope = static_cast<double>(j1 - j0) / (L1 - L0);
+  return std::max(0L, j0 + std::lround(slope * (Lambda - L0)));
+}
+
+void remember_transition(TransitionMemo* memo, int level, double Lambda, long j) {
+  if (memo == nullptr) return;
+  std::lock_guard<std::mutex> guard(memo->lock);
+  if (memo->cell.size() >= 64) memo->cell.clear();
+  memo->cell[{level, Lambda}] = j;
+}
+
 Prediction predict_transition(const CellModel& cell, const ObservedRow& row, const ForwardOptions& options) {
   Prediction pr;
-  const double S1 = condition_parameters(cell, 1.0, row.viscosity).S();
-  auto tumbles = [&](double rate) {
-    return in_plane_motion(condition_parameters(cell, rate, row.viscosity), options).regime == Regime::tumbling;
-  };
+  const Parameters p1 = condition_parameters(cell, 1.0, row.viscosity);
+  const double S1 = p1.S(), Lambda = p1.Lambda();
   // S is proportional to gamma at a fixed viscosity: scan S in [1e-2, 1e3] (below, the elastic relaxation is too
   // stiff for the explicit run and the cell tumbles; above, the memory term is a small correction) by factors 2.
   constexpr double kSlo = 1e-2, kShi = 1e3;
-  double lo = kSlo / S1;
-  if (!tumbles(lo)) {
-    pr.reason = "no tumbling at S = " + format_value(kSlo) + " (gamma = " + format_value(lo) + " 1/s)";
-    return pr;
+  TransitionGrid g;
+  while (std::exp(std::log(2.0) / std::ldexp(1.0, g.level)) - 1 > options.transition_rtol) ++g.level;
+  g.lnS_lo = std::log(kSlo);
+  g.step = std::log(2.0) / std::ldexp(1.0, g.level);
+  const long per_octave = 1L << g.level;
+  g.top = static_cast<long>(std::floor(std::log(kShi / kSlo) / std::log(2.0))) * per_octave;
+  std::map<long, bool> seen;
+  auto tumbles = [&](long j) {
+    auto it = seen.find(j);
+    if (it != seen.end()) return it->second;
+    const bool t =
+        in_plane_motion(condition_parameters(cell, g.S(j) / S1, row.viscosity), options).regime == Regime::tumbling;
+    seen.emplace(j, t);
+    return t;
+  };
+  long lo = -1, hi = -1;
+  const long guess = transition_guess(options.transition_memo.get(), g.level, Lambda);
+  if (guess >= 0 && guess < g.top) {
+    // Warm: widen around the guessed cell by doubling steps until [lo, hi] brackets the change.
+    lo = guess;
+    hi = guess + 1;
+    for (long w = 1;; w *= 2) {
+      const bool t_lo = tumbles(lo), t_hi = tumbles(hi);
+      if (t_lo && !t_hi) break;
+      const long from = t_lo ? hi : lo;  // the change lies above hi, or below lo
+      hi = t_lo ? std::min(g.top, hi + w) : lo;
+      lo = t_lo ? from : std::max(0L, lo - w);
+      if (lo == hi) {
+        lo = hi = -1;  // the grid's end: the cold scan says why
+        break;
+      }
+    }
   }
-  double hi = lo;
-  while (true) {
-    hi = 2 * lo;
-    if (hi > kShi / S1) {
-      pr.reason = "no tumbling-to-swinging transition for S in [" + format_value(kSlo) + ", " + format_value(kShi) +
-                  "] at viscosity " + format_value(row.viscosity) +
-                  " Pa s (Lambda = " + format_value(condition_parameters(cell, 1.0, row.viscosity).Lambda()) + ")";
+  if (lo < 0) {
+    // Cold: scan by factors 2 from S_lo.
+    if (!tumbles(0)) {
+      pr.reason = "no tumbling at S = " + format_value(kSlo) + " (gamma = " + format_value(kSlo / S1) + " 1/s)";
       return pr;
     }
-    if (!tumbles(hi)) break;
-    lo = hi;
+    lo = 0;
+    while (true) {
+      hi = lo + per_octave;
+      if (hi > g.top) {
+        pr.reason = "no tumbling-to-swinging transition for S in [" + format_value(kSlo) + ", " + format_value(kShi) +
+                    "] at viscosity " + format_value(row.viscosity) + " Pa s (Lambda = " + format_value(Lambda) + ")";
+        return pr;
+      }
+      if (!tumbles(hi)) break;
+      lo = hi;
+    }
   }
-  while (hi / lo - 1 > options.transition_rtol) {
-    const double mid = std::sqrt(lo * hi);
+  while (hi - lo > 1) {
+    const long mid = lo + (hi - lo) / 2;
     (tumbles(mid) ? lo : hi) = mid;
   }
-  pr.value = std::sqrt(lo * hi);
+  remember_transition(options.transition_memo.get(), g.level, Lambda, lo);
+  pr.value = std::sqrt(g.S(lo) * g.S(hi)) / S1;
   pr.regime = Regime::swinging;
   return pr;
 }
@@ -377,7 +485,7 @@ Prediction predict_regime(const CellModel& cell, const ObservedRow& row, const F
 Prediction predict(const CellModel& cell, const ObservedRow& row, const ForwardOptions& options) {
   if (row.observable == Observable::transition_shear_rate) return predict_transition(cell, row, options);
   if (row.observable == Observable::regime) return predict_regime(cell, row, options);
-  return from_motion(in_plane_motion(condition_parameters(cell, row.shear_rate, row.viscosity), options), row);
+  return predict_from_motion(in_plane_motion(condition_parameters(cell, row.shear_rate, row.viscosity), options), row);
 }
 
 std::vector<Prediction> predict_all(const CellModel& cell, std::span<const ObservedRow> rows,
@@ -395,7 +503,7 @@ std::vector<Prediction> predict_all(const CellModel& cell, std::span<const Obser
     if (it == motions.end())
       it = motions.emplace(key, in_plane_motion(condition_parameters(cell, row.shear_rate, row.viscosity), options))
                .first;
-    out.push_back(from_motion(it->second, row));
+    out.push_back(predict_from_motion(it->second, row));
   }
   return out;
 }

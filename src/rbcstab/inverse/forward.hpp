@@ -4,6 +4,7 @@
 // model/physical.hpp (B = eta gamma R^3/kappa, C = eta gamma R/mu, lambda = eta_in/eta, time in 1/gamma); the
 // motion is the reduced l = 2 system (Eq. red_eqs), exact for an ellipsoidal cell, from the in-plane start
 // (beta = pi/2), whose attracting 2 pi-periodic orbit (swinging) or rotation (tumbling) is integrated to convergence.
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <span>
 #include <string>
@@ -67,16 +68,23 @@ void apply_assignments(CellModel& cell, const std::string& text, const std::stri
 // The paper's numbers at one condition (gamma [1/s], eta_ex [Pa s]) through model/physical.hpp.
 Parameters condition_parameters(const CellModel& cell, double shear_rate, double viscosity);
 
+// Warm starts of the transition shear rate: the cell of its ln S grid found at each Lambda by the calls that share
+// one memo (make_transition_memo). fit() makes one per fit, so no value depends on what ran before the fit; a memo
+// changes the cost, never the value, where the regime changes once along S (docs/inverse.md "Observables").
+struct TransitionMemo;
+std::shared_ptr<TransitionMemo> make_transition_memo();
+
 struct ForwardOptions {
-  // [16, 65536]: psi samples per period over the last two periods; extrema refined by a parabola, whose O(dt^3)
-  // error jumps as an extremum moves between samples: 1024 keeps that below the finite-difference noise floor
-  // (docs/inverse.md "Sensitivities"; 256 gives 1e-4 relative noise in J at a step of 1e-5).
+  // [16, 65536]: psi samples per period over the last two periods; extrema refined by the quartic through five
+  // samples, whose O(dt^5) error jumps as an extremum moves between samples: 1024 keeps it and its derivative far
+  // below the sensitivities' agreement (docs/inverse.md "Sensitivities").
   int samples_per_period = 1024;
   int block_periods = 40;               // [2, 10000]: periods integrated between convergence checks
   int max_blocks = 12;                  // [1, 1000]: blocks before the orbit counts as not converged
   double periodicity_tolerance = 1e-9;  // (0, 0.1]: max |Psi(t + 2 pi) - Psi(t)| [rad] of a converged orbit
   double rtol = 1e-11;                  // (0, 1e-3]: integrator tolerance (rk8pd; atol = rtol/10)
   double transition_rtol = 1e-7;        // (0, 0.1]: relative width of the bisected transition shear rate
+  std::shared_ptr<TransitionMemo> transition_memo;  // shared by copies of these options; null: every call cold
   void validate() const;                // throws InvalidArgument naming the field
 };
 
@@ -87,6 +95,10 @@ struct InPlaneMotion {
   double mean_psi = kNotGiven;       // rad, in (-pi/2, pi/2]
   double amplitude_psi = kNotGiven;  // rad, half the peak-to-peak range
   double periods = 0;                // forcing periods integrated
+  // The converged orbit: its state at orbit_time (a multiple of 2 pi) and the times after it, in [0, 2 pi), of the
+  // sampled Psi maximum and minimum (quartic-refined): where inverse/sensitivity.hpp starts its variational run.
+  std::vector<double> orbit_state;
+  double orbit_time = 0, t_max = kNotGiven, t_min = kNotGiven;
 };
 InPlaneMotion in_plane_motion(const Parameters& p, const ForwardOptions& options = {});
 
@@ -97,10 +109,13 @@ struct Prediction {
   std::string reason;  // empty when predicted
   bool ok() const { return reason.empty(); }
 };
+// An in-plane observable's prediction (inclination, amplitude, frequencies) from the motion at the row's condition.
+Prediction predict_from_motion(const InPlaneMotion& m, const ObservedRow& row);
 // One observation's prediction (a regime row: the reduced_regime classifier of analysis/predictors.hpp, from the
 // in-plane start for in-plane names and from the paper's out-of-plane start for rolling and
 // oscillating-out-of-plane). transition_shear_rate: the in-plane motion along the shear rate, bracketed on a
-// geometric grid over plausible_range("shear_rate") and bisected in ln gamma to options.transition_rtol.
+// geometric grid in S in [1e-2, 1e3] (cold, or warm from a nearby Lambda's cell) and bisected on it in ln S to
+// options.transition_rtol.
 Prediction predict(const CellModel& cell, const ObservedRow& row, const ForwardOptions& options = {});
 // Every row, sharing the in-plane run of rows at one condition.
 std::vector<Prediction> predict_all(const CellModel& cell, std::span<const ObservedRow> rows,

@@ -103,6 +103,16 @@ ReducedModel::DenseTerms ReducedModel::dense_terms(double t, std::span<const dou
   return d;
 }
 
+void ReducedModel::coefficient_derivatives(std::span<const double> y, const double g[3], double dinvL[3],
+                                           double dkappa[3]) {
+  const double Q = y[0] * y[0] + y[1] * y[1] + y[2] * y[2];
+  const double yg = y[0] * g[0] + y[1] * g[1] + y[2] * g[2];
+  for (int i = 0; i < 3; ++i) {
+    dinvL[i] = y[1] / Q * y[i] - (i == 1 ? 1.0 : 0.0);
+    dkappa[i] = g[i] - yg / Q * y[i];
+  }
+}
+
 Observation ReducedModel::observe(double t, std::span<const double> y) const {
   Observation o;
   o.Delta_l.assign(L_ - 1, 0.0);

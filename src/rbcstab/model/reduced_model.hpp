@@ -41,6 +41,10 @@ class ReducedModel final : public System {
     double direction[3];
   };
   DenseTerms dense_terms(double t, std::span<const double> y) const;
+  // df/d(1/Lambda) and df/dkappa at y, with g = the forcing direction (DenseTerms::direction): f depends on the
+  // parameters only through these two coefficients, mu = (y1/Lambda - kappa y.g)/|y|^2, so
+  //   df/d(1/Lambda) = (y1/Q) y - e_1,  df/dkappa = g - (y.g/Q) y  (Q = |y|^2), exact in y and t.
+  static void coefficient_derivatives(std::span<const double> y, const double g[3], double dinvL[3], double dkappa[3]);
 
  private:
   AreaBalance balance(std::complex<double> zz0, std::span<const double> y) const;  // yields mu; zz0 = z0(t)
