@@ -48,7 +48,8 @@ def _fixed_text(fixed):
 
 
 def fit(data, free, fixed=None, starts=4, max_iterations=100, seed=1, profiles=False, profile_points=4,
-        profile_span=4.0, report=None, overwrite=False, progress=False):
+        profile_span=4.0, report=None, overwrite=False, jacobian="variational", regime_constraints=True,
+        progress=False):
     """Fits the free parameters to the observations in the CSV file `data` (rbcstab fit).
 
     data: path of the observations CSV (docs/inverse.md "Data format"). free: names of the parameters to fit
@@ -62,7 +63,11 @@ def fit(data, free, fixed=None, starts=4, max_iterations=100, seed=1, profiles=F
     of the estimate, an integer in [1, 50]. profile_span: reach of that grid in Fisher standard errors (of the
     fitted coordinate, dimensionless), in (0, 50]. report: a folder to write the fit's page to (rbcstab fit
     --report: index.html, the figures, parameters.csv, fit.json; docs/report.md "A fit's page"), written only when
-    the fit has an estimate; an existing folder is refused (ValueError) unless overwrite=True. progress: True (a bar
+    the fit has an estimate; an existing folder is refused (ValueError) unless overwrite=True. jacobian: the in-plane
+    rows' sensitivities, "variational" (the orbit's variational equations) or "finite_difference" (rbcstab fit
+    --jacobian; docs/inverse.md "Sensitivities"). regime_constraints: True makes the in-plane regime rows Ipopt
+    constraints on the model's transition shear rate (the result's ``constraints``), False only compares them.
+    progress: True (a bar
     of the starts, then of the profile points), False, a callable f(done, total, eta) or a tqdm bar.
     Ctrl-C stops the fit within an Ipopt iteration (KeyboardInterrupt).
     Returns a FitResult; ValueError for bad data (naming the file line and column) or a bad parameter; RuntimeError
@@ -73,7 +78,8 @@ def fit(data, free, fixed=None, starts=4, max_iterations=100, seed=1, profiles=F
     args = (path, names, _fixed_text(fixed), _args.integer("starts", starts),
             _args.integer("max_iterations", max_iterations), _args.integer("seed", seed),
             _args.flag("profiles", profiles), _args.integer("profile_points", profile_points),
-            _args.number("profile_span", profile_span), folder, _args.flag("overwrite", overwrite))
+            _args.number("profile_span", profile_span), folder, _args.flag("overwrite", overwrite),
+            _args.text("jacobian", jacobian), _args.flag("regime_constraints", regime_constraints))
     bar = progress_bar(progress, "rbcstab fit", "starts and profile points")
     if bar is None:
         doc, text = _rbcstab.fit(*args, progress=None)

@@ -40,6 +40,21 @@ def test_fit_equals_the_cli(small, cli):
     assert "shear_modulus" in r.text and "95 % interval" in r.text
 
 
+def test_jacobian_methods_agree_and_a_bad_name_is_refused(small):
+    """The variational and the finite-difference Jacobian lead Ipopt to the same estimate (docs/inverse.md
+    "Sensitivities": the two Jacobians agree to ~1e-8 of their largest entry; the estimates to 1e-10 on the
+    synthetic file), so 1e-7 relative is far from either's noise yet would catch a wrong derivative."""
+    fixed = {"Delta": 0.1, "Delta0": 0.05}
+    v = rbcstab.fit(small, ["mu", "lambda"], fixed=fixed, starts=1)
+    d = rbcstab.fit(small, ["mu", "lambda"], fixed=fixed, starts=1, jacobian="finite_difference")
+    for name in ("shear_modulus", "lambda"):
+        assert v.estimate(name)["value"] == pytest.approx(d.estimate(name)["value"], rel=1e-7)
+    with pytest.raises(ValueError, match="jacobian"):
+        rbcstab.fit(small, ["mu"], jacobian="analytic")
+    with pytest.raises(TypeError):
+        rbcstab.fit(small, ["mu"], regime_constraints="yes")
+
+
 def test_bad_data_names_line_and_column(tmp_path):
     bad = tmp_path / "bad.csv"
     bad.write_text("observable,shear_rate,viscosity,value,uncertainty,unit\ninclination_angle,100,1,10,-1,deg\n")

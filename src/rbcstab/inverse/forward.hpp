@@ -84,8 +84,9 @@ struct ForwardOptions {
   double periodicity_tolerance = 1e-9;  // (0, 0.1]: max |Psi(t + 2 pi) - Psi(t)| [rad] of a converged orbit
   double rtol = 1e-11;                  // (0, 1e-3]: integrator tolerance (rk8pd; atol = rtol/10)
   double transition_rtol = 1e-7;        // (0, 0.1]: relative width of the bisected transition shear rate
-  std::shared_ptr<TransitionMemo> transition_memo;  // shared by copies of these options; null: every call cold
-  void validate() const;                // throws InvalidArgument naming the field
+  // Shared by copies of these options; null: every call cold.
+  std::shared_ptr<TransitionMemo> transition_memo;
+  void validate() const;  // throws InvalidArgument naming the field
 };
 
 // The in-plane attractor at one condition.
