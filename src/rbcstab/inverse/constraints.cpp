@@ -70,7 +70,7 @@ void apply_constraints(FitResult& res, const std::vector<RegimeConstraint>& cons
                        std::span<const FitParameter> free, const ForwardOptions& options,
                        const std::vector<double>& multipliers) {
   const ConstraintValues v = constraint_values(constraints, free, res.cell, options, 0);
-  std::string violated;
+  std::string violated, active;
   for (std::size_t k = 0; k < constraints.size(); ++k) {
     ConstraintResult c;
     c.row = constraints[k];
@@ -83,6 +83,7 @@ void apply_constraints(FitResult& res, const std::vector<RegimeConstraint>& cons
     if (c.violated)
       violated += (violated.empty() ? "" : ", ") + std::string("line ") + std::to_string(c.row.line) + " (" +
                   to_string(c.row.observed) + " at " + format_value(c.row.shear_rate) + " 1/s)";
+    if (c.active && !c.violated) active += (active.empty() ? "line " : ", line ") + std::to_string(c.row.line);
     res.constraints.push_back(c);
   }
   auto add = [&](const std::string& m) { res.message += (res.message.empty() ? "" : "; ") + m; };
@@ -94,6 +95,10 @@ void apply_constraints(FitResult& res, const std::vector<RegimeConstraint>& cons
   } else if (res.status == FitStatus::infeasible) {
     add("Ipopt found the regime constraints infeasible");
   }
+  // The intervals (Fisher and profile) assume an unconstrained optimum, as at a bound.
+  if (!active.empty())
+    add("the estimate lies on the regime constraint of " + active +
+        " (active): the 95 % intervals ignore it, so they may reach into parameters the observed regimes exclude");
 }
 
 nlohmann::json to_json(const ConstraintResult& c) {

@@ -68,6 +68,10 @@ FitPageText fit_page_text(const FitResult& fit, const ObservationData& data, con
   else if (std::any_of(fit.estimates.begin(), fit.estimates.end(),
                        [](const FitEstimate& e) { return e.identifiable && !std::isfinite(e.standard_error); }))
     p.warnings.push_back("no Fisher intervals at the estimate: " + fit.message);
+  for (const ConstraintResult& c : fit.constraints)
+    if (c.active && !c.violated)
+      p.warnings.push_back("the estimate lies on a regime constraint (" + constraint_text(c) +
+                           "): the 95 % intervals ignore it");
 
   ReportTable params{
       "Parameters (95 % intervals: Fisher, from the Fisher information at the estimate; profile, "
