@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <complex>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -434,21 +435,30 @@ ContinuationOptions pitch_flip_options() {
 Branch pitch_flip_branch(const PeriodicOrbitProblem& pr, const ContinuationOptions& o) {
   return continue_branch(pr, pr.shooting_guess(ForcedPitchFlip::xp(0), -0.2), -0.2, o);
 }
+// The normal form at the PD of a pitch-flip system's orbit branch (4 shooting segments); nullopt, with the branch's
+// message in `why`, when the branch has no PD with a normal form.
+std::optional<NormalForm> pitch_flip_pd_form(const ForcedSystem& sys, std::string& why) {
+  OrbitOptions oo;
+  oo.segments = 4;
+  const PeriodicOrbitProblem pr(sys, oo);
+  const Branch b = pitch_flip_branch(pr, pitch_flip_options());
+  const SpecialPoint* pd = find_special_point(b, SpecialPointType::PD);
+  if (pd == nullptr || !pd->normal_form.has_value()) {
+    why = b.message;
+    return std::nullopt;
+  }
+  return *pd->normal_form;
+}
 
 // The PD's flip coefficient against the closed form: the period map over 2 pi in x - x_p (= u at t = 0, R(pi) = -I)
 // is u1 -> -u1(2 pi) with u1' = s u1^3 at p = 0, u1(2 pi) = u1 + 2 pi s u1^3 + O(u1^5): c = -2 pi s. s = -1:
 // supercritical (the doubled orbit exists for p > 0, where x_p is unstable, and is stable); s = +1: subcritical.
 TEST(PeriodDoublingNormalForm, FlipCoefficientOfTheForcedSystem) {
   for (const double s : {-1.0, 1.0}) {
-    const ForcedPitchFlip sys(s);
-    OrbitOptions oo;
-    oo.segments = 4;
-    const PeriodicOrbitProblem pr(sys, oo);
-    const Branch b = pitch_flip_branch(pr, pitch_flip_options());
-    const SpecialPoint* pd = find_special_point(b, SpecialPointType::PD);
-    ASSERT_NE(pd, nullptr) << b.message;
-    ASSERT_TRUE(pd->normal_form.has_value());
-    const NormalForm& nf = *pd->normal_form;
+    std::string why;
+    const std::optional<NormalForm> form = pitch_flip_pd_form(ForcedPitchFlip(s), why);
+    ASSERT_TRUE(form.has_value()) << why;
+    const NormalForm& nf = *form;
     EXPECT_EQ(nf.kind, NormalFormKind::period_doubling);
     // Measured 6.2831765 and -6.2831765 (1.4e-6 relative: the extrapolated differences' O(h^4)); bar 1e-4.
     EXPECT_NEAR(nf.coefficient("c"), -2 * kPi * s, 1e-4) << nf.note;
@@ -515,15 +525,10 @@ class BentPitchFlip final : public ForcedSystem {
 
 TEST(PeriodDoublingNormalForm, FlipCoefficientWithQuadraticTerms) {
   for (const double s : {-1.0, 1.0}) {
-    const BentPitchFlip sys(s);
-    OrbitOptions oo;
-    oo.segments = 4;
-    const PeriodicOrbitProblem pr(sys, oo);
-    const Branch b = pitch_flip_branch(pr, pitch_flip_options());
-    const SpecialPoint* pd = find_special_point(b, SpecialPointType::PD);
-    ASSERT_NE(pd, nullptr) << b.message;
-    ASSERT_TRUE(pd->normal_form.has_value());
-    const NormalForm& nf = *pd->normal_form;
+    std::string why;
+    const std::optional<NormalForm> form = pitch_flip_pd_form(BentPitchFlip(s), why);
+    ASSERT_TRUE(form.has_value()) << why;
+    const NormalForm& nf = *form;
     EXPECT_NEAR(nf.coefficient("c"), -2 * kPi * s, 1e-4) << nf.note;
     EXPECT_EQ(nf.criticality, s < 0 ? Criticality::supercritical : Criticality::subcritical);
     EXPECT_NEAR(nf.coefficient("mu_p"), -kTwoPi, 1e-4);
