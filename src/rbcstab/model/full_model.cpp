@@ -25,6 +25,22 @@ FullModel::FullModel(const Parameters& p, const InitialState& init) : p_(p), L_(
 
 std::vector<double> FullModel::initial_state() const { return y0_; }
 
+bool FullModel::unforced(int l) const {
+  if (l < 2 || l > L_) return false;
+  for (int m = -l; m <= l; ++m) {
+    const std::size_t k = ModeAmplitudes::index(l, m);
+    if (C_[k] != 0.0 || (g0_[k] != 0.0 && modes_[l - 2].G3C != 0.0)) return false;
+  }
+  return true;
+}
+
+bool FullModel::autonomous() const {
+  for (int l = 2; l <= L_; ++l)
+    for (int m = -l; m <= l; ++m)
+      if (m != 0 && g0_[ModeAmplitudes::index(l, m)] != 0.0 && modes_[l - 2].G3C != 0.0) return false;
+  return true;
+}
+
 void FullModel::drive(double t, std::vector<std::complex<double>>& S) const {
   S.resize(C_.size());
   for (int l = 2; l <= L_; ++l) {

@@ -24,6 +24,11 @@ class FullModel final : public System {
   std::vector<double> initial_state() const override;
   ModeAmplitudes amplitudes(double t, std::span<const double> y) const override;
   double sigma(double t, std::span<const double> y) const;
+  // S_{l,m} = 0 for every m of this l (no shear drive, no rest content there, or C = inf): the block then
+  // feels the rest of the state only through sigma.
+  bool unforced(int l) const;
+  // The drive does not depend on t (no rest content with m != 0, or C = inf).
+  bool autonomous() const;
 
  private:
   struct ModeData {

@@ -1,0 +1,233 @@
+// The full model's rotating waves at its l >= 3 onset (model/rotating_wave.hpp) against simulation: the project's
+// integrator on FullModel, an independent method (no continuation code in the check). The waves are built from a
+// point of the branch born at the l = 3 BP (full continuation in C, L = 4).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <complex>
+#include <cstdio>
+#include <vector>
+
+#include "continuation/modal_fixtures.hpp"
+#include "continuation/scene_spec_fixture.hpp"
+#include "rbcstab/continuation/branch_switch.hpp"
+#include "rbcstab/continuation/full_equilibrium.hpp"
+#include "rbcstab/continuation/scene_continuation.hpp"
+#include "rbcstab/core/constants.hpp"
+#include "rbcstab/core/error.hpp"
+#include "rbcstab/integrate/integrator.hpp"
+#include "rbcstab/model/rotating_wave.hpp"
+
+namespace rbcstab {
+namespace {
+
+using cd = std::complex<double>;
+
+// Past the l = 3 onset (C_3 = 0.0307), before l = 4 (0.0153): Upsilon_3 > 0 on the ellipsoidal state.
+constexpr double kC = 0.025;
+
+// The ellipsoidal state and the state of the branch born at the l = 3 BP, both at C = kC, as FullModel states.
+struct OnsetPoints {
+  Scene scene = modal_fixtures::scene(0.08, 4);
+  FullEquilibriumProblem problem{scene, ContinuationParameter::C};
+  std::vector<double> ellipsoidal, branch;
+  double bp_C = 0;
+  OnsetPoints() {
+    const Branch b =
+        continue_scene(test::spec_of(scene, ProblemKind::full, ContinuationParameter::C, kC, 0.08, Direction::backward))
+            .branch.branch;
+    for (const SpecialPoint& sp : b.special_points)
+      if (sp.type == SpecialPointType::BP && sp.mode_l == 3) {
+        BranchSwitchOptions o;
+        o.continuation.p_min = kC;
+        o.continuation.p_max = 0.08;
+        o.continuation.max_step = 0.05;
+        const BranchSwitchResult sw = switch_branch(problem, b, sp, o);
+        if (!sw.switched || sw.branch.points.back().p != kC) continue;
+        bp_C = sp.p;
+        branch = problem.to_full_state(sw.branch.points.back().x, kC);
+      }
+    if (b.points.back().p == kC) ellipsoidal = problem.to_full_state(b.points.back().x, kC);
+  }
+  const FullModel& model() const { return problem.model(kC); }
+};
+
+const OnsetPoints& onset() {
+  static const OnsetPoints o;
+  return o;
+}
+
+IntegratorOptions tight() {
+  IntegratorOptions o;
+  o.rtol = 1e-11;
+  o.atol = 1e-13;
+  return o;
+}
+
+// The FullModel state at each grid time from y0 at t = 0.
+std::vector<std::vector<double>> simulate_to(const FullModel& model, const std::vector<double>& y0,
+                                             const std::vector<double>& grid) {
+  std::vector<std::vector<double>> out;
+  const IntegrationResult r = integrate(model, y0, 0, grid, tight(),
+                                        [&](double, std::span<const double> y) { out.emplace_back(y.begin(), y.end()); });
+  EXPECT_EQ(r.status, IntegrationStatus::success) << r.reason;
+  return out;
+}
+
+double max_distance(const std::vector<double>& a, const std::vector<double>& b) {
+  double d = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) d = std::max(d, std::abs(a[i] - b[i]));
+  return d;
+}
+
+cd amplitude(const std::vector<double>& y, int l, int m) {
+  const std::size_t k = 2 * ModeAmplitudes::index(l, m);
+  return {y[k], y[k + 1]};
+}
+
+double block_area(const std::vector<double>& y, int l) {
+  double s = 0;
+  for (int m = -l; m <= l; ++m) s += std::norm(amplitude(y, l, m));
+  return a_l(l) * s;
+}
+
+// Tolerance of the periodicity checks: the integrator's local tolerance 1e-11 (relative, on states of size ~1)
+// summed over the ~10^3 steps of a period at most, with margin: 1e-7. The wrong inputs below miss by > 1e-4.
+constexpr double kPeriodTol = 1e-7;
+
+// Periodicity defect |y(T) - y(0)| and the defect at T/4 against the exact rotation e^{i M t/2}.
+std::pair<double, double> defects(const RotatingWave& w, const std::vector<double>& y0) {
+  const auto ys = simulate_to(onset().model(), y0, {0.25 * w.period, w.period});
+  if (ys.size() != 2) return {1, 1};
+  return {max_distance(ys[1], y0), max_distance(ys[0], rotating_wave_at(w, 0.25 * w.period))};
+}
+
+TEST(RotatingWave, EveryModeIsAnExactPeriodicOrbitOfTheFullModel) {
+  const OnsetPoints& o = onset();
+  ASSERT_FALSE(o.branch.empty());
+  ASSERT_GT(block_area(o.branch, 3), 0.05);
+  for (int m = 1; m <= 3; ++m) {
+    const RotatingWave w = rotating_wave(o.model(), o.branch, 3, m);
+    EXPECT_NEAR(w.period, 4 * kPi / m, 1e-15);
+    EXPECT_NEAR(block_area(w.y, 3), block_area(o.branch, 3), 1e-15);
+    EXPECT_NEAR(o.model().sigma(0, w.y), o.model().sigma(0, o.branch), 1e-12);
+    const auto [back, quarter] = defects(w, w.y);
+    std::printf("m = %d: |y(T) - y(0)| = %.1e, |y(T/4) - rotation| = %.1e\n", m, back, quarter);
+    EXPECT_LT(back, kPeriodTol) << "m = " << m;
+    EXPECT_LT(quarter, kPeriodTol) << "m = " << m;
+  }
+  // A mixture of all m (and m = 0): period 4 pi; m = 2 with 3 ... gcd: m = 2 alone with m = 0 is 2 pi.
+  const std::vector<cd> mix = {0.3, cd(0.5, -0.2), cd(0, 0.2), cd(-0.4, 0.1)};
+  const RotatingWave w = rotating_wave(o.model(), o.branch, 3, mix);
+  EXPECT_NEAR(w.period, 4 * kPi, 1e-15);
+  const auto [back, quarter] = defects(w, w.y);
+  std::printf("mixture: |y(T) - y(0)| = %.1e, |y(T/4) - rotation| = %.1e\n", back, quarter);
+  EXPECT_LT(back, kPeriodTol);
+  EXPECT_LT(quarter, kPeriodTol);
+  const std::vector<cd> even = {0.3, 0, cd(0.5, 0.5), 0};
+  EXPECT_NEAR(rotating_wave(o.model(), o.branch, 3, even).period, 2 * kPi, 1e-15);
+}
+
+// The checks above fail on wrong inputs: the block's magnitude 1 % off (not on the branch: it relaxes back) and the
+// wrong frequency (e^{i M t} instead of e^{i M t/2}, and a period 1 % long).
+TEST(RotatingWave, PeriodicityCheckFailsOnWrongAmplitudeOrFrequency) {
+  const OnsetPoints& o = onset();
+  ASSERT_FALSE(o.branch.empty());
+  const RotatingWave w = rotating_wave(o.model(), o.branch, 3, 1);
+  std::vector<double> big = w.y;
+  for (int m = -3; m <= 3; ++m) {
+    const std::size_t k = 2 * ModeAmplitudes::index(3, m);
+    big[k] *= 1.01, big[k + 1] *= 1.01;
+  }
+  const auto [back, quarter] = defects(w, big);
+  std::printf("amplitude x 1.01: |y(T) - y(0)| = %.1e\n", back);
+  EXPECT_GT(back, 1e3 * kPeriodTol);
+  RotatingWave fast = w;
+  fast.y = rotating_wave_at(w, 0.5 * w.period);  // e^{i m t}: at T/4 the block turned by m T/2
+  const auto ys = simulate_to(o.model(), w.y, {0.25 * w.period, 1.01 * w.period});
+  ASSERT_EQ(ys.size(), 2u);
+  std::printf("wrong frequency: at T/4 %.1e, at 1.01 T %.1e\n", max_distance(ys[0], fast.y),
+              max_distance(ys[1], w.y));
+  EXPECT_GT(max_distance(ys[0], fast.y), 1e3 * kPeriodTol);
+  EXPECT_GT(max_distance(ys[1], w.y), 1e3 * kPeriodTol);
+}
+
+// From the ellipsoidal state at C past the onset with a small m = 1 (then m = 2) disturbance of the l = 3 block: the
+// simulation settles on the rotating wave of the branch's state. Oracles: the branch's Delta_3 and sigma at that C
+// (and the closed form's), the rotation rate m/2 (period 4 pi / m) measured from the unwrapped phase of f_{3,m}.
+TEST(RotatingWave, SimulationFromADisturbedEllipsoidSettlesOnTheWave) {
+  const OnsetPoints& o = onset();
+  ASSERT_FALSE(o.ellipsoidal.empty());
+  ASSERT_FALSE(o.branch.empty());
+  const FullModel& model = o.model();
+  const modal_fixtures::PostState exact =
+      modal_fixtures::exact_post_state(with_parameter(o.scene.parameters, ContinuationParameter::C, kC), 3);
+  EXPECT_NEAR(block_area(o.branch, 3), exact.Delta_l, 1e-10);
+  for (int m = 1; m <= 2; ++m) {
+    std::vector<double> y0 = o.ellipsoidal;
+    const cd f = 1e-3, g = (m % 2 == 0 ? 1.0 : -1.0) * std::conj(f);
+    y0[2 * ModeAmplitudes::index(3, m)] = f.real();
+    y0[2 * ModeAmplitudes::index(3, -m)] = g.real();
+    double area = 0;
+    for (int l = 2; l <= 4; ++l) area += block_area(y0, l);
+    for (double& v : y0) v *= std::sqrt(o.scene.parameters.Delta / area);  // on the scene's area sphere
+    constexpr double t_end = 400, window = 40;
+    std::vector<double> grid;
+    for (double t = t_end - window; t <= t_end + 1e-9; t += 0.05) grid.push_back(t);
+    const auto ys = simulate_to(model, y0, grid);
+    ASSERT_EQ(ys.size(), grid.size());
+    const std::vector<double>& y = ys.back();
+    // The phase of f_{3,m}, unwrapped over the window: its mean rate.
+    double turned = 0;
+    for (std::size_t i = 1; i < ys.size(); ++i)
+      turned += std::arg(amplitude(ys[i], 3, m) / amplitude(ys[i - 1], 3, m));
+    const double period = 2 * kPi / (turned / window);
+    std::printf("m = %d: Delta_3 %.12f (branch %.12f), sigma %.10f (branch %.10f), period %.10f (4 pi / m %.10f)\n", m,
+                block_area(y, 3), block_area(o.branch, 3), model.sigma(0, y), model.sigma(0, o.branch), period,
+                4 * kPi / m);
+    EXPECT_NEAR(block_area(y, 3), block_area(o.branch, 3), 1e-6);
+    EXPECT_NEAR(model.sigma(0, y), model.sigma(0, o.branch), 1e-6 * std::abs(model.sigma(0, o.branch)));
+    EXPECT_NEAR(period, 4 * kPi / m, 1e-6);
+    // The wave through the simulated end state's phase: the whole state matches it.
+    std::vector<cd> c(4, 0.0);
+    c[static_cast<std::size_t>(m)] = amplitude(y, 3, m);
+    EXPECT_LT(max_distance(y, rotating_wave(model, o.branch, 3, c).y), 1e-6) << "m = " << m;
+  }
+}
+
+TEST(RotatingWave, BadArgumentsAreRefusedNamingThem) {
+  const OnsetPoints& o = onset();
+  ASSERT_FALSE(o.branch.empty());
+  const FullModel& model = o.model();
+  const auto refused = [](const auto& call, const std::string& name) {
+    try {
+      call();
+    } catch (const InvalidArgument& e) {
+      EXPECT_EQ(e.parameter(), name) << e.what();
+      return;
+    }
+    ADD_FAILURE() << "not refused: " << name;
+  };
+  refused([&] { rotating_wave(model, o.branch, 2, 1); }, "l");
+  refused([&] { rotating_wave(model, o.branch, 5, 1); }, "l");
+  refused([&] { rotating_wave(model, o.branch, 3, 0); }, "m");
+  refused([&] { rotating_wave(model, o.branch, 3, 4); }, "m");
+  refused([&] { rotating_wave(model, o.branch, 3, std::vector<cd>(3, 1.0)); }, "direction");
+  refused([&] { rotating_wave(model, o.branch, 3, std::vector<cd>{cd(0, 1), 1, 0, 0}); }, "direction");
+  refused([&] { rotating_wave(model, o.branch, 3, std::vector<cd>{1, 0, 0, 0}); }, "direction");
+  refused([&] { rotating_wave(model, o.branch, 3, 1, 0.0); }, "tol");
+  refused([&] { rotating_wave(model, std::vector<double>(5, 0.0), 3, 1); }, "state");
+  // Not an equilibrium (the wave itself: its block turns), and the l = 3 block zero (the ellipsoidal state).
+  refused([&] { rotating_wave(model, rotating_wave(model, o.branch, 3, 1).y, 3, 1); }, "state");
+  refused([&] { rotating_wave(model, o.ellipsoidal, 3, 1); }, "state");
+  // l = 4 is unforced but zero here; a block with rest content is forced.
+  refused([&] { rotating_wave(model, o.branch, 4, 1); }, "state");
+  Scene forced = o.scene;
+  forced.rest_delta_l = {{3, 1e-3}};
+  const FullEquilibriumProblem fp(forced, ContinuationParameter::C);
+  refused([&] { rotating_wave(fp.model(kC), o.branch, 3, 1); }, "l");
+}
+
+}  // namespace
+}  // namespace rbcstab
