@@ -762,6 +762,7 @@ TEST(HopfSwitch, FullModelOnsetIsRefusedAsMultiple) {
     if (sp.type != SpecialPointType::HB) continue;
     ++hbs;
     const OrbitSwitchResult r = switch_at(problem, b, sp);
+    std::printf("%s\n", r.message.c_str());
     EXPECT_FALSE(r.switched);
     EXPECT_NE(r.message.find("a multiple Hopf point"), std::string::npos) << r.message;
     EXPECT_NE(r.message.find("BP (l = " + std::to_string(*sp.mode_l) + ", m = 0)"), std::string::npos) << r.message;

@@ -38,6 +38,11 @@ std::string outcome_text(const DiagramEmanation& e) {
              std::to_string(e.branch_to);
     case EmanationOutcome::not_available:
       return "not followed (switching not available" + (e.message.empty() ? "" : ": " + e.message) + ")";
+    case EmanationOutcome::rotating_wave:
+      return "not followed as a branch of its own: rotating waves of " +
+             (e.branch_to > 0 ? "branch " + std::to_string(e.branch_to) + " (from the BP of label "
+                              : "the branch (not followed here) from the BP of label ") +
+             std::to_string(e.label_to) + (e.branch_to > 0 ? ")" : "") + ": " + e.message;
     case EmanationOutcome::not_located:
       return "not followed: " + e.message;
     case EmanationOutcome::depth_limit:
@@ -161,7 +166,9 @@ BifurcationDiagram bifurcation_diagram(const BifurcationDiagramSpec& spec) {
     e.outcome = t.outcome;
     e.message = t.message;
     if (t.branch_to >= 0) e.branch_to = t.branch_to + 1;
-    if (t.point_to >= 0)
+    if (t.outcome == EmanationOutcome::rotating_wave)
+      e.label_to = on.special_labels[static_cast<std::size_t>(t.point_to)];  // the BP on the same branch
+    else if (t.point_to >= 0)
       e.label_to =
           d.branches[static_cast<std::size_t>(t.branch_to)].branch.special_labels[static_cast<std::size_t>(t.point_to)];
     d.emanations.push_back(std::move(e));

@@ -54,7 +54,9 @@ struct DiagramEmanation {
   int side = 0;
   EmanationOutcome outcome = EmanationOutcome::followed;
   int branch_to = 0;  // followed: the new branch; duplicate, symmetric: the earlier branch; already_switched:
-  int label_to = 0;   // the branch and label of the point switched at before
+  int label_to = 0;   // the branch and label of the point switched at before; rotating_wave: the branch from the
+                      // BP of label label_to (on this point's branch) whose states, turned, are the orbits (0: not
+                      // followed)
   std::string message;
 };
 

@@ -90,6 +90,7 @@ Switcher orbit_switcher(const OrbitOptions& orbit) {
     e.p = s.p;
     e.away = s.away;
     e.problem = std::move(s.problem);
+    e.rotating_wave_of = s.rotating_wave_of;
     return std::vector<EmanatingStart>{std::move(e)};
   };
 }
@@ -244,6 +245,10 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
       const ContinuationProblem& pr = problem_of(b);
       int closed_sibling = -1;
       for (EmanatingStart& s : sw->second(pr, tree.branches[i].branch, sp, options.switching)) {
+        if (!s.found && s.refused && s.rotating_wave_of >= 0) {
+          mark(b, j, s.side, EmanationOutcome::rotating_wave, -1, s.rotating_wave_of, s.message);
+          continue;
+        }
         if (!s.found) {
           mark(b, j, s.side, s.refused ? EmanationOutcome::not_available : EmanationOutcome::failed, -1, -1, s.message);
           continue;
@@ -308,6 +313,17 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
         if (options.on_branch) options.on_branch(tree.branches.size(), tree.branches.size() - i - 1);
       }
     }
+  }
+  // A rotating wave's branch: the one followed (or found before) from its special point, whichever half.
+  for (TreeEmanation& e : tree.emanations) {
+    if (e.outcome != EmanationOutcome::rotating_wave) continue;
+    for (const TreeEmanation& f : tree.emanations)
+      if (f.branch == e.branch && static_cast<int>(f.point) == e.point_to && f.branch_to >= 0 &&
+          (f.outcome == EmanationOutcome::followed || f.outcome == EmanationOutcome::duplicate ||
+           f.outcome == EmanationOutcome::symmetric)) {
+        e.branch_to = f.branch_to;
+        if (f.outcome == EmanationOutcome::followed) break;
+      }
   }
   return tree;
 }

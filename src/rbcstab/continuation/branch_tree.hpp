@@ -36,6 +36,9 @@ struct EmanatingStart {
   // The problem the branch belongs to; null: the same as the branch it emanates from (BP). An HB's periodic
   // orbits and a PD's doubled orbit bring their own.
   std::shared_ptr<const ContinuationProblem> problem;
+  // >= 0 (refused): the orbits born here are rotating waves of the branch from this special point of the same
+  // branch (the full model's l >= 3 onset, its BP (l, m = 0)): listed as rotating_wave, not as not_available.
+  int rotating_wave_of = -1;
 };
 using Switcher = std::function<std::vector<EmanatingStart>(const ContinuationProblem&, const Branch&,
                                                            const SpecialPoint&, const BranchSwitchOptions&)>;
@@ -55,6 +58,8 @@ enum class EmanationOutcome {
   symmetric,         // a symmetry maps its first point onto branch_to: the copy is not followed
   already_switched,  // the same point (within duplicate_tol) was switched at before, on branch_to
   not_available,     // no switcher for this type (NS), or the switcher refused (message says why)
+  rotating_wave,     // an HB whose orbits are exact rotating waves of the branch from another special point of the
+                     // same branch (point_to; branch_to: its branch when followed, else -1): not followed separately
   not_located,       // the special point is a guess (its bracket did not converge): not switched at
   depth_limit,       // the branch is at the maximal depth
   failed,            // the switcher found no start (message says why)
@@ -66,7 +71,8 @@ struct EnumTable<EmanationOutcome> {
   static constexpr EnumName<EmanationOutcome> entries[] = {
       {EmanationOutcome::followed, "followed"},           {EmanationOutcome::duplicate, "duplicate"},
       {EmanationOutcome::symmetric, "symmetric"},         {EmanationOutcome::already_switched, "already_switched"},
-      {EmanationOutcome::not_available, "not_available"}, {EmanationOutcome::not_located, "not_located"},
+      {EmanationOutcome::not_available, "not_available"}, {EmanationOutcome::rotating_wave, "rotating_wave"},
+      {EmanationOutcome::not_located, "not_located"},
       {EmanationOutcome::depth_limit, "depth_limit"},     {EmanationOutcome::failed, "failed"},
       {EmanationOutcome::interrupted, "interrupted"},     {EmanationOutcome::branch_limit, "branch_limit"}};
 };
@@ -88,7 +94,7 @@ struct TreeEmanation {
   int side = 0;
   EmanationOutcome outcome = EmanationOutcome::followed;
   int branch_to = -1;  // followed: the new branch; duplicate/symmetric/already_switched: the earlier one
-  int point_to = -1;   // already_switched: the earlier special point's index on branch_to
+  int point_to = -1;   // already_switched: the earlier special point's index on branch_to; rotating_wave: on branch
   std::string message;
 };
 

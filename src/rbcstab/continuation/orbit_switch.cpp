@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "rbcstab/continuation/branch_switch.hpp"
+#include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/enum_table.hpp"
 #include "rbcstab/core/error.hpp"
@@ -185,6 +186,7 @@ OrbitSwitchResult continued(OrbitSwitchStart start, const OrbitSwitchOptions& op
   out.message = std::move(start.message);
   out.direction = std::move(start.direction);
   out.period = start.period;
+  out.rotating_wave_of = start.rotating_wave_of;
   if (!start.found) return out;
   ContinuationOptions o = options.continuation;
   o.direction = start.away;
@@ -192,6 +194,36 @@ OrbitSwitchResult continued(OrbitSwitchStart start, const OrbitSwitchOptions& op
   out.switched = !out.branch.points.empty();
   out.message = out.branch.message;
   out.problem = std::move(start.problem);
+  return out;
+}
+
+// This model's l >= 3 onset (model/rotating_wave.hpp): an HB of the full model whose pair is an unforced l-block's
+// i m/2, crossing with that block's BP (l, m = 0) on the same branch. Not refused (refused false) otherwise.
+OrbitSwitchStart rotating_wave_onset(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& hb,
+                                     const std::vector<std::complex<double>>& critical) {
+  const auto* full = dynamic_cast<const FullEquilibriumProblem*>(&problem);
+  if (!full || !hb.mode_l || !hb.mode_m || *hb.mode_l < 3 || *hb.mode_m < 1) return {};
+  const int l = *hb.mode_l, m = *hb.mode_m;
+  if (!full->model(hb.p).unforced(l)) return {};
+  int bp = -1;
+  for (std::size_t k = 0; k < branch.special_points.size(); ++k) {
+    const SpecialPoint& q = branch.special_points[k];
+    if (q.type == SpecialPointType::BP && q.mode_l == l && q.mode_m == 0 &&
+        std::abs(q.p - hb.p) <= 1e-8 * (1 + std::abs(hb.p)))
+      bp = static_cast<int>(k);
+  }
+  if (bp < 0) return {};
+  const std::string L = std::to_string(l), M = std::to_string(m);
+  OrbitSwitchStart out = refusal(
+      "the onset of the unforced l = " + L + " block at " + problem.parameter_name() + " = " + format_value(hb.p) +
+      ": its pairs Upsilon_" + L + " +- i m/2, m = 1.." + L + ", cross with its BP (l = " + L +
+      ", m = 0) there (Upsilon_l is the same for every m). The orbits born at this pair are exact rotating waves: "
+      "the states of the branch from that BP with the l = " + L + " block turned into mode m = " + M +
+      ", rotating at m/2 = " + format_value(0.5 * m) + " (period 4 pi/m = " + format_value(4 * kPi / m) +
+      "), by the block's phase symmetry (rotating_wave); they are not followed as separate branches (switch at the "
+      "BP for that branch) and their stability is not computed. Eigenvalues on the imaginary axis: " +
+      list_values(critical) + "; labels there: " + labels_at(branch, hb));
+  out.rotating_wave_of = bp;
   return out;
 }
 
@@ -223,6 +255,7 @@ OrbitSwitchStart orbit_switch_start(const ContinuationProblem& problem, const Br
       return hopf_start(eq->system(), point, options);
     const auto critical =
         critical_values(problem.spectrum(point.x, point.p), StabilityKind::eigenvalues, options.critical_tol);
+    if (OrbitSwitchStart w = rotating_wave_onset(problem, branch, point, critical); w.refused) return w;
     if (critical.size() > 1)
       return refusal("a multiple Hopf point at " + problem.parameter_name() + " = " + format_value(point.p) +
                      ": eigenvalues on the imaginary axis " + list_values(critical) +

@@ -41,6 +41,9 @@ struct OrbitSwitchResult {
   // branch with it (a diagram's next level). Null when nothing was switched.
   std::unique_ptr<ContinuationProblem> problem;
   Branch branch;  // the new branch, starting next to the special point
+  // >= 0: refused because the orbits born here are rotating waves of the branch from this special point of the
+  // same branch (the full model's l >= 3 onset: its BP (l, m = 0); model/rotating_wave.hpp).
+  int rotating_wave_of = -1;
 };
 
 // The first point of the orbit branch and the problem it solves, before it is continued: what a diagram checks for
@@ -60,6 +63,7 @@ struct OrbitSwitchStart {
   Eigen::VectorXd x;                             // the first point, of `problem`
   double p = 0;
   Direction away = Direction::forward;  // the continuation direction that leaves the special point
+  int rotating_wave_of = -1;            // as OrbitSwitchResult's
 };
 OrbitSwitchStart orbit_switch_start(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& point,
                                     const OrbitSwitchOptions& options = {});

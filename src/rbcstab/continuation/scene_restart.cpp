@@ -143,12 +143,17 @@ SceneBranch switch_at_label(const ContinuationRun& run, int label, const Restart
                                            "(--label " +
                                            std::to_string(label) + ") and switch at that branch's BP");
   if (lp.type == to_string(SpecialPointType::HB) && lp.special) {
-    // The orbit switch's own verdict: a multiple Hopf point (the l >= 3 onset) named with its pairs, or not
-    // supported for this problem kind (orbit_switch.hpp).
+    // The orbit switch's own verdict: the l >= 3 onset's rotating waves (named with the BP whose branch carries
+    // them), a multiple Hopf point named with its pairs, or not supported for this problem kind (orbit_switch.hpp).
     const MeasuredBranch& m = *branch_of(run, lp.branch);
     const OrbitSwitchResult o =
         switch_at(make_problem(ctx.spec, ctx.problem_scene)->problem(), m.branch, m.branch.special_points[lp.index]);
-    throw InvalidArgument("switch_at", what + " is an HB: " + o.message);
+    const std::string bp =
+        o.rotating_wave_of < 0
+            ? ""
+            : " Their branch: --switch-at " +
+                  std::to_string(m.special_labels.at(static_cast<std::size_t>(o.rotating_wave_of))) + " (the BP).";
+    throw InvalidArgument("switch_at", what + " is an HB: " + o.message + bp);
   }
   if (lp.type == to_string(SpecialPointType::PD) && lp.special)
     throw InvalidArgument("switch_at", what + " is a PD: " + detail::kScenePeriodDoublingRefusal);
