@@ -192,8 +192,10 @@ def bifurcation_diagram(scene, depth=1, kind="equilibrium", parameter="lambda", 
     the branch bifurcating there, recursively to `depth` (an integer in [0, 20]; 0: the start branch only), each
     with the start branch's options. A branch reached twice is marked a duplicate, not followed again; a BP met
     again is not switched at again; HB, PD and NS points are listed as not followed (switching not available), the
-    reason in their message (an HB of the model: a multiple Hopf point or a problem kind without an orbit switch; a
-    PD: the doubled orbit has no scene kind yet; NS: tori are not continued).
+    reason in their message (an HB of the model: a problem kind without an orbit switch or a multiple Hopf point; a
+    PD: the doubled orbit has no scene kind yet; NS: tori are not continued), except an HB of the full model's
+    l >= 3 onset: outcome rotating_wave, its orbits the states of the BP's branch (branch_to; label_to the BP) with
+    the l-block turned into mode m, rotating at m/2.
     amplitude: the predictor step off a BP, finite and > 0 (dimensionless, in the (state, parameter) space; default
     1e-3); duplicate_tol: two points are the same within it, in (0, amplitude / 10] (dimensionless; default 1e-7);
     max_branches: at most this many branches, an integer in [1, 10000] (default 200). progress and Ctrl-C as
@@ -406,7 +408,9 @@ class Branch(_args.Columns):
                orbit_rtol=None, orbit_atol=None, orbit_samples=None, monitor=None, stop_at=None, progress=False):
         """Switches onto the branch bifurcating at the BP labelled `label` (``continue --restart FILE --switch-at
         N``): the returned run holds this run's branch with the new branch as its ``switched``. The numerical
-        options, monitor and stop_at as :meth:`restart` (the monitors label the new branch)."""
+        options, monitor and stop_at as :meth:`restart` (the monitors label the new branch). An HB label raises
+        ValueError with the reason (at the full model's l >= 3 onset: its orbits are rotating waves of the BP's
+        branch, the BP's label named)."""
         options = _options(min=min, max=max, direction=direction, step=step, max_step=max_step,
                            max_points=max_points, label_every=label_every, min_step=min_step, newton_tol=newton_tol,
                            max_newton=max_newton, location_tol=location_tol, segments=segments,
@@ -533,7 +537,7 @@ class BifurcationDiagram:
     diagram, so each restarts, switches and draws as any run); ``tree`` lists each branch's number, parent,
     parent_label (the label of the BP it emanates from), side, depth, status and points; ``special_points`` the
     branching points (BP, HB, PD, NS) with what was done at each (outcome: followed, duplicate, symmetric,
-    already_switched, not_available, not_located, depth_limit, failed, interrupted, branch_limit)."""
+    already_switched, not_available, rotating_wave, not_located, depth_limit, failed, interrupted, branch_limit)."""
 
     def __init__(self, diagram):
         self._d = diagram

@@ -339,12 +339,18 @@ def test_the_switched_branch_has_sigma_pinned_at_sigma4c(full_branch, tmp_path, 
     assert without_timing(s.to_dict()) == without_timing(expected)
 
 
-def test_switch_at_an_hb_of_the_onset_is_refused_naming_the_pairs(full_branch):
-    # The l = 4 onset: a BP and four Hopf pairs at once; the orbit switch refuses a multiple Hopf point.
+def test_switch_at_an_hb_of_the_onset_names_its_rotating_waves_and_the_bp(full_branch):
+    # The l = 4 onset: a BP and four Hopf pairs at once. The orbits born at each pair are the BP branch's states with
+    # the l = 4 block turned into mode m, rotating at m/2: no branch of their own (ValueError), the BP's label named.
     hb = full_branch.labels("HB")
     assert len(hb) == 4
-    with pytest.raises(ValueError, match="multiple Hopf point"):
-        full_branch.switch(hb[0])
+    bp = full_branch.labels("BP", l=4, m=0)
+    assert len(bp) == 1
+    for label, m in zip(full_branch.labels("HB", l=4, m=1) + full_branch.labels("HB", l=4, m=3), (1, 3)):
+        with pytest.raises(ValueError, match="exact rotating waves") as e:
+            full_branch.switch(label)
+        assert f"turned into mode m = {m}" in str(e.value)
+        assert f"switch at label {bp[0]} (the BP)" in str(e.value)
 
 
 def test_switch_at_bp_continues_the_switched_branch_in_the_same_run(rest_scene):
@@ -648,18 +654,21 @@ def test_bifurcation_diagram_equals_the_cli_and_pickles(cli, tmp_path):
         rbcstab.bifurcation_diagram(scene, depth=1.5, kind="modal", parameter="C")
 
 
-def test_bifurcation_diagram_says_why_the_onset_hbs_are_not_followed():
+def test_bifurcation_diagram_says_the_onset_hbs_are_rotating_waves_of_the_bp_branch():
     # The full model's l = 3 onset (L = 4): the BP's two halves are followed; its three HBs (m = 1, 2, 3 at the same
-    # C) are a multiple Hopf point, each listed as not followed with the pairs named, and not as a failure.
+    # C) are listed as rotating waves of the BP's branch (branch_to, label_to: that branch and the BP), not failures.
     scene = rbcstab.Scene(lambda_=1, B=1, C=0.08, Delta=1, Delta0=0.01, L=4)
     d = rbcstab.bifurcation_diagram(scene, depth=1, kind="full", parameter="C", min=0.03, max=0.08,
                                     direction="backward")
     assert len(d) == 3 and d.complete
     hbs = [p for p in d.special_points if p["type"] == "HB"]
     assert sorted(p["mode_m"] for p in hbs) == [1, 2, 3]
+    bp = [p for p in d.special_points if p["type"] == "BP" and p["outcome"] == "followed"]
+    assert len(bp) == 2
     for p in hbs:
-        assert p["outcome"] == "not_available" and p["side"] == 0
-        assert "a multiple Hopf point" in p["detail"] and "0.5i" in p["detail"]
+        assert p["outcome"] == "rotating_wave" and p["side"] == 0
+        assert p["label_to"] == bp[0]["label"] and p["branch_to"] in (bp[0]["branch_to"], bp[1]["branch_to"])
+        assert f"turned into mode m = {p['mode_m']}" in p["detail"] and "0.5i" in p["detail"]
 
 
 def test_bifurcation_diagram_plot_labels_every_branch(tmp_path):

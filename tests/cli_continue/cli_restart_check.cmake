@@ -231,12 +231,16 @@ elseif(CASE STREQUAL "restart_bad_input")
   expect_bad_input("label = 99 is not a label of this run: its labels are 1 to" continue --restart ${WORK}/m.json --label 99)
   expect_bad_input("switch_at = 1 is a point of type EP, not a BP" continue --restart ${WORK}/m.json --switch-at 1)
   expect_bad_input("switch_at = 'BP' matches 3 labelled points" continue --restart ${WORK}/m.json --switch-at BP)
-  # An HB of the full model's l >= 3 onset (a BP and l Hopf pairs at once) is refused by the orbit switch, naming the
-  # eigenvalues on the axis and the labels there with their modes.
+  # An HB of the full model's l >= 3 onset (a BP and l Hopf pairs at once) starts no branch of its own: its orbits are
+  # the BP branch's states with the block turned into mode m (exit 2, the BP's label named for that branch).
   run_ok(full continue --kind full --parameter C --min 0.02 --max 0.08 --direction backward --lambda 1 --B 1 --C 0.08
-         --Delta 1 --Delta0 0.01 --L 4 --save ${WORK}/f.json)
-  expect_bad_input("is an HB: a multiple Hopf point at C = " continue --restart ${WORK}/f.json --switch-at HB:l=3:m=1)
-  expect_bad_input("labels there: BP (l = 3, m = 0)" continue --restart ${WORK}/f.json --switch-at HB:l=3:m=2)
+         --Delta 1 --Delta0 0.01 --L 4 --save ${WORK}/f.json --json)
+  special_label("${full}" BP C 0.0361 0.0362 l3bp C3bp)
+  expect_bad_input("is an HB: the onset of the unforced l = 3 block at C = "
+                   continue --restart ${WORK}/f.json --switch-at HB:l=3:m=1)
+  expect_bad_input("turned into mode m = 2, rotating at m/2 = 1 (period 4 pi/m = 6.28"
+                   continue --restart ${WORK}/f.json --switch-at HB:l=3:m=2)
+  expect_bad_input("switch at label ${l3bp} (the BP)" continue --restart ${WORK}/f.json --switch-at HB:l=3:m=3)
   expect_bad_input("label = 'BP:l=9' matches no labelled point of this run: its BP labels are"
                    continue --restart ${WORK}/m.json --label BP:l=9)
   expect_bad_input("label = '0' must be a label, an integer in [1, 1000000000], or TYPE[:l=L][:m=M]"
@@ -327,7 +331,7 @@ elseif(CASE STREQUAL "diagram")
   expect_bad_input("--diagram" ${ISSUE} --diagram 21)
 elseif(CASE STREQUAL "diagram_hb")
   # The full model's l = 3 onset (L = 4, C from 0.08 down to 0.03): one BP (m = 0, followed both ways) and three HBs
-  # at the same C (m = 1, 2, 3), each listed as not followed with the reason: a multiple Hopf point, its pairs named.
+  # at the same C (m = 1, 2, 3), each listed as rotating waves of the BP's branch (branch_to, label_to: the BP).
   run_ok(out continue --kind full --parameter C --min 0.03 --max 0.08 --direction backward --lambda 1 --B 1
          --C 0.08 --Delta 1 --Delta0 0.01 --L 4 --diagram 1 --json)
   string(JSON n LENGTH "${out}" special_points)
@@ -340,10 +344,12 @@ elseif(CASE STREQUAL "diagram_hb")
     string(JSON m GET "${out}" special_points ${i} message)
     if(t STREQUAL "HB")
       math(EXPR hbs "${hbs} + 1")
-      string(FIND "${m}" "a multiple Hopf point" at)
+      string(JSON mm GET "${out}" special_points ${i} mode_m)
+      string(JSON to GET "${out}" special_points ${i} branch_to)
+      string(FIND "${m}" "turned into mode m = ${mm}," at)
       string(FIND "${m}" "0.5i" pair)
-      if(NOT o STREQUAL "not_available" OR at LESS 0 OR pair LESS 0)
-        fail("HB ${i}: outcome ${o}, message '${m}'")
+      if(NOT o STREQUAL "rotating_wave" OR at LESS 0 OR pair LESS 0 OR NOT to MATCHES "^[23]$")
+        fail("HB ${i}: outcome ${o}, branch_to ${to}, message '${m}'")
       endif()
     elseif(t STREQUAL "BP" AND o STREQUAL "followed")
       math(EXPR n_followed "${n_followed} + 1")
@@ -354,7 +360,7 @@ elseif(CASE STREQUAL "diagram_hb")
   endif()
   run_ok(text continue --kind full --parameter C --min 0.03 --max 0.08 --direction backward --lambda 1 --B 1
          --C 0.08 --Delta 1 --Delta0 0.01 --L 4 --diagram 1)
-  string(FIND "${text}" "not followed (switching not available: a multiple Hopf point" at)
+  string(FIND "${text}" "not followed as a branch of its own: rotating waves of branch 2 (from the BP of label" at)
   if(at LESS 0)
     fail("the text names no reason for the HBs:\n${text}")
   endif()

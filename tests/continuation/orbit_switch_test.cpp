@@ -749,9 +749,13 @@ TEST(OrbitTree, MultipleHopfIsListedWithTheReason) {
   }
 }
 
-// This model's l >= 3 onset (full model, L = 4, C from 0.08 down): every HB there is one of l pairs crossing with a
-// BP, and the switch refuses each, naming the eigenvalues on the axis and the labels with their modes.
-TEST(HopfSwitch, FullModelOnsetIsRefusedAsMultiple) {
+// This model's l >= 3 onset (full model, L = 4, C from 0.08 down): every HB there is the pair i m/2 of an unforced
+// l-block crossing with its BP (l, m = 0). The switch says what is born there: the BP branch's states with the block
+// turned into mode m, rotating at m/2 (model/rotating_wave.hpp, checked against simulation in rotating_wave_test),
+// naming the BP; the eigenvalues on the axis are exactly the block's 0 and i m/2 (no other pair: the l = 2, m = 1
+// pair is Upsilon_2(sigma_l^c) +- i/2 with Upsilon_2 < 0 here). Failing case: a simple HB of a problem kind without a
+// switch keeps the old refusal (the same point with its modes removed is no rotating-wave onset).
+TEST(HopfSwitch, FullModelOnsetHBsAreRotatingWavesOfTheBPBranch) {
   const Scene scene = modal_fixtures::scene(0.08, 4);
   const BranchSpec spec =
       test::spec_of(scene, ProblemKind::full, ContinuationParameter::C, 0.02, 0.08, Direction::backward);
@@ -761,14 +765,70 @@ TEST(HopfSwitch, FullModelOnsetIsRefusedAsMultiple) {
   for (const SpecialPoint& sp : b.special_points) {
     if (sp.type != SpecialPointType::HB) continue;
     ++hbs;
+    ASSERT_TRUE(sp.mode_l && sp.mode_m);
+    const int l = *sp.mode_l, m = *sp.mode_m;
     const OrbitSwitchResult r = switch_at(problem, b, sp);
-    std::printf("%s\n", r.message.c_str());
     EXPECT_FALSE(r.switched);
-    EXPECT_NE(r.message.find("a multiple Hopf point"), std::string::npos) << r.message;
-    EXPECT_NE(r.message.find("BP (l = " + std::to_string(*sp.mode_l) + ", m = 0)"), std::string::npos) << r.message;
-    EXPECT_NE(r.message.find("0.5i"), std::string::npos) << r.message;  // the m = 1 pair of every l
+    ASSERT_GE(r.rotating_wave_of, 0) << r.message;
+    const SpecialPoint& bp = b.special_points[static_cast<std::size_t>(r.rotating_wave_of)];
+    EXPECT_EQ(bp.type, SpecialPointType::BP);
+    EXPECT_EQ(bp.mode_l, l);
+    EXPECT_EQ(bp.mode_m, 0);
+    for (const std::string& part : std::vector<std::string>{
+             "the onset of the unforced l = " + std::to_string(l) + " block", "BP (l = " + std::to_string(l) + ", m = 0)",
+          "turned into mode m = " + std::to_string(m), "period 4 pi/m = " + format_value(4 * kPi / m),
+          "not followed as separate branches", "stability is not computed"})
+      EXPECT_NE(r.message.find(part), std::string::npos) << part << " in " << r.message;
+    // On the axis: 0 and i m'/2, m' = 1..l, once each.
+    const Eigen::VectorXcd ev = problem.spectrum(sp.x, sp.p);
+    int on_axis = 0;
+    for (const std::complex<double>& z : ev) on_axis += std::abs(z.real()) < 1e-6 && z.imag() >= 0;
+    EXPECT_EQ(on_axis, l + 1);
+    const Parameters q = with_parameter(scene.parameters, ContinuationParameter::C, sp.p);
+    EXPECT_LT(Upsilon_l(q, 2, sigma_c(l, q.alpha())), -1e-2);  // the l = 2, m = 1 pair is damped
+    SpecialPoint bare = sp;
+    bare.mode_l.reset();
+    EXPECT_EQ(switch_at(problem, b, bare).rotating_wave_of, -1);
+    EXPECT_NE(switch_at(problem, b, bare).message.find("a multiple Hopf point"), std::string::npos);
   }
   EXPECT_EQ(hbs, 3 + 4);
+}
+
+// At Delta0 = 0 (lambda = 5, C = 0.04, L = 4; the scene of BranchPointMode.HopfPairCoincidingWithANeutralPair...) the
+// l = 2, m = 1 pair sits on the axis at i/2 all along the branch in B: with no rest shape nothing drives f_{2,0} or
+// f_{2,+-1}, and the state's f_{2,0} != 0 pins sigma = sigma_2^c (Upsilon_2 = 0), so that pair, Upsilon_2 +- i/2,
+// is neutral exactly (the same rotating-frame argument turns the l = 2 tilt f_{2,0} into f_{2,+-1} rotating at 1/2).
+// At B = 0.72 (sigma_3^c = sigma_2^c) the l = 3 onset's m = 1 pair crosses at the same i/2: its HB is still the l = 3
+// block's rotating wave (its BP named), with 0.5i listed twice.
+TEST(HopfSwitch, AtDelta0ZeroTheL2M1PairIsNeutralBecauseSigmaIsPinned) {
+  Scene scene;
+  scene.parameters.Delta0 = 0;
+  scene.parameters.B = 1.5;
+  scene.L = 4;
+  const Branch b =
+      continue_scene(test::spec_of(scene, ProblemKind::full, ContinuationParameter::B, 0.5, 1.5, Direction::backward))
+          .branch.branch;
+  const FullEquilibriumProblem problem(scene, ContinuationParameter::B);
+  ASSERT_GE(b.points.size(), 5u);
+  for (std::size_t k = 0; k < b.points.size(); k += b.points.size() / 5) {
+    const BranchPoint& pt = b.points[k];
+    const Parameters q = with_parameter(scene.parameters, ContinuationParameter::B, pt.p);
+    EXPECT_NEAR(problem.observe(pt.x, pt.p).sigma, sigma_c(2, q.alpha()), 1e-9 * std::abs(sigma_c(2, q.alpha())));
+    EXPECT_GT(std::abs(pt.x[FullEquilibriumProblem::index(2, 0)]), 1e-3);
+    const Eigen::VectorXcd ev = problem.spectrum(pt.x, pt.p);
+    double nearest = 1;
+    for (const std::complex<double>& z : ev) nearest = std::min(nearest, std::abs(z - std::complex<double>(0, 0.5)));
+    EXPECT_LT(nearest, 1e-9) << "B = " << pt.p;
+  }
+  for (const SpecialPoint& sp : b.special_points)
+    if (sp.type == SpecialPointType::HB && sp.mode_l == 3 && sp.mode_m == 1) {
+      const OrbitSwitchResult r = switch_at(problem, b, sp);
+      EXPECT_GE(r.rotating_wave_of, 0) << r.message;
+      int halves = 0;
+      for (std::size_t at = r.message.find("+ 0.5i"); at != std::string::npos; at = r.message.find("+ 0.5i", at + 1))
+        ++halves;
+      EXPECT_EQ(halves, 2) << r.message;  // l = 2's and l = 3's m = 1 pairs
+    }
 }
 
 }  // namespace

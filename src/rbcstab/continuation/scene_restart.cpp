@@ -151,7 +151,7 @@ SceneBranch switch_at_label(const ContinuationRun& run, int label, const Restart
     const std::string bp =
         o.rotating_wave_of < 0
             ? ""
-            : " Their branch: --switch-at " +
+            : " For the branch that carries them switch at label " +
                   std::to_string(m.special_labels.at(static_cast<std::size_t>(o.rotating_wave_of))) + " (the BP).";
     throw InvalidArgument("switch_at", what + " is an HB: " + o.message + bp);
   }
