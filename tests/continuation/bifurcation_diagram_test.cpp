@@ -1,6 +1,7 @@
 // bifurcation_diagram on the paper's scenes: the modal walk-through of docs/continuation.md (lambda = 1, B = 1,
 // Delta = 1, Delta0 = 0.01, L = 6, C over [0.01, 0.1] from 0.04), where `--switch-at BP:l=3` reaches the
-// post-instability branch by hand, and the full model's onset (L = 4), whose HB pairs have no switcher yet.
+// post-instability branch by hand. The full model's onset (L = 4), whose HBs are the rotating waves of its BP's branch,
+// is checked through the CLI (cli.continue.diagram_hb) and Python.
 #include <gtest/gtest.h>
 
 #include <cmath>

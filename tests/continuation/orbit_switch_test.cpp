@@ -775,9 +775,10 @@ TEST(HopfSwitch, FullModelOnsetHBsAreRotatingWavesOfTheBPBranch) {
     EXPECT_EQ(bp.mode_l, l);
     EXPECT_EQ(bp.mode_m, 0);
     for (const std::string& part : std::vector<std::string>{
-             "the onset of the unforced l = " + std::to_string(l) + " block", "BP (l = " + std::to_string(l) + ", m = 0)",
-          "turned into mode m = " + std::to_string(m), "period 4 pi/m = " + format_value(4 * kPi / m),
-          "not followed as separate branches", "stability is not computed"})
+             "the onset of the unforced l = " + std::to_string(l) + " block",
+             "BP (l = " + std::to_string(l) + ", m = 0)", "turned into mode m = " + std::to_string(m),
+             "period 4 pi/m = " + format_value(4 * kPi / m), "not followed as separate branches",
+             "stability is not computed"})
       EXPECT_NE(r.message.find(part), std::string::npos) << part << " in " << r.message;
     // On the axis: 0 and i m'/2, m' = 1..l, once each.
     const Eigen::VectorXcd ev = problem.spectrum(sp.x, sp.p);
@@ -829,6 +830,33 @@ TEST(HopfSwitch, AtDelta0ZeroTheL2M1PairIsNeutralBecauseSigmaIsPinned) {
         ++halves;
       EXPECT_EQ(halves, 2) << r.message;  // l = 2's and l = 3's m = 1 pairs
     }
+}
+
+// In a tree (the diagram's core) each HB of the l = 3 onset is a rotating_wave entry, side 0, pointing at the BP
+// (point_to) and at the branch followed from it (branch_to, whose parent point is that BP).
+TEST(OrbitTree, FullModelOnsetHBsPointAtTheBranchFromTheirBP) {
+  const Scene scene = modal_fixtures::scene(0.08, 4);
+  const Branch b =
+      continue_scene(test::spec_of(scene, ProblemKind::full, ContinuationParameter::C, 0.03, 0.08, Direction::backward))
+          .branch.branch;
+  const FullEquilibriumProblem problem(scene, ContinuationParameter::C);
+  TreeOptions o;
+  o.switching.continuation.p_min = 0.03;
+  o.switching.continuation.p_max = 0.08;
+  o.switching.continuation.max_points = 20;
+  const BranchTree t = grow_tree(problem, b, o);
+  int waves = 0;
+  for (const TreeEmanation& e : t.emanations) {
+    if (e.branch != 0 || b.special_points[e.point].type != SpecialPointType::HB) continue;
+    ++waves;
+    EXPECT_EQ(e.outcome, EmanationOutcome::rotating_wave) << e.message;
+    EXPECT_EQ(e.side, 0);
+    ASSERT_GE(e.point_to, 0);
+    EXPECT_EQ(b.special_points[static_cast<std::size_t>(e.point_to)].mode_l, 3);
+    ASSERT_GE(e.branch_to, 1) << e.message;
+    EXPECT_EQ(t.branches[static_cast<std::size_t>(e.branch_to)].parent_point, e.point_to);
+  }
+  EXPECT_EQ(waves, 3);
 }
 
 }  // namespace

@@ -69,8 +69,8 @@ IntegratorOptions tight() {
 std::vector<std::vector<double>> simulate_to(const FullModel& model, const std::vector<double>& y0,
                                              const std::vector<double>& grid) {
   std::vector<std::vector<double>> out;
-  const IntegrationResult r = integrate(model, y0, 0, grid, tight(),
-                                        [&](double, std::span<const double> y) { out.emplace_back(y.begin(), y.end()); });
+  const IntegrationResult r = integrate(
+      model, y0, 0, grid, tight(), [&](double, std::span<const double> y) { out.emplace_back(y.begin(), y.end()); });
   EXPECT_EQ(r.status, IntegrationStatus::success) << r.reason;
   return out;
 }
@@ -154,8 +154,7 @@ TEST(RotatingWave, PeriodicityCheckFailsOnWrongAmplitudeOrFrequency) {
   fast.y = rotating_wave_at(w, 0.5 * w.period);  // e^{i m t}: at T/4 the block turned by m T/2
   const auto ys = simulate_to(o.model(), w.y, {0.25 * w.period, 1.01 * w.period});
   ASSERT_EQ(ys.size(), 2u);
-  std::printf("wrong frequency: at T/4 %.1e, at 1.01 T %.1e\n", max_distance(ys[0], fast.y),
-              max_distance(ys[1], w.y));
+  std::printf("wrong frequency: at T/4 %.1e, at 1.01 T %.1e\n", max_distance(ys[0], fast.y), max_distance(ys[1], w.y));
   EXPECT_GT(max_distance(ys[0], fast.y), 1e3 * kPeriodTol);
   EXPECT_GT(max_distance(ys[1], w.y), 1e3 * kPeriodTol);
 }
@@ -189,12 +188,11 @@ TEST(RotatingWave, SimulationFromADisturbedEllipsoidSettlesOnTheWave) {
     const std::vector<double>& y = ys.back();
     // The phase of f_{3,m}, unwrapped over the window: its mean rate.
     double turned = 0;
-    for (std::size_t i = 1; i < ys.size(); ++i)
-      turned += std::arg(amplitude(ys[i], 3, m) / amplitude(ys[i - 1], 3, m));
+    for (std::size_t i = 1; i < ys.size(); ++i) turned += std::arg(amplitude(ys[i], 3, m) / amplitude(ys[i - 1], 3, m));
     const double period = 2 * kPi / (turned / window);
-    std::printf("m = %d: Delta_3 %.12f (branch %.12f), sigma %.10f (branch %.10f), period %.10f (4 pi / m %.10f)\n", m,
-                block_area(y, 3), block_area(o.branch, 3), model.sigma(0, y), model.sigma(0, o.branch), period,
-                4 * kPi / m);
+    std::printf("m = %d: Delta_3 %.12f, off the branch's by %.1e; sigma off by %.1e; period off 4 pi / m by %.1e\n", m,
+                block_area(y, 3), block_area(y, 3) - block_area(o.branch, 3),
+                model.sigma(0, y) - model.sigma(0, o.branch), period - 4 * kPi / m);
     EXPECT_NEAR(block_area(y, 3), block_area(o.branch, 3), 1e-8);
     EXPECT_NEAR(model.sigma(0, y), model.sigma(0, o.branch), 1e-8 * std::abs(model.sigma(0, o.branch)));
     EXPECT_NEAR(period, 4 * kPi / m, 1e-8);

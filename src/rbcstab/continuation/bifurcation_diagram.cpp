@@ -120,8 +120,8 @@ BifurcationDiagram bifurcation_diagram(const BifurcationDiagramSpec& spec) {
   o.stop = spec.stop;
   o.on_branch = spec.on_branch;
   // HB: orbit_switch_start refuses every HB of a scene's problem, naming why (none is an autonomous system's
-  // equilibrium problem; the model's l >= 3 onset is a multiple Hopf point). PD: the doubled orbit would be a
-  // problem of its own that the scene's measures, monitors and branch files do not describe.
+  // equilibrium problem; the model's l >= 3 onset's orbits are rotating waves of its BP's branch). PD: the doubled
+  // orbit would be a problem of its own that the scene's measures, monitors and branch files do not describe.
   o.switchers[SpecialPointType::PD] = [](const ContinuationProblem&, const Branch&, const SpecialPoint&,
                                          const BranchSwitchOptions&) {
     EmanatingStart e;

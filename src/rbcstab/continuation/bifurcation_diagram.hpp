@@ -5,7 +5,8 @@
 // bounds, certificates, monitors): grow_tree (branch_tree.hpp) on the scene's problem. A branch reached twice is
 // marked as a duplicate of the first, not followed again; a BP met again is not switched at again. HB, PD and NS
 // points are listed as not followed (switching not available) with the reason: a scene's HB is refused by
-// orbit_switch_start (a multiple Hopf point, or a problem kind without an orbit switch), a scene's PD because the
+// orbit_switch_start (a multiple Hopf point, or a problem kind without an orbit switch; the full model's l >= 3
+// onset: outcome rotating_wave, its orbits the BP branch's states turned), a scene's PD because the
 // doubled orbit has no scene kind yet, NS because tori are not continued. Labels are unique over the diagram (the
 // start branch numbered first, then each branch in breadth-first order), so every branch, saved as a branch file
 // (diagram_branch_file), restarts and switches from its labels like any run.

@@ -68,13 +68,17 @@ enum class EmanationOutcome {
 };
 template <>
 struct EnumTable<EmanationOutcome> {
-  static constexpr EnumName<EmanationOutcome> entries[] = {
-      {EmanationOutcome::followed, "followed"},           {EmanationOutcome::duplicate, "duplicate"},
-      {EmanationOutcome::symmetric, "symmetric"},         {EmanationOutcome::already_switched, "already_switched"},
-      {EmanationOutcome::not_available, "not_available"}, {EmanationOutcome::rotating_wave, "rotating_wave"},
-      {EmanationOutcome::not_located, "not_located"},
-      {EmanationOutcome::depth_limit, "depth_limit"},     {EmanationOutcome::failed, "failed"},
-      {EmanationOutcome::interrupted, "interrupted"},     {EmanationOutcome::branch_limit, "branch_limit"}};
+  static constexpr EnumName<EmanationOutcome> entries[] = {{EmanationOutcome::followed, "followed"},
+                                                           {EmanationOutcome::duplicate, "duplicate"},
+                                                           {EmanationOutcome::symmetric, "symmetric"},
+                                                           {EmanationOutcome::already_switched, "already_switched"},
+                                                           {EmanationOutcome::not_available, "not_available"},
+                                                           {EmanationOutcome::rotating_wave, "rotating_wave"},
+                                                           {EmanationOutcome::not_located, "not_located"},
+                                                           {EmanationOutcome::depth_limit, "depth_limit"},
+                                                           {EmanationOutcome::failed, "failed"},
+                                                           {EmanationOutcome::interrupted, "interrupted"},
+                                                           {EmanationOutcome::branch_limit, "branch_limit"}};
 };
 
 struct TreeBranch {

@@ -218,8 +218,9 @@ OrbitSwitchStart rotating_wave_onset(const ContinuationProblem& problem, const B
       "the onset of the unforced l = " + L + " block at " + problem.parameter_name() + " = " + format_value(hb.p) +
       ": its pairs Upsilon_" + L + " +- i m/2, m = 1.." + L + ", cross with its BP (l = " + L +
       ", m = 0) there (Upsilon_l is the same for every m). The orbits born at this pair are exact rotating waves: "
-      "the states of the branch from that BP with the l = " + L + " block turned into mode m = " + M +
-      ", rotating at m/2 = " + format_value(0.5 * m) + " (period 4 pi/m = " + format_value(4 * kPi / m) +
+      "the states of the branch from that BP with the l = " +
+      L + " block turned into mode m = " + M + ", rotating at m/2 = " + format_value(0.5 * m) +
+      " (period 4 pi/m = " + format_value(4 * kPi / m) +
       "), by the block's phase symmetry (rotating_wave); they are not followed as separate branches (switch at the "
       "BP for that branch) and their stability is not computed. Eigenvalues on the imaginary axis: " +
       list_values(critical) + "; labels there: " + labels_at(branch, hb));

@@ -148,11 +148,11 @@ SceneBranch switch_at_label(const ContinuationRun& run, int label, const Restart
     const MeasuredBranch& m = *branch_of(run, lp.branch);
     const OrbitSwitchResult o =
         switch_at(make_problem(ctx.spec, ctx.problem_scene)->problem(), m.branch, m.branch.special_points[lp.index]);
-    const std::string bp =
-        o.rotating_wave_of < 0
-            ? ""
-            : " For the branch that carries them switch at label " +
-                  std::to_string(m.special_labels.at(static_cast<std::size_t>(o.rotating_wave_of))) + " (the BP).";
+    const std::string bp = o.rotating_wave_of < 0
+                               ? ""
+                               : " For the branch that carries them switch at label " +
+                                     std::to_string(m.special_labels.at(static_cast<std::size_t>(o.rotating_wave_of))) +
+                                     " (the BP).";
     throw InvalidArgument("switch_at", what + " is an HB: " + o.message + bp);
   }
   if (lp.type == to_string(SpecialPointType::PD) && lp.special)
