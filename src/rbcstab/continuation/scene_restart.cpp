@@ -150,7 +150,7 @@ SceneBranch switch_at_label(const ContinuationRun& run, int label, const Restart
         switch_at(make_problem(ctx.spec, ctx.problem_scene)->problem(), m.branch, m.branch.special_points[lp.index]);
     const std::string bp = o.rotating_wave_of < 0
                                ? ""
-                               : " For the branch that carries them switch at label " +
+                               : ". For the branch that carries them switch at label " +
                                      std::to_string(m.special_labels.at(static_cast<std::size_t>(o.rotating_wave_of))) +
                                      " (the BP).";
     throw InvalidArgument("switch_at", what + " is an HB: " + o.message + bp);
