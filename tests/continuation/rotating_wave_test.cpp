@@ -234,6 +234,13 @@ TEST(RotatingWave, BadArgumentsAreRefusedNamingThem) {
   forced.rest_delta_l = {{3, 1e-3}};
   const FullEquilibriumProblem fp(forced, ContinuationParameter::C);
   refused([&] { rotating_wave(fp.model(kC), o.branch, 3, 1); }, "l");
+  // A rotating drive (rest content in l = 2, m = 2 at finite C): no equilibrium to turn.
+  InitialState tilted{ModeAmplitudes(4), ModeAmplitudes(4)};
+  tilted.g.at(2, 2) = 0.1;
+  const FullModel rotating(with_parameter(o.scene.parameters, ContinuationParameter::C, kC), tilted);
+  EXPECT_TRUE(rotating.unforced(3));
+  EXPECT_FALSE(rotating.autonomous());
+  refused([&] { rotating_wave(rotating, o.branch, 3, 1); }, "state");
 }
 
 }  // namespace

@@ -30,7 +30,10 @@ RotatingWave rotating_wave(const FullModel& model, std::span<const double> state
   require(static_cast<int>(direction.size()) == l + 1, "direction", static_cast<double>(direction.size()),
           "l + 1 = " + std::to_string(l + 1) + " amplitudes c_0..c_l");
   require(model.unforced(l), "l", l, "an unforced block (S_{l,m} = 0 for every m: no rest content in l)");
-  require(model.autonomous(), "state", 0, "a state of a time-independent drive (no rest content with m != 0)");
+  if (!model.autonomous())
+    throw InvalidArgument("state",
+                          "state: the model's drive rotates (rest content with m != 0 at finite C), so it "
+                          "has no equilibrium to turn into a rotating wave");
   double c2 = 0;  // sum over m = -l..l of |c_m|^2 (the real shape's both halves)
   int period_gcd = 0;
   for (int m = 0; m <= l; ++m) {
@@ -40,7 +43,8 @@ RotatingWave rotating_wave(const FullModel& model, std::span<const double> state
     if (m > 0 && c != 0.0) period_gcd = std::gcd(period_gcd, m);
   }
   require(direction[0].imag() == 0.0, "direction", direction[0].imag(), "c_0 real (Im c_0 = 0: a real shape)");
-  require(period_gcd > 0, "direction", 0, "at least one c_m != 0 with m >= 1 (c_0 alone is the equilibrium)");
+  if (period_gcd == 0)
+    throw InvalidArgument("direction", "direction: every c_m with m >= 1 is 0 (c_0 alone is the equilibrium itself)");
   for (const double v : state) require_finite("state", v);
   std::vector<double> F(state.size());
   model.rhs(0, state, F);
@@ -52,7 +56,9 @@ RotatingWave rotating_wave(const FullModel& model, std::span<const double> state
     const std::size_t k = 2 * ModeAmplitudes::index(l, m);
     block2 += state[k] * state[k] + state[k + 1] * state[k + 1];
   }
-  require(block2 > 0, "state", 0, "a nonzero l-block (a point of the branch born at its BP, off the BP)");
+  if (!(block2 > 0))
+    throw InvalidArgument("state", "state: its l = " + std::to_string(l) +
+                                       " block is zero (a point of the branch born at that block's BP is needed)");
   RotatingWave w;
   w.L = L;
   w.l = l;
