@@ -273,8 +273,9 @@ TEST(RotatingWave, FloquetMultipliersAreTheBranchStatesRotatingFrameSpectrum) {
   EXPECT_LT(worst, 1e-5);
   EXPECT_GT(wrong, 1e-2);
   EXPECT_LT(measured.back(), 1 + 1e-5);
-  // The block's 12 turned directions (6 in each half of the stored state) and the area direction are multipliers 1.
-  EXPECT_GE(at_one, 12);
+  // Multipliers 1: the 13 directions of the block's 14 stored reals orthogonal to the wave (its time shift among
+  // them) and the conserved Delta (measured 14).
+  EXPECT_EQ(at_one, 14);
 }
 
 TEST(RotatingWave, BadArgumentsAreRefusedNamingThem) {
