@@ -28,6 +28,8 @@ inline constexpr const char* kBranchFileFormat = "rbcstab-branch";
 inline constexpr int kBranchFileVersion = 1;
 
 nlohmann::json branch_file_json(const ContinuationRun& run);
+// The file's "spec": everything of a BranchSpec but its functions (progress, stop, a function monitor).
+nlohmann::json branch_spec_json(const BranchSpec& spec);
 // Writes branch_file_json(run) atomically (io/files.hpp); throws std::runtime_error naming the path.
 void save_branch(const std::string& path, const ContinuationRun& run);
 

@@ -101,6 +101,43 @@ std::string no_switcher_text(SpecialPointType type) {
   return "switching at " + std::string(to_string(type)) + " is not available";
 }
 
+constexpr const char* kClosedMessage = "closed: back at its first point";
+
+// One emanating branch continued from its start, away from its point, with the tree's engine options and events.
+Branch follow(const ContinuationProblem& child_problem, const EmanatingStart& s, const TreeOptions& options) {
+  ContinuationOptions o = options.switching.continuation;
+  o.direction = s.away;
+  if (options.events)
+    for (UserEvent& e : options.events(s.x, s.p)) o.events.push_back(std::move(e));
+  // A closed branch (a loop through BPs) comes back through its first point: it ends there instead of going
+  // round to max_points. Its chord passes within the sagitta bound (a tangent turn <= 60 degrees per step)
+  // of the first point, once it has gone farther than the switching amplitude.
+  struct Loop {
+    Eigen::VectorXd X0, prev;
+    double travelled = 0;
+    bool closed = false;
+  };
+  const auto loop = std::make_shared<Loop>(Loop{packed(s.x, s.p), packed(s.x, s.p)});
+  const double far = 4 * options.switching.amplitude;
+  const auto returned = [loop, far](const Eigen::VectorXd& x, double p) {
+    const Eigen::VectorXd X = packed(x, p), d = X - loop->prev;
+    const double len = d.norm();
+    const double at = len > 0 ? std::clamp(d.dot(loop->X0 - loop->prev) / (len * len), 0.0, 1.0) : 0.0;
+    loop->closed =
+        loop->closed || (loop->travelled > far && (loop->prev + at * d - loop->X0).norm() <= 0.15 * len);
+    loop->travelled += len;
+    loop->prev = X;
+    return loop->closed;
+  };
+  auto user_stop = o.stop;
+  o.stop = [flag = options.stop, user_stop, returned](const Eigen::VectorXd& x, double p) {
+    return (flag && flag->load()) || returned(x, p) || (user_stop && user_stop(x, p));
+  };
+  Branch child = continue_branch(child_problem, s.x, s.p, o);
+  if (loop->closed) child.message = kClosedMessage;
+  return child;
+}
+
 }  // namespace
 
 std::map<SpecialPointType, Switcher> default_switchers(const OrbitOptions& hb_orbit) {
@@ -267,44 +304,23 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
           mark(b, j, s.side, outcome, k);
           continue;
         }
-        ContinuationOptions o = options.switching.continuation;
-        o.direction = s.away;
-        if (options.events)
-          for (UserEvent& e : options.events(s.x, s.p)) o.events.push_back(std::move(e));
-        // A closed branch (a loop through BPs) comes back through its first point: it ends there instead of going
-        // round to max_points. Its chord passes within the sagitta bound (a tangent turn <= 60 degrees per step)
-        // of the first point, once it has gone farther than the switching amplitude.
-        struct Loop {
-          Eigen::VectorXd X0, prev;
-          double travelled = 0;
-          bool closed = false;
-        };
-        const auto loop = std::make_shared<Loop>(Loop{packed(s.x, s.p), packed(s.x, s.p)});
-        const double far = 4 * options.switching.amplitude;
-        const auto returned = [loop, far](const Eigen::VectorXd& x, double p) {
-          const Eigen::VectorXd X = packed(x, p), d = X - loop->prev;
-          const double len = d.norm();
-          const double at = len > 0 ? std::clamp(d.dot(loop->X0 - loop->prev) / (len * len), 0.0, 1.0) : 0.0;
-          loop->closed =
-              loop->closed || (loop->travelled > far && (loop->prev + at * d - loop->X0).norm() <= 0.15 * len);
-          loop->travelled += len;
-          loop->prev = X;
-          return loop->closed;
-        };
-        auto user_stop = o.stop;
-        o.stop = [flag = options.stop, user_stop, returned](const Eigen::VectorXd& x, double p) {
-          return (flag && flag->load()) || returned(x, p) || (user_stop && user_stop(x, p));
-        };
-        Branch child = continue_branch(child_problem, s.x, s.p, o);
-        if (loop->closed) child.message = "closed: back at its first point";
-        if (stopped()) {
-          tree.interrupted = true;
-          child.message = "interrupted after " + std::to_string(child.points.size()) + " points";
+        const std::size_t k = tree.branches.size();
+        TreeBranch t{{}, s.problem ? s.problem : tree.branches[i].problem, b, static_cast<int>(j), s.side,
+                     tree.branches[i].depth + 1, false};
+        if (!(options.recall && options.recall(k, t))) {
+          t.branch = follow(child_problem, s, options);
+          t.closed = t.branch.message == kClosedMessage;
+          if (stopped()) {
+            tree.interrupted = true;
+            t.branch.message = "interrupted after " + std::to_string(t.branch.points.size()) + " points";
+          } else if (options.on_followed) {
+            options.on_followed(k, t);
+          }
         }
-        tree.branches.push_back({std::move(child), s.problem ? s.problem : tree.branches[i].problem, b,
-                                 static_cast<int>(j), s.side, tree.branches[i].depth + 1, loop->closed});
-        if (loop->closed) closed_sibling = static_cast<int>(tree.branches.size()) - 1;
-        mark(b, j, s.side, EmanationOutcome::followed, static_cast<int>(tree.branches.size()) - 1);
+        const bool closed = t.closed;
+        tree.branches.push_back(std::move(t));
+        if (closed) closed_sibling = static_cast<int>(k);
+        mark(b, j, s.side, EmanationOutcome::followed, static_cast<int>(k));
         if (options.on_branch) options.on_branch(tree.branches.size(), tree.branches.size() - i - 1);
       }
     }
