@@ -235,10 +235,10 @@ RunOutcome outcome(const BifurcationDiagram& d) {
     if (e.outcome == EmanationOutcome::failed)
       add("switching at label " + std::to_string(e.label) + " (side " + side_text(e.side) + ") failed: " + e.message);
   if (!d.complete())
-    add(!d.interrupted          ? "max_branches reached: the diagram is incomplete"
-        : d.journal.empty()     ? "interrupted: the diagram is incomplete (no journal: run it again to recompute it)"
-                                : "interrupted: the diagram is incomplete (run it again to resume from the journal '" +
-                                   d.journal + "')");
+    add(!d.interrupted ? "max_branches reached: the diagram is incomplete"
+        : d.journal.empty()
+            ? "interrupted: the diagram is incomplete (no journal: run it again to recompute it)"
+            : "interrupted: the diagram is incomplete (run it again to resume from the journal '" + d.journal + "')");
   return o;
 }
 

@@ -78,7 +78,6 @@ json engine_json(const ContinuationOptions& e) {
   return j;
 }
 
-
 json special_point_json(const SpecialPoint& sp) {
   json out = {{"type", to_string(sp.type)},
               {"name", sp.name},

@@ -123,8 +123,7 @@ Branch follow(const ContinuationProblem& child_problem, const EmanatingStart& s,
     const Eigen::VectorXd X = packed(x, p), d = X - loop->prev;
     const double len = d.norm();
     const double at = len > 0 ? std::clamp(d.dot(loop->X0 - loop->prev) / (len * len), 0.0, 1.0) : 0.0;
-    loop->closed =
-        loop->closed || (loop->travelled > far && (loop->prev + at * d - loop->X0).norm() <= 0.15 * len);
+    loop->closed = loop->closed || (loop->travelled > far && (loop->prev + at * d - loop->X0).norm() <= 0.15 * len);
     loop->travelled += len;
     loop->prev = X;
     return loop->closed;
@@ -305,8 +304,10 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
           continue;
         }
         const std::size_t k = tree.branches.size();
-        TreeBranch t{{}, s.problem ? s.problem : tree.branches[i].problem, b, static_cast<int>(j), s.side,
-                     tree.branches[i].depth + 1, false};
+        TreeBranch t{{},     s.problem ? s.problem : tree.branches[i].problem,
+                     b,      static_cast<int>(j),
+                     s.side, tree.branches[i].depth + 1,
+                     false};
         if (!(options.recall && options.recall(k, t))) {
           t.branch = follow(child_problem, s, options);
           t.closed = t.branch.message == kClosedMessage;

@@ -89,9 +89,7 @@ std::string holder_text() {
 }
 }  // namespace
 
-std::string seal_record(const std::string& body) {
-  return body + std::string(kChecksumMark) + fnv1a_hex(body) + '\n';
-}
+std::string seal_record(const std::string& body) { return body + std::string(kChecksumMark) + fnv1a_hex(body) + '\n'; }
 
 UnsealedRecord unseal_record(const std::string& line) {
   std::string text = line;

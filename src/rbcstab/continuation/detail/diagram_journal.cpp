@@ -47,7 +47,8 @@ RecordKey read_branch_record(const std::string& line, const std::string& hash, c
     b.run = *s;
     const nlohmann::json& dg = j.at("file").at("diagram");
     if (dg.at("branch").get<int>() != number)
-      return {std::nullopt, "the record of branch " + std::to_string(number) + " holds branch " + dg.at("branch").dump()};
+      return {std::nullopt,
+              "the record of branch " + std::to_string(number) + " holds branch " + dg.at("branch").dump()};
     b.parent = dg.at("parent").is_null() ? 0 : dg.at("parent").get<int>();
     b.parent_label = dg.at("parent_label").is_null() ? 0 : dg.at("parent_label").get<int>();
     b.side = dg.at("side").get<int>();
@@ -82,7 +83,8 @@ const JournaledBranch* DiagramJournal::find(int number) const {
 }
 
 void DiagramJournal::append(int number, const nlohmann::json& file, int parent_point, bool closed, int next_label) {
-  const nlohmann::json j{{"file", file}, {"parent_point", parent_point}, {"closed", closed}, {"next_label", next_label}};
+  const nlohmann::json j{
+      {"file", file}, {"parent_point", parent_point}, {"closed", closed}, {"next_label", next_label}};
   records_->append(static_cast<std::size_t>(number),
                    seal_record("B " + hash_ + " " + std::to_string(number) + " " + j.dump()));
 }

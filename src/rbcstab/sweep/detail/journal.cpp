@@ -22,15 +22,16 @@ JournalFormat point_journal_format() {
 Journal::Journal(const std::string& path, const std::string& config_hash, const DiagramSpec& spec, int L,
                  double sync_interval)
     : hash_(config_hash),
-      records_(path, config_hash, point_journal_format(),
-               [&](const std::string& line) -> RecordKey {
-                 ParsedPoint r = parse_point_line(line, config_hash, spec, L);
-                 if (!r.point) return {std::nullopt, r.error};
-                 const std::size_t idx = r.point->index;
-                 parsed_.insert_or_assign(idx, std::move(*r.point));
-                 return {idx, {}};
-               },
-               sync_interval) {
+      records_(
+          path, config_hash, point_journal_format(),
+          [&](const std::string& line) -> RecordKey {
+            ParsedPoint r = parse_point_line(line, config_hash, spec, L);
+            if (!r.point) return {std::nullopt, r.error};
+            const std::size_t idx = r.point->index;
+            parsed_.insert_or_assign(idx, std::move(*r.point));
+            return {idx, {}};
+          },
+          sync_interval) {
   for (const auto& [idx, line] : records_.records()) finished_.emplace(idx, parsed_.at(idx));
   parsed_.clear();
 }
