@@ -7,6 +7,7 @@
 #include <complex>
 #include <limits>
 #include <memory>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -50,6 +51,51 @@ bool same_equations(const ContinuationProblem& a, const ContinuationProblem& b) 
   if (aa && ab) return same_shooting(*aa, *ab) && aa->phase_component() == ab->phase_component();
   const auto *fa = dynamic_cast<const PeriodicOrbitProblem*>(&a), *fb = dynamic_cast<const PeriodicOrbitProblem*>(&b);
   return fa && fb && same_shooting(*fa, *fb) && fa->periods() == fb->periods();
+}
+
+// Two orbit problems on one system with the same shooting that may represent one orbit differently: another phase
+// component, or the same one (an orbit has two extrema of each component).
+const AutonomousOrbitProblem* other_representation(const ContinuationProblem& a, const ContinuationProblem& b) {
+  const auto *aa = dynamic_cast<const AutonomousOrbitProblem*>(&a),
+             *ab = dynamic_cast<const AutonomousOrbitProblem*>(&b);
+  return aa && ab && same_shooting(*aa, *ab) ? aa : nullptr;
+}
+
+// The orbit X of problem b at p in problem a's representation: each point of the orbit where a's phase condition
+// f_k(x, p) = 0 holds (a sign change among kRephaseSamples states along it, the nearer one taken), its segment
+// starts sampled from there (shooting_guess) and corrected by Newton on a's equations at the same p. The samples
+// bound the start's phase error by T / kRephaseSamples, well inside Newton's reach for a smooth orbit.
+constexpr int kRephaseSamples = 64;
+std::vector<Eigen::VectorXd> rephased(const AutonomousOrbitProblem& a, const AutonomousOrbitProblem& b,
+                                      const Eigen::VectorXd& X, double p) {
+  const Eigen::Index n = a.system().dimension();
+  const double T = AutonomousOrbitProblem::period(X);
+  std::vector<Eigen::VectorXd> out;
+  if (!(std::isfinite(T) && T > 0)) return out;
+  OrbitOptions fine_options = a.options();
+  fine_options.segments = kRephaseSamples;
+  const AutonomousOrbitProblem fine(a.system(), a.phase_component(), fine_options);
+  const Eigen::VectorXd S = fine.shooting_guess(b.state_at_zero(X), T, p);
+  std::vector<double> g(kRephaseSamples);
+  Eigen::VectorXd f(n);
+  for (int j = 0; j < kRephaseSamples; ++j) {
+    a.system().rhs(std::span<const double>(S.data() + j * n, static_cast<std::size_t>(n)), p,
+                   std::span<double>(f.data(), static_cast<std::size_t>(n)));
+    g[static_cast<std::size_t>(j)] = f[a.phase_component()];
+  }
+  Eigen::VectorXd along = Eigen::VectorXd::Zero(a.dimension() + 1);
+  along[a.dimension()] = 1;  // Newton at fixed p: on the hyperplane p = const
+  for (int j = 0; j < kRephaseSamples; ++j) {
+    const int next = (j + 1) % kRephaseSamples;
+    const double g0 = g[static_cast<std::size_t>(j)], g1 = g[static_cast<std::size_t>(next)];
+    if (g0 != 0 && (g0 > 0) == (g1 > 0)) continue;
+    const int at = std::abs(g0) <= std::abs(g1) ? j : next;
+    const Eigen::VectorXd x0 = S.segment(at * n, n);
+    Eigen::VectorXd Y = packed(a.shooting_guess(x0, T, p), p);
+    const Eigen::VectorXd base = Y;
+    if (newton_on_hyperplane(a, base, along, 0.0, 1e-12, 30, Y)) out.push_back(std::move(Y));
+  }
+  return out;
 }
 
 std::vector<EmanatingStart> bp_switcher(const ContinuationProblem& problem, const Branch& branch,
@@ -236,9 +282,15 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
   const auto covered = [&](int from, const EmanatingStart& s, const ContinuationProblem& pr) {
     const Eigen::VectorXd X = packed(s.x, s.p);
     for (std::size_t k = 0; k < tree.branches.size(); ++k) {
-      if (static_cast<int>(k) == from || !same_equations(problem_of(static_cast<int>(k)), pr)) continue;
-      if (lies_on(pr, tree.branches[k].branch, X, options.duplicate_tol))
+      if (static_cast<int>(k) == from) continue;
+      const ContinuationProblem& earlier = problem_of(static_cast<int>(k));
+      if (same_equations(earlier, pr) && lies_on(pr, tree.branches[k].branch, X, options.duplicate_tol))
         return std::pair{EmanationOutcome::duplicate, static_cast<int>(k)};
+      // The same orbit in another phase representation: compared in the earlier problem's.
+      if (const AutonomousOrbitProblem* a = other_representation(earlier, pr))
+        for (const Eigen::VectorXd& Y : rephased(*a, dynamic_cast<const AutonomousOrbitProblem&>(pr), s.x, s.p))
+          if (lies_on(*a, tree.branches[k].branch, Y, options.duplicate_tol))
+            return std::pair{EmanationOutcome::duplicate, static_cast<int>(k)};
     }
     for (const auto& g : options.symmetries) {
       const Eigen::VectorXd gX = packed(g(s.x), s.p);
