@@ -99,9 +99,10 @@ TEST(DiagramJournal, StoppedThenResumedEqualsTheUninterruptedDiagram) {
   std::filesystem::remove_all(dir);
 }
 
-// An edited record (one digit of a point changed) and a torn last record are reported with file and line and their
-// branches continued again: the diagram is still the uninterrupted one. The comparison can fail: the same edit
-// with its checksum recomputed (a forged record) is resumed, and then the diagram differs.
+// An edited record (one digit of a point changed), a record of another configuration and a torn last record are
+// reported with file and line and their branches continued again: the diagram is still the uninterrupted one. The
+// comparison can fail: the same edit with its checksum recomputed (a forged record) is resumed, and then the diagram
+// differs.
 TEST(DiagramJournal, EditedAndTornRecordsAreReportedAndContinuedAgain) {
   const std::filesystem::path dir = test::fresh_dir("diagram_journal", "edited");
   const std::string journal = (dir / "d.journal").string();
@@ -112,14 +113,18 @@ TEST(DiagramJournal, EditedAndTornRecordsAreReportedAndContinuedAgain) {
   ASSERT_TRUE(edit_digit(l[2]));  // a point's C in branch 2's record
   const std::string torn = l[9].substr(0, l[9].size() / 2);
   l.pop_back();
+  // Branch 5's record under another configuration's hash, its checksum valid (spliced from another journal).
+  const std::string body5 = l[5].substr(0, l[5].size() - 19);
+  l[5] = seal_record("B 0123456789abcdef" + body5.substr(body5.find(' ', 2)));
   write_journal(journal, l, torn);
   const BifurcationDiagram d = bifurcation_diagram(journal_spec(journal));
-  ASSERT_EQ(d.rejected.size(), 2u) << ::testing::PrintToString(d.rejected);
+  ASSERT_EQ(d.rejected.size(), 3u) << ::testing::PrintToString(d.rejected);
   EXPECT_EQ(d.rejected[0].rfind(journal + ":3: checksum", 0), 0u) << d.rejected[0];
-  EXPECT_EQ(d.rejected[1].rfind(journal + ":10: torn last record", 0), 0u) << d.rejected[1];
-  EXPECT_EQ(d.resumed, 7u);
+  EXPECT_EQ(d.rejected[1].rfind(journal + ":6: record of another configuration", 0), 0u) << d.rejected[1];
+  EXPECT_EQ(d.rejected[2].rfind(journal + ":10: torn last record", 0), 0u) << d.rejected[2];
+  EXPECT_EQ(d.resumed, 6u);
   EXPECT_EQ(rendered(d), uninterrupted());
-  EXPECT_EQ(journal_lines(journal).size(), 10u);  // the two records dropped from the file, then written again
+  EXPECT_EQ(journal_lines(journal).size(), 10u);  // the three records dropped from the file, then written again
   // The forged record: body edited, checksum recomputed.
   l = journal_lines(journal);
   std::string body = clean3.substr(0, clean3.size() - 19);  // without " *<16 digits>\n"
