@@ -550,10 +550,15 @@ void save_branch(const std::string& path, const ContinuationRun& run) {
 }
 
 ContinuationRun parse_branch_file(const std::string& text, const std::string& source, const std::string& name) {
-  const Reader rd(name, source);
   const json j = json::parse(text, nullptr, false);
   if (j.is_discarded())
-    rd.fail("it is not JSON (a truncated or corrupted file?): " + std::to_string(text.size()) + " bytes");
+    Reader(name, source)
+        .fail("it is not JSON (a truncated or corrupted file?): " + std::to_string(text.size()) + " bytes");
+  return parse_branch_json(j, source, name);
+}
+
+ContinuationRun parse_branch_json(const nlohmann::json& j, const std::string& source, const std::string& name) {
+  const Reader rd(name, source);
   if (!j.is_object() || !j.contains("format") || j.at("format") != kBranchFileFormat)
     rd.fail(std::string("it has no \"format\": \"") + kBranchFileFormat + "\" (written by rbcstab continue --save?)");
   const long long version = rd.integer(j, "version", "");

@@ -39,6 +39,9 @@ void save_branch(const std::string& path, const ContinuationRun& run);
 // branch file, a truncated file, a newer version.
 ContinuationRun parse_branch_file(const std::string& text, const std::string& source,
                                   const std::string& name = "restart");
+// The same from the file's JSON, parsed already (a diagram journal's record holds it).
+ContinuationRun parse_branch_json(const nlohmann::json& file, const std::string& source,
+                                  const std::string& name = "restart");
 ContinuationRun load_branch(const std::string& path, const std::string& name = "restart");
 
 }  // namespace rbcstab

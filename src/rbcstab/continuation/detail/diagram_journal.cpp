@@ -41,7 +41,7 @@ RecordKey read_branch_record(const std::string& line, const std::string& hash, c
   JournaledBranch b;
   try {
     if (!j.is_object()) return {std::nullopt, "malformed record (its data is not a JSON object)"};
-    const ContinuationRun run = parse_branch_file(j.at("file").dump(), source, "journal");
+    const ContinuationRun run = parse_branch_json(j.at("file"), source, "journal");
     const SceneBranch* s = std::get_if<SceneBranch>(&run);
     if (!s) return {std::nullopt, "the record holds a curve, not a branch"};
     b.run = *s;
