@@ -47,8 +47,10 @@ struct ContinueOptions {
   std::string parameter2;
   double p2_min = -INFINITY, p2_max = INFINITY;
   int point = 1;
-  std::string save;  // branch file (--diagram: the tree, its branch files beside it)
-  int diagram = -1;  // --diagram DEPTH: the whole diagram (bifurcation_diagram.hpp)
+  std::string save;     // branch file (--diagram: the tree, its branch files beside it)
+  int diagram = -1;     // --diagram DEPTH: the whole diagram (bifurcation_diagram.hpp)
+  std::string journal;  // --diagram: the journal's prefix (default: --save's path)
+  bool no_journal = false;
   int label_every = 10;
   std::string measures;  // text table: comma-separated measure names
   // A restart: the run in this branch file, from label N (--label) or switching at BP label N (--switch-at).
@@ -89,6 +91,7 @@ void print(const ContinueOptions& o, const std::string& L_reason, const Continua
 }
 
 void print(const ContinueOptions& o, const std::string&, const BifurcationDiagram& d) {
+  for (const std::string& why : d.rejected) std::cerr << "rbcstab: warning: " << why << "\n";
   if (!o.save.empty()) save_diagram(o.save, d, "--save");
   std::cout << (o.json ? to_json(d).dump(2) + "\n" : to_text(d));
 }
@@ -162,9 +165,14 @@ int run(const ContinueOptions& o) {
   spec.allow_unstable_start = o.allow_unstable_start;
   const SceneRun sr = scene_run(std::move(file), spec, curve, "--min", "--max");
   if (!curve) TableOptions::from_list(o.measures).validate(measure_names(sr.spec.kind, sr.spec.scene.L));
+  const std::string journal = o.no_journal         ? ""
+                              : !o.journal.empty() ? o.journal + ".journal"
+                              : o.save.empty()     ? ""
+                                                   : o.save + ".journal";
   if (o.diagram >= 0)
-    return report(o, sr.L_reason,
-                  bifurcation_diagram({.start = sr.spec, .depth = o.diagram, .stop = StopOnSignal().flag()}));
+    return report(
+        o, sr.L_reason,
+        bifurcation_diagram({.start = sr.spec, .depth = o.diagram, .journal = journal, .stop = StopOnSignal().flag()}));
   return report(o, sr.L_reason, continue_run(sr));
 }
 
@@ -276,6 +284,13 @@ Runner add_continue(CLI::App& app) {
                      "--save F: the tree F and its branch files F.b1.json, ...")
       ->check(integer_in(0, 20))
       ->excludes("--csv", "--curve", "--restart", "--switch-at-bp");
+  app.add_option("--journal", o->journal,
+                 "--diagram: checkpoint journal prefix, file PREFIX.journal (default: --save's "
+                 "path, F.journal): a run stopped and run again resumes from it")
+      ->needs("--diagram");
+  app.add_flag("--no-journal", o->no_journal, "--diagram: no checkpoint journal (no resume)")
+      ->needs("--diagram")
+      ->excludes("--journal");
   o->progress.add_flags(app);
   return [o] { return run(*o); };
 }

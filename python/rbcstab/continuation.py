@@ -51,7 +51,7 @@ _KINDS = {"min": _number, "max": _number, "relax_T": _number,
           "min2": _number, "max2": _number, "max_points": _integer, "label_every": _integer,
           "point": _integer, "switch_at_bp": _flag, "allow_unstable_start": _flag, "direction": _name,
           "curve": _name, "parameter2": _name, "kind": _name, "parameter": _name, "amplitude": _number,
-          "duplicate_tol": _number, "max_branches": _integer,
+          "duplicate_tol": _number, "max_branches": _integer, "journal": _args.path,
           **{k: _integer if integer else _number for k, integer, *_ in TUNABLE_OPTIONS}}
 
 
@@ -186,7 +186,8 @@ def bifurcation_diagram(scene, depth=1, kind="equilibrium", parameter="lambda", 
                         direction=None, step=None, max_step=None, max_points=None, relax_T=None, segments=None,
                         allow_unstable_start=False, label_every=None, min_step=None, newton_tol=None, max_newton=None,
                         location_tol=None, orbit_rtol=None, orbit_atol=None, orbit_samples=None, monitor=None,
-                        stop_at=None, amplitude=None, duplicate_tol=None, max_branches=None, progress=False):
+                        stop_at=None, amplitude=None, duplicate_tol=None, max_branches=None, journal=None,
+                        progress=False):
     """The whole bifurcation diagram to `depth` (``rbcstab continue --diagram DEPTH``; docs/continuation.md): the
     start branch as :func:`continuation` follows it (the same keywords), then at every located BP both halves of
     the branch bifurcating there, recursively to `depth` (an integer in [0, 20]; 0: the start branch only), each
@@ -199,7 +200,11 @@ def bifurcation_diagram(scene, depth=1, kind="equilibrium", parameter="lambda", 
     amplitude: the predictor step off a BP, finite and > 0 (dimensionless, in the (state, parameter) space; default
     1e-3); duplicate_tol: two points are the same within it, in (0, amplitude / 10] (dimensionless; default 1e-7);
     max_branches: at most this many branches, an integer in [1, 10000] (default 200). progress and Ctrl-C as
-    :func:`continuation`.
+    :func:`continuation`. journal: a checkpoint file (the CLI's ``--save F``: F.journal): each branch continued to
+    its end is appended as it ends, and a later call with the same journal and options resumes from it (the
+    recorded branches are read back, not continued again) to the same diagram; a journal of other options is a
+    ValueError, a torn or edited record is reported (:attr:`BifurcationDiagram.rejected`) and its branch continued
+    again.
 
     Returns a :class:`BifurcationDiagram`. Raises ValueError / TypeError for bad input, ContinuationError when the start
     fails; an incomplete diagram, a branch that ended early or a failed switch gives a ContinuationWarning."""
@@ -210,7 +215,7 @@ def bifurcation_diagram(scene, depth=1, kind="equilibrium", parameter="lambda", 
                        label_every=label_every, min_step=min_step, newton_tol=newton_tol, max_newton=max_newton,
                        location_tol=location_tol, orbit_rtol=orbit_rtol, orbit_atol=orbit_atol,
                        orbit_samples=orbit_samples, monitor=monitor, stop_at=stop_at, amplitude=amplitude,
-                       duplicate_tol=duplicate_tol, max_branches=max_branches)
+                       duplicate_tol=duplicate_tol, max_branches=max_branches, journal=journal)
     bar = progress_bar(progress, f"diagram in {parameter}", "points")
     try:
         d = _rbcstab.bifurcation_diagram(scene, _name("kind", kind), _name("parameter", parameter),
@@ -575,6 +580,16 @@ class BifurcationDiagram:
     def complete(self):
         """No branching point was left for want of time (interrupted) or room (max_branches)."""
         return self._tree_json()["complete"]
+
+    @property
+    def resumed(self):
+        """How many branches this call read back from its journal instead of continuing them (0 without one)."""
+        return self._d.resumed()
+
+    @property
+    def rejected(self):
+        """Journal records dropped and their branches continued again ('journal:line: why')."""
+        return self._d.rejected()
 
     def __len__(self):
         return self._d.size()

@@ -286,6 +286,7 @@ Diagram diagram_py(const py::handle& scene, const std::string& kind, const std::
   set_if(ds.amplitude, g.take<double>("amplitude"));
   set_if(ds.duplicate_tol, g.take<double>("duplicate_tol"));
   set_if(ds.max_branches, as_count(g.take<long long>("max_branches"), "max_branches"));
+  set_if(ds.journal, g.take<std::string>("journal"));
   g.finish("bifurcation_diagram");
   const Watch watch(progress);
   Diagram out = [&] {
@@ -474,6 +475,8 @@ void bind_continuation(py::module_& m) {
   diagram.def(
       "text", [](const Diagram& d) { return to_text(d.d); }, "The CLI's text summary.");
   diagram.def("size", [](const Diagram& d) { return d.d.branches.size(); });
+  diagram.def("resumed", [](const Diagram& d) { return d.d.resumed; });
+  diagram.def("rejected", [](const Diagram& d) { return d.d.rejected; });
   diagram.def(
       "branch",
       [](const Diagram& d, std::size_t k) {
@@ -494,7 +497,7 @@ void bind_continuation(py::module_& m) {
   m.def("bifurcation_diagram", &diagram_py, py::arg("scene"), py::arg("kind"), py::arg("parameter"), py::arg("depth"),
         py::arg("options"), py::arg("progress") = py::none(),
         "rbcstab continue --diagram DEPTH: the options as continue_scene's, plus amplitude, duplicate_tol, "
-        "max_branches.");
+        "max_branches, journal.");
   m.def(
       "load_diagram",
       [](const std::string& path) {

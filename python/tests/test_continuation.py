@@ -654,6 +654,34 @@ def test_bifurcation_diagram_equals_the_cli_and_pickles(cli, tmp_path):
         rbcstab.bifurcation_diagram(scene, depth=1.5, kind="modal", parameter="C")
 
 
+def test_bifurcation_diagram_resumes_from_its_journal(cli, tmp_path):
+    # The walk-through's diagram with a journal: a run cut after 4 branches (the journal's header and 4 records,
+    # then a torn record) resumes to the uninterrupted diagram; the CLI's journal (--save F: F.journal) of the same
+    # options is the same configuration (everything resumed); other options' journal is refused.
+    scene = rbcstab.Scene(lambda_=1, B=1, L=6)
+    options = dict(depth=1, kind="modal", parameter="C", min=0.01, max=0.1)
+    clean = rbcstab.bifurcation_diagram(scene, **options)
+    assert clean.resumed == 0 and clean.rejected == []
+    journal = tmp_path / "d.journal"
+    first = rbcstab.bifurcation_diagram(scene, journal=journal, **options)
+    assert first.to_dict() == clean.to_dict() and first.resumed == 0
+    lines = journal.read_text().splitlines(keepends=True)
+    assert len(lines) == 10
+    journal.write_text("".join(lines[:5]) + lines[5][:100])
+    d = rbcstab.bifurcation_diagram(scene, journal=str(journal), **options)
+    assert d.resumed == 4
+    assert len(d.rejected) == 1 and d.rejected[0].startswith(f"{journal}:6: torn last record")
+    assert d.to_dict() == clean.to_dict()
+    cli("continue", "--kind", "modal", "--parameter", "C", "--min", 0.01, "--max", 0.1, "--lambda", 1, "--B", 1,
+        "--L", 6, "--diagram", 1, "--save", tmp_path / "c.json")
+    from_cli = rbcstab.bifurcation_diagram(scene, journal=tmp_path / "c.json.journal", **options)
+    assert from_cli.resumed == 9 and from_cli.to_dict() == clean.to_dict()
+    with pytest.raises(ValueError, match="another configuration"):
+        rbcstab.bifurcation_diagram(scene, journal=journal, **dict(options, depth=2))
+    with pytest.raises(TypeError, match="journal"):
+        rbcstab.bifurcation_diagram(scene, journal=5, **options)
+
+
 def test_bifurcation_diagram_says_the_onset_hbs_are_rotating_waves_of_the_bp_branch():
     # The full model's l = 3 onset (L = 4): the BP's two halves are followed; its three HBs (m = 1, 2, 3 at the same
     # C) are listed as rotating waves of the BP's branch (branch_to, label_to: that branch and the BP), not failures.

@@ -725,6 +725,97 @@ TEST(OrbitTree, OrbitBranchJoiningTwoHopfPointsIsFollowedOnce) {
   EXPECT_EQ(duplicate, 1);
 }
 
+// TwoHopfs seen through x = D(p) u, D(p) = diag(1.5 - p / 2, 1.5 + p / 2): diag(2, 1) at the HB p = -1 and diag(1, 2)
+// at p = 1, so the two HB switches pick different phase components (the Hopf vector's largest: x_0, then x_1) and
+// build orbit problems that represent the one joining family differently.
+class TwoHopfsTurning final : public AutonomousSystem {
+ public:
+  static Eigen::Vector2d d(double p) { return {1.5 - p / 2, 1.5 + p / 2}; }
+  Eigen::Index dimension() const override { return 2; }
+  void rhs(std::span<const double> x, double p, std::span<double> f) const override {
+    const Eigen::Vector2d u(x[0] / d(p)[0], x[1] / d(p)[1]);
+    const Eigen::Vector2d g = g_of(u, p);
+    f[0] = d(p)[0] * g[0];
+    f[1] = d(p)[1] * g[1];
+  }
+  void jacobian(std::span<const double> x, double p, Eigen::MatrixXd& J) const override {
+    const Eigen::Vector2d u(x[0] / d(p)[0], x[1] / d(p)[1]);
+    const Eigen::Matrix2d D = d(p).asDiagonal();
+    J = D * jg(u, p) * D.inverse();
+  }
+  void parameter_derivative(std::span<const double> x, double p, std::span<double> fp) const override {
+    // f = D g(D^-1 x, p): f_p = D' g + D (J_g du/dp + g_p), du/dp = -D^-1 D' u, g_p = -2 p u.
+    const Eigen::Vector2d u(x[0] / d(p)[0], x[1] / d(p)[1]);
+    const Eigen::Matrix2d D = d(p).asDiagonal(), Dp = Eigen::Vector2d(-0.5, 0.5).asDiagonal();
+    const Eigen::Vector2d r = Dp * g_of(u, p) + D * (jg(u, p) * (-D.inverse() * Dp * u) - 2 * p * u);
+    fp[0] = r[0];
+    fp[1] = r[1];
+  }
+
+ private:
+  static Eigen::Vector2d g_of(const Eigen::Vector2d& u, double p) {
+    const double a = 1 - p * p - u.squaredNorm();
+    return {a * u[0] - TwoHopfs::kW * u[1], TwoHopfs::kW * u[0] + a * u[1]};
+  }
+  static Eigen::Matrix2d jg(const Eigen::Vector2d& u, double p) {
+    const double a = 1 - p * p - u.squaredNorm();
+    Eigen::Matrix2d J;
+    J << a, -TwoHopfs::kW, TwoHopfs::kW, a;
+    return J - 2 * u * u.transpose();
+  }
+};
+
+// The joining family is found once although the second HB's start is in another phase representation (extremum of
+// x_1, not x_0): it is mapped onto the first problem's (re-phased) before it is compared, and marked a duplicate.
+TEST(OrbitTree, JoiningFamilyInAnotherPhaseRepresentationIsFollowedOnce) {
+  const TwoHopfsTurning sys;
+  const AutonomousEquilibriumProblem eq(sys);
+  ContinuationOptions co;
+  co.p_min = -2;
+  co.p_max = 2;
+  co.max_step = 0.2;
+  const Branch e = continue_branch(eq, Eigen::Vector2d::Zero(), -2, co);
+  std::vector<const SpecialPoint*> hbs;
+  for (const SpecialPoint& sp : e.special_points)
+    if (sp.type == SpecialPointType::HB) hbs.push_back(&sp);
+  ASSERT_EQ(hbs.size(), 2u);
+  OrbitOptions oo;
+  oo.segments = 4;
+  // The set-up: the two switches pick components 0 and 1.
+  OrbitSwitchOptions so;
+  so.orbit = oo;
+  so.continuation = co;
+  int components[2] = {-1, -1};
+  for (std::size_t k = 0; k < 2; ++k) {
+    const OrbitSwitchStart s = orbit_switch_start(eq, e, *hbs[k], so);
+    ASSERT_TRUE(s.found) << s.message;
+    components[k] = dynamic_cast<const AutonomousOrbitProblem&>(*s.problem).phase_component();
+  }
+  EXPECT_NE(components[0], components[1]);
+  TreeOptions o;
+  o.depth = 2;
+  o.switching.continuation = co;
+  o.switching.continuation.max_points = 200;
+  o.switchers = default_switchers(oo);
+  const BranchTree t = grow_tree(eq, e, o);
+  ASSERT_EQ(t.branches.size(), 2u) << t.branches.back().branch.message;
+  for (const BranchPoint& pt : t.branches[1].branch.points) {
+    const Eigen::Vector2d u(pt.x[0] / TwoHopfsTurning::d(pt.p)[0], pt.x[1] / TwoHopfsTurning::d(pt.p)[1]);
+    EXPECT_NEAR(u.squaredNorm(), 1 - pt.p * pt.p, 1e-8) << pt.p;
+  }
+  int followed = 0, duplicate = 0;
+  for (const TreeEmanation& m : t.emanations) {
+    if (m.branch != 0) continue;
+    followed += m.outcome == EmanationOutcome::followed;
+    if (m.outcome == EmanationOutcome::duplicate) {
+      ++duplicate;
+      EXPECT_EQ(m.branch_to, 1);
+    }
+  }
+  EXPECT_EQ(followed, 1);
+  EXPECT_EQ(duplicate, 1);
+}
+
 // A double Hopf point in the tree: not followed, the reason named (both pairs), and not a failure.
 TEST(OrbitTree, MultipleHopfIsListedWithTheReason) {
   const DoubleHopf sys;

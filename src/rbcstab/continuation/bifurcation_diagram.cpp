@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <iomanip>
+#include <memory>
 #include <sstream>
 #include <utility>
 #include <variant>
@@ -13,11 +14,13 @@
 #include "rbcstab/continuation/branch_file.hpp"
 #include "rbcstab/continuation/branch_io.hpp"
 #include "rbcstab/continuation/detail/branch_labels.hpp"
+#include "rbcstab/continuation/detail/diagram_journal.hpp"
 #include "rbcstab/continuation/detail/scene_problem.hpp"
 #include "rbcstab/continuation/detail/scene_switch.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/io/files.hpp"
 #include "rbcstab/io/json.hpp"
+#include "rbcstab/io/record_journal.hpp"
 
 namespace rbcstab {
 
@@ -108,8 +111,31 @@ BifurcationDiagram bifurcation_diagram(const BifurcationDiagramSpec& spec) {
   }
   BifurcationDiagram d;
   d.depth = spec.depth;
-  d.start = continue_scene(start_spec);
+  std::unique_ptr<detail::DiagramJournal> journal;
+  if (!spec.journal.empty()) {
+    journal = std::make_unique<detail::DiagramJournal>(spec.journal, diagram_config_hash(spec));
+    d.journal = spec.journal;
+    d.rejected = journal->rejected();
+  }
+  const auto stopped = [&] { return spec.stop && spec.stop->load(); };
+  if (const detail::JournaledBranch* j = journal ? journal->find(1) : nullptr) {
+    d.start = j->run;
+    // What a branch file cannot hold, as given (continue_scene keeps them as they are).
+    d.start.spec.engine.on_progress = spec.start.engine.on_progress;
+    d.start.spec.monitors = spec.start.monitors;
+    ++d.resumed;
+  } else {
+    d.start = continue_scene(start_spec);
+  }
   d.start.spec.engine.stop = spec.start.engine.stop;  // the run as asked (a branch file stores no function)
+  const bool started = d.start.start.converged && !d.start.start.refused;
+  // Branch 1 keeps continue_scene's measures and labels; the others are numbered after it.
+  DiagramBranch first;
+  first.branch = d.start.branch;
+  d.branches.push_back(std::move(first));
+  int next = d.start.branch.last_label() + 1;
+  if (journal && started && d.resumed == 0 && !stopped())
+    journal->append(1, diagram_branch_file(d, 0), -1, false, next);
   const auto sp = detail::make_problem(d.start.spec, d.start.problem_scene);
   TreeOptions o;
   o.depth = spec.depth;
@@ -134,17 +160,8 @@ BifurcationDiagram bifurcation_diagram(const BifurcationDiagramSpec& spec) {
   o.events = [&](const Eigen::VectorXd& x0, double p0) {
     return detail::monitor_events(*sp, names, d.start.spec.monitors, x0, p0);
   };
-  const bool started = d.start.start.converged && !d.start.start.refused;
-  BranchTree tree = started ? grow_tree(sp->problem(), d.start.branch.branch, o) : BranchTree{};
-  if (!started) tree.branches.push_back({d.start.branch.branch, nullptr, -1, -1, 0, 0});
-  d.interrupted = tree.interrupted || (spec.stop && spec.stop->load());
-  // Branch 1 keeps continue_scene's measures and labels; the others are numbered after it.
-  DiagramBranch first;
-  first.branch = d.start.branch;
-  d.branches.push_back(std::move(first));
-  int next = d.start.branch.last_label() + 1;
-  for (std::size_t k = 1; k < tree.branches.size(); ++k) {
-    TreeBranch& t = tree.branches[k];
+  // Branch k + 1 measured and labelled after the ones before it, as it comes (grow_tree's order).
+  const auto add_branch = [&](std::size_t k, const TreeBranch& t, MeasuredBranch m) {
     DiagramBranch b;
     b.number = static_cast<int>(k) + 1;
     b.parent = t.parent + 1;
@@ -152,9 +169,41 @@ BifurcationDiagram bifurcation_diagram(const BifurcationDiagramSpec& spec) {
     b.depth = t.depth;
     b.parent_label =
         d.branches[static_cast<std::size_t>(t.parent)].branch.special_labels[static_cast<std::size_t>(t.parent_point)];
-    b.branch = detail::measure_branch(*sp, d.start, std::move(t.branch));
-    next = detail::label_branch(b.branch, d.start.spec.label_every, next);
+    b.branch = std::move(m);
     d.branches.push_back(std::move(b));
+  };
+  if (journal) {
+    o.recall = [&](std::size_t k, TreeBranch& t) {
+      const detail::JournaledBranch* j = journal->find(static_cast<int>(k) + 1);
+      if (!j || d.branches.size() != k) return false;
+      if (j->parent != t.parent + 1 || j->parent_point != t.parent_point || j->side != t.side || j->depth != t.depth) {
+        d.rejected.push_back(journal->path() + ": branch " + std::to_string(k + 1) + " was recorded from BR " +
+                             std::to_string(j->parent) + " side " + std::to_string(j->side) +
+                             ", this run reaches it from BR " + std::to_string(t.parent + 1) + " side " +
+                             std::to_string(t.side) + "; not used, the branch is recomputed");
+        return false;
+      }
+      t.branch = j->run.branch.branch;
+      t.closed = j->closed;
+      add_branch(k, t, j->run.branch);
+      next = j->next_label;
+      ++d.resumed;
+      return true;
+    };
+    o.on_followed = [&](std::size_t k, const TreeBranch& t) {
+      if (d.branches.size() != k) return;
+      add_branch(k, t, detail::measure_branch(*sp, d.start, t.branch));
+      next = detail::label_branch(d.branches.back().branch, d.start.spec.label_every, next);
+      journal->append(static_cast<int>(k) + 1, diagram_branch_file(d, k), t.parent_point, t.closed, next);
+    };
+  }
+  BranchTree tree = started ? grow_tree(sp->problem(), d.start.branch.branch, o) : BranchTree{};
+  if (!started) tree.branches.push_back({d.start.branch.branch, nullptr, -1, -1, 0, 0});
+  d.interrupted = tree.interrupted || stopped();
+  for (std::size_t k = d.branches.size(); k < tree.branches.size(); ++k) {
+    TreeBranch& t = tree.branches[k];
+    add_branch(k, t, detail::measure_branch(*sp, d.start, std::move(t.branch)));
+    next = detail::label_branch(d.branches.back().branch, d.start.spec.label_every, next);
   }
   for (const TreeEmanation& t : tree.emanations) {
     const MeasuredBranch& on = d.branches[static_cast<std::size_t>(t.branch)].branch;
@@ -176,6 +225,12 @@ BifurcationDiagram bifurcation_diagram(const BifurcationDiagramSpec& spec) {
   return d;
 }
 
+std::string diagram_config_hash(const BifurcationDiagramSpec& spec) {
+  return fnv1a_hex(branch_spec_json(spec.start).dump() + "\ndepth " + std::to_string(spec.depth) + " amplitude " +
+                   exact(spec.amplitude) + " duplicate_tol " + exact(spec.duplicate_tol) + " max_branches " +
+                   std::to_string(spec.max_branches) + "\n");
+}
+
 RunOutcome outcome(const BifurcationDiagram& d) {
   RunOutcome o = outcome(d.start);
   if (!o.has_output) return o;
@@ -187,8 +242,10 @@ RunOutcome outcome(const BifurcationDiagram& d) {
     if (e.outcome == EmanationOutcome::failed)
       add("switching at label " + std::to_string(e.label) + " (side " + side_text(e.side) + ") failed: " + e.message);
   if (!d.complete())
-    add(d.interrupted ? "interrupted: the diagram is incomplete (it does not resume: run it again)"
-                      : "max_branches reached: the diagram is incomplete");
+    add(!d.interrupted ? "max_branches reached: the diagram is incomplete"
+        : d.journal.empty()
+            ? "interrupted: the diagram is incomplete (no journal: run it again to recompute it)"
+            : "interrupted: the diagram is incomplete (run it again to resume from the journal '" + d.journal + "')");
   return o;
 }
 

@@ -33,6 +33,11 @@ struct BifurcationDiagramSpec {
   double duplicate_tol = kDefaultDuplicateTol;  // same point / same branch (branch_tree.hpp)
   std::size_t max_branches = kDefaultMaxBranches;
   std::function<void(std::size_t done, std::size_t pending)> on_branch = {};  // progress, after each branch
+  // A checkpoint journal (empty: none): each branch continued to its end is recorded as soon as it ends; run again
+  // with the same journal, the recorded branches are read back instead of continued and the rest goes on, to the
+  // same diagram. A journal of another configuration (diagram_config_hash) is refused; a torn or edited record
+  // is reported (BifurcationDiagram::rejected) and its branch continued again.
+  std::string journal = {};
   // Ctrl-C (core/interrupt.hpp): the rest is marked interrupted. Last: a front end sets start, depth and stop.
   const std::atomic<bool>* stop = nullptr;
   void validate() const;  // throws InvalidArgument naming the field (and as BranchSpec::validate)
@@ -67,11 +72,18 @@ struct BifurcationDiagram {
   std::vector<DiagramBranch> branches;  // [0]: the start branch
   std::vector<DiagramEmanation> emanations;
   bool interrupted = false;
+  std::string journal;                // the journal it was run with; empty: none
+  std::size_t resumed = 0;            // branches read back from the journal instead of continued
+  std::vector<std::string> rejected;  // "journal:line: why" of each record dropped (its branch continued again)
   // No branch point left unfollowed for want of time or room (interrupted, branch_limit): the depth's tree.
   bool complete() const;
 };
 
 BifurcationDiagram bifurcation_diagram(const BifurcationDiagramSpec& spec);
+// FNV-1a hash (16 hex digits) of everything that decides the diagram: the start spec as its branch file holds it
+// (scene, kind, parameter, engine and orbit options, monitors), depth, amplitude, duplicate_tol, max_branches.
+// Not the journal, the progress or the stop (a function monitor is not in it: keep it the same on resuming).
+std::string diagram_config_hash(const BifurcationDiagramSpec& spec);
 
 // How it ended, for a front end (scene_run.hpp): no output when the start failed; a failure when the diagram is
 // incomplete (interrupted, max_branches), a branch stopped before a normal end or a switch failed.

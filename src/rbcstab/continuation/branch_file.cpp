@@ -78,32 +78,6 @@ json engine_json(const ContinuationOptions& e) {
   return j;
 }
 
-json spec_json(const BranchSpec& s) {
-  SceneFile sf;
-  sf.scene = s.scene;
-  json j{{"scene", to_toml(sf)},
-         {"kind", to_string(s.kind)},
-         {"parameter", to_string(s.parameter)},
-         {"engine", engine_json(s.engine)},
-         {"relax_T", s.relax_T},
-         {"relax_tol", s.relax_tol},
-         {"relax_max_periods", s.relax_max_periods},
-         {"allow_unstable_start", s.allow_unstable_start},
-         {"orbit",
-          {{"segments", s.orbit.segments},
-           {"rtol", s.orbit.rtol},
-           {"atol", s.orbit.atol},
-           {"samples_per_segment", s.orbit.samples_per_segment}}},
-         {"label_every", s.label_every},
-         {"switch_at_bp", s.switch_at_bp},
-         {"start_state", s.start_state ? vector_json(*s.start_state) : json(nullptr)}};
-  if (!s.start_state) j["start_state_reason"] = "none: the start is computed from the scene";
-  if (s.start_parameter) j["start_parameter"] = *s.start_parameter;
-  for (const Monitor& m : s.monitors)  // a function (Python's) cannot be saved: a restart goes without it
-    if (!m.function) j[m.stop ? "stop_at" : "monitor"].push_back(monitor_text(m));
-  return j;
-}
-
 json special_point_json(const SpecialPoint& sp) {
   json out = {{"type", to_string(sp.type)},
               {"name", sp.name},
@@ -510,6 +484,32 @@ void check_labels(const Reader& rd, const ContinuationRun& run) {
 
 }  // namespace
 
+json branch_spec_json(const BranchSpec& s) {
+  SceneFile sf;
+  sf.scene = s.scene;
+  json j{{"scene", to_toml(sf)},
+         {"kind", to_string(s.kind)},
+         {"parameter", to_string(s.parameter)},
+         {"engine", engine_json(s.engine)},
+         {"relax_T", s.relax_T},
+         {"relax_tol", s.relax_tol},
+         {"relax_max_periods", s.relax_max_periods},
+         {"allow_unstable_start", s.allow_unstable_start},
+         {"orbit",
+          {{"segments", s.orbit.segments},
+           {"rtol", s.orbit.rtol},
+           {"atol", s.orbit.atol},
+           {"samples_per_segment", s.orbit.samples_per_segment}}},
+         {"label_every", s.label_every},
+         {"switch_at_bp", s.switch_at_bp},
+         {"start_state", s.start_state ? vector_json(*s.start_state) : json(nullptr)}};
+  if (!s.start_state) j["start_state_reason"] = "none: the start is computed from the scene";
+  if (s.start_parameter) j["start_parameter"] = *s.start_parameter;
+  for (const Monitor& m : s.monitors)  // a function (Python's) cannot be saved: a restart goes without it
+    if (!m.function) j[m.stop ? "stop_at" : "monitor"].push_back(monitor_text(m));
+  return j;
+}
+
 json branch_file_json(const ContinuationRun& run) {
   json j = to_json(run);
   if (const SceneBranch* r = std::get_if<SceneBranch>(&run)) {
@@ -519,13 +519,13 @@ json branch_file_json(const ContinuationRun& run) {
       j["switched_branch"]["bp_number"] = r->switched->bp_number;
       j["switched_branch"]["message"] = r->switched->message;
     }
-    j["spec"] = spec_json(r->spec);
+    j["spec"] = branch_spec_json(r->spec);
     j["start"] = to_json(r->start, is_orbit(r->spec.kind));
   } else {
     const SceneCurve& c = std::get<SceneCurve>(run);
     add_states(j, c.curve);
     add_states(j["one_parameter_branch"], c.one.branch);
-    j["spec"] = spec_json(c.one.spec);
+    j["spec"] = branch_spec_json(c.one.spec);
     j["start"] = to_json(c.one.start, is_orbit(c.one.spec.kind));
     j["curve_spec"] = {{"type", to_string(c.spec.type)},
                        {"parameter2", to_string(*c.spec.parameter2)},
@@ -550,10 +550,15 @@ void save_branch(const std::string& path, const ContinuationRun& run) {
 }
 
 ContinuationRun parse_branch_file(const std::string& text, const std::string& source, const std::string& name) {
-  const Reader rd(name, source);
   const json j = json::parse(text, nullptr, false);
   if (j.is_discarded())
-    rd.fail("it is not JSON (a truncated or corrupted file?): " + std::to_string(text.size()) + " bytes");
+    Reader(name, source)
+        .fail("it is not JSON (a truncated or corrupted file?): " + std::to_string(text.size()) + " bytes");
+  return parse_branch_json(j, source, name);
+}
+
+ContinuationRun parse_branch_json(const nlohmann::json& j, const std::string& source, const std::string& name) {
+  const Reader rd(name, source);
   if (!j.is_object() || !j.contains("format") || j.at("format") != kBranchFileFormat)
     rd.fail(std::string("it has no \"format\": \"") + kBranchFileFormat + "\" (written by rbcstab continue --save?)");
   const long long version = rd.integer(j, "version", "");

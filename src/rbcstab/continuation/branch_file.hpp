@@ -28,6 +28,8 @@ inline constexpr const char* kBranchFileFormat = "rbcstab-branch";
 inline constexpr int kBranchFileVersion = 1;
 
 nlohmann::json branch_file_json(const ContinuationRun& run);
+// The file's "spec": everything of a BranchSpec but its functions (progress, stop, a function monitor).
+nlohmann::json branch_spec_json(const BranchSpec& spec);
 // Writes branch_file_json(run) atomically (io/files.hpp); throws std::runtime_error naming the path.
 void save_branch(const std::string& path, const ContinuationRun& run);
 
@@ -36,6 +38,9 @@ void save_branch(const std::string& path, const ContinuationRun& run);
 // throws InvalidArgument(name, "name = 'source' ...") naming the key and its value: a file that is not a
 // branch file, a truncated file, a newer version.
 ContinuationRun parse_branch_file(const std::string& text, const std::string& source,
+                                  const std::string& name = "restart");
+// The same from the file's JSON, parsed already (a diagram journal's record holds it).
+ContinuationRun parse_branch_json(const nlohmann::json& file, const std::string& source,
                                   const std::string& name = "restart");
 ContinuationRun load_branch(const std::string& path, const std::string& name = "restart");
 

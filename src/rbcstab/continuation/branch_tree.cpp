@@ -7,6 +7,7 @@
 #include <complex>
 #include <limits>
 #include <memory>
+#include <span>
 #include <string>
 #include <utility>
 #include <vector>
@@ -50,6 +51,51 @@ bool same_equations(const ContinuationProblem& a, const ContinuationProblem& b) 
   if (aa && ab) return same_shooting(*aa, *ab) && aa->phase_component() == ab->phase_component();
   const auto *fa = dynamic_cast<const PeriodicOrbitProblem*>(&a), *fb = dynamic_cast<const PeriodicOrbitProblem*>(&b);
   return fa && fb && same_shooting(*fa, *fb) && fa->periods() == fb->periods();
+}
+
+// Two orbit problems on one system with the same shooting that may represent one orbit differently: another phase
+// component, or the same one (an orbit has two extrema of each component).
+const AutonomousOrbitProblem* other_representation(const ContinuationProblem& a, const ContinuationProblem& b) {
+  const auto *aa = dynamic_cast<const AutonomousOrbitProblem*>(&a),
+             *ab = dynamic_cast<const AutonomousOrbitProblem*>(&b);
+  return aa && ab && same_shooting(*aa, *ab) ? aa : nullptr;
+}
+
+// The orbit X of problem b at p in problem a's representation: each point of the orbit where a's phase condition
+// f_k(x, p) = 0 holds (a sign change among kRephaseSamples states along it, the nearer one taken), its segment
+// starts sampled from there (shooting_guess) and corrected by Newton on a's equations at the same p. The samples
+// bound the start's phase error by T / kRephaseSamples, well inside Newton's reach for a smooth orbit.
+constexpr int kRephaseSamples = 64;
+std::vector<Eigen::VectorXd> rephased(const AutonomousOrbitProblem& a, const AutonomousOrbitProblem& b,
+                                      const Eigen::VectorXd& X, double p) {
+  const Eigen::Index n = a.system().dimension();
+  const double T = AutonomousOrbitProblem::period(X);
+  std::vector<Eigen::VectorXd> out;
+  if (!(std::isfinite(T) && T > 0)) return out;
+  OrbitOptions fine_options = a.options();
+  fine_options.segments = kRephaseSamples;
+  const AutonomousOrbitProblem fine(a.system(), a.phase_component(), fine_options);
+  const Eigen::VectorXd S = fine.shooting_guess(b.state_at_zero(X), T, p);
+  std::vector<double> g(kRephaseSamples);
+  Eigen::VectorXd f(n);
+  for (int j = 0; j < kRephaseSamples; ++j) {
+    a.system().rhs(std::span<const double>(S.data() + j * n, static_cast<std::size_t>(n)), p,
+                   std::span<double>(f.data(), static_cast<std::size_t>(n)));
+    g[static_cast<std::size_t>(j)] = f[a.phase_component()];
+  }
+  Eigen::VectorXd along = Eigen::VectorXd::Zero(a.dimension() + 1);
+  along[a.dimension()] = 1;  // Newton at fixed p: on the hyperplane p = const
+  for (int j = 0; j < kRephaseSamples; ++j) {
+    const int next = (j + 1) % kRephaseSamples;
+    const double g0 = g[static_cast<std::size_t>(j)], g1 = g[static_cast<std::size_t>(next)];
+    if (g0 != 0 && (g0 > 0) == (g1 > 0)) continue;
+    const int at = std::abs(g0) <= std::abs(g1) ? j : next;
+    const Eigen::VectorXd x0 = S.segment(at * n, n);
+    Eigen::VectorXd Y = packed(a.shooting_guess(x0, T, p), p);
+    const Eigen::VectorXd base = Y;
+    if (newton_on_hyperplane(a, base, along, 0.0, 1e-12, 30, Y)) out.push_back(std::move(Y));
+  }
+  return out;
 }
 
 std::vector<EmanatingStart> bp_switcher(const ContinuationProblem& problem, const Branch& branch,
@@ -100,6 +146,42 @@ std::string no_switcher_text(SpecialPointType type) {
   if (type == SpecialPointType::NS)
     return "switching at NS is not available: an NS point starts an invariant torus, and tori are not continued";
   return "switching at " + std::string(to_string(type)) + " is not available";
+}
+
+constexpr const char* kClosedMessage = "closed: back at its first point";
+
+// One emanating branch continued from its start, away from its point, with the tree's engine options and events.
+Branch follow(const ContinuationProblem& child_problem, const EmanatingStart& s, const TreeOptions& options) {
+  ContinuationOptions o = options.switching.continuation;
+  o.direction = s.away;
+  if (options.events)
+    for (UserEvent& e : options.events(s.x, s.p)) o.events.push_back(std::move(e));
+  // A closed branch (a loop through BPs) comes back through its first point: it ends there instead of going
+  // round to max_points. Its chord passes within the sagitta bound (a tangent turn <= 60 degrees per step)
+  // of the first point, once it has gone farther than the switching amplitude.
+  struct Loop {
+    Eigen::VectorXd X0, prev;
+    double travelled = 0;
+    bool closed = false;
+  };
+  const auto loop = std::make_shared<Loop>(Loop{packed(s.x, s.p), packed(s.x, s.p)});
+  const double far = 4 * options.switching.amplitude;
+  const auto returned = [loop, far](const Eigen::VectorXd& x, double p) {
+    const Eigen::VectorXd X = packed(x, p), d = X - loop->prev;
+    const double len = d.norm();
+    const double at = len > 0 ? std::clamp(d.dot(loop->X0 - loop->prev) / (len * len), 0.0, 1.0) : 0.0;
+    loop->closed = loop->closed || (loop->travelled > far && (loop->prev + at * d - loop->X0).norm() <= 0.15 * len);
+    loop->travelled += len;
+    loop->prev = X;
+    return loop->closed;
+  };
+  auto user_stop = o.stop;
+  o.stop = [flag = options.stop, user_stop, returned](const Eigen::VectorXd& x, double p) {
+    return (flag && flag->load()) || returned(x, p) || (user_stop && user_stop(x, p));
+  };
+  Branch child = continue_branch(child_problem, s.x, s.p, o);
+  if (loop->closed) child.message = kClosedMessage;
+  return child;
 }
 
 }  // namespace
@@ -201,9 +283,15 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
   const auto covered = [&](int from, const EmanatingStart& s, const ContinuationProblem& pr) {
     const Eigen::VectorXd X = packed(s.x, s.p);
     for (std::size_t k = 0; k < tree.branches.size(); ++k) {
-      if (static_cast<int>(k) == from || !same_equations(problem_of(static_cast<int>(k)), pr)) continue;
-      if (lies_on(pr, tree.branches[k].branch, X, options.duplicate_tol))
+      if (static_cast<int>(k) == from) continue;
+      const ContinuationProblem& earlier = problem_of(static_cast<int>(k));
+      if (same_equations(earlier, pr) && lies_on(pr, tree.branches[k].branch, X, options.duplicate_tol))
         return std::pair{EmanationOutcome::duplicate, static_cast<int>(k)};
+      // The same orbit in another phase representation: compared in the earlier problem's.
+      if (const AutonomousOrbitProblem* a = other_representation(earlier, pr))
+        for (const Eigen::VectorXd& Y : rephased(*a, dynamic_cast<const AutonomousOrbitProblem&>(pr), s.x, s.p))
+          if (lies_on(*a, tree.branches[k].branch, Y, options.duplicate_tol))
+            return std::pair{EmanationOutcome::duplicate, static_cast<int>(k)};
     }
     for (const auto& g : options.symmetries) {
       const Eigen::VectorXd gX = packed(g(s.x), s.p);
@@ -272,44 +360,25 @@ BranchTree grow_tree(const ContinuationProblem& root_problem, Branch root, const
           mark(b, j, s.side, outcome, k);
           continue;
         }
-        ContinuationOptions o = options.switching.continuation;
-        o.direction = s.away;
-        if (options.events)
-          for (UserEvent& e : options.events(s.x, s.p)) o.events.push_back(std::move(e));
-        // A closed branch (a loop through BPs) comes back through its first point: it ends there instead of going
-        // round to max_points. Its chord passes within the sagitta bound (a tangent turn <= 60 degrees per step)
-        // of the first point, once it has gone farther than the switching amplitude.
-        struct Loop {
-          Eigen::VectorXd X0, prev;
-          double travelled = 0;
-          bool closed = false;
-        };
-        const auto loop = std::make_shared<Loop>(Loop{packed(s.x, s.p), packed(s.x, s.p)});
-        const double far = 4 * options.switching.amplitude;
-        const auto returned = [loop, far](const Eigen::VectorXd& x, double p) {
-          const Eigen::VectorXd X = packed(x, p), d = X - loop->prev;
-          const double len = d.norm();
-          const double at = len > 0 ? std::clamp(d.dot(loop->X0 - loop->prev) / (len * len), 0.0, 1.0) : 0.0;
-          loop->closed =
-              loop->closed || (loop->travelled > far && (loop->prev + at * d - loop->X0).norm() <= 0.15 * len);
-          loop->travelled += len;
-          loop->prev = X;
-          return loop->closed;
-        };
-        auto user_stop = o.stop;
-        o.stop = [flag = options.stop, user_stop, returned](const Eigen::VectorXd& x, double p) {
-          return (flag && flag->load()) || returned(x, p) || (user_stop && user_stop(x, p));
-        };
-        Branch child = continue_branch(child_problem, s.x, s.p, o);
-        if (loop->closed) child.message = "closed: back at its first point";
-        if (stopped()) {
-          tree.interrupted = true;
-          child.message = "interrupted after " + std::to_string(child.points.size()) + " points";
+        const std::size_t k = tree.branches.size();
+        TreeBranch t{{},     s.problem ? s.problem : tree.branches[i].problem,
+                     b,      static_cast<int>(j),
+                     s.side, tree.branches[i].depth + 1,
+                     false};
+        if (!(options.recall && options.recall(k, t))) {
+          t.branch = follow(child_problem, s, options);
+          t.closed = t.branch.message == kClosedMessage;
+          if (stopped()) {
+            tree.interrupted = true;
+            t.branch.message = "interrupted after " + std::to_string(t.branch.points.size()) + " points";
+          } else if (options.on_followed) {
+            options.on_followed(k, t);
+          }
         }
-        tree.branches.push_back({std::move(child), s.problem ? s.problem : tree.branches[i].problem, b,
-                                 static_cast<int>(j), s.side, tree.branches[i].depth + 1, loop->closed});
-        if (loop->closed) closed_sibling = static_cast<int>(tree.branches.size()) - 1;
-        mark(b, j, s.side, EmanationOutcome::followed, static_cast<int>(tree.branches.size()) - 1);
+        const bool closed = t.closed;
+        tree.branches.push_back(std::move(t));
+        if (closed) closed_sibling = static_cast<int>(k);
+        mark(b, j, s.side, EmanationOutcome::followed, static_cast<int>(k));
         if (options.on_branch) options.on_branch(tree.branches.size(), tree.branches.size() - i - 1);
       }
     }

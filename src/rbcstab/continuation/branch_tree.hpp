@@ -123,8 +123,13 @@ struct TreeOptions {
   // Events of an emanating branch (monitors), built at its first point.
   std::function<std::vector<UserEvent>(const Eigen::VectorXd& x0, double p0)> events;
   const std::atomic<bool>* stop = nullptr;  // set: stop (between points) and mark the rest interrupted
-  // After each branch is continued: branches so far, branches known to be pending.
+  // After each branch is continued (or recalled): branches so far, branches known to be pending.
   std::function<void(std::size_t done, std::size_t pending)> on_branch;
+  // Resume (a journal): before branch k (>= 1) is continued, recall(k, b) with b's problem, parent, parent_point,
+  // side and depth set may fill b.branch and b.closed from an earlier run and return true: the branch is not
+  // continued again. on_followed(k, b) is called after branch k was continued to its end (not when stopped).
+  std::function<bool(std::size_t k, TreeBranch& b)> recall;
+  std::function<void(std::size_t k, const TreeBranch& b)> on_followed;
   void validate() const;  // throws InvalidArgument naming the field
 };
 

@@ -2,7 +2,6 @@
 
 #include <charconv>
 #include <cmath>
-#include <cstdint>
 #include <sstream>
 #include <vector>
 
@@ -10,30 +9,8 @@
 
 namespace rbcstab {
 
-std::string exact(double v) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
-
-std::string fnv1a_hex(std::string_view text) {
-  std::uint64_t h = 14695981039346656037ull;  // the FNV-1a 64 offset basis
-  for (unsigned char c : text) {
-    h ^= c;
-    h *= 1099511628211ull;
-  }
-  char buf[16];
-  static const char* hex = "0123456789abcdef";
-  for (int k = 15; k >= 0; --k, h >>= 4) buf[k] = hex[h & 15];
-  return std::string(buf, 16);
-}
-
 namespace {
 constexpr std::size_t kFields = 16;
-constexpr std::string_view kChecksumMark = " *";
-constexpr std::size_t kChecksumDigits = 16;
 
 // A non-finite value (a failed point's growth or sigma_final) is "-": the journal never holds "nan".
 std::string number_text(double v) { return std::isfinite(v) ? exact(v) : "-"; }
@@ -59,8 +36,7 @@ std::string point_to_line(const PointResult& p, const std::string& config_hash) 
      << to_string(p.status) << ' ' << number_text(p.t_reached) << ' ' << p.steps << ' ' << p.failed_steps << ' '
      << p.rhs_evaluations << ' ' << number_text(p.seconds) << ' ' << number_text(p.terminated_at) << ' '
      << number_text(p.margin) << " |" << reason;
-  const std::string body = ss.str();
-  return body + std::string(kChecksumMark) + fnv1a_hex(body) + '\n';
+  return seal_record(ss.str());
 }
 
 FieldError point_value_error(const PointResult& p, const DiagramSpec& spec, int L) {
@@ -88,16 +64,9 @@ FieldError point_value_error(const PointResult& p, const DiagramSpec& spec, int 
 }
 
 ParsedPoint parse_point_line(const std::string& line, const std::string& config_hash, const DiagramSpec& spec, int L) {
-  std::string text = line;
-  if (text.empty() || text.back() != '\n') return {std::nullopt, "incomplete record (no end of line)"};
-  text.pop_back();
-  const std::size_t tail = kChecksumMark.size() + kChecksumDigits;
-  if (text.size() < tail || text.compare(text.size() - tail, kChecksumMark.size(), kChecksumMark) != 0)
-    return {std::nullopt, "no checksum at the end of the record"};
-  const std::string body = text.substr(0, text.size() - tail);
-  const std::string sum = text.substr(text.size() - kChecksumDigits);
-  if (fnv1a_hex(body) != sum)
-    return {std::nullopt, "checksum " + sum + " does not match the record (it was edited or corrupted)"};
+  UnsealedRecord sealed = unseal_record(line);
+  if (!sealed.body) return {std::nullopt, sealed.error};
+  const std::string& body = *sealed.body;
   const auto bar = body.find(" |");
   if (bar == std::string::npos) return {std::nullopt, "malformed record (no ' |' before the reason)"};
   std::istringstream ss(body.substr(0, bar));

@@ -6,6 +6,7 @@
 #include <string>
 #include <string_view>
 
+#include "rbcstab/io/record_journal.hpp"  // exact, fnv1a_hex, seal_record
 #include "rbcstab/sweep/diagram.hpp"
 
 namespace rbcstab {
@@ -14,7 +15,7 @@ namespace rbcstab {
 //  <steps> <failed_steps> <rhs_evaluations> <seconds> <terminated_at> <margin> |<reason> *<checksum>\n": the reason is
 //  free
 // text up to the checksum (newlines replaced), a non-finite number is written "-" (never "nan"), and
-// the checksum is fnv1a_hex of everything before " *", so an edited or spliced record is detected.
+// the checksum is seal_record's (io/record_journal.hpp), so an edited or spliced record is detected.
 std::string point_to_line(const PointResult& p, const std::string& config_hash);
 
 // The point of a record, or why the record is refused (error empty when point is set): a torn or
@@ -39,11 +40,5 @@ struct FieldError {
   bool empty() const { return why.empty(); }
 };
 FieldError point_value_error(const PointResult& p, const DiagramSpec& spec, int L);
-
-// Shortest round-trip text of a double ("inf", "-inf", "nan" for non-finite values).
-std::string exact(double v);
-
-// 16 lower-case hex digits of the FNV-1a 64 hash of text.
-std::string fnv1a_hex(std::string_view text);
 
 }  // namespace rbcstab
