@@ -8,9 +8,11 @@
 #include <cmath>
 #include <complex>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "continuation/autonomised_fixture.hpp"
 #include "continuation/modal_fixtures.hpp"
 #include "continuation/scene_spec_fixture.hpp"
 #include "rbcstab/continuation/autonomous_orbit.hpp"
@@ -20,6 +22,8 @@
 #include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/orbit_switch.hpp"
+#include "rbcstab/continuation/period_map_normal_form.hpp"
+#include "rbcstab/continuation/poincare_map.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
@@ -168,13 +172,123 @@ TEST(HopfSwitch, FoldOfCyclesOnTheSwitchedBranch) {
   EXPECT_EQ(lpc->status, LocationStatus::located);
   EXPECT_NEAR(lpc->p, -0.25, 1e-7);  // the fold of a(rho) = 0 (location tolerance 1e-11 in (X, p), curvature O(1))
   EXPECT_NEAR(sys.x_of(lpc->x.head(2)).squaredNorm(), 0.5, 1e-5);  // rho - 1/2 ~ sqrt(p error)
-  // An autonomous orbit's LPC carries no coefficients: refused with the reason.
+  // The LPC carries the Poincare map's fold: on the section (the radial line through x0*) the orbits lie at
+  // |r - r*| = sqrt(p - p*) / (2 r*) to leading order (rho = 1/2 +- sqrt(p - p*)), amplitude 1 / sqrt 2, side +1.
   ASSERT_TRUE(lpc->normal_form.has_value());
-  EXPECT_EQ(lpc->normal_form->kind, NormalFormKind::fold_of_cycles);
-  EXPECT_EQ(lpc->normal_form->criticality, Criticality::not_computed);
-  EXPECT_NE(lpc->normal_form->note.find("Poincare section"), std::string::npos) << lpc->normal_form->note;
+  const NormalForm& nf = *lpc->normal_form;
+  EXPECT_EQ(nf.kind, NormalFormKind::fold_of_cycles);
+  EXPECT_EQ(nf.criticality, Criticality::not_applicable) << nf.note;
+  EXPECT_NEAR(nf.amplitude, std::sqrt(0.5), 1e-5) << nf.note;  // measured 3e-8 (second differences: ~1e-6)
+  EXPECT_EQ(nf.side, 1);
   expect_closed_form(sys, r.branch, 1, -1, 1.0);
   EXPECT_TRUE(r.branch.points.back().stable);
+}
+
+// The fold of cycles of a(rho) = p + rho - rho^2 (LPC at p* = -1/4, rho* = 1/2) in the skewed coordinates y = A x, at
+// the exact fold orbit through x* = r* (cos phi0, sin phi0, 0): the closed-form orbits near it, r^2 = 1/2 +-
+// sqrt(p - p*), meet the section S through y* (normal f(y*)) where <n, A (r e(phi), 0) - y*> = 0.
+const Eigen::Matrix3d kSkew = (Eigen::Matrix3d() << 1, 0.5, 0.2, 0.3, 1, -0.4, 0.1, 0.2, 2).finished();
+constexpr double kFoldPhase = 0.4, kFoldP = -0.25;
+Eigen::Vector3d fold_orbit_point(double r, double phi) {
+  return kSkew * Eigen::Vector3d(r * std::cos(phi), r * std::sin(phi), 0);
+}
+OrbitOptions four_segment_orbit() {
+  OrbitOptions oo;
+  oo.segments = 4;
+  return oo;
+}
+
+TEST(PoincareMap, DerivativeIsTheProjectedMonodromy) {
+  const HopfNormalForm sys(1, -1, 1.0, kSkew);
+  const AutonomousOrbitProblem pr(sys, 0, four_segment_orbit());
+  const Eigen::VectorXd X = pr.shooting_guess(fold_orbit_point(std::sqrt(0.5), kFoldPhase), kTwoPi, kFoldP);
+  const PoincareMap map(pr, X, kFoldP);
+  ASSERT_EQ(map.dimension(), 2);
+  EXPECT_NEAR((map.basis().transpose() * map.basis() - Eigen::Matrix2d::Identity()).norm(), 0, 1e-14);
+  EXPECT_NEAR((map.basis().transpose() * map.normal()).norm(), 0, 1e-14);
+  Eigen::VectorXd F;
+  map.residual(Eigen::Vector2d::Zero(), kFoldP, F);
+  EXPECT_LT(F.norm(), 1e-10);  // the orbit's point is fixed (rtol 1e-12 over a period)
+  EXPECT_NEAR(map.return_time(Eigen::Vector2d::Zero(), kFoldP), kTwoPi, 1e-10);
+  // DP and P_p against central differences of P (h = 1e-5: truncation ~1e-10, rounding ~1e-12 / h = 1e-7; measured
+  // 4.5e-9 and 8.1e-9 for DP, 7e-8 and 1.7e-7 for P_p): at the orbit and off it, where f at the return is not along n
+  // and the projection I - f n^T / <n, f> matters (the unprojected Q^T M Q is off by 0.089 there).
+  const double h = 1e-5;
+  for (const Eigen::Vector2d& xi : {Eigen::Vector2d(0, 0), Eigen::Vector2d(0.05, -0.03)}) {
+    Eigen::Matrix2d fd;
+    for (int k = 0; k < 2; ++k) {
+      Eigen::VectorXd Fa, Fb;
+      map.residual(xi + h * Eigen::Vector2d::Unit(k), kFoldP, Fa);
+      map.residual(xi - h * Eigen::Vector2d::Unit(k), kFoldP, Fb);
+      fd.col(k) = (Fa - Fb) / (2 * h) + Eigen::Vector2d::Unit(k);
+    }
+    const Eigen::MatrixXd A = map.map_jacobian(xi, kFoldP);
+    EXPECT_LT((A - fd).norm(), 1e-6) << A << "\n" << fd;
+    Eigen::VectorXd Fp, Fa, Fb;
+    map.parameter_derivative(xi, kFoldP, Fp);
+    map.residual(xi, kFoldP + h, Fa);
+    map.residual(xi, kFoldP - h, Fb);
+    EXPECT_LT((Fp - (Fa - Fb) / (2 * h)).norm(), 1e-6) << Fp.transpose();
+    if (xi.norm() > 0) {
+      // The unprojected Q^T M Q is off by O(|xi|): the check can fail.
+      Eigen::VectorXd y;
+      const double tau = map.return_time(xi, kFoldP, &y);
+      const Eigen::MatrixXd M = pr.monodromy(pr.shooting_guess(map.point(xi), tau, kFoldP), kFoldP);
+      EXPECT_GT((map.basis().transpose() * M * map.basis() - fd).norm(), 1e-3);
+    } else {
+      // The closed-form multipliers at the fold: the radial e^{2 rho a'(rho) T} = 1 and the slaved e^{-T}.
+      const Eigen::VectorXcd ev = Eigen::EigenSolver<Eigen::MatrixXd>(A).eigenvalues();
+      std::vector<double> mu = {ev[0].real(), ev[1].real()};
+      std::sort(mu.begin(), mu.end());
+      EXPECT_NEAR(mu[0], std::exp(-kTwoPi), 1e-9);
+      EXPECT_NEAR(mu[1], 1, 1e-9);
+    }
+  }
+}
+
+TEST(AutonomousOrbitNormalForm, FoldOfCyclesAgainstTheClosedForm) {
+  const HopfNormalForm sys(1, -1, 1.0, kSkew);
+  const AutonomousOrbitProblem pr(sys, 0, four_segment_orbit());
+  const double rs = std::sqrt(0.5);
+  const Eigen::Vector3d ys = fold_orbit_point(rs, kFoldPhase);
+  const NormalForm nf = fold_of_cycles_normal_form(pr, pr.shooting_guess(ys, kTwoPi, kFoldP), kFoldP);
+  EXPECT_EQ(nf.kind, NormalFormKind::fold_of_cycles);
+  EXPECT_EQ(nf.criticality, Criticality::not_applicable) << nf.note;
+  EXPECT_EQ(nf.exponent, 0.5);
+  EXPECT_EQ(nf.side, 1);  // the orbits exist for p > p*
+  EXPECT_GT(nf.coefficient("p2"), 0);
+  // Leading order: a radial step dr meets S after the angle d phi with <m, dr e_r + r* d phi e_phi> = 0 (m = A^T n),
+  // so |y - y*| = |A v| |dr|, v = e_r - (<m, e_r> / <m, e_phi>) e_phi, and dr = +-sqrt(p - p*) / (2 r*).
+  Eigen::Vector3d f;
+  sys.rhs(std::span<const double>(ys.data(), 3), kFoldP, std::span<double>(f.data(), 3));
+  const Eigen::Vector3d m = kSkew.transpose() * f.normalized();
+  const Eigen::Vector3d er(std::cos(kFoldPhase), std::sin(kFoldPhase), 0), ephi(-er[1], er[0], 0);
+  const Eigen::Vector3d v = er - (m.dot(er) / m.dot(ephi)) * ephi;
+  const double law = (kSkew * v).norm() / (2 * rs);
+  // Measured 1e-9 relative; bar 1e-5 (second differences of shootings: ~1e-6).
+  EXPECT_NEAR(nf.amplitude, law, 1e-5 * law) << nf.note;
+  // The radial distance alone (no slant of the section) is off by far more: the check can fail.
+  EXPECT_GT(std::abs((kSkew * er).norm() / (2 * rs) - law), 0.05 * law);
+  // The exact orbits' intersections with S against the law at two distances: the error is O(sqrt(p - p*)).
+  std::vector<double> errors;
+  for (const double dp : {1e-4, 1e-6}) {
+    double worst = 0;
+    for (const double branch : {-1.0, 1.0}) {
+      const double r = std::sqrt(0.5 + branch * std::sqrt(dp));
+      double phi = kFoldPhase;
+      for (int it = 0; it < 50; ++it) {
+        const Eigen::Vector3d e(-std::sin(phi), std::cos(phi), 0);
+        phi -= f.dot(fold_orbit_point(r, phi) - ys) / (r * f.dot(kSkew * e));
+      }
+      const double dist = (fold_orbit_point(r, phi) - ys).norm();
+      worst = std::max(worst, std::abs(dist / (nf.amplitude * std::sqrt(dp)) - 1));
+    }
+    errors.push_back(worst);
+  }
+  // Measured 9.7e-3 and 9.5e-4 (the sqrt(p - p*) shrinkage: 10.2 for a factor 100).
+  EXPECT_LT(errors[0], 3e-2) << errors[0];
+  EXPECT_LT(errors[1], 3e-3) << errors[1];
+  EXPECT_LT(errors[1], errors[0] / 5) << errors[0] << " " << errors[1];
 }
 
 // The Brusselator x' = a - (b + 1) x + x^2 y, y' = b x - x^2 y (a = 1, free b): the equilibrium (a, b / a) has its
@@ -571,6 +685,79 @@ TEST(PeriodDoublingNormalForm, AmplitudeLawMatchesTheDoubledOrbitBetterCloser) {
   EXPECT_LT(errors[0], 1e-2);
   EXPECT_LT(errors[1], 1e-3);
   EXPECT_LT(errors[1], errors[0] / 30) << errors[0] << " " << errors[1];
+}
+
+// The forced pitch-flip made autonomous (autonomised_fixture.hpp). Its field is a polynomial in (cos t, sin t):
+// R(t/2) e1 e1^T R(t/2)^T = P = [[1 + c, s], [s, 1 - c]] / 2, R(t/2) e2 e2^T R(t/2)^T = I - P and u1 R(t/2) e1 = P e
+// (e = x - x_p, u = R(t/2)^T e), so f = x_p' + W e / 2 + p P e - (I - P) e + s3 (e^T P e) P e, x_p = (c, s + 0.6 s c).
+Autonomised autonomous_pitch_flip(double cubic) {
+  return Autonomised(2, [cubic](const Eigen::VectorXd& x, double c, double s, double p) {
+    Eigen::Matrix2d P, W;
+    P << 1 + c, s, s, 1 - c;
+    P /= 2;
+    W << 0, -1, 1, 0;
+    const Eigen::Vector2d e = x - Eigen::Vector2d(c, s + 0.6 * s * c), Pe = P * e;
+    const Eigen::Vector2d xp_dot(-s, c + 0.6 * (c * c - s * s));
+    return Eigen::VectorXd(xp_dot + W * e / 2 + p * Pe - (e - Pe) + cubic * e.dot(Pe) * Pe);
+  });
+}
+
+TEST(AutonomisedPitchFlip, FieldIsTheForcedOneOnTheCircle) {
+  const ForcedPitchFlip forced(-1);
+  const Autonomised sys = autonomous_pitch_flip(-1);
+  for (const double t : {0.3, 2.0, 3.5, 5.9}) {
+    const Eigen::Vector2d x(0.7, -0.4);
+    Eigen::Vector2d ff;
+    forced.rhs(t, std::span<const double>(x.data(), 2), 0.3, std::span<double>(ff.data(), 2));
+    const Eigen::VectorXd y = Autonomised::state(x, t);
+    Eigen::Vector4d fa;
+    sys.rhs(std::span<const double>(y.data(), 4), 0.3, std::span<double>(fa.data(), 4));
+    EXPECT_NEAR((fa.head<2>() - ff).norm(), 0, 1e-13) << t;
+    EXPECT_NEAR((fa.tail<2>() - Eigen::Vector2d(-std::sin(t), std::cos(t))).norm(), 0, 1e-15);
+  }
+}
+
+// The PD of the autonomised pitch-flip's orbit branch (orbit x_p, period 2 pi; phase: c is extremal at t = 0), its
+// normal form attached by the engine, against the closed form and the forced system's period-map normal form. The
+// section S through x0* = (x_p(0), 1, 0) has the normal f(x0*) ~ (0, 1.6, 0, 1), and the doubled orbit
+// x_p(t) +- sqrt(p) R(t/2) e1 crosses it at t = 0 in x_p(0) +- sqrt(p) e1: |x0 - x0*| = sqrt(p) exactly, the
+// amplitude law's 1 (side -s3).
+TEST(AutonomousOrbitNormalForm, PeriodDoublingAgainstTheClosedFormAndTheForcedMap) {
+  for (const double s3 : {-1.0, 1.0}) {
+    const Autonomised sys = autonomous_pitch_flip(s3);
+    const AutonomousOrbitProblem pr(sys, 2, four_segment_orbit());
+    const Eigen::VectorXd x0 = Autonomised::state(ForcedPitchFlip::xp(0), 0);
+    const Branch b = continue_branch(pr, pr.shooting_guess(x0, kTwoPi, -0.2), -0.2, pitch_flip_options());
+    const SpecialPoint* pd = find_special_point(b, SpecialPointType::PD);
+    ASSERT_NE(pd, nullptr) << b.message;
+    EXPECT_NEAR(pd->p, 0, 1e-8);
+    ASSERT_TRUE(pd->normal_form.has_value());
+    const NormalForm& nf = *pd->normal_form;
+    EXPECT_EQ(nf.kind, NormalFormKind::period_doubling);
+    EXPECT_EQ(nf.criticality, s3 < 0 ? Criticality::supercritical : Criticality::subcritical) << nf.note;
+    // Measured 1 + 7.0e-7 (c = +-6.2831765, mu_p = -2 pi to 3e-9: the forced map's numbers); bar 1e-5.
+    EXPECT_NEAR(nf.amplitude, 1, 1e-5) << nf.note;
+    EXPECT_EQ(nf.side, -s3);
+    EXPECT_NEAR(nf.coefficient("mu_p"), -kTwoPi, 1e-6);  // the multiplier -e^{2 pi p}
+    // Another method: the forced period map's normal form of the same system (invariants: the law, the side, the
+    // criticality and the multiplier's derivative).
+    std::string why;
+    const std::optional<NormalForm> forced = pitch_flip_pd_form(ForcedPitchFlip(s3), why);
+    ASSERT_TRUE(forced.has_value()) << why;
+    EXPECT_NEAR(nf.amplitude, forced->amplitude, 1e-5);
+    EXPECT_EQ(nf.side, forced->side);
+    EXPECT_EQ(nf.criticality, forced->criticality);
+    EXPECT_NEAR(nf.coefficient("mu_p"), forced->coefficient("mu_p"), 1e-6);
+    // A wrong sign of c moves the law to the other side and flips the criticality: the checks above fail for it (the
+    // loop's other s3 is that case).
+  }
+  // The oracle itself: at p = 1e-2 the section point x0* + sqrt(p) e1 returns to itself after 4 pi (the doubled
+  // orbit, exact to the integration's ~1e-11) but not after 2 pi.
+  const Autonomised sys = autonomous_pitch_flip(-1);
+  const AutonomousOrbitProblem pr(sys, 2, four_segment_orbit());
+  const Eigen::VectorXd y = Autonomised::state(ForcedPitchFlip::xp(0) + Eigen::Vector2d(0.1, 0), 0);
+  EXPECT_LT((pr.flow(y, 4 * kPi, 1e-2) - y).norm(), 1e-9);
+  EXPECT_GT((pr.flow(y, kTwoPi, 1e-2) - y).norm(), 0.1);
 }
 
 TEST(PeriodDoublingSwitch, RejectsBadPeriods) {

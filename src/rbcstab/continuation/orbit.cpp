@@ -73,6 +73,12 @@ Eigen::MatrixXd monodromy_product(const ShootingFlows& sh) {
   return M;
 }
 
+Eigen::VectorXd sensitivity_product(const ShootingFlows& sh) {
+  Eigen::VectorXd s = sh.s[0];
+  for (std::size_t j = 1; j < sh.s.size(); ++j) s = sh.M[j] * s + sh.s[j];
+  return s;
+}
+
 }  // namespace detail
 
 namespace {

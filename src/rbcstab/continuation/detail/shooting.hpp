@@ -23,5 +23,7 @@ std::size_t shoot_segments(const ForcedSystem& sys, const Eigen::VectorXd& X, do
 
 // The monodromy M_{N-1} ... M_0 of a successful shooting.
 Eigen::MatrixXd monodromy_product(const ShootingFlows& sh);
+// d phi / dp over all segments of a successful shooting: s_{N-1} + M_{N-1} (s_{N-2} + ...).
+Eigen::VectorXd sensitivity_product(const ShootingFlows& sh);
 
 }  // namespace rbcstab::detail
