@@ -760,6 +760,51 @@ TEST(AutonomousOrbitNormalForm, PeriodDoublingAgainstTheClosedFormAndTheForcedMa
   EXPECT_GT((pr.flow(y, kTwoPi, 1e-2) - y).norm(), 0.1);
 }
 
+// The PD switch on an autonomous orbit branch: the autonomised pitch-flip's doubled orbit (period 4 pi, 8 segments)
+// against its closed form x_p(t) +- sqrt(p) R(t/2) e1, (c, s) = (cos t, sin t) with t = t0 + pi j / 2 at segment j,
+// t0 the doubled orbit's phase (the phase condition c' = 0: t0 = 0 or pi); Newton starts where the PD's law puts
+// the predictor's distance (predicted_p = eps^2 = 1e-6).
+TEST(PeriodDoublingSwitch, AutonomousDoubledOrbitInClosedForm) {
+  const Autonomised sys = autonomous_pitch_flip(-1);
+  const AutonomousOrbitProblem pr(sys, 2, four_segment_orbit());
+  const Eigen::VectorXd x0 = Autonomised::state(ForcedPitchFlip::xp(0), 0);
+  const Branch b = continue_branch(pr, pr.shooting_guess(x0, kTwoPi, -0.2), -0.2, pitch_flip_options());
+  const SpecialPoint* pd = find_special_point(b, SpecialPointType::PD);
+  ASSERT_NE(pd, nullptr) << b.message;
+  OrbitSwitchOptions so;
+  so.orbit = four_segment_orbit();
+  so.continuation = pitch_flip_options();
+  so.continuation.max_points = 30;
+  const OrbitSwitchStart start = orbit_switch_start(pr, b, *pd, so);
+  ASSERT_TRUE(start.found) << start.message;
+  EXPECT_NEAR(start.predicted_p, 1e-6, 1e-10);
+  const OrbitSwitchResult r = switch_at(pr, b, *pd, so);
+  ASSERT_TRUE(r.switched) << r.message;
+  EXPECT_NEAR(r.period, 4 * kPi, 1e-10);
+  const auto* doubled = dynamic_cast<const AutonomousOrbitProblem*>(r.problem.get());
+  ASSERT_NE(doubled, nullptr);
+  EXPECT_EQ(doubled->segments(), 8);
+  ASSERT_GE(r.branch.points.size(), 5u);
+  EXPECT_NEAR(r.branch.points.back().p, 0.2, 1e-12);
+  for (const BranchPoint& pt : r.branch.points) {
+    EXPECT_NEAR(AutonomousOrbitProblem::period(pt.x), 4 * kPi, 1e-9);
+    const double t0 = pt.x[2] > 0 ? 0 : kPi, amp = std::sqrt(pt.p);
+    const double sign = (pt.x.head(2) - ForcedPitchFlip::xp(t0)).dot(ForcedPitchFlip::R(t0).col(0)) > 0 ? 1 : -1;
+    for (int j = 0; j < 8; ++j) {
+      const double t = t0 + kPi * j / 2;
+      const Eigen::VectorXd expected =
+          Autonomised::state(ForcedPitchFlip::xp(t) + sign * amp * ForcedPitchFlip::R(t).col(0), t);
+      EXPECT_NEAR((pt.x.segment(4 * j, 4) - expected).norm(), 0, 1e-9) << pt.p << " " << j;
+    }
+    EXPECT_TRUE(pt.stable);
+  }
+  // A point of the branch that is not a PD is refused naming its multipliers.
+  SpecialPoint not_pd = *pd;
+  not_pd.x = b.points.front().x;
+  not_pd.p = b.points.front().p;
+  EXPECT_NE(switch_at(pr, b, not_pd, so).message.find("not a simple period doubling"), std::string::npos);
+}
+
 TEST(PeriodDoublingSwitch, RejectsBadPeriods) {
   const ForcedPitchFlip sys;
   EXPECT_THROW(PeriodicOrbitProblem(sys, {}, 0), InvalidArgument);

@@ -153,6 +153,11 @@ Eigen::MatrixXd AutonomousOrbitProblem::monodromy(const Eigen::VectorXd& X, doub
   return detail::monodromy_product(sh);
 }
 
+Eigen::VectorXd AutonomousOrbitProblem::variation(const Eigen::VectorXd& X, double p, const Eigen::VectorXd& v0) const {
+  require(v0.size() == n_, "v0", static_cast<double>(v0.size()), "a vector of the system's dimension");
+  return detail::segment_variation(shoot(X, p), v0);
+}
+
 Eigen::VectorXd AutonomousOrbitProblem::flow_sensitivity(const Eigen::VectorXd& X, double p) const {
   const ShootingFlows& sh = shoot(X, p);
   if (!sh.ok) return Eigen::VectorXd::Constant(n_, std::numeric_limits<double>::quiet_NaN());
