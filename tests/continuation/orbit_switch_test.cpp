@@ -246,6 +246,35 @@ TEST(PoincareMap, DerivativeIsTheProjectedMonodromy) {
   }
 }
 
+// Bad input: unknowns of another size, a point where f = 0 (no section), a period <= 0: InvalidArgument naming it;
+// through the engine's entry, a not_computed normal form saying why.
+TEST(PoincareMap, RefusesAPointWithoutASection) {
+  const HopfNormalForm sys(1, -1, 1.0, kSkew);
+  const AutonomousOrbitProblem pr(sys, 0, four_segment_orbit());
+  const Eigen::VectorXd X = pr.shooting_guess(fold_orbit_point(std::sqrt(0.5), kFoldPhase), kTwoPi, kFoldP);
+  const auto refusal = [&](const Eigen::VectorXd& Y) {
+    try {
+      const PoincareMap map(pr, Y, kFoldP);
+      return std::string("no throw");
+    } catch (const InvalidArgument& e) {
+      return e.parameter();
+    }
+  };
+  EXPECT_EQ(refusal(X.head(5)), "X");
+  Eigen::VectorXd at_rest = pr.shooting_guess(Eigen::Vector3d::Zero(), kTwoPi, kFoldP), no_period = X;
+  EXPECT_EQ(refusal(at_rest), "|f(x0)|");
+  no_period[no_period.size() - 1] = -1;
+  EXPECT_EQ(refusal(no_period), "T");
+  SpecialPoint sp;
+  sp.type = SpecialPointType::PD;
+  sp.status = LocationStatus::located;
+  sp.x = at_rest;
+  sp.p = kFoldP;
+  const NormalForm nf = period_map_normal_form(pr, sp);
+  EXPECT_EQ(nf.criticality, Criticality::not_computed);
+  EXPECT_NE(nf.note.find("|f(x0)|"), std::string::npos) << nf.note;
+}
+
 TEST(AutonomousOrbitNormalForm, FoldOfCyclesAgainstTheClosedForm) {
   const HopfNormalForm sys(1, -1, 1.0, kSkew);
   const AutonomousOrbitProblem pr(sys, 0, four_segment_orbit());

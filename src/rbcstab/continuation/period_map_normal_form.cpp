@@ -303,7 +303,7 @@ NormalForm period_map_normal_form(const ContinuationProblem& problem, const Spec
     if (kind == NormalFormKind::period_doubling) return period_doubling_normal_form(*orbit, sp.x, sp.p);
     return neimark_sacker_normal_form(*orbit, sp.x, sp.p);
   } catch (const InvalidArgument& e) {
-    return normal_form_not_computed(kind, std::string("refused: ") + e.what());
+    return normal_form_not_computed(kind, std::string("the system or the section refused the point: ") + e.what());
   }
 }
 

@@ -22,9 +22,10 @@ Eigen::VectorXd field_at(const AutonomousSystem& s, const Eigen::VectorXd& x, do
 
 }  // namespace
 
-PoincareMap::PoincareMap(const AutonomousOrbitProblem& orbit, const Eigen::VectorXd& X, double p)
-    : orbit_(orbit), x0_(orbit.state_at_zero(X)), T_(AutonomousOrbitProblem::period(X)) {
+PoincareMap::PoincareMap(const AutonomousOrbitProblem& orbit, const Eigen::VectorXd& X, double p) : orbit_(orbit) {
   require(X.size() == orbit.dimension(), "X", static_cast<double>(X.size()), "the orbit problem's unknowns");
+  x0_ = orbit.state_at_zero(X);
+  T_ = AutonomousOrbitProblem::period(X);
   require(std::isfinite(T_) && T_ > 0, "T", T_, "a finite period > 0");
   const Eigen::VectorXd f = field_at(orbit.system(), x0_, p);
   require(f.allFinite() && f.norm() > 0, "|f(x0)|", f.norm(), "> 0 (an orbit's point, not an equilibrium)");

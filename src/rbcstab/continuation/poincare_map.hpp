@@ -2,6 +2,8 @@
 // Maps y -> P(y, p) whose fixed points are periodic orbits, as problems the map normal forms differentiate
 // (period_map_normal_form.hpp): the forced orbits' period map (in the .cpp) and the Poincare map of an autonomous
 // orbit below. docs/continuation.md, "Normal forms of orbits: the period map and the Poincare map".
+#include <string>
+
 #include "rbcstab/continuation/autonomous_orbit.hpp"
 #include "rbcstab/continuation/dense.hpp"
 #include "rbcstab/continuation/problem.hpp"
@@ -47,7 +49,7 @@ class PoincareMap final : public MapProblem {
   const AutonomousOrbitProblem& orbit_;
   Eigen::VectorXd x0_, n_;
   Eigen::MatrixXd Q_;
-  double T_;
+  double T_ = 0;
 };
 
 }  // namespace rbcstab
