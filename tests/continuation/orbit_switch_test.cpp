@@ -192,6 +192,18 @@ constexpr double kFoldPhase = 0.4, kFoldP = -0.25;
 Eigen::Vector3d fold_orbit_point(double r, double phi) {
   return kSkew * Eigen::Vector3d(r * std::cos(phi), r * std::sin(phi), 0);
 }
+// The fold's amplitude law in closed form at the fold orbit's point y* = A x* (the section through y* normal to
+// f(y*)): a radial step dr meets S after the angle d phi with <m, dr e_r + r* d phi e_phi> = 0 (m = A^T n), so
+// |y - y*| = |A v| |dr|, v = e_r - (<m, e_r> / <m, e_phi>) e_phi, and dr = +-sqrt(p - p*) / (2 r*).
+double fold_law(const HopfNormalForm& sys, const Eigen::Vector3d& ys) {
+  Eigen::Vector3d f;
+  sys.rhs(std::span<const double>(ys.data(), 3), kFoldP, std::span<double>(f.data(), 3));
+  const Eigen::Vector3d xs = sys.x_of(ys), m = kSkew.transpose() * f.normalized();
+  const double rs = xs.head<2>().norm();
+  const Eigen::Vector3d er(xs[0] / rs, xs[1] / rs, 0), ephi(-er[1], er[0], 0);
+  const Eigen::Vector3d v = er - (m.dot(er) / m.dot(ephi)) * ephi;
+  return (kSkew * v).norm() / (2 * rs);
+}
 OrbitOptions four_segment_orbit() {
   OrbitOptions oo;
   oo.segments = 4;
@@ -286,14 +298,10 @@ TEST(AutonomousOrbitNormalForm, FoldOfCyclesAgainstTheClosedForm) {
   EXPECT_EQ(nf.exponent, 0.5);
   EXPECT_EQ(nf.side, 1);  // the orbits exist for p > p*
   EXPECT_GT(nf.coefficient("p2"), 0);
-  // Leading order: a radial step dr meets S after the angle d phi with <m, dr e_r + r* d phi e_phi> = 0 (m = A^T n),
-  // so |y - y*| = |A v| |dr|, v = e_r - (<m, e_r> / <m, e_phi>) e_phi, and dr = +-sqrt(p - p*) / (2 r*).
+  const double law = fold_law(sys, ys);
   Eigen::Vector3d f;
   sys.rhs(std::span<const double>(ys.data(), 3), kFoldP, std::span<double>(f.data(), 3));
-  const Eigen::Vector3d m = kSkew.transpose() * f.normalized();
-  const Eigen::Vector3d er(std::cos(kFoldPhase), std::sin(kFoldPhase), 0), ephi(-er[1], er[0], 0);
-  const Eigen::Vector3d v = er - (m.dot(er) / m.dot(ephi)) * ephi;
-  const double law = (kSkew * v).norm() / (2 * rs);
+  const Eigen::Vector3d er(std::cos(kFoldPhase), std::sin(kFoldPhase), 0);
   // Measured 1e-9 relative; bar 1e-5 (second differences of shootings: ~1e-6).
   EXPECT_NEAR(nf.amplitude, law, 1e-5 * law) << nf.note;
   // The radial distance alone (no slant of the section) is off by far more: the check can fail.
@@ -883,6 +891,47 @@ TEST(OrbitTree, HopfPointStartsTheOrbitBranchInTheTree) {
   ASSERT_EQ(t.emanations.size(), 1u);  // the HB; the orbit branch has no branching point
   EXPECT_EQ(t.emanations[0].outcome, EmanationOutcome::followed);
   EXPECT_EQ(t.emanations[0].branch_to, 1);
+}
+
+// The diagram's dispatch carries the Poincare map's normal forms: the skewed fold-of-cycles system's HB starts its
+// orbit branch in the tree, and that branch's LPC label has the fold with the closed-form law at its located point,
+// in the branch's JSON and text too.
+TEST(OrbitTree, AutonomousOrbitBranchCarriesItsFoldOfCycles) {
+  const HopfNormalForm sys(1, -1, 1.0, kSkew);
+  const AutonomousEquilibriumProblem eq(sys);
+  const Branch e = equilibrium_branch(eq);
+  const OrbitSwitchOptions so = switch_options(-1, 0.2);
+  TreeOptions o;
+  o.depth = 2;
+  o.switching.amplitude = so.amplitude;
+  o.switching.continuation = so.continuation;
+  o.switchers = default_switchers(so.orbit);
+  const BranchTree t = grow_tree(eq, e, o);
+  ASSERT_EQ(t.branches.size(), 2u);
+  const Branch& b = t.branches[1].branch;
+  const SpecialPoint* lpc = find_special_point(b, SpecialPointType::LPC);
+  ASSERT_NE(lpc, nullptr) << b.message;
+  ASSERT_TRUE(lpc->normal_form.has_value());
+  const NormalForm& nf = *lpc->normal_form;
+  EXPECT_EQ(nf.criticality, Criticality::not_applicable) << nf.note;
+  const double law = fold_law(sys, lpc->x.head(3));
+  EXPECT_NEAR(nf.amplitude, law, 1e-5 * law) << nf.note;  // as at the exact fold (bar: second differences)
+  EXPECT_EQ(nf.side, 1);
+  MeasuredBranch m;
+  m.branch = b;
+  m.spectrum_kind = StabilityKind::multipliers;
+  m.point_measures.assign(b.points.size(), {});
+  m.special_measures.assign(b.special_points.size(), {});
+  const nlohmann::json j = to_json(m);
+  bool found = false;
+  for (const auto& sp : j["special_points"])
+    if (sp["type"] == "LPC") {
+      found = true;
+      EXPECT_EQ(sp["normal_form"]["kind"], "fold_of_cycles");
+      EXPECT_EQ(sp["normal_form"]["amplitude"].get<double>(), nf.amplitude);
+    }
+  EXPECT_TRUE(found) << j["special_points"].dump();
+  EXPECT_NE(to_text(nf, "p").find("fold_of_cycles (p2 = "), std::string::npos) << to_text(nf, "p");
 }
 
 // The forced system's PD through the tree: the doubled orbit is a child with its own problem (2 periods, 8
