@@ -669,8 +669,9 @@ class BentPitchFlip final : public ForcedSystem {
     Eigen::Map<Eigen::Vector2d>(fp.data()) = a.Ki * g;
   }
 
- private:
   static constexpr double kK1 = 0.7, kK2 = -0.5;
+
+ private:
   ForcedPitchFlip base_;
 };
 
@@ -727,15 +728,27 @@ TEST(PeriodDoublingNormalForm, AmplitudeLawMatchesTheDoubledOrbitBetterCloser) {
 // The forced pitch-flip made autonomous (autonomised_fixture.hpp). Its field is a polynomial in (cos t, sin t):
 // R(t/2) e1 e1^T R(t/2)^T = P = [[1 + c, s], [s, 1 - c]] / 2, R(t/2) e2 e2^T R(t/2)^T = I - P and u1 R(t/2) e1 = P e
 // (e = x - x_p, u = R(t/2)^T e), so f = x_p' + W e / 2 + p P e - (I - P) e + s3 (e^T P e) P e, x_p = (c, s + 0.6 s c).
-Autonomised autonomous_pitch_flip(double cubic) {
-  return Autonomised(2, [cubic](const Eigen::VectorXd& x, double c, double s, double p) {
+Eigen::Vector2d pitch_xp(double c, double s) { return {c, s + 0.6 * s * c}; }
+Eigen::Vector2d pitch_xp_dot(double c, double s) { return {-s, c + 0.6 * (c * c - s * s)}; }
+Autonomised::Field pitch_flip_field(double cubic) {
+  return [cubic](const Eigen::VectorXd& x, double c, double s, double p) {
     Eigen::Matrix2d P, W;
     P << 1 + c, s, s, 1 - c;
     P /= 2;
     W << 0, -1, 1, 0;
-    const Eigen::Vector2d e = x - Eigen::Vector2d(c, s + 0.6 * s * c), Pe = P * e;
-    const Eigen::Vector2d xp_dot(-s, c + 0.6 * (c * c - s * s));
-    return Eigen::VectorXd(xp_dot + W * e / 2 + p * Pe - (e - Pe) + cubic * e.dot(Pe) * Pe);
+    const Eigen::Vector2d e = x - pitch_xp(c, s), Pe = P * e;
+    return Eigen::VectorXd(pitch_xp_dot(c, s) + W * e / 2 + p * Pe - (e - Pe) + cubic * e.dot(Pe) * Pe);
+  };
+}
+Autonomised autonomous_pitch_flip(double cubic) { return Autonomised(2, pitch_flip_field(cubic)); }
+// BentPitchFlip's change about the orbit (x = x_p + e + Q(e), e' = K^-1 (f(x) - x_p')) on the autonomised field.
+Autonomised autonomous_bent_pitch_flip(double cubic) {
+  return Autonomised(2, [base = pitch_flip_field(cubic)](const Eigen::VectorXd& z, double c, double s, double p) {
+    const Eigen::Vector2d xp = pitch_xp(c, s), xp_dot = pitch_xp_dot(c, s), e = Eigen::Vector2d(z[0], z[1]) - xp;
+    const Eigen::Vector2d x =
+        xp + e + Eigen::Vector2d(BentPitchFlip::kK1 * e[0] * e[0], BentPitchFlip::kK2 * e[0] * e[1]);
+    const Eigen::Matrix2d Ki = (Eigen::Matrix2d::Identity() + BentPitchFlip::DQ(e)).inverse();
+    return Eigen::VectorXd(xp_dot + Ki * (base(x, c, s, p) - xp_dot));
   });
 }
 
@@ -795,6 +808,26 @@ TEST(AutonomousOrbitNormalForm, PeriodDoublingAgainstTheClosedFormAndTheForcedMa
   const Eigen::VectorXd y = Autonomised::state(ForcedPitchFlip::xp(0) + Eigen::Vector2d(0.1, 0), 0);
   EXPECT_LT((pr.flow(y, 4 * kPi, 1e-2) - y).norm(), 1e-9);
   EXPECT_GT((pr.flow(y, kTwoPi, 1e-2) - y).norm(), 0.1);
+}
+
+// With quadratic terms (the bent pitch-flip made autonomous, at its PD orbit x_p, p = 0): the change has linear part I
+// and leaves f(x0*) and the section as they were, so c = -2 pi s and the law's 1 hold as above, while B(q, q) != 0
+// now: the cubic term alone would move the law far off (the check can fail on a dropped term).
+TEST(AutonomousOrbitNormalForm, PeriodDoublingWithQuadraticTerms) {
+  for (const double s3 : {-1.0, 1.0}) {
+    const Autonomised sys = autonomous_bent_pitch_flip(s3);
+    const AutonomousOrbitProblem pr(sys, 2, four_segment_orbit());
+    const Eigen::VectorXd x0 = Autonomised::state(ForcedPitchFlip::xp(0), 0);
+    const NormalForm nf = period_doubling_normal_form(pr, pr.shooting_guess(x0, kTwoPi, 0), 0);
+    EXPECT_EQ(nf.criticality, s3 < 0 ? Criticality::supercritical : Criticality::subcritical) << nf.note;
+    EXPECT_NEAR(nf.coefficient("c"), -kTwoPi * s3, 1e-4) << nf.note;
+    // Measured c = 6.2831867 (4.3232 + 1.9600) and -6.2831551 (-8.2432 + 1.9600), the forced map's numbers; the
+    // amplitude 1 - 1.1e-7 and 1 + 2.4e-6 (bar 1e-5); the cubic term alone gives 1.206 and 0.873.
+    EXPECT_NEAR(nf.amplitude, 1, 1e-5);
+    EXPECT_EQ(nf.side, -s3);
+    EXPECT_GT(std::abs(nf.coefficient("quadratic")), 0.1) << nf.coefficient("quadratic");
+    EXPECT_GT(std::abs(std::sqrt(std::abs(nf.coefficient("mu_p") / nf.coefficient("cubic"))) - 1), 0.1);
+  }
 }
 
 // The PD switch on an autonomous orbit branch: the autonomised pitch-flip's doubled orbit (period 4 pi, 8 segments)
