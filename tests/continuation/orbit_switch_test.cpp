@@ -8,9 +8,11 @@
 #include <cmath>
 #include <complex>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
+#include "continuation/autonomised_fixture.hpp"
 #include "continuation/modal_fixtures.hpp"
 #include "continuation/scene_spec_fixture.hpp"
 #include "rbcstab/continuation/autonomous_orbit.hpp"
@@ -20,6 +22,8 @@
 #include "rbcstab/continuation/full_equilibrium.hpp"
 #include "rbcstab/continuation/orbit.hpp"
 #include "rbcstab/continuation/orbit_switch.hpp"
+#include "rbcstab/continuation/period_map_normal_form.hpp"
+#include "rbcstab/continuation/poincare_map.hpp"
 #include "rbcstab/continuation/scene_continuation.hpp"
 #include "rbcstab/core/constants.hpp"
 #include "rbcstab/core/error.hpp"
@@ -168,13 +172,160 @@ TEST(HopfSwitch, FoldOfCyclesOnTheSwitchedBranch) {
   EXPECT_EQ(lpc->status, LocationStatus::located);
   EXPECT_NEAR(lpc->p, -0.25, 1e-7);  // the fold of a(rho) = 0 (location tolerance 1e-11 in (X, p), curvature O(1))
   EXPECT_NEAR(sys.x_of(lpc->x.head(2)).squaredNorm(), 0.5, 1e-5);  // rho - 1/2 ~ sqrt(p error)
-  // An autonomous orbit's LPC carries no coefficients: refused with the reason.
+  // The LPC carries the Poincare map's fold: on the section (the radial line through x0*) the orbits lie at
+  // |r - r*| = sqrt(p - p*) / (2 r*) to leading order (rho = 1/2 +- sqrt(p - p*)), amplitude 1 / sqrt 2, side +1.
   ASSERT_TRUE(lpc->normal_form.has_value());
-  EXPECT_EQ(lpc->normal_form->kind, NormalFormKind::fold_of_cycles);
-  EXPECT_EQ(lpc->normal_form->criticality, Criticality::not_computed);
-  EXPECT_NE(lpc->normal_form->note.find("Poincare section"), std::string::npos) << lpc->normal_form->note;
+  const NormalForm& nf = *lpc->normal_form;
+  EXPECT_EQ(nf.kind, NormalFormKind::fold_of_cycles);
+  EXPECT_EQ(nf.criticality, Criticality::not_applicable) << nf.note;
+  EXPECT_NEAR(nf.amplitude, std::sqrt(0.5), 1e-5) << nf.note;  // measured 3e-8 (second differences: ~1e-6)
+  EXPECT_EQ(nf.side, 1);
   expect_closed_form(sys, r.branch, 1, -1, 1.0);
   EXPECT_TRUE(r.branch.points.back().stable);
+}
+
+// The fold of cycles of a(rho) = p + rho - rho^2 (LPC at p* = -1/4, rho* = 1/2) in the skewed coordinates y = A x, at
+// the exact fold orbit through x* = r* (cos phi0, sin phi0, 0): the closed-form orbits near it, r^2 = 1/2 +-
+// sqrt(p - p*), meet the section S through y* (normal f(y*)) where <n, A (r e(phi), 0) - y*> = 0.
+const Eigen::Matrix3d kSkew = (Eigen::Matrix3d() << 1, 0.5, 0.2, 0.3, 1, -0.4, 0.1, 0.2, 2).finished();
+constexpr double kFoldPhase = 0.4, kFoldP = -0.25;
+Eigen::Vector3d fold_orbit_point(double r, double phi) {
+  return kSkew * Eigen::Vector3d(r * std::cos(phi), r * std::sin(phi), 0);
+}
+// The fold's amplitude law in closed form at the fold orbit's point y* = A x* (the section through y* normal to
+// f(y*)): a radial step dr meets S after the angle d phi with <m, dr e_r + r* d phi e_phi> = 0 (m = A^T n), so
+// |y - y*| = |A v| |dr|, v = e_r - (<m, e_r> / <m, e_phi>) e_phi, and dr = +-sqrt(p - p*) / (2 r*).
+double fold_law(const HopfNormalForm& sys, const Eigen::Vector3d& ys) {
+  Eigen::Vector3d f;
+  sys.rhs(std::span<const double>(ys.data(), 3), kFoldP, std::span<double>(f.data(), 3));
+  const Eigen::Vector3d xs = sys.x_of(ys), m = kSkew.transpose() * f.normalized();
+  const double rs = xs.head<2>().norm();
+  const Eigen::Vector3d er(xs[0] / rs, xs[1] / rs, 0), ephi(-er[1], er[0], 0);
+  const Eigen::Vector3d v = er - (m.dot(er) / m.dot(ephi)) * ephi;
+  return (kSkew * v).norm() / (2 * rs);
+}
+OrbitOptions four_segment_orbit() {
+  OrbitOptions oo;
+  oo.segments = 4;
+  return oo;
+}
+
+TEST(PoincareMap, DerivativeIsTheProjectedMonodromy) {
+  const HopfNormalForm sys(1, -1, 1.0, kSkew);
+  const AutonomousOrbitProblem pr(sys, 0, four_segment_orbit());
+  const Eigen::VectorXd X = pr.shooting_guess(fold_orbit_point(std::sqrt(0.5), kFoldPhase), kTwoPi, kFoldP);
+  const PoincareMap map(pr, X, kFoldP);
+  ASSERT_EQ(map.dimension(), 2);
+  EXPECT_NEAR((map.basis().transpose() * map.basis() - Eigen::Matrix2d::Identity()).norm(), 0, 1e-14);
+  EXPECT_NEAR((map.basis().transpose() * map.normal()).norm(), 0, 1e-14);
+  Eigen::VectorXd F;
+  map.residual(Eigen::Vector2d::Zero(), kFoldP, F);
+  EXPECT_LT(F.norm(), 1e-10);  // the orbit's point is fixed (rtol 1e-12 over a period)
+  EXPECT_NEAR(map.return_time(Eigen::Vector2d::Zero(), kFoldP), kTwoPi, 1e-10);
+  // DP and P_p against central differences of P (h = 1e-5: truncation ~1e-10, rounding ~1e-12 / h = 1e-7; measured
+  // 4.5e-9 and 8.1e-9 for DP, 7e-8 and 1.7e-7 for P_p): at the orbit and off it, where f at the return is not along n
+  // and the projection I - f n^T / <n, f> matters (the unprojected Q^T M Q is off by 0.089 there).
+  const double h = 1e-5;
+  for (const Eigen::Vector2d& xi : {Eigen::Vector2d(0, 0), Eigen::Vector2d(0.05, -0.03)}) {
+    Eigen::Matrix2d fd;
+    for (int k = 0; k < 2; ++k) {
+      Eigen::VectorXd Fa, Fb;
+      map.residual(xi + h * Eigen::Vector2d::Unit(k), kFoldP, Fa);
+      map.residual(xi - h * Eigen::Vector2d::Unit(k), kFoldP, Fb);
+      fd.col(k) = (Fa - Fb) / (2 * h) + Eigen::Vector2d::Unit(k);
+    }
+    const Eigen::MatrixXd A = map.map_jacobian(xi, kFoldP);
+    EXPECT_LT((A - fd).norm(), 1e-6) << A << "\n" << fd;
+    Eigen::VectorXd Fp, Fa, Fb;
+    map.parameter_derivative(xi, kFoldP, Fp);
+    map.residual(xi, kFoldP + h, Fa);
+    map.residual(xi, kFoldP - h, Fb);
+    EXPECT_LT((Fp - (Fa - Fb) / (2 * h)).norm(), 1e-6) << Fp.transpose();
+    if (xi.norm() > 0) {
+      // The unprojected Q^T M Q is off by O(|xi|): the check can fail.
+      Eigen::VectorXd y;
+      const double tau = map.return_time(xi, kFoldP, &y);
+      const Eigen::MatrixXd M = pr.monodromy(pr.shooting_guess(map.point(xi), tau, kFoldP), kFoldP);
+      EXPECT_GT((map.basis().transpose() * M * map.basis() - fd).norm(), 1e-3);
+    } else {
+      // The closed-form multipliers at the fold: the radial e^{2 rho a'(rho) T} = 1 and the slaved e^{-T}.
+      const Eigen::VectorXcd ev = Eigen::EigenSolver<Eigen::MatrixXd>(A).eigenvalues();
+      std::vector<double> mu = {ev[0].real(), ev[1].real()};
+      std::sort(mu.begin(), mu.end());
+      EXPECT_NEAR(mu[0], std::exp(-kTwoPi), 1e-9);
+      EXPECT_NEAR(mu[1], 1, 1e-9);
+    }
+  }
+}
+
+// Bad input: unknowns of another size, a point where f = 0 (no section), a period <= 0: InvalidArgument naming it;
+// through the engine's entry, a not_computed normal form saying why.
+TEST(PoincareMap, RefusesAPointWithoutASection) {
+  const HopfNormalForm sys(1, -1, 1.0, kSkew);
+  const AutonomousOrbitProblem pr(sys, 0, four_segment_orbit());
+  const Eigen::VectorXd X = pr.shooting_guess(fold_orbit_point(std::sqrt(0.5), kFoldPhase), kTwoPi, kFoldP);
+  const auto refusal = [&](const Eigen::VectorXd& Y) {
+    try {
+      const PoincareMap map(pr, Y, kFoldP);
+      return std::string("no throw");
+    } catch (const InvalidArgument& e) {
+      return e.parameter();
+    }
+  };
+  EXPECT_EQ(refusal(X.head(5)), "X");
+  Eigen::VectorXd at_rest = pr.shooting_guess(Eigen::Vector3d::Zero(), kTwoPi, kFoldP), no_period = X;
+  EXPECT_EQ(refusal(at_rest), "|f(x0)|");
+  no_period[no_period.size() - 1] = -1;
+  EXPECT_EQ(refusal(no_period), "T");
+  SpecialPoint sp;
+  sp.type = SpecialPointType::PD;
+  sp.status = LocationStatus::located;
+  sp.x = at_rest;
+  sp.p = kFoldP;
+  const NormalForm nf = period_map_normal_form(pr, sp);
+  EXPECT_EQ(nf.criticality, Criticality::not_computed);
+  EXPECT_NE(nf.note.find("|f(x0)|"), std::string::npos) << nf.note;
+}
+
+TEST(AutonomousOrbitNormalForm, FoldOfCyclesAgainstTheClosedForm) {
+  const HopfNormalForm sys(1, -1, 1.0, kSkew);
+  const AutonomousOrbitProblem pr(sys, 0, four_segment_orbit());
+  const double rs = std::sqrt(0.5);
+  const Eigen::Vector3d ys = fold_orbit_point(rs, kFoldPhase);
+  const NormalForm nf = fold_of_cycles_normal_form(pr, pr.shooting_guess(ys, kTwoPi, kFoldP), kFoldP);
+  EXPECT_EQ(nf.kind, NormalFormKind::fold_of_cycles);
+  EXPECT_EQ(nf.criticality, Criticality::not_applicable) << nf.note;
+  EXPECT_EQ(nf.exponent, 0.5);
+  EXPECT_EQ(nf.side, 1);  // the orbits exist for p > p*
+  EXPECT_GT(nf.coefficient("p2"), 0);
+  const double law = fold_law(sys, ys);
+  Eigen::Vector3d f;
+  sys.rhs(std::span<const double>(ys.data(), 3), kFoldP, std::span<double>(f.data(), 3));
+  const Eigen::Vector3d er(std::cos(kFoldPhase), std::sin(kFoldPhase), 0);
+  // Measured 1e-9 relative; bar 1e-5 (second differences of shootings: ~1e-6).
+  EXPECT_NEAR(nf.amplitude, law, 1e-5 * law) << nf.note;
+  // The radial distance alone (no slant of the section) is off by far more: the check can fail.
+  EXPECT_GT(std::abs((kSkew * er).norm() / (2 * rs) - law), 0.05 * law);
+  // The exact orbits' intersections with S against the law at two distances: the error is O(sqrt(p - p*)).
+  std::vector<double> errors;
+  for (const double dp : {1e-4, 1e-6}) {
+    double worst = 0;
+    for (const double branch : {-1.0, 1.0}) {
+      const double r = std::sqrt(0.5 + branch * std::sqrt(dp));
+      double phi = kFoldPhase;
+      for (int it = 0; it < 50; ++it) {
+        const Eigen::Vector3d e(-std::sin(phi), std::cos(phi), 0);
+        phi -= f.dot(fold_orbit_point(r, phi) - ys) / (r * f.dot(kSkew * e));
+      }
+      const double dist = (fold_orbit_point(r, phi) - ys).norm();
+      worst = std::max(worst, std::abs(dist / (nf.amplitude * std::sqrt(dp)) - 1));
+    }
+    errors.push_back(worst);
+  }
+  // Measured 9.7e-3 and 9.5e-4 (the sqrt(p - p*) shrinkage: 10.2 for a factor 100).
+  EXPECT_LT(errors[0], 3e-2) << errors[0];
+  EXPECT_LT(errors[1], 3e-3) << errors[1];
+  EXPECT_LT(errors[1], errors[0] / 5) << errors[0] << " " << errors[1];
 }
 
 // The Brusselator x' = a - (b + 1) x + x^2 y, y' = b x - x^2 y (a = 1, free b): the equilibrium (a, b / a) has its
@@ -518,8 +669,9 @@ class BentPitchFlip final : public ForcedSystem {
     Eigen::Map<Eigen::Vector2d>(fp.data()) = a.Ki * g;
   }
 
- private:
   static constexpr double kK1 = 0.7, kK2 = -0.5;
+
+ private:
   ForcedPitchFlip base_;
 };
 
@@ -573,6 +725,156 @@ TEST(PeriodDoublingNormalForm, AmplitudeLawMatchesTheDoubledOrbitBetterCloser) {
   EXPECT_LT(errors[1], errors[0] / 30) << errors[0] << " " << errors[1];
 }
 
+// The forced pitch-flip made autonomous (autonomised_fixture.hpp). Its field is a polynomial in (cos t, sin t):
+// R(t/2) e1 e1^T R(t/2)^T = P = [[1 + c, s], [s, 1 - c]] / 2, R(t/2) e2 e2^T R(t/2)^T = I - P and u1 R(t/2) e1 = P e
+// (e = x - x_p, u = R(t/2)^T e), so f = x_p' + W e / 2 + p P e - (I - P) e + s3 (e^T P e) P e, x_p = (c, s + 0.6 s c).
+Eigen::Vector2d pitch_xp(double c, double s) { return {c, s + 0.6 * s * c}; }
+Eigen::Vector2d pitch_xp_dot(double c, double s) { return {-s, c + 0.6 * (c * c - s * s)}; }
+Autonomised::Field pitch_flip_field(double cubic) {
+  return [cubic](const Eigen::VectorXd& x, double c, double s, double p) {
+    Eigen::Matrix2d P, W;
+    P << 1 + c, s, s, 1 - c;
+    P /= 2;
+    W << 0, -1, 1, 0;
+    const Eigen::Vector2d e = x - pitch_xp(c, s), Pe = P * e;
+    return Eigen::VectorXd(pitch_xp_dot(c, s) + W * e / 2 + p * Pe - (e - Pe) + cubic * e.dot(Pe) * Pe);
+  };
+}
+Autonomised autonomous_pitch_flip(double cubic) { return Autonomised(2, pitch_flip_field(cubic)); }
+// BentPitchFlip's change about the orbit (x = x_p + e + Q(e), e' = K^-1 (f(x) - x_p')) on the autonomised field.
+Autonomised autonomous_bent_pitch_flip(double cubic) {
+  return Autonomised(2, [base = pitch_flip_field(cubic)](const Eigen::VectorXd& z, double c, double s, double p) {
+    const Eigen::Vector2d xp = pitch_xp(c, s), xp_dot = pitch_xp_dot(c, s), e = Eigen::Vector2d(z[0], z[1]) - xp;
+    const Eigen::Vector2d x =
+        xp + e + Eigen::Vector2d(BentPitchFlip::kK1 * e[0] * e[0], BentPitchFlip::kK2 * e[0] * e[1]);
+    const Eigen::Matrix2d Ki = (Eigen::Matrix2d::Identity() + BentPitchFlip::DQ(e)).inverse();
+    return Eigen::VectorXd(xp_dot + Ki * (base(x, c, s, p) - xp_dot));
+  });
+}
+
+TEST(AutonomisedPitchFlip, FieldIsTheForcedOneOnTheCircle) {
+  const ForcedPitchFlip forced(-1);
+  const Autonomised sys = autonomous_pitch_flip(-1);
+  for (const double t : {0.3, 2.0, 3.5, 5.9}) {
+    const Eigen::Vector2d x(0.7, -0.4);
+    Eigen::Vector2d ff;
+    forced.rhs(t, std::span<const double>(x.data(), 2), 0.3, std::span<double>(ff.data(), 2));
+    const Eigen::VectorXd y = Autonomised::state(x, t);
+    Eigen::Vector4d fa;
+    sys.rhs(std::span<const double>(y.data(), 4), 0.3, std::span<double>(fa.data(), 4));
+    EXPECT_NEAR((fa.head<2>() - ff).norm(), 0, 1e-13) << t;
+    EXPECT_NEAR((fa.tail<2>() - Eigen::Vector2d(-std::sin(t), std::cos(t))).norm(), 0, 1e-15);
+  }
+}
+
+// The PD of the autonomised pitch-flip's orbit branch (orbit x_p, period 2 pi; phase: c is extremal at t = 0), its
+// normal form attached by the engine, against the closed form and the forced system's period-map normal form. The
+// section S through x0* = (x_p(0), 1, 0) has the normal f(x0*) ~ (0, 1.6, 0, 1), and the doubled orbit
+// x_p(t) +- sqrt(p) R(t/2) e1 crosses it at t = 0 in x_p(0) +- sqrt(p) e1: |x0 - x0*| = sqrt(p) exactly, the
+// amplitude law's 1 (side -s3).
+TEST(AutonomousOrbitNormalForm, PeriodDoublingAgainstTheClosedFormAndTheForcedMap) {
+  for (const double s3 : {-1.0, 1.0}) {
+    const Autonomised sys = autonomous_pitch_flip(s3);
+    const AutonomousOrbitProblem pr(sys, 2, four_segment_orbit());
+    const Eigen::VectorXd x0 = Autonomised::state(ForcedPitchFlip::xp(0), 0);
+    const Branch b = continue_branch(pr, pr.shooting_guess(x0, kTwoPi, -0.2), -0.2, pitch_flip_options());
+    const SpecialPoint* pd = find_special_point(b, SpecialPointType::PD);
+    ASSERT_NE(pd, nullptr) << b.message;
+    EXPECT_NEAR(pd->p, 0, 1e-8);
+    ASSERT_TRUE(pd->normal_form.has_value());
+    const NormalForm& nf = *pd->normal_form;
+    EXPECT_EQ(nf.kind, NormalFormKind::period_doubling);
+    EXPECT_EQ(nf.criticality, s3 < 0 ? Criticality::supercritical : Criticality::subcritical) << nf.note;
+    // Measured 1 + 7.0e-7 (c = +-6.2831765, mu_p = -2 pi to 3e-9: the forced map's numbers); bar 1e-5.
+    EXPECT_NEAR(nf.amplitude, 1, 1e-5) << nf.note;
+    EXPECT_EQ(nf.side, -s3);
+    EXPECT_NEAR(nf.coefficient("mu_p"), -kTwoPi, 1e-6);  // the multiplier -e^{2 pi p}
+    // Another method: the forced period map's normal form of the same system (invariants: the law, the side, the
+    // criticality and the multiplier's derivative).
+    std::string why;
+    const std::optional<NormalForm> forced = pitch_flip_pd_form(ForcedPitchFlip(s3), why);
+    ASSERT_TRUE(forced.has_value()) << why;
+    EXPECT_NEAR(nf.amplitude, forced->amplitude, 1e-5);
+    EXPECT_EQ(nf.side, forced->side);
+    EXPECT_EQ(nf.criticality, forced->criticality);
+    EXPECT_NEAR(nf.coefficient("mu_p"), forced->coefficient("mu_p"), 1e-6);
+    // A wrong sign of c moves the law to the other side and flips the criticality: the checks above fail for it (the
+    // loop's other s3 is that case).
+  }
+  // The oracle itself: at p = 1e-2 the section point x0* + sqrt(p) e1 returns to itself after 4 pi (the doubled
+  // orbit, exact to the integration's ~1e-11) but not after 2 pi.
+  const Autonomised sys = autonomous_pitch_flip(-1);
+  const AutonomousOrbitProblem pr(sys, 2, four_segment_orbit());
+  const Eigen::VectorXd y = Autonomised::state(ForcedPitchFlip::xp(0) + Eigen::Vector2d(0.1, 0), 0);
+  EXPECT_LT((pr.flow(y, 4 * kPi, 1e-2) - y).norm(), 1e-9);
+  EXPECT_GT((pr.flow(y, kTwoPi, 1e-2) - y).norm(), 0.1);
+}
+
+// With quadratic terms (the bent pitch-flip made autonomous, at its PD orbit x_p, p = 0): the change has linear part I
+// and leaves f(x0*) and the section as they were, so c = -2 pi s and the law's 1 hold as above, while B(q, q) != 0
+// now: the cubic term alone would move the law far off (the check can fail on a dropped term).
+TEST(AutonomousOrbitNormalForm, PeriodDoublingWithQuadraticTerms) {
+  for (const double s3 : {-1.0, 1.0}) {
+    const Autonomised sys = autonomous_bent_pitch_flip(s3);
+    const AutonomousOrbitProblem pr(sys, 2, four_segment_orbit());
+    const Eigen::VectorXd x0 = Autonomised::state(ForcedPitchFlip::xp(0), 0);
+    const NormalForm nf = period_doubling_normal_form(pr, pr.shooting_guess(x0, kTwoPi, 0), 0);
+    EXPECT_EQ(nf.criticality, s3 < 0 ? Criticality::supercritical : Criticality::subcritical) << nf.note;
+    EXPECT_NEAR(nf.coefficient("c"), -kTwoPi * s3, 1e-4) << nf.note;
+    // Measured c = 6.2831867 (4.3232 + 1.9600) and -6.2831551 (-8.2432 + 1.9600), the forced map's numbers; the
+    // amplitude 1 - 1.1e-7 and 1 + 2.4e-6 (bar 1e-5); the cubic term alone gives 1.206 and 0.873.
+    EXPECT_NEAR(nf.amplitude, 1, 1e-5);
+    EXPECT_EQ(nf.side, -s3);
+    EXPECT_GT(std::abs(nf.coefficient("quadratic")), 0.1) << nf.coefficient("quadratic");
+    EXPECT_GT(std::abs(std::sqrt(std::abs(nf.coefficient("mu_p") / nf.coefficient("cubic"))) - 1), 0.1);
+  }
+}
+
+// The PD switch on an autonomous orbit branch: the autonomised pitch-flip's doubled orbit (period 4 pi, 8 segments)
+// against its closed form x_p(t) +- sqrt(p) R(t/2) e1, (c, s) = (cos t, sin t) with t = t0 + pi j / 2 at segment j,
+// t0 the doubled orbit's phase (the phase condition c' = 0: t0 = 0 or pi); Newton starts where the PD's law puts
+// the predictor's distance (predicted_p = eps^2 = 1e-6).
+TEST(PeriodDoublingSwitch, AutonomousDoubledOrbitInClosedForm) {
+  const Autonomised sys = autonomous_pitch_flip(-1);
+  const AutonomousOrbitProblem pr(sys, 2, four_segment_orbit());
+  const Eigen::VectorXd x0 = Autonomised::state(ForcedPitchFlip::xp(0), 0);
+  const Branch b = continue_branch(pr, pr.shooting_guess(x0, kTwoPi, -0.2), -0.2, pitch_flip_options());
+  const SpecialPoint* pd = find_special_point(b, SpecialPointType::PD);
+  ASSERT_NE(pd, nullptr) << b.message;
+  OrbitSwitchOptions so;
+  so.orbit = four_segment_orbit();
+  so.continuation = pitch_flip_options();
+  so.continuation.max_points = 30;
+  const OrbitSwitchStart start = orbit_switch_start(pr, b, *pd, so);
+  ASSERT_TRUE(start.found) << start.message;
+  EXPECT_NEAR(start.predicted_p, 1e-6, 1e-10);
+  const OrbitSwitchResult r = switch_at(pr, b, *pd, so);
+  ASSERT_TRUE(r.switched) << r.message;
+  EXPECT_NEAR(r.period, 4 * kPi, 1e-10);
+  const auto* doubled = dynamic_cast<const AutonomousOrbitProblem*>(r.problem.get());
+  ASSERT_NE(doubled, nullptr);
+  EXPECT_EQ(doubled->segments(), 8);
+  ASSERT_GE(r.branch.points.size(), 5u);
+  EXPECT_NEAR(r.branch.points.back().p, 0.2, 1e-12);
+  for (const BranchPoint& pt : r.branch.points) {
+    EXPECT_NEAR(AutonomousOrbitProblem::period(pt.x), 4 * kPi, 1e-9);
+    const double t0 = pt.x[2] > 0 ? 0 : kPi, amp = std::sqrt(pt.p);
+    const double sign = (pt.x.head(2) - ForcedPitchFlip::xp(t0)).dot(ForcedPitchFlip::R(t0).col(0)) > 0 ? 1 : -1;
+    for (int j = 0; j < 8; ++j) {
+      const double t = t0 + kPi * j / 2;
+      const Eigen::VectorXd expected =
+          Autonomised::state(ForcedPitchFlip::xp(t) + sign * amp * ForcedPitchFlip::R(t).col(0), t);
+      EXPECT_NEAR((pt.x.segment(4 * j, 4) - expected).norm(), 0, 1e-9) << pt.p << " " << j;
+    }
+    EXPECT_TRUE(pt.stable);
+  }
+  // A point of the branch that is not a PD is refused naming its multipliers.
+  SpecialPoint not_pd = *pd;
+  not_pd.x = b.points.front().x;
+  not_pd.p = b.points.front().p;
+  EXPECT_NE(switch_at(pr, b, not_pd, so).message.find("not a simple period doubling"), std::string::npos);
+}
+
 TEST(PeriodDoublingSwitch, RejectsBadPeriods) {
   const ForcedPitchFlip sys;
   EXPECT_THROW(PeriodicOrbitProblem(sys, {}, 0), InvalidArgument);
@@ -622,6 +924,47 @@ TEST(OrbitTree, HopfPointStartsTheOrbitBranchInTheTree) {
   ASSERT_EQ(t.emanations.size(), 1u);  // the HB; the orbit branch has no branching point
   EXPECT_EQ(t.emanations[0].outcome, EmanationOutcome::followed);
   EXPECT_EQ(t.emanations[0].branch_to, 1);
+}
+
+// The diagram's dispatch carries the Poincare map's normal forms: the skewed fold-of-cycles system's HB starts its
+// orbit branch in the tree, and that branch's LPC label has the fold with the closed-form law at its located point,
+// in the branch's JSON and text too.
+TEST(OrbitTree, AutonomousOrbitBranchCarriesItsFoldOfCycles) {
+  const HopfNormalForm sys(1, -1, 1.0, kSkew);
+  const AutonomousEquilibriumProblem eq(sys);
+  const Branch e = equilibrium_branch(eq);
+  const OrbitSwitchOptions so = switch_options(-1, 0.2);
+  TreeOptions o;
+  o.depth = 2;
+  o.switching.amplitude = so.amplitude;
+  o.switching.continuation = so.continuation;
+  o.switchers = default_switchers(so.orbit);
+  const BranchTree t = grow_tree(eq, e, o);
+  ASSERT_EQ(t.branches.size(), 2u);
+  const Branch& b = t.branches[1].branch;
+  const SpecialPoint* lpc = find_special_point(b, SpecialPointType::LPC);
+  ASSERT_NE(lpc, nullptr) << b.message;
+  ASSERT_TRUE(lpc->normal_form.has_value());
+  const NormalForm& nf = *lpc->normal_form;
+  EXPECT_EQ(nf.criticality, Criticality::not_applicable) << nf.note;
+  const double law = fold_law(sys, lpc->x.head(3));
+  EXPECT_NEAR(nf.amplitude, law, 1e-5 * law) << nf.note;  // as at the exact fold (bar: second differences)
+  EXPECT_EQ(nf.side, 1);
+  MeasuredBranch m;
+  m.branch = b;
+  m.spectrum_kind = StabilityKind::multipliers;
+  m.point_measures.assign(b.points.size(), {});
+  m.special_measures.assign(b.special_points.size(), {});
+  const nlohmann::json j = to_json(m);
+  bool found = false;
+  for (const auto& sp : j["special_points"])
+    if (sp["type"] == "LPC") {
+      found = true;
+      EXPECT_EQ(sp["normal_form"]["kind"], "fold_of_cycles");
+      EXPECT_EQ(sp["normal_form"]["amplitude"].get<double>(), nf.amplitude);
+    }
+  EXPECT_TRUE(found) << j["special_points"].dump();
+  EXPECT_NE(to_text(nf, "p").find("fold_of_cycles (p2 = "), std::string::npos) << to_text(nf, "p");
 }
 
 // The forced system's PD through the tree: the doubled orbit is a child with its own problem (2 periods, 8

@@ -153,6 +153,29 @@ Eigen::MatrixXd AutonomousOrbitProblem::monodromy(const Eigen::VectorXd& X, doub
   return detail::monodromy_product(sh);
 }
 
+Eigen::VectorXd AutonomousOrbitProblem::variation(const Eigen::VectorXd& X, double p, const Eigen::VectorXd& v0) const {
+  require(v0.size() == n_, "v0", static_cast<double>(v0.size()), "a vector of the system's dimension");
+  return detail::segment_variation(shoot(X, p), v0);
+}
+
+Eigen::VectorXd AutonomousOrbitProblem::flow_sensitivity(const Eigen::VectorXd& X, double p) const {
+  const ShootingFlows& sh = shoot(X, p);
+  if (!sh.ok) return Eigen::VectorXd::Constant(n_, std::numeric_limits<double>::quiet_NaN());
+  return detail::sensitivity_product(sh);
+}
+
+Eigen::VectorXd AutonomousOrbitProblem::flow(const Eigen::VectorXd& x, double t, double p) const {
+  require(x.size() == n_, "x", static_cast<double>(x.size()), "a state of the system's dimension");
+  require(std::isfinite(t) && t > 0, "t", t, "a finite time > 0");
+  const detail::ForcedFlow plain(*flow_, p, detail::ForcedFlow::Mode::plain);
+  const double grid[1] = {t};
+  const IntegrationResult r = integrate(plain, std::span<const double>(x.data(), static_cast<std::size_t>(n_)), 0.0,
+                                        grid, detail::orbit_integrator_options(o_), {});
+  if (r.status != IntegrationStatus::success)
+    return Eigen::VectorXd::Constant(n_, std::numeric_limits<double>::quiet_NaN());
+  return Eigen::Map<const Eigen::VectorXd>(r.y.data(), n_);
+}
+
 Eigen::VectorXcd AutonomousOrbitProblem::spectrum(const Eigen::VectorXd& X, double p) const {
   return certified_spectrum(X, p, false).values;
 }

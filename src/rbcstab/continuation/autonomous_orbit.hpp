@@ -75,6 +75,12 @@ class AutonomousOrbitProblem final : public ContinuationProblem {
   // The unknowns of the trajectory through x0 over [0, T] (a start for Newton).
   Eigen::VectorXd shooting_guess(const Eigen::VectorXd& x0, double T, double p) const;
   Eigen::MatrixXd monodromy(const Eigen::VectorXd& X, double p) const;
+  // The linearised solution through v0 at the segments' starts (v_{j+1} = M_j v_j); the PD switch's direction.
+  Eigen::VectorXd variation(const Eigen::VectorXd& X, double p, const Eigen::VectorXd& v0) const;
+  // d phi_T(x_0) / dp over the period of X (the segments' sensitivities carried through their maps); NaN on failure.
+  Eigen::VectorXd flow_sensitivity(const Eigen::VectorXd& X, double p) const;
+  // The state at time t > 0 from x (one plain integration, the shooting's options); NaN when it fails.
+  Eigen::VectorXd flow(const Eigen::VectorXd& x, double t, double p) const;
 
  private:
   const ShootingFlows& shoot(const Eigen::VectorXd& X, double p) const;

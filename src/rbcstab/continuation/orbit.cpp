@@ -73,6 +73,22 @@ Eigen::MatrixXd monodromy_product(const ShootingFlows& sh) {
   return M;
 }
 
+Eigen::VectorXd segment_variation(const ShootingFlows& sh, const Eigen::VectorXd& v0) {
+  const Eigen::Index n = v0.size(), N = static_cast<Eigen::Index>(sh.M.size());
+  Eigen::VectorXd V = Eigen::VectorXd::Constant(n * N, std::numeric_limits<double>::quiet_NaN());
+  if (!sh.ok) return V;
+  V.head(n) = v0;
+  for (Eigen::Index j = 1; j < N; ++j)
+    V.segment(j * n, n) = sh.M[static_cast<std::size_t>(j - 1)] * V.segment((j - 1) * n, n);
+  return V;
+}
+
+Eigen::VectorXd sensitivity_product(const ShootingFlows& sh) {
+  Eigen::VectorXd s = sh.s[0];
+  for (std::size_t j = 1; j < sh.s.size(); ++j) s = sh.M[j] * s + sh.s[j];
+  return s;
+}
+
 }  // namespace detail
 
 namespace {
@@ -199,13 +215,7 @@ Floquet PeriodicOrbitProblem::floquet(const Eigen::VectorXd& X, double p) const 
 
 Eigen::VectorXd PeriodicOrbitProblem::variation(const Eigen::VectorXd& X, double p, const Eigen::VectorXd& v0) const {
   require(v0.size() == n_, "v0", static_cast<double>(v0.size()), "a vector of the system's dimension");
-  const Shooting& sh = shoot(X, p);
-  Eigen::VectorXd V = Eigen::VectorXd::Constant(n_ * N_, std::numeric_limits<double>::quiet_NaN());
-  if (!sh.ok) return V;
-  V.head(n_) = v0;
-  for (int j = 1; j < N_; ++j)
-    V.segment(j * n_, n_) = sh.M[static_cast<std::size_t>(j - 1)] * V.segment((j - 1) * n_, n_);
-  return V;
+  return detail::segment_variation(shoot(X, p), v0);
 }
 
 Eigen::VectorXcd PeriodicOrbitProblem::spectrum(const Eigen::VectorXd& X, double p) const {

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <complex>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -89,12 +90,12 @@ OrbitSwitchStart refusal(std::string message) {
   return out;
 }
 
-// The parameter the HB's amplitude law (hopf_normal_form) gives for an orbit whose peak |x - x_HB|_2 is `peak`:
-// |x - x*| ~ amplitude |p - p*|^(1/2) on `side`. NaN without a usable law.
-double hopf_predicted_parameter(const SpecialPoint& hb, double peak) {
+// The parameter the point's amplitude law (an HB's hopf_normal_form, a PD's period-map normal form) gives for an orbit
+// whose distance |x - x*|_2 is `peak`: |x - x*| ~ amplitude |p - p*|^(1/2) on `side`. NaN without a usable law.
+double predicted_parameter(const SpecialPoint& hb, NormalFormKind kind, double peak) {
   if (!hb.normal_form) return std::numeric_limits<double>::quiet_NaN();
   const NormalForm& nf = *hb.normal_form;
-  if (nf.kind != NormalFormKind::hopf || nf.criticality == Criticality::degenerate || !(nf.amplitude > 0) ||
+  if (nf.kind != kind || nf.criticality == Criticality::degenerate || !(nf.amplitude > 0) ||
       !std::isfinite(nf.amplitude) || nf.exponent != 0.5 || (nf.side != 1 && nf.side != -1))
     return std::numeric_limits<double>::quiet_NaN();
   const double r = peak / nf.amplitude;
@@ -134,7 +135,7 @@ OrbitSwitchStart hopf_start(const AutonomousSystem& system, const SpecialPoint& 
   const int N = problem->segments();
   OrbitSwitchStart out;
   out.period = kTwoPi / omega;
-  out.predicted_p = hopf_predicted_parameter(hb, peak);
+  out.predicted_p = predicted_parameter(hb, NormalFormKind::hopf, peak);
   Eigen::VectorXd X0(n * N + 1), delta = Eigen::VectorXd::Zero(n * N + 1);
   for (int j = 0; j < N; ++j) {
     X0.segment(j * n, n) = hb.x;
@@ -147,35 +148,78 @@ OrbitSwitchStart hopf_start(const AutonomousSystem& system, const SpecialPoint& 
   return out;
 }
 
-OrbitSwitchStart period_doubling_start(const PeriodicOrbitProblem& problem, const SpecialPoint& pd,
-                                       const OrbitSwitchOptions& options) {
+// The unit eigenvector of M's multiplier -1 when it is the only critical one of `multipliers` (empty, with the
+// refusal in `why`, otherwise).
+std::optional<Eigen::VectorXd> flip_vector(const Eigen::VectorXcd& multipliers, const Eigen::MatrixXd& M,
+                                           const std::string& name, double p, double tol, std::string& why) {
+  const auto critical = critical_values(multipliers, StabilityKind::multipliers, tol);
+  if (critical.size() != 1 || !(critical[0].real() < 0)) {
+    why = "not a simple period doubling at " + name + " = " + format_value(p) +
+          ": the multipliers on the unit circle are " + (critical.empty() ? "none" : list_values(critical)) +
+          " (a simple PD has one multiplier -1)";
+    return std::nullopt;
+  }
+  const Eigen::EigenSolver<Eigen::MatrixXd> es(M, true);
+  Eigen::Index i = 0;
+  (es.eigenvalues() - Eigen::VectorXcd::Constant(es.eigenvalues().size(), -1.0)).cwiseAbs().minCoeff(&i);
+  const Eigen::VectorXd v = es.eigenvectors().col(i).real();
+  return Eigen::VectorXd(v / v.norm());
+}
+
+void require_pd(const ContinuationProblem& problem, const SpecialPoint& pd, const OrbitSwitchOptions& options) {
   options.validate();
   require(pd.type == SpecialPointType::PD, "special_point", static_cast<double>(static_cast<int>(pd.type)),
           "a PD (period doubling)");
   require(pd.x.size() == problem.dimension(), "special_point", static_cast<double>(pd.x.size()),
           "a point of this orbit problem");
+}
+
+// The doubled orbit's first point: the orbit's unknowns (states X) twice plus eps times the linearised solution V of
+// the flip vector (+V over the first turn, -V over the second), Newton from the PD's law for the distance eps.
+void doubled_first_point(const ContinuationProblem& doubled, const Eigen::VectorXd& X, const Eigen::VectorXd& V,
+                         const Eigen::VectorXd& tail, const SpecialPoint& pd, const OrbitSwitchOptions& options,
+                         OrbitSwitchStart& out) {
+  const Eigen::Index m = X.size();
+  Eigen::VectorXd X0(2 * m + tail.size()), delta = Eigen::VectorXd::Zero(2 * m + tail.size());
+  X0 << X, X, tail;
+  delta.head(2 * m) << options.amplitude * V, -options.amplitude * V;
+  out.predicted_p = predicted_parameter(pd, NormalFormKind::period_doubling, options.amplitude);
+  first_point(doubled, X0, delta, pd.p, out.predicted_p, options, out);
+}
+
+OrbitSwitchStart period_doubling_start(const PeriodicOrbitProblem& problem, const SpecialPoint& pd,
+                                       const OrbitSwitchOptions& options) {
+  require_pd(problem, pd, options);
   const Floquet fl = problem.floquet(pd.x, pd.p);
-  const auto critical = critical_values(fl.multipliers, StabilityKind::multipliers, options.critical_tol);
-  if (critical.size() != 1 || !(critical[0].real() < 0))
-    return refusal("not a simple period doubling at " + problem.parameter_name() + " = " + format_value(pd.p) +
-                   ": the multipliers on the unit circle are " + (critical.empty() ? "none" : list_values(critical)) +
-                   " (a simple PD has one multiplier -1)");
-  const Eigen::EigenSolver<Eigen::MatrixXd> es(fl.monodromy, true);
-  Eigen::Index i = 0;
-  (es.eigenvalues() - Eigen::VectorXcd::Constant(es.eigenvalues().size(), -1.0)).cwiseAbs().minCoeff(&i);
-  Eigen::VectorXd v = es.eigenvectors().col(i).real();
-  v /= v.norm();
-  const Eigen::Index m = problem.dimension();
-  const Eigen::VectorXd V = problem.variation(pd.x, pd.p, v);
+  std::string why;
+  const auto v = flip_vector(fl.multipliers, fl.monodromy, problem.parameter_name(), pd.p, options.critical_tol, why);
+  if (!v) return refusal(why);
   OrbitOptions o = problem.options();  // the parent's tolerances, on the same segment times
   o.segments = 2 * problem.segments();
   auto doubled = std::make_unique<PeriodicOrbitProblem>(problem.system(), o, 2 * problem.periods());
-  Eigen::VectorXd X0(2 * m), delta(2 * m);
-  X0 << pd.x, pd.x;
-  delta << options.amplitude * V, -options.amplitude * V;
   OrbitSwitchStart out;
   out.period = 2 * kTwoPi * problem.periods();
-  first_point(*doubled, X0, delta, pd.p, std::numeric_limits<double>::quiet_NaN(), options, out);
+  doubled_first_point(*doubled, pd.x, problem.variation(pd.x, pd.p, *v), Eigen::VectorXd(), pd, options, out);
+  if (out.found) out.problem = std::move(doubled);
+  return out;
+}
+
+// The same for an autonomous orbit: twice the segments, the period 2 T as the doubled unknowns' last entry, the same
+// phase component.
+OrbitSwitchStart autonomous_period_doubling_start(const AutonomousOrbitProblem& problem, const SpecialPoint& pd,
+                                                  const OrbitSwitchOptions& options) {
+  require_pd(problem, pd, options);
+  std::string why;
+  const auto v = flip_vector(problem.spectrum(pd.x, pd.p), problem.monodromy(pd.x, pd.p), problem.parameter_name(),
+                             pd.p, options.critical_tol, why);
+  if (!v) return refusal(why);
+  OrbitOptions o = problem.options();
+  o.segments = 2 * problem.segments();
+  auto doubled = std::make_unique<AutonomousOrbitProblem>(problem.system(), problem.phase_component(), o);
+  OrbitSwitchStart out;
+  out.period = 2 * AutonomousOrbitProblem::period(pd.x);
+  doubled_first_point(*doubled, pd.x.head(pd.x.size() - 1), problem.variation(pd.x, pd.p, *v),
+                      Eigen::VectorXd::Constant(1, out.period), pd, options, out);
   if (out.found) out.problem = std::move(doubled);
   return out;
 }
@@ -270,9 +314,11 @@ OrbitSwitchStart orbit_switch_start(const ContinuationProblem& problem, const Br
   if (point.type == SpecialPointType::PD) {
     if (const auto* orbit = dynamic_cast<const PeriodicOrbitProblem*>(&problem))
       return period_doubling_start(*orbit, point, options);
+    if (const auto* orbit = dynamic_cast<const AutonomousOrbitProblem*>(&problem))
+      return autonomous_period_doubling_start(*orbit, point, options);
     return refusal(
-        "switching at a PD is supported on forced periodic-orbit branches only (PeriodicOrbitProblem), not this "
-        "problem kind");
+        "switching at a PD is supported on periodic-orbit branches only (PeriodicOrbitProblem, "
+        "AutonomousOrbitProblem), not this problem kind");
   }
   return refusal(std::string("no orbit switch at a ") + std::string(to_string(point.type)) +
                  " point (HB and PD only; BP: switch_branch)");

@@ -5,13 +5,15 @@
 //  - PD of a forced orbit branch (periods k): the doubled orbit (periods 2 k, twice the segments) from the orbit
 //    repeated plus eps times the linearised solution through the -1 Floquet vector v (+v over the first k periods,
 //    -v over the second): the period-1 orbit repeated is a solution of the doubled problem, from which the doubled
-//    orbit leaves in a pitchfork along that direction.
+//    orbit leaves in a pitchfork along that direction. PD of an autonomous orbit branch: the same with the period
+//    2 T as an unknown (AutonomousOrbitProblem, twice the segments, the same phase component).
 // Either way Newton on the hyperplane d.(X - X_0) = h (newton_on_hyperplane) gives the first point and the engine
-// continues away from the special point. At an HB whose normal form (normal_form_analysis.hpp) gives an amplitude
-// law, Newton starts at the parameter that law predicts for the predictor's amplitude (at p_HB otherwise, and
-// again at p_HB when that fails). A multiple point (another eigenvalue on the imaginary axis, another
-// multiplier on the unit circle) is refused with the critical values named: the simple-pair direction would be
-// one arbitrary member of a larger family (docs/continuation.md "Orbits from HB and PD points").
+// continues away from the special point. At an HB or PD whose normal form (normal_form_analysis.hpp,
+// period_map_normal_form.hpp) gives an amplitude law, Newton starts at the parameter that law predicts for the
+// predictor's amplitude (at the point's p otherwise, and again there when that fails). A multiple point (another
+// eigenvalue on the imaginary axis, another multiplier on the unit circle) is refused with the critical values named:
+// the simple-pair direction would be one arbitrary member of a larger family (docs/continuation.md "Orbits from HB and
+// PD points").
 #include <limits>
 #include <memory>
 #include <string>
@@ -56,8 +58,8 @@ struct OrbitSwitchStart {
   std::string message;
   Eigen::VectorXd direction;  // d in (X, p), unit
   double period = 0;
-  // HB: p_HB + side (peak / amplitude)^2 from the HB's normal form for the predictor's peak |x - x_HB|_2 (where
-  // Newton starts); NaN without a usable law (no normal form, degenerate) and at a PD.
+  // p* + side (peak / amplitude)^2 from the point's normal form for the predictor's peak |x - x*|_2 (HB) or its
+  // distance eps at t = 0 (PD), where Newton starts; NaN without a usable law (no normal form, degenerate).
   double predicted_p = std::numeric_limits<double>::quiet_NaN();
   std::unique_ptr<ContinuationProblem> problem;  // refers to the system, which must outlive it; null unless found
   Eigen::VectorXd x;                             // the first point, of `problem`
@@ -74,7 +76,8 @@ OrbitSwitchResult switch_at_hopf(const AutonomousSystem& system, const SpecialPo
 // pd: a PD special point of a branch continued with `problem`.
 OrbitSwitchResult switch_at_period_doubling(const PeriodicOrbitProblem& problem, const SpecialPoint& pd,
                                             const OrbitSwitchOptions& options = {});
-// The one entry for diagrams: HB on AutonomousEquilibriumProblem branches, PD on PeriodicOrbitProblem branches.
+// The one entry for diagrams: HB on AutonomousEquilibriumProblem branches, PD on PeriodicOrbitProblem and
+// AutonomousOrbitProblem branches.
 // Any other HB is checked for multiplicity (refused naming the critical pairs and the branch's labels there) and
 // otherwise refused as not supported for the problem kind; other types are refused (BP: switch_branch).
 OrbitSwitchResult switch_at(const ContinuationProblem& problem, const Branch& branch, const SpecialPoint& point,

@@ -1,6 +1,7 @@
-// Normal forms of the period map at LPC, PD and NS of forced orbit branches (period_map_normal_form.hpp): the period
-// map as a small ContinuationProblem whose residual is P(y, p) - y, differentiated by detail::Multilinear with steps
-// sized for shootings; Kuznetsov's formulas for maps. docs/continuation.md, "Normal forms".
+// Normal forms at LPC, PD and NS of orbit branches (period_map_normal_form.hpp): the forced orbit's period map or the
+// autonomous orbit's Poincare map (poincare_map.hpp) as a MapProblem whose residual is P(y, p) - y, differentiated
+// by detail::Multilinear with steps sized for shootings; one set of Kuznetsov's formulas for maps serves both.
+// docs/continuation.md, "Normal forms".
 #include "rbcstab/continuation/period_map_normal_form.hpp"
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 
 #include "rbcstab/continuation/autonomous_orbit.hpp"
 #include "rbcstab/continuation/normal_form_analysis.hpp"
+#include "rbcstab/continuation/poincare_map.hpp"
 
 #include "rbcstab/continuation/detail/multilinear.hpp"
 #include "rbcstab/continuation/detail/normal_form_core.hpp"
@@ -38,8 +40,8 @@ using detail::normal_form_not_computed;
 
 double sign_of(double v) { return v > 0 ? 1.0 : (v < 0 ? -1.0 : 0.0); }
 
-// The period map of `orbit` as a problem in y = x0: residual P(y, p) - y, Jacobian A - I, parameter derivative P_p.
-class PeriodMap final : public ContinuationProblem {
+// The period map of `orbit` as a problem in y = x0: residual P(y, p) - y, A the monodromy, parameter derivative P_p.
+class PeriodMap final : public MapProblem {
  public:
   explicit PeriodMap(const PeriodicOrbitProblem& orbit) : orbit_(orbit), n_(orbit.system().dimension()) {}
   Eigen::Index dimension() const override { return n_; }
@@ -49,8 +51,8 @@ class PeriodMap final : public ContinuationProblem {
     const OrbitRelaxation r = orbit_.relax(y, p, std::numeric_limits<double>::min(), 1, 1);
     F = r.failure.empty() ? Eigen::VectorXd(r.x - y) : Eigen::VectorXd::Constant(n_, std::nan(""));
   }
-  void jacobian(const Eigen::VectorXd& y, double p, Eigen::MatrixXd& J) const override {
-    J = monodromy(y, p) - Eigen::MatrixXd::Identity(n_, n_);
+  Eigen::MatrixXd map_jacobian(const Eigen::VectorXd& y, double p) const override {
+    return orbit_.floquet(orbit_.shooting_guess(y, p), p).monodromy;
   }
   // The segments' sensitivities s_j carried through the segment maps M_j (the shooting Jacobian's diagonal
   // blocks; with one segment that block is M_0 - I): d x_{j+1}/dp = M_j d x_j/dp + s_j from x_0 = y.
@@ -68,23 +70,18 @@ class PeriodMap final : public ContinuationProblem {
       Fp = M * Fp + s.segment(j * n_, n_);
     }
   }
-  StabilityKind stability_kind() const override { return StabilityKind::multipliers; }
-  Eigen::MatrixXd monodromy(const Eigen::VectorXd& y, double p) const {
-    return orbit_.floquet(orbit_.shooting_guess(y, p), p).monodromy;
-  }
 
  private:
   const PeriodicOrbitProblem& orbit_;
   Eigen::Index n_;
 };
 
-// B and C of P at (x0, p), each Richardson-extrapolated from its step and half of it.
+// B and C of P at (y0, p), each Richardson-extrapolated from its step and half of it (steps in units of scale).
 class MapForms {
  public:
-  MapForms(const PeriodMap& map, const Eigen::VectorXd& x0, double p, const PeriodMapSteps& steps)
-      : scale_(1 + x0.lpNorm<Eigen::Infinity>()),
-        coarse_(map, x0, p, steps.second * scale_, steps.third * scale_),
-        fine_(map, x0, p, steps.second * scale_ / 2, steps.third * scale_ / 2) {}
+  MapForms(const MapProblem& map, const Eigen::VectorXd& y0, double p, const PeriodMapSteps& steps, double scale)
+      : coarse_(map, y0, p, steps.second * scale, steps.third * scale),
+        fine_(map, y0, p, steps.second * scale / 2, steps.third * scale / 2) {}
   template <class V>
   V B(const V& u, const V& v) const {
     using S = typename V::Scalar;
@@ -97,7 +94,6 @@ class MapForms {
   }
 
  private:
-  double scale_;
   Multilinear coarse_, fine_;
 };
 
@@ -114,36 +110,28 @@ bool one_is_not_a_multiplier(const Eigen::MatrixXd& A) {
   return svd.singularValues()[A.rows() - 1] > kKernel * svd.singularValues()[0];
 }
 
-}  // namespace
-
-NormalForm fold_of_cycles_normal_form(const PeriodicOrbitProblem& problem, const Eigen::VectorXd& X, double p,
-                                      const PeriodMapSteps& steps) {
-  steps.validate();
+// The normal forms of a map at its fixed point x0 (a period map's or a Poincare map's); difference steps in units
+// of `scale`.
+NormalForm map_fold(const MapProblem& map, const Eigen::VectorXd& x0, double p, const PeriodMapSteps& steps,
+                    double scale) {
   const NormalFormKind kind = NormalFormKind::fold_of_cycles;
-  if (const std::string why = map_refusal(problem); !why.empty()) return normal_form_not_computed(kind, why);
-  const PeriodMap map(problem);
-  const Eigen::VectorXd x0 = problem.state_at_zero(X);
   Eigen::MatrixXd J;
   Eigen::VectorXd Pp;
   map.jacobian(x0, p, J);
   map.parameter_derivative(x0, p, Pp);
   if (!J.allFinite() || !Pp.allFinite()) return normal_form_not_computed(kind, "a shooting failed at the point");
-  const MapForms D(map, x0, p, steps);
+  const MapForms D(map, x0, p, steps, scale);
   NormalForm nf = detail::fold_from_derivatives(J, Pp, [&](const Eigen::VectorXd& e) { return D.B(e, e); });
   nf.kind = kind;
   return nf;
 }
 
-NormalForm period_doubling_normal_form(const PeriodicOrbitProblem& problem, const Eigen::VectorXd& X, double p,
-                                       const PeriodMapSteps& steps) {
-  steps.validate();
+NormalForm map_flip(const MapProblem& map, const Eigen::VectorXd& x0, double p, const PeriodMapSteps& steps,
+                    double scale) {
   const NormalFormKind kind = NormalFormKind::period_doubling;
   NormalForm pd;
   pd.kind = kind;
-  if (const std::string why = map_refusal(problem); !why.empty()) return normal_form_not_computed(kind, why);
-  const PeriodMap map(problem);
-  const Eigen::VectorXd x0 = problem.state_at_zero(X);
-  const Eigen::MatrixXd A = map.monodromy(x0, p);
+  const Eigen::MatrixXd A = map.map_jacobian(x0, p);
   if (!A.allFinite()) return normal_form_not_computed(kind, "a shooting failed at the point");
   const Eigen::EigenSolver<Eigen::MatrixXd> es(A, true), est(A.transpose(), true);
   Eigen::Index i = 0, it = 0;
@@ -158,7 +146,7 @@ NormalForm period_doubling_normal_form(const PeriodicOrbitProblem& problem, cons
   w /= w.dot(q);
   if (!one_is_not_a_multiplier(A)) return normal_form_degenerate(pd, "a multiplier 1 besides -1 (I - A singular)");
   const Eigen::FullPivLU<Eigen::MatrixXd> I_A(Eigen::MatrixXd::Identity(A.rows(), A.cols()) - A);
-  const MapForms D(map, x0, p, steps);
+  const MapForms D(map, x0, p, steps, scale);
   const Eigen::VectorXd eq = extend(q, 0.0);
   const Eigen::VectorXd h2 = I_A.solve(D.B(eq, eq));
   const Eigen::VectorXd Bqh = D.B(eq, extend(h2, 0.0)), Cqqq = D.C(eq, eq, eq);
@@ -182,16 +170,12 @@ NormalForm period_doubling_normal_form(const PeriodicOrbitProblem& problem, cons
   return pd;
 }
 
-NormalForm neimark_sacker_normal_form(const PeriodicOrbitProblem& problem, const Eigen::VectorXd& X, double p,
-                                      const PeriodMapSteps& steps) {
-  steps.validate();
+NormalForm map_neimark_sacker(const MapProblem& map, const Eigen::VectorXd& x0, double p, const PeriodMapSteps& steps,
+                              double scale) {
   const NormalFormKind kind = NormalFormKind::neimark_sacker;
   NormalForm ns;
   ns.kind = kind;
-  if (const std::string why = map_refusal(problem); !why.empty()) return normal_form_not_computed(kind, why);
-  const PeriodMap map(problem);
-  const Eigen::VectorXd x0 = problem.state_at_zero(X);
-  const Eigen::MatrixXd A = map.monodromy(x0, p);
+  const Eigen::MatrixXd A = map.map_jacobian(x0, p);
   if (!A.allFinite()) return normal_form_not_computed(kind, "a shooting failed at the point");
   const Eigen::Index n = A.rows();
   const Eigen::EigenSolver<Eigen::MatrixXd> es(A, true), est(A.transpose(), true);
@@ -220,7 +204,7 @@ NormalForm neimark_sacker_normal_form(const PeriodicOrbitProblem& problem, const
   if (!(std::abs(pq) > 1e-10 * pl.norm())) return normal_form_degenerate(ns, "<p, q> = 0");
   pl /= std::conj(pq);  // <p, q> = 1
   const Eigen::MatrixXcd Ac = A.cast<cd>(), I = Eigen::MatrixXcd::Identity(n, n);
-  const MapForms D(map, x0, p, steps);
+  const MapForms D(map, x0, p, steps, scale);
   const Eigen::VectorXcd eq = extend_complex(q, 0.0), eqb = extend_complex(q.conjugate(), 0.0);
   const Eigen::VectorXcd h11 = (I - Ac).partialPivLu().solve(D.B(eq, eqb));
   const Eigen::VectorXcd h20 = (std::polar(1.0, 2 * theta) * I - Ac).partialPivLu().solve(D.B(eq, eq));
@@ -247,6 +231,52 @@ NormalForm neimark_sacker_normal_form(const PeriodicOrbitProblem& problem, const
   return ns;
 }
 
+using MapNormalForm = NormalForm (*)(const MapProblem&, const Eigen::VectorXd&, double, const PeriodMapSteps&, double);
+
+NormalForm on_period_map(MapNormalForm form, NormalFormKind kind, const PeriodicOrbitProblem& problem,
+                         const Eigen::VectorXd& X, double p, const PeriodMapSteps& steps) {
+  steps.validate();
+  if (const std::string why = map_refusal(problem); !why.empty()) return normal_form_not_computed(kind, why);
+  const Eigen::VectorXd x0 = problem.state_at_zero(X);
+  return form(PeriodMap(problem), x0, p, steps, 1 + x0.lpNorm<Eigen::Infinity>());
+}
+
+// On the section the orbit's point is xi = 0; the steps scale with the state x0 as for a forced orbit.
+NormalForm on_poincare_map(MapNormalForm form, const AutonomousOrbitProblem& problem, const Eigen::VectorXd& X,
+                           double p, const PeriodMapSteps& steps) {
+  steps.validate();
+  const PoincareMap map(problem, X, p);
+  return form(map, Eigen::VectorXd::Zero(map.dimension()), p, steps,
+              1 + problem.state_at_zero(X).lpNorm<Eigen::Infinity>());
+}
+
+}  // namespace
+
+NormalForm fold_of_cycles_normal_form(const PeriodicOrbitProblem& problem, const Eigen::VectorXd& X, double p,
+                                      const PeriodMapSteps& steps) {
+  return on_period_map(map_fold, NormalFormKind::fold_of_cycles, problem, X, p, steps);
+}
+NormalForm period_doubling_normal_form(const PeriodicOrbitProblem& problem, const Eigen::VectorXd& X, double p,
+                                       const PeriodMapSteps& steps) {
+  return on_period_map(map_flip, NormalFormKind::period_doubling, problem, X, p, steps);
+}
+NormalForm neimark_sacker_normal_form(const PeriodicOrbitProblem& problem, const Eigen::VectorXd& X, double p,
+                                      const PeriodMapSteps& steps) {
+  return on_period_map(map_neimark_sacker, NormalFormKind::neimark_sacker, problem, X, p, steps);
+}
+NormalForm fold_of_cycles_normal_form(const AutonomousOrbitProblem& problem, const Eigen::VectorXd& X, double p,
+                                      const PeriodMapSteps& steps) {
+  return on_poincare_map(map_fold, problem, X, p, steps);
+}
+NormalForm period_doubling_normal_form(const AutonomousOrbitProblem& problem, const Eigen::VectorXd& X, double p,
+                                       const PeriodMapSteps& steps) {
+  return on_poincare_map(map_flip, problem, X, p, steps);
+}
+NormalForm neimark_sacker_normal_form(const AutonomousOrbitProblem& problem, const Eigen::VectorXd& X, double p,
+                                      const PeriodMapSteps& steps) {
+  return on_poincare_map(map_neimark_sacker, problem, X, p, steps);
+}
+
 NormalForm period_map_normal_form(const ContinuationProblem& problem, const SpecialPoint& sp) {
   const NormalFormKind kind = sp.type == SpecialPointType::LPC  ? NormalFormKind::fold_of_cycles
                               : sp.type == SpecialPointType::PD ? NormalFormKind::period_doubling
@@ -255,21 +285,25 @@ NormalForm period_map_normal_form(const ContinuationProblem& problem, const Spec
   if (kind == NormalFormKind::branch_point)
     return normal_form_not_computed(kind, "no period-map normal form for " + to_string(sp.type));
   const auto* orbit = dynamic_cast<const PeriodicOrbitProblem*>(&problem);
-  if (!orbit && dynamic_cast<const AutonomousOrbitProblem*>(&problem))
-    return normal_form_not_computed(kind,
-                                    "an autonomous orbit: its period map lives on a Poincare section with the period "
-                                    "as an unknown (not implemented)");
-  if (!orbit) return normal_form_not_computed(kind, "needs a forced orbit problem (PeriodicOrbitProblem)");
+  const auto* autonomous = dynamic_cast<const AutonomousOrbitProblem*>(&problem);
+  if (!orbit && !autonomous)
+    return normal_form_not_computed(kind, "needs an orbit problem (PeriodicOrbitProblem or AutonomousOrbitProblem)");
   if (sp.status != LocationStatus::located) return normal_form_not_computed(kind, "the point is not located (a guess)");
-  if (orbit->system().dimension() > kNormalFormMaxDimension)
-    return normal_form_not_computed(kind, "dimension " + std::to_string(orbit->system().dimension()) + " > " +
-                                              std::to_string(kNormalFormMaxDimension));
+  const Eigen::Index n = orbit ? orbit->system().dimension() : autonomous->system().dimension();
+  if (n > kNormalFormMaxDimension)
+    return normal_form_not_computed(kind,
+                                    "dimension " + std::to_string(n) + " > " + std::to_string(kNormalFormMaxDimension));
   try {
+    if (autonomous) {
+      if (kind == NormalFormKind::fold_of_cycles) return fold_of_cycles_normal_form(*autonomous, sp.x, sp.p);
+      if (kind == NormalFormKind::period_doubling) return period_doubling_normal_form(*autonomous, sp.x, sp.p);
+      return neimark_sacker_normal_form(*autonomous, sp.x, sp.p);
+    }
     if (kind == NormalFormKind::fold_of_cycles) return fold_of_cycles_normal_form(*orbit, sp.x, sp.p);
     if (kind == NormalFormKind::period_doubling) return period_doubling_normal_form(*orbit, sp.x, sp.p);
     return neimark_sacker_normal_form(*orbit, sp.x, sp.p);
   } catch (const InvalidArgument& e) {
-    return normal_form_not_computed(kind, std::string("the system refused a difference step: ") + e.what());
+    return normal_form_not_computed(kind, std::string("the system or the section refused the point: ") + e.what());
   }
 }
 

@@ -1,9 +1,12 @@
 #pragma once
-// Normal forms at the special points of forced orbit branches (LPC, PD, NS): those of the period map P (x0 -> the
-// state after the orbit's period 2 pi k, one shooting of the trajectory through x0 at t = 0), with A = DP the
-// monodromy and B, C its second and third derivatives by central differences of shootings. Formulas (Kuznetsov,
-// Elements of Applied Bifurcation Theory, the map cases), steps and checks: docs/continuation.md, "Normal forms".
-// Amplitude laws are in x0 (the state at t = 0), |x0 - x0*|_2.
+// Normal forms at the special points of orbit branches (LPC, PD, NS): those of the period map P of a forced orbit
+// (x0 -> the state after the orbit's period 2 pi k, one shooting of the trajectory through x0 at t = 0), with A = DP
+// the monodromy, or of the Poincare map of an autonomous orbit (poincare_map.hpp: on the section through x0 normal
+// to f(x0), the trivial multiplier dropped); B, C its second and third derivatives by central differences of
+// shootings. Formulas (Kuznetsov, Elements of Applied Bifurcation Theory, the map cases), steps and checks:
+// docs/continuation.md, "Normal forms". Amplitude laws are in x0 (the state at t = 0; for an autonomous orbit the
+// point on the section), |x0 - x0*|_2.
+#include "rbcstab/continuation/autonomous_orbit.hpp"
 #include "rbcstab/continuation/continuation.hpp"
 #include "rbcstab/continuation/normal_form.hpp"
 #include "rbcstab/continuation/orbit.hpp"
@@ -42,9 +45,18 @@ NormalForm period_doubling_normal_form(const PeriodicOrbitProblem& problem, cons
 NormalForm neimark_sacker_normal_form(const PeriodicOrbitProblem& problem, const Eigen::VectorXd& X, double p,
                                       const PeriodMapSteps& steps = {});
 
-// The normal form of a located LPC, PD or NS of an orbit branch: the above for a PeriodicOrbitProblem; not_computed
-// with the reason for a guess, a norm-conserving system, an autonomous orbit (its period map lives on a Poincare
-// section with the period as an unknown: not implemented), another problem kind or n > kNormalFormMaxDimension.
+// The same of an autonomous orbit X (its period is X's last unknown): the Poincare map's, in orthonormal coordinates
+// of the section (lengths as in x). Throws InvalidArgument for bad steps or f(x0) = 0.
+NormalForm fold_of_cycles_normal_form(const AutonomousOrbitProblem& problem, const Eigen::VectorXd& X, double p,
+                                      const PeriodMapSteps& steps = {});
+NormalForm period_doubling_normal_form(const AutonomousOrbitProblem& problem, const Eigen::VectorXd& X, double p,
+                                       const PeriodMapSteps& steps = {});
+NormalForm neimark_sacker_normal_form(const AutonomousOrbitProblem& problem, const Eigen::VectorXd& X, double p,
+                                      const PeriodMapSteps& steps = {});
+
+// The normal form of a located LPC, PD or NS of an orbit branch: the above for a PeriodicOrbitProblem or an
+// AutonomousOrbitProblem; not_computed with the reason for a guess, a norm-conserving system, another problem kind
+// or n > kNormalFormMaxDimension.
 NormalForm period_map_normal_form(const ContinuationProblem& problem, const SpecialPoint& sp);
 
 }  // namespace rbcstab

@@ -23,5 +23,10 @@ std::size_t shoot_segments(const ForcedSystem& sys, const Eigen::VectorXd& X, do
 
 // The monodromy M_{N-1} ... M_0 of a successful shooting.
 Eigen::MatrixXd monodromy_product(const ShootingFlows& sh);
+// The linearised solution through v0 at the segments' starts (v_{j+1} = M_j v_j), as the unknowns' layout; NaN
+// after a failed shooting.
+Eigen::VectorXd segment_variation(const ShootingFlows& sh, const Eigen::VectorXd& v0);
+// d phi / dp over all segments of a successful shooting: s_{N-1} + M_{N-1} (s_{N-2} + ...).
+Eigen::VectorXd sensitivity_product(const ShootingFlows& sh);
 
 }  // namespace rbcstab::detail
