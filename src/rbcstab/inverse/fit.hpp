@@ -44,7 +44,7 @@ struct ProfileOptions {
 struct FitProgress {
   int starts_done = 0, starts = 0;  // starts finished, of those asked
   int profile_points = 0;           // profile points finished, every parameter's (the total is not known in advance)
-  int iterations = 0;               // Ipopt iterations so far, every solve's
+  int iterations = 0;               // iterations so far: Ipopt's and the profiles' Gauss-Newton's
 };
 
 struct FitOptions {
