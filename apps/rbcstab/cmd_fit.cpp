@@ -17,7 +17,7 @@ namespace rbcstab::cli {
 
 namespace {
 struct FitCliOptions {
-  std::string data, free, fixed, save, jacobian = "variational";
+  std::string data, free, fixed, save, jacobian = "variational", profile_method = "gauss_newton";
   FitOptions fit;
   FitReportOptions report;
   bool json = false;
@@ -40,6 +40,7 @@ int run(FitCliOptions& o) {
   const StopOnSignal interrupt;
   o.fit.stop = interrupt.flag();
   o.fit.jacobian = from_string<JacobianMethod>(o.jacobian, "jacobian");
+  o.fit.profiles.method = from_string<ProfileMethod>(o.profile_method, "profile_method");
   const FitResult r = fit(data, comma_items(o.free), cell, o.fit);
   nlohmann::json doc = to_json(r);
   doc["data"] = o.data;
@@ -89,6 +90,10 @@ Runner add_fit(CLI::App& app) {
                  "reach of the profile grid in Fisher standard errors, in (0, 50] (beyond it doubling steps to the "
                  "bound)")
       ->check(number_above(0, true))
+      ->capture_default_str();
+  app.add_option("--profile-method", o->profile_method,
+                 "profile re-fits: gauss_newton (Ipopt where it fails or a regime row is active) or ipopt")
+      ->check(CLI::IsMember(enum_names<ProfileMethod>()))
       ->capture_default_str();
   app.add_option("--jacobian", o->jacobian,
                  "the in-plane rows' sensitivities: variational equations of the orbit, or finite_difference")

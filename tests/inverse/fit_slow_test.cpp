@@ -2,6 +2,7 @@
 // coverage of the intervals over noise draws, and profiles with two free parameters (about 25 re-fits each).
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -73,6 +74,49 @@ TEST(FitSlow, ProfileOfAWellDeterminedParameterAgreesWithFisher) {
   const nlohmann::json doc = to_json(r);
   EXPECT_EQ(doc["estimates"][0]["profile"]["flat"], false);
   EXPECT_NE(fit_text(r).find("profile of lambda: 95 % interval"), std::string::npos) << fit_text(r);
+}
+
+TEST(FitSlow, GaussNewtonProfilesEqualIpopts) {
+  // mu and lambda on the noisy rows, each profile re-fitted by Gauss-Newton (the default) and by Ipopt. Both re-fits
+  // stop within 1e-8 relative of the minimum's chi^2 (~8 here: 1e-7 absolute), so the grid points' Delta chi^2 agree
+  // to 1e-6; an end is located to |Delta chi^2 - 3.84| < 1e-3 where Delta chi^2 rises by ~2 x 1.96 per se, i.e. to
+  // 2.6e-4 se by each method: the ends agree to 1e-3 se.
+  const CellModel truth = synthetic_cell();
+  const ObservationData data = synthetic_data(truth, 1.0, 7);
+  FitOptions o;
+  o.starts = 1;
+  o.profiles.enabled = true;
+  o.profiles.method = ProfileMethod::ipopt;
+  const auto t0 = std::chrono::steady_clock::now();
+  const FitResult a = fit(data, {"shear_modulus", "lambda"}, truth, o);
+  const auto t1 = std::chrono::steady_clock::now();
+  o.profiles.method = ProfileMethod::gauss_newton;
+  const FitResult b = fit(data, {"shear_modulus", "lambda"}, truth, o);
+  const auto t2 = std::chrono::steady_clock::now();
+  ASSERT_EQ(a.status, FitStatus::converged) << a.message;
+  ASSERT_EQ(b.status, FitStatus::converged) << b.message;
+  for (std::size_t j = 0; j < 2; ++j) {
+    const Profile &pa = a.estimates[j].profile, &pb = b.estimates[j].profile;
+    const double se = a.estimates[j].standard_error;
+    SCOPED_TRACE(a.estimates[j].parameter.name);
+    EXPECT_EQ(pb.fallbacks, 0);
+    int common = 0;
+    for (std::size_t k = 0; k < pa.coordinate.size(); ++k)
+      for (std::size_t m = 0; m < pb.coordinate.size(); ++m)
+        if (pa.coordinate[k] == pb.coordinate[m]) {
+          ++common;
+          EXPECT_NEAR(pa.delta_chi2[k], pb.delta_chi2[m], 1e-6) << "at " << pa.coordinate[k];
+        }
+    // The estimate and the grid walked on each side: steps of 1 se up to the first point above 3.84 (2 se).
+    EXPECT_GE(common, 5);
+    EXPECT_NEAR(std::log(pa.lo95), std::log(pb.lo95), 1e-3 * se);
+    EXPECT_NEAR(std::log(pa.hi95), std::log(pb.hi95), 1e-3 * se);
+    std::printf("%s: Ipopt [%.8g, %.8g] %d solves %d iterations; Gauss-Newton [%.8g, %.8g] %d solves %d iterations\n",
+                a.estimates[j].parameter.name.c_str(), pa.lo95, pa.hi95, pa.solves, pa.iterations, pb.lo95, pb.hi95,
+                pb.solves, pb.iterations);
+  }
+  std::printf("profiles and fit: Ipopt %.2f s, Gauss-Newton %.2f s\n", std::chrono::duration<double>(t1 - t0).count(),
+              std::chrono::duration<double>(t2 - t1).count());
 }
 
 TEST(FitSlow, ProfileOfKappaIsFlat) {

@@ -12,6 +12,7 @@
 #include "rbcstab/continuation/complementarity.hpp"
 #include "rbcstab/core/error.hpp"
 #include "rbcstab/core/text.hpp"
+#include "rbcstab/inverse/detail/profile_refit.hpp"
 
 namespace rbcstab {
 
@@ -22,34 +23,8 @@ using Ipopt::Number;
 
 bool numeric(const ObservedRow& o) { return o.observable != Observable::regime; }
 
-// The cell at fitted coordinates x.
-CellModel cell_at(const CellModel& base, std::span<const FitParameterInfo> info, std::span<const double> x) {
-  CellModel c = base;
-  for (std::size_t j = 0; j < info.size(); ++j) set_value(c, info[j].id, info[j].log_scale ? std::exp(x[j]) : x[j]);
-  return c;
-}
-
-// The residuals of the numeric rows at a cell; ok false with the reason of the first row without a prediction.
-bool residuals_at(std::span<const ObservedRow> rows, const CellModel& cell, const ForwardOptions& options,
-                  std::vector<double>& r, std::string& reason) {
-  r.clear();
-  std::vector<Prediction> p;
-  try {
-    cell.validate();
-    p = predict_all(cell, rows, options);
-  } catch (const InvalidArgument& e) {
-    reason = e.what();
-    return false;
-  }
-  for (std::size_t i = 0; i < rows.size(); ++i) {
-    if (!p[i].ok()) {
-      reason = "line " + std::to_string(rows[i].line) + ": " + p[i].reason;
-      return false;
-    }
-    r.push_back((p[i].value - rows[i].value) / rows[i].uncertainty);
-  }
-  return true;
-}
+using detail::cell_at;
+using detail::residuals_at;
 
 std::vector<FitParameterInfo> infos_of(std::span<const FitParameter> free, const CellModel& cell) {
   std::vector<FitParameterInfo> info;
@@ -362,6 +337,14 @@ constexpr double kAtBoundFraction = 1e-3;            // FitEstimate::at_bound: w
 constexpr double kChi2OneDof95 = 3.841458820694124;  // the 0.95 quantile of chi^2 with 1 degree of freedom
 constexpr double kZ95 = 1.959963984540054;
 
+// Every regime margin at `c` at least kActiveMargin (none: true).
+bool regime_margins_clear(const std::vector<RegimeConstraint>& constraints, std::span<const FitParameter> free,
+                          const CellModel& c, const ForwardOptions& options) {
+  if (constraints.empty()) return true;
+  const ConstraintValues v = constraint_values(constraints, free, c, options, 0.0);
+  return v.ok && std::all_of(v.margin.begin(), v.margin.end(), [](double m) { return m >= kActiveMargin; });
+}
+
 // The profile of coordinate j through the estimate xhat (chi^2 = chi2_min): a side walks outward on the grid
 // (span * se / points per step within the span, then doubling steps to the bound; a flat parameter: points steps
 // to the bound), each point re-optimised from its neighbour's optimum; between the last point below 3.84 and the
@@ -369,7 +352,7 @@ constexpr double kZ95 = 1.959963984540054;
 Profile profile_of(const std::vector<ObservedRow>& rows, const std::vector<FitParameter>& free, const CellModel& cell,
                    const FitOptions& options, std::span<const FitParameterInfo> info, std::span<const double> lo,
                    std::span<const double> hi, const std::vector<double>& xhat, double chi2_min, std::size_t j,
-                   double se, int& evaluations, FitMonitor& monitor) {
+                   double se, int& evaluations, FitMonitor& monitor, const std::vector<RegimeConstraint>& constraints) {
   Profile p;
   p.computed = true;
   const ProfileOptions& po = options.profiles;
@@ -396,7 +379,23 @@ Profile profile_of(const std::vector<ObservedRow>& rows, const std::vector<FitPa
       monitor.profile_point_done();
       return q;
     }
-    const Solve s = solve(rows, free, cell, options, q.x, static_cast<int>(j), monitor);
+    if (po.method == ProfileMethod::gauss_newton) {
+      const detail::LeastSquaresRefit g = detail::least_squares_refit(
+          rows, free, cell, options, q.x, static_cast<int>(j), lo, hi, [&] { return monitor.iteration(); });
+      evaluations += g.evaluations;
+      p.iterations += g.iterations;
+      // Kept unless a regime row is active or violated there: then Ipopt re-fits with the constraints.
+      if (g.converged && std::isfinite(g.chi2) &&
+          regime_margins_clear(constraints, free, cell_at(cell, info, g.x), options.forward)) {
+        monitor.profile_point_done();
+        q.ok = true;
+        q.x = g.x;
+        q.delta = g.chi2 - chi2_min;
+        return q;
+      }
+      ++p.fallbacks;
+    }
+    const Solve s = solve(rows, free, cell, options, q.x, static_cast<int>(j), monitor, constraints);
     monitor.profile_point_done();
     evaluations += s.evaluations;
     p.iterations += s.iterations;
@@ -788,7 +787,7 @@ FitResult fit(const ObservationData& data, const std::vector<std::string>& free_
     for (std::size_t j = 0; j < n; ++j) {
       if (!monitor.stopped())
         res.estimates[j].profile = profile_of(rows, free, cell, options, info, lo, hi, b.end, res.chi2, j,
-                                              res.estimates[j].standard_error, res.evaluations, monitor);
+                                              res.estimates[j].standard_error, res.evaluations, monitor, constraints);
       if (!monitor.stopped()) continue;
       res.estimates[j].profile = {};  // cut short or not begun: no interval to claim
       if (res.status == FitStatus::interrupted) continue;
@@ -829,7 +828,8 @@ nlohmann::json to_json(const FitResult& r) {
             {"max_shift", num(e.profile.max_shift)},
             {"statement", e.profile.statement},
             {"solves", e.profile.solves},
-            {"iterations", e.profile.iterations}};
+            {"iterations", e.profile.iterations},
+            {"fallbacks", e.profile.fallbacks}};
       if (!e.profile.reason.empty()) pj["reason"] = e.profile.reason;
     }
     est.push_back({{"name", e.parameter.name},

@@ -18,8 +18,17 @@
 
 namespace rbcstab {
 
+// How a profile point re-fits the other parameters: projected Gauss-Newton / Levenberg-Marquardt
+// (inverse/detail/profile_refit.hpp) with Ipopt as the fallback when it fails or a regime row is active, or Ipopt.
+enum class ProfileMethod { gauss_newton, ipopt };
+template <>
+struct EnumTable<ProfileMethod> {
+  static constexpr EnumName<ProfileMethod> entries[] = {{ProfileMethod::gauss_newton, "gauss_newton"},
+                                                        {ProfileMethod::ipopt, "ipopt"}};
+};
+
 // Profile likelihoods (docs/inverse.md "Profile likelihoods"): each free parameter held on a grid in its fitted
-// coordinate while the others are re-optimised (Ipopt, warm-started from the neighbouring point); the 95 % interval
+// coordinate while the others are re-optimised (warm-started from the neighbouring point); the 95 % interval
 // is where Delta chi^2 = chi^2_profile - chi^2_min crosses 3.84 (chi^2 with 1 degree of freedom), located between
 // grid points by the Illinois secant.
 struct ProfileOptions {
@@ -27,14 +36,15 @@ struct ProfileOptions {
   int points = 4;     // [1, 50]: grid points on each side of the estimate within `span`
   double span = 4.0;  // (0, 50]: the grid reaches span Fisher standard errors; beyond it, doubling steps to the bound
   double nonlinearity_tolerance = 0.1;  // (0, 1]: an end further than this * the Fisher half-width is reported
-  void validate() const;                // throws InvalidArgument naming the field
+  ProfileMethod method = ProfileMethod::gauss_newton;
+  void validate() const;  // throws InvalidArgument naming the field
 };
 
 // How far a fit has got (FitOptions::on_progress): reported after every Ipopt iteration, start and profile point.
 struct FitProgress {
   int starts_done = 0, starts = 0;  // starts finished, of those asked
   int profile_points = 0;           // profile points finished, every parameter's (the total is not known in advance)
-  int iterations = 0;               // Ipopt iterations so far, every solve's
+  int iterations = 0;               // iterations so far: Ipopt's and the profiles' Gauss-Newton's
 };
 
 struct FitOptions {
@@ -49,7 +59,8 @@ struct FitOptions {
   ProfileOptions profiles;
   // The in-plane rows' Jacobian: variational equations (the other rows by central differences) or differences.
   JacobianMethod jacobian = JacobianMethod::variational;
-  // In-plane regime rows as Ipopt constraints (inverse/constraints.hpp); false: compared only. Profiles ignore them.
+  // In-plane regime rows as Ipopt constraints (inverse/constraints.hpp), in the profiles' re-fits too; false:
+  // compared only.
   bool regime_constraints = true;
   // Set (e.g. by Ctrl-C: core/interrupt.hpp) to stop: the fit returns within an Ipopt iteration with the status
   // interrupted and the best start so far, if any (null: never stops).
@@ -89,7 +100,8 @@ struct Profile {
   std::string statement;  // plain sentence: interval or flat, and its agreement with the Fisher statement
   std::string reason;     // why a side stopped short of its bound without crossing
   int solves = 0;         // re-optimisations (evaluations of chi^2 alone with one free parameter)
-  int iterations = 0;     // Ipopt iterations over them
+  int iterations = 0;     // iterations over them (Gauss-Newton Jacobians and Ipopt iterations)
+  int fallbacks = 0;      // Gauss-Newton re-fits handed to Ipopt (failed, or a regime row active there)
 };
 
 struct FitEstimate {
