@@ -49,7 +49,7 @@ def _fixed_text(fixed):
 
 def fit(data, free, fixed=None, starts=4, max_iterations=100, seed=1, profiles=False, profile_points=4,
         profile_span=4.0, report=None, overwrite=False, jacobian="variational", regime_constraints=True,
-        progress=False):
+        profile_method="gauss_newton", progress=False):
     """Fits the free parameters to the observations in the CSV file `data` (rbcstab fit).
 
     data: path of the observations CSV (docs/inverse.md "Data format"). free: names of the parameters to fit
@@ -67,6 +67,8 @@ def fit(data, free, fixed=None, starts=4, max_iterations=100, seed=1, profiles=F
     rows' sensitivities, "variational" (the orbit's variational equations) or "finite_difference" (rbcstab fit
     --jacobian; docs/inverse.md "Sensitivities"). regime_constraints: True makes the in-plane regime rows Ipopt
     constraints on the model's transition shear rate (the result's ``constraints``), False only compares them.
+    profile_method: how the profiles re-fit the other parameters, "gauss_newton" (projected Gauss-Newton with an
+    Ipopt fallback) or "ipopt" (rbcstab fit --profile-method; docs/inverse.md "Profile likelihoods").
     progress: True (a bar
     of the starts, then of the profile points), False, a callable f(done, total, eta) or a tqdm bar.
     Ctrl-C stops the fit within an Ipopt iteration (KeyboardInterrupt).
@@ -79,7 +81,8 @@ def fit(data, free, fixed=None, starts=4, max_iterations=100, seed=1, profiles=F
             _args.integer("max_iterations", max_iterations), _args.integer("seed", seed),
             _args.flag("profiles", profiles), _args.integer("profile_points", profile_points),
             _args.number("profile_span", profile_span), folder, _args.flag("overwrite", overwrite),
-            _args.text("jacobian", jacobian), _args.flag("regime_constraints", regime_constraints))
+            _args.text("jacobian", jacobian), _args.flag("regime_constraints", regime_constraints),
+            _args.text("profile_method", profile_method))
     bar = progress_bar(progress, "rbcstab fit", "starts and profile points")
     if bar is None:
         doc, text = _rbcstab.fit(*args, progress=None)

@@ -16,9 +16,10 @@ namespace {
 py::tuple fit_data(const std::string& data, const std::vector<std::string>& free, const std::string& fixed, int starts,
                    int max_iterations, unsigned seed, bool profiles, int profile_points, double profile_span,
                    const std::string& report, bool overwrite, const std::string& jacobian, bool regime_constraints,
-                   const py::object& progress) {
+                   const std::string& profile_method, const py::object& progress) {
   FitOptions o;
   o.jacobian = from_string<JacobianMethod>(jacobian, "jacobian");
+  o.profiles.method = from_string<ProfileMethod>(profile_method, "profile_method");
   o.regime_constraints = regime_constraints;
   o.profiles.enabled = profiles;
   o.profiles.points = profile_points;
@@ -70,7 +71,8 @@ void bind_inverse(py::module_& m) {
   m.def("fit", &fit_data, py::arg("data"), py::arg("free"), py::arg("fixed"), py::arg("starts"),
         py::arg("max_iterations"), py::arg("seed"), py::arg("profiles"), py::arg("profile_points"),
         py::arg("profile_span"), py::arg("report") = "", py::arg("overwrite") = false,
-        py::arg("jacobian") = "variational", py::arg("regime_constraints") = true, py::arg("progress") = py::none(),
+        py::arg("jacobian") = "variational", py::arg("regime_constraints") = true,
+        py::arg("profile_method") = "gauss_newton", py::arg("progress") = py::none(),
         "(json dict, text): rbcstab fit --data DATA --free FREE --fixed FIXED [--profiles] [--report DIR] --json and "
         "its text; progress(done, total, eta) counts the starts, then the profile points (total 0).");
 }

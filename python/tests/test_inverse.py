@@ -51,6 +51,8 @@ def test_jacobian_methods_agree_and_a_bad_name_is_refused(small):
         assert v.estimate(name)["value"] == pytest.approx(d.estimate(name)["value"], rel=1e-7)
     with pytest.raises(ValueError, match="jacobian"):
         rbcstab.fit(small, ["mu"], jacobian="analytic")
+    with pytest.raises(ValueError, match="profile_method"):
+        rbcstab.fit(small, ["mu"], profile_method="newton")
     with pytest.raises(TypeError):
         rbcstab.fit(small, ["mu"], regime_constraints="yes")
 
