@@ -61,7 +61,7 @@ TEST(FitConstraints, RegimeRowsBoundALooseModulus) {
   EXPECT_NEAR(r.cell.shear_modulus / truth.shear_modulus, 2.0, 3e-3);
   EXPECT_TRUE(r.constraints[0].active);
   EXPECT_FALSE(r.constraints[1].active);
-  // The intervals ignore the constraint: the message says so, naming the active row only.
+  // The Fisher intervals ignore the constraint: the message says so, naming the active row only.
   EXPECT_NE(r.message.find("regime constraint of line " + std::to_string(r.constraints[0].row.line) + " (active)"),
             std::string::npos)
       << r.message;

@@ -95,10 +95,11 @@ void apply_constraints(FitResult& res, const std::vector<RegimeConstraint>& cons
   } else if (res.status == FitStatus::infeasible) {
     add("Ipopt found the regime constraints infeasible");
   }
-  // The intervals (Fisher and profile) assume an unconstrained optimum, as at a bound.
+  // The Fisher intervals assume an unconstrained optimum, as at a bound; the profiles re-fit with the rows.
   if (!active.empty())
     add("the estimate lies on the regime constraint of " + active +
-        " (active): the 95 % intervals ignore it, so they may reach into parameters the observed regimes exclude");
+        " (active): the Fisher intervals ignore it, so they may reach into parameters the observed regimes exclude "
+        "(the profiles re-fit with it)");
 }
 
 nlohmann::json to_json(const ConstraintResult& c) {

@@ -71,7 +71,7 @@ FitPageText fit_page_text(const FitResult& fit, const ObservationData& data, con
   for (const ConstraintResult& c : fit.constraints)
     if (c.active && !c.violated)
       p.warnings.push_back("the estimate lies on a regime constraint (" + constraint_text(c) +
-                           "): the 95 % intervals ignore it");
+                           "): the Fisher intervals ignore it (the profiles re-fit with it)");
 
   ReportTable params{
       "Parameters (95 % intervals: Fisher, from the Fisher information at the estimate; profile, "
