@@ -1028,6 +1028,21 @@ class TwoHopfs final : public AutonomousSystem {
   }
 };
 
+// Of the start branch's two HBs, one starts the orbit branch (branch 1) and the other's start is its duplicate.
+void expect_one_followed_and_one_duplicate_of_it(const BranchTree& t) {
+  int followed = 0, duplicate = 0;
+  for (const TreeEmanation& m : t.emanations) {
+    if (m.branch != 0) continue;
+    followed += m.outcome == EmanationOutcome::followed;
+    if (m.outcome == EmanationOutcome::duplicate) {
+      ++duplicate;
+      EXPECT_EQ(m.branch_to, 1);
+    }
+  }
+  EXPECT_EQ(followed, 1);
+  EXPECT_EQ(duplicate, 1);
+}
+
 // The orbit branch from the first HB reaches the second one: the second HB's start lies on it (each switch built its
 // own orbit problem, on the same equations), so it is marked a duplicate of that branch and not followed again.
 TEST(OrbitTree, OrbitBranchJoiningTwoHopfPointsIsFollowedOnce) {
@@ -1055,17 +1070,7 @@ TEST(OrbitTree, OrbitBranchJoiningTwoHopfPointsIsFollowedOnce) {
     const Eigen::Vector2d u(pt.x[0] / 2, pt.x[1]);
     EXPECT_NEAR(u.squaredNorm(), 1 - pt.p * pt.p, 1e-8) << pt.p;
   }
-  int followed = 0, duplicate = 0;
-  for (const TreeEmanation& m : t.emanations) {
-    if (m.branch != 0) continue;
-    followed += m.outcome == EmanationOutcome::followed;
-    if (m.outcome == EmanationOutcome::duplicate) {
-      ++duplicate;
-      EXPECT_EQ(m.branch_to, 1);
-    }
-  }
-  EXPECT_EQ(followed, 1);
-  EXPECT_EQ(duplicate, 1);
+  expect_one_followed_and_one_duplicate_of_it(t);
 }
 
 // TwoHopfs seen through x = D(p) u, D(p) = diag(1.5 - p / 2, 1.5 + p / 2): diag(2, 1) at the HB p = -1 and diag(1, 2)
@@ -1146,17 +1151,7 @@ TEST(OrbitTree, JoiningFamilyInAnotherPhaseRepresentationIsFollowedOnce) {
     const Eigen::Vector2d u(pt.x[0] / TwoHopfsTurning::d(pt.p)[0], pt.x[1] / TwoHopfsTurning::d(pt.p)[1]);
     EXPECT_NEAR(u.squaredNorm(), 1 - pt.p * pt.p, 1e-8) << pt.p;
   }
-  int followed = 0, duplicate = 0;
-  for (const TreeEmanation& m : t.emanations) {
-    if (m.branch != 0) continue;
-    followed += m.outcome == EmanationOutcome::followed;
-    if (m.outcome == EmanationOutcome::duplicate) {
-      ++duplicate;
-      EXPECT_EQ(m.branch_to, 1);
-    }
-  }
-  EXPECT_EQ(followed, 1);
-  EXPECT_EQ(duplicate, 1);
+  expect_one_followed_and_one_duplicate_of_it(t);
 }
 
 // A double Hopf point in the tree: not followed, the reason named (both pairs), and not a failure.
